@@ -1,0 +1,42 @@
+// Constructive solid geometry: union, merge, intersection and difference of solids.
+#pragma once
+
+#include "primitives/shape.h"
+
+#include <memory>
+#include <vector>
+
+namespace lucent {
+
+enum class CsgOp { Union, Merge, Intersection, Difference };
+
+const char* csgOpName(CsgOp op);
+
+// Children live in world space already (the scene builder composes every transform down
+// to the leaves), so a CSG node never transforms rays itself and every hit it returns
+// names a leaf Instance in hit.shape. Difference is the first child minus all the others.
+class CsgNode final : public Shape {
+ public:
+  CsgNode(CsgOp op, std::vector<std::unique_ptr<Shape>> children);
+
+  const char* kind() const override { return csgOpName(op_); }
+  AABB bounds() const override { return bounds_; }
+  bool isSolid() const override { return solid_; }
+  bool intersect(const Ray& ray, Hit& hit) const override;
+  void crossings(const Ray& ray, CrossingList& out) const override;
+  bool inside(const Vec3& p) const override;
+  // Never called: hits name the leaf in hit.shape, and the leaf answers.
+  SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  size_t triangleCount() const override;
+
+  CsgOp op() const { return op_; }
+  const std::vector<std::unique_ptr<Shape>>& children() const { return children_; }
+
+ private:
+  CsgOp op_;
+  std::vector<std::unique_ptr<Shape>> children_;
+  AABB bounds_;
+  bool solid_;
+};
+
+}  // namespace lucent

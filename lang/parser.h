@@ -1,0 +1,36 @@
+// Lucent's scene language: reads scene files (XML, the contract in docs/scene-language.md)
+// into a scene graph, reporting every error it can with file:line:col.
+#pragma once
+
+#include "diagnostics.h"
+
+#include "scenegraph/scene.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lucent {
+
+struct ParseOptions {
+  // -D name=value: wins over <param> declarations.
+  std::map<std::string, std::string> defines;
+  // Folders (besides the scene file's own) that the scene may read files from.
+  std::vector<std::string> allowPaths;
+};
+
+struct ParseResult {
+  std::unique_ptr<Scene> scene;  // null when there are errors
+  Diagnostics diagnostics;       // errors (then scene is null) and warnings
+};
+
+// Parses and validates the scene file at `path`.
+ParseResult parseSceneFile(const std::string& path, const ParseOptions& options = {});
+
+// Parses a scene held in memory; `virtualPath` names it in messages and anchors relative
+// paths (for tests and fuzzing).
+ParseResult parseSceneString(const std::string& xml, const std::string& virtualPath,
+                             const ParseOptions& options = {});
+
+}  // namespace lucent

@@ -1,0 +1,42 @@
+// A leaf shape placed in the world: the shape, its transform and an opaque tag.
+#pragma once
+
+#include "shape.h"
+#include "transform.h"
+
+#include <cstdint>
+#include <memory>
+
+namespace lucent {
+
+// Rays are carried into object space (never the shape into world space); hit distances
+// stay in world units because the direction is not renormalised; normals come back with
+// the inverse-transpose. Many instances may share one shape (a mesh used many times).
+// The tag is the scene's business (the material index); primitives never read it.
+class Instance final : public Shape {
+ public:
+  Instance(std::shared_ptr<const Shape> shape, const Transform& worldFromObject, uint32_t tag);
+
+  const char* kind() const override { return shape_->kind(); }
+  AABB bounds() const override { return bounds_; }
+  bool isSolid() const override { return shape_->isSolid(); }
+  bool intersect(const Ray& ray, Hit& hit) const override;
+  bool occluded(const Ray& ray) const override;
+  void crossings(const Ray& ray, CrossingList& out) const override;
+  bool inside(const Vec3& p) const override;
+  SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  size_t triangleCount() const override { return shape_->triangleCount(); }
+
+  const Shape& shape() const { return *shape_; }
+  const std::shared_ptr<const Shape>& sharedShape() const { return shape_; }
+  const Transform& transform() const { return transform_; }
+  uint32_t tag() const { return tag_; }
+
+ private:
+  std::shared_ptr<const Shape> shape_;
+  Transform transform_;
+  AABB bounds_;
+  uint32_t tag_;
+};
+
+}  // namespace lucent

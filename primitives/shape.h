@@ -1,0 +1,49 @@
+// Lucent's primitives: the interface every piece of geometry implements.
+#pragma once
+
+#include "aabb.h"
+#include "crossing.h"
+#include "hit.h"
+#include "ray.h"
+
+#include <cstddef>
+
+namespace lucent {
+
+// A shape answers geometric questions in its own coordinate system. It knows nothing of
+// materials or of the world: scenegraph/ adds those, csg/ composes solids.
+//
+// Search contract: intersect() and occluded() consider only t strictly inside
+// (ray.tmin, ray.tmax); ray.d need not be unit length.
+class Shape {
+ public:
+  virtual ~Shape() = default;
+
+  // The element name of the scene language ("sphere", "mesh", "union", ...).
+  virtual const char* kind() const = 0;
+  virtual AABB bounds() const = 0;
+  // A solid encloses a volume: it has an inside() and its crossings alternate.
+  virtual bool isSolid() const = 0;
+
+  // Closest hit in (ray.tmin, ray.tmax): fills hit.t, hit.shape and the payload.
+  virtual bool intersect(const Ray& ray, Hit& hit) const = 0;
+  // Is there any hit in (ray.tmin, ray.tmax)? Shadow rays ask only this.
+  virtual bool occluded(const Ray& ray) const {
+    Hit h;
+    return intersect(ray, h);
+  }
+  // Every crossing in [ray.tmin, ray.tmax], ordered by t, each marked entering or leaving,
+  // and whether ray.at(ray.tmin) is inside. For a non-solid surface every crossing is
+  // marked entering and startsInside is false. Appends to out.items.
+  virtual void crossings(const Ray& ray, CrossingList& out) const = 0;
+  // Point membership for solids (points on the surface may go either way).
+  virtual bool inside(const Vec3& p) const = 0;
+
+  // Geometry of a hit this shape found on the same ray.
+  virtual SurfaceInfo surface(const Ray& ray, const Hit& hit) const = 0;
+
+  // Statistics for `lucent check`.
+  virtual size_t triangleCount() const { return 0; }
+};
+
+}  // namespace lucent

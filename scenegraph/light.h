@@ -1,0 +1,37 @@
+// Light sources of the contract's <light>.
+#pragma once
+
+#include "source_loc.h"
+
+#include "primitives/math.h"
+
+namespace lucent {
+
+enum class LightType { Point, Directional, Spot, Area };
+
+struct Light {
+  LightType type = LightType::Point;
+  SourceLoc loc;
+
+  Vec3 position{0.0};
+  Vec3 direction{0.0, -1.0, 0.0};  // unit; directional: where light travels; spot: the axis
+  Color color{1.0f};
+  double intensity = 1.0;          // I_L = color * intensity
+  Vec3 attenuation{1.0, 0.0, 0.0};  // a b c of min(1, 1/(a + b r + c r^2))
+  bool shadows = true;
+
+  // Spot: outer and inner half-angles in degrees.
+  double angle = 30.0;
+  double inner = 30.0;
+
+  // Area: edge vectors of a rectangle centred on position, sample grid, jitter.
+  Vec3 u{1.0, 0.0, 0.0};
+  Vec3 v{0.0, 0.0, 1.0};
+  int samplesU = 4;
+  int samplesV = 4;
+  bool jitter = false;
+
+  Color radiance() const { return color * static_cast<float>(intensity); }
+};
+
+}  // namespace lucent

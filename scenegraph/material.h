@@ -1,0 +1,64 @@
+// Materials of the Trace shading model (the contract's <material>) and their textures.
+#pragma once
+
+#include "source_loc.h"
+
+#include "primitives/math.h"
+
+#include <memory>
+#include <string>
+#include <variant>
+
+namespace lucent {
+
+// <checker color1 color2 scale>: a solid 3-D checker in the shape's object space;
+// the cube [0, scale)^3 has color1.
+struct CheckerTexture {
+  Color color1{1.0f};
+  Color color2{0.0f};
+  double scale = 1.0;
+};
+
+// <image src scale>: an image looked up with the shape's (u,v). The pixels are loaded by
+// the renderer; the scene keeps the resolved path.
+struct ImageTexture {
+  std::string path;       // resolved, absolute or relative to the working directory
+  Vec2 scale{1.0, 1.0};
+  SourceLoc loc;
+};
+
+using Texture = std::variant<std::monostate, CheckerTexture, ImageTexture>;
+
+struct Material {
+  std::string id;   // empty for inline materials
+  SourceLoc loc;
+
+  Color emissive{0.0f};      // k_e
+  Color ambient{0.0f};       // k_a
+  bool ambientIsScalar = true;  // a single-number ambient is multiplied by the texture
+  Color diffuse{0.0f};       // k_d (1 when a texture is present and diffuse is not given)
+  Color specular{0.0f};      // k_s
+  double shininess = 64.0;   // n_s
+  Color reflective{0.0f};    // k_r
+  Color transmissive{0.0f};  // k_t
+  double ior = 1.0;          // eta
+  bool fresnel = false;
+  Color absorption{0.0f};    // Beer–Lambert coefficient per world unit
+
+  Texture texture;
+
+  bool hasTexture() const { return !std::holds_alternative<std::monostate>(texture); }
+  bool isTransmissive() const { return maxComponent(transmissive) > 0.0f; }
+  bool isReflective() const { return maxComponent(reflective) > 0.0f; }
+  bool isAbsorbing() const { return maxComponent(absorption) > 0.0f; }
+
+  // What a shape with no material at all gets: diffuse 0.8 and nothing else.
+  static Material defaultMaterial() {
+    Material m;
+    m.id = "(default)";
+    m.diffuse = Color(0.8f);
+    return m;
+  }
+};
+
+}  // namespace lucent

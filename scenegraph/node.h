@@ -1,0 +1,42 @@
+// Nodes of the scene graph: shapes, groups, CSG operations and <use> references, each with
+// its local transform (parentFromNode) and, optionally, its own material.
+#pragma once
+
+#include "shape_spec.h"
+#include "source_loc.h"
+
+#include "primitives/math.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lucent {
+
+enum class NodeKind { Shape, Group, Union, Merge, Intersection, Difference, Use };
+
+const char* nodeKindName(NodeKind k);  // "shape", "group", "union", ...
+
+struct Node {
+  NodeKind kind = NodeKind::Group;
+  std::string element;  // the element name as written: "sphere", "group", "use", ...
+  std::string id;       // empty unless given
+  SourceLoc loc;
+
+  Mat4 parentFromNode{1.0};  // the node's own transform, in the order written
+  std::optional<uint32_t> material;  // index into Scene::materials; none: inherit
+
+  std::optional<ShapeSpec> shape;             // kind == Shape
+  std::vector<std::unique_ptr<Node>> children;  // groups and CSG operations
+  const Node* target = nullptr;                 // kind == Use: the referenced node
+
+  bool isCsg() const {
+    return kind == NodeKind::Union || kind == NodeKind::Merge ||
+           kind == NodeKind::Intersection || kind == NodeKind::Difference;
+  }
+  // Does the node enclose a volume, so it may be an operand of merge/intersection/difference?
+  bool isSolid() const;
+};
+
+}  // namespace lucent

@@ -1,0 +1,33 @@
+// Lucent's scene graph: a parsed scene (settings, cameras, lights, materials, the node
+// hierarchy) and the world built from it for rendering.
+#pragma once
+
+#include "camera.h"
+#include "light.h"
+#include "material.h"
+#include "node.h"
+#include "render_settings.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lucent {
+
+struct Scene {
+  std::string file;  // the scene file named on the command line
+  RenderSettings render;
+  std::vector<Camera> cameras;  // at least one
+  std::vector<Light> lights;
+  // Index 0 is the default material (diffuse 0.8) for shapes with none at all.
+  std::vector<Material> materials{Material::defaultMaterial()};
+  // The top-level geometry: a group with identity transform. <defs> are not under it.
+  std::unique_ptr<Node> root = std::make_unique<Node>();
+  // Nodes declared in <defs>: instantiated only through <use>.
+  std::vector<std::unique_ptr<Node>> defs;
+
+  // The camera used for rendering: by name, or the first. Null if the name is unknown.
+  const Camera* findCamera(const std::string& name) const;
+};
+
+}  // namespace lucent

@@ -1,0 +1,50 @@
+// The parameters of each geometry element exactly as the scene gave them. The parser fills
+// these; the world builder turns them into primitives; the POV-Ray exporter reads them.
+#pragma once
+
+#include "primitives/math.h"
+#include "primitives/mesh_data.h"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+
+namespace lucent {
+
+struct SphereSpec { Vec3 center{0.0}; double radius = 1.0; };
+struct BoxSpec { Vec3 min{-1.0}; Vec3 max{1.0}; };
+struct CylinderSpec { Vec3 base{0.0}; Vec3 cap{0.0, 1.0, 0.0}; double radius = 1.0; bool open = false; };
+struct ConeSpec {
+  Vec3 base{0.0}; double baseRadius = 1.0;
+  Vec3 cap{0.0, 1.0, 0.0}; double capRadius = 0.0;
+  bool open = false;
+};
+struct TorusSpec { double major = 1.0; double minor = 0.25; };
+// The points with normal·x = offset; normal is unit; normal·x < offset is inside.
+struct PlaneSpec { Vec3 normal{0.0, 1.0, 0.0}; double offset = 0.0; };
+struct DiscSpec {
+  Vec3 center{0.0}; Vec3 normal{0.0, 1.0, 0.0};  // normal is unit
+  double radius = 1.0; double innerRadius = 0.0;
+};
+struct TriangleSpec {
+  Vec3 a{0.0}, b{1.0, 0.0, 0.0}, c{0.0, 1.0, 0.0};
+  std::optional<std::array<Vec3, 3>> normals;  // unit vertex normals na, nb, nc
+};
+enum class SmoothMode { Auto, True, False };
+struct MeshSpec {
+  std::string src;  // as written ("" for inline meshes)
+  SmoothMode smooth = SmoothMode::Auto;
+  std::shared_ptr<const MeshData> data;  // loaded, triangulated, oriented
+};
+
+using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
+                               DiscSpec, TriangleSpec, MeshSpec>;
+
+// Is the shape a solid (may be a CSG operand)? Meshes are when closed and oriented.
+bool isSolid(const ShapeSpec& spec);
+// The element name: "sphere", "box", ...
+const char* shapeElementName(const ShapeSpec& spec);
+
+}  // namespace lucent
