@@ -1,2 +1,81 @@
-// The lucent command line (filled in by the render/CLI work).
-int main() { return 1; }
+// lucent: render, check, export-pov and compare scene files.
+#include "commands.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <cstdio>
+
+using namespace lucent::cli;
+
+namespace {
+
+// -D name=value, repeatable; the value may itself contain '='.
+void addCommonOptions(CLI::App* app, CommonOptions& common, std::vector<std::string>& defines) {
+  app->add_option("-D,--define", defines, "Set a scene parameter: -D name=value")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false);
+  app->add_option("--allow-path", common.allowPaths,
+                  "Let the scene read files under DIR as well as its own folder")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+}
+
+bool splitDefines(const std::vector<std::string>& defines, CommonOptions& common) {
+  for (const std::string& d : defines) {
+    auto eq = d.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      fmt::print(stderr, "lucent: error: -D expects name=value, got '{}'\n", d);
+      return false;
+    }
+    common.defines[d.substr(0, eq)] = d.substr(eq + 1);
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Lucent: a ray tracer for scenes written as XML files"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "lucent 0.1");
+
+  CommonOptions common;
+  std::vector<std::string> defines;
+
+  RenderOptions render;
+  CLI::App* renderCmd = app.add_subcommand("render", "Render a scene to an image");
+  renderCmd->add_option("scene", render.scene, "Scene file (.xml)")->required();
+  renderCmd->add_option("-o,--output", render.output,
+                        "Output image; the format follows the extension (png exr tif jpg hdr ppm)")
+      ->required();
+  // -h is the image height (as the contract says); help is --help only.
+  renderCmd->set_help_flag("--help", "Print this help and exit");
+  renderCmd->add_option("-w,--width", render.width, "Image width in pixels");
+  renderCmd->add_option("-h,--height", render.height, "Image height in pixels");
+  renderCmd->add_option("-s,--samples", render.samples, "Samples per pixel");
+  renderCmd->add_option("-t,--threads", render.threads, "Threads (default: all cores)");
+  renderCmd->add_option("--max-depth", render.maxDepth, "Maximum recursion depth");
+  renderCmd->add_option("--camera", render.camera, "Render through the camera with this name");
+  renderCmd->add_flag("-q,--quiet", render.quiet, "No progress or messages");
+  renderCmd->add_flag("--stats", render.stats, "Print ray counts, time and Mrays/s");
+  addCommonOptions(renderCmd, common, defines);
+
+  std::string checkScene;
+  CLI::App* checkCmd = app.add_subcommand("check", "Parse and validate a scene; print a summary");
+  checkCmd->add_option("scene", checkScene, "Scene file (.xml)")->required();
+  addCommonOptions(checkCmd, common, defines);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // Help and version exit 0; every real usage error exits 1 (the contract's status).
+    int status = app.exit(e);
+    return status == 0 ? kOk : kUsage;
+  }
+  if (!splitDefines(defines, common)) return kUsage;
+
+  if (*renderCmd) return runRender(render, common);
+  if (*checkCmd) return runCheck(checkScene, common);
+  return kUsage;
+}

@@ -1,0 +1,32 @@
+// The subcommands of `lucent`, each in its own file; main.cpp parses options and dispatches.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lucent::cli {
+
+// The contract's exit statuses.
+enum ExitCode { kOk = 0, kUsage = 1, kInvalidScene = 2, kRuntimeFailure = 3 };
+
+// Options every command accepts.
+struct CommonOptions {
+  std::map<std::string, std::string> defines;  // -D name=value
+  std::vector<std::string> allowPaths;         // --allow-path DIR
+};
+
+struct RenderOptions {
+  std::string scene;
+  std::string output;
+  std::optional<int> width, height, samples, threads, maxDepth;
+  std::string camera;
+  bool quiet = false;
+  bool stats = false;
+};
+
+int runRender(const RenderOptions& options, const CommonOptions& common);
+int runCheck(const std::string& scene, const CommonOptions& common);
+
+}  // namespace lucent::cli

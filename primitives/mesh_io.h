@@ -1,0 +1,26 @@
+// Reading triangle meshes from OBJ, PLY, OFF and STL files, and deciding whether a mesh is
+// a closed, outward-oriented solid (with CGAL, kept to this one translation unit).
+#pragma once
+
+#include "mesh_data.h"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace lucent {
+
+// A mesh file that cannot be read, or holds no usable triangles; the message names the
+// reason (the caller adds the file name and scene location).
+struct MeshError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Reads, repairs, triangulates and orients the mesh in `path` (format by extension).
+std::shared_ptr<MeshData> loadMeshFile(const std::string& path);
+
+// For meshes built in memory (inline <mesh>): repairs and orients the triangles where that
+// is possible and sets `closed`. Throws MeshError if no usable triangle remains.
+void finishMesh(MeshData& mesh);
+
+}  // namespace lucent
