@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# docs/lucent.xsd must accept every scene we ship or test as valid (examples/**/*.xml,
+# tests/lang/valid/*.xml) and reject every deliberately wrong file in tests/schema/bad/,
+# each for the reason named by its "<!-- expect: TEXT -->" line (a substring of xmllint's
+# message), so a file rejected for an unrelated reason (a typo in the test) fails too.
+# Run by CTest as: bash schema_validate.sh <lucent-binary> <source-dir>
+set -u
+
+src=${2:?usage: schema_validate.sh <lucent-binary> <source-dir>}
+xsd="$src/docs/lucent.xsd"
+
+if ! command -v xmllint >/dev/null; then
+  echo "schema_validate: FAIL: xmllint not found (Debian package libxml2-utils)"
+  exit 1
+fi
+# A schema that does not compile would make every bad file "rejected".
+if ! out=$(xmllint --noout "$xsd" 2>&1); then
+  echo "$out"
+  echo "schema_validate: FAIL: $xsd is not well-formed"
+  exit 1
+fi
+
+failures=0
+accepted=0
+rejected=0
+
+# xmllint exit status: 0 valid, 3 or 4 invalid, 5 schema compilation error, 1 not well-formed.
+valid_files=$(
+  { find "$src/examples" -name '*.xml' -type f 2>/dev/null
+    [ -d "$src/tests/lang/valid" ] && find "$src/tests/lang/valid" -name '*.xml' -type f
+  } | sort)
+for f in $valid_files; do
+  if out=$(xmllint --noout --schema "$xsd" "$f" 2>&1); then
+    accepted=$((accepted + 1))
+  else
+    echo "$out"
+    echo "REJECTED (should be valid): ${f#$src/}"
+    failures=$((failures + 1))
+  fi
+done
+
+bad_files=$(find "$src/tests/schema/bad" -name '*.xml' -type f | sort)
+for f in $bad_files; do
+  expect=$(sed -n 's/^<!-- expect: \(.*\) -->$/\1/p' "$f" | head -n 1)
+  if [ -z "$expect" ]; then
+    echo "NO EXPECT LINE: ${f#$src/}"
+    failures=$((failures + 1))
+    continue
+  fi
+  out=$(xmllint --noout --schema "$xsd" "$f" 2>&1)
+  status=$?
+  if [ $status -eq 0 ]; then
+    echo "ACCEPTED (should be rejected): ${f#$src/}"
+    failures=$((failures + 1))
+  elif [ $status -ne 3 ] && [ $status -ne 4 ]; then
+    echo "$out"
+    echo "NOT A VALIDATION ERROR (xmllint status $status): ${f#$src/}"
+    failures=$((failures + 1))
+  elif ! grep -qF -- "$expect" <<<"$out"; then
+    echo "$out"
+    echo "REJECTED FOR ANOTHER REASON (expected \"$expect\"): ${f#$src/}"
+    failures=$((failures + 1))
+  else
+    rejected=$((rejected + 1))
+  fi
+done
+
+# Guard against a vacuous pass (files moved, globs matching nothing).
+if [ -z "$valid_files" ]; then
+  echo "no valid scene found under examples/"
+  failures=$((failures + 1))
+fi
+if [ "$rejected" -lt 8 ]; then
+  echo "fewer than 8 bad files were checked"
+  failures=$((failures + 1))
+fi
+
+if [ $failures -eq 0 ]; then
+  echo "schema_validate: OK: $accepted valid scenes accepted, $rejected bad files rejected for the expected reason"
+  exit 0
+fi
+echo "schema_validate: FAIL: $failures problem(s); $accepted valid scenes accepted, $rejected bad files rejected as expected"
+exit 1
