@@ -1,0 +1,117 @@
+#include "box.h"
+
+namespace lucent {
+
+Box::Box(const Vec3& a, const Vec3& b) : lo_(glm::min(a, b)), hi_(glm::max(a, b)) {}
+
+bool Box::span(const Ray& ray, double& tIn, uint32_t& faceIn, double& tOut,
+               uint32_t& faceOut) const {
+  // Kay–Kajiya slabs over the whole line. Division (not multiplication by a reciprocal)
+  // keeps each plane distance correctly rounded; an axis the ray runs parallel to either
+  // excludes the line or does not constrain it (closed box: a ray in a face plane is in).
+  tIn = -kInf;
+  tOut = kInf;
+  faceIn = faceOut = 0;
+  for (int a = 0; a < 3; ++a) {
+    if (ray.d[a] == 0.0) {
+      if (ray.o[a] < lo_[a] || ray.o[a] > hi_[a]) return false;
+      continue;
+    }
+    double tLo = (lo_[a] - ray.o[a]) / ray.d[a];
+    double tHi = (hi_[a] - ray.o[a]) / ray.d[a];
+    uint32_t fNear = 2 * a, fFar = 2 * a + 1;
+    if (tLo > tHi) {
+      std::swap(tLo, tHi);
+      std::swap(fNear, fFar);
+    }
+    if (tLo > tIn) { tIn = tLo; faceIn = fNear; }
+    if (tHi < tOut) { tOut = tHi; faceOut = fFar; }
+  }
+  return tIn <= tOut;
+}
+
+bool Box::intersect(const Ray& ray, Hit& hit) const {
+  double tIn, tOut;
+  uint32_t fIn, fOut;
+  if (!span(ray, tIn, fIn, tOut, fOut)) return false;
+  if (ray.tmin < tIn && tIn < ray.tmax) {
+    hit.t = tIn;
+    hit.part = fIn;
+  } else if (ray.tmin < tOut && tOut < ray.tmax) {
+    hit.t = tOut;
+    hit.part = fOut;
+  } else {
+    return false;
+  }
+  hit.shape = this;
+  return true;
+}
+
+void Box::crossings(const Ray& ray, CrossingList& out) const {
+  double tIn, tOut;
+  uint32_t fIn, fOut;
+  out.startsInside = false;
+  if (!span(ray, tIn, fIn, tOut, fOut)) return;
+  out.startsInside = tIn < ray.tmin && ray.tmin <= tOut;
+  if (ray.tmin <= tIn && tIn <= ray.tmax) {
+    Crossing c;
+    c.hit.t = tIn;
+    c.hit.shape = this;
+    c.hit.part = fIn;
+    c.entering = true;
+    out.items.push_back(c);
+  }
+  if (ray.tmin <= tOut && tOut <= ray.tmax) {
+    Crossing c;
+    c.hit.t = tOut;
+    c.hit.shape = this;
+    c.hit.part = fOut;
+    c.entering = false;
+    out.items.push_back(c);
+  }
+}
+
+bool Box::inside(const Vec3& p) const {
+  return lo_.x < p.x && p.x < hi_.x && lo_.y < p.y && p.y < hi_.y && lo_.z < p.z && p.z < hi_.z;
+}
+
+SurfaceInfo Box::surface(const Ray& ray, const Hit& hit) const {
+  SurfaceInfo s;
+  int axis = static_cast<int>(hit.part / 2);
+  bool maxSide = (hit.part & 1) != 0;
+  Vec3 p = ray.at(hit.t);
+  // Reproject: the face's own coordinate is exact, the others are clamped into the face
+  // (the true hit lies in it), which can only shrink their error. Those came from the ray
+  // equation with a t of relative error gamma(2): gamma(5)·(|o| + |t·d|) bounds them.
+  Vec3 err = gamma(5) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d));
+  p = glm::clamp(p, lo_, hi_);
+  p[axis] = maxSide ? hi_[axis] : lo_[axis];
+  err[axis] = 0.0;
+  s.p = p;
+  s.pError = err;
+  s.ng = Vec3(0.0);
+  s.ng[axis] = maxSide ? 1.0 : -1.0;
+  s.ns = s.ng;
+
+  // Face (u,v): the face seen from outside, u to the right, v up (see box.h).
+  Vec3 e = hi_ - lo_;
+  auto frac = [&](int i, bool fromMax) {
+    if (!(e[i] > 0.0)) return 0.0;
+    return fromMax ? (hi_[i] - p[i]) / e[i] : (p[i] - lo_[i]) / e[i];
+  };
+  switch (axis) {
+    case 0:  // ±x: right is ∓z, up is +y
+      s.uv = Vec2(frac(2, maxSide), frac(1, false));
+      break;
+    case 1:  // +y: right +x, up −z; −y: right +x, up +z
+      s.uv = Vec2(frac(0, false), frac(2, maxSide));
+      break;
+    default:  // ±z: right is ±x, up is +y
+      s.uv = Vec2(frac(0, !maxSide), frac(1, false));
+      break;
+  }
+  s.hasUV = true;
+  return s;
+}
+
+}  // namespace lucent

@@ -1,0 +1,33 @@
+// <sphere center="0 0 0" radius="1"/>
+//   center  vector, default 0 0 0
+//   radius  number > 0, default 1
+// A solid ball. (u,v): u = φ/2π with φ = atan2(x, z) + π the longitude about +y, so
+// u = 0.5 faces +z (the default camera) and u grows towards +x, the seam lies at −z;
+// v = θ/π with θ the angle from the +y pole (v = 0 at the top, 1 at the bottom).
+#pragma once
+
+#include "shape.h"
+
+namespace lucent {
+
+class Sphere final : public Shape {
+ public:
+  Sphere(const Vec3& center, double radius);
+
+  const char* kind() const override { return "sphere"; }
+  AABB bounds() const override;
+  bool isSolid() const override { return true; }
+  bool intersect(const Ray& ray, Hit& hit) const override;
+  void crossings(const Ray& ray, CrossingList& out) const override;
+  bool inside(const Vec3& p) const override;
+  SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+
+ private:
+  // Both roots of the line, t0 <= t1; false when the line misses.
+  bool roots(const Ray& ray, double& t0, double& t1) const;
+
+  Vec3 center_;
+  double radius_;
+};
+
+}  // namespace lucent
