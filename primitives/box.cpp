@@ -1,17 +1,18 @@
 #include "box.h"
 
+#include <utility>
+
 namespace lucent {
 
 Box::Box(const Vec3& a, const Vec3& b) : lo_(glm::min(a, b)), hi_(glm::max(a, b)) {}
 
-bool Box::span(const Ray& ray, double& tIn, uint32_t& faceIn, double& tOut,
-               uint32_t& faceOut) const {
+bool Box::span(const Ray& ray, Span& out) const {
   // Kay–Kajiya slabs over the whole line. Division (not multiplication by a reciprocal)
   // keeps each plane distance correctly rounded; an axis the ray runs parallel to either
   // excludes the line or does not constrain it (closed box: a ray in a face plane is in).
-  tIn = -kInf;
-  tOut = kInf;
-  faceIn = faceOut = 0;
+  out = Span();
+  out.tIn = -kInf;
+  out.tOut = kInf;
   for (int a = 0; a < 3; ++a) {
     if (ray.d[a] == 0.0) {
       if (ray.o[a] < lo_[a] || ray.o[a] > hi_[a]) return false;
@@ -24,51 +25,21 @@ bool Box::span(const Ray& ray, double& tIn, uint32_t& faceIn, double& tOut,
       std::swap(tLo, tHi);
       std::swap(fNear, fFar);
     }
-    if (tLo > tIn) { tIn = tLo; faceIn = fNear; }
-    if (tHi < tOut) { tOut = tHi; faceOut = fFar; }
+    if (tLo > out.tIn) { out.tIn = tLo; out.partIn = fNear; }
+    if (tHi < out.tOut) { out.tOut = tHi; out.partOut = fFar; }
   }
-  return tIn <= tOut;
+  return out.tIn <= out.tOut;
 }
 
 bool Box::intersect(const Ray& ray, Hit& hit) const {
-  double tIn, tOut;
-  uint32_t fIn, fOut;
-  if (!span(ray, tIn, fIn, tOut, fOut)) return false;
-  if (ray.tmin < tIn && tIn < ray.tmax) {
-    hit.t = tIn;
-    hit.part = fIn;
-  } else if (ray.tmin < tOut && tOut < ray.tmax) {
-    hit.t = tOut;
-    hit.part = fOut;
-  } else {
-    return false;
-  }
-  hit.shape = this;
-  return true;
+  Span s;
+  return span(ray, s) && intersectSpan(s, ray, this, hit);
 }
 
 void Box::crossings(const Ray& ray, CrossingList& out) const {
-  double tIn, tOut;
-  uint32_t fIn, fOut;
-  out.startsInside = false;
-  if (!span(ray, tIn, fIn, tOut, fOut)) return;
-  out.startsInside = tIn < ray.tmin && ray.tmin <= tOut;
-  if (ray.tmin <= tIn && tIn <= ray.tmax) {
-    Crossing c;
-    c.hit.t = tIn;
-    c.hit.shape = this;
-    c.hit.part = fIn;
-    c.entering = true;
-    out.items.push_back(c);
-  }
-  if (ray.tmin <= tOut && tOut <= ray.tmax) {
-    Crossing c;
-    c.hit.t = tOut;
-    c.hit.shape = this;
-    c.hit.part = fOut;
-    c.entering = false;
-    out.items.push_back(c);
-  }
+  Span s;
+  if (!span(ray, s)) s = Span();
+  crossingsOfSpan(s, ray, this, out);
 }
 
 bool Box::inside(const Vec3& p) const {

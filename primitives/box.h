@@ -9,6 +9,7 @@
 #pragma once
 
 #include "shape.h"
+#include "span.h"
 
 namespace lucent {
 
@@ -26,8 +27,7 @@ class Box final : public Shape {
 
  private:
   // Where the whole line enters and leaves the box, and through which faces.
-  bool span(const Ray& ray, double& tIn, uint32_t& faceIn, double& tOut,
-            uint32_t& faceOut) const;
+  bool span(const Ray& ray, Span& out) const;
 
   Vec3 lo_, hi_;
 };

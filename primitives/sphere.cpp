@@ -1,6 +1,7 @@
 #include "sphere.h"
 
 #include "quadratic.h"
+#include "span.h"
 
 namespace lucent {
 
@@ -8,42 +9,20 @@ Sphere::Sphere(const Vec3& center, double radius) : center_(center), radius_(rad
 
 AABB Sphere::bounds() const { return {center_ - Vec3(radius_), center_ + Vec3(radius_)}; }
 
-bool Sphere::roots(const Ray& ray, double& t0, double& t1) const {
+bool Sphere::span(const Ray& ray, Span& out) const {
   // Precision-improved quadratic (Ray Tracing Gems ch. 7), see quadratic.h.
-  return solveDistanceQuadratic(ray.o - center_, ray.d, radius_ * radius_, t0, t1);
+  return solveDistanceQuadratic(ray.o - center_, ray.d, radius_ * radius_, out.tIn, out.tOut);
 }
 
 bool Sphere::intersect(const Ray& ray, Hit& hit) const {
-  double t0, t1;
-  if (!roots(ray, t0, t1)) return false;
-  double t;
-  if (ray.tmin < t0 && t0 < ray.tmax)
-    t = t0;
-  else if (ray.tmin < t1 && t1 < ray.tmax)
-    t = t1;
-  else
-    return false;
-  hit.t = t;
-  hit.shape = this;
-  hit.part = 0;
-  return true;
+  Span s;
+  return span(ray, s) && intersectSpan(s, ray, this, hit);
 }
 
 void Sphere::crossings(const Ray& ray, CrossingList& out) const {
-  double t0, t1;
-  out.startsInside = false;
-  if (!roots(ray, t0, t1)) return;
-  // The line is inside on [t0, t1]; a root exactly at tmin is listed, not counted as behind.
-  out.startsInside = t0 < ray.tmin && ray.tmin <= t1;
-  const double ts[2] = {t0, t1};
-  for (int i = 0; i < 2; ++i) {
-    if (ts[i] < ray.tmin || ts[i] > ray.tmax) continue;
-    Crossing c;
-    c.hit.t = ts[i];
-    c.hit.shape = this;
-    c.entering = (i == 0);
-    out.items.push_back(c);
-  }
+  Span s;
+  if (!span(ray, s)) s = Span();
+  crossingsOfSpan(s, ray, this, out);
 }
 
 bool Sphere::inside(const Vec3& p) const {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "shape.h"
+#include "span.h"
 
 namespace lucent {
 
@@ -23,8 +24,8 @@ class Sphere final : public Shape {
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
 
  private:
-  // Both roots of the line, t0 <= t1; false when the line misses.
-  bool roots(const Ray& ray, double& t0, double& t1) const;
+  // Where the whole line is inside (both roots); false when it misses.
+  bool span(const Ray& ray, Span& out) const;
 
   Vec3 center_;
   double radius_;

@@ -1,0 +1,188 @@
+#include "cone.h"
+
+#include "quadratic.h"
+
+#include <algorithm>
+
+namespace lucent {
+
+Cone::Cone(const Vec3& base, double baseRadius, const Vec3& cap, double capRadius, bool open)
+    : base_(base), cap_(cap), rBase_(baseRadius), rCap_(capRadius),
+      height_(glm::length(cap - base)), slope_((capRadius - baseRadius) / height_), open_(open),
+      frame_(base, glm::normalize(cap - base)) {}
+
+AABB Cone::bounds() const {
+  const Vec3& a = frame_.a;
+  Vec3 s = glm::sqrt(glm::max(Vec3(0.0), Vec3(1.0) - a * a));
+  AABB box(base_ - rBase_ * s, base_ + rBase_ * s);
+  box.expand(AABB(cap_ - rCap_ * s, cap_ + rCap_ * s));
+  return box;
+}
+
+bool Cone::sideQuadratic(const Ray& l, Quadratic& q) const {
+  // Move the origin to the line's closest approach to the middle of the axis before
+  // forming the coefficients: they are then of the size of the cone, not of the distance
+  // the ray comes from, and h² − a·c no longer cancels catastrophically for far rays
+  // (the same idea as the distance form for spheres, Ray Tracing Gems ch. 7).
+  double dd = glm::dot(l.d, l.d);
+  if (!(dd > 0.0)) return false;
+  const Vec3 mid(0.0, 0.0, 0.5 * height_);
+  q.tShift = -glm::dot(l.o - mid, l.d) / dd;
+  q.o = l.o + q.tShift * l.d;
+  q.d = l.d;
+  const double rMax = std::max(rBase_, rCap_);
+  const Vec3 f = q.o - mid;
+  // Outside the bounding sphere (with a margin for rounding): the line misses.
+  if (glm::dot(f, f) > (rMax * rMax + 0.25 * height_ * height_) * (1.0 + gamma(8))) return false;
+  // x² + y² − (r0 + k·z)² along o + s·d.
+  const double k = slope_;
+  const double r = radiusAt(q.o.z);
+  q.a = q.d.x * q.d.x + q.d.y * q.d.y - k * k * q.d.z * q.d.z;
+  q.h = q.o.x * q.d.x + q.o.y * q.d.y - k * q.d.z * r;
+  q.c = q.o.x * q.o.x + q.o.y * q.o.y - r * r;
+  return true;
+}
+
+bool Cone::solidSpan(const Ray& l, Span& s) const {
+  s = Span();
+  Quadratic q;
+  if (!sideQuadratic(l, q)) return false;
+  // Where the side's quadratic is <= 0 (inside the double cone): one or two pieces.
+  double pieces[2][2];
+  int n = 0;
+  if (q.a == 0.0) {
+    if (q.h == 0.0) {
+      if (q.c > 0.0) return false;
+      pieces[n][0] = -kInf, pieces[n][1] = kInf, ++n;
+    } else {
+      double s0 = -q.c / (2.0 * q.h);
+      if (q.h > 0.0)
+        pieces[n][0] = -kInf, pieces[n][1] = s0, ++n;
+      else
+        pieces[n][0] = s0, pieces[n][1] = kInf, ++n;
+    }
+  } else {
+    double s0, s1;
+    bool real = solveQuadratic(q.a, q.h, q.c, q.h * q.h - q.a * q.c, s0, s1);
+    if (q.a > 0.0) {
+      if (!real) return false;
+      pieces[n][0] = s0, pieces[n][1] = s1, ++n;
+    } else if (!real) {
+      pieces[n][0] = -kInf, pieces[n][1] = kInf, ++n;
+    } else {
+      pieces[n][0] = -kInf, pieces[n][1] = s0, ++n;
+      pieces[n][0] = s1, pieces[n][1] = kInf, ++n;
+    }
+  }
+  // The slab 0 <= z <= height between the end discs.
+  double z0 = -kInf, z1 = kInf;
+  uint32_t p0 = 1, p1 = 2;
+  if (q.d.z == 0.0) {
+    if (q.o.z < 0.0 || q.o.z > height_) return false;
+  } else {
+    z0 = -q.o.z / q.d.z;
+    z1 = (height_ - q.o.z) / q.d.z;
+    if (z0 > z1) {
+      std::swap(z0, z1);
+      std::swap(p0, p1);
+    }
+  }
+  // Within the slab only the real nappe lies (the mirrored one is beyond the apex), and
+  // the truncated cone is convex, so at most one piece survives the clipping (two only
+  // when both merely touch the apex; keep the longer).
+  bool found = false;
+  double bestLen = -1.0;
+  for (int i = 0; i < n; ++i) {
+    double lo = pieces[i][0], hi = pieces[i][1];
+    uint32_t partLo = 0, partHi = 0;
+    if (z0 > lo) { lo = z0; partLo = p0; }
+    if (z1 < hi) { hi = z1; partHi = p1; }
+    if (!(lo <= hi) || hi - lo <= bestLen) continue;
+    bestLen = hi - lo;
+    s.tIn = q.tShift + lo;
+    s.tOut = q.tShift + hi;
+    s.partIn = partLo;
+    s.partOut = partHi;
+    found = true;
+  }
+  return found;
+}
+
+int Cone::sideRoots(const Ray& l, SurfaceRoot roots[2]) const {
+  Quadratic q;
+  if (!sideQuadratic(l, q)) return 0;
+  double s0, s1;
+  if (!solveQuadratic(q.a, q.h, q.c, q.h * q.h - q.a * q.c, s0, s1)) return 0;
+  int n = 0;
+  const double ss[2] = {s0, s1};
+  for (int i = 0; i < (s0 == s1 ? 1 : 2); ++i) {
+    double z = q.o.z + ss[i] * q.d.z;
+    if (0.0 <= z && z <= height_) roots[n++] = {q.tShift + ss[i], 0, 0.0, 0.0};
+  }
+  return n;
+}
+
+bool Cone::intersect(const Ray& ray, Hit& hit) const {
+  Ray l = frame_.rayToLocal(ray);
+  if (open_) {
+    SurfaceRoot roots[2];
+    int n = sideRoots(l, roots);
+    return intersectRoots(roots, n, ray, this, hit);
+  }
+  Span s;
+  return solidSpan(l, s) && intersectSpan(s, ray, this, hit);
+}
+
+void Cone::crossings(const Ray& ray, CrossingList& out) const {
+  Ray l = frame_.rayToLocal(ray);
+  if (open_) {
+    SurfaceRoot roots[2];
+    int n = sideRoots(l, roots);
+    crossingsOfRoots(roots, n, ray, this, out);
+    return;
+  }
+  Span s;
+  if (!solidSpan(l, s)) s = Span();
+  crossingsOfSpan(s, ray, this, out);
+}
+
+bool Cone::inside(const Vec3& p) const {
+  if (open_) return false;
+  Vec3 q = frame_.pointToLocal(p);
+  if (!(0.0 < q.z && q.z < height_)) return false;
+  double r = radiusAt(q.z);
+  return q.x * q.x + q.y * q.y < r * r;
+}
+
+SurfaceInfo Cone::surface(const Ray& ray, const Hit& hit) const {
+  SurfaceInfo s;
+  Ray l = frame_.rayToLocal(ray);
+  Vec3 q = l.at(hit.t);
+  Vec3 nLocal;
+  double rho = std::sqrt(q.x * q.x + q.y * q.y);
+  if (hit.part == 0) {
+    // Reproject onto the side at the hit's height; the normal is the gradient of
+    // x² + y² − r(z)², i.e. (cos φ, sin φ, −dr/dz) normalised.
+    q.z = glm::clamp(q.z, 0.0, height_);
+    double r = radiusAt(q.z);
+    Vec2 dir = rho > 0.0 ? Vec2(q.x, q.y) / rho : Vec2(1.0, 0.0);
+    q.x = r * dir.x;
+    q.y = r * dir.y;
+    nLocal = glm::normalize(Vec3(dir.x, dir.y, -slope_));
+  } else {
+    double r = hit.part == 1 ? rBase_ : rCap_;
+    if (rho > r) {
+      q.x *= r / rho;
+      q.y *= r / rho;
+    }
+    q.z = hit.part == 1 ? 0.0 : height_;
+    nLocal = Vec3(0.0, 0.0, hit.part == 1 ? -1.0 : 1.0);
+  }
+  s.p = frame_.pointToObject(q);
+  s.pError = frame_.roundTripError(q, s.p);
+  s.ng = glm::normalize(frame_.vectorToObject(nLocal));
+  s.ns = s.ng;
+  return s;
+}
+
+}  // namespace lucent

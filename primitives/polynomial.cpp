@@ -1,0 +1,140 @@
+#include "polynomial.h"
+
+#include "math.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lucent {
+
+double evalPolynomial(const double* c, int n, double x) {
+  double r = c[n];
+  for (int i = n - 1; i >= 0; --i) r = r * x + c[i];
+  return r;
+}
+
+double evalPolynomialDerivative(const double* c, int n, double x) {
+  double r = n * c[n];
+  for (int i = n - 1; i >= 1; --i) r = r * x + i * c[i];
+  return r;
+}
+
+namespace {
+
+double errorBound(const double* cAbs, int n, double x) {
+  double ax = std::abs(x), r = cAbs[n];
+  for (int i = n - 1; i >= 0; --i) r = r * ax + cAbs[i];
+  return gamma(2 * n + 6) * r;
+}
+
+// The one root of p in (a, b), where p(a) and p(b) have opposite signs and p is monotonic.
+double refineBracketed(const double* c, int n, double a, double b, double fa) {
+  double x = 0.5 * (a + b);
+  for (int it = 0; it < 100; ++it) {
+    double fx = evalPolynomial(c, n, x);
+    if (fx == 0.0) return x;
+    if ((fx < 0.0) == (fa < 0.0)) {
+      a = x;
+      fa = fx;
+    } else {
+      b = x;
+    }
+    double df = evalPolynomialDerivative(c, n, x);
+    double next = df != 0.0 ? x - fx / df : 0.5 * (a + b);
+    if (!(a < next && next < b)) next = 0.5 * (a + b);
+    if (std::abs(next - x) <= 2.0 * kMachineEps * std::abs(next) || next == a || next == b)
+      return next;
+    x = next;
+  }
+  return x;
+}
+
+// Roots where p changes sign in (lo, hi), ascending (used for the derivatives, whose
+// touching roots are inflections of p and need no splitting).
+int signChangeRoots(const double* c, int n, double lo, double hi, double* out) {
+  if (n == 1) {
+    double x = -c[0] / c[1];
+    if (lo < x && x < hi) {
+      out[0] = x;
+      return 1;
+    }
+    return 0;
+  }
+  double d[4] = {0.0, 0.0, 0.0, 0.0};
+  for (int i = 0; i < n; ++i) d[i] = (i + 1) * c[i + 1];
+  double pts[6];
+  int m = 0;
+  pts[m++] = lo;
+  m += signChangeRoots(d, n - 1, lo, hi, pts + m);
+  pts[m++] = hi;
+  int count = 0;
+  double fa = evalPolynomial(c, n, pts[0]);
+  for (int i = 0; i + 1 < m; ++i) {
+    double fb = evalPolynomial(c, n, pts[i + 1]);
+    if (fa == 0.0 && i > 0) {
+      out[count++] = pts[i];
+    } else if ((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0)) {
+      out[count++] = refineBracketed(c, n, pts[i], pts[i + 1], fa);
+    }
+    fa = fb;
+  }
+  return count;
+}
+
+}  // namespace
+
+int polynomialRoots(const double* c, const double* cAbs, int n, double lo, double hi,
+                    PolynomialRoot* out) {
+  if (n == 1) {
+    double x = -c[0] / c[1];
+    if (lo < x && x < hi) {
+      out[0] = {x, false};
+      return 1;
+    }
+    return 0;
+  }
+  // Split points: the ends and the critical points (roots of p').
+  double d[4] = {0.0, 0.0, 0.0, 0.0};
+  for (int i = 0; i < n; ++i) d[i] = (i + 1) * c[i + 1];
+  double pts[6];
+  int m = 0;
+  pts[m++] = lo;
+  m += signChangeRoots(d, n - 1, lo, hi, pts + m);
+  pts[m++] = hi;
+
+  // Sign at each split point; 0 for an interior critical point where p is 0 up to its
+  // rounding error (the two roots around it cannot be told apart from a double root).
+  double val[6];
+  int sgn[6];
+  for (int i = 0; i < m; ++i) {
+    val[i] = evalPolynomial(c, n, pts[i]);
+    bool interior = i > 0 && i + 1 < m;
+    sgn[i] = (interior && std::abs(val[i]) <= errorBound(cAbs, n, pts[i])) ? 0
+             : val[i] > 0.0                                                  ? 1
+             : val[i] < 0.0                                                  ? -1
+                                                                             : 0;
+  }
+  int count = 0;
+  int lastSign = sgn[0];
+  for (int i = 1; i < m; ++i) {
+    if (sgn[i] == 0) {
+      // A touching point: the sign either comes back (a double root) or changes across it
+      // (an odd root with zero slope, e.g. a triple one); decide by the next nonzero sign.
+      int j = i + 1;
+      while (j < m && sgn[j] == 0) ++j;
+      int after = j < m ? sgn[j] : lastSign;
+      out[count++] = {pts[i], after == lastSign};
+      lastSign = after;
+      // Skip the other zero points of the run (degenerate, at most a couple of ulps apart).
+      i = j - 1;
+      continue;
+    }
+    if (sgn[i] != lastSign && sgn[i - 1] != 0) {
+      out[count++] = {refineBracketed(c, n, pts[i - 1], pts[i], val[i - 1]), false};
+    }
+    lastSign = sgn[i];
+  }
+  return count;
+}
+
+}  // namespace lucent

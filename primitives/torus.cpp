@@ -1,0 +1,189 @@
+#include "torus.h"
+
+#include "polynomial.h"
+
+#include <algorithm>
+
+namespace lucent {
+
+Torus::Torus(double major, double minor) : R_(major), r_(minor) {}
+
+AABB Torus::bounds() const {
+  double e = R_ + r_;
+  return {Vec3(-e, -r_, -e), Vec3(e, r_, e)};
+}
+
+namespace {
+
+// The quartic along o + t·d in its factored form, and its first two derivatives in t from
+// the expanded form (smooth on the axis, where ρ is not).
+struct TorusEval {
+  double f, df, d2f;
+};
+
+TorusEval evalTorus(double R, double r, const Vec3& o, const Vec3& d, double t) {
+  Vec3 p = o + t * d;
+  double rho2 = p.x * p.x + p.z * p.z;
+  double rho = std::sqrt(rho2);
+  double y2r2 = p.y * p.y - r * r;
+  double g1 = (rho - R) * (rho - R) + y2r2;
+  double g2 = (rho + R) * (rho + R) + y2r2;
+  double S = glm::dot(p, p) + R * R - r * r;
+  double pd = glm::dot(p, d);
+  double rd = p.x * d.x + p.z * d.z;
+  double dxz = d.x * d.x + d.z * d.z;
+  TorusEval e;
+  e.f = g1 * g2;
+  e.df = 4.0 * S * pd - 8.0 * R * R * rd;
+  e.d2f = 8.0 * pd * pd + 4.0 * S * glm::dot(d, d) - 8.0 * R * R * dxz;
+  return e;
+}
+
+// Newton on g(t) (g = f for a simple root, g = f' for a tangent one), keeping the iterate
+// where |g| is smallest: polishing can only improve on the quartic's root.
+double polish(double R, double r, const Vec3& o, const Vec3& d, double t, bool tangent) {
+  auto g = [&](double x, double& dg) {
+    TorusEval e = evalTorus(R, r, o, d, x);
+    dg = tangent ? e.d2f : e.df;
+    return tangent ? e.df : e.f;
+  };
+  double dg;
+  double best = t, bestAbs = std::abs(g(t, dg));
+  double x = t;
+  for (int it = 0; it < 4 && bestAbs > 0.0; ++it) {
+    double gx = g(x, dg);
+    if (dg == 0.0 || !std::isfinite(dg)) break;
+    double next = x - gx / dg;
+    double dummy;
+    double a = std::abs(g(next, dummy));
+    if (!(a < bestAbs)) break;
+    best = next;
+    bestAbs = a;
+    x = next;
+  }
+  return best;
+}
+
+}  // namespace
+
+int Torus::lineRoots(const Ray& ray, double t[4]) const {
+  const double dd = glm::dot(ray.d, ray.d);
+  if (!(dd > 0.0)) return 0;
+  const double speed = std::sqrt(dd);
+  const Vec3 dn = ray.d / speed;
+  // Shift to the closest approach to the centre; leave if the bounding sphere is missed.
+  const double tShift = -glm::dot(ray.o, ray.d) / dd;
+  const Vec3 o = ray.o + tShift * ray.d;
+  const double bound = R_ + r_;
+  const double o2 = glm::dot(o, o);
+  if (o2 > bound * bound * (1.0 + gamma(4))) return 0;
+  // The chord of a slightly larger sphere: its ends are safely outside the torus.
+  const double L = std::sqrt(std::max(0.0, 1.0625 * bound * bound - o2)) + 0.25 * bound;
+
+  // (e·s² + 2β·s + α)² − 4R²(a2·s² + 2·a1·s + a0), with p = o + s·dn.
+  const double e = glm::dot(dn, dn);
+  const double beta = glm::dot(o, dn);
+  const double R2 = R_ * R_, r2 = r_ * r_;
+  const double alpha = o2 + R2 - r2;
+  const double a2 = dn.x * dn.x + dn.z * dn.z;
+  const double a1 = o.x * dn.x + o.z * dn.z;
+  const double a0 = o.x * o.x + o.z * o.z;
+  const double c[5] = {alpha * alpha - 4.0 * R2 * a0,
+                       4.0 * alpha * beta - 8.0 * R2 * a1,
+                       4.0 * beta * beta + 2.0 * e * alpha - 4.0 * R2 * a2,
+                       4.0 * e * beta,
+                       e * e};
+  // Magnitudes of the terms behind each coefficient, for the rounding bound.
+  const double alphaAbs = o2 + R2 + r2, betaAbs = std::abs(beta);
+  const double cAbs[5] = {alphaAbs * alphaAbs + 4.0 * R2 * a0,
+                          4.0 * alphaAbs * betaAbs + 8.0 * R2 * std::abs(a1),
+                          4.0 * beta * beta + 2.0 * e * alphaAbs + 4.0 * R2 * a2,
+                          4.0 * e * betaAbs,
+                          e * e};
+  PolynomialRoot roots[4];
+  int n = polynomialRoots(c, cAbs, 4, -L, L, roots);
+  int count = 0;
+  for (int i = 0; i < n; ++i) {
+    double ti = polish(R_, r_, ray.o, ray.d, tShift + roots[i].x / speed, roots[i].touching);
+    t[count++] = ti;
+    if (roots[i].touching && count < 4) t[count++] = ti;
+  }
+  std::sort(t, t + count);
+  // A degenerate case could leave an odd count (a sign change at a touching point): the
+  // line starts and ends outside, so drop the last root rather than end "inside".
+  if (count % 2 == 1) --count;
+  return count;
+}
+
+bool Torus::intersect(const Ray& ray, Hit& hit) const {
+  double t[4];
+  int n = lineRoots(ray, t);
+  for (int i = 0; i < n; ++i) {
+    if (ray.tmin < t[i] && t[i] < ray.tmax) {
+      hit.t = t[i];
+      hit.shape = this;
+      hit.part = 0;
+      return true;
+    }
+  }
+  return false;
+}
+
+void Torus::crossings(const Ray& ray, CrossingList& out) const {
+  double t[4];
+  int n = lineRoots(ray, t);
+  int before = 0;
+  for (int i = 0; i < n; ++i) {
+    if (t[i] < ray.tmin) {
+      ++before;
+    } else if (t[i] <= ray.tmax) {
+      Crossing c;
+      c.hit.t = t[i];
+      c.hit.shape = this;
+      c.entering = (i % 2 == 0);
+      out.items.push_back(c);
+    }
+  }
+  out.startsInside = before % 2 == 1;
+}
+
+bool Torus::inside(const Vec3& p) const {
+  // The quartic's sign from its factors: negative inside the outer surface (g1 < 0) and
+  // outside the inner one (g2 > 0, which only a spindle torus can violate).
+  double rho = std::sqrt(p.x * p.x + p.z * p.z);
+  double y2r2 = p.y * p.y - r_ * r_;
+  double g1 = (rho - R_) * (rho - R_) + y2r2;
+  double g2 = (rho + R_) * (rho + R_) + y2r2;
+  return g1 < 0.0 && g2 > 0.0;
+}
+
+SurfaceInfo Torus::surface(const Ray& ray, const Hit& hit) const {
+  SurfaceInfo s;
+  Vec3 p = ray.at(hit.t);
+  double rho = std::sqrt(p.x * p.x + p.z * p.z);
+  double y2r2 = p.y * p.y - r_ * r_;
+  double g1 = (rho - R_) * (rho - R_) + y2r2;
+  double g2 = (rho + R_) * (rho + R_) + y2r2;
+  if (rho > 0.0) {
+    // Reproject like a sphere around the nearest point of the tube's centre circle
+    // (c = ±R·ρ̂, the sign picking the factor that vanishes): p = c + r·m, m unit.
+    double side = std::abs(g1) <= std::abs(g2) ? 1.0 : -1.0;
+    Vec3 c = side * R_ * Vec3(p.x / rho, 0.0, p.z / rho);
+    Vec3 m = p - c;
+    double len = glm::length(m);
+    m = len > 0.0 ? m / len : Vec3(0.0, 1.0, 0.0);
+    s.p = c + r_ * m;
+    s.pError = gamma(8) * (glm::abs(c) + r_ * glm::abs(m)) + gamma(2) * glm::abs(s.p);
+    // On the inner (lemon) sheet of a spindle torus the solid lies outside that sphere.
+    s.ng = side * m;
+  } else {
+    // On the axis (spindle tori only): the gradient of the quartic there is along ±y.
+    s.p = p;
+    s.pError = gamma(16) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d));
+    s.ng = Vec3(0.0, p.y >= 0.0 ? 1.0 : -1.0, 0.0);
+  }
+  s.ns = s.ng;
+  return s;
+}
+
+}  // namespace lucent

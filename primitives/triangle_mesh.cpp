@@ -1,0 +1,179 @@
+#include "triangle_mesh.h"
+
+#include "triangle_geometry.h"
+#include "watertight.h"
+
+#include <algorithm>
+
+namespace lucent {
+
+std::vector<Vec3> computeVertexNormals(const MeshData& mesh) {
+  std::vector<Vec3> n(mesh.positions.size(), Vec3(0.0));
+  for (const auto& tri : mesh.triangles) {
+    const Vec3& p0 = mesh.positions[tri[0]];
+    Vec3 area2 = glm::cross(mesh.positions[tri[1]] - p0, mesh.positions[tri[2]] - p0);
+    for (uint32_t v : tri) n[v] += area2;
+  }
+  for (Vec3& v : n) {
+    double len = glm::length(v);
+    v = len > 0.0 ? v / len : Vec3(0.0);
+  }
+  return n;
+}
+
+TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> mesh, bool useNormals)
+    : mesh_(std::move(mesh)),
+      useNormals_(useNormals && mesh_->normals.size() == mesh_->positions.size()) {
+  const auto& P = mesh_->positions;
+  for (uint32_t i = 0; i < mesh_->triangles.size(); ++i) {
+    const auto& tri = mesh_->triangles[i];
+    for (uint32_t v : tri) bounds_.expand(P[v]);
+    if (!isDegenerateTriangle(P[tri[0]], P[tri[1]], P[tri[2]])) live_.push_back(i);
+  }
+}
+
+template <class Visit>
+void TriangleMesh::forEachCandidate(const Ray& ray, const double& tFar, Visit&& visit) const {
+  Ray bounded = ray;
+  bounded.tmax = tFar;
+  if (!bounds_.hit(bounded, 1.0 / ray.d)) return;
+  for (uint32_t i : live_)
+    if (!visit(i)) return;
+}
+
+namespace {
+
+struct TriangleHit {
+  double t;
+  uint32_t tri;
+  double b1, b2;
+  int facing;  // +1: the ray meets the outward side (entering a solid)
+};
+
+}  // namespace
+
+bool TriangleMesh::intersect(const Ray& ray, Hit& hit) const {
+  const ShearedRay sr(ray);
+  const auto& P = mesh_->positions;
+  double tFar = ray.tmax;
+  bool found = false;
+  forEachCandidate(ray, tFar, [&](uint32_t i) {
+    const auto& tri = mesh_->triangles[i];
+    TriangleIntersection ti;
+    if (intersectTriangle(sr, P[tri[0]], P[tri[1]], P[tri[2]], ti) && ray.tmin < ti.t &&
+        ti.t < tFar) {
+      tFar = ti.t;
+      hit.t = ti.t;
+      hit.shape = this;
+      hit.part = i;
+      hit.b1 = ti.b1;
+      hit.b2 = ti.b2;
+      found = true;
+    }
+    return true;
+  });
+  return found;
+}
+
+bool TriangleMesh::occluded(const Ray& ray) const {
+  const ShearedRay sr(ray);
+  const auto& P = mesh_->positions;
+  bool found = false;
+  forEachCandidate(ray, ray.tmax, [&](uint32_t i) {
+    const auto& tri = mesh_->triangles[i];
+    TriangleIntersection ti;
+    found = intersectTriangle(sr, P[tri[0]], P[tri[1]], P[tri[2]], ti) && ray.tmin < ti.t &&
+            ti.t < ray.tmax;
+    return !found;
+  });
+  return found;
+}
+
+void TriangleMesh::crossings(const Ray& ray, CrossingList& out) const {
+  out.startsInside = false;
+  const ShearedRay sr(ray);
+  const auto& P = mesh_->positions;
+  const bool solid = mesh_->closed;
+  // A solid needs the whole line (what lies before tmin says whether the ray starts
+  // inside); a surface only [tmin, tmax].
+  Ray search = ray;
+  if (solid) {
+    search.tmin = -kInf;
+    search.tmax = kInf;
+  }
+  std::vector<TriangleHit> hits;
+  forEachCandidate(search, search.tmax, [&](uint32_t i) {
+    const auto& tri = mesh_->triangles[i];
+    TriangleIntersection ti;
+    if (intersectTriangle(sr, P[tri[0]], P[tri[1]], P[tri[2]], ti) && search.tmin <= ti.t &&
+        ti.t <= search.tmax)
+      hits.push_back({ti.t, i, ti.b1, ti.b2, ti.facing});
+    return true;
+  });
+  std::sort(hits.begin(), hits.end(),
+            [](const TriangleHit& a, const TriangleHit& b) { return a.t < b.t; });
+
+  auto push = [&](const TriangleHit& h, bool entering) {
+    Crossing c;
+    c.hit.t = h.t;
+    c.hit.shape = this;
+    c.hit.part = h.tri;
+    c.hit.b1 = h.b1;
+    c.hit.b2 = h.b2;
+    c.entering = entering;
+    out.items.push_back(c);
+  };
+  if (!solid) {
+    for (const TriangleHit& h : hits) push(h, true);
+    return;
+  }
+  // Walk the line from −∞ (outside a closed mesh). Hits at the same t are one event:
+  // a ray through a shared edge or vertex may meet several triangles there (watertight
+  // tests guarantee at least one). The event moves inside when it holds more entering
+  // than leaving hits, outside when fewer, and changes nothing when balanced (a ray
+  // grazing a silhouette edge). Only real changes become crossings, so the list
+  // alternates even where the triangles disagree.
+  bool in = false;
+  for (size_t i = 0; i < hits.size();) {
+    size_t j = i;
+    int net = 0;
+    for (; j < hits.size() && hits[j].t == hits[i].t; ++j) net += hits[j].facing;
+    bool next = net > 0 ? true : net < 0 ? false : in;
+    if (next != in) {
+      // The representative hit is one whose side agrees with the change.
+      size_t k = i;
+      while (k + 1 < j && (hits[k].facing > 0) != next) ++k;
+      if (hits[i].t < ray.tmin)
+        out.startsInside = next;
+      else if (hits[i].t <= ray.tmax)
+        push(hits[k], next);
+      in = next;
+    }
+    i = j;
+  }
+}
+
+bool TriangleMesh::inside(const Vec3& p) const {
+  if (!mesh_->closed || !bounds_.contains(p)) return false;
+  // Parity along a fixed direction chosen to be unlikely to run along any mesh edge.
+  CrossingList cl;
+  crossings(Ray(p, Vec3(0.5773502691896258, 0.5773529, 0.5773476), 0.0, 0.0), cl);
+  return cl.startsInside;
+}
+
+SurfaceInfo TriangleMesh::surface(const Ray&, const Hit& hit) const {
+  const auto& tri = mesh_->triangles[hit.part];
+  const Vec3 p[3] = {mesh_->positions[tri[0]], mesh_->positions[tri[1]],
+                     mesh_->positions[tri[2]]};
+  Vec3 n[3];
+  Vec2 uv[3];
+  if (useNormals_)
+    for (int k = 0; k < 3; ++k) n[k] = mesh_->normals[tri[k]];
+  bool hasUV = mesh_->uvs.size() == mesh_->positions.size();
+  if (hasUV)
+    for (int k = 0; k < 3; ++k) uv[k] = mesh_->uvs[tri[k]];
+  return triangleSurface(p, useNormals_ ? n : nullptr, hasUV ? uv : nullptr, hit.b1, hit.b2,
+                         /*normalFollowsShading=*/!mesh_->closed);
+}
+
+}  // namespace lucent

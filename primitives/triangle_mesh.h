@@ -1,0 +1,60 @@
+// <mesh src="file.obj" smooth="auto"/>  or  <mesh positions="..." indices="..."
+//       normals="..." uvs="..." smooth="auto"/>
+//   src        OBJ, PLY, OFF or STL file, relative to the scene file
+//   positions  inline: x y z per vertex;  indices: three per triangle
+//   normals    optional, one per position (normalised on load);  uvs: optional, u v each
+//   smooth     auto (default: the given normals if any, else flat) / true (area-weighted
+//              vertex normals, computed) / false (flat)
+// The loading and orienting is MeshData's business (mesh_io.h); this shape intersects it.
+// A closed, outward-oriented mesh (MeshData::closed) is a solid; otherwise every triangle
+// is a loose surface. Shading normals interpolate the vertex normals (normalised again);
+// (u,v) interpolate MeshData::uvs when present. Triangles of zero area are never hit.
+// Hit::part is the triangle index, Hit::b1 and b2 the barycentric weights of its second
+// and third corner.
+#pragma once
+
+#include "mesh_data.h"
+#include "shape.h"
+
+#include <memory>
+#include <vector>
+
+namespace lucent {
+
+// Area-weighted vertex normals (each triangle adds its (p1 − p0) × (p2 − p0), whose length
+// is twice its area, to its three corners), normalised; a vertex touched only by
+// zero-area triangles gets (0, 0, 0), which the surface code treats as "no normal".
+std::vector<Vec3> computeVertexNormals(const MeshData& mesh);
+
+class TriangleMesh final : public Shape {
+ public:
+  // useNormals: shade with mesh->normals (which must then hold one per position).
+  TriangleMesh(std::shared_ptr<const MeshData> mesh, bool useNormals);
+
+  const char* kind() const override { return "mesh"; }
+  AABB bounds() const override { return bounds_; }
+  bool isSolid() const override { return mesh_->closed; }
+  bool intersect(const Ray& ray, Hit& hit) const override;
+  bool occluded(const Ray& ray) const override;
+  void crossings(const Ray& ray, CrossingList& out) const override;
+  bool inside(const Vec3& p) const override;
+  SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  size_t triangleCount() const override { return mesh_->triangles.size(); }
+
+  const MeshData& data() const { return *mesh_; }
+
+ private:
+  // The acceleration seam: calls visit(triangleIndex) for every triangle the ray may hit
+  // with t in [ray.tmin, tFar], where tFar is read again after each call (a closest-hit
+  // search shrinks it). visit returns false to stop. Today a bounds test and a loop over
+  // the non-degenerate triangles; a BVH replaces the body without touching the callers.
+  template <class Visit>
+  void forEachCandidate(const Ray& ray, const double& tFar, Visit&& visit) const;
+
+  std::shared_ptr<const MeshData> mesh_;
+  bool useNormals_;
+  std::vector<uint32_t> live_;  // indices of the triangles with non-zero area
+  AABB bounds_;
+};
+
+}  // namespace lucent
