@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # docs/lucent.xsd must accept every scene we ship or test as valid (examples/**/*.xml,
-# tests/lang/valid/*.xml) and reject every deliberately wrong file in tests/schema/bad/,
+# tests/lang/valid/*.xml, the xml examples of docs/scene-language.md) and reject every deliberately wrong file in tests/schema/bad/,
 # each for the reason named by its "<!-- expect: TEXT -->" line (a substring of xmllint's
 # message), so a file rejected for an unrelated reason (a typo in the test) fails too.
 # Run by CTest as: bash schema_validate.sh <lucent-binary> <source-dir>
@@ -39,6 +39,36 @@ for f in $valid_files; do
   fi
 done
 
+# Every ```xml block of the language reference: a whole <scene> as it is, a fragment wrapped
+# in <scene version="1">, so the examples users copy are valid.
+doc="$src/docs/scene-language.md"
+blocks=$(mktemp -d)
+trap 'rm -rf "$blocks"' EXIT
+awk -v dir="$blocks" '
+  /^ *```xml *$/ { n++; inb = 1; f = sprintf("%s/block%02d.xml", dir, n); printf "" > f; next }
+  /^ *``` *$/ && inb { inb = 0; close(f); next }
+  inb { sub(/^  /, ""); print > f }' "$doc"
+doc_blocks=0
+for f in "$blocks"/block*.xml; do
+  [ -e "$f" ] || continue
+  doc_blocks=$((doc_blocks + 1))
+  if ! grep -q '<scene' "$f"; then
+    { echo '<scene version="1">'; cat "$f"; echo '</scene>'; } > "$f.scene"
+    mv "$f.scene" "$f"
+  fi
+  if out=$(xmllint --noout --schema "$xsd" "$f" 2>&1); then
+    accepted=$((accepted + 1))
+  else
+    echo "$out"
+    echo "REJECTED (should be valid): xml block number $doc_blocks of docs/scene-language.md"
+    failures=$((failures + 1))
+  fi
+done
+if [ "$doc_blocks" -lt 10 ]; then
+  echo "fewer than 10 xml examples found in docs/scene-language.md"
+  failures=$((failures + 1))
+fi
+
 bad_files=$(find "$src/tests/schema/bad" -name '*.xml' -type f | sort)
 for f in $bad_files; do
   expect=$(sed -n 's/^<!-- expect: \(.*\) -->$/\1/p' "$f" | head -n 1)
@@ -76,7 +106,7 @@ if [ "$rejected" -lt 8 ]; then
 fi
 
 if [ $failures -eq 0 ]; then
-  echo "schema_validate: OK: $accepted valid scenes accepted, $rejected bad files rejected for the expected reason"
+  echo "schema_validate: OK: $accepted valid scenes accepted ($doc_blocks from the reference), $rejected bad files rejected for the expected reason"
   exit 0
 fi
 echo "schema_validate: FAIL: $failures problem(s); $accepted valid scenes accepted, $rejected bad files rejected as expected"
