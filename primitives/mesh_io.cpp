@@ -1,15 +1,384 @@
+// Mesh files and inline meshes through CGAL 5.5. This is the only translation unit that
+// includes CGAL (it takes about 15 s to compile), so nothing of CGAL leaks into headers.
+//
+// Files are first walked by the checks in mesh_file_check.h / obj_scan.h (CGAL's readers
+// trust the counts they find), then read by CGAL from the same bytes. Both files and inline
+// meshes then go through one pipeline (CGAL::Polygon_mesh_processing):
+//   repair_polygon_soup   merge coincident points, drop faces with < 3 distinct vertices
+//                         and duplicate faces
+//   orient_polygon_soup   make neighbouring faces agree (non-manifold spots are cut apart)
+//   polygon_soup_to_polygon_mesh, triangulate_faces
+//   drop zero-area triangles (exact CGAL::collinear); if any, rebuild from the triangles so
+//   that closedness is decided on what is kept
+//   is_closed             no border edge: the mesh encloses a volume
+//   orient_to_bound_a_volume   for closed meshes: every shell outward, a shell nested in
+//                         another inward (a hollow ball), so normals point out of the solid
+// Normals and texture coordinates (inline ones, and OBJ vn/vt, which CGAL's reader drops)
+// are carried over by matching each final triangle to the input face it came from by its
+// corner coordinates (CGAL never moves a point); a position whose corners disagree (a seam)
+// is split into one vertex per distinct (normal, uv).
 #include "mesh_io.h"
 
-namespace lucent {
+#include "mesh_file_check.h"
+#include "obj_scan.h"
 
-// Placeholder until the CGAL reader lands: refuse clearly rather than pretend.
-std::shared_ptr<MeshData> loadMeshFile(const std::string&) {
-  throw MeshError("mesh files are not supported yet");
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/IO/STL.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <boost/iostreams/device/array.hpp>
+#include <boost/iostreams/stream.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <tuple>
+
+namespace lucent {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Polygon = std::vector<std::size_t>;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+
+struct Soup {
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+};
+
+// Containers handed to CGAL's readers. The checks have bounded every count already; these
+// refuse to grow past the limits anyway (ASCII STL has no count to check up front).
+enum class Cap { Vertices, Faces, Corners };
+
+template <class T, Cap C>
+class Capped : public std::vector<T> {
+ public:
+  using std::vector<T>::vector;
+  void push_back(const T& value) {
+    grow(this->size() + 1);
+    std::vector<T>::push_back(value);
+  }
+  template <class... Args>
+  T& emplace_back(Args&&... args) {
+    grow(this->size() + 1);
+    return std::vector<T>::emplace_back(std::forward<Args>(args)...);
+  }
+  void resize(std::size_t n) {
+    grow(n);
+    std::vector<T>::resize(n);
+  }
+
+ private:
+  static void grow(std::size_t n) {
+    if (C == Cap::Vertices && n > kMaxMeshVertices)
+      throw MeshError(fmt::format("more than {} vertices", kMaxMeshVertices));
+    if (C == Cap::Faces && n > kMaxMeshFaces)
+      throw MeshError(fmt::format("more than {} faces", kMaxMeshFaces));
+    if (C == Cap::Corners && n > kMaxFaceVertices)
+      throw MeshError(fmt::format("a face with more than {} vertices", kMaxFaceVertices));
+  }
+};
+
+Soup readSoup(const std::string& bytes, MeshFormat format) {
+  boost::iostreams::stream<boost::iostreams::array_source> in(bytes.data(), bytes.size());
+  Capped<Point, Cap::Vertices> points;
+  Capped<Capped<std::size_t, Cap::Corners>, Cap::Faces> polygons;
+  const auto quiet = CGAL::parameters::verbose(false);
+  bool ok = false;
+  switch (format) {
+    case MeshFormat::Obj: ok = CGAL::IO::read_OBJ(in, points, polygons, quiet); break;
+    case MeshFormat::Off: ok = CGAL::IO::read_OFF(in, points, polygons, quiet); break;
+    case MeshFormat::Ply: ok = CGAL::IO::read_PLY(in, points, polygons, quiet); break;
+    case MeshFormat::Stl: ok = CGAL::IO::read_STL(in, points, polygons, quiet); break;
+  }
+  if (!ok)
+    throw MeshError(fmt::format("CGAL's {} reader could not read the file (malformed or truncated data)",
+                                meshFormatName(format)));
+  Soup soup;
+  soup.points.assign(points.begin(), points.end());
+  soup.polygons.reserve(polygons.size());
+  for (const auto& p : polygons) soup.polygons.emplace_back(p.begin(), p.end());
+  return soup;
+}
+
+// CGAL's repair sorts points (NaN would break the order) and indexes with what it is given.
+void checkSoup(const Soup& soup, const char* vertex, const char* face) {
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    const Point& p = soup.points[i];
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw MeshError(fmt::format("{} {} (counting from 0) has a non-finite coordinate", vertex, i));
+  }
+  for (std::size_t f = 0; f < soup.polygons.size(); ++f)
+    for (std::size_t index : soup.polygons[f])
+      if (index >= soup.points.size())
+        throw MeshError(fmt::format("{} {} (counting from 0) uses {} {}, but there are {} {}s", face,
+                                    f, vertex, index, soup.points.size(), vertex));
+}
+
+// Normals and texture coordinates of the input, per corner of each input polygon.
+struct CornerAttributes {
+  std::vector<Vec3> normals;  // empty: none
+  std::vector<Vec2> uvs;      // empty: none
+  std::vector<std::size_t> polygonStart;  // corners of polygon p start at polygonStart[p]
+  std::vector<int32_t> normalOf, uvOf;    // per corner, index into normals / uvs
+
+  bool any() const { return !normals.empty() || !uvs.empty(); }
+};
+
+// repair → orient → halfedge mesh. The soup is consumed.
+SurfaceMesh orientedMesh(Soup& soup, std::size_t inputFaces) {
+  PMP::repair_polygon_soup(soup.points, soup.polygons);
+  if (soup.polygons.empty())
+    throw MeshError(fmt::format("no usable face: none of the {} faces has three distinct vertices",
+                                inputFaces));
+  PMP::orient_polygon_soup(soup.points, soup.polygons);
+  if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
+    throw MeshError("CGAL could not orient the faces into a consistent surface");
+  SurfaceMesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
+  return mesh;
+}
+
+// The triangles of `mesh` with nonzero area, as a soup over the mesh's vertices.
+Soup usableTriangles(const SurfaceMesh& mesh, std::size_t& dropped) {
+  Soup tri;
+  tri.points.assign(mesh.points().begin(), mesh.points().end());
+  dropped = 0;
+  for (SurfaceMesh::Face_index f : mesh.faces()) {
+    if (mesh.degree(f) != 3) {  // triangulate_faces gave up on it (a degenerate polygon)
+      ++dropped;
+      continue;
+    }
+    Polygon t;
+    for (SurfaceMesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t.push_back(v);
+    if (CGAL::collinear(tri.points[t[0]], tri.points[t[1]], tri.points[t[2]])) {
+      ++dropped;
+      continue;
+    }
+    tri.polygons.push_back(std::move(t));
+  }
+  return tri;
+}
+
+// The closed/oriented triangle mesh of `soup`: positions and triangles of the result.
+MeshData solidOrSurface(Soup soup) {
+  const std::size_t inputFaces = soup.polygons.size();
+  SurfaceMesh mesh = orientedMesh(soup, inputFaces);
+  PMP::triangulate_faces(mesh);
+  std::size_t dropped = 0;
+  Soup triangles = usableTriangles(mesh, dropped);
+  if (triangles.polygons.empty())
+    throw MeshError(fmt::format("no usable triangle: all {} faces are degenerate (zero area)", inputFaces));
+  if (dropped > 0) mesh = orientedMesh(triangles, inputFaces);
+
+  MeshData out;
+  out.closed = CGAL::is_closed(mesh);
+  if (out.closed) PMP::orient_to_bound_a_volume(mesh);
+
+  std::vector<uint32_t> newIndex(mesh.number_of_vertices(), UINT32_MAX);
+  for (SurfaceMesh::Face_index f : mesh.faces()) {
+    std::array<uint32_t, 3> t{};
+    int k = 0;
+    for (SurfaceMesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      if (newIndex[v] == UINT32_MAX) {
+        newIndex[v] = static_cast<uint32_t>(out.positions.size());
+        const Point& p = mesh.point(v);
+        out.positions.emplace_back(p.x(), p.y(), p.z());
+      }
+      t[k++] = newIndex[v];
+    }
+    out.triangles.push_back(t);
+  }
+  return out;
+}
+
+bool lexLess(const Vec3& a, const Vec3& b) {
+  return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+}
+
+// Gives `out` the normals/uvs of the input corners each of its triangle corners came from,
+// splitting positions where those differ. Returns false (attributes left empty) if some
+// triangle cannot be traced back, which CGAL's operations should never cause.
+bool carryAttributes(const Soup& input, const CornerAttributes& attrs, MeshData& out) {
+  struct Entry {
+    Vec3 p;
+    uint32_t polygon, corner;
+  };
+  std::vector<Entry> entries;
+  for (std::size_t f = 0; f < input.polygons.size(); ++f)
+    for (std::size_t j = 0; j < input.polygons[f].size(); ++j) {
+      const Point& q = input.points[input.polygons[f][j]];
+      entries.push_back({Vec3(q.x(), q.y(), q.z()), static_cast<uint32_t>(f), static_cast<uint32_t>(j)});
+    }
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return lexLess(a.p, b.p); });
+  auto cornerAt = [&](uint32_t f, const Vec3& p) -> int {
+    const Polygon& poly = input.polygons[f];
+    for (std::size_t j = 0; j < poly.size(); ++j) {
+      const Point& q = input.points[poly[j]];
+      if (q.x() == p.x && q.y() == p.y && q.z() == p.z) return static_cast<int>(j);
+    }
+    return -1;
+  };
+
+  const bool withNormals = !attrs.normals.empty(), withUVs = !attrs.uvs.empty();
+  struct Variant {
+    int32_t normal, uv;
+    uint32_t index;
+  };
+  std::vector<std::vector<Variant>> variants(out.positions.size());
+  MeshData result;
+  result.closed = out.closed;
+  for (const auto& t : out.triangles) {
+    const Vec3 p[3] = {out.positions[t[0]], out.positions[t[1]], out.positions[t[2]]};
+    auto range = std::equal_range(entries.begin(), entries.end(), Entry{p[0], 0, 0},
+                                  [](const Entry& a, const Entry& b) { return lexLess(a.p, b.p); });
+    int corners[3] = {-1, -1, -1};
+    uint32_t face = 0;
+    for (auto e = range.first; e != range.second && corners[0] < 0; ++e) {
+      const int c1 = cornerAt(e->polygon, p[1]), c2 = cornerAt(e->polygon, p[2]);
+      if (c1 >= 0 && c2 >= 0) {
+        corners[0] = static_cast<int>(e->corner), corners[1] = c1, corners[2] = c2;
+        face = e->polygon;
+      }
+    }
+    if (corners[0] < 0) return false;
+    std::array<uint32_t, 3> newTriangle{};
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t corner = attrs.polygonStart[face] + static_cast<std::size_t>(corners[k]);
+      const int32_t n = withNormals ? attrs.normalOf[corner] : -1;
+      const int32_t uv = withUVs ? attrs.uvOf[corner] : -1;
+      auto& list = variants[t[k]];
+      auto it = std::find_if(list.begin(), list.end(), [&](const Variant& v) { return v.normal == n && v.uv == uv; });
+      if (it == list.end()) {
+        list.push_back({n, uv, static_cast<uint32_t>(result.positions.size())});
+        result.positions.push_back(p[k]);
+        if (withNormals) result.normals.push_back(attrs.normals[static_cast<std::size_t>(n)]);
+        if (withUVs) result.uvs.push_back(attrs.uvs[static_cast<std::size_t>(uv)]);
+        it = list.end() - 1;
+      }
+      newTriangle[k] = it->index;
+    }
+    result.triangles.push_back(newTriangle);
+  }
+  out = std::move(result);
+  return true;
+}
+
+MeshData buildMesh(Soup soup, const CornerAttributes& attrs) {
+  std::optional<Soup> input;
+  if (attrs.any()) input = soup;  // the pipeline consumes the soup; tracing needs the original
+  MeshData mesh = solidOrSurface(std::move(soup));
+  if (input) carryAttributes(*input, attrs, mesh);
+  return mesh;
+}
+
+// OBJ corners → attributes, when every corner has one (MeshData holds all or nothing).
+CornerAttributes objAttributes(const ObjScan& scan, const Soup& soup) {
+  CornerAttributes attrs;
+  if (scan.faceCount() != soup.polygons.size()) return attrs;  // CGAL read it differently
+  for (std::size_t f = 0; f < scan.faceCount(); ++f)
+    if (scan.faceStart[f + 1] - scan.faceStart[f] != soup.polygons[f].size()) return attrs;
+  const bool normals = !scan.normals.empty() && scan.everyCornerHasNormal;
+  const bool uvs = !scan.texcoords.empty() && scan.everyCornerHasTexcoord;
+  if (normals) attrs.normals = scan.normals;
+  if (uvs) attrs.uvs = scan.texcoords;
+  attrs.polygonStart.assign(scan.faceStart.begin(), scan.faceStart.end());
+  for (const ObjScan::Corner& c : scan.corners) {
+    attrs.normalOf.push_back(c.normal);
+    attrs.uvOf.push_back(c.texcoord);
+  }
+  return attrs;
+}
+
+// Runs `work`, turning the failures CGAL or the allocator can raise into MeshError.
+template <class Work>
+auto guarded(Work&& work) {
+  try {
+    return work();
+  } catch (const MeshError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw MeshError("not enough memory for this mesh");
+  } catch (const CGAL::Failure_exception& e) {
+    throw MeshError(fmt::format("CGAL failed on this mesh: {}", e.message()));
+  } catch (const std::exception& e) {
+    throw MeshError(fmt::format("reading the mesh failed: {}", e.what()));
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<MeshData> loadMeshFile(const std::string& path) {
+  const MeshFormat format = meshFormatOf(path);
+  std::string bytes = readMeshFile(path);
+  std::optional<ObjScan> obj;
+  switch (format) {
+    case MeshFormat::Obj: obj = scanObj(bytes); break;
+    case MeshFormat::Ply: checkPlyBytes(bytes); break;
+    case MeshFormat::Off: checkOffBytes(bytes); break;
+    case MeshFormat::Stl: checkStlBytes(bytes); break;
+  }
+  return guarded([&] {
+    Soup soup = readSoup(bytes, format);
+    bytes = std::string();  // release the text before the mesh is built
+    checkSoup(soup, "vertex", "face");
+    if (soup.polygons.empty()) throw MeshError("the file holds no faces");
+    CornerAttributes attrs;
+    if (obj) attrs = objAttributes(*obj, soup);
+    obj.reset();
+    return std::make_shared<MeshData>(buildMesh(std::move(soup), attrs));
+  });
 }
 
 void finishMesh(MeshData& mesh) {
+  const std::size_t n = mesh.positions.size();
   if (mesh.triangles.empty()) throw MeshError("the mesh has no triangles");
-  mesh.closed = false;
+  if (!mesh.normals.empty() && mesh.normals.size() != n)
+    throw MeshError(fmt::format("{} normals for {} positions: give one normal per position", mesh.normals.size(), n));
+  if (!mesh.uvs.empty() && mesh.uvs.size() != n)
+    throw MeshError(fmt::format("{} uvs for {} positions: give one uv per position", mesh.uvs.size(), n));
+
+  CornerAttributes attrs;
+  for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
+    const double length = glm::length(mesh.normals[i]);
+    if (!(length > 0) || !std::isfinite(length))
+      throw MeshError(fmt::format("normal {} (counting from 0) is zero or not finite", i));
+    attrs.normals.push_back(mesh.normals[i] / length);
+  }
+  for (std::size_t i = 0; i < mesh.uvs.size(); ++i) {
+    if (!std::isfinite(mesh.uvs[i].x) || !std::isfinite(mesh.uvs[i].y))
+      throw MeshError(fmt::format("uv {} (counting from 0) is not finite", i));
+  }
+  attrs.uvs = mesh.uvs;
+
+  Soup soup;
+  soup.points.reserve(n);
+  for (const Vec3& p : mesh.positions) soup.points.emplace_back(p.x, p.y, p.z);
+  soup.polygons.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) {
+    soup.polygons.push_back({t[0], t[1], t[2]});
+    if (attrs.any()) {
+      attrs.polygonStart.push_back(attrs.normalOf.size());
+      for (uint32_t v : t) {
+        attrs.normalOf.push_back(static_cast<int32_t>(v));
+        attrs.uvOf.push_back(static_cast<int32_t>(v));
+      }
+    }
+  }
+  checkSoup(soup, "position", "triangle");
+  mesh = guarded([&] { return buildMesh(std::move(soup), attrs); });
 }
 
 }  // namespace lucent
