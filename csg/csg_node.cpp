@@ -51,6 +51,38 @@ CsgNode::CsgNode(CsgOp op, std::vector<std::unique_ptr<Shape>> children)
       bounds_ = children_[0]->bounds();
       break;
   }
+
+  std::vector<uint32_t> bounded;
+  for (uint32_t i = 0; i < children_.size(); ++i) {
+    AABB box = children_[i]->bounds();
+    (box.isBounded() || box.empty() ? bounded : unbounded_).push_back(i);
+  }
+  bvh_ = Bvh(bounded.size(), [&](uint32_t k) { return children_[bounded[k]]->bounds(); });
+  // The traversal reports positions in `bounded`; map them to child indices once.
+  for (uint32_t k : bvh_.takeOrder()) slotChild_.push_back(bounded[k]);
+}
+
+template <class Visit>
+void CsgNode::forEachCandidate(const Ray& ray, Visit&& visit) const {
+  for (uint32_t i : unbounded_) visit(i);
+  bvh_.all(ray, [&](uint32_t slot) { visit(slotChild_[slot]); });
+}
+
+bool CsgNode::closestChildHit(const Ray& ray, Hit& hit) const {
+  Ray r = ray;
+  bool found = false;
+  for (uint32_t i : unbounded_) {
+    if (children_[i]->intersect(r, hit)) {
+      r.tmax = hit.t;
+      found = true;
+    }
+  }
+  bool inTree = bvh_.closest(r, [&](uint32_t slot, Ray& rr) {
+    if (!children_[slotChild_[slot]]->intersect(rr, hit)) return false;
+    rr.tmax = hit.t;
+    return true;
+  });
+  return found || inTree;
 }
 
 void CsgNode::crossings(const Ray& ray, CrossingList& out) const {
@@ -59,18 +91,18 @@ void CsgNode::crossings(const Ray& ray, CrossingList& out) const {
   std::vector<Tagged> all;
   std::vector<char> in(children_.size(), 0);
   CrossingList list;
-  for (size_t i = 0; i < children_.size(); ++i) {
-    if (children_[i]->bounds().slab(ray, 1.0 / ray.d).empty()) {
-      // Missing the box: no crossings, and the start point is outside.
-      continue;
-    }
+  // Children whose box the ray misses add no crossings and start outside.
+  forEachCandidate(ray, [&](uint32_t i) {
     list.clear();
     children_[i]->crossings(ray, list);
     in[i] = list.startsInside;
     for (const Crossing& c : list.items) all.push_back({c, i});
-  }
-  std::stable_sort(all.begin(), all.end(),
-                   [](const Tagged& a, const Tagged& b) { return a.c.hit.t < b.c.hit.t; });
+  });
+  // By distance, then by child, so coincident crossings are grouped the same way whatever
+  // order the BVH visited the children in.
+  std::stable_sort(all.begin(), all.end(), [](const Tagged& a, const Tagged& b) {
+    return a.c.hit.t < b.c.hit.t || (a.c.hit.t == b.c.hit.t && a.child < b.child);
+  });
 
   bool state = combine(op_, in);
   out.startsInside = state;
@@ -93,18 +125,8 @@ void CsgNode::crossings(const Ray& ray, CrossingList& out) const {
 }
 
 bool CsgNode::intersect(const Ray& ray, Hit& hit) const {
-  if (op_ == CsgOp::Union || !solid_) {
-    // A union keeps the surfaces inside other children (as POV-Ray's union does).
-    Ray r = ray;
-    bool found = false;
-    for (const auto& c : children_) {
-      if (c->intersect(r, hit)) {
-        r.tmax = hit.t;
-        found = true;
-      }
-    }
-    return found;
-  }
+  // A union keeps the surfaces inside other children (as POV-Ray's union does).
+  if (op_ == CsgOp::Union || !solid_) return closestChildHit(ray, hit);
   CrossingList list;
   crossings(ray, list);
   for (const Crossing& c : list.items) {
@@ -114,6 +136,18 @@ bool CsgNode::intersect(const Ray& ray, Hit& hit) const {
     }
   }
   return false;
+}
+
+bool CsgNode::occluded(const Ray& ray) const {
+  if (op_ == CsgOp::Union || !solid_) {
+    for (uint32_t i : unbounded_)
+      if (children_[i]->occluded(ray)) return true;
+    return bvh_.any(ray, [&](uint32_t slot, const Ray& r) {
+      return children_[slotChild_[slot]]->occluded(r);
+    });
+  }
+  Hit h;
+  return intersect(ray, h);
 }
 
 bool CsgNode::inside(const Vec3& p) const {

@@ -21,6 +21,7 @@ CsgOp csgOpOf(NodeKind k) {
 }
 
 struct Builder {
+  const ShapeMaker& makeShape;
   std::unordered_map<const Node*, std::shared_ptr<const Shape>> shapes;  // built once per node
   std::vector<const Instance*>& instances;
 
@@ -63,28 +64,47 @@ struct Builder {
 
 }  // namespace
 
-World::World(const Scene& scene) : scene_(scene) {
-  Builder b{{}, instances_};
+World::World(const Scene& scene) : World(scene, makeShape) {}
+
+World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
+  Builder b{make, {}, instances_};
   b.add(*scene.root, Transform(), 0, objects_);
+
+  std::vector<const Shape*> bounded;
+  for (const auto& o : objects_) {
+    AABB box = o->bounds();
+    if (box.isBounded() || box.empty())
+      bounded.push_back(o.get());  // an empty box is left out by the BVH itself
+    else
+      unbounded_.push_back(o.get());
+  }
+  bvh_ = Bvh(bounded.size(), [&](uint32_t i) { return bounded[i]->bounds(); });
+  // Keep the objects in leaf order: the traversal then hands out positions in bounded_.
+  for (uint32_t i : bvh_.takeOrder()) bounded_.push_back(bounded[i]);
 }
 
 bool World::intersect(const Ray& ray, Hit& hit) const {
-  // A plain loop for now; the acceleration structure replaces it.
   Ray r = ray;
   bool found = false;
-  for (const auto& o : objects_) {
+  for (const Shape* o : unbounded_) {
     if (o->intersect(r, hit)) {
       r.tmax = hit.t;
       found = true;
     }
   }
-  return found;
+  // The BVH search starts with tmax already at the nearest plane hit, if any.
+  bool inTree = bvh_.closest(r, [&](uint32_t i, Ray& rr) {
+    if (!bounded_[i]->intersect(rr, hit)) return false;
+    rr.tmax = hit.t;
+    return true;
+  });
+  return found || inTree;
 }
 
 bool World::occluded(const Ray& ray) const {
-  for (const auto& o : objects_)
+  for (const Shape* o : unbounded_)
     if (o->occluded(ray)) return true;
-  return false;
+  return bvh_.any(ray, [&](uint32_t i, const Ray& r) { return bounded_[i]->occluded(r); });
 }
 
 }  // namespace lucent

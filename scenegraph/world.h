@@ -4,20 +4,28 @@
 
 #include "scene.h"
 
+#include "primitives/bvh.h"
 #include "primitives/instance.h"
 #include "primitives/shape.h"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
 namespace lucent {
 
+// Builds the shape of one geometry node (makeShape; tests pass their own).
+using ShapeMaker = std::function<std::shared_ptr<const Shape>(const ShapeSpec&)>;
+
 class World {
  public:
   // Composes transforms down to the leaves (world matrix, inverse and normal matrix
   // computed once per instance), resolves inherited materials and shares the shape of a
-  // node used many times. The scene must outlive the world.
+  // node used many times: a mesh used through many <use> is stored and built once.
+  // The top-level objects with a finite box go into a BVH; the others (planes) are
+  // tested one by one. The scene must outlive the world.
   explicit World(const Scene& scene);
+  World(const Scene& scene, const ShapeMaker& makeShape);
 
   const Scene& scene() const { return scene_; }
   const std::vector<std::unique_ptr<Shape>>& objects() const { return objects_; }
@@ -26,6 +34,10 @@ class World {
 
   bool intersect(const Ray& ray, Hit& hit) const;
   bool occluded(const Ray& ray) const;
+
+  // The top-level acceleration structure, for statistics.
+  const Bvh& bvh() const { return bvh_; }
+  const std::vector<const Shape*>& unboundedObjects() const { return unbounded_; }
 
   // The material of a hit's leaf (hit.shape is always an Instance).
   const Material& material(const Hit& hit) const {
@@ -36,6 +48,9 @@ class World {
   const Scene& scene_;
   std::vector<std::unique_ptr<Shape>> objects_;  // top level: instances and CSG nodes
   std::vector<const Instance*> instances_;
+  std::vector<const Shape*> bounded_;    // in the BVH's leaf order
+  std::vector<const Shape*> unbounded_;  // never in the BVH
+  Bvh bvh_;
 };
 
 }  // namespace lucent
