@@ -1,0 +1,33 @@
+#include "camera_frame.h"
+
+#include <fmt/core.h>
+
+namespace lucent {
+
+CameraFrame makeCameraFrame(const Camera& camera) {
+  const Mat4& m = camera.transform;
+  Vec3 position = Vec3(m * Vec4(camera.position, 1.0));
+  Vec3 lookAt = Vec3(m * Vec4(camera.lookAt, 1.0));
+  Vec3 up = Mat3(m) * camera.up;
+
+  Vec3 view = lookAt - position;
+  double distance = glm::length(view);
+  if (!(distance > 0.0) || !std::isfinite(distance))
+    throw CameraError(fmt::format("{}: error: camera look-at coincides with its position",
+                                  camera.loc.str()));
+  CameraFrame f;
+  f.origin = position;
+  f.forward = view / distance;
+  f.lookDistance = distance;
+  Vec3 right = glm::cross(f.forward, up);
+  double rightLength = glm::length(right);
+  // sin of the angle between up and the view direction: below ~1e-9 the frame is noise.
+  if (!(rightLength > 1e-9 * glm::length(up)))
+    throw CameraError(fmt::format("{}: error: camera up is parallel to the viewing direction",
+                                  camera.loc.str()));
+  f.right = right / rightLength;
+  f.up = glm::cross(f.right, f.forward);
+  return f;
+}
+
+}  // namespace lucent

@@ -1,0 +1,48 @@
+#include "pinhole.h"
+
+#include <fmt/core.h>
+
+namespace lucent {
+
+void imagePlaneHalfExtents(double fovDegrees, FovAxis axis, int width, int height,
+                           double& halfWidth, double& halfHeight) {
+  double half = std::tan(radians(fovDegrees) * 0.5);
+  double w = width, h = height;
+  switch (axis) {
+    case FovAxis::Horizontal:
+      halfWidth = half;
+      halfHeight = half * h / w;
+      break;
+    case FovAxis::Vertical:
+      halfHeight = half;
+      halfWidth = half * w / h;
+      break;
+    case FovAxis::Diagonal: {
+      double diagonal = std::hypot(w, h);
+      halfWidth = half * w / diagonal;
+      halfHeight = half * h / diagonal;
+      break;
+    }
+  }
+}
+
+PinholeProjection::PinholeProjection(const CameraFrame& frame, const Camera& camera, int width,
+                                     int height)
+    : Projection(frame, camera, width, height) {
+  if (!(camera.fov > 0.0 && camera.fov < 180.0))
+    throw CameraError(fmt::format(
+        "{}: error: a pinhole camera needs 0 < fov < 180 degrees (got {})", camera.loc.str(),
+        camera.fov));
+  imagePlaneHalfExtents(camera.fov, camera.fovAxis, width, height, halfWidth_, halfHeight_);
+}
+
+bool PinholeProjection::generateRay(const Vec2& film, const Vec2&, Ray& ray) const {
+  // Screen coordinates in [-1, 1], +y up (film y grows downwards: row 0 is the top).
+  double sx = 2.0 * film.x / width_ - 1.0;
+  double sy = 1.0 - 2.0 * film.y / height_;
+  Vec3 local(sx * halfWidth_, sy * halfHeight_, 1.0);
+  ray = primaryRay(frame_.origin, glm::normalize(frame_.toWorld(local)));
+  return true;
+}
+
+}  // namespace lucent
