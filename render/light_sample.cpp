@@ -1,0 +1,51 @@
+#include "light_sample.h"
+
+#include <algorithm>
+
+namespace lucent {
+
+double distanceAttenuation(const Vec3& abc, double r) {
+  double denominator = abc.x + abc.y * r + abc.z * r * r;
+  if (!(denominator > 0.0)) return 1.0;
+  return std::min(1.0, 1.0 / denominator);
+}
+
+double spotFactor(const Light& light, double cosTheta) {
+  double cosOuter = std::cos(radians(light.angle));
+  double cosInner = std::cos(radians(std::min(light.inner, light.angle)));
+  if (cosTheta >= cosInner) return cosTheta > cosOuter ? 1.0 : 0.0;
+  if (cosTheta <= cosOuter) return 0.0;
+  double u = (cosTheta - cosOuter) / (cosInner - cosOuter);
+  return (3.0 - 2.0 * u) * u * u;
+}
+
+LightIncidence lightIncidence(const Light& light, const Vec3& p) {
+  LightIncidence in;
+  if (light.type == LightType::Directional) {
+    in.toLight = -glm::normalize(light.direction);
+    in.distance = kInf;
+    in.radiance = light.radiance();
+    return in;
+  }
+  Vec3 toLight = light.position - p;
+  in.distance = glm::length(toLight);
+  in.toLight = in.distance > 0.0 ? toLight / in.distance : Vec3(0.0, 1.0, 0.0);
+  double factor = distanceAttenuation(light.attenuation, in.distance);
+  if (light.type == LightType::Spot)
+    factor *= spotFactor(light, glm::dot(-in.toLight, glm::normalize(light.direction)));
+  in.radiance = light.radiance() * static_cast<float>(factor);
+  return in;
+}
+
+Vec3 lightSamplePoint(const Light& light, int k, const Vec2& jitter) {
+  if (light.type != LightType::Area) return light.position;
+  int nu = std::max(light.samplesU, 2), nv = std::max(light.samplesV, 2);
+  double a = k % nu, b = k / nu;
+  if (light.jitter) {
+    a = std::clamp(a + jitter.x - 0.5, 0.0, nu - 1.0);
+    b = std::clamp(b + jitter.y - 0.5, 0.0, nv - 1.0);
+  }
+  return light.position + light.u * (a / (nu - 1) - 0.5) + light.v * (b / (nv - 1) - 0.5);
+}
+
+}  // namespace lucent

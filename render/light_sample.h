@@ -1,0 +1,39 @@
+// What a light offers a surface point before shadows: the direction towards it, its
+// distance, and the light colour after distance attenuation and the spot cone.
+#pragma once
+
+#include "scenegraph/light.h"
+
+namespace lucent {
+
+struct LightIncidence {
+  Vec3 toLight{0.0, 1.0, 0.0};  // unit, from the point towards the light (an area light's centre)
+  double distance = kInf;       // to the light (centre); infinite for a directional light
+  Color radiance{0.0f};         // I_L · A_dist · spot factor
+};
+
+// A_dist = min(1, 1 / (a + b·r + c·r²)); 1 when the denominator is not positive (a light
+// with attenuation "0 0 0" does not fade).
+double distanceAttenuation(const Vec3& abc, double r);
+
+// POV-Ray's spotlight with tightness 0: 1 inside the `inner` cone, 0 beyond `angle`,
+// between them the smoothstep (3 − 2u)u² of u = (cos θ − cos angle)/(cos inner − cos angle).
+// cosTheta is the cosine between the spot axis and the direction from the light to the point.
+double spotFactor(const Light& light, double cosTheta);
+
+// Direction, distance and unshadowed light at point p. Directional lights are not
+// attenuated (they have no distance). An area light uses its centre, as POV-Ray does.
+LightIncidence lightIncidence(const Light& light, const Vec3& p);
+
+// The shadow-ray targets of a light: 1 for point and spot lights, nu·nv for area lights.
+inline int shadowSampleCount(const Light& light) {
+  return light.type == LightType::Area ? light.samplesU * light.samplesV : 1;
+}
+
+// Shadow sample k of an area light: grid point (a, b) = (k mod nu, k div nu) of the
+// rectangle, the grid including its edges: position + u·(a/(nu−1) − ½) + v·(b/(nv−1) − ½).
+// With jitter, `jitter` ∈ [0,1)² moves the point within ±½ grid step, clamped to the
+// rectangle. Other lights: their position.
+Vec3 lightSamplePoint(const Light& light, int k, const Vec2& jitter);
+
+}  // namespace lucent

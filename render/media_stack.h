@@ -1,0 +1,45 @@
+// The media a ray travels in: a small stack of the solids it has entered and not left,
+// innermost on top, so that leaving a glass inside water refracts into water (nested
+// objects, as POV-Ray's interior list). Keyed by material: a CSG solid's surfaces share
+// their material, so entering through one leaf and leaving through another pairs up.
+#pragma once
+
+#include "scenegraph/material.h"
+
+#include <array>
+
+namespace lucent {
+
+class MediaStack {
+ public:
+  // Deeper nesting than this is ignored (the push is dropped): eight solids inside each
+  // other are far beyond any scene we know, and the stack is copied per ray.
+  static constexpr int kCapacity = 8;
+
+  bool empty() const { return size_ == 0; }
+  int size() const { return size_; }
+  // The medium the ray is in, or null for the scene's outside (index 1, no absorption).
+  const Material* top() const { return size_ > 0 ? items_[size_ - 1] : nullptr; }
+  double ior() const { return size_ > 0 ? items_[size_ - 1]->ior : 1.0; }
+
+  void push(const Material* m) {
+    if (size_ < kCapacity) items_[size_++] = m;
+  }
+  // Removes the innermost occurrence of m; returns false (and changes nothing) if the ray
+  // was not known to be inside m (a camera inside a solid it did not start in, say).
+  bool remove(const Material* m) {
+    for (int i = size_ - 1; i >= 0; --i) {
+      if (items_[i] != m) continue;
+      for (int j = i; j + 1 < size_; ++j) items_[j] = items_[j + 1];
+      --size_;
+      return true;
+    }
+    return false;
+  }
+
+ private:
+  std::array<const Material*, kCapacity> items_{};
+  int size_ = 0;
+};
+
+}  // namespace lucent

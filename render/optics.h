@@ -1,0 +1,33 @@
+// The optics of a smooth surface: mirror reflection, Snell refraction, the exact Fresnel
+// reflectance of a dielectric, and Beer–Lambert absorption.
+#pragma once
+
+#include "primitives/math.h"
+
+namespace lucent {
+
+// Mirror direction of d about the unit normal n: d − 2(d·n)n.
+inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - 2.0 * glm::dot(d, n) * n; }
+
+// Snell's law (Heckbert's form): d is the unit incident direction, n the unit normal on
+// the incident side (d·n ≤ 0), eta = n1/n2 (incident over transmitted index). Writes the
+// unit transmitted direction; returns false under total internal reflection.
+bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& transmitted);
+
+// Unpolarised Fresnel reflectance of a smooth dielectric interface (average of the s and p
+// reflectances; Hecht, "Optics", 4.6; pbrt-v3 FrDielectric). cosIncident = cos of the angle
+// between the incident ray and the normal (≥ 0), n1 on the incident side, n2 beyond.
+// Returns 1 under total internal reflection; ((n1−n2)/(n1+n2))² at normal incidence.
+double fresnelDielectric(double cosIncident, double n1, double n2);
+
+// Beer–Lambert: the fraction of light left after `distance` in a medium with the given
+// absorption coefficient per world unit, exp(−absorption·distance) per channel.
+inline Color beerLambert(const Color& absorption, double distance) {
+  auto channel = [distance](float a) {
+    if (a <= 0.0f) return 1.0f;  // also avoids 0·inf for a ray that never leaves
+    return static_cast<float>(std::exp(-static_cast<double>(a) * distance));
+  };
+  return Color(channel(absorption.r), channel(absorption.g), channel(absorption.b));
+}
+
+}  // namespace lucent
