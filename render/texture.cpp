@@ -1,0 +1,88 @@
+#include "texture.h"
+
+#include "image_io.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <map>
+
+namespace lucent {
+
+Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec3& pError) {
+  Vec3 q = pObject / checker.scale;
+  Vec3 err = pError / checker.scale;
+  double magnitude = std::max(1.0, maxComponent(glm::abs(q)));
+  long sum = 0;
+  for (int i = 0; i < 3; ++i) {
+    double nudge = std::max(1e-9 * magnitude, 4.0 * err[i]);
+    sum += static_cast<long>(std::floor(q[i] + nudge));
+  }
+  return (sum & 1) == 0 ? checker.color1 : checker.color2;
+}
+
+struct ImageMap::Impl {
+  Image linear;          // RGB, linear
+  OIIO::ImageBuf pixels;  // wraps `linear` for OpenImageIO's bilinear lookup
+};
+
+ImageMap::ImageMap(const std::string& path) : impl_(std::make_unique<Impl>()) {
+  try {
+    impl_->linear = readImageFile(path, PixelDecoding::Linear);
+  } catch (const ImageIOError& e) {
+    throw TextureError(e.what());
+  }
+  OIIO::ImageSpec spec(impl_->linear.width, impl_->linear.height, 3, OIIO::TypeDesc::FLOAT);
+  impl_->pixels.reset(spec, impl_->linear.pixels.data());
+}
+
+ImageMap::~ImageMap() = default;
+
+int ImageMap::width() const { return impl_->pixels.spec().width; }
+int ImageMap::height() const { return impl_->pixels.spec().height; }
+
+Color ImageMap::lookup(const Vec2& uv, const Vec2& scale) const {
+  float s = static_cast<float>(uv.x / scale.x);
+  float t = static_cast<float>(1.0 - uv.y / scale.y);  // image row 0 is the top (v = 1)
+  Color c;
+  impl_->pixels.interppixel_NDC(s, t, &c[0], OIIO::ImageBuf::WrapPeriodic);
+  return c;
+}
+
+TextureSet::TextureSet(const std::vector<Material>& materials) {
+  maps_.resize(materials.size());
+  std::map<std::string, std::shared_ptr<const ImageMap>> byPath;
+  for (size_t i = 0; i < materials.size(); ++i) {
+    const auto* image = std::get_if<ImageTexture>(&materials[i].texture);
+    if (!image) continue;
+    auto& map = byPath[image->path];
+    if (!map) {
+      try {
+        map = std::make_shared<const ImageMap>(image->path);
+      } catch (const TextureError& e) {
+        throw TextureError(fmt::format("{}: error: {}", image->loc.str(), e.what()));
+      }
+    }
+    maps_[i] = map;
+  }
+}
+
+Color TextureSet::eval(uint32_t index, const Material& material, const SurfaceInfo& surface,
+                       const Instance& leaf) const {
+  if (const auto* checker = std::get_if<CheckerTexture>(&material.texture)) {
+    // The world error bound carried back into object space (|M^-1| applied to it).
+    const Mat4& m = leaf.transform().objectFromWorld();
+    Vec3 err(0.0);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) err[r] += std::abs(m[c][r]) * surface.pError[c];
+    return checkerColor(*checker, surface.pObject, err);
+  }
+  if (const auto* image = std::get_if<ImageTexture>(&material.texture)) {
+    // A shape without (u,v) reads the image at (0,0): one flat colour.
+    return maps_[index]->lookup(surface.hasUV ? surface.uv : Vec2(0.0), image->scale);
+  }
+  return Color(1.0f);
+}
+
+}  // namespace lucent

@@ -1,0 +1,64 @@
+// Texture colours T at a surface point: the solid 3-D checker and image maps.
+#pragma once
+
+#include "scenegraph/material.h"
+
+#include "primitives/hit.h"
+#include "primitives/instance.h"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lucent {
+
+// An image texture that cannot be read; the message names the file and the scene location.
+struct TextureError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// POV-Ray's checker: cell (⌊x⌋ + ⌊y⌋ + ⌊z⌋) mod 2 of p/scale, even cells (among them
+// [0, scale)^3) are color1. A point on a cell boundary belongs to the cell on the positive
+// side (the contract's rule, as POV-Ray's ⌊x + 1e-10⌋): the coordinates are nudged
+// towards +∞ by more than their rounding error (`pError`, the bound of pObject's error in
+// object units) but by no less than 1e-9 of the point's magnitude, so a plane y = 0 whose
+// computed hit lies a hair below 0 still shows the cell above it.
+Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec3& pError);
+
+// An image looked up bilinearly at (u, v), repeating outside [0,1]^2 (v = 0 is the
+// bottom row of the image, v = 1 the top, as in OpenGL and Mitsuba). 8-bit images and
+// those tagged sRGB are decoded to linear RGB once, on load.
+class ImageMap {
+ public:
+  // Throws TextureError naming the file.
+  explicit ImageMap(const std::string& path);
+  ~ImageMap();
+  ImageMap(const ImageMap&) = delete;
+  ImageMap& operator=(const ImageMap&) = delete;
+
+  // `scale` enlarges the image on the surface: one copy covers scale.x by scale.y of (u,v).
+  Color lookup(const Vec2& uv, const Vec2& scale) const;
+  int width() const;
+  int height() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The image maps of a scene's materials, each file loaded once, indexed by material.
+class TextureSet {
+ public:
+  // Loads every <image> texture; throws TextureError for one that cannot be read.
+  explicit TextureSet(const std::vector<Material>& materials);
+
+  // The texture colour T of material `index` at the hit (1 for a material without one).
+  Color eval(uint32_t index, const Material& material, const SurfaceInfo& surface,
+             const Instance& leaf) const;
+
+ private:
+  std::vector<std::shared_ptr<const ImageMap>> maps_;  // per material; null if no image
+};
+
+}  // namespace lucent
