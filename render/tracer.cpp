@@ -1,0 +1,273 @@
+#include "tracer.h"
+
+#include "optics.h"
+#include "sampling.h"
+#include "spawn.h"
+
+#include "csg/csg_node.h"
+
+#include <algorithm>
+
+namespace lucent {
+
+namespace {
+
+bool anyPositive(const Color& c) { return maxComponent(c) > 0.0f; }
+
+double boxVolume(const AABB& b) {
+  if (!b.isBounded()) return kInf;
+  Vec3 e = b.extent();
+  return e.x * e.y * e.z;
+}
+
+}  // namespace
+
+Tracer::Tracer(const World& world)
+    : world_(world),
+      scene_(world.scene()),
+      settings_(world.scene().render),
+      textures_(world.scene().materials) {
+  for (const Material& m : scene_.materials) {
+    anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
+    anyAbsorbing_ = anyAbsorbing_ || (m.isAbsorbing() && m.isTransmissive());
+  }
+}
+
+const Material* Tracer::materialOf(const Shape& object) const {
+  // A CSG node's medium is its first leaf's material (its surfaces normally share it).
+  const Shape* s = &object;
+  while (const auto* csg = dynamic_cast<const CsgNode*>(s)) s = csg->children().front().get();
+  const auto* leaf = dynamic_cast<const Instance*>(s);
+  return leaf ? &scene_.materials[leaf->tag()] : nullptr;
+}
+
+MediaStack Tracer::mediaAt(const Vec3& p) const {
+  std::vector<std::pair<double, const Material*>> containing;
+  for (const auto& object : world_.objects()) {
+    if (!object->isSolid() || !object->inside(p)) continue;
+    if (const Material* m = materialOf(*object))
+      containing.push_back({boxVolume(object->bounds()), m});
+  }
+  std::stable_sort(containing.begin(), containing.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  MediaStack media;
+  for (const auto& c : containing) media.push(c.second);
+  return media;
+}
+
+Color Tracer::traceCamera(const Ray& ray, const MediaStack& media, PathSeed& seed,
+                          RayStats& stats) const {
+  ++stats.primary;
+  return trace(ray, 1, Color(1.0f), media, seed, stats);
+}
+
+// One loop iteration per surface along a straight line: a transmitted ray that does not
+// bend (equal indices of refraction, or a surface without an inside) continues in the
+// loop at its parent's depth instead of recursing, so a ray through a thousand clear
+// triangles needs no deep stack. Reflected and bent rays recurse with depth + 1.
+Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed& seed,
+                    RayStats& stats) const {
+  Color sum(0.0f);
+  Color throughput(1.0f);  // k_t and absorption of the straight continuations so far
+  for (;;) {
+    Hit hit;
+    ++stats.queries;
+    if (!world_.intersect(ray, hit)) {
+      Color background = settings_.background;
+      if (const Material* medium = media.top(); medium && medium->isAbsorbing())
+        background *= beerLambert(medium->absorption, kInf);
+      return sum + throughput * background;
+    }
+
+    const auto& leaf = *static_cast<const Instance*>(hit.shape);
+    const Material& m = world_.material(hit);
+    const SurfaceInfo s = leaf.surface(ray, hit);
+    const bool solid = leaf.isSolid();
+    const bool front = glm::dot(ray.d, s.ng) < 0.0;
+    const bool leaving = solid && !front;  // the ray was inside this solid
+
+    // The stretch just travelled lies inside the solid being left, or else in the
+    // innermost medium the ray is known to be in.
+    const Material* segment = leaving ? &m : media.top();
+    if (segment && segment->isAbsorbing())
+      throughput *= beerLambert(segment->absorption, hit.t * glm::length(ray.d));
+
+    // Normals facing the viewer. The shading normal follows the geometric one's side; if
+    // interpolation still leaves it facing away, the geometric normal is used instead.
+    const Vec3 v = -glm::normalize(ray.d);
+    const Vec3 ng = front ? s.ng : -s.ng;
+    Vec3 n = front ? s.ns : -s.ns;
+    if (glm::dot(n, v) <= 0.0) n = ng;
+
+    // Local terms: k_e + k_a·I_La (·k_t inside an object) + direct light.
+    Color local = m.emissive;
+    Color texture(1.0f);
+    if (m.hasTexture()) texture = textures_.eval(leaf.tag(), m, s, leaf);
+    const Color kd = m.diffuse * texture;
+    Color ambient = (m.hasTexture() && m.ambientIsScalar ? m.ambient * texture : m.ambient) *
+                    settings_.ambient;
+    if (leaving) ambient *= m.transmissive;
+    local += ambient;
+    if (!scene_.lights.empty() && (anyPositive(kd) || anyPositive(m.specular))) {
+      local += directLight(s, n, v, kd, m, media, seed, stats);
+      ++seed.event;
+    }
+
+    // The interface: indices on both sides and the media beyond it.
+    Color kr = m.reflective, kt = m.transmissive;
+    const bool transmits = anyPositive(kt);
+    double n1 = 1.0, n2 = 1.0;
+    MediaStack beyond = media;
+    if (transmits || (m.fresnel && anyPositive(kr))) {
+      if (!solid || front) {
+        n1 = media.ior();
+        n2 = m.ior;
+        if (solid) beyond.push(&m);
+      } else {
+        n1 = m.ior;
+        beyond.remove(&m);
+        n2 = beyond.ior();
+      }
+      if (m.fresnel) {
+        float f = static_cast<float>(fresnelDielectric(glm::dot(v, n), n1, n2));
+        kr *= f;
+        kt *= 1.0f - f;
+      }
+    }
+
+    Color result = local;
+    Color mirror = kr;
+    bool straight = false;
+    if (anyPositive(kt)) {
+      // A surface without an inside is a thin sheet: light passes it without bending.
+      if (!solid || n1 == n2) {
+        straight = true;
+      } else {
+        Vec3 bent;
+        if (refract(-v, n, n1 / n2, bent)) {
+          Color w = weight * kt;
+          if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
+            ++stats.refracted;
+            result += kt * trace(spawnRay(s, bent, settings_.epsilon), depth + 1, w, beyond,
+                                 seed, stats);
+          }
+        } else {
+          mirror += kt;  // total internal reflection: the k_t share joins the mirror ray
+        }
+      }
+    }
+    if (anyPositive(mirror)) {
+      Color w = weight * mirror;
+      if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
+        ++stats.reflected;
+        result += mirror * trace(spawnRay(s, reflect(-v, n), settings_.epsilon), depth + 1, w,
+                                 media, seed, stats);
+      }
+    }
+    sum += throughput * result;
+
+    if (!straight) return sum;
+    Color w = weight * kt;
+    if (maxComponent(w) < settings_.minWeight) return sum;
+    ++stats.refracted;
+    weight = w;
+    throughput *= kt;
+    ray = spawnRay(s, ray.d, settings_.epsilon);
+    if (solid) media = beyond;
+  }
+}
+
+Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
+                          const Material& m, const MediaStack& media, PathSeed& seed,
+                          RayStats& stats) const {
+  Color sum(0.0f);
+  const bool specular = anyPositive(m.specular);
+  for (size_t i = 0; i < scene_.lights.size(); ++i) {
+    const Light& light = scene_.lights[i];
+    const LightIncidence in = lightIncidence(light, s.p);
+    if (!anyPositive(in.radiance)) continue;
+    const double nDotL = glm::dot(n, in.toLight);
+    if (nDotL <= 0.0) continue;  // light behind the surface: no diffuse, no highlight
+    Color brdf = kd * static_cast<float>(nDotL);
+    if (specular) {
+      const double nDotH = glm::dot(n, glm::normalize(in.toLight + v));
+      if (nDotH > 0.0)
+        brdf += m.specular * static_cast<float>(std::pow(nDotH, m.shininess));
+    }
+    if (!anyPositive(brdf)) continue;
+    Color shadow(1.0f);
+    if (light.shadows) {
+      shadow = shadowFactor(light, static_cast<uint32_t>(i), in, s, media, seed, stats);
+      if (!anyPositive(shadow)) continue;
+    }
+    sum += shadow * in.radiance * brdf;
+  }
+  return sum;
+}
+
+Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightIncidence& in,
+                           const SurfaceInfo& s, const MediaStack& media, const PathSeed& seed,
+                           RayStats& stats) const {
+  if (light.type == LightType::Directional)
+    return transmittance(spawnRay(s, in.toLight, settings_.epsilon), media, stats);
+  const int count = shadowSampleCount(light);
+  Color sum(0.0f);
+  for (int k = 0; k < count; ++k) {
+    Vec2 jitter(0.5);
+    if (light.jitter) {
+      // Deterministic: a hash of the pixel, sample, shading event, light and grid point.
+      uint64_t path = (uint64_t(seed.sample) << 32) | seed.event;
+      uint64_t which = (uint64_t(lightIndex) << 32) | uint32_t(k);
+      jitter = Vec2(hashToUnit(seed.x, seed.y, path, 2 * which),
+                    hashToUnit(seed.x, seed.y, path, 2 * which + 1));
+    }
+    Vec3 target = lightSamplePoint(light, k, jitter);
+    sum += transmittance(spawnRayTo(s, target, settings_.epsilon), media, stats);
+  }
+  return sum / static_cast<float>(count);
+}
+
+Color Tracer::transmittance(Ray ray, MediaStack media, RayStats& stats) const {
+  ++stats.shadow;
+  if (!anyTransmissive_) {
+    ++stats.queries;
+    return world_.occluded(ray) ? Color(0.0f) : Color(1.0f);
+  }
+  Color t(1.0f);
+  const double speed = glm::length(ray.d);  // world distance per unit of t
+  double tPrevious = ray.tmin;
+  for (;;) {
+    Hit hit;
+    ++stats.queries;
+    if (!world_.intersect(ray, hit)) break;
+    const Material& m = world_.material(hit);
+    if (!m.isTransmissive()) return Color(0.0f);
+    t *= m.transmissive;
+    if (anyAbsorbing_) {
+      const auto& leaf = *static_cast<const Instance*>(hit.shape);
+      bool leaving = false;
+      if (leaf.isSolid()) leaving = glm::dot(ray.d, leaf.surface(ray, hit).ng) > 0.0;
+      const Material* segment = leaving ? &m : media.top();
+      if (segment && segment->isAbsorbing())
+        t *= beerLambert(segment->absorption, (hit.t - tPrevious) * speed);
+      if (leaf.isSolid()) {
+        if (leaving)
+          media.remove(&m);
+        else
+          media.push(&m);
+      }
+    }
+    if (!anyPositive(t)) return Color(0.0f);
+    // The same ray searched again beyond this hit: t is strictly increasing, and the
+    // hit just found is excluded because the search interval is open.
+    tPrevious = hit.t;
+    ray.tmin = hit.t;
+  }
+  if (anyAbsorbing_) {
+    if (const Material* medium = media.top(); medium && medium->isAbsorbing())
+      t *= beerLambert(medium->absorption, (ray.tmax - tPrevious) * speed);
+  }
+  return t;
+}
+
+}  // namespace lucent

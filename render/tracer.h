@@ -1,0 +1,68 @@
+// The Whitted integrator: the colour seen along a ray, with the contract's shading
+//   I = k_e + k_a·I_La + Σ_lights A_shadow·A_dist·I_L·[k_d (N·L) + k_s (N·H)^n_s]
+//       + k_r·I_reflected + k_t·I_transmitted
+// plus recursion limits (max-depth, min-weight), nested media and Beer–Lambert absorption.
+#pragma once
+
+#include "light_sample.h"
+#include "media_stack.h"
+#include "ray_stats.h"
+#include "texture.h"
+
+#include "primitives/hit.h"
+#include "primitives/instance.h"
+#include "scenegraph/world.h"
+
+#include <cstdint>
+
+namespace lucent {
+
+// Where a path comes from: the pixel, the sample and a count of the shading events so
+// far, the only inputs of the tracer's pseudo-random numbers (area-light jitter), so a
+// pixel's colour never depends on the thread that renders it.
+struct PathSeed {
+  uint32_t x = 0, y = 0, sample = 0;
+  uint32_t event = 0;
+};
+
+class Tracer {
+ public:
+  // Reads the render settings, lights and materials from world.scene() and loads the
+  // image textures (throws TextureError). The world must outlive the tracer.
+  explicit Tracer(const World& world);
+
+  // The colour seen along a camera ray (depth 1, weight 1) that starts in `media`.
+  Color traceCamera(const Ray& ray, const MediaStack& media, PathSeed& seed,
+                    RayStats& stats) const;
+
+  // The media containing point p (a camera's starting media): the top-level solids whose
+  // inside() holds p, the largest bounding box outermost (an infinite plane is outermost).
+  MediaStack mediaAt(const Vec3& p) const;
+
+  // Fraction of light that passes along the shadow ray (t in (ray.tmin, ray.tmax)),
+  // which starts in `media`: 0 at the first opaque surface, times k_t at every
+  // transparent one, times exp(−absorption·d) for each stretch inside an absorbing solid.
+  Color transmittance(Ray ray, MediaStack media, RayStats& stats) const;
+
+ private:
+  Color trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed& seed,
+              RayStats& stats) const;
+  // Σ over lights of A_shadow·A_dist·I_L·[k_d (N·L) + k_s (N·H)^n_s].
+  Color directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
+                    const Material& m, const MediaStack& media, PathSeed& seed,
+                    RayStats& stats) const;
+  // A_shadow of one light at s: the transmittance averaged over the light's samples.
+  Color shadowFactor(const Light& light, uint32_t lightIndex, const LightIncidence& in,
+                     const SurfaceInfo& s, const MediaStack& media, const PathSeed& seed,
+                     RayStats& stats) const;
+  const Material* materialOf(const Shape& object) const;
+
+  const World& world_;
+  const Scene& scene_;
+  const RenderSettings settings_;  // a copy: the scene may change after the renderer is built
+  TextureSet textures_;
+  bool anyTransmissive_ = false;  // else shadow rays ask the cheaper any-hit question
+  bool anyAbsorbing_ = false;     // else shadow rays need no media bookkeeping
+};
+
+}  // namespace lucent

@@ -1,0 +1,216 @@
+// Refraction, total internal reflection, Fresnel, absorption, nested media and the
+// recursion limits, traced through real scenes.
+#include "scene_builder.h"
+
+#include "render/image_io.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include <unistd.h>
+
+using namespace lucent;
+using namespace lucent::test;
+
+namespace {
+
+Material glass(double ior, const Color& kt = Color(1.0f)) {
+  Material m;
+  m.transmissive = kt;
+  m.ior = ior;
+  return m;
+}
+
+// A wall z = zWall facing +z.
+void addWall(Scene& scene, double zWall, uint32_t material) {
+  addShape(scene, PlaneSpec{Vec3(0, 0, 1), zWall}, material);
+}
+
+// A 2 x 1 float image (0 and 1): bilinear interpolation makes its value a linear ramp
+// between the pixel centres, so a texture lookup measures where a ray landed.
+std::string writeRamp() {
+  auto path = std::filesystem::temp_directory_path() /
+              ("lucent-ramp-" + std::to_string(::getpid()) + ".exr");
+  Image ramp(2, 1);
+  ramp.at(0, 0) = Color(0.0f);
+  ramp.at(1, 0) = Color(1.0f);
+  writeImageFile(ramp, path.string());
+  return path.string();
+}
+
+// The wall's u (= world x) from the ramp's value: value = 2 s - 0.5 with s = u / scale
+// for s in [0.25, 0.75].
+constexpr double kRampScale = 60.0;
+double landingX(const Color& c) { return kRampScale * (c.r + 0.5) / 2.0; }
+
+}  // namespace
+
+TEST_CASE("a ray through a glass slab lands displaced by the analytic amount, parallel",
+          "[render][refraction]") {
+  const std::string ramp = writeRamp();
+  const double n = 1.5, thickness = 1.0;
+  const double theta = radians(30.0), thetaT = std::asin(std::sin(theta) / n);
+  const Vec3 origin(20, 0, 0), d(std::sin(theta), 0, -std::cos(theta));
+
+  auto land = [&](double zWall, bool withSlab) {
+    Scene scene;
+    scene.render.ambient = Color(1.0f);
+    Material wall;
+    wall.ambient = Color(1.0f);
+    wall.ambientIsScalar = true;
+    wall.texture = ImageTexture{ramp, Vec2(kRampScale, 1.0), {}};
+    addWall(scene, zWall, addMaterial(scene, wall));
+    if (withSlab)
+      addShape(scene, BoxSpec{Vec3(-100, -100, -3), Vec3(100, 100, -3 + thickness)},
+               addMaterial(scene, glass(n)));
+    World world(scene);
+    return landingX(traceOne(world, Ray(origin, d)));
+  };
+
+  // Without the slab the ray lands where it points.
+  CHECK(land(-10, false) == Approx(20 + 10 * std::tan(theta)).margin(1e-4));
+  // With it, the path inside the slab is steeper: tan(theta) - tan(thetaT) per unit.
+  const double shift = thickness * (std::tan(theta) - std::tan(thetaT));
+  CHECK(land(-10, true) == Approx(20 + 10 * std::tan(theta) - shift).margin(1e-4));
+  // Parallel: ten units further the landing point moves by 10 tan(theta), as without glass.
+  CHECK(land(-20, true) - land(-10, true) == Approx(10 * std::tan(theta)).margin(2e-4));
+  std::filesystem::remove(ramp);
+}
+
+TEST_CASE("total internal reflection sends the k_t share into the mirror ray",
+          "[render][refraction]") {
+  // A right-angle prism: the cube [-1,1]^3 cut by the plane x + z = 0 (the half x + z > 0
+  // is kept). A ray coming down -z enters the face z = 1 head-on, meets the hypotenuse at
+  // 45 degrees (critical angle 41.8 for ior 1.5), is reflected towards +x, leaves through
+  // x = 1 head-on and reaches the wall x = 5.
+  Scene scene;
+  const Color wallColor(0.2f, 0.5f, 0.7f);
+  uint32_t prismMaterial = addMaterial(scene, glass(1.5));
+  auto prism = std::make_unique<Node>();
+  prism->kind = NodeKind::Intersection;
+  prism->element = "intersection";
+  prism->material = prismMaterial;
+  prism->children.push_back(shapeNode(BoxSpec{Vec3(-1), Vec3(1)}, std::nullopt));
+  prism->children.push_back(
+      shapeNode(PlaneSpec{glm::normalize(Vec3(-1, 0, -1)), 0.0}, std::nullopt));
+  scene.root->children.push_back(std::move(prism));
+  addShape(scene, PlaneSpec{Vec3(-1, 0, 0), -5.0}, addMaterial(scene, emissive(wallColor)));
+  addWall(scene, -20, addMaterial(scene, emissive(Color(0.9f, 0.1f, 0.1f))));  // not seen
+
+  const Ray ray(Vec3(0.3, 0, 5), Vec3(0, 0, -1));
+  // Depths: prism entry 1, inside 2 (bent: the indices differ), after TIR 3, out 4.
+  scene.render.maxDepth = 4;
+  {
+    World world(scene);
+    RayStats stats;
+    CHECK(traceOne(world, ray, &stats) == wallColor);
+    CHECK(stats.reflected == 1);
+    CHECK(stats.refracted == 2);
+  }
+  scene.render.maxDepth = 3;
+  {
+    World world(scene);
+    CHECK(traceOne(world, ray) == Color(0.0f));  // beyond max-depth: black, not background
+  }
+}
+
+TEST_CASE("Fresnel: k_r F at normal incidence is ((n-1)/(n+1))^2", "[render][refraction]") {
+  Scene scene;
+  Material mirror;
+  mirror.reflective = Color(1.0f);
+  mirror.fresnel = true;
+  mirror.ior = 1.5;
+  addWall(scene, 0.0, addMaterial(scene, mirror));
+  // A wall behind the camera (z = 10, facing -z) that the reflection sees.
+  addShape(scene, PlaneSpec{Vec3(0, 0, -1), -10.0}, addMaterial(scene, emissive(Color(1.0f))));
+  World world(scene);
+  Color c = traceOne(world, Ray(Vec3(0, 0, 5), Vec3(0, 0, -1)));
+  CHECK(c.r == Approx(0.04).epsilon(1e-6));
+  // Glass with fresnel: the transmitted share is k_t (1 - F).
+  Scene g;
+  Material pane = glass(1.5);
+  pane.fresnel = true;
+  addShape(g, BoxSpec{Vec3(-5, -5, -1), Vec3(5, 5, 0)}, addMaterial(g, pane));
+  addWall(g, -10, addMaterial(g, emissive(Color(1.0f))));
+  World gw(g);
+  CHECK(traceOne(gw, Ray(Vec3(0, 0, 5), Vec3(0, 0, -1))).r == Approx(0.96 * 0.96).epsilon(1e-6));
+}
+
+TEST_CASE("Beer-Lambert absorption through a slab of thickness d is exp(-a d)",
+          "[render][refraction]") {
+  for (double ior : {1.0, 1.5}) {  // straight through, and bent (at normal incidence)
+    Scene scene;
+    Material m = glass(ior);
+    m.absorption = Color(0.5f, 1.0f, 2.0f);
+    addShape(scene, BoxSpec{Vec3(-5, -5, -2), Vec3(5, 5, 0)}, addMaterial(scene, m));
+    addWall(scene, -10, addMaterial(scene, emissive(Color(1.0f))));
+    World world(scene);
+    Color c = traceOne(world, Ray(Vec3(0, 0, 5), Vec3(0, 0, -1)));
+    INFO("ior " << ior);
+    CHECK(c.r == Approx(std::exp(-0.5 * 2)).epsilon(1e-6));
+    CHECK(c.g == Approx(std::exp(-1.0 * 2)).epsilon(1e-6));
+    CHECK(c.b == Approx(std::exp(-2.0 * 2)).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("a transmitted ray that does not bend keeps its parent's depth", "[render][refraction]") {
+  Scene scene;
+  scene.render.maxDepth = 1;  // only the primary ray
+  uint32_t pane = addMaterial(scene, glass(1.0, Color(0.5f)));
+  addShape(scene, BoxSpec{Vec3(-5, -5, -2), Vec3(5, 5, 0)}, pane);
+  addWall(scene, -10, addMaterial(scene, emissive(Color(1.0f))));
+  {
+    World world(scene);
+    CHECK(traceOne(world, Ray(Vec3(0, 0, 5), Vec3(0, 0, -1))).r == Approx(0.25).epsilon(1e-7));
+  }
+  scene.materials[pane].ior = 1.5;  // now the ray bends (even head-on): depth 2 is too deep
+  {
+    World world(scene);
+    CHECK(traceOne(world, Ray(Vec3(0, 0, 5), Vec3(0, 0, -1))) == Color(0.0f));
+  }
+}
+
+TEST_CASE("min-weight: a secondary ray whose weight falls below it is not traced",
+          "[render][refraction]") {
+  Scene scene;
+  Material mirror;
+  mirror.reflective = Color(0.003f, 0.001f, 0.0f);  // largest channel 0.003 < 0.0039
+  uint32_t m = addMaterial(scene, mirror);
+  addWall(scene, 0.0, m);
+  addShape(scene, PlaneSpec{Vec3(0, 0, -1), -10.0}, addMaterial(scene, emissive(Color(1.0f))));
+  const Ray ray(Vec3(0, 0, 5), Vec3(0, 0, -1));
+  {
+    World world(scene);
+    RayStats stats;
+    CHECK(traceOne(world, ray, &stats) == Color(0.0f));
+    CHECK(stats.reflected == 0);
+  }
+  scene.materials[m].reflective = Color(0.004f, 0.001f, 0.0f);
+  {
+    World world(scene);
+    RayStats stats;
+    CHECK(traceOne(world, ray, &stats).r == Approx(0.004).epsilon(1e-6));
+    CHECK(stats.reflected == 1);
+  }
+}
+
+TEST_CASE("nested media: leaving glass into water uses the water's index", "[render][refraction]") {
+  // Camera at the centre of a glass ball (ior 1.5, a Fresnel mirror that glows) inside a
+  // water ball (1.33). Head-on, the inner surface reflects F = ((1.5 - 1.33)/2.83)^2; the
+  // reflected ray (depth 2) sees the glow again; depth 3 is cut off.
+  Scene scene;
+  scene.render.maxDepth = 2;
+  scene.render.minWeight = 0.0;
+  Material ball;
+  ball.emissive = Color(1.0f);
+  ball.reflective = Color(1.0f);
+  ball.fresnel = true;
+  ball.ior = 1.5;
+  addShape(scene, SphereSpec{Vec3(0), 1.0}, addMaterial(scene, ball));
+  addShape(scene, SphereSpec{Vec3(0), 3.0}, addMaterial(scene, glass(1.33)));
+  World world(scene);
+  const double f = std::pow((1.5 - 1.33) / (1.5 + 1.33), 2.0);
+  Color c = traceOne(world, Ray(Vec3(0), Vec3(0, 0, -1)));
+  CHECK(c.r == Approx(1.0 + f).epsilon(1e-6));
+}
