@@ -23,6 +23,9 @@ struct ParseOptions {
 struct ParseResult {
   std::unique_ptr<Scene> scene;  // null when there are errors
   Diagnostics diagnostics;       // errors (then scene is null) and warnings
+  // The scene file itself could not be read (missing, a folder, unreadable): an
+  // input/output failure rather than an invalid scene (exit status 3, not 2).
+  bool ioFailure = false;
 };
 
 // Parses and validates the scene file at `path`.

@@ -1,0 +1,51 @@
+// The parsers of the scene language's elements, one file per concept; parser.cpp calls
+// them in phases (parameters, materials, everything else, then references).
+#pragma once
+
+#include "element_reader.h"
+#include "parse_context.h"
+
+#include <memory>
+#include <optional>
+#include <string_view>
+
+namespace lucent {
+
+// <render>, <camera>, <light> (render_parser.cpp, camera_parser.cpp, light_parser.cpp).
+void parseRender(ElementReader& r);
+void parseCamera(ElementReader& r);
+void parseLight(ElementReader& r);
+
+// material_parser.cpp. A top-level <material id> is registered under its id; an inline one
+// (a child of a geometry node) is added without a name. Both return its index.
+std::optional<uint32_t> parseNamedMaterial(ElementReader& r);
+std::optional<uint32_t> parseInlineMaterial(ElementReader& r);
+// The index of the material named by a material="id" attribute, with did-you-mean.
+std::optional<uint32_t> lookupMaterial(ElementReader& r, const char* attr);
+
+// geometry_parser.cpp: every geometry element, groups, CSG operations and <use>.
+bool isGeometryElement(std::string_view name);
+const std::vector<std::string_view>& geometryElementNames();
+// Null if the element is too deep (reported). Errors inside still yield a node, marked
+// broken, so the rest of the file is checked.
+std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& file,
+                                        pugi::xml_node element, int depth);
+// <defs>: its children go to scene.defs.
+void parseDefs(ElementReader& r);
+
+// shape_parser.cpp, mesh_parser.cpp: the parameters of one shape element ("sphere", ...).
+// Returns nothing when the element is not a shape. Errors are reported through r.
+bool isShapeElement(std::string_view name);
+std::optional<ShapeSpec> parseShape(ElementReader& r);
+ShapeSpec parseMesh(ElementReader& r);
+// The attributes each shape element accepts besides id, transform and material.
+const std::vector<std::string_view>& shapeAttributes(std::string_view element);
+
+// references.cpp: resolves <use ref>, finds reference cycles, limits the instance depth
+// and checks the operands of merge, intersection and difference are solids.
+void resolveReferences(ParseContext& ctx);
+
+// Ids of nodes, materials and cameras: non-empty, no whitespace.
+bool isValidId(std::string_view id);
+
+}  // namespace lucent

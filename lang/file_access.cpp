@@ -1,0 +1,67 @@
+#include "file_access.h"
+
+#include <algorithm>
+#include <system_error>
+
+namespace fs = std::filesystem;
+
+namespace lucent {
+
+fs::path canonicalPath(const fs::path& p) {
+  std::error_code ec;
+  fs::path abs = fs::absolute(p, ec);
+  if (ec) abs = p;
+  fs::path c = fs::weakly_canonical(abs, ec);
+  if (ec) c = abs.lexically_normal();
+  if (!c.has_filename() && c.has_parent_path() && c != c.root_path()) c = c.parent_path();
+  return c;
+}
+
+FileAccess::FileAccess(const fs::path& sceneFolder, const std::vector<std::string>& allowPaths) {
+  roots_.push_back(canonicalPath(sceneFolder.empty() ? fs::path(".") : sceneFolder));
+  for (const std::string& p : allowPaths) roots_.push_back(canonicalPath(p));
+}
+
+bool FileAccess::allowed(const fs::path& canonical) const {
+  for (const fs::path& root : roots_) {
+    // Component-wise prefix test: /a/bc is not inside /a/b.
+    auto r = root.begin(), p = canonical.begin();
+    for (; r != root.end() && p != canonical.end(); ++r, ++p)
+      if (*r != *p) break;
+    if (r == root.end()) return true;
+  }
+  return false;
+}
+
+FileAccess::Resolved FileAccess::resolve(const std::string& written, const fs::path& baseFolder) const {
+  Resolved out;
+  if (written.empty()) {
+    out.error = "the path is empty";
+    return out;
+  }
+  fs::path p(written);
+  if (p.is_relative()) p = baseFolder / p;
+  fs::path c = canonicalPath(p);
+  if (!allowed(c)) {
+    std::string folders;
+    for (size_t i = 0; i < roots_.size(); ++i)
+      folders += (i ? ", " : "") + roots_[i].string();
+    out.error = "'" + written + "' leads to '" + c.string() +
+                "', outside the folders this scene may read (" + folders +
+                "); use --allow-path to permit another folder";
+    return out;
+  }
+  std::error_code ec;
+  if (!fs::exists(c, ec)) {
+    out.error = "file '" + written + "' not found (looked for '" + c.string() + "')";
+    return out;
+  }
+  if (!fs::is_regular_file(c, ec)) {
+    out.error = "'" + written + "' is not a regular file";
+    return out;
+  }
+  out.path = c;
+  return out;
+}
+
+}  // namespace lucent

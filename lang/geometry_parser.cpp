@@ -1,0 +1,170 @@
+// Geometry nodes (contract, "Geometry nodes"): shapes, <group>, <union>, <merge>,
+// <intersection>, <difference> and <use ref>. Every one accepts id, transform and
+// material (an id attribute or one inline <material> child, not both). A node without a
+// material leaves Node::material empty and inherits its nearest ancestor's (World does it).
+#include "element_parsers.h"
+
+#include <algorithm>
+
+namespace lucent {
+
+namespace {
+
+struct GroupEntry {
+  std::string_view element;
+  NodeKind kind;
+};
+const std::vector<GroupEntry> kGroups{{"group", NodeKind::Group},
+                                      {"union", NodeKind::Union},
+                                      {"merge", NodeKind::Merge},
+                                      {"intersection", NodeKind::Intersection},
+                                      {"difference", NodeKind::Difference}};
+
+const GroupEntry* findGroup(std::string_view name) {
+  for (const GroupEntry& g : kGroups)
+    if (g.element == name) return &g;
+  return nullptr;
+}
+
+const std::vector<std::string_view> kTopLevelOnly{"render", "camera", "light", "param", "defs", "include"};
+
+// A child element that is not allowed where it stands: say where it belongs, or suggest
+// the closest allowed name.
+void reportUnexpectedChild(ElementReader& parent, pugi::xml_node child,
+                           const std::vector<std::string_view>& allowed) {
+  ElementReader c(parent.ctx(), parent.file(), child);
+  std::string_view name = child.name();
+  bool topLevel = std::find(kTopLevelOnly.begin(), kTopLevelOnly.end(), name) != kTopLevelOnly.end();
+  if (topLevel)
+    c.error("<" + std::string(name) + "> is not allowed inside " + parent.tag() +
+            "; it belongs at the top level of <scene>");
+  else if (isGeometryElement(name) || name == "material")
+    c.error("<" + std::string(name) + "> is not allowed inside " + parent.tag());
+  else
+    c.error("unknown element <" + std::string(name) + "> inside " + parent.tag() +
+            didYouMean(name, allowed));
+}
+
+// The material of a geometry node: the material="id" attribute or one inline child.
+void readNodeMaterial(ElementReader& r, Node& node, pugi::xml_node inlineMaterial) {
+  if (inlineMaterial && r.has("material")) {
+    r.attrError("material", "give either a 'material' attribute or an inline <material> child (at " +
+                                r.file().loc(inlineMaterial).str() + "), not both");
+    return;
+  }
+  if (r.has("material")) {
+    node.material = lookupMaterial(r, "material");
+  } else if (inlineMaterial) {
+    ElementReader m(r.ctx(), r.file(), inlineMaterial);
+    node.material = parseInlineMaterial(m);
+    if (m.failed()) r.ctx().broken.insert(&node);
+  }
+}
+
+void registerId(ElementReader& r, Node& node) {
+  auto id = r.text("id");
+  if (!id) return;
+  if (!isValidId(*id)) {
+    r.attrError("id", "an id must be non-empty and contain no spaces, got '" + *id + "'");
+    return;
+  }
+  node.id = *id;
+  auto [it, inserted] = r.ctx().nodeIds.try_emplace(*id, ParseContext::IdEntry{&node, node.loc});
+  if (!inserted)
+    r.attrError("id", "the id '" + *id + "' is already used (first defined at " + it->second.loc.str() + ")");
+}
+
+}  // namespace
+
+const std::vector<std::string_view>& geometryElementNames() {
+  static const std::vector<std::string_view> names{
+      "sphere", "box",   "cylinder", "cone",  "torus",        "plane",      "disc",
+      "triangle", "mesh", "group",  "union", "merge", "intersection", "difference", "use"};
+  return names;
+}
+
+bool isGeometryElement(std::string_view name) {
+  const auto& n = geometryElementNames();
+  return std::find(n.begin(), n.end(), name) != n.end();
+}
+
+std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& file, pugi::xml_node element,
+                                        int depth) {
+  ElementReader r(ctx, file, element);
+  if (depth > kMaxElementDepth) {
+    r.error("elements nest deeper than " + std::to_string(kMaxElementDepth) + " levels here");
+    return nullptr;
+  }
+  std::string_view name = element.name();
+  auto node = std::make_unique<Node>();
+  node->element = std::string(name);
+  node->loc = r.loc();
+
+  const GroupEntry* group = findGroup(name);
+  bool isUse = name == "use";
+  std::vector<std::string_view> allowed{"id", "transform", "material"};
+  if (isUse) allowed.push_back("ref");
+  for (auto a : shapeAttributes(name)) allowed.push_back(a);
+  r.checkAttributes(allowed);
+
+  registerId(r, *node);
+  node->parentFromNode = r.transform("transform");
+
+  // Children: geometry (groups and CSG only) and at most one inline <material>.
+  pugi::xml_node inlineMaterial;
+  std::vector<std::string_view> childNames{"material"};
+  if (group) childNames.insert(childNames.end(), geometryElementNames().begin(), geometryElementNames().end());
+  r.forEachChild([&](pugi::xml_node c) {
+    std::string_view cn = c.name();
+    if (cn == "material") {
+      if (inlineMaterial) {
+        ElementReader(ctx, file, c).error(r.tag() + " holds one <material> at most; the first is at " +
+                                         file.loc(inlineMaterial).str());
+        return;
+      }
+      inlineMaterial = c;
+    } else if (group && isGeometryElement(cn)) {
+      if (auto child = parseGeometryNode(ctx, file, c, depth + 1)) node->children.push_back(std::move(child));
+    } else {
+      reportUnexpectedChild(r, c, childNames);
+    }
+  });
+  readNodeMaterial(r, *node, inlineMaterial);
+
+  if (group) {
+    node->kind = group->kind;
+    if (node->isCsg() && node->children.empty() && !r.failed())
+      r.error(r.tag() + " needs at least one child shape");
+  } else if (isUse) {
+    node->kind = NodeKind::Use;
+    if (!r.has("ref")) {
+      r.error("<use> needs a 'ref' attribute naming the id of the node to instantiate");
+    } else if (auto ref = r.text("ref")) {
+      ctx.uses.push_back({node.get(), *ref, r.valueLoc("ref")});
+    }
+  } else {
+    node->kind = NodeKind::Shape;
+    node->shape = parseShape(r);
+  }
+  if (r.failed()) ctx.broken.insert(node.get());
+  // A <use> without a target cannot be resolved: treat it as broken from the start.
+  if (isUse && (!r.has("ref") || r.failed())) ctx.broken.insert(node.get());
+  return node;
+}
+
+void parseDefs(ElementReader& r) {
+  r.checkAttributes({});
+  r.forEachChild([&](pugi::xml_node c) {
+    if (!isGeometryElement(c.name())) {
+      reportUnexpectedChild(r, c, geometryElementNames());
+      return;
+    }
+    auto node = parseGeometryNode(r.ctx(), r.file(), c, 2);
+    if (!node) return;
+    if (node->id.empty() && !r.ctx().broken.count(node.get()))
+      r.ctx().diags.warning(node->loc, "<" + node->element + "> in <defs> has no id, so no <use> can instantiate it");
+    r.ctx().scene.defs.push_back(std::move(node));
+  });
+}
+
+}  // namespace lucent

@@ -1,0 +1,127 @@
+// <light> (contract, "<light>"): point (default), directional, spot and area lights.
+// Every light has color (1), intensity (1) and shadows (true); directions are normalised.
+// An attribute of another light type is an error that says which type it belongs to.
+#include "element_parsers.h"
+
+#include <fmt/format.h>
+
+namespace lucent {
+
+namespace {
+
+const std::vector<std::pair<std::string_view, LightType>> kLightTypes{
+    {"point", LightType::Point},
+    {"directional", LightType::Directional},
+    {"spot", LightType::Spot},
+    {"area", LightType::Area}};
+
+const std::vector<std::string_view>& typeAttributes(LightType t) {
+  static const std::vector<std::string_view> point{"position", "attenuation"},
+      directional{"direction"},
+      spot{"position", "attenuation", "direction", "look-at", "angle", "inner"},
+      area{"position", "attenuation", "u", "v", "samples", "jitter"};
+  switch (t) {
+    case LightType::Point: return point;
+    case LightType::Directional: return directional;
+    case LightType::Spot: return spot;
+    case LightType::Area: return area;
+  }
+  return point;
+}
+
+const char* typeName(LightType t) {
+  for (const auto& [name, type] : kLightTypes)
+    if (type == t) return name.data();
+  return "?";
+}
+
+}  // namespace
+
+void parseLight(ElementReader& r) {
+  Light light;
+  light.loc = r.loc();
+  light.type = r.choice("type", LightType::Point, kLightTypes);
+
+  std::vector<std::string_view> allowed{"type", "color", "intensity", "shadows"};
+  for (auto a : typeAttributes(light.type)) allowed.push_back(a);
+  r.checkAttributes(allowed, [&](std::string_view attr) -> std::string {
+    for (const auto& [name, type] : kLightTypes)
+      for (auto a : typeAttributes(type))
+        if (a == attr)
+          return "belongs to " + std::string(name) + " lights; this light is " + typeName(light.type) +
+                 " (set type=\"" + std::string(name) + "\")";
+    return {};
+  });
+
+  light.color = r.color("color", light.color);
+  light.intensity = r.number("intensity", light.intensity, NumberRule::nonNegative());
+  light.shadows = r.boolean("shadows", light.shadows);
+
+  if (light.type != LightType::Directional) {
+    light.position = r.vector("position", light.position);
+    if (auto t = r.text("attenuation")) {
+      auto v = parseVector(*t);
+      if (!v) r.attrError("attenuation", v.error);
+      else if (v->x < 0.0 || v->y < 0.0 || v->z < 0.0 || (v->x == 0.0 && v->y == 0.0 && v->z == 0.0))
+        r.attrError("attenuation", "expected 3 numbers a b c >= 0, not all zero, got '" + *t + "'");
+      else light.attenuation = *v;
+    }
+  }
+
+  switch (light.type) {
+    case LightType::Directional:
+      light.direction = r.direction("direction", light.direction);
+      break;
+    case LightType::Spot: {
+      if (r.has("direction") && r.has("look-at")) {
+        r.attrError("look-at", "give either 'direction' or 'look-at', not both");
+      } else if (r.has("look-at")) {
+        Vec3 target = r.vector("look-at", light.position + light.direction);
+        Vec3 d = target - light.position;
+        double len = glm::length(d);
+        if (!(len > 0.0)) r.attrError("look-at", "'look-at' must differ from 'position'");
+        else light.direction = d / len;
+      } else {
+        light.direction = r.direction("direction", light.direction);
+      }
+      light.angle = r.number("angle", light.angle,
+                             NumberRule::between(0.0, 90.0, "an angle above 0 and at most 90", true));
+      light.inner = r.number("inner", light.angle,
+                             NumberRule::between(0.0, 90.0, "an angle from 0 to 90"));
+      if (light.inner > light.angle)
+        r.attrError("inner", "'inner' (" + fmt::format("{}", light.inner) + ") must not exceed 'angle' (" +
+                                 fmt::format("{}", light.angle) + ")");
+      break;
+    }
+    case LightType::Area: {
+      light.u = r.vector("u", light.u);
+      light.v = r.vector("v", light.v);
+      if (!(glm::length(glm::cross(light.u, light.v)) > 0.0))
+        r.error("<light type=\"area\">: 'u' and 'v' must be non-zero and not parallel (they span the rectangle)");
+      if (auto t = r.text("samples")) {
+        auto list = parseIntegerList(*t);
+        if (!list) r.attrError("samples", list.error);
+        else if (list->size() != 2 && list->size() != 1)
+          r.attrError("samples", "expected 2 whole numbers (nu nv), got " + std::to_string(list->size()));
+        else {
+          long long nu = (*list)[0], nv = list->size() == 2 ? (*list)[1] : nu;
+          if (nu < 2 || nv < 2 || nu > 1024 || nv > 1024)
+            r.attrError("samples", "each count must be from 2 to 1024 (the grid includes the edges), got '" + *t + "'");
+          else {
+            light.samplesU = static_cast<int>(nu);
+            light.samplesV = static_cast<int>(nv);
+          }
+        }
+      }
+      light.jitter = r.boolean("jitter", light.jitter);
+      break;
+    }
+    case LightType::Point: break;
+  }
+  r.forEachChild([&](pugi::xml_node n) {
+    ElementReader(r.ctx(), r.file(), n).error("<light> takes no child elements, got <" + std::string(n.name()) + ">");
+  });
+  r.ctx().scene.lights.push_back(light);
+}
+
+}  // namespace lucent

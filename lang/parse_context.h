@@ -1,0 +1,75 @@
+// State shared by the element parsers while one scene is read: the scene being filled,
+// the diagnostics, parameters, file access, and the names (ids) seen so far.
+#pragma once
+
+#include "diagnostics.h"
+#include "file_access.h"
+#include "parameters.h"
+#include "source_file.h"
+
+#include "scenegraph/scene.h"
+
+#include <pugixml.hpp>
+
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace lucent {
+
+// Elements nest at most this deep in a file (checked before recursing, so a hostile
+// 100,000-deep file gives an error, not a stack overflow) ...
+constexpr int kMaxElementDepth = 256;
+// ... and nodes at most this deep counting what <use> instantiates, so that building the
+// world (which recurses) stays far from the stack limit.
+constexpr int kMaxInstanceDepth = 1024;
+// Files included within included files, at most this deep.
+constexpr int kMaxIncludeDepth = 16;
+
+// A top-level element of the scene, after <include>s were replaced by their files' children.
+struct TopLevelItem {
+  const SourceFile* file;
+  pugi::xml_node element;
+};
+
+struct ParseContext {
+  ParseContext(Scene& s, Diagnostics& d, Parameters& p, const FileAccess& f)
+      : scene(s), diags(d), params(p), files(f) {}
+
+  Scene& scene;
+  Diagnostics& diags;
+  Parameters& params;
+  const FileAccess& files;
+
+  // Named materials: id -> index into scene.materials.
+  std::unordered_map<std::string, uint32_t> materialIds;
+
+  // Node ids (one namespace for <defs> and the main tree) and the <use>s to resolve.
+  struct IdEntry {
+    Node* node;
+    SourceLoc loc;
+  };
+  std::unordered_map<std::string, IdEntry> nodeIds;
+  struct PendingUse {
+    Node* use;
+    std::string ref;
+    SourceLoc refLoc;  // the value of the ref attribute
+  };
+  std::vector<PendingUse> uses;
+  // Nodes whose own element had errors: later checks (CSG solids) skip them rather than
+  // repeat the problem in other words.
+  std::unordered_set<const Node*> broken;
+
+  // Meshes read from files, by canonical path: a file used twice is read once.
+  std::unordered_map<std::string, std::shared_ptr<const MeshData>> meshCache;
+
+  // Camera names, for duplicates.
+  std::unordered_map<std::string, SourceLoc> cameraNames;
+  // Where <render> was given, to refuse a second one.
+  SourceLoc renderLoc;
+  bool hasRender = false;
+};
+
+}  // namespace lucent

@@ -1,0 +1,139 @@
+// The scene language's driver: loads the scene and its includes, then reads the
+// top-level elements in phases (parameters while loading; named materials, so shapes may
+// name a material declared after them; everything else in document order; references
+// last), and returns the scene only if no error was found. Diagnostics come back sorted
+// by file (in the order files were read), line and column.
+#include "parser.h"
+
+#include "element_parsers.h"
+#include "scene_loader.h"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+namespace fs = std::filesystem;
+
+namespace lucent {
+
+namespace {
+
+const std::vector<std::string_view>& topLevelElementNames() {
+  static const std::vector<std::string_view> names = [] {
+    std::vector<std::string_view> n{"render", "camera", "light", "material", "param", "defs", "include"};
+    n.insert(n.end(), geometryElementNames().begin(), geometryElementNames().end());
+    return n;
+  }();
+  return names;
+}
+
+void readTopLevel(ParseContext& ctx, const TopLevelItem& item) {
+  ElementReader r(ctx, *item.file, item.element);
+  std::string_view name = item.element.name();
+  if (name == "param" || name == "material") return;  // read in earlier phases
+  if (name == "render") parseRender(r);
+  else if (name == "camera") parseCamera(r);
+  else if (name == "light") parseLight(r);
+  else if (name == "defs") parseDefs(r);
+  else if (isGeometryElement(name)) {
+    if (auto node = parseGeometryNode(ctx, *item.file, item.element, 1))
+      ctx.scene.root->children.push_back(std::move(node));
+  } else if (name == "checker" || name == "image") {
+    r.error("<" + std::string(name) + "> is a texture: it goes inside a <material>");
+  } else {
+    r.error("unknown element <" + std::string(name) + "> in <scene>" + didYouMean(name, topLevelElementNames()));
+  }
+}
+
+// Errors of several phases are collected out of order: sort them as a reader would go.
+Diagnostics sorted(const Diagnostics& in, const std::vector<std::unique_ptr<SourceFile>>& files) {
+  std::unordered_map<std::string, size_t> rank;
+  for (size_t i = 0; i < files.size(); ++i) rank.emplace(files[i]->display(), i);
+  std::vector<Diagnostic> all = in.all();
+  auto key = [&](const Diagnostic& d) {
+    auto it = rank.find(d.loc.file);
+    return std::make_tuple(it == rank.end() ? files.size() : it->second, d.loc.line, d.loc.col);
+  };
+  std::stable_sort(all.begin(), all.end(), [&](const Diagnostic& a, const Diagnostic& b) { return key(a) < key(b); });
+  Diagnostics out;
+  for (Diagnostic& d : all) {
+    if (d.severity == Severity::Error) out.error(d.loc, std::move(d.message));
+    else out.warning(d.loc, std::move(d.message));
+  }
+  return out;
+}
+
+ParseResult parseText(std::string text, const std::string& path, const ParseOptions& options) {
+  ParseResult result;
+  auto scene = std::make_unique<Scene>();
+  scene->file = path;
+  Diagnostics diags;
+  Parameters params(options.defines, diags);
+  fs::path folder = fs::path(path).parent_path();
+  FileAccess files(folder.empty() ? fs::path(".") : folder, options.allowPaths);
+  ParseContext ctx{*scene, diags, params, files};
+  SceneLoader loader(ctx);
+
+  try {
+    auto top = std::make_unique<SourceFile>(path, canonicalPath(folder.empty() ? fs::path(".") : folder),
+                                            std::move(text));
+    if (loader.load(std::move(top))) {
+      for (const auto& f : loader.files())
+        if (f->root()) checkSceneRoot(ctx, *f);
+      for (const TopLevelItem& item : loader.items())
+        if (std::string_view(item.element.name()) == "material") {
+          ElementReader r(ctx, *item.file, item.element);
+          parseNamedMaterial(r);
+        }
+      for (const TopLevelItem& item : loader.items()) readTopLevel(ctx, item);
+      resolveReferences(ctx);
+      if (scene->cameras.empty()) {
+        const SourceFile& topFile = *loader.files().front();
+        diags.error(topFile.loc(topFile.root()), "the scene has no <camera> (at least one is required)");
+      }
+      for (const std::string& name : params.unusedDefines())
+        diags.warning(SourceLoc{path, 0, 0}, "-D " + name + " is not used by the scene");
+    }
+  } catch (const std::exception& e) {
+    // Nothing an input contains should get here; if it does, fail cleanly, not crash.
+    diags.error(SourceLoc{path, 0, 0}, std::string("internal error while reading the scene: ") + e.what());
+  }
+
+  result.diagnostics = sorted(diags, loader.files());
+  if (!diags.hasErrors()) result.scene = std::move(scene);
+  return result;
+}
+
+}  // namespace
+
+ParseResult parseSceneFile(const std::string& path, const ParseOptions& options) {
+  std::error_code ec;
+  std::string problem;
+  std::string text;
+  if (!fs::exists(path, ec)) {
+    problem = "no such file";
+  } else if (fs::is_directory(path, ec)) {
+    problem = "it is a folder, not a file";
+  } else {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    if (in) s << in.rdbuf();
+    if (!in || in.bad()) problem = "the file cannot be read";
+    else text = std::move(s).str();
+  }
+  if (!problem.empty()) {
+    ParseResult result;
+    result.ioFailure = true;
+    result.diagnostics.error(SourceLoc{path, 0, 0}, "cannot read the scene file: " + problem);
+    return result;
+  }
+  return parseText(std::move(text), path, options);
+}
+
+ParseResult parseSceneString(const std::string& xml, const std::string& virtualPath,
+                             const ParseOptions& options) {
+  return parseText(xml, virtualPath, options);
+}
+
+}  // namespace lucent

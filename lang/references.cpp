@@ -1,0 +1,201 @@
+// After every element is read: <use ref> is resolved against node ids, reference cycles
+// (a node that contains itself through <use>) are found, the nesting depth through <use>
+// is limited, and the operands of merge, intersection and difference are checked to be
+// solids (which needs the references resolved, since a <use> is as solid as its target).
+#include "element_parsers.h"
+
+#include <algorithm>
+#include <tuple>
+#include <unordered_map>
+
+namespace lucent {
+
+namespace {
+
+std::string useLabel(const Node& n) {
+  return n.target ? "<use ref=\"" + n.target->id + "\">" : "<use>";
+}
+
+// Everything a node leads to: its children, or the target of a <use>.
+std::vector<const Node*> successors(const Node& n) {
+  std::vector<const Node*> out;
+  if (n.kind == NodeKind::Use) {
+    if (n.target) out.push_back(n.target);
+  } else {
+    for (const auto& c : n.children) out.push_back(c.get());
+  }
+  return out;
+}
+
+// Depth-first search over the node graph without recursion (a chain of 100,000 <use>s
+// must not overflow the stack). Reports every back edge (a cycle) and computes each
+// node's depth: 1 + the deepest thing it leads to.
+class GraphWalk {
+ public:
+  explicit GraphWalk(ParseContext& ctx) : ctx_(ctx) {}
+
+  void walk(const Node& start) {
+    if (state_.count(&start)) return;
+    struct Frame {
+      const Node* node;
+      std::vector<const Node*> next;
+      size_t i = 0;
+      int depth = 1;
+    };
+    std::vector<Frame> stack;
+    auto push = [&](const Node* n) {
+      state_[n] = kActive;
+      stack.push_back({n, successors(*n)});
+    };
+    push(&start);
+    while (!stack.empty()) {
+      Frame& f = stack.back();
+      if (f.i < f.next.size()) {
+        const Node* s = f.next[f.i++];
+        auto it = state_.find(s);
+        if (it == state_.end()) {
+          push(s);
+        } else if (it->second == kActive) {
+          reportCycle(stack, *f.node, *s);
+        } else {
+          f.depth = std::max(f.depth, 1 + depth_[s]);
+        }
+        continue;
+      }
+      const Node* done = f.node;
+      int depth = f.depth;
+      state_[done] = kDone;
+      depth_[done] = depth;
+      stack.pop_back();
+      if (!stack.empty()) stack.back().depth = std::max(stack.back().depth, 1 + depth);
+    }
+  }
+
+  int depth(const Node& n) const {
+    auto it = depth_.find(&n);
+    return it == depth_.end() ? 0 : it->second;
+  }
+  // Every node reached, in the order first seen.
+  template <class F>
+  void forEachNode(F f) const {
+    for (const auto& [n, s] : state_) f(*n);
+  }
+
+ private:
+  enum State { kActive, kDone };
+
+  template <class Stack>
+  void reportCycle(const Stack& stack, const Node& from, const Node& target) {
+    // The path from the target down to `from`, named by the ids the <use>s refer to.
+    std::string chain = target.id.empty() ? "<" + target.element + ">" : "'" + target.id + "'";
+    bool inside = false;
+    for (const auto& f : stack) {
+      if (f.node == &target) inside = true;
+      if (inside && f.node->kind == NodeKind::Use && f.node->target)
+        chain += " -> '" + f.node->target->id + "'";
+    }
+    ctx_.diags.error(from.loc, useLabel(from) + " creates a reference cycle: " + chain +
+                                   " (a node cannot contain itself)");
+    ctx_.broken.insert(&from);
+  }
+
+  ParseContext& ctx_;
+  std::unordered_map<const Node*, State> state_;
+  std::unordered_map<const Node*, int> depth_;
+};
+
+// The first leaf (or empty group) that keeps `n` from being a solid, mirroring
+// Node::isSolid(); null if n is a solid. Broken <use>s are not followed: every reference
+// cycle has one (the DFS back edge), so the recursion ends, within kMaxInstanceDepth.
+const Node* findNonSolid(const ParseContext& ctx, const Node& n) {
+  switch (n.kind) {
+    case NodeKind::Shape: return n.shape && isSolid(*n.shape) ? nullptr : &n;
+    case NodeKind::Use: return n.target && !ctx.broken.count(&n) ? findNonSolid(ctx, *n.target) : nullptr;
+    case NodeKind::Merge:
+    case NodeKind::Intersection:
+    case NodeKind::Difference: return nullptr;
+    case NodeKind::Union:
+    case NodeKind::Group:
+      if (n.children.empty()) return &n;
+      for (const auto& c : n.children)
+        if (const Node* o = findNonSolid(ctx, *c)) return o;
+      return nullptr;
+  }
+  return nullptr;
+}
+
+std::string whyNotSolid(const Node& leaf) {
+  if (leaf.kind != NodeKind::Shape) return "it is empty";
+  if (std::holds_alternative<CylinderSpec>(*leaf.shape) || std::holds_alternative<ConeSpec>(*leaf.shape))
+    return "it is open";
+  if (std::holds_alternative<MeshSpec>(*leaf.shape))
+    return "the mesh is not closed and consistently oriented";
+  return "a " + leaf.element + " encloses no volume";
+}
+
+void checkCsgOperands(ParseContext& ctx, const Node& csg) {
+  for (const auto& child : csg.children) {
+    if (ctx.broken.count(child.get())) continue;
+    const Node* leaf = findNonSolid(ctx, *child);
+    if (!leaf || ctx.broken.count(leaf)) continue;
+    std::string what = child->kind == NodeKind::Use ? useLabel(*child) : "<" + child->element + ">";
+    std::string message = what + " cannot be an operand of <" + csg.element + "> (at " + csg.loc.str() +
+                          "), which needs solids: ";
+    if (leaf == child.get())
+      message += "it is not a solid (" + whyNotSolid(*leaf) + ")";
+    else
+      message += "it contains <" + leaf->element + "> at " + leaf->loc.str() + ", which is not a solid (" +
+                 whyNotSolid(*leaf) + ")";
+    ctx.diags.error(child->loc, message);
+  }
+}
+
+}  // namespace
+
+void resolveReferences(ParseContext& ctx) {
+  // 1. Every <use ref> names a node.
+  std::vector<std::string_view> ids;
+  for (const ParseContext::PendingUse& u : ctx.uses) {
+    auto it = ctx.nodeIds.find(u.ref);
+    if (it != ctx.nodeIds.end()) {
+      u.use->target = it->second.node;
+      continue;
+    }
+    if (ids.empty()) {
+      for (const auto& [id, entry] : ctx.nodeIds) ids.push_back(id);
+      std::sort(ids.begin(), ids.end());
+    }
+    ctx.diags.error(u.refLoc, "<use> attribute 'ref': no node has the id '" + u.ref + "'" + didYouMean(u.ref, ids));
+    ctx.broken.insert(u.use);
+  }
+
+  // 2. No node contains itself, and nothing nests too deep through <use>.
+  GraphWalk walk(ctx);
+  walk.walk(*ctx.scene.root);
+  for (const auto& d : ctx.scene.defs) walk.walk(*d);
+  // Depths ignore the back edges of cycles (reported above), so they are finite.
+  bool tooDeep = false;
+  auto checkDepth = [&](const Node& top) {
+    if (!tooDeep && walk.depth(top) > kMaxInstanceDepth) {
+      ctx.diags.error(top.loc, "<" + top.element + "> nests deeper than " + std::to_string(kMaxInstanceDepth) +
+                                   " levels, counting what its <use>s instantiate");
+      tooDeep = true;
+    }
+  };
+  for (const auto& c : ctx.scene.root->children) checkDepth(*c);
+  for (const auto& d : ctx.scene.defs) checkDepth(*d);
+  if (tooDeep) return;
+
+  // 3. merge, intersection and difference combine solids only. Checked in source order.
+  std::vector<const Node*> csgNodes;
+  walk.forEachNode([&](const Node& n) {
+    if (n.kind == NodeKind::Merge || n.kind == NodeKind::Intersection || n.kind == NodeKind::Difference)
+      csgNodes.push_back(&n);
+  });
+  std::sort(csgNodes.begin(), csgNodes.end(), [](const Node* a, const Node* b) {
+    return std::tie(a->loc.file, a->loc.line, a->loc.col) < std::tie(b->loc.file, b->loc.line, b->loc.col);
+  });
+  for (const Node* n : csgNodes) checkCsgOperands(ctx, *n);
+}
+
+}  // namespace lucent

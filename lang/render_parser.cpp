@@ -1,0 +1,37 @@
+// <render> (contract, "<render>"): image size, samples, recursion limits, background,
+// global ambient and an optional self-intersection epsilon ("auto" or absent: automatic).
+#include "element_parsers.h"
+
+namespace lucent {
+
+void parseRender(ElementReader& r) {
+  ParseContext& ctx = r.ctx();
+  if (ctx.hasRender) {
+    r.error("<render> is given twice (first at " + ctx.renderLoc.str() + ")");
+    return;
+  }
+  ctx.hasRender = true;
+  ctx.renderLoc = r.loc();
+
+  r.checkAttributes({"width", "height", "samples", "adaptive", "max-depth", "min-weight",
+                     "background", "ambient", "epsilon"});
+  RenderSettings& s = ctx.scene.render;
+  s.loc = r.loc();
+  // 65536 pixels a side is far beyond any image format we write, and keeps
+  // width*height*samples within 64-bit counters.
+  s.width = static_cast<int>(r.integer("width", s.width, 1, 65536));
+  s.height = static_cast<int>(r.integer("height", s.height, 1, 65536));
+  s.samples = static_cast<int>(r.integer("samples", s.samples, 1, 1 << 20));
+  s.adaptive = r.number("adaptive", s.adaptive, NumberRule::nonNegative());
+  s.maxDepth = static_cast<int>(r.integer("max-depth", s.maxDepth, 1, 1000));
+  s.minWeight = r.number("min-weight", s.minWeight, NumberRule::between(0.0, 1.0, "a number from 0 to 1"));
+  s.background = r.color("background", s.background);
+  s.ambient = r.color("ambient", s.ambient);
+  if (auto e = r.text("epsilon"); e && trim(*e) != "auto")
+    s.epsilon = r.optionalNumber("epsilon", NumberRule::positive());
+  r.forEachChild([&](pugi::xml_node n) {
+    ElementReader(ctx, r.file(), n).error("<render> takes no child elements, got <" + std::string(n.name()) + ">");
+  });
+}
+
+}  // namespace lucent

@@ -1,0 +1,143 @@
+#include "scene_loader.h"
+
+#include "did_you_mean.h"
+#include "element_reader.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace lucent {
+
+namespace {
+
+bool readWholeFile(const fs::path& path, std::string& text) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream s;
+  s << in.rdbuf();
+  if (in.bad()) return false;
+  text = std::move(s).str();
+  return true;
+}
+
+}  // namespace
+
+bool SceneLoader::parseFile(SourceFile& file) {
+  if (auto syntax = file.parse()) {
+    ctx_.diags.error(syntax->loc, syntax->message);
+    return false;
+  }
+  pugi::xml_node root = file.root();
+  if (std::string_view(root.name()) != "scene") {
+    ctx_.diags.error(file.loc(root), "the root element must be <scene version=\"1\">, got <" +
+                                         std::string(root.name()) + ">" +
+                                         didYouMean(root.name(), std::vector<std::string_view>{"scene"}));
+    return false;
+  }
+  return true;
+}
+
+bool SceneLoader::load(std::unique_ptr<SourceFile> top) {
+  SourceFile& file = *top;
+  files_.push_back(std::move(top));
+  if (!parseFile(file)) return false;
+  fs::path canonical = canonicalPath(ctx_.scene.file.empty() ? file.display() : ctx_.scene.file);
+  seen_.insert(canonical);
+  stack_.push_back({canonical, file.display()});
+  collectParams(file);
+  expand(file);
+  stack_.pop_back();
+  return true;
+}
+
+void SceneLoader::collectParams(const SourceFile& file) {
+  for (pugi::xml_node c = file.root().first_child(); c; c = c.next_sibling()) {
+    if (c.type() != pugi::node_element || std::string_view(c.name()) != "param") continue;
+    ElementReader r(ctx_, file, c);
+    r.checkAttributes({"name", "value"});
+    r.forEachChild([&](pugi::xml_node n) {
+      ElementReader(ctx_, file, n).error("<param> takes no child elements, got <" + std::string(n.name()) + ">");
+    });
+    if (!r.has("name") || !r.has("value")) {
+      r.error("<param> needs 'name' and 'value'");
+      continue;
+    }
+    std::string name = r.verbatim("name");
+    if (!Parameters::isValidName(name)) {
+      r.attrError("name", "a parameter name is letters, digits and '_', not starting with a digit; got '" + name + "'");
+      continue;
+    }
+    ctx_.params.declare(name, r.verbatim("value"), r.loc(), r.valueLoc("value"));
+  }
+}
+
+void SceneLoader::expand(const SourceFile& file) {
+  ElementReader root(ctx_, file, file.root());
+  root.forEachChild([&](pugi::xml_node c) {
+    if (std::string_view(c.name()) == "include") include(file, c);
+    else items_.push_back({&file, c});
+  });
+}
+
+void SceneLoader::include(const SourceFile& from, pugi::xml_node element) {
+  ElementReader r(ctx_, from, element);
+  r.checkAttributes({"src"});
+  r.forEachChild([&](pugi::xml_node n) {
+    ElementReader(ctx_, from, n).error("<include> takes no child elements, got <" + std::string(n.name()) + ">");
+  });
+  if (!r.has("src")) {
+    r.error("<include> needs a 'src' attribute (the scene file to insert)");
+    return;
+  }
+  auto src = r.text("src");
+  if (!src) return;
+  FileAccess::Resolved f = ctx_.files.resolve(*src, from.folder());
+  if (f.path.empty()) {
+    r.attrError("src", f.error);
+    return;
+  }
+  fs::path written(*src);
+  std::string display = written.is_absolute()
+                            ? written.lexically_normal().string()
+                            : (fs::path(from.display()).parent_path() / written).lexically_normal().string();
+  for (size_t i = 0; i < stack_.size(); ++i) {
+    if (stack_[i].canonical != f.path) continue;
+    std::string chain;
+    for (size_t j = i; j < stack_.size(); ++j) chain += stack_[j].display + " -> ";
+    r.attrError("src", "include cycle: " + chain + display);
+    return;
+  }
+  if (static_cast<int>(stack_.size()) >= kMaxIncludeDepth) {
+    r.attrError("src", "includes nest deeper than " + std::to_string(kMaxIncludeDepth) + " files");
+    return;
+  }
+  if (!seen_.insert(f.path).second) return;  // included already: insert once
+
+  std::string text;
+  if (!readWholeFile(f.path, text)) {
+    r.attrError("src", "cannot read '" + *src + "'");
+    return;
+  }
+  files_.push_back(std::make_unique<SourceFile>(display, f.path.parent_path(), std::move(text)));
+  SourceFile& file = *files_.back();
+  if (!parseFile(file)) return;
+  stack_.push_back({f.path, display});
+  collectParams(file);
+  expand(file);
+  stack_.pop_back();
+}
+
+void checkSceneRoot(ParseContext& ctx, const SourceFile& file) {
+  ElementReader r(ctx, file, file.root());
+  r.checkAttributes({"version"});
+  if (!r.has("version")) {
+    r.error("<scene> needs version=\"1\" (the version of the scene language it is written in)");
+    return;
+  }
+  if (auto v = r.text("version"); v && trim(*v) != "1")
+    r.attrError("version", "unknown version '" + *v + "'; this is version 1 of the scene language");
+}
+
+}  // namespace lucent

@@ -1,0 +1,51 @@
+// One scene file held in memory: its text parsed in place by pugixml, so that every
+// element and attribute keeps a pointer into the text and errors can say file:line:col.
+#pragma once
+
+#include "diagnostics.h"
+
+#include <pugixml.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lucent {
+
+class SourceFile {
+ public:
+  // `display` names the file in messages; `folder` anchors the relative paths it contains.
+  SourceFile(std::string display, std::filesystem::path folder, std::string text);
+  SourceFile(const SourceFile&) = delete;  // pugixml's nodes point into text_
+  SourceFile& operator=(const SourceFile&) = delete;
+
+  // Parses the text; on an XML syntax error returns it, located where pugixml stopped.
+  std::optional<Diagnostic> parse();
+
+  const std::string& display() const { return display_; }
+  const std::filesystem::path& folder() const { return folder_; }
+  pugi::xml_node root() const { return doc_.document_element(); }
+
+  SourceLoc fileLoc() const { return {display_, 0, 0}; }
+  SourceLoc locAt(size_t offset) const;
+  // The element's '<'.
+  SourceLoc loc(pugi::xml_node element) const;
+  // The attribute's name, and the first character of its value (inside the quotes).
+  SourceLoc nameLoc(pugi::xml_attribute attr, pugi::xml_node owner) const;
+  SourceLoc valueLoc(pugi::xml_attribute attr, pugi::xml_node owner) const;
+  // Where a pointer into the parsed text points (text content, say).
+  std::optional<SourceLoc> locOf(const char* p) const;
+
+ private:
+  // Byte offset of a pointer into the parsed buffer, if it points there.
+  std::optional<size_t> offsetOf(const char* p) const;
+
+  std::string display_;
+  std::filesystem::path folder_;
+  std::string text_;              // pugixml parses it in place: never reallocated after parse()
+  std::vector<size_t> lineStarts_;  // computed before parsing rewrites newlines in values
+  pugi::xml_document doc_;
+};
+
+}  // namespace lucent
