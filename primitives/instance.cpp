@@ -2,6 +2,32 @@
 
 namespace lucent {
 
+namespace {
+
+// The rounding error a world point picks up when a ray starting at it is carried into
+// object space (rayToObject: gamma(3) per row of objectFromWorld), expressed in the world
+// through the linear part of worldFromObject. A secondary ray's origin makes exactly this
+// trip, so its object-space origin may land that much closer to the surface than
+// offsetRayOrigin placed it in the world; adding the bound to pError makes the offset
+// cover it (pbrt-v3 §3.9.4 covers the same error by moving the transformed ray origin;
+// folding it into pError instead keeps every t exactly in world units).
+Vec3 worldToObjectRoundTripError(const Transform& t, const Vec3& pWorld) {
+  const Mat4& inv = t.objectFromWorld();
+  const Mat4& m = t.worldFromObject();
+  Vec3 errObject(0.0);
+  for (int r = 0; r < 3; ++r) {
+    double mag = std::abs(inv[3][r]);
+    for (int c = 0; c < 3; ++c) mag += std::abs(inv[c][r] * pWorld[c]);
+    errObject[r] = gamma(3) * mag;
+  }
+  Vec3 err(0.0);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) err[r] += std::abs(m[c][r]) * errObject[c];
+  return (1.0 + gamma(3)) * err;
+}
+
+}  // namespace
+
 Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& worldFromObject,
                    uint32_t tag)
     : shape_(std::move(shape)), transform_(worldFromObject), tag_(tag) {
@@ -33,6 +59,7 @@ SurfaceInfo Instance::surface(const Ray& ray, const Hit& hit) const {
   SurfaceInfo w = s;
   w.p = transform_.pointToWorld(s.p);
   w.pError = transform_.errorToWorld(s.p, s.pError);
+  if (!transform_.isIdentity()) w.pError += worldToObjectRoundTripError(transform_, w.p);
   w.ng = transform_.normalToWorld(s.ng);
   w.ns = transform_.normalToWorld(s.ns);
   w.pObject = s.p;  // solid textures are evaluated in the leaf's object space

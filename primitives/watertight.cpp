@@ -79,7 +79,10 @@ bool intersectTriangle(const ShearedRay& r, const Vec3& p0, const Vec3& p1, cons
   const double deltaT =
       3.0 * (gamma(3) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) * std::abs(invDet);
 
-  out.t = std::abs(t) <= deltaT ? 0.0 : t;
+  // A hit that cannot be told from t = 0 is put just behind the origin: a ray that starts
+  // on (or, offset, just off) a triangle neither finds it again nor, for a closed mesh,
+  // lists it as a crossing ahead; its side still counts for startsInside.
+  out.t = (std::abs(t) <= deltaT && deltaT > 0.0) ? -deltaT : t;
   out.b0 = u * invDet;
   out.b1 = v * invDet;
   out.b2 = w * invDet;

@@ -37,9 +37,10 @@ struct TriangleIntersection {
   int facing = 0;
 };
 
-// Does the whole line hit triangle (p0, p1, p2)? Hits with |t| within the rounding bound of
-// zero get t = 0 exactly (so a ray starting on the triangle never finds it again at a
-// tiny positive t). Zero-area triangles and rays parallel to the plane never hit.
+// Does the whole line hit triangle (p0, p1, p2)? A hit whose |t| is within t's rounding
+// bound of zero is moved just behind the origin (t = −bound), so a ray starting on the
+// triangle never finds it again at a tiny positive t. Rays parallel to the plane never
+// hit; callers skip zero-area triangles (isDegenerateTriangle) before asking.
 bool intersectTriangle(const ShearedRay& ray, const Vec3& p0, const Vec3& p1, const Vec3& p2,
                        TriangleIntersection& out);
 
