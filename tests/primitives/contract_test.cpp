@@ -1,0 +1,139 @@
+// Every shape against the contract of shape.h on seeded random rays: crossings sorted,
+// inside [tmin, tmax] and alternating from startsInside; intersect() and occluded() agree
+// with the first crossing; startsInside agrees with inside() away from the surface.
+#include "shape_checks.h"
+#include "test_meshes.h"
+
+#include "primitives/box.h"
+#include "primitives/cone.h"
+#include "primitives/cylinder.h"
+#include "primitives/disc.h"
+#include "primitives/plane.h"
+#include "primitives/sphere.h"
+#include "primitives/torus.h"
+#include "primitives/triangle.h"
+#include "primitives/triangle_mesh.h"
+
+#include <catch2/catch.hpp>
+
+#include <memory>
+#include <vector>
+
+using namespace lucent;
+using namespace lucent::test;
+
+namespace {
+
+struct Named {
+  std::string name;
+  std::shared_ptr<const Shape> shape;
+  AABB aim;  // where random rays are aimed (the bounds, or a box around the origin)
+};
+
+std::vector<Named> allShapes() {
+  std::vector<Named> v;
+  auto add = [&](std::string n, std::shared_ptr<const Shape> s) {
+    AABB b = s->bounds();
+    if (!b.isBounded()) b = AABB(Vec3(-2.0), Vec3(2.0));
+    v.push_back({std::move(n), std::move(s), b});
+  };
+  add("sphere", std::make_shared<Sphere>(Vec3(0.5, -0.25, 1.0), 1.5));
+  add("box", std::make_shared<Box>(Vec3(1, 2, 3), Vec3(-1, -0.5, 0)));
+  add("plane", std::make_shared<Plane>(glm::normalize(Vec3(1, 2, -0.5)), 0.3));
+  add("cylinder", std::make_shared<Cylinder>(Vec3(0.1, 0.2, 0.3), Vec3(1, 2, -1), 0.6, false));
+  add("open cylinder", std::make_shared<Cylinder>(Vec3(0, 0, 0), Vec3(0, 2, 0), 1.0, true));
+  add("cone", std::make_shared<Cone>(Vec3(0, 0, 0), 1.0, Vec3(0.3, 2, 0.1), 0.0, false));
+  add("truncated cone", std::make_shared<Cone>(Vec3(0, 1, 0), 0.3, Vec3(0, -1, 0.5), 0.9, false));
+  add("apex-at-base cone", std::make_shared<Cone>(Vec3(0, 0, 0), 0.0, Vec3(0, 0, 2), 1.0, false));
+  add("open cone", std::make_shared<Cone>(Vec3(0, 0, 0), 1.0, Vec3(0, 1, 0), 0.5, true));
+  add("torus", std::make_shared<Torus>(1.0, 0.25));
+  add("thin torus", std::make_shared<Torus>(2.0, 0.01));
+  add("fat torus", std::make_shared<Torus>(1.0, 0.9));
+  add("disc", std::make_shared<Disc>(Vec3(0.2, 0.1, 0), glm::normalize(Vec3(0, 1, 1)), 1.0, 0.3));
+  add("triangle", std::make_shared<Triangle>(Vec3(0, 0, 0), Vec3(1, 0.2, 0), Vec3(0.1, 1, 0.3)));
+  add("box mesh", std::make_shared<TriangleMesh>(boxMesh(Vec3(-1, -0.5, 0), Vec3(1, 2, 3)), false));
+  add("octahedron mesh", std::make_shared<TriangleMesh>(octahedronMesh(), true));
+  add("open mesh", std::make_shared<TriangleMesh>(squareMesh(), false));
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("every shape keeps the crossings contract on random rays", "[primitives]") {
+  Rng rng(20240601);
+  for (const Named& s : allShapes()) {
+    INFO(s.name);
+    int checked = 0;
+    std::string failure;
+    for (int i = 0; i < 3000 && failure.empty(); ++i) {
+      Ray ray = randomRayAt(rng, s.aim);
+      // Half the rays get a random window, sometimes starting inside the shape.
+      if (i % 2 == 1) {
+        ray.tmin = uniform(rng, 0.0, 1.2);
+        ray.tmax = ray.tmin + uniform(rng, 0.0, 1.0);
+      }
+      failure = intersectAgreesWithCrossings(*s.shape, ray);
+      ++checked;
+    }
+    INFO("after " << checked << " rays");
+    CHECK(failure == "");
+  }
+}
+
+TEST_CASE("startsInside agrees with inside() away from the surface", "[primitives]") {
+  Rng rng(77);
+  for (const Named& s : allShapes()) {
+    INFO(s.name);
+    int compared = 0, wrong = 0;
+    for (int i = 0; i < 3000; ++i) {
+      Ray ray = randomRayAt(rng, s.aim);
+      ray.tmin = uniform(rng, 0.0, 1.5);
+      // Skip points within 1e-7 (relative) of a crossing: surface points may go either way.
+      CrossingList whole;
+      s.shape->crossings(Ray(ray.o, ray.d, -kInf, kInf), whole);
+      double size = glm::length(s.aim.extent());
+      bool near = false;
+      for (const Crossing& c : whole.items)
+        near |= std::abs(c.hit.t - ray.tmin) * glm::length(ray.d) < 1e-7 * size;
+      if (near) continue;
+      CrossingList cl;
+      s.shape->crossings(ray, cl);
+      ++compared;
+      if (cl.startsInside != s.shape->inside(ray.at(ray.tmin))) ++wrong;
+    }
+    CHECK(compared > 2900);
+    CHECK(wrong == 0);
+  }
+}
+
+TEST_CASE("surfaces are never inside and all their crossings enter", "[primitives]") {
+  for (const Named& s : allShapes()) {
+    if (s.shape->isSolid()) continue;
+    INFO(s.name);
+    CHECK_FALSE(s.shape->inside(s.aim.center()));
+  }
+}
+
+TEST_CASE("surface() gives unit normals, finite points and pError >= 0 at random hits",
+          "[primitives]") {
+  Rng rng(5150);
+  for (const Named& s : allShapes()) {
+    INFO(s.name);
+    int hits = 0, bad = 0;
+    for (int i = 0; i < 2000; ++i) {
+      Ray ray = randomRayAt(rng, s.aim);
+      Hit h;
+      if (!s.shape->intersect(ray, h)) continue;
+      ++hits;
+      SurfaceInfo si = s.shape->surface(ray, h);
+      bool ok = isFinite(si.p) && isFinite(si.pError) && si.pError.x >= 0 && si.pError.y >= 0 &&
+                si.pError.z >= 0 && std::abs(glm::length(si.ng) - 1.0) < 1e-12 &&
+                std::abs(glm::length(si.ns) - 1.0) < 1e-12 && glm::dot(si.ng, si.ns) >= 0.0 &&
+                // the point is where the ray says, up to rounding of the ray equation
+                glm::length(si.p - ray.at(h.t)) <= 1e-9 * (1.0 + glm::length(ray.at(h.t)));
+      if (!ok) ++bad;
+    }
+    CHECK(hits > 50);
+    CHECK(bad == 0);
+  }
+}
