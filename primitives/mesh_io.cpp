@@ -8,8 +8,8 @@
 //                         and duplicate faces
 //   orient_polygon_soup   make neighbouring faces agree (non-manifold spots are cut apart)
 //   polygon_soup_to_polygon_mesh, triangulate_faces
-//   drop zero-area triangles (exact CGAL::collinear); if any, rebuild from the triangles so
-//   that closedness is decided on what is kept
+//   drop zero-area triangles (exact CGAL::collinear); if any were dropped or polygons split,
+//   repair and orient the triangle soup again so that closedness is decided on what is kept
 //   is_closed             no border edge: the mesh encloses a volume
 //   orient_to_bound_a_volume   for closed meshes: every shell outward, a shell nested in
 //                         another inward (a hollow ball), so normals point out of the solid
@@ -176,12 +176,18 @@ Soup usableTriangles(const SurfaceMesh& mesh, std::size_t& dropped) {
 MeshData solidOrSurface(Soup soup) {
   const std::size_t inputFaces = soup.polygons.size();
   SurfaceMesh mesh = orientedMesh(soup, inputFaces);
+  bool split = false;
+  for (SurfaceMesh::Face_index f : mesh.faces()) split |= mesh.degree(f) > 3;
   PMP::triangulate_faces(mesh);
   std::size_t dropped = 0;
   Soup triangles = usableTriangles(mesh, dropped);
   if (triangles.polygons.empty())
     throw MeshError(fmt::format("no usable triangle: all {} faces are degenerate (zero area)", inputFaces));
-  if (dropped > 0) mesh = orientedMesh(triangles, inputFaces);
+  // Splitting a polygon can add an edge between two vertices that are already joined (a
+  // polygon and triangles covering it: a flat "pillow"); the halfedge mesh allows such a
+  // double edge, but then an edge is shared by more than two triangles. Going through the
+  // soup again merges duplicate triangles and cuts what is not manifold.
+  if (dropped > 0 || split) mesh = orientedMesh(triangles, inputFaces);
 
   MeshData out;
   out.closed = CGAL::is_closed(mesh);

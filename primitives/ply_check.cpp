@@ -64,6 +64,7 @@ void intRange(PlyType t, long long& lo, long long& hi) {
 
 struct PlyProperty {
   std::string name;
+  std::size_t line = 0;
   bool list = false;
   PlyType countType = PlyType::UInt8;  // lists only
   PlyType type = PlyType::Float32;     // scalar type, or type of the list items
@@ -110,9 +111,9 @@ void checkColours(const PlyElement& e) {
   for (const char* tag : tags) {
     const PlyProperty* p = e.find(tag);
     if (p && !isScalarOf(p, PlyType::UInt8))
-      fail(fmt::format("PLY element '{}' (line {}): colour property '{}' must be uchar like the "
-                       "other colour properties",
-                       e.name, e.line, tag));
+      fail(fmt::format("PLY colour property '{}' (line {}) must be uchar like the other colour "
+                       "properties of '{}'",
+                       tag, p->line, e.name));
   }
 }
 
@@ -131,7 +132,7 @@ void checkElementSemantics(const std::vector<PlyElement>& elements) {
         const PlyProperty* p = e.find(axis);
         if (!p) fail(fmt::format("PLY element '{}' (line {}) has no property '{}'", e.name, e.line, axis));
         if (p->list || !isReal(p->type))
-          fail(fmt::format("PLY vertex property '{}' (line {}) must be float or double", axis, e.line));
+          fail(fmt::format("PLY vertex property '{}' (line {}) must be float or double", axis, p->line));
       }
       checkColours(e);
     } else if (e.isFace()) {
@@ -146,7 +147,7 @@ void checkElementSemantics(const std::vector<PlyElement>& elements) {
       for (const char* tag : {"source", "target"}) {
         const PlyProperty* p = e.find(tag);
         if (p && !isScalarOf(p, PlyType::UInt32))
-          fail(fmt::format("PLY halfedge property '{}' (line {}) must be uint", tag, e.line));
+          fail(fmt::format("PLY halfedge property '{}' (line {}) must be uint", tag, p->line));
       }
     }
   }
@@ -192,12 +193,12 @@ std::size_t parseHeader(std::string_view bytes, PlyEncoding& encoding, std::vect
         if (!count || isReal(*count))
           fail(fmt::format("PLY header line {}: list count type '{}' is not an integer type", n, tok[2]));
         if (!item) fail(fmt::format("PLY header line {}: unknown type '{}'", n, tok[3]));
-        p = PlyProperty{std::string(tok[4]), true, *count, *item};
+        p = PlyProperty{std::string(tok[4]), n, true, *count, *item};
       } else {
         if (tok.size() < 3) fail(fmt::format("PLY header line {}: expected 'property <type> <name>'", n));
         auto type = plyType(tok[1]);
         if (!type) fail(fmt::format("PLY header line {}: unknown type '{}'", n, tok[1]));
-        p = PlyProperty{std::string(tok[2]), false, PlyType::UInt8, *type};
+        p = PlyProperty{std::string(tok[2]), n, false, PlyType::UInt8, *type};
       }
       elements.back().properties.push_back(p);
     }
@@ -325,10 +326,9 @@ void checkPlyBytes(std::string_view bytes) {
     if (e.isVertex()) vertexTotal += e.count;
     const std::size_t item = minItemBytes(e, encoding);
     if (item > 0 && e.count > (data.size() + 1) / item)
-      fail(fmt::format("the PLY header declares {} {} elements, which need at least {} bytes, but "
-                       "the data has {} bytes",
-                       e.count, e.name, static_cast<double>(e.count) * static_cast<double>(item),
-                       data.size()));
+      fail(fmt::format("the PLY header declares {} '{}' elements, which need at least {} bytes, "
+                       "but the data has {} bytes",
+                       e.count, e.name, e.count * item, data.size()));
     needed += e.count * item;
   }
   if (needed > data.size() + 1)
