@@ -1,10 +1,13 @@
 #include "box.h"
 
+#include <stdexcept>
 #include <utility>
 
 namespace lucent {
 
-Box::Box(const Vec3& a, const Vec3& b) : lo_(glm::min(a, b)), hi_(glm::max(a, b)) {}
+Box::Box(const Vec3& a, const Vec3& b) : lo_(glm::min(a, b)), hi_(glm::max(a, b)) {
+  if (!isFinite(a) || !isFinite(b)) throw std::invalid_argument("box: corners must be finite");
+}
 
 bool Box::span(const Ray& ray, Span& out) const {
   // Kay–Kajiya slabs over the whole line. Division (not multiplication by a reciprocal)

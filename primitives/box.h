@@ -15,6 +15,7 @@ namespace lucent {
 
 class Box final : public Shape {
  public:
+  // Throws std::invalid_argument for non-finite corners; a flat box is allowed.
   Box(const Vec3& a, const Vec3& b);
 
   const char* kind() const override { return "box"; }

@@ -3,13 +3,21 @@
 #include "quadratic.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace lucent {
 
 Cone::Cone(const Vec3& base, double baseRadius, const Vec3& cap, double capRadius, bool open)
     : base_(base), cap_(cap), rBase_(baseRadius), rCap_(capRadius),
-      height_(glm::length(cap - base)), slope_((capRadius - baseRadius) / height_), open_(open),
-      frame_(base, glm::normalize(cap - base)) {}
+      height_(glm::length(cap - base)), slope_(0.0), open_(open),
+      frame_(base, cap != base ? glm::normalize(cap - base) : Vec3(0, 0, 1)) {
+  if (!isFinite(base) || !isFinite(cap) || !(height_ > 0.0) || !std::isfinite(height_))
+    throw std::invalid_argument("cone: base and cap must be distinct finite points");
+  if (!(baseRadius >= 0.0 && capRadius >= 0.0) || !std::isfinite(baseRadius) ||
+      !std::isfinite(capRadius) || (baseRadius == 0.0 && capRadius == 0.0))
+    throw std::invalid_argument("cone: the radii must be finite, >= 0 and not both 0");
+  slope_ = (capRadius - baseRadius) / height_;
+}
 
 AABB Cone::bounds() const {
   const Vec3& a = frame_.a;

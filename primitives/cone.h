@@ -17,6 +17,7 @@ namespace lucent {
 
 class Cone final : public Shape {
  public:
+  // Throws std::invalid_argument when base == cap, a radius is negative or both are 0.
   Cone(const Vec3& base, double baseRadius, const Vec3& cap, double capRadius, bool open);
 
   const char* kind() const override { return "cone"; }

@@ -2,11 +2,18 @@
 
 #include "quadratic.h"
 
+#include <stdexcept>
+
 namespace lucent {
 
 Cylinder::Cylinder(const Vec3& base, const Vec3& cap, double radius, bool open)
     : base_(base), cap_(cap), radius_(radius), height_(glm::length(cap - base)), open_(open),
-      frame_(base, glm::normalize(cap - base)) {}
+      frame_(base, cap != base ? glm::normalize(cap - base) : Vec3(0, 0, 1)) {
+  if (!isFinite(base) || !isFinite(cap) || !(height_ > 0.0) || !std::isfinite(height_))
+    throw std::invalid_argument("cylinder: base and cap must be distinct finite points");
+  if (!(radius > 0.0) || !std::isfinite(radius))
+    throw std::invalid_argument("cylinder: the radius must be a positive finite number");
+}
 
 AABB Cylinder::bounds() const {
   // The end discs' extents (see Disc::bounds) around both centres.

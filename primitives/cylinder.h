@@ -15,6 +15,7 @@ namespace lucent {
 
 class Cylinder final : public Shape {
  public:
+  // Throws std::invalid_argument when base == cap or the radius is not positive.
   Cylinder(const Vec3& base, const Vec3& cap, double radius, bool open);
 
   const char* kind() const override { return "cylinder"; }

@@ -3,10 +3,20 @@
 #include "plane.h"
 #include "span.h"
 
+#include <stdexcept>
+
 namespace lucent {
 
 Disc::Disc(const Vec3& center, const Vec3& unitNormal, double radius, double innerRadius)
     : center_(center), n_(unitNormal), radius_(radius), inner_(innerRadius) {
+  double len = glm::length(unitNormal);
+  if (!(len > 0.0) || !std::isfinite(len) || !isFinite(center))
+    throw std::invalid_argument("disc: the normal must be a non-zero finite vector");
+  if (!(radius > 0.0) || !std::isfinite(radius))
+    throw std::invalid_argument("disc: the radius must be a positive finite number");
+  if (!(innerRadius >= 0.0 && innerRadius < radius))
+    throw std::invalid_argument("disc: inner-radius must be at least 0 and less than radius");
+  n_ = unitNormal / len;
   planeTangents(n_, t1_, t2_);
 }
 

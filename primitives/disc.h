@@ -16,6 +16,7 @@ namespace lucent {
 
 class Disc final : public Shape {
  public:
+  // Throws std::invalid_argument unless 0 <= innerRadius < radius and the normal is non-zero.
   Disc(const Vec3& center, const Vec3& unitNormal, double radius, double innerRadius);
 
   const char* kind() const override { return "disc"; }

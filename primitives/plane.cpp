@@ -1,5 +1,7 @@
 #include "plane.h"
 
+#include <stdexcept>
+
 namespace lucent {
 
 void planeTangents(const Vec3& n, Vec3& t1, Vec3& t2) {
@@ -9,6 +11,10 @@ void planeTangents(const Vec3& n, Vec3& t1, Vec3& t2) {
 }
 
 Plane::Plane(const Vec3& unitNormal, double offset) : n_(unitNormal), offset_(offset) {
+  double len = glm::length(unitNormal);
+  if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(offset))
+    throw std::invalid_argument("plane: the normal must be a non-zero finite vector");
+  n_ = unitNormal / len;  // the spec's normal is unit already; this only removes rounding
   planeTangents(n_, t1_, t2_);
 }
 

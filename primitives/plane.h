@@ -20,6 +20,8 @@ void planeTangents(const Vec3& n, Vec3& t1, Vec3& t2);
 
 class Plane final : public Shape {
  public:
+  // The normal is normalised again (idempotent for the spec's unit normal). Throws
+  // std::invalid_argument for a zero or non-finite normal.
   Plane(const Vec3& unitNormal, double offset);
 
   const char* kind() const override { return "plane"; }

@@ -3,9 +3,14 @@
 #include "quadratic.h"
 #include "span.h"
 
+#include <stdexcept>
+
 namespace lucent {
 
-Sphere::Sphere(const Vec3& center, double radius) : center_(center), radius_(radius) {}
+Sphere::Sphere(const Vec3& center, double radius) : center_(center), radius_(radius) {
+  if (!(radius > 0.0) || !std::isfinite(radius) || !isFinite(center))
+    throw std::invalid_argument("sphere: the radius must be a positive finite number");
+}
 
 AABB Sphere::bounds() const { return {center_ - Vec3(radius_), center_ + Vec3(radius_)}; }
 

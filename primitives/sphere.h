@@ -13,6 +13,7 @@ namespace lucent {
 
 class Sphere final : public Shape {
  public:
+  // Throws std::invalid_argument unless the radius is positive (and everything finite).
   Sphere(const Vec3& center, double radius);
 
   const char* kind() const override { return "sphere"; }

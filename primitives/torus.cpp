@@ -3,10 +3,14 @@
 #include "polynomial.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace lucent {
 
-Torus::Torus(double major, double minor) : R_(major), r_(minor) {}
+Torus::Torus(double major, double minor) : R_(major), r_(minor) {
+  if (!(major > 0.0 && minor > 0.0) || !std::isfinite(major) || !std::isfinite(minor))
+    throw std::invalid_argument("torus: major and minor must be positive finite numbers");
+}
 
 AABB Torus::bounds() const {
   double e = R_ + r_;

@@ -22,6 +22,7 @@ namespace lucent {
 
 class Torus final : public Shape {
  public:
+  // Throws std::invalid_argument unless both radii are positive.
   Torus(double major, double minor);
 
   const char* kind() const override { return "torus"; }

@@ -4,6 +4,8 @@
 #include "watertight.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace lucent {
 
@@ -27,6 +29,11 @@ TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> mesh, bool useNormals
   const auto& P = mesh_->positions;
   for (uint32_t i = 0; i < mesh_->triangles.size(); ++i) {
     const auto& tri = mesh_->triangles[i];
+    for (uint32_t v : tri)
+      if (v >= P.size())
+        throw std::invalid_argument("mesh: triangle " + std::to_string(i) + " uses vertex " +
+                                    std::to_string(v) + ", but there are only " +
+                                    std::to_string(P.size()));
     for (uint32_t v : tri) bounds_.expand(P[v]);
     if (!isDegenerateTriangle(P[tri[0]], P[tri[1]], P[tri[2]])) live_.push_back(i);
   }

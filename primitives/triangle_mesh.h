@@ -28,7 +28,8 @@ std::vector<Vec3> computeVertexNormals(const MeshData& mesh);
 
 class TriangleMesh final : public Shape {
  public:
-  // useNormals: shade with mesh->normals (which must then hold one per position).
+  // useNormals: shade with mesh->normals (ignored unless there is one per position).
+  // Throws std::invalid_argument when a triangle names a vertex that does not exist.
   TriangleMesh(std::shared_ptr<const MeshData> mesh, bool useNormals);
 
   const char* kind() const override { return "mesh"; }

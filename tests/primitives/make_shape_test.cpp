@@ -84,3 +84,30 @@ TEST_CASE("makeShape: the mesh's smooth modes", "[primitives][scenegraph]") {
   CHECK_THAT(glm::dot(shadingNormal(SmoothMode::True), fromFile), WithinAbs(1.0, 1e-14));
   CHECK(bare->normals.empty());  // the spec's data is never modified
 }
+
+TEST_CASE("makeShape: impossible parameters throw std::invalid_argument", "[primitives][scenegraph]") {
+  const ShapeSpec bad[] = {
+      SphereSpec{Vec3(0.0), 0.0},
+      SphereSpec{Vec3(0.0), -1.0},
+      CylinderSpec{Vec3(1.0), Vec3(1.0), 1.0, false},
+      CylinderSpec{Vec3(0.0), Vec3(0, 1, 0), 0.0, false},
+      ConeSpec{Vec3(0.0), 0.0, Vec3(0, 1, 0), 0.0, false},
+      ConeSpec{Vec3(0.0), -1.0, Vec3(0, 1, 0), 0.0, false},
+      ConeSpec{Vec3(0.0), 1.0, Vec3(0.0), 0.5, false},
+      TorusSpec{1.0, 0.0},
+      TorusSpec{-1.0, 0.25},
+      PlaneSpec{Vec3(0.0), 1.0},
+      DiscSpec{Vec3(0.0), Vec3(0, 1, 0), 1.0, 1.0},
+      DiscSpec{Vec3(0.0), Vec3(0, 1, 0), 0.0, 0.0},
+      DiscSpec{Vec3(0.0), Vec3(0.0), 1.0, 0.0},
+  };
+  for (const ShapeSpec& spec : bad) {
+    INFO(shapeElementName(spec));
+    CHECK_THROWS_AS(makeShape(spec), std::invalid_argument);
+  }
+  auto broken = std::make_shared<MeshData>(*squareMesh());
+  broken->triangles.push_back({0, 1, 7});
+  MeshSpec m;
+  m.data = broken;
+  CHECK_THROWS_WITH(makeShape(m), "mesh: triangle 2 uses vertex 7, but there are only 4");
+}
