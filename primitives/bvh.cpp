@@ -1,11 +1,12 @@
 #include "bvh.h"
 
-#include <tbb/parallel_invoke.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace lucent {
@@ -14,60 +15,126 @@ BvhRay::BvhRay(const Ray& r) : o(r.o), invDir(1.0 / r.d) {
   for (int a = 0; a < 3; ++a) {
     // A -0 component gives -inf: the ray runs towards lo, so hi is its near plane.
     bool negative = std::signbit(invDir[a]);
-    nearIdx[a] = negative ? a + 3 : a;
-    farIdx[a] = negative ? a : a + 3;
+    nearOff[a] = 8 * a + (negative ? 4 : 0);
+    farOff[a] = 8 * a + (negative ? 0 : 4);
   }
+}
+
+AABB Bvh::bounds() const {
+  AABB b;
+  if (empty()) return b;
+  for (int c = 0; c < 4; ++c)
+    if (!nodes_[0].isEmpty(c)) b.expand(nodes_[0].bounds(c));
+  return b;
 }
 
 namespace {
 
-using glm::vec3;
+using bvh_detail::roundDown;
+using bvh_detail::roundUp;
+using bvh_detail::splat;
+using bvh_detail::v4f;
+using bvh_detail::v4i;
+using bvh_detail::vmax;
+using bvh_detail::vmin;
 
-// Double to float, rounded down or up, so float boxes contain the double ones.
-float roundDown(double x) {
-  float f = static_cast<float>(x);
-  return double(f) > x ? std::nextafter(f, -INFINITY) : f;
-}
-float roundUp(double x) {
-  float f = static_cast<float>(x);
-  return double(f) < x ? std::nextafter(f, INFINITY) : f;
-}
+// The build works on four floats at a time (lanes 0..2 are x, y, z) through the vector
+// extensions of bvh.h.
+struct Box4 {
+  v4f lo = splat(INFINITY);
+  v4f hi = splat(-INFINITY);
 
-struct Box3f {
-  vec3 lo{INFINITY};
-  vec3 hi{-INFINITY};
-
-  void expand(const Box3f& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
-  void expand(const vec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
-  // Half the surface area: the SAH only compares ratios.
+  void expand(const Box4& b) { lo = vmin(lo, b.lo); hi = vmax(hi, b.hi); }
+  void expand(v4f p) { lo = vmin(lo, p); hi = vmax(hi, p); }
+  // Half the surface area (the SAH compares ratios only); lane 3 plays no part.
   float halfArea() const {
-    vec3 e = hi - lo;
-    return e.x * e.y + e.y * e.z + e.z * e.x;
+    v4f e = hi - lo;
+    return e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
   }
 };
 
-// An item during the build: its box (rounded outward) and its number.
+// An item during the build: its box rounded outward, 32 bytes. Lane 3 of lo and hi holds
+// the item number with bit 30 set: a normal float (never a denormal, inf or NaN, for
+// numbers below 2^29), so the vector arithmetic on lane 3 stays cheap and harmless.
 struct Ref {
-  vec3 lo, hi;
-  uint32_t id;
+  v4f lo, hi;
 
+  static constexpr uint32_t kIdTag = 0x40000000u;
+  static float encode(uint32_t id) {
+    uint32_t bits = id | kIdTag;
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+  }
+  uint32_t id() const {
+    float f = lo[3];
+    uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    return bits & ~kIdTag;
+  }
   // Twice the centroid (the factor cancels in the binning), kept finite so that boxes
   // reaching beyond float range still bin.
-  vec3 centroid2() const { return glm::clamp(lo + hi, vec3(-FLT_MAX), vec3(FLT_MAX)); }
-  Box3f box() const { return {lo, hi}; }
+  v4f centroid2() const { return vmin(vmax(lo + hi, splat(-FLT_MAX)), splat(FLT_MAX)); }
+  Box4 box() const { return {lo, hi}; }
 };
+static_assert(sizeof(Ref) == 32, "build references are 32 bytes");
 
+constexpr uint32_t kMaxItems = 1u << 29;  // see Ref
 constexpr int kBins = 16;
 // Beyond this depth splits are at the object median, which halves the item count, so the
-// depth stays below kSahDepth + 32 < Bvh::kMaxDepth for any 32-bit item count.
+// depth stays below kSahDepth + 30 < Bvh::kMaxDepth.
 constexpr int kSahDepth = 64;
-static_assert(kSahDepth + 33 < Bvh::kMaxDepth, "traversal stack too small");
+static_assert(kSahDepth + 31 < Bvh::kMaxDepth, "traversal stack too small");
 // Subtrees with fewer items are built by one task.
 constexpr uint32_t kParallelMin = 4096;
 
+// No default initialisers: only the bins in use are cleared.
 struct Bin {
-  Box3f box;
-  uint32_t count = 0;
+  v4f lo, hi;
+  uint32_t count;
+  void clear() { lo = splat(INFINITY); hi = splat(-INFINITY); count = 0; }
+  Box4 box() const { return {lo, hi}; }
+};
+
+// The bin of each lane: (c - lo) · scale, clamped to the bins (the same computation in
+// binning and partitioning, so both agree to the bit).
+// Small nodes use fewer bins: clearing and sweeping 3 × 16 bins would cost more than
+// binning their few items.
+struct Binner {
+  v4f lo, scale;
+  int count;
+  Binner(const Box4& cbox, uint32_t items)
+      : lo(cbox.lo),
+        scale(splat(0.0f)),
+        count(static_cast<int>(std::min<uint32_t>(kBins, items))) {
+    v4f ext = cbox.hi - cbox.lo;
+    for (int a = 0; a < 3; ++a) scale[a] = ext[a] > 0.0f ? float(count) / ext[a] : 0.0f;
+    scale[3] = 0.0f;
+    lo[3] = 0.0f;
+  }
+  bool splittable(int a) const { return scale[a] > 0.0f && std::isfinite(scale[a]); }
+  // Clamped in float (single instructions on SSE2, where int min/max are not).
+  v4i bins(v4f c) const {
+    v4f f = vmin(vmax((c - lo) * scale, splat(0.0f)), splat(float(count) - 0.5f));
+    return __builtin_convertvector(f, v4i);
+  }
+};
+
+// A subtree to build: its items refs[begin, end), their box and centroid box, and the
+// decision taken for it (a leaf, or the split to apply).
+struct Child {
+  uint32_t begin, end;
+  Box4 box, cbox;
+  int depth;  // binary splits above it
+  bool leaf;
+  bool sah;   // split by `split`; otherwise at the object median
+  struct Split {
+    int axis = -1;
+    int bin = 0;     // items in bins [0, bin) go left
+    float cost = 0;  // left area × count + right area × count
+    Box4 left, right;
+  } split;
+  uint32_t size() const { return end - begin; }
 };
 
 class Builder {
@@ -77,116 +144,164 @@ class Builder {
 
   uint32_t nodeCount() const { return next_.load(); }
 
-  // Builds the subtree of `node` over refs_[begin, end); returns its depth.
-  int build(uint32_t node, uint32_t begin, uint32_t end, const Box3f& box, const Box3f& cbox,
-            int depth) {
-    BvhNode& nd = nodes_[node];
-    for (int a = 0; a < 3; ++a) {
-      nd.box[a] = box.lo[a];
-      nd.box[a + 3] = box.hi[a];
-    }
-    uint32_t n = end - begin;
-    if (n == 1) return makeLeaf(nd, begin, n, depth);
-
-    Split s;
-    bool sah = depth < kSahDepth && findSahSplit(begin, end, box, cbox, s);
-    if (sah && n <= opt_.maxLeafSize) {
+  // Decides whether the subtree is a leaf and, if not, how it splits.
+  void decide(Child& c) const {
+    uint32_t n = c.size();
+    c.sah = false;
+    c.leaf = n <= std::max(1u, std::min(opt_.minLeafSize, opt_.maxLeafSize));
+    if (c.leaf) return;
+    c.sah = c.depth < kSahDepth && findSahSplit(c);
+    if (c.sah && n <= opt_.maxLeafSize) {
       float leafCost = opt_.itemCost * float(n);
-      float area = box.halfArea();
-      float splitCost = area > 0.0f ? opt_.traversalCost + opt_.itemCost * s.cost / area
+      float area = c.box.halfArea();
+      float splitCost = area > 0.0f ? opt_.traversalCost + opt_.itemCost * c.split.cost / area
                                     : opt_.traversalCost + opt_.itemCost * float(n);
-      if (!(splitCost < leafCost)) return makeLeaf(nd, begin, n, depth);
+      c.leaf = !(splitCost < leafCost);
+    } else if (!c.sah) {
+      c.leaf = n <= opt_.maxLeafSize;
     }
-    if (!sah && n <= opt_.maxLeafSize) return makeLeaf(nd, begin, n, depth);
-
-    uint32_t mid;
-    Box3f lbox, rbox, lcbox, rcbox;
-    if (sah) {
-      mid = partition(begin, end, cbox, s, lcbox, rcbox);
-      lbox = s.left;
-      rbox = s.right;
-    } else {
-      mid = medianSplit(begin, end, cbox);
-      boundsOf(begin, mid, lbox, lcbox);
-      boundsOf(mid, end, rbox, rcbox);
-    }
-
-    uint32_t child = next_.fetch_add(2);
-    nd.index = child;
-    nd.count = 0;
-    int dl = 0, dr = 0;
-    auto left = [&] { dl = build(child, begin, mid, lbox, lcbox, depth + 1); };
-    auto right = [&] { dr = build(child + 1, mid, end, rbox, rcbox, depth + 1); };
-    if (opt_.parallel && n >= kParallelMin) {
-      tbb::parallel_invoke(left, right);
-    } else {
-      left();
-      right();
-    }
-    return std::max(dl, dr);
   }
 
- private:
-  struct Split {
-    int axis = -1;
-    int bin = 0;      // items in bins [0, bin) go left
-    float cost = 0;   // left area × count + right area × count
-    Box3f left, right;
-  };
-
-  static int makeLeaf(BvhNode& nd, uint32_t begin, uint32_t n, int depth) {
-    nd.index = begin;
-    nd.count = n;
-    return depth;
-  }
-
-  static int binOf(float c, float lo, float scale) {
-    int b = static_cast<int>((c - lo) * scale);
-    return std::min(std::max(b, 0), kBins - 1);
-  }
-
-  // Binned SAH: the cheapest of the kBins-1 planes per axis (Wald 2007).
-  bool findSahSplit(uint32_t begin, uint32_t end, const Box3f& box, const Box3f& cbox,
-                    Split& s) const {
-    (void)box;
-    vec3 ext = cbox.hi - cbox.lo;
-    vec3 scale;
-    bool any = false;
-    for (int a = 0; a < 3; ++a) {
-      scale[a] = ext[a] > 0.0f ? float(kBins) / ext[a] : 0.0f;
-      any = any || ext[a] > 0.0f;
+  // Fills node `node` with up to four children, made by splitting `self` (unless it is a
+  // leaf) and then its largest non-leaf part again; recurses into the children that are
+  // not leaves.
+  // Returns the depth (binary splits) of the deepest leaf below.
+  int build(uint32_t node, const Child& self) {
+    Child kids[4];
+    int k = 1;
+    kids[0] = self;
+    while (k < 4) {
+      int best = -1;
+      float bestArea = -1.0f;
+      for (int i = 0; i < k; ++i) {
+        float area = kids[i].box.halfArea();
+        if (!kids[i].leaf && area > bestArea) {
+          best = i;
+          bestArea = area;
+        }
+      }
+      if (best < 0) break;
+      Child left, right;
+      apply(kids[best], left, right);
+      kids[best] = left;
+      kids[k++] = right;
     }
-    if (!any) return false;  // every centroid in one point: no plane separates them
 
-    Bin bins[3][kBins];
-    for (uint32_t i = begin; i < end; ++i) {
-      const Ref& r = refs_[i];
-      vec3 c = r.centroid2();
+    BvhNode& nd = nodes_[node];
+    uint32_t childNode[4];
+    for (int i = 0; i < 4; ++i) {
       for (int a = 0; a < 3; ++a) {
-        if (scale[a] == 0.0f) continue;
-        Bin& b = bins[a][binOf(c[a], cbox.lo[a], scale[a])];
-        b.count++;
-        b.box.expand(r.box());
+        nd.box[8 * a + i] = i < k ? kids[i].box.lo[a] : INFINITY;
+        nd.box[8 * a + 4 + i] = i < k ? kids[i].box.hi[a] : -INFINITY;
+      }
+      if (i >= k) {
+        nd.index[i] = BvhNode::kEmpty;
+        nd.count[i] = 0;
+      } else if (kids[i].leaf) {
+        nd.index[i] = kids[i].begin;
+        nd.count[i] = kids[i].size();
+      } else {
+        childNode[i] = next_.fetch_add(1);
+        nd.index[i] = childNode[i];
+        nd.count[i] = 0;
       }
     }
 
+    int depth[4] = {0, 0, 0, 0};
+    auto sub = [&](int i) {
+      depth[i] = kids[i].leaf ? kids[i].depth : build(childNode[i], kids[i]);
+    };
+    if (opt_.parallel && self.size() >= kParallelMin) {
+      tbb::task_group tasks;
+      for (int i = 1; i < k; ++i) tasks.run([&, i] { sub(i); });
+      sub(0);
+      tasks.wait();
+    } else {
+      for (int i = 0; i < k; ++i) sub(i);
+    }
+    return *std::max_element(depth, depth + k);
+  }
+
+ private:
+  // Splits c as decided, and decides for both halves.
+  void apply(Child& c, Child& left, Child& right) {
+    uint32_t mid;
+    left = Child();
+    right = Child();
+    if (c.sah) {
+      mid = partition(c, left.cbox, right.cbox);
+      left.box = c.split.left;
+      right.box = c.split.right;
+    } else {
+      mid = medianSplit(c.begin, c.end, c.cbox);
+      boundsOf(c.begin, mid, left.box, left.cbox);
+      boundsOf(mid, c.end, right.box, right.cbox);
+    }
+    left.begin = c.begin;
+    left.end = mid;
+    right.begin = mid;
+    right.end = c.end;
+    left.depth = right.depth = c.depth + 1;
+    decide(left);
+    decide(right);
+  }
+
+  // Binned SAH: the cheapest of the planes between bins, per axis (Wald 2007).
+  bool findSahSplit(Child& c) const {
+    Binner binner(c.cbox, c.size());
+    const int nb = binner.count;
+    if (!binner.splittable(0) && !binner.splittable(1) && !binner.splittable(2))
+      return false;  // every centroid in one point: no plane separates them
+
+    // Two sets of bins for alternate items, merged at the end: neighbouring items tend
+    // to fall into the same bin, and one set would make each update wait for the last.
+    Bin bins[3][kBins], bins2[3][kBins];
+    for (int a = 0; a < 3; ++a)
+      for (int i = 0; i < nb; ++i) {
+        bins[a][i].clear();
+        bins2[a][i].clear();
+      }
+    auto add = [&](Bin (&set)[3][kBins], const Ref& r) {
+      v4i b = binner.bins(r.centroid2());
+      for (int a = 0; a < 3; ++a) {
+        Bin& bin = set[a][b[a]];
+        bin.lo = vmin(bin.lo, r.lo);
+        bin.hi = vmax(bin.hi, r.hi);
+        bin.count++;
+      }
+    };
+    uint32_t i = c.begin;
+    for (; i + 1 < c.end; i += 2) {
+      add(bins, refs_[i]);
+      add(bins2, refs_[i + 1]);
+    }
+    if (i < c.end) add(bins, refs_[i]);
+    for (int a = 0; a < 3; ++a)
+      for (int k = 0; k < nb; ++k) {
+        bins[a][k].lo = vmin(bins[a][k].lo, bins2[a][k].lo);
+        bins[a][k].hi = vmax(bins[a][k].hi, bins2[a][k].hi);
+        bins[a][k].count += bins2[a][k].count;
+      }
+
+    Child::Split& s = c.split;
+    s = Child::Split();
     float best = INFINITY;
     for (int a = 0; a < 3; ++a) {
-      if (scale[a] == 0.0f) continue;
+      if (!binner.splittable(a)) continue;
       float rightArea[kBins];
       uint32_t rightCount[kBins];
-      Box3f acc;
+      Box4 acc;
       uint32_t cnt = 0;
-      for (int i = kBins - 1; i > 0; --i) {
-        acc.expand(bins[a][i].box);
+      for (int i = nb - 1; i > 0; --i) {
+        acc.expand(bins[a][i].box());
         cnt += bins[a][i].count;
         rightArea[i] = acc.halfArea();
         rightCount[i] = cnt;
       }
-      acc = Box3f();
+      acc = Box4();
       cnt = 0;
-      for (int i = 1; i < kBins; ++i) {
-        acc.expand(bins[a][i - 1].box);
+      for (int i = 1; i < nb; ++i) {
+        acc.expand(bins[a][i - 1].box());
         cnt += bins[a][i - 1].count;
         if (cnt == 0 || rightCount[i] == 0) continue;
         float cost = acc.halfArea() * float(cnt) + rightArea[i] * float(rightCount[i]);
@@ -199,24 +314,22 @@ class Builder {
     }
     if (s.axis < 0) return false;  // only infinite costs (boxes beyond float range)
     s.cost = best;
-    for (int i = 0; i < kBins; ++i)
-      (i < s.bin ? s.left : s.right).expand(bins[s.axis][i].box);
+    for (int i = 0; i < nb; ++i) (i < s.bin ? s.left : s.right).expand(bins[s.axis][i].box());
     return true;
   }
 
   // Moves the refs left of the split plane first; returns the first of the right ones.
-  uint32_t partition(uint32_t begin, uint32_t end, const Box3f& cbox, const Split& s,
-                     Box3f& lcbox, Box3f& rcbox) {
-    int a = s.axis;
-    float scale = float(kBins) / (cbox.hi[a] - cbox.lo[a]);
-    uint32_t i = begin, j = end;
+  uint32_t partition(const Child& c, Box4& lcbox, Box4& rcbox) {
+    Binner binner(c.cbox, c.size());
+    int a = c.split.axis;
+    uint32_t i = c.begin, j = c.end;
     while (i < j) {
-      vec3 c = refs_[i].centroid2();
-      if (binOf(c[a], cbox.lo[a], scale) < s.bin) {
-        lcbox.expand(c);
+      v4f ctr = refs_[i].centroid2();
+      if (binner.bins(ctr)[a] < c.split.bin) {
+        lcbox.expand(ctr);
         ++i;
       } else {
-        rcbox.expand(c);
+        rcbox.expand(ctr);
         std::swap(refs_[i], refs_[--j]);
       }
     }
@@ -224,21 +337,21 @@ class Builder {
   }
 
   // Half the refs on each side, split along the widest centroid extent.
-  uint32_t medianSplit(uint32_t begin, uint32_t end, const Box3f& cbox) {
-    vec3 ext = cbox.hi - cbox.lo;
-    int a = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
+  uint32_t medianSplit(uint32_t begin, uint32_t end, const Box4& cbox) {
+    v4f ext = cbox.hi - cbox.lo;
+    int a = ext[0] >= ext[1] && ext[0] >= ext[2] ? 0 : (ext[1] >= ext[2] ? 1 : 2);
     uint32_t mid = begin + (end - begin) / 2;
     if (ext[a] > 0.0f) {
       std::nth_element(refs_.begin() + begin, refs_.begin() + mid, refs_.begin() + end,
                        [a](const Ref& x, const Ref& y) {
                          float cx = x.centroid2()[a], cy = y.centroid2()[a];
-                         return cx < cy || (cx == cy && x.id < y.id);
+                         return cx < cy || (cx == cy && x.id() < y.id());
                        });
     }
     return mid;
   }
 
-  void boundsOf(uint32_t begin, uint32_t end, Box3f& box, Box3f& cbox) const {
+  void boundsOf(uint32_t begin, uint32_t end, Box4& box, Box4& cbox) const {
     for (uint32_t i = begin; i < end; ++i) {
       box.expand(refs_[i].box());
       cbox.expand(refs_[i].centroid2());
@@ -248,7 +361,7 @@ class Builder {
   std::vector<Ref>& refs_;
   BvhNode* nodes_;
   const Bvh::Options& opt_;
-  std::atomic<uint32_t> next_{2};  // [0] root, [1] padding: sibling pairs start even
+  std::atomic<uint32_t> next_{1};  // node 0 is the root
 };
 
 }  // namespace
@@ -257,17 +370,18 @@ Bvh::Bvh(const std::vector<AABB>& itemBounds, const Options& options)
     : Bvh(itemBounds.size(), [&](uint32_t i) { return itemBounds[i]; }, options) {}
 
 Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Options& options) {
-  if (count >= (size_t(1) << 31)) throw std::invalid_argument("BVH: too many items");
+  if (count >= kMaxItems) throw std::invalid_argument("BVH: too many items");
   if (options.maxLeafSize == 0) throw std::invalid_argument("BVH: maxLeafSize must be >= 1");
   std::vector<Ref> refs;
   refs.reserve(count);
-  Box3f box, cbox;
+  Box4 box, cbox;
   for (uint32_t i = 0; i < count; ++i) {
     AABB b = boundsOf(i);
     if (b.empty()) continue;  // never hit: not in the tree
     if (!b.isBounded()) throw std::invalid_argument("BVH: an item has an unbounded box");
-    Ref r{vec3(roundDown(b.lo.x), roundDown(b.lo.y), roundDown(b.lo.z)),
-          vec3(roundUp(b.hi.x), roundUp(b.hi.y), roundUp(b.hi.z)), i};
+    float id = Ref::encode(i);
+    Ref r{v4f{roundDown(b.lo.x), roundDown(b.lo.y), roundDown(b.lo.z), id},
+          v4f{roundUp(b.hi.x), roundUp(b.hi.y), roundUp(b.hi.z), id}};
     box.expand(r.box());
     cbox.expand(r.centroid2());
     refs.push_back(r);
@@ -275,18 +389,24 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
   itemCount_ = refs.size();
   if (refs.empty()) return;
 
-  // At most 2 nodes per item (one leaf each, one interior per pair) plus the padding.
-  // new[] of a trivial type leaves the pages untouched: only the used ones cost memory.
-  size_t capacity = 2 * refs.size() + 2;
-  std::unique_ptr<BvhNode[]> scratch(new BvhNode[capacity]);
-  Builder builder(refs, scratch.get(), options);
-  depth_ = builder.build(0, 0, static_cast<uint32_t>(refs.size()), box, cbox, 0);
-  scratch[1] = BvhNode{{0, 0, 0, 0, 0, 0}, 0, 0};
+  // At most one node per item (each holds at least one of the binary tree's interior
+  // nodes, which number items - 1, and the root). The allocator leaves new nodes
+  // uninitialised, so those never used cost nothing.
+  nodes_.resize(refs.size());
+  Builder builder(refs, nodes_.data(), options);
+  Child root;
+  root.begin = 0;
+  root.end = static_cast<uint32_t>(refs.size());
+  root.box = box;
+  root.cbox = cbox;
+  root.depth = 0;
+  builder.decide(root);
+  // A root that is a leaf becomes node 0's only child.
+  depth_ = builder.build(0, root);
+  nodes_.resize(builder.nodeCount());
 
-  nodes_.assign(scratch.get(), scratch.get() + builder.nodeCount());
-  scratch.reset();
   order_.resize(refs.size());
-  for (size_t k = 0; k < refs.size(); ++k) order_[k] = refs[k].id;
+  for (size_t k = 0; k < refs.size(); ++k) order_[k] = refs[k].id();
 }
 
 }  // namespace lucent

@@ -5,31 +5,41 @@
 #include "aabb.h"
 #include "ray.h"
 
+#include <cfloat>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
-#include <memory>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace lucent {
 
-// One node in 32 bytes, so a pair of siblings fills one 64-byte cache line. The box is
-// stored in float, rounded outward, so it still contains every item (never a miss from
-// the narrowing); siblings sit side by side and are tested together from their parent.
-struct BvhNode {
-  float box[6];    // lo.x, lo.y, lo.z, hi.x, hi.y, hi.z
-  uint32_t index;  // interior node: its first child (the second is index + 1); leaf: first item slot
-  uint32_t count;  // 0 for an interior node; a leaf's number of item slots
+// A node of the 4-wide tree: four child entries of 32 bytes each (a float box and a
+// reference), stored axis-major in two cache lines so the four boxes are tested with one
+// set of 4-wide float operations. Boxes are rounded outward from the items' double boxes,
+// so they still contain every item. A child is interior (count 0: its node is `index`),
+// a leaf (items in slots [index, index + count)), or an empty slot (kEmpty; its box is
+// inverted, lo = +inf and hi = -inf, so every slab test misses it).
+struct alignas(64) BvhNode {
+  float box[24];  // box[8·axis + c] is child c's lo on that axis, box[8·axis + 4 + c] its hi
+  uint32_t index[4];
+  uint32_t count[4];
 
-  bool isLeaf() const { return count != 0; }
-  AABB bounds() const {
-    return {Vec3(box[0], box[1], box[2]), Vec3(box[3], box[4], box[5])};
+  static constexpr uint32_t kEmpty = 0xffffffffu;
+
+  bool isEmpty(int c) const { return count[c] == 0 && index[c] == kEmpty; }
+  bool isLeaf(int c) const { return count[c] != 0; }
+  bool isInterior(int c) const { return count[c] == 0 && index[c] != kEmpty; }
+  AABB bounds(int c) const {
+    return {Vec3(box[c], box[8 + c], box[16 + c]), Vec3(box[4 + c], box[12 + c], box[20 + c])};
   }
 };
-static_assert(sizeof(BvhNode) == 32, "BVH nodes are 32 bytes: two per cache line");
+static_assert(sizeof(BvhNode) == 128, "four 32-byte child entries in two cache lines");
 
-// Allocates on 64-byte boundaries, so each sibling pair shares one cache line.
+// Allocates on 64-byte boundaries and leaves new elements uninitialised on resize, so
+// the nodes the build reserves but never reaches are never touched (cost no memory).
 template <class T>
 struct CacheLineAllocator {
   using value_type = T;
@@ -40,32 +50,149 @@ struct CacheLineAllocator {
     return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(64)));
   }
   void deallocate(T* p, size_t) { ::operator delete(p, std::align_val_t(64)); }
+  template <class U>
+  void construct(U* p) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
   friend bool operator==(const CacheLineAllocator&, const CacheLineAllocator&) { return true; }
   friend bool operator!=(const CacheLineAllocator&, const CacheLineAllocator&) { return false; }
 };
 
 using BvhNodes = std::vector<BvhNode, CacheLineAllocator<BvhNode>>;
 
-// The ray's constants for the slab test, computed once per traversal.
+namespace bvh_detail {
+
+// GCC/Clang vector extensions: SSE on x86-64, NEON on ARM, scalar code elsewhere.
+typedef float v4f __attribute__((vector_size(16)));
+typedef int32_t v4i __attribute__((vector_size(16)));
+
+inline v4f vmin(v4f a, v4f b) { return a < b ? a : b; }
+inline v4f vmax(v4f a, v4f b) { return a > b ? a : b; }
+inline v4f splat(float f) { return v4f{f, f, f, f}; }
+inline v4f load(const float* p) {
+  v4f v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+// Bit c set when lane c of the comparison result is true.
+inline int laneMask(v4i m) {
+#if defined(__SSE__)
+  return __builtin_ia32_movmskps(reinterpret_cast<v4f>(m));
+#else
+  return (m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8);
+#endif
+}
+
+// The neighbouring floats (finite input; ±0 handled), to round double to float outward
+// without a libm call.
+inline float nextUp(float f) {
+  if (f == 0.0f) return FLT_TRUE_MIN;
+  uint32_t b;
+  std::memcpy(&b, &f, 4);
+  b = f > 0.0f ? b + 1 : b - 1;
+  std::memcpy(&f, &b, 4);
+  return f;
+}
+inline float nextDown(float f) { return -nextUp(-f); }
+inline float roundDown(double x) {
+  float f = static_cast<float>(x);
+  return double(f) > x ? nextDown(f) : f;
+}
+inline float roundUp(double x) {
+  float f = static_cast<float>(x);
+  return double(f) < x ? nextUp(f) : f;
+}
+
+// Slab test of a node's four boxes in float, for rays whose direction has no zero
+// component (so no 0·inf NaN can arise). Conservative, after Ize 2013 ("Robust BVH Ray
+// Traversal"): for each plane the origin is rounded the way that moves the plane's
+// distance outward (up for lo planes, down for hi planes, whatever the direction's
+// sign), and the entry and exit distances are widened by 2·gamma(3) in float for the
+// rounding of the subtraction, the reciprocal and the product. So no box is missed
+// through rounding; distances beyond float range (3.4e38) count as infinite.
+struct FastNodeTest {
+  int nearOff[3], farOff[3];  // offsets in BvhNode::box of the near and far planes
+  v4f orgNear[3], orgFar[3];  // the origin, rounded for the near and far planes
+  v4f inv[3];                 // 1/d in float
+  v4f tmin;                   // rounded down
+
+  // 2·gamma(3) for float (pbrt's gamma with the float unit roundoff).
+  static constexpr float kWiden =
+      2.0f * (3.0f * (FLT_EPSILON * 0.5f)) / (1.0f - 3.0f * (FLT_EPSILON * 0.5f));
+
+  // Usable when every direction component is non-zero with a float reciprocal, and the
+  // origin is within float range.
+  static bool usable(const Ray& r) {
+    for (int a = 0; a < 3; ++a) {
+      double inv = 1.0 / r.d[a];
+      if (r.d[a] == 0.0 || !(std::abs(inv) < double(FLT_MAX)) ||
+          !(std::abs(r.o[a]) < double(FLT_MAX)))
+        return false;
+    }
+    return true;
+  }
+
+  explicit FastNodeTest(const Ray& r) {
+    for (int a = 0; a < 3; ++a) {
+      bool negative = r.d[a] < 0.0;
+      float up = roundUp(r.o[a]), down = roundDown(r.o[a]);
+      // Going up the axis the lo plane is met first; going down, the hi plane.
+      nearOff[a] = 8 * a + (negative ? 4 : 0);
+      farOff[a] = 8 * a + (negative ? 0 : 4);
+      orgNear[a] = splat(negative ? down : up);
+      orgFar[a] = splat(negative ? up : down);
+      inv[a] = splat(static_cast<float>(1.0 / r.d[a]));
+    }
+    tmin = splat(roundDown(r.tmin));
+  }
+
+  // Bit c set if child c's box overlaps [tmin, tmax]; tEnter[c] is then a lower bound
+  // of its entry distance.
+  int test(const BvhNode& n, float tmaxUp, float tEnter[4]) const {
+    v4f t0 = tmin, t1 = splat(tmaxUp);
+    for (int a = 0; a < 3; ++a) {
+      v4f tn = (load(n.box + nearOff[a]) - orgNear[a]) * inv[a];
+      v4f tf = (load(n.box + farOff[a]) - orgFar[a]) * inv[a];
+      t0 = vmax(t0, tn);
+      t1 = vmin(t1, tf);
+    }
+    // Widen both ends by the rounding bound: t0 - |t0|·k and t1 + |t1|·k.
+    const v4i absMask = {0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
+    v4f k = splat(kWiden);
+    t0 = t0 - reinterpret_cast<v4f>(reinterpret_cast<v4i>(t0) & absMask) * k;
+    t1 = t1 + reinterpret_cast<v4f>(reinterpret_cast<v4i>(t1) & absMask) * k;
+    std::memcpy(tEnter, &t0, sizeof t0);
+    return laneMask(t0 <= t1);
+  }
+};
+
+}  // namespace bvh_detail
+
+// The ray's constants for the double-precision slab test, for the rays the float test
+// cannot take (a zero direction component, an origin beyond float range).
 struct BvhRay {
   Vec3 o;
-  Vec3 invDir;     // ±inf for ±0 components (IEEE division keeps the sign)
-  int nearIdx[3];  // index into BvhNode::box of the plane the ray meets first, per axis
-  int farIdx[3];
+  Vec3 invDir;      // ±inf for ±0 components (IEEE division keeps the sign)
+  int nearOff[3];   // offsets in BvhNode::box of the plane met first on each axis
+  int farOff[3];
 
   explicit BvhRay(const Ray& r);
 
-  // The entry distance of the node's box within [tmin, tmax], or false if the ray misses
-  // it. Robust as in Ize 2013 ("Robust BVH Ray Traversal"): the far distance is widened
-  // by its rounding bound 2·gamma(3), so no ray slips between boxes that share a face.
-  // A zero direction component gives ±inf distances (the ray misses unless the origin is
-  // within that slab), or NaN for an origin exactly on the slab plane, which the
-  // comparisons below ignore: the ray runs in the plane of the closed box.
-  bool enters(const BvhNode& n, double tmin, double tmax, double& tEnter) const {
+  // The entry distance of child c's box within [tmin, tmax], or false if the ray misses
+  // it. Robust as in Ize 2013: the far distance is widened by its rounding bound
+  // 2·gamma(3), so no ray slips between boxes that share a face. A zero direction
+  // component gives ±inf distances (the ray misses unless the origin is within that
+  // slab), or NaN for an origin exactly on the slab plane, which the comparisons below
+  // ignore: the ray runs in the plane of the closed box.
+  bool enters(const BvhNode& n, int c, double tmin, double tmax, double& tEnter) const {
     double t0 = tmin, tf = kInf;
     for (int a = 0; a < 3; ++a) {
-      double tNear = (double(n.box[nearIdx[a]]) - o[a]) * invDir[a];
-      double tFar = (double(n.box[farIdx[a]]) - o[a]) * invDir[a];
+      double tNear = (double(n.box[nearOff[a] + c]) - o[a]) * invDir[a];
+      double tFar = (double(n.box[farOff[a] + c]) - o[a]) * invDir[a];
       t0 = tNear > t0 ? tNear : t0;
       tf = tFar < tf ? tFar : tf;
     }
@@ -82,14 +209,16 @@ struct BvhRay {
 
 struct BvhOptions {
   uint32_t maxLeafSize = 8;    // a leaf never holds more items than this
+  uint32_t minLeafSize = 1;    // subtrees of at most this many items are leaves, unsplit
   float traversalCost = 1.0f;  // SAH cost of visiting a node, relative to...
   float itemCost = 1.0f;       // ...testing one item
   bool parallel = true;        // build large subtrees as TBB tasks (same tree either way)
 };
 
-// Built with the binned surface-area heuristic (Wald 2007, "On fast Construction of
-// SAH-based Bounding Volume Hierarchies"), in parallel with TBB for large inputs, and
-// traversed front to back with an explicit stack.
+// Built top-down with the binned surface-area heuristic (Wald 2007, "On fast Construction
+// of SAH-based Bounding Volume Hierarchies"), each node taking up to four children by
+// splitting its largest child again (as Embree's BVH4 builders do), in parallel with TBB
+// for large inputs; traversed front to back with an explicit stack.
 //
 // Items are numbered 0..count-1 by the caller. The build reorders them into leaf slots;
 // order() maps a slot back to the caller's item number. A caller that reorders its own
@@ -108,16 +237,19 @@ class Bvh {
   explicit Bvh(const std::vector<AABB>& itemBounds, const Options& options = Options());
 
   bool empty() const { return nodes_.empty(); }
-  AABB bounds() const { return empty() ? AABB() : nodes_[0].bounds(); }
+  AABB bounds() const;
+  // nodes()[0] is the root.
   const BvhNodes& nodes() const { return nodes_; }
   const std::vector<uint32_t>& order() const { return order_; }
   std::vector<uint32_t> takeOrder() { return std::move(order_); }
   // Number of items in the tree (items with an empty box are not).
   size_t itemCount() const { return itemCount_; }
-  // Bytes held by the nodes and the order, for the memory figures of bench/.
+  // Bytes held by the nodes and the order (the capacity reserved for the build beyond
+  // the nodes' size was never touched: address space, not memory).
   size_t memoryBytes() const {
-    return nodes_.capacity() * sizeof(BvhNode) + order_.capacity() * sizeof(uint32_t);
+    return nodes_.size() * sizeof(BvhNode) + order_.capacity() * sizeof(uint32_t);
   }
+  // Levels of the binary splits the build made (the 4-wide tree has fewer).
   int depth() const { return depth_; }
 
   // Closest hit. hitItem(uint32_t item, Ray& ray) tests one item against (ray.tmin,
@@ -125,135 +257,199 @@ class Bvh {
   // Children are visited nearest first and a subtree is skipped once it starts beyond
   // ray.tmax. Returns whether any call returned true.
   template <class HitItem>
-  bool closest(const Ray& ray, HitItem&& hitItem) const;
+  bool closest(const Ray& ray, HitItem&& hitItem) const {
+    if (bvh_detail::FastNodeTest::usable(ray))
+      return closestWith(bvh_detail::FastNodeTest(ray), ray, hitItem);
+    return closestWith(SafeNodeTest(ray), ray, hitItem);
+  }
 
   // Any hit (shadow rays): blocks(uint32_t item, const Ray& ray) says whether the item has
   // a hit in (ray.tmin, ray.tmax); the search stops at the first true.
   template <class Blocks>
-  bool any(const Ray& ray, Blocks&& blocks) const;
+  bool any(const Ray& ray, Blocks&& blocks) const {
+    if (bvh_detail::FastNodeTest::usable(ray))
+      return anyWith(bvh_detail::FastNodeTest(ray), ray, blocks);
+    return anyWith(SafeNodeTest(ray), ray, blocks);
+  }
 
   // Every item whose box the ray overlaps in [ray.tmin, ray.tmax]: visit(uint32_t item),
   // in no particular order (CSG gathers crossings this way).
   template <class Visit>
-  void all(const Ray& ray, Visit&& visit) const;
+  void all(const Ray& ray, Visit&& visit) const {
+    if (bvh_detail::FastNodeTest::usable(ray))
+      allWith(bvh_detail::FastNodeTest(ray), ray, visit);
+    else
+      allWith(SafeNodeTest(ray), ray, visit);
+  }
 
-  // Stack size of the traversals: the build keeps the depth below it (bvh.cpp).
+  // Bound of depth(): the build switches to median splits before it (bvh.cpp).
   static constexpr int kMaxDepth = 120;
 
  private:
+  // The double-precision test with the fast test's interface.
+  struct SafeNodeTest {
+    BvhRay r;
+    double tmin;
+    explicit SafeNodeTest(const Ray& ray) : r(ray), tmin(ray.tmin) {}
+    int test(const BvhNode& n, double tmax, double tEnter[4]) const {
+      int mask = 0;
+      for (int c = 0; c < 4; ++c) mask |= int(r.enters(n, c, tmin, tmax, tEnter[c])) << c;
+      return mask;
+    }
+  };
+
+  // The fast test takes tmax rounded up to float, the safe one as it is.
+  static float limit(const bvh_detail::FastNodeTest&, double tmax) {
+    return bvh_detail::roundUp(tmax);
+  }
+  static double limit(const SafeNodeTest&, double tmax) { return tmax; }
+
   uint32_t itemOf(uint32_t slot) const { return order_.empty() ? slot : order_[slot]; }
 
-  BvhNodes nodes_;  // [0] is the root; [1] is unused so sibling pairs align
+  // A child to visit: a node (count 0) or a leaf's slots, with its entry distance.
+  template <class T>
+  struct Entry {
+    uint32_t index, count;
+    T t;
+  };
+  // Up to three children wait per level of the 4-wide tree, which has at most
+  // kMaxDepth levels.
+  static constexpr int kStackSize = 3 * kMaxDepth + 1;
+
+  // Pushes the children in `mask` (two or more) farthest first, keeping the nearest in
+  // `next`: the caller descends into it.
+  template <class T>
+  static void pushOrdered(const BvhNode& n, int mask, const T tEnter[4], Entry<T>* stack,
+                          int& sp, Entry<T>& next);
+
+  template <class Test, class HitItem>
+  bool closestWith(const Test& test, const Ray& ray0, HitItem& hitItem) const;
+  template <class Test, class Blocks>
+  bool anyWith(const Test& test, const Ray& ray, Blocks& blocks) const;
+  template <class Test, class Visit>
+  void allWith(const Test& test, const Ray& ray, Visit& visit) const;
+
+  BvhNodes nodes_;
   std::vector<uint32_t> order_;
   size_t itemCount_ = 0;
   int depth_ = 0;
 };
 
-template <class HitItem>
-bool Bvh::closest(const Ray& ray0, HitItem&& hitItem) const {
+template <class T>
+void Bvh::pushOrdered(const BvhNode& n, int mask, const T tEnter[4], Entry<T>* stack, int& sp,
+                      Entry<T>& next) {
+  Entry<T> e[4];
+  int k = 0;
+  for (; mask; mask &= mask - 1) {
+    int c = __builtin_ctz(mask);
+    Entry<T> x{n.index[c], n.count[c], tEnter[c]};
+    // Insertion sort, farthest first (at most four).
+    int j = k++;
+    for (; j > 0 && e[j - 1].t < x.t; --j) e[j] = e[j - 1];
+    e[j] = x;
+  }
+  for (int i = 0; i < k - 1; ++i) stack[sp++] = e[i];
+  next = e[k - 1];
+}
+
+template <class Test, class HitItem>
+bool Bvh::closestWith(const Test& test, const Ray& ray0, HitItem& hitItem) const {
   if (nodes_.empty()) return false;
   Ray ray = ray0;
-  const BvhRay br(ray);
-  double tEnter;
-  if (!br.enters(nodes_[0], ray.tmin, ray.tmax, tEnter)) return false;
-  struct Entry { uint32_t node; double t; };
-  Entry stack[kMaxDepth];
+  auto tmax = limit(test, ray.tmax);
+  using T = decltype(tmax);
+  T tEnter[4];
+  Entry<T> stack[kStackSize];
   int sp = 0;
-  uint32_t cur = 0;
+  Entry<T> cur{0, 0, T(0)};  // the root: node 0
   bool found = false;
   for (;;) {
-    const BvhNode& n = nodes_[cur];
-    if (!n.isLeaf()) {
-      double t0, t1;
-      bool h0 = br.enters(nodes_[n.index], ray.tmin, ray.tmax, t0);
-      bool h1 = br.enters(nodes_[n.index + 1], ray.tmin, ray.tmax, t1);
-      if (h0 && h1) {
-        // Nearer child now, the other later unless a hit closes in before it starts.
-        if (t1 < t0) {
-          stack[sp++] = {n.index, t0};
-          cur = n.index + 1;
+    if (cur.count == 0) {
+      const BvhNode& n = nodes_[cur.index];
+      int mask = test.test(n, tmax, tEnter);
+      if (mask) {
+        if ((mask & (mask - 1)) == 0) {
+          int c = __builtin_ctz(mask);
+          cur = {n.index[c], n.count[c], tEnter[c]};
         } else {
-          stack[sp++] = {n.index + 1, t1};
-          cur = n.index;
+          // Nearest child now, the others later unless a hit closes in before they start.
+          pushOrdered(n, mask, tEnter, stack, sp, cur);
         }
         continue;
       }
-      if (h0 || h1) {
-        cur = h0 ? n.index : n.index + 1;
-        continue;
-      }
     } else {
-      for (uint32_t s = n.index, e = n.index + n.count; s < e; ++s)
-        if (hitItem(itemOf(s), ray)) found = true;
+      bool hitHere = false;
+      for (uint32_t s = cur.index, e = s + cur.count; s < e; ++s)
+        if (hitItem(itemOf(s), ray)) hitHere = true;
+      if (hitHere) {
+        found = true;
+        tmax = limit(test, ray.tmax);
+      }
     }
     for (;;) {
       if (sp == 0) return found;
-      const Entry& e = stack[--sp];
-      if (e.t <= ray.tmax) {
-        cur = e.node;
-        break;
-      }
+      cur = stack[--sp];
+      if (double(cur.t) <= ray.tmax) break;
     }
   }
 }
 
-template <class Blocks>
-bool Bvh::any(const Ray& ray, Blocks&& blocks) const {
+template <class Test, class Blocks>
+bool Bvh::anyWith(const Test& test, const Ray& ray, Blocks& blocks) const {
   if (nodes_.empty()) return false;
-  const BvhRay br(ray);
-  double tEnter;
-  if (!br.enters(nodes_[0], ray.tmin, ray.tmax, tEnter)) return false;
-  uint32_t stack[kMaxDepth];
+  auto tmax = limit(test, ray.tmax);
+  using T = decltype(tmax);
+  T tEnter[4];
+  Entry<T> stack[kStackSize];
   int sp = 0;
-  uint32_t cur = 0;
+  Entry<T> cur{0, 0, T(0)};
   for (;;) {
-    const BvhNode& n = nodes_[cur];
-    if (!n.isLeaf()) {
-      double t0, t1;
-      bool h0 = br.enters(nodes_[n.index], ray.tmin, ray.tmax, t0);
-      bool h1 = br.enters(nodes_[n.index + 1], ray.tmin, ray.tmax, t1);
-      if (h0 && h1) {
-        // Nearer first here too: near occluders end the search sooner.
-        bool secondFirst = t1 < t0;
-        stack[sp++] = secondFirst ? n.index : n.index + 1;
-        cur = secondFirst ? n.index + 1 : n.index;
-        continue;
-      }
-      if (h0 || h1) {
-        cur = h0 ? n.index : n.index + 1;
+    if (cur.count == 0) {
+      const BvhNode& n = nodes_[cur.index];
+      int mask = test.test(n, tmax, tEnter);
+      if (mask) {
+        if ((mask & (mask - 1)) == 0) {
+          int c = __builtin_ctz(mask);
+          cur = {n.index[c], n.count[c], tEnter[c]};
+        } else {
+          // Nearest first here too: near occluders end the search sooner.
+          pushOrdered(n, mask, tEnter, stack, sp, cur);
+        }
         continue;
       }
     } else {
-      for (uint32_t s = n.index, e = n.index + n.count; s < e; ++s)
-        if (blocks(itemOf(s), static_cast<const Ray&>(ray))) return true;
+      for (uint32_t s = cur.index, e = s + cur.count; s < e; ++s)
+        if (blocks(itemOf(s), ray)) return true;
     }
     if (sp == 0) return false;
     cur = stack[--sp];
   }
 }
 
-template <class Visit>
-void Bvh::all(const Ray& ray, Visit&& visit) const {
+template <class Test, class Visit>
+void Bvh::allWith(const Test& test, const Ray& ray, Visit& visit) const {
   if (nodes_.empty()) return;
-  const BvhRay br(ray);
-  double tEnter;
-  if (!br.enters(nodes_[0], ray.tmin, ray.tmax, tEnter)) return;
-  uint32_t stack[kMaxDepth];
+  auto tmax = limit(test, ray.tmax);
+  using T = decltype(tmax);
+  T tEnter[4];
+  Entry<T> stack[kStackSize];
   int sp = 0;
-  uint32_t cur = 0;
+  Entry<T> cur{0, 0, T(0)};
   for (;;) {
-    const BvhNode& n = nodes_[cur];
-    if (!n.isLeaf()) {
-      double t0, t1;
-      bool h0 = br.enters(nodes_[n.index], ray.tmin, ray.tmax, t0);
-      bool h1 = br.enters(nodes_[n.index + 1], ray.tmin, ray.tmax, t1);
-      if (h0 && h1) stack[sp++] = n.index + 1;
-      if (h0 || h1) {
-        cur = h0 ? n.index : n.index + 1;
+    if (cur.count == 0) {
+      const BvhNode& n = nodes_[cur.index];
+      int mask = test.test(n, tmax, tEnter);
+      if (mask) {
+        int c = __builtin_ctz(mask);
+        cur = {n.index[c], n.count[c], tEnter[c]};
+        for (mask &= mask - 1; mask; mask &= mask - 1) {
+          int o = __builtin_ctz(mask);
+          stack[sp++] = {n.index[o], n.count[o], tEnter[o]};
+        }
         continue;
       }
     } else {
-      for (uint32_t s = n.index, e = n.index + n.count; s < e; ++s) visit(itemOf(s));
+      for (uint32_t s = cur.index, e = s + cur.count; s < e; ++s) visit(itemOf(s));
     }
     if (sp == 0) return;
     cur = stack[--sp];

@@ -111,34 +111,37 @@ void requireWellFormed(const Bvh& bvh, const std::vector<AABB>& items, uint32_t 
     return outer.lo.x <= inner.lo.x && outer.lo.y <= inner.lo.y && outer.lo.z <= inner.lo.z &&
            inner.hi.x <= outer.hi.x && inner.hi.y <= outer.hi.y && inner.hi.z <= outer.hi.z;
   };
-  std::vector<std::pair<uint32_t, int>> todo{{0, 0}};
-  int maxDepth = 0;
-  size_t reached = 0;
+  std::vector<int> visits(nodes.size(), 0);
+  std::vector<std::pair<uint32_t, AABB>> todo{{0, AABB::everything()}};
   while (!todo.empty()) {
-    auto [i, depth] = todo.back();
+    auto [i, parentBox] = todo.back();
     todo.pop_back();
-    ++reached;
-    maxDepth = std::max(maxDepth, depth);
+    REQUIRE(i < nodes.size());
+    visits[i]++;
     const BvhNode& n = nodes[i];
-    if (n.isLeaf()) {
-      REQUIRE(n.count <= maxLeaf);
-      for (uint32_t s = n.index; s < n.index + n.count; ++s) {
-        uint32_t item = bvh.order()[s];
-        REQUIRE(inside(items[item], n.bounds()));
-        seen[item]++;
+    int used = 0;
+    for (int c = 0; c < 4; ++c) {
+      if (n.isEmpty(c)) {
+        CHECK(n.bounds(c).empty());
+        continue;
       }
-    } else {
-      REQUIRE(n.index % 2 == 0);  // sibling pairs share a cache line
-      REQUIRE(n.index + 1 < nodes.size());
-      REQUIRE(inside(nodes[n.index].bounds(), n.bounds()));
-      REQUIRE(inside(nodes[n.index + 1].bounds(), n.bounds()));
-      todo.push_back({n.index, depth + 1});
-      todo.push_back({n.index + 1, depth + 1});
+      ++used;
+      REQUIRE(inside(n.bounds(c), parentBox));
+      if (n.isLeaf(c)) {
+        REQUIRE(n.count[c] <= maxLeaf);
+        for (uint32_t s = n.index[c]; s < n.index[c] + n.count[c]; ++s) {
+          uint32_t item = bvh.order()[s];
+          REQUIRE(inside(items[item], n.bounds(c)));
+          seen[item]++;
+        }
+      } else {
+        todo.push_back({n.index[c], n.bounds(c)});
+      }
     }
+    REQUIRE(used >= (i == 0 ? 1 : 2));
   }
-  CHECK(reached + 1 == nodes.size());  // every node but the padding is reachable
-  CHECK(maxDepth == bvh.depth());
-  CHECK(maxDepth < Bvh::kMaxDepth);
+  for (size_t i = 0; i < nodes.size(); ++i) REQUIRE(visits[i] == 1);  // a tree, all used
+  CHECK(bvh.depth() < Bvh::kMaxDepth);
   for (size_t i = 0; i < items.size(); ++i) {
     INFO("item " << i);
     REQUIRE(seen[i] == (items[i].empty() ? 0 : 1));
@@ -147,7 +150,10 @@ void requireWellFormed(const Bvh& bvh, const std::vector<AABB>& items, uint32_t 
 
 }  // namespace
 
-TEST_CASE("BVH nodes are 32 bytes", "[bvh]") { CHECK(sizeof(BvhNode) == 32); }
+TEST_CASE("BVH nodes hold four 32-byte child entries in two cache lines", "[bvh]") {
+  CHECK(sizeof(BvhNode) == 4 * 32);
+  CHECK(alignof(BvhNode) == 64);
+}
 
 TEST_CASE("BVH closest hit equals brute force on 2000 random spheres and 10^5 rays", "[bvh]") {
   std::mt19937_64 rng(1);
@@ -362,4 +368,23 @@ TEST_CASE("BVH traversal reports slots once the caller has taken the order", "[b
     REQUIRE(got.t == want.t);
     if (got.item >= 0) CHECK(order[got.item] == want.item);
   }
+}
+
+TEST_CASE("BVH float traversal keeps hits on items smaller than float spacing", "[bvh]") {
+  // Spheres of radius 1e-4 around x = 1e4, where floats are 1e-3 apart: their boxes round
+  // outward to a few float steps; rays come from afar, aimed at the centres, and graze.
+  std::mt19937_64 rng(10);
+  std::vector<TestSphere> spheres;
+  for (int i = 0; i < 3000; ++i)
+    spheres.push_back({Vec3(1e4) + randomVec(rng, -0.05, 0.05), 1e-4});
+  Bvh bvh(boundsOf(spheres));
+  std::vector<Ray> rays;
+  std::uniform_int_distribution<size_t> pick(0, spheres.size() - 1);
+  std::uniform_real_distribution<double> jitter(-1.2e-4, 1.2e-4);
+  for (int k = 0; k < 30000; ++k) {
+    Vec3 target = spheres[pick(rng)].c + Vec3(jitter(rng), jitter(rng), jitter(rng));
+    Vec3 o = target + randomVec(rng, -1e5, 1e5);
+    rays.emplace_back(o, target - o);
+  }
+  requireSameClosest(bvh, spheres, rays);
 }

@@ -51,14 +51,17 @@ class MockSphere final : public Shape {
   }
 
  private:
+  // Roots around the line's closest point to the centre (Ray Tracing Gems, ch. 7).
   bool roots(const Ray& ray, double& t0, double& t1) const {
     Vec3 oc = ray.o - c_;
-    double a = glm::dot(ray.d, ray.d), b = glm::dot(oc, ray.d), cc = glm::dot(oc, oc) - r_ * r_;
-    double disc = b * b - a * cc;
+    double a = glm::dot(ray.d, ray.d);
+    double tc = -glm::dot(oc, ray.d) / a;
+    Vec3 l = oc + tc * ray.d;
+    double disc = r_ * r_ - glm::dot(l, l);
     if (disc <= 0) return false;
-    double s = std::sqrt(disc);
-    t0 = (-b - s) / a;
-    t1 = (-b + s) / a;
+    double h = std::sqrt(disc / a);
+    t0 = tc - h;
+    t1 = tc + h;
     return true;
   }
   Vec3 c_;
