@@ -192,15 +192,16 @@ void writeImageFile(const Image& image, const std::string& path) {
 
   // Some writers do not report every failed write (a full disk, a file size limit):
   // reading the whole file back is the only proof that it is complete.
+  bool complete = false;
   try {
     Image check = readImageFile(temp.path.string(), PixelDecoding::AsStored);
-    if (check.width != image.width || check.height != image.height)
-      throw ImageIOError(fmt::format("{}x{} pixels instead of {}x{}", check.width, check.height,
-                                     image.width, image.height));
-  } catch (const ImageIOError& e) {
-    throw ImageIOError(
-        fmt::format("cannot write '{}': the written file is incomplete ({})", path, e.what()));
+    complete = check.width == image.width && check.height == image.height;
+  } catch (const ImageIOError&) {
   }
+  if (!complete)
+    throw ImageIOError(fmt::format(
+        "cannot write '{}': the file written cannot be read back complete (is the disk full, "
+        "or a file size limit reached?)", path));
 
   std::error_code ec;
   fs::rename(temp.path, target, ec);

@@ -4,6 +4,8 @@
 
 #include "scenegraph/light.h"
 
+#include <algorithm>
+
 namespace lucent {
 
 struct LightIncidence {
@@ -27,7 +29,8 @@ LightIncidence lightIncidence(const Light& light, const Vec3& p);
 
 // The shadow-ray targets of a light: 1 for point and spot lights, nu·nv for area lights.
 inline int shadowSampleCount(const Light& light) {
-  return light.type == LightType::Area ? light.samplesU * light.samplesV : 1;
+  if (light.type != LightType::Area) return 1;
+  return std::max(light.samplesU, 2) * std::max(light.samplesV, 2);  // the contract's minimum
 }
 
 // Shadow sample k of an area light: grid point (a, b) = (k mod nu, k div nu) of the
