@@ -21,14 +21,28 @@ double evalPolynomialDerivative(const double* c, int n, double x) {
 
 namespace {
 
+// p' and the magnitudes behind its coefficients.
+void derivative(const double* c, const double* cAbs, int n, double* d, double* dAbs) {
+  for (int i = 0; i < n; ++i) {
+    d[i] = (i + 1) * c[i + 1];
+    dAbs[i] = (i + 1) * cAbs[i + 1];
+  }
+}
+
 double errorBound(const double* cAbs, int n, double x) {
   double ax = std::abs(x), r = cAbs[n];
   for (int i = n - 1; i >= 0; --i) r = r * ax + cAbs[i];
   return gamma(2 * n + 6) * r;
 }
 
-// The one root of p in (a, b), where p(a) and p(b) have opposite signs and p is monotonic.
-double refineBracketed(const double* c, int n, double a, double b, double fa) {
+// The one root of p in (a, b), where p(a) and p(b) have opposite signs and p is monotonic:
+// Newton steps kept inside the shrinking bracket, bisection when a step would leave it
+// (Numerical Recipes' rtsafe). It stops once |p(x)| is within the rounding error of its
+// evaluation (then x is as good as the coefficients allow; one more Newton step is taken)
+// or the step falls below a few ulps: waiting for the step itself to vanish would make
+// Newton chase the rounding noise of p near the root for dozens of iterations.
+double refineBracketed(const double* c, const double* cAbs, int n, double a, double b,
+                       double fa) {
   double x = 0.5 * (a + b);
   for (int it = 0; it < 100; ++it) {
     double fx = evalPolynomial(c, n, x);
@@ -41,8 +55,10 @@ double refineBracketed(const double* c, int n, double a, double b, double fa) {
     }
     double df = evalPolynomialDerivative(c, n, x);
     double next = df != 0.0 ? x - fx / df : 0.5 * (a + b);
-    if (!(a < next && next < b)) next = 0.5 * (a + b);
-    if (std::abs(next - x) <= 2.0 * kMachineEps * std::abs(next) || next == a || next == b)
+    bool newton = a < next && next < b;
+    if (!newton) next = 0.5 * (a + b);
+    if (newton && std::abs(fx) <= errorBound(cAbs, n, x)) return next;
+    if (std::abs(next - x) <= 4.0 * kMachineEps * std::abs(next) || next == a || next == b)
       return next;
     x = next;
   }
@@ -51,7 +67,8 @@ double refineBracketed(const double* c, int n, double a, double b, double fa) {
 
 // Roots where p changes sign in (lo, hi), ascending (used for the derivatives, whose
 // touching roots are inflections of p and need no splitting).
-int signChangeRoots(const double* c, int n, double lo, double hi, double* out) {
+int signChangeRoots(const double* c, const double* cAbs, int n, double lo, double hi,
+                    double* out) {
   if (n == 1) {
     double x = -c[0] / c[1];
     if (lo < x && x < hi) {
@@ -60,12 +77,12 @@ int signChangeRoots(const double* c, int n, double lo, double hi, double* out) {
     }
     return 0;
   }
-  double d[4] = {0.0, 0.0, 0.0, 0.0};
-  for (int i = 0; i < n; ++i) d[i] = (i + 1) * c[i + 1];
+  double d[4] = {0.0, 0.0, 0.0, 0.0}, dAbs[4] = {0.0, 0.0, 0.0, 0.0};
+  derivative(c, cAbs, n, d, dAbs);
   double pts[6];
   int m = 0;
   pts[m++] = lo;
-  m += signChangeRoots(d, n - 1, lo, hi, pts + m);
+  m += signChangeRoots(d, dAbs, n - 1, lo, hi, pts + m);
   pts[m++] = hi;
   int count = 0;
   double fa = evalPolynomial(c, n, pts[0]);
@@ -74,7 +91,7 @@ int signChangeRoots(const double* c, int n, double lo, double hi, double* out) {
     if (fa == 0.0 && i > 0) {
       out[count++] = pts[i];
     } else if ((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0)) {
-      out[count++] = refineBracketed(c, n, pts[i], pts[i + 1], fa);
+      out[count++] = refineBracketed(c, cAbs, n, pts[i], pts[i + 1], fa);
     }
     fa = fb;
   }
@@ -94,12 +111,12 @@ int polynomialRoots(const double* c, const double* cAbs, int n, double lo, doubl
     return 0;
   }
   // Split points: the ends and the critical points (roots of p').
-  double d[4] = {0.0, 0.0, 0.0, 0.0};
-  for (int i = 0; i < n; ++i) d[i] = (i + 1) * c[i + 1];
+  double d[4] = {0.0, 0.0, 0.0, 0.0}, dAbs[4] = {0.0, 0.0, 0.0, 0.0};
+  derivative(c, cAbs, n, d, dAbs);
   double pts[6];
   int m = 0;
   pts[m++] = lo;
-  m += signChangeRoots(d, n - 1, lo, hi, pts + m);
+  m += signChangeRoots(d, dAbs, n - 1, lo, hi, pts + m);
   pts[m++] = hi;
 
   // Sign at each split point; 0 for an interior critical point where p is 0 up to its
@@ -130,7 +147,7 @@ int polynomialRoots(const double* c, const double* cAbs, int n, double lo, doubl
       continue;
     }
     if (sgn[i] != lastSign && sgn[i - 1] != 0) {
-      out[count++] = {refineBracketed(c, n, pts[i - 1], pts[i], val[i - 1]), false};
+      out[count++] = {refineBracketed(c, cAbs, n, pts[i - 1], pts[i], val[i - 1]), false};
     }
     lastSign = sgn[i];
   }

@@ -52,18 +52,19 @@ double polish(double R, double r, const Vec3& o, const Vec3& d, double t, bool t
     return tangent ? e.df : e.f;
   };
   double dg;
-  double best = t, bestAbs = std::abs(g(t, dg));
-  double x = t;
+  double x = t, gx = g(x, dg);
+  double best = x, bestAbs = std::abs(gx);
   for (int it = 0; it < 4 && bestAbs > 0.0; ++it) {
-    double gx = g(x, dg);
     if (dg == 0.0 || !std::isfinite(dg)) break;
     double next = x - gx / dg;
-    double dummy;
-    double a = std::abs(g(next, dummy));
-    if (!(a < bestAbs)) break;
-    best = next;
-    bestAbs = a;
-    x = next;
+    if (next == x) break;
+    double dn;
+    double gn = g(next, dn);
+    if (!(std::abs(gn) < bestAbs)) break;
+    x = best = next;
+    gx = gn;
+    dg = dn;
+    bestAbs = std::abs(gn);
   }
   return best;
 }
