@@ -124,3 +124,34 @@ TEST_CASE("mesh: an open mesh lists every hit as entering", "[primitives][mesh]"
   REQUIRE(square.intersect(Ray(Vec3(0.5, 0.5, 1), Vec3(0, 0, -1)), h));
   CHECK(h.t == 1.0);
 }
+
+TEST_CASE("mesh: zero-area triangles are never hit and never give NaN", "[primitives][mesh]") {
+  // A closed box mesh plus slivers: a collinear triangle across the top face and one whose
+  // corners coincide. They change nothing: same crossings as the plain box.
+  auto data = boxMesh(Vec3(-1.0), Vec3(1.0));
+  data->positions.push_back({0, 1, 0});  // 8: on the edge-free middle of the top face
+  data->triangles.push_back({2, 8, 7});  // (-1,1,-1), (0,1,0), (1,1,1): collinear
+  data->triangles.push_back({8, 8, 8});
+  TriangleMesh mesh(data, false);
+  Box box(Vec3(-1.0), Vec3(1.0));
+  CHECK(mesh.triangleCount() == 14);
+  Rng rng(24);
+  for (int i = 0; i < 3000; ++i) {
+    Ray ray = randomRayAt(rng, box.bounds());
+    if (i % 3 == 0) ray = Ray(Vec3(uniform(rng, -1, 1), 3, uniform(rng, -1, 1)), Vec3(0, -1, 0));
+    Hit h;
+    bool hit = mesh.intersect(ray, h);
+    REQUIRE(hit == box.occluded(ray));
+    if (hit) {
+      REQUIRE(h.part < 12);
+      SurfaceInfo si = mesh.surface(ray, h);
+      REQUIRE(isFinite(si.p));
+      REQUIRE(isFinite(si.ng));
+    }
+  }
+  // Straight down through the sliver's line.
+  Hit h;
+  REQUIRE(mesh.intersect(Ray(Vec3(0.5, 3, 0.5), Vec3(0, -1, 0)), h));
+  CHECK(h.part < 12);
+  CHECK(h.t == 2.0);
+}
