@@ -1,0 +1,99 @@
+#include "pov_export.h"
+
+#include "pov_camera.h"
+#include "pov_geometry.h"
+#include "pov_lights.h"
+#include "pov_materials.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace lucent {
+
+namespace {
+
+// POV-Ray's MAX_TRACE_LEVEL_LIMIT: larger max_trace_level values are refused.
+constexpr int kPovMaxTraceLevel = 256;
+
+void writeSettings(const RenderSettings& r, PovWriter& out, PovIssues& issues) {
+  int depth = r.maxDepth;
+  if (depth > kPovMaxTraceLevel) {
+    issues.warning(r.loc, fmt::format("render: max-depth {} exceeds POV-Ray's limit of {}",
+                                      r.maxDepth, kPovMaxTraceLevel));
+    depth = kPovMaxTraceLevel;
+  }
+  out.open("global_settings");
+  // Colours are linear: with assumed_gamma 1.0 POV-Ray neither decodes nor re-encodes them
+  // before its file output gamma.
+  out.line("assumed_gamma 1.0");
+  // Primary ray = level 1 in both; a ray beyond the limit is black in both.
+  out.line(fmt::format("max_trace_level {}", depth));
+  out.line("adc_bailout " + povNumber(r.minWeight));
+  out.line("ambient_light " + povRgb(r.ambient));
+  out.close();
+  out.line("background { " + povRgb(r.background) + " }");
+}
+
+}  // namespace
+
+bool PovExport::ok() const {
+  for (const PovIssue& i : issues)
+    if (i.error) return false;
+  return true;
+}
+
+PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
+  PovIssues issues;
+  PovExport result;
+  const Camera* camera = scene.findCamera(options.camera);
+  if (!camera) {
+    issues.error(SourceLoc{scene.file}, options.camera.empty()
+                                            ? "the scene has no <camera>"
+                                            : fmt::format("no camera named '{}'", options.camera));
+    result.issues = issues.all();
+    return result;
+  }
+  const RenderSettings& r = scene.render;
+
+  PovWriter out;
+  out.line(fmt::format("// {} exported by Lucent as a POV-Ray 3.7 scene.",
+                       std::filesystem::path(scene.file).filename().string()));
+  out.line(fmt::format("// Render: povray +I<this file> +W{} +H{} -A   (+FN writes sRGB, "
+                       "File_Gamma=1.0 linear)",
+                       r.width, r.height));
+  if (r.samples > 1)
+    // Sampling is a command-line matter in POV-Ray; its grid is not Lucent's Halton set.
+    out.line(fmt::format("// Lucent takes {} samples per pixel at Halton offsets; the closest "
+                         "POV-Ray has is +A0.0 -J +AM1 +R{}",
+                         r.samples, std::max(2, static_cast<int>(std::lround(std::sqrt(r.samples))))));
+  // Without #version POV-Ray 3.7 applies the 3.62 rules (opacity, gamma): mandatory.
+  out.line("#version 3.7;");
+  out.blank();
+  writeSettings(r, out, issues);
+  out.blank();
+  writeCamera(*camera, r, out, issues);
+  out.blank();
+
+  PovMaterials materials(scene.materials, issues);
+  PovCameraFrame frame = povCameraFrame(*camera);
+  PovGeometry geometry(scene, materials, frame.location, issues);
+  PovWriter declarations, objects;
+  geometry.write(declarations, objects);
+
+  const bool anySpecular = materials.anySpecular(geometry.usedMaterials());
+  for (const Light& light : scene.lights) writeLight(light, anySpecular, out, issues);
+  if (!scene.lights.empty()) out.blank();
+  materials.writeDeclarations(geometry.usedMaterials(), out);
+  out.blank();
+  out.append(declarations);
+  out.append(objects);
+
+  result.issues = issues.all();
+  if (result.ok()) result.text = out.text();
+  return result;
+}
+
+}  // namespace lucent

@@ -1,0 +1,241 @@
+#include "pov_geometry.h"
+
+#include "primitives/triangle_mesh.h"
+
+#include <fmt/core.h>
+
+namespace lucent {
+
+namespace {
+
+const char* csgKeyword(NodeKind k) {
+  switch (k) {
+    case NodeKind::Union: return "union";
+    case NodeKind::Merge: return "merge";
+    case NodeKind::Intersection: return "intersection";
+    default: return "difference";
+  }
+}
+
+// A direction unlikely to run along a mesh's edges or faces, for POV-Ray's inside test of
+// closed meshes (a ray parity count).
+const Vec3 kInsideVector(0.2672612419124244, 0.5345224838248488, 0.8017837257372732);
+
+}  // namespace
+
+bool cameraInsidePlane(const PlaneSpec& plane, const Mat4& m, const Vec3& camera) {
+  Vec3 pointWorld = Vec3(m * Vec4(plane.normal * plane.offset, 1.0));
+  Vec3 normalWorld = glm::transpose(glm::inverse(Mat3(m))) * plane.normal;
+  return glm::dot(normalWorld, camera - pointWorld) < 0.0;
+}
+
+PovGeometry::PovGeometry(const Scene& scene, const PovMaterials& materials,
+                         const Vec3& camera, PovIssues& issues)
+    : scene_(scene), materials_(materials), camera_(camera), issues_(issues),
+      used_(scene.materials.size(), false) {}
+
+void PovGeometry::write(PovWriter& declarations, PovWriter& objects) {
+  writeNode(*scene_.root, Mat4(1.0), 0, true, objects);
+  declarations.append(meshDeclarations_);
+}
+
+int PovGeometry::operandCount(const Node& node) const {
+  switch (node.kind) {
+    case NodeKind::Group: {
+      int n = 0;
+      for (const auto& c : node.children) n += operandCount(*c);
+      return n;
+    }
+    case NodeKind::Use: return node.target ? operandCount(*node.target) : 0;
+    case NodeKind::Shape: return 1;
+    default: {
+      int n = 0;
+      for (const auto& c : node.children) n += operandCount(*c);
+      return n > 0 ? 1 : 0;  // an empty CSG node is dropped, as the World drops it
+    }
+  }
+}
+
+void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t inherited,
+                            bool topLevel, PovWriter& out) {
+  const Mat4 m = fromContext * node.parentFromNode;
+  const uint32_t material = node.material.value_or(inherited);
+  switch (node.kind) {
+    case NodeKind::Group:
+      for (const auto& c : node.children) writeNode(*c, m, material, topLevel, out);
+      return;
+    case NodeKind::Use:
+      // The referenced node's own transform applies first, then the <use>'s.
+      if (node.target) writeNode(*node.target, m, material, topLevel, out);
+      return;
+    case NodeKind::Shape:
+      writeLeaf(node, m, material, topLevel, out);
+      return;
+    case NodeKind::Union:
+    case NodeKind::Merge:
+    case NodeKind::Intersection:
+    case NodeKind::Difference: {
+      int operands = 0;
+      for (const auto& c : node.children) operands += operandCount(*c);
+      if (operands == 0) return;
+      if (operands == 1) {
+        // One operand is the operand itself (POV-Ray would warn about a one-object CSG).
+        for (const auto& c : node.children) writeNode(*c, m, material, false, out);
+        return;
+      }
+      out.open(csgKeyword(node.kind), "<" + node.element + "> " + node.loc.str());
+      for (const auto& c : node.children) writeNode(*c, Mat4(1.0), material, false, out);
+      if (!isIdentity(m)) out.line(povMatrix(m));
+      out.close();
+      return;
+    }
+  }
+}
+
+std::string PovGeometry::meshName(const MeshSpec& mesh, const Node& node) {
+  auto key = std::make_pair(mesh.data.get(), mesh.smooth);
+  auto found = meshNames_.find(key);
+  if (found != meshNames_.end()) return found->second;
+
+  const MeshData& data = *mesh.data;
+  // The normals the renderer uses (scenegraph/make_shape.cpp): the file's for auto, none
+  // for false, computed vertex normals for true.
+  std::vector<Vec3> normals;
+  if (mesh.smooth == SmoothMode::Auto) normals = data.normals;
+  if (mesh.smooth == SmoothMode::True) normals = computeVertexNormals(data);
+  if (normals.size() != data.positions.size()) normals.clear();
+  const bool uvs = !data.uvs.empty() && data.uvs.size() == data.positions.size();
+
+  std::string name = fmt::format("Mesh{}", meshNames_.size());
+  meshNames_[key] = name;
+  PovWriter& out = meshDeclarations_;
+  out.line(fmt::format("// <mesh{}> {}", mesh.src.empty() ? "" : " src=\"" + mesh.src + "\"",
+                       node.loc.str()));
+  out.open(fmt::format("#declare {} = mesh2", name));
+  out.open("vertex_vectors");
+  out.line(fmt::format("{},", data.positions.size()));
+  for (size_t i = 0; i < data.positions.size(); ++i)
+    out.line(povVector(data.positions[i]) + (i + 1 < data.positions.size() ? "," : ""));
+  out.close();
+  if (!normals.empty()) {
+    out.open("normal_vectors");
+    out.line(fmt::format("{},", normals.size()));
+    for (size_t i = 0; i < normals.size(); ++i)
+      out.line(povVector(normals[i]) + (i + 1 < normals.size() ? "," : ""));
+    out.close();
+  }
+  if (uvs) {
+    out.open("uv_vectors");
+    out.line(fmt::format("{},", data.uvs.size()));
+    for (size_t i = 0; i < data.uvs.size(); ++i)
+      out.line(fmt::format("<{}, {}>{}", povNumber(data.uvs[i].x), povNumber(data.uvs[i].y),
+                           i + 1 < data.uvs.size() ? "," : ""));
+    out.close();
+  }
+  out.open("face_indices");
+  out.line(fmt::format("{},", data.triangles.size()));
+  for (size_t i = 0; i < data.triangles.size(); ++i) {
+    const auto& t = data.triangles[i];
+    out.line(fmt::format("<{}, {}, {}>{}", t[0], t[1], t[2],
+                         i + 1 < data.triangles.size() ? "," : ""));
+  }
+  out.close();
+  // A closed mesh is a solid in Lucent; POV-Ray needs an inside_vector to know its inside.
+  if (data.closed) out.line("inside_vector " + povVector(kInsideVector));
+  out.close();
+  out.blank();
+  return name;
+}
+
+void PovGeometry::writeShapeHead(const Node& node, const Mat4& m, uint32_t material,
+                                 bool topLevel, PovWriter& out) {
+  const ShapeSpec& spec = *node.shape;
+  const std::string where = "<" + node.element + "> " + node.loc.str();
+  if (const auto* s = std::get_if<SphereSpec>(&spec)) {
+    out.open("sphere", where);
+    out.line(fmt::format("{}, {}", povVector(s->center), povNumber(s->radius)));
+  } else if (const auto* b = std::get_if<BoxSpec>(&spec)) {
+    out.open("box", where);
+    out.line(fmt::format("{}, {}", povVector(b->min), povVector(b->max)));
+  } else if (const auto* c = std::get_if<CylinderSpec>(&spec)) {
+    out.open("cylinder", where);
+    out.line(fmt::format("{}, {}, {}", povVector(c->base), povVector(c->cap),
+                         povNumber(c->radius)));
+    if (c->open) out.line("open");
+  } else if (const auto* k = std::get_if<ConeSpec>(&spec)) {
+    out.open("cone", where);
+    out.line(fmt::format("{}, {}, {}, {}", povVector(k->base), povNumber(k->baseRadius),
+                         povVector(k->cap), povNumber(k->capRadius)));
+    if (k->open) out.line("open");
+  } else if (const auto* t = std::get_if<TorusSpec>(&spec)) {
+    // Both lie in the xz-plane around the y axis.
+    out.open("torus", where);
+    out.line(fmt::format("{}, {}", povNumber(t->major), povNumber(t->minor)));
+  } else if (const auto* p = std::get_if<PlaneSpec>(&spec)) {
+    // Same convention: n̂·x = d, inside n̂·x < d. A top-level plane holding the camera is
+    // turned inside out (same surface) unless the camera is meant to be in its medium.
+    const Material& mat = scene_.materials[material];
+    bool medium = (mat.isTransmissive() && mat.ior != 1.0) || mat.isAbsorbing();
+    bool flip = topLevel && !medium && cameraInsidePlane(*p, m, camera_);
+    out.open("plane", where + (flip ? " (turned so the camera is outside)" : ""));
+    out.line(fmt::format("{}, {}", povVector(flip ? -p->normal : p->normal),
+                         povNumber(flip ? -p->offset : p->offset)));
+  } else if (const auto* d = std::get_if<DiscSpec>(&spec)) {
+    out.open("disc", where);
+    std::string hole = d->innerRadius > 0.0 ? ", " + povNumber(d->innerRadius) : "";
+    out.line(fmt::format("{}, {}, {}{}", povVector(d->center), povVector(d->normal),
+                         povNumber(d->radius), hole));
+  } else if (const auto* tri = std::get_if<TriangleSpec>(&spec)) {
+    if (tri->normals) {
+      const auto& n = *tri->normals;
+      out.open("smooth_triangle", where);
+      out.line(fmt::format("{}, {},", povVector(tri->a), povVector(n[0])));
+      out.line(fmt::format("{}, {},", povVector(tri->b), povVector(n[1])));
+      out.line(fmt::format("{}, {}", povVector(tri->c), povVector(n[2])));
+    } else {
+      out.open("triangle", where);
+      out.line(fmt::format("{}, {}, {}", povVector(tri->a), povVector(tri->b),
+                           povVector(tri->c)));
+    }
+  } else if (const auto* mesh = std::get_if<MeshSpec>(&spec)) {
+    out.open("object", where);
+    out.line(meshName(*mesh, node));
+  }
+}
+
+void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
+                            PovWriter& out) {
+  if (!node.shape) return;
+  if (const auto* mesh = std::get_if<MeshSpec>(&*node.shape)) {
+    if (!mesh->data || mesh->data->triangles.empty()) {
+      issues_.error(node.loc, "<mesh> has no triangles; POV-Ray cannot hold an empty mesh2");
+      return;
+    }
+  }
+  const Material& mat = scene_.materials[material];
+  if (!isSolid(*node.shape) && mat.isTransmissive() && mat.ior != 1.0)
+    issues_.warning(node.loc, fmt::format("<{}> has no inside: Lucent passes light straight "
+                                          "through it, POV-Ray refracts with ior {}",
+                                          node.element, mat.ior));
+  used_[material] = true;
+  if (const auto* box = std::get_if<BoxSpec>(&*node.shape); box && materials_.usesImageMap(material)) {
+    // Each face has its own copy of the image: the box as the intersection of its six
+    // face planes, each with its own mapping. The same solid, surface and inside.
+    out.open("intersection", "<box> " + node.loc.str() + " with a per-face image map");
+    for (const BoxFace& face : boxFaces(*box)) {
+      out.open("plane");
+      out.line(fmt::format("{}, {}", povVector(face.normal), povNumber(face.offset)));
+      materials_.writeFor(material, face.mapping, "box", node.loc, out, issues_);
+      out.close();
+    }
+    if (!isIdentity(m)) out.line(povMatrix(m));
+    out.close();
+    return;
+  }
+  writeShapeHead(node, m, material, topLevel, out);
+  materials_.writeFor(material, *node.shape, node.loc, out, issues_);
+  if (!isIdentity(m)) out.line(povMatrix(m));
+  out.close();
+}
+
+}  // namespace lucent

@@ -1,0 +1,60 @@
+// The node hierarchy as POV-Ray objects: every primitive, CSG operations, transforms as
+// `matrix`, and the material of each leaf.
+//
+// Groups and <use> are flattened exactly as the World builds them (scenegraph/world.cpp):
+// their children join the enclosing list (the scene's top level or a CSG operation's
+// operands), with the group's transform composed in, so POV-Ray sees the same objects and
+// the same CSG operands. Every leaf carries its own resolved material (POV-Ray lets a
+// CSG's texture reach only children without one, and a texture written inside a leaf
+// before its transform is evaluated in the leaf's object space, where Lucent evaluates a
+// checker). Meshes are declared once (mesh2) and instanced with `object`.
+#pragma once
+
+#include "pov_materials.h"
+#include "pov_writer.h"
+
+#include "scenegraph/scene.h"
+
+#include <map>
+#include <vector>
+
+namespace lucent {
+
+class PovGeometry {
+ public:
+  // `camera` is the camera's world position: planes that contain it are written facing the
+  // other way (see writeScene), so that POV-Ray does not start the camera ray inside them.
+  PovGeometry(const Scene& scene, const PovMaterials& materials, const Vec3& camera,
+              PovIssues& issues);
+
+  // Writes every top-level object into `objects` and the mesh declarations they use into
+  // `declarations`; `used` gets the indices of the materials referenced.
+  void write(PovWriter& declarations, PovWriter& objects);
+  const std::vector<bool>& usedMaterials() const { return used_; }
+
+ private:
+  void writeNode(const Node& node, const Mat4& fromContext, uint32_t inherited, bool topLevel,
+                 PovWriter& out);
+  void writeLeaf(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
+                 PovWriter& out);
+  void writeShapeHead(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
+                      PovWriter& out);
+  std::string meshName(const MeshSpec& mesh, const Node& node);
+  // Operands a CSG node gets once groups and <use> are flattened.
+  int operandCount(const Node& node) const;
+
+  const Scene& scene_;
+  const PovMaterials& materials_;
+  Vec3 camera_;
+  PovIssues& issues_;
+  std::vector<bool> used_;
+  PovWriter meshDeclarations_;
+  std::map<std::pair<const MeshData*, SmoothMode>, std::string> meshNames_;
+};
+
+// Should a top-level plane be written facing the other way because the camera is inside
+// it? `worldFromObject` places the plane. (POV-Ray starts camera rays inside every object
+// that contains the camera; inside two, surfaces act as overlaps without refraction.)
+bool cameraInsidePlane(const PlaneSpec& plane, const Mat4& worldFromObject, const Vec3& camera);
+
+}  // namespace lucent

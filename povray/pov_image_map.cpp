@@ -1,0 +1,216 @@
+#include "pov_image_map.h"
+
+#include "primitives/plane.h"
+
+#include <OpenImageIO/imageio.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace lucent {
+
+std::string povImageFormat(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".png") return "png";
+  if (ext == ".jpg" || ext == ".jpeg") return "jpeg";
+  if (ext == ".tif" || ext == ".tiff") return "tiff";
+  if (ext == ".exr") return "exr";
+  if (ext == ".hdr") return "hdr";
+  if (ext == ".ppm") return "ppm";
+  if (ext == ".pgm") return "pgm";
+  if (ext == ".gif") return "gif";
+  if (ext == ".tga") return "tga";
+  if (ext == ".bmp") return "bmp";
+  return "";
+}
+
+namespace {
+
+// A matrix whose columns (the images of x, y, z) are a, b, c.
+Mat4 basis(const Vec3& a, const Vec3& b, const Vec3& c) {
+  Mat4 m(1.0);
+  m[0] = Vec4(a, 0.0);
+  m[1] = Vec4(b, 0.0);
+  m[2] = Vec4(c, 0.0);
+  return m;
+}
+
+// What Lucent decodes (render/texture.cpp): sRGB when OpenImageIO says so, or for 8-bit
+// files that say nothing; the rest is taken as linear. POV-Ray is told the same explicitly.
+// Also reports an alpha channel, which POV-Ray would turn into transparency.
+struct ImageFacts {
+  bool readable = false;
+  bool srgb = false;
+  bool floating = false;
+  bool alpha = false;
+};
+
+ImageFacts imageFacts(const std::string& path) {
+  ImageFacts f;
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return f;
+  const OIIO::ImageSpec& spec = in->spec();
+  f.readable = true;
+  std::string space = spec.get_string_attribute("oiio:ColorSpace");
+  f.srgb = OIIO::Strutil::iequals(space, "sRGB") ||
+           (space.empty() && spec.format.basetype == OIIO::TypeDesc::UINT8);
+  f.floating = spec.format.is_floating_point();
+  f.alpha = spec.alpha_channel >= 0 || spec.nchannels == 2 || spec.nchannels == 4;
+  in->close();
+  return f;
+}
+
+}  // namespace
+
+ImageMapping imageMappingFor(const ShapeSpec& shape) {
+  ImageMapping m;
+  if (const auto* sphere = std::get_if<SphereSpec>(&shape)) {
+    m.kind = ImageMapping::Spherical;
+    m.center = sphere->center;
+  } else if (const auto* plane = std::get_if<PlaneSpec>(&shape)) {
+    // (u, v) = (p·t1, p·t2) (primitives/plane.cpp).
+    Vec3 t1, t2;
+    planeTangents(plane->normal, t1, t2);
+    m.kind = ImageMapping::Planar;
+    m.uvFromObject = glm::transpose(basis(t1, t2, plane->normal));
+  } else if (const auto* disc = std::get_if<DiscSpec>(&shape)) {
+    // (u, v) = ((p − c)·t1, (p − c)·t2) (primitives/disc.cpp).
+    Vec3 t1, t2;
+    planeTangents(disc->normal, t1, t2);
+    m.kind = ImageMapping::Planar;
+    Mat4 rows = glm::transpose(basis(t1, t2, disc->normal));
+    Mat4 toCentre(1.0);
+    toCentre[3] = Vec4(-disc->center, 1.0);
+    m.uvFromObject = rows * toCentre;
+  } else if (const auto* mesh = std::get_if<MeshSpec>(&shape)) {
+    if (mesh->data && !mesh->data->uvs.empty() &&
+        mesh->data->uvs.size() == mesh->data->positions.size())
+      m.kind = ImageMapping::MeshUV;
+  }
+  return m;
+}
+
+std::vector<BoxFace> boxFaces(const BoxSpec& box) {
+  // Face (u, v) as primitives/box.cpp computes them: frac(i, fromMax) is the position along
+  // axis i across the box, measured from its min side or (fromMax) its max side.
+  const Vec3 lo = glm::min(box.min, box.max), hi = glm::max(box.min, box.max);
+  const Vec3 e = hi - lo;
+  auto frac = [&](int i, bool fromMax) {
+    Vec4 row(0.0);  // row·(p, 1)
+    if (!(e[i] > 0.0)) return row;
+    row[i] = fromMax ? -1.0 / e[i] : 1.0 / e[i];
+    row[3] = fromMax ? hi[i] / e[i] : -lo[i] / e[i];
+    return row;
+  };
+  std::vector<BoxFace> faces;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      const bool maxSide = side == 1;
+      Vec4 u, v;
+      if (axis == 0) {  // ±x: right is ∓z, up is +y
+        u = frac(2, maxSide);
+        v = frac(1, false);
+      } else if (axis == 1) {  // +y: right +x, up −z; −y: right +x, up +z
+        u = frac(0, false);
+        v = frac(2, maxSide);
+      } else {  // ±z: right is ±x, up is +y
+        u = frac(0, !maxSide);
+        v = frac(1, false);
+      }
+      Vec4 w(0.0);
+      w[axis] = 1.0;
+      BoxFace f;
+      f.normal = Vec3(0.0);
+      f.normal[axis] = maxSide ? 1.0 : -1.0;
+      f.offset = maxSide ? hi[axis] : -lo[axis];
+      f.mapping.kind = ImageMapping::Planar;
+      // Rows u, v, w, (0 0 0 1) as a column-major glm matrix.
+      f.mapping.uvFromObject = glm::transpose(Mat4(u, v, w, Vec4(0.0, 0.0, 0.0, 1.0)));
+      faces.push_back(f);
+    }
+  }
+  return faces;
+}
+
+void writeImagePigment(const ImageTexture& image, double filter, double transmit,
+                       const ImageMapping& mapping, const char* shapeName, const SourceLoc& loc,
+                       const std::string& materialName, PovWriter& out, PovIssues& issues) {
+  std::string format = povImageFormat(image.path);
+  if (format.empty()) {
+    issues.error(image.loc, fmt::format("{}: POV-Ray cannot read the image '{}'", materialName,
+                                        image.path));
+    return;
+  }
+  ImageFacts facts = imageFacts(image.path);
+  if (!facts.readable) {
+    issues.error(image.loc, fmt::format("{}: cannot read the image '{}'", materialName,
+                                        image.path));
+    return;
+  }
+  if (facts.alpha)
+    issues.warning(image.loc, fmt::format("{}: the image '{}' has an alpha channel, which "
+                                          "POV-Ray uses as transparency and Lucent ignores",
+                                          materialName, image.path));
+  if (mapping.kind == ImageMapping::None) {
+    issues.error(loc, fmt::format("<{}> with the image texture of {}: POV-Ray has no mapping "
+                                  "equal to Lucent's (u,v) for it (plane, disc, box, sphere "
+                                  "and meshes with uvs can be exported)",
+                                  shapeName, materialName));
+    return;
+  }
+  const bool unitScale = image.scale.x == 1.0 && image.scale.y == 1.0;
+  if (mapping.kind == ImageMapping::Spherical && !unitScale) {
+    issues.error(loc, fmt::format("<{}> with the image texture of {}: POV-Ray's spherical "
+                                  "map covers the sphere once; image scale {} {} has no "
+                                  "equivalent",
+                                  shapeName, materialName, image.scale.x, image.scale.y));
+    return;
+  }
+
+  std::string absolute = std::filesystem::absolute(image.path).lexically_normal().string();
+  std::string map = fmt::format("image_map {{ {} {}", format, povString(absolute));
+  if (!facts.floating) map += facts.srgb ? " gamma srgb" : " gamma 1.0";
+  if (mapping.kind == ImageMapping::Spherical) map += " map_type 1";
+  map += " interpolate 2";
+  if (filter > 0.0) map += " filter all " + povFloat(filter);
+  if (transmit > 0.0) map += " transmit all " + povFloat(transmit);
+  map += " }";
+
+  // Lucent reads the image at (u / scale.x, v / scale.y).
+  const Vec3 scale(image.scale.x, image.scale.y, 1.0);
+  out.open("pigment");
+  switch (mapping.kind) {
+    case ImageMapping::MeshUV:
+      // The pattern is evaluated at (u, v, 0): x, y of the planar map.
+      out.line("uv_mapping");
+      out.line(map);
+      if (!unitScale) out.line("scale " + povVector(scale));
+      break;
+    case ImageMapping::Spherical:
+      // Pattern point q = R(p − c) with R(x, y, z) = (−z, −y, −x), its own inverse: then
+      // POV-Ray's longitude (from +x towards +z) is Lucent's atan2(x, z) + π and its
+      // latitude 0.5 + asin(q.y)/π is Lucent's acos(y/r)/π.
+      out.line(map);
+      out.line(povMatrix(basis(Vec3(0, 0, -1), Vec3(0, -1, 0), Vec3(-1, 0, 0))));
+      if (mapping.center != Vec3(0.0)) out.line("translate " + povVector(mapping.center));
+      break;
+    case ImageMapping::Planar: {
+      // POV-Ray evaluates the pattern at T⁻¹·p and reads the planar map at its x, y; so
+      // T⁻¹ = scale⁻¹ · uvFromObject.
+      Mat4 inverseScale = glm::scale(Mat4(1.0), 1.0 / scale);
+      out.line(map);
+      out.line(povMatrix(glm::inverse(inverseScale * mapping.uvFromObject)));
+      break;
+    }
+    case ImageMapping::None:
+      break;
+  }
+  out.close();
+}
+
+}  // namespace lucent

@@ -1,0 +1,283 @@
+#include "pov_materials.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+namespace lucent {
+
+namespace {
+
+Vec3 v3(const Color& c) { return Vec3(c.r, c.g, c.b); }
+bool isZero(const Vec3& c) { return c.x == 0.0 && c.y == 0.0 && c.z == 0.0; }
+bool isGrey(const Vec3& c) { return c.x == c.y && c.y == c.z; }
+// Colours are float in both renderers: the mean as a float reads (and prints) cleanly.
+double mean(const Vec3& c) { return static_cast<float>((c.x + c.y + c.z) / 3.0); }
+
+// term / divisor per channel; a channel with term > 0 over a zero divisor cannot be made
+// (POV-Ray multiplies the term by the pigment, which is 0 there): reported by `bad`.
+Vec3 divide(const Vec3& term, const Vec3& divisor, bool& bad) {
+  Vec3 r(0.0);
+  for (int i = 0; i < 3; ++i) {
+    if (term[i] == 0.0) continue;
+    if (divisor[i] > 0.0)
+      r[i] = term[i] / divisor[i];
+    else
+      bad = true;
+  }
+  return r;
+}
+
+// A number computed from float colours, as short as its float value.
+std::string floatText(double v) { return fmt::format("{}", static_cast<float>(v)); }
+
+std::string colourText(const Color& c) {
+  if (c.r == c.g && c.g == c.b) return fmt::format("{}", c.r);
+  return fmt::format("{} {} {}", c.r, c.g, c.b);
+}
+
+}  // namespace
+
+std::string materialLabel(const Material& m) {
+  if (m.id == "(default)") return "the default material";
+  if (m.id.empty()) return "the inline material";
+  return fmt::format("material '{}'", m.id);
+}
+
+PovSurface povSurface(const Material& m, PovIssues& issues) {
+  PovSurface s;
+  const std::string name = materialLabel(m);
+  const Vec3 kd = v3(m.diffuse), ka = v3(m.ambient), ke = v3(m.emissive);
+  const Vec3 ks = v3(m.specular), kr = v3(m.reflective), kt = v3(m.transmissive);
+  const bool hasTexture = m.hasTexture();
+  const bool isImage = std::holds_alternative<ImageTexture>(m.texture);
+  const bool noLocal = isZero(kd) && isZero(ka) && isZero(ke);
+
+  // Transparency. POV-Ray transmits F = P·filter + transmit and scales the local terms by
+  // a = 1 − filter − transmit.
+  bool filterOnly = false;
+  if (!isZero(kt)) {
+    if (isGrey(kt)) {
+      s.transmit = kt.x;
+    } else if (noLocal) {
+      // Nothing local to keep: P = k_t, filter 1 gives F = k_t exactly (and a = 0).
+      filterOnly = true;
+      s.filter = 1.0;
+      s.pigmentScale = kt;
+    } else {
+      s.transmit = mean(kt);
+      issues.warning(m.loc, fmt::format("{}: a coloured transmissive ({}) with diffuse, ambient "
+                                        "or emissive has no POV-Ray equivalent (its filter "
+                                        "colour is the diffuse pigment); transmit {} is used",
+                                        name, colourText(m.transmissive),
+                                        floatText(s.transmit)));
+    }
+  }
+  const double a = 1.0 - s.filter - s.transmit;
+  if (!noLocal && !(a > 0.0)) {
+    issues.error(m.loc, fmt::format("{}: transmissive {} with diffuse, ambient or emissive has "
+                                    "no POV-Ray equivalent: POV-Ray scales those by "
+                                    "1 - transmit = {}",
+                                    name, colourText(m.transmissive), povNumber(a)));
+    return s;
+  }
+
+  // Pigment and diffuse: POV-Ray's diffuse is one number, so a coloured k_d goes into the
+  // pigment (diffuse 1) and a grey one into `diffuse` (pigment white, or the texture).
+  double d = 0.0;
+  if (!filterOnly) {
+    s.useTexture = hasTexture;
+    if (isGrey(kd)) {
+      d = kd.x;
+    } else if (isImage) {
+      d = mean(kd);
+      issues.warning(m.loc, fmt::format("{}: POV-Ray cannot tint an image map by the coloured "
+                                        "diffuse {}; diffuse {} is used",
+                                        name, colourText(m.diffuse), floatText(d)));
+    } else {
+      s.pigmentScale = kd;
+      d = 1.0;
+    }
+  }
+  s.diffuse = a > 0.0 ? d / a : 0.0;
+
+  // Ambient and emission are multiplied by P·a in POV-Ray.
+  if (!filterOnly) {
+    const Vec3 pa = s.pigmentScale * a;
+    bool bad = false;
+    s.ambient = divide(ka, pa, bad);
+    s.emission = divide(ke, pa, bad);
+    if (bad)
+      issues.error(m.loc, fmt::format("{}: ambient or emissive is non-zero in a channel where "
+                                      "diffuse ({}) is zero; POV-Ray multiplies both by the "
+                                      "pigment, which carries the diffuse colour",
+                                      name, colourText(m.diffuse)));
+    if (hasTexture && !m.ambientIsScalar && !isZero(ka))
+      issues.warning(m.loc, fmt::format("{}: POV-Ray multiplies the coloured ambient by the "
+                                        "texture; Lucent does so only for a single-number "
+                                        "ambient",
+                                        name));
+    if (hasTexture && !isZero(ke))
+      issues.warning(m.loc, fmt::format("{}: POV-Ray multiplies emission by the texture; "
+                                        "Lucent does not",
+                                        name));
+  }
+
+  // Highlight: Blinn with exponent 1/roughness, coloured by the light only.
+  if (!isZero(ks)) {
+    s.specular = ks.x;
+    if (!isGrey(ks)) {
+      s.specular = mean(ks);
+      issues.warning(m.loc, fmt::format("{}: POV-Ray's specular is one number; the coloured "
+                                        "specular {} becomes {}",
+                                        name, colourText(m.specular), floatText(s.specular)));
+    }
+  }
+  // n_s = 0 means (N·H)^0 = 1: an exponent of 1e-9 differs from it by less than float
+  // resolution for any N·H above 1e-30.
+  s.roughness = m.shininess > 0.0 ? 1.0 / m.shininess : 1e9;
+
+  // Reflection.
+  s.reflection = kr;
+  const bool transmits = !isZero(kt);
+  if (m.fresnel && (transmits || !isZero(kr))) {
+    // reflection { 0, k_r fresnel } gives k_r·F; conserve_energy scales the transmitted
+    // light by 1 − k_r·F, which is Lucent's 1 − F only for k_r = 1.
+    s.fresnel = true;
+    s.conserveEnergy = transmits;
+    if (transmits && !(kr.x == 1.0 && kr.y == 1.0 && kr.z == 1.0))
+      issues.warning(m.loc, fmt::format("{}: fresnel with reflective {} (not 1): POV-Ray "
+                                        "reduces the transmission by 1 - k_r*F, Lucent by 1 - F",
+                                        name, colourText(m.reflective)));
+  }
+
+  // Interior: index of refraction and absorption.
+  if (transmits || s.fresnel) {
+    s.interior = true;
+    s.ior = m.ior;
+  }
+  if (transmits && m.ior != 1.0 && !(kt.x == 1.0 && kt.y == 1.0 && kt.z == 1.0) && !s.fresnel)
+    issues.warning(m.loc, fmt::format("{}: under total internal reflection POV-Ray reflects "
+                                      "with weight 1, Lucent with transmissive {}",
+                                      name, colourText(m.transmissive)));
+  if (transmits && !isZero(ka))
+    issues.warning(m.loc, fmt::format("{}: inside the object Lucent scales the ambient term by "
+                                      "transmissive; POV-Ray does not",
+                                      name));
+  if (transmits && m.isAbsorbing()) {
+    // exp(−(1 − fade_color)·d/fade_distance) = exp(−absorption·d) with fade_distance 1/max.
+    Vec3 ab = v3(m.absorption);
+    s.fade = true;
+    s.fadeDistance = 1.0 / maxComponent(ab);
+    s.fadeColor = Vec3(1.0) - ab * s.fadeDistance;
+  }
+  return s;
+}
+
+PovMaterials::PovMaterials(const std::vector<Material>& materials, PovIssues& issues)
+    : materials_(materials) {
+  for (size_t i = 0; i < materials.size(); ++i) {
+    surfaces_.push_back(povSurface(materials[i], issues));
+    const Material& m = materials[i];
+    std::string id = m.id == "(default)" ? "default" : m.id;
+    names_.push_back(povIdentifier(fmt::format("M{}", i), id));
+  }
+}
+
+bool PovMaterials::anySpecular(const std::vector<bool>& used) const {
+  for (size_t i = 0; i < surfaces_.size() && i < used.size(); ++i)
+    if (used[i] && surfaces_[i].specular > 0.0) return true;
+  return false;
+}
+
+void PovMaterials::writeDeclarations(const std::vector<bool>& used, PovWriter& out) const {
+  for (size_t i = 0; i < materials_.size(); ++i) {
+    if (i >= used.size() || !used[i]) continue;
+    const Material& m = materials_[i];
+    out.line(fmt::format("// {}{}", materialLabel(m), m.loc.line > 0 ? " at " + m.loc.str() : ""));
+    if (!usesImageMap(static_cast<uint32_t>(i))) {
+      out.open("#declare " + names_[i] + " = texture");
+      writeTexture(static_cast<uint32_t>(i), nullptr, nullptr, nullptr, out, nullptr);
+      out.close();
+    }
+    if (surfaces_[i].interior) {
+      out.open("#declare I" + names_[i] + " = interior");
+      writeInterior(surfaces_[i], out);
+      out.close();
+    }
+  }
+}
+
+bool PovMaterials::usesImageMap(uint32_t index) const {
+  return std::holds_alternative<ImageTexture>(materials_[index].texture) &&
+         surfaces_[index].useTexture;
+}
+
+void PovMaterials::writeFor(uint32_t index, const ShapeSpec& shape, const SourceLoc& loc,
+                            PovWriter& out, PovIssues& issues) const {
+  writeFor(index, imageMappingFor(shape), shapeElementName(shape), loc, out, issues);
+}
+
+void PovMaterials::writeFor(uint32_t index, const ImageMapping& mapping, const char* shapeName,
+                            const SourceLoc& loc, PovWriter& out, PovIssues& issues) const {
+  if (usesImageMap(index)) {
+    out.open("texture");
+    writeTexture(index, &mapping, shapeName, &loc, out, &issues);
+    out.close();
+  } else {
+    out.line("texture { " + names_[index] + " }");
+  }
+  if (surfaces_[index].interior) out.line("interior { I" + names_[index] + " }");
+}
+
+void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping,
+                                const char* shapeName, const SourceLoc* loc, PovWriter& out,
+                                PovIssues* issues) const {
+  const Material& m = materials_[index];
+  const PovSurface& s = surfaces_[index];
+  const auto* checker = std::get_if<CheckerTexture>(&m.texture);
+  const auto* image = std::get_if<ImageTexture>(&m.texture);
+
+  if (s.useTexture && checker) {
+    // Cells of edge `scale`; the cell [0, scale)^3 has the first colour, as in Lucent.
+    out.open("pigment");
+    out.line("checker");
+    out.line(povRgbft(s.pigmentScale * v3(checker->color1), s.filter, s.transmit) + ",");
+    out.line(povRgbft(s.pigmentScale * v3(checker->color2), s.filter, s.transmit));
+    if (checker->scale != 1.0) out.line("scale " + povNumber(checker->scale));
+    out.close();
+  } else if (s.useTexture && image && mapping) {
+    writeImagePigment(*image, s.filter, s.transmit, *mapping, shapeName, *loc, materialLabel(m),
+                      out, *issues);
+  } else {
+    out.line("pigment { " + povRgbft(s.pigmentScale, s.filter, s.transmit) + " }");
+  }
+
+  out.open("finish");
+  out.line("ambient " + povRgb(s.ambient));
+  out.line("emission " + povRgb(s.emission));
+  out.line("diffuse " + povFloat(s.diffuse));
+  out.line("brilliance 1");
+  out.line("phong 0");
+  out.line("specular " + povFloat(s.specular));
+  out.line("roughness " + povNumber(s.roughness));
+  if (s.fresnel) {
+    out.line("reflection { rgb <0, 0, 0>, " + povRgb(s.reflection) + " fresnel on }");
+  } else {
+    out.line("reflection { " + povRgb(s.reflection) + " }");
+  }
+  if (s.conserveEnergy) out.line("conserve_energy");
+  out.close();
+}
+
+void PovMaterials::writeInterior(const PovSurface& s, PovWriter& out) const {
+  out.line("ior " + povNumber(s.ior));
+  if (s.fade) {
+    // fade_power >= 1000 selects POV-Ray's exponential fade.
+    out.line("fade_power 1001");
+    out.line("fade_distance " + povNumber(s.fadeDistance));
+    out.line("fade_color " + povRgb(s.fadeColor));
+  }
+}
+
+}  // namespace lucent

@@ -1,0 +1,90 @@
+// Materials as POV-Ray textures (pigment + finish) and interiors, following section 8 of
+// shared/povray-notes.md. POV-Ray's local colour is
+//   P·(ambient·ambient_light + emission)·a + Σ P·Lc·diffuse·a·(N·L) + Lc·specular·(N·Ĥ)^(1/roughness)
+// with opacity a = 1 − filter − transmit, reflection not scaled by P or a, and the light
+// behind it multiplied by F = P·filter + transmit. Lucent's is
+//   k_e + k_a·I_La + Σ I_L·[k_d (N·L) + k_s (N·H)^n_s] + k_r·I_r + k_t·I_t.
+// So the pigment carries the diffuse colour, and every term multiplied by P·a in POV-Ray is
+// divided by it here.
+#pragma once
+
+#include "pov_image_map.h"
+#include "pov_writer.h"
+
+#include "scenegraph/material.h"
+#include "scenegraph/shape_spec.h"
+
+#include <string>
+#include <vector>
+
+namespace lucent {
+
+// The numbers of one material's POV-Ray texture and interior.
+struct PovSurface {
+  // Pigment = pigmentScale ⊙ texture colour (checker colours premultiplied; an image map
+  // needs pigmentScale = 1), with `filter` and `transmit` on every pigment colour.
+  Vec3 pigmentScale{1.0};
+  double filter = 0.0;
+  double transmit = 0.0;
+  bool useTexture = false;  // false: a plain pigment (no texture, or one that cannot show)
+
+  // finish
+  Vec3 ambient{0.0};   // colour, multiplied by ambient_light and the pigment
+  Vec3 emission{0.0};  // colour, multiplied by the pigment
+  double diffuse = 0.0;
+  double specular = 0.0;
+  double roughness = 1.0 / 64.0;
+  Vec3 reflection{0.0};  // the maximum (fresnel) or constant reflection
+  bool fresnel = false;
+  bool conserveEnergy = false;
+
+  // interior
+  bool interior = false;
+  double ior = 1.0;
+  bool fade = false;  // Beer–Lambert absorption as fade_power 1001
+  double fadeDistance = 1.0;
+  Vec3 fadeColor{1.0};
+};
+
+// Maps one material; problems go to `issues` at the material's location. `name` is how
+// messages call the material ("material 'glass'").
+PovSurface povSurface(const Material& m, PovIssues& issues);
+
+// Writes `#declare` of a texture (and an interior where needed) for every material whose
+// flag in `used` is set, except image textures, which depend on the shape and are written
+// inline by writeTexture().
+class PovMaterials {
+ public:
+  PovMaterials(const std::vector<Material>& materials, PovIssues& issues);
+
+  void writeDeclarations(const std::vector<bool>& used, PovWriter& out) const;
+  // Inside a shape block: its texture and interior. `shape` chooses the image mapping;
+  // `loc` is the shape's location for errors.
+  void writeFor(uint32_t material, const ShapeSpec& shape, const SourceLoc& loc,
+                PovWriter& out, PovIssues& issues) const;
+  // The same with an explicit image mapping (a box face).
+  void writeFor(uint32_t material, const ImageMapping& mapping, const char* shapeName,
+                const SourceLoc& loc, PovWriter& out, PovIssues& issues) const;
+  // Does the material show an image map (whose mapping depends on the shape)?
+  bool usesImageMap(uint32_t material) const;
+
+  const std::string& textureName(uint32_t material) const { return names_[material]; }
+  const PovSurface& surface(uint32_t material) const { return surfaces_[material]; }
+  // Has any material flagged in `used` a highlight?
+  bool anySpecular(const std::vector<bool>& used) const;
+
+ private:
+  // With `mapping` null: the declaration (no image map).
+  void writeTexture(uint32_t index, const ImageMapping* mapping, const char* shapeName,
+                    const SourceLoc* loc, PovWriter& out, PovIssues* issues) const;
+  void writeInterior(const PovSurface& s, PovWriter& out) const;
+
+  const std::vector<Material>& materials_;
+  std::vector<PovSurface> surfaces_;
+  std::vector<std::string> names_;  // the texture identifier; interior: "I" + name
+};
+
+// How a material is called in messages: "material 'glass'" or "the inline material".
+std::string materialLabel(const Material& m);
+
+}  // namespace lucent
