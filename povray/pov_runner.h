@@ -1,0 +1,44 @@
+// Running the `povray` program: finding it, its command line for a comparison render
+// (shared/povray-notes.md section 7), and a run with its messages captured in a log file.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lucent {
+
+// The povray executable: $LUCENT_POVRAY if set, else `povray` on the PATH.
+std::optional<std::string> findPovray();
+
+// What to tell a user who has no povray.
+const char* povrayInstallHint();
+
+struct PovrayRender {
+  std::string input;   // .pov file
+  std::string output;  // .png, written as 16-bit linear values
+  int width = 0, height = 0;
+  int samples = 1;     // 1: no antialiasing (pixel centres, as Lucent's single sample)
+  int threads = 0;     // 0: POV-Ray's default
+};
+
+// povray +I.. +O.. +W +H -D -V -GS -GR +FN16 File_Gamma=1.0 -A (or +A0.0 -J +AM1 +Rn):
+// no preview window (Debian's povray.ini turns it on), warnings and errors kept, statistics
+// and progress dropped, 16-bit PNG holding linear values.
+std::vector<std::string> povrayArguments(const PovrayRender& render);
+
+struct ProcessResult {
+  bool started = false;
+  int exitStatus = -1;  // -1 when it did not exit normally
+  double seconds = 0.0;
+};
+
+// Runs program with arguments in `workingDirectory`, its stdout and stderr appended to
+// `logPath`. Waits for it to finish.
+ProcessResult runProcess(const std::string& program, const std::vector<std::string>& arguments,
+                         const std::string& workingDirectory, const std::string& logPath);
+
+// The command as a user would type it (arguments with spaces quoted), for reports.
+std::string commandLine(const std::string& program, const std::vector<std::string>& arguments);
+
+}  // namespace lucent
