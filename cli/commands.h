@@ -29,4 +29,21 @@ struct RenderOptions {
 int runRender(const RenderOptions& options, const CommonOptions& common);
 int runCheck(const std::string& scene, const CommonOptions& common);
 
+struct ExportPovOptions {
+  std::string scene;
+  std::string output;
+  std::optional<int> width, height, maxDepth;  // the image the .pov file is written for
+  std::string camera;
+};
+int runExportPov(const ExportPovOptions& options, const CommonOptions& common);
+
+struct CompareOptions {
+  std::string scene;
+  std::string outputDir;
+  std::string povFile;  // --pov: a hand-written POV-Ray scene instead of the export
+  std::optional<int> width, height, samples, threads, maxDepth;
+  std::string camera;
+};
+int runCompare(const CompareOptions& options, const CommonOptions& common);
+
 }  // namespace lucent::cli

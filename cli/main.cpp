@@ -66,6 +66,37 @@ int main(int argc, char** argv) {
   checkCmd->add_option("scene", checkScene, "Scene file (.xml)")->required();
   addCommonOptions(checkCmd, common, defines);
 
+  ExportPovOptions exportPov;
+  CLI::App* exportCmd =
+      app.add_subcommand("export-pov", "Write the scene as an equivalent POV-Ray 3.7 scene");
+  exportCmd->add_option("scene", exportPov.scene, "Scene file (.xml)")->required();
+  exportCmd->add_option("-o,--output", exportPov.output, "POV-Ray scene to write (.pov)")
+      ->required();
+  exportCmd->set_help_flag("--help", "Print this help and exit");
+  exportCmd->add_option("-w,--width", exportPov.width, "Image width the camera is set up for");
+  exportCmd->add_option("-h,--height", exportPov.height, "Image height the camera is set up for");
+  exportCmd->add_option("--max-depth", exportPov.maxDepth, "Maximum recursion depth");
+  exportCmd->add_option("--camera", exportPov.camera, "Export the camera with this name");
+  addCommonOptions(exportCmd, common, defines);
+
+  CompareOptions compare;
+  CLI::App* compareCmd = app.add_subcommand(
+      "compare", "Render with Lucent and POV-Ray; write both images, a heat map and a report");
+  compareCmd->add_option("scene", compare.scene, "Scene file (.xml)")->required();
+  compareCmd->add_option("-o,--output", compare.outputDir, "Folder for the images and reports")
+      ->required();
+  compareCmd->add_option("--pov", compare.povFile,
+                         "Compare against this hand-written POV-Ray scene instead of the export");
+  compareCmd->set_help_flag("--help", "Print this help and exit");
+  compareCmd->add_option("-w,--width", compare.width, "Image width in pixels");
+  compareCmd->add_option("-h,--height", compare.height, "Image height in pixels");
+  compareCmd->add_option("-s,--samples", compare.samples,
+                         "Samples per pixel (default 1: pixel centres in both renderers)");
+  compareCmd->add_option("-t,--threads", compare.threads, "Threads for both renderers");
+  compareCmd->add_option("--max-depth", compare.maxDepth, "Maximum recursion depth");
+  compareCmd->add_option("--camera", compare.camera, "Render through the camera with this name");
+  addCommonOptions(compareCmd, common, defines);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -77,5 +108,7 @@ int main(int argc, char** argv) {
 
   if (*renderCmd) return runRender(render, common);
   if (*checkCmd) return runCheck(checkScene, common);
+  if (*exportCmd) return runExportPov(exportPov, common);
+  if (*compareCmd) return runCompare(compare, common);
   return kUsage;
 }

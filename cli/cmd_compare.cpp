@@ -1,0 +1,245 @@
+// lucent compare SCENE -o DIR: renders the scene with Lucent (through the render library)
+// and with POV-Ray (the exported scene, or --pov FILE) at the same size, sampling, depth and
+// bail-out, both as 16-bit linear PNGs, and writes into DIR:
+//   lucent.png, povray.png            8-bit sRGB renders to look at
+//   lucent-linear16.png, povray-linear16.png   what the metrics read
+//   diff.png                          heat map of the largest channel difference
+//   scene.pov, povray.log             the exported scene and POV-Ray's messages
+//   report.json, report.html
+// and prints PSNR, SSIM, RMSE, the maximum difference and the share of pixels off by more
+// than 2/255 (on sRGB-encoded values).
+//
+// Exit statuses: 1 wrong usage; 2 an invalid scene or one that cannot be exported; 3 no
+// povray (with how to install it), a POV-Ray failure, or files that cannot be written.
+// The metrics never change the status: comparing is a measurement.
+#include "commands.h"
+
+#include "lang/parser.h"
+#include "povray/compare_report.h"
+#include "povray/image_compare.h"
+#include "povray/pov_export.h"
+#include "povray/pov_runner.h"
+#include "render/camera_frame.h"
+#include "render/renderer.h"
+#include "render/texture.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace lucent::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kThreshold = 2.0 / 255.0;
+constexpr double kHeatMapScale = 16.0 / 255.0;
+
+int fail(const std::string& message, int status) {
+  fmt::print(stderr, "lucent: error: {}\n", message);
+  return status;
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  if (!out.flush()) throw std::runtime_error(fmt::format("cannot write '{}'", path.string()));
+}
+
+RgbImage toRgb(const Image& image) {
+  RgbImage out(image.width, image.height);
+  for (size_t p = 0; p < image.pixels.size(); ++p)
+    for (int c = 0; c < 3; ++c) out.rgb[p * 3 + c] = image.pixels[p][c];
+  return out;
+}
+
+// The last lines of POV-Ray's log, where its error is.
+std::string logTail(const fs::path& log, size_t lines) {
+  std::ifstream in(log);
+  std::vector<std::string> all;
+  for (std::string line; std::getline(in, line);) all.push_back(line);
+  std::string out;
+  for (size_t i = all.size() > lines ? all.size() - lines : 0; i < all.size(); ++i)
+    out += "  " + all[i] + "\n";
+  return out;
+}
+
+// A hand-written scene without `#version 3.7` is read with the 3.62 rules, which change
+// transparency and gamma (shared/povray-notes.md section 0).
+std::vector<std::string> checkHandWritten(const std::string& path) {
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<std::string> notes;
+  if (text.find("#version") == std::string::npos)
+    notes.push_back(path + ": no #version directive: POV-Ray reads it with 3.62 rules "
+                           "(transparency and gamma differ); start it with `#version 3.7;`");
+  if (text.find("assumed_gamma") == std::string::npos)
+    notes.push_back(path + ": no assumed_gamma: put `global_settings { assumed_gamma 1.0 }` "
+                           "so colours are linear as in Lucent");
+  return notes;
+}
+
+}  // namespace
+
+int runCompare(const CompareOptions& options, const CommonOptions& common) {
+  for (auto [value, name] :
+       {std::pair{options.width, "--width"}, std::pair{options.height, "--height"},
+        std::pair{options.samples, "--samples"}, std::pair{options.threads, "--threads"},
+        std::pair{options.maxDepth, "--max-depth"}}) {
+    if (value && *value < 1) return fail(fmt::format("{} must be at least 1 (got {})", name, *value), kUsage);
+  }
+  std::optional<std::string> povray = findPovray();
+  if (!povray) return fail(povrayInstallHint(), kRuntimeFailure);
+  if (!options.povFile.empty() && !fs::is_regular_file(options.povFile))
+    return fail(fmt::format("--pov {}: no such file", options.povFile), kRuntimeFailure);
+
+  ParseOptions parseOptions;
+  parseOptions.defines = common.defines;
+  parseOptions.allowPaths = common.allowPaths;
+  ParseResult parsed = parseSceneFile(options.scene, parseOptions);
+  for (const Diagnostic& d : parsed.diagnostics.all()) fmt::print(stderr, "{}\n", d.str());
+  if (parsed.ioFailure) return kRuntimeFailure;
+  if (!parsed.scene) return kInvalidScene;
+  Scene& scene = *parsed.scene;
+  RenderSettings& settings = scene.render;
+  if (options.width) settings.width = *options.width;
+  if (options.height) settings.height = *options.height;
+  if (options.maxDepth) settings.maxDepth = *options.maxDepth;
+  // One sample per pixel unless asked: both renderers then trace the pixel centres, the only
+  // sampling they share exactly.
+  settings.samples = options.samples.value_or(1);
+  settings.adaptive = 0.0;
+  const Camera* camera = scene.findCamera(options.camera);
+  if (!camera)
+    return fail(fmt::format("--camera {}: no camera of that name in '{}'", options.camera,
+                            options.scene),
+                kUsage);
+
+  const fs::path dir(options.outputDir);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    return fail(fmt::format("cannot create the folder '{}'", dir.string()), kRuntimeFailure);
+
+  CompareReport report;
+  report.scene = options.scene;
+  report.width = settings.width;
+  report.height = settings.height;
+  report.samples = settings.samples;
+  report.maxDepth = settings.maxDepth;
+  report.minWeight = settings.minWeight;
+  report.heatMapScale = kHeatMapScale;
+  report.lucentImage = "lucent.png";
+  report.povrayImage = "povray.png";
+  report.lucentLinear = "lucent-linear16.png";
+  report.povrayLinear = "povray-linear16.png";
+  report.heatMap = "diff.png";
+  report.povrayLog = "povray.log";
+  if (settings.samples > 1)
+    report.warnings.push_back(fmt::format(
+        "{} samples per pixel: Lucent uses Halton offsets, POV-Ray an antialiasing grid; "
+        "expect differences at edges",
+        settings.samples));
+
+  try {
+    // The POV-Ray scene: exported next to the results, or the user's own.
+    fs::path povScene;
+    if (options.povFile.empty()) {
+      PovExport exported = exportPov(scene, PovExportOptions{options.camera});
+      for (const PovIssue& issue : exported.issues) {
+        fmt::print(stderr, "{}\n", issue.str());
+        report.warnings.push_back(issue.str());
+      }
+      if (!exported.ok()) {
+        fmt::print(stderr, "{}: cannot be exported to POV-Ray; nothing compared\n", options.scene);
+        return kInvalidScene;
+      }
+      povScene = fs::absolute(dir / "scene.pov");
+      writeText(povScene, exported.text);
+    } else {
+      povScene = fs::absolute(options.povFile);
+      report.handWritten = true;
+      for (const std::string& note : checkHandWritten(options.povFile)) {
+        fmt::print(stderr, "lucent: warning: {}\n", note);
+        report.warnings.push_back(note);
+      }
+    }
+    report.povScene = povScene.string();
+
+    // Lucent, through the render library.
+    World world(scene);
+    Renderer renderer(world, *camera);
+    RenderControl control;
+    control.threads = options.threads.value_or(0);
+    RenderResult lucent = renderer.render(control);
+    report.lucentRender = "render library (Renderer::render)";
+    report.lucentSeconds = lucent.seconds;
+    const fs::path lucentLinear = dir / report.lucentLinear;
+    writeLinear16Png(toRgb(lucent.image), lucentLinear.string());
+
+    // POV-Ray, in the folder of its scene so that relative file names resolve as its
+    // author meant.
+    PovrayRender job;
+    job.input = povScene.string();
+    job.output = fs::absolute(dir / report.povrayLinear).string();
+    job.width = settings.width;
+    job.height = settings.height;
+    job.samples = settings.samples;
+    job.threads = options.threads.value_or(0);
+    std::vector<std::string> args = povrayArguments(job);
+    report.povrayCommand = commandLine(*povray, args);
+    const fs::path log = fs::absolute(dir / report.povrayLog);
+    fs::remove(log, ec);
+    fs::remove(job.output, ec);
+    ProcessResult run = runProcess(*povray, args, povScene.parent_path().string(), log.string());
+    report.povraySeconds = run.seconds;
+    if (!run.started || run.exitStatus != 0 || !fs::exists(job.output)) {
+      return fail(fmt::format("POV-Ray failed (exit status {}) on '{}'; its last messages "
+                              "({}):\n{}",
+                              run.exitStatus, povScene.string(), log.string(), logTail(log, 12)),
+                  kRuntimeFailure);
+    }
+
+    // Both decoded the same way: 16-bit linear code values, then sRGB-encoded for the
+    // metrics and the pictures.
+    RgbImage lucentImage = srgbEncoded(readLinear16Png(lucentLinear.string()));
+    RgbImage povImage = srgbEncoded(readLinear16Png(job.output));
+    if (povImage.width != lucentImage.width || povImage.height != lucentImage.height)
+      return fail(fmt::format("POV-Ray wrote a {}x{} image, Lucent {}x{}", povImage.width,
+                              povImage.height, lucentImage.width, lucentImage.height),
+                  kRuntimeFailure);
+    report.metrics = compareImages(lucentImage, povImage, kThreshold);
+    writeDisplayPng(lucentImage, (dir / report.lucentImage).string());
+    writeDisplayPng(povImage, (dir / report.povrayImage).string());
+    writeDisplayPng(differenceHeatMap(lucentImage, povImage, kHeatMapScale),
+                    (dir / report.heatMap).string());
+    writeText(dir / "report.json", reportJson(report));
+    writeText(dir / "report.html", reportHtml(report));
+  } catch (const CameraError& e) {
+    fmt::print(stderr, "{}\n", e.what());
+    return kInvalidScene;
+  } catch (const TextureError& e) {
+    fmt::print(stderr, "{}\n", e.what());
+    return kRuntimeFailure;
+  } catch (const std::exception& e) {
+    return fail(e.what(), kRuntimeFailure);
+  }
+
+  const ImageMetrics& m = report.metrics;
+  fmt::print("psnr:       {}\n",
+             std::isfinite(m.psnr) ? fmt::format("{:.2f} dB", m.psnr) : "inf (identical)");
+  fmt::print("ssim:       {:.6f}\n", m.ssim);
+  fmt::print("rmse:       {:.6g}\n", m.rmse);
+  fmt::print("max diff:   {:.6g} at pixel ({}, {})\n", m.maxDiff, m.maxX, m.maxY);
+  fmt::print("over 2/255: {:.3f} % of pixels ({})\n", 100.0 * m.shareOver, m.pixelsOver);
+  fmt::print("time:       lucent {:.3f} s, povray {:.3f} s\n", report.lucentSeconds,
+             report.povraySeconds);
+  fmt::print("report:     {}\n", (dir / "report.html").string());
+  return kOk;
+}
+
+}  // namespace lucent::cli
