@@ -1,5 +1,5 @@
 // A camera projection: turns a point of the image plane into a primary ray. One small
-// class per projection type (pinhole.h, and later thin lens, orthographic, fisheye, ...),
+// class per projection type (pinhole.h, thin_lens.h, orthographic.h, fisheye.h, ...),
 // all sharing the CameraFrame; makeProjection() is the one table from type to class.
 #pragma once
 
@@ -40,7 +40,7 @@ class Projection {
 };
 
 // The projection for the camera's type at the given image size. Throws CameraError for a
-// camera that cannot form an image, std::runtime_error for a type not implemented yet.
+// camera that cannot form an image (at this size: a cube map needs whole-pixel faces).
 std::unique_ptr<Projection> makeProjection(const Camera& camera, int width, int height);
 
 }  // namespace lucent

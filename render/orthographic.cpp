@@ -1,0 +1,25 @@
+#include "orthographic.h"
+
+#include <fmt/core.h>
+
+namespace lucent {
+
+OrthographicProjection::OrthographicProjection(const CameraFrame& frame, const Camera& camera,
+                                               int width, int height)
+    : Projection(frame, camera, width, height) {
+  if (!(camera.width > 0.0) || !std::isfinite(camera.width))
+    throw CameraError(fmt::format("{}: error: an orthographic camera needs a width > 0 (got {})",
+                                  camera.loc.str(), camera.width));
+  halfWidth_ = 0.5 * camera.width;
+  halfHeight_ = halfWidth_ * static_cast<double>(height) / width;
+}
+
+bool OrthographicProjection::generateRay(const Vec2& film, const Vec2&, Ray& ray) const {
+  double sx = 2.0 * film.x / width_ - 1.0;
+  double sy = 1.0 - 2.0 * film.y / height_;
+  Vec3 origin = frame_.origin + (sx * halfWidth_) * frame_.right + (sy * halfHeight_) * frame_.up;
+  ray = primaryRay(origin, frame_.forward);
+  return true;
+}
+
+}  // namespace lucent
