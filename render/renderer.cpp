@@ -32,7 +32,7 @@ Renderer::Renderer(const World& world, const Camera& camera)
 Color Renderer::renderSample(int x, int y, int k, int count, RayStats& stats) const {
   Vec2 film = Vec2(x, y) + pixelSampleOffset(k, count);
   Ray ray;
-  if (!projection_->generateRay(film, lensSample(k, count), ray)) return settings_.background;
+  if (!projection_->generateRay(film, lensSample(x, y, k, count), ray)) return settings_.background;
   PathSeed seed{static_cast<uint32_t>(x), static_cast<uint32_t>(y), static_cast<uint32_t>(k), 0};
   return tracer_.traceCamera(ray, cameraMedia_, seed, stats);
 }
