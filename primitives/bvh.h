@@ -252,34 +252,47 @@ class Bvh {
   // Levels of the binary splits the build made (the 4-wide tree has fewer).
   int depth() const { return depth_; }
 
+  // The traversal every query below is made of: visit(uint32_t item) for the items of
+  // each leaf whose box the ray enters within [ray.tmin, tFar], nearest box first. tFar
+  // is read again after every call, so a closest-hit search can shrink it and skip the
+  // boxes that start beyond; visit returns false to end the search. Returns false if
+  // it was ended so.
+  template <class Visit>
+  bool candidates(const Ray& ray, const double& tFar, Visit&& visit) const {
+    if (bvh_detail::FastNodeTest::usable(ray))
+      return candidatesWith(bvh_detail::FastNodeTest(ray), tFar, visit);
+    return candidatesWith(SafeNodeTest(ray), tFar, visit);
+  }
+
   // Closest hit. hitItem(uint32_t item, Ray& ray) tests one item against (ray.tmin,
   // ray.tmax); on a closer hit it records it, shrinks ray.tmax to it and returns true.
-  // Children are visited nearest first and a subtree is skipped once it starts beyond
-  // ray.tmax. Returns whether any call returned true.
+  // Returns whether any call returned true.
   template <class HitItem>
   bool closest(const Ray& ray, HitItem&& hitItem) const {
-    if (bvh_detail::FastNodeTest::usable(ray))
-      return closestWith(bvh_detail::FastNodeTest(ray), ray, hitItem);
-    return closestWith(SafeNodeTest(ray), ray, hitItem);
+    Ray r = ray;
+    bool found = false;
+    candidates(r, r.tmax, [&](uint32_t item) {
+      if (hitItem(item, r)) found = true;
+      return true;
+    });
+    return found;
   }
 
   // Any hit (shadow rays): blocks(uint32_t item, const Ray& ray) says whether the item has
   // a hit in (ray.tmin, ray.tmax); the search stops at the first true.
   template <class Blocks>
   bool any(const Ray& ray, Blocks&& blocks) const {
-    if (bvh_detail::FastNodeTest::usable(ray))
-      return anyWith(bvh_detail::FastNodeTest(ray), ray, blocks);
-    return anyWith(SafeNodeTest(ray), ray, blocks);
+    return !candidates(ray, ray.tmax, [&](uint32_t item) { return !blocks(item, ray); });
   }
 
-  // Every item whose box the ray overlaps in [ray.tmin, ray.tmax]: visit(uint32_t item),
-  // in no particular order (CSG gathers crossings this way).
+  // Every item whose box the ray overlaps in [ray.tmin, ray.tmax]: visit(uint32_t item)
+  // (CSG gathers crossings this way).
   template <class Visit>
   void all(const Ray& ray, Visit&& visit) const {
-    if (bvh_detail::FastNodeTest::usable(ray))
-      allWith(bvh_detail::FastNodeTest(ray), ray, visit);
-    else
-      allWith(SafeNodeTest(ray), ray, visit);
+    candidates(ray, ray.tmax, [&](uint32_t item) {
+      visit(item);
+      return true;
+    });
   }
 
   // Bound of depth(): the build switches to median splits before it (bvh.cpp).
@@ -322,12 +335,8 @@ class Bvh {
   static void pushOrdered(const BvhNode& n, int mask, const T tEnter[4], Entry<T>* stack,
                           int& sp, Entry<T>& next);
 
-  template <class Test, class HitItem>
-  bool closestWith(const Test& test, const Ray& ray0, HitItem& hitItem) const;
-  template <class Test, class Blocks>
-  bool anyWith(const Test& test, const Ray& ray, Blocks& blocks) const;
   template <class Test, class Visit>
-  void allWith(const Test& test, const Ray& ray, Visit& visit) const;
+  bool candidatesWith(const Test& test, const double& tFar, Visit& visit) const;
 
   BvhNodes nodes_;
   std::vector<uint32_t> order_;
@@ -352,17 +361,16 @@ void Bvh::pushOrdered(const BvhNode& n, int mask, const T tEnter[4], Entry<T>* s
   next = e[k - 1];
 }
 
-template <class Test, class HitItem>
-bool Bvh::closestWith(const Test& test, const Ray& ray0, HitItem& hitItem) const {
-  if (nodes_.empty()) return false;
-  Ray ray = ray0;
-  auto tmax = limit(test, ray.tmax);
+template <class Test, class Visit>
+bool Bvh::candidatesWith(const Test& test, const double& tFar, Visit& visit) const {
+  if (nodes_.empty()) return true;
+  double lastFar = tFar;
+  auto tmax = limit(test, lastFar);
   using T = decltype(tmax);
   T tEnter[4];
   Entry<T> stack[kStackSize];
   int sp = 0;
   Entry<T> cur{0, 0, T(0)};  // the root: node 0
-  bool found = false;
   for (;;) {
     if (cur.count == 0) {
       const BvhNode& n = nodes_[cur.index];
@@ -372,87 +380,24 @@ bool Bvh::closestWith(const Test& test, const Ray& ray0, HitItem& hitItem) const
           int c = __builtin_ctz(mask);
           cur = {n.index[c], n.count[c], tEnter[c]};
         } else {
-          // Nearest child now, the others later unless a hit closes in before they start.
+          // Nearest child now, the others later unless tFar closes in before they start.
           pushOrdered(n, mask, tEnter, stack, sp, cur);
         }
         continue;
       }
     } else {
-      bool hitHere = false;
       for (uint32_t s = cur.index, e = s + cur.count; s < e; ++s)
-        if (hitItem(itemOf(s), ray)) hitHere = true;
-      if (hitHere) {
-        found = true;
-        tmax = limit(test, ray.tmax);
+        if (!visit(itemOf(s))) return false;
+      if (tFar != lastFar) {
+        lastFar = tFar;
+        tmax = limit(test, lastFar);
       }
     }
     for (;;) {
-      if (sp == 0) return found;
+      if (sp == 0) return true;
       cur = stack[--sp];
-      if (double(cur.t) <= ray.tmax) break;
+      if (double(cur.t) <= tFar) break;
     }
-  }
-}
-
-template <class Test, class Blocks>
-bool Bvh::anyWith(const Test& test, const Ray& ray, Blocks& blocks) const {
-  if (nodes_.empty()) return false;
-  auto tmax = limit(test, ray.tmax);
-  using T = decltype(tmax);
-  T tEnter[4];
-  Entry<T> stack[kStackSize];
-  int sp = 0;
-  Entry<T> cur{0, 0, T(0)};
-  for (;;) {
-    if (cur.count == 0) {
-      const BvhNode& n = nodes_[cur.index];
-      int mask = test.test(n, tmax, tEnter);
-      if (mask) {
-        if ((mask & (mask - 1)) == 0) {
-          int c = __builtin_ctz(mask);
-          cur = {n.index[c], n.count[c], tEnter[c]};
-        } else {
-          // Nearest first here too: near occluders end the search sooner.
-          pushOrdered(n, mask, tEnter, stack, sp, cur);
-        }
-        continue;
-      }
-    } else {
-      for (uint32_t s = cur.index, e = s + cur.count; s < e; ++s)
-        if (blocks(itemOf(s), ray)) return true;
-    }
-    if (sp == 0) return false;
-    cur = stack[--sp];
-  }
-}
-
-template <class Test, class Visit>
-void Bvh::allWith(const Test& test, const Ray& ray, Visit& visit) const {
-  if (nodes_.empty()) return;
-  auto tmax = limit(test, ray.tmax);
-  using T = decltype(tmax);
-  T tEnter[4];
-  Entry<T> stack[kStackSize];
-  int sp = 0;
-  Entry<T> cur{0, 0, T(0)};
-  for (;;) {
-    if (cur.count == 0) {
-      const BvhNode& n = nodes_[cur.index];
-      int mask = test.test(n, tmax, tEnter);
-      if (mask) {
-        int c = __builtin_ctz(mask);
-        cur = {n.index[c], n.count[c], tEnter[c]};
-        for (mask &= mask - 1; mask; mask &= mask - 1) {
-          int o = __builtin_ctz(mask);
-          stack[sp++] = {n.index[o], n.count[o], tEnter[o]};
-        }
-        continue;
-      }
-    } else {
-      for (uint32_t s = cur.index, e = s + cur.count; s < e; ++s) visit(itemOf(s));
-    }
-    if (sp == 0) return;
-    cur = stack[--sp];
   }
 }
 

@@ -388,3 +388,36 @@ TEST_CASE("BVH float traversal keeps hits on items smaller than float spacing", 
   }
   requireSameClosest(bvh, spheres, rays);
 }
+
+TEST_CASE("BVH candidates come nearest box first and stop when asked", "[bvh]") {
+  // A row of unit boxes along x; a ray down the row meets them in order.
+  std::vector<AABB> boxes;
+  for (int i = 0; i < 200; ++i) boxes.push_back(AABB(Vec3(3 * i, 0, 0), Vec3(3 * i + 1, 1, 1)));
+  std::mt19937_64 rng(12);
+  std::shuffle(boxes.begin(), boxes.end(), rng);
+  Bvh::Options oneEach;
+  oneEach.maxLeafSize = 1;  // leaves of one box: the visit order is the boxes' order
+  Bvh bvh(boxes, oneEach);
+  Ray ray(Vec3(-5, 0.5, 0.5), Vec3(1, 1e-9, -1e-9));
+  double tFar = kInf;
+  std::vector<double> starts;
+  bool completed = bvh.candidates(ray, tFar, [&](uint32_t i) {
+    starts.push_back(boxes[i].lo.x);
+    return starts.size() < 5;
+  });
+  CHECK_FALSE(completed);
+  CHECK(starts == std::vector<double>{0, 3, 6, 9, 12});
+
+  // Shrinking tFar after the first box skips every box that starts beyond it.
+  starts.clear();
+  tFar = kInf;
+  completed = bvh.candidates(ray, tFar, [&](uint32_t i) {
+    starts.push_back(boxes[i].lo.x);
+    tFar = 20.0;  // boxes starting at x >= 15 (t >= 20) are never visited
+    return true;
+  });
+  CHECK(completed);
+  REQUIRE(!starts.empty());
+  CHECK(*std::max_element(starts.begin(), starts.end()) <= 15.0);
+  CHECK(starts.size() <= 6);  // 0, 3, ..., 15 at most
+}
