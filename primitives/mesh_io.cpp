@@ -17,6 +17,11 @@
 // are carried over by matching each final triangle to the input face it came from by its
 // corner coordinates (CGAL never moves a point); a position whose corners disagree (a seam)
 // is split into one vertex per distinct (normal, uv).
+// triangulate_faces meets a self-intersecting polygon through CGAL's constrained Delaunay
+// triangulation, which then prints a performance hint on stderr in builds without NDEBUG;
+// the face is simply left untriangulated (and dropped below), so the hint is noise.
+#define CGAL_NO_CDT_2_WARNING
+
 #include "mesh_io.h"
 
 #include "mesh_file_check.h"
@@ -157,7 +162,7 @@ Soup usableTriangles(const SurfaceMesh& mesh, std::size_t& dropped) {
   tri.points.assign(mesh.points().begin(), mesh.points().end());
   dropped = 0;
   for (SurfaceMesh::Face_index f : mesh.faces()) {
-    if (mesh.degree(f) != 3) {  // triangulate_faces gave up on it (a degenerate polygon)
+    if (mesh.degree(f) != 3) {  // triangulate_faces gave up: degenerate or self-intersecting
       ++dropped;
       continue;
     }

@@ -123,3 +123,20 @@ TEST_CASE("a zero-area triangle in a file is dropped and the cube stays closed",
   CHECK(mesh->closed);
   CHECK(signedVolume(*mesh) == Approx(1.0).margin(1e-12));
 }
+
+TEST_CASE("a non-planar quad is split in two, a self-intersecting one is dropped", "[mesh]") {
+  TempDir dir;
+  const auto warped = loadMeshFile(dir.write("warped.obj", "v 0 0 0\nv 1 0 0.2\nv 1 1 0\nv 0 1 0.3\nf 1 2 3 4\n"));
+  requireWellFormed(*warped);
+  CHECK(warped->positions.size() == 4);
+  CHECK(warped->triangles.size() == 2);
+
+  // A bow-tie has no triangulation on its own corners: CGAL leaves it, and only the separate
+  // triangle remains.
+  const auto bowtie = loadMeshFile(dir.write(
+      "bowtie.obj", "v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nv 6 5 5\nv 5 6 5\nf 1 2 3 4\nf 5 6 7\n"));
+  requireWellFormed(*bowtie);
+  CHECK(bowtie->triangles.size() == 1);
+  CHECK(bowtie->positions.size() == 3);
+  for (const Vec3& p : bowtie->positions) CHECK(p.z == 5);
+}
