@@ -214,3 +214,18 @@ TEST_CASE("nested media: leaving glass into water uses the water's index", "[ren
   Color c = traceOne(world, Ray(Vec3(0), Vec3(0, 0, -1)));
   CHECK(c.r == Approx(1.0 + f).epsilon(1e-6));
 }
+
+TEST_CASE("<render epsilon> moves secondary origins by epsilon along the normal",
+          "[render][refraction]") {
+  // An exaggerated epsilon of 0.5: the ray entering the slab z in [-2, 0] starts again at
+  // z = -0.5, so it travels 1.5 (not 2) inside the absorbing glass.
+  Scene scene;
+  scene.render.epsilon = 0.5;
+  Material m = glass(1.0);
+  m.absorption = Color(1.0f);
+  addShape(scene, BoxSpec{Vec3(-5, -5, -2), Vec3(5, 5, 0)}, addMaterial(scene, m));
+  addWall(scene, -10, addMaterial(scene, emissive(Color(1.0f))));
+  World world(scene);
+  CHECK(traceOne(world, Ray(Vec3(0, 0, 5), Vec3(0, 0, -1))).r ==
+        Approx(std::exp(-1.5)).epsilon(1e-6));
+}
