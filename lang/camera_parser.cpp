@@ -100,8 +100,9 @@ void parseCamera(ElementReader& r) {
   } else {
     for (const char* a : {"fov", "fov-axis"})
       if (r.has(a))
-        r.warning(std::string("<camera>: '") + a + "' has no effect on a " + cameraTypeName(cam.type) +
-                  " camera" + (cam.type == CameraType::Orthographic ? " (its 'width' frames the image)" : ""));
+        r.warning(std::string("<camera>: '") + a + "' has no effect on cameras of type " +
+                  cameraTypeName(cam.type) +
+                  (cam.type == CameraType::Orthographic ? " (their 'width' frames the image)" : ""));
   }
 
   cam.near = r.number("near", cam.near, NumberRule::nonNegative());

@@ -170,18 +170,12 @@ Mat4 ElementReader::transform(const char* attr) {
   if (!r.unknownOperation.empty())
     message += didYouMean(r.unknownOperation, transformOperationNames());
   // Point into the value when it was written without parameters (offsets then match).
+  // The position comes from the text as read: pugixml turned the value's newlines into
+  // spaces in place, but the file's line starts were taken before.
   SourceLoc where = valueLoc(attr);
-  if (*t == a.value() && where.line > 0) {
-    std::string_view v = a.value();
-    for (size_t i = 0; i < r.errorOffset && i < v.size(); ++i) {
-      if (v[i] == '\n') {
-        ++where.line;
-        where.col = 1;
-      } else {
-        ++where.col;
-      }
-    }
-  }
+  std::string_view v = a.value();
+  if (*t == v && r.errorOffset < v.size())
+    if (auto inside = file_.locOf(a.value() + r.errorOffset)) where = *inside;
   ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + message);
   failed_ = true;
   return Mat4(1.0);
