@@ -51,7 +51,7 @@ SurfaceInfo Sphere::surface(const Ray& ray, const Hit& hit) const {
   s.ns = s.ng;
   double phi = std::atan2(local.x, local.z) + kPi;
   double cosTheta = glm::clamp(local.y / radius_, -1.0, 1.0);
-  s.uv = Vec2(phi / (2.0 * kPi), std::acos(cosTheta) / kPi);
+  s.uv = Vec2(phi / (2.0 * kPi), 1.0 - std::acos(cosTheta) / kPi);
   s.hasUV = true;
   return s;
 }

@@ -3,7 +3,8 @@
 //   radius  number > 0, default 1
 // A solid ball. (u,v): u = φ/2π with φ = atan2(x, z) + π the longitude about +y, so
 // u = 0.5 faces +z (the default camera) and u grows towards +x, the seam lies at −z;
-// v = θ/π with θ the angle from the +y pole (v = 0 at the top, 1 at the bottom).
+// v = 1 − θ/π with θ the angle from the +y pole (v = 1 at the top, 0 at the bottom), so an
+// image's top row lands on the north pole, as in pbrt and POV-Ray's spherical map.
 #pragma once
 
 #include "shape.h"

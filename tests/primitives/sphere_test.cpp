@@ -93,12 +93,12 @@ TEST_CASE("sphere: (u,v) follow the documented longitude and colatitude", "[prim
   CHECK_THAT(uv.x, WithinAbs(0.75, 1e-15));
   uv = uvAt(Vec3(-1, 0, 0));
   CHECK_THAT(uv.x, WithinAbs(0.25, 1e-15));
-  uv = uvAt(Vec3(0, 1, 0));  // north pole
-  CHECK_THAT(uv.y, WithinAbs(0.0, 1e-15));
-  uv = uvAt(Vec3(0, -1, 0));
+  uv = uvAt(Vec3(0, 1, 0));  // north pole: the image's top row
   CHECK_THAT(uv.y, WithinAbs(1.0, 1e-15));
+  uv = uvAt(Vec3(0, -1, 0));
+  CHECK_THAT(uv.y, WithinAbs(0.0, 1e-15));
   uv = uvAt(glm::normalize(Vec3(0, 1, 1)));  // 45° from the pole
-  CHECK_THAT(uv.y, WithinAbs(0.25, 1e-15));
+  CHECK_THAT(uv.y, WithinAbs(0.75, 1e-15));
 }
 
 TEST_CASE("sphere: rays from far away and rays starting near the surface keep their digits",
