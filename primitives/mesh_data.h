@@ -16,6 +16,8 @@ struct MeshData {
   std::vector<Vec2> uvs;      // empty, or one per position
   // Closed (every edge shared by exactly two triangles) and consistently oriented with
   // outward normals (counter-clockwise seen from outside): then the mesh is a solid.
+  // Edges are counted between coincident positions: a position is repeated where its
+  // corners have different normals or uvs (a seam), so indices alone may not pair up.
   bool closed = false;
 };
 

@@ -119,7 +119,7 @@ Soup readSoup(const std::string& bytes, MeshFormat format) {
 }
 
 // CGAL's repair sorts points (NaN would break the order) and indexes with what it is given.
-void checkSoup(const Soup& soup, const char* vertex, const char* face) {
+void checkSoup(const Soup& soup, const char* vertex, const char* vertices, const char* face) {
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
     const Point& p = soup.points[i];
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
@@ -128,8 +128,8 @@ void checkSoup(const Soup& soup, const char* vertex, const char* face) {
   for (std::size_t f = 0; f < soup.polygons.size(); ++f)
     for (std::size_t index : soup.polygons[f])
       if (index >= soup.points.size())
-        throw MeshError(fmt::format("{} {} (counting from 0) uses {} {}, but there are {} {}s", face,
-                                    f, vertex, index, soup.points.size(), vertex));
+        throw MeshError(fmt::format("{} {} (counting from 0) uses {} {}, but there are {} {}", face,
+                                    f, vertex, index, soup.points.size(), vertices));
 }
 
 // Normals and texture coordinates of the input, per corner of each input polygon.
@@ -344,7 +344,7 @@ std::shared_ptr<MeshData> loadMeshFile(const std::string& path) {
   return guarded([&] {
     Soup soup = readSoup(bytes, format);
     bytes = std::string();  // release the text before the mesh is built
-    checkSoup(soup, "vertex", "face");
+    checkSoup(soup, "vertex", "vertices", "face");
     if (soup.polygons.empty()) throw MeshError("the file holds no faces");
     CornerAttributes attrs;
     if (obj) attrs = objAttributes(*obj, soup);
@@ -388,7 +388,7 @@ void finishMesh(MeshData& mesh) {
       }
     }
   }
-  checkSoup(soup, "position", "triangle");
+  checkSoup(soup, "position", "positions", "triangle");
   mesh = guarded([&] { return buildMesh(std::move(soup), attrs); });
 }
 

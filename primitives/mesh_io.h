@@ -16,7 +16,9 @@ struct MeshError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Reads, repairs, triangulates and orients the mesh in `path` (format by extension).
+// Reads, repairs, triangulates and orients the mesh in `path` (format by extension, any
+// letter case). Normals and uvs come only from OBJ vn/vt, and only when every face corner
+// has one; PLY, OFF and STL normals and uvs are not read (CGAL's readers drop them).
 std::shared_ptr<MeshData> loadMeshFile(const std::string& path);
 
 // For meshes built in memory (inline <mesh>): repairs and orients the triangles where that

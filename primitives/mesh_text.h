@@ -3,7 +3,10 @@
 #pragma once
 
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
 #include <cstddef>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -58,8 +61,15 @@ inline bool parseReal(std::string_view tok, double& value) {
   if (tok.front() == '+') tok.remove_prefix(1);
   if (tok.empty()) return false;
   auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), value);
-  // from_chars reports out-of-range (1e999) as an error: such a value is not finite for us.
-  return ec == std::errc() && end == tok.data() + tok.size();
+  if (end != tok.data() + tok.size()) return false;
+  if (ec == std::errc::result_out_of_range) {
+    // Overflow (1e999) is not finite; underflow (1e-400) is a tiny number, as strtod and
+    // CGAL's reader make it.
+    const std::string text(tok);
+    value = std::strtod(text.c_str(), nullptr);
+    return std::isfinite(value);
+  }
+  return ec == std::errc();
 }
 
 // A decimal integer with an optional sign, consumed entirely, within [lo, hi].

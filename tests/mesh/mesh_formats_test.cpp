@@ -140,3 +140,13 @@ TEST_CASE("a non-planar quad is split in two, a self-intersecting one is dropped
   CHECK(bowtie->positions.size() == 3);
   for (const Vec3& p : bowtie->positions) CHECK(p.z == 5);
 }
+
+TEST_CASE("coordinates that underflow are read as tiny numbers", "[mesh]") {
+  TempDir dir;
+  const auto mesh = loadMeshFile(dir.write("tiny.obj", "v 0 0 0\nv 1 0 1e-400\nv 0 1 4.9e-324\nf 1 2 3\n"));
+  requireWellFormed(*mesh);
+  REQUIRE(mesh->positions.size() == 3);
+  double zs = 0;
+  for (const Vec3& p : mesh->positions) zs += p.z;
+  CHECK(zs == 4.9e-324);  // 1e-400 becomes 0, the smallest denormal stays
+}
