@@ -1,5 +1,7 @@
 #include "bvh.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
@@ -372,20 +374,59 @@ Bvh::Bvh(const std::vector<AABB>& itemBounds, const Options& options)
 Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Options& options) {
   if (count >= kMaxItems) throw std::invalid_argument("BVH: too many items");
   if (options.maxLeafSize == 0) throw std::invalid_argument("BVH: maxLeafSize must be >= 1");
-  std::vector<Ref> refs;
-  refs.reserve(count);
-  Box4 box, cbox;
-  for (uint32_t i = 0; i < count; ++i) {
-    AABB b = boundsOf(i);
-    if (b.empty()) continue;  // never hit: not in the tree
-    if (!b.isBounded()) throw std::invalid_argument("BVH: an item has an unbounded box");
-    float id = Ref::encode(i);
-    Ref r{v4f{roundDown(b.lo.x), roundDown(b.lo.y), roundDown(b.lo.z), id},
-          v4f{roundUp(b.hi.x), roundUp(b.hi.y), roundUp(b.hi.z), id}};
-    box.expand(r.box());
-    cbox.expand(r.centroid2());
-    refs.push_back(r);
+  // The items' boxes rounded outward, in parallel for large inputs (boundsOf must then
+  // be safe to call from several threads: it only reads). Items with an empty box are
+  // marked and dropped after.
+  std::vector<Ref> refs(count);
+  struct Bounds {
+    Box4 box, cbox;
+    size_t empties = 0;
+    bool unbounded = false;
+    void join(const Bounds& o) {
+      box.expand(o.box);
+      cbox.expand(o.cbox);
+      empties += o.empties;
+      unbounded = unbounded || o.unbounded;
+    }
+  };
+  auto fill = [&](uint32_t first, uint32_t last, Bounds& acc) {
+    for (uint32_t i = first; i < last; ++i) {
+      AABB b = boundsOf(i);
+      float id = Ref::encode(i);
+      if (b.empty() || !b.isBounded()) {
+        acc.unbounded = acc.unbounded || !b.empty();
+        acc.empties++;
+        refs[i] = Ref{splat(NAN), splat(NAN)};
+        continue;
+      }
+      Ref& r = refs[i];
+      r = Ref{v4f{roundDown(b.lo.x), roundDown(b.lo.y), roundDown(b.lo.z), id},
+              v4f{roundUp(b.hi.x), roundUp(b.hi.y), roundUp(b.hi.z), id}};
+      acc.box.expand(r.box());
+      acc.cbox.expand(r.centroid2());
+    }
+  };
+  Bounds all;
+  if (options.parallel && count >= kParallelMin) {
+    all = tbb::parallel_reduce(
+        tbb::blocked_range<uint32_t>(0, uint32_t(count), 4096), Bounds(),
+        [&](const tbb::blocked_range<uint32_t>& r, Bounds acc) {
+          fill(r.begin(), r.end(), acc);
+          return acc;
+        },
+        [](Bounds a, const Bounds& b) {
+          a.join(b);
+          return a;
+        });
+  } else {
+    fill(0, uint32_t(count), all);
   }
+  if (all.unbounded) throw std::invalid_argument("BVH: an item has an unbounded box");
+  if (all.empties)  // never hit: not in the tree
+    refs.erase(std::remove_if(refs.begin(), refs.end(),
+                              [](const Ref& r) { return std::isnan(r.lo[0]); }),
+               refs.end());
+  const Box4 box = all.box, cbox = all.cbox;
   itemCount_ = refs.size();
   if (refs.empty()) return;
 

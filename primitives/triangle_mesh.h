@@ -13,6 +13,7 @@
 // and third corner.
 #pragma once
 
+#include "bvh.h"
 #include "mesh_data.h"
 #include "shape.h"
 
@@ -43,19 +44,22 @@ class TriangleMesh final : public Shape {
   size_t triangleCount() const override { return mesh_->triangles.size(); }
 
   const MeshData& data() const { return *mesh_; }
+  // The triangles' hierarchy (statistics, memory figures).
+  const Bvh& bvh() const { return bvh_; }
 
  private:
-  // The acceleration seam: calls visit(triangleIndex) for every triangle the ray may hit
-  // with t in [ray.tmin, tFar], where tFar is read again after each call (a closest-hit
-  // search shrinks it). visit returns false to stop. Today a bounds test and a loop over
-  // the non-degenerate triangles; a BVH replaces the body without touching the callers.
+  // Calls visit(triangleIndex) for every triangle the ray may hit with t in
+  // [ray.tmin, tFar], nearest BVH boxes first, where tFar is read again after each call
+  // (a closest-hit search shrinks it). visit returns false to stop.
   template <class Visit>
   void forEachCandidate(const Ray& ray, const double& tFar, Visit&& visit) const;
 
   std::shared_ptr<const MeshData> mesh_;
   bool useNormals_;
-  std::vector<uint32_t> live_;  // indices of the triangles with non-zero area
   AABB bounds_;
+  // Over the triangles with non-zero area (the others have an empty box: never visited);
+  // it keeps its leaf order, so the visits name triangles by their index in MeshData.
+  Bvh bvh_;
 };
 
 }  // namespace lucent
