@@ -6,8 +6,10 @@
 #
 #   bash bench/run.sh           # the full run (about ten minutes on two cores)
 #   bash bench/run.sh --quick   # small sizes: checks the pipeline, figures not meaningful
+# LUCENT_BENCH_BUILD names another build folder (default build-bench).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+build=${LUCENT_BENCH_BUILD:-build-bench}
 
 quick=0
 [ "${1:-}" = "--quick" ] && quick=1
@@ -18,8 +20,8 @@ else
 fi
 
 bash scripts/install-bench-deps
-cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DLUCENT_BUILD_TESTS=OFF >/dev/null
-cmake --build build-bench -j"$(nproc)" --target lucent mesh_embree bvh_scaling bvh_threads \
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j"$(nproc)" --target lucent mesh_embree bvh_scaling bvh_threads \
   peak_memory >/dev/null
 
 data=docs/performance-data
@@ -29,16 +31,16 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 echo "bench/run.sh: Lucent against Embree (${tris} triangles)" >&2
-build-bench/bench/mesh_embree --triangles "$tris" --size "$size" --tsv "$data/embree.tsv" \
+"$build"/bench/mesh_embree --triangles "$tris" --size "$size" --tsv "$data/embree.tsv" \
   | tee "$work/embree.md"
 echo "bench/run.sh: time per ray against primitive count" >&2
-build-bench/bench/bvh_scaling --max "$scaleMax" --size "$scaleSize" --tsv "$data/scaling.tsv" \
+"$build"/bench/bvh_scaling --max "$scaleMax" --size "$scaleSize" --tsv "$data/scaling.tsv" \
   | tee "$work/scaling.md"
 echo "bench/run.sh: thread scaling" >&2
-build-bench/bench/bvh_threads --triangles "$tris" --size "$size" --tsv "$data/threads.tsv" \
+"$build"/bench/bvh_threads --triangles "$tris" --size "$size" --tsv "$data/threads.tsv" \
   | tee "$work/threads.md"
 echo "bench/run.sh: peak memory of lucent render" >&2
-build-bench/bench/peak_memory build-bench/cli/lucent "$work" --triangles "$tris" \
+"$build"/bench/peak_memory "$build"/cli/lucent "$work" --triangles "$tris" \
   --size "$peakSize" | tee "$work/peak.md" || true
 
 # ---- plots ----
