@@ -1,0 +1,94 @@
+// Cameras in POV-Ray: handedness through `right -x*W/H`, the field of view as `angle`, the
+// frame after the camera's transform, and the types POV-Ray cannot express.
+#include "pov_test_support.h"
+
+#include "povray/pov_camera.h"
+
+#include <cmath>
+
+using namespace lucent;
+using namespace lucent::test;
+
+TEST_CASE("pinhole camera becomes a perspective camera with negative handedness",
+          "[povray][camera]") {
+  Exported e = exportScene(R"XML(<render width="640" height="480"/>
+      <camera position="0 2 8" look-at="0 1 0" up="0 1 0" fov="50"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.has("camera {\n"
+              "  perspective\n"
+              "  right -x*640/480\n"
+              "  up y\n"
+              "  angle 50\n"
+              "  location <0, 2, 8>\n"
+              "  sky <0, 1, 0>\n"
+              "  look_at <0, 1, 0>\n"
+              "}\n"));
+}
+
+TEST_CASE("vertical and diagonal fov are turned into POV-Ray's horizontal angle",
+          "[povray][camera]") {
+  Camera c;
+  c.fov = 40.0;
+  c.fovAxis = FovAxis::Vertical;
+  // tan(h/2) = tan(v/2) * W/H
+  double expected = 2.0 * std::atan(std::tan(radians(20.0)) * 800.0 / 600.0) * 180.0 / kPi;
+  CHECK(horizontalFovDegrees(c, 800, 600) == Approx(expected).epsilon(1e-14));
+  c.fovAxis = FovAxis::Diagonal;
+  expected = 2.0 * std::atan(std::tan(radians(20.0)) * 800.0 / 1000.0) * 180.0 / kPi;
+  CHECK(horizontalFovDegrees(c, 800, 600) == Approx(expected).epsilon(1e-14));
+  c.fovAxis = FovAxis::Horizontal;
+  CHECK(horizontalFovDegrees(c, 800, 600) == 40.0);
+}
+
+TEST_CASE("the camera transform moves location, look_at and sky as the renderer does",
+          "[povray][camera]") {
+  Exported e = exportScene(R"XML(<camera position="0 0 5" look-at="0 0 0"
+                                      transform="rotate-y(90) translate(1 0 0)"/>)XML");
+  REQUIRE(e.pov.ok());
+  // rotate-y(90) takes (0 0 5) to (5 0 0); then +1 in x.
+  CHECK(e.has("  location <6, 0, 0>\n  sky <0, 1, 0>\n  look_at <1, 0, 0>\n"));
+}
+
+TEST_CASE("orthographic and fisheye cameras keep explicit right and up", "[povray][camera]") {
+  Exported ortho = exportScene(R"XML(<render width="400" height="300"/>
+      <camera type="orthographic" position="0 10 0" look-at="0 0 0" up="0 0 -1" width="12"/>)XML");
+  REQUIRE(ortho.pov.ok());
+  CHECK(ortho.has("  orthographic\n  right -x*12\n  up y*12*300/400\n"));
+  CHECK(ortho.has("  sky <0, 0, -1>\n"));
+
+  Exported fish = exportScene(R"XML(<render width="400" height="300"/>
+      <camera type="fisheye" position="0 0 0" look-at="0 1 0" up="0 0 -1" fov="180"/>)XML");
+  REQUIRE(fish.pov.ok());
+  // The image circle touches the top and bottom: |up| = 1, |right| = W/H.
+  CHECK(fish.has("  fisheye\n  right -x*400/300\n  up y*300/300\n  angle 180\n"));
+}
+
+TEST_CASE("cameras POV-Ray cannot express are errors naming the element and location",
+          "[povray][camera]") {
+  Exported lens = exportScene(R"XML(<camera type="thin-lens" position="0 1 4" look-at="0 1 0"/>)XML");
+  CHECK_FALSE(lens.pov.ok());
+  CHECK(lens.pov.text.empty());
+  REQUIRE(lens.pov.issues.size() == 1);
+  CHECK(lens.pov.issues[0].str() ==
+        "test.xml:2:1: error: <camera type=\"thin-lens\">: POV-Ray has no equivalent camera "
+        "(pinhole, orthographic and equidistant fisheye can be exported)");
+
+  Exported equisolid = exportScene(R"XML(<camera type="fisheye" mapping="equisolid"/>)XML");
+  REQUIRE(equisolid.pov.issues.size() == 1);
+  CHECK(equisolid.pov.issues[0].str() ==
+        "test.xml:2:1: error: fisheye camera: mapping 'equisolid' has no POV-Ray equivalent "
+        "(POV-Ray's fisheye is equidistant)");
+
+  Exported clipped = exportScene(R"XML(<camera name="main" near="0.5"/>)XML");
+  CHECK_FALSE(clipped.pov.ok());
+  CHECK(clipped.messages() == "test.xml:2:1: error: camera 'main': near/far clipping has no "
+                              "POV-Ray equivalent (POV-Ray cameras do not clip)\n");
+}
+
+TEST_CASE("a fisheye on a coloured background warns that POV-Ray leaves the corners black",
+          "[povray][camera]") {
+  Exported e = exportScene(R"XML(<camera type="fisheye"/><render background="0.2 0.3 0.4"/>)XML");
+  CHECK(e.pov.ok());
+  CHECK(e.messages() == "test.xml:2:1: warning: fisheye camera: POV-Ray leaves the pixels "
+                        "outside the image circle black; Lucent gives them the background\n");
+}

@@ -1,0 +1,93 @@
+// Image textures as POV-Ray image_maps: the mapping transform per shape kind, and the
+// shapes whose (u,v) POV-Ray cannot reproduce.
+#include "povray/pov_export.h"
+#include "povray/pov_image_map.h"
+
+#include "lang/parser.h"
+
+#include <catch2/catch.hpp>
+
+using namespace lucent;
+
+namespace {
+
+// Scenes beside examples/, so that textures/uvgrid.png resolves.
+PovExport exportImageScene(const std::string& shape, const std::string& scale,
+                           std::string& messages) {
+  std::string xml = "<scene version=\"1\">\n<camera position=\"0 1 5\"/>\n"
+                    "<material id=\"grid\" diffuse=\"1\"><image src=\"textures/uvgrid.png\" "
+                    "scale=\"" + scale + "\"/></material>\n" + shape + "\n</scene>\n";
+  ParseResult parsed =
+      parseSceneString(xml, std::string(LUCENT_SOURCE_DIR) + "/examples/image-test.xml");
+  for (const Diagnostic& d : parsed.diagnostics.all()) UNSCOPED_INFO(d.str());
+  REQUIRE(parsed.scene);
+  PovExport e = exportPov(*parsed.scene);
+  for (const PovIssue& i : e.issues) messages += i.message + "\n";
+  UNSCOPED_INFO(messages);
+  UNSCOPED_INFO(e.text);
+  return e;
+}
+
+bool has(const PovExport& e, const std::string& s) { return e.text.find(s) != std::string::npos; }
+
+}  // namespace
+
+TEST_CASE("an image on a plane is a planar image_map turned onto the plane's tangents",
+          "[povray][image]") {
+  std::string messages;
+  PovExport e = exportImageScene(R"XML(<plane normal="0 0 1" offset="-4" material="grid"/>)XML",
+                                 "3 3", messages);
+  REQUIRE(e.ok());
+  std::string path = std::string(LUCENT_SOURCE_DIR) + "/examples/textures/uvgrid.png";
+  // Wall: u = x, v = y; one copy per 3 units.
+  CHECK(has(e, "      image_map { png \"" + path + "\" gamma srgb interpolate 2 }\n"
+               "      matrix <3, 0, 0,  0, 3, 0,  0, 0, 1,  0, 0, 0>\n"));
+}
+
+TEST_CASE("an image on a sphere is POV-Ray's spherical map, reflected onto Lucent's (u,v)",
+          "[povray][image]") {
+  std::string messages;
+  PovExport e = exportImageScene(R"XML(<sphere center="1 2 3" material="grid"/>)XML", "1 1", messages);
+  REQUIRE(e.ok());
+  CHECK(has(e, "gamma srgb map_type 1 interpolate 2 }\n"
+               "      matrix <0, 0, -1,  0, -1, 0,  -1, 0, 0,  0, 0, 0>\n"
+               "      translate <1, 2, 3>\n"));
+
+  std::string scaled;
+  PovExport bad = exportImageScene(R"XML(<sphere material="grid"/>)XML", "2 1", scaled);
+  CHECK_FALSE(bad.ok());
+  CHECK(scaled == "<sphere> with the image texture of material 'grid': POV-Ray's spherical map "
+                  "covers the sphere once; image scale 2 1 has no equivalent\n");
+}
+
+TEST_CASE("an image on a box becomes six face planes, each with its own copy",
+          "[povray][image]") {
+  std::string messages;
+  PovExport e = exportImageScene(R"XML(<box min="0 0 0" max="2 1 4" material="grid"/>)XML", "1 1",
+                                 messages);
+  REQUIRE(e.ok());
+  CHECK(has(e, "intersection {  // <box>"));
+  // The +x face: u = (hi_z − z)/4, v = y/1: pattern x = 4 − 4u... as the inverse matrix.
+  CHECK(has(e, "  plane {\n    <1, 0, 0>, 2\n"));
+  CHECK(has(e, "  plane {\n    <-1, 0, 0>, 0\n"));
+  std::vector<BoxFace> faces = boxFaces(BoxSpec{Vec3(0, 0, 0), Vec3(2, 1, 4)});
+  REQUIRE(faces.size() == 6);
+  // Face +x (index 1): a point on it maps to Lucent's u = (4 − z)/4, v = y.
+  Vec4 uv = faces[1].mapping.uvFromObject * Vec4(2.0, 0.25, 1.0, 1.0);
+  CHECK(uv.x == Approx(0.75));
+  CHECK(uv.y == Approx(0.25));
+  // Face −z (index 4): seen from outside (from −z) right is −x: u = (2 − x)/2.
+  uv = faces[4].mapping.uvFromObject * Vec4(0.5, 0.5, 0.0, 1.0);
+  CHECK(uv.x == Approx(0.75));
+  CHECK(uv.y == Approx(0.5));
+}
+
+TEST_CASE("an image on a shape without a POV-Ray mapping is an error naming the shape",
+          "[povray][image]") {
+  std::string messages;
+  PovExport e = exportImageScene(R"XML(<cylinder material="grid"/>)XML", "1 1", messages);
+  CHECK_FALSE(e.ok());
+  CHECK(messages == "<cylinder> with the image texture of material 'grid': POV-Ray has no "
+                    "mapping equal to Lucent's (u,v) for it (plane, disc, box, sphere and "
+                    "meshes with uvs can be exported)\n");
+}

@@ -1,0 +1,134 @@
+// Lights in POV-Ray: colours with intensity, attenuation as fade (exact numbers), parallel,
+// spotlight and area lights, and the warnings where POV-Ray differs.
+#include "pov_test_support.h"
+
+#include "povray/pov_lights.h"
+
+#include <cmath>
+
+using namespace lucent;
+using namespace lucent::test;
+
+namespace {
+
+// POV-Ray's light fade: 2 / (1 + (d/fd)^fp) (shared/povray-notes.md section 2).
+double povFadeAt(const PovFade& f, double d) {
+  if (!f.fade) return f.scale;
+  return f.scale * 2.0 / (1.0 + std::pow(d / f.distance, f.power));
+}
+
+double lucentAttenuation(const Vec3& abc, double r) {
+  return std::min(1.0, 1.0 / (abc.x + abc.y * r + abc.z * r * r));
+}
+
+}  // namespace
+
+TEST_CASE("a point light carries color times intensity", "[povray][lights]") {
+  Exported e = exportScene(R"XML(<light position="1 2 3" color="1 0.5 0.25" intensity="2"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.has("light_source {\n  <1, 2, 3>\n  color rgb <2, 1, 0.5>\n}\n"));
+}
+
+TEST_CASE("quadratic attenuation maps exactly onto fade_power 2", "[povray][lights]") {
+  // 1/(1 + 0.25 r²) = ½ · 2/(1 + (r/2)²)
+  PovFade f = povFade(Vec3(1.0, 0.0, 0.25));
+  CHECK(f.fade);
+  CHECK(f.exact);
+  CHECK(f.power == 2.0);
+  CHECK(f.distance == 2.0);
+  CHECK(f.scale == 0.5);
+  CHECK(f.exactBeyond == 0.0);
+  for (double r : {0.0, 0.5, 1.0, 3.0, 10.0, 100.0})
+    CHECK(povFadeAt(f, r) == Approx(lucentAttenuation(Vec3(1.0, 0.0, 0.25), r)).epsilon(1e-14));
+
+  Exported e = exportScene(R"XML(<light position="0 4 0" attenuation="1 0 0.25"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.pov.issues.empty());
+  CHECK(e.has("  color rgb <0.5, 0.5, 0.5>\n  fade_distance 2\n  fade_power 2\n"));
+}
+
+TEST_CASE("linear attenuation maps exactly onto fade_power 1", "[povray][lights]") {
+  PovFade f = povFade(Vec3(2.0, 0.5, 0.0));
+  CHECK(f.exact);
+  CHECK(f.power == 1.0);
+  CHECK(f.distance == 4.0);
+  CHECK(f.scale == 0.25);
+  for (double r : {0.0, 1.0, 7.0, 50.0})
+    CHECK(povFadeAt(f, r) == Approx(lucentAttenuation(Vec3(2.0, 0.5, 0.0), r)).epsilon(1e-14));
+}
+
+TEST_CASE("attenuation with a < 1 is exact only where the clamp is inactive", "[povray][lights]") {
+  // min(1, 1/(0.5 + 0.5 r²)) is clamped for r < 1.
+  PovFade f = povFade(Vec3(0.5, 0.0, 0.5));
+  CHECK(f.exactBeyond == 1.0);
+  CHECK(povFadeAt(f, 2.0) == Approx(lucentAttenuation(Vec3(0.5, 0.0, 0.5), 2.0)));
+  CHECK(povFadeAt(f, 0.5) > 1.0);  // POV-Ray's fade exceeds 1 near the light
+
+  Exported e = exportScene(R"XML(<light position="0 4 0" attenuation="0.5 0 0.5"/>)XML");
+  CHECK(e.pov.ok());
+  CHECK(e.messages() ==
+        "test.xml:3:1: warning: point light: attenuation \"0.5 0 0.5\" maps onto POV-Ray's fade "
+        "exactly only 1 or more from the light, where min(1, ...) stops clamping\n");
+}
+
+TEST_CASE("attenuation with both b and c is approximated with a warning", "[povray][lights]") {
+  PovFade f = povFade(Vec3(1.0, 0.1, 0.01));
+  CHECK_FALSE(f.exact);
+  CHECK(f.power == 2.0);
+  CHECK(f.distance == Approx(10.0));
+  Exported e = exportScene(R"XML(<light position="0 4 0" attenuation="1 0.1 0.01"/>)XML");
+  CHECK(e.pov.ok());
+  CHECK(e.messages() == "test.xml:3:1: warning: point light: attenuation with both b and c has "
+                        "no POV-Ray equivalent; the linear term b is dropped\n");
+}
+
+TEST_CASE("a constant attenuation scales the colour", "[povray][lights]") {
+  PovFade f = povFade(Vec3(4.0, 0.0, 0.0));
+  CHECK_FALSE(f.fade);
+  CHECK(f.scale == 0.25);
+  CHECK(povFade(Vec3(0.5, 0.0, 0.0)).scale == 1.0);  // min(1, 2)
+}
+
+TEST_CASE("a directional light is a parallel light far behind the scene", "[povray][lights]") {
+  Exported e = exportScene(R"XML(<light type="directional" direction="0 -2 0" color="0.5"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.has("light_source {\n  <0, 1000000, 0>\n  color rgb <0.5, 0.5, 0.5>\n  parallel\n"
+              "  point_at <0, 0, 0>\n}\n"));
+}
+
+TEST_CASE("a spot light is a spotlight with tightness 0", "[povray][lights]") {
+  Exported e = exportScene(
+      R"XML(<light type="spot" position="0 5 0" direction="0 -1 0" angle="40" inner="25"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.has("  spotlight\n  point_at <0, 4, 0>\n  radius 25\n  falloff 40\n  tightness 0\n"));
+}
+
+TEST_CASE("area lights keep their grid; uneven POV-Ray weights are warned about",
+          "[povray][lights]") {
+  Exported even = exportScene(
+      R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 1" samples="4 2"/>)XML");
+  REQUIRE(even.pov.ok());
+  CHECK(even.pov.issues.empty());
+  CHECK(even.has("  area_light <2, 0, 0>, <0, 0, 1>, 4, 2\n"));
+
+  Exported odd = exportScene(
+      R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 1" samples="5 4"/>)XML");
+  CHECK(odd.pov.ok());
+  CHECK(odd.messages() ==
+        "test.xml:3:1: warning: area light: POV-Ray weights a 5x4 sample grid unevenly (edge "
+        "samples count less); it matches Lucent's plain average only for 2, 4, 8, ... samples "
+        "per side\n");
+}
+
+TEST_CASE("a light without shadows is shadowless, with a warning when highlights exist",
+          "[povray][lights]") {
+  Exported plain = exportScene(R"XML(<light position="0 5 0" shadows="false"/>
+      <sphere><material diffuse="0.5"/></sphere>)XML");
+  CHECK(plain.has("  shadowless\n"));
+  CHECK(plain.pov.issues.empty());
+
+  Exported shiny = exportScene(R"XML(<light position="0 5 0" shadows="false"/>
+      <sphere><material diffuse="0.5" specular="0.3"/></sphere>)XML");
+  CHECK(shiny.messages() == "test.xml:3:1: warning: point light with shadows=\"false\": "
+                            "POV-Ray's shadowless lights give no specular highlights\n");
+}
