@@ -124,3 +124,16 @@ TEST_CASE("area light direction and distance are taken from its centre", "[rende
   Floor f(area);
   CHECK(f.origin().r == Approx(0.25).epsilon(1e-6));
 }
+
+TEST_CASE("two thin transparent layers filter a shadow once each", "[render][shadow]") {
+  // Discs have no inside: the shadow ray crosses each exactly once.
+  Floor f(pointLight(Vec3(0, 10, 0)));
+  addShape(f.scene, DiscSpec{Vec3(0, 2, 0), Vec3(0, 1, 0), 5.0, 0.0},
+           addMaterial(f.scene, clear(Color(0.5f))));
+  addShape(f.scene, DiscSpec{Vec3(0, 3, 0), Vec3(0, 1, 0), 5.0, 0.0},
+           addMaterial(f.scene, clear(Color(0.8f, 0.6f, 0.4f))));
+  Color c = f.origin();
+  CHECK(c.r == Approx(0.5 * 0.8).epsilon(1e-6));
+  CHECK(c.g == Approx(0.5 * 0.6).epsilon(1e-6));
+  CHECK(c.b == Approx(0.5 * 0.4).epsilon(1e-6));
+}

@@ -229,3 +229,21 @@ TEST_CASE("<render epsilon> moves secondary origins by epsilon along the normal"
   CHECK(traceOne(world, Ray(Vec3(0, 0, 5), Vec3(0, 0, -1))).r ==
         Approx(std::exp(-1.5)).epsilon(1e-6));
 }
+
+TEST_CASE("a surface without an inside is a thin sheet: transmission does not bend",
+          "[render][refraction]") {
+  // A disc of "glass" with ior 1.5 between the camera and a wall: light goes straight
+  // through (no medium to enter) and keeps its depth, so max-depth 1 still sees the wall.
+  Scene scene;
+  scene.render.maxDepth = 1;
+  addShape(scene, DiscSpec{Vec3(0, 0, -2), Vec3(0, 0, 1), 3.0, 0.0},
+           addMaterial(scene, glass(1.5, Color(0.5f))));
+  addWall(scene, -10, addMaterial(scene, emissive(Color(1.0f))));
+  World world(scene);
+  RayStats stats;
+  // Oblique, so that a bent ray would have a reason to be at depth 2 (and black).
+  const double a = radians(20.0);
+  CHECK(traceOne(world, Ray(Vec3(0, 0, 0), Vec3(std::sin(a), 0, -std::cos(a))), &stats).r ==
+        Approx(0.5).epsilon(1e-7));
+  CHECK(stats.refracted == 1);
+}
