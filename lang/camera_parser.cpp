@@ -65,7 +65,7 @@ void parseCamera(ElementReader& r) {
   });
 
   if (auto name = r.text("name")) {
-    if (name->empty()) r.attrError("name", "a camera name must not be empty");
+    if (!isValidId(*name)) r.attrError("name", "a camera name must be non-empty and contain no spaces, got '" + *name + "'");
     else if (auto [it, inserted] = ctx.cameraNames.try_emplace(*name, cam.loc); !inserted)
       r.attrError("name", "a camera named '" + *name + "' already exists (at " + it->second.str() + ")");
     else cam.name = *name;

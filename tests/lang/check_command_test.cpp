@@ -72,7 +72,7 @@ TEST_CASE("lang: lucent check prints every error of an invalid scene to stderr a
         "E: " + scene + ": 4 errors; the scene is invalid\n");
 }
 
-TEST_CASE("lang: lucent check takes -D and --allow-path; a missing scene file exits 3", "[lang][check]") {
+TEST_CASE("lang: lucent check takes -D and --allow-path, a missing scene file exits 3", "[lang][check]") {
   std::string params = sourcePath("tests/lang/valid/params.xml");
   Run r = runLucent("check '" + params + "' -D r=-1");
   CHECK(r.status == 2);

@@ -100,7 +100,7 @@ TEST_CASE("lang: includes nest at most 16 files deep", "[lang][invalid]") {
   CHECK_THAT(d.message, Catch::Contains("includes nest deeper than 16 files"));
 }
 
-TEST_CASE("lang: a symbolic link that leaves the scene's folder is refused; --allow-path permits it", "[lang][invalid]") {
+TEST_CASE("lang: a symbolic link that leaves the scene's folder is refused, --allow-path permits it", "[lang][invalid]") {
   TempDir dir("symlink");
   dir.write("outside/secret.xml", "<scene version=\"1\"><sphere id=\"secret\"/></scene>\n");
   dir.write("outside/mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");

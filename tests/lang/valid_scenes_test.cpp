@@ -339,7 +339,7 @@ TEST_CASE("lang: parameters: $name, ${name}, nested values, use before declarati
   CHECK(r.diagnostics.all()[0].message == "-D radius is not used by the scene");
 }
 
-TEST_CASE("lang: includes: parameters, materials, lights and defs of included files; a diamond is inserted once",
+TEST_CASE("lang: includes: parameters, materials, lights and defs of included files, a diamond is inserted once",
           "[lang][valid]") {
   auto s = load("include_main.xml");
   REQUIRE(s->materials.size() == 3);  // default, gold, silver: materials.xml once

@@ -7,7 +7,7 @@
 
 using namespace lucent;
 
-TEST_CASE("lang: numbers are decimal floats without junk; inf only where allowed", "[lang][values]") {
+TEST_CASE("lang: numbers are decimal floats without junk, inf only where allowed", "[lang][values]") {
   CHECK(*parseNumber("1") == 1.0);
   CHECK(*parseNumber("-2.5") == -2.5);
   CHECK(*parseNumber("1e-3") == 1e-3);
@@ -65,7 +65,7 @@ TEST_CASE("lang: #rrggbb colours are decoded to linear with the exact sRGB curve
   CHECK(parseColor("#fff").error == "expected #rrggbb (six hexadecimal digits), got '#fff'");
 }
 
-TEST_CASE("lang: colours of three numbers are linear; one number is grey", "[lang][values]") {
+TEST_CASE("lang: colours of three numbers are linear, one number is grey", "[lang][values]") {
   auto rgb = parseColor("1 0.5 0");
   REQUIRE(rgb);
   CHECK(rgb->color == Color(1.0f, 0.5f, 0.0f));
