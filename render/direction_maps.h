@@ -44,10 +44,12 @@ struct CubeFaceAxes {
 CubeFaceAxes cubeFaceAxes(CubeFace face);
 
 // Grid size (columns x rows) of a layout, and which face sits in cell (col, row), row 0 at
-// the top. Cross (4x3):        . Up    .     .        Strip (6x1):
-//                              Left Front Right Back    Right Left Up Down Back Front
-//                              . Down  .     .        (OpenGL's +X -X +Y -Y +Z -Z order for
-// the default camera, which looks down -z with +y up).
+// the top:
+//   cross (4x3):   .     Up     .      .        strip (6x1):
+//                 Left  Front  Right  Back      Right Left Up Down Back Front
+//                  .    Down    .      .
+// The strip is OpenGL's +X -X +Y -Y +Z -Z order for the default camera (looking down -z,
+// +y up), with the orientations above.
 int cubeLayoutColumns(CubemapLayout layout);
 int cubeLayoutRows(CubemapLayout layout);
 bool cubeFaceAt(CubemapLayout layout, int col, int row, CubeFace& face);  // false: empty cell

@@ -62,6 +62,12 @@ TEST_CASE("panini rays invert the published forward map h = S sin(phi), v = S ta
       CHECK(S * std::sin(phi) == Approx(h).margin(1e-9));
       CHECK(S * std::tan(theta) == Approx(v).margin(1e-9));
     }
+    // paniniPlane() is that forward map: it takes each ray back to its plane point.
+    for (const Vec2& film : {Vec2(3, 7), Vec2(45, 30), Vec2(88, 59)}) {
+      Vec2 plane = paniniPlane(local(f, rayAt(*p, film).d), d);
+      CHECK(plane.x == Approx((2.0 * film.x / 90.0 - 1.0) * pan.halfWidth()).margin(1e-9));
+      CHECK(plane.y == Approx((1.0 - 2.0 * film.y / 60.0) * pan.halfHeight()).margin(1e-9));
+    }
     // Horizontal fov: the edges are fov/2 of longitude off the axis.
     Vec3 edge = local(f, rayAt(*p, Vec2(90.0, 30.0)).d);
     CHECK(std::atan2(edge.x, edge.z) == Approx(radians(cam.fov / 2.0)).epsilon(1e-12));
