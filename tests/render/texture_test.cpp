@@ -21,7 +21,7 @@ Color cell(const Vec3& p, double scale = 1.0) {
 }
 }  // namespace
 
-TEST_CASE("checker: [0,scale)^3 is color1 and neighbours alternate", "[render][texture]") {
+TEST_CASE("checker: the cube from 0 to scale is color1 and neighbours alternate", "[render][texture]") {
   CHECK(cell(Vec3(0.5, 0.5, 0.5)) == kOne);
   CHECK(cell(Vec3(1.5, 0.5, 0.5)) == kTwo);
   CHECK(cell(Vec3(1.5, 1.5, 0.5)) == kOne);
