@@ -37,7 +37,7 @@ Material clear(const Color& kt) {
 
 }  // namespace
 
-TEST_CASE("an opaque blocker casts a full shadow; a shadowless light ignores it",
+TEST_CASE("an opaque blocker casts a full shadow, a shadowless light ignores it",
           "[render][shadow]") {
   Floor f(pointLight(Vec3(0, 10, 0)));
   CHECK(f.origin() == Color(1.0f));
