@@ -95,17 +95,34 @@ void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& 
                                  "equivalent (POV-Ray's fisheye is equidistant)");
         return;
       }
-      if (maxComponent(render.background) > 0.0f)
+      // A diagonal circle reaches the corners: no pixel is outside it.
+      if (maxComponent(render.background) > 0.0f && camera.fovAxis != FovAxis::Diagonal)
         issues.warning(camera.loc, "fisheye camera: POV-Ray leaves the pixels outside the "
                                    "image circle black; Lucent gives them the background");
       // POV-Ray: u, v in [-1, 1] across the image, scaled by |right| and |up|; the image
-      // circle is r = 1. Scaling the longer side by its aspect ratio inscribes the circle
-      // in the image, as the renderer does.
-      int m = std::min(w, h);
+      // circle is r = 1 (povray-notes.md section 4). The renderer's circle spans the image
+      // along fov-axis (render/fisheye.h): the width, the height, or the diagonal.
+      std::string right, up;
+      switch (camera.fovAxis) {
+        case FovAxis::Horizontal:
+          right = "1";
+          up = ratio(h, w);
+          break;
+        case FovAxis::Vertical:
+          right = ratio(w, h);
+          up = "1";
+          break;
+        case FovAxis::Diagonal: {
+          double d = std::hypot(static_cast<double>(w), static_cast<double>(h));
+          right = povNumber(w / d);
+          up = povNumber(h / d);
+          break;
+        }
+      }
       out.open("camera");
       out.line("fisheye");
-      out.line("right -x*" + ratio(w, m));
-      out.line("up y*" + ratio(h, m));
+      out.line("right -x*" + right);
+      out.line("up y*" + up);
       out.line("angle " + povNumber(camera.fov));
       writeFrame(frame, out);
       out.close();

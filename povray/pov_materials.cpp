@@ -164,6 +164,11 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
     issues.warning(m.loc, fmt::format("{}: inside the object Lucent scales the ambient term by "
                                       "transmissive; POV-Ray does not",
                                       name));
+  if (transmits && m.isAbsorbing() && !isZero(kr))
+    issues.warning(m.loc, fmt::format("{}: POV-Ray does not attenuate light reflected inside "
+                                      "an absorbing object (its fade applies to transmitted "
+                                      "light only); Lucent does",
+                                      name));
   if (transmits && m.isAbsorbing()) {
     // exp(−(1 − fade_color)·d/fade_distance) = exp(−absorption·d) with fade_distance 1/max.
     Vec3 ab = v3(m.absorption);

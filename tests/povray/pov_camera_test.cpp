@@ -56,11 +56,20 @@ TEST_CASE("orthographic and fisheye cameras keep explicit right and up", "[povra
   CHECK(ortho.has("  orthographic\n  right -x*12\n  up y*12*300/400\n"));
   CHECK(ortho.has("  sky <0, 0, -1>\n"));
 
+  // POV-Ray's image circle is r = 1 with u, v in [-1, 1] scaled by |right|, |up|; the
+  // renderer's circle spans the width (fov-axis horizontal), height or diagonal.
   Exported fish = exportScene(R"XML(<render width="400" height="300"/>
       <camera type="fisheye" position="0 0 0" look-at="0 1 0" up="0 0 -1" fov="180"/>)XML");
   REQUIRE(fish.pov.ok());
-  // The image circle touches the top and bottom: |up| = 1, |right| = W/H.
-  CHECK(fish.has("  fisheye\n  right -x*400/300\n  up y*300/300\n  angle 180\n"));
+  CHECK(fish.has("  fisheye\n  right -x*1\n  up y*300/400\n  angle 180\n"));
+
+  Exported tall = exportScene(R"XML(<render width="400" height="300"/>
+      <camera type="fisheye" fov="200" fov-axis="vertical"/>)XML");
+  CHECK(tall.has("  fisheye\n  right -x*400/300\n  up y*1\n  angle 200\n"));
+
+  Exported full = exportScene(R"XML(<render width="400" height="300"/>
+      <camera type="fisheye" fov="150" fov-axis="diagonal"/>)XML");
+  CHECK(full.has("  fisheye\n  right -x*0.8\n  up y*0.6\n  angle 150\n"));
 }
 
 TEST_CASE("cameras POV-Ray cannot express are errors naming the element and location",
@@ -87,6 +96,10 @@ TEST_CASE("cameras POV-Ray cannot express are errors naming the element and loca
 
 TEST_CASE("a fisheye on a coloured background warns that POV-Ray leaves the corners black",
           "[povray][camera]") {
+  Exported diagonal =
+      exportScene(R"XML(<camera type="fisheye" fov-axis="diagonal"/><render background="1"/>)XML");
+  CHECK(diagonal.pov.issues.empty());
+
   Exported e = exportScene(R"XML(<camera type="fisheye"/><render background="0.2 0.3 0.4"/>)XML");
   CHECK(e.pov.ok());
   CHECK(e.messages() == "test.xml:2:1: warning: fisheye camera: POV-Ray leaves the pixels "

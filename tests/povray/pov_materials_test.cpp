@@ -139,6 +139,12 @@ TEST_CASE("approximations are warnings naming the material", "[povray][materials
   CHECK(spec.messages() == "test.xml:3:1: warning: material 'm': POV-Ray's specular is one "
                            "number; the coloured specular 1 0.5 0 becomes 0.5\n");
 
+  Exported absorb =
+      exportMaterial(R"XML(transmissive="1" reflective="0.3" absorption="0.5")XML");
+  CHECK(absorb.messages() == "test.xml:3:1: warning: material 'm': POV-Ray does not attenuate "
+                             "light reflected inside an absorbing object (its fade applies to "
+                             "transmitted light only); Lucent does\n");
+
   Exported tir = exportMaterial(R"XML(transmissive="0.8" ior="1.5")XML");
   CHECK(tir.messages() == "test.xml:3:1: warning: material 'm': under total internal "
                           "reflection POV-Ray reflects with weight 1, Lucent with transmissive "
