@@ -25,6 +25,10 @@ void writeSettings(const RenderSettings& r, PovWriter& out, PovIssues& issues) {
                                       r.maxDepth, kPovMaxTraceLevel));
     depth = kPovMaxTraceLevel;
   }
+  if (r.epsilon)
+    issues.warning(r.loc, fmt::format("render: epsilon {} has no POV-Ray equivalent (POV-Ray "
+                                      "ignores hits closer than its own fixed tolerances)",
+                                      *r.epsilon));
   out.open("global_settings");
   // Colours are linear: with assumed_gamma 1.0 POV-Ray neither decodes nor re-encodes them
   // before its file output gamma.

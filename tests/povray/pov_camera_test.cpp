@@ -105,3 +105,17 @@ TEST_CASE("a fisheye on a coloured background warns that POV-Ray leaves the corn
   CHECK(e.messages() == "test.xml:2:1: warning: fisheye camera: POV-Ray leaves the pixels "
                         "outside the image circle black; Lucent gives them the background\n");
 }
+
+TEST_CASE("render settings become global_settings and background after #version 3.7",
+          "[povray][settings]") {
+  Exported e = exportScene(R"XML(<render width="64" height="48" max-depth="7" min-weight="0.01"
+        background="0.1 0.2 0.3" ambient="0.5 0.5 0.4" epsilon="1e-4"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.pov.text.find("#version 3.7;\n") < e.pov.text.find("global_settings"));
+  CHECK(e.has("global_settings {\n  assumed_gamma 1.0\n  max_trace_level 7\n"
+              "  adc_bailout 0.01\n  ambient_light rgb <0.5, 0.5, 0.4>\n}\n"
+              "background { rgb <0.1, 0.2, 0.3> }\n"));
+  CHECK(e.messages() == "test.xml:3:1: warning: render: epsilon 0.0001 has no POV-Ray "
+                        "equivalent (POV-Ray ignores hits closer than its own fixed "
+                        "tolerances)\n");
+}
