@@ -1,10 +1,12 @@
 // Peak memory of a whole `lucent render` run: writes a scene with one displaced-sphere
 // mesh of about N triangles (a binary PLY file beside it), runs the given lucent binary on
-// it and reports the child's peak resident memory (getrusage's ru_maxrss) and its time.
+// it and reports the child's peak resident memory (getrusage's ru_maxrss) and its time,
+// beside the same figures for `lucent --version`: what the process costs before any scene.
 //
 //   peak_memory LUCENT_BINARY WORK_DIR [--triangles N] [--size W]
 #include "bench_util.h"
 
+#include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -66,25 +68,39 @@ int main(int argc, char** argv) {
   size_t written = mesh.triangles.size();
   mesh = MeshData();  // this process's memory is not the child's, but keep it small
 
-  auto t0 = Clock::now();
-  pid_t pid = fork();
-  if (pid == 0) {
-    std::string scene = dir + "/bumpy.xml", image = dir + "/bumpy.png";
-    execl(lucent.c_str(), lucent.c_str(), "render", scene.c_str(), "-o", image.c_str(), "-q",
-          static_cast<char*>(nullptr));
-    std::perror("exec");
-    _exit(127);
-  }
-  int status = 0;
-  struct rusage usage;
-  std::memset(&usage, 0, sizeof usage);
-  wait4(pid, &status, 0, &usage);
-  double seconds = secondsSince(t0);
-  bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  // The process alone (`lucent --version`: its shared libraries and static data), then
+  // the render.
+  struct Run { bool ok; double seconds, peakMB; };
+  auto run = [&](std::vector<std::string> args) {
+    auto t0 = Clock::now();
+    pid_t pid = fork();
+    if (pid == 0) {
+      std::vector<char*> argv{const_cast<char*>(lucent.c_str())};
+      for (auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+      argv.push_back(nullptr);
+      int devnull = open("/dev/null", O_WRONLY);
+      dup2(devnull, 1);
+      execv(lucent.c_str(), argv.data());
+      std::perror("exec");
+      _exit(127);
+    }
+    int status = 0;
+    struct rusage usage;
+    std::memset(&usage, 0, sizeof usage);
+    wait4(pid, &status, 0, &usage);
+    return Run{WIFEXITED(status) && WEXITSTATUS(status) == 0, secondsSince(t0),
+               usage.ru_maxrss / 1024.0};
+  };
+  Run base = run({"--version"});
+  Run render = run({"render", dir + "/bumpy.xml", "-o", dir + "/bumpy.png", "-q"});
   fmt::print("# peak_memory: lucent render of {} triangles at {}x{}; {}, load {}\n", written,
              size, size, cpuModel(), loadAverage());
-  fmt::print("\n| scene | exit | wall time | peak memory |\n|---|---|---|---|\n");
-  fmt::print("| {} triangles ({}x{}) | {} | {:.1f} s | {:.0f} MB |\n", written, size, size,
-             ok ? "0" : "FAILED", seconds, usage.ru_maxrss / 1024.0);
+  fmt::print("\n| run | exit | wall time | peak memory |\n|---|---|---|---|\n");
+  fmt::print("| `lucent --version` (the process alone) | {} | {:.1f} s | {:.0f} MB |\n",
+             base.ok ? "0" : "FAILED", base.seconds, base.peakMB);
+  fmt::print("| `lucent render`, {} triangles, {}x{} | {} | {:.1f} s | {:.0f} MB |\n", written,
+             size, size, render.ok ? "0" : "FAILED", render.seconds, render.peakMB);
+  fmt::print("| the scene's share (difference) | | | {:.0f} MB |\n", render.peakMB - base.peakMB);
+  bool ok = render.ok;
   return ok ? 0 : 1;
 }

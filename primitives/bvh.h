@@ -120,32 +120,32 @@ struct FastNodeTest {
   v4f inv[3];                 // 1/d in float
   v4f tmin;                   // rounded down
 
+  static constexpr v4i kAbsMask = {0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
   // 2·gamma(3) for float (pbrt's gamma with the float unit roundoff).
   static constexpr float kWiden =
       2.0f * (3.0f * (FLT_EPSILON * 0.5f)) / (1.0f - 3.0f * (FLT_EPSILON * 0.5f));
 
-  // Usable when every direction component is non-zero with a float reciprocal, and the
-  // origin is within float range.
-  static bool usable(const Ray& r) {
-    for (int a = 0; a < 3; ++a) {
-      double inv = 1.0 / r.d[a];
-      if (r.d[a] == 0.0 || !(std::abs(inv) < double(FLT_MAX)) ||
-          !(std::abs(r.o[a]) < double(FLT_MAX)))
-        return false;
-    }
-    return true;
-  }
+  bool usable = false;  // no zero direction component, and everything within float range
 
   explicit FastNodeTest(const Ray& r) {
+    // The origin rounded to float and then moved outward by more than the rounding:
+    // |o - f| <= ulp(f)/2 < |f|·2^-23, and FLT_MIN covers an origin that rounds to 0.
+    v4f o = {float(r.o.x), float(r.o.y), float(r.o.z), 0.0f};
+    v4f absO = reinterpret_cast<v4f>(reinterpret_cast<v4i>(o) & kAbsMask);
+    v4f slack = absO * splat(FLT_EPSILON) + splat(FLT_MIN);
+    v4f up = o + slack, down = o - slack;
+    usable = true;
     for (int a = 0; a < 3; ++a) {
+      double invD = 1.0 / r.d[a];
+      usable = usable && r.d[a] != 0.0 && std::abs(invD) < double(FLT_MAX) &&
+               std::abs(r.o[a]) < double(FLT_MAX);
       bool negative = r.d[a] < 0.0;
-      float up = roundUp(r.o[a]), down = roundDown(r.o[a]);
       // Going up the axis the lo plane is met first; going down, the hi plane.
       nearOff[a] = 8 * a + (negative ? 4 : 0);
       farOff[a] = 8 * a + (negative ? 0 : 4);
-      orgNear[a] = splat(negative ? down : up);
-      orgFar[a] = splat(negative ? up : down);
-      inv[a] = splat(static_cast<float>(1.0 / r.d[a]));
+      orgNear[a] = splat(negative ? down[a] : up[a]);
+      orgFar[a] = splat(negative ? up[a] : down[a]);
+      inv[a] = splat(static_cast<float>(invD));
     }
     tmin = splat(roundDown(r.tmin));
   }
@@ -161,10 +161,9 @@ struct FastNodeTest {
       t1 = vmin(t1, tf);
     }
     // Widen both ends by the rounding bound: t0 - |t0|·k and t1 + |t1|·k.
-    const v4i absMask = {0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
     v4f k = splat(kWiden);
-    t0 = t0 - reinterpret_cast<v4f>(reinterpret_cast<v4i>(t0) & absMask) * k;
-    t1 = t1 + reinterpret_cast<v4f>(reinterpret_cast<v4i>(t1) & absMask) * k;
+    t0 = t0 - reinterpret_cast<v4f>(reinterpret_cast<v4i>(t0) & kAbsMask) * k;
+    t1 = t1 + reinterpret_cast<v4f>(reinterpret_cast<v4i>(t1) & kAbsMask) * k;
     std::memcpy(tEnter, &t0, sizeof t0);
     return laneMask(t0 <= t1);
   }
@@ -259,8 +258,9 @@ class Bvh {
   // it was ended so.
   template <class Visit>
   bool candidates(const Ray& ray, const double& tFar, Visit&& visit) const {
-    if (bvh_detail::FastNodeTest::usable(ray))
-      return candidatesWith(bvh_detail::FastNodeTest(ray), tFar, visit);
+    if (nodes_.empty()) return true;
+    bvh_detail::FastNodeTest fast(ray);
+    if (fast.usable) return candidatesWith(fast, tFar, visit);
     return candidatesWith(SafeNodeTest(ray), tFar, visit);
   }
 
@@ -347,12 +347,23 @@ class Bvh {
 template <class T>
 void Bvh::pushOrdered(const BvhNode& n, int mask, const T tEnter[4], Entry<T>* stack, int& sp,
                       Entry<T>& next) {
-  Entry<T> e[4];
-  int k = 0;
+  int c0 = __builtin_ctz(mask);
+  mask &= mask - 1;
+  int c1 = __builtin_ctz(mask);
+  mask &= mask - 1;
+  Entry<T> a{n.index[c0], n.count[c0], tEnter[c0]}, b{n.index[c1], n.count[c1], tEnter[c1]};
+  if (b.t < a.t) std::swap(a, b);
+  if (!mask) {  // the common case: two children hit
+    stack[sp++] = b;
+    next = a;
+    return;
+  }
+  // Three or four: insertion sort, farthest first.
+  Entry<T> e[4] = {b, a};
+  int k = 2;
   for (; mask; mask &= mask - 1) {
     int c = __builtin_ctz(mask);
     Entry<T> x{n.index[c], n.count[c], tEnter[c]};
-    // Insertion sort, farthest first (at most four).
     int j = k++;
     for (; j > 0 && e[j - 1].t < x.t; --j) e[j] = e[j - 1];
     e[j] = x;

@@ -11,7 +11,7 @@ namespace lucent {
 
 namespace {
 // Subtrees of at most this many triangles are BVH leaves without a split search.
-constexpr uint32_t kMinLeaf = 4;
+constexpr uint32_t kMinLeaf = 2;
 }  // namespace
 
 std::vector<Vec3> computeVertexNormals(const MeshData& mesh) {
@@ -41,9 +41,9 @@ TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> mesh, bool useNormals
                                     std::to_string(P.size()));
     for (uint32_t v : tri) bounds_.expand(P[v]);
   }
-  // Zero-area triangles are never hit: an empty box keeps them out of the BVH. Leaves
-  // of up to kMinLeaf triangles are not split further: a triangle test costs about as
-  // much as a box test, and fewer nodes mean less memory and a faster build.
+  // Zero-area triangles are never hit: an empty box keeps them out of the BVH. Pairs of
+  // triangles are leaves without a split search: splitting them saves few watertight
+  // tests for more nodes and a slower build (measured with bench/, docs/performance.md).
   BvhOptions options;
   options.minLeafSize = kMinLeaf;
   bvh_ = Bvh(
