@@ -98,7 +98,7 @@ TEST_CASE("a top-level plane holding the camera is turned so the camera is outsi
   CHECK(cameraInsidePlane(floor, up, Vec3(0, 1, 0)));
 }
 
-TEST_CASE("meshes are declared once as mesh2 and instanced; closed ones get an inside_vector",
+TEST_CASE("meshes are declared once as mesh2 and instanced, closed ones get an inside_vector",
           "[povray][geometry]") {
   // A tetrahedron, outward-facing.
   Exported e = exportScene(R"XML(<defs><mesh id="tet" positions="0 0 0  0 1 0  1 0 0  0 0 1"

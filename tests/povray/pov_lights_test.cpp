@@ -103,7 +103,7 @@ TEST_CASE("a spot light is a spotlight with tightness 0", "[povray][lights]") {
   CHECK(e.has("  spotlight\n  point_at <0, 4, 0>\n  radius 25\n  falloff 40\n  tightness 0\n"));
 }
 
-TEST_CASE("area lights keep their grid; uneven POV-Ray weights are warned about",
+TEST_CASE("area lights keep their grid, uneven POV-Ray weights are warned about",
           "[povray][lights]") {
   Exported even = exportScene(
       R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 1" samples="4 2"/>)XML");

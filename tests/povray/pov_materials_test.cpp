@@ -57,7 +57,7 @@ TEST_CASE("a shape without a material gets the default material (diffuse 0.8)",
   CHECK(e.has("  texture { M0_default }\n"));
 }
 
-TEST_CASE("a grey transmissive becomes transmit; local terms are divided by the opacity",
+TEST_CASE("a grey transmissive becomes transmit, local terms are divided by the opacity",
           "[povray][materials]") {
   PovIssues issues;
   Material m;
