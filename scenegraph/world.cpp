@@ -76,7 +76,13 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
     if (box.isBounded() || box.empty())
       bounded.push_back(o.get());  // an empty box is left out by the BVH itself
     else
-      unbounded_.push_back(o.get());
+      direct_.push_back(o.get());
+  }
+  if (bounded.size() == 1 && !bounded[0]->bounds().empty()) {
+    // A lone object (one mesh, say) culls rays itself: a tree above it would only add
+    // a box test and a traversal per ray.
+    direct_.push_back(bounded[0]);
+    bounded.clear();
   }
   bvh_ = Bvh(bounded.size(), [&](uint32_t i) { return bounded[i]->bounds(); });
   // Keep the objects in leaf order: the traversal then hands out positions in bounded_.
@@ -86,13 +92,13 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
 bool World::intersect(const Ray& ray, Hit& hit) const {
   Ray r = ray;
   bool found = false;
-  for (const Shape* o : unbounded_) {
+  for (const Shape* o : direct_) {
     if (o->intersect(r, hit)) {
       r.tmax = hit.t;
       found = true;
     }
   }
-  // The BVH search starts with tmax already at the nearest plane hit, if any.
+  // The BVH search starts with tmax already at the nearest direct hit, if any.
   bool inTree = bvh_.closest(r, [&](uint32_t i, Ray& rr) {
     if (!bounded_[i]->intersect(rr, hit)) return false;
     rr.tmax = hit.t;
@@ -102,7 +108,7 @@ bool World::intersect(const Ray& ray, Hit& hit) const {
 }
 
 bool World::occluded(const Ray& ray) const {
-  for (const Shape* o : unbounded_)
+  for (const Shape* o : direct_)
     if (o->occluded(ray)) return true;
   return bvh_.any(ray, [&](uint32_t i, const Ray& r) { return bounded_[i]->occluded(r); });
 }

@@ -22,8 +22,8 @@ class World {
   // Composes transforms down to the leaves (world matrix, inverse and normal matrix
   // computed once per instance), resolves inherited materials and shares the shape of a
   // node used many times: a mesh used through many <use> is stored and built once.
-  // The top-level objects with a finite box go into a BVH; the others (planes) are
-  // tested one by one. The scene must outlive the world.
+  // The top-level objects with a finite box go into a BVH; the others (planes), or a
+  // lone object, are tested one by one. The scene must outlive the world.
   explicit World(const Scene& scene);
   World(const Scene& scene, const ShapeMaker& makeShape);
 
@@ -37,7 +37,8 @@ class World {
 
   // The top-level acceleration structure, for statistics.
   const Bvh& bvh() const { return bvh_; }
-  const std::vector<const Shape*>& unboundedObjects() const { return unbounded_; }
+  // The objects tested one by one beside the BVH: unbounded ones, or a lone object.
+  const std::vector<const Shape*>& directObjects() const { return direct_; }
 
   // The material of a hit's leaf (hit.shape is always an Instance).
   const Material& material(const Hit& hit) const {
@@ -49,7 +50,7 @@ class World {
   std::vector<std::unique_ptr<Shape>> objects_;  // top level: instances and CSG nodes
   std::vector<const Instance*> instances_;
   std::vector<const Shape*> bounded_;    // in the BVH's leaf order
-  std::vector<const Shape*> unbounded_;  // never in the BVH
+  std::vector<const Shape*> direct_;     // never in the BVH
   Bvh bvh_;
 };
 

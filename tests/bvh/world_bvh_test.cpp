@@ -82,7 +82,7 @@ TEST_CASE("world BVH gives the brute-force closest hit, planes tested beside it"
   CountingMaker maker;
   World world(scene, maker);
   CHECK(world.objects().size() == 1201);
-  CHECK(world.unboundedObjects().size() == 1);
+  CHECK(world.directObjects().size() == 1);
   CHECK(world.bvh().itemCount() == 1200);
   requireSameAsBruteForce(world, randomRays(rng, 100000, 10.0));
 }
@@ -119,8 +119,27 @@ TEST_CASE("world with only unbounded objects, or nothing at all", "[bvh][world]"
 
   scene.root->children.push_back(shapeNode(PlaneSpec{Vec3(0, 1, 0), -2.0}));
   World floor(scene, maker);
+  CHECK(floor.directObjects().size() == 1);
   REQUIRE(floor.intersect(Ray(Vec3(0.0), Vec3(0, -1, 0)), h));
   CHECK(h.t == 2.0);
   CHECK(floor.occluded(Ray(Vec3(0.0), Vec3(0, -1, 0), 0.0, 2.5)));
   CHECK_FALSE(floor.occluded(Ray(Vec3(0.0), Vec3(0, -1, 0), 0.0, 1.5)));
+}
+
+TEST_CASE("a world of one object tests it directly, and answers the same", "[bvh][world]") {
+  Scene scene;
+  scene.root->children.push_back(shapeNode(SphereSpec{Vec3(0.0), 1.0}));
+  CountingMaker maker;
+  World world(scene, maker);
+  CHECK(world.directObjects().size() == 1);
+  CHECK(world.bvh().empty());
+  std::mt19937_64 rng(13);
+  size_t hits = 0;
+  for (const Ray& ray : randomRays(rng, 2000, 2.0)) {
+    Hit want = bruteForce(world, ray), got;
+    REQUIRE(world.intersect(ray, got) == want.found());
+    if (want.found()) REQUIRE(got.t == want.t);
+    hits += want.found();
+  }
+  CHECK(hits > 100);
 }
