@@ -43,6 +43,24 @@ TEST_CASE("lenslet cells are pinhole images from lens centres pitch apart", "[ca
   CHECK(angleBetween(rayAt(*p, Vec2(2 * cw, 1.5 * ch)).d, f.forward) == Approx(radians(25.0)).epsilon(1e-13));
 }
 
+TEST_CASE("lenslet cells are framed like pinhole images of the cell for every fov-axis",
+          "[cameras][lenslet]") {
+  Camera cam = tiltedCamera(CameraType::Lenslet);
+  cam.lensesX = 3;
+  cam.lensesY = 2;
+  cam.fov = 70.0;
+  for (FovAxis axis : {FovAxis::Horizontal, FovAxis::Vertical, FovAxis::Diagonal}) {
+    cam.fovAxis = axis;
+    Camera pin = cam;
+    pin.type = CameraType::Pinhole;
+    auto p = makeProjection(cam, 3 * 30, 2 * 16);
+    auto sub = makeProjection(pin, 30, 16);
+    for (const Vec2& at : {Vec2(0.0), Vec2(30.0, 16.0), Vec2(12.5, 3.0)})
+      CHECK(angleBetween(rayAt(*p, Vec2(30.0, 16.0) + glm::min(at, Vec2(29.999, 15.999))).d,
+                         rayAt(*sub, glm::min(at, Vec2(29.999, 15.999))).d) < 1e-13);
+  }
+}
+
 TEST_CASE("a lenslet camera needs a pixel per lens at least", "[cameras][lenslet]") {
   Camera cam;
   cam.type = CameraType::Lenslet;
