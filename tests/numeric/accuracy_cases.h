@@ -1,0 +1,30 @@
+// The hard cases of the accuracy suite, one function per family. Each returns one
+// CaseResult per (setting, shape) row of docs/accuracy.md's table, with the bounds the
+// tests assert. `effort` multiplies the ray counts (1 in the tests, more for the table);
+// the 10^6 rays from inside the tessellated sphere are always 10^6.
+#pragma once
+
+#include <vector>
+
+#include "accuracy_harness.h"
+
+namespace lucent::accuracy {
+
+std::vector<CaseResult> baselineCases(double effort);  // random rays at unit scale, for comparison
+std::vector<CaseResult> grazingCases(double effort);   // grazing and tangent rays, torus hole/axis
+std::vector<CaseResult> farAndScaledCases(double effort);   // at 1e5; scaled by 1e-4 and 1e4
+std::vector<CaseResult> secondaryRayCases(double effort);   // rays leaving a surface
+std::vector<CaseResult> zeroDirectionCases(double effort);  // direction components exactly 0
+std::vector<CaseResult> nearSingularCases(double effort);   // scale(1e-7 1 1), strong shear
+// Meshes (accuracy_mesh_cases.cpp, the suite's one CGAL translation unit): 10^6 rays from
+// inside a closed tessellated sphere, rays through shared edges and vertices and along
+// edges, rays leaving the mesh, degenerate triangles.
+std::vector<CaseResult> meshCases(double effort);
+// Rays lying along a convex mesh's edges (they only touch it): a known defect, kept apart
+// so its test can be marked as expected to fail (docs/accuracy.md).
+std::vector<CaseResult> meshAlongEdgeCases(double effort);
+
+// Every family, in the table's order.
+std::vector<CaseResult> allCases(double effort);
+
+}  // namespace lucent::accuracy

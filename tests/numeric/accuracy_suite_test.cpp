@@ -1,0 +1,73 @@
+// The hard-case suite (docs/accuracy.md): every case of accuracy_cases.h must make no
+// wrong hit/miss decision, produce nothing non-finite, and stay within its stated error
+// bounds away from grazing. LUCENT_PRINT_ACCURACY=1 prints each family's table.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <cstdlib>
+
+#include "accuracy_cases.h"
+
+using namespace lucent::accuracy;
+
+namespace {
+
+void requireWithinBounds(const std::vector<CaseResult>& results) {
+  if (std::getenv("LUCENT_PRINT_ACCURACY")) std::printf("%s\n", markdownTable(results).c_str());
+  for (const CaseResult& r : results) {
+    INFO(r.group << ": " << r.name << " (" << r.rays << " rays, " << r.compared
+                 << " crossings compared, max clear t error " << r.relTClear.max()
+                 << ", max clear normal error " << r.angleClear.max() << ")\n"
+                 << r.firstProblem);
+    CHECK(r.rays > 0);
+    if (r.decisionsAsserted) CHECK(r.wrong == 0);
+    CHECK(r.nonFinite == 0);
+    if (r.boundRelT > 0.0) {
+      CHECK(r.relTClear.size() > 0);
+      CHECK(r.relTClear.max() <= r.boundRelT);
+    }
+    if (r.boundAngle > 0.0) {
+      CHECK(r.angleClear.size() > 0);
+      CHECK(r.angleClear.max() <= r.boundAngle);
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("accuracy: random rays at unit scale", "[numeric][accuracy]") {
+  requireWithinBounds(baselineCases(1.0));
+}
+
+TEST_CASE("accuracy: grazing and tangent rays, the torus's hole and axis", "[numeric][accuracy]") {
+  requireWithinBounds(grazingCases(1.0));
+}
+
+TEST_CASE("accuracy: unit objects 1e5 from the origin, scenes scaled by 1e-4 and 1e4",
+          "[numeric][accuracy]") {
+  requireWithinBounds(farAndScaledCases(1.0));
+}
+
+TEST_CASE("accuracy: secondary rays never re-hit the surface they leave", "[numeric][accuracy]") {
+  requireWithinBounds(secondaryRayCases(1.0));
+}
+
+TEST_CASE("accuracy: rays with zero direction components", "[numeric][accuracy]") {
+  requireWithinBounds(zeroDirectionCases(1.0));
+}
+
+TEST_CASE("accuracy: near-singular transforms through Instance", "[numeric][accuracy]") {
+  requireWithinBounds(nearSingularCases(1.0));
+}
+
+TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and vertices, slivers",
+          "[numeric][accuracy][mesh]") {
+  requireWithinBounds(meshCases(1.0));
+}
+
+// A known defect, documented in docs/accuracy.md: rays lying exactly along a mesh edge
+// can end "inside" a closed mesh. Expected to fail until watertight.cpp decides the side
+// of nearly edge-on triangles exactly; once it passes, drop the [!shouldfail] tag.
+TEST_CASE("accuracy: rays along mesh edges keep the crossings' parity (known defect)",
+          "[numeric][accuracy][mesh][!shouldfail]") {
+  requireWithinBounds(meshAlongEdgeCases(1.0));
+}
