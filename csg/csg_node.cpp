@@ -1,5 +1,7 @@
 #include "csg_node.h"
 
+#include "coincidence.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -33,8 +35,8 @@ bool combine(CsgOp op, const std::vector<char>& in) {
 
 }  // namespace
 
-CsgNode::CsgNode(CsgOp op, std::vector<std::unique_ptr<Shape>> children)
-    : op_(op), children_(std::move(children)) {
+CsgNode::CsgNode(CsgOp op, std::vector<std::unique_ptr<Shape>> children, CsgSearch search)
+    : op_(op), children_(std::move(children)), search_(search) {
   if (children_.empty()) throw std::invalid_argument("CSG node without children");
   solid_ = std::all_of(children_.begin(), children_.end(),
                        [](const auto& c) { return c->isSolid(); });
@@ -64,25 +66,57 @@ CsgNode::CsgNode(CsgOp op, std::vector<std::unique_ptr<Shape>> children)
 
 template <class Visit>
 void CsgNode::forEachCandidate(const Ray& ray, Visit&& visit) const {
+  if (search_ == CsgSearch::EveryChild) {
+    for (uint32_t i = 0; i < children_.size(); ++i) visit(i);
+    return;
+  }
   for (uint32_t i : unbounded_) visit(i);
   bvh_.all(ray, [&](uint32_t slot) { visit(slotChild_[slot]); });
 }
 
+namespace {
+
+// Does a child's crossing agree with a change of the node's membership to `next`? A
+// subtracted child bounds the result where it is crossed the other way; every other
+// child where it is crossed the same way. Among coincident crossings only an agreeing
+// one may bound the result, so the reported normal always faces out of the result.
+bool agrees(CsgOp op, size_t child, bool entering, bool next) {
+  bool subtracted = op == CsgOp::Difference && child > 0;
+  return (entering != subtracted) == next;
+}
+
+}  // namespace
+
 bool CsgNode::closestChildHit(const Ray& ray, Hit& hit) const {
-  Ray r = ray;
-  bool found = false;
-  for (uint32_t i : unbounded_) {
-    if (children_[i]->intersect(r, hit)) {
-      r.tmax = hit.t;
-      found = true;
-    }
-  }
-  bool inTree = bvh_.closest(r, [&](uint32_t slot, Ray& rr) {
-    if (!children_[slotChild_[slot]]->intersect(rr, hit)) return false;
-    rr.tmax = hit.t;
+  // The closest hit, except that hits within the coincidence window of the closest are
+  // ties and the child written first wins them (docs/csg.md): the nearest hit alone would
+  // let rounding pick the child pixel by pixel. Near ties are gathered by searching up to
+  // the closest t plus its window.
+  struct Candidate { Hit hit; uint32_t child; };
+  std::vector<Candidate> near;
+  double tMin = kInf;
+  auto consider = [&](uint32_t i, Ray& r) {
+    Hit h;
+    if (!children_[i]->intersect(r, h)) return false;
+    if (h.t < tMin) tMin = h.t;
+    near.push_back({h, i});
+    r.tmax = std::min(r.tmax, tMin + coincidenceWindow(r, tMin));
     return true;
-  });
-  return found || inTree;
+  };
+  Ray r = ray;
+  if (search_ == CsgSearch::EveryChild) {
+    for (uint32_t i = 0; i < children_.size(); ++i) consider(i, r);
+  } else {
+    for (uint32_t i : unbounded_) consider(i, r);
+    bvh_.closest(r, [&](uint32_t slot, Ray& rr) { return consider(slotChild_[slot], rr); });
+  }
+  const Candidate* best = nullptr;
+  const double limit = tMin + coincidenceWindow(ray, tMin);
+  for (const Candidate& c : near)
+    if (c.hit.t <= limit && (!best || c.child < best->child)) best = &c;
+  if (!best) return false;
+  hit = best->hit;
+  return true;
 }
 
 void CsgNode::crossings(const Ray& ray, CrossingList& out) const {
@@ -98,25 +132,34 @@ void CsgNode::crossings(const Ray& ray, CrossingList& out) const {
     in[i] = list.startsInside;
     for (const Crossing& c : list.items) all.push_back({c, i});
   });
-  // By distance, then by child, so coincident crossings are grouped the same way whatever
-  // order the BVH visited the children in.
-  std::stable_sort(all.begin(), all.end(), [](const Tagged& a, const Tagged& b) {
+  // By distance, then by child, so the result never depends on the order in which the
+  // BVH visited the children.
+  std::sort(all.begin(), all.end(), [](const Tagged& a, const Tagged& b) {
     return a.c.hit.t < b.c.hit.t || (a.c.hit.t == b.c.hit.t && a.child < b.child);
   });
 
   bool state = combine(op_, in);
   out.startsInside = state;
-  // Crossings at the same t are applied together (coincident surfaces), so a change of
-  // membership is reported once; the first child's surface of the group bounds the result.
+  // Crossings within the coincidence window of a group's first one are coincident
+  // surfaces: they are applied together and the membership is evaluated once, so a
+  // surface flush with another (a subtrahend flush with the minuend's face, two equal
+  // spheres) changes the result at most once. Where it changes, the agreeing crossing of
+  // the child written first bounds the result (docs/csg.md).
   for (size_t i = 0; i < all.size();) {
+    const double limit = all[i].c.hit.t + coincidenceWindow(ray, all[i].c.hit.t);
     size_t j = i;
-    for (; j < all.size() && all[j].c.hit.t == all[i].c.hit.t; ++j)
-      in[all[j].child] = all[j].c.entering;
+    for (; j < all.size() && all[j].c.hit.t <= limit; ++j) in[all[j].child] = all[j].c.entering;
     bool next = combine(op_, in);
     if (next != state) {
-      Crossing c = all[i].c;
+      const Tagged* bound = nullptr;
+      for (size_t k = i; k < j; ++k)
+        if (agrees(op_, all[k].child, all[k].c.entering, next) &&
+            (!bound || all[k].child < bound->child))
+          bound = &all[k];
+      if (!bound) bound = &all[i];  // unreachable for exact sets; keep the first one
+      Crossing c = bound->c;
       c.entering = next;
-      if (op_ == CsgOp::Difference && all[i].child > 0) c.hit.flip = !c.hit.flip;
+      if (op_ == CsgOp::Difference && bound->child > 0) c.hit.flip = !c.hit.flip;
       out.items.push_back(c);
       state = next;
     }
@@ -140,6 +183,9 @@ bool CsgNode::intersect(const Ray& ray, Hit& hit) const {
 
 bool CsgNode::occluded(const Ray& ray) const {
   if (op_ == CsgOp::Union || !solid_) {
+    if (search_ == CsgSearch::EveryChild)
+      return std::any_of(children_.begin(), children_.end(),
+                         [&](const auto& c) { return c->occluded(ray); });
     for (uint32_t i : unbounded_)
       if (children_[i]->occluded(ray)) return true;
     return bvh_.any(ray, [&](uint32_t slot, const Ray& r) {

@@ -11,6 +11,10 @@ namespace lucent {
 
 enum class CsgOp { Union, Merge, Intersection, Difference };
 
+// How a CSG node finds the children a ray may meet. EveryChild exists only so that
+// bench/csg_children can measure what the BVH saves; scenes always use Tree.
+enum class CsgSearch { Tree, EveryChild };
+
 const char* csgOpName(CsgOp op);
 
 // Children live in world space already (the scene builder composes every transform down
@@ -20,7 +24,8 @@ const char* csgOpName(CsgOp op);
 // whose box the ray overlaps, and a union's closest hit is a front-to-back BVH search.
 class CsgNode final : public Shape {
  public:
-  CsgNode(CsgOp op, std::vector<std::unique_ptr<Shape>> children);
+  CsgNode(CsgOp op, std::vector<std::unique_ptr<Shape>> children,
+          CsgSearch search = CsgSearch::Tree);
 
   const char* kind() const override { return csgOpName(op_); }
   AABB bounds() const override { return bounds_; }
@@ -41,6 +46,7 @@ class CsgNode final : public Shape {
   std::vector<std::unique_ptr<Shape>> children_;
   AABB bounds_;
   bool solid_;
+  CsgSearch search_;
   Bvh bvh_;                          // over the children with a finite (or empty) box
   std::vector<uint32_t> slotChild_;  // the child index of each BVH leaf slot
   std::vector<uint32_t> unbounded_;  // the other children, tested one by one
