@@ -4,6 +4,8 @@
 // attribute of another type is an error that says which type it belongs to.
 #include "element_parsers.h"
 
+#include "scenegraph/panini_limit.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -44,6 +46,33 @@ bool usesFov(CameraType t) {
 }
 
 double degrees(double radians) { return radians * 180.0 / kPi; }
+
+// The fields of view a panini camera can form whatever the image size: the horizontal fov
+// against the fold-back limit of scenegraph/panini_limit.h (the rule render/panini.cpp
+// frames the image with), which bounds every fov-axis; a vertical fov below 180; with
+// vertical compression, a horizontal fov below 180 (the hard squeeze needs the image within
+// 90 degrees of the axis). What depends on the aspect ratio (a vertical fov whose image is
+// too wide, a diagonal fov) is refused when the image is framed, at the same file:line:col.
+void checkPaniniFov(ElementReader& r, const Camera& cam) {
+  const double d = cam.distance, half = 0.5 * radians(cam.fov);
+  const double limit = paniniLongitudeLimit(d);
+  const std::string dText = fmt::format("{}", d);
+  if (!paniniHalfFovFits(half, d)) {
+    std::string why = d > 1.0 ? fmt::format(" (beyond {:.6g} degrees from the axis the "
+                                            "projection folds back)",
+                                            degrees(limit))
+                              : std::string();
+    r.attrError("fov", "with distance " + dText + " a panini camera's fov must be below " +
+                           fmt::format("{:.6g}", 2.0 * degrees(limit)) + why);
+  } else if (cam.fovAxis == FovAxis::Vertical && !(half < 0.5 * kPi)) {
+    r.attrError("fov", "a panini camera's vertical fov must be below 180 (the latitude at the "
+                       "top edge stays below 90 degrees)");
+  } else if (cam.fovAxis == FovAxis::Horizontal && cam.verticalCompression > 0.0 &&
+             !(half < 0.5 * kPi)) {
+    r.attrError("fov", "with vertical-compression above 0 a panini camera's horizontal fov "
+                       "must be below 180");
+  }
+}
 
 }  // namespace
 
@@ -129,12 +158,7 @@ void parseCamera(ElementReader& r) {
       cam.distance = r.number("distance", cam.distance, NumberRule::nonNegative());
       cam.verticalCompression = r.number("vertical-compression", cam.verticalCompression,
                                          NumberRule::between(0.0, 1.0, "a number from 0 to 1"));
-      // The Panini projection x = (d+1) sin(phi) / (d + cos(phi)) reaches infinity where
-      // cos(phi) = -d: the half field of view must stay below acos(-d).
-      double maxHalf = cam.distance >= 1.0 ? 180.0 : degrees(std::acos(-cam.distance));
-      if (cam.fov / 2.0 >= maxHalf)
-        r.attrError("fov", "with distance " + fmt::format("{}", cam.distance) +
-                               " a panini camera's fov must be below " + fmt::format("{:.6g}", 2.0 * maxHalf));
+      checkPaniniFov(r, cam);
       break;
     }
     case CameraType::Lenslet: {

@@ -1,15 +1,12 @@
 #include "panini.h"
 
+#include "scenegraph/panini_limit.h"
+
 #include <fmt/core.h>
 
 namespace lucent {
 
 namespace {
-
-// Longitude limit of the projection: h = (d+1) sin(phi) / (d + cos(phi)) grows without bound
-// towards cos(phi) = -d for d <= 1; for d > 1 it peaks at cos(phi) = -1/d, beyond which h
-// shrinks again and the map is no longer one-to-one.
-double longitudeLimit(double d) { return d > 1.0 ? std::acos(-1.0 / d) : std::acos(-d); }
 
 double angleFromAxis(const Vec3& local) {
   return std::acos(std::clamp(local.z / glm::length(local), -1.0, 1.0));
@@ -31,7 +28,12 @@ bool PaniniProjection::localDirection(double h, double v, Vec3& direction) const
   double k = std::abs(h) / (d_ + 1.0);
   double kk = k * k;
   double discriminant = 1.0 + kk * (1.0 - d_ * d_);
-  if (discriminant < 0.0) return false;
+  // For d > 1 it is 0 at the fold h = sqrt((d+1)/(d-1)), where an image framed up to the
+  // limit ends; rounding can put that edge a few 1e-16 below 0. Farther out is no direction.
+  if (discriminant < 0.0) {
+    if (discriminant < -1e-12) return false;
+    discriminant = 0.0;
+  }
   double c = (-kk * d_ + std::sqrt(discriminant)) / (kk + 1.0);
   double sInverse = (d_ + c) / (d_ + 1.0);  // 1 / S
   double phi = std::atan2(sInverse * h, c);  // sin(phi) = h / S
@@ -54,7 +56,7 @@ PaniniProjection::PaniniProjection(const CameraFrame& frame, const Camera& camer
     throw CameraError(
         fmt::format("{}: error: a panini camera needs vertical-compression from 0 to 1", where));
   const double half = 0.5 * radians(camera.fov);
-  const double limit = longitudeLimit(d_);
+  const double limit = paniniLongitudeLimit(d_);
   const double aspect = static_cast<double>(width) / height;
   // The largest |h| the projection reaches (infinite for d <= 1).
   const double hPeak = d_ > 1.0 ? std::sqrt((d_ + 1.0) / (d_ - 1.0)) : kInf;
@@ -69,7 +71,7 @@ PaniniProjection::PaniniProjection(const CameraFrame& frame, const Camera& camer
 
   switch (camera.fovAxis) {
     case FovAxis::Horizontal:
-      if (!(half > 0.0 && half < limit))
+      if (!(half > 0.0 && paniniHalfFovFits(half, d_)))
         throw tooWide(fmt::format("more than {:.6g} degrees across", 2.0 * limit * 180.0 / kPi));
       halfWidth_ = hAt(half);
       halfHeight_ = halfWidth_ / aspect;
