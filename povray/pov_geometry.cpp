@@ -84,7 +84,15 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
         return;
       }
       out.open(csgKeyword(node.kind), "<" + node.element + "> " + node.loc.str());
+      // A union keeps every operand's surfaces, each its own object to POV-Ray as to
+      // Lucent: only the solid operations share one interior (see the header).
+      const std::optional<uint32_t> outer = csgInterior_;
+      const bool share = node.kind != NodeKind::Union && !csgInterior_ &&
+                         materials_.surface(material).interior;
+      if (share) csgInterior_ = material;
       for (const auto& c : node.children) writeNode(*c, Mat4(1.0), material, false, out);
+      if (share) materials_.writeInteriorFor(material, out);
+      csgInterior_ = outer;
       if (!isIdentity(m)) out.line(povMatrix(m));
       out.close();
       return;
@@ -233,7 +241,7 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
     return;
   }
   writeShapeHead(node, m, material, topLevel, out);
-  materials_.writeFor(material, *node.shape, node.loc, out, issues_);
+  materials_.writeFor(material, *node.shape, node.loc, out, issues_, csgInterior_ != material);
   if (!isIdentity(m)) out.line(povMatrix(m));
   out.close();
 }

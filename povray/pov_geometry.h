@@ -7,7 +7,12 @@
 // the same CSG operands. Every leaf carries its own resolved material (POV-Ray lets a
 // CSG's texture reach only children without one, and a texture written inside a leaf
 // before its transform is evaluated in the leaf's object space, where Lucent evaluates a
-// checker). Meshes are declared once (mesh2) and instanced with `object`.
+// checker). Meshes are declared once (mesh2) and instanced with `object`. The interior
+// (ior, absorption) of a merge, intersection or difference is written once, on the CSG
+// object, and shared by the leaves of the same material: POV-Ray tells entering from
+// leaving by the interior a ray carries, so a ray entering a lens through one sphere and
+// leaving through the other must meet the same interior (with one per leaf it takes the
+// exit for an entry into a second glass and does not bend there; Lucent bends there).
 #pragma once
 
 #include "pov_materials.h"
@@ -16,6 +21,7 @@
 #include "scenegraph/scene.h"
 
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace lucent {
@@ -50,6 +56,9 @@ class PovGeometry {
   std::vector<bool> used_;
   PovWriter meshDeclarations_;
   std::map<std::pair<const MeshData*, SmoothMode>, std::string> meshNames_;
+  // The material whose interior the enclosing merge, intersection or difference holds:
+  // leaves of that material leave theirs out, so POV-Ray sees one shared interior.
+  std::optional<uint32_t> csgInterior_;
 };
 
 // Should a top-level plane be written facing the other way because the camera is inside

@@ -169,6 +169,13 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
                                       "an absorbing object (its fade applies to transmitted "
                                       "light only); Lucent does",
                                       name));
+  // Found by the gallery (examples/gallery/absorption.xml): POV-Ray applies the interior
+  // fade to the light passing out, not to the local terms at a hit inside the object, so a
+  // highlight seen on the inside of the far wall keeps its full strength.
+  if (transmits && m.isAbsorbing() && !isZero(ks))
+    issues.warning(m.loc, fmt::format("{}: POV-Ray does not attenuate the highlights seen on "
+                                      "the inside of an absorbing object; Lucent does",
+                                      name));
   if (transmits && m.isAbsorbing()) {
     // exp(−(1 − fade_color)·d/fade_distance) = exp(−absorption·d) with fade_distance 1/max.
     Vec3 ab = v3(m.absorption);
@@ -219,12 +226,17 @@ bool PovMaterials::usesImageMap(uint32_t index) const {
 }
 
 void PovMaterials::writeFor(uint32_t index, const ShapeSpec& shape, const SourceLoc& loc,
-                            PovWriter& out, PovIssues& issues) const {
-  writeFor(index, imageMappingFor(shape), shapeElementName(shape), loc, out, issues);
+                            PovWriter& out, PovIssues& issues, bool interior) const {
+  writeFor(index, imageMappingFor(shape), shapeElementName(shape), loc, out, issues, interior);
+}
+
+void PovMaterials::writeInteriorFor(uint32_t index, PovWriter& out) const {
+  if (surfaces_[index].interior) out.line("interior { I" + names_[index] + " }");
 }
 
 void PovMaterials::writeFor(uint32_t index, const ImageMapping& mapping, const char* shapeName,
-                            const SourceLoc& loc, PovWriter& out, PovIssues& issues) const {
+                            const SourceLoc& loc, PovWriter& out, PovIssues& issues,
+                            bool interior) const {
   if (usesImageMap(index)) {
     out.open("texture");
     writeTexture(index, &mapping, shapeName, &loc, out, &issues);
@@ -232,7 +244,7 @@ void PovMaterials::writeFor(uint32_t index, const ImageMapping& mapping, const c
   } else {
     out.line("texture { " + names_[index] + " }");
   }
-  if (surfaces_[index].interior) out.line("interior { I" + names_[index] + " }");
+  if (interior) writeInteriorFor(index, out);
 }
 
 void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping,

@@ -58,13 +58,17 @@ class PovMaterials {
   PovMaterials(const std::vector<Material>& materials, PovIssues& issues);
 
   void writeDeclarations(const std::vector<bool>& used, PovWriter& out) const;
-  // Inside a shape block: its texture and interior. `shape` chooses the image mapping;
-  // `loc` is the shape's location for errors.
+  // Inside a shape block: its texture and interior (unless `interior` is false: the
+  // enclosing CSG object holds it). `shape` chooses the image mapping; `loc` is the
+  // shape's location for errors.
   void writeFor(uint32_t material, const ShapeSpec& shape, const SourceLoc& loc,
-                PovWriter& out, PovIssues& issues) const;
+                PovWriter& out, PovIssues& issues, bool interior = true) const;
   // The same with an explicit image mapping (a box face).
   void writeFor(uint32_t material, const ImageMapping& mapping, const char* shapeName,
-                const SourceLoc& loc, PovWriter& out, PovIssues& issues) const;
+                const SourceLoc& loc, PovWriter& out, PovIssues& issues,
+                bool interior = true) const;
+  // The interior alone, for a CSG object whose operands share it.
+  void writeInteriorFor(uint32_t material, PovWriter& out) const;
   // Does the material show an image map (whose mapping depends on the shape)?
   bool usesImageMap(uint32_t material) const;
 
