@@ -24,6 +24,7 @@
 
 #include "mesh_io.h"
 
+#include "clean_mesh.h"
 #include "mesh_file_check.h"
 #include "obj_scan.h"
 
@@ -111,10 +112,11 @@ Soup readSoup(const std::string& bytes, MeshFormat format) {
   if (!ok)
     throw MeshError(fmt::format("CGAL's {} reader could not read the file (malformed or truncated data)",
                                 meshFormatName(format)));
+  // Moved, not copied: the polygons' vectors are most of a large mesh's memory.
   Soup soup;
-  soup.points.assign(points.begin(), points.end());
+  soup.points = std::move(points);
   soup.polygons.reserve(polygons.size());
-  for (const auto& p : polygons) soup.polygons.emplace_back(p.begin(), p.end());
+  for (auto& p : polygons) soup.polygons.push_back(std::move(p));
   return soup;
 }
 
@@ -177,8 +179,34 @@ Soup usableTriangles(const SurfaceMesh& mesh, std::size_t& dropped) {
   return tri;
 }
 
+// A clean closed triangle soup needs none of CGAL's repairs (clean_mesh.h). The check
+// runs on a compact copy, and the soup's per-polygon vectors are released meanwhile; when
+// it fails the soup is put back exactly as it was.
+std::optional<MeshData> cleanClosed(Soup& soup) {
+  if (soup.points.size() >= UINT32_MAX) return std::nullopt;
+  for (const Polygon& p : soup.polygons)
+    if (p.size() != 3) return std::nullopt;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  triangles.reserve(soup.polygons.size());
+  for (const Polygon& p : soup.polygons)
+    triangles.push_back({uint32_t(p[0]), uint32_t(p[1]), uint32_t(p[2])});
+  std::vector<Vec3> points;
+  points.reserve(soup.points.size());
+  for (const Point& p : soup.points) points.emplace_back(p.x(), p.y(), p.z());
+  soup = Soup();
+  std::optional<MeshData> mesh = cleanClosedMesh(points, triangles);
+  if (!mesh) {
+    soup.points.reserve(points.size());
+    for (const Vec3& p : points) soup.points.emplace_back(p.x, p.y, p.z);
+    soup.polygons.reserve(triangles.size());
+    for (const auto& t : triangles) soup.polygons.push_back({t[0], t[1], t[2]});
+  }
+  return mesh;
+}
+
 // The closed/oriented triangle mesh of `soup`: positions and triangles of the result.
 MeshData solidOrSurface(Soup soup) {
+  if (std::optional<MeshData> clean = cleanClosed(soup)) return std::move(*clean);
   const std::size_t inputFaces = soup.polygons.size();
   SurfaceMesh mesh = orientedMesh(soup, inputFaces);
   bool split = false;
