@@ -188,3 +188,26 @@ TEST_CASE("a cube map needs whole-pixel faces", "[cameras][cubemap]") {
   CHECK_THROWS_AS(makeProjection(cam, 320, 80), CameraError);
   CHECK_NOTHROW(makeProjection(cam, 480, 80));
 }
+
+TEST_CASE("cube-map cells that are whole but not square still hold 90-degree faces",
+          "[cameras][cubemap]") {
+  // docs/cameras.md: a 512 x 192 cross (cells of 128 x 64 pixels) and a strip of any height
+  // are accepted; each face still spans 90 degrees both ways, with stretched pixels.
+  Camera cam = tiltedCamera(CameraType::Cubemap);
+  const CameraFrame f = makeCameraFrame(cam);
+  struct Case { CubemapLayout layout; int w, h; Vec2 front0, front1; };
+  for (const Case& c : {Case{CubemapLayout::Cross, 512, 192, Vec2(128, 64), Vec2(256, 128)},
+                        Case{CubemapLayout::Strip, 48, 5, Vec2(40, 0), Vec2(48, 5)}}) {
+    cam.layout = c.layout;
+    auto p = makeProjection(cam, c.w, c.h);
+    const Vec2 mid = 0.5 * (c.front0 + c.front1);
+    const double q = kPi / 4.0;
+    // The front face's edge midpoints look 45 degrees left, right, up and down.
+    CHECK(angleBetween(rayAt(*p, mid).d, f.forward) < 1e-12);
+    CHECK(angleBetween(rayAt(*p, Vec2(c.front0.x, mid.y)).d, f.forward - f.right) < 1e-12);
+    CHECK(angleBetween(rayAt(*p, Vec2(c.front1.x, mid.y)).d, f.forward + f.right) < 1e-12);
+    CHECK(angleBetween(rayAt(*p, Vec2(mid.x, c.front0.y)).d, f.forward) == Approx(q).epsilon(1e-12));
+    CHECK(angleBetween(rayAt(*p, Vec2(mid.x, c.front0.y)).d, f.forward + f.up) < 1e-12);
+    CHECK(angleBetween(rayAt(*p, Vec2(mid.x, c.front1.y)).d, f.forward - f.up) < 1e-12);
+  }
+}

@@ -37,18 +37,26 @@ TEST_CASE("geometry before near or beyond far is not seen", "[cameras][nearfar][
   addShape(scene, SphereSpec{Vec3(0, 0, -4.5), 0.5}, addMaterial(scene, emissive(Color(1, 0, 0))));
   addShape(scene, SphereSpec{Vec3(0, 0, -10), 1.0}, addMaterial(scene, emissive(Color(0, 1, 0))));
   World world(scene);
+  // The image pixel that looks straight ahead: the centre of a 3x3 image, the front cell
+  // of a 4x3 cube cross, the single pixel of a 1x1 Fibonacci sphere (y_0 = 0, phi_0 = 0).
   auto centreWith = [&](CameraType type, double near, double far) {
     Camera cam;
     cam.type = type;
     cam.fov = 2.0;
     cam.width = 0.1;
+    cam.lensesX = cam.lensesY = 1;
     cam.near = near;
     cam.far = far;
+    scene.render.width = type == CameraType::Cubemap ? 4 : type == CameraType::Fibonacci ? 1 : 3;
+    scene.render.height = type == CameraType::Fibonacci ? 1 : 3;
     Renderer renderer(world, cam);
-    return renderer.render().image.at(1, 1);
+    return type == CameraType::Fibonacci ? renderer.render().image.at(0, 0)
+                                         : renderer.render().image.at(1, 1);
   };
   const Color red(1, 0, 0), green(0, 1, 0), blue(0, 0, 1);
-  for (CameraType type : {CameraType::Pinhole, CameraType::Orthographic, CameraType::Fisheye}) {
+  for (CameraType type : {CameraType::Pinhole, CameraType::ThinLens, CameraType::Orthographic,
+                          CameraType::Fisheye, CameraType::Panini, CameraType::Lenslet,
+                          CameraType::Octahedral, CameraType::Cubemap, CameraType::Fibonacci}) {
     INFO(cameraTypeName(type));
     CHECK(centreWith(type, 0.0, kInf) == red);
     CHECK(centreWith(type, 5.5, kInf) == green);  // the red ball lies wholly before near

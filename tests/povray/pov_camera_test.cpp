@@ -119,3 +119,26 @@ TEST_CASE("render settings become global_settings and background after #version 
                         "equivalent (POV-Ray ignores hits closer than its own fixed "
                         "tolerances)\n");
 }
+
+TEST_CASE("every camera type without a POV-Ray twin is refused by name, with no scene written",
+          "[povray][camera]") {
+  // POV-Ray 3.7's cameras are perspective, orthographic, fisheye (equidistant), ultra_wide_angle,
+  // omnimax, panoramic, cylinder and spherical (latitude-longitude); none of them is a thin
+  // lens with deterministic samples, a Panini, a lenslet grid, an octahedral map, a cube map
+  // or a Fibonacci sphere.
+  for (const char* camera :
+       {R"(<camera type="thin-lens"/>)", R"(<camera type="panini" distance="0.5"/>)",
+        R"(<camera type="lenslet" lenses="2 2"/>)", R"(<camera type="octahedral"/>)",
+        R"(<camera type="cubemap" layout="strip"/>)", R"(<camera type="fibonacci"/>)"}) {
+    std::string xml = camera;
+    std::string type = xml.substr(xml.find("type=\"") + 6);
+    type = type.substr(0, type.find('"'));
+    INFO(type);
+    Exported e = exportScene(xml);
+    CHECK_FALSE(e.pov.ok());
+    CHECK(e.pov.text.empty());
+    CHECK(e.messages() == "test.xml:2:1: error: <camera type=\"" + type +
+                              "\">: POV-Ray has no equivalent camera (pinhole, orthographic and "
+                              "equidistant fisheye can be exported)\n");
+  }
+}

@@ -35,6 +35,27 @@ for type in pinhole thin-lens orthographic fisheye panini lenslet octahedral cub
   grep -l -q "$pattern" "$src"/examples/cameras/*.xml || fail "no example uses a $type camera"
 done
 [ "$count" -ge 9 ] || fail "only $count camera examples"
+
+# Sizes and angles a camera cannot frame are invalid scenes (exit 2) located at the camera,
+# and an existing output is left as it was.
+echo keep >"$work/keep.png"
+"$lucent" render "$src/examples/cameras/cubemap.xml" -o "$work/keep.png" -w 50 -h 36 -q 2>"$work/err"
+status=$?
+[ "$status" -eq 2 ] || fail "cube map 50x36: exit status $status, expected 2"
+grep -q 'cubemap.xml:8:3: error: a cubemap camera with layout="cross" needs a width divisible by 4 and a height divisible by 3 (got 50x36' "$work/err" ||
+  fail "cube map 50x36: unexpected message: $(cat "$work/err")"
+[ "$(cat "$work/keep.png")" = keep ] || fail "cube map 50x36 replaced the existing output"
+cat >"$work/fold.xml" <<'XML'
+<scene version="1">
+  <camera type="panini" distance="2" fov="240"/>
+  <sphere/>
+</scene>
+XML
+"$lucent" check "$work/fold.xml" >/dev/null 2>"$work/err"
+status=$?
+[ "$status" -eq 2 ] || fail "panini fov 240 at distance 2: lucent check exit status $status, expected 2"
+grep -q "fold.xml:2:43: error: <camera> attribute 'fov': with distance 2 a panini camera's fov must be below 240" "$work/err" ||
+  fail "panini fov 240 at distance 2: unexpected message: $(cat "$work/err")"
 if [ $failures -eq 0 ]; then
   echo "camera_examples: OK: $count examples"
   exit 0
