@@ -30,23 +30,31 @@ Vec3 worldToObjectRoundTripError(const Transform& t, const Vec3& pWorld) {
 
 Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& worldFromObject,
                    uint32_t tag)
-    : shape_(std::move(shape)), transform_(worldFromObject), tag_(tag) {
+    : shape_(std::move(shape)),
+      identity_(worldFromObject.isIdentity()),
+      tag_(tag),
+      transform_(worldFromObject) {
   bounds_ = transformBounds(transform_.worldFromObject(), shape_->bounds());
 }
 
+// An identity transform (every shape placed by its own parameters, as spheres by their
+// center) hands the ray over as it is: multiplying by the identity matrix would give the
+// same numbers (except that it turns -0 into +0) for two matrix products per test.
+Ray Instance::toObject(const Ray& ray) const {
+  return identity_ ? ray : transform_.rayToObject(ray);
+}
+
 bool Instance::intersect(const Ray& ray, Hit& hit) const {
-  if (!shape_->intersect(transform_.rayToObject(ray), hit)) return false;
+  if (!shape_->intersect(toObject(ray), hit)) return false;
   hit.shape = this;
   return true;
 }
 
-bool Instance::occluded(const Ray& ray) const {
-  return shape_->occluded(transform_.rayToObject(ray));
-}
+bool Instance::occluded(const Ray& ray) const { return shape_->occluded(toObject(ray)); }
 
 void Instance::crossings(const Ray& ray, CrossingList& out) const {
   size_t first = out.items.size();
-  shape_->crossings(transform_.rayToObject(ray), out);
+  shape_->crossings(toObject(ray), out);
   for (size_t i = first; i < out.items.size(); ++i) out.items[i].hit.shape = this;
 }
 
