@@ -168,7 +168,7 @@ TEST_CASE("lang: every camera type keeps its own attributes and the common defau
   const Camera& pan = *s->findCamera("pan");
   CHECK(pan.distance == 0.5);
   CHECK(pan.verticalCompression == 0.25);
-  CHECK(pan.fov == 200.0);
+  CHECK(pan.fov == 170.0);
 
   const Camera& lf = *s->findCamera("lf");
   CHECK(lf.lensesX == 8);
