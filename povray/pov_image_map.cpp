@@ -192,11 +192,12 @@ void writeImagePigment(const ImageTexture& image, double filter, double transmit
       if (!unitScale) out.line("scale " + povVector(scale));
       break;
     case ImageMapping::Spherical:
-      // Pattern point q = R(p − c) with R(x, y, z) = (−z, −y, −x), its own inverse: then
+      // Pattern point q = R(p − c) with R(x, y, z) = (−z, y, −x), its own inverse: then
       // POV-Ray's longitude (from +x towards +z) is Lucent's atan2(x, z) + π and its
-      // latitude 0.5 + asin(q.y)/π is Lucent's acos(y/r)/π.
+      // latitude 0.5 + asin(q.y)/π (0 at the image's bottom row) is Lucent's
+      // v = 1 − acos(y/r)/π (v = 1 at the +y pole, primitives/sphere.cpp).
       out.line(map);
-      out.line(povMatrix(basis(Vec3(0, 0, -1), Vec3(0, -1, 0), Vec3(-1, 0, 0))));
+      out.line(povMatrix(basis(Vec3(0, 0, -1), Vec3(0, 1, 0), Vec3(-1, 0, 0))));
       if (mapping.center != Vec3(0.0)) out.line("translate " + povVector(mapping.center));
       break;
     case ImageMapping::Planar: {

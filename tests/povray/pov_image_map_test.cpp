@@ -50,7 +50,7 @@ TEST_CASE("an image on a sphere is POV-Ray's spherical map, reflected onto Lucen
   PovExport e = exportImageScene(R"XML(<sphere center="1 2 3" material="grid"/>)XML", "1 1", messages);
   REQUIRE(e.ok());
   CHECK(has(e, "gamma srgb map_type 1 interpolate 2 }\n"
-               "      matrix <0, 0, -1,  0, -1, 0,  -1, 0, 0,  0, 0, 0>\n"
+               "      matrix <0, 0, -1,  0, 1, 0,  -1, 0, 0,  0, 0, 0>\n"
                "      translate <1, 2, 3>\n"));
 
   std::string scaled;
