@@ -182,7 +182,8 @@ its float copy of the buffers plus everything its device allocates for the BVH.
 
 ![Time per ray against primitive count](images/perf-scaling.png)
 
-One thread, ${scaleSize}×${scaleSize} camera rays. Spheres: n spheres scattered over the unit
+One thread, ${scaleSize}×${scaleSize} camera rays, timed on the thread's CPU clock (best
+of three), so time spent waiting for a core on a shared machine is not counted. Spheres: n spheres scattered over the unit
 sphere with radius 2/√n (they cover it about once at every n), each its own instance in
 the world's top-level BVH. Triangles: the displaced sphere tessellated into about n
 triangles, one mesh with its own BVH. Both keep the same picture as n grows, so the
