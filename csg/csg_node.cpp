@@ -3,6 +3,7 @@
 #include "coincidence.h"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 namespace lucent {
@@ -91,15 +92,34 @@ bool CsgNode::closestChildHit(const Ray& ray, Hit& hit) const {
   // The closest hit, except that hits within the coincidence window of the closest are
   // ties and the child written first wins them (docs/csg.md): the nearest hit alone would
   // let rounding pick the child pixel by pixel. Near ties are gathered by searching up to
-  // the closest t plus its window.
+  // the closest t plus its window. The hits kept are those within the window of the
+  // closest so far, in a fixed buffer (no allocation per ray): a closer hit drops those
+  // now outside its window, and when more than fit tie, the highest-numbered child gives
+  // way, as it can never win.
   struct Candidate { Hit hit; uint32_t child; };
-  std::vector<Candidate> near;
+  std::array<Candidate, 8> near;
+  size_t count = 0;
   double tMin = kInf;
   auto consider = [&](uint32_t i, Ray& r) {
     Hit h;
     if (!children_[i]->intersect(r, h)) return false;
-    if (h.t < tMin) tMin = h.t;
-    near.push_back({h, i});
+    if (h.t < tMin) {
+      tMin = h.t;
+      const double limit = tMin + coincidenceWindow(r, tMin);
+      size_t kept = 0;
+      for (size_t k = 0; k < count; ++k)
+        if (near[k].hit.t <= limit) near[kept++] = near[k];
+      count = kept;
+    }
+    if (count < near.size()) {
+      near[count++] = {h, i};
+    } else {
+      auto last = std::max_element(near.begin(), near.end(),
+                                   [](const Candidate& a, const Candidate& b) {
+                                     return a.child < b.child;
+                                   });
+      if (last->child > i) *last = {h, i};
+    }
     r.tmax = std::min(r.tmax, tMin + coincidenceWindow(r, tMin));
     return true;
   };
@@ -111,9 +131,8 @@ bool CsgNode::closestChildHit(const Ray& ray, Hit& hit) const {
     bvh_.closest(r, [&](uint32_t slot, Ray& rr) { return consider(slotChild_[slot], rr); });
   }
   const Candidate* best = nullptr;
-  const double limit = tMin + coincidenceWindow(ray, tMin);
-  for (const Candidate& c : near)
-    if (c.hit.t <= limit && (!best || c.child < best->child)) best = &c;
+  for (size_t k = 0; k < count; ++k)
+    if (!best || near[k].child < best->child) best = &near[k];
   if (!best) return false;
   hit = best->hit;
   return true;

@@ -249,3 +249,16 @@ TEST_CASE("coincident crossings bound the result with the first agreeing child",
   CHECK(list.items[1].hit.flip);
   CHECK_FALSE(list.items[1].entering);
 }
+
+TEST_CASE("ten equal spheres in a union: the first child wins every pixel", "[csg]") {
+  // More ties than the union's buffer of near hits holds: the first child must survive.
+  // Red written first, then red written last (where the first, green, must win).
+  for (int red : {0, 9}) {
+    std::string spheres;
+    for (int k = 0; k < 10; ++k)
+      spheres += std::string(R"XML(<sphere radius="1" material=")XML") +
+                 (k == red ? "red" : k % 2 ? "blue" : "green") + R"XML("/>)XML";
+    Render r = renderFromAbove("<union>" + spheres + "</union>");
+    CHECK(wrongPixels(r, disc(1.0), red == 0 ? kRed : kGreen) == 0);
+  }
+}
