@@ -132,8 +132,6 @@ void TriangleMesh::crossings(const Ray& ray, CrossingList& out) const {
       hits.push_back({ti.t, i, ti.b1, ti.b2, ti.facing});
     return true;
   });
-  std::sort(hits.begin(), hits.end(),
-            [](const TriangleHit& a, const TriangleHit& b) { return a.t < b.t; });
 
   auto push = [&](const TriangleHit& h, bool entering) {
     Crossing c;
@@ -145,29 +143,34 @@ void TriangleMesh::crossings(const Ray& ray, CrossingList& out) const {
     c.entering = entering;
     out.items.push_back(c);
   };
+  std::sort(hits.begin(), hits.end(),
+            [](const TriangleHit& a, const TriangleHit& b) { return a.t < b.t; });
   if (!solid) {
     for (const TriangleHit& h : hits) push(h, true);
     return;
   }
-  // Walk the line from −∞ (outside a closed mesh). Hits at the same t are one event:
-  // a ray through a shared edge or vertex may meet several triangles there (watertight
-  // tests guarantee at least one). The event moves inside when it holds more entering
-  // than leaving hits, outside when fewer, and changes nothing when balanced (a ray
-  // grazing a silhouette edge). Only real changes become crossings, so the list
-  // alternates even where the triangles disagree.
+  // Walk the line from −∞, where a closed mesh's winding number is 0, adding each hit's
+  // facing; the line is inside where the winding number is positive. The watertight test
+  // covers every point of the ray's plane exactly once around shared edges and vertices,
+  // so the facings always sum to 0. Where the computed t of nearly edge-on triangles (a
+  // ray along an edge) put a leaving hit before its entering one, the winding number
+  // dips below 0 and back instead of flipping the state, and where a mesh overlaps itself
+  // it rises above 1 without a crossing. Hits at one t are one event (a ray meeting a
+  // silhouette vertex enters and leaves at once: nothing). Only real changes become
+  // crossings, so the list alternates.
+  int winding = 0;
   bool in = false;
   for (size_t i = 0; i < hits.size();) {
     size_t j = i;
-    int net = 0;
-    for (; j < hits.size() && hits[j].t == hits[i].t; ++j) net += hits[j].facing;
-    bool next = net > 0 ? true : net < 0 ? false : in;
+    for (; j < hits.size() && hits[j].t == hits[i].t; ++j) winding += hits[j].facing;
+    const bool next = winding > 0;
     if (next != in) {
       // The representative hit is one whose side agrees with the change.
       size_t k = i;
       while (k + 1 < j && (hits[k].facing > 0) != next) ++k;
-      if (hits[i].t < ray.tmin)
+      if (hits[k].t < ray.tmin)
         out.startsInside = next;
-      else if (hits[i].t <= ray.tmax)
+      else if (hits[k].t <= ray.tmax)
         push(hits[k], next);
       in = next;
     }

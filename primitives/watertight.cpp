@@ -1,11 +1,16 @@
 #include "watertight.h"
 
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace lucent {
 
 namespace {
+
+// The value of an edge function decided by the tie-break: far below any real one, so the
+// barycentric weights and t stay what they were (the ray passes through the edge).
+constexpr double kTieBreak = 1e-300;
 
 // a·b − c·d with the correct sign (Kahan's algorithm with fma, see watertight.h).
 double diffOfProducts(double a, double b, double c, double d) {
@@ -13,6 +18,48 @@ double diffOfProducts(double a, double b, double c, double d) {
   double e = std::fma(-c, d, w);  // exactly w − c·d
   double f = std::fma(a, b, -w);
   return f + e;
+}
+
+// The edge function p × q of the origin against the sheared edge from p to q, with its
+// exact sign, and never 0. Its sign decides on which side of the edge the ray passes, so
+// it must agree between the two triangles that share the edge (they compute q × p, the
+// exact negation): the plain products are used when their rounding cannot flip the sign,
+// Kahan's exactly signed form otherwise. An exact 0 (the ray meets the edge's line) is
+// decided as if the ray were moved by an infinitesimal δ·(1, η), 0 < η ≪ 1, in the sheared
+// plane (simulation of simplicity, Edelsbrunner & Mücke 1990; rasterisers' top-left rule
+// is the same idea): p × q becomes p × q + δ·((p.y − q.y) + η·(q.x − p.x)). Every point is
+// then covered exactly once by the triangles around a shared edge or vertex, so a closed
+// mesh's crossings alternate and nothing is counted twice. 0 is returned only when p and
+// q coincide in the sheared plane (the edge lies along the ray): no perturbation separates
+// the ray from such an edge's line, and its triangle is seen edge-on and never hit.
+double edgeFunction(double px, double py, double qx, double qy) {
+  const double l = px * qy, r = py * qx;
+  const double e = l - r;
+  if (std::abs(e) > gamma(3) * (std::abs(l) + std::abs(r))) return e;
+  const double exact = diffOfProducts(px, qy, py, qx);
+  if (exact != 0.0) return exact;
+  if (py != qy) return py > qy ? kTieBreak : -kTieBreak;
+  if (qx != px) return qx > px ? kTieBreak : -kTieBreak;
+  return 0.0;
+}
+
+// On which side of the plane of the triangle (a, b, c), given relative to the ray's
+// origin, does the origin lie: +1 on the side its normal (b − a) × (c − a) points to,
+// −1 on the other, 0 when rounding cannot tell (Shewchuk's static filter for orient3d,
+// "Adaptive Precision Floating-Point Arithmetic and Fast Robust Geometric Predicates",
+// 1997: error bound (7 + 56ε)ε times the permanent).
+int originSide(const Vec3& a, const Vec3& b, const Vec3& c) {
+  // The origin's offset from the plane along the normal is −a·(b × c).
+  const double bc = b.x * c.y - c.x * b.y, ca = c.x * a.y - a.x * c.y, ab = a.x * b.y - b.x * a.y;
+  const double d = a.z * bc + b.z * ca + c.z * ab;
+  const double permanent = (std::abs(b.x * c.y) + std::abs(c.x * b.y)) * std::abs(a.z) +
+                           (std::abs(c.x * a.y) + std::abs(a.x * c.y)) * std::abs(b.z) +
+                           (std::abs(a.x * b.y) + std::abs(b.x * a.y)) * std::abs(c.z);
+  const double eps = 0.5 * std::numeric_limits<double>::epsilon();
+  const double bound = (7.0 + 56.0 * eps) * eps * permanent;
+  if (d > bound) return -1;
+  if (d < -bound) return 1;
+  return 0;
 }
 
 int maxDimension(const Vec3& v) {
@@ -48,15 +95,12 @@ bool intersectTriangle(const ShearedRay& r, const Vec3& p0, const Vec3& p1, cons
   const double bx = b[r.kx] - r.sx * b[r.kz], by = b[r.ky] - r.sy * b[r.kz];
   const double cx = c[r.kx] - r.sx * c[r.kz], cy = c[r.ky] - r.sy * c[r.kz];
 
-  // Edge functions: u for the edge opposite p0, v opposite p1, w opposite p2.
-  double u = cx * by - cy * bx;
-  double v = ax * cy - ay * cx;
-  double w = bx * ay - by * ax;
-  if (u == 0.0 || v == 0.0 || w == 0.0) {
-    u = diffOfProducts(cx, by, cy, bx);
-    v = diffOfProducts(ax, cy, ay, cx);
-    w = diffOfProducts(bx, ay, by, ax);
-  }
+  // Edge functions: u for the edge opposite p0, v opposite p1, w opposite p2, each with
+  // its exact sign and never 0 unless the edge lies along the ray.
+  const double u = edgeFunction(cx, cy, bx, by);
+  const double v = edgeFunction(ax, ay, cx, cy);
+  const double w = edgeFunction(bx, by, ax, ay);
+  if (u == 0.0 || v == 0.0 || w == 0.0) return false;
   if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return false;
   const double det = u + v + w;
   if (det == 0.0 || !std::isfinite(det)) return false;
@@ -79,14 +123,31 @@ bool intersectTriangle(const ShearedRay& r, const Vec3& p0, const Vec3& p1, cons
   const double deltaT =
       3.0 * (gamma(3) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) * std::abs(invDet);
 
-  // A hit that cannot be told from t = 0 is put just behind the origin: a ray that starts
-  // on (or, offset, just off) a triangle neither finds it again nor, for a closed mesh,
-  // lists it as a crossing ahead; its side still counts for startsInside.
-  out.t = (std::abs(t) <= deltaT && deltaT > 0.0) ? -deltaT : t;
+  const int facing = det > 0.0 ? 1 : -1;
+  out.t = t;
+  if (std::abs(t) <= deltaT && deltaT > 0.0) {
+    // t cannot be told from 0 by its own bound. The exact side of the ray's origin
+    // against the triangle's plane still gives its sign: t > 0 exactly when the origin
+    // is on the side the ray comes from.
+    const int side = originSide(a, b, c);
+    if (side != 0) {
+      const double sign = side == facing ? 1.0 : -1.0;
+      out.t = sign * std::max(std::abs(t), std::numeric_limits<double>::denorm_min());
+    } else if (std::abs(t) <= 6.0 * deltaZ) {
+      // The origin lies on the plane within rounding and the hit is where the origin
+      // is: it is put just behind the origin, so a ray that starts on (or, offset,
+      // just off) a triangle neither finds it again nor, for a closed mesh, lists it as
+      // a crossing ahead; its side still counts for startsInside.
+      out.t = -deltaT;
+    }
+    // Else the ray starts on the plane and runs along it (a ray along a mesh edge meets
+    // the triangles beside the edge almost edge-on): the computed t stands, consistent
+    // with the neighbours' because the edge functions are.
+  }
   out.b0 = u * invDet;
   out.b1 = v * invDet;
   out.b2 = w * invDet;
-  out.facing = det > 0.0 ? 1 : -1;
+  out.facing = facing;
   return true;
 }
 

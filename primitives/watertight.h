@@ -4,11 +4,13 @@
 // made the +z axis of a sheared space (a permutation and a shear computed once per ray),
 // the three edge functions are 2-D determinants of the translated vertices, and since a
 // shared edge gives bit-identical determinants (with opposite sign) in both triangles, a
-// ray can never slip between two triangles that share an edge or a vertex. Where an edge
-// function is exactly 0 the paper recomputes it at higher precision; our vertices are
-// already double, so we recompute with Kahan's fma difference of products, whose sign is
-// exact (Jeannerod, Louvet, Muller, "Further analysis of Kahan's algorithm for the
-// accurate computation of 2×2 determinants", Math. Comp. 2013: relative error <= 2u).
+// ray can never slip between two triangles that share an edge or a vertex. Where the
+// rounding of an edge function could flip its sign we recompute it with Kahan's fma
+// difference of products, whose sign is exact (Jeannerod, Louvet, Muller, "Further
+// analysis of Kahan's algorithm for the accurate computation of 2×2 determinants", Math.
+// Comp. 2013: relative error <= 2u), and an exact 0 is decided by a fixed infinitesimal
+// move of the ray (watertight.cpp), so a ray through a shared edge or vertex hits exactly
+// one of the triangles around it, never two: crossings of closed meshes alternate.
 // The conservative bound on t that rejects hits indistinguishable from t = 0 is pbrt-v3's
 // (§3.9.6, "Conservative ray–triangle t").
 #pragma once

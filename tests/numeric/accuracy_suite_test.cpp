@@ -64,10 +64,9 @@ TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and ver
   requireWithinBounds(meshCases(1.0));
 }
 
-// A known defect, documented in docs/accuracy.md: rays lying exactly along a mesh edge
-// can end "inside" a closed mesh. Expected to fail until watertight.cpp decides the side
-// of nearly edge-on triangles exactly; once it passes, drop the [!shouldfail] tag.
-TEST_CASE("accuracy: rays along mesh edges keep the crossings' parity (known defect)",
-          "[numeric][accuracy][mesh][!shouldfail]") {
+// Rays lying exactly along a mesh edge meet the triangles beside it almost edge-on; the
+// crossings must still alternate and leave the ray outside (docs/accuracy.md).
+TEST_CASE("accuracy: rays along mesh edges keep the crossings' parity",
+          "[numeric][accuracy][mesh]") {
   requireWithinBounds(meshAlongEdgeCases(1.0));
 }
