@@ -28,26 +28,37 @@ AABB Cone::bounds() const {
 }
 
 bool Cone::sideQuadratic(const Ray& l, Quadratic& q) const {
-  // Move the origin to the line's closest approach to the middle of the axis before
-  // forming the coefficients: they are then of the size of the cone, not of the distance
-  // the ray comes from, and h² − a·c no longer cancels catastrophically for far rays
-  // (the same idea as the distance form for spheres, Ray Tracing Gems ch. 7).
+  // Move the origin to the line's closest approach to a centre point before forming the
+  // coefficients: they are then of the size of the cone, not of the distance the ray
+  // comes from, and h² − a·c no longer cancels catastrophically for far rays (the same
+  // idea as the distance form for spheres, Ray Tracing Gems ch. 7). A pointed cone is
+  // centred on its apex, where the side's implicit function has a zero gradient: relative
+  // to the apex its terms are of the size of the line's distance δ from it and keep their
+  // relative precision, where the radius r(z) formed from the axis's middle carries an
+  // absolute error of ε·size and decides lines within √ε of the apex by rounding.
   double dd = glm::dot(l.d, l.d);
   if (!(dd > 0.0)) return false;
   const Vec3 mid(0.0, 0.0, 0.5 * height_);
-  q.tShift = -glm::dot(l.o - mid, l.d) / dd;
-  q.o = l.o + q.tShift * l.d;
+  const bool pointed = rBase_ == 0.0 || rCap_ == 0.0;
+  const Vec3 centre = !pointed ? mid : rBase_ == 0.0 ? Vec3(0.0) : Vec3(0.0, 0.0, height_);
+  const Vec3 f = l.o - centre;
+  q.tShift = -glm::dot(f, l.d) / dd;
+  const Vec3 g = f + q.tShift * l.d;  // the closest approach, relative to the centre
+  q.o = centre + g;
   q.d = l.d;
+  // Outside the bounding sphere (with a margin for rounding): the line misses. The test
+  // needs the closest approach to the sphere's centre, the axis's middle.
   const double rMax = std::max(rBase_, rCap_);
-  const Vec3 f = q.o - mid;
-  // Outside the bounding sphere (with a margin for rounding): the line misses.
-  if (glm::dot(f, f) > (rMax * rMax + 0.25 * height_ * height_) * (1.0 + gamma(8))) return false;
-  // x² + y² − (r0 + k·z)² along o + s·d.
+  const Vec3 fm = l.o - mid;
+  const Vec3 m = fm - (glm::dot(fm, l.d) / dd) * l.d;
+  if (glm::dot(m, m) > (rMax * rMax + 0.25 * height_ * height_) * (1.0 + gamma(8))) return false;
+  // x² + y² − r(z)² along o + s·d, with r(z) = r0 + k·z, which for a pointed cone is
+  // k·(z − z_apex) = k·g.z.
   const double k = slope_;
-  const double r = radiusAt(q.o.z);
+  const double r = pointed ? k * g.z : radiusAt(q.o.z);
   q.a = q.d.x * q.d.x + q.d.y * q.d.y - k * k * q.d.z * q.d.z;
-  q.h = q.o.x * q.d.x + q.o.y * q.d.y - k * q.d.z * r;
-  q.c = q.o.x * q.o.x + q.o.y * q.o.y - r * r;
+  q.h = g.x * q.d.x + g.y * q.d.y - k * q.d.z * r;
+  q.c = g.x * g.x + g.y * g.y - r * r;
   return true;
 }
 
