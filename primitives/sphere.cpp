@@ -39,7 +39,9 @@ SurfaceInfo Sphere::surface(const Ray& ray, const Hit& hit) const {
   SurfaceInfo s;
   // Reproject onto the sphere (pbrt-v3 §3.9.4): the point at distance r along the computed
   // direction is on the surface up to gamma(5)·|local|, whatever the error of t was.
-  Vec3 local = ray.at(hit.t) - center_;
+  // Relative to the centre before adding t·d: for a sphere far from the origin,
+  // ray.at(t) − center would round the hit point at the origin's distance first.
+  Vec3 local = (ray.o - center_) + hit.t * ray.d;
   double len = glm::length(local);
   if (len > 0.0)
     local *= radius_ / len;

@@ -13,10 +13,15 @@ namespace lucent {
 Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec3& pError) {
   Vec3 q = pObject / checker.scale;
   Vec3 err = pError / checker.scale;
+  // A surface lying on a cell boundary (a floor at y = 0) must fall on one side for every
+  // pixel: each coordinate is nudged up by its error bound, and at least by 64 ulps of
+  // the point's size (in cells, at least 1) for points whose bound is 0. A relative nudge
+  // larger than rounding would repaint thin slivers along every boundary far from the
+  // origin (1e-9 at x = 1e5 was 1e-4 units, docs/accuracy.md).
   double magnitude = std::max(1.0, maxComponent(glm::abs(q)));
   long sum = 0;
   for (int i = 0; i < 3; ++i) {
-    double nudge = std::max(1e-9 * magnitude, 4.0 * err[i]);
+    double nudge = std::max(64.0 * kMachineEps * magnitude, 4.0 * err[i]);
     sum += static_cast<long>(std::floor(q[i] + nudge));
   }
   return (sum & 1) == 0 ? checker.color1 : checker.color2;

@@ -48,6 +48,18 @@ TEST_CASE("checker: a point on a cell boundary shows the cell on the positive si
   CHECK(cell(Vec3(1e6 + 0.5, -1e-10, 0.5)) == cell(Vec3(1e6 + 0.5, 0.0, 0.5)));
 }
 
+TEST_CASE("checker: far from the origin a point near a boundary keeps its own cell",
+          "[render][texture]") {
+  // docs/accuracy.md, sphere_far: the floor hit at x = 100000.3999788, 2.1e-5 below the
+  // boundary 100000.4 of cells of 0.4 (cell 250000 ends there), with a rounding bound of
+  // 1e-11. The tolerance is rounding, not a share of the coordinate.
+  const Vec3 err(1e-11);
+  auto at = [&](double x) { return checkerColor(CheckerTexture{kOne, kTwo, 0.4}, Vec3(x, 0.0, 0.2), err); };
+  CHECK(at(100000.3999788) == at(100000.2));
+  CHECK(at(100000.4000212) == at(100000.6));
+  CHECK(at(100000.2) != at(100000.6));
+}
+
 TEST_CASE("checker is evaluated in the object space of the shape", "[render][texture]") {
   Scene scene;
   scene.render.ambient = Color(1.0f);
