@@ -30,18 +30,18 @@ Vec3 worldToObjectRoundTripError(const Transform& t, const Vec3& pWorld) {
 
 Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& worldFromObject,
                    uint32_t tag)
-    : shape_(std::move(shape)),
-      identity_(worldFromObject.isIdentity()),
-      tag_(tag),
-      transform_(worldFromObject) {
-  bounds_ = transformBounds(transform_.worldFromObject(), shape_->bounds());
+    : shape_(std::move(shape)), tag_(tag) {
+  if (!worldFromObject.isIdentity()) transform_ = std::make_unique<Transform>(worldFromObject);
+  bounds_ = transformBounds(worldFromObject.worldFromObject(), shape_->bounds());
 }
+
+const Transform Instance::kIdentity;
 
 // An identity transform (every shape placed by its own parameters, as spheres by their
 // center) hands the ray over as it is: multiplying by the identity matrix would give the
 // same numbers (except that it turns -0 into +0) for two matrix products per test.
 Ray Instance::toObject(const Ray& ray) const {
-  return identity_ ? ray : transform_.rayToObject(ray);
+  return transform_ ? transform_->rayToObject(ray) : ray;
 }
 
 bool Instance::intersect(const Ray& ray, Hit& hit) const {
@@ -58,18 +58,23 @@ void Instance::crossings(const Ray& ray, CrossingList& out) const {
   for (size_t i = first; i < out.items.size(); ++i) out.items[i].hit.shape = this;
 }
 
-bool Instance::inside(const Vec3& p) const { return shape_->inside(transform_.pointToObject(p)); }
+bool Instance::inside(const Vec3& p) const {
+  return shape_->inside(transform_ ? transform_->pointToObject(p) : p);
+}
 
 SurfaceInfo Instance::surface(const Ray& ray, const Hit& hit) const {
   Hit local = hit;
   local.shape = shape_.get();
-  SurfaceInfo s = shape_->surface(transform_.rayToObject(ray), local);
+  // The ray the hit was found with (toObject); the rest goes through the matrices even
+  // for the identity, whose error bound (errorToWorld) the offsets of secondary rays use.
+  const Transform& t = transform();
+  SurfaceInfo s = shape_->surface(toObject(ray), local);
   SurfaceInfo w = s;
-  w.p = transform_.pointToWorld(s.p);
-  w.pError = transform_.errorToWorld(s.p, s.pError);
-  if (!transform_.isIdentity()) w.pError += worldToObjectRoundTripError(transform_, w.p);
-  w.ng = transform_.normalToWorld(s.ng);
-  w.ns = transform_.normalToWorld(s.ns);
+  w.p = t.pointToWorld(s.p);
+  w.pError = t.errorToWorld(s.p, s.pError);
+  if (!t.isIdentity()) w.pError += worldToObjectRoundTripError(t, w.p);
+  w.ng = t.normalToWorld(s.ng);
+  w.ns = t.normalToWorld(s.ns);
   w.pObject = s.p;  // solid textures are evaluated in the leaf's object space
   if (hit.flip) {
     w.ng = -w.ng;

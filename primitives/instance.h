@@ -29,20 +29,22 @@ class Instance final : public Shape {
 
   const Shape& shape() const { return *shape_; }
   const std::shared_ptr<const Shape>& sharedShape() const { return shape_; }
-  const Transform& transform() const { return transform_; }
+  const Transform& transform() const { return transform_ ? *transform_ : kIdentity; }
   uint32_t tag() const { return tag_; }
 
  private:
   Ray toObject(const Ray& ray) const;
 
-  // The members a ray test reads come first, in the object's first cache line; the
-  // matrices are only read when the transform is not the identity. In a world of many
-  // small instances (a field of spheres) each test would otherwise miss the cache twice.
+  static const Transform kIdentity;
+
+  // The members a ray test reads come first, in the object's first cache line. The
+  // transform is held apart and only when it is not the identity (most instances: spheres
+  // are placed by their center), so an instance takes about 90 bytes instead of 420: a
+  // field of a million spheres then fits caches and pages far better.
   std::shared_ptr<const Shape> shape_;
-  bool identity_;
   uint32_t tag_;
   AABB bounds_;
-  Transform transform_;
+  std::unique_ptr<const Transform> transform_;  // null: the identity
 };
 
 }  // namespace lucent
