@@ -30,7 +30,7 @@ Vec3 worldToObjectRoundTripError(const Transform& t, const Vec3& pWorld) {
 
 Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& worldFromObject,
                    uint32_t tag)
-    : shape_(std::move(shape)), tag_(tag) {
+    : shape_(std::move(shape)), tag_(tag), testKind_(testKindOf(shape_->kind())) {
   if (!worldFromObject.isIdentity()) transform_ = std::make_unique<Transform>(worldFromObject);
   bounds_ = transformBounds(worldFromObject.worldFromObject(), shape_->bounds());
 }
@@ -45,14 +45,19 @@ Ray Instance::toObject(const Ray& ray) const {
 }
 
 bool Instance::intersect(const Ray& ray, Hit& hit) const {
+  ++threadTestCounts[testKind_];
   if (!shape_->intersect(toObject(ray), hit)) return false;
   hit.shape = this;
   return true;
 }
 
-bool Instance::occluded(const Ray& ray) const { return shape_->occluded(toObject(ray)); }
+bool Instance::occluded(const Ray& ray) const {
+  ++threadTestCounts[testKind_];
+  return shape_->occluded(toObject(ray));
+}
 
 void Instance::crossings(const Ray& ray, CrossingList& out) const {
+  ++threadTestCounts[testKind_];
   size_t first = out.items.size();
   shape_->crossings(toObject(ray), out);
   for (size_t i = first; i < out.items.size(); ++i) out.items[i].hit.shape = this;

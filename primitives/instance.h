@@ -2,6 +2,7 @@
 #pragma once
 
 #include "shape.h"
+#include "test_counts.h"
 #include "transform.h"
 
 #include <cstdint>
@@ -43,6 +44,7 @@ class Instance final : public Shape {
   // field of a million spheres then fits caches and pages far better.
   std::shared_ptr<const Shape> shape_;
   uint32_t tag_;
+  TestKind testKind_;  // what --stats counts a test of this instance as
   AABB bounds_;
   std::unique_ptr<const Transform> transform_;  // null: the identity
 };

@@ -1,5 +1,6 @@
 #include "triangle_mesh.h"
 
+#include "test_counts.h"
 #include "triangle_geometry.h"
 #include "watertight.h"
 
@@ -60,7 +61,13 @@ TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> mesh, bool useNormals
 
 template <class Visit>
 void TriangleMesh::forEachCandidate(const Ray& ray, const double& tFar, Visit&& visit) const {
-  bvh_.candidates(ray, tFar, visit);
+  // Counted here, once per search, for --stats.
+  uint64_t tested = 0;
+  bvh_.candidates(ray, tFar, [&](uint32_t i) {
+    ++tested;
+    return visit(i);
+  });
+  threadTestCounts[TestKind::MeshTriangle] += tested;
 }
 
 namespace {

@@ -2,6 +2,8 @@
 // the copies are summed, so counting never makes threads wait for each other.
 #pragma once
 
+#include "primitives/test_counts.h"
+
 #include <cstdint>
 
 namespace lucent {
@@ -13,6 +15,7 @@ struct RayStats {
   uint64_t reflected = 0;  // mirror rays, including total internal reflection
   uint64_t refracted = 0;  // transmitted rays, bent or straight through
   uint64_t queries = 0;    // searches of the world (closest hit or any hit)
+  TestCounts tests;        // intersection tests by kind of shape
 
   uint64_t rays() const { return primary + shadow + reflected + refracted; }
 
@@ -22,6 +25,7 @@ struct RayStats {
     reflected += o.reflected;
     refracted += o.refracted;
     queries += o.queries;
+    tests += o.tests;
     return *this;
   }
 };

@@ -69,11 +69,15 @@ RenderResult Renderer::render(const RenderControl& control) const {
         [&](const tbb::blocked_range2d<int>& tile) {
           RayStats stats;
           uint64_t done = 0;
+          // The tile runs on this thread from start to end, so the difference of the
+          // thread's test counts is the tile's.
+          const TestCounts testsBefore = threadTestCounts;
           for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
             if (cancelled()) break;
             for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) body(x, y, stats);
             done += tile.cols().size();
           }
+          stats.tests = threadTestCounts - testsBefore;
           progress.workDone.fetch_add(done, std::memory_order_relaxed);
           progress.rays.fetch_add(stats.rays(), std::memory_order_relaxed);
           perThread.local() += stats;
