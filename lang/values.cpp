@@ -1,5 +1,7 @@
 #include "values.h"
 
+#include "primitives/value_limits.h"
+
 #include <charconv>
 #include <cmath>
 
@@ -71,6 +73,10 @@ Parsed<double> parseNumber(std::string_view text, bool allowInfinity) {
   if (std::isnan(value)) return {std::nullopt, "expected a number, got " + quote(t) + " (NaN is not allowed)"};
   if (std::isinf(value) && !allowInfinity)
     return {std::nullopt, "expected a finite number, got " + quote(t) + " (inf is allowed only for distances that may be infinite)"};
+  if (!allowInfinity && std::abs(value) > kMaxMagnitude)
+    return {std::nullopt, "the number " + quote(t) + " is too large (the limit is 1e30 in magnitude)"};
+  if (value != 0.0 && std::abs(value) < kMinMagnitude)
+    return {std::nullopt, "the number " + quote(t) + " is too small (a nonzero number must be at least 1e-30 in magnitude)"};
   return {value, {}};
 }
 
@@ -159,6 +165,7 @@ Parsed<ParsedColor> parseColor(std::string_view text) {
     return {std::nullopt, "expected a colour (3 numbers, 1 number for grey, or #rrggbb), got " +
                               std::to_string(v.size()) + " numbers (" + quote(t) + ")"};
   }
+  // Unreachable while numbers stop at kMaxMagnitude (1e30 < FLT_MAX); kept should that change.
   if (!std::isfinite(pc.color.r) || !std::isfinite(pc.color.g) || !std::isfinite(pc.color.b))
     return {std::nullopt, "the colour " + quote(t) + " is too large for a float"};
   return {pc, {}};

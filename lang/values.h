@@ -24,6 +24,8 @@ struct Parsed {
 
 // One decimal number (a leading '+' is allowed). `inf` (and `+inf`, `-inf`, `infinity`)
 // only if allowInfinity; NaN and hexadecimal never; trailing junk ("1.5x") is an error.
+// A finite magnitude above kMaxMagnitude (1e30) is an error unless allowInfinity, and so
+// is a nonzero one below kMinMagnitude (1e-30).
 Parsed<double> parseNumber(std::string_view text, bool allowInfinity = false);
 
 // Finite numbers separated by whitespace and/or single commas ("1 2 3", "1,2,3", "1, 2").

@@ -1,6 +1,7 @@
 #include "transform_syntax.h"
 
 #include "primitives/transform.h"
+#include "primitives/value_limits.h"
 
 #include <algorithm>
 #include <charconv>
@@ -77,6 +78,10 @@ struct Scanner {
         return fail(start, "'" + op + "': expected a number, got '" + std::string(token) + "'");
       if (!std::isfinite(value))
         return fail(start, "'" + op + "': expected a finite number, got '" + std::string(token) + "'");
+      if (std::abs(value) > kMaxMagnitude)
+        return fail(start, "'" + op + "': the number '" + std::string(token) + "' is too large (the limit is 1e30 in magnitude)");
+      if (value != 0.0 && std::abs(value) < kMinMagnitude)
+        return fail(start, "'" + op + "': the number '" + std::string(token) + "' is too small (a nonzero number must be at least 1e-30 in magnitude)");
       args.push_back(value);
       needNumber = false;
     }
@@ -150,6 +155,12 @@ struct Scanner {
         }
       }
     }
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        if (!std::isfinite(result.matrix[c][r])) {
+          fail(0, "the transform overflows (its operations multiply to numbers beyond double range)");
+          return;
+        }
     if (!Transform::fromMatrix(result.matrix))
       fail(0, "the transform is singular (it flattens space, e.g. a zero scale) and cannot be inverted");
   }

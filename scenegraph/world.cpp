@@ -4,12 +4,21 @@
 
 #include "csg/csg_node.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <unordered_map>
 
 namespace lucent {
 
 namespace {
+
+bool finiteTransform(const Transform& t) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(t.worldFromObject()[c][r]) || !std::isfinite(t.objectFromWorld()[c][r]))
+        return false;
+  return true;
+}
 
 CsgOp csgOpOf(NodeKind k) {
   switch (k) {
@@ -30,6 +39,10 @@ struct Builder {
     auto local = Transform::fromMatrix(node.parentFromNode);
     if (!local) throw std::runtime_error(node.loc.str() + ": error: singular transform");
     Transform world = local->followedBy(parentWorld);
+    // Each transform is finite, but nested ones multiply (twenty groups of scale(1e30)).
+    if (!finiteTransform(world))
+      throw std::runtime_error(node.loc.str() +
+                               ": error: the transforms down to this node multiply beyond double range");
     uint32_t material = node.material.value_or(inherited);
 
     switch (node.kind) {

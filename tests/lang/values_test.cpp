@@ -76,7 +76,8 @@ TEST_CASE("lang: colours of three numbers are linear, one number is grey", "[lan
   CHECK(grey->scalar);
   CHECK(parseColor("1 0").error == "expected a colour (3 numbers, 1 number for grey, or #rrggbb), got 2 numbers ('1 0')");
   CHECK(parseColor("red").error == "expected a number, got 'red'");
-  CHECK(parseColor("1e39").error == "the colour '1e39' is too large for a float");
+  // Beyond float range, and beyond the 1e30 limit of every number (docs/security.md).
+  CHECK(parseColor("1e39").error == "the number '1e39' is too large (the limit is 1e30 in magnitude)");
 }
 
 TEST_CASE("lang: integers, booleans", "[lang][values]") {
