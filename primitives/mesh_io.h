@@ -3,6 +3,7 @@
 #pragma once
 
 #include "mesh_data.h"
+#include "mesh_file_check.h"
 
 #include <memory>
 #include <stdexcept>
@@ -20,6 +21,10 @@ struct MeshError : std::runtime_error {
 // letter case). Normals and uvs come only from OBJ vn/vt, and only when every face corner
 // has one; PLY, OFF and STL normals and uvs are not read (CGAL's readers drop them).
 std::shared_ptr<MeshData> loadMeshFile(const std::string& path);
+
+// The same from bytes already in memory (what loadMeshFile does after reading the file;
+// the fuzz targets call it directly).
+std::shared_ptr<MeshData> loadMeshBytes(std::string bytes, MeshFormat format);
 
 // For meshes built in memory (inline <mesh>): repairs and orients the triangles where that
 // is possible and sets `closed`. Throws MeshError if no usable triangle remains.

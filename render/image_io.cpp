@@ -1,5 +1,8 @@
 #include "image_io.h"
 
+#include "primitives/system_memory.h"
+#include "scenegraph/render_limits.h"
+
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
@@ -149,8 +152,8 @@ void checkImageOutputPath(const std::string& path) {
   std::error_code ec;
   fs::path folder = folderOf(path);
   if (!fs::is_directory(folder, ec))
-    throw ImageIOError(fmt::format("cannot write '{}': folder '{}' does not exist", path,
-                                   folder.string()));
+    throw ImageIOError(fmt::format("cannot write '{}': folder '{}' {}", path, folder.string(),
+                                   fs::exists(folder, ec) ? "is not a folder" : "does not exist"));
   fs::file_status st = fs::status(path, ec);
   if (fs::exists(st) && !fs::is_regular_file(st))
     throw ImageIOError(
@@ -220,6 +223,19 @@ Image readImageFile(const std::string& path, PixelDecoding decoding) {
   const int channels = spec.nchannels;
   if (spec.width <= 0 || spec.height <= 0 || channels <= 0)
     throw ImageIOError(fmt::format("cannot read '{}': the image has no pixels", path));
+  // A small compressed file can claim an enormous image (a "decompression bomb"): refuse
+  // it from its header, before any pixel is allocated.
+  if (spec.width > kMaxImageSide || spec.height > kMaxImageSide || channels > 64)
+    throw ImageIOError(fmt::format("cannot read '{}': a {}x{} image with {} channels is beyond the "
+                                   "limit of {} pixels a side", path, spec.width, spec.height,
+                                   channels, kMaxImageSide));
+  // Float pixels as read, a decoded copy, and the linear RGB image kept.
+  const std::uintmax_t need = std::uintmax_t(spec.width) * std::uintmax_t(spec.height) *
+                              (2 * sizeof(float) * std::uintmax_t(channels) + sizeof(Color));
+  if (auto available = availableMemoryBytes(); available && need > *available)
+    throw ImageIOError(fmt::format("cannot read '{}': the {}x{} image needs about {} of memory, more "
+                                   "than the {} available", path, spec.width, spec.height,
+                                   formatBytes(need), formatBytes(*available)));
   std::vector<float> data(static_cast<size_t>(spec.width) * spec.height * channels);
   if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
     throw ImageIOError(fmt::format("cannot read '{}': {}", path, in->geterror()));
