@@ -90,7 +90,7 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
        {std::pair{options.width, "--width"}, std::pair{options.height, "--height"},
         std::pair{options.samples, "--samples"}, std::pair{options.threads, "--threads"},
         std::pair{options.maxDepth, "--max-depth"}}) {
-    if (value && *value < 1) return fail(fmt::format("{} must be at least 1 (got {})", name, *value), kUsage);
+    if (auto e = overrideProblem(name, value)) return fail(*e, kUsage);
   }
   std::optional<std::string> povray = findPovray();
   if (!povray) return fail(povrayInstallHint(), kRuntimeFailure);

@@ -56,8 +56,8 @@ int runExportPov(const ExportPovOptions& options, const CommonOptions& common) {
   for (auto [value, name] : {std::pair{options.width, "--width"},
                              std::pair{options.height, "--height"},
                              std::pair{options.maxDepth, "--max-depth"}}) {
-    if (value && *value < 1) {
-      fmt::print(stderr, "lucent: error: {} must be at least 1 (got {})\n", name, *value);
+    if (auto e = overrideProblem(name, value)) {
+      fmt::print(stderr, "lucent: error: {}\n", *e);
       return kUsage;
     }
   }

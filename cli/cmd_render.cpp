@@ -9,6 +9,7 @@
 #include "commands.h"
 
 #include "lang/parser.h"
+#include "primitives/system_memory.h"
 #include "render/camera_frame.h"
 #include "render/image_io.h"
 #include "render/progress_bar.h"
@@ -19,7 +20,6 @@
 
 #include <atomic>
 #include <csignal>
-#include <filesystem>
 #include <optional>
 #include <thread>
 
@@ -29,18 +29,19 @@ namespace lucent::cli {
 
 namespace {
 
-// Set by SIGINT, polled by the renderer before every row of every tile.
+// Set by SIGINT (Ctrl-C) or SIGTERM (kill, a batch system's stop), polled by the renderer
+// before every row of every tile.
 std::atomic<bool> gInterrupted{false};
 static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
 
-extern "C" void onInterrupt(int) {
+extern "C" void onInterrupt(int signal) {
   gInterrupted.store(true, std::memory_order_relaxed);
-  // A second Ctrl-C ends the process at once, as users expect when a stop hangs.
-  std::signal(SIGINT, SIG_DFL);
+  // A second one ends the process at once, as users expect when a stop hangs.
+  std::signal(signal, SIG_DFL);
 }
 
-// Catches SIGINT while it lives (even where the shell started us with SIGINT ignored, as
-// it does for background jobs); restores the previous disposition after.
+// Catches SIGINT and SIGTERM while it lives (even where the shell started us with SIGINT
+// ignored, as it does for background jobs); restores the previous dispositions after.
 class InterruptCatcher {
  public:
   InterruptCatcher() {
@@ -48,17 +49,19 @@ class InterruptCatcher {
     struct sigaction sa {};
     sa.sa_handler = onInterrupt;
     sigemptyset(&sa.sa_mask);
-    installed_ = sigaction(SIGINT, &sa, &previous_) == 0;
+    for (int i = 0; i < 2; ++i) installed_[i] = sigaction(kSignals[i], &sa, &previous_[i]) == 0;
   }
   ~InterruptCatcher() {
-    if (installed_) sigaction(SIGINT, &previous_, nullptr);
+    for (int i = 0; i < 2; ++i)
+      if (installed_[i]) sigaction(kSignals[i], &previous_[i], nullptr);
   }
   InterruptCatcher(const InterruptCatcher&) = delete;
   InterruptCatcher& operator=(const InterruptCatcher&) = delete;
 
  private:
-  struct sigaction previous_ {};
-  bool installed_ = false;
+  static constexpr int kSignals[2] = {SIGINT, SIGTERM};
+  struct sigaction previous_[2] {};
+  bool installed_[2] = {false, false};
 };
 
 int usageError(const std::string& message) {
@@ -68,15 +71,24 @@ int usageError(const std::string& message) {
 
 // Option values the contract calls out of range; nullopt when all are fine.
 std::optional<std::string> checkOverrides(const RenderOptions& o) {
-  auto atLeastOne = [](const std::optional<int>& v, const char* name) -> std::optional<std::string> {
-    if (v && *v < 1) return fmt::format("{} must be at least 1 (got {})", name, *v);
-    return std::nullopt;
-  };
-  for (auto e : {atLeastOne(o.width, "--width"), atLeastOne(o.height, "--height"),
-                 atLeastOne(o.samples, "--samples"), atLeastOne(o.threads, "--threads"),
-                 atLeastOne(o.maxDepth, "--max-depth")})
-    if (e) return e;
+  for (auto [value, name] : {std::pair{o.width, "--width"}, std::pair{o.height, "--height"},
+                             std::pair{o.samples, "--samples"}, std::pair{o.threads, "--threads"},
+                             std::pair{o.maxDepth, "--max-depth"}})
+    if (auto e = overrideProblem(name, value)) return e;
   return std::nullopt;
+}
+
+// The image in memory: the renderer's linear float pixels, the encoded copy handed to the
+// writer (at most float RGB), and the copy read back to prove the file complete.
+constexpr std::uintmax_t kImageBytesPerPixel = 3 * sizeof(Color);
+
+// An image too large for the memory left is refused before the render, not after hours.
+std::optional<std::string> imageMemoryProblem(const RenderSettings& r) {
+  const std::uintmax_t need = std::uintmax_t(r.width) * std::uintmax_t(r.height) * kImageBytesPerPixel;
+  const std::optional<std::uintmax_t> available = availableMemoryBytes();
+  if (!available || need <= *available) return std::nullopt;
+  return fmt::format("a {}x{} image needs about {} of memory, more than the {} available", r.width,
+                     r.height, formatBytes(need), formatBytes(*available));
 }
 
 void applyOverrides(const RenderOptions& o, RenderSettings& r) {
@@ -93,12 +105,6 @@ std::string cameraNames(const Scene& scene) {
     names += (names.empty() ? "" : ", ") + c.name;
   }
   return names.empty() ? "the scene's cameras have no names" : "cameras: " + names;
-}
-
-// OUT.png -> OUT.partial.png, beside it.
-std::string partialPath(const std::string& output) {
-  std::filesystem::path p(output);
-  return (p.parent_path() / (p.stem().string() + ".partial" + p.extension().string())).string();
 }
 
 void printStats(const RenderResult& r, int threads) {
@@ -152,6 +158,11 @@ int runRender(const RenderOptions& options, const CommonOptions& common) {
                                   options.camera, options.scene, cameraNames(scene)));
   }
 
+  if (auto problem = imageMemoryProblem(scene.render)) {
+    fmt::print(stderr, "lucent: error: {}\n", *problem);
+    return kRuntimeFailure;
+  }
+
   try {
     World world(scene);
     Renderer renderer(world, *camera);
@@ -169,20 +180,9 @@ int runRender(const RenderOptions& options, const CommonOptions& common) {
     }
 
     if (result.cancelled) {
-      // The output is left as it was; what was rendered goes beside it, clearly named.
-      if (progress.workDone.load() == 0) {
-        fmt::print(stderr, "lucent: interrupted; '{}' left unchanged\n", options.output);
-        return kRuntimeFailure;
-      }
-      std::string partial = partialPath(options.output);
-      try {
-        writeImageFile(result.image, partial);
-        fmt::print(stderr, "lucent: interrupted; '{}' left unchanged, partial image in '{}'\n",
-                   options.output, partial);
-      } catch (const ImageIOError& e) {
-        fmt::print(stderr, "lucent: interrupted; '{}' left unchanged ({})\n", options.output,
-                   e.what());
-      }
+      // The output is left as it was, and nothing else is written (docs/security.md: a
+      // render writes only its output image and that image's temporary file).
+      fmt::print(stderr, "lucent: interrupted; '{}' left unchanged\n", options.output);
       return kRuntimeFailure;
     }
 

@@ -11,6 +11,10 @@ namespace lucent::cli {
 // The contract's exit statuses.
 enum ExitCode { kOk = 0, kUsage = 1, kInvalidScene = 2, kRuntimeFailure = 3 };
 
+// The problem with a numeric override (-w, -h, -s, -t, --max-depth) named `name`, if any:
+// below 1, or above the limit the scene's <render> has too (render_settings.h).
+std::optional<std::string> overrideProblem(const std::string& name, const std::optional<int>& value);
+
 // Options every command accepts.
 struct CommonOptions {
   std::map<std::string, std::string> defines;  // -D name=value

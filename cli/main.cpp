@@ -15,9 +15,11 @@ void addCommonOptions(CLI::App* app, CommonOptions& common, std::vector<std::str
   app->add_option("-D,--define", defines, "Set a scene parameter: -D name=value")
       ->type_name("NAME=VALUE")
       ->allow_extra_args(false);
+  // A folder that does not exist is a typo: say so rather than silently allow nothing.
   app->add_option("--allow-path", common.allowPaths,
                   "Let the scene read files under DIR as well as its own folder")
       ->type_name("DIR")
+      ->check(CLI::ExistingDirectory)
       ->allow_extra_args(false);
 }
 

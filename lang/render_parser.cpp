@@ -2,6 +2,8 @@
 // global ambient and an optional self-intersection epsilon ("auto" or absent: automatic).
 #include "element_parsers.h"
 
+#include "scenegraph/render_limits.h"
+
 namespace lucent {
 
 void parseRender(ElementReader& r) {
@@ -17,13 +19,12 @@ void parseRender(ElementReader& r) {
                      "background", "ambient", "epsilon"});
   RenderSettings& s = ctx.scene.render;
   s.loc = r.loc();
-  // 65536 pixels a side is far beyond any image format we write, and keeps
-  // width*height*samples within 64-bit counters.
-  s.width = static_cast<int>(r.integer("width", s.width, 1, 65536));
-  s.height = static_cast<int>(r.integer("height", s.height, 1, 65536));
-  s.samples = static_cast<int>(r.integer("samples", s.samples, 1, 1 << 20));
+  // The limits are explained in render_settings.h.
+  s.width = static_cast<int>(r.integer("width", s.width, 1, kMaxImageSide));
+  s.height = static_cast<int>(r.integer("height", s.height, 1, kMaxImageSide));
+  s.samples = static_cast<int>(r.integer("samples", s.samples, 1, kMaxSamples));
   s.adaptive = r.number("adaptive", s.adaptive, NumberRule::nonNegative());
-  s.maxDepth = static_cast<int>(r.integer("max-depth", s.maxDepth, 1, 1000));
+  s.maxDepth = static_cast<int>(r.integer("max-depth", s.maxDepth, 1, kMaxRecursionDepth));
   s.minWeight = r.number("min-weight", s.minWeight, NumberRule::between(0.0, 1.0, "a number from 0 to 1"));
   s.background = r.color("background", s.background);
   s.ambient = r.color("ambient", s.ambient);

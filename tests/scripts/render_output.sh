@@ -51,6 +51,16 @@ grep -q "unknown image format '.xyz'" "$tmp/stderr" || fail "unknown extension: 
 
 expect 3 "output is a folder" -- "$lucent" render "$tmp/scene.xml" -o "$tmp" -q
 
+# A folder that cannot be written. We may run as root, whom permission bits do not stop,
+# so use places no one can write into: a regular file standing where a folder should be,
+# and /proc (the kernel refuses to create files there).
+echo "a file, not a folder" > "$tmp/afile"
+expect 3 "a file where a folder should be" -- "$lucent" render "$tmp/scene.xml" -o "$tmp/afile/out.png" -q
+grep -q "cannot write '$tmp/afile/out.png'" "$tmp/stderr" || fail "file as folder: message: $(cat "$tmp/stderr")"
+expect 3 "an unwritable folder (/proc)" -- "$lucent" render "$tmp/scene.xml" -o /proc/lucent-test-out.png -q
+grep -q "cannot write '/proc/lucent-test-out.png'" "$tmp/stderr" || fail "/proc: message: $(cat "$tmp/stderr")"
+[ -e /proc/lucent-test-out.png ] && fail "/proc/lucent-test-out.png exists"
+
 # A write that fails half way: a 1 KiB file size limit (SIGXFSZ ignored, so write()
 # fails with EFBIG instead of killing the process). The PNG of this image is larger.
 ( ulimit -f 1; trap '' XFSZ; exec "$lucent" render "$tmp/scene.xml" -o "$tmp/out.png" -q \
@@ -62,34 +72,44 @@ cmp -s "$tmp/out.png" "$tmp/reference.png" || fail "the old image was changed by
 leftovers=$(find "$tmp" -name '.*lucent-*' | wc -l)
 [ "$leftovers" -eq 0 ] || fail "temporary files left behind: $(find "$tmp" -name '.*lucent-*')"
 
-# Ctrl-C: a render too long to finish is interrupted; exit status 3, old image intact.
+# Ctrl-C and SIGTERM: a render too long to finish is interrupted; exit status 3, old image
+# intact, nothing else written.
 expect 0 "render to be interrupted later" -- "$lucent" render "$tmp/scene.xml" -o "$tmp/big.png" -q -w 16 -h 16
 cp "$tmp/big.png" "$tmp/big-reference.png"
-"$lucent" render "$tmp/scene.xml" -o "$tmp/big.png" -q -w 320 -h 240 -s 2000 >"$tmp/stdout" 2>"$tmp/stderr" &
-pid=$!
-# Wait until lucent catches SIGINT (bit 2 of SigCgt in /proc): before that the signal
-# would be lost, since a shell starts background jobs with SIGINT ignored.
-caught() { local mask; mask=$(awk '/^SigCgt/ {print $2}' /proc/"$pid"/status 2>/dev/null) &&
-  [ -n "$mask" ] && [ $((0x$mask & 2)) -ne 0 ]; }
-for _ in $(seq 1200); do
-  caught && break
-  sleep 0.1
-done
-kill -INT "$pid"
-# The renderer polls the flag every row; allow a loaded machine two minutes to stop.
-for _ in $(seq 1200); do
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.1
-done
-if kill -0 "$pid" 2>/dev/null; then
-  kill -KILL "$pid"
-  fail "Ctrl-C did not stop the render"
-fi
-wait "$pid"
-status=$?
-[ "$status" -eq 3 ] || fail "Ctrl-C: exit status $status, expected 3; stderr: $(cat "$tmp/stderr")"
-grep -q "interrupted" "$tmp/stderr" || fail "Ctrl-C: message: $(cat "$tmp/stderr")"
-cmp -s "$tmp/big.png" "$tmp/big-reference.png" || fail "Ctrl-C changed the old image"
+# interrupt SIGNAL MASK NAME: a long render stopped by SIGNAL (MASK: its bit in SigCgt).
+interrupt() {
+  local signal=$1 bit=$2 name=$3
+  "$lucent" render "$tmp/scene.xml" -o "$tmp/big.png" -q -w 320 -h 240 -s 2000 >"$tmp/stdout" 2>"$tmp/stderr" &
+  pid=$!
+  # Wait until lucent catches the signal (its bit of SigCgt in /proc): before that SIGINT
+  # would be lost, since a shell starts background jobs with SIGINT ignored.
+  caught() { local mask; mask=$(awk '/^SigCgt/ {print $2}' /proc/"$pid"/status 2>/dev/null) &&
+    [ -n "$mask" ] && [ $((0x$mask & bit)) -ne 0 ]; }
+  for _ in $(seq 1200); do
+    caught && break
+    sleep 0.1
+  done
+  kill -"$signal" "$pid"
+  # The renderer polls the flag every row; allow a loaded machine two minutes to stop.
+  for _ in $(seq 1200); do
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  if kill -0 "$pid" 2>/dev/null; then
+    kill -KILL "$pid"
+    fail "$name did not stop the render"
+  fi
+  wait "$pid"
+  status=$?
+  [ "$status" -eq 3 ] || fail "$name: exit status $status, expected 3; stderr: $(cat "$tmp/stderr")"
+  grep -q "interrupted; '$tmp/big.png' left unchanged" "$tmp/stderr" || fail "$name: message: $(cat "$tmp/stderr")"
+  cmp -s "$tmp/big.png" "$tmp/big-reference.png" || fail "$name changed the old image"
+  # Nothing else is written: no partial image, no temporary file.
+  extra=$(find "$tmp" -newer "$tmp/big-reference.png" -type f ! -name stdout ! -name stderr)
+  [ -z "$extra" ] || fail "$name left files behind: $extra"
+}
+interrupt INT 2 "Ctrl-C"
+interrupt TERM $((1 << 14)) "SIGTERM"
 
 # And a successful render replaces the image.
 expect 0 "replacing render" -- "$lucent" render "$tmp/scene.xml" -o "$tmp/out.png" -q -w 32 -h 24
