@@ -9,8 +9,7 @@
 #include "scene_loader.h"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
+#include <optional>
 #include <unordered_map>
 
 namespace fs = std::filesystem;
@@ -108,24 +107,12 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
 }  // namespace
 
 ParseResult parseSceneFile(const std::string& path, const ParseOptions& options) {
-  std::error_code ec;
-  std::string problem;
   std::string text;
-  if (!fs::exists(path, ec)) {
-    problem = "no such file";
-  } else if (fs::is_directory(path, ec)) {
-    problem = "it is a folder, not a file";
-  } else {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    if (in) s << in.rdbuf();
-    if (!in || in.bad()) problem = "the file cannot be read";
-    else text = std::move(s).str();
-  }
-  if (!problem.empty()) {
+  std::optional<std::string> problem = readSceneText(path, text);
+  if (problem) {
     ParseResult result;
     result.ioFailure = true;
-    result.diagnostics.error(SourceLoc{path, 0, 0}, "cannot read the scene file: " + problem);
+    result.diagnostics.error(SourceLoc{path, 0, 0}, "cannot read the scene file: " + *problem);
     return result;
   }
   return parseText(std::move(text), path, options);

@@ -3,26 +3,10 @@
 #include "did_you_mean.h"
 #include "element_reader.h"
 
-#include <fstream>
-#include <sstream>
 
 namespace fs = std::filesystem;
 
 namespace lucent {
-
-namespace {
-
-bool readWholeFile(const fs::path& path, std::string& text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) return false;
-  text = std::move(s).str();
-  return true;
-}
-
-}  // namespace
 
 bool SceneLoader::parseFile(SourceFile& file) {
   if (auto syntax = file.parse()) {
@@ -30,6 +14,20 @@ bool SceneLoader::parseFile(SourceFile& file) {
     return false;
   }
   pugi::xml_node root = file.root();
+  // pugixml accepts several top-level elements (and text beside them); an XML document,
+  // and so a scene, has exactly one root. A second one would be silently ignored.
+  for (pugi::xml_node n = root.next_sibling(); n; n = n.next_sibling()) {
+    if (n.type() == pugi::node_element) {
+      ctx_.diags.error(file.loc(n), "a second root element <" + std::string(n.name()) +
+                                        "> after <" + root.name() + ">: a scene file has exactly one root element");
+      return false;
+    }
+    if (n.type() == pugi::node_pcdata || n.type() == pugi::node_cdata) {
+      ctx_.diags.error(file.locOf(n.value()).value_or(file.loc(root)),
+                       "text after the root element <" + std::string(root.name()) + ">");
+      return false;
+    }
+  }
   if (std::string_view(root.name()) != "scene") {
     ctx_.diags.error(file.loc(root), "the root element must be <scene version=\"1\">, got <" +
                                          std::string(root.name()) + ">" +
@@ -116,8 +114,8 @@ void SceneLoader::include(const SourceFile& from, pugi::xml_node element) {
   if (!seen_.insert(f.path).second) return;  // included already: insert once
 
   std::string text;
-  if (!readWholeFile(f.path, text)) {
-    r.attrError("src", "cannot read '" + *src + "'");
+  if (auto problem = readSceneText(f.path, text)) {
+    r.attrError("src", "cannot read '" + *src + "': " + *problem);
     return;
   }
   files_.push_back(std::make_unique<SourceFile>(display, f.path.parent_path(), std::move(text)));

@@ -1,9 +1,31 @@
 #include "source_file.h"
 
 #include <algorithm>
+#include <fstream>
 #include <functional>
 
 namespace lucent {
+
+std::optional<std::string> readSceneText(const std::filesystem::path& path, std::string& text) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (status.type() == fs::file_type::not_found) return "no such file";
+  if (status.type() == fs::file_type::directory) return "it is a folder, not a file";
+  if (ec) return "it cannot be examined: " + ec.message();
+  if (status.type() != fs::file_type::regular) return "it is not a regular file";
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) return "its size cannot be read: " + ec.message();
+  if (size > kMaxSceneFileBytes)
+    return "it is too large (" + std::to_string(size) + " bytes; the limit is " +
+           std::to_string(kMaxSceneFileBytes) + " bytes)";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "the file cannot be read";
+  text.assign(static_cast<size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  if (static_cast<std::uintmax_t>(in.gcount()) != size) return "the file cannot be read completely";
+  return std::nullopt;
+}
 
 SourceFile::SourceFile(std::string display, std::filesystem::path folder, std::string text)
     : display_(std::move(display)), folder_(std::move(folder)), text_(std::move(text)) {

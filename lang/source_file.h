@@ -6,12 +6,23 @@
 
 #include <pugixml.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace lucent {
+
+// A scene file (or an include) larger than this is refused before it is read: large inline
+// meshes fit, while `lucent render /dev/zero` or a runaway generated file cannot eat the
+// machine's memory.
+constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{1} << 30;  // 1 GiB
+
+// Reads a whole scene file into `text`. It must be a regular file (not a folder, device or
+// pipe, which could be endless) of at most kMaxSceneFileBytes. Returns the problem in words,
+// or nothing on success.
+std::optional<std::string> readSceneText(const std::filesystem::path& path, std::string& text);
 
 class SourceFile {
  public:
