@@ -116,6 +116,9 @@ met() { awk -v x="$1" -v op="$2" -v y="$3" 'BEGIN { if (x == "" || x == "n/a") p
   else print "**not met**" }'; }
 
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
+# The section written by bench/gallery_speed.sh (its table and the reading below it) is
+# kept as it is: this script does not measure the gallery.
+gallerySection=$(sed -n '/^## The gallery against POV-Ray/,/^## Raw outputs/{/^## Raw outputs/!p}' docs/performance.md 2>/dev/null || true)
 {
 cat <<EOF
 # Performance
@@ -225,6 +228,8 @@ build-bench/bench/vs_povray build-bench/cli/lucent /tmp/work --triangles ${tris}
 \`\`\`
 
 $(tables "$work/povray.md")
+
+${gallerySection}
 
 ## Raw outputs
 
