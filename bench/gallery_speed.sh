@@ -20,7 +20,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-lucent=build-speed/cli/lucent
+lucent=build/cli/lucent
 threads=2
 samples=1
 reps=3
@@ -41,7 +41,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 [ ${#scenes[@]} -gt 0 ] || scenes=(examples/gallery/*.xml)
-lucent=$(realpath "$lucent")
+lucent=$(realpath -m "$lucent")
 
 data=docs/performance-data
 mkdir -p "$data"

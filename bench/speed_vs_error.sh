@@ -24,7 +24,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-lucent=build-speed/cli/lucent
+lucent=build/cli/lucent
 threads=2
 quick=0
 plotOnly=0
@@ -41,7 +41,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 [ ${#scenes[@]} -gt 0 ] || { echo "usage: $0 [--lucent PATH] [--threads N] [--quick] SCENE.xml..." >&2; exit 1; }
-lucent=$(realpath "$lucent")
+lucent=$(realpath -m "$lucent")
 
 csv=docs/speed-vs-error.csv
 plot=docs/images/speed-vs-error.png
