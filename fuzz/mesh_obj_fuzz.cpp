@@ -1,0 +1,7 @@
+// libFuzzer target: the OBJ mesh reader (loadMeshBytes: the checks, CGAL's reader, repair).
+#include "fuzz/fuzz_inputs.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  lucent::fuzz::meshReader(data, size, lucent::MeshFormat::Obj);
+  return 0;
+}

@@ -1,0 +1,7 @@
+// libFuzzer target: the scene language (parseSceneString), then World and one pixel.
+#include "fuzz/fuzz_inputs.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  lucent::fuzz::sceneParser(data, size, LUCENT_SOURCE_DIR "/examples/fuzz-input.xml");
+  return 0;
+}
