@@ -112,6 +112,16 @@ void printStats(const RenderResult& r, int threads) {
   fmt::print("rays:      {:>14}  (primary {}, shadow {}, reflected {}, refracted {})\n", s.rays(),
              s.primary, s.shadow, s.reflected, s.refracted);
   fmt::print("searches:  {:>14}  (closest-hit and any-hit queries of the world)\n", s.queries);
+  // Intersection tests by kind, the kinds the scene has only.
+  uint64_t tests = 0;
+  std::string byKind;
+  for (int k = 0; k < kTestKinds; ++k) {
+    const uint64_t n = s.tests.n[static_cast<size_t>(k)];
+    if (n == 0) continue;
+    tests += n;
+    byKind += fmt::format("{}{} {}", byKind.empty() ? "" : ", ", testKindName(static_cast<TestKind>(k)), n);
+  }
+  fmt::print("tests:     {:>14}  ({})\n", tests, byKind.empty() ? "none" : byKind);
   fmt::print("time:      {:>14.3f}  s ({})\n", r.seconds, formatDuration(r.seconds));
   fmt::print("speed:     {:>14.3f}  Mrays/s on {} threads\n",
              r.seconds > 0.0 ? s.rays() / r.seconds * 1e-6 : 0.0, threads);
