@@ -9,12 +9,14 @@
 //   so they are refused with a message saying so.
 // Comments: '#' up to the end of the line, and lines that start with '#'.
 #include "mesh_file_check.h"
+
 #include "mesh_io.h"
 #include "mesh_text.h"
 
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cmath>
 #include <limits>
 
 namespace lucent {
@@ -152,6 +154,19 @@ void checkColours(std::size_t count, const double* values, bool& seen, std::size
                      line, count));
   if (count == 1 && !(values[0] >= 0 && values[0] <= 1e6))
     fail(fmt::format("OFF line {}: colour index {} is not valid", line, values[0]));
+  // CGAL converts r g b to unsigned char as they are when all three are whole numbers, else
+  // times 255; a value outside 0..255 after that is undefined behaviour in the conversion
+  // (found by mesh_off_fuzz: tests/fuzz/crashes/mesh_off/).
+  if (count >= 3) {
+    const bool whole = std::floor(values[0]) == values[0] && std::floor(values[1]) == values[1] &&
+                       std::floor(values[2]) == values[2];
+    for (int i = 0; i < 3; ++i) {
+      const double byte = whole ? values[i] : values[i] * 255;
+      if (!(byte >= 0 && byte < 256))
+        fail(fmt::format("OFF line {}: colour value {} is outside 0 to 255 (whole numbers) or 0 to 1",
+                         line, values[i]));
+    }
+  }
 }
 
 }  // namespace
