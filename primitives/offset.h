@@ -13,4 +13,9 @@ namespace lucent {
 // a conservative pError, so the offset scales with the rounding error of the hit itself.
 Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& ng, const Vec3& w);
 
+// The neighbouring doubles of v towards +∞ and −∞: std::nextafter(v, ±∞) without the call
+// (NaN stays NaN; +∞ stays +∞ going up, −∞ stays −∞ going down).
+double nextUp(double v);
+double nextDown(double v);
+
 }  // namespace lucent

@@ -2,7 +2,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <limits>
 #include <random>
+#include <vector>
 
 using namespace lucent;
 
@@ -37,4 +40,27 @@ TEST_CASE("offsetRayOrigin: an exact point still moves off its surface", "[numer
   po = offsetRayOrigin(Vec3(1, 0.5, 0.25), Vec3(0.0), Vec3(1, 0, 0), Vec3(-1, 0, 0));
   CHECK(po.x == std::nextafter(1.0, 0.0));
   CHECK(po.y == 0.5);
+}
+
+TEST_CASE("nextUp and nextDown step like std::nextafter", "[numeric][offset]") {
+  const double lim = std::numeric_limits<double>::max();
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  std::vector<double> values = {0.0,  -0.0, tiny, -tiny, 1.0,  -1.0,  lim,  -lim,
+                                1e-310, -1e-310, 1e5, -1e5, 0.1, -0.3, kInf, -kInf,
+                                std::numeric_limits<double>::min(), -std::numeric_limits<double>::min()};
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 100000; ++i)
+    values.push_back(std::ldexp(u(rng), int(rng() % 2000) - 1000));
+  for (double v : values) {
+    INFO(v);
+    const double up = std::nextafter(v, kInf), down = std::nextafter(v, -kInf);
+    // Bit for bit (0 and −0 differ in bits but not in value: compare the sign too).
+    CHECK(nextUp(v) == up);
+    CHECK(std::signbit(nextUp(v)) == std::signbit(up));
+    CHECK(nextDown(v) == down);
+    CHECK(std::signbit(nextDown(v)) == std::signbit(down));
+  }
+  CHECK(std::isnan(nextUp(std::nan(""))));
+  CHECK(std::isnan(nextDown(std::nan(""))));
 }
