@@ -11,7 +11,28 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <sys/mman.h>
+
 namespace lucent {
+
+namespace bvh_detail {
+
+void* allocateBuildMemory(size_t bytes) {
+  if (bytes < kHugeMin) return ::operator new(bytes, std::align_val_t(64));
+  // Whole huge pages, so the advice covers this block alone.
+  bytes = (bytes + kHugePage - 1) & ~(kHugePage - 1);
+  void* p = ::operator new(bytes, std::align_val_t(kHugePage));
+#ifdef MADV_HUGEPAGE
+  madvise(p, bytes, MADV_HUGEPAGE);
+#endif
+  return p;
+}
+
+void freeBuildMemory(void* p, size_t bytes) {
+  ::operator delete(p, std::align_val_t(bytes < kHugeMin ? 64 : kHugePage));
+}
+
+}  // namespace bvh_detail
 
 BvhRay::BvhRay(const Ray& r) : o(r.o), invDir(1.0 / r.d) {
   for (int a = 0; a < 3; ++a) {
@@ -80,6 +101,7 @@ struct Ref {
   Box4 box() const { return {lo, hi}; }
 };
 static_assert(sizeof(Ref) == 32, "build references are 32 bytes");
+using RefVector = std::vector<Ref, CacheLineAllocator<Ref>>;
 
 constexpr uint32_t kMaxItems = 1u << 29;  // see Ref
 constexpr int kBins = 16;
@@ -89,6 +111,10 @@ constexpr int kSahDepth = 64;
 static_assert(kSahDepth + 31 < Bvh::kMaxDepth, "traversal stack too small");
 // Subtrees with fewer items are built by one task.
 constexpr uint32_t kParallelMin = 4096;
+// Nodes with fewer items bin into one set of bins (findSahSplit).
+constexpr uint32_t kTwoBinSetsMin = 256;
+// Nodes with at least this many items bin in parallel (findSahSplit).
+constexpr uint32_t kParallelBinMin = 1u << 16;
 
 // No default initialisers: only the bins in use are cleared.
 struct Bin {
@@ -96,6 +122,26 @@ struct Bin {
   uint32_t count;
   void clear() { lo = splat(INFINITY); hi = splat(-INFINITY); count = 0; }
   Box4 box() const { return {lo, hi}; }
+};
+
+// The bins of a node: b[k][a] is bin k on axis a. `used` tells a set that holds bins
+// from one that a TBB reduction default-constructed (left uncleared: it is large).
+struct BinSet {
+  Bin b[kBins][3];
+  bool used = false;
+  void clear(int nb) {
+    for (int k = 0; k < nb; ++k)
+      for (int a = 0; a < 3; ++a) b[k][a].clear();
+    used = true;
+  }
+  void merge(const BinSet& o, int nb) {
+    for (int k = 0; k < nb; ++k)
+      for (int a = 0; a < 3; ++a) {
+        b[k][a].lo = vmin(b[k][a].lo, o.b[k][a].lo);
+        b[k][a].hi = vmax(b[k][a].hi, o.b[k][a].hi);
+        b[k][a].count += o.b[k][a].count;
+      }
+  }
 };
 
 // The bin of each lane: (c - lo) · scale, clamped to the bins (the same computation in
@@ -141,7 +187,7 @@ struct Child {
 
 class Builder {
  public:
-  Builder(std::vector<Ref>& refs, BvhNode* nodes, const Bvh::Options& opt)
+  Builder(RefVector& refs, BvhNode* nodes, const Bvh::Options& opt)
       : refs_(refs), nodes_(nodes), opt_(opt) {}
 
   uint32_t nodeCount() const { return next_.load(); }
@@ -248,6 +294,38 @@ class Builder {
     decide(right);
   }
 
+  // Bins refs[first, last) into `set` (which it clears first).
+  void binRange(const Binner& binner, uint32_t first, uint32_t last, BinSet& set) const {
+    const int nb = binner.count;
+    set.clear(nb);
+    auto add = [&binner](BinSet& to, const Ref& r) {
+      v4i b = binner.bins(r.centroid2());
+      for (int a = 0; a < 3; ++a) {
+        Bin& bin = to.b[b[a]][a];
+        bin.lo = vmin(bin.lo, r.lo);
+        bin.hi = vmax(bin.hi, r.hi);
+        bin.count++;
+      }
+    };
+    if (last - first >= kTwoBinSetsMin) {
+      // Two sets of bins for alternate items, merged at the end: neighbouring items tend
+      // to fall into the same bin, and one set would make each update wait for the last.
+      // Small nodes skip this: clearing and merging the second set costs more than it
+      // saves (most of the build's nodes are small).
+      BinSet other;
+      other.clear(nb);
+      uint32_t i = first;
+      for (; i + 1 < last; i += 2) {
+        add(set, refs_[i]);
+        add(other, refs_[i + 1]);
+      }
+      if (i < last) add(set, refs_[i]);
+      set.merge(other, nb);
+    } else {
+      for (uint32_t i = first; i < last; ++i) add(set, refs_[i]);
+    }
+  }
+
   // Binned SAH: the cheapest of the planes between bins, per axis (Wald 2007).
   bool findSahSplit(Child& c) const {
     Binner binner(c.cbox, c.size());
@@ -255,34 +333,54 @@ class Builder {
     if (!binner.splittable(0) && !binner.splittable(1) && !binner.splittable(2))
       return false;  // every centroid in one point: no plane separates them
 
-    // Two sets of bins for alternate items, merged at the end: neighbouring items tend
-    // to fall into the same bin, and one set would make each update wait for the last.
-    Bin bins[3][kBins], bins2[3][kBins];
-    for (int a = 0; a < 3; ++a)
-      for (int i = 0; i < nb; ++i) {
-        bins[a][i].clear();
-        bins2[a][i].clear();
-      }
-    auto add = [&](Bin (&set)[3][kBins], const Ref& r) {
-      v4i b = binner.bins(r.centroid2());
-      for (int a = 0; a < 3; ++a) {
-        Bin& bin = set[a][b[a]];
-        bin.lo = vmin(bin.lo, r.lo);
-        bin.hi = vmax(bin.hi, r.hi);
-        bin.count++;
-      }
-    };
-    uint32_t i = c.begin;
-    for (; i + 1 < c.end; i += 2) {
-      add(bins, refs_[i]);
-      add(bins2, refs_[i + 1]);
+    // bins.b[k][a]: bin k on axis a (the three axes of a bin side by side, so the sweeps
+    // below run them together and their dependency chains overlap).
+    BinSet bins;
+    if (opt_.parallel && c.size() >= kParallelBinMin) {
+      // Large nodes (the top of the tree, where few subtrees run side by side) bin in
+      // parallel: each task its own set, merged (min, max and counts: the same bins in
+      // any order, so the same tree).
+      bins = tbb::parallel_reduce(
+          tbb::blocked_range<uint32_t>(c.begin, c.end, kParallelBinMin / 4), BinSet(),
+          [&](const tbb::blocked_range<uint32_t>& r, BinSet acc) {
+            BinSet part;
+            binRange(binner, r.begin(), r.end(), part);
+            if (acc.used) part.merge(acc, nb);
+            return part;
+          },
+          [nb](BinSet x, const BinSet& y) {
+            if (!x.used) return y;
+            if (y.used) x.merge(y, nb);
+            return x;
+          });
+    } else {
+      binRange(binner, c.begin, c.end, bins);
     }
-    if (i < c.end) add(bins, refs_[i]);
-    for (int a = 0; a < 3; ++a)
-      for (int k = 0; k < nb; ++k) {
-        bins[a][k].lo = vmin(bins[a][k].lo, bins2[a][k].lo);
-        bins[a][k].hi = vmax(bins[a][k].hi, bins2[a][k].hi);
-        bins[a][k].count += bins2[a][k].count;
+
+    // The plane left of bin k: items of bins [0, k) left, the others right.
+    float rightArea[kBins][3], cost[kBins][3];
+    uint32_t rightCount[kBins][3];
+    Box4 acc[3];
+    uint32_t cnt[3] = {0, 0, 0};
+    for (int k = nb - 1; k > 0; --k)
+      for (int a = 0; a < 3; ++a) {
+        acc[a].expand(bins.b[k][a].box());
+        cnt[a] += bins.b[k][a].count;
+        rightArea[k][a] = acc[a].halfArea();
+        rightCount[k][a] = cnt[a];
+      }
+    for (int a = 0; a < 3; ++a) {
+      acc[a] = Box4();
+      cnt[a] = 0;
+    }
+    for (int k = 1; k < nb; ++k)
+      for (int a = 0; a < 3; ++a) {
+        acc[a].expand(bins.b[k - 1][a].box());
+        cnt[a] += bins.b[k - 1][a].count;
+        cost[k][a] = cnt[a] == 0 || rightCount[k][a] == 0
+                         ? INFINITY
+                         : acc[a].halfArea() * float(cnt[a]) +
+                               rightArea[k][a] * float(rightCount[k][a]);
       }
 
     Child::Split& s = c.split;
@@ -290,52 +388,43 @@ class Builder {
     float best = INFINITY;
     for (int a = 0; a < 3; ++a) {
       if (!binner.splittable(a)) continue;
-      float rightArea[kBins];
-      uint32_t rightCount[kBins];
-      Box4 acc;
-      uint32_t cnt = 0;
-      for (int i = nb - 1; i > 0; --i) {
-        acc.expand(bins[a][i].box());
-        cnt += bins[a][i].count;
-        rightArea[i] = acc.halfArea();
-        rightCount[i] = cnt;
-      }
-      acc = Box4();
-      cnt = 0;
-      for (int i = 1; i < nb; ++i) {
-        acc.expand(bins[a][i - 1].box());
-        cnt += bins[a][i - 1].count;
-        if (cnt == 0 || rightCount[i] == 0) continue;
-        float cost = acc.halfArea() * float(cnt) + rightArea[i] * float(rightCount[i]);
-        if (cost < best) {
-          best = cost;
+      for (int k = 1; k < nb; ++k)
+        if (cost[k][a] < best) {
+          best = cost[k][a];
           s.axis = a;
-          s.bin = i;
+          s.bin = k;
         }
-      }
     }
     if (s.axis < 0) return false;  // only infinite costs (boxes beyond float range)
     s.cost = best;
-    for (int i = 0; i < nb; ++i) (i < s.bin ? s.left : s.right).expand(bins[s.axis][i].box());
+    for (int k = 0; k < nb; ++k) (k < s.bin ? s.left : s.right).expand(bins.b[k][s.axis].box());
     return true;
   }
 
   // Moves the refs left of the split plane first; returns the first of the right ones.
+  // Two-sided (Hoare): only the refs on the wrong side move, a pair at a time.
   uint32_t partition(const Child& c, Box4& lcbox, Box4& rcbox) {
     Binner binner(c.cbox, c.size());
-    int a = c.split.axis;
+    const int a = c.split.axis, split = c.split.bin;
+    auto isLeft = [&](v4f ctr) { return binner.bins(ctr)[a] < split; };
     uint32_t i = c.begin, j = c.end;
-    while (i < j) {
-      v4f ctr = refs_[i].centroid2();
-      if (binner.bins(ctr)[a] < c.split.bin) {
+    for (;;) {
+      for (; i < j; ++i) {
+        v4f ctr = refs_[i].centroid2();
+        if (!isLeft(ctr)) break;
         lcbox.expand(ctr);
-        ++i;
-      } else {
-        rcbox.expand(ctr);
-        std::swap(refs_[i], refs_[--j]);
       }
+      for (; i < j; --j) {
+        v4f ctr = refs_[j - 1].centroid2();
+        if (isLeft(ctr)) break;
+        rcbox.expand(ctr);
+      }
+      if (i == j) return i;
+      // refs_[i] belongs right and refs_[j - 1] left.
+      std::swap(refs_[i], refs_[j - 1]);
+      lcbox.expand(refs_[i++].centroid2());
+      rcbox.expand(refs_[--j].centroid2());
     }
-    return i;
   }
 
   // Half the refs on each side, split along the widest centroid extent.
@@ -360,7 +449,7 @@ class Builder {
     }
   }
 
-  std::vector<Ref>& refs_;
+  RefVector& refs_;
   BvhNode* nodes_;
   const Bvh::Options& opt_;
   std::atomic<uint32_t> next_{1};  // node 0 is the root
@@ -377,7 +466,7 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
   // The items' boxes rounded outward, in parallel for large inputs (boundsOf must then
   // be safe to call from several threads: it only reads). Items with an empty box are
   // marked and dropped after.
-  std::vector<Ref> refs(count);
+  RefVector refs(count);
   struct Bounds {
     Box4 box, cbox;
     size_t empties = 0;
