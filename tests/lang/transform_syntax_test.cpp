@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <string>
+
 using namespace lucent;
 
 namespace {
@@ -99,7 +101,13 @@ TEST_CASE("lang: transform errors say what is wrong and where", "[lang][transfor
   CHECK(r.error == "'rotate': the rotation axis must not be zero");
   r = failed("scale(1 0 1)");
   CHECK(r.error == "the transform is singular (it flattens space, e.g. a zero scale) and cannot be inverted");
-  r = failed("scale(1e-200) scale(1e-200)");  // underflows to a zero matrix
+  // Numbers below 1e-30 are refused (docs/security.md); allowed ones whose product
+  // underflows to a zero matrix make a singular transform.
+  r = failed("scale(1e-200)");
+  CHECK_THAT(r.error, Catch::Contains("too small"));
+  std::string tiny;
+  for (int i = 0; i < 11; ++i) tiny += "scale(1e-30) ";
+  r = failed(tiny.c_str());
   CHECK_THAT(r.error, Catch::Contains("singular"));
 
   r = failed("translate(1 2 x)");
