@@ -38,28 +38,18 @@ struct alignas(64) BvhNode {
 };
 static_assert(sizeof(BvhNode) == 128, "four 32-byte child entries in two cache lines");
 
-namespace bvh_detail {
-// Large blocks (the build's references and nodes) are aligned to 2 MB and marked for
-// transparent huge pages: the build writes tens of megabytes of fresh memory, and one
-// page fault per 4 KB page cost about a third of the build time (perf, in a VM where
-// faults are dear). Where huge pages are off, the advice is ignored.
-constexpr size_t kHugePage = size_t(2) << 20;
-constexpr size_t kHugeMin = 2 * kHugePage;  // smaller blocks: 64-byte alignment
-void* allocateBuildMemory(size_t bytes);
-void freeBuildMemory(void* p, size_t bytes);
-}  // namespace bvh_detail
-
-// Allocates on 64-byte boundaries (2 MB for large blocks, see above) and leaves new
-// elements uninitialised on resize, so the nodes the build reserves but never reaches
-// are never touched (cost no memory).
+// Allocates on 64-byte boundaries and leaves new elements uninitialised on resize, so
+// the nodes the build reserves but never reaches are never touched (cost no memory).
 template <class T>
 struct CacheLineAllocator {
   using value_type = T;
   CacheLineAllocator() = default;
   template <class U>
   CacheLineAllocator(const CacheLineAllocator<U>&) {}
-  T* allocate(size_t n) { return static_cast<T*>(bvh_detail::allocateBuildMemory(n * sizeof(T))); }
-  void deallocate(T* p, size_t n) { bvh_detail::freeBuildMemory(p, n * sizeof(T)); }
+  T* allocate(size_t n) {
+    return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(64)));
+  }
+  void deallocate(T* p, size_t) { ::operator delete(p, std::align_val_t(64)); }
   template <class U>
   void construct(U* p) {
     ::new (static_cast<void*>(p)) U;
