@@ -181,6 +181,11 @@ SurfaceMesh orientedMesh(Soup& soup, std::size_t inputFaces) {
     throw MeshError("CGAL could not orient the faces into a consistent surface");
   SurfaceMesh mesh;
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
+  // A soup CGAL calls a polygon mesh can still come out with face cycles that never
+  // close (a damaged PLY found by fuzzing), and every later walk around a face would
+  // then run for ever: check the halfedge structure once.
+  if (!mesh.is_valid(false))
+    throw MeshError("the faces do not form a valid surface (CGAL built an inconsistent mesh)");
   return mesh;
 }
 
@@ -232,12 +237,24 @@ std::optional<MeshData> cleanClosed(Soup& soup) {
 
 // The closed/oriented triangle mesh of `soup`: positions and triangles of the result.
 MeshData solidOrSurface(Soup soup) {
+  // CGAL's soup functions trust the indices: one past the points (a PLY whose header was
+  // damaged, found by fuzzing) builds a halfedge mesh whose face cycles never end.
+  for (std::size_t f = 0; f < soup.polygons.size(); ++f)
+    for (std::size_t v : soup.polygons[f])
+      if (v >= soup.points.size())
+        throw MeshError(fmt::format("face {} uses vertex {}, but there are only {} vertices", f + 1,
+                                    v, soup.points.size()));
   if (std::optional<MeshData> clean = cleanClosed(soup)) return std::move(*clean);
   const std::size_t inputFaces = soup.polygons.size();
   SurfaceMesh mesh = orientedMesh(soup, inputFaces);
   bool split = false;
   for (SurfaceMesh::Face_index f : mesh.faces()) split |= mesh.degree(f) > 3;
   PMP::triangulate_faces(mesh);
+  // On some damaged polygons CGAL 5.5's triangulation leaves broken face cycles, and
+  // walking around such a face never ends (PLY files found by fuzzing,
+  // tests/fuzz/crashes/mesh_ply): check the halfedge structure before anything walks it.
+  if (!mesh.is_valid(false))
+    throw MeshError("its polygons could not be split into triangles (a damaged or self-overlapping polygon)");
   std::size_t dropped = 0;
   Soup triangles = usableTriangles(mesh, dropped);
   if (triangles.polygons.empty())
