@@ -170,6 +170,40 @@ struct CornerAttributes {
   bool any() const { return !normals.empty() || !uvs.empty(); }
 };
 
+// Do two corners of face f fall on one point when seen along its Newell normal? CGAL's
+// constrained Delaunay triangulation of the face works in that projection, and such a
+// pair crashes it (a null handle: CGAL 5.5, found by fuzzing a non-planar pentagon).
+bool cornersOverlapInProjection(const SurfaceMesh& mesh, SurfaceMesh::Face_index f) {
+  std::vector<Vec3> p;
+  for (SurfaceMesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+    const Point& q = mesh.point(v);
+    p.emplace_back(q.x(), q.y(), q.z());
+  }
+  Vec3 n(0.0);
+  for (std::size_t i = 0; i < p.size(); ++i) n += glm::cross(p[i], p[(i + 1) % p.size()]);
+  const double len = glm::length(n);
+  if (!(len > 0.0)) return true;
+  n /= len;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      const Vec3 d = p[j] - p[i];
+      if (glm::length(glm::cross(d, n)) <= 1e-9 * glm::length(d)) return true;
+    }
+  return false;
+}
+
+// Splits every polygon into triangles: CGAL's constrained Delaunay triangulation, or its
+// hole filling for polygons on which the former would crash (see above). A polygon that
+// cannot be split stays as it is and is dropped later.
+void triangulatePolygons(SurfaceMesh& mesh) {
+  std::vector<SurfaceMesh::Face_index> risky;
+  for (SurfaceMesh::Face_index f : mesh.faces())
+    if (mesh.degree(f) > 3 && cornersOverlapInProjection(mesh, f)) risky.push_back(f);
+  for (SurfaceMesh::Face_index f : risky)
+    PMP::triangulate_face(f, mesh, CGAL::parameters::use_delaunay_triangulation(false));
+  PMP::triangulate_faces(mesh);
+}
+
 // repair → orient → halfedge mesh. The soup is consumed.
 SurfaceMesh orientedMesh(Soup& soup, std::size_t inputFaces) {
   PMP::repair_polygon_soup(soup.points, soup.polygons);
@@ -249,7 +283,7 @@ MeshData solidOrSurface(Soup soup) {
   SurfaceMesh mesh = orientedMesh(soup, inputFaces);
   bool split = false;
   for (SurfaceMesh::Face_index f : mesh.faces()) split |= mesh.degree(f) > 3;
-  PMP::triangulate_faces(mesh);
+  triangulatePolygons(mesh);
   // On some damaged polygons CGAL 5.5's triangulation leaves broken face cycles, and
   // walking around such a face never ends (PLY files found by fuzzing,
   // tests/fuzz/crashes/mesh_ply): check the halfedge structure before anything walks it.
