@@ -170,38 +170,65 @@ struct CornerAttributes {
   bool any() const { return !normals.empty() || !uvs.empty(); }
 };
 
-// Do two corners of face f fall on one point when seen along its Newell normal? CGAL's
-// constrained Delaunay triangulation of the face works in that projection, and such a
-// pair crashes it (a null handle: CGAL 5.5, found by fuzzing a non-planar pentagon).
-bool cornersOverlapInProjection(const SurfaceMesh& mesh, SurfaceMesh::Face_index f) {
+// Is face f a simple polygon when seen along its Newell normal: no two corners on one
+// point, no two edges crossing or touching except neighbours at their shared corner?
+// CGAL's constrained Delaunay triangulation of a face works in that projection, and a
+// non-simple one crashes it (a null handle in CGAL 5.5: fuzzed OBJ files with a corner
+// moved far off the polygon's plane, tests/fuzz/crashes/mesh_obj). Decided in double with
+// a relative tolerance, so near-touching edges count as touching: a polygon taken for
+// non-simple is only triangulated by a slower method.
+bool projectionIsSimple(const SurfaceMesh& mesh, SurfaceMesh::Face_index f) {
   std::vector<Vec3> p;
   for (SurfaceMesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
     const Point& q = mesh.point(v);
     p.emplace_back(q.x(), q.y(), q.z());
   }
-  Vec3 n(0.0);
-  for (std::size_t i = 0; i < p.size(); ++i) n += glm::cross(p[i], p[(i + 1) % p.size()]);
-  const double len = glm::length(n);
-  if (!(len > 0.0)) return true;
-  n /= len;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = i + 1; j < p.size(); ++j) {
-      const Vec3 d = p[j] - p[i];
-      if (glm::length(glm::cross(d, n)) <= 1e-9 * glm::length(d)) return true;
+  const std::size_t n = p.size();
+  Vec3 normal(0.0);
+  for (std::size_t i = 0; i < n; ++i) normal += glm::cross(p[i], p[(i + 1) % n]);
+  if (!(glm::length(normal) > 0.0)) return false;
+  normal = glm::normalize(normal);
+  const Vec3 u = glm::normalize(std::abs(normal.x) < 0.9 ? glm::cross(normal, Vec3(1, 0, 0))
+                                                         : glm::cross(normal, Vec3(0, 1, 0)));
+  const Vec3 w = glm::cross(normal, u);
+  std::vector<Vec2> q(n);
+  double size = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    q[i] = Vec2(glm::dot(p[i], u), glm::dot(p[i], w));
+    size = std::max(size, std::max(std::abs(q[i].x), std::abs(q[i].y)));
+  }
+  const double tol = 1e-9 * size * size;
+  auto orient = [&](const Vec2& a, const Vec2& b, const Vec2& c) {
+    const double d = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    return d > tol ? 1 : d < -tol ? -1 : 0;
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (glm::length(q[i] - q[j]) <= 1e-9 * size) return false;  // two corners on one point
+      if (j == i + 1 || (i == 0 && j == n - 1)) continue;          // neighbouring edges
+      const Vec2 &a = q[i], &b = q[(i + 1) % n], &c = q[j], &d = q[(j + 1) % n];
+      const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a),
+                o4 = orient(c, d, b);
+      if (o1 * o2 <= 0 && o3 * o4 <= 0) return false;  // edges i and j cross or touch
     }
-  return false;
+  return true;
 }
 
-// Splits every polygon into triangles: CGAL's constrained Delaunay triangulation, or its
-// hole filling for polygons on which the former would crash (see above). A polygon that
-// cannot be split stays as it is and is dropped later.
+// Splits every polygon into triangles: CGAL's constrained Delaunay triangulation for
+// polygons that are simple in projection, its hole filling (cubic in the corners, so only
+// up to kMaxHoleFilling corners) for the others. A polygon that is not split stays as it
+// is and is dropped later.
 void triangulatePolygons(SurfaceMesh& mesh) {
-  std::vector<SurfaceMesh::Face_index> risky;
-  for (SurfaceMesh::Face_index f : mesh.faces())
-    if (mesh.degree(f) > 3 && cornersOverlapInProjection(mesh, f)) risky.push_back(f);
-  for (SurfaceMesh::Face_index f : risky)
-    PMP::triangulate_face(f, mesh, CGAL::parameters::use_delaunay_triangulation(false));
-  PMP::triangulate_faces(mesh);
+  constexpr std::size_t kMaxHoleFilling = 200;
+  std::vector<SurfaceMesh::Face_index> simple, other;
+  for (SurfaceMesh::Face_index f : mesh.faces()) {
+    if (mesh.degree(f) <= 3) continue;
+    (projectionIsSimple(mesh, f) ? simple : other).push_back(f);
+  }
+  for (SurfaceMesh::Face_index f : other)
+    if (mesh.degree(f) <= kMaxHoleFilling)
+      PMP::triangulate_face(f, mesh, CGAL::parameters::use_delaunay_triangulation(false));
+  PMP::triangulate_faces(simple, mesh);
 }
 
 // repair → orient → halfedge mesh. The soup is consumed.
