@@ -51,8 +51,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 # Sampling levels. Lucent: fixed samples per pixel, then adaptive "samples:threshold"
-# (a pixel gets all samples where its centre differs from a neighbour by more than the
-# threshold, largest linear channel). POV-Ray: -A, then method 1 (+AM1: centre, then an
+# (a pixel whose centre differs from a neighbour's by more than the threshold, largest
+# linear channel, is refined in stages of 4, 8, 16, ... samples until they agree within
+# the threshold or all are taken). POV-Ray: -A, then method 1 (+AM1: centre, then an
 # R x R grid where the centre differs from the left or upper neighbour by the threshold)
 # and method 2 (+AM2: recursive corner subdivision to depth R), with jitter at its default
 # (on), as POV-Ray users render. Threshold 0 supersamples every pixel.
@@ -61,7 +62,7 @@ if [ $quick -eq 1 ]; then
   povLevels=("-A" "+AM1 +A0.3 +R2"); refSamples=16; povRef="+AM1 +A0.0 +R4"
 else
   lucentSamples=(1 2 4 8 16 32 64)
-  lucentAdaptive=(16:0.1 16:0.03 64:0.02)
+  lucentAdaptive=(16:0.3 16:0.1 16:0.03 64:0.03 64:0.01)
   povLevels=("-A"
     "+AM1 +A0.3 +R3" "+AM1 +A0.1 +R3" "+AM1 +A0.0 +R2" "+AM1 +A0.0 +R3" "+AM1 +A0.0 +R4"
     "+AM2 +A0.3 +R3" "+AM2 +A0.1 +R3" "+AM2 +A0.1 +R4" "+AM2 +A0.03 +R4")

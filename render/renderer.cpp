@@ -44,13 +44,33 @@ Color Renderer::renderPixel(int x, int y, RayStats& stats) const {
   return sum / static_cast<float>(count);
 }
 
+Color Renderer::refinePixel(int x, int y, const Color& centre, float threshold,
+                            RayStats& stats, int* taken) const {
+  const int count = std::max(1, settings_.samples);
+  Color sum(0.0f);
+  // The spread of everything seen in the pixel so far, the centre included.
+  Color lowest = centre, highest = centre;
+  int k = 0;
+  for (int stage = std::min(kFirstStage, count);; stage = std::min(2 * stage, count)) {
+    for (; k < stage; ++k) {
+      const Color c = renderSample(x, y, k, count, stats);
+      sum += c;  // summed in k order, so a pixel that takes all samples equals renderPixel's
+      lowest = glm::min(lowest, c);
+      highest = glm::max(highest, c);
+    }
+    if (k == count || maxComponent(highest - lowest) <= threshold) break;
+  }
+  if (taken) *taken = k;
+  return sum / static_cast<float>(k);
+}
+
 RenderResult Renderer::render(const RenderControl& control) const {
   const auto start = std::chrono::steady_clock::now();
   const int width = settings_.width, height = settings_.height;
   const int samples = std::max(1, settings_.samples);
-  // Adaptive: every pixel's centre first; then the pixels that differ from a neighbour
-  // by more than the threshold get all `samples` samples (the centre is not counted
-  // again, so such a pixel equals the non-adaptive render's).
+  // Adaptive: every pixel's centre first; then each pixel whose centre differs from one of
+  // its eight neighbours' by more than the threshold is refined (refinePixel): its samples
+  // come in doubling stages and stop once they all agree within the threshold.
   const bool adaptive = settings_.adaptive > 0.0 && samples > 1;
   const uint64_t pixels = static_cast<uint64_t>(width) * height;
 
@@ -100,11 +120,15 @@ RenderResult Renderer::render(const RenderControl& control) const {
     const float threshold = static_cast<float>(settings_.adaptive);
     forEachPixel([&](int x, int y, RayStats& stats) {
       const Color c = centres.at(x, y);
-      bool differs = (x > 0 && colorDifference(c, centres.at(x - 1, y)) > threshold) ||
-                     (x + 1 < width && colorDifference(c, centres.at(x + 1, y)) > threshold) ||
-                     (y > 0 && colorDifference(c, centres.at(x, y - 1)) > threshold) ||
-                     (y + 1 < height && colorDifference(c, centres.at(x, y + 1)) > threshold);
-      if (differs) image.at(x, y) = renderPixel(x, y, stats);
+      // The eight neighbours: a diagonal edge shows first between diagonal neighbours.
+      bool differs = false;
+      for (int dy = -1; dy <= 1 && !differs; ++dy)
+        for (int dx = -1; dx <= 1 && !differs; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if ((dx || dy) && nx >= 0 && nx < width && ny >= 0 && ny < height)
+            differs = colorDifference(c, centres.at(nx, ny)) > threshold;
+        }
+      if (differs) image.at(x, y) = refinePixel(x, y, c, threshold, stats);
     });
   };
 

@@ -48,6 +48,16 @@ class Renderer {
 
   // Pixel (x, y): the average of its `samples` camera samples.
   Color renderPixel(int x, int y, RayStats& stats) const;
+  // Adaptive refinement of pixel (x, y) whose centre sample is `centre`: its samples are
+  // traced in stages of 4, 8, 16, ... up to `samples` (the same sub-pixel positions as
+  // renderPixel's, in the same order), stopping after a stage once every sample so far,
+  // the centre included, lies within `threshold` of every other in each channel (POV-Ray's
+  // adaptive anti-aliasing likewise subdivides only where its samples disagree). Returns
+  // their mean, which is renderPixel's value when all samples are taken; `taken` receives
+  // how many were.
+  static constexpr int kFirstStage = 4;
+  Color refinePixel(int x, int y, const Color& centre, float threshold, RayStats& stats,
+                    int* taken = nullptr) const;
   // One camera sample k of `count` in pixel (x, y).
   Color renderSample(int x, int y, int k, int count, RayStats& stats) const;
 
