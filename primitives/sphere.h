@@ -25,6 +25,9 @@ class Sphere final : public Shape {
   bool inside(const Vec3& p) const override;
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
 
+  const Vec3& center() const { return center_; }
+  double radius() const { return radius_; }
+
  private:
   // Where the whole line is inside (both roots); false when it misses.
   bool span(const Ray& ray, Span& out) const;
