@@ -1,5 +1,7 @@
 #include "instance.h"
 
+#include <stdexcept>
+
 namespace lucent {
 
 namespace {
@@ -31,7 +33,7 @@ Vec3 worldToObjectRoundTripError(const Transform& t, const Vec3& pWorld) {
 Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& worldFromObject,
                    uint32_t tag)
     : shape_(std::move(shape)), tag_(tag), testKind_(testKindOf(shape_->kind())) {
-  if (!worldFromObject.isIdentity()) transform_ = std::make_unique<Transform>(worldFromObject);
+  if (!worldFromObject.isIdentity()) placed_ = std::make_unique<Placement>(Placement{worldFromObject});
   bounds_ = transformBounds(worldFromObject.worldFromObject(), shape_->bounds());
 }
 
@@ -41,7 +43,13 @@ const Transform Instance::kIdentity;
 // center) hands the ray over as it is: multiplying by the identity matrix would give the
 // same numbers (except that it turns -0 into +0) for two matrix products per test.
 Ray Instance::toObject(const Ray& ray) const {
-  return transform_ ? transform_->rayToObject(ray) : ray;
+  return placed_ ? placed_->transform.rayToObject(ray) : ray;
+}
+
+void Instance::widenSurfaceError(double distance) {
+  if (!placed_ || !(distance >= 0.0))
+    throw std::logic_error("Instance::widenSurfaceError: needs a transform and a distance >= 0");
+  placed_->surfaceError += distance;
 }
 
 bool Instance::intersect(const Ray& ray, Hit& hit) const {
@@ -64,7 +72,7 @@ void Instance::crossings(const Ray& ray, CrossingList& out) const {
 }
 
 bool Instance::inside(const Vec3& p) const {
-  return shape_->inside(transform_ ? transform_->pointToObject(p) : p);
+  return shape_->inside(placed_ ? placed_->transform.pointToObject(p) : p);
 }
 
 SurfaceInfo Instance::surface(const Ray& ray, const Hit& hit) const {
@@ -77,7 +85,7 @@ SurfaceInfo Instance::surface(const Ray& ray, const Hit& hit) const {
   SurfaceInfo w = s;
   w.p = t.pointToWorld(s.p);
   w.pError = t.errorToWorld(s.p, s.pError);
-  if (!t.isIdentity()) w.pError += worldToObjectRoundTripError(t, w.p);
+  if (placed_) w.pError += worldToObjectRoundTripError(t, w.p) + Vec3(placed_->surfaceError);
   w.ng = t.normalToWorld(s.ng);
   w.ns = t.normalToWorld(s.ns);
   w.pObject = s.p;  // solid textures are evaluated in the leaf's object space

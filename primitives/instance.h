@@ -30,13 +30,28 @@ class Instance final : public Shape {
 
   const Shape& shape() const { return *shape_; }
   const std::shared_ptr<const Shape>& sharedShape() const { return shape_; }
-  const Transform& transform() const { return transform_ ? *transform_ : kIdentity; }
+  const Transform& transform() const { return placed_ ? placed_->transform : kIdentity; }
   uint32_t tag() const { return tag_; }
+
+  // A world may answer ray tests for this leaf with its own copy of it carried into world
+  // space (World does so for spheres under a similarity transform, which stay spheres),
+  // instead of carrying each ray into object space. The copy differs from the exact image
+  // of the leaf by rounding; `distance` (world units) bounds that difference, and
+  // surface() adds it to every component of pError, so that the origins of secondary rays
+  // clear the copy as well as the leaf. Only for a transform other than the identity (a
+  // copy under the identity is the leaf itself); 0 by default.
+  void widenSurfaceError(double distance);
 
  private:
   Ray toObject(const Ray& ray) const;
 
   static const Transform kIdentity;
+
+  // A transform other than the identity, with what widenSurfaceError() added.
+  struct Placement {
+    Transform transform;
+    double surfaceError = 0.0;
+  };
 
   // The members a ray test reads come first, in the object's first cache line. The
   // transform is held apart and only when it is not the identity (most instances: spheres
@@ -46,7 +61,7 @@ class Instance final : public Shape {
   uint32_t tag_;
   TestKind testKind_;  // what --stats counts a test of this instance as
   AABB bounds_;
-  std::unique_ptr<const Transform> transform_;  // null: the identity
+  std::unique_ptr<Placement> placed_;  // null: the identity
 };
 
 }  // namespace lucent
