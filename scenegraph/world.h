@@ -23,7 +23,10 @@ class World {
   // computed once per instance), resolves inherited materials and shares the shape of a
   // node used many times: a mesh used through many <use> is stored and built once.
   // The top-level objects with a finite box go into a BVH; the others (planes), or a
-  // lone object, are tested one by one. The scene must outlive the world.
+  // lone object, are tested one by one. A top-level sphere whose transform is a
+  // similarity is kept in the BVH's leaves as a sphere in world space (sphere_image.h),
+  // tested without a virtual call or a pointer to follow; its hits still name its
+  // Instance. The scene must outlive the world.
   explicit World(const Scene& scene);
   World(const Scene& scene, const ShapeMaker& makeShape);
 
@@ -39,6 +42,8 @@ class World {
   const Bvh& bvh() const { return bvh_; }
   // The objects tested one by one beside the BVH: unbounded ones, or a lone object.
   const std::vector<const Shape*>& directObjects() const { return direct_; }
+  // How many of the BVH's objects are spheres kept in world space.
+  size_t inlineSphereCount() const { return inlineSpheres_; }
 
   // The material of a hit's leaf (hit.shape is always an Instance).
   const Material& material(const Hit& hit) const {
@@ -49,8 +54,16 @@ class World {
   const Scene& scene_;
   std::vector<std::unique_ptr<Shape>> objects_;  // top level: instances and CSG nodes
   std::vector<const Instance*> instances_;
-  std::vector<const Shape*> bounded_;    // in the BVH's leaf order
-  std::vector<const Shape*> direct_;     // never in the BVH
+  // One entry per slot of the BVH's leaves, in leaf order, 32 bytes (two to a cache
+  // line): a sphere in world space (centre and squared radius, r2 >= 0), or r2 < 0 for
+  // any other object, which is tested through leafObjects_.
+  struct alignas(32) Leaf {
+    double cx, cy, cz, r2;
+  };
+  std::vector<Leaf, CacheLineAllocator<Leaf>> leaves_;
+  std::vector<const Shape*> leafObjects_;  // the same slots: the sphere's Instance, or the object
+  std::vector<const Shape*> direct_;       // never in the BVH
+  size_t inlineSpheres_ = 0;
   Bvh bvh_;
 };
 
