@@ -38,6 +38,21 @@ class World {
   bool intersect(const Ray& ray, Hit& hit) const;
   bool occluded(const Ray& ray) const;
 
+  // A top-level object as occluder() names it: an index into directObjects(), then into
+  // the BVH's leaf slots. kNoObject names none.
+  using ObjectId = uint32_t;
+  static constexpr ObjectId kNoObject = 0xffffffffu;
+  // occluded(), also naming an object that blocks the ray (kNoObject if none does).
+  // `first`, kNoObject or an id an earlier call on this world returned, is tested
+  // before all others, by the same test the full search makes: a shadow cache passes
+  // the object that blocked the previous ray towards the same light (as POV-Ray does).
+  // Then the BVH, then the unbounded objects. The order of an any-hit search changes
+  // how soon the answer is found, never what it is: occluder(ray, first) != kNoObject
+  // equals occluded(ray) for every `first`.
+  ObjectId occluder(const Ray& ray, ObjectId first = kNoObject) const;
+  // The object an id names (an Instance or a CSG node), nullptr for kNoObject.
+  const Shape* object(ObjectId id) const;
+
   // The top-level acceleration structure, for statistics.
   const Bvh& bvh() const { return bvh_; }
   // The objects tested one by one beside the BVH: unbounded ones, or a lone object.
@@ -65,6 +80,9 @@ class World {
   std::vector<const Shape*> direct_;       // never in the BVH
   size_t inlineSpheres_ = 0;
   Bvh bvh_;
+
+  // Any hit of the object in BVH leaf slot `slot`: the one test every search makes of it.
+  bool slotOccluded(uint32_t slot, const Ray& ray) const;
 };
 
 }  // namespace lucent
