@@ -112,6 +112,9 @@ void printStats(const RenderResult& r, int threads) {
   fmt::print("rays:      {:>14}  (primary {}, shadow {}, reflected {}, refracted {})\n", s.rays(),
              s.primary, s.shadow, s.reflected, s.refracted);
   fmt::print("searches:  {:>14}  (closest-hit and any-hit queries of the world)\n", s.queries);
+  fmt::print("cache hits:{:>14}  (shadow rays blocked by the object that blocked the light's "
+             "previous one, tested first)\n",
+             s.shadowCacheHits);
   // Intersection tests by kind, the kinds the scene has only.
   uint64_t tests = 0;
   std::string byKind;

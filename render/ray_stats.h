@@ -2,6 +2,8 @@
 // the copies are summed, so counting never makes threads wait for each other.
 #pragma once
 
+#include "shadow_cache.h"
+
 #include "primitives/test_counts.h"
 
 #include <cstdint>
@@ -15,7 +17,12 @@ struct RayStats {
   uint64_t reflected = 0;  // mirror rays, including total internal reflection
   uint64_t refracted = 0;  // transmitted rays, bent or straight through
   uint64_t queries = 0;    // searches of the world (closest hit or any hit)
+  uint64_t shadowCacheHits = 0;  // shadow rays blocked by their light's cached last blocker
   TestCounts tests;        // intersection tests by kind of shape
+
+  // Not a count: the tile's shadow cache rides with its counts, the one object every
+  // trace call of a tile already carries. operator+= leaves it alone.
+  ShadowCache shadowCache;
 
   uint64_t rays() const { return primary + shadow + reflected + refracted; }
 
@@ -25,6 +32,7 @@ struct RayStats {
     reflected += o.reflected;
     refracted += o.refracted;
     queries += o.queries;
+    shadowCacheHits += o.shadowCacheHits;
     tests += o.tests;
     return *this;
   }

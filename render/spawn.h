@@ -32,4 +32,26 @@ inline Ray spawnRayTo(const SurfaceInfo& s, const Vec3& target, const std::optio
   return Ray(o, target - o, 0.0, kShadowRayEnd);
 }
 
+// spawnRayTo's rays from one surface point to many targets (the samples of an area
+// light), the origin chosen from two computed once: spawnOrigin depends on the direction
+// only through the side of the surface it points to (the sign of dir·ng). The same rays
+// to the last bit, without an offset computed per ray.
+class ShadowRays {
+ public:
+  ShadowRays(const SurfaceInfo& s, const std::optional<double>& eps)
+      : p_(s.p), ng_(s.ng), front_(spawnOrigin(s, s.ng, eps)), back_(spawnOrigin(s, -s.ng, eps)) {}
+
+  // Two returns rather than a selected origin: a branch (the side rarely changes between
+  // the samples of one light) lets the ray's origin be read at once, where a conditional
+  // move would make it wait for the dot product.
+  Ray to(const Vec3& target) const {
+    if (glm::dot(target - p_, ng_) < 0.0) return Ray(back_, target - back_, 0.0, kShadowRayEnd);
+    return Ray(front_, target - front_, 0.0, kShadowRayEnd);
+  }
+
+ private:
+  Vec3 p_, ng_;
+  Vec3 front_, back_;  // the origins for targets on the side ng points to, and the other
+};
+
 }  // namespace lucent

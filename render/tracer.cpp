@@ -26,10 +26,18 @@ Tracer::Tracer(const World& world)
     : world_(world),
       scene_(world.scene()),
       settings_(world.scene().render),
+      lights_(world.scene().lights),
       textures_(world.scene().materials) {
   for (const Material& m : scene_.materials) {
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
     anyAbsorbing_ = anyAbsorbing_ || (m.isAbsorbing() && m.isTransmissive());
+  }
+  for (const Light& light : lights_) {
+    std::vector<Vec3> targets;
+    if (light.type != LightType::Area || !light.jitter)
+      for (int k = 0, n = shadowSampleCount(light); k < n; ++k)
+        targets.push_back(lightSamplePoint(light, k, Vec2(0.5)));
+    fixedTargets_.push_back(std::move(targets));
   }
 }
 
@@ -108,7 +116,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
                     settings_.ambient;
     if (leaving) ambient *= m.transmissive;
     local += ambient;
-    if (!scene_.lights.empty() && (anyPositive(kd) || anyPositive(m.specular))) {
+    if (!lights_.empty() && (anyPositive(kd) || anyPositive(m.specular))) {
       local += directLight(s, n, v, kd, m, media, seed, stats);
       ++seed.event;
     }
@@ -182,8 +190,8 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
                           RayStats& stats) const {
   Color sum(0.0f);
   const bool specular = anyPositive(m.specular);
-  for (size_t i = 0; i < scene_.lights.size(); ++i) {
-    const Light& light = scene_.lights[i];
+  for (size_t i = 0; i < lights_.size(); ++i) {
+    const Light& light = lights_[i];
     const LightIncidence in = lightIncidence(light, s.p);
     if (!anyPositive(in.radiance)) continue;
     const double nDotL = glm::dot(n, in.toLight);
@@ -208,23 +216,47 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
 Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightIncidence& in,
                            const SurfaceInfo& s, const MediaStack& media, const PathSeed& seed,
                            RayStats& stats) const {
+  // An opaque scene asks first the object that blocked this light's last shadow ray.
+  World::ObjectId* lastBlocker =
+      anyTransmissive_ ? nullptr
+                       : &stats.shadowCache.slot(cacheOwner_, lightIndex, lights_.size());
+  auto shadowRay = [&](const Ray& ray) {
+    return lastBlocker ? visibility(ray, *lastBlocker, stats) : transmittance(ray, media, stats);
+  };
   if (light.type == LightType::Directional)
-    return transmittance(spawnRay(s, in.toLight, settings_.epsilon), media, stats);
+    return shadowRay(spawnRay(s, in.toLight, settings_.epsilon));
+  const ShadowRays rays(s, settings_.epsilon);
+  const std::vector<Vec3>& fixed = fixedTargets_[lightIndex];
   const int count = shadowSampleCount(light);
   Color sum(0.0f);
   for (int k = 0; k < count; ++k) {
-    Vec2 jitter(0.5);
-    if (light.jitter) {
+    Vec3 target;
+    if (!fixed.empty()) {
+      target = fixed[k];
+    } else {
       // Deterministic: a hash of the pixel, sample, shading event, light and grid point.
       uint64_t path = (uint64_t(seed.sample) << 32) | seed.event;
       uint64_t which = (uint64_t(lightIndex) << 32) | uint32_t(k);
-      jitter = Vec2(hashToUnit(seed.x, seed.y, path, 2 * which),
-                    hashToUnit(seed.x, seed.y, path, 2 * which + 1));
+      Vec2 jitter(hashToUnit(seed.x, seed.y, path, 2 * which),
+                  hashToUnit(seed.x, seed.y, path, 2 * which + 1));
+      target = lightSamplePoint(light, k, jitter);
     }
-    Vec3 target = lightSamplePoint(light, k, jitter);
-    sum += transmittance(spawnRayTo(s, target, settings_.epsilon), media, stats);
+    sum += shadowRay(rays.to(target));
   }
   return sum / static_cast<float>(count);
+}
+
+Color Tracer::visibility(const Ray& ray, World::ObjectId& lastBlocker, RayStats& stats) const {
+  ++stats.shadow;
+  ++stats.queries;
+  const World::ObjectId blocker = world_.occluder(ray, lastBlocker);
+  // Unblocked: the slot keeps its object, the next ray may need it.
+  if (blocker == World::kNoObject) return Color(1.0f);
+  if (blocker == lastBlocker)
+    ++stats.shadowCacheHits;
+  else
+    lastBlocker = blocker;
+  return Color(0.0f);
 }
 
 Color Tracer::transmittance(Ray ray, MediaStack media, RayStats& stats) const {

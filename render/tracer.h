@@ -7,6 +7,7 @@
 #include "light_sample.h"
 #include "media_stack.h"
 #include "ray_stats.h"
+#include "shadow_cache.h"
 #include "texture.h"
 
 #include "primitives/hit.h"
@@ -14,6 +15,7 @@
 #include "scenegraph/world.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace lucent {
 
@@ -42,6 +44,7 @@ class Tracer {
   // Fraction of light that passes along the shadow ray (t in (ray.tmin, ray.tmax)),
   // which starts in `media`: 0 at the first opaque surface, times k_t at every
   // transparent one, times exp(−absorption·d) for each stretch inside an absorbing solid.
+  // It uses no shadow cache.
   Color transmittance(Ray ray, MediaStack media, RayStats& stats) const;
 
  private:
@@ -55,14 +58,32 @@ class Tracer {
   Color shadowFactor(const Light& light, uint32_t lightIndex, const LightIncidence& in,
                      const SurfaceInfo& s, const MediaStack& media, const PathSeed& seed,
                      RayStats& stats) const;
+  // transmittance() of a scene without transmissive materials, 1 or 0: one any-hit
+  // query that tests `lastBlocker` (this light's slot in the tile's shadow cache) first
+  // and stores the new blocker there.
+  //
+  // With any transmissive material in the scene, shadow rays walk their surfaces in
+  // order (transmittance()) and the cache is not used. A cached opaque blocker would
+  // answer 0 for every ray it blocks, as the walk does, except where an opaque and a
+  // transparent surface are crossed at the very same t: the walk resumes beyond that t
+  // and may skip the opaque one. That would not be an order change only, so it is not done.
+  Color visibility(const Ray& ray, World::ObjectId& lastBlocker, RayStats& stats) const;
   const Material* materialOf(const Shape& object) const;
 
   const World& world_;
   const Scene& scene_;
   const RenderSettings settings_;  // a copy: the scene may change after the renderer is built
+  const std::vector<Light> lights_;  // a copy, as the settings
+  // Each light's shadow-ray targets when they are fixed (lightSamplePoint without
+  // jitter), computed once: the loop over an area light's 64 samples then only reads
+  // them. Empty for a jittered area light, whose targets differ per point.
+  std::vector<std::vector<Vec3>> fixedTargets_;
   TextureSet textures_;
   bool anyTransmissive_ = false;  // else shadow rays ask the cheaper any-hit question
   bool anyAbsorbing_ = false;     // else shadow rays need no media bookkeeping
+  // What this tracer's entries in a ShadowCache carry (unique in the process). Copies
+  // share it, as they share the world whose objects the cached ids name.
+  uint64_t cacheOwner_ = newShadowCacheOwner();
 };
 
 }  // namespace lucent

@@ -1,0 +1,148 @@
+// The shadow cache (render/shadow_cache.h) and the shadow rays of one point computed
+// together (ShadowRays): faster answers, never different ones.
+#include "scene_builder.h"
+
+#include "render/renderer.h"
+#include "render/spawn.h"
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace lucent;
+using namespace lucent::test;
+
+namespace {
+
+Material diffuse(float kd) {
+  Material m;
+  m.diffuse = Color(kd);
+  return m;
+}
+
+// A floor and floating blockers lit by an area light, a point light and a directional
+// light: shadows of every kind of light, soft and hard, all opaque. With
+// `unusedGlass` the scene also holds a transmissive material that no object uses: the
+// tracer then takes the shadow path for transparent scenes (a closest-hit walk along
+// each shadow ray, no cache), and the image must not change.
+void blockersScene(Scene& scene, bool unusedGlass) {
+  scene.render.width = 64;
+  scene.render.height = 48;
+  scene.cameras.push_back(lookingFrom(Vec3(0, 6, 9), Vec3(0, 0.5, 0), 50.0));
+  const uint32_t floor = addMaterial(scene, diffuse(0.8f));
+  const uint32_t blocker = addMaterial(scene, diffuse(0.6f));
+  addShape(scene, PlaneSpec{Vec3(0, 1, 0), 0.0}, floor);
+  addShape(scene, SphereSpec{Vec3(-1.5, 1.2, 0), 0.7}, blocker);
+  addShape(scene, BoxSpec{Vec3(0.5, 0.0, -1.0), Vec3(1.7, 1.4, 0.2)}, blocker);
+  addShape(scene, CylinderSpec{Vec3(2.5, 0, 1.5), Vec3(2.5, 0.8, 1.5), 0.4, false}, blocker);
+  addShape(scene, SphereSpec{Vec3(0.3, 2.6, 1.0), 0.4}, blocker);
+  Light area;
+  area.type = LightType::Area;
+  area.position = Vec3(-1, 6, 1);
+  area.u = Vec3(2, 0, 0);
+  area.v = Vec3(0, 0, 2);
+  area.samplesU = 5;
+  area.samplesV = 4;
+  area.color = Color(0.7f);
+  scene.lights.push_back(area);
+  scene.lights.push_back(pointLight(Vec3(4, 5, 3), Color(0.3f)));
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(Vec3(-1, -2, -0.5));
+  sun.color = Color(0.2f);
+  scene.lights.push_back(sun);
+  if (unusedGlass) {
+    Material glass;
+    glass.transmissive = Color(0.9f);
+    glass.ior = 1.5;
+    addMaterial(scene, glass);
+  }
+}
+
+RenderResult renderBlockers(bool unusedGlass, int threads = 0) {
+  Scene scene;
+  blockersScene(scene, unusedGlass);
+  World world(scene);
+  RenderControl control;
+  control.threads = threads;
+  return Renderer(world, scene.cameras[0]).render(control);
+}
+
+}  // namespace
+
+TEST_CASE("the shadow cache changes no pixel of an opaque scene", "[render][shadow][cache]") {
+  const RenderResult cached = renderBlockers(false);
+  const RenderResult walked = renderBlockers(true);
+  REQUIRE(cached.stats.shadow == walked.stats.shadow);
+  CHECK(walked.stats.shadowCacheHits == 0);  // the transparent-scene path has no cache
+  // Many blocked rays are answered by the cached blocker: far fewer than the shadow rays.
+  CHECK(cached.stats.shadowCacheHits > cached.stats.shadow / 20);
+  CHECK(cached.stats.shadowCacheHits < cached.stats.shadow);
+  int shadowed = 0;
+  for (int y = 0; y < cached.image.height; ++y)
+    for (int x = 0; x < cached.image.width; ++x) {
+      REQUIRE(cached.image.at(x, y) == walked.image.at(x, y));
+      if (cached.image.at(x, y).r < 0.05f) ++shadowed;
+    }
+  CHECK(shadowed > 0);
+}
+
+TEST_CASE("the shadow cache starts empty in every tile: counts alike on 1 and 2 threads",
+          "[render][shadow][cache]") {
+  const RenderResult one = renderBlockers(false, 1), two = renderBlockers(false, 2);
+  CHECK(one.stats.shadowCacheHits == two.stats.shadowCacheHits);
+  CHECK(one.stats.tests.n == two.stats.tests.n);
+}
+
+TEST_CASE("every blocked shadow ray but the first hits the cache when one object blocks",
+          "[render][shadow][cache]") {
+  // One 16x16 tile seen from straight above: the floor, and a disc floating over it whose
+  // shadow from a point light falls partly in view. Nothing is ambient or emissive, so a
+  // pixel is black exactly where its one shadow ray is blocked, always by the disc.
+  Scene scene;
+  scene.render.width = 16;
+  scene.render.height = 16;
+  Camera camera = lookingFrom(Vec3(0, 20, 0), Vec3(0.0), 30.0);
+  camera.up = Vec3(0, 0, -1);
+  scene.cameras.push_back(camera);
+  addShape(scene, PlaneSpec{Vec3(0, 1, 0), 0.0}, addMaterial(scene, diffuse(1.0f)));
+  addShape(scene, DiscSpec{Vec3(0, 3, 0), Vec3(0, 1, 0), 1.5, 0.0}, addMaterial(scene, diffuse(1.0f)));
+  scene.lights.push_back(pointLight(Vec3(3, 10, 0)));
+  World world(scene);
+  const RenderResult r = Renderer(world, scene.cameras[0]).render();
+  REQUIRE(r.stats.primary == 256);
+  REQUIRE(r.stats.shadow == 256);  // every point seen faces the light
+  uint64_t blocked = 0;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x)
+      if (r.image.at(x, y) == Color(0.0f)) ++blocked;
+  REQUIRE(blocked > 10);
+  REQUIRE(blocked < 200);
+  CHECK(r.stats.shadowCacheHits == blocked - 1);
+  // The floor plane is tested by every primary ray and by every shadow ray the cached
+  // disc does not answer; the disc (a lone bounded object, tested directly) by all.
+  CHECK(r.stats.tests[TestKind::Plane] == 256 + (256 - r.stats.shadowCacheHits));
+  CHECK(r.stats.tests[TestKind::Disc] == 256 + 256);
+}
+
+TEST_CASE("ShadowRays gives spawnRayTo's rays to the last bit", "[render][shadow][spawn]") {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-10.0, 10.0), e(0.0, 1e-6);
+  for (int i = 0; i < 20000; ++i) {
+    SurfaceInfo s;
+    s.p = Vec3(u(rng), u(rng), u(rng));
+    s.pError = Vec3(e(rng), e(rng), e(rng)) * (i % 3 == 0 ? 0.0 : 1.0);
+    s.ng = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+    const std::optional<double> eps = i % 4 == 0 ? std::optional<double>(1e-4) : std::nullopt;
+    const ShadowRays rays(s, eps);
+    for (int k = 0; k < 4; ++k) {
+      // Targets on both sides of the surface, and one exactly in its tangent plane.
+      Vec3 target = k == 3 ? s.p : s.p + Vec3(u(rng), u(rng), u(rng));
+      const Ray want = spawnRayTo(s, target, eps), got = rays.to(target);
+      REQUIRE(got.o == want.o);
+      REQUIRE(got.d == want.d);
+      REQUIRE(got.tmin == want.tmin);
+      REQUIRE(got.tmax == want.tmax);
+    }
+  }
+}
