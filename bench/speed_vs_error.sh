@@ -52,7 +52,7 @@ trap 'rm -rf "$work"' EXIT
 
 # Sampling levels. Lucent: fixed samples per pixel, then adaptive "samples:threshold"
 # (a pixel whose centre differs from a neighbour's by more than the threshold, largest
-# linear channel, is refined in stages of 4, 8, 16, ... samples until they agree within
+# linear channel, is refined in stages of 6, 12, 24, ... samples until they agree within
 # the threshold or all are taken). POV-Ray: -A, then method 1 (+AM1: centre, then an
 # R x R grid where the centre differs from the left or upper neighbour by the threshold)
 # and method 2 (+AM2: recursive corner subdivision to depth R), with jitter at its default

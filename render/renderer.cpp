@@ -8,6 +8,7 @@
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <vector>
 
 namespace lucent {
 
@@ -44,24 +45,14 @@ Color Renderer::renderPixel(int x, int y, RayStats& stats) const {
   return sum / static_cast<float>(count);
 }
 
-Color Renderer::refinePixel(int x, int y, const Color& centre, float threshold,
-                            RayStats& stats, int* taken) const {
+void Renderer::addSamples(int x, int y, int upTo, PixelRefinement& r, RayStats& stats) const {
   const int count = std::max(1, settings_.samples);
-  Color sum(0.0f);
-  // The spread of everything seen in the pixel so far, the centre included.
-  Color lowest = centre, highest = centre;
-  int k = 0;
-  for (int stage = std::min(kFirstStage, count);; stage = std::min(2 * stage, count)) {
-    for (; k < stage; ++k) {
-      const Color c = renderSample(x, y, k, count, stats);
-      sum += c;  // summed in k order, so a pixel that takes all samples equals renderPixel's
-      lowest = glm::min(lowest, c);
-      highest = glm::max(highest, c);
-    }
-    if (k == count || maxComponent(highest - lowest) <= threshold) break;
+  for (; r.taken < upTo; ++r.taken) {
+    const Color c = renderSample(x, y, r.taken, count, stats);
+    r.sum += c;  // summed in k order, so a pixel that takes all samples equals renderPixel's
+    r.lowest = glm::min(r.lowest, c);
+    r.highest = glm::max(r.highest, c);
   }
-  if (taken) *taken = k;
-  return sum / static_cast<float>(k);
 }
 
 RenderResult Renderer::render(const RenderControl& control) const {
@@ -69,8 +60,8 @@ RenderResult Renderer::render(const RenderControl& control) const {
   const int width = settings_.width, height = settings_.height;
   const int samples = std::max(1, settings_.samples);
   // Adaptive: every pixel's centre first; then each pixel whose centre differs from one of
-  // its eight neighbours' by more than the threshold is refined (refinePixel): its samples
-  // come in doubling stages and stop once they all agree within the threshold.
+  // its eight neighbours' by more than the threshold is refined, in stages (see
+  // PixelRefinement and the stopping rule below).
   const bool adaptive = settings_.adaptive > 0.0 && samples > 1;
   const uint64_t pixels = static_cast<uint64_t>(width) * height;
 
@@ -83,7 +74,7 @@ RenderResult Renderer::render(const RenderControl& control) const {
 
   tbb::enumerable_thread_specific<RayStats> perThread;
   // Runs body(x, y, stats) over the image in tiles, counting progress per tile.
-  auto forEachPixel = [&](auto&& body) {
+  auto forEachPixel = [&](auto&& body, bool countsAsWork = true) {
     tbb::parallel_for(
         tbb::blocked_range2d<int>(0, height, kTile, 0, width, kTile),
         [&](const tbb::blocked_range2d<int>& tile) {
@@ -98,7 +89,7 @@ RenderResult Renderer::render(const RenderControl& control) const {
             done += tile.cols().size();
           }
           stats.tests = threadTestCounts - testsBefore;
-          progress.workDone.fetch_add(done, std::memory_order_relaxed);
+          if (countsAsWork) progress.workDone.fetch_add(done, std::memory_order_relaxed);
           progress.rays.fetch_add(stats.rays(), std::memory_order_relaxed);
           perThread.local() += stats;
         },
@@ -118,18 +109,63 @@ RenderResult Renderer::render(const RenderControl& control) const {
     image = centres;
     if (cancelled()) return;
     const float threshold = static_cast<float>(settings_.adaptive);
-    forEachPixel([&](int x, int y, RayStats& stats) {
-      const Color c = centres.at(x, y);
-      // The eight neighbours: a diagonal edge shows first between diagonal neighbours.
-      bool differs = false;
-      for (int dy = -1; dy <= 1 && !differs; ++dy)
-        for (int dx = -1; dx <= 1 && !differs; ++dx) {
+    auto at = [&](int x, int y) { return static_cast<size_t>(y) * width + x; };
+    auto differ = [&](int x, int y, int nx, int ny) {
+      return colorDifference(centres.at(x, y), centres.at(nx, ny)) > threshold;
+    };
+    // Calls f(nx, ny) for each of the eight neighbours of (x, y) inside the image: a
+    // diagonal edge shows first between diagonal neighbours.
+    auto forNeighbours = [&](int x, int y, auto&& f) {
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
           const int nx = x + dx, ny = y + dy;
-          if ((dx || dy) && nx >= 0 && nx < width && ny >= 0 && ny < height)
-            differs = colorDifference(c, centres.at(nx, ny)) > threshold;
+          if ((dx || dy) && nx >= 0 && nx < width && ny >= 0 && ny < height) f(nx, ny);
         }
-      if (differs) image.at(x, y) = refinePixel(x, y, c, threshold, stats);
-    });
+    };
+    std::vector<PixelRefinement> refine(pixels);
+    std::vector<char> active(pixels, 0), next(pixels, 0);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        PixelRefinement& r = refine[at(x, y)];
+        r.lowest = r.highest = centres.at(x, y);
+        forNeighbours(x, y, [&](int nx, int ny) { active[at(x, y)] |= differ(x, y, nx, ny); });
+      }
+    // Stages of 6, 12, 24, ... samples. After a stage a pixel stops when its samples (and
+    // its centre) agree within the threshold AND every neighbour whose centre differs from
+    // its own shows that disagreement inside itself: the edge between the two centres is
+    // then in the neighbour. Otherwise the edge may be in this pixel where its samples so
+    // far missed it (a silhouette cutting off a corner that no sample fell in), so both
+    // go on.
+    bool first = true;
+    for (int stage = std::min(kFirstStage, samples);; stage = std::min(2 * stage, samples)) {
+      forEachPixel(
+          [&](int x, int y, RayStats& stats) {
+            if (active[at(x, y)]) addSamples(x, y, stage, refine[at(x, y)], stats);
+          },
+          first);
+      first = false;
+      if (cancelled() || stage == samples) break;
+      bool any = false;
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+          const size_t i = at(x, y);
+          next[i] = 0;
+          if (!active[i]) continue;
+          bool settled = !refine[i].disagrees(threshold);
+          forNeighbours(x, y, [&](int nx, int ny) {
+            if (settled && differ(x, y, nx, ny) && !refine[at(nx, ny)].disagrees(threshold))
+              settled = false;
+          });
+          next[i] = !settled;
+          any |= !settled;
+        }
+      active.swap(next);
+      if (!any) break;
+    }
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        if (const PixelRefinement& r = refine[at(x, y)]; r.taken > 0)
+          image.at(x, y) = r.sum / static_cast<float>(r.taken);
   };
 
   if (control.threads > 0) {

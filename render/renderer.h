@@ -48,16 +48,13 @@ class Renderer {
 
   // Pixel (x, y): the average of its `samples` camera samples.
   Color renderPixel(int x, int y, RayStats& stats) const;
-  // Adaptive refinement of pixel (x, y) whose centre sample is `centre`: its samples are
-  // traced in stages of 4, 8, 16, ... up to `samples` (the same sub-pixel positions as
-  // renderPixel's, in the same order), stopping after a stage once every sample so far,
-  // the centre included, lies within `threshold` of every other in each channel (POV-Ray's
-  // adaptive anti-aliasing likewise subdivides only where its samples disagree). Returns
-  // their mean, which is renderPixel's value when all samples are taken; `taken` receives
-  // how many were.
-  static constexpr int kFirstStage = 4;
-  Color refinePixel(int x, int y, const Color& centre, float threshold, RayStats& stats,
-                    int* taken = nullptr) const;
+  // Adaptive supersampling takes a refined pixel's samples in stages of 6, 12, 24, ... up
+  // to `samples`: the same sub-pixel positions as renderPixel's, in the same order, so a
+  // pixel that takes them all equals renderPixel's. Why 6: Halton (2,3) points 1..6 fall one
+  // in each cell of the pixel's 2 x 3 grid (index mod 2 picks the column, index mod 3 the
+  // row), while points 1..4 leave the quarter x, y > 1/2 empty.
+  static constexpr int kFirstStage = 6;
+
   // One camera sample k of `count` in pixel (x, y).
   Color renderSample(int x, int y, int k, int count, RayStats& stats) const;
 
@@ -65,6 +62,16 @@ class Renderer {
   const Tracer& tracer() const { return tracer_; }
 
  private:
+  // The samples a refined pixel has taken so far: their sum and the range of their values
+  // (the centre sample included in the range).
+  struct PixelRefinement {
+    Color sum{0.0f}, lowest{0.0f}, highest{0.0f};
+    int taken = 0;
+    bool disagrees(float threshold) const { return maxComponent(highest - lowest) > threshold; }
+  };
+  // Traces samples r.taken .. upTo-1 of pixel (x, y) into r.
+  void addSamples(int x, int y, int upTo, PixelRefinement& r, RayStats& stats) const;
+
   const World& world_;
   const RenderSettings settings_;  // a copy: the scene may change after the renderer is built
   std::unique_ptr<Projection> projection_;

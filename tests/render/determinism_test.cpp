@@ -137,7 +137,7 @@ TEST_CASE("adaptive supersampling refines only pixels that differ from a neighbo
         ++centreOnly;
         continue;
       }
-      // A refined pixel is the mean of the first n of its 16 samples, n a stage (4, 8, 16),
+      // A refined pixel is the mean of the first n of its 16 samples, n a stage (6, 12, 16),
       // summed in order; it stops early only where those samples and the centre agree.
       Color sum(0.0f), lo = centres.at(x, y), hi = lo;
       bool matched = false;
@@ -148,8 +148,25 @@ TEST_CASE("adaptive supersampling refines only pixels that differ from a neighbo
         lo = glm::min(lo, c);
         hi = glm::max(hi, c);
         const int n = k + 1;
-        if ((n == 4 || n == 8) && got == sum / float(n)) {
+        if ((n == 6 || n == 12) && got == sum / float(n)) {
           CHECK(maxComponent(hi - lo) <= threshold);
+          // ... and where every neighbour whose centre differs shows the edge inside
+          // itself: its centre and first n samples disagree.
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+              int nx = x + dx, ny = y + dy;
+              if ((dx == 0 && dy == 0) || nx < 0 || nx >= w || ny < 0 || ny >= h ||
+                  maxComponent(glm::abs(centres.at(x, y) - centres.at(nx, ny))) <= threshold)
+                continue;
+              Color nlo = centres.at(nx, ny), nhi = nlo;
+              for (int j = 0; j < n; ++j) {
+                RayStats s2;
+                Color c2 = adaptive.renderSample(nx, ny, j, 16, s2);
+                nlo = glm::min(nlo, c2);
+                nhi = glm::max(nhi, c2);
+              }
+              CHECK(maxComponent(nhi - nlo) > threshold);
+            }
           matched = true;
           ++stopped;
         } else if (n == 16) {
