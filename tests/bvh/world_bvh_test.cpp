@@ -2,6 +2,7 @@
 // are tested beside it, and a shape used many times through <use> is built once.
 #include "mock_shapes.h"
 #include "random_items.h"
+#include "world_helpers.h"
 
 #include "scenegraph/world.h"
 
@@ -25,27 +26,7 @@ struct CountingMaker {
   }
 };
 
-std::unique_ptr<Node> shapeNode(ShapeSpec spec, Mat4 parentFromNode = Mat4(1.0)) {
-  auto n = std::make_unique<Node>();
-  n->kind = NodeKind::Shape;
-  n->element = shapeElementName(spec);
-  n->shape = std::move(spec);
-  n->parentFromNode = parentFromNode;
-  return n;
-}
 
-Hit bruteForce(const World& world, const Ray& ray) {
-  Hit best;
-  Ray r = ray;
-  for (const auto& o : world.objects()) {
-    Hit h;
-    if (o->intersect(r, h)) {
-      r.tmax = h.t;
-      best = h;
-    }
-  }
-  return best;
-}
 
 void requireSameAsBruteForce(const World& world, const std::vector<Ray>& rays) {
   size_t hits = 0;

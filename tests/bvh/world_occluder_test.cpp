@@ -1,6 +1,7 @@
 // World::occluder, the any-hit search a shadow cache drives: whichever object is tested
 // first, it answers as World::occluded does, and it names an object that blocks.
 #include "random_items.h"
+#include "world_helpers.h"
 
 #include "scenegraph/world.h"
 
@@ -13,15 +14,6 @@ using namespace lucent;
 using namespace lucent::testing;
 
 namespace {
-
-std::unique_ptr<Node> node(ShapeSpec spec, const Mat4& parentFromNode = Mat4(1.0)) {
-  auto n = std::make_unique<Node>();
-  n->kind = NodeKind::Shape;
-  n->element = shapeElementName(spec);
-  n->shape = std::move(spec);
-  n->parentFromNode = parentFromNode;
-  return n;
-}
 
 double uniform(std::mt19937_64& rng, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(rng);
@@ -43,35 +35,35 @@ Scene mixedScene(std::mt19937_64& rng, bool withSpheres) {
   for (int i = 0; i < 240; ++i) {
     switch (i % 6) {
       case 0:
-        if (withSpheres) scene.root->children.push_back(node(SphereSpec{randomVec(rng, -9, 9), uniform(rng, 0.1, 0.8)}));
+        if (withSpheres) scene.root->children.push_back(shapeNode(SphereSpec{randomVec(rng, -9, 9), uniform(rng, 0.1, 0.8)}));
         break;
       case 1:
-        if (withSpheres) scene.root->children.push_back(node(SphereSpec{Vec3(0.2, 0, 0), 0.5}, randomPlacement(rng, true)));
+        if (withSpheres) scene.root->children.push_back(shapeNode(SphereSpec{Vec3(0.2, 0, 0), 0.5}, randomPlacement(rng, true)));
         break;
       case 2:
-        if (withSpheres) scene.root->children.push_back(node(SphereSpec{Vec3(0.0), 0.5}, randomPlacement(rng, false)));
+        if (withSpheres) scene.root->children.push_back(shapeNode(SphereSpec{Vec3(0.0), 0.5}, randomPlacement(rng, false)));
         break;
       case 3:
-        scene.root->children.push_back(node(BoxSpec{Vec3(-0.4), Vec3(0.5, 0.3, 0.6)}, randomPlacement(rng, false)));
+        scene.root->children.push_back(shapeNode(BoxSpec{Vec3(-0.4), Vec3(0.5, 0.3, 0.6)}, randomPlacement(rng, false)));
         break;
       case 4:
-        scene.root->children.push_back(node(CylinderSpec{Vec3(0.0), Vec3(0, 1, 0), 0.3, false}, randomPlacement(rng, false)));
+        scene.root->children.push_back(shapeNode(CylinderSpec{Vec3(0.0), Vec3(0, 1, 0), 0.3, false}, randomPlacement(rng, false)));
         break;
       case 5: {
         auto csg = std::make_unique<Node>();
         csg->kind = NodeKind::Difference;
         csg->element = "difference";
         csg->parentFromNode = randomPlacement(rng, false);
-        csg->children.push_back(node(BoxSpec{Vec3(-0.5), Vec3(0.5)}));
-        csg->children.push_back(node(CylinderSpec{Vec3(0, -1, 0), Vec3(0, 1, 0), 0.35, false}));
+        csg->children.push_back(shapeNode(BoxSpec{Vec3(-0.5), Vec3(0.5)}));
+        csg->children.push_back(shapeNode(CylinderSpec{Vec3(0, -1, 0), Vec3(0, 1, 0), 0.35, false}));
         scene.root->children.push_back(std::move(csg));
         break;
       }
     }
   }
-  scene.root->children.push_back(node(PlaneSpec{Vec3(0, 1, 0), -10.0}));
+  scene.root->children.push_back(shapeNode(PlaneSpec{Vec3(0, 1, 0), -10.0}));
   scene.root->children.push_back(
-      node(PlaneSpec{Vec3(0, 1, 0), 0.0},
+      shapeNode(PlaneSpec{Vec3(0, 1, 0), 0.0},
            glm::rotate(glm::translate(Mat4(1.0), Vec3(0, 0, 9.5)), 1.4, Vec3(1, 0, 0))));
   return scene;
 }

@@ -2,6 +2,7 @@
 // it must give the same closest hit as testing every Instance through its own
 // object-space test, and secondary rays leaving such spheres must not re-hit them.
 #include "random_items.h"
+#include "world_helpers.h"
 
 #include "primitives/offset.h"
 #include "scenegraph/world.h"
@@ -79,21 +80,6 @@ Scene sphereField(std::mt19937_64& rng, int count, const Vec3& at, double extent
   return scene;
 }
 
-// The closest hit over every top-level object's own intersect (an Instance carries the
-// ray into object space and tests its Sphere there): what the world answered before
-// it kept spheres in world space.
-Hit bruteForce(const World& world, const Ray& ray) {
-  Hit best;
-  Ray r = ray;
-  for (const auto& o : world.objects()) {
-    Hit h;
-    if (o->intersect(r, h)) {
-      r.tmax = h.t;
-      best = h;
-    }
-  }
-  return best;
-}
 
 // The cosine between the ray and the normal of `shape` where the ray meets it at t.
 double cosineAt(const Shape& shape, const Ray& ray, double t) {
