@@ -177,16 +177,17 @@ int runRender(const RenderOptions& options, const CommonOptions& common) {
   }
 
   try {
-    World world(scene);
-    Renderer renderer(world, *camera);
-
-    RenderProgress progress;
-    RenderControl control;
-    control.threads = options.threads.value_or(0);
-    control.cancel = &gInterrupted;
-    control.progress = &progress;
     RenderResult result;
+    const int threads = options.threads.value_or(0);
     {
+      World world(scene);
+      Renderer renderer(world, *camera);
+
+      RenderProgress progress;
+      RenderControl control;
+      control.threads = threads;
+      control.cancel = &gInterrupted;
+      control.progress = &progress;
       std::optional<ProgressBar> bar;
       if (!options.quiet && ::isatty(STDERR_FILENO)) bar.emplace(progress, stderr);
       result = renderer.render(control);
@@ -199,14 +200,17 @@ int runRender(const RenderOptions& options, const CommonOptions& common) {
       return kRuntimeFailure;
     }
 
+    // The world is gone and the scene goes too before the image is written: writing loads
+    // OpenImageIO (images/image_plugin.h, 130 MB of libraries), and the two need not be
+    // in memory at once.
+    const int width = scene.render.width, height = scene.render.height;
+    parsed.scene.reset();
     writeImageFile(result.image, options.output);
     if (!options.quiet)
-      fmt::print(stderr, "lucent: wrote '{}' ({}x{}, {})\n", options.output, scene.render.width,
-                 scene.render.height, formatDuration(result.seconds));
-    if (options.stats) {
-      int threads = control.threads > 0 ? control.threads : static_cast<int>(std::thread::hardware_concurrency());
-      printStats(result, threads);
-    }
+      fmt::print(stderr, "lucent: wrote '{}' ({}x{}, {})\n", options.output, width, height,
+                 formatDuration(result.seconds));
+    if (options.stats)
+      printStats(result, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()));
     return kOk;
   } catch (const CameraError& e) {
     fmt::print(stderr, "{}\n", e.what());

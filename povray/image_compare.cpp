@@ -1,35 +1,19 @@
 #include "image_compare.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include "images/image_plugin.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
 #include <stdexcept>
 
 namespace lucent {
 
 namespace {
-
-// A view of the pixels as an OpenImageIO buffer (no copy).
-OIIO::ImageBuf wrap(const RgbImage& image) {
-  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
-  return OIIO::ImageBuf(spec, const_cast<float*>(image.rgb.data()));
-}
-
-RgbImage fromBuffer(const OIIO::ImageBuf& buf) {
-  const OIIO::ImageSpec& spec = buf.spec();
-  RgbImage out(spec.width, spec.height);
-  std::vector<float> all(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-  buf.get_pixels(OIIO::ROI(spec.x, spec.x + spec.width, spec.y, spec.y + spec.height, 0, 1, 0,
-                           spec.nchannels),
-                 OIIO::TypeDesc::FLOAT, all.data());
-  for (size_t p = 0; p < static_cast<size_t>(spec.width) * spec.height; ++p)
-    for (int c = 0; c < 3; ++c)
-      out.rgb[p * 3 + c] = all[p * spec.nchannels + std::min(c, spec.nchannels - 1)];
-  return out;
-}
 
 std::vector<double> luminance(const RgbImage& img) {
   std::vector<double> y(static_cast<size_t>(img.width) * img.height);
@@ -108,19 +92,16 @@ double ssimLuminance(const RgbImage& a, const RgbImage& b) {
 
 ImageMetrics compareImages(const RgbImage& a, const RgbImage& b, double threshold) {
   requireSameSize(a, b);
-  OIIO::ImageBuf bufA = wrap(a), bufB = wrap(b);
-  // failthresh = threshold: nfail counts the pixels with a channel off by more than it.
-  OIIO::ImageBufAlgo::CompareResults r = OIIO::ImageBufAlgo::compare(
-      bufA, bufB, static_cast<float>(threshold), static_cast<float>(threshold));
-  // (r.error is set whenever some pixel fails the threshold: not a processing error.)
+  CompareStats r = imagePlugin().compare(a.rgb.data(), b.rgb.data(), a.width, a.height,
+                                         static_cast<float>(threshold));
   ImageMetrics m;
-  m.rmse = r.rms_error;
-  m.psnr = r.rms_error > 0.0 ? 20.0 * std::log10(1.0 / r.rms_error)
-                             : std::numeric_limits<double>::infinity();
-  m.maxDiff = r.maxerror;
-  m.maxX = r.maxx;
-  m.maxY = r.maxy;
-  m.pixelsOver = static_cast<long>(r.nfail);
+  m.rmse = r.rmsError;
+  m.psnr = r.rmsError > 0.0 ? 20.0 * std::log10(1.0 / r.rmsError)
+                            : std::numeric_limits<double>::infinity();
+  m.maxDiff = r.maxError;
+  m.maxX = r.maxX;
+  m.maxY = r.maxY;
+  m.pixelsOver = r.pixelsOver;
   long pixels = static_cast<long>(a.width) * a.height;
   m.shareOver = pixels > 0 ? static_cast<double>(m.pixelsOver) / pixels : 0.0;
   m.threshold = threshold;
@@ -130,13 +111,12 @@ ImageMetrics compareImages(const RgbImage& a, const RgbImage& b, double threshol
 
 RgbImage differenceHeatMap(const RgbImage& a, const RgbImage& b, double fullScale) {
   requireSameSize(a, b);
-  OIIO::ImageBuf diff = OIIO::ImageBufAlgo::absdiff(wrap(a), wrap(b));
-  OIIO::ImageBuf largest = OIIO::ImageBufAlgo::maxchan(diff);
-  OIIO::ImageBuf scaled = OIIO::ImageBufAlgo::mul(largest, static_cast<float>(1.0 / fullScale));
-  OIIO::ImageBuf clamped = OIIO::ImageBufAlgo::clamp(scaled, 0.0f, 1.0f);
-  OIIO::ImageBuf mapped = OIIO::ImageBufAlgo::color_map(clamped, 0, "inferno");
-  if (mapped.has_error()) throw std::runtime_error("heat map: " + mapped.geterror());
-  return fromBuffer(mapped);
+  std::string error;
+  RgbImage out(a.width, a.height);
+  out.rgb = imagePlugin().heatMap(a.rgb.data(), b.rgb.data(), a.width, a.height,
+                                  static_cast<float>(fullScale), error);
+  if (!error.empty()) throw std::runtime_error("heat map: " + error);
+  return out;
 }
 
 RgbImage srgbEncoded(const RgbImage& linear) {
@@ -149,28 +129,62 @@ RgbImage srgbEncoded(const RgbImage& linear) {
   return out;
 }
 
+namespace {
+
+// Writes a PNG of 8- or 16-bit code values round(v · max) of values clamped to [0, 1].
+void writePng(const RgbImage& image, const std::string& path, bool sixteenBit,
+              const char* colorSpace) {
+  ImageToWrite file;
+  file.format = "png";
+  file.width = image.width;
+  file.height = image.height;
+  file.colorSpace = colorSpace;
+  std::vector<uint8_t> bytes;
+  std::vector<uint16_t> words;
+  const float scale = sixteenBit ? 65535.0f : 255.0f;
+  auto code = [scale](float v) { return std::floor(std::clamp(v, 0.0f, 1.0f) * scale + 0.5f); };
+  if (sixteenBit) {
+    words.reserve(image.rgb.size());
+    for (float v : image.rgb) words.push_back(static_cast<uint16_t>(code(v)));
+    file.type = StoredType::UInt16;
+    file.pixels = words.data();
+  } else {
+    bytes.reserve(image.rgb.size());
+    for (float v : image.rgb) bytes.push_back(static_cast<uint8_t>(code(v)));
+    file.type = StoredType::UInt8;
+    file.pixels = bytes.data();
+  }
+  if (WriteFailure failed = imagePlugin().writeFile(path, file))
+    throw std::runtime_error(fmt::format("cannot write '{}': {}", path, failed.reason));
+}
+
+}  // namespace
+
 void writeLinear16Png(const RgbImage& image, const std::string& path) {
-  OIIO::ImageBuf buf = wrap(image);
   // Tagged linear, so readers do not decode it as sRGB (POV-Ray writes gAMA 1.0).
-  buf.specmod().attribute("oiio:ColorSpace", "Linear");
-  buf.set_write_format(OIIO::TypeDesc::UINT16);
-  if (!buf.write(path, OIIO::TypeDesc::UINT16, "png"))
-    throw std::runtime_error(fmt::format("cannot write '{}': {}", path, buf.geterror()));
+  writePng(image, path, /*sixteenBit=*/true, "Linear");
 }
 
 RgbImage readLinear16Png(const std::string& path) {
   // The stored code values scaled to [0, 1]: no colour conversion whatever the file says.
-  OIIO::ImageBuf buf(path);
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-    throw std::runtime_error(fmt::format("cannot read '{}': {}", path, buf.geterror()));
-  return fromBuffer(buf);
+  std::string error;
+  std::unique_ptr<ImageReader> in = imagePlugin().openFile(path, error);
+  if (!in) throw std::runtime_error(fmt::format("cannot read '{}': {}", path, error));
+  const ImageHeader& h = in->header();
+  if (h.width <= 0 || h.height <= 0 || h.channels <= 0)
+    throw std::runtime_error(fmt::format("cannot read '{}': the image has no pixels", path));
+  std::vector<float> all(static_cast<size_t>(h.width) * h.height * h.channels);
+  error = in->readPixels(all.data());
+  if (!error.empty()) throw std::runtime_error(fmt::format("cannot read '{}': {}", path, error));
+  RgbImage out(h.width, h.height);
+  for (size_t p = 0; p < static_cast<size_t>(h.width) * h.height; ++p)
+    for (int c = 0; c < 3; ++c)
+      out.rgb[p * 3 + c] = all[p * h.channels + std::min(c, h.channels - 1)];
+  return out;
 }
 
 void writeDisplayPng(const RgbImage& image, const std::string& path) {
-  OIIO::ImageBuf buf = wrap(image);
-  buf.specmod().attribute("oiio:ColorSpace", "sRGB");
-  if (!buf.write(path, OIIO::TypeDesc::UINT8, "png"))
-    throw std::runtime_error(fmt::format("cannot write '{}': {}", path, buf.geterror()));
+  writePng(image, path, /*sixteenBit=*/false, "sRGB");
 }
 
 }  // namespace lucent

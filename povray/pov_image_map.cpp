@@ -1,8 +1,8 @@
 #include "pov_image_map.h"
 
+#include "images/image_plugin.h"
 #include "primitives/plane.h"
 
-#include <OpenImageIO/imageio.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <fmt/core.h>
 
@@ -50,18 +50,24 @@ struct ImageFacts {
   bool alpha = false;
 };
 
+// Case-insensitive equality of ASCII names.
+bool sameName(const std::string& a, const std::string& b) {
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [](unsigned char x, unsigned char y) {
+           return std::tolower(x) == std::tolower(y);
+         });
+}
+
 ImageFacts imageFacts(const std::string& path) {
   ImageFacts f;
-  auto in = OIIO::ImageInput::open(path);
+  std::string error;
+  std::unique_ptr<ImageReader> in = imagePlugin().openFile(path, error);
   if (!in) return f;
-  const OIIO::ImageSpec& spec = in->spec();
+  const ImageHeader& h = in->header();
   f.readable = true;
-  std::string space = spec.get_string_attribute("oiio:ColorSpace");
-  f.srgb = OIIO::Strutil::iequals(space, "sRGB") ||
-           (space.empty() && spec.format.basetype == OIIO::TypeDesc::UINT8);
-  f.floating = spec.format.is_floating_point();
-  f.alpha = spec.alpha_channel >= 0 || spec.nchannels == 2 || spec.nchannels == 4;
-  in->close();
+  f.srgb = sameName(h.colorSpace, "sRGB") || (h.colorSpace.empty() && h.eightBit);
+  f.floating = h.floating;
+  f.alpha = h.alphaChannel >= 0 || h.channels == 2 || h.channels == 4;
   return f;
 }
 

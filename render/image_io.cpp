@@ -1,11 +1,9 @@
 #include "image_io.h"
 
+#include "images/image_plugin.h"
 #include "primitives/system_memory.h"
 #include "scenegraph/render_limits.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -76,41 +74,45 @@ struct TempFile {
 };
 
 // The pixels in the file's storage type: sRGB-encoded integers or linear floats.
-void encodePixels(const Image& image, ImageFormat format, OIIO::ImageSpec& spec,
-                  std::vector<uint8_t>& bytes, std::vector<uint16_t>& words,
-                  std::vector<float>& floats, const void*& data) {
+ImageToWrite encodePixels(const Image& image, ImageFormat format, std::vector<uint8_t>& bytes,
+                          std::vector<uint16_t>& words, std::vector<float>& floats) {
+  ImageToWrite out;
+  out.format = oiioFormatName(format);
+  out.width = image.width;
+  out.height = image.height;
+  out.channels = 3;
   const size_t n = image.pixels.size() * 3;
   switch (format) {
     case ImageFormat::Png:
     case ImageFormat::Jpeg:
     case ImageFormat::Ppm: {
-      spec = OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-      spec.attribute("oiio:ColorSpace", "sRGB");
+      out.type = StoredType::UInt8;
+      out.colorSpace = "sRGB";
       bytes.resize(n);
       for (size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c) bytes[3 * i + c] = static_cast<uint8_t>(srgbByte(image.pixels[i][c]));
-      data = bytes.data();
-      if (format == ImageFormat::Jpeg) spec.attribute("Compression", "jpeg:95");
-      if (format == ImageFormat::Ppm) spec.attribute("pnm:binary", 1);
-      return;
+      out.pixels = bytes.data();
+      if (format == ImageFormat::Jpeg) out.compression = "jpeg:95";
+      if (format == ImageFormat::Ppm) out.pnmBinary = true;
+      return out;
     }
     case ImageFormat::Tiff: {
-      spec = OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::UINT16);
-      spec.attribute("oiio:ColorSpace", "sRGB");
-      spec.attribute("compression", "zip");
+      out.type = StoredType::UInt16;
+      out.colorSpace = "sRGB";
+      out.compression = "zip";
       words.resize(n);
       for (size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c)
           words[3 * i + c] = static_cast<uint16_t>(
               std::floor(srgbEncode(image.pixels[i][c]) * 65535.0f + 0.5f));
-      data = words.data();
-      return;
+      out.pixels = words.data();
+      return out;
     }
     case ImageFormat::Exr:
     case ImageFormat::Hdr: {
-      spec = OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
-      spec.attribute("oiio:ColorSpace", "Linear");
-      if (format == ImageFormat::Exr) spec.attribute("compression", "zip");
+      out.type = StoredType::Float;
+      out.colorSpace = "Linear";
+      if (format == ImageFormat::Exr) out.compression = "zip";
       floats.resize(n);
       for (size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c) {
@@ -119,10 +121,21 @@ void encodePixels(const Image& image, ImageFormat format, OIIO::ImageSpec& spec,
           if (format == ImageFormat::Hdr && !(v > 0.0f)) v = 0.0f;
           floats[3 * i + c] = v;
         }
-      data = floats.data();
-      return;
+      out.pixels = floats.data();
+      return out;
     }
   }
+  return out;
+}
+
+// Case-insensitive equality of ASCII names.
+bool sameName(const std::string& a, const char* b) {
+  size_t n = std::strlen(b);
+  if (a.size() != n) return false;
+  for (size_t i = 0; i < n; ++i)
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
+      return false;
+  return true;
 }
 
 // Flushes the file's data to the device, so a crash after the rename cannot leave an
@@ -184,25 +197,16 @@ void writeImageFile(const Image& image, const std::string& path) {
                                            static_cast<long>(::getpid()),
                                            target.extension().string());
 
-  OIIO::ImageSpec spec;
   std::vector<uint8_t> bytes;
   std::vector<uint16_t> words;
   std::vector<float> floats;
-  const void* data = nullptr;
-  encodePixels(image, format, spec, bytes, words, floats, data);
-
-  auto out = OIIO::ImageOutput::create(oiioFormatName(format));
-  if (!out)
-    throw ImageIOError(fmt::format("cannot write '{}': {}", path, OIIO::geterror()));
-  auto fail = [&](const std::string& what) {
-    std::string reason = out->geterror();
-    if (reason.empty()) reason = std::strerror(errno);
-    throw ImageIOError(fmt::format("cannot write '{}': {}: {}", path, what, reason));
-  };
-  errno = 0;
-  if (!out->open(temp.path.string(), spec)) fail("cannot create a temporary file there");
-  if (!out->write_image(spec.format, data)) fail("writing failed");
-  if (!out->close()) fail("writing failed");
+  ImageToWrite pixels = encodePixels(image, format, bytes, words, floats);
+  if (WriteFailure failed = imagePlugin().writeFile(temp.path.string(), pixels))
+    throw ImageIOError(fmt::format("cannot write '{}': {}: {}", path,
+                                   failed.step == WriteFailure::Create
+                                       ? "cannot create a temporary file there"
+                                       : "writing failed",
+                                   failed.reason));
   syncFile(temp.path);
 
   // Some writers do not report every failed write (a full disk, a file size limit):
@@ -234,12 +238,11 @@ void writeImageFile(const Image& image, const std::string& path) {
 }
 
 Image readImageFile(const std::string& path, PixelDecoding decoding) {
-  // ImageInput, not ImageBuf: an ImageBuf read by name goes through OpenImageIO's shared
-  // image cache, which would return stale pixels for a file rewritten under the same name.
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw ImageIOError(fmt::format("cannot read '{}': {}", path, OIIO::geterror()));
-  const OIIO::ImageSpec spec = in->spec();
-  const int channels = spec.nchannels;
+  std::string error;
+  std::unique_ptr<ImageReader> in = imagePlugin().openFile(path, error);
+  if (!in) throw ImageIOError(fmt::format("cannot read '{}': {}", path, error));
+  const ImageHeader& spec = in->header();
+  const int channels = spec.channels;
   if (spec.width <= 0 || spec.height <= 0 || channels <= 0)
     throw ImageIOError(fmt::format("cannot read '{}': the image has no pixels", path));
   // A small compressed file can claim an enormous image (a "decompression bomb"): refuse
@@ -256,32 +259,20 @@ Image readImageFile(const std::string& path, PixelDecoding decoding) {
                                    "than the {} available", path, spec.width, spec.height,
                                    formatBytes(need), formatBytes(*available)));
   std::vector<float> data(static_cast<size_t>(spec.width) * spec.height * channels);
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
-    throw ImageIOError(fmt::format("cannot read '{}': {}", path, in->geterror()));
-  in->close();
+  error = in->readPixels(data.data());
+  if (!error.empty()) throw ImageIOError(fmt::format("cannot read '{}': {}", path, error));
 
-  OIIO::ImageSpec floatSpec(spec.width, spec.height, channels, OIIO::TypeDesc::FLOAT);
-  OIIO::ImageBuf pixels(floatSpec, data.data());  // wraps `data`, no copy
-  OIIO::ImageBuf decoded;
-  const OIIO::ImageBuf* src = &pixels;
-  const bool integer = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
-                       spec.format.basetype == OIIO::TypeDesc::UINT16;
-  if (decoding == PixelDecoding::Linear && integer) {
-    std::string space = spec.get_string_attribute("oiio:ColorSpace");
-    if (space.empty() || OIIO::Strutil::iequals(space, "sRGB")) {
-      decoded = OIIO::ImageBufAlgo::colorconvert(pixels, "sRGB", "linear", /*unpremult=*/false);
-      if (decoded.has_error())
-        throw ImageIOError(fmt::format("cannot decode '{}': {}", path, decoded.geterror()));
-      src = &decoded;
-    }
+  // Integer files are sRGB-encoded unless they say otherwise.
+  const bool integer = spec.eightBit || spec.sixteenBit;
+  if (decoding == PixelDecoding::Linear && integer &&
+      (spec.colorSpace.empty() || sameName(spec.colorSpace, "sRGB"))) {
+    error = imagePlugin().srgbToLinear(data.data(), spec.width, spec.height, channels);
+    if (!error.empty()) throw ImageIOError(fmt::format("cannot decode '{}': {}", path, error));
   }
   Image image(spec.width, spec.height);
-  std::vector<float> px(std::max(channels, 3));
-  for (int y = 0; y < spec.height; ++y) {
-    for (int x = 0; x < spec.width; ++x) {
-      src->getpixel(x, y, px.data(), channels);
-      image.at(x, y) = channels < 3 ? Color(px[0]) : Color(px[0], px[1], px[2]);
-    }
+  for (size_t p = 0; p < image.pixels.size(); ++p) {
+    const float* px = &data[p * static_cast<size_t>(channels)];
+    image.pixels[p] = channels < 3 ? Color(px[0]) : Color(px[0], px[1], px[2]);
   }
   return image;
 }

@@ -2,7 +2,8 @@
 
 #include "image_io.h"
 
-#include <OpenImageIO/imagebuf.h>
+#include "images/image_plugin.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -28,8 +29,8 @@ Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec
 }
 
 struct ImageMap::Impl {
-  Image linear;          // RGB, linear
-  OIIO::ImageBuf pixels;  // wraps `linear` for OpenImageIO's bilinear lookup
+  Image linear;                            // RGB, linear
+  std::unique_ptr<TextureSampler> sampler;  // OpenImageIO's bilinear lookup of `linear`
 };
 
 ImageMap::ImageMap(const std::string& path) : impl_(std::make_unique<Impl>()) {
@@ -38,20 +39,21 @@ ImageMap::ImageMap(const std::string& path) : impl_(std::make_unique<Impl>()) {
   } catch (const ImageIOError& e) {
     throw TextureError(e.what());
   }
-  OIIO::ImageSpec spec(impl_->linear.width, impl_->linear.height, 3, OIIO::TypeDesc::FLOAT);
-  impl_->pixels.reset(spec, impl_->linear.pixels.data());
+  static_assert(sizeof(Color) == 3 * sizeof(float), "Image pixels are packed RGB floats");
+  impl_->sampler = imagePlugin().textureSampler(&impl_->linear.pixels[0][0],
+                                                impl_->linear.width, impl_->linear.height);
 }
 
 ImageMap::~ImageMap() = default;
 
-int ImageMap::width() const { return impl_->pixels.spec().width; }
-int ImageMap::height() const { return impl_->pixels.spec().height; }
+int ImageMap::width() const { return impl_->linear.width; }
+int ImageMap::height() const { return impl_->linear.height; }
 
 Color ImageMap::lookup(const Vec2& uv, const Vec2& scale) const {
   float s = static_cast<float>(uv.x / scale.x);
   float t = static_cast<float>(1.0 - uv.y / scale.y);  // image row 0 is the top (v = 1)
   Color c;
-  impl_->pixels.interppixel_NDC(s, t, &c[0], OIIO::ImageBuf::WrapPeriodic);
+  impl_->sampler->lookup(s, t, &c[0]);
   return c;
 }
 

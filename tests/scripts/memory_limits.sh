@@ -32,7 +32,7 @@ printf '<scene version="1">\n<camera/>\n<mesh src="grid.off"/>\n</scene>\n' > "$
 ( ulimit -v 1000000; exec "$lucent" check "$tmp/scene.xml" ) >"$tmp/stdout" 2>"$tmp/stderr"
 status=$?
 [ "$status" -eq 2 ] || fail "large mesh: exit status $status, expected 2; stderr: $(cat "$tmp/stderr")"
-grep -qE "scene.xml:3:12: error: <mesh> attribute 'src': cannot read the mesh 'grid.off': the mesh \(1000000 vertices, 1996002 faces\) needs about 1\.[0-9] GB of memory, more than the [0-9.]+ MB available" "$tmp/stderr" ||
+grep -qE "scene.xml:3:12: error: <mesh> attribute 'src': cannot read the mesh 'grid.off': the mesh \(1000000 vertices, 1996002 faces\) needs about 1\.[0-9] GB of memory, more than the [0-9.]+ (MB|GB) available" "$tmp/stderr" ||
   fail "large mesh: message: $(cat "$tmp/stderr")"
 
 # A 20000x20000 image needs 14.4 GB: refused before the render starts, the old image kept.
@@ -41,7 +41,7 @@ echo "old image" > "$tmp/out.png"
 ( ulimit -v 1000000; exec "$lucent" render "$tmp/small.xml" -o "$tmp/out.png" -w 20000 -h 20000 -q ) >"$tmp/stdout" 2>"$tmp/stderr"
 status=$?
 [ "$status" -eq 3 ] || fail "large image: exit status $status, expected 3; stderr: $(cat "$tmp/stderr")"
-grep -qE "^lucent: error: a 20000x20000 image needs about 14\.4 GB of memory, more than the [0-9.]+ MB available" "$tmp/stderr" ||
+grep -qE "^lucent: error: a 20000x20000 image needs about 14\.4 GB of memory, more than the [0-9.]+ (MB|GB) available" "$tmp/stderr" ||
   fail "large image: message: $(cat "$tmp/stderr")"
 [ "$(cat "$tmp/out.png")" = "old image" ] || fail "large image: the old image was changed"
 

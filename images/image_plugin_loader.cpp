@@ -1,0 +1,98 @@
+// Finds, loads and hands out the OpenImageIO plugin (image_plugin.h says why it is one).
+#include "image_plugin.h"
+
+#include <fmt/core.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <mutex>
+#include <vector>
+
+#include <dlfcn.h>
+
+namespace fs = std::filesystem;
+
+namespace lucent {
+
+namespace {
+
+constexpr const char* kPluginFile = "lucent-oiio.so";
+
+// Where to look: the file named by LUCENT_IMAGE_PLUGIN if it is set (and nothing else);
+// otherwise beside the running program (the build puts the plugin beside `lucent`), then
+// where this build wrote it (for the tests and benchmarks, which live in other folders).
+std::vector<fs::path> candidatePaths() {
+  if (const char* chosen = std::getenv("LUCENT_IMAGE_PLUGIN"); chosen && *chosen)
+    return {fs::path(chosen)};
+  std::vector<fs::path> paths;
+  std::error_code ec;
+  fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) paths.push_back(self.parent_path() / kPluginFile);
+#ifdef LUCENT_IMAGE_PLUGIN_BUILD_PATH
+  fs::path built(LUCENT_IMAGE_PLUGIN_BUILD_PATH);
+  if (paths.empty() || built != paths.front()) paths.push_back(built);
+#endif
+  return paths;
+}
+
+class Loader {
+ public:
+  const ImagePlugin& get() {
+    std::call_once(once_, [this] { load(); });  // other callers wait for the first
+    if (!plugin_) throw ImagePluginError(error_);
+    return *plugin_;
+  }
+
+ private:
+  // Never throws: the outcome is kept for every caller. The library is never unloaded
+  // (its code may be on the stack of a thread at exit, and leak reports need its symbols).
+  void load() {
+    std::string tried;
+    for (const fs::path& path : candidatePaths()) {
+      std::error_code ec;
+      if (!fs::exists(path, ec)) {
+        tried += fmt::format("\n  {}: no such file", path.string());
+        continue;
+      }
+      void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (!handle) {
+        const char* why = ::dlerror();
+        tried += fmt::format("\n  {}: {}", path.string(), why ? why : "cannot be loaded");
+        continue;
+      }
+      auto entry = reinterpret_cast<LucentImagePluginEntry>(
+          ::dlsym(handle, LUCENT_IMAGE_PLUGIN_ENTRY));
+      int version = 0;
+      const ImagePlugin* plugin = entry ? entry(&version) : nullptr;
+      if (!plugin || version != kImagePluginVersion) {
+        tried += fmt::format("\n  {}: not a Lucent image plugin of version {}", path.string(),
+                             kImagePluginVersion);
+        continue;
+      }
+      plugin_ = plugin;
+      return;
+    }
+    const bool chosen = std::getenv("LUCENT_IMAGE_PLUGIN") && *std::getenv("LUCENT_IMAGE_PLUGIN");
+    error_ = fmt::format("cannot load the image library ({}, OpenImageIO), which reads and "
+                         "writes every image; tried:{}\n  ({})",
+                         kPluginFile, tried,
+                         chosen ? "the environment variable LUCENT_IMAGE_PLUGIN names it; unset "
+                                  "it to use the one beside the lucent program"
+                                : "rebuild Lucent, or keep it beside the lucent program");
+  }
+
+  std::once_flag once_;
+  const ImagePlugin* plugin_ = nullptr;
+  std::string error_;
+};
+
+Loader& loader() {
+  static Loader instance;
+  return instance;
+}
+
+}  // namespace
+
+const ImagePlugin& imagePlugin() { return loader().get(); }
+
+}  // namespace lucent
