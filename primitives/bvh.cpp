@@ -1,6 +1,7 @@
 #include "bvh.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
@@ -25,6 +26,7 @@ BvhRay::BvhRay(const Ray& r) : o(r.o), invDir(1.0 / r.d) {
   }
 }
 
+
 AABB Bvh::bounds() const {
   AABB b;
   if (empty()) return b;
@@ -35,8 +37,6 @@ AABB Bvh::bounds() const {
 
 namespace {
 
-using bvh_detail::roundDown;
-using bvh_detail::roundUp;
 using bvh_detail::splat;
 using bvh_detail::v4f;
 using bvh_detail::v4i;
@@ -84,18 +84,18 @@ struct Ref {
 };
 static_assert(sizeof(Ref) == 32, "build references are 32 bytes");
 
-// The references live in huge pages where the kernel allows it (transparent huge pages,
-// madvise): the build writes 32 bytes of fresh memory per item, and one page fault per
-// 4 KB page cost about a third of the build time (perf, in this VM, where faults are
-// dear). Only the build's own scratch memory: with the nodes in huge pages too the build
-// was faster still, but tracing rays was about 5 % slower (bench/bvh_build, measured
-// interleaved with the old build), so the nodes stay in ordinary pages.
+// The references and the nodes under construction live in transparent huge pages
+// (madvise) when the block is 4 MB or more. The build writes about 70 MB of fresh memory
+// per million triangles, and in this VM writing memory in 4 KB pages was several times
+// slower than in 2 MB pages even once the pages were present (a 32 MB memset: 30 to 60 ms
+// against 3 to 8 ms), and a fault per 4 KB page cost about a third of the build.
+// Smaller blocks (CSG nodes, small meshes) take ordinary memory: a huge page would make a
+// few references cost 2 MB. Leaves new elements uninitialised on resize (every element is
+// written before it is read; the room reserved but never reached is never touched).
 template <class T>
 struct HugePageAllocator {
   using value_type = T;
   static constexpr size_t kHugePage = size_t(2) << 20;
-  // Smaller blocks (CSG nodes, small meshes) take ordinary memory: a huge page would
-  // make a few references cost 2 MB.
   static constexpr size_t kHugeMin = 2 * kHugePage;
   HugePageAllocator() = default;
   template <class U>
@@ -114,7 +114,6 @@ struct HugePageAllocator {
   void deallocate(T* p, size_t n) {
     ::operator delete(p, std::align_val_t(huge(n) ? kHugePage : 64));
   }
-  // Elements are left uninitialised: every reference is written before it is read.
   template <class U>
   void construct(U* p) {
     ::new (static_cast<void*>(p)) U;
@@ -140,6 +139,30 @@ void prefault(void* p, size_t bytes) {
   (void)p;
   (void)bytes;
 #endif
+}
+
+// A point rounded to float outward, lanes 0..2 (lane 3 is 0): the same as roundDown and
+// roundUp of bvh.h lane by lane, without their branches, which mispredicted about half
+// the time (the rounding direction of float(x) follows no pattern). nextDown of a finite
+// float is one step of its bit pattern towards -inf: -1 for a positive float, +1 for a
+// negative one or -0 (a +0 cannot need it: float(x) = +0 > x only for x < 0, which gives
+// -0); float(x) = ±inf (|x| beyond float range) steps to ±FLT_MAX or stays, as there.
+typedef double v4d __attribute__((vector_size(32)));
+typedef int64_t v4l __attribute__((vector_size(32)));
+v4f roundedDown(const Vec3& p) {
+  const v4d x = {p.x, p.y, p.z, 0.0};
+  const v4f f = __builtin_convertvector(x, v4f);
+  const v4i above = __builtin_convertvector(__builtin_convertvector(f, v4d) > x, v4i);
+  const v4i positive = f > splat(0.0f);
+  return reinterpret_cast<v4f>(reinterpret_cast<v4i>(f) + (above & (positive | 1)));
+}
+// nextUp: +1 for a positive float or +0, -1 for a negative one (-0 cannot need it).
+v4f roundedUp(const Vec3& p) {
+  const v4d x = {p.x, p.y, p.z, 0.0};
+  const v4f f = __builtin_convertvector(x, v4f);
+  const v4i below = __builtin_convertvector(__builtin_convertvector(f, v4d) < x, v4i);
+  const v4i negative = f < splat(0.0f);
+  return reinterpret_cast<v4f>(reinterpret_cast<v4i>(f) + (below & (negative | 1)));
 }
 
 constexpr uint32_t kMaxItems = 1u << 29;  // see Ref
@@ -226,8 +249,9 @@ struct Child {
 
 class Builder {
  public:
-  Builder(RefVector& refs, BvhNode* nodes, const Bvh::Options& opt)
-      : refs_(refs), nodes_(nodes), opt_(opt) {}
+  // nodes: room for one node per ref; order: one slot per ref, filled at the leaves.
+  Builder(RefVector& refs, BvhNode* nodes, uint32_t* order, const Bvh::Options& opt)
+      : refs_(refs), nodes_(nodes), order_(order), opt_(opt) {}
 
   uint32_t nodeCount() const { return next_.load(); }
 
@@ -287,6 +311,12 @@ class Builder {
       } else if (kids[i].leaf) {
         nd.index[i] = kids[i].begin;
         nd.count[i] = kids[i].size();
+        // The leaf's items in ascending order (the refs were just partitioned: in
+        // cache), so the order the partitions left them in does not matter.
+        uint32_t* o = order_ + kids[i].begin;
+        const uint32_t n = kids[i].size();
+        for (uint32_t s = 0; s < n; ++s) o[s] = refs_[kids[i].begin + s].id();
+        std::sort(o, o + n);
       } else {
         childNode[i] = next_.fetch_add(1);
         nd.index[i] = childNode[i];
@@ -441,21 +471,37 @@ class Builder {
   }
 
   // Moves the refs left of the split plane first; returns the first of the right ones.
+  // Branch-free (Lomuto's scheme: every ref is swapped with the first right one, which
+  // moves on past it when it goes left): which side a ref goes to follows its centroid
+  // and does not predict well, and a mispredicted branch per ref cost more than the
+  // swap. The order within each side is of no consequence: which refs each node holds
+  // is decided by the planes alone, and each leaf lists its items in ascending order
+  // (build()), so the tree is the same whatever the order the partition leaves.
   uint32_t partition(const Child& c, Box4& lcbox, Box4& rcbox) {
     Binner binner(c.cbox, c.size());
-    int a = c.split.axis;
-    uint32_t i = c.begin, j = c.end;
-    while (i < j) {
-      v4f ctr = refs_[i].centroid2();
-      if (binner.bins(ctr)[a] < c.split.bin) {
-        lcbox.expand(ctr);
-        ++i;
-      } else {
-        rcbox.expand(ctr);
-        std::swap(refs_[i], refs_[--j]);
-      }
+    const int a = c.split.axis, bin = c.split.bin;
+    Ref* refs = refs_.data();
+    uint32_t l = c.begin;
+    // Written with masks: the compiler turned conditional expressions into branches.
+    const v4i inf = reinterpret_cast<v4i>(splat(INFINITY));
+    const v4i negInf = reinterpret_cast<v4i>(splat(-INFINITY));
+    for (uint32_t i = c.begin; i < c.end; ++i) {
+      const Ref r = refs[i];
+      const v4f ctr = r.centroid2();
+      // All ones if the ref goes left (bins and split bin lie in [0, kBins]: no overflow).
+      const int32_t left = (binner.bins(ctr)[a] - bin) >> 31;
+      const v4i m = {left, left, left, left};
+      const v4i ci = reinterpret_cast<v4i>(ctr);
+      // Each side's centroid box grows by the centroid, or by an empty box (inf, -inf).
+      lcbox.lo = vmin(lcbox.lo, reinterpret_cast<v4f>((ci & m) | (inf & ~m)));
+      lcbox.hi = vmax(lcbox.hi, reinterpret_cast<v4f>((ci & m) | (negInf & ~m)));
+      rcbox.lo = vmin(rcbox.lo, reinterpret_cast<v4f>((ci & ~m) | (inf & m)));
+      rcbox.hi = vmax(rcbox.hi, reinterpret_cast<v4f>((ci & ~m) | (negInf & m)));
+      refs[i] = refs[l];
+      refs[l] = r;
+      l -= uint32_t(left);
     }
-    return i;
+    return l;
   }
 
   // Half the refs on each side, split along the widest centroid extent.
@@ -482,6 +528,7 @@ class Builder {
 
   RefVector& refs_;
   BvhNode* nodes_;
+  uint32_t* order_;
   const Bvh::Options& opt_;
   std::atomic<uint32_t> next_{1};  // node 0 is the root
 };
@@ -520,8 +567,8 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
         continue;
       }
       Ref& r = refs[i];
-      r = Ref{v4f{roundDown(b.lo.x), roundDown(b.lo.y), roundDown(b.lo.z), id},
-              v4f{roundUp(b.hi.x), roundUp(b.hi.y), roundUp(b.hi.z), id}};
+      r = Ref{roundedDown(b.lo), roundedUp(b.hi)};
+      r.lo[3] = r.hi[3] = id;
       acc.box.expand(r.box());
       acc.cbox.expand(r.centroid2());
     }
@@ -554,15 +601,17 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
   // nodes, which number items - 1, and the root). The allocator leaves new nodes
   // uninitialised, so those never used cost nothing.
   // Large trees are built in huge pages (see HugePageAllocator) and then copied to
-  // ordinary memory made present in one system call: the traversal was slower on nodes
-  // in huge pages, and faulting their 4 KB pages one at a time during the build was slow.
+  // ordinary memory made present in one system call per block: camera rays measured 4 to
+  // 7 % slower on nodes left in huge pages (bench/bvh_build, alternating runs; the reason
+  // was not found), and faulting their 4 KB pages one at a time during the build was slow.
   const bool scratch = HugePageAllocator<BvhNode>::huge(refs.size());
   std::vector<BvhNode, HugePageAllocator<BvhNode>> scratchNodes;
   if (scratch)
     scratchNodes.resize(refs.size());
   else
     nodes_.resize(refs.size());
-  Builder builder(refs, scratch ? scratchNodes.data() : nodes_.data(), options);
+  order_.resize(refs.size());
+  Builder builder(refs, scratch ? scratchNodes.data() : nodes_.data(), order_.data(), options);
   Child root;
   root.begin = 0;
   root.end = static_cast<uint32_t>(refs.size());
@@ -575,16 +624,23 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
   if (scratch) {
     BvhNodes out;
     out.resize(builder.nodeCount());  // exact capacity, uninitialised
-    prefault(out.data(), out.size() * sizeof(BvhNode));
-    std::memcpy(static_cast<void*>(out.data()), scratchNodes.data(),
-                out.size() * sizeof(BvhNode));
+    // In blocks of 1 MB, in parallel when allowed (the copy is memory-bound work that
+    // would otherwise leave the other threads idle at the end of the build).
+    constexpr size_t kBlock = (size_t(1) << 20) / sizeof(BvhNode);
+    auto copy = [&](size_t first, size_t last) {
+      prefault(out.data() + first, (last - first) * sizeof(BvhNode));
+      std::memcpy(static_cast<void*>(out.data() + first), scratchNodes.data() + first,
+                  (last - first) * sizeof(BvhNode));
+    };
+    if (options.parallel)
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), kBlock),
+                        [&](const tbb::blocked_range<size_t>& r) { copy(r.begin(), r.end()); });
+    else
+      copy(0, out.size());
     nodes_ = std::move(out);
   } else {
     nodes_.resize(builder.nodeCount());
   }
-
-  order_.resize(refs.size());
-  for (size_t k = 0; k < refs.size(); ++k) order_[k] = refs[k].id();
 }
 
 }  // namespace lucent

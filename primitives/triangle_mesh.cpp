@@ -13,6 +13,25 @@ namespace lucent {
 namespace {
 // Subtrees of at most this many triangles are BVH leaves without a split search.
 constexpr uint32_t kMinLeaf = 2;
+
+// isDegenerateTriangle's decision (watertight.cpp: |e1 × e2| <= gamma(6)·|e1|·|e2|) with
+// its three square roots spent only where it is close. Squared, the test reads
+// C <= g²·A·B (C = |e1 × e2|², A = |e1|², B = |e2|², g = gamma(6)); where C exceeds
+// 4·g²·A·B the lengths differ by a factor of 2, far more than the few roundings of either
+// form (the cross product's cancellation included: its error is a few ulps of |e1|·|e2|,
+// and g is 6 ulps), so the full test would find the triangle non-degenerate too. A and B
+// are kept within [1e-100, 1e100] so that g²·A·B neither overflows nor underflows; every
+// other triangle (NaN included: the comparisons fail) takes the full test. So the
+// decisions are exactly those of isDegenerateTriangle.
+bool isDegenerate(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  const Vec3 e1 = p1 - p0, e2 = p2 - p0;
+  const double a = glm::dot(e1, e1), b = glm::dot(e2, e2);
+  const Vec3 c = glm::cross(e1, e2);
+  constexpr double kClear = 4.0 * gamma(6) * gamma(6);
+  if (a > 1e-100 && a < 1e100 && b > 1e-100 && b < 1e100 && glm::dot(c, c) > kClear * a * b)
+    return false;
+  return isDegenerateTriangle(p0, p1, p2);
+}
 }  // namespace
 
 std::vector<Vec3> computeVertexNormals(const MeshData& mesh) {
@@ -51,7 +70,7 @@ TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> mesh, bool useNormals
       mesh_->triangles.size(),
       [&](uint32_t i) {
         const auto& tri = mesh_->triangles[i];
-        if (isDegenerateTriangle(P[tri[0]], P[tri[1]], P[tri[2]])) return AABB();
+        if (isDegenerate(P[tri[0]], P[tri[1]], P[tri[2]])) return AABB();
         AABB box;
         for (uint32_t v : tri) box.expand(P[v]);
         return box;
