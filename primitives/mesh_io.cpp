@@ -478,7 +478,9 @@ std::shared_ptr<MeshData> loadMeshBytes(std::string bytes, MeshFormat format) {
   }
   return guarded([&] {
     Soup soup = readSoup(bytes, format);
-    bytes = std::string();  // release the text before the mesh is built
+    // Releases the text before the mesh is built (assigning an empty string would keep
+    // the buffer: libstdc++ copies a short string into the existing capacity).
+    std::string().swap(bytes);
     checkSoup(soup, "vertex", "vertices", "face");
     if (soup.polygons.empty()) throw MeshError("the file holds no faces");
     checkMemory(soup);
