@@ -23,6 +23,7 @@
 #include <optional>
 #include <thread>
 
+#include <malloc.h>
 #include <unistd.h>
 
 namespace lucent::cli {
@@ -205,6 +206,9 @@ int runRender(const RenderOptions& options, const CommonOptions& common) {
     // in memory at once.
     const int width = scene.render.width, height = scene.render.height;
     parsed.scene.reset();
+    // glibc keeps freed blocks for reuse (in each thread's arena, and below the top of
+    // the heap); hand them back to the system, or they would count twice.
+    ::malloc_trim(0);
     writeImageFile(result.image, options.output);
     if (!options.quiet)
       fmt::print(stderr, "lucent: wrote '{}' ({}x{}, {})\n", options.output, width, height,

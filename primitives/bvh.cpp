@@ -621,9 +621,13 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
   builder.decide(root);
   // A root that is a leaf becomes node 0's only child.
   depth_ = builder.build(0, root);
+  const size_t nodeCount = builder.nodeCount();
+  // The references (32 bytes per item) are done with: freed before the nodes are copied,
+  // so the two are never held at once (the peak of loading a large mesh).
+  refs = RefVector();
   if (scratch) {
     BvhNodes out;
-    out.resize(builder.nodeCount());  // exact capacity, uninitialised
+    out.resize(nodeCount);  // exact capacity, uninitialised
     // In blocks of 1 MB, in parallel when allowed (the copy is memory-bound work that
     // would otherwise leave the other threads idle at the end of the build).
     constexpr size_t kBlock = (size_t(1) << 20) / sizeof(BvhNode);
@@ -639,7 +643,7 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
       copy(0, out.size());
     nodes_ = std::move(out);
   } else {
-    nodes_.resize(builder.nodeCount());
+    nodes_.resize(nodeCount);
   }
 }
 
