@@ -24,6 +24,7 @@
 #include "render/texture.h"
 
 #include <fmt/core.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <cstdio>
@@ -170,7 +171,11 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
     }
     report.povScene = povScene.string();
 
-    // Lucent, through the render library.
+    // Lucent, through the render library; --threads bounds the BVH builds too.
+    std::optional<tbb::global_control> threadLimit;
+    if (options.threads.value_or(0) > 0)
+      threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
+                          static_cast<size_t>(*options.threads));
     World world(scene);
     Renderer renderer(world, *camera);
     RenderControl control;

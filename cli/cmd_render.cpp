@@ -17,6 +17,7 @@
 #include "render/texture.h"
 
 #include <fmt/core.h>
+#include <tbb/global_control.h>
 
 #include <atomic>
 #include <csignal>
@@ -180,6 +181,11 @@ int runRender(const RenderOptions& options, const CommonOptions& common) {
   try {
     RenderResult result;
     const int threads = options.threads.value_or(0);
+    // --threads bounds every parallel step, building the world's BVHs too, not only the
+    // tracing: `-t 1` is one thread from start to end.
+    std::optional<tbb::global_control> threadLimit;
+    if (threads > 0)
+      threadLimit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
     {
       World world(scene);
       Renderer renderer(world, *camera);
