@@ -5,12 +5,7 @@
 # clear message, status 3, and the old output image untouched.
 # Usage: bash image_plugin.sh <path-to-lucent> <source-dir>
 set -u
-lucent=$1
-src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
 
 cat > "$tmp/scene.xml" <<'XML'
 <scene version="1">

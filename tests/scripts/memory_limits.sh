@@ -5,15 +5,11 @@
 # AddressSanitizer (which reserves terabytes of address space up front).
 # Usage: bash memory_limits.sh <path-to-lucent> <source-dir>
 set -u
-lucent=$1
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
 if grep -q __asan_init "$lucent" 2>/dev/null; then
   echo "memory_limits: skipped (AddressSanitizer build: ulimit -v cannot be used)"
   exit 0
 fi
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
 
 # An open 1000x1000 grid: 10^6 vertices, about 2x10^6 triangles, 55 MB of OFF. Its repair
 # pipeline needs about 1.27 GB; with 1 GB of address space (lucent itself takes about half)

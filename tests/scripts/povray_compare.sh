@@ -5,12 +5,7 @@
 # and the report folder must hold both images, the heat map and report.html.
 # Usage: bash povray_compare.sh <path-to-lucent> <source-dir>
 set -u
-lucent=$1
-src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
 
 if ! command -v povray >/dev/null 2>&1 && [ -z "${LUCENT_POVRAY:-}" ]; then
   echo "FAIL: povray is not installed (scripts/install-deps installs it)" >&2

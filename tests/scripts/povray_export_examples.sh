@@ -4,12 +4,7 @@
 # with status 2 and an error at the element's file:line:col, and writes no file.
 # Usage: bash povray_export_examples.sh <path-to-lucent> <source-dir>
 set -u
-lucent=$1
-src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
 
 povray=${LUCENT_POVRAY:-$(command -v povray)}
 [ -n "$povray" ] || { echo "FAIL: povray is not installed (scripts/install-deps installs it)" >&2; exit 1; }

@@ -4,12 +4,7 @@
 # nothing there. script(1) (util-linux, always on Debian) gives the render a terminal.
 # Usage: bash progress_bar.sh <path-to-lucent> <source-dir>
 set -u
-lucent=$1
-src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
 
 # The bar is redrawn every 250 ms: the render must last a few redraws. 2 samples of the
 # showcase at 480x360 take about 2.8 s of CPU (measured: 16 samples take 22 s), so at

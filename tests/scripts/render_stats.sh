@@ -4,11 +4,7 @@
 # plane, seen from above, under one point light: every pixel's primary ray hits and is lit.
 # Usage: bash render_stats.sh <path-to-lucent> <source-dir>
 set -u
-lucent=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
 
 cat > "$tmp/scene.xml" <<'XML'
 <scene version="1">

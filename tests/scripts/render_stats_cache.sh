@@ -7,11 +7,7 @@
 # tested by the 256 primary rays and by the 256 shadow rays less the hits.
 # Usage: bash render_stats_cache.sh <path-to-lucent> <source-dir>
 set -u
-lucent=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
 
 cat > "$tmp/scene.xml" <<'XML'
 <scene version="1">
