@@ -14,6 +14,7 @@
 // plain float or integer arrays, row-major, row 0 at the top.
 #pragma once
 
+#include <cctype>
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
@@ -37,6 +38,15 @@ struct ImageHeader {
   bool floating = false;     // stored as floating point
   int alphaChannel = -1;     // the alpha channel's index, or -1
   std::string colorSpace;    // OpenImageIO's "oiio:ColorSpace" (empty if the file says none)
+
+  // Does the file say its values are sRGB-encoded (in any letter case)?
+  bool saysSrgb() const {
+    static const char kSrgb[] = "srgb";
+    if (colorSpace.size() != sizeof(kSrgb) - 1) return false;
+    for (size_t i = 0; i < colorSpace.size(); ++i)
+      if (std::tolower(static_cast<unsigned char>(colorSpace[i])) != kSrgb[i]) return false;
+    return true;
+  }
 };
 
 // An image file opened for reading.

@@ -50,14 +50,6 @@ struct ImageFacts {
   bool alpha = false;
 };
 
-// Case-insensitive equality of ASCII names.
-bool sameName(const std::string& a, const std::string& b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](unsigned char x, unsigned char y) {
-           return std::tolower(x) == std::tolower(y);
-         });
-}
-
 ImageFacts imageFacts(const std::string& path) {
   ImageFacts f;
   std::string error;
@@ -65,7 +57,7 @@ ImageFacts imageFacts(const std::string& path) {
   if (!in) return f;
   const ImageHeader& h = in->header();
   f.readable = true;
-  f.srgb = sameName(h.colorSpace, "sRGB") || (h.colorSpace.empty() && h.eightBit);
+  f.srgb = h.saysSrgb() || (h.colorSpace.empty() && h.eightBit);
   f.floating = h.floating;
   f.alpha = h.alphaChannel >= 0 || h.channels == 2 || h.channels == 4;
   return f;

@@ -128,16 +128,6 @@ ImageToWrite encodePixels(const Image& image, ImageFormat format, std::vector<ui
   return out;
 }
 
-// Case-insensitive equality of ASCII names.
-bool sameName(const std::string& a, const char* b) {
-  size_t n = std::strlen(b);
-  if (a.size() != n) return false;
-  for (size_t i = 0; i < n; ++i)
-    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
-      return false;
-  return true;
-}
-
 // Flushes the file's data to the device, so a crash after the rename cannot leave an
 // empty file under the final name.
 void syncFile(const fs::path& path) {
@@ -279,7 +269,7 @@ Image readImageFile(const std::string& path, PixelDecoding decoding) {
   // Integer files are sRGB-encoded unless they say otherwise.
   const bool integer = spec.eightBit || spec.sixteenBit;
   if (decoding == PixelDecoding::Linear && integer &&
-      (spec.colorSpace.empty() || sameName(spec.colorSpace, "sRGB"))) {
+      (spec.colorSpace.empty() || spec.saysSrgb())) {
     error = imagePlugin().srgbToLinear(data.data(), spec.width, spec.height, channels);
     if (!error.empty()) throw ImageIOError(fmt::format("cannot decode '{}': {}", path, error));
   }
