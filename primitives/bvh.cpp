@@ -1,5 +1,7 @@
 #include "bvh.h"
 
+#include "huge_page_allocator.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
@@ -84,47 +86,9 @@ struct Ref {
 };
 static_assert(sizeof(Ref) == 32, "build references are 32 bytes");
 
-// The references and the nodes under construction live in transparent huge pages
-// (madvise) when the block is 4 MB or more. The build writes about 70 MB of fresh memory
-// per million triangles, and in this VM writing memory in 4 KB pages was several times
-// slower than in 2 MB pages even once the pages were present (a 32 MB memset: 30 to 60 ms
-// against 3 to 8 ms), and a fault per 4 KB page cost about a third of the build.
-// Smaller blocks (CSG nodes, small meshes) take ordinary memory: a huge page would make a
-// few references cost 2 MB. Leaves new elements uninitialised on resize (every element is
-// written before it is read; the room reserved but never reached is never touched).
-template <class T>
-struct HugePageAllocator {
-  using value_type = T;
-  static constexpr size_t kHugePage = size_t(2) << 20;
-  static constexpr size_t kHugeMin = 2 * kHugePage;
-  HugePageAllocator() = default;
-  template <class U>
-  HugePageAllocator(const HugePageAllocator<U>&) {}
-  static bool huge(size_t n) { return n * sizeof(T) >= kHugeMin; }
-  static size_t rounded(size_t n) { return (n * sizeof(T) + kHugePage - 1) & ~(kHugePage - 1); }
-  T* allocate(size_t n) {
-    if (!huge(n)) return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(64)));
-    // Whole huge pages, so the advice covers this block alone.
-    void* p = ::operator new(rounded(n), std::align_val_t(kHugePage));
-#ifdef MADV_HUGEPAGE
-    madvise(p, rounded(n), MADV_HUGEPAGE);
-#endif
-    return static_cast<T*>(p);
-  }
-  void deallocate(T* p, size_t n) {
-    ::operator delete(p, std::align_val_t(huge(n) ? kHugePage : 64));
-  }
-  template <class U>
-  void construct(U* p) {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-  friend bool operator==(const HugePageAllocator&, const HugePageAllocator&) { return true; }
-  friend bool operator!=(const HugePageAllocator&, const HugePageAllocator&) { return false; }
-};
+// The references and the nodes under construction live in transparent huge pages when
+// they are large (huge_page_allocator.h): the build writes about 70 MB of fresh memory per
+// million triangles, and a fault per 4 KB page cost about a third of the build.
 using RefVector = std::vector<Ref, HugePageAllocator<Ref>>;
 
 // Makes the whole pages of [p, p + bytes) present and writable in one system call
