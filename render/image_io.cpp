@@ -1,5 +1,6 @@
 #include "image_io.h"
 
+#include "images/address_sanitizer.h"
 #include "images/image_plugin.h"
 #include "primitives/system_memory.h"
 #include "scenegraph/render_limits.h"
@@ -18,14 +19,6 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-// Clang says __has_feature(address_sanitizer); GCC defines __SANITIZE_ADDRESS__.
-#if defined(__SANITIZE_ADDRESS__)
-#define LUCENT_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define LUCENT_ASAN 1
-#endif
-#endif
 #if defined(LUCENT_ASAN)
 #include <sanitizer/lsan_interface.h>
 #endif
