@@ -30,9 +30,14 @@ const char* meshFormatName(MeshFormat format);  // "OBJ", "PLY", ...
 // The whole file, or a MeshError: missing, not a regular file, unreadable, empty, too large.
 std::string readMeshFile(const std::string& path);
 
+// What a checked file holds, for sizing the reader's containers before it reads.
+struct MeshCounts {
+  std::size_t vertices = 0, faces = 0;
+};
+
 // Structural checks, one per format; each throws MeshError naming the first problem.
 void checkOffBytes(std::string_view bytes);  // ASCII OFF, COFF, NOFF, CNOFF
-void checkPlyBytes(std::string_view bytes);  // ASCII and binary PLY
+MeshCounts checkPlyBytes(std::string_view bytes);  // ASCII and binary PLY
 // ASCII and binary STL; settles the layout for CGAL's reader, editing the buffer if needed.
 void checkStlBytes(std::string& bytes);
 // OBJ is walked by scanObj (obj_scan.h), which also collects normals and texture coordinates.

@@ -25,6 +25,7 @@
 #include "mesh_io.h"
 
 #include "clean_mesh.h"
+#include "huge_page_allocator.h"
 #include "mesh_file_check.h"
 #include "obj_scan.h"
 #include "system_memory.h"
@@ -42,6 +43,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <boost/container/small_vector.hpp>
 #include <boost/iostreams/device/array.hpp>
 #include <boost/iostreams/stream.hpp>
 #include <fmt/format.h>
@@ -58,34 +60,29 @@ namespace {
 namespace PMP = CGAL::Polygon_mesh_processing;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
-using Polygon = std::vector<std::size_t>;
 using SurfaceMesh = CGAL::Surface_mesh<Point>;
-
-struct Soup {
-  std::vector<Point> points;
-  std::vector<Polygon> polygons;
-};
 
 // Containers handed to CGAL's readers. The checks have bounded every count already; these
 // refuse to grow past the limits anyway (ASCII STL has no count to check up front).
 enum class Cap { Vertices, Faces, Corners };
 
-template <class T, Cap C>
-class Capped : public std::vector<T> {
+template <class Base, Cap C>
+class Capped : public Base {
  public:
-  using std::vector<T>::vector;
+  using T = typename Base::value_type;
+  using Base::Base;
   void push_back(const T& value) {
     grow(this->size() + 1);
-    std::vector<T>::push_back(value);
+    Base::push_back(value);
   }
   template <class... Args>
   T& emplace_back(Args&&... args) {
     grow(this->size() + 1);
-    return std::vector<T>::emplace_back(std::forward<Args>(args)...);
+    return Base::emplace_back(std::forward<Args>(args)...);
   }
   void resize(std::size_t n) {
     grow(n);
-    std::vector<T>::resize(n);
+    Base::resize(n);
   }
 
  private:
@@ -99,10 +96,27 @@ class Capped : public std::vector<T> {
   }
 };
 
-Soup readSoup(const std::string& bytes, MeshFormat format) {
+// A polygon's corners, held in place up to a quad: a million-triangle mesh would otherwise
+// make a million small heap blocks (a tenth of its load time went to allocating, faulting
+// in and freeing them). Capped, as CGAL's readers fill it.
+using Polygon = Capped<boost::container::small_vector<std::size_t, 4>, Cap::Corners>;
+
+// The polygons in huge pages when large (huge_page_allocator.h): those of a million
+// triangles fill 56 MB of fresh memory. (The points cannot be: CGAL's repair swaps them
+// with a std::vector of its own.)
+struct Soup {
+  std::vector<Point> points;
+  HugeVector<Polygon> polygons;
+};
+
+// `expected`: the counts the checks found, if they know them. Reserving them spares the
+// reader's containers their doublings (each a copy, and fresh pages to fault in).
+Soup readSoup(const std::string& bytes, MeshFormat format, MeshCounts expected) {
   boost::iostreams::stream<boost::iostreams::array_source> in(bytes.data(), bytes.size());
-  Capped<Point, Cap::Vertices> points;
-  Capped<Capped<std::size_t, Cap::Corners>, Cap::Faces> polygons;
+  Capped<std::vector<Point>, Cap::Vertices> points;
+  Capped<HugeVector<Polygon>, Cap::Faces> polygons;
+  points.reserve(std::min(expected.vertices, kMaxMeshVertices));
+  polygons.reserve(std::min(expected.faces, kMaxMeshFaces));
   const auto quiet = CGAL::parameters::verbose(false);
   bool ok = false;
   switch (format) {
@@ -114,11 +128,10 @@ Soup readSoup(const std::string& bytes, MeshFormat format) {
   if (!ok)
     throw MeshError(fmt::format("CGAL's {} reader could not read the file (malformed or truncated data)",
                                 meshFormatName(format)));
-  // Moved, not copied: the polygons' vectors are most of a large mesh's memory.
+  // Moved, not copied: the polygons are most of a large mesh's memory.
   Soup soup;
-  soup.points = std::move(points);
-  soup.polygons.reserve(polygons.size());
-  for (auto& p : polygons) soup.polygons.push_back(std::move(p));
+  soup.points = std::move(static_cast<std::vector<Point>&>(points));
+  soup.polygons = std::move(static_cast<HugeVector<Polygon>&>(polygons));
   return soup;
 }
 
@@ -470,14 +483,18 @@ std::shared_ptr<MeshData> loadMeshFile(const std::string& path) {
 
 std::shared_ptr<MeshData> loadMeshBytes(std::string bytes, MeshFormat format) {
   std::optional<ObjScan> obj;
+  MeshCounts counts;
   switch (format) {
-    case MeshFormat::Obj: obj = scanObj(bytes); break;
-    case MeshFormat::Ply: checkPlyBytes(bytes); break;
+    case MeshFormat::Obj:
+      obj = scanObj(bytes);
+      counts = {obj->vertexCount, obj->faceCount()};
+      break;
+    case MeshFormat::Ply: counts = checkPlyBytes(bytes); break;
     case MeshFormat::Off: checkOffBytes(bytes); break;
     case MeshFormat::Stl: checkStlBytes(bytes); break;
   }
   return guarded([&] {
-    Soup soup = readSoup(bytes, format);
+    Soup soup = readSoup(bytes, format, counts);
     // Releases the text before the mesh is built (assigning an empty string would keep
     // the buffer: libstdc++ copies a short string into the existing capacity).
     std::string().swap(bytes);

@@ -314,16 +314,17 @@ void walkBody(Cursor& cursor, const std::vector<PlyElement>& elements, unsigned 
 
 }  // namespace
 
-void checkPlyBytes(std::string_view bytes) {
+MeshCounts checkPlyBytes(std::string_view bytes) {
   PlyEncoding encoding = PlyEncoding::Ascii;
   std::vector<PlyElement> elements;
   const std::size_t dataStart = parseHeader(bytes, encoding, elements);
   checkElementSemantics(elements);
   const std::string_view data = bytes.substr(dataStart);
 
-  unsigned long long needed = 0, vertexTotal = 0;
+  unsigned long long needed = 0, vertexTotal = 0, faceTotal = 0;
   for (const PlyElement& e : elements) {
     if (e.isVertex()) vertexTotal += e.count;
+    if (e.isFace()) faceTotal += e.count;
     const std::size_t item = minItemBytes(e, encoding);
     if (item > 0 && e.count > (data.size() + 1) / item)
       fail(fmt::format("the PLY header declares {} '{}' elements, which need at least {} bytes, "
@@ -343,6 +344,8 @@ void checkPlyBytes(std::string_view bytes) {
     BinaryCursor cursor(data, encoding == PlyEncoding::BigEndian);
     walkBody(cursor, elements, vertexTotal);
   }
+  // The walk has seen every element, so these counts are backed by data.
+  return {static_cast<std::size_t>(vertexTotal), static_cast<std::size_t>(faceTotal)};
 }
 
 }  // namespace lucent

@@ -2,6 +2,7 @@
 // by tests/data/meshes/make_meshes.py; the unit cube [0,1]^3 has 8 corners, 6 faces, volume 1.
 #include "mesh_test_support.h"
 
+#include "primitives/mesh_file_check.h"
 #include "primitives/mesh_io.h"
 
 using namespace lucent;
@@ -27,6 +28,16 @@ TEST_CASE("a closed cube loads the same from OBJ, OFF, ASCII and binary PLY and 
   for (const char* file : {"cube.obj", "cube.off", "cube_ascii.ply", "cube_binary_le.ply",
                            "cube_binary_be.ply", "cube_ascii.stl", "cube_binary.stl"})
     requireUnitCube(file);
+}
+
+TEST_CASE("the PLY check counts the vertices and faces the reader will see", "[mesh]") {
+  // loadMeshBytes sizes the reader's containers from these counts.
+  for (const char* file : {"cube_ascii.ply", "cube_binary_le.ply", "cube_binary_be.ply"}) {
+    INFO(file);
+    const MeshCounts counts = checkPlyBytes(readMeshFile(dataFile(file)));
+    CHECK(counts.vertices == 8);
+    CHECK(counts.faces == 6);
+  }
 }
 
 TEST_CASE("a binary STL whose header starts with 'solid' is read as binary", "[mesh]") {

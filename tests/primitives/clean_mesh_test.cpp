@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 using namespace lucent;
 using lucent::test::boxMesh;
 
@@ -126,4 +128,34 @@ TEST_CASE("clean mesh: finishMesh gives the same solid either way", "[primitives
   finishMesh(open);
   CHECK_FALSE(open.closed);
   CHECK(open.triangles.size() == 11);
+}
+
+TEST_CASE("clean mesh: vertices of very high valence", "[primitives][mesh]") {
+  // A double cone over a 20000-gon: each apex is in 20000 triangles, so a check that looked
+  // at each pair of a vertex's edges would take 4e8 steps per apex.
+  const uint32_t N = 20000;
+  const double pi = 3.14159265358979323846;
+  std::vector<Vec3> points;
+  for (uint32_t i = 0; i < N; ++i)
+    points.emplace_back(std::cos(2 * pi * i / N), std::sin(2 * pi * i / N), 0.0);
+  const uint32_t top = N, bottom = N + 1;
+  points.emplace_back(0.0, 0.0, 1.0);
+  points.emplace_back(0.0, 0.0, -1.0);
+  Triangles t;
+  for (uint32_t i = 0; i < N; ++i) {
+    const uint32_t j = (i + 1) % N;
+    t.push_back({top, i, j});     // counter-clockwise seen from above: outward
+    t.push_back({bottom, j, i});
+  }
+  auto out = cleanClosedMesh(points, t);
+  REQUIRE(out);
+  CHECK(out->triangles.size() == 2 * N);
+  CHECK(out->positions.size() == N + 2);
+  // Two cones of height 1 over the polygon: 2/3 of its area.
+  const double area = 0.5 * N * std::sin(2 * pi / N);
+  CHECK(signedVolume(*out) == Approx(2.0 / 3.0 * area));
+
+  // The same with one apex triangle turned: no longer consistently oriented.
+  std::swap(t[2 * 777][1], t[2 * 777][2]);
+  CHECK_FALSE(cleanClosedMesh(points, t));
 }
