@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# Regenerates docs/performance.md and its plots on this machine: installs the benchmark
-# dependencies (Embree 3, gnuplot), builds the benchmarks (Release) in build-bench/, runs
-# them and writes the tables, the plots (docs/images/perf-*.png) and the raw figures
-# (docs/performance-data/*.tsv).
+# Measures Lucent's performance on this machine: installs the benchmark dependencies
+# (Embree 3, gnuplot), builds the benchmarks (Release) in build-bench/, runs them and
+# writes the plots (docs/images/perf-*.png), the raw figures (docs/performance-data/*.tsv)
+# and the section of docs/performance.md between its two "bench/run.sh" markers (the
+# latest full run: targets, tables, raw outputs). The rest of that page is written by
+# hand (dated measurements with the change each measured) and is left as it is.
 #
 #   bash bench/run.sh           # the full run (about ten minutes on two cores)
-#   bash bench/run.sh --quick   # small sizes: checks the pipeline, figures not meaningful
+#   bash bench/run.sh --quick   # small sizes: checks the pipeline; figures not meaningful,
+#                               # so it writes into a temporary folder, never into docs/
 # LUCENT_BENCH_BUILD names another build folder (default build-bench).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,11 +27,25 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j"$(nproc)" --target lucent mesh_embree bvh_scaling bvh_threads \
   peak_memory vs_povray >/dev/null
 
-data=docs/performance-data
-img=docs/images
-mkdir -p "$data" "$img"
 work=$(mktemp -d)
+page=docs/performance.md
+if [ $quick -eq 1 ]; then
+  # Nothing in docs/ changes: the page, plots and figures go to a folder that is kept.
+  out=$(mktemp -d)
+  data=$out/performance-data img=$out/images
+  cp "$page" "$out/performance.md"
+  page=$out/performance.md
+else
+  data=docs/performance-data img=docs/images
+fi
+mkdir -p "$data" "$img"
 trap 'rm -rf "$work"' EXIT
+begin='<!-- bench/run.sh: begin -->'
+end='<!-- bench/run.sh: end -->'
+if ! grep -qxF "$begin" "$page" || ! grep -qxF "$end" "$page"; then
+  echo "bench/run.sh: error: $page lacks the lines '$begin' and '$end' that mark the section it writes" >&2
+  exit 1
+fi
 
 echo "bench/run.sh: Lucent against Embree (${tris} triangles)" >&2
 "$build"/bench/mesh_embree --triangles "$tris" --size "$size" --tsv "$data/embree.tsv" \
@@ -116,41 +133,24 @@ met() { awk -v x="$1" -v op="$2" -v y="$3" 'BEGIN { if (x == "" || x == "n/a") p
   else print "**not met**" }'; }
 
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
-# The section written by bench/gallery_speed.sh (its table and the reading below it) is
-# kept as it is: this script does not measure the gallery.
-gallerySection=$(sed -n '/^## The gallery against POV-Ray/,/^## Raw outputs/{/^## Raw outputs/!p}' docs/performance.md 2>/dev/null || true)
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+if ! git diff --quiet HEAD -- . 2>/dev/null; then commit="$commit with uncommitted changes"; fi
 {
 cat <<EOF
-# Performance
+## Latest full run of bench/run.sh
 
-Lucent finds ray hits with a bounding volume hierarchy at every level that has many
-children: the scene's top level (one entry per shape instance), inside each mesh (its
-triangles) and inside each CSG node (its children). This page gives the figures measured
-by \`bench/\`, side by side with Embree 3 where a comparison makes sense.
-
-Regenerate everything on this page (tables, plots, raw figures) with:
-
-\`\`\`sh
-bash bench/run.sh
-\`\`\`
-
-It installs what the benchmarks alone need (\`scripts/install-bench-deps\`: Debian's
-\`libembree-dev\` and \`gnuplot-nox\`; Lucent itself never links Embree), builds the
-programs of \`bench/\` in Release mode in \`build-bench/\` and runs them. The meshes are made
-by the programs (a tessellated sphere displaced by a sum of sines), never downloaded.
-
-Measured on: ${cpu}, $(nproc) hardware threads, $(date -u +%Y-%m-%d).
-Every time is the best of three runs. The machine is shared: each program prints the load
-average at its start (in the raw outputs below); a high load lowers every figure,
-Lucent's and Embree's alike, which is why the comparisons are ratios measured in the same
-run on the same rays.
-
-## Targets
+Written by \`bash bench/run.sh\` (this section only; the sections around it are dated
+measurements kept with the change each measured). Measured on ${cpu}, $(nproc) hardware
+threads, $(date -u +"%Y-%m-%d %H:%M") UTC, commit ${commit}; each program prints the load
+average at its start (raw outputs at the end of this section). Every time is the best of
+three runs (${povRepeat} for POV-Ray). A high load lowers every figure, Lucent's and
+Embree's alike, which is why the comparisons are ratios measured in the same run on the
+same rays; the one-thread figures of \`bvh_scaling\` are CPU time.
 
 | target | measured | |
 |---|---|---|
 | single-thread primary rays on the 1M-triangle mesh: at least half of Embree's rays/s | ${ratio1}× Embree | $(met "$ratio1" ">=" 0.5) |
-| time per ray at 10^6 primitives at most 3× the time at 10^3 (triangles; spheres) | ${growth}×; ${growthS}× | $(met "$growth" "<=" 3) |
+| time per ray at 10^6 primitives at most 3× the time at 10^3 (triangles; spheres) | ${growth}×; ${growthS}× | $(met "$growth" "<=" 3) (triangles); $(met "$growthS" "<=" 3) (spheres) |
 | BVH build on one thread: at least 3 M triangles/s | ${build1} M/s | $(met "$build1" ">=" 3) |
 | BVH build on ${threads} threads: at least 5 M triangles/s (target stated for two) | ${buildN} M/s | $(met "$buildN" ">=" 5) |
 | memory per triangle (vertices, indices, BVH): at most 64 bytes | ${bytes} B | $(met "$bytes" "<=" 64) |
@@ -158,70 +158,25 @@ run on the same rays.
 | whole process on the 1M-triangle scene, one thread: at least 4× faster than POV-Ray | ${povMesh:-n/a}× wall (${povMeshCpu:-n/a}× CPU time) | $(met "${povMesh:-n/a}" ">=" 4) |
 | whole process on a thousand spheres, one thread: at least 2× faster than POV-Ray | ${povSpheres:-n/a}× wall (${povSpheresCpu:-n/a}× CPU time) | $(met "${povSpheres:-n/a}" ">=" 2) |
 
-## Lucent and Embree 3 on one million triangles
-
-![Rays per second, Lucent and Embree](images/perf-embree.png)
-
-The same double-precision rays go to both (Embree's rounded to float): camera rays through
-a ${size}×${size} image in 8×8 tiles, then shadow rays from Lucent's hit points to a point
-light. Lucent answers through its \`World\` (an instance of the mesh shape, exactly what
-the renderer calls, watertight double-precision triangle tests); Embree through
-\`rtcIntersect1\` and \`rtcOccluded1\`, its one-ray interface (its packet and stream
-interfaces are faster still and have no counterpart in Lucent). "All threads" spreads the
-rays over TBB's threads in chunks of 1024 for both.
+### Lucent and Embree 3 (${tris} triangles, ${size}×${size} camera rays)
 
 $(tables "$work/embree.md")
 
 $(grep -E '^agreement' "$work/embree.md")
 
-Build speed counts Lucent's whole mesh shape construction (bounds of every triangle, the
-BVH build, the leaf order) against Embree's \`rtcCommitScene\` at its default (medium)
-quality, with Embree's device limited to one thread and then given all of them. Memory
-counts what each keeps per triangle: Lucent its double-precision positions, its indices
-and its BVH (4-wide nodes, 32 bytes per child entry, plus a 4-byte leaf order), Embree
-its float copy of the buffers plus everything its device allocates for the BVH.
-
-## Time per ray as the primitive count grows
-
-![Time per ray against primitive count](images/perf-scaling.png)
-
-One thread, ${scaleSize}×${scaleSize} camera rays, timed on the thread's CPU clock (best
-of three), so time spent waiting for a core on a shared machine is not counted. Spheres: n spheres scattered over the unit
-sphere with radius 2/√n (they cover it about once at every n), each its own instance in
-the world's top-level BVH. Triangles: the displaced sphere tessellated into about n
-triangles, one mesh with its own BVH. Both keep the same picture as n grows, so the
-growth is the hierarchy's (ideally logarithmic) and the caches'.
+### Time per ray as the primitive count grows (${scaleSize}×${scaleSize} rays, one thread)
 
 $(tables "$work/scaling.md")
 
-## Thread scaling
-
-![Thread scaling](images/perf-threads.png)
+### Thread scaling (${tris} triangles)
 
 $(tables "$work/threads.md")
 
-## Peak memory of a whole render
-
-\`lucent render\` of a scene holding the mesh (binary PLY file, flat shading, one point
-light, ${peakSize}×${peakSize} pixels, one sample), its peak resident memory as the kernel
-counts it (getrusage of the child process): parsing, loading and repairing the mesh file,
-the BVH, the image. Beside it \`lucent --version\`, which loads the same program and
-its shared libraries (OpenImageIO and its own dependencies are most of them) and does
-nothing else: that much is spent before any scene.
+### Peak memory of a whole render (${peakSize}×${peakSize})
 
 $(tables "$work/peak.md")
 
-## Whole-process comparison with POV-Ray
-
-The same scenes rendered by \`lucent render --threads 1\` and by POV-Ray 3.7
-(\`povray +WT1\`), each the whole process from start to exit: parsing, loading, building
-the acceleration structures, rendering, writing the PNG. The POV-Ray scenes are the
-exports of Lucent's (\`lucent export-pov\`): the mesh becomes an inline \`mesh2\` (POV-Ray
-reads no PLY file), which POV-Ray parses as text, the way its users hold large meshes.
-The sphere field is a thousand spheres of three materials, one of them a mirror, on a
-checkered plane under two point lights. One sample per pixel, no anti-aliasing in either.
-Every time is the best of ${povRepeat} runs; the peak memory is the largest of them.
-Measured by \`bench/vs_povray\` (run by \`bench/run.sh\`):
+### Whole process against POV-Ray (one thread, best of ${povRepeat})
 
 \`\`\`sh
 build-bench/bench/vs_povray build-bench/cli/lucent /tmp/work --triangles ${tris} --size ${peakSize} --repeat ${povRepeat}
@@ -229,15 +184,24 @@ build-bench/bench/vs_povray build-bench/cli/lucent /tmp/work --triangles ${tris}
 
 $(tables "$work/povray.md")
 
-${gallerySection}
-
-## Raw outputs
+### Raw outputs
 
 \`\`\`
-$(grep -E '^#' "$work/embree.md" "$work/scaling.md" "$work/threads.md" "$work/peak.md" "$work/povray.md" | sed 's/^[^:]*://')
+$(grep -hE '^#' "$work/embree.md" "$work/scaling.md" "$work/threads.md" "$work/peak.md" "$work/povray.md")
 \`\`\`
 
 The tab-separated figures behind the plots are in \`docs/performance-data/\`.
 EOF
-} > docs/performance.md
-echo "bench/run.sh: wrote docs/performance.md, $img/perf-*.png, $data/*.tsv" >&2
+} > "$work/section.md"
+
+# The page with the lines between the markers replaced by the new section.
+awk -v section="$work/section.md" -v begin="$begin" -v end="$end" '
+  $0 == begin { print; while ((getline line < section) > 0) print line; skipping = 1; next }
+  $0 == end { skipping = 0 }
+  !skipping { print }' "$page" > "$work/page.md"
+cp "$work/page.md" "$page"
+if [ $quick -eq 1 ]; then
+  echo "bench/run.sh: --quick: wrote $out (performance.md, images/, performance-data/); docs/ is unchanged" >&2
+else
+  echo "bench/run.sh: wrote the marked section of $page, $img/perf-*.png, $data/*.tsv" >&2
+fi
