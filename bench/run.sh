@@ -27,6 +27,9 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j"$(nproc)" --target lucent mesh_embree bvh_scaling bvh_threads \
   peak_memory vs_povray >/dev/null
 
+# The commit measured, told before this script writes anything of its own.
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+if ! git diff --quiet HEAD -- . 2>/dev/null; then commit="$commit with uncommitted changes"; fi
 work=$(mktemp -d)
 page=docs/performance.md
 if [ $quick -eq 1 ]; then
@@ -133,8 +136,6 @@ met() { awk -v x="$1" -v op="$2" -v y="$3" 'BEGIN { if (x == "" || x == "n/a") p
   else print "**not met**" }'; }
 
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
-commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-if ! git diff --quiet HEAD -- . 2>/dev/null; then commit="$commit with uncommitted changes"; fi
 {
 cat <<EOF
 ## Latest full run of bench/run.sh
