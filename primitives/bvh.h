@@ -4,6 +4,7 @@
 
 #include "aabb.h"
 #include "ray.h"
+#include "uninitialised_construct.h"
 
 #include <cfloat>
 #include <cstddef>
@@ -41,7 +42,7 @@ static_assert(sizeof(BvhNode) == 128, "four 32-byte child entries in two cache l
 // Allocates on 64-byte boundaries and leaves new elements uninitialised on resize, so
 // the nodes the build reserves but never reaches are never touched (cost no memory).
 template <class T>
-struct CacheLineAllocator {
+struct CacheLineAllocator : UninitialisedConstruct {
   using value_type = T;
   CacheLineAllocator() = default;
   template <class U>
@@ -50,14 +51,6 @@ struct CacheLineAllocator {
     return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(64)));
   }
   void deallocate(T* p, size_t) { ::operator delete(p, std::align_val_t(64)); }
-  template <class U>
-  void construct(U* p) {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
   friend bool operator==(const CacheLineAllocator&, const CacheLineAllocator&) { return true; }
   friend bool operator!=(const CacheLineAllocator&, const CacheLineAllocator&) { return false; }
 };

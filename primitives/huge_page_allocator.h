@@ -1,9 +1,10 @@
 // An allocator for large temporary arrays: blocks of 4 MB or more in transparent huge pages.
 #pragma once
 
+#include "uninitialised_construct.h"
+
 #include <cstddef>
 #include <new>
-#include <utility>
 #include <vector>
 
 #include <sys/mman.h>
@@ -20,7 +21,7 @@ namespace lucent {
 // holds garbage for a trivial T): every element must be written before it is read; the
 // room reserved but never reached is never touched.
 template <class T>
-struct HugePageAllocator {
+struct HugePageAllocator : UninitialisedConstruct {
   using value_type = T;
   static constexpr std::size_t kHugePage = std::size_t(2) << 20;
   static constexpr std::size_t kHugeMin = 2 * kHugePage;
@@ -42,14 +43,6 @@ struct HugePageAllocator {
   }
   void deallocate(T* p, std::size_t n) {
     ::operator delete(p, std::align_val_t(huge(n) ? kHugePage : 64));
-  }
-  template <class U>
-  void construct(U* p) {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
   friend bool operator==(const HugePageAllocator&, const HugePageAllocator&) { return true; }
   friend bool operator!=(const HugePageAllocator&, const HugePageAllocator&) { return false; }
