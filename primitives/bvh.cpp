@@ -157,15 +157,17 @@ struct BinSet {
 
 // The bin of each lane: (c - lo) · scale, clamped to the bins (the same computation in
 // binning and partitioning, so both agree to the bit).
-// Small nodes use fewer bins: clearing and sweeping 3 × 16 bins would cost more than
-// binning their few items.
+// A node of n items uses 4 + n/20 bins, at most 16 (the rule of Embree's binned
+// builder): clearing and sweeping 3 × 16 bins cost more than binning a small node's
+// items. With min(16, n) bins the SAH cost of the million-triangle tree was 0.4 % lower
+// and the build executed 8 % more instructions (callgrind).
 struct Binner {
   v4f lo, scale;
   int count;
   Binner(const Box4& cbox, uint32_t items)
       : lo(cbox.lo),
         scale(splat(0.0f)),
-        count(static_cast<int>(std::min<uint32_t>(kBins, items))) {
+        count(static_cast<int>(std::min<uint32_t>(kBins, 4 + items / 20))) {
     v4f ext = cbox.hi - cbox.lo;
     for (int a = 0; a < 3; ++a) scale[a] = ext[a] > 0.0f ? float(count) / ext[a] : 0.0f;
     scale[3] = 0.0f;
@@ -432,29 +434,49 @@ class Builder {
   // is decided by the planes alone, and each leaf lists its items in ascending order
   // (build()), so the tree is the same whatever the order the partition leaves.
   uint32_t partition(const Child& c, Box4& lcbox, Box4& rcbox) {
-    Binner binner(c.cbox, c.size());
-    const int a = c.split.axis, bin = c.split.bin;
+    switch (c.split.axis) {
+      case 0: return partitionOn<0>(c, lcbox, rcbox);
+      case 1: return partitionOn<1>(c, lcbox, rcbox);
+      default: return partitionOn<2>(c, lcbox, rcbox);
+    }
+  }
+
+  // partition() along axis A (a constant, so picking lane A is one shuffle).
+  template <int A>
+  uint32_t partitionOn(const Child& c, Box4& lcbox, Box4& rcbox) {
+    const Binner binner(c.cbox, c.size());
+    // A ref goes left when its bin is below the split bin. bins() truncates
+    // (c - lo) · scale clamped to [0, count - 0.5], and bin is in [1, count - 1], so that
+    // is (c - lo) · scale < bin: the same floats, the same decisions.
+    const v4f lo = binner.lo, scale = binner.scale, split = splat(float(c.split.bin));
     Ref* refs = refs_.data();
     uint32_t l = c.begin;
-    // Written with masks: the compiler turned conditional expressions into branches.
-    const v4i inf = reinterpret_cast<v4i>(splat(INFINITY));
-    const v4i negInf = reinterpret_cast<v4i>(splat(-INFINITY));
+    // The boxes in locals: through the references the compiler had to store them back
+    // after every swap (a v4f store into refs might have changed them).
+    Box4 lc = lcbox, rc = rcbox;
+    // A side's box must not grow by a ref that goes to the other side: that ref's
+    // centroid is replaced by a quiet NaN there, which vmin and vmax (x < y ? x : y with
+    // the NaN as x) ignore, keeping the box's own value.
+    const v4i qnan = reinterpret_cast<v4i>(splat(NAN));
     for (uint32_t i = c.begin; i < c.end; ++i) {
       const Ref r = refs[i];
       const v4f ctr = r.centroid2();
-      // All ones if the ref goes left (bins and split bin lie in [0, kBins]: no overflow).
-      const int32_t left = (binner.bins(ctr)[a] - bin) >> 31;
-      const v4i m = {left, left, left, left};
+      const v4i goesLeft = (ctr - lo) * scale < split;
+      // All ones in every lane if the ref goes left.
+      const v4i m = __builtin_shuffle(goesLeft, v4i{A, A, A, A});
       const v4i ci = reinterpret_cast<v4i>(ctr);
-      // Each side's centroid box grows by the centroid, or by an empty box (inf, -inf).
-      lcbox.lo = vmin(lcbox.lo, reinterpret_cast<v4f>((ci & m) | (inf & ~m)));
-      lcbox.hi = vmax(lcbox.hi, reinterpret_cast<v4f>((ci & m) | (negInf & ~m)));
-      rcbox.lo = vmin(rcbox.lo, reinterpret_cast<v4f>((ci & ~m) | (inf & m)));
-      rcbox.hi = vmax(rcbox.hi, reinterpret_cast<v4f>((ci & ~m) | (negInf & m)));
+      const v4f toLeft = reinterpret_cast<v4f>(ci | (qnan & ~m));
+      const v4f toRight = reinterpret_cast<v4f>(ci | (qnan & m));
+      lc.lo = vmin(toLeft, lc.lo);
+      lc.hi = vmax(toLeft, lc.hi);
+      rc.lo = vmin(toRight, rc.lo);
+      rc.hi = vmax(toRight, rc.hi);
       refs[i] = refs[l];
       refs[l] = r;
-      l -= uint32_t(left);
+      l -= uint32_t(m[0]);
     }
+    lcbox = lc;
+    rcbox = rc;
     return l;
   }
 
