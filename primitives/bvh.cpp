@@ -3,6 +3,7 @@
 #include "huge_page_allocator.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
@@ -12,6 +13,9 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+
+#include <sys/mman.h>
+#include <unistd.h>
 
 namespace lucent {
 
@@ -89,6 +93,20 @@ static_assert(sizeof(Ref) == 32, "build references are 32 bytes");
 // they are large (huge_page_allocator.h): the build writes about 70 MB of fresh memory per
 // million triangles, and a fault per 4 KB page cost about a third of the build.
 using RefVector = std::vector<Ref, HugePageAllocator<Ref>>;
+
+// Makes the whole pages of [p, p + bytes) present and writable in one system call
+// instead of one fault per page (Linux 5.14; elsewhere the pages fault as usual).
+void prefault(void* p, size_t bytes) {
+#ifdef MADV_POPULATE_WRITE
+  const uintptr_t page = uintptr_t(sysconf(_SC_PAGESIZE));
+  uintptr_t b = (uintptr_t(p) + page - 1) & ~(page - 1);
+  uintptr_t e = (uintptr_t(p) + bytes) & ~(page - 1);
+  if (e > b) madvise(reinterpret_cast<void*>(b), e - b, MADV_POPULATE_WRITE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
 
 // A point rounded to float outward, lanes 0..2 (lane 3 is 0): the same as roundDown and
 // roundUp of bvh.h lane by lane, without their branches, which mispredicted about half
@@ -576,13 +594,21 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
 
   // At most one node per item (each holds at least one of the binary tree's interior
   // nodes, which number items - 1, and the root). The allocator leaves new nodes
-  // uninitialised, so those never used cost nothing. Large trees are built in place in
-  // huge pages: building them in huge pages and copying them to ordinary memory, as
-  // before, cost a tenth of the build, and the camera rays were no faster on the copy
-  // (bench/mesh_embree, alternating runs, docs/performance.md).
-  nodes_.resize(refs.size());
+  // uninitialised, so those never used cost nothing.
+  // Large trees are built in huge pages (see HugePageAllocator) and then copied to
+  // ordinary memory made present in one system call per block: camera rays measured 4 to
+  // 7 % slower on nodes left in huge pages (bench/bvh_build, alternating runs), and again
+  // 3 to 10 % slower in four of five alternating pairs when that was tried once more
+  // (the reason was not found); faulting their 4 KB pages one at a time during the build
+  // was slow.
+  const bool scratch = HugePageAllocator<BvhNode>::huge(refs.size());
+  std::vector<BvhNode, HugePageAllocator<BvhNode>> scratchNodes;
+  if (scratch)
+    scratchNodes.resize(refs.size());
+  else
+    nodes_.resize(refs.size());
   order_.resize(refs.size());
-  Builder builder(refs, nodes_.data(), order_.data(), options);
+  Builder builder(refs, scratch ? scratchNodes.data() : nodes_.data(), order_.data(), options);
   Child root;
   root.begin = 0;
   root.end = static_cast<uint32_t>(refs.size());
@@ -592,11 +618,30 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
   builder.decide(root);
   // A root that is a leaf becomes node 0's only child.
   depth_ = builder.build(0, root);
-  // The references (32 bytes per item) are done with.
+  const size_t nodeCount = builder.nodeCount();
+  // The references (32 bytes per item) are done with: freed before the nodes are copied,
+  // so the two are never held at once (the peak of loading a large mesh).
   refs = RefVector();
-  // The capacity stays: the nodes beyond nodeCount were never touched (address space,
-  // not memory), and shrinking would copy the tree.
-  nodes_.resize(builder.nodeCount());
+  if (scratch) {
+    BvhNodes out;
+    out.resize(nodeCount);  // exact capacity, uninitialised
+    // In blocks of 1 MB, in parallel when allowed (the copy is memory-bound work that
+    // would otherwise leave the other threads idle at the end of the build).
+    constexpr size_t kBlock = (size_t(1) << 20) / sizeof(BvhNode);
+    auto copy = [&](size_t first, size_t last) {
+      prefault(out.data() + first, (last - first) * sizeof(BvhNode));
+      std::memcpy(static_cast<void*>(out.data() + first), scratchNodes.data() + first,
+                  (last - first) * sizeof(BvhNode));
+    };
+    if (options.parallel)
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), kBlock),
+                        [&](const tbb::blocked_range<size_t>& r) { copy(r.begin(), r.end()); });
+    else
+      copy(0, out.size());
+    nodes_ = std::move(out);
+  } else {
+    nodes_.resize(nodeCount);
+  }
 }
 
 }  // namespace lucent

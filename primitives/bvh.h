@@ -3,7 +3,6 @@
 #pragma once
 
 #include "aabb.h"
-#include "huge_page_allocator.h"
 #include "ray.h"
 #include "uninitialised_construct.h"
 
@@ -40,8 +39,8 @@ struct alignas(64) BvhNode {
 };
 static_assert(sizeof(BvhNode) == 128, "four 32-byte child entries in two cache lines");
 
-// Allocates on 64-byte boundaries and leaves new elements uninitialised on resize (the
-// world's leaf array).
+// Allocates on 64-byte boundaries and leaves new elements uninitialised on resize, so
+// the nodes the build reserves but never reaches are never touched (cost no memory).
 template <class T>
 struct CacheLineAllocator : UninitialisedConstruct {
   using value_type = T;
@@ -56,10 +55,7 @@ struct CacheLineAllocator : UninitialisedConstruct {
   friend bool operator!=(const CacheLineAllocator&, const CacheLineAllocator&) { return false; }
 };
 
-// Large node arrays live in huge pages (HugeVector, aligned to 64 bytes either way). The
-// build reserves one node per item and leaves new elements uninitialised, so the nodes it
-// never reaches are never touched and cost no memory.
-using BvhNodes = HugeVector<BvhNode>;
+using BvhNodes = std::vector<BvhNode, CacheLineAllocator<BvhNode>>;
 
 namespace bvh_detail {
 

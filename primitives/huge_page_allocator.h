@@ -1,5 +1,4 @@
-// An allocator for large arrays (BVH nodes, build scratch): blocks of 4 MB or more in
-// transparent huge pages.
+// An allocator for large temporary arrays: blocks of 4 MB or more in transparent huge pages.
 #pragma once
 
 #include "uninitialised_construct.h"
