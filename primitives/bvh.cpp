@@ -3,7 +3,6 @@
 #include "huge_page_allocator.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
@@ -219,8 +218,18 @@ struct Child {
 class Builder {
  public:
   // nodes: room for one node per ref; order: one slot per ref, filled at the leaves.
-  Builder(RefVector& refs, BvhNode* nodes, uint32_t* order, const Bvh::Options& opt)
-      : refs_(refs), nodes_(nodes), order_(order), opt_(opt) {}
+  // capacity: the nodes allocated; prefaultNodes: make them present ahead of the build
+  // (large trees), instead of a fault per 4 KB page as each is first written.
+  Builder(RefVector& refs, BvhNode* nodes, uint32_t capacity, bool prefaultNodes,
+          uint32_t* order, const Bvh::Options& opt)
+      : refs_(refs),
+        nodes_(nodes),
+        capacity_(capacity),
+        prefault_(prefaultNodes),
+        order_(order),
+        opt_(opt) {
+    makePresent(1);
+  }
 
   uint32_t nodeCount() const { return next_.load(); }
 
@@ -274,6 +283,7 @@ class Builder {
     for (int i = 0; i < k; ++i) interior += !kids[i].leaf;
     uint32_t childNode[4];
     uint32_t nextChild = interior ? next_.fetch_add(uint32_t(interior)) : 0;
+    if (interior) makePresent(nextChild + uint32_t(interior));
     for (int i = 0; i < 4; ++i) {
       for (int a = 0; a < 3; ++a) {
         nd.box[8 * a + i] = i < k ? kids[i].box.lo[a] : INFINITY;
@@ -520,12 +530,31 @@ class Builder {
     }
   }
 
+  // Makes the nodes below `end`, and a block beyond, present: one system call per block
+  // of 1 MB (prefault) instead of a fault per 4 KB page. Whichever thread first needs a
+  // block populates it; a node written before its block is present just faults as usual.
+  void makePresent(uint32_t end) {
+    if (!prefault_) return;
+    constexpr uint32_t kBlock = (1u << 20) / sizeof(BvhNode);
+    uint32_t done = present_.load(std::memory_order_relaxed);
+    while (done < capacity_ && end + kBlock > done) {
+      const uint32_t next = std::min(capacity_, done + kBlock);
+      if (present_.compare_exchange_weak(done, next, std::memory_order_relaxed)) {
+        prefault(nodes_ + done, size_t(next - done) * sizeof(BvhNode));
+        done = next;
+      }
+    }
+  }
+
   RefVector& refs_;
   BvhNode* nodes_;
+  const uint32_t capacity_;
+  const bool prefault_;
   uint32_t* order_;
   const Bvh::Options& opt_;
   // On a cache line of its own: the fields above are read all the time by every thread.
   alignas(64) std::atomic<uint32_t> next_{1};  // node 0 is the root
+  std::atomic<uint32_t> present_{0};           // nodes [0, present_) made present
 };
 
 }  // namespace
@@ -594,21 +623,17 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
 
   // At most one node per item (each holds at least one of the binary tree's interior
   // nodes, which number items - 1, and the root). The allocator leaves new nodes
-  // uninitialised, so those never used cost nothing.
-  // Large trees are built in huge pages (see HugePageAllocator) and then copied to
-  // ordinary memory made present in one system call per block: camera rays measured 4 to
-  // 7 % slower on nodes left in huge pages (bench/bvh_build, alternating runs), and again
-  // 3 to 10 % slower in four of five alternating pairs when that was tried once more
-  // (the reason was not found); faulting their 4 KB pages one at a time during the build
-  // was slow.
-  const bool scratch = HugePageAllocator<BvhNode>::huge(refs.size());
-  std::vector<BvhNode, HugePageAllocator<BvhNode>> scratchNodes;
-  if (scratch)
-    scratchNodes.resize(refs.size());
-  else
-    nodes_.resize(refs.size());
+  // uninitialised, so those never used cost nothing. Large trees are built in place in
+  // ordinary 4 KB pages made present a block ahead of the build (Builder::makePresent).
+  // Not in huge pages: camera rays measured 4 to 7 % slower on nodes in huge pages
+  // (bench/bvh_build, alternating runs), and again 3 to 10 % slower in four of five
+  // alternating pairs when that was tried once more (the reason was not found); and
+  // not built in huge pages and copied, as before: the copy cost 35 ms of a one-thread
+  // build and more on two threads (docs/performance.md, "BVH build speed").
+  nodes_.resize(refs.size());
   order_.resize(refs.size());
-  Builder builder(refs, scratch ? scratchNodes.data() : nodes_.data(), order_.data(), options);
+  Builder builder(refs, nodes_.data(), uint32_t(refs.size()),
+                  HugePageAllocator<BvhNode>::huge(refs.size()), order_.data(), options);
   Child root;
   root.begin = 0;
   root.end = static_cast<uint32_t>(refs.size());
@@ -618,30 +643,12 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
   builder.decide(root);
   // A root that is a leaf becomes node 0's only child.
   depth_ = builder.build(0, root);
-  const size_t nodeCount = builder.nodeCount();
-  // The references (32 bytes per item) are done with: freed before the nodes are copied,
-  // so the two are never held at once (the peak of loading a large mesh).
+  // The references (32 bytes per item) are done with.
   refs = RefVector();
-  if (scratch) {
-    BvhNodes out;
-    out.resize(nodeCount);  // exact capacity, uninitialised
-    // In blocks of 1 MB, in parallel when allowed (the copy is memory-bound work that
-    // would otherwise leave the other threads idle at the end of the build).
-    constexpr size_t kBlock = (size_t(1) << 20) / sizeof(BvhNode);
-    auto copy = [&](size_t first, size_t last) {
-      prefault(out.data() + first, (last - first) * sizeof(BvhNode));
-      std::memcpy(static_cast<void*>(out.data() + first), scratchNodes.data() + first,
-                  (last - first) * sizeof(BvhNode));
-    };
-    if (options.parallel)
-      tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), kBlock),
-                        [&](const tbb::blocked_range<size_t>& r) { copy(r.begin(), r.end()); });
-    else
-      copy(0, out.size());
-    nodes_ = std::move(out);
-  } else {
-    nodes_.resize(nodeCount);
-  }
+  // The capacity stays: the nodes beyond nodeCount were never touched, save at most a
+  // block made present ahead (address space, not memory), and shrinking would copy the
+  // tree.
+  nodes_.resize(builder.nodeCount());
 }
 
 }  // namespace lucent
