@@ -645,9 +645,9 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
   depth_ = builder.build(0, root);
   // The references (32 bytes per item) are done with.
   refs = RefVector();
-  // The capacity stays: the nodes beyond nodeCount were never touched, save at most a
-  // block made present ahead (address space, not memory), and shrinking would copy the
-  // tree.
+  // The capacity stays: shrinking would copy the tree, and the nodes beyond nodeCount
+  // cost address space, not memory (none was written; at most the 2 MB made present
+  // ahead of the last node are resident).
   nodes_.resize(builder.nodeCount());
 }
 
