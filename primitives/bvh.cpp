@@ -134,9 +134,10 @@ v4f roundedUp(const Vec3& p) {
 constexpr uint32_t kMaxItems = 1u << 29;  // see Ref
 constexpr int kBins = 16;
 // Beyond this depth splits are at the object median, which halves the item count, so the
-// depth stays below kSahDepth + 30 < Bvh::kMaxDepth.
+// depth stays below kSahDepth + 30, plus 3 for leaves split into a node's free slots
+// (Builder::build), < Bvh::kMaxDepth.
 constexpr int kSahDepth = 64;
-static_assert(kSahDepth + 31 < Bvh::kMaxDepth, "traversal stack too small");
+static_assert(kSahDepth + 34 < Bvh::kMaxDepth, "traversal stack too small");
 // Subtrees with fewer items are built by one task.
 constexpr uint32_t kParallelMin = 4096;
 // Nodes with fewer items bin into one set of bins (findSahSplit).
@@ -275,6 +276,29 @@ class Builder {
       kids[best] = left;
       kids[k++] = right;
     }
+    // Slots still free are tested with the others anyway (the four boxes at once), so
+    // leaves of two or more items are split into them: smaller boxes, fewer item tests,
+    // no more nodes. Under the SAH this never costs more: each part's box lies inside
+    // the leaf's. The leaf with the largest area × items goes first.
+    while (k < 4) {
+      int best = -1;
+      float bestCost = -1.0f;
+      for (int i = 0; i < k; ++i) {
+        float cost = kids[i].box.halfArea() * float(kids[i].size());
+        if (kids[i].leaf && kids[i].size() >= 2 && cost > bestCost) {
+          best = i;
+          bestCost = cost;
+        }
+      }
+      if (best < 0) break;
+      Child& c = kids[best];
+      c.sah = c.depth < kSahDepth && findSahSplit(c);
+      Child left, right;
+      apply(c, left, right, /*decideHalves=*/false);
+      left.leaf = right.leaf = true;
+      kids[best] = left;
+      kids[k++] = right;
+    }
 
     BvhNode& nd = nodes_[node];
     // The interior children's nodes side by side, taken with one atomic step: with one
@@ -324,8 +348,8 @@ class Builder {
   }
 
  private:
-  // Splits c as decided, and decides for both halves.
-  void apply(Child& c, Child& left, Child& right) {
+  // Splits c as decided, and decides for both halves unless told not to.
+  void apply(Child& c, Child& left, Child& right, bool decideHalves = true) {
     uint32_t mid;
     left = Child();
     right = Child();
@@ -343,6 +367,7 @@ class Builder {
     right.begin = mid;
     right.end = c.end;
     left.depth = right.depth = c.depth + 1;
+    if (!decideHalves) return;
     decide(left);
     decide(right);
   }

@@ -102,7 +102,8 @@ std::vector<TestTriangle> tessellatedSphere(int rings, int segments, double r, V
 }
 
 // Walks the tree: every node's box holds its children's, every leaf's holds its items'
-// (double boxes, so the float rounding went outward), every item sits in one leaf.
+// (double boxes, so the float rounding went outward), every item sits in one leaf, and
+// a node has free slots only if all its leaves hold one item.
 void requireWellFormed(const Bvh& bvh, const std::vector<AABB>& items, uint32_t maxLeaf) {
   const auto& nodes = bvh.nodes();
   REQUIRE(reinterpret_cast<uintptr_t>(nodes.data()) % 64 == 0);
@@ -139,6 +140,10 @@ void requireWellFormed(const Bvh& bvh, const std::vector<AABB>& items, uint32_t 
       }
     }
     REQUIRE(used >= (i == 0 ? 1 : 2));
+    // A free slot costs nothing to test, so no leaf beside one holds two items or more:
+    // the build splits such leaves into the free slots.
+    if (used < 4)
+      for (int c = 0; c < 4; ++c) REQUIRE((!n.isLeaf(c) || n.count[c] == 1));
   }
   for (size_t i = 0; i < nodes.size(); ++i) REQUIRE(visits[i] == 1);  // a tree, all used
   CHECK(bvh.depth() < Bvh::kMaxDepth);
