@@ -18,7 +18,7 @@ namespace lucent {
 namespace {
 
 // SAH cost of testing a sphere kept in the BVH's leaves, relative to a node visit.
-constexpr double kInlineSphereCost = 0.35;
+constexpr double kInlineSphereCost = 0.2;
 
 bool finiteTransform(const Transform& t) {
   for (int c = 0; c < 4; ++c)
@@ -138,11 +138,12 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
     ++inlineSpheres_;
   }
 
-  // The SAH weighs a leaf by the cost of testing its items: an inline sphere costs about
-  // a third of a node's four-box test (kInlineSphereCost, chosen by bench/bvh_scaling:
-  // 0.25 to 0.5 gave the same times, 1 was 20 % slower at a million spheres, where
-  // larger leaves mean fewer nodes to fetch). Other objects keep the default cost 1; a
-  // mixed world takes the mean.
+  // The SAH weighs a leaf by the cost of testing its items: an inline sphere costs a
+  // fraction of a node's four-box test (kInlineSphereCost). At a million spheres larger
+  // leaves mean fewer nodes to fetch: 1 was 20 % slower than 0.35; since leaves are split
+  // into free node slots (bvh.cpp), 0.2 is 3 % faster than 0.35 there and the same at a
+  // thousand, while 0.5 and 0.8 are 7 % and 25 % slower (docs/performance.md). Other
+  // objects keep the default cost 1; a mixed world takes the mean.
   Bvh::Options options;
   if (!bounded.empty())
     options.itemCost = float((kInlineSphereCost * double(inlineSpheres_) +
