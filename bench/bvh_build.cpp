@@ -32,7 +32,7 @@ double sahCost(const Bvh& bvh) {
   const BvhNodes& nodes = bvh.nodes();
   double root = halfArea(bvh.bounds()), cost = 1.0;
   for (const BvhNode& n : nodes)
-    for (int c = 0; c < 4; ++c) {
+    for (int c = 0; c < BvhNode::kWidth; ++c) {
       if (n.isEmpty(c)) continue;
       double p = halfArea(n.bounds(c)) / root;
       cost += p * (n.isLeaf(c) ? double(n.count[c]) : 1.0);

@@ -22,8 +22,8 @@ BvhRay::BvhRay(const Ray& r) : o(r.o), invDir(1.0 / r.d) {
   for (int a = 0; a < 3; ++a) {
     // A -0 component gives -inf: the ray runs towards lo, so hi is its near plane.
     bool negative = std::signbit(invDir[a]);
-    nearOff[a] = 8 * a + (negative ? 4 : 0);
-    farOff[a] = 8 * a + (negative ? 0 : 4);
+    nearOff[a] = negative ? BvhNode::hi(a) : BvhNode::lo(a);
+    farOff[a] = negative ? BvhNode::lo(a) : BvhNode::hi(a);
   }
 }
 
@@ -31,7 +31,7 @@ BvhRay::BvhRay(const Ray& r) : o(r.o), invDir(1.0 / r.d) {
 AABB Bvh::bounds() const {
   AABB b;
   if (empty()) return b;
-  for (int c = 0; c < 4; ++c)
+  for (int c = 0; c < BvhNode::kWidth; ++c)
     if (!nodes_[0].isEmpty(c)) b.expand(nodes_[0].bounds(c));
   return b;
 }
@@ -134,10 +134,10 @@ v4f roundedUp(const Vec3& p) {
 constexpr uint32_t kMaxItems = 1u << 29;  // see Ref
 constexpr int kBins = 16;
 // Beyond this depth splits are at the object median, which halves the item count, so the
-// depth stays below kSahDepth + 30, plus 3 for leaves split into a node's free slots
-// (Builder::build), < Bvh::kMaxDepth.
+// depth stays below kSahDepth + 30, plus up to 7 for leaves (at most 8 items) split into
+// a node's free slots (Builder::build), < Bvh::kMaxDepth.
 constexpr int kSahDepth = 64;
-static_assert(kSahDepth + 34 < Bvh::kMaxDepth, "traversal stack too small");
+static_assert(kSahDepth + 38 < Bvh::kMaxDepth, "traversal stack too small");
 // Subtrees with fewer items are built by one task.
 constexpr uint32_t kParallelMin = 4096;
 // Nodes with fewer items bin into one set of bins (findSahSplit).
@@ -252,15 +252,16 @@ class Builder {
     }
   }
 
-  // Fills node `node` with up to four children, made by splitting `self` (unless it is a
+  // Fills node `node` with up to W children, made by splitting `self` (unless it is a
   // leaf) and then its largest non-leaf part again; recurses into the children that are
   // not leaves.
   // Returns the depth (binary splits) of the deepest leaf below.
   int build(uint32_t node, const Child& self) {
-    Child kids[4];
+    constexpr int W = BvhNode::kWidth;
+    Child kids[W];
     int k = 1;
     kids[0] = self;
-    while (k < 4) {
+    while (k < W) {
       int best = -1;
       float bestArea = -1.0f;
       for (int i = 0; i < k; ++i) {
@@ -276,11 +277,11 @@ class Builder {
       kids[best] = left;
       kids[k++] = right;
     }
-    // Slots still free are tested with the others anyway (the four boxes at once), so
+    // Slots still free are tested with the others anyway (all W boxes at once), so
     // leaves of two or more items are split into them: smaller boxes, fewer item tests,
     // no more nodes. Under the SAH this never costs more: each part's box lies inside
     // the leaf's. The leaf with the largest area × items goes first.
-    while (k < 4) {
+    while (k < W) {
       int best = -1;
       float bestCost = -1.0f;
       for (int i = 0; i < k; ++i) {
@@ -292,7 +293,8 @@ class Builder {
       }
       if (best < 0) break;
       Child& c = kids[best];
-      c.sah = c.depth < kSahDepth && findSahSplit(c);
+      // Two items part the same way whatever the plane: no binning for them.
+      c.sah = c.size() > 2 && c.depth < kSahDepth && findSahSplit(c);
       Child left, right;
       apply(c, left, right, /*decideHalves=*/false);
       left.leaf = right.leaf = true;
@@ -305,13 +307,13 @@ class Builder {
     // step per child, the two threads of a parallel build contended for the counter.
     int interior = 0;
     for (int i = 0; i < k; ++i) interior += !kids[i].leaf;
-    uint32_t childNode[4];
+    uint32_t childNode[W];
     uint32_t nextChild = interior ? next_.fetch_add(uint32_t(interior)) : 0;
     if (interior) makePresent(nextChild + uint32_t(interior));
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < W; ++i) {
       for (int a = 0; a < 3; ++a) {
-        nd.box[8 * a + i] = i < k ? kids[i].box.lo[a] : INFINITY;
-        nd.box[8 * a + 4 + i] = i < k ? kids[i].box.hi[a] : -INFINITY;
+        nd.box[BvhNode::lo(a) + i] = i < k ? kids[i].box.lo[a] : INFINITY;
+        nd.box[BvhNode::hi(a) + i] = i < k ? kids[i].box.hi[a] : -INFINITY;
       }
       if (i >= k) {
         nd.index[i] = BvhNode::kEmpty;
@@ -332,7 +334,7 @@ class Builder {
       }
     }
 
-    int depth[4] = {0, 0, 0, 0};
+    int depth[W] = {};
     auto sub = [&](int i) {
       depth[i] = kids[i].leaf ? kids[i].depth : build(childNode[i], kids[i]);
     };

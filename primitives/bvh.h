@@ -17,27 +17,44 @@
 
 namespace lucent {
 
-// A node of the 4-wide tree: four child entries of 32 bytes each (a float box and a
-// reference), stored axis-major in two cache lines so the four boxes are tested with one
-// set of 4-wide float operations. Boxes are rounded outward from the items' double boxes,
-// so they still contain every item. A child is interior (count 0: its node is `index`),
-// a leaf (items in slots [index, index + count)), or an empty slot (kEmpty; its box is
-// inverted, lo = +inf and hi = -inf, so every slab test misses it).
+// Children per node: 8 where the target has 8-wide float vectors (AVX, as Embree chooses
+// there: fewer levels, so fewer dependent cache misses per ray), else 4. A build may set
+// it with -DLUCENT_BVH_WIDTH=4 or 8 (docs/performance.md compares the two).
+#ifndef LUCENT_BVH_WIDTH
+#if defined(__AVX__)
+#define LUCENT_BVH_WIDTH 8
+#else
+#define LUCENT_BVH_WIDTH 4
+#endif
+#endif
+
+// A node of the W-wide tree: W child entries of 32 bytes each (a float box and a
+// reference), stored axis-major so the W boxes are tested with one set of W-wide float
+// operations. Boxes are rounded outward from the items' double boxes, so they still
+// contain every item. A child is interior (count 0: its node is `index`), a leaf (items
+// in slots [index, index + count)), or an empty slot (kEmpty; its box is inverted, lo =
+// +inf and hi = -inf, so every slab test misses it).
 struct alignas(64) BvhNode {
-  float box[24];  // box[8·axis + c] is child c's lo on that axis, box[8·axis + 4 + c] its hi
-  uint32_t index[4];
-  uint32_t count[4];
+  static constexpr int kWidth = LUCENT_BVH_WIDTH;
+  // box[2W·axis + c] is child c's lo on that axis, box[2W·axis + W + c] its hi
+  float box[6 * kWidth];
+  uint32_t index[kWidth];
+  uint32_t count[kWidth];
 
   static constexpr uint32_t kEmpty = 0xffffffffu;
 
   bool isEmpty(int c) const { return count[c] == 0 && index[c] == kEmpty; }
   bool isLeaf(int c) const { return count[c] != 0; }
   bool isInterior(int c) const { return count[c] == 0 && index[c] != kEmpty; }
+  static constexpr int lo(int axis) { return 2 * kWidth * axis; }
+  static constexpr int hi(int axis) { return 2 * kWidth * axis + kWidth; }
   AABB bounds(int c) const {
-    return {Vec3(box[c], box[8 + c], box[16 + c]), Vec3(box[4 + c], box[12 + c], box[20 + c])};
+    return {Vec3(box[lo(0) + c], box[lo(1) + c], box[lo(2) + c]),
+            Vec3(box[hi(0) + c], box[hi(1) + c], box[hi(2) + c])};
   }
 };
-static_assert(sizeof(BvhNode) == 128, "four 32-byte child entries in two cache lines");
+static_assert(BvhNode::kWidth == 4 || BvhNode::kWidth == 8, "4- or 8-wide nodes");
+static_assert(sizeof(BvhNode) == BvhNode::kWidth * 32, "32-byte child entries");
 
 // Allocates on 64-byte boundaries and leaves new elements uninitialised on resize, so
 // the nodes the build reserves but never reaches are never touched (cost no memory).
@@ -62,6 +79,9 @@ namespace bvh_detail {
 // GCC/Clang vector extensions: SSE on x86-64, NEON on ARM, scalar code elsewhere.
 typedef float v4f __attribute__((vector_size(16)));
 typedef int32_t v4i __attribute__((vector_size(16)));
+// One lane per child of a node (the traversal's node test).
+typedef float vwf __attribute__((vector_size(4 * BvhNode::kWidth)));
+typedef int32_t vwi __attribute__((vector_size(4 * BvhNode::kWidth)));
 
 // a < b ? a : b and a > b ? a : b: so the second operand wherever either is NaN. On SSE
 // these are minps and maxps exactly; written as conditionals, GCC made some of them
@@ -81,17 +101,33 @@ inline v4f vmax(v4f a, v4f b) {
 #endif
 }
 inline v4f splat(float f) { return v4f{f, f, f, f}; }
-inline v4f load(const float* p) {
-  v4f v;
+inline vwf splatW(float f) { return f - vwf{}; }
+// minps/maxps of the node width where the target has them (the same NaN rule as vmin).
+#if LUCENT_BVH_WIDTH == 8 && defined(__AVX__)
+inline vwf wmin(vwf a, vwf b) { return __builtin_ia32_minps256(a, b); }
+inline vwf wmax(vwf a, vwf b) { return __builtin_ia32_maxps256(a, b); }
+#elif LUCENT_BVH_WIDTH == 4 && defined(__SSE__)
+inline vwf wmin(vwf a, vwf b) { return __builtin_ia32_minps(a, b); }
+inline vwf wmax(vwf a, vwf b) { return __builtin_ia32_maxps(a, b); }
+#else
+inline vwf wmin(vwf a, vwf b) { return a < b ? a : b; }
+inline vwf wmax(vwf a, vwf b) { return a > b ? a : b; }
+#endif
+inline vwf loadW(const float* p) {
+  vwf v;
   std::memcpy(&v, p, sizeof v);
   return v;
 }
 // Bit c set when lane c of the comparison result is true.
-inline int laneMask(v4i m) {
-#if defined(__SSE__)
-  return __builtin_ia32_movmskps(reinterpret_cast<v4f>(m));
+inline int laneMask(vwi m) {
+#if LUCENT_BVH_WIDTH == 8 && defined(__AVX__)
+  return __builtin_ia32_movmskps256(reinterpret_cast<vwf>(m));
+#elif LUCENT_BVH_WIDTH == 4 && defined(__SSE__)
+  return __builtin_ia32_movmskps(reinterpret_cast<vwf>(m));
 #else
-  return (m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8);
+  int mask = 0;
+  for (int c = 0; c < BvhNode::kWidth; ++c) mask |= (m[c] & 1) << c;
+  return mask;
 #endif
 }
 
@@ -115,7 +151,7 @@ inline float roundUp(double x) {
   return double(f) < x ? nextUp(f) : f;
 }
 
-// Slab test of a node's four boxes in float, for rays whose direction has no zero
+// Slab test of a node's W boxes in float, for rays whose direction has no zero
 // component (so no 0·inf NaN can arise). Conservative, after Ize 2013 ("Robust BVH Ray
 // Traversal"): for each plane the origin is rounded the way that moves the plane's
 // distance outward (up for lo planes, down for hi planes, whatever the direction's
@@ -123,12 +159,13 @@ inline float roundUp(double x) {
 // rounding of the subtraction, the reciprocal and the product. So no box is missed
 // through rounding; distances beyond float range (3.4e38) count as infinite.
 struct FastNodeTest {
+  static constexpr int W = BvhNode::kWidth;
   int nearOff[3], farOff[3];  // offsets in BvhNode::box of the near and far planes
-  v4f orgNear[3], orgFar[3];  // the origin, rounded for the near and far planes
-  v4f inv[3];                 // 1/d in float
-  v4f tmin;                   // rounded down
+  vwf orgNear[3], orgFar[3];  // the origin, rounded for the near and far planes
+  vwf inv[3];                 // 1/d in float
+  vwf tmin;                   // rounded down
 
-  static constexpr v4i kAbsMask = {0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
+  static constexpr v4i kAbsMask4 = {0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
   // 2·gamma(3) for float (pbrt's gamma with the float unit roundoff).
   static constexpr float kWiden =
       2.0f * (3.0f * (FLT_EPSILON * 0.5f)) / (1.0f - 3.0f * (FLT_EPSILON * 0.5f));
@@ -139,7 +176,7 @@ struct FastNodeTest {
     // The origin rounded to float and then moved outward by more than the rounding:
     // |o - f| <= ulp(f)/2 < |f|·2^-23, and FLT_MIN covers an origin that rounds to 0.
     v4f o = {float(r.o.x), float(r.o.y), float(r.o.z), 0.0f};
-    v4f absO = reinterpret_cast<v4f>(reinterpret_cast<v4i>(o) & kAbsMask);
+    v4f absO = reinterpret_cast<v4f>(reinterpret_cast<v4i>(o) & kAbsMask4);
     v4f slack = absO * splat(FLT_EPSILON) + splat(FLT_MIN);
     v4f up = o + slack, down = o - slack;
     usable = true;
@@ -149,29 +186,30 @@ struct FastNodeTest {
                std::abs(r.o[a]) < double(FLT_MAX);
       bool negative = r.d[a] < 0.0;
       // Going up the axis the lo plane is met first; going down, the hi plane.
-      nearOff[a] = 8 * a + (negative ? 4 : 0);
-      farOff[a] = 8 * a + (negative ? 0 : 4);
-      orgNear[a] = splat(negative ? down[a] : up[a]);
-      orgFar[a] = splat(negative ? up[a] : down[a]);
-      inv[a] = splat(static_cast<float>(invD));
+      nearOff[a] = negative ? BvhNode::hi(a) : BvhNode::lo(a);
+      farOff[a] = negative ? BvhNode::lo(a) : BvhNode::hi(a);
+      orgNear[a] = splatW(negative ? down[a] : up[a]);
+      orgFar[a] = splatW(negative ? up[a] : down[a]);
+      inv[a] = splatW(static_cast<float>(invD));
     }
-    tmin = splat(roundDown(r.tmin));
+    tmin = splatW(roundDown(r.tmin));
   }
 
   // Bit c set if child c's box overlaps [tmin, tmax]; tEnter[c] is then a lower bound
   // of its entry distance.
-  int test(const BvhNode& n, float tmaxUp, float tEnter[4]) const {
-    v4f t0 = tmin, t1 = splat(tmaxUp);
+  int test(const BvhNode& n, float tmaxUp, float tEnter[W]) const {
+    vwf t0 = tmin, t1 = splatW(tmaxUp);
     for (int a = 0; a < 3; ++a) {
-      v4f tn = (load(n.box + nearOff[a]) - orgNear[a]) * inv[a];
-      v4f tf = (load(n.box + farOff[a]) - orgFar[a]) * inv[a];
-      t0 = vmax(t0, tn);
-      t1 = vmin(t1, tf);
+      vwf tn = (loadW(n.box + nearOff[a]) - orgNear[a]) * inv[a];
+      vwf tf = (loadW(n.box + farOff[a]) - orgFar[a]) * inv[a];
+      t0 = wmax(t0, tn);
+      t1 = wmin(t1, tf);
     }
     // Widen both ends by the rounding bound: t0 - |t0|·k and t1 + |t1|·k.
-    v4f k = splat(kWiden);
-    t0 = t0 - reinterpret_cast<v4f>(reinterpret_cast<v4i>(t0) & kAbsMask) * k;
-    t1 = t1 + reinterpret_cast<v4f>(reinterpret_cast<v4i>(t1) & kAbsMask) * k;
+    const vwi absMask = 0x7fffffff - vwi{};
+    vwf k = splatW(kWiden);
+    t0 = t0 - reinterpret_cast<vwf>(reinterpret_cast<vwi>(t0) & absMask) * k;
+    t1 = t1 + reinterpret_cast<vwf>(reinterpret_cast<vwi>(t1) & absMask) * k;
     std::memcpy(tEnter, &t0, sizeof t0);
     return laneMask(t0 <= t1);
   }
@@ -223,9 +261,9 @@ struct BvhOptions {
 };
 
 // Built top-down with the binned surface-area heuristic (Wald 2007, "On fast Construction
-// of SAH-based Bounding Volume Hierarchies"), each node taking up to four children by
-// splitting its largest child again (as Embree's BVH4 builders do), in parallel with TBB
-// for large inputs; traversed front to back with an explicit stack.
+// of SAH-based Bounding Volume Hierarchies"), each node taking up to W children by
+// splitting its largest child again (as Embree's BVH4 and BVH8 builders do), in parallel
+// with TBB for large inputs; traversed front to back with an explicit stack.
 //
 // Items are numbered 0..count-1 by the caller. The build reorders them into leaf slots;
 // order() maps a slot back to the caller's item number. A caller that reorders its own
@@ -256,7 +294,7 @@ class Bvh {
   size_t memoryBytes() const {
     return nodes_.size() * sizeof(BvhNode) + order_.capacity() * sizeof(uint32_t);
   }
-  // Levels of the binary splits the build made (the 4-wide tree has fewer).
+  // Levels of the binary splits the build made (the W-wide tree has fewer).
   int depth() const { return depth_; }
 
   // The traversal every query below is made of: visit(uint32_t item) for the items of
@@ -312,9 +350,10 @@ class Bvh {
     BvhRay r;
     double tmin;
     explicit SafeNodeTest(const Ray& ray) : r(ray), tmin(ray.tmin) {}
-    int test(const BvhNode& n, double tmax, double tEnter[4]) const {
+    int test(const BvhNode& n, double tmax, double tEnter[BvhNode::kWidth]) const {
       int mask = 0;
-      for (int c = 0; c < 4; ++c) mask |= int(r.enters(n, c, tmin, tmax, tEnter[c])) << c;
+      for (int c = 0; c < BvhNode::kWidth; ++c)
+        mask |= int(r.enters(n, c, tmin, tmax, tEnter[c])) << c;
       return mask;
     }
   };
@@ -333,15 +372,15 @@ class Bvh {
     uint32_t index, count;
     T t;
   };
-  // Up to three children wait per level of the 4-wide tree, which has at most
+  // Up to W - 1 children wait per level of the W-wide tree, which has at most
   // kMaxDepth levels.
-  static constexpr int kStackSize = 3 * kMaxDepth + 1;
+  static constexpr int kStackSize = (BvhNode::kWidth - 1) * kMaxDepth + 1;
 
   // Pushes the children in `mask` (two or more) farthest first, keeping the nearest in
   // `next`: the caller descends into it.
   template <class T>
-  static void pushOrdered(const BvhNode& n, int mask, const T tEnter[4], Entry<T>* stack,
-                          int& sp, Entry<T>& next);
+  static void pushOrdered(const BvhNode& n, int mask, const T tEnter[BvhNode::kWidth],
+                          Entry<T>* stack, int& sp, Entry<T>& next);
 
   template <class Test, class Visit>
   bool candidatesWith(const Test& test, const double& tFar, Visit& visit) const;
@@ -353,8 +392,8 @@ class Bvh {
 };
 
 template <class T>
-void Bvh::pushOrdered(const BvhNode& n, int mask, const T tEnter[4], Entry<T>* stack, int& sp,
-                      Entry<T>& next) {
+void Bvh::pushOrdered(const BvhNode& n, int mask, const T tEnter[BvhNode::kWidth],
+                      Entry<T>* stack, int& sp, Entry<T>& next) {
   int c0 = __builtin_ctz(mask);
   mask &= mask - 1;
   int c1 = __builtin_ctz(mask);
@@ -366,8 +405,8 @@ void Bvh::pushOrdered(const BvhNode& n, int mask, const T tEnter[4], Entry<T>* s
     next = a;
     return;
   }
-  // Three or four: insertion sort, farthest first.
-  Entry<T> e[4] = {b, a};
+  // More: insertion sort, farthest first.
+  Entry<T> e[BvhNode::kWidth] = {b, a};
   int k = 2;
   for (; mask; mask &= mask - 1) {
     int c = __builtin_ctz(mask);
@@ -386,7 +425,7 @@ bool Bvh::candidatesWith(const Test& test, const double& tFar, Visit& visit) con
   double lastFar = tFar;
   auto tmax = limit(test, lastFar);
   using T = decltype(tmax);
-  T tEnter[4];
+  T tEnter[BvhNode::kWidth];
   Entry<T> stack[kStackSize];
   int sp = 0;
   Entry<T> cur{0, 0, T(0)};  // the root: node 0

@@ -13,10 +13,11 @@ namespace lucent {
 namespace {
 // Subtrees of at most this many triangles are BVH leaves without a split search.
 constexpr uint32_t kMinLeaf = 2;
-// The SAH's cost of visiting a node, in triangle tests. With 1 the 1M-triangle mesh had
-// 268k nodes (34 B per triangle); with 3, 112k (14 B) and its build took 30 % less
-// time, for the same ray speed (2 and 4 were no faster; docs/performance.md).
-constexpr float kNodeCost = 3.0f;
+// The SAH's cost of visiting a node, in triangle tests. 4-wide: with 1 the 1M-triangle
+// mesh had 268k nodes (34 B per triangle); with 3, 112k (14 B) and its build took 30 %
+// less time, for the same ray speed (2 and 4 were no faster). 8-wide: 4 builds 6 % fewer
+// instructions than 3 for rays 1 to 3 % slower (docs/performance.md).
+constexpr float kNodeCost = BvhNode::kWidth == 8 ? 4.0f : 3.0f;
 
 // isDegenerateTriangle's decision (watertight.cpp: |e1 × e2| <= gamma(6)·|e1|·|e2|) with
 // its three square roots spent only where it is close. Squared, the test reads

@@ -139,7 +139,7 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   }
 
   // The SAH weighs a leaf by the cost of testing its items: an inline sphere costs a
-  // fraction of a node's four-box test (kInlineSphereCost). At a million spheres larger
+  // fraction of a node's box test (kInlineSphereCost). At a million spheres larger
   // leaves mean fewer nodes to fetch: 1 was 20 % slower than 0.35; since leaves are split
   // into free node slots (bvh.cpp), 0.2 is 3 % faster than 0.35 there and the same at a
   // thousand, while 0.5 and 0.8 are 7 % and 25 % slower (docs/performance.md). Other

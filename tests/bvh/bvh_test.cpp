@@ -121,7 +121,7 @@ void requireWellFormed(const Bvh& bvh, const std::vector<AABB>& items, uint32_t 
     visits[i]++;
     const BvhNode& n = nodes[i];
     int used = 0;
-    for (int c = 0; c < 4; ++c) {
+    for (int c = 0; c < BvhNode::kWidth; ++c) {
       if (n.isEmpty(c)) {
         CHECK(n.bounds(c).empty());
         continue;
@@ -142,8 +142,8 @@ void requireWellFormed(const Bvh& bvh, const std::vector<AABB>& items, uint32_t 
     REQUIRE(used >= (i == 0 ? 1 : 2));
     // A free slot costs nothing to test, so no leaf beside one holds two items or more:
     // the build splits such leaves into the free slots.
-    if (used < 4)
-      for (int c = 0; c < 4; ++c) REQUIRE((!n.isLeaf(c) || n.count[c] == 1));
+    if (used < BvhNode::kWidth)
+      for (int c = 0; c < BvhNode::kWidth; ++c) REQUIRE((!n.isLeaf(c) || n.count[c] == 1));
   }
   for (size_t i = 0; i < nodes.size(); ++i) REQUIRE(visits[i] == 1);  // a tree, all used
   CHECK(bvh.depth() < Bvh::kMaxDepth);
@@ -155,8 +155,8 @@ void requireWellFormed(const Bvh& bvh, const std::vector<AABB>& items, uint32_t 
 
 }  // namespace
 
-TEST_CASE("BVH nodes hold four 32-byte child entries in two cache lines", "[bvh]") {
-  CHECK(sizeof(BvhNode) == 4 * 32);
+TEST_CASE("BVH nodes hold 32-byte child entries on cache-line boundaries", "[bvh]") {
+  CHECK(sizeof(BvhNode) == BvhNode::kWidth * 32);
   CHECK(alignof(BvhNode) == 64);
 }
 
