@@ -134,10 +134,11 @@ v4f roundedUp(const Vec3& p) {
 constexpr uint32_t kMaxItems = 1u << 29;  // see Ref
 constexpr int kBins = 16;
 // Beyond this depth splits are at the object median, which halves the item count, so the
-// depth stays below kSahDepth + 30, plus up to 7 for leaves (at most 8 items) split into
-// a node's free slots (Builder::build), < Bvh::kMaxDepth.
+// depth stays below kSahDepth + 30, plus at most W - 1 for leaves split into a node's
+// free slots (Builder::build: one split per free slot), < Bvh::kMaxDepth.
 constexpr int kSahDepth = 64;
-static_assert(kSahDepth + 38 < Bvh::kMaxDepth, "traversal stack too small");
+static_assert(kSahDepth + 30 + (BvhNode::kWidth - 1) < Bvh::kMaxDepth,
+              "traversal stack too small");
 // Subtrees with fewer items are built by one task.
 constexpr uint32_t kParallelMin = 4096;
 // Nodes with fewer items bin into one set of bins (findSahSplit).
