@@ -302,33 +302,48 @@ class Bvh {
   // is read again after every call, so a closest-hit search can shrink it and skip the
   // boxes that start beyond; visit returns false to end the search. Returns false if
   // it was ended so.
-  template <class Visit>
-  bool candidates(const Ray& ray, const double& tFar, Visit&& visit) const {
+  //
+  // prefetch(uint32_t first, uint32_t count) is called for each leaf as soon as its box
+  // is found entered, with the leaf's slots [first, first + count): a caller that keeps
+  // its items' data in slot order (the world's spheres) can ask the processor to fetch
+  // it, so that the cache misses of a node's leaves overlap instead of coming one after
+  // another as the search reaches them. The entered interior nodes are fetched the same
+  // way. NoPrefetch fetches nothing.
+  struct NoPrefetch {
+    void operator()(uint32_t, uint32_t) const {}
+  };
+  template <class Visit, class Prefetch = NoPrefetch>
+  bool candidates(const Ray& ray, const double& tFar, Visit&& visit,
+                  Prefetch&& prefetch = Prefetch()) const {
     if (nodes_.empty()) return true;
     bvh_detail::FastNodeTest fast(ray);
-    if (fast.usable) return candidatesWith(fast, tFar, visit);
-    return candidatesWith(SafeNodeTest(ray), tFar, visit);
+    if (fast.usable) return candidatesWith(fast, tFar, visit, prefetch);
+    return candidatesWith(SafeNodeTest(ray), tFar, visit, prefetch);
   }
 
   // Closest hit. hitItem(uint32_t item, Ray& ray) tests one item against (ray.tmin,
   // ray.tmax); on a closer hit it records it, shrinks ray.tmax to it and returns true.
-  // Returns whether any call returned true.
-  template <class HitItem>
-  bool closest(const Ray& ray, HitItem&& hitItem) const {
+  // Returns whether any call returned true. prefetch as for candidates().
+  template <class HitItem, class Prefetch = NoPrefetch>
+  bool closest(const Ray& ray, HitItem&& hitItem, Prefetch&& prefetch = Prefetch()) const {
     Ray r = ray;
     bool found = false;
-    candidates(r, r.tmax, [&](uint32_t item) {
-      if (hitItem(item, r)) found = true;
-      return true;
-    });
+    candidates(
+        r, r.tmax,
+        [&](uint32_t item) {
+          if (hitItem(item, r)) found = true;
+          return true;
+        },
+        prefetch);
     return found;
   }
 
   // Any hit (shadow rays): blocks(uint32_t item, const Ray& ray) says whether the item has
   // a hit in (ray.tmin, ray.tmax); the search stops at the first true.
-  template <class Blocks>
-  bool any(const Ray& ray, Blocks&& blocks) const {
-    return !candidates(ray, ray.tmax, [&](uint32_t item) { return !blocks(item, ray); });
+  template <class Blocks, class Prefetch = NoPrefetch>
+  bool any(const Ray& ray, Blocks&& blocks, Prefetch&& prefetch = Prefetch()) const {
+    return !candidates(
+        ray, ray.tmax, [&](uint32_t item) { return !blocks(item, ray); }, prefetch);
   }
 
   // Every item whose box the ray overlaps in [ray.tmin, ray.tmax]: visit(uint32_t item)
@@ -366,6 +381,12 @@ class Bvh {
 
   uint32_t itemOf(uint32_t slot) const { return order_.empty() ? slot : order_[slot]; }
 
+  // Asks for node i's cache lines (a hint: never faults, costs no wait).
+  void prefetchNode(uint32_t i) const {
+    const char* p = reinterpret_cast<const char*>(nodes_.data() + i);
+    for (size_t line = 0; line < sizeof(BvhNode); line += 64) __builtin_prefetch(p + line);
+  }
+
   // A child to visit: a node (count 0) or a leaf's slots, with its entry distance.
   template <class T>
   struct Entry {
@@ -382,8 +403,9 @@ class Bvh {
   static void pushOrdered(const BvhNode& n, int mask, const T tEnter[BvhNode::kWidth],
                           Entry<T>* stack, int& sp, Entry<T>& next);
 
-  template <class Test, class Visit>
-  bool candidatesWith(const Test& test, const double& tFar, Visit& visit) const;
+  template <class Test, class Visit, class Prefetch>
+  bool candidatesWith(const Test& test, const double& tFar, Visit& visit,
+                      Prefetch& prefetch) const;
 
   BvhNodes nodes_;
   std::vector<uint32_t> order_;
@@ -419,8 +441,9 @@ void Bvh::pushOrdered(const BvhNode& n, int mask, const T tEnter[BvhNode::kWidth
   next = e[k - 1];
 }
 
-template <class Test, class Visit>
-bool Bvh::candidatesWith(const Test& test, const double& tFar, Visit& visit) const {
+template <class Test, class Visit, class Prefetch>
+bool Bvh::candidatesWith(const Test& test, const double& tFar, Visit& visit,
+                         Prefetch& prefetch) const {
   if (nodes_.empty()) return true;
   double lastFar = tFar;
   auto tmax = limit(test, lastFar);
@@ -434,6 +457,15 @@ bool Bvh::candidatesWith(const Test& test, const double& tFar, Visit& visit) con
       const BvhNode& n = nodes_[cur.index];
       int mask = test.test(n, tmax, tEnter);
       if (mask) {
+        // Fetch every entered child now (a million spheres: about 5 % faster; meshes,
+        // whose leaves are not in slot order, fetch only the nodes and are unchanged).
+        for (int m = mask; m; m &= m - 1) {
+          const int c = __builtin_ctz(m);
+          if (n.count[c] == 0)
+            prefetchNode(n.index[c]);
+          else
+            prefetch(n.index[c], n.count[c]);
+        }
         if ((mask & (mask - 1)) == 0) {
           int c = __builtin_ctz(mask);
           cur = {n.index[c], n.count[c], tEnter[c]};

@@ -206,13 +206,20 @@ bool World::intersect(const Ray& ray, Hit& hit) const {
     sphereSlot = i;
     sphereT = rr.tmax;
     return true;
-  });
+  }, [this](uint32_t first, uint32_t count) { prefetchLeaves(first, count); });
   if (sphereSlot != kNoSlot) {
     hit = Hit();
     hit.t = sphereT;
     hit.shape = leafObjects_[sphereSlot];
   }
   return found || inTree;
+}
+
+void World::prefetchLeaves(uint32_t first, uint32_t count) const {
+  const char* p = reinterpret_cast<const char*>(leaves_.data() + first);
+  const char* end = reinterpret_cast<const char*>(leaves_.data() + first + count);
+  // From the cache line holding the first record (the records are 32 bytes, aligned).
+  for (p -= reinterpret_cast<uintptr_t>(p) & 63; p < end; p += 64) __builtin_prefetch(p);
 }
 
 bool World::slotOccluded(uint32_t slot, const Ray& ray) const {
@@ -242,7 +249,7 @@ World::ObjectId World::occluder(const Ray& ray, ObjectId first) const {
     if (id == first || !slotOccluded(slot, r)) return false;  // `first` missed already
     found = id;
     return true;
-  });
+  }, [this](uint32_t first, uint32_t count) { prefetchLeaves(first, count); });
   if (found != kNoObject) return found;
   for (ObjectId k = 0; k < directCount; ++k)
     if (k != first && direct_[k]->occluded(ray)) return k;

@@ -83,6 +83,8 @@ class World {
 
   // Any hit of the object in BVH leaf slot `slot`: the one test every search makes of it.
   bool slotOccluded(uint32_t slot, const Ray& ray) const;
+  // Asks for the cache lines of leaves_[first, first + count) (Bvh::candidates).
+  void prefetchLeaves(uint32_t first, uint32_t count) const;
 };
 
 }  // namespace lucent
