@@ -103,6 +103,19 @@ double bestOf(int reps, F&& f) {
   return best;
 }
 
+// The best of `reps` runs of each of a and b, run in turn (a, b, a, b, ...): on this
+// shared machine the speed drifts over seconds, and a slow spell then falls on both
+// instead of on whichever was measured during it, so their ratio is fairer.
+template <class A, class B>
+std::pair<double, double> bestOfAlternating(int reps, A&& a, B&& b) {
+  double bestA = 1e300, bestB = 1e300;
+  for (int i = 0; i < reps; ++i) {
+    bestA = std::min(bestA, bestOf(1, a));
+    bestB = std::min(bestB, bestOf(1, b));
+  }
+  return {bestA, bestB};
+}
+
 // The CPU time of the calling thread (seconds): unlike the wall clock it does not count
 // the time the thread waits for a core, so one-thread figures survive a busy machine
 // (the caches it shares with other work still slow it down).

@@ -6,7 +6,8 @@
 //
 // Lucent traces through its World (an instance of the mesh shape: what the renderer
 // calls); Embree through rtcIntersect1/rtcOccluded1, its single-ray interface. Both are
-// given the same double-precision rays (Embree's rounded to float).
+// given the same double-precision rays (Embree's rounded to float). Each figure is the
+// best of several passes, Lucent's and Embree's taken in turn.
 #include "bench_util.h"
 
 #include "primitives/triangle_mesh.h"
@@ -133,30 +134,32 @@ int main(int argc, char** argv) {
   fmt::print("# mesh_embree: {} triangles, {} vertices, {}x{} rays; {} ({} threads), load {}\n",
              T, mesh->positions.size(), opt.size, opt.size, cpuModel(), threads, loadAverage());
 
-  // Build: Lucent's mesh shape (its BVH and bookkeeping) and Embree's scene commit.
+  // Build: Lucent's mesh shape (its BVH and bookkeeping) and Embree's scene commit (its
+  // vertex and index buffers are filled before), in turn (bestOfAlternating).
   std::shared_ptr<TriangleMesh> shape;
-  double lucentBuild1, lucentBuildN, embreeBuild1, embreeBuildN;
-  {
-    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-    lucentBuild1 = bestOf(3, [&] { shape = std::make_shared<TriangleMesh>(mesh, false); });
-  }
-  lucentBuildN = bestOf(3, [&] { shape = std::make_shared<TriangleMesh>(mesh, false); });
-  // Embree: the commit alone (its vertex and index buffers are filled before).
-  embreeBuild1 = embreeBuildN = 1e300;
-  for (int rep = 0; rep < 3; ++rep) {
-    {
-      EmbreeScene e(*mesh, 1);
+  auto buildRates = [&](unsigned n) {
+    auto lucentBuild = [&] {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, n);
+      shape.reset();  // freeing the last one is not part of the build
+      auto t0 = Clock::now();
+      shape = std::make_shared<TriangleMesh>(mesh, false);
+      return secondsSince(t0);
+    };
+    auto embreeBuild = [&] {
+      EmbreeScene e(*mesh, n);
       auto t0 = Clock::now();
       e.commit();
-      embreeBuild1 = std::min(embreeBuild1, secondsSince(t0));
+      return secondsSince(t0);
+    };
+    double l = 1e300, e = 1e300;
+    for (int rep = 0; rep < 3; ++rep) {
+      l = std::min(l, lucentBuild());
+      e = std::min(e, embreeBuild());
     }
-    {
-      EmbreeScene e(*mesh, threads);
-      auto t0 = Clock::now();
-      e.commit();
-      embreeBuildN = std::min(embreeBuildN, secondsSince(t0));
-    }
-  }
+    return std::make_pair(l, e);
+  };
+  auto [lucentBuild1, embreeBuild1] = buildRates(1);
+  auto [lucentBuildN, embreeBuildN] = buildRates(threads);
 
   // Memory per triangle: the mesh data Lucent keeps (double positions and indices) plus
   // its BVH; Embree's device allocations (its BVH and the triangle data it copies).
@@ -213,38 +216,47 @@ int main(int argc, char** argv) {
     }
   }
   struct Rate { double lucent, embree; };
+  // Each figure is the best of five passes over the rays, Lucent's and Embree's passes
+  // in turn (bestOfAlternating).
   auto measure = [&](bool parallel) {
     Rate pri{}, sha{};
     std::atomic<size_t> sink{0};
-    pri.lucent = R / bestOf(3, [&] {
-      forRays(R, parallel, [&](size_t i) {
-        Hit h;
-        if (world.intersect(primary[i], h)) sink.fetch_add(1, std::memory_order_relaxed);
-      });
-    });
-    pri.embree = R / bestOf(3, [&] {
-      forRays(R, parallel, [&](size_t i) {
-        RTCIntersectContext c;
-        rtcInitIntersectContext(&c);
-        RTCRayHit rh = embreeRay(primary[i]);
-        rtcIntersect1(embree.scene, &c, &rh);
-        if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) sink.fetch_add(1, std::memory_order_relaxed);
-      });
-    });
-    sha.lucent = shadow.size() / bestOf(3, [&] {
-      forRays(shadow.size(), parallel, [&](size_t i) {
-        if (world.occluded(shadow[i])) sink.fetch_add(1, std::memory_order_relaxed);
-      });
-    });
-    sha.embree = shadow.size() / bestOf(3, [&] {
-      forRays(shadow.size(), parallel, [&](size_t i) {
-        RTCIntersectContext c;
-        rtcInitIntersectContext(&c);
-        RTCRay r = embreeRay(shadow[i]).ray;
-        rtcOccluded1(embree.scene, &c, &r);
-        if (r.tfar < 0.0f) sink.fetch_add(1, std::memory_order_relaxed);
-      });
-    });
+    auto [lp, ep] = bestOfAlternating(
+        5,
+        [&] {
+          forRays(R, parallel, [&](size_t i) {
+            Hit h;
+            if (world.intersect(primary[i], h)) sink.fetch_add(1, std::memory_order_relaxed);
+          });
+        },
+        [&] {
+          forRays(R, parallel, [&](size_t i) {
+            RTCIntersectContext c;
+            rtcInitIntersectContext(&c);
+            RTCRayHit rh = embreeRay(primary[i]);
+            rtcIntersect1(embree.scene, &c, &rh);
+            if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID)
+              sink.fetch_add(1, std::memory_order_relaxed);
+          });
+        });
+    auto [ls, es] = bestOfAlternating(
+        5,
+        [&] {
+          forRays(shadow.size(), parallel, [&](size_t i) {
+            if (world.occluded(shadow[i])) sink.fetch_add(1, std::memory_order_relaxed);
+          });
+        },
+        [&] {
+          forRays(shadow.size(), parallel, [&](size_t i) {
+            RTCIntersectContext c;
+            rtcInitIntersectContext(&c);
+            RTCRay r = embreeRay(shadow[i]).ray;
+            rtcOccluded1(embree.scene, &c, &r);
+            if (r.tfar < 0.0f) sink.fetch_add(1, std::memory_order_relaxed);
+          });
+        });
+    pri = {R / lp, R / ep};
+    sha = {shadow.size() / ls, shadow.size() / es};
     return std::make_pair(pri, sha);
   };
   std::pair<Rate, Rate> one, all;

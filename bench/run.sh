@@ -144,9 +144,11 @@ Written by \`bash bench/run.sh\` (this section only; the sections around it are 
 measurements kept with the change each measured). Measured on ${cpu}, $(nproc) hardware
 threads, $(date -u +"%Y-%m-%d %H:%M") UTC, commit ${commit}; each program prints the load
 average at its start (raw outputs at the end of this section). Every time is the best of
-three runs (${povRepeat} for POV-Ray). A high load lowers every figure, Lucent's and
-Embree's alike, which is why the comparisons are ratios measured in the same run on the
-same rays; the one-thread figures of \`bvh_scaling\` are CPU time.
+three runs (${povRepeat} for POV-Ray; for Lucent against Embree, five passes over the rays
+and three builds, Lucent's and Embree's in turn, so that a slow spell of the machine
+falls on both). A high load lowers every figure, Lucent's and Embree's alike, which is
+why the comparisons are ratios measured in the same run on the same rays; the
+one-thread figures of \`bvh_scaling\` are CPU time.
 
 | target | measured | |
 |---|---|---|
