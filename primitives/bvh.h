@@ -309,16 +309,22 @@ class Bvh {
   // it, so that the cache misses of a node's leaves overlap instead of coming one after
   // another as the search reaches them. The entered interior nodes are fetched the same
   // way. NoPrefetch fetches nothing.
+  //
+  // With Order::Tree the entered children are searched in the tree's order instead of
+  // nearest first: an any-hit search visits every entered box unless an item blocks the
+  // ray, so sorting them is wasted work (shadow rays on the 1M-triangle mesh: 11 to
+  // 14 % faster and 5 % fewer triangle tests, docs/performance.md).
   struct NoPrefetch {
     void operator()(uint32_t, uint32_t) const {}
   };
+  enum class Order { NearestFirst, Tree };
   template <class Visit, class Prefetch = NoPrefetch>
   bool candidates(const Ray& ray, const double& tFar, Visit&& visit,
-                  Prefetch&& prefetch = Prefetch()) const {
+                  Prefetch&& prefetch = Prefetch(), Order order = Order::NearestFirst) const {
     if (nodes_.empty()) return true;
     bvh_detail::FastNodeTest fast(ray);
-    if (fast.usable) return candidatesWith(fast, tFar, visit, prefetch);
-    return candidatesWith(SafeNodeTest(ray), tFar, visit, prefetch);
+    if (fast.usable) return candidatesWith(fast, tFar, visit, prefetch, order);
+    return candidatesWith(SafeNodeTest(ray), tFar, visit, prefetch, order);
   }
 
   // Closest hit. hitItem(uint32_t item, Ray& ray) tests one item against (ray.tmin,
@@ -339,11 +345,13 @@ class Bvh {
   }
 
   // Any hit (shadow rays): blocks(uint32_t item, const Ray& ray) says whether the item has
-  // a hit in (ray.tmin, ray.tmax); the search stops at the first true.
+  // a hit in (ray.tmin, ray.tmax); the search stops at the first true. Boxes in tree
+  // order (Order::Tree).
   template <class Blocks, class Prefetch = NoPrefetch>
   bool any(const Ray& ray, Blocks&& blocks, Prefetch&& prefetch = Prefetch()) const {
     return !candidates(
-        ray, ray.tmax, [&](uint32_t item) { return !blocks(item, ray); }, prefetch);
+        ray, ray.tmax, [&](uint32_t item) { return !blocks(item, ray); }, prefetch,
+        Order::Tree);
   }
 
   // Every item whose box the ray overlaps in [ray.tmin, ray.tmax]: visit(uint32_t item)
@@ -405,7 +413,7 @@ class Bvh {
 
   template <class Test, class Visit, class Prefetch>
   bool candidatesWith(const Test& test, const double& tFar, Visit& visit,
-                      Prefetch& prefetch) const;
+                      Prefetch& prefetch, Order order) const;
 
   BvhNodes nodes_;
   std::vector<uint32_t> order_;
@@ -443,7 +451,7 @@ void Bvh::pushOrdered(const BvhNode& n, int mask, const T tEnter[BvhNode::kWidth
 
 template <class Test, class Visit, class Prefetch>
 bool Bvh::candidatesWith(const Test& test, const double& tFar, Visit& visit,
-                         Prefetch& prefetch) const {
+                         Prefetch& prefetch, Order order) const {
   if (nodes_.empty()) return true;
   double lastFar = tFar;
   auto tmax = limit(test, lastFar);
@@ -469,6 +477,14 @@ bool Bvh::candidatesWith(const Test& test, const double& tFar, Visit& visit,
         if ((mask & (mask - 1)) == 0) {
           int c = __builtin_ctz(mask);
           cur = {n.index[c], n.count[c], tEnter[c]};
+        } else if (order == Order::Tree) {
+          // The first child now, the others later (all of them unless an item blocks).
+          int c = __builtin_ctz(mask);
+          cur = {n.index[c], n.count[c], tEnter[c]};
+          for (mask &= mask - 1; mask; mask &= mask - 1) {
+            c = __builtin_ctz(mask);
+            stack[sp++] = {n.index[c], n.count[c], tEnter[c]};
+          }
         } else {
           // Nearest child now, the others later unless tFar closes in before they start.
           pushOrdered(n, mask, tEnter, stack, sp, cur);

@@ -85,13 +85,17 @@ TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> mesh, bool useNormals
 }
 
 template <class Visit>
-void TriangleMesh::forEachCandidate(const Ray& ray, const double& tFar, Visit&& visit) const {
+void TriangleMesh::forEachCandidate(const Ray& ray, const double& tFar, Visit&& visit,
+                                    Bvh::Order order) const {
   // Counted here, once per search, for --stats.
   uint64_t tested = 0;
-  bvh_.candidates(ray, tFar, [&](uint32_t i) {
-    ++tested;
-    return visit(i);
-  });
+  bvh_.candidates(
+      ray, tFar,
+      [&](uint32_t i) {
+        ++tested;
+        return visit(i);
+      },
+      Bvh::NoPrefetch(), order);
   threadTestCounts[TestKind::MeshTriangle] += tested;
 }
 
@@ -139,7 +143,7 @@ bool TriangleMesh::occluded(const Ray& ray) const {
     found = intersectTriangle(sr, P[tri[0]], P[tri[1]], P[tri[2]], ti) && ray.tmin < ti.t &&
             ti.t < ray.tmax;
     return !found;
-  });
+  }, Bvh::Order::Tree);  // any hit will do: no sorting (Bvh::candidates)
   return found;
 }
 

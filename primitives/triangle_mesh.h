@@ -49,10 +49,12 @@ class TriangleMesh final : public Shape {
 
  private:
   // Calls visit(triangleIndex) for every triangle the ray may hit with t in
-  // [ray.tmin, tFar], nearest BVH boxes first, where tFar is read again after each call
-  // (a closest-hit search shrinks it). visit returns false to stop.
+  // [ray.tmin, tFar], nearest BVH boxes first unless `order` says otherwise, where tFar
+  // is read again after each call (a closest-hit search shrinks it). visit returns false
+  // to stop.
   template <class Visit>
-  void forEachCandidate(const Ray& ray, const double& tFar, Visit&& visit) const;
+  void forEachCandidate(const Ray& ray, const double& tFar, Visit&& visit,
+                        Bvh::Order order = Bvh::Order::NearestFirst) const;
 
   std::shared_ptr<const MeshData> mesh_;
   bool useNormals_;

@@ -272,6 +272,17 @@ TEST_CASE("BVH visits every item whose box the ray overlaps, each once", "[bvh]"
       if (!bounds[i].slab(ray, 1.0 / ray.d).empty())
         REQUIRE(std::binary_search(got.begin(), got.end(), uint32_t(i)));
     visitedTotal += got.size();
+    // In the tree's order (any-hit searches), the same items, each once.
+    std::vector<uint32_t> inTreeOrder;
+    bvh.candidates(
+        ray, ray.tmax,
+        [&](uint32_t i) {
+          inTreeOrder.push_back(i);
+          return true;
+        },
+        Bvh::NoPrefetch(), Bvh::Order::Tree);
+    std::sort(inTreeOrder.begin(), inTreeOrder.end());
+    REQUIRE(inTreeOrder == got);
   }
   // Culling works: a segment visits a small fraction of the items on average.
   CHECK(visitedTotal < rays.size() * spheres.size() / 20);
