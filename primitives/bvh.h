@@ -263,7 +263,8 @@ struct BvhOptions {
 // Built top-down with the binned surface-area heuristic (Wald 2007, "On fast Construction
 // of SAH-based Bounding Volume Hierarchies"), each node taking up to W children by
 // splitting its largest child again (as Embree's BVH4 and BVH8 builders do), in parallel
-// with TBB for large inputs; traversed front to back with an explicit stack.
+// with TBB for large inputs; traversed with an explicit stack, front to back for closest
+// hits and in the tree's order for any-hit searches (Order).
 //
 // Items are numbered 0..count-1 by the caller. The build reorders them into leaf slots;
 // order() maps a slot back to the caller's item number. A caller that reorders its own
