@@ -5,6 +5,7 @@
 //
 //   bvh_scaling [--max N] [--size W] [--tsv FILE]
 #include "bench_util.h"
+#include "scenegraph/shape_registry.h"
 
 #include "scenegraph/world.h"
 

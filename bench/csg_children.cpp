@@ -9,7 +9,7 @@
 
 #include "csg/csg_node.h"
 #include "primitives/instance.h"
-#include "scenegraph/make_shape.h"
+#include "scenegraph/shape_registry.h"
 
 #include <fmt/core.h>
 

@@ -9,6 +9,7 @@
 #include "commands.h"
 
 #include "lang/parser.h"
+#include "scenegraph/shape_registry.h"
 #include "primitives/system_memory.h"
 #include "render/camera_frame.h"
 #include "render/image_io.h"
@@ -120,11 +121,11 @@ void printStats(const RenderResult& r, int threads) {
   // Intersection tests by kind, the kinds the scene has only.
   uint64_t tests = 0;
   std::string byKind;
-  for (int k = 0; k < kTestKinds; ++k) {
-    const uint64_t n = s.tests.n[static_cast<size_t>(k)];
+  for (size_t k = 0; k < kTestSlots; ++k) {
+    const uint64_t n = s.tests[k];
     if (n == 0) continue;
     tests += n;
-    byKind += fmt::format("{}{} {}", byKind.empty() ? "" : ", ", testKindName(static_cast<TestKind>(k)), n);
+    byKind += fmt::format("{}{} {}", byKind.empty() ? "" : ", ", testSlotName(k), n);
   }
   fmt::print("tests:     {:>14}  ({})\n", tests, byKind.empty() ? "none" : byKind);
   fmt::print("time:      {:>14.3f}  s ({})\n", r.seconds, formatDuration(r.seconds));

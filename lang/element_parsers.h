@@ -33,13 +33,13 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
 // <defs>: its children go to scene.defs.
 void parseDefs(ElementReader& r);
 
-// shape_parser.cpp, mesh_parser.cpp: the parameters of one shape element ("sphere", ...).
-// Returns nothing when the element is not a shape. Errors are reported through r.
+// shape_parser.cpp: the parameters of one shape element ("sphere", ...), read through the
+// shape registry. Returns nothing when the element is not a shape. Errors are reported
+// through r.
 bool isShapeElement(std::string_view name);
 std::optional<ShapeSpec> parseShape(ElementReader& r);
-ShapeSpec parseMesh(ElementReader& r);
 // The attributes each shape element accepts besides id, transform and material.
-const std::vector<std::string_view>& shapeAttributes(std::string_view element);
+std::vector<std::string_view> shapeAttributes(std::string_view element);
 
 // references.cpp: resolves <use ref>, finds reference cycles, limits the instance depth
 // and checks the operands of merge, intersection and difference are solids.

@@ -9,6 +9,8 @@
 #include "parse_context.h"
 #include "values.h"
 
+#include "scenegraph/attribute_input.h"
+
 #include <functional>
 #include <optional>
 #include <string>
@@ -17,27 +19,6 @@
 #include <vector>
 
 namespace lucent {
-
-struct NumberRule {
-  double lo = -kInf, hi = kInf;
-  bool loOpen = false, hiOpen = false;
-  bool allowInfinity = false;
-  const char* expected = "a number";
-
-  static NumberRule any() { return {}; }
-  static NumberRule positive() { return {0.0, kInf, true, false, false, "a positive number"}; }
-  static NumberRule nonNegative() { return {0.0, kInf, false, false, false, "a number >= 0"}; }
-  static NumberRule between(double lo, double hi, const char* expected, bool loOpen = false,
-                            bool hiOpen = false) {
-    return {lo, hi, loOpen, hiOpen, false, expected};
-  }
-  bool accepts(double v) const {
-    if (v < lo || v > hi) return false;
-    if (loOpen && v == lo) return false;
-    if (hiOpen && v == hi) return false;
-    return true;
-  }
-};
 
 class ElementReader {
  public:

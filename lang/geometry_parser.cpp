@@ -4,6 +4,8 @@
 // material leaves Node::material empty and inherits its nearest ancestor's (World does it).
 #include "element_parsers.h"
 
+#include "scenegraph/shape_registry.h"
+
 #include <algorithm>
 
 namespace lucent {
@@ -76,10 +78,15 @@ void registerId(ElementReader& r, Node& node) {
 
 }  // namespace
 
+// The shapes of the registry, then the groups, CSG operations and <use>.
 const std::vector<std::string_view>& geometryElementNames() {
-  static const std::vector<std::string_view> names{
-      "sphere", "box",   "cylinder", "cone",  "torus",        "plane",      "disc",
-      "triangle", "mesh", "group",  "union", "merge", "intersection", "difference", "use"};
+  static const std::vector<std::string_view> names = [] {
+    std::vector<std::string_view> n;
+    for (const ShapeType& t : shapeTypes()) n.push_back(t.element);
+    for (const GroupEntry& g : kGroups) n.push_back(g.element);
+    n.push_back("use");
+    return n;
+  }();
   return names;
 }
 

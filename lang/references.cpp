@@ -3,6 +3,7 @@
 // is limited, and the operands of merge, intersection and difference are checked to be
 // solids (which needs the references resolved, since a <use> is as solid as its target).
 #include "element_parsers.h"
+#include "scenegraph/shape_registry.h"
 
 #include <algorithm>
 #include <tuple>
@@ -125,12 +126,8 @@ const Node* findNonSolid(const ParseContext& ctx, const Node& n) {
 }
 
 std::string whyNotSolid(const Node& leaf) {
-  if (leaf.kind != NodeKind::Shape) return "it is empty";
-  if (std::holds_alternative<CylinderSpec>(*leaf.shape) || std::holds_alternative<ConeSpec>(*leaf.shape))
-    return "it is open";
-  if (std::holds_alternative<MeshSpec>(*leaf.shape))
-    return "the mesh is not closed and consistently oriented";
-  return "a " + leaf.element + " encloses no volume";
+  if (leaf.kind != NodeKind::Shape || !leaf.shape) return "it is empty";
+  return lucent::whyNotSolid(*leaf.shape);
 }
 
 void checkCsgOperands(ParseContext& ctx, const Node& csg) {

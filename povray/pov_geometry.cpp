@@ -1,8 +1,11 @@
 #include "pov_geometry.h"
+#include "scenegraph/shape_registry.h"
 
 #include "primitives/triangle_mesh.h"
 
 #include <fmt/core.h>
+
+#include <functional>
 
 namespace lucent {
 
@@ -155,60 +158,43 @@ std::string PovGeometry::meshName(const MeshSpec& mesh, const Node& node) {
   return name;
 }
 
+namespace {
+
+// The registry's writers write into the exporter's text through this.
+class ShapeOut final : public PovShapeOut {
+ public:
+  ShapeOut(PovWriter& out, std::string comment, std::function<std::string(const MeshSpec&)> mesh)
+      : out_(out), comment_(std::move(comment)), mesh_(std::move(mesh)) {}
+  void open(std::string_view keyword) override { out_.open(keyword, comment_); }
+  void line(std::string_view text) override { out_.line(text); }
+  std::string number(double v) const override { return povNumber(v); }
+  std::string vector(const Vec3& v) const override { return povVector(v); }
+  std::string declaredMesh(const MeshSpec& mesh) override { return mesh_(mesh); }
+
+ private:
+  PovWriter& out_;
+  std::string comment_;
+  std::function<std::string(const MeshSpec&)> mesh_;
+};
+
+}  // namespace
+
 void PovGeometry::writeShapeHead(const Node& node, const Mat4& m, uint32_t material,
                                  bool topLevel, PovWriter& out) {
-  const ShapeSpec& spec = *node.shape;
-  const std::string where = "<" + node.element + "> " + node.loc.str();
-  if (const auto* s = std::get_if<SphereSpec>(&spec)) {
-    out.open("sphere", where);
-    out.line(fmt::format("{}, {}", povVector(s->center), povNumber(s->radius)));
-  } else if (const auto* b = std::get_if<BoxSpec>(&spec)) {
-    out.open("box", where);
-    out.line(fmt::format("{}, {}", povVector(b->min), povVector(b->max)));
-  } else if (const auto* c = std::get_if<CylinderSpec>(&spec)) {
-    out.open("cylinder", where);
-    out.line(fmt::format("{}, {}, {}", povVector(c->base), povVector(c->cap),
-                         povNumber(c->radius)));
-    if (c->open) out.line("open");
-  } else if (const auto* k = std::get_if<ConeSpec>(&spec)) {
-    out.open("cone", where);
-    out.line(fmt::format("{}, {}, {}, {}", povVector(k->base), povNumber(k->baseRadius),
-                         povVector(k->cap), povNumber(k->capRadius)));
-    if (k->open) out.line("open");
-  } else if (const auto* t = std::get_if<TorusSpec>(&spec)) {
-    // Both lie in the xz-plane around the y axis.
-    out.open("torus", where);
-    out.line(fmt::format("{}, {}", povNumber(t->major), povNumber(t->minor)));
-  } else if (const auto* p = std::get_if<PlaneSpec>(&spec)) {
-    // Same convention: n̂·x = d, inside n̂·x < d. A top-level plane holding the camera is
-    // turned inside out (same surface) unless the camera is meant to be in its medium.
+  std::string where = "<" + node.element + "> " + node.loc.str();
+  ShapeSpec spec = *node.shape;
+  if (const auto* p = std::get_if<PlaneSpec>(&spec)) {
+    // A top-level plane holding the camera is turned inside out (the same surface) unless
+    // the camera is meant to be in its medium: POV-Ray would start camera rays inside it.
     const Material& mat = scene_.materials[material];
     bool medium = (mat.isTransmissive() && mat.ior != 1.0) || mat.isAbsorbing();
-    bool flip = topLevel && !medium && cameraInsidePlane(*p, m, camera_);
-    out.open("plane", where + (flip ? " (turned so the camera is outside)" : ""));
-    out.line(fmt::format("{}, {}", povVector(flip ? -p->normal : p->normal),
-                         povNumber(flip ? -p->offset : p->offset)));
-  } else if (const auto* d = std::get_if<DiscSpec>(&spec)) {
-    out.open("disc", where);
-    std::string hole = d->innerRadius > 0.0 ? ", " + povNumber(d->innerRadius) : "";
-    out.line(fmt::format("{}, {}, {}{}", povVector(d->center), povVector(d->normal),
-                         povNumber(d->radius), hole));
-  } else if (const auto* tri = std::get_if<TriangleSpec>(&spec)) {
-    if (tri->normals) {
-      const auto& n = *tri->normals;
-      out.open("smooth_triangle", where);
-      out.line(fmt::format("{}, {},", povVector(tri->a), povVector(n[0])));
-      out.line(fmt::format("{}, {},", povVector(tri->b), povVector(n[1])));
-      out.line(fmt::format("{}, {}", povVector(tri->c), povVector(n[2])));
-    } else {
-      out.open("triangle", where);
-      out.line(fmt::format("{}, {}, {}", povVector(tri->a), povVector(tri->b),
-                           povVector(tri->c)));
+    if (topLevel && !medium && cameraInsidePlane(*p, m, camera_)) {
+      spec = PlaneSpec{-p->normal, -p->offset};
+      where += " (turned so the camera is outside)";
     }
-  } else if (const auto* mesh = std::get_if<MeshSpec>(&spec)) {
-    out.open("object", where);
-    out.line(meshName(*mesh, node));
   }
+  ShapeOut shapeOut(out, where, [&](const MeshSpec& mesh) { return meshName(mesh, node); });
+  shapeTypeOf(spec).writePov(spec, shapeOut);
 }
 
 void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, bool topLevel,

@@ -1,4 +1,5 @@
 #include "pov_materials.h"
+#include "scenegraph/shape_registry.h"
 
 #include <fmt/core.h>
 

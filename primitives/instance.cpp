@@ -31,8 +31,8 @@ Vec3 worldToObjectRoundTripError(const Transform& t, const Vec3& pWorld) {
 }  // namespace
 
 Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& worldFromObject,
-                   uint32_t tag)
-    : shape_(std::move(shape)), tag_(tag), testKind_(testKindOf(shape_->kind())) {
+                   uint32_t tag, size_t testSlot)
+    : shape_(std::move(shape)), tag_(tag), testSlot_(static_cast<uint8_t>(testSlot)) {
   if (!worldFromObject.isIdentity()) placed_ = std::make_unique<Placement>(Placement{worldFromObject});
   bounds_ = transformBounds(worldFromObject.worldFromObject(), shape_->bounds());
 }
@@ -53,19 +53,19 @@ void Instance::widenSurfaceError(double distance) {
 }
 
 bool Instance::intersect(const Ray& ray, Hit& hit) const {
-  ++threadTestCounts[testKind_];
+  ++threadTestCounts[testSlot_];
   if (!shape_->intersect(toObject(ray), hit)) return false;
   hit.shape = this;
   return true;
 }
 
 bool Instance::occluded(const Ray& ray) const {
-  ++threadTestCounts[testKind_];
+  ++threadTestCounts[testSlot_];
   return shape_->occluded(toObject(ray));
 }
 
 void Instance::crossings(const Ray& ray, CrossingList& out) const {
-  ++threadTestCounts[testKind_];
+  ++threadTestCounts[testSlot_];
   size_t first = out.items.size();
   shape_->crossings(toObject(ray), out);
   for (size_t i = first; i < out.items.size(); ++i) out.items[i].hit.shape = this;

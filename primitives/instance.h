@@ -16,7 +16,9 @@ namespace lucent {
 // The tag is the scene's business (the material index); primitives never read it.
 class Instance final : public Shape {
  public:
-  Instance(std::shared_ptr<const Shape> shape, const Transform& worldFromObject, uint32_t tag);
+  // `testSlot`: what --stats counts a test of this instance as (test_counts.h).
+  Instance(std::shared_ptr<const Shape> shape, const Transform& worldFromObject, uint32_t tag,
+           size_t testSlot = kOtherTestSlot);
 
   const char* kind() const override { return shape_->kind(); }
   AABB bounds() const override { return bounds_; }
@@ -59,7 +61,7 @@ class Instance final : public Shape {
   // field of a million spheres then fits caches and pages far better.
   std::shared_ptr<const Shape> shape_;
   uint32_t tag_;
-  TestKind testKind_;  // what --stats counts a test of this instance as
+  uint8_t testSlot_;
   AABB bounds_;
   std::unique_ptr<Placement> placed_;  // null: the identity
 };

@@ -1,4 +1,6 @@
-// Intersection tests counted per thread and kind of shape, for `lucent render --stats`.
+// Intersection tests counted per thread and slot, for `lucent render --stats`. A leaf's
+// slot is its row in the shape registry (scenegraph/shape_registry.h), which also names
+// it; two slots after the shapes count the triangles tested inside meshes and the rest.
 #pragma once
 
 #include <array>
@@ -7,19 +9,16 @@
 
 namespace lucent {
 
-// What a test was run against: each leaf shape kind, and the triangles tested inside
-// meshes (a mesh test is one search of its BVH, which tests some of its triangles).
-enum class TestKind : uint8_t {
-  Sphere, Box, Cylinder, Cone, Torus, Plane, Disc, Triangle, Mesh, MeshTriangle, Other, Count
-};
-
-constexpr int kTestKinds = static_cast<int>(TestKind::Count);
+constexpr size_t kShapeTestSlots = 30;  // at least the registry's row count (checked there)
+constexpr size_t kMeshTriangleSlot = kShapeTestSlots;  // a mesh test searches its BVH
+constexpr size_t kOtherTestSlot = kShapeTestSlots + 1;
+constexpr size_t kTestSlots = kShapeTestSlots + 2;
 
 struct TestCounts {
-  std::array<uint64_t, kTestKinds> n{};
+  std::array<uint64_t, kTestSlots> n{};
 
-  uint64_t& operator[](TestKind k) { return n[static_cast<size_t>(k)]; }
-  uint64_t operator[](TestKind k) const { return n[static_cast<size_t>(k)]; }
+  uint64_t& operator[](size_t slot) { return n[slot]; }
+  uint64_t operator[](size_t slot) const { return n[slot]; }
   TestCounts& operator+=(const TestCounts& o) {
     for (size_t i = 0; i < n.size(); ++i) n[i] += o.n[i];
     return *this;
@@ -34,10 +33,5 @@ struct TestCounts {
 // This thread's running totals. Each thread counts into its own, so counting costs one
 // increment and never makes threads wait; a reader takes the difference over its work.
 inline thread_local TestCounts threadTestCounts;
-
-// The kind for Shape::kind()'s name ("sphere", ...), Other for anything unlisted.
-TestKind testKindOf(const char* shapeKind);
-// The plural a report prints ("spheres", "mesh triangles", ...).
-const char* testKindName(TestKind kind);
 
 }  // namespace lucent

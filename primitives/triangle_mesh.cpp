@@ -96,7 +96,7 @@ void TriangleMesh::forEachCandidate(const Ray& ray, const double& tFar, Visit&& 
         return visit(i);
       },
       Bvh::NoPrefetch(), order);
-  threadTestCounts[TestKind::MeshTriangle] += tested;
+  threadTestCounts[kMeshTriangleSlot] += tested;
 }
 
 namespace {

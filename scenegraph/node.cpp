@@ -1,4 +1,5 @@
 #include "node.h"
+#include "scenegraph/shape_registry.h"
 
 namespace lucent {
 

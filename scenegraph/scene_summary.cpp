@@ -1,5 +1,7 @@
 #include "scene_summary.h"
 
+#include "shape_registry.h"
+
 #include <algorithm>
 #include <sstream>
 #include <unordered_map>
@@ -18,11 +20,7 @@ const char* lightTypeName(LightType t) {
   return "?";
 }
 
-long long triangleCount(const ShapeSpec& spec) {
-  if (std::holds_alternative<TriangleSpec>(spec)) return 1;
-  if (const auto* m = std::get_if<MeshSpec>(&spec)) return m->data ? static_cast<long long>(m->data->triangles.size()) : 0;
-  return 0;
-}
+long long triangleCount(const ShapeSpec& spec) { return shapeTypeOf(spec).triangles(spec); }
 
 // What a node contributes to the world, memoised per node: a node used many times is
 // counted once per use without walking it again (the parser has ruled out cycles and

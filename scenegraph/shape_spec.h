@@ -42,9 +42,4 @@ struct MeshSpec {
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec>;
 
-// Is the shape a solid (may be a CSG operand)? Meshes are when closed and oriented.
-bool isSolid(const ShapeSpec& spec);
-// The element name: "sphere", "box", ...
-const char* shapeElementName(const ShapeSpec& spec);
-
 }  // namespace lucent

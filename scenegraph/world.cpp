@@ -1,6 +1,6 @@
 #include "world.h"
 
-#include "make_shape.h"
+#include "shape_registry.h"
 
 #include "csg/csg_node.h"
 #include "primitives/offset.h"
@@ -57,7 +57,7 @@ struct Builder {
       case NodeKind::Shape: {
         auto& shape = shapes[&node];
         if (!shape) shape = makeShape(*node.shape);
-        auto inst = std::make_unique<Instance>(shape, world, material);
+        auto inst = std::make_unique<Instance>(shape, world, material, node.shape->index());
         instances.push_back(inst.get());
         out.push_back(std::move(inst));
         break;
@@ -193,7 +193,7 @@ bool World::intersect(const Ray& ray, Hit& hit) const {
       sphereSlot = kNoSlot;
       return true;
     }
-    ++threadTestCounts[TestKind::Sphere];
+    ++threadTestCounts[slotOf<SphereSpec>()];
     double t0, t1;
     if (!sphereRoots(Vec3(leaf.cx, leaf.cy, leaf.cz), leaf.r2, rr, t0, t1)) return false;
     // The nearer root inside (tmin, tmax), else the farther (intersectSpan's rule).
@@ -225,7 +225,7 @@ void World::prefetchLeaves(uint32_t first, uint32_t count) const {
 bool World::slotOccluded(uint32_t slot, const Ray& ray) const {
   const Leaf& leaf = leaves_[slot];
   if (leaf.r2 < 0.0) return leafObjects_[slot]->occluded(ray);
-  ++threadTestCounts[TestKind::Sphere];
+  ++threadTestCounts[slotOf<SphereSpec>()];
   double t0, t1;
   return sphereRoots(Vec3(leaf.cx, leaf.cy, leaf.cz), leaf.r2, ray, t0, t1) &&
          ((ray.tmin < t0 && t0 < ray.tmax) || (ray.tmin < t1 && t1 < ray.tmax));

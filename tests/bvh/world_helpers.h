@@ -3,6 +3,7 @@
 #pragma once
 
 #include "scenegraph/world.h"
+#include "scenegraph/shape_registry.h"
 
 #include <memory>
 

@@ -2,7 +2,7 @@
 // against the first change of membership along the ray, and the normals of each case.
 #include "csg/csg_node.h"
 #include "primitives/instance.h"
-#include "scenegraph/make_shape.h"
+#include "scenegraph/shape_registry.h"
 #include "scenegraph/shape_spec.h"
 
 #include <catch2/catch.hpp>

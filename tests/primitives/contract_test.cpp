@@ -2,17 +2,8 @@
 // inside [tmin, tmax] and alternating from startsInside; intersect() and occluded() agree
 // with the first crossing; startsInside agrees with inside() away from the surface.
 #include "shape_checks.h"
-#include "test_meshes.h"
+#include "scenegraph/shape_registry.h"
 
-#include "primitives/box.h"
-#include "primitives/cone.h"
-#include "primitives/cylinder.h"
-#include "primitives/disc.h"
-#include "primitives/plane.h"
-#include "primitives/sphere.h"
-#include "primitives/torus.h"
-#include "primitives/triangle.h"
-#include "primitives/triangle_mesh.h"
 
 #include <catch2/catch.hpp>
 
@@ -30,35 +21,30 @@ struct Named {
   AABB aim;  // where random rays are aimed (the bounds, or a box around the origin)
 };
 
+// Every sample of every row of the shape registry: a new shape is checked here as soon as
+// its entry exists.
 std::vector<Named> allShapes() {
   std::vector<Named> v;
-  auto add = [&](std::string n, std::shared_ptr<const Shape> s) {
-    AABB b = s->bounds();
-    if (!b.isBounded()) b = AABB(Vec3(-2.0), Vec3(2.0));
-    v.push_back({std::move(n), std::move(s), b});
-  };
-  add("sphere", std::make_shared<Sphere>(Vec3(0.5, -0.25, 1.0), 1.5));
-  add("box", std::make_shared<Box>(Vec3(1, 2, 3), Vec3(-1, -0.5, 0)));
-  add("plane", std::make_shared<Plane>(glm::normalize(Vec3(1, 2, -0.5)), 0.3));
-  add("cylinder", std::make_shared<Cylinder>(Vec3(0.1, 0.2, 0.3), Vec3(1, 2, -1), 0.6, false));
-  add("open cylinder", std::make_shared<Cylinder>(Vec3(0, 0, 0), Vec3(0, 2, 0), 1.0, true));
-  add("cone", std::make_shared<Cone>(Vec3(0, 0, 0), 1.0, Vec3(0.3, 2, 0.1), 0.0, false));
-  add("truncated cone", std::make_shared<Cone>(Vec3(0, 1, 0), 0.3, Vec3(0, -1, 0.5), 0.9, false));
-  add("apex-at-base cone", std::make_shared<Cone>(Vec3(0, 0, 0), 0.0, Vec3(0, 0, 2), 1.0, false));
-  add("open cone", std::make_shared<Cone>(Vec3(0, 0, 0), 1.0, Vec3(0, 1, 0), 0.5, true));
-  add("torus", std::make_shared<Torus>(1.0, 0.25));
-  add("thin torus", std::make_shared<Torus>(2.0, 0.01));
-  add("fat torus", std::make_shared<Torus>(1.0, 0.9));
-  add("spindle torus", std::make_shared<Torus>(1.0, 1.3));
-  add("disc", std::make_shared<Disc>(Vec3(0.2, 0.1, 0), glm::normalize(Vec3(0, 1, 1)), 1.0, 0.3));
-  add("triangle", std::make_shared<Triangle>(Vec3(0, 0, 0), Vec3(1, 0.2, 0), Vec3(0.1, 1, 0.3)));
-  add("box mesh", std::make_shared<TriangleMesh>(boxMesh(Vec3(-1, -0.5, 0), Vec3(1, 2, 3)), false));
-  add("octahedron mesh", std::make_shared<TriangleMesh>(octahedronMesh(), true));
-  add("open mesh", std::make_shared<TriangleMesh>(squareMesh(), false));
+  for (const ShapeType& type : shapeTypes()) {
+    for (const auto& [name, spec] : type.samples()) {
+      std::shared_ptr<const Shape> s = type.build(spec);
+      AABB b = s->bounds();
+      if (!b.isBounded()) b = AABB(Vec3(-2.0), Vec3(2.0));
+      v.push_back({name, std::move(s), b});
+    }
+  }
   return v;
 }
 
 }  // namespace
+
+TEST_CASE("every registered shape has samples for the contract tests", "[primitives]") {
+  for (const ShapeType& type : shapeTypes()) {
+    INFO(type.element);
+    CHECK_FALSE(type.samples().empty());
+  }
+  CHECK(allShapes().size() >= shapeTypes().size());
+}
 
 TEST_CASE("every shape keeps the crossings contract on random rays", "[primitives]") {
   Rng rng(20240601);

@@ -1,6 +1,6 @@
 #include "test_meshes.h"
 
-#include "scenegraph/make_shape.h"
+#include "scenegraph/shape_registry.h"
 
 #include <catch2/catch.hpp>
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "render/tracer.h"
+#include "scenegraph/shape_registry.h"
 #include "scenegraph/scene.h"
 #include "scenegraph/world.h"
 

@@ -1,5 +1,6 @@
 // The shadow cache (render/shadow_cache.h) and the shadow rays of one point computed
 // together (ShadowRays): faster answers, never different ones.
+#include "scenegraph/shape_registry.h"
 #include "scene_builder.h"
 
 #include "render/renderer.h"
@@ -121,8 +122,8 @@ TEST_CASE("every blocked shadow ray but the first hits the cache when one object
   CHECK(r.stats.shadowCacheHits == blocked - 1);
   // The floor plane is tested by every primary ray and by every shadow ray the cached
   // disc does not answer; the disc (a lone bounded object, tested directly) by all.
-  CHECK(r.stats.tests[TestKind::Plane] == 256 + (256 - r.stats.shadowCacheHits));
-  CHECK(r.stats.tests[TestKind::Disc] == 256 + 256);
+  CHECK(r.stats.tests[slotOf<PlaneSpec>()] == 256 + (256 - r.stats.shadowCacheHits));
+  CHECK(r.stats.tests[slotOf<DiscSpec>()] == 256 + 256);
 }
 
 TEST_CASE("ShadowRays gives spawnRayTo's rays to the last bit", "[render][shadow][spawn]") {

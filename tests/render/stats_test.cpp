@@ -1,6 +1,7 @@
 // --stats' intersection-test counts (issue 4): one test per object a ray is tested
 // against, by kind, and the triangles tested inside meshes; the same counts whatever the
 // thread count.
+#include "scenegraph/shape_registry.h"
 #include "scene_builder.h"
 
 #include "../primitives/test_meshes.h"
@@ -26,9 +27,9 @@ TEST_CASE("stats: a plane seen from above is tested once by every primary and sh
   const uint64_t pixels = 24 * 16;
   REQUIRE(r.stats.primary == pixels);
   REQUIRE(r.stats.shadow == pixels);  // every hit is lit from above
-  CHECK(r.stats.tests[TestKind::Plane] == 2 * pixels);
-  for (int k = 0; k < kTestKinds; ++k)
-    if (static_cast<TestKind>(k) != TestKind::Plane) CHECK(r.stats.tests.n[size_t(k)] == 0);
+  CHECK(r.stats.tests[slotOf<PlaneSpec>()] == 2 * pixels);
+  for (size_t k = 0; k < kTestSlots; ++k)
+    if (k != slotOf<PlaneSpec>()) CHECK(r.stats.tests[k] == 0);
 }
 
 TEST_CASE("stats: spheres and meshes are counted by kind, alike with 1 and 2 threads",
@@ -55,12 +56,12 @@ TEST_CASE("stats: spheres and meshes are counted by kind, alike with 1 and 2 thr
   const TestCounts& t = a.stats.tests;
   // Each object is tested at most once per search of the world, and the box's 12
   // triangles are searched through its BVH: fewer than 12 a mesh test on average.
-  CHECK(t[TestKind::Sphere] > 0);
-  CHECK(t[TestKind::Sphere] <= a.stats.queries);
-  CHECK(t[TestKind::Mesh] > 0);
-  CHECK(t[TestKind::Mesh] <= a.stats.queries);
-  CHECK(t[TestKind::MeshTriangle] >= t[TestKind::Mesh] / 2);
-  CHECK(t[TestKind::MeshTriangle] < 12 * t[TestKind::Mesh]);
-  CHECK(t[TestKind::Plane] == 0);
-  CHECK(t[TestKind::Box] == 0);
+  CHECK(t[slotOf<SphereSpec>()] > 0);
+  CHECK(t[slotOf<SphereSpec>()] <= a.stats.queries);
+  CHECK(t[slotOf<MeshSpec>()] > 0);
+  CHECK(t[slotOf<MeshSpec>()] <= a.stats.queries);
+  CHECK(t[kMeshTriangleSlot] >= t[slotOf<MeshSpec>()] / 2);
+  CHECK(t[kMeshTriangleSlot] < 12 * t[slotOf<MeshSpec>()]);
+  CHECK(t[slotOf<PlaneSpec>()] == 0);
+  CHECK(t[slotOf<BoxSpec>()] == 0);
 }

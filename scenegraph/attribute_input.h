@@ -1,0 +1,70 @@
+// What a shape's entry in the registry (shape_type.h) reads its attributes through. The
+// scene language implements it over one XML element (lang/shape_parser.cpp): every getter
+// substitutes parameters, parses, checks the range and reports a located error itself, and
+// returns the default when the attribute is absent or wrong, so parsing goes on.
+#pragma once
+
+#include "primitives/math.h"
+#include "primitives/mesh_data.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lucent {
+
+// The range a number attribute must lie in, and how the error names it.
+struct NumberRule {
+  double lo = -kInf, hi = kInf;
+  bool loOpen = false, hiOpen = false;
+  bool allowInfinity = false;
+  const char* expected = "a number";
+
+  static NumberRule any() { return {}; }
+  static NumberRule positive() { return {0.0, kInf, true, false, false, "a positive number"}; }
+  static NumberRule nonNegative() { return {0.0, kInf, false, false, false, "a number >= 0"}; }
+  static NumberRule between(double lo, double hi, const char* expected, bool loOpen = false,
+                            bool hiOpen = false) {
+    return {lo, hi, loOpen, hiOpen, false, expected};
+  }
+  bool accepts(double v) const {
+    if (v < lo || v > hi) return false;
+    if (loOpen && v == lo) return false;
+    if (hiOpen && v == hi) return false;
+    return true;
+  }
+};
+
+class AttributeInput {
+ public:
+  virtual ~AttributeInput() = default;
+
+  virtual bool has(const char* attr) const = 0;
+  virtual double number(const char* attr, double def, const NumberRule& rule) = 0;
+  virtual Vec3 vector(const char* attr, const Vec3& def) = 0;
+  // Not zero; returned normalised.
+  virtual Vec3 direction(const char* attr, const Vec3& def) = 0;
+  virtual bool boolean(const char* attr, bool def) = 0;
+  // The index of the value in `names`; `def` when absent or not one of them (reported).
+  virtual size_t choice(const char* attr, size_t def, const std::vector<std::string_view>& names) = 0;
+  // The value after parameter substitution; nullopt when absent or wrong (reported).
+  virtual std::optional<std::string> text(const char* attr) = 0;
+  // Lists of numbers and of whole numbers >= 0; nullopt when absent or wrong (reported).
+  virtual std::optional<std::vector<double>> numbers(const char* attr) = 0;
+  virtual std::optional<std::vector<long long>> integers(const char* attr) = 0;
+  // The mesh file the attribute names, resolved by the scene's file-access rules and read
+  // once per process however many elements name it; null when it cannot be read (reported).
+  virtual std::shared_ptr<const MeshData> meshFile(const char* attr) = 0;
+
+  // "<sphere> attribute 'radius': message", at the attribute's value.
+  virtual void attrError(const char* attr, const std::string& message) = 0;
+  // A message about the whole element, at its '<'.
+  virtual void error(const std::string& message) = 0;
+  virtual void warning(const std::string& message) = 0;
+  // Whether any error was reported for this element.
+  virtual bool failed() const = 0;
+};
+
+}  // namespace lucent

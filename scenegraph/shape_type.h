@@ -1,0 +1,163 @@
+// What the registry (shape_registry.h) knows of one geometry element, in one place: its
+// element name, its attributes with types, defaults and ranges, whether it is a solid, how
+// it is built, how it is written for POV-Ray, and its statistics slot. The parser, the
+// schema, `lucent check`, `--stats`, the POV-Ray exporter and the contract tests all read it.
+//
+// A shape's entry is written once, typed on its parameters (ShapeEntry<SphereSpec>, in
+// shapes/sphere.cpp), and erased into a ShapeType for the table.
+#pragma once
+
+#include "attribute_input.h"
+#include "shape_spec.h"
+
+#include "primitives/shape.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace lucent {
+
+enum class AttrType { Number, Vector, Direction, Boolean, Choice, Text, NumberList, IntegerList, File };
+
+struct AttributeInfo {
+  std::string name;
+  AttrType type = AttrType::Number;
+  NumberRule rule;                        // numbers: the range
+  std::vector<std::string_view> choices;  // choices: the words
+  std::string defaultText;                // as a user would write it; "" when there is none
+  bool required = false;
+};
+
+// The exporter's side of writing one shape (povray/pov_geometry.cpp implements it). The
+// entry writes the object's keyword and the lines of its own parameters; the exporter adds
+// the material and the transform and closes the object.
+class PovShapeOut {
+ public:
+  virtual ~PovShapeOut() = default;
+  virtual void open(std::string_view keyword) = 0;  // "sphere {"
+  virtual void line(std::string_view text) = 0;
+  virtual std::string number(double v) const = 0;        // POV-Ray's number syntax
+  virtual std::string vector(const Vec3& v) const = 0;   // <x, y, z>
+  // The identifier of a mesh2 declared once for this mesh data (the exporter writes it).
+  virtual std::string declaredMesh(const MeshSpec& mesh) = 0;
+};
+
+// One attribute of a shape element: what the schema and the attribute check need, and how
+// the generic reader stores it into the parameters (null for attributes the entry's
+// finish() reads itself).
+template <class S>
+struct Field {
+  AttributeInfo info;
+  std::function<void(S&, AttributeInput&)> read;
+};
+
+template <class S>
+struct ShapeEntry {
+  using Build = std::function<std::shared_ptr<const Shape>(const S&)>;
+  using WritePov = std::function<void(const S&, PovShapeOut&)>;
+
+  // The element, the POV-Ray writer and the builder are required: an entry cannot be made
+  // without them.
+  ShapeEntry(const char* element, const char* plural, Build build, WritePov pov)
+      : element(element), plural(plural), build(std::move(build)), pov(std::move(pov)) {}
+
+  const char* element;  // "sphere"
+  const char* plural;   // "spheres", for --stats
+  std::vector<Field<S>> fields;
+  // After the fields are read: checks between attributes, loading; may be empty.
+  std::function<void(S&, AttributeInput&)> finish;
+  // "" when the parameters make a solid, else why not ("it is open").
+  std::function<std::string(const S&)> notSolid = [](const S&) { return std::string(); };
+  Build build;
+  WritePov pov;
+  std::function<long long(const S&)> triangles = [](const S&) { return 0LL; };
+  // Valid parameters that show the shape's cases (the contract tests run every one);
+  // made on demand, so a render never pays for them.
+  std::function<std::vector<std::pair<std::string, S>>()> samples;
+};
+
+// The helpers entries declare their fields with: each default is the parameters' own
+// default member value, so it is written once.
+std::string attributeText(double v);
+std::string attributeText(const Vec3& v);
+
+template <class S>
+Field<S> numberField(const char* name, double S::*m, NumberRule rule = NumberRule::any()) {
+  return {{name, AttrType::Number, rule, {}, attributeText(S{}.*m), false},
+          [name, m, rule](S& s, AttributeInput& in) { s.*m = in.number(name, s.*m, rule); }};
+}
+template <class S>
+Field<S> vectorField(const char* name, Vec3 S::*m) {
+  return {{name, AttrType::Vector, {}, {}, attributeText(S{}.*m), false},
+          [name, m](S& s, AttributeInput& in) { s.*m = in.vector(name, s.*m); }};
+}
+template <class S>
+Field<S> directionField(const char* name, Vec3 S::*m) {
+  return {{name, AttrType::Direction, {}, {}, attributeText(S{}.*m), false},
+          [name, m](S& s, AttributeInput& in) { s.*m = in.direction(name, s.*m); }};
+}
+template <class S>
+Field<S> booleanField(const char* name, bool S::*m) {
+  return {{name, AttrType::Boolean, {}, {}, S{}.*m ? "true" : "false", false},
+          [name, m](S& s, AttributeInput& in) { s.*m = in.boolean(name, s.*m); }};
+}
+// An attribute the entry's finish() reads itself (type and default for the schema only).
+template <class S>
+Field<S> readByEntry(const char* name, AttrType type, std::string defaultText = "",
+                     std::vector<std::string_view> choices = {}) {
+  return {{name, type, {}, std::move(choices), std::move(defaultText), false}, nullptr};
+}
+
+// The registry's view of a shape, whatever its parameter type.
+struct ShapeType {
+  std::string element;
+  std::string plural;
+  size_t slot = 0;  // the index in the registry: ShapeSpec's alternative, --stats' slot
+  std::vector<AttributeInfo> attributes;
+  std::function<ShapeSpec(AttributeInput&)> read;
+  std::function<std::string(const ShapeSpec&)> notSolid;
+  std::function<std::shared_ptr<const Shape>(const ShapeSpec&)> build;
+  std::function<void(const ShapeSpec&, PovShapeOut&)> writePov;
+  std::function<long long(const ShapeSpec&)> triangles;
+  std::function<std::vector<std::pair<std::string, ShapeSpec>>()> samples;
+
+  std::vector<std::string_view> attributeNames() const;
+};
+
+// Each shape's entry, defined in its own file under shapes/. A ShapeSpec alternative
+// without one fails to link.
+template <class S>
+ShapeEntry<S> shapeEntry();
+
+template <class S>
+ShapeType eraseShapeEntry(ShapeEntry<S> e, size_t slot) {
+  ShapeType t;
+  t.element = e.element;
+  t.plural = e.plural;
+  t.slot = slot;
+  for (const Field<S>& f : e.fields) t.attributes.push_back(f.info);
+  t.read = [fields = e.fields, finish = e.finish](AttributeInput& in) -> ShapeSpec {
+    S s{};
+    for (const Field<S>& f : fields)
+      if (f.read) f.read(s, in);
+    if (finish) finish(s, in);
+    return s;
+  };
+  t.notSolid = [f = e.notSolid](const ShapeSpec& s) { return f(std::get<S>(s)); };
+  t.build = [f = e.build](const ShapeSpec& s) { return f(std::get<S>(s)); };
+  t.writePov = [f = e.pov](const ShapeSpec& s, PovShapeOut& out) { f(std::get<S>(s), out); };
+  t.triangles = [f = e.triangles](const ShapeSpec& s) { return f(std::get<S>(s)); };
+  t.samples = [f = e.samples] {
+    std::vector<std::pair<std::string, ShapeSpec>> out;
+    if (f)
+      for (auto& [name, s] : f()) out.emplace_back(name, ShapeSpec(std::move(s)));
+    return out;
+  };
+  return t;
+}
+
+}  // namespace lucent

@@ -1,0 +1,38 @@
+// <disc center="0 0 0" normal="0 1 0" radius="1" inner-radius="0"/>: a flat disc,
+// optionally with a hole; not a solid (primitives/disc.h).
+#include "scenegraph/shape_type.h"
+
+#include "primitives/disc.h"
+
+#include <fmt/format.h>
+
+namespace lucent {
+
+template <>
+ShapeEntry<DiscSpec> shapeEntry<DiscSpec>() {
+  ShapeEntry<DiscSpec> e(
+      "disc", "discs",
+      [](const DiscSpec& s) { return std::make_shared<Disc>(s.center, s.normal, s.radius, s.innerRadius); },
+      [](const DiscSpec& s, PovShapeOut& out) {
+        out.open("disc");
+        std::string hole = s.innerRadius > 0.0 ? ", " + out.number(s.innerRadius) : "";
+        out.line(fmt::format("{}, {}, {}{}", out.vector(s.center), out.vector(s.normal),
+                             out.number(s.radius), hole));
+      });
+  e.fields = {vectorField("center", &DiscSpec::center), directionField("normal", &DiscSpec::normal),
+              numberField("radius", &DiscSpec::radius, NumberRule::positive()),
+              numberField("inner-radius", &DiscSpec::innerRadius, NumberRule::nonNegative())};
+  e.finish = [](DiscSpec& d, AttributeInput& in) {
+    if (d.innerRadius >= d.radius)
+      in.attrError("inner-radius", fmt::format("'inner-radius' ({}) must be smaller than 'radius' ({})",
+                                               d.innerRadius, d.radius));
+  };
+  e.notSolid = [](const DiscSpec&) { return std::string("a disc encloses no volume"); };
+  e.samples = [] {
+    return std::vector<std::pair<std::string, DiscSpec>>{
+        {"disc", {Vec3(0.2, 0.1, 0), glm::normalize(Vec3(0, 1, 1)), 1.0, 0.3}}};
+  };
+  return e;
+}
+
+}  // namespace lucent

@@ -1,0 +1,26 @@
+// <plane normal="0 1 0" offset="0"/>: the points with N·x = offset, the half-space
+// N·x < offset inside (primitives/plane.h); the normal is normalised on load.
+#include "scenegraph/shape_type.h"
+
+#include "primitives/plane.h"
+
+#include <fmt/format.h>
+
+namespace lucent {
+
+template <>
+ShapeEntry<PlaneSpec> shapeEntry<PlaneSpec>() {
+  ShapeEntry<PlaneSpec> e(
+      "plane", "planes", [](const PlaneSpec& s) { return std::make_shared<Plane>(s.normal, s.offset); },
+      [](const PlaneSpec& s, PovShapeOut& out) {
+        out.open("plane");  // the same convention: n·x = d, inside n·x < d
+        out.line(fmt::format("{}, {}", out.vector(s.normal), out.number(s.offset)));
+      });
+  e.fields = {directionField("normal", &PlaneSpec::normal), numberField("offset", &PlaneSpec::offset)};
+  e.samples = [] {
+    return std::vector<std::pair<std::string, PlaneSpec>>{{"plane", {glm::normalize(Vec3(1, 2, -0.5)), 0.3}}};
+  };
+  return e;
+}
+
+}  // namespace lucent
