@@ -32,6 +32,8 @@ struct RenderOptions {
 
 int runRender(const RenderOptions& options, const CommonOptions& common);
 int runCheck(const std::string& scene, const CommonOptions& common);
+// The XML Schema of the scene language, to stdout or to `output`.
+int runSchema(const std::string& output);
 
 struct ExportPovOptions {
   std::string scene;

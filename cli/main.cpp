@@ -99,6 +99,11 @@ int main(int argc, char** argv) {
   compareCmd->add_option("--camera", compare.camera, "Render through the camera with this name");
   addCommonOptions(compareCmd, common, defines);
 
+  std::string schemaOutput;
+  CLI::App* schemaCmd =
+      app.add_subcommand("schema", "Print the scene language's XML Schema (docs/lucent.xsd)");
+  schemaCmd->add_option("-o,--output", schemaOutput, "Write it to this file instead");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -112,5 +117,6 @@ int main(int argc, char** argv) {
   if (*checkCmd) return runCheck(checkScene, common);
   if (*exportCmd) return runExportPov(exportPov, common);
   if (*compareCmd) return runCompare(compare, common);
+  if (*schemaCmd) return runSchema(schemaOutput);
   return kUsage;
 }

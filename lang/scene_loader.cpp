@@ -129,7 +129,14 @@ void SceneLoader::include(const SourceFile& from, pugi::xml_node element) {
 
 void checkSceneRoot(ParseContext& ctx, const SourceFile& file) {
   ElementReader r(ctx, file, file.root());
-  r.checkAttributes({"version"});
+  // Namespace declarations and xsi: attributes let an editor find the schema
+  // (xsi:noNamespaceSchemaLocation="lucent.xsd"); they mean nothing to Lucent.
+  std::vector<std::string_view> allowed{"version"};
+  for (pugi::xml_attribute a = file.root().first_attribute(); a; a = a.next_attribute()) {
+    std::string_view n = a.name();
+    if (n == "xmlns" || n.rfind("xmlns:", 0) == 0 || n.rfind("xsi:", 0) == 0) allowed.push_back(n);
+  }
+  r.checkAttributes(allowed);
   if (!r.has("version")) {
     r.error("<scene> needs version=\"1\" (the version of the scene language it is written in)");
     return;

@@ -1,0 +1,111 @@
+#include "schema.h"
+
+#include "schema_template.h"  // kSchemaTemplate, made by CMake from schema_template.xsd
+
+#include "scenegraph/shape_registry.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace lucent {
+
+namespace {
+
+std::string escaped(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else if (c == '"') out += "&quot;";
+    else out += c;
+  }
+  return out;
+}
+
+// The template's simple type for an attribute; "" for a choice (written inline).
+std::string typeName(const AttributeInfo& a) {
+  switch (a.type) {
+    case AttrType::Number:
+      if (a.rule.lo == 0.0 && a.rule.loOpen) return "positiveNumber";
+      if (a.rule.lo == 0.0) return "nonNegativeNumber";
+      return "number";  // other ranges the parser checks alone
+    case AttrType::Vector:
+    case AttrType::Direction: return "vector3";
+    case AttrType::Boolean: return "boolean";
+    case AttrType::Text: return "xs:string";
+    case AttrType::File: return "path";
+    case AttrType::NumberList: return a.listArity == 2 ? "pairList" : "tripleList";
+    case AttrType::IntegerList: return "indexTripleList";
+    case AttrType::Choice: return "";
+  }
+  throw std::logic_error("schema: unknown attribute type");
+}
+
+std::string attributeXsd(const AttributeInfo& a) {
+  std::string type = typeName(a);
+  std::string head = fmt::format("        <xs:attribute name=\"{}\"", a.name);
+  if (!type.empty()) head += fmt::format(" type=\"{}\"", type);
+  if (a.required) head += " use=\"required\"";
+  else if (!a.defaultText.empty()) head += fmt::format(" default=\"{}\"", escaped(a.defaultText));
+  std::string doc = a.doc;
+  if (!a.required && !a.defaultText.empty()) doc += (doc.empty() ? "" : " ") + ("Default " + a.defaultText + ".");
+  std::string out = head + ">\n";
+  out += fmt::format("          <xs:annotation><xs:documentation>{}</xs:documentation></xs:annotation>\n", escaped(doc));
+  if (type.empty()) {
+    out += "          <xs:simpleType>\n            <xs:union memberTypes=\"parameterReference\">\n";
+    out += "              <xs:simpleType>\n                <xs:restriction base=\"xs:token\">\n";
+    for (std::string_view c : a.choices)
+      out += fmt::format("                  <xs:enumeration value=\"{}\"/>\n", escaped(c));
+    out += "                </xs:restriction>\n              </xs:simpleType>\n";
+    out += "            </xs:union>\n          </xs:simpleType>\n";
+  }
+  return out + "        </xs:attribute>\n";
+}
+
+std::string shapeElements() {
+  std::string out;
+  for (const ShapeType& t : shapeTypes())
+    out += fmt::format(
+        "      <xs:element name=\"{0}\" type=\"{0}Type\">\n"
+        "        <xs:annotation><xs:documentation>{1}</xs:documentation></xs:annotation>\n"
+        "      </xs:element>\n",
+        t.element, escaped(t.doc));
+  return out;
+}
+
+std::string shapeTypesXsd() {
+  std::string out;
+  for (const ShapeType& t : shapeTypes()) {
+    out += fmt::format("  <xs:complexType name=\"{}Type\">\n    <xs:complexContent>\n"
+                       "      <xs:extension base=\"leafType\">\n", t.element);
+    for (const AttributeInfo& a : t.attributes) out += attributeXsd(a);
+    out += "      </xs:extension>\n    </xs:complexContent>\n  </xs:complexType>\n\n";
+  }
+  return out;
+}
+
+std::string shapeXpath() {
+  std::string out;
+  for (const ShapeType& t : shapeTypes()) out += ".//" + t.element + " | ";
+  return out;
+}
+
+void replaceOnce(std::string& text, std::string_view marker, const std::string& with) {
+  size_t at = text.find(marker);
+  if (at == std::string::npos) throw std::logic_error("schema template: no marker " + std::string(marker));
+  text.replace(at, marker.size(), with);
+}
+
+}  // namespace
+
+std::string schemaText() {
+  std::string text(kSchemaTemplate);
+  replaceOnce(text, "@SHAPE_XPATH@", shapeXpath());
+  replaceOnce(text, "@SHAPE_ELEMENTS@", shapeElements());
+  replaceOnce(text, "@SHAPE_TYPES@", shapeTypesXsd());
+  return text;
+}
+
+}  // namespace lucent
