@@ -4,6 +4,8 @@
 
 #include "primitives/transform.h"
 
+#include <exception>
+
 namespace lucent {
 
 namespace {
@@ -32,7 +34,11 @@ bool contains(const Node& node, const Transform& parentWorld, const Vec3& p) {
         for (const Vec3& v : mesh->data->positions) box.expand(v);
         if (!box.contains(local)) return false;
       }
-      return makeShape(*node.shape)->inside(local);
+      try {
+        return makeShape(*node.shape)->inside(local);
+      } catch (const std::exception&) {
+        return false;  // a shape that cannot be built is the world builder's error to report
+      }
     }
     case NodeKind::Use: return node.target && contains(*node.target, *world, p);
     case NodeKind::Group:
