@@ -10,7 +10,8 @@
 // than 2/255 (on sRGB-encoded values).
 //
 // Exit statuses: 1 wrong usage; 2 an invalid scene or one that cannot be exported; 3 no
-// povray (with how to install it), a POV-Ray failure, or files that cannot be written.
+// povray (with how to install it), a POV-Ray failure, a --pov scene whose assumed_gamma
+// cannot be read (its images could not be read back), or files that cannot be written.
 // The metrics never change the status: comparing is a measurement.
 #include "commands.h"
 
@@ -18,6 +19,7 @@
 #include "povray/compare_report.h"
 #include "povray/image_compare.h"
 #include "povray/pov_export.h"
+#include "povray/pov_gamma.h"
 #include "povray/pov_runner.h"
 #include "render/camera_frame.h"
 #include "render/renderer.h"
@@ -71,16 +73,24 @@ std::string logTail(const fs::path& log, size_t lines) {
 
 // A hand-written scene without `#version 3.7` is read with the 3.62 rules, which change
 // transparency and gamma (shared/povray-notes.md section 0).
-std::vector<std::string> checkHandWritten(const std::string& path) {
-  std::ifstream in(path);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+std::vector<std::string> checkHandWritten(const std::string& path, const std::string& text,
+                                          const PovAssumedGamma& gamma) {
   std::vector<std::string> notes;
   if (text.find("#version") == std::string::npos)
     notes.push_back(path + ": no #version directive: POV-Ray reads it with 3.62 rules "
                            "(transparency and gamma differ); start it with `#version 3.7;`");
-  if (text.find("assumed_gamma") == std::string::npos)
+  if (gamma.kind == PovAssumedGamma::Kind::Absent)
     notes.push_back(path + ": no assumed_gamma: put `global_settings { assumed_gamma 1.0 }` "
                            "so colours are linear as in Lucent");
+  if (gamma.nonLinear())
+    notes.push_back(fmt::format(
+        "{}:{}: assumed_gamma {}: POV-Ray computes with the scene's numbers as they are and "
+        "writes them as {}-encoded values; compared its working values (File_Gamma={}) with "
+        "Lucent's linear ones, which holds where the Lucent scene has the same numbers (image "
+        "maps and srgb colours are decoded by POV-Ray and would differ)",
+        path, gamma.line, gamma.fileGamma(),
+        gamma.kind == PovAssumedGamma::Kind::Srgb ? "sRGB" : "gamma-" + gamma.fileGamma(),
+        gamma.fileGamma()));
   return notes;
 }
 
@@ -149,6 +159,7 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
   try {
     // The POV-Ray scene: exported next to the results, or the user's own.
     fs::path povScene;
+    std::string fileGamma = "1.0";
     if (options.povFile.empty()) {
       PovExport exported = exportPov(scene, PovExportOptions{options.camera});
       for (const PovIssue& issue : exported.issues) {
@@ -164,7 +175,18 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
     } else {
       povScene = fs::absolute(options.povFile);
       report.handWritten = true;
-      for (const std::string& note : checkHandWritten(options.povFile)) {
+      std::ifstream in(options.povFile);
+      const std::string text((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
+      const PovAssumedGamma gamma = findAssumedGamma(text);
+      if (gamma.kind == PovAssumedGamma::Kind::Unreadable)
+        return fail(fmt::format("--pov {}: {}: POV-Ray's output depends on its working gamma, "
+                                "which compare must know to read the image back; write "
+                                "`assumed_gamma` with a number (or srgb) in global_settings",
+                                options.povFile, gamma.problem),
+                    kRuntimeFailure);
+      fileGamma = gamma.fileGamma();
+      for (const std::string& note : checkHandWritten(options.povFile, text, gamma)) {
         fmt::print(stderr, "lucent: warning: {}\n", note);
         report.warnings.push_back(note);
       }
@@ -195,6 +217,7 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
     job.height = settings.height;
     job.samples = settings.samples;
     job.threads = options.threads.value_or(0);
+    job.fileGamma = fileGamma;
     std::vector<std::string> args = povrayArguments(job);
     report.povrayCommand = commandLine(*povray, args);
     const fs::path log = fs::absolute(dir / report.povrayLog);

@@ -5,6 +5,7 @@
 // by file (in the order files were read), line and column.
 #include "parser.h"
 
+#include "camera_inside_warning.h"
 #include "element_parsers.h"
 #include "scene_loader.h"
 
@@ -91,6 +92,7 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
         const SourceFile& topFile = *loader.files().front();
         diags.error(topFile.loc(topFile.root()), "the scene has no <camera> (at least one is required)");
       }
+      if (!diags.hasErrors()) warnCamerasInsideOpaqueSolids(*scene, diags);
       for (const std::string& name : params.unusedDefines())
         diags.warning(SourceLoc{path, 0, 0}, "-D " + name + " is not used by the scene");
     }

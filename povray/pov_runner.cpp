@@ -44,7 +44,7 @@ const char* povrayInstallHint() {
 std::vector<std::string> povrayArguments(const PovrayRender& r) {
   std::vector<std::string> args = {
       "+I" + r.input, "+O" + r.output, fmt::format("+W{}", r.width), fmt::format("+H{}", r.height),
-      "-D", "-V", "-GS", "-GR", "+FN16", "File_Gamma=1.0"};
+      "-D", "-V", "-GS", "-GR", "+FN16", "File_Gamma=" + r.fileGamma};
   if (r.samples <= 1) {
     args.push_back("-A");
   } else {

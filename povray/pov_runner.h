@@ -20,11 +20,14 @@ struct PovrayRender {
   int width = 0, height = 0;
   int samples = 1;     // 1: no antialiasing (pixel centres, as Lucent's single sample)
   int threads = 0;     // 0: POV-Ray's default
+  // File_Gamma: 1.0 writes linear values; a scene with another assumed_gamma needs that
+  // gamma here to write its working values (pov_gamma.h).
+  std::string fileGamma = "1.0";
 };
 
-// povray +I.. +O.. +W +H -D -V -GS -GR +FN16 File_Gamma=1.0 -A (or +A0.0 -J +AM1 +Rn):
+// povray +I.. +O.. +W +H -D -V -GS -GR +FN16 File_Gamma=G -A (or +A0.0 -J +AM1 +Rn):
 // no preview window (Debian's povray.ini turns it on), warnings and errors kept, statistics
-// and progress dropped, 16-bit PNG holding linear values.
+// and progress dropped, 16-bit PNG holding linear values (G = 1.0, the default).
 std::vector<std::string> povrayArguments(const PovrayRender& render);
 
 struct ProcessResult {
