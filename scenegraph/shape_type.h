@@ -30,6 +30,8 @@ struct AttributeInfo {
   std::vector<std::string_view> choices;  // choices: the words
   std::string defaultText;                // as a user would write it; "" when there is none
   bool required = false;
+  std::string doc;                        // one or two sentences, for the schema
+  int listArity = 1;                      // lists: numbers per item (3 for x y z)
 };
 
 // The exporter's side of writing one shape (povray/pov_geometry.cpp implements it). The
@@ -53,6 +55,11 @@ template <class S>
 struct Field {
   AttributeInfo info;
   std::function<void(S&, AttributeInput&)> read;
+
+  Field doc(std::string text) && {
+    info.doc = std::move(text);
+    return std::move(*this);
+  }
 };
 
 template <class S>
@@ -67,6 +74,7 @@ struct ShapeEntry {
 
   const char* element;  // "sphere"
   const char* plural;   // "spheres", for --stats
+  const char* doc = "";  // one sentence for the schema: "A sphere (solid)."
   std::vector<Field<S>> fields;
   // After the fields are read: checks between attributes, loading; may be empty.
   std::function<void(S&, AttributeInput&)> finish;
@@ -108,14 +116,15 @@ Field<S> booleanField(const char* name, bool S::*m) {
 // An attribute the entry's finish() reads itself (type and default for the schema only).
 template <class S>
 Field<S> readByEntry(const char* name, AttrType type, std::string defaultText = "",
-                     std::vector<std::string_view> choices = {}) {
-  return {{name, type, {}, std::move(choices), std::move(defaultText), false}, nullptr};
+                     std::vector<std::string_view> choices = {}, int listArity = 1) {
+  return {{name, type, {}, std::move(choices), std::move(defaultText), false, "", listArity}, nullptr};
 }
 
 // The registry's view of a shape, whatever its parameter type.
 struct ShapeType {
   std::string element;
   std::string plural;
+  std::string doc;
   size_t slot = 0;  // the index in the registry: ShapeSpec's alternative, --stats' slot
   std::vector<AttributeInfo> attributes;
   std::function<ShapeSpec(AttributeInput&)> read;
@@ -138,6 +147,7 @@ ShapeType eraseShapeEntry(ShapeEntry<S> e, size_t slot) {
   ShapeType t;
   t.element = e.element;
   t.plural = e.plural;
+  t.doc = e.doc;
   t.slot = slot;
   for (const Field<S>& f : e.fields) t.attributes.push_back(f.info);
   t.read = [fields = e.fields, finish = e.finish](AttributeInput& in) -> ShapeSpec {

@@ -15,7 +15,8 @@ ShapeEntry<BoxSpec> shapeEntry<BoxSpec>() {
         out.open("box");
         out.line(fmt::format("{}, {}", out.vector(s.min), out.vector(s.max)));
       });
-  e.fields = {vectorField("min", &BoxSpec::min), vectorField("max", &BoxSpec::max)};
+  e.doc = "An axis-aligned box from min to max (solid).";
+  e.fields = {vectorField("min", &BoxSpec::min).doc("Minimum corner."), vectorField("max", &BoxSpec::max).doc("Maximum corner: each coordinate must be above min's.")};
   e.finish = [](BoxSpec& b, AttributeInput& in) {
     for (int k = 0; k < 3; ++k)
       if (!(b.min[k] < b.max[k])) {

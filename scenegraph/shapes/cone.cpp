@@ -21,11 +21,12 @@ ShapeEntry<ConeSpec> shapeEntry<ConeSpec>() {
                              out.vector(s.cap), out.number(s.capRadius)));
         if (s.open) out.line("open");
       });
-  e.fields = {vectorField("base", &ConeSpec::base),
-              numberField("base-radius", &ConeSpec::baseRadius, NumberRule::nonNegative()),
-              vectorField("cap", &ConeSpec::cap),
-              numberField("cap-radius", &ConeSpec::capRadius, NumberRule::nonNegative()),
-              booleanField("open", &ConeSpec::open)};
+  e.doc = "A cone or truncated cone from base to cap (solid unless open).";
+  e.fields = {vectorField("base", &ConeSpec::base).doc("Centre of the base."),
+              numberField("base-radius", &ConeSpec::baseRadius, NumberRule::nonNegative()).doc("Radius at base."),
+              vectorField("cap", &ConeSpec::cap).doc("Centre of the other end."),
+              numberField("cap-radius", &ConeSpec::capRadius, NumberRule::nonNegative()).doc("Radius at cap; 0 gives a pointed cone."),
+              booleanField("open", &ConeSpec::open).doc("true: no end caps (then not solid).")};
   e.finish = [](ConeSpec& c, AttributeInput& in) {
     if (c.base == c.cap)
       in.attrError(in.has("cap") ? "cap" : "base", "'base' and 'cap' must differ (the axis would have no length)");

@@ -18,9 +18,10 @@ ShapeEntry<CylinderSpec> shapeEntry<CylinderSpec>() {
         out.line(fmt::format("{}, {}, {}", out.vector(s.base), out.vector(s.cap), out.number(s.radius)));
         if (s.open) out.line("open");
       });
-  e.fields = {vectorField("base", &CylinderSpec::base), vectorField("cap", &CylinderSpec::cap),
-              numberField("radius", &CylinderSpec::radius, NumberRule::positive()),
-              booleanField("open", &CylinderSpec::open)};
+  e.doc = "A cylinder from base to cap (solid unless open).";
+  e.fields = {vectorField("base", &CylinderSpec::base).doc("Centre of the base cap."), vectorField("cap", &CylinderSpec::cap).doc("Centre of the top cap."),
+              numberField("radius", &CylinderSpec::radius, NumberRule::positive()).doc("Radius."),
+              booleanField("open", &CylinderSpec::open).doc("true: no end caps (then not solid).")};
   e.finish = [](CylinderSpec& c, AttributeInput& in) {
     if (c.base == c.cap)
       in.attrError(in.has("cap") ? "cap" : "base", "'base' and 'cap' must differ (the axis would have no length)");

@@ -19,9 +19,10 @@ ShapeEntry<DiscSpec> shapeEntry<DiscSpec>() {
         out.line(fmt::format("{}, {}, {}{}", out.vector(s.center), out.vector(s.normal),
                              out.number(s.radius), hole));
       });
-  e.fields = {vectorField("center", &DiscSpec::center), directionField("normal", &DiscSpec::normal),
-              numberField("radius", &DiscSpec::radius, NumberRule::positive()),
-              numberField("inner-radius", &DiscSpec::innerRadius, NumberRule::nonNegative())};
+  e.doc = "A flat disc or annulus (not solid).";
+  e.fields = {vectorField("center", &DiscSpec::center).doc("Centre."), directionField("normal", &DiscSpec::normal).doc("Normal (normalised on load)."),
+              numberField("radius", &DiscSpec::radius, NumberRule::positive()).doc("Outer radius."),
+              numberField("inner-radius", &DiscSpec::innerRadius, NumberRule::nonNegative()).doc("Radius of the hole (below radius).")};
   e.finish = [](DiscSpec& d, AttributeInput& in) {
     if (d.innerRadius >= d.radius)
       in.attrError("inner-radius", fmt::format("'inner-radius' ({}) must be smaller than 'radius' ({})",

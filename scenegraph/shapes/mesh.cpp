@@ -167,12 +167,13 @@ ShapeEntry<MeshSpec> shapeEntry<MeshSpec>() {
     out.open("object");
     out.line(out.declaredMesh(s));
   });
-  e.fields = {readByEntry<MeshSpec>("src", AttrType::File),
-              readByEntry<MeshSpec>("positions", AttrType::NumberList),
-              readByEntry<MeshSpec>("indices", AttrType::IntegerList),
-              readByEntry<MeshSpec>("normals", AttrType::NumberList),
-              readByEntry<MeshSpec>("uvs", AttrType::NumberList),
-              readByEntry<MeshSpec>("smooth", AttrType::Choice, "auto", {"auto", "true", "false"})};
+  e.doc = "A triangle mesh from a file (src) or inline (positions, indices); solid if closed and consistently oriented.";
+  e.fields = {readByEntry<MeshSpec>("src", AttrType::File).doc("An OBJ, PLY, OFF or STL file, relative to the scene file. Either src or positions + indices."),
+              readByEntry<MeshSpec>("positions", AttrType::NumberList, "", {}, 3).doc("Inline mesh: vertex positions, three numbers each."),
+              readByEntry<MeshSpec>("indices", AttrType::IntegerList, "", {}, 3).doc("Inline mesh: triangles, three 0-based vertex indices each, counter-clockwise seen from outside."),
+              readByEntry<MeshSpec>("normals", AttrType::NumberList, "", {}, 3).doc("Inline mesh: one normal (three numbers) per position; normalised and interpolated like a triangle's vertex normals. Optional."),
+              readByEntry<MeshSpec>("uvs", AttrType::NumberList, "", {}, 2).doc("Inline mesh: one (u,v) pair per position, for image textures. Optional."),
+              readByEntry<MeshSpec>("smooth", AttrType::Choice, "auto", {"auto", "true", "false"}).doc("auto (use the file's or the inline normals if any) | true (compute vertex normals) | false (flat).")};
   e.finish = readMesh;
   e.notSolid = [](const MeshSpec& s) {
     return s.data && s.data->closed ? std::string() : std::string("the mesh is not closed and consistently oriented");

@@ -16,7 +16,8 @@ ShapeEntry<PlaneSpec> shapeEntry<PlaneSpec>() {
         out.open("plane");  // the same convention: n·x = d, inside n·x < d
         out.line(fmt::format("{}, {}", out.vector(s.normal), out.number(s.offset)));
       });
-  e.fields = {directionField("normal", &PlaneSpec::normal), numberField("offset", &PlaneSpec::offset)};
+  e.doc = "An infinite plane N·x = offset; the half-space N·x < offset is inside (solid).";
+  e.fields = {directionField("normal", &PlaneSpec::normal).doc("Normal N (normalised on load; outward: N·x < offset is inside)."), numberField("offset", &PlaneSpec::offset).doc("The plane is N·x = offset (distance from the origin along N).")};
   e.samples = [] {
     return std::vector<std::pair<std::string, PlaneSpec>>{{"plane", {glm::normalize(Vec3(1, 2, -0.5)), 0.3}}};
   };

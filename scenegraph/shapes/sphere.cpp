@@ -16,8 +16,9 @@ ShapeEntry<SphereSpec> shapeEntry<SphereSpec>() {
         out.open("sphere");
         out.line(fmt::format("{}, {}", out.vector(s.center), out.number(s.radius)));
       });
-  e.fields = {vectorField("center", &SphereSpec::center),
-              numberField("radius", &SphereSpec::radius, NumberRule::positive())};
+  e.doc = "A sphere (solid).";
+  e.fields = {vectorField("center", &SphereSpec::center).doc("Centre."),
+              numberField("radius", &SphereSpec::radius, NumberRule::positive()).doc("Radius.")};
   e.samples = [] {
     return std::vector<std::pair<std::string, SphereSpec>>{
         {"sphere", {Vec3(0.5, -0.25, 1.0), 1.5}}, {"small sphere", {Vec3(0.0), 1e-3}}};

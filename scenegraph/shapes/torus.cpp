@@ -17,8 +17,9 @@ ShapeEntry<TorusSpec> shapeEntry<TorusSpec>() {
         out.open("torus");  // POV-Ray's lies in the xz-plane around the y axis too
         out.line(fmt::format("{}, {}", out.number(s.major), out.number(s.minor)));
       });
-  e.fields = {numberField("major", &TorusSpec::major, NumberRule::positive()),
-              numberField("minor", &TorusSpec::minor, NumberRule::positive())};
+  e.doc = "A torus in the xz-plane around the y axis (solid).";
+  e.fields = {numberField("major", &TorusSpec::major, NumberRule::positive()).doc("Radius of the ring's centre line, around the y axis."),
+              numberField("minor", &TorusSpec::minor, NumberRule::positive()).doc("Radius of the tube.")};
   e.samples = [] {
     return std::vector<std::pair<std::string, TorusSpec>>{
         {"torus", {1.0, 0.25}}, {"thin torus", {2.0, 0.01}}, {"fat torus", {1.0, 0.9}},

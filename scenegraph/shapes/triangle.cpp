@@ -34,10 +34,11 @@ ShapeEntry<TriangleSpec> shapeEntry<TriangleSpec>() {
           out.line(fmt::format("{}, {}, {}", out.vector(s.a), out.vector(s.b), out.vector(s.c)));
         }
       });
-  e.fields = {corner("a", &TriangleSpec::a), corner("b", &TriangleSpec::b), corner("c", &TriangleSpec::c),
-              readByEntry<TriangleSpec>("na", AttrType::Direction),
-              readByEntry<TriangleSpec>("nb", AttrType::Direction),
-              readByEntry<TriangleSpec>("nc", AttrType::Direction)};
+  e.doc = "A single triangle a, b, c (not solid).";
+  e.fields = {corner("a", &TriangleSpec::a).doc("First vertex. Seen from the front the vertices a, b, c run counter-clockwise (normal = (b−a)×(c−a))."), corner("b", &TriangleSpec::b).doc("Second vertex."), corner("c", &TriangleSpec::c).doc("Third vertex."),
+              readByEntry<TriangleSpec>("na", AttrType::Direction).doc("Vertex normal at a (normalised; give na, nb and nc together). Normals are interpolated with the barycentric coordinates and normalised again."),
+              readByEntry<TriangleSpec>("nb", AttrType::Direction).doc("Vertex normal at b."),
+              readByEntry<TriangleSpec>("nc", AttrType::Direction).doc("Vertex normal at c.")};
   e.finish = [](TriangleSpec& t, AttributeInput& in) {
     bool complete = true;
     for (const char* c : {"a", "b", "c"})
