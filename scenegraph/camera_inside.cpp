@@ -1,6 +1,6 @@
 #include "camera_inside.h"
 
-#include "make_shape.h"
+#include "shape_registry.h"
 
 #include "primitives/transform.h"
 
