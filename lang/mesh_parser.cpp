@@ -15,6 +15,19 @@ namespace lucent {
 
 namespace {
 
+// Loading keeps what orientation repaired (the mesh is usable, and a solid if closed), but
+// says so: a face written backwards is usually a modelling mistake worth knowing of.
+void warnRepairs(ElementReader& r, const MeshData& data, const std::string& what) {
+  const MeshData::Repairs& repairs = data.repairs;
+  if (repairs.flippedFaces == 0) return;
+  const bool one = repairs.flippedFaces == 1;
+  r.warning(fmt::format("{}: {} of {} {} {} flipped to agree with {} neighbours{}", what,
+                        repairs.flippedFaces, repairs.faces,
+                        repairs.onlyTriangles ? "triangles" : "faces", one ? "was" : "were",
+                        one ? "its" : "their",
+                        data.closed ? "; the mesh is closed and is used as a solid" : ""));
+}
+
 std::shared_ptr<const MeshData> loadFromFile(ElementReader& r, const std::string& src) {
   FileAccess::Resolved f = r.ctx().files.resolve(src, r.file().folder());
   if (f.path.empty()) {
@@ -27,6 +40,7 @@ std::shared_ptr<const MeshData> loadFromFile(ElementReader& r, const std::string
   try {
     std::shared_ptr<const MeshData> data = loadMeshFile(key);
     cache.emplace(key, data);
+    warnRepairs(r, *data, "<mesh src=\"" + src + "\">");  // once per file, where it is first read
     return data;
   } catch (const std::exception& e) {  // MeshError, and anything a reader library throws
     r.attrError("src", "cannot read the mesh '" + src + "': " + e.what());
@@ -125,6 +139,7 @@ std::shared_ptr<const MeshData> buildInline(ElementReader& r) {
     r.error(std::string("<mesh>: ") + e.what());
     return nullptr;
   }
+  warnRepairs(r, *data, "<mesh>");
   return data;
 }
 
