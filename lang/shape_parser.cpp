@@ -45,7 +45,7 @@ class ElementInput final : public AttributeInput {
     }
     return *list;
   }
-  std::shared_ptr<const MeshData> meshFile(const char* attr) override;
+  std::shared_ptr<const MeshData> meshFile(const char* attr, bool* firstRead) override;
 
   void attrError(const char* attr, const std::string& message) override { r_.attrError(attr, message); }
   void error(const std::string& message) override { r_.error(message); }
@@ -57,7 +57,8 @@ class ElementInput final : public AttributeInput {
 };
 
 // Each file is read once however many elements name it.
-std::shared_ptr<const MeshData> ElementInput::meshFile(const char* attr) {
+std::shared_ptr<const MeshData> ElementInput::meshFile(const char* attr, bool* firstRead) {
+  if (firstRead) *firstRead = false;
   auto src = r_.text(attr);
   if (!src) return nullptr;
   FileAccess::Resolved f = r_.ctx().files.resolve(*src, r_.file().folder());
@@ -71,6 +72,7 @@ std::shared_ptr<const MeshData> ElementInput::meshFile(const char* attr) {
   try {
     std::shared_ptr<const MeshData> data = loadMeshFile(key);
     cache.emplace(key, data);
+    if (firstRead) *firstRead = true;
     return data;
   } catch (const std::exception& e) {  // MeshError, and anything a reader library throws
     r_.attrError(attr, "cannot read the mesh '" + *src + "': " + e.what());

@@ -1,6 +1,7 @@
 #include "pov_geometry.h"
 #include "scenegraph/shape_registry.h"
 
+#include "pov_smooth_normals.h"
 #include "primitives/triangle_mesh.h"
 
 #include <fmt/core.h>
@@ -211,6 +212,7 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
     issues_.warning(node.loc, fmt::format("<{}> has no inside: Lucent passes light straight "
                                           "through it, POV-Ray refracts with ior {}",
                                           node.element, mat.ior));
+  warnSmoothNormalRule(node, issues_);
   used_[material] = true;
   if (const auto* box = std::get_if<BoxSpec>(&*node.shape); box && materials_.usesImageMap(material)) {
     // Each face has its own copy of the image: the box as the intersection of its six

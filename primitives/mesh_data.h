@@ -4,6 +4,7 @@
 #include "math.h"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,6 +20,16 @@ struct MeshData {
   // Edges are counted between coincident positions: a position is repeated where its
   // corners have different normals or uvs (a seam), so indices alone may not pair up.
   bool closed = false;
+
+  // What loading repaired that the file or the inline lists got wrong, for a warning
+  // (lang/mesh_parser.cpp). Faces counted as read, after duplicates and faces without
+  // three distinct corners were dropped.
+  struct Repairs {
+    std::size_t faces = 0;         // faces read
+    std::size_t flippedFaces = 0;  // turned over to agree with their neighbours
+    bool onlyTriangles = true;     // every face read was a triangle
+  };
+  Repairs repairs;
 };
 
 }  // namespace lucent

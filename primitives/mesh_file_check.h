@@ -7,10 +7,13 @@
 // in a few cases adjusted so that its reader takes the right path (checkStlBytes, scanObj).
 #pragma once
 
+#include "math.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace lucent {
 
@@ -35,9 +38,22 @@ struct MeshCounts {
   std::size_t vertices = 0, faces = 0;
 };
 
-// Structural checks, one per format; each throws MeshError naming the first problem.
-void checkOffBytes(std::string_view bytes);  // ASCII OFF, COFF, NOFF, CNOFF
-MeshCounts checkPlyBytes(std::string_view bytes);  // ASCII and binary PLY
+// Per-vertex attributes a file declares, in the file's vertex order (CGAL's readers drop
+// them). Each list is empty or holds one entry per vertex of the file, as written (not
+// normalised, possibly zero or not finite: mesh_io.cpp decides what is usable).
+struct VertexAttributes {
+  std::vector<Vec3> normals;
+  std::vector<Vec2> uvs;
+};
+
+// Structural checks, one per format; each throws MeshError naming the first problem. With
+// `attributes`, the walk also keeps what the vertices carry besides positions:
+// OFF: normals of NOFF and CNOFF (colours of COFF are checked and ignored);
+// PLY: normals from nx ny nz, texture coordinates from s t, u v, texture_u texture_v or
+// texture_s texture_t (each pair only when both are scalars of the vertex element);
+// colours are checked and ignored.
+void checkOffBytes(std::string_view bytes, VertexAttributes* attributes = nullptr);  // ASCII OFF, COFF, NOFF, CNOFF
+MeshCounts checkPlyBytes(std::string_view bytes, VertexAttributes* attributes = nullptr);  // ASCII and binary PLY
 // ASCII and binary STL; settles the layout for CGAL's reader, editing the buffer if needed.
 void checkStlBytes(std::string& bytes);
 // OBJ is walked by scanObj (obj_scan.h), which also collects normals and texture coordinates.

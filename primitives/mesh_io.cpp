@@ -13,10 +13,13 @@
 //   is_closed             no border edge: the mesh encloses a volume
 //   orient_to_bound_a_volume   for closed meshes: every shell outward, a shell nested in
 //                         another inward (a hollow ball), so normals point out of the solid
-// Normals and texture coordinates (inline ones, and OBJ vn/vt, which CGAL's reader drops)
-// are carried over by matching each final triangle to the input face it came from by its
-// corner coordinates (CGAL never moves a point); a position whose corners disagree (a seam)
-// is split into one vertex per distinct (normal, uv).
+// Normals and texture coordinates (inline ones, OBJ vn/vt, PLY and OFF vertex properties:
+// CGAL's soup readers drop them all) are carried over by matching each final triangle to
+// the input face it came from by its corner coordinates (CGAL never moves a point); a
+// position whose corners disagree (a seam) is split into one vertex per distinct (normal,
+// uv). A face turned over by orientation keeps its corners' normals as they are: a vertex
+// normal belongs to the vertex, which its unturned neighbours share, and shading turns an
+// interpolated normal to the side of its face (triangle_geometry.h).
 // triangulate_faces meets a self-intersecting polygon through CGAL's constrained Delaunay
 // triangulation, which then prints a performance hint on stderr in builds without NDEBUG;
 // the face is simply left untriangulated (and dropped below), so the hint is noise.
@@ -245,13 +248,61 @@ void triangulatePolygons(SurfaceMesh& mesh) {
   PMP::triangulate_faces(simple, mesh);
 }
 
-// repair → orient → halfedge mesh. The soup is consumed.
-SurfaceMesh orientedMesh(Soup& soup, std::size_t inputFaces) {
+// Notes which polygons orient_polygon_soup turns over (toggled: a polygon turned twice is
+// as it was). CGAL copies the visitor, hence the pointer.
+struct FlipRecorder : PMP::Default_orientation_visitor {
+  std::vector<char>* turned = nullptr;
+  void polygon_orientation_reversed(std::size_t polygon) { (*turned)[polygon] ^= 1; }
+};
+
+// How many of the oriented soup's polygons disagreed with their neighbours in the input.
+// CGAL orients each connected shell from a face of its choosing, and a closed shell may be
+// turned over as a whole afterwards (orient_to_bound_a_volume): the faces that were wrong
+// are the smaller part of each shell, the turned or the kept ones. Shells are told apart by
+// shared points (orientation cuts non-manifold points apart).
+std::size_t disagreeingFaces(const Soup& soup, const std::vector<char>& turned) {
+  if (std::find(turned.begin(), turned.end(), 1) == turned.end()) return 0;
+  std::vector<std::size_t> parent(soup.points.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  auto root = [&](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const Polygon& p : soup.polygons)
+    for (std::size_t k = 1; k < p.size(); ++k) {
+      const std::size_t a = root(p[0]), b = root(p[k]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<std::size_t> total(soup.points.size(), 0), flipped(soup.points.size(), 0);
+  for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
+    const std::size_t r = root(soup.polygons[f][0]);
+    ++total[r];
+    flipped[r] += turned[f] ? 1 : 0;
+  }
+  std::size_t wrong = 0;
+  for (std::size_t r = 0; r < total.size(); ++r) wrong += std::min(flipped[r], total[r] - flipped[r]);
+  return wrong;
+}
+
+// repair → orient → halfedge mesh. The soup is consumed. With `repairs`, the faces that
+// orientation turned over are counted there.
+SurfaceMesh orientedMesh(Soup& soup, std::size_t inputFaces, MeshData::Repairs* repairs = nullptr) {
   PMP::repair_polygon_soup(soup.points, soup.polygons);
   if (soup.polygons.empty())
     throw MeshError(fmt::format("no usable face: none of the {} faces has three distinct vertices",
                                 inputFaces));
-  PMP::orient_polygon_soup(soup.points, soup.polygons);
+  if (repairs) {
+    std::vector<char> turned(soup.polygons.size(), 0);
+    FlipRecorder recorder;
+    recorder.turned = &turned;
+    PMP::orient_polygon_soup(soup.points, soup.polygons, CGAL::parameters::visitor(recorder));
+    repairs->faces = soup.polygons.size();
+    repairs->flippedFaces = disagreeingFaces(soup, turned);
+    repairs->onlyTriangles = std::all_of(soup.polygons.begin(), soup.polygons.end(),
+                                         [](const Polygon& p) { return p.size() == 3; });
+  } else {
+    PMP::orient_polygon_soup(soup.points, soup.polygons);
+  }
   if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
     throw MeshError("CGAL could not orient the faces into a consistent surface");
   SurfaceMesh mesh;
@@ -319,9 +370,13 @@ MeshData solidOrSurface(Soup soup) {
       if (v >= soup.points.size())
         throw MeshError(fmt::format("face {} uses vertex {}, but there are only {} vertices", f + 1,
                                     v, soup.points.size()));
-  if (std::optional<MeshData> clean = cleanClosed(soup)) return std::move(*clean);
+  if (std::optional<MeshData> clean = cleanClosed(soup)) {
+    clean->repairs.faces = clean->triangles.size();
+    return std::move(*clean);
+  }
   const std::size_t inputFaces = soup.polygons.size();
-  SurfaceMesh mesh = orientedMesh(soup, inputFaces);
+  MeshData::Repairs repairs;
+  SurfaceMesh mesh = orientedMesh(soup, inputFaces, &repairs);
   bool split = false;
   for (SurfaceMesh::Face_index f : mesh.faces()) split |= mesh.degree(f) > 3;
   triangulatePolygons(mesh);
@@ -341,6 +396,7 @@ MeshData solidOrSurface(Soup soup) {
   if (dropped > 0 || split) mesh = orientedMesh(triangles, inputFaces);
 
   MeshData out;
+  out.repairs = repairs;
   out.closed = CGAL::is_closed(mesh);
   if (out.closed) PMP::orient_to_bound_a_volume(mesh);
 
@@ -397,6 +453,7 @@ bool carryAttributes(const Soup& input, const CornerAttributes& attrs, MeshData&
   std::vector<std::vector<Variant>> variants(out.positions.size());
   MeshData result;
   result.closed = out.closed;
+  result.repairs = out.repairs;
   for (const auto& t : out.triangles) {
     const Vec3 p[3] = {out.positions[t[0]], out.positions[t[1]], out.positions[t[2]]};
     auto range = std::equal_range(entries.begin(), entries.end(), Entry{p[0], 0, 0},
@@ -459,6 +516,43 @@ CornerAttributes objAttributes(const ObjScan& scan, const Soup& soup) {
   return attrs;
 }
 
+// Per-vertex attributes of a PLY or OFF file → corner attributes (each corner takes its
+// vertex's). All or nothing, as for OBJ: normals only if every vertex a face uses has a
+// nonzero finite one, uvs only if every such vertex has finite ones. Vertex i of the file
+// is point i of CGAL's soup, which both readers fill in file order; a count that differs
+// (CGAL read the file otherwise) keeps nothing.
+CornerAttributes vertexAttributes(const VertexAttributes& file, const Soup& soup) {
+  CornerAttributes attrs;
+  const std::size_t n = soup.points.size();
+  bool normals = file.normals.size() == n && n > 0, uvs = file.uvs.size() == n && n > 0;
+  for (const Polygon& p : soup.polygons)
+    for (std::size_t v : p) {
+      if (normals) {
+        const double length = glm::length(file.normals[v]);
+        normals = length > 0 && std::isfinite(length);
+      }
+      if (uvs) uvs = std::isfinite(file.uvs[v].x) && std::isfinite(file.uvs[v].y);
+    }
+  if (normals) {
+    attrs.normals.reserve(n);
+    for (const Vec3& normal : file.normals) {
+      const double length = glm::length(normal);
+      attrs.normals.push_back(length > 0 && std::isfinite(length) ? normal / length : Vec3(0, 0, 1));
+    }
+  }
+  if (uvs) attrs.uvs = file.uvs;
+  if (!attrs.any()) return attrs;
+  attrs.polygonStart.reserve(soup.polygons.size());
+  for (const Polygon& p : soup.polygons) {
+    attrs.polygonStart.push_back(attrs.normalOf.size());
+    for (std::size_t v : p) {
+      attrs.normalOf.push_back(static_cast<int32_t>(v));
+      attrs.uvOf.push_back(static_cast<int32_t>(v));
+    }
+  }
+  return attrs;
+}
+
 // Runs `work`, turning the failures CGAL or the allocator can raise into MeshError.
 template <class Work>
 auto guarded(Work&& work) {
@@ -484,14 +578,15 @@ std::shared_ptr<MeshData> loadMeshFile(const std::string& path) {
 
 std::shared_ptr<MeshData> loadMeshBytes(std::string bytes, MeshFormat format) {
   std::optional<ObjScan> obj;
+  VertexAttributes vertex;  // PLY and OFF
   MeshCounts counts;
   switch (format) {
     case MeshFormat::Obj:
       obj = scanObj(bytes);
       counts = {obj->vertexCount, obj->faceCount()};
       break;
-    case MeshFormat::Ply: counts = checkPlyBytes(bytes); break;
-    case MeshFormat::Off: checkOffBytes(bytes); break;
+    case MeshFormat::Ply: counts = checkPlyBytes(bytes, &vertex); break;
+    case MeshFormat::Off: checkOffBytes(bytes, &vertex); break;
     case MeshFormat::Stl: checkStlBytes(bytes); break;
   }
   return guarded([&] {
@@ -504,7 +599,9 @@ std::shared_ptr<MeshData> loadMeshBytes(std::string bytes, MeshFormat format) {
     checkMemory(soup);
     CornerAttributes attrs;
     if (obj) attrs = objAttributes(*obj, soup);
+    else attrs = vertexAttributes(vertex, soup);
     obj.reset();
+    vertex = VertexAttributes();
     auto mesh = std::make_shared<MeshData>(buildMesh(std::move(soup), attrs));
     // The soup and the repair's working arrays are freed by now, but glibc keeps such
     // blocks for reuse, and the BVH build that comes next takes its memory in huge pages

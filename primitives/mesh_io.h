@@ -18,8 +18,11 @@ struct MeshError : std::runtime_error {
 };
 
 // Reads, repairs, triangulates and orients the mesh in `path` (format by extension, any
-// letter case). Normals and uvs come only from OBJ vn/vt, and only when every face corner
-// has one; PLY, OFF and STL normals and uvs are not read (CGAL's readers drop them).
+// letter case). Normals and uvs come from OBJ vn/vt, PLY vertex properties (nx ny nz; s t,
+// u v, texture_u texture_v or texture_s texture_t) and NOFF/CNOFF vertex normals, each
+// kept only when every face corner has a usable one; PLY and OFF colours are ignored
+// (MeshData keeps none), and STL has no per-vertex data. `repairs` tells what orientation
+// fixed.
 std::shared_ptr<MeshData> loadMeshFile(const std::string& path);
 
 // The same from bytes already in memory (what loadMeshFile does after reading the file;

@@ -8,6 +8,7 @@
 //   inconsistently by that reader (binary faces skip the colour count the format defines),
 //   so they are refused with a message saying so.
 // Comments: '#' up to the end of the line, and lines that start with '#'.
+// The normals of NOFF and CNOFF vertices are kept for the caller (CGAL's reader drops them).
 #include "mesh_file_check.h"
 
 #include "mesh_io.h"
@@ -171,7 +172,7 @@ void checkColours(std::size_t count, const double* values, bool& seen, std::size
 
 }  // namespace
 
-void checkOffBytes(std::string_view bytes) {
+void checkOffBytes(std::string_view bytes, VertexAttributes* attributes) {
   OffCursor in(bytes);
   const OffHeader h = parseHeader(in);
   std::vector<std::string_view> tok;
@@ -179,6 +180,7 @@ void checkOffBytes(std::string_view bytes) {
   std::size_t line = 0;
   bool vertexColours = false, faceColours = false;
   const std::size_t coords = h.normals ? 6 : 3;
+  if (attributes && h.normals) attributes->normals.reserve(static_cast<std::size_t>(h.vertices));
 
   for (long long v = 0; v < h.vertices; ++v) {
     if (!nextLine(in, tok, numbers, line))
@@ -186,6 +188,8 @@ void checkOffBytes(std::string_view bytes) {
     if (numbers.size() < coords)
       fail(fmt::format("OFF line {}: a vertex needs {} numbers, found {}", line, coords, numbers.size()));
     if (h.colours) checkColours(numbers.size() - coords, numbers.data() + coords, vertexColours, line);
+    // CGAL reads a NOFF vertex as x y z nx ny nz, before any colour.
+    if (attributes && h.normals) attributes->normals.emplace_back(numbers[3], numbers[4], numbers[5]);
   }
   for (long long f = 0; f < h.faces; ++f) {
     if (!nextLine(in, tok, numbers, line))

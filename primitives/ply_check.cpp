@@ -7,7 +7,8 @@
 //   stop the loop: counts are checked against the data that is actually there;
 // - vertex x, y, z are fetched as float or double through an unchecked cast: they must exist
 //   and be float or double; likewise colour and halfedge properties CGAL fetches by type.
-// Face indices are also range-checked here, to name the face in the message.
+// Face indices are also range-checked here, to name the face in the message. Vertex normals
+// and texture coordinates, which CGAL's soup reader drops, are kept on the way.
 #include "mesh_file_check.h"
 #include "mesh_io.h"
 #include "mesh_text.h"
@@ -278,13 +279,52 @@ class AsciiCursor {
   std::size_t pos_ = 0;
 };
 
+// Where each property of a vertex element goes among the attributes kept: 0-2 the normal's
+// x y z, 3-4 the texture coordinates, -1 nowhere. A normal needs all of nx ny nz, a uv
+// both names of one pair, each a scalar (the first property of a name, as CGAL looks up).
+struct AttributeSlots {
+  std::vector<int> slot;  // per property
+  bool normals = false, uvs = false;
+};
+
+AttributeSlots attributeSlots(const PlyElement& e) {
+  AttributeSlots a;
+  a.slot.assign(e.properties.size(), -1);
+  auto indexOf = [&](std::string_view name) -> int {
+    const PlyProperty* p = e.find(name);
+    return p && !p->list ? static_cast<int>(p - e.properties.data()) : -1;
+  };
+  const int n[3] = {indexOf("nx"), indexOf("ny"), indexOf("nz")};
+  if (n[0] >= 0 && n[1] >= 0 && n[2] >= 0) {
+    a.normals = true;
+    for (int k = 0; k < 3; ++k) a.slot[static_cast<std::size_t>(n[k])] = k;
+  }
+  const char* pairs[][2] = {{"s", "t"}, {"u", "v"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
+  for (const auto& pair : pairs) {
+    const int u = indexOf(pair[0]), v = indexOf(pair[1]);
+    if (u < 0 || v < 0) continue;
+    a.uvs = true;
+    a.slot[static_cast<std::size_t>(u)] = 3;
+    a.slot[static_cast<std::size_t>(v)] = 4;
+    break;
+  }
+  return a;
+}
+
 template <class Cursor>
-void walkBody(Cursor& cursor, const std::vector<PlyElement>& elements, unsigned long long vertexTotal) {
+void walkBody(Cursor& cursor, const std::vector<PlyElement>& elements, unsigned long long vertexTotal,
+              VertexAttributes* attributes) {
   for (const PlyElement& e : elements) {
     const bool vertex = e.isVertex();
     const PlyProperty* faceList = e.isFace() ? faceIndexList(e) : nullptr;
+    AttributeSlots slots;
+    if (vertex && attributes) slots = attributeSlots(e);
+    if (slots.normals) attributes->normals.reserve(attributes->normals.size() + e.count);
+    if (slots.uvs) attributes->uvs.reserve(attributes->uvs.size() + e.count);
+    double kept[5] = {0, 0, 0, 0, 0};
     for (unsigned long long item = 0; item < e.count; ++item) {
-      for (const PlyProperty& p : e.properties) {
+      for (std::size_t i = 0; i < e.properties.size(); ++i) {
+        const PlyProperty& p = e.properties[i];
         auto truncated = [&] {
           fail(fmt::format("PLY data ends or is malformed in {} {} (counting from 0), property '{}'",
                            e.name, item, p.name));
@@ -294,6 +334,9 @@ void walkBody(Cursor& cursor, const std::vector<PlyElement>& elements, unsigned 
           if (!cursor.read(p.type, value)) truncated();
           if (vertex && !std::isfinite(value) && (p.name == "x" || p.name == "y" || p.name == "z"))
             fail(fmt::format("PLY vertex {} has a non-finite coordinate", item));
+          // As the declared type holds it (ASCII text is read in double).
+          if (!slots.slot.empty() && slots.slot[i] >= 0)
+            kept[slots.slot[i]] = p.type == PlyType::Float32 ? static_cast<float>(value) : value;
           continue;
         }
         if (!cursor.read(p.countType, value)) truncated();
@@ -308,13 +351,15 @@ void walkBody(Cursor& cursor, const std::vector<PlyElement>& elements, unsigned 
                              value, vertexTotal));
         }
       }
+      if (slots.normals) attributes->normals.emplace_back(kept[0], kept[1], kept[2]);
+      if (slots.uvs) attributes->uvs.emplace_back(kept[3], kept[4]);
     }
   }
 }
 
 }  // namespace
 
-MeshCounts checkPlyBytes(std::string_view bytes) {
+MeshCounts checkPlyBytes(std::string_view bytes, VertexAttributes* attributes) {
   PlyEncoding encoding = PlyEncoding::Ascii;
   std::vector<PlyElement> elements;
   const std::size_t dataStart = parseHeader(bytes, encoding, elements);
@@ -339,10 +384,10 @@ MeshCounts checkPlyBytes(std::string_view bytes) {
 
   if (encoding == PlyEncoding::Ascii) {
     AsciiCursor cursor(data);
-    walkBody(cursor, elements, vertexTotal);
+    walkBody(cursor, elements, vertexTotal, attributes);
   } else {
     BinaryCursor cursor(data, encoding == PlyEncoding::BigEndian);
-    walkBody(cursor, elements, vertexTotal);
+    walkBody(cursor, elements, vertexTotal, attributes);
   }
   // The walk has seen every element, so these counts are backed by data.
   return {static_cast<std::size_t>(vertexTotal), static_cast<std::size_t>(faceTotal)};

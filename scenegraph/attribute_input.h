@@ -56,7 +56,8 @@ class AttributeInput {
   virtual std::optional<std::vector<long long>> integers(const char* attr) = 0;
   // The mesh file the attribute names, resolved by the scene's file-access rules and read
   // once per process however many elements name it; null when it cannot be read (reported).
-  virtual std::shared_ptr<const MeshData> meshFile(const char* attr) = 0;
+  // `firstRead`, if given, tells whether this call read the file.
+  virtual std::shared_ptr<const MeshData> meshFile(const char* attr, bool* firstRead = nullptr) = 0;
 
   // "<sphere> attribute 'radius': message", at the attribute's value.
   virtual void attrError(const char* attr, const std::string& message) = 0;

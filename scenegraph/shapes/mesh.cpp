@@ -18,6 +18,18 @@ namespace lucent {
 
 namespace {
 
+// Loading keeps what orientation repaired (the mesh is usable, and a solid if closed), but
+// says so: a face written backwards is usually a modelling mistake worth knowing of.
+void warnRepairs(AttributeInput& in, const MeshData& data, const std::string& what) {
+  const MeshData::Repairs& repairs = data.repairs;
+  if (repairs.flippedFaces == 0) return;
+  const bool one = repairs.flippedFaces == 1;
+  in.warning(fmt::format("{}: {} of {} {} {} flipped to agree with {} neighbours{}", what,
+                         repairs.flippedFaces, repairs.faces, repairs.onlyTriangles ? "triangles" : "faces",
+                         one ? "was" : "were", one ? "its" : "their",
+                         data.closed ? "; the mesh is closed and is used as a solid" : ""));
+}
+
 bool readIndices(AttributeInput& in, MeshData& data) {
   if (!in.has("indices")) {
     in.error("<mesh> with 'positions' needs 'indices' (three vertex numbers per triangle)");
@@ -101,6 +113,7 @@ std::shared_ptr<const MeshData> buildInline(AttributeInput& in) {
     in.error(std::string("<mesh>: ") + e.what());
     return nullptr;
   }
+  warnRepairs(in, *data, "<mesh>");
   return data;
 }
 
@@ -114,7 +127,9 @@ void readMesh(MeshSpec& m, AttributeInput& in) {
       if (in.has(a)) in.attrError(a, "only an inline mesh (with 'positions') takes this; the file holds its own");
     if (auto src = in.text("src")) {
       m.src = *src;
-      m.data = in.meshFile("src");
+      bool firstRead = false;
+      m.data = in.meshFile("src", &firstRead);
+      if (m.data && firstRead) warnRepairs(in, *m.data, "<mesh src=\"" + *src + "\">");  // once per file
     }
   } else if (hasInline) {
     m.data = buildInline(in);

@@ -59,10 +59,11 @@ const std::map<std::string, Outcome> kPinned = {
     {"OFF/Cube.off", Loads{8, 12, true, false, false}},
     {"OFF/Wuson.off", Loads{2126, 3732, false, false, false}},
     {"OFF/invalid.off", Refused{"OFF line 7: the face announces 2 vertices but lists 1"}},
-    {"PLY/Wuson.ply", Loads{2126, 3732, false, false, false}},
+    // Flat normals: the file repeats a position for each face around it.
+    {"PLY/Wuson.ply", Loads{11184, 3732, false, true, true}},
     {"PLY/cube.ply", Loads{8, 12, true, false, false}},
     {"PLY/cube_binary.ply", Loads{8, 12, true, false, false}},
-    {"PLY/cube_uv.ply", Loads{8, 12, true, false, false}},
+    {"PLY/cube_uv.ply", Loads{24, 12, true, true, true}},
     {"PLY/float-color.ply", Loads{3, 1, false, false, false}},
     {"PLY/issue623.ply", Refused{"the PLY header declares no 'face' element (a point cloud has no surface)"}},
     {"PLY/points.ply", Refused{"the PLY header declares no 'face' element (a point cloud has no surface)"}},
