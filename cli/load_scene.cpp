@@ -3,9 +3,7 @@
 #include "exit_status.h"
 
 #include "lang/parser.h"
-#include "render/projection.h"
-#include "render/texture.h"
-#include "scenegraph/world.h"
+#include "render/scene_check.h"
 
 #include <fmt/core.h>
 
@@ -63,10 +61,7 @@ LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) 
     throw UsageError(fmt::format("--camera {}: no camera of that name in '{}' ({})", request.camera,
                                  request.scene, cameraNames(scene)));
 
-  // What the render would refuse after parsing, in the order it would meet it.
-  checkWorld(scene);
-  makeProjection(*loaded.camera, r.width, r.height);
-  checkImageTextures(scene.materials);
+  checkRenderable(scene, *loaded.camera);
   return loaded;
 }
 
