@@ -25,14 +25,14 @@ TEST_CASE("lang: lucent check prints a summary of a valid scene and exits 0", "[
 }
 
 TEST_CASE("lang: lucent check prints every error of an invalid scene to stderr and exits 2", "[lang][check]") {
-  std::string scene = sourcePath("tests/lang/invalid/multiple_errors.xml");
+  std::string scene = sourcePath("tests/bad/scenes/multiple_errors.xml");
   auto r = runLucent("check '" + scene + "'");
   CHECK(r.status == 2);
   CHECK(r.out ==
-        "E: " + scene + ":7:16: error: <camera> attribute 'fov': expected an angle between 0 and 180, got '0'\n"
-        "E: " + scene + ":8:19: error: <sphere> attribute 'radius': expected a positive number, got '-1'\n"
-        "E: " + scene + ":9:13: error: <box> attribute 'min': expected 3 numbers, got 2 ('1 1')\n"
-        "E: " + scene + ":10:10: error: <torus>: unknown attribute 'majr' (did you mean 'major'?)\n"
+        "E: " + scene + ":2:16: error: <camera> attribute 'fov': expected an angle between 0 and 180, got '0'\n"
+        "E: " + scene + ":3:19: error: <sphere> attribute 'radius': expected a positive number, got '-1'\n"
+        "E: " + scene + ":4:13: error: <box> attribute 'min': expected 3 numbers, got 2 ('1 1')\n"
+        "E: " + scene + ":5:10: error: <torus>: unknown attribute 'majr' (did you mean 'major'?)\n"
         "E: " + scene + ": 4 errors; the scene is invalid\n");
 }
 
@@ -42,7 +42,7 @@ TEST_CASE("lang: lucent check takes -D and --allow-path, a missing scene file ex
   CHECK(r.status == 2);
   CHECK_THAT(r.out, Catch::Contains("<sphere> attribute 'radius': expected a positive number, got '-1'"));
 
-  std::string escape = sourcePath("tests/lang/invalid/include_escapes_folder.xml");
+  std::string escape = sourcePath("tests/bad/scenes/include_escapes_folder.xml");
   CHECK(runLucent("check '" + escape + "'").status == 2);
   auto allowed = runLucent("check '" + escape + "' --allow-path '" + sourcePath("tests/lang/valid") + "'");
   CHECK(allowed.status == 0);

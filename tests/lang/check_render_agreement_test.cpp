@@ -1,8 +1,8 @@
 // `lucent check` refuses exactly what `lucent render` refuses: on every scene of the
-// invalid-scene corpora both exit with the same status and print the same first error
-// (both run loadScene, cli/load_scene.h; render's checks after parsing, such as a cube map
-// whose width has no whole-pixel faces or transforms multiplying beyond range, run in check
-// too).
+// bad-scene corpus (tests/bad/scenes; its expectations are in tests/bad/cases.txt) both
+// exit with the same status and print the same first error. Both run loadScene
+// (cli/load_scene.h), so render's checks after parsing, such as a cube map whose width has
+// no whole-pixel faces or transforms multiplying beyond range, run in check too.
 #include "run_lucent.h"
 
 #include <catch2/catch.hpp>
@@ -31,9 +31,8 @@ std::string firstError(const std::string& err) {
 
 std::vector<fs::path> corpusScenes() {
   std::vector<fs::path> files;
-  for (const char* dir : {"tests/bad/scenes", "tests/lang/invalid"})
-    for (const auto& e : fs::directory_iterator(sourcePath(dir)))
-      if (e.is_regular_file() && e.path().extension() == ".xml") files.push_back(e.path());
+  for (const auto& e : fs::directory_iterator(sourcePath("tests/bad/scenes")))
+    if (e.is_regular_file() && e.path().extension() == ".xml") files.push_back(e.path());
   std::sort(files.begin(), files.end());
   return files;
 }
