@@ -39,11 +39,6 @@ namespace {
 constexpr double kThreshold = 2.0 / 255.0;
 constexpr double kHeatMapScale = 16.0 / 255.0;
 
-int fail(const std::string& message, int status) {
-  fmt::print(stderr, "lucent: error: {}\n", message);
-  return status;
-}
-
 void writeText(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << text;
@@ -98,9 +93,9 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
   checkOverrides(request);
   request.samples.reset();
   std::optional<std::string> povray = findPovray();
-  if (!povray) return fail(povrayInstallHint(), kRuntimeFailure);
+  if (!povray) throw IoFailure(povrayInstallHint());
   if (!options.povFile.empty() && !fs::is_regular_file(options.povFile))
-    return fail(fmt::format("--pov {}: no such file", options.povFile), kRuntimeFailure);
+    throw IoFailure(fmt::format("--pov {}: no such file", options.povFile));
 
   LoadedScene loaded = loadScene(request, common);
   Scene& scene = *loaded.scene;
@@ -115,7 +110,7 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
-    return fail(fmt::format("cannot create the folder '{}'", dir.string()), kRuntimeFailure);
+    throw IoFailure(fmt::format("cannot create the folder '{}'", dir.string()));
 
   CompareReport report;
   report.scene = options.scene;
@@ -193,10 +188,10 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
   ProcessResult run = runProcess(*povray, args, povScene.parent_path().string(), log.string());
   report.povraySeconds = run.seconds;
   if (!run.started || run.exitStatus != 0 || !fs::exists(job.output)) {
-    return fail(fmt::format("POV-Ray failed (exit status {}) on '{}'; its last messages "
-                            "({}):\n{}",
-                            run.exitStatus, povScene.string(), log.string(), logTail(log, 12)),
-                kRuntimeFailure);
+    throw IoFailure(
+        fmt::format("POV-Ray failed (exit status {}) on '{}'; its last messages "
+                    "({}):\n{}",
+                    run.exitStatus, povScene.string(), log.string(), logTail(log, 12)));
   }
 
   // Both decoded the same way: 16-bit linear code values, then sRGB-encoded for the
@@ -204,9 +199,8 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
   RgbImage lucentImage = srgbEncoded(readLinear16Png(lucentLinear.string()));
   RgbImage povImage = srgbEncoded(readLinear16Png(job.output));
   if (povImage.width != lucentImage.width || povImage.height != lucentImage.height)
-    return fail(fmt::format("POV-Ray wrote a {}x{} image, Lucent {}x{}", povImage.width,
-                            povImage.height, lucentImage.width, lucentImage.height),
-                kRuntimeFailure);
+    throw IoFailure(fmt::format("POV-Ray wrote a {}x{} image, Lucent {}x{}", povImage.width,
+                                povImage.height, lucentImage.width, lucentImage.height));
   report.metrics = compareImages(lucentImage, povImage, kThreshold);
   writeDisplayPng(lucentImage, (dir / report.lucentImage).string());
   writeDisplayPng(povImage, (dir / report.povrayImage).string());

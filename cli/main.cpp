@@ -104,6 +104,11 @@ std::string unexpectedArguments(const CLI::App* app, const std::vector<std::stri
 // The first argument names the command; a misspelled one gets a hint (CLI11 alone would
 // only say that a command is required).
 bool checkCommandName(int argc, char** argv) {
+  if (argc >= 2 && std::strcmp(argv[1], "-h") == 0) {
+    fmt::print(stderr, "lucent: error: -h is the image height (lucent render -h 480); help is "
+                       "lucent --help\n");
+    return false;
+  }
   if (argc < 2 || argv[1][0] == '-') return true;
   for (std::string_view c : kCommands)
     if (c == argv[1]) return true;

@@ -50,6 +50,7 @@ TEST_CASE("cli: help is --help in every command and -h is the height", "[cli]") 
   }
   LucentRun top = runLucent("-h");
   CHECK(top.status == 1);
+  CHECK(top.err == "lucent: error: -h is the image height (lucent render -h 480); help is lucent --help\n");
   // check takes -h as render does: the height it validates for.
   LucentRun r = runLucent("check '" + kValid + "' -h 7");
   CHECK(r.status == 0);
