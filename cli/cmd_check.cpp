@@ -1,30 +1,28 @@
-// lucent check SCENE.xml: parses and validates the scene (no rendering, no primitives),
-// prints every error and warning to stderr and a summary to stdout.
-// Exit status: 0 valid, 2 invalid scene, 3 the scene file itself cannot be read.
+// lucent check SCENE.xml: parses and validates the scene (no rendering, no shapes built),
+// prints every error and warning to stderr and a summary to stdout. It runs render's
+// checks too (loadScene): transforms beyond range, the camera at the image size, the
+// headers of image textures. Exit status: 0 valid, 1 wrong usage, 2 invalid scene, 3 the
+// scene file or an image it names cannot be read.
 #include "commands.h"
 
-#include "lang/parser.h"
+#include "load_scene.h"
+
 #include "scenegraph/scene_summary.h"
 
 #include <fmt/core.h>
 
-#include <cstdio>
-
 namespace lucent::cli {
 
-int runCheck(const std::string& scenePath, const CommonOptions& common) {
-  ParseOptions options;
-  options.defines = common.defines;
-  options.allowPaths = common.allowPaths;
-  ParseResult result = parseSceneFile(scenePath, options);
-  for (const Diagnostic& d : result.diagnostics.all()) fmt::print(stderr, "{}\n", d.str());
-  if (result.ioFailure) return kRuntimeFailure;
-  if (!result.scene) {
-    size_t n = result.diagnostics.errorCount();
-    fmt::print(stderr, "{}: {} error{}; the scene is invalid\n", scenePath, n, n == 1 ? "" : "s");
-    return kInvalidScene;
-  }
-  fmt::print("{}", sceneSummary(*result.scene));
+int runCheck(const CheckOptions& options, const CommonOptions& common) {
+  SceneRequest request;
+  request.scene = options.scene;
+  request.width = options.width;
+  request.height = options.height;
+  request.samples = options.samples;
+  request.maxDepth = options.maxDepth;
+  request.camera = options.camera;
+  LoadedScene loaded = loadScene(request, common);
+  fmt::print("{}", sceneSummary(*loaded.scene));
   return kOk;
 }
 

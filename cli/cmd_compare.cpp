@@ -15,15 +15,14 @@
 // The metrics never change the status: comparing is a measurement.
 #include "commands.h"
 
-#include "lang/parser.h"
+#include "load_scene.h"
+
 #include "povray/compare_report.h"
 #include "povray/image_compare.h"
 #include "povray/pov_export.h"
 #include "povray/pov_gamma.h"
 #include "povray/pov_runner.h"
-#include "render/camera_frame.h"
 #include "render/renderer.h"
-#include "render/texture.h"
 
 #include <fmt/core.h>
 #include <tbb/global_control.h>
@@ -41,11 +40,6 @@ namespace {
 
 constexpr double kThreshold = 2.0 / 255.0;
 constexpr double kHeatMapScale = 16.0 / 255.0;
-
-int fail(const std::string& message, int status) {
-  fmt::print(stderr, "lucent: error: {}\n", message);
-  return status;
-}
 
 void writeText(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -97,44 +91,36 @@ std::vector<std::string> checkHandWritten(const std::string& path, const std::st
 }  // namespace
 
 int runCompare(const CompareOptions& options, const CommonOptions& common) {
-  for (auto [value, name] :
-       {std::pair{options.width, "--width"}, std::pair{options.height, "--height"},
-        std::pair{options.samples, "--samples"}, std::pair{options.threads, "--threads"},
-        std::pair{options.maxDepth, "--max-depth"}}) {
-    if (auto e = overrideProblem(name, value)) return fail(*e, kUsage);
-  }
+  SceneRequest request;
+  request.scene = options.scene;
+  request.width = options.width;
+  request.height = options.height;
+  request.threads = options.threads;
+  request.maxDepth = options.maxDepth;
+  request.camera = options.camera;
+  // -s is checked here, not applied by loadScene: compare's default is 1, not the scene's.
+  request.samples = options.samples;
+  checkOverrides(request);
+  request.samples.reset();
   std::optional<std::string> povray = findPovray();
-  if (!povray) return fail(povrayInstallHint(), kRuntimeFailure);
+  if (!povray) throw IoFailure(povrayInstallHint());
   if (!options.povFile.empty() && !fs::is_regular_file(options.povFile))
-    return fail(fmt::format("--pov {}: no such file", options.povFile), kRuntimeFailure);
+    throw IoFailure(fmt::format("--pov {}: no such file", options.povFile));
 
-  ParseOptions parseOptions;
-  parseOptions.defines = common.defines;
-  parseOptions.allowPaths = common.allowPaths;
-  ParseResult parsed = parseSceneFile(options.scene, parseOptions);
-  for (const Diagnostic& d : parsed.diagnostics.all()) fmt::print(stderr, "{}\n", d.str());
-  if (parsed.ioFailure) return kRuntimeFailure;
-  if (!parsed.scene) return kInvalidScene;
-  Scene& scene = *parsed.scene;
+  LoadedScene loaded = loadScene(request, common);
+  Scene& scene = *loaded.scene;
+  const Camera* camera = loaded.camera;
   RenderSettings& settings = scene.render;
-  if (options.width) settings.width = *options.width;
-  if (options.height) settings.height = *options.height;
-  if (options.maxDepth) settings.maxDepth = *options.maxDepth;
   // One sample per pixel unless asked: both renderers then trace the pixel centres, the only
   // sampling they share exactly.
   settings.samples = options.samples.value_or(1);
   settings.adaptive = 0.0;
-  const Camera* camera = scene.findCamera(options.camera);
-  if (!camera)
-    return fail(fmt::format("--camera {}: no camera of that name in '{}'", options.camera,
-                            options.scene),
-                kUsage);
 
   const fs::path dir(options.outputDir);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
-    return fail(fmt::format("cannot create the folder '{}'", dir.string()), kRuntimeFailure);
+    throw IoFailure(fmt::format("cannot create the folder '{}'", dir.string()));
 
   CompareReport report;
   report.scene = options.scene;
@@ -156,106 +142,93 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
         "expect differences at edges",
         settings.samples));
 
-  try {
-    // The POV-Ray scene: exported next to the results, or the user's own.
-    fs::path povScene;
-    std::string fileGamma = "1.0";
-    if (options.povFile.empty()) {
-      PovExport exported = exportPov(scene, PovExportOptions{options.camera});
-      for (const PovIssue& issue : exported.issues) {
-        fmt::print(stderr, "{}\n", issue.str());
-        report.warnings.push_back(issue.str());
-      }
-      if (!exported.ok()) {
-        fmt::print(stderr, "{}: cannot be exported to POV-Ray; nothing compared\n", options.scene);
-        return kInvalidScene;
-      }
-      povScene = fs::absolute(dir / "scene.pov");
-      writeText(povScene, exported.text);
-    } else {
-      povScene = fs::absolute(options.povFile);
-      report.handWritten = true;
-      std::ifstream in(options.povFile);
-      const std::string text((std::istreambuf_iterator<char>(in)),
-                             std::istreambuf_iterator<char>());
-      const PovAssumedGamma gamma = findAssumedGamma(text);
-      if (gamma.kind == PovAssumedGamma::Kind::Unreadable)
-        return fail(fmt::format("--pov {}: {}: POV-Ray's output depends on its working gamma, "
-                                "which compare must know to read the image back; write "
-                                "`assumed_gamma` with a number (or srgb) in global_settings",
-                                options.povFile, gamma.problem),
-                    kRuntimeFailure);
-      fileGamma = gamma.fileGamma();
-      for (const std::string& note : checkHandWritten(options.povFile, text, gamma)) {
-        fmt::print(stderr, "lucent: warning: {}\n", note);
-        report.warnings.push_back(note);
-      }
+  // The POV-Ray scene: exported next to the results, or the user's own.
+  fs::path povScene;
+  std::string fileGamma = "1.0";
+  if (options.povFile.empty()) {
+    PovExport exported = exportPov(scene, PovExportOptions{options.camera});
+    for (const PovIssue& issue : exported.issues) {
+      fmt::print(stderr, "{}\n", issue.str());
+      report.warnings.push_back(issue.str());
     }
-    report.povScene = povScene.string();
-
-    // Lucent, through the render library; --threads bounds the BVH builds too.
-    std::optional<tbb::global_control> threadLimit;
-    if (options.threads.value_or(0) > 0)
-      threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
-                          static_cast<size_t>(*options.threads));
-    World world(scene);
-    Renderer renderer(world, *camera);
-    RenderControl control;
-    control.threads = options.threads.value_or(0);
-    RenderResult lucent = renderer.render(control);
-    report.lucentRender = "render library (Renderer::render)";
-    report.lucentSeconds = lucent.seconds;
-    const fs::path lucentLinear = dir / report.lucentLinear;
-    writeLinear16Png(toRgb(lucent.image), lucentLinear.string());
-
-    // POV-Ray, in the folder of its scene so that relative file names resolve as its
-    // author meant.
-    PovrayRender job;
-    job.input = povScene.string();
-    job.output = fs::absolute(dir / report.povrayLinear).string();
-    job.width = settings.width;
-    job.height = settings.height;
-    job.samples = settings.samples;
-    job.threads = options.threads.value_or(0);
-    job.fileGamma = fileGamma;
-    std::vector<std::string> args = povrayArguments(job);
-    report.povrayCommand = commandLine(*povray, args);
-    const fs::path log = fs::absolute(dir / report.povrayLog);
-    fs::remove(log, ec);
-    fs::remove(job.output, ec);
-    ProcessResult run = runProcess(*povray, args, povScene.parent_path().string(), log.string());
-    report.povraySeconds = run.seconds;
-    if (!run.started || run.exitStatus != 0 || !fs::exists(job.output)) {
-      return fail(fmt::format("POV-Ray failed (exit status {}) on '{}'; its last messages "
-                              "({}):\n{}",
-                              run.exitStatus, povScene.string(), log.string(), logTail(log, 12)),
-                  kRuntimeFailure);
+    if (!exported.ok()) {
+      fmt::print(stderr, "{}: cannot be exported to POV-Ray; nothing compared\n", options.scene);
+      return kInvalidScene;
     }
-
-    // Both decoded the same way: 16-bit linear code values, then sRGB-encoded for the
-    // metrics and the pictures.
-    RgbImage lucentImage = srgbEncoded(readLinear16Png(lucentLinear.string()));
-    RgbImage povImage = srgbEncoded(readLinear16Png(job.output));
-    if (povImage.width != lucentImage.width || povImage.height != lucentImage.height)
-      return fail(fmt::format("POV-Ray wrote a {}x{} image, Lucent {}x{}", povImage.width,
-                              povImage.height, lucentImage.width, lucentImage.height),
-                  kRuntimeFailure);
-    report.metrics = compareImages(lucentImage, povImage, kThreshold);
-    writeDisplayPng(lucentImage, (dir / report.lucentImage).string());
-    writeDisplayPng(povImage, (dir / report.povrayImage).string());
-    writeDisplayPng(differenceHeatMap(lucentImage, povImage, kHeatMapScale),
-                    (dir / report.heatMap).string());
-    writeText(dir / "report.json", reportJson(report));
-    writeText(dir / "report.html", reportHtml(report));
-  } catch (const CameraError& e) {
-    fmt::print(stderr, "{}\n", e.what());
-    return kInvalidScene;
-  } catch (const TextureError& e) {
-    fmt::print(stderr, "{}\n", e.what());
-    return kRuntimeFailure;
-  } catch (const std::exception& e) {
-    return fail(e.what(), kRuntimeFailure);
+    povScene = fs::absolute(dir / "scene.pov");
+    writeText(povScene, exported.text);
+  } else {
+    povScene = fs::absolute(options.povFile);
+    report.handWritten = true;
+    std::ifstream in(options.povFile);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const PovAssumedGamma gamma = findAssumedGamma(text);
+    if (gamma.kind == PovAssumedGamma::Kind::Unreadable)
+      throw IoFailure(fmt::format("--pov {}: {}: POV-Ray's output depends on its working gamma, "
+                                  "which compare must know to read the image back; write "
+                                  "`assumed_gamma` with a number (or srgb) in global_settings",
+                                  options.povFile, gamma.problem));
+    fileGamma = gamma.fileGamma();
+    for (const std::string& note : checkHandWritten(options.povFile, text, gamma)) {
+      fmt::print(stderr, "lucent: warning: {}\n", note);
+      report.warnings.push_back(note);
+    }
   }
+  report.povScene = povScene.string();
+
+  // Lucent, through the render library; --threads bounds the BVH builds too.
+  std::optional<tbb::global_control> threadLimit;
+  if (options.threads.value_or(0) > 0)
+    threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
+                        static_cast<size_t>(*options.threads));
+  World world(scene);
+  Renderer renderer(world, *camera);
+  RenderControl control;
+  control.threads = options.threads.value_or(0);
+  RenderResult lucent = renderer.render(control);
+  report.lucentRender = "render library (Renderer::render)";
+  report.lucentSeconds = lucent.seconds;
+  const fs::path lucentLinear = dir / report.lucentLinear;
+  writeLinear16Png(toRgb(lucent.image), lucentLinear.string());
+
+  // POV-Ray, in the folder of its scene so that relative file names resolve as its
+  // author meant.
+  PovrayRender job;
+  job.input = povScene.string();
+  job.output = fs::absolute(dir / report.povrayLinear).string();
+  job.width = settings.width;
+  job.height = settings.height;
+  job.samples = settings.samples;
+  job.threads = options.threads.value_or(0);
+  job.fileGamma = fileGamma;
+  std::vector<std::string> args = povrayArguments(job);
+  report.povrayCommand = commandLine(*povray, args);
+  const fs::path log = fs::absolute(dir / report.povrayLog);
+  fs::remove(log, ec);
+  fs::remove(job.output, ec);
+  ProcessResult run = runProcess(*povray, args, povScene.parent_path().string(), log.string());
+  report.povraySeconds = run.seconds;
+  if (!run.started || run.exitStatus != 0 || !fs::exists(job.output)) {
+    throw IoFailure(
+        fmt::format("POV-Ray failed (exit status {}) on '{}'; its last messages "
+                    "({}):\n{}",
+                    run.exitStatus, povScene.string(), log.string(), logTail(log, 12)));
+  }
+
+  // Both decoded the same way: 16-bit linear code values, then sRGB-encoded for the
+  // metrics and the pictures.
+  RgbImage lucentImage = srgbEncoded(readLinear16Png(lucentLinear.string()));
+  RgbImage povImage = srgbEncoded(readLinear16Png(job.output));
+  if (povImage.width != lucentImage.width || povImage.height != lucentImage.height)
+    throw IoFailure(fmt::format("POV-Ray wrote a {}x{} image, Lucent {}x{}", povImage.width,
+                                povImage.height, lucentImage.width, lucentImage.height));
+  report.metrics = compareImages(lucentImage, povImage, kThreshold);
+  writeDisplayPng(lucentImage, (dir / report.lucentImage).string());
+  writeDisplayPng(povImage, (dir / report.povrayImage).string());
+  writeDisplayPng(differenceHeatMap(lucentImage, povImage, kHeatMapScale),
+                  (dir / report.heatMap).string());
+  writeText(dir / "report.json", reportJson(report));
+  writeText(dir / "report.html", reportHtml(report));
 
   const ImageMetrics& m = report.metrics;
   fmt::print("psnr:       {}\n",

@@ -6,12 +6,15 @@
 // only approximated) are printed and the file is written.
 #include "commands.h"
 
-#include "lang/parser.h"
+#include "load_scene.h"
+
 #include "povray/pov_export.h"
 
 #include <fmt/core.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -20,69 +23,61 @@ namespace lucent::cli {
 namespace {
 
 // Writes through a temporary file in the same folder renamed over `path`, so an existing
-// file is replaced only by a complete one (the contract's rule for outputs).
-bool writeAtomically(const std::string& path, const std::string& text, std::string& error) {
-  namespace fs = std::filesystem;
+// file is replaced only by a complete one (the contract's rule for outputs). Messages name
+// `path` and its folder, never the temporary file, which the user did not ask for.
+namespace fs = std::filesystem;
+
+fs::path folderOf(const fs::path& target) {
+  return target.parent_path().empty() ? fs::path(".") : target.parent_path();
+}
+
+// Before the scene is read: an output that can never be written is an error now.
+void checkPovOutputPath(const std::string& path) {
+  if (fs::is_directory(path)) throw IoFailure(fmt::format("'{}' is a folder, not a .pov file", path));
+  const fs::path folder = folderOf(path);
+  std::error_code ec;
+  const fs::file_status status = fs::status(folder, ec);
+  if (status.type() == fs::file_type::not_found)
+    throw IoFailure(fmt::format("cannot write '{}': folder '{}' does not exist", path, folder.string()));
+  if (!ec && status.type() != fs::file_type::directory)
+    throw IoFailure(fmt::format("cannot write '{}': '{}' is not a folder", path, folder.string()));
+}
+
+void writeAtomically(const std::string& path, const std::string& text) {
   fs::path target(path);
+  fs::path folder = folderOf(target);
+  std::error_code ec;
   fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp");
+  auto failed = [&](const std::string& reason) {
+    fs::remove(tmp, ec);
+    return IoFailure(fmt::format("cannot write '{}': {}", path, reason));
+  };
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      error = fmt::format("cannot write '{}'", tmp.string());
-      return false;
-    }
+    if (!out) throw failed(fmt::format("cannot create a file in folder '{}': {}", folder.string(),
+                                       std::strerror(errno)));
     out << text;
     out.flush();
-    if (!out) {
-      error = fmt::format("cannot write '{}'", tmp.string());
-      std::error_code ignored;
-      fs::remove(tmp, ignored);
-      return false;
-    }
+    if (!out) throw failed(std::strerror(errno));
   }
-  std::error_code ec;
   fs::rename(tmp, target, ec);
-  if (ec) {
-    error = fmt::format("cannot write '{}': {}", path, ec.message());
-    fs::remove(tmp, ec);
-    return false;
-  }
-  return true;
+  if (ec) throw failed(ec.message());
 }
 
 }  // namespace
 
 int runExportPov(const ExportPovOptions& options, const CommonOptions& common) {
-  for (auto [value, name] : {std::pair{options.width, "--width"},
-                             std::pair{options.height, "--height"},
-                             std::pair{options.maxDepth, "--max-depth"}}) {
-    if (auto e = overrideProblem(name, value)) {
-      fmt::print(stderr, "lucent: error: {}\n", *e);
-      return kUsage;
-    }
-  }
-  if (std::filesystem::is_directory(options.output)) {
-    fmt::print(stderr, "lucent: error: '{}' is a folder, not a .pov file\n", options.output);
-    return kRuntimeFailure;
-  }
+  SceneRequest request;
+  request.scene = options.scene;
+  request.width = options.width;
+  request.height = options.height;
+  request.maxDepth = options.maxDepth;
+  request.camera = options.camera;
+  checkOverrides(request);
+  checkPovOutputPath(options.output);
 
-  ParseOptions parseOptions;
-  parseOptions.defines = common.defines;
-  parseOptions.allowPaths = common.allowPaths;
-  ParseResult parsed = parseSceneFile(options.scene, parseOptions);
-  for (const Diagnostic& d : parsed.diagnostics.all()) fmt::print(stderr, "{}\n", d.str());
-  if (parsed.ioFailure) return kRuntimeFailure;
-  if (!parsed.scene) return kInvalidScene;
-  Scene& scene = *parsed.scene;
-  if (options.width) scene.render.width = *options.width;
-  if (options.height) scene.render.height = *options.height;
-  if (options.maxDepth) scene.render.maxDepth = *options.maxDepth;
-  if (!options.camera.empty() && !scene.findCamera(options.camera)) {
-    fmt::print(stderr, "lucent: error: --camera {}: no camera of that name in '{}'\n",
-               options.camera, options.scene);
-    return kUsage;
-  }
-
+  LoadedScene loaded = loadScene(request, common);
+  const Scene& scene = *loaded.scene;
   PovExport exported = exportPov(scene, PovExportOptions{options.camera});
   size_t errors = 0;
   for (const PovIssue& issue : exported.issues) {
@@ -94,11 +89,7 @@ int runExportPov(const ExportPovOptions& options, const CommonOptions& common) {
                options.scene, errors, errors == 1 ? "" : "s");
     return kInvalidScene;
   }
-  std::string error;
-  if (!writeAtomically(options.output, exported.text, error)) {
-    fmt::print(stderr, "lucent: error: {}\n", error);
-    return kRuntimeFailure;
-  }
+  writeAtomically(options.output, exported.text);
   return kOk;
 }
 

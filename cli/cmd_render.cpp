@@ -1,5 +1,6 @@
-// lucent render SCENE -o OUT: parse, apply the command-line overrides, build the world,
-// render over every core, write the image atomically.
+// lucent render SCENE [-o OUT]: load the scene (load_scene.h: parse, overrides, the
+// checks `check` makes too), build the world, render over every core, write the image
+// atomically; without -o the image is SCENE.png beside the scene.
 //
 // Exit statuses (the contract's): 1 for wrong usage, which includes option values out of
 // range and a --camera name the scene does not define (the scene itself is valid, the
@@ -8,10 +9,10 @@
 // failures (unwritable output, unknown output extension, unreadable texture, Ctrl-C).
 #include "commands.h"
 
-#include "lang/parser.h"
+#include "load_scene.h"
+
 #include "scenegraph/shape_registry.h"
 #include "primitives/system_memory.h"
-#include "render/camera_frame.h"
 #include "render/image_io.h"
 #include "render/progress_bar.h"
 #include "render/renderer.h"
@@ -22,6 +23,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <filesystem>
 #include <optional>
 #include <thread>
 
@@ -67,20 +69,6 @@ class InterruptCatcher {
   bool installed_[2] = {false, false};
 };
 
-int usageError(const std::string& message) {
-  fmt::print(stderr, "lucent: error: {}\n", message);
-  return kUsage;
-}
-
-// Option values the contract calls out of range; nullopt when all are fine.
-std::optional<std::string> checkOverrides(const RenderOptions& o) {
-  for (auto [value, name] : {std::pair{o.width, "--width"}, std::pair{o.height, "--height"},
-                             std::pair{o.samples, "--samples"}, std::pair{o.threads, "--threads"},
-                             std::pair{o.maxDepth, "--max-depth"}})
-    if (auto e = overrideProblem(name, value)) return e;
-  return std::nullopt;
-}
-
 // The image in memory: the renderer's linear float pixels, the encoded copy handed to the
 // writer (at most float RGB), and the copy read back to prove the file complete.
 constexpr std::uintmax_t kImageBytesPerPixel = 3 * sizeof(Color);
@@ -92,22 +80,6 @@ std::optional<std::string> imageMemoryProblem(const RenderSettings& r) {
   if (!available || need <= *available) return std::nullopt;
   return fmt::format("a {}x{} image needs about {} of memory, more than the {} available", r.width,
                      r.height, formatBytes(need), formatBytes(*available));
-}
-
-void applyOverrides(const RenderOptions& o, RenderSettings& r) {
-  if (o.width) r.width = *o.width;
-  if (o.height) r.height = *o.height;
-  if (o.samples) r.samples = *o.samples;
-  if (o.maxDepth) r.maxDepth = *o.maxDepth;
-}
-
-std::string cameraNames(const Scene& scene) {
-  std::string names;
-  for (const Camera& c : scene.cameras) {
-    if (c.name.empty()) continue;
-    names += (names.empty() ? "" : ", ") + c.name;
-  }
-  return names.empty() ? "the scene's cameras have no names" : "cameras: " + names;
 }
 
 void printStats(const RenderResult& r, int threads) {
@@ -135,104 +107,73 @@ void printStats(const RenderResult& r, int threads) {
 
 }  // namespace
 
+std::string defaultRenderOutput(const std::string& scene) {
+  return std::filesystem::path(scene).replace_extension(".png").string();
+}
+
 int runRender(const RenderOptions& options, const CommonOptions& common) {
   // From the start, so a Ctrl-C during parsing still stops the render at its first row.
   InterruptCatcher interrupts;
-  if (auto problem = checkOverrides(options)) return usageError(*problem);
-  try {
-    // Before a long render: an output that can never be written is an error now.
-    checkImageOutputPath(options.output);
-  } catch (const ImageIOError& e) {
-    fmt::print(stderr, "lucent: error: {}\n", e.what());
+  const std::string output = options.output.empty() ? defaultRenderOutput(options.scene) : options.output;
+  SceneRequest request;
+  request.scene = options.scene;
+  request.width = options.width;
+  request.height = options.height;
+  request.samples = options.samples;
+  request.threads = options.threads;
+  request.maxDepth = options.maxDepth;
+  request.camera = options.camera;
+  checkOverrides(request);
+  // Before a long render: an output that can never be written is an error now.
+  checkImageOutputPath(output);
+
+  LoadedScene loaded = loadScene(request, common);
+  Scene& scene = *loaded.scene;
+  if (auto problem = imageMemoryProblem(scene.render)) throw IoFailure(*problem);
+
+  RenderResult result;
+  const int threads = options.threads.value_or(0);
+  // --threads bounds every parallel step, building the world's BVHs too, not only the
+  // tracing: `-t 1` is one thread from start to end.
+  std::optional<tbb::global_control> threadLimit;
+  if (threads > 0)
+    threadLimit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
+  {
+    World world(scene);
+    Renderer renderer(world, *loaded.camera);
+
+    RenderProgress progress;
+    RenderControl control;
+    control.threads = threads;
+    control.cancel = &gInterrupted;
+    control.progress = &progress;
+    std::optional<ProgressBar> bar;
+    if (!options.quiet && ::isatty(STDERR_FILENO)) bar.emplace(progress, stderr);
+    result = renderer.render(control);
+  }
+
+  if (result.cancelled) {
+    // The output is left as it was, and nothing else is written (docs/security.md: a
+    // render writes only its output image and that image's temporary file).
+    fmt::print(stderr, "lucent: interrupted; '{}' left unchanged\n", output);
     return kRuntimeFailure;
   }
 
-  ParseOptions parseOptions;
-  parseOptions.defines = common.defines;
-  parseOptions.allowPaths = common.allowPaths;
-  ParseResult parsed;
-  try {
-    parsed = parseSceneFile(options.scene, parseOptions);
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "lucent: error: {}: {}\n", options.scene, e.what());
-    return kRuntimeFailure;
-  }
-  for (const Diagnostic& d : parsed.diagnostics.all())
-    if (d.severity == Severity::Error || !options.quiet) fmt::print(stderr, "{}\n", d.str());
-  if (parsed.ioFailure) return kRuntimeFailure;  // the scene file itself is unreadable
-  if (parsed.diagnostics.hasErrors() || !parsed.scene) return kInvalidScene;
-  Scene& scene = *parsed.scene;
-
-  applyOverrides(options, scene.render);
-  const Camera* camera = scene.findCamera(options.camera);
-  if (!camera) {
-    if (scene.cameras.empty()) {
-      fmt::print(stderr, "{}: error: the scene has no <camera>\n", options.scene);
-      return kInvalidScene;
-    }
-    return usageError(fmt::format("--camera {}: no camera of that name in '{}' ({})",
-                                  options.camera, options.scene, cameraNames(scene)));
-  }
-
-  if (auto problem = imageMemoryProblem(scene.render)) {
-    fmt::print(stderr, "lucent: error: {}\n", *problem);
-    return kRuntimeFailure;
-  }
-
-  try {
-    RenderResult result;
-    const int threads = options.threads.value_or(0);
-    // --threads bounds every parallel step, building the world's BVHs too, not only the
-    // tracing: `-t 1` is one thread from start to end.
-    std::optional<tbb::global_control> threadLimit;
-    if (threads > 0)
-      threadLimit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
-    {
-      World world(scene);
-      Renderer renderer(world, *camera);
-
-      RenderProgress progress;
-      RenderControl control;
-      control.threads = threads;
-      control.cancel = &gInterrupted;
-      control.progress = &progress;
-      std::optional<ProgressBar> bar;
-      if (!options.quiet && ::isatty(STDERR_FILENO)) bar.emplace(progress, stderr);
-      result = renderer.render(control);
-    }
-
-    if (result.cancelled) {
-      // The output is left as it was, and nothing else is written (docs/security.md: a
-      // render writes only its output image and that image's temporary file).
-      fmt::print(stderr, "lucent: interrupted; '{}' left unchanged\n", options.output);
-      return kRuntimeFailure;
-    }
-
-    // The world is gone and the scene goes too before the image is written: writing loads
-    // OpenImageIO (images/image_plugin.h, 130 MB of libraries), and the two need not be
-    // in memory at once.
-    const int width = scene.render.width, height = scene.render.height;
-    parsed.scene.reset();
-    // glibc keeps freed blocks for reuse (in each thread's arena, and below the top of
-    // the heap); hand them back to the system, or they would count twice.
-    ::malloc_trim(0);
-    writeImageFile(result.image, options.output);
-    if (!options.quiet)
-      fmt::print(stderr, "lucent: wrote '{}' ({}x{}, {})\n", options.output, width, height,
-                 formatDuration(result.seconds));
-    if (options.stats)
-      printStats(result, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()));
-    return kOk;
-  } catch (const CameraError& e) {
-    fmt::print(stderr, "{}\n", e.what());
-    return kInvalidScene;
-  } catch (const TextureError& e) {
-    fmt::print(stderr, "{}\n", e.what());
-    return kRuntimeFailure;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "lucent: error: {}\n", e.what());
-    return kRuntimeFailure;
-  }
+  // The world is gone and the scene goes too before the image is written: writing loads
+  // OpenImageIO (images/image_plugin.h, 130 MB of libraries), and the two need not be
+  // in memory at once.
+  const int width = scene.render.width, height = scene.render.height;
+  loaded.scene.reset();
+  // glibc keeps freed blocks for reuse (in each thread's arena, and below the top of
+  // the heap); hand them back to the system, or they would count twice.
+  ::malloc_trim(0);
+  writeImageFile(result.image, output);
+  if (!options.quiet)
+    fmt::print(stderr, "lucent: wrote '{}' ({}x{}, {})\n", output, width, height,
+               formatDuration(result.seconds));
+  if (options.stats)
+    printStats(result, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()));
+  return kOk;
 }
 
 }  // namespace lucent::cli

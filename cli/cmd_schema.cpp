@@ -1,12 +1,12 @@
 // lucent schema [-o FILE]: prints the scene language's XML Schema (lang/schema.h), or
 // writes it to FILE, replacing FILE only once the whole text is written.
 #include "commands.h"
+#include "exit_status.h"
 
 #include "lang/schema.h"
 
 #include <fmt/core.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -27,16 +27,15 @@ int runSchema(const std::string& output) {
     if (!out.flush()) {
       std::error_code ec;
       fs::remove(temporary, ec);
-      fmt::print(stderr, "lucent: error: cannot write '{}'\n", output);
-      return kRuntimeFailure;
+      throw IoFailure(fmt::format("cannot write '{}'", output));
     }
   }
   std::error_code ec;
   fs::rename(temporary, target, ec);
   if (ec) {
+    const std::string why = ec.message();
     fs::remove(temporary, ec);
-    fmt::print(stderr, "lucent: error: cannot write '{}': {}\n", output, ec.message());
-    return kRuntimeFailure;
+    throw IoFailure(fmt::format("cannot write '{}': {}", output, why));
   }
   return kOk;
 }

@@ -1,5 +1,8 @@
 // The subcommands of `lucent`, each in its own file; main.cpp parses options and dispatches.
+// Each returns its exit status or throws what reportFailure() (exit_status.h) maps to one.
 #pragma once
+
+#include "exit_status.h"
 
 #include <map>
 #include <optional>
@@ -8,9 +11,6 @@
 
 namespace lucent::cli {
 
-// The contract's exit statuses.
-enum ExitCode { kOk = 0, kUsage = 1, kInvalidScene = 2, kRuntimeFailure = 3 };
-
 // The problem with a numeric override (-w, -h, -s, -t, --max-depth) named `name`, if any:
 // below 1, or above the limit the scene's <render> has too (render_settings.h).
 std::optional<std::string> overrideProblem(const std::string& name, const std::optional<int>& value);
@@ -18,12 +18,12 @@ std::optional<std::string> overrideProblem(const std::string& name, const std::o
 // Options every command accepts.
 struct CommonOptions {
   std::map<std::string, std::string> defines;  // -D name=value
-  std::vector<std::string> allowPaths;         // --allow-path DIR
+  std::vector<std::string> allowPaths;         // --allow-path DIR[:DIR...]
 };
 
 struct RenderOptions {
   std::string scene;
-  std::string output;
+  std::string output;  // empty: SCENE.png beside the scene (defaultRenderOutput)
   std::optional<int> width, height, samples, threads, maxDepth;
   std::string camera;
   bool quiet = false;
@@ -31,7 +31,16 @@ struct RenderOptions {
 };
 
 int runRender(const RenderOptions& options, const CommonOptions& common);
-int runCheck(const std::string& scene, const CommonOptions& common);
+// The image `render` writes without -o: the scene's path with the extension .png.
+std::string defaultRenderOutput(const std::string& scene);
+
+// check takes the overrides render takes, so that it refuses what render would.
+struct CheckOptions {
+  std::string scene;
+  std::optional<int> width, height, samples, maxDepth;
+  std::string camera;
+};
+int runCheck(const CheckOptions& options, const CommonOptions& common);
 // The XML Schema of the scene language, to stdout or to `output`.
 int runSchema(const std::string& output);
 

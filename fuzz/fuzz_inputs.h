@@ -5,7 +5,7 @@
 // A finding is anything that is not an orderly refusal: a sanitizer report, a signal, an
 // abort, an uncaught exception, or (libFuzzer's -timeout / -rss_limit_mb) a hang or runaway
 // memory. Orderly refusals are the located diagnostics of the parser and the exceptions the
-// command line turns into exit status 2 or 3 (MeshError, CameraError, TextureError).
+// command line turns into exit status 2 or 3 (MeshError, LocatedError).
 #pragma once
 
 #include "lang/parser.h"
@@ -52,8 +52,7 @@ inline void sceneParser(const uint8_t* data, size_t size, const std::string& vir
       RayStats stats;
       renderer.renderPixel(scene.render.width / 2, scene.render.height / 2, stats);
     }
-  } catch (const CameraError&) {
-  } catch (const TextureError&) {
+  } catch (const LocatedError&) {  // a camera, a texture, transforms beyond range
   } catch (const MeshError&) {
   }
 }

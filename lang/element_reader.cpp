@@ -1,4 +1,5 @@
 #include "element_reader.h"
+#include "povray_names.h"
 
 #include "scenegraph/transform_syntax.h"
 
@@ -40,9 +41,10 @@ void ElementReader::checkAttributes(const std::vector<std::string_view>& allowed
     bool known = std::find(allowed.begin(), allowed.end(), n) != allowed.end();
     if (!known) {
       std::string specific = explain ? explain(n) : std::string();
+      std::string pov = specific.empty() ? povrayAttributeHint(el_.name(), n) : std::string();
       ctx_.diags.error(file_.nameLoc(a, el_),
                        specific.empty() ? tag() + ": unknown attribute '" + std::string(n) + "'" +
-                                              didYouMean(n, allowed)
+                                              (pov.empty() ? didYouMean(n, allowed) : pov)
                                         : tag() + " attribute '" + std::string(n) + "': " + specific);
       failed_ = true;
       continue;

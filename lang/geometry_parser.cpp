@@ -3,6 +3,7 @@
 // material (an id attribute or one inline <material> child, not both). A node without a
 // material leaves Node::material empty and inherits its nearest ancestor's (World does it).
 #include "element_parsers.h"
+#include "povray_names.h"
 
 #include "scenegraph/shape_registry.h"
 
@@ -42,6 +43,8 @@ void reportUnexpectedChild(ElementReader& parent, pugi::xml_node child,
             "; it belongs at the top level of <scene>");
   else if (isGeometryElement(name) || name == "material")
     c.error("<" + std::string(name) + "> is not allowed inside " + parent.tag());
+  else if (std::string pov = povrayElementHint(parent.name(), name); !pov.empty())
+    c.error("unknown element <" + std::string(name) + "> inside " + parent.tag() + pov);
   else
     c.error("unknown element <" + std::string(name) + "> inside " + parent.tag() +
             didYouMean(name, allowed));

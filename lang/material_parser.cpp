@@ -2,6 +2,7 @@
 // shininess 64, ior 1. One texture child at most: <checker color1 color2 scale> or
 // <image src scale>; with a texture, diffuse defaults to 1 so the texture shows as it is.
 #include "element_parsers.h"
+#include "povray_names.h"
 
 #include <algorithm>
 
@@ -87,8 +88,9 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel) {
     ElementReader t(r.ctx(), r.file(), n);
     std::string_view name = n.name();
     if (name != "checker" && name != "image") {
+      std::string pov = povrayElementHint("material", name);
       t.error("<material> may hold a texture (" + elementList(kTextureElements) + "), not <" +
-              std::string(name) + ">" + didYouMean(name, kTextureElements));
+              std::string(name) + ">" + (pov.empty() ? didYouMean(name, kTextureElements) : pov));
       return;
     }
     if (m.hasTexture()) {

@@ -7,6 +7,7 @@
 
 #include "camera_inside_warning.h"
 #include "element_parsers.h"
+#include "povray_names.h"
 #include "scene_loader.h"
 
 #include <algorithm>
@@ -42,7 +43,9 @@ void readTopLevel(ParseContext& ctx, const TopLevelItem& item) {
   } else if (name == "checker" || name == "image") {
     r.error("<" + std::string(name) + "> is a texture: it goes inside a <material>");
   } else {
-    r.error("unknown element <" + std::string(name) + "> in <scene>" + didYouMean(name, topLevelElementNames()));
+    std::string pov = povrayElementHint("scene", name);
+    r.error("unknown element <" + std::string(name) + "> in <scene>" +
+            (pov.empty() ? didYouMean(name, topLevelElementNames()) : pov));
   }
 }
 
@@ -79,8 +82,7 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
     auto top = std::make_unique<SourceFile>(path, canonicalPath(folder.empty() ? fs::path(".") : folder),
                                             std::move(text));
     if (loader.load(std::move(top))) {
-      for (const auto& f : loader.files())
-        if (f->root()) checkSceneRoot(ctx, *f);
+      for (const SourceFile* f : loader.sceneFiles()) checkSceneRoot(ctx, *f);
       for (const TopLevelItem& item : loader.items())
         if (std::string_view(item.element.name()) == "material") {
           ElementReader r(ctx, *item.file, item.element);

@@ -8,12 +8,22 @@ namespace fs = std::filesystem;
 
 namespace lucent {
 
-bool SceneLoader::parseFile(SourceFile& file) {
+bool SceneLoader::parseFile(SourceFile& file, bool included) {
   if (auto syntax = file.parse()) {
     ctx_.diags.error(syntax->loc, syntax->message);
     return false;
   }
   pugi::xml_node root = file.root();
+  // The root first: a file of several <material>s is one mistake (not a scene), not two.
+  if (std::string_view(root.name()) != "scene") {
+    ctx_.diags.error(file.loc(root), "the root element must be <scene version=\"1\">, got <" +
+                                         std::string(root.name()) + ">" +
+                                         didYouMean(root.name(), std::vector<std::string_view>{"scene"}) +
+                                         (included ? "; an included file is a scene file too: put its "
+                                                     "elements inside <scene version=\"1\">"
+                                                   : ""));
+    return false;
+  }
   // pugixml accepts several top-level elements (and text beside them); an XML document,
   // and so a scene, has exactly one root. A second one would be silently ignored.
   for (pugi::xml_node n = root.next_sibling(); n; n = n.next_sibling()) {
@@ -28,19 +38,14 @@ bool SceneLoader::parseFile(SourceFile& file) {
       return false;
     }
   }
-  if (std::string_view(root.name()) != "scene") {
-    ctx_.diags.error(file.loc(root), "the root element must be <scene version=\"1\">, got <" +
-                                         std::string(root.name()) + ">" +
-                                         didYouMean(root.name(), std::vector<std::string_view>{"scene"}));
-    return false;
-  }
+  scenes_.push_back(&file);
   return true;
 }
 
 bool SceneLoader::load(std::unique_ptr<SourceFile> top) {
   SourceFile& file = *top;
   files_.push_back(std::move(top));
-  if (!parseFile(file)) return false;
+  if (!parseFile(file, false)) return false;
   fs::path canonical = canonicalPath(ctx_.scene.file.empty() ? file.display() : ctx_.scene.file);
   seen_.insert(canonical);
   stack_.push_back({canonical, file.display()});
@@ -120,7 +125,7 @@ void SceneLoader::include(const SourceFile& from, pugi::xml_node element) {
   }
   files_.push_back(std::make_unique<SourceFile>(display, f.path.parent_path(), std::move(text)));
   SourceFile& file = *files_.back();
-  if (!parseFile(file)) return;
+  if (!parseFile(file, true)) return;
   stack_.push_back({f.path, display});
   collectParams(file);
   expand(file);

@@ -30,19 +30,22 @@ class SceneLoader {
   const std::vector<TopLevelItem>& items() const { return items_; }
   // Every file read, the scene file first (they own the XML the items point into).
   const std::vector<std::unique_ptr<SourceFile>>& files() const { return files_; }
+  // The files whose root is one <scene>: the others were refused whole, with one error.
+  const std::vector<const SourceFile*>& sceneFiles() const { return scenes_; }
 
  private:
   struct Open {
     std::filesystem::path canonical;
     std::string display;
   };
-  bool parseFile(SourceFile& file);
+  bool parseFile(SourceFile& file, bool included);
   void expand(const SourceFile& file);
   void include(const SourceFile& from, pugi::xml_node element);
   void collectParams(const SourceFile& file);
 
   ParseContext& ctx_;
   std::vector<std::unique_ptr<SourceFile>> files_;
+  std::vector<const SourceFile*> scenes_;
   std::vector<TopLevelItem> items_;
   std::vector<Open> stack_;               // the chain of files being expanded
   std::set<std::filesystem::path> seen_;  // every file read, by canonical path

@@ -13,8 +13,7 @@ CameraFrame makeCameraFrame(const Camera& camera) {
   Vec3 view = lookAt - position;
   double distance = glm::length(view);
   if (!(distance > 0.0) || !std::isfinite(distance))
-    throw CameraError(fmt::format("{}: error: camera look-at coincides with its position",
-                                  camera.loc.str()));
+    throw LocatedError(camera.loc, "camera look-at coincides with its position");
   CameraFrame f;
   f.origin = position;
   f.forward = view / distance;
@@ -23,8 +22,7 @@ CameraFrame makeCameraFrame(const Camera& camera) {
   double rightLength = glm::length(right);
   // sin of the angle between up and the view direction: below ~1e-9 the frame is noise.
   if (!(rightLength > 1e-9 * glm::length(up)))
-    throw CameraError(fmt::format("{}: error: camera up is parallel to the viewing direction",
-                                  camera.loc.str()));
+    throw LocatedError(camera.loc, "camera up is parallel to the viewing direction");
   f.right = right / rightLength;
   f.up = glm::cross(f.right, f.forward);
   return f;

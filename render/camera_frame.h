@@ -2,16 +2,9 @@
 #pragma once
 
 #include "scenegraph/camera.h"
-
-#include <stdexcept>
+#include "scenegraph/located_error.h"
 
 namespace lucent {
-
-// A camera that cannot form an image (look-at on the position, up along the view, a field
-// of view a projection cannot have). The message starts with the camera's file:line:col.
-struct CameraError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // Right-handed: right = forward × up, so the default camera (looking down -z, +y up) has
 // +x on the right of the image. All three axes are unit and mutually orthogonal.

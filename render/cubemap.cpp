@@ -14,11 +14,12 @@ CubemapProjection::CubemapProjection(const CameraFrame& frame, const Camera& cam
   const int cols = cubeLayoutColumns(layout_), rows = cubeLayoutRows(layout_);
   // Whole-pixel faces: a reflection probe must never have a pixel shared by two faces.
   if (width % cols != 0 || height % rows != 0)
-    throw CameraError(fmt::format(
-        "{}: error: a cubemap camera with layout=\"{}\" needs a width divisible by {} and a "
-        "height divisible by {} (got {}x{}; for square faces use e.g. {}x{})",
-        camera.loc.str(), layout_ == CubemapLayout::Cross ? "cross" : "strip", cols, rows, width,
-        height, cols * 128, rows * 128));
+    throw LocatedError(
+        camera.loc,
+        fmt::format("a cubemap camera with layout=\"{}\" needs a width divisible by {} and a "
+                    "height divisible by {} (got {}x{}; for square faces use e.g. {}x{})",
+                    layout_ == CubemapLayout::Cross ? "cross" : "strip", cols, rows, width, height,
+                    cols * 128, rows * 128));
   cellWidth_ = width / cols;
   cellHeight_ = height / rows;
 }

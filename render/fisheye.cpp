@@ -8,9 +8,9 @@ FisheyeProjection::FisheyeProjection(const CameraFrame& frame, const Camera& cam
                                      int height)
     : Projection(frame, camera, width, height), mapping_(camera.mapping) {
   if (!(camera.fov > 0.0 && camera.fov <= 360.0))
-    throw CameraError(fmt::format(
-        "{}: error: a fisheye camera needs 0 < fov <= 360 degrees (got {})", camera.loc.str(),
-        camera.fov));
+    throw LocatedError(
+        camera.loc,
+        fmt::format("a fisheye camera needs 0 < fov <= 360 degrees (got {})", camera.fov));
   switch (camera.fovAxis) {
     case FovAxis::Horizontal: radius_ = 0.5 * width; break;
     case FovAxis::Vertical: radius_ = 0.5 * height; break;

@@ -234,7 +234,10 @@ void writeImageFile(const Image& image, const std::string& path) {
   temp.keep = true;
 }
 
-Image readImageFile(const std::string& path, PixelDecoding decoding) {
+namespace {
+
+// Opens the file and refuses, from its header alone, what reading it would refuse.
+std::unique_ptr<ImageReader> openCheckedImage(const std::string& path) {
   std::string error;
   std::unique_ptr<ImageReader> in = imagePlugin().openFile(path, error);
   if (!in) throw ImageIOError(fmt::format("cannot read '{}': {}", path, error));
@@ -255,6 +258,18 @@ Image readImageFile(const std::string& path, PixelDecoding decoding) {
     throw ImageIOError(fmt::format("cannot read '{}': the {}x{} image needs about {} of memory, more "
                                    "than the {} available", path, spec.width, spec.height,
                                    formatBytes(need), formatBytes(*available)));
+  return in;
+}
+
+}  // namespace
+
+void checkImageFile(const std::string& path) { openCheckedImage(path); }
+
+Image readImageFile(const std::string& path, PixelDecoding decoding) {
+  std::unique_ptr<ImageReader> in = openCheckedImage(path);
+  const ImageHeader& spec = in->header();
+  const int channels = spec.channels;
+  std::string error;
   std::vector<float> data(static_cast<size_t>(spec.width) * spec.height * channels);
   error = in->readPixels(data.data());
   if (!error.empty()) throw ImageIOError(fmt::format("cannot read '{}': {}", path, error));

@@ -44,6 +44,10 @@ enum class PixelDecoding {
   AsStored  // the stored code values scaled to [0,1] (v/255, v/65535), no colour decoding
 };
 
+// Opens the file and reads its header only, throwing ImageIOError for everything
+// readImageFile() would refuse from the header (not an image, no pixels, too large).
+void checkImageFile(const std::string& path);
+
 // Reads the first three channels (a grey image is repeated into all three).
 Image readImageFile(const std::string& path, PixelDecoding decoding = PixelDecoding::Linear);
 

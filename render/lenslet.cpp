@@ -12,18 +12,19 @@ LensletProjection::LensletProjection(const CameraFrame& frame, const Camera& cam
       nx_(camera.lensesX),
       ny_(camera.lensesY),
       pitch_(camera.pitch) {
-  const std::string where = camera.loc.str();
   if (nx_ < 1 || ny_ < 1 || !(pitch_ > 0.0) || !std::isfinite(pitch_))
-    throw CameraError(fmt::format(
-        "{}: error: a lenslet camera needs at least 1 x 1 lenses and a pitch > 0", where));
+    throw LocatedError(camera.loc, "a lenslet camera needs at least 1 x 1 lenses and a pitch > 0");
   if (nx_ > width || ny_ > height)
-    throw CameraError(fmt::format(
-        "{}: error: a lenslet camera with {} x {} lenses needs an image of at least {} x {} pixels "
-        "(got {} x {})",
-        where, nx_, ny_, nx_, ny_, width, height));
+    throw LocatedError(
+        camera.loc,
+        fmt::format(
+            "a lenslet camera with {} x {} lenses needs an image of at least {} x {} pixels "
+            "(got {} x {})",
+            nx_, ny_, nx_, ny_, width, height));
   if (!(camera.fov > 0.0 && camera.fov < 180.0))
-    throw CameraError(fmt::format(
-        "{}: error: a lenslet camera needs 0 < fov < 180 degrees (got {})", where, camera.fov));
+    throw LocatedError(
+        camera.loc,
+        fmt::format("a lenslet camera needs 0 < fov < 180 degrees (got {})", camera.fov));
   cellWidth_ = static_cast<double>(width) / nx_;
   cellHeight_ = static_cast<double>(height) / ny_;
   // Each cell is framed like a pinhole image of the cell's size (square pixels), as

@@ -8,8 +8,8 @@ OrthographicProjection::OrthographicProjection(const CameraFrame& frame, const C
                                                int width, int height)
     : Projection(frame, camera, width, height) {
   if (!(camera.width > 0.0) || !std::isfinite(camera.width))
-    throw CameraError(fmt::format("{}: error: an orthographic camera needs a width > 0 (got {})",
-                                  camera.loc.str(), camera.width));
+    throw LocatedError(
+        camera.loc, fmt::format("an orthographic camera needs a width > 0 (got {})", camera.width));
   halfWidth_ = 0.5 * camera.width;
   halfHeight_ = halfWidth_ * static_cast<double>(height) / width;
 }

@@ -49,12 +49,10 @@ PaniniProjection::PaniniProjection(const CameraFrame& frame, const Camera& camer
     : Projection(frame, camera, width, height),
       d_(camera.distance),
       q_(camera.verticalCompression) {
-  const std::string where = camera.loc.str();
   if (!(d_ >= 0.0) || !std::isfinite(d_))
-    throw CameraError(fmt::format("{}: error: a panini camera needs distance >= 0", where));
+    throw LocatedError(camera.loc, "a panini camera needs distance >= 0");
   if (!(q_ >= 0.0 && q_ <= 1.0))
-    throw CameraError(
-        fmt::format("{}: error: a panini camera needs vertical-compression from 0 to 1", where));
+    throw LocatedError(camera.loc, "a panini camera needs vertical-compression from 0 to 1");
   const double half = 0.5 * radians(camera.fov);
   const double limit = paniniLongitudeLimit(d_);
   const double aspect = static_cast<double>(width) / height;
@@ -62,11 +60,12 @@ PaniniProjection::PaniniProjection(const CameraFrame& frame, const Camera& camer
   const double hPeak = d_ > 1.0 ? std::sqrt((d_ + 1.0) / (d_ - 1.0)) : kInf;
   auto hAt = [&](double phi) { return (d_ + 1.0) * std::sin(phi) / (d_ + std::cos(phi)); };
   auto tooWide = [&](const std::string& what) {
-    return CameraError(fmt::format(
-        "{}: error: a panini camera with distance {} cannot show {} (fov {} along {})", where,
-        d_, what, camera.fov,
-        camera.fovAxis == FovAxis::Horizontal ? "horizontal"
-        : camera.fovAxis == FovAxis::Vertical ? "vertical" : "diagonal"));
+    return LocatedError(
+        camera.loc, fmt::format("a panini camera with distance {} cannot show {} (fov {} along {})",
+                                d_, what, camera.fov,
+                                camera.fovAxis == FovAxis::Horizontal ? "horizontal"
+                                : camera.fovAxis == FovAxis::Vertical ? "vertical"
+                                                                      : "diagonal"));
   };
 
   switch (camera.fovAxis) {
@@ -115,10 +114,10 @@ PaniniProjection::PaniniProjection(const CameraFrame& frame, const Camera& camer
   if (q_ > 0.0) {
     Vec3 edge;
     if (!localDirection(halfWidth_, 0.0, edge) || !(edge.z > 0.0))
-      throw CameraError(fmt::format(
-          "{}: error: a panini camera with vertical-compression > 0 must stay within 90 degrees "
-          "of the view axis horizontally (lower fov or distance)",
-          where));
+      throw LocatedError(
+          camera.loc,
+          "a panini camera with vertical-compression > 0 must stay within 90 degrees "
+          "of the view axis horizontally (lower fov or distance)");
   }
 }
 

@@ -30,9 +30,9 @@ PinholeProjection::PinholeProjection(const CameraFrame& frame, const Camera& cam
                                      int height)
     : Projection(frame, camera, width, height) {
   if (!(camera.fov > 0.0 && camera.fov < 180.0))
-    throw CameraError(fmt::format(
-        "{}: error: a pinhole camera needs 0 < fov < 180 degrees (got {})", camera.loc.str(),
-        camera.fov));
+    throw LocatedError(
+        camera.loc,
+        fmt::format("a pinhole camera needs 0 < fov < 180 degrees (got {})", camera.fov));
   imagePlaneHalfExtents(camera.fov, camera.fovAxis, width, height, halfWidth_, halfHeight_);
 }
 

@@ -39,7 +39,7 @@ class Projection {
   int width_, height_;
 };
 
-// The projection for the camera's type at the given image size. Throws CameraError for a
+// The projection for the camera's type at the given image size. Throws LocatedError for a
 // camera that cannot form an image (at this size: a cube map needs whole-pixel faces).
 std::unique_ptr<Projection> makeProjection(const Camera& camera, int width, int height);
 

@@ -38,8 +38,8 @@ struct RenderResult {
 class Renderer {
  public:
   // Settings (size, samples, depth, ...) come from world.scene().render, so command-line
-  // overrides are applied to the scene before the renderer is built. Throws CameraError
-  // for a camera that cannot form an image and TextureError for an unreadable image.
+  // overrides are applied to the scene before the renderer is built. Throws LocatedError
+  // for a camera that cannot form an image or an unreadable image texture.
   Renderer(const World& world, const Camera& camera);
 
   // The whole image. Bit-identical for any thread count and from run to run: a pixel's

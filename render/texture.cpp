@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace lucent {
 
@@ -34,11 +35,7 @@ struct ImageMap::Impl {
 };
 
 ImageMap::ImageMap(const std::string& path) : impl_(std::make_unique<Impl>()) {
-  try {
-    impl_->linear = readImageFile(path, PixelDecoding::Linear);
-  } catch (const ImageIOError& e) {
-    throw TextureError(e.what());
-  }
+  impl_->linear = readImageFile(path, PixelDecoding::Linear);
   static_assert(sizeof(Color) == 3 * sizeof(float), "Image pixels are packed RGB floats");
   impl_->sampler = imagePlugin().textureSampler(&impl_->linear.pixels[0][0],
                                                 impl_->linear.width, impl_->linear.height);
@@ -67,11 +64,24 @@ TextureSet::TextureSet(const std::vector<Material>& materials) {
     if (!map) {
       try {
         map = std::make_shared<const ImageMap>(image->path);
-      } catch (const TextureError& e) {
-        throw TextureError(fmt::format("{}: error: {}", image->loc.str(), e.what()));
+      } catch (const ImageIOError& e) {
+        throw LocatedError(image->loc, e.what(), LocatedError::Kind::Input);
       }
     }
     maps_[i] = map;
+  }
+}
+
+void checkImageTextures(const std::vector<Material>& materials) {
+  std::set<std::string> checked;
+  for (const Material& m : materials) {
+    const auto* image = std::get_if<ImageTexture>(&m.texture);
+    if (!image || !checked.insert(image->path).second) continue;
+    try {
+      checkImageFile(image->path);
+    } catch (const ImageIOError& e) {
+      throw LocatedError(image->loc, e.what(), LocatedError::Kind::Input);
+    }
   }
 }
 

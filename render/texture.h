@@ -1,6 +1,7 @@
 // Texture colours T at a surface point: the solid 3-D checker and image maps.
 #pragma once
 
+#include "scenegraph/located_error.h"
 #include "scenegraph/material.h"
 
 #include "primitives/hit.h"
@@ -12,11 +13,6 @@
 #include <vector>
 
 namespace lucent {
-
-// An image texture that cannot be read; the message names the file and the scene location.
-struct TextureError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // POV-Ray's checker: cell (⌊x⌋ + ⌊y⌋ + ⌊z⌋) mod 2 of p/scale, even cells (among them
 // [0, scale)^3) are color1. A point on a cell boundary belongs to the cell on the positive
@@ -31,7 +27,7 @@ Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec
 // those tagged sRGB are decoded to linear RGB once, on load.
 class ImageMap {
  public:
-  // Throws TextureError naming the file.
+  // Throws ImageIOError naming the file.
   explicit ImageMap(const std::string& path);
   ~ImageMap();
   ImageMap(const ImageMap&) = delete;
@@ -47,10 +43,15 @@ class ImageMap {
   std::unique_ptr<Impl> impl_;
 };
 
+// Reads the header of every <image> texture's file, as `lucent check` does: throws what
+// TextureSet would for a file that is not an image or too large (LocatedError, Kind::Input).
+void checkImageTextures(const std::vector<Material>& materials);
+
 // The image maps of a scene's materials, each file loaded once, indexed by material.
 class TextureSet {
  public:
-  // Loads every <image> texture; throws TextureError for one that cannot be read.
+  // Loads every <image> texture; throws LocatedError (Kind::Input, at the <image>) for
+  // one that cannot be read.
   explicit TextureSet(const std::vector<Material>& materials);
 
   // The texture colour T of material `index` at the hit (1 for a material without one).

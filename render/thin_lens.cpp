@@ -24,13 +24,13 @@ ThinLensProjection::ThinLensProjection(const CameraFrame& frame, const Camera& c
                                        int width, int height)
     : Projection(frame, camera, width, height) {
   if (!(camera.fov > 0.0 && camera.fov < 180.0))
-    throw CameraError(fmt::format(
-        "{}: error: a thin-lens camera needs 0 < fov < 180 degrees (got {})", camera.loc.str(),
-        camera.fov));
+    throw LocatedError(
+        camera.loc,
+        fmt::format("a thin-lens camera needs 0 < fov < 180 degrees (got {})", camera.fov));
   if (!(camera.focalLength > 0.0) || !(camera.fStop > 0.0) || !(camera.focusDistance >= 0.0))
-    throw CameraError(fmt::format(
-        "{}: error: a thin-lens camera needs focal-length > 0, f-stop > 0 and focus-distance >= 0",
-        camera.loc.str()));
+    throw LocatedError(
+        camera.loc,
+        "a thin-lens camera needs focal-length > 0, f-stop > 0 and focus-distance >= 0");
   imagePlaneHalfExtents(camera.fov, camera.fovAxis, width, height, halfWidth_, halfHeight_);
   // Aperture diameter = focal length / f-number (the definition of the f-number); an
   // infinite f-stop closes the lens to a pinhole.

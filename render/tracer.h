@@ -30,7 +30,7 @@ struct PathSeed {
 class Tracer {
  public:
   // Reads the render settings, lights and materials from world.scene() and loads the
-  // image textures (throws TextureError). The world must outlive the tracer.
+  // image textures (throws LocatedError). The world must outlive the tracer.
   explicit Tracer(const World& world);
 
   // The colour seen along a camera ray (depth 1, weight 1) that starts in `media`.

@@ -1,5 +1,6 @@
 #include "world.h"
 
+#include "located_error.h"
 #include "shape_registry.h"
 
 #include "csg/csg_node.h"
@@ -10,7 +11,6 @@
 #include "primitives/test_counts.h"
 
 #include <cmath>
-#include <stdexcept>
 #include <unordered_map>
 
 namespace lucent {
@@ -37,6 +37,24 @@ CsgOp csgOpOf(NodeKind k) {
   }
 }
 
+// The node's world transform below `parentWorld`; throws what building the world refuses.
+Transform nodeWorld(const Node& node, const Transform& parentWorld) {
+  auto local = Transform::fromMatrix(node.parentFromNode);
+  if (!local) throw LocatedError(node.loc, "singular transform");
+  Transform world = local->followedBy(parentWorld);
+  // Each transform is finite, but nested ones multiply (twenty groups of scale(1e30)).
+  if (!finiteTransform(world))
+    throw LocatedError(node.loc, "the transforms down to this node multiply beyond double range");
+  return world;
+}
+
+// Walks the graph as Builder does, computing transforms only.
+void checkNode(const Node& node, const Transform& parentWorld) {
+  Transform world = nodeWorld(node, parentWorld);
+  if (node.kind == NodeKind::Use) return checkNode(*node.target, world);
+  for (const auto& c : node.children) checkNode(*c, world);
+}
+
 struct Builder {
   const ShapeMaker& makeShape;
   std::unordered_map<const Node*, std::shared_ptr<const Shape>> shapes;  // built once per node
@@ -44,13 +62,7 @@ struct Builder {
 
   void add(const Node& node, const Transform& parentWorld, uint32_t inherited,
            std::vector<std::unique_ptr<Shape>>& out) {
-    auto local = Transform::fromMatrix(node.parentFromNode);
-    if (!local) throw std::runtime_error(node.loc.str() + ": error: singular transform");
-    Transform world = local->followedBy(parentWorld);
-    // Each transform is finite, but nested ones multiply (twenty groups of scale(1e30)).
-    if (!finiteTransform(world))
-      throw std::runtime_error(node.loc.str() +
-                               ": error: the transforms down to this node multiply beyond double range");
+    Transform world = nodeWorld(node, parentWorld);
     uint32_t material = node.material.value_or(inherited);
 
     switch (node.kind) {
@@ -84,6 +96,8 @@ struct Builder {
 };
 
 }  // namespace
+
+void checkWorld(const Scene& scene) { checkNode(*scene.root, Transform()); }
 
 World::World(const Scene& scene) : World(scene, makeShape) {}
 

@@ -17,6 +17,11 @@ namespace lucent {
 // Builds the shape of one geometry node (makeShape; tests pass their own).
 using ShapeMaker = std::function<std::shared_ptr<const Shape>(const ShapeSpec&)>;
 
+// Throws, without building any shape, the LocatedError that building the world would:
+// a transform down to some node that is singular or beyond double range (nested scales).
+// `lucent check` calls it so that it refuses what `lucent render` refuses.
+void checkWorld(const Scene& scene);
+
 class World {
  public:
   // Composes transforms down to the leaves (world matrix, inverse and normal matrix
@@ -26,7 +31,7 @@ class World {
   // lone object, are tested one by one. A top-level sphere whose transform is a
   // similarity is kept in the BVH's leaves as a sphere in world space (sphere_image.h),
   // tested without a virtual call or a pointer to follow; its hits still name its
-  // Instance. The scene must outlive the world.
+  // Instance. The scene must outlive the world. Throws LocatedError (checkWorld's).
   explicit World(const Scene& scene);
   World(const Scene& scene, const ShapeMaker& makeShape);
 

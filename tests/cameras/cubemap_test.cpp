@@ -185,7 +185,7 @@ TEST_CASE("a cube map needs whole-pixel faces", "[cameras][cubemap]") {
                     "use e.g. 512x384)");
   CHECK_NOTHROW(makeProjection(cam, 320, 240));
   cam.layout = CubemapLayout::Strip;
-  CHECK_THROWS_AS(makeProjection(cam, 320, 80), CameraError);
+  CHECK_THROWS_AS(makeProjection(cam, 320, 80), LocatedError);
   CHECK_NOTHROW(makeProjection(cam, 480, 80));
 }
 

@@ -66,6 +66,6 @@ TEST_CASE("a lenslet camera needs a pixel per lens at least", "[cameras][lenslet
   cam.type = CameraType::Lenslet;
   cam.lensesX = 64;
   cam.lensesY = 2;
-  CHECK_THROWS_AS(makeProjection(cam, 32, 32), CameraError);
+  CHECK_THROWS_AS(makeProjection(cam, 32, 32), LocatedError);
   CHECK_NOTHROW(makeProjection(cam, 64, 32));
 }

@@ -96,7 +96,7 @@ TEST_CASE("panini: the largest fov the parser accepts renders, the next one the 
     // One double more is refused by the projection as well.
     Camera wider = cam;
     wider.fov = refused;
-    CHECK_THROWS_AS(makeProjection(wider, 48, 36), CameraError);
+    CHECK_THROWS_AS(makeProjection(wider, 48, 36), LocatedError);
 
     // The render: every pixel has a ray, so none shows the background.
     World world(scene);

@@ -174,7 +174,7 @@ TEST_CASE("panini views it cannot form are camera errors", "[cameras][panini]") 
     cam.distance = 1.0;
     cam.fov = 200.0;
     cam.verticalCompression = 0.5;
-    CHECK_THROWS_AS(makeProjection(cam, 40, 30), CameraError);
+    CHECK_THROWS_AS(makeProjection(cam, 40, 30), LocatedError);
     cam.verticalCompression = 0.0;
     CHECK_NOTHROW(makeProjection(cam, 40, 30));
   }

@@ -1,51 +1,15 @@
 // `lucent check`: the summary on stdout, every diagnostic on stderr, and the contract's
 // exit statuses (0 valid, 2 invalid scene, 3 unreadable scene file).
+#include "run_lucent.h"
+
 #include <catch2/catch.hpp>
 
-#include <array>
-#include <cstdio>
-#include <filesystem>
-#include <string>
-#include <sys/wait.h>
-#include <unistd.h>
-
-namespace fs = std::filesystem;
-
-namespace {
-
-struct Run {
-  int status = -1;
-  std::string out;  // stdout and stderr, stderr lines prefixed "E: "
-};
-
-Run runLucent(const std::string& args) {
-  fs::path errFile = fs::temp_directory_path() / ("lucent-check-test-" + std::to_string(::getpid()) + ".err");
-  std::string cmd = std::string("'") + LUCENT_BINARY + "' " + args + " 2>'" + errFile.string() + "'";
-  Run r;
-  FILE* p = popen(cmd.c_str(), "r");
-  REQUIRE(p);
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  int raw = pclose(p);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  FILE* e = fopen(errFile.string().c_str(), "r");
-  if (e) {
-    char line[4096];
-    while (fgets(line, sizeof line, e)) r.out += std::string("E: ") + line;
-    fclose(e);
-  }
-  fs::remove(errFile);
-  return r;
-}
-
-std::string sourcePath(const std::string& rel) { return (fs::path(LUCENT_SOURCE_DIR) / rel).string(); }
-
-}  // namespace
+using lucent::test::runLucent;
+using lucent::test::sourcePath;
 
 TEST_CASE("lang: lucent check prints a summary of a valid scene and exits 0", "[lang][check]") {
   std::string scene = sourcePath("tests/lang/valid/defs_use.xml");
-  Run r = runLucent("check '" + scene + "'");
+  auto r = runLucent("check '" + scene + "'");
   CHECK(r.status == 0);
   CHECK(r.out ==
         "scene: " + scene + "\n"
@@ -61,30 +25,30 @@ TEST_CASE("lang: lucent check prints a summary of a valid scene and exits 0", "[
 }
 
 TEST_CASE("lang: lucent check prints every error of an invalid scene to stderr and exits 2", "[lang][check]") {
-  std::string scene = sourcePath("tests/lang/invalid/multiple_errors.xml");
-  Run r = runLucent("check '" + scene + "'");
+  std::string scene = sourcePath("tests/bad/scenes/multiple_errors.xml");
+  auto r = runLucent("check '" + scene + "'");
   CHECK(r.status == 2);
   CHECK(r.out ==
-        "E: " + scene + ":7:16: error: <camera> attribute 'fov': expected an angle between 0 and 180, got '0'\n"
-        "E: " + scene + ":8:19: error: <sphere> attribute 'radius': expected a positive number, got '-1'\n"
-        "E: " + scene + ":9:13: error: <box> attribute 'min': expected 3 numbers, got 2 ('1 1')\n"
-        "E: " + scene + ":10:10: error: <torus>: unknown attribute 'majr' (did you mean 'major'?)\n"
+        "E: " + scene + ":2:16: error: <camera> attribute 'fov': expected an angle between 0 and 180, got '0'\n"
+        "E: " + scene + ":3:19: error: <sphere> attribute 'radius': expected a positive number, got '-1'\n"
+        "E: " + scene + ":4:13: error: <box> attribute 'min': expected 3 numbers, got 2 ('1 1')\n"
+        "E: " + scene + ":5:10: error: <torus>: unknown attribute 'majr' (did you mean 'major'?)\n"
         "E: " + scene + ": 4 errors; the scene is invalid\n");
 }
 
 TEST_CASE("lang: lucent check takes -D and --allow-path, a missing scene file exits 3", "[lang][check]") {
   std::string params = sourcePath("tests/lang/valid/params.xml");
-  Run r = runLucent("check '" + params + "' -D r=-1");
+  auto r = runLucent("check '" + params + "' -D r=-1");
   CHECK(r.status == 2);
   CHECK_THAT(r.out, Catch::Contains("<sphere> attribute 'radius': expected a positive number, got '-1'"));
 
-  std::string escape = sourcePath("tests/lang/invalid/include_escapes_folder.xml");
+  std::string escape = sourcePath("tests/bad/scenes/include_escapes_folder.xml");
   CHECK(runLucent("check '" + escape + "'").status == 2);
-  Run allowed = runLucent("check '" + escape + "' --allow-path '" + sourcePath("tests/lang/valid") + "'");
+  auto allowed = runLucent("check '" + escape + "' --allow-path '" + sourcePath("tests/lang/valid") + "'");
   CHECK(allowed.status == 0);
   CHECK_THAT(allowed.out, Catch::Contains("nodes: 5 (box: 1, difference: 1, plane: 1, sphere: 2)"));
 
-  Run missing = runLucent("check /nonexistent/scene.xml");
+  auto missing = runLucent("check /nonexistent/scene.xml");
   CHECK(missing.status == 3);
   CHECK(missing.out == "E: /nonexistent/scene.xml: error: cannot read the scene file: no such file\n");
 }

@@ -1,11 +1,11 @@
-// Every file in tests/lang/invalid/ is a scene with known errors. Its first line states
-// the expected error as an XML comment,
-//   <!-- expect: LINE:COL: message fragment -->        (in the file itself)
-//   <!-- expect: inc/x.xml:LINE:COL: message fragment --> (in a file it includes)
-// further lines may add more "expect:" comments and "<!-- expect-errors: N -->" (the exact
-// number of errors). Each expectation must match one error's file, line, column and
-// contain the fragment; the scene must be refused. Files under invalid/inc/ are helpers.
+// The parser, in-process, on the one bad-scene corpus (tests/bad/cases.txt, the format is
+// described there): every `2 | check scenes/X.xml | ...` case is refused, by the parser or
+// by checkRenderable after it, and each expected field appears among the lines `lucent
+// check` would print (every diagnostic, then "N errors; the scene is invalid" or the
+// located error of checkRenderable). tests/scripts/bad_inputs.sh runs the same cases
+// through the binary, with time limits; this test runs them in the test build's sanitizers.
 #include "lang/parser.h"
+#include "render/scene_check.h"
 
 #include <catch2/catch.hpp>
 
@@ -20,78 +20,73 @@ using namespace lucent;
 
 namespace {
 
-struct Expectation {
-  std::string file;  // relative to the invalid/ folder
-  int line = 0, col = 0;
-  std::string fragment;
+struct SceneCase {
+  std::string scene;                  // as written in cases.txt, relative to tests/bad
+  std::vector<std::string> expected;  // substrings of the output
 };
 
-struct ExpectedErrors {
-  std::vector<Expectation> errors;
-  int count = -1;  // exact number of errors, if stated
-};
+std::vector<std::string> splitFields(const std::string& text) {
+  std::vector<std::string> fields;
+  for (size_t start = 0;;) {
+    size_t bar = text.find(" | ", start);
+    fields.push_back(text.substr(start, bar == std::string::npos ? std::string::npos : bar - start));
+    if (bar == std::string::npos) break;
+    start = bar + 3;
+  }
+  return fields;
+}
 
-ExpectedErrors readExpectations(const fs::path& path) {
-  ExpectedErrors out;
-  std::ifstream in(path);
-  std::string line;
-  const std::regex expect(R"(^<!-- expect: (?:(\S+\.xml):)?(\d+):(\d+): (.*) -->\s*$)");
-  const std::regex count(R"(^<!-- expect-errors: (\d+) -->\s*$)");
-  while (std::getline(in, line)) {
+// The cases that check one corpus scene with no other argument and expect status 2.
+std::vector<SceneCase> checkCases(const fs::path& casesFile) {
+  std::vector<SceneCase> out;
+  std::ifstream in(casesFile);
+  const std::regex line(R"(^2 \| check (scenes/\S+\.xml) \| (.*)$)");
+  for (std::string text; std::getline(in, text);) {
     std::smatch m;
-    if (std::regex_match(line, m, expect)) {
-      out.errors.push_back({m[1].matched ? m[1].str() : path.filename().string(), std::stoi(m[2]),
-                            std::stoi(m[3]), m[4]});
-    } else if (std::regex_match(line, m, count)) {
-      out.count = std::stoi(m[1]);
-    } else {
-      break;  // expectations are the first lines only
-    }
+    if (!std::regex_match(text, m, line)) continue;
+    out.push_back({m[1], splitFields(m[2])});
   }
   return out;
 }
 
-// Messages name files by the path given to the parser; the expectations are written
-// relative to the invalid/ folder, so drop that prefix before comparing.
-std::string relative(std::string text, const std::string& prefix) {
-  for (size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
-  return text;
-}
-
 }  // namespace
 
-TEST_CASE("lang: every invalid scene is refused with its expected located errors", "[lang][invalid]") {
-  fs::path dir = fs::path(LUCENT_SOURCE_DIR) / "tests" / "lang" / "invalid";
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.is_regular_file() && e.path().extension() == ".xml") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  REQUIRE(files.size() >= 45);
+TEST_CASE("lang: every invalid scene of the corpus is refused with its expected located errors",
+          "[lang][invalid]") {
+  const fs::path bad = fs::path(LUCENT_SOURCE_DIR) / "tests" / "bad";
+  const std::vector<SceneCase> cases = checkCases(bad / "cases.txt");
+  REQUIRE(cases.size() >= 180);
 
-  const std::string prefix = dir.string() + "/";
-  for (const fs::path& file : files) {
-    SECTION(file.filename().string()) {
-      ExpectedErrors expected = readExpectations(file);
-      REQUIRE_FALSE(expected.errors.empty());  // the first line must say what is expected
-
-      ParseResult r = parseSceneFile(file.string());
-      std::string all;
-      for (const Diagnostic& d : r.diagnostics.all()) all += relative(d.str(), prefix) + "\n";
-      INFO("diagnostics:\n" << all);
-      CHECK(r.scene == nullptr);
-      CHECK_FALSE(r.ioFailure);
-      CHECK(r.diagnostics.hasErrors());
-      if (expected.count >= 0) CHECK(r.diagnostics.errorCount() == static_cast<size_t>(expected.count));
-
-      for (const Expectation& e : expected.errors) {
-        INFO("expected: " << e.file << ":" << e.line << ":" << e.col << ": ..." << e.fragment);
-        bool found = false;
-        for (const Diagnostic& d : r.diagnostics.all()) {
-          if (d.severity != Severity::Error) continue;
-          if (relative(d.loc.file, prefix) != e.file || d.loc.line != e.line || d.loc.col != e.col) continue;
-          if (relative(d.message, prefix).find(e.fragment) != std::string::npos) found = true;
+  // Messages name files by the path given to the parser: shown relative to tests/bad, as
+  // the cases are written.
+  const std::string prefix = bad.string() + "/";
+  auto relative = [&](std::string text) {
+    for (size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
+    return text;
+  };
+  for (const SceneCase& c : cases) {
+    SECTION(c.scene) {
+      ParseResult r = parseSceneFile((bad / c.scene).string());
+      std::string out;
+      for (const Diagnostic& d : r.diagnostics.all()) out += relative(d.str()) + "\n";
+      if (r.scene) {
+        // Parsed: then it is refused by what check and render run after parsing.
+        try {
+          checkRenderable(*r.scene, *r.scene->findCamera(""));
+          out += "(accepted)\n";
+        } catch (const LocatedError& e) {
+          out += relative(e.what()) + "\n";
         }
-        CHECK(found);
+      } else {
+        const size_t n = r.diagnostics.errorCount();
+        out += c.scene + ": " + std::to_string(n) + " error" + (n == 1 ? "" : "s") + "; the scene is invalid\n";
+      }
+      INFO("output:\n" << out);
+      CHECK_FALSE(r.ioFailure);
+      CHECK(out.find("(accepted)") == std::string::npos);
+      for (const std::string& e : c.expected) {
+        INFO("expected: " << e);
+        CHECK(out.find(e) != std::string::npos);
       }
     }
   }

@@ -117,7 +117,7 @@ TEST_CASE("degenerate cameras are errors that name the camera's location", "[ren
   }
   SECTION("pinhole fov of 180 degrees") {
     cam.fov = 180.0;
-    CHECK_THROWS_AS(makeProjection(cam, 4, 4), CameraError);
+    CHECK_THROWS_AS(makeProjection(cam, 4, 4), LocatedError);
   }
 }
 

@@ -135,7 +135,7 @@ TEST_CASE("image texture: bilinear lookup at (u,v), v = 1 at the top row, repeat
   CHECK(map.lookup(Vec2(1.25, -0.25), Vec2(1.0)) == Color(1, 0, 0));
   CHECK(map.lookup(Vec2(0.5, 1.5), Vec2(2.0)) == Color(1, 0, 0));
   std::filesystem::remove(path);
-  CHECK_THROWS_AS(ImageMap(path), TextureError);
+  CHECK_THROWS_AS(ImageMap(path), ImageIOError);
 }
 
 TEST_CASE("8-bit sRGB image textures are decoded to linear", "[render][texture]") {

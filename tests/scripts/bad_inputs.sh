@@ -58,8 +58,8 @@ cp "$bad/scenes/valid.xml" "$tmp/gen/valid.xml"
 
 before=$(cd "$bad" && find . -print0 | sort -z | xargs -0 md5sum 2>/dev/null)
 
-# cases.txt: STATUS | ARGUMENTS | EXPECTED STDERR SUBSTRING  ('#' starts a comment).
-# ARGUMENTS are split at spaces; $TMP is the scratch folder above. Run in tests/bad.
+# cases.txt: STATUS | ARGUMENTS | EXPECTED STDERR SUBSTRING [| MORE...]  ('#' starts a
+# comment). ARGUMENTS are split at spaces; $TMP is the scratch folder above. Run in tests/bad.
 cd "$bad" || exit 1
 while IFS= read -r line; do
   [[ "$line" =~ ^[[:space:]]*(#|$) ]] && continue
@@ -68,6 +68,8 @@ while IFS= read -r line; do
   argtext=${rest%%|*}
   expected=${rest#*|}
   expected=${expected# }
+  # Each " | "-separated field of EXPECTED must appear.
+  mapfile -t wants < <(printf '%s' "$expected" | awk 'BEGIN { RS = " \\| " } { sub(/\n$/, ""); print }')
   argtext=${argtext//\$TMP/$tmp}
   read -r -a args <<<"$argtext"
   cases=$((cases + 1))
@@ -82,8 +84,13 @@ while IFS= read -r line; do
     fail "$what: sanitizer or internal error: $(head -c 3000 "$tmp/stderr")"
   elif [ "$got" -ne "$want" ]; then
     fail "$what: exit status $got, expected $want; stderr: $(head -c 1000 "$tmp/stderr")"
-  elif ! grep -qF -- "$expected" "$tmp/stderr"; then
-    fail "$what: stderr lacks '$expected': $(head -c 1000 "$tmp/stderr")"
+  else
+    for want_text in "${wants[@]}"; do
+      if ! grep -qF -- "$want_text" "$tmp/stderr"; then
+        fail "$what: stderr lacks '$want_text': $(head -c 1000 "$tmp/stderr")"
+        break
+      fi
+    done
   fi
 done < cases.txt
 

@@ -1,0 +1,68 @@
+#include "load_scene.h"
+
+#include "exit_status.h"
+
+#include "lang/parser.h"
+#include "render/scene_check.h"
+
+#include <fmt/core.h>
+
+#include <cstdio>
+
+namespace lucent::cli {
+
+namespace {
+
+std::string cameraNames(const Scene& scene) {
+  std::string names;
+  for (const Camera& c : scene.cameras) {
+    if (c.name.empty()) continue;
+    names += (names.empty() ? "" : ", ") + c.name;
+  }
+  return names.empty() ? "the scene's cameras have no names" : "cameras: " + names;
+}
+
+}  // namespace
+
+void checkOverrides(const SceneRequest& request) {
+  for (auto [value, name] : {std::pair{request.width, "--width"}, std::pair{request.height, "--height"},
+                             std::pair{request.samples, "--samples"},
+                             std::pair{request.threads, "--threads"},
+                             std::pair{request.maxDepth, "--max-depth"}})
+    if (auto problem = overrideProblem(name, value)) throw UsageError(*problem);
+}
+
+LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) {
+  checkOverrides(request);
+
+  ParseOptions options;
+  options.defines = common.defines;
+  options.allowPaths = common.allowPaths;
+  ParseResult parsed = parseSceneFile(request.scene, options);
+  for (const Diagnostic& d : parsed.diagnostics.all()) fmt::print(stderr, "{}\n", d.str());
+  if (parsed.ioFailure) throw ReportedFailure{kRuntimeFailure};  // the scene file is unreadable
+  if (!parsed.scene) {
+    const size_t n = parsed.diagnostics.errorCount();
+    fmt::print(stderr, "{}: {} error{}; the scene is invalid\n", request.scene, n, n == 1 ? "" : "s");
+    throw ReportedFailure{kInvalidScene};
+  }
+
+  LoadedScene loaded;
+  loaded.scene = std::move(parsed.scene);
+  Scene& scene = *loaded.scene;
+  RenderSettings& r = scene.render;
+  if (request.width) r.width = *request.width;
+  if (request.height) r.height = *request.height;
+  if (request.samples) r.samples = *request.samples;
+  if (request.maxDepth) r.maxDepth = *request.maxDepth;
+
+  loaded.camera = scene.findCamera(request.camera);
+  if (!loaded.camera)  // the parser requires a camera: only a --camera name can miss
+    throw UsageError(fmt::format("--camera {}: no camera of that name in '{}' ({})", request.camera,
+                                 request.scene, cameraNames(scene)));
+
+  checkRenderable(scene, *loaded.camera);
+  return loaded;
+}
+
+}  // namespace lucent::cli

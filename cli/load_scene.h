@@ -1,0 +1,38 @@
+// The sequence every command that reads a scene starts with, written once: parse it,
+// print its diagnostics, check and apply the command-line overrides, pick the camera and
+// check what rendering would refuse, so that `check` refuses what `render` refuses.
+#pragma once
+
+#include "commands.h"
+
+#include "scenegraph/scene.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace lucent::cli {
+
+struct SceneRequest {
+  std::string scene;
+  // Each replaces the scene's <render> value; -t is checked only (it is not in the scene).
+  std::optional<int> width, height, samples, threads, maxDepth;
+  std::string camera;  // --camera; empty: the scene's first camera
+};
+
+struct LoadedScene {
+  std::unique_ptr<Scene> scene;
+  const Camera* camera = nullptr;  // in *scene
+};
+
+// Throws UsageError for an override out of range (the first thing loadScene does, and
+// callable before it, to refuse a bad option before an output is looked at).
+void checkOverrides(const SceneRequest& request);
+
+// Warnings are always printed (-q hides progress, not what is wrong with the scene).
+// Throws UsageError (an override out of range, an unknown --camera), ReportedFailure
+// (parse errors, printed), LocatedError (a camera that cannot form an image at this size,
+// transforms beyond range, an image texture whose header cannot be read).
+LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common);
+
+}  // namespace lucent::cli

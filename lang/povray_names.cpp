@@ -1,0 +1,116 @@
+#include "povray_names.h"
+
+#include "element_parsers.h"
+
+#include <vector>
+
+namespace lucent {
+
+namespace {
+
+struct PovWord {
+  std::string_view where;   // the Lucent element it was written on or in; "" anywhere
+  std::string_view povray;  // POV-Ray's word
+  std::string_view lucent;  // what Lucent says instead, as it reads in the hint
+};
+
+constexpr std::string_view kOnShape = "";  // any element without an entry of its own
+
+// POV-Ray's own spellings (its keywords use '_', Lucent's attributes '-').
+const std::vector<PovWord> kAttributes{
+    {"camera", "location", "'position'"},
+    {"camera", "look_at", "'look-at'"},
+    {"camera", "angle", "'fov'"},
+    {"camera", "sky", "'up'"},
+    {"camera", "direction", "'look-at' (the point looked at) and 'fov'"},
+    {"camera", "right", "'fov-axis' and the image's width and height"},
+    {"camera", "focal_point", "'focus-distance' (with type=\"thin-lens\")"},
+    {"camera", "aperture", "'f-stop' (with type=\"thin-lens\")"},
+    {"light", "location", "'position'"},
+    {"light", "point_at", "'look-at'"},
+    {"light", "falloff", "'angle'"},
+    {"light", "radius", "'inner'"},
+    {"light", "fade_distance", "'attenuation'"},
+    {"light", "fade_power", "'attenuation'"},
+    {"light", "shadowless", "shadows=\"false\""},
+    {"light", "spotlight", "type=\"spot\""},
+    {"light", "parallel", "type=\"directional\""},
+    {"light", "area_light", "type=\"area\""},
+    {"material", "color", "'diffuse'"},
+    {"material", "colour", "'diffuse'"},
+    {"material", "rgb", "'diffuse'"},
+    {"material", "pigment", "'diffuse' (a colour) or a <checker> or <image> child"},
+    {"material", "finish", "the material's own attributes: 'ambient', 'diffuse', 'specular', 'shininess', 'reflective'"},
+    {"material", "normal", "no equivalent: Lucent's materials do not perturb the normal"},
+    {"material", "phong", "'specular'"},
+    {"material", "phong_size", "'shininess'"},
+    {"material", "reflection", "'reflective'"},
+    {"material", "filter", "'transmissive'"},
+    {"material", "transmit", "'transmissive'"},
+    {"material", "emission", "'emissive'"},
+    {"material", "interior", "the material's 'ior' and 'absorption'"},
+    {"render", "max_trace_level", "'max-depth'"},
+    {"render", "adc_bailout", "'min-weight'"},
+    {"render", "antialias", "'samples'"},
+    {"render", "ambient_light", "'ambient'"},
+    {kOnShape, "pigment", "a <material> child or material=\"id\""},
+    {kOnShape, "texture", "a <material> child or material=\"id\""},
+    {kOnShape, "finish", "a <material> child or material=\"id\""},
+    {kOnShape, "color", "a <material> child or material=\"id\""},
+    {kOnShape, "colour", "a <material> child or material=\"id\""},
+    {kOnShape, "normal", "no equivalent: Lucent's materials do not perturb the normal"},
+    {kOnShape, "translate", "transform=\"translate(x y z)\""},
+    {kOnShape, "rotate", "transform=\"rotate-x(degrees) ...\""},
+    {kOnShape, "scale", "transform=\"scale(s)\""},
+    {kOnShape, "matrix", "transform=\"matrix(...)\""},
+};
+
+const std::vector<PovWord> kElements{
+    {"scene", "light_source", "<light>"},
+    {"scene", "global_settings", "<render>"},
+    {"scene", "background", "<render background=\"r g b\">"},
+    {"scene", "object", "<use ref=\"id\">"},
+    {"scene", "declare", "<defs> (named nodes) or <param> (values)"},
+    {"scene", "texture", "<material id=\"...\">"},
+    {"scene", "pigment", "<material id=\"...\">"},
+    {"scene", "finish", "<material id=\"...\">"},
+    {"scene", "mesh2", "<mesh>"},
+    {"material", "pigment", "the 'diffuse' colour or a <checker> or <image> child"},
+    {"material", "finish", "the material's own attributes: 'ambient', 'diffuse', 'specular', 'shininess', 'reflective'"},
+    {"material", "normal", "no equivalent: Lucent's materials do not perturb the normal"},
+    {"material", "interior", "the material's 'ior' and 'absorption'"},
+    {kOnShape, "texture", "<material>"},
+    {kOnShape, "pigment", "<material>"},
+    {kOnShape, "finish", "<material>"},
+    {kOnShape, "light_source", "<light>, at the top level of <scene>"},
+};
+
+std::string hint(std::string_view word, std::string_view lucent) {
+  if (lucent.rfind("no equivalent", 0) == 0)
+    return " (POV-Ray's '" + std::string(word) + "' has " + std::string(lucent) + ")";
+  return " (POV-Ray's '" + std::string(word) + "' is " + std::string(lucent) + " in Lucent)";
+}
+
+std::string lookup(const std::vector<PovWord>& table, std::string_view where, std::string_view word) {
+  const PovWord* generic = nullptr;
+  for (const PovWord& w : table) {
+    if (w.povray != word) continue;
+    if (w.where == where) return hint(word, w.lucent);
+    if (w.where == kOnShape && !generic) generic = &w;
+  }
+  // The generic words are for shapes and groups, not for elements that have their own.
+  if (!generic || !isGeometryElement(where)) return {};
+  return hint(word, generic->lucent);
+}
+
+}  // namespace
+
+std::string povrayAttributeHint(std::string_view element, std::string_view attribute) {
+  return lookup(kAttributes, element, attribute);
+}
+
+std::string povrayElementHint(std::string_view parent, std::string_view child) {
+  return lookup(kElements, parent, child);
+}
+
+}  // namespace lucent
