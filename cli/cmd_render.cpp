@@ -12,7 +12,7 @@
 #include "load_scene.h"
 
 #include "scenegraph/shape_registry.h"
-#include "primitives/system_memory.h"
+#include "memory/system_memory.h"
 #include "render/image_io.h"
 #include "render/progress_bar.h"
 #include "render/renderer.h"

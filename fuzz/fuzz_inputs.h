@@ -9,7 +9,7 @@
 #pragma once
 
 #include "lang/parser.h"
-#include "primitives/mesh_io.h"
+#include "meshes/mesh_files.h"
 #include "render/camera_frame.h"
 #include "render/renderer.h"
 #include "render/texture.h"

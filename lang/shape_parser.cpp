@@ -3,7 +3,7 @@
 // one XML element, and knows no shape by name.
 #include "element_parsers.h"
 
-#include "primitives/mesh_io.h"
+#include "meshes/mesh_files.h"
 #include "scenegraph/shape_registry.h"
 
 namespace lucent {

@@ -1,6 +1,6 @@
 #include "bvh.h"
 
-#include "huge_page_allocator.h"
+#include "memory/huge_page_allocator.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>

@@ -4,7 +4,7 @@
 
 #include "aabb.h"
 #include "ray.h"
-#include "uninitialised_construct.h"
+#include "memory/uninitialised_construct.h"
 
 #include <cfloat>
 #include <cstddef>

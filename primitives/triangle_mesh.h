@@ -5,7 +5,7 @@
 //   normals    optional, one per position (normalised on load);  uvs: optional, u v each
 //   smooth     auto (default: the given normals if any, else flat) / true (area-weighted
 //              vertex normals, computed) / false (flat)
-// The loading and orienting is MeshData's business (mesh_io.h); this shape intersects it.
+// The loading and orienting is MeshData's business (meshes/mesh_files.h); this shape intersects it.
 // A closed, outward-oriented mesh (MeshData::closed) is a solid; otherwise every triangle
 // is a loose surface. Shading normals interpolate the vertex normals (normalised again);
 // (u,v) interpolate MeshData::uvs when present. Triangles of zero area are never hit.

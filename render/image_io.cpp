@@ -2,7 +2,7 @@
 
 #include "images/address_sanitizer.h"
 #include "images/image_plugin.h"
-#include "primitives/system_memory.h"
+#include "memory/system_memory.h"
 #include "scenegraph/render_limits.h"
 
 #include <fmt/core.h>

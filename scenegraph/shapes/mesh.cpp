@@ -6,7 +6,7 @@
 // A solid when closed and consistently oriented (primitives/triangle_mesh.h).
 #include "scenegraph/shape_type.h"
 
-#include "primitives/mesh_io.h"
+#include "meshes/mesh_repair.h"
 #include "primitives/triangle_mesh.h"
 
 #include <fmt/format.h>

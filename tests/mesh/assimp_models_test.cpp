@@ -4,7 +4,7 @@
 // so that a change in any of them fails this test and has to be looked at.
 #include "mesh_test_support.h"
 
-#include "primitives/mesh_io.h"
+#include "meshes/mesh_files.h"
 
 #include <fmt/format.h>
 

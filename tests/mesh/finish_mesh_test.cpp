@@ -1,7 +1,7 @@
 // finishMesh: inline meshes go through the same repair and orientation as files.
 #include "mesh_test_support.h"
 
-#include "primitives/mesh_io.h"
+#include "meshes/mesh_repair.h"
 
 using namespace lucent;
 using namespace lucent::meshtest;

@@ -4,7 +4,7 @@
 // its position (the loader renumbers and splits positions, never moves them).
 #include "mesh_test_support.h"
 
-#include "primitives/mesh_io.h"
+#include "meshes/mesh_files.h"
 
 #include <fmt/format.h>
 

@@ -2,8 +2,8 @@
 // by tests/data/meshes/make_meshes.py; the unit cube [0,1]^3 has 8 corners, 6 faces, volume 1.
 #include "mesh_test_support.h"
 
-#include "primitives/mesh_file_check.h"
-#include "primitives/mesh_io.h"
+#include "meshes/mesh_file_check.h"
+#include "meshes/mesh_files.h"
 
 using namespace lucent;
 using namespace lucent::meshtest;

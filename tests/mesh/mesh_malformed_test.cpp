@@ -2,7 +2,7 @@
 // the reason (never a crash, a hang or a huge allocation), and the exact text is pinned.
 #include "mesh_test_support.h"
 
-#include "primitives/mesh_io.h"
+#include "meshes/mesh_files.h"
 
 #include <cstring>
 

@@ -2,7 +2,7 @@
 // well-formed mesh or throws MeshError (nothing else, no crash, no hang).
 #include "mesh_test_support.h"
 
-#include "primitives/mesh_io.h"
+#include "meshes/mesh_files.h"
 
 #include <fstream>
 #include <random>

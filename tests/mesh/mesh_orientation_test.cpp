@@ -2,7 +2,7 @@
 // neighbours, closed shells turned outward, shells nested in others turned inward.
 #include "mesh_test_support.h"
 
-#include "primitives/mesh_io.h"
+#include "meshes/mesh_files.h"
 
 using namespace lucent;
 using namespace lucent::meshtest;

@@ -4,8 +4,9 @@
 // the attribute's file:line:col where the value comes from a scene.
 #include "lang/parser.h"
 #include "lang/values.h"
-#include "primitives/mesh_io.h"
-#include "primitives/system_memory.h"
+#include "meshes/mesh_files.h"
+#include "meshes/mesh_repair.h"
+#include "memory/system_memory.h"
 #include "scenegraph/transform_syntax.h"
 #include "scenegraph/world.h"
 

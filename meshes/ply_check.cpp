@@ -10,7 +10,7 @@
 // Face indices are also range-checked here, to name the face in the message. Vertex normals
 // and texture coordinates, which CGAL's soup reader drops, are kept on the way.
 #include "mesh_file_check.h"
-#include "mesh_io.h"
+#include "mesh_error.h"
 #include "mesh_text.h"
 
 #include <fmt/format.h>

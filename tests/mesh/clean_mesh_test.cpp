@@ -1,8 +1,8 @@
-// The fast path of mesh loading (primitives/clean_mesh.h): it must take exactly the clean
+// The fast path of mesh loading (meshes/clean_mesh.h): it must take exactly the clean
 // closed soups and hand everything else back to CGAL.
-#include "primitives/clean_mesh.h"
-#include "primitives/mesh_io.h"
-#include "test_meshes.h"
+#include "meshes/clean_mesh.h"
+#include "meshes/mesh_repair.h"
+#include "../primitives/test_meshes.h"
 
 #include <catch2/catch.hpp>
 

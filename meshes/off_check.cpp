@@ -11,7 +11,7 @@
 // The normals of NOFF and CNOFF vertices are kept for the caller (CGAL's reader drops them).
 #include "mesh_file_check.h"
 
-#include "mesh_io.h"
+#include "mesh_error.h"
 #include "mesh_text.h"
 
 #include <fmt/format.h>

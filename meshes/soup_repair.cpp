@@ -1,9 +1,4 @@
-// Mesh files and inline meshes through CGAL 5.5. This is the only translation unit that
-// includes CGAL (it takes about 15 s to compile), so nothing of CGAL leaks into headers.
-//
-// Files are first walked by the checks in mesh_file_check.h / obj_scan.h (CGAL's readers
-// trust the counts they find), then read by CGAL from the same bytes. Both files and inline
-// meshes then go through one pipeline (CGAL::Polygon_mesh_processing):
+// Repairing soups (CGAL::Polygon_mesh_processing), for files and inline meshes alike:
 //   repair_polygon_soup   merge coincident points, drop faces with < 3 distinct vertices
 //                         and duplicate faces
 //   orient_polygon_soup   make neighbouring faces agree (non-manifold spots are cut apart)
@@ -13,8 +8,7 @@
 //   is_closed             no border edge: the mesh encloses a volume
 //   orient_to_bound_a_volume   for closed meshes: every shell outward, a shell nested in
 //                         another inward (a hollow ball), so normals point out of the solid
-// Normals and texture coordinates (inline ones, OBJ vn/vt, PLY and OFF vertex properties:
-// CGAL's soup readers drop them all) are carried over by matching each final triangle to
+// Normals and texture coordinates are carried over by matching each final triangle to
 // the input face it came from by its corner coordinates (CGAL never moves a point); a
 // position whose corners disagree (a seam) is split into one vertex per distinct (normal,
 // uv). A face turned over by orientation keeps its corners' normals as they are: a vertex
@@ -23,22 +17,13 @@
 // triangulate_faces meets a self-intersecting polygon through CGAL's constrained Delaunay
 // triangulation, which then prints a performance hint on stderr in builds without NDEBUG;
 // the face is simply left untriangulated (and dropped below), so the hint is noise.
-#define CGAL_NO_CDT_2_WARNING
-
-#include "mesh_io.h"
+#include "mesh_repair.h"
 
 #include "clean_mesh.h"
-#include "huge_page_allocator.h"
-#include "mesh_file_check.h"
-#include "obj_scan.h"
-#include "system_memory.h"
-#include "value_limits.h"
+#include "soup.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/OFF.h>
-#include <CGAL/IO/PLY.h>
-#include <CGAL/IO/STL.h>
+#include "memory/system_memory.h"
+
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -46,11 +31,6 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
-#include <boost/container/small_vector.hpp>
-#include <boost/iostreams/device/array.hpp>
-#include <boost/iostreams/stream.hpp>
-#include <fmt/format.h>
-#include <malloc.h>
 
 #include <algorithm>
 #include <array>
@@ -59,87 +39,8 @@
 #include <tuple>
 
 namespace lucent {
-namespace {
+namespace soup {
 
-namespace PMP = CGAL::Polygon_mesh_processing;
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using SurfaceMesh = CGAL::Surface_mesh<Point>;
-
-// Containers handed to CGAL's readers. The checks have bounded every count already; these
-// refuse to grow past the limits anyway (ASCII STL has no count to check up front).
-enum class Cap { Vertices, Faces, Corners };
-
-template <class Base, Cap C>
-class Capped : public Base {
- public:
-  using T = typename Base::value_type;
-  using Base::Base;
-  void push_back(const T& value) {
-    grow(this->size() + 1);
-    Base::push_back(value);
-  }
-  template <class... Args>
-  T& emplace_back(Args&&... args) {
-    grow(this->size() + 1);
-    return Base::emplace_back(std::forward<Args>(args)...);
-  }
-  void resize(std::size_t n) {
-    grow(n);
-    Base::resize(n);
-  }
-
- private:
-  static void grow(std::size_t n) {
-    if (C == Cap::Vertices && n > kMaxMeshVertices)
-      throw MeshError(fmt::format("more than {} vertices", kMaxMeshVertices));
-    if (C == Cap::Faces && n > kMaxMeshFaces)
-      throw MeshError(fmt::format("more than {} faces", kMaxMeshFaces));
-    if (C == Cap::Corners && n > kMaxFaceVertices)
-      throw MeshError(fmt::format("a face with more than {} vertices", kMaxFaceVertices));
-  }
-};
-
-// A polygon's corners, held in place up to a quad: a million-triangle mesh would otherwise
-// make a million small heap blocks (a tenth of its load time went to allocating, faulting
-// in and freeing them). Capped, as CGAL's readers fill it.
-using Polygon = Capped<boost::container::small_vector<std::size_t, 4>, Cap::Corners>;
-
-// The polygons in huge pages when large (huge_page_allocator.h): those of a million
-// triangles fill 56 MB of fresh memory. (The points cannot be: CGAL's repair swaps them
-// with a std::vector of its own.)
-struct Soup {
-  std::vector<Point> points;
-  HugeVector<Polygon> polygons;
-};
-
-// `expected`: the counts the checks found, if they know them. Reserving them spares the
-// reader's containers their doublings (each a copy, and fresh pages to fault in).
-Soup readSoup(const std::string& bytes, MeshFormat format, MeshCounts expected) {
-  boost::iostreams::stream<boost::iostreams::array_source> in(bytes.data(), bytes.size());
-  Capped<std::vector<Point>, Cap::Vertices> points;
-  Capped<HugeVector<Polygon>, Cap::Faces> polygons;
-  points.reserve(std::min(expected.vertices, kMaxMeshVertices));
-  polygons.reserve(std::min(expected.faces, kMaxMeshFaces));
-  const auto quiet = CGAL::parameters::verbose(false);
-  bool ok = false;
-  switch (format) {
-    case MeshFormat::Obj: ok = CGAL::IO::read_OBJ(in, points, polygons, quiet); break;
-    case MeshFormat::Off: ok = CGAL::IO::read_OFF(in, points, polygons, quiet); break;
-    case MeshFormat::Ply: ok = CGAL::IO::read_PLY(in, points, polygons, quiet); break;
-    case MeshFormat::Stl: ok = CGAL::IO::read_STL(in, points, polygons, quiet); break;
-  }
-  if (!ok)
-    throw MeshError(fmt::format("CGAL's {} reader could not read the file (malformed or truncated data)",
-                                meshFormatName(format)));
-  // Moved, not copied: the polygons are most of a large mesh's memory.
-  Soup soup;
-  soup.points = std::move(static_cast<std::vector<Point>&>(points));
-  soup.polygons = std::move(static_cast<HugeVector<Polygon>&>(polygons));
-  return soup;
-}
-
-// CGAL's repair sorts points (NaN would break the order) and indexes with what it is given.
 void checkSoup(const Soup& soup, const char* vertex, const char* vertices, const char* face) {
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
     const Point& p = soup.points[i];
@@ -156,14 +57,6 @@ void checkSoup(const Soup& soup, const char* vertex, const char* vertices, const
                                     f, vertex, index, soup.points.size(), vertices));
 }
 
-// The repair pipeline (repair and orient the soup, Surface_mesh, triangulation, a second
-// soup) peaks at roughly this many bytes per input point and per polygon corner: measured
-// peak RSS of `lucent check` on an open 1000x1000 grid (10^6 vertices, 2x10^6 triangles) was
-// 1.20 GB; these give 1.27 GB. A mesh that cannot fit is refused before the pipeline
-// starts, rather than swapping for hours or being killed half way.
-constexpr std::uintmax_t kPipelineBytesPerPoint = 250;
-constexpr std::uintmax_t kPipelineBytesPerCorner = 170;
-
 void checkMemory(const Soup& soup) {
   std::uintmax_t corners = 0;
   for (const Polygon& p : soup.polygons) corners += p.size();
@@ -177,15 +70,10 @@ void checkMemory(const Soup& soup) {
                                 formatBytes(*available)));
 }
 
-// Normals and texture coordinates of the input, per corner of each input polygon.
-struct CornerAttributes {
-  std::vector<Vec3> normals;  // empty: none
-  std::vector<Vec2> uvs;      // empty: none
-  std::vector<std::size_t> polygonStart;  // corners of polygon p start at polygonStart[p]
-  std::vector<int32_t> normalOf, uvOf;    // per corner, index into normals / uvs
+namespace {
 
-  bool any() const { return !normals.empty() || !uvs.empty(); }
-};
+namespace PMP = CGAL::Polygon_mesh_processing;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
 
 // Is face f a simple polygon when seen along its Newell normal: no two corners on one
 // point, no two edges crossing or touching except neighbours at their shared corner?
@@ -490,7 +378,9 @@ bool carryAttributes(const Soup& input, const CornerAttributes& attrs, MeshData&
   return true;
 }
 
-MeshData buildMesh(Soup soup, const CornerAttributes& attrs) {
+}  // namespace
+
+MeshData repairSoup(Soup soup, const CornerAttributes& attrs) {
   std::optional<Soup> input;
   if (attrs.any()) input = soup;  // the pipeline consumes the soup; tracing needs the original
   MeshData mesh = solidOrSurface(std::move(soup));
@@ -498,119 +388,9 @@ MeshData buildMesh(Soup soup, const CornerAttributes& attrs) {
   return mesh;
 }
 
-// OBJ corners → attributes, when every corner has one (MeshData holds all or nothing).
-CornerAttributes objAttributes(const ObjScan& scan, const Soup& soup) {
-  CornerAttributes attrs;
-  if (scan.faceCount() != soup.polygons.size()) return attrs;  // CGAL read it differently
-  for (std::size_t f = 0; f < scan.faceCount(); ++f)
-    if (scan.faceStart[f + 1] - scan.faceStart[f] != soup.polygons[f].size()) return attrs;
-  const bool normals = !scan.normals.empty() && scan.everyCornerHasNormal;
-  const bool uvs = !scan.texcoords.empty() && scan.everyCornerHasTexcoord;
-  if (normals) attrs.normals = scan.normals;
-  if (uvs) attrs.uvs = scan.texcoords;
-  attrs.polygonStart.assign(scan.faceStart.begin(), scan.faceStart.end());
-  for (const ObjScan::Corner& c : scan.corners) {
-    attrs.normalOf.push_back(c.normal);
-    attrs.uvOf.push_back(c.texcoord);
-  }
-  return attrs;
-}
+}  // namespace soup
 
-// Per-vertex attributes of a PLY or OFF file → corner attributes (each corner takes its
-// vertex's). All or nothing, as for OBJ: normals only if every vertex a face uses has a
-// nonzero finite one, uvs only if every such vertex has finite ones. Vertex i of the file
-// is point i of CGAL's soup, which both readers fill in file order; a count that differs
-// (CGAL read the file otherwise) keeps nothing.
-CornerAttributes vertexAttributes(const VertexAttributes& file, const Soup& soup) {
-  CornerAttributes attrs;
-  const std::size_t n = soup.points.size();
-  bool normals = file.normals.size() == n && n > 0, uvs = file.uvs.size() == n && n > 0;
-  for (const Polygon& p : soup.polygons)
-    for (std::size_t v : p) {
-      if (normals) {
-        const double length = glm::length(file.normals[v]);
-        normals = length > 0 && std::isfinite(length);
-      }
-      if (uvs) uvs = std::isfinite(file.uvs[v].x) && std::isfinite(file.uvs[v].y);
-    }
-  if (normals) {
-    attrs.normals.reserve(n);
-    for (const Vec3& normal : file.normals) {
-      const double length = glm::length(normal);
-      attrs.normals.push_back(length > 0 && std::isfinite(length) ? normal / length : Vec3(0, 0, 1));
-    }
-  }
-  if (uvs) attrs.uvs = file.uvs;
-  if (!attrs.any()) return attrs;
-  attrs.polygonStart.reserve(soup.polygons.size());
-  for (const Polygon& p : soup.polygons) {
-    attrs.polygonStart.push_back(attrs.normalOf.size());
-    for (std::size_t v : p) {
-      attrs.normalOf.push_back(static_cast<int32_t>(v));
-      attrs.uvOf.push_back(static_cast<int32_t>(v));
-    }
-  }
-  return attrs;
-}
-
-// Runs `work`, turning the failures CGAL or the allocator can raise into MeshError.
-template <class Work>
-auto guarded(Work&& work) {
-  try {
-    return work();
-  } catch (const MeshError&) {
-    throw;
-  } catch (const std::bad_alloc&) {
-    throw MeshError("not enough memory for this mesh");
-  } catch (const CGAL::Failure_exception& e) {
-    throw MeshError(fmt::format("CGAL failed on this mesh: {}", e.message()));
-  } catch (const std::exception& e) {
-    throw MeshError(fmt::format("reading the mesh failed: {}", e.what()));
-  }
-}
-
-}  // namespace
-
-std::shared_ptr<MeshData> loadMeshFile(const std::string& path) {
-  const MeshFormat format = meshFormatOf(path);
-  return loadMeshBytes(readMeshFile(path), format);
-}
-
-std::shared_ptr<MeshData> loadMeshBytes(std::string bytes, MeshFormat format) {
-  std::optional<ObjScan> obj;
-  VertexAttributes vertex;  // PLY and OFF
-  MeshCounts counts;
-  switch (format) {
-    case MeshFormat::Obj:
-      obj = scanObj(bytes);
-      counts = {obj->vertexCount, obj->faceCount()};
-      break;
-    case MeshFormat::Ply: counts = checkPlyBytes(bytes, &vertex); break;
-    case MeshFormat::Off: checkOffBytes(bytes, &vertex); break;
-    case MeshFormat::Stl: checkStlBytes(bytes); break;
-  }
-  return guarded([&] {
-    Soup soup = readSoup(bytes, format, counts);
-    // Releases the text before the mesh is built (assigning an empty string would keep
-    // the buffer: libstdc++ copies a short string into the existing capacity).
-    std::string().swap(bytes);
-    checkSoup(soup, "vertex", "vertices", "face");
-    if (soup.polygons.empty()) throw MeshError("the file holds no faces");
-    checkMemory(soup);
-    CornerAttributes attrs;
-    if (obj) attrs = objAttributes(*obj, soup);
-    else attrs = vertexAttributes(vertex, soup);
-    obj.reset();
-    vertex = VertexAttributes();
-    auto mesh = std::make_shared<MeshData>(buildMesh(std::move(soup), attrs));
-    // The soup and the repair's working arrays are freed by now, but glibc keeps such
-    // blocks for reuse, and the BVH build that comes next takes its memory in huge pages
-    // of its own: hand them back, or a large mesh's peak counts them twice (1M triangles:
-    // 144 MB before the image is written, 103 MB with this).
-    ::malloc_trim(0);
-    return mesh;
-  });
-}
+using namespace soup;
 
 void finishMesh(MeshData& mesh) {
   const std::size_t n = mesh.positions.size();
@@ -649,7 +429,7 @@ void finishMesh(MeshData& mesh) {
   }
   checkSoup(soup, "position", "positions", "triangle");
   checkMemory(soup);
-  mesh = guarded([&] { return buildMesh(std::move(soup), attrs); });
+  mesh = guarded([&] { return repairSoup(std::move(soup), attrs); });
 }
 
 }  // namespace lucent

@@ -1,7 +1,7 @@
 #include "obj_scan.h"
 
 #include "mesh_file_check.h"
-#include "mesh_io.h"
+#include "mesh_error.h"
 #include "mesh_text.h"
 
 #include <fmt/format.h>

@@ -1,6 +1,6 @@
 #include "mesh_file_check.h"
 
-#include "mesh_io.h"
+#include "mesh_error.h"
 
 #include <fmt/format.h>
 

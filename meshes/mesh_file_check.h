@@ -7,7 +7,7 @@
 // in a few cases adjusted so that its reader takes the right path (checkStlBytes, scanObj).
 #pragma once
 
-#include "math.h"
+#include "primitives/math.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -40,7 +40,7 @@ struct MeshCounts {
 
 // Per-vertex attributes a file declares, in the file's vertex order (CGAL's readers drop
 // them). Each list is empty or holds one entry per vertex of the file, as written (not
-// normalised, possibly zero or not finite: mesh_io.cpp decides what is usable).
+// normalised, possibly zero or not finite: mesh_files.cpp decides what is usable).
 struct VertexAttributes {
   std::vector<Vec3> normals;
   std::vector<Vec2> uvs;

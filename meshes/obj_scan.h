@@ -8,7 +8,7 @@
 // of CGAL's soup.
 #pragma once
 
-#include "math.h"
+#include "primitives/math.h"
 
 #include <cstdint>
 #include <string>

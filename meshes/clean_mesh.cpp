@@ -1,6 +1,6 @@
 #include "clean_mesh.h"
 
-#include "huge_page_allocator.h"
+#include "memory/huge_page_allocator.h"
 
 #include <algorithm>
 #include <cmath>
