@@ -5,9 +5,10 @@
 // GDAL, OpenVDB, DCMTK...): about 0.4 s of CPU time and 130 MB of resident memory before
 // the first line of main. `lucent --help`, `check`, a scene with an error or an export
 // need none of it, and a render loads it only once its scene is freed, so the two are
-// never in memory together. Every image is still read, written, compared and
-// sampled by OpenImageIO: the plugin (images/oiio/, the file lucent-oiio.so) is the only
-// code that includes its headers.
+// never in memory together. A render to PNG or PPM, the common case, does not load it at
+// all: those files are written by the built-in part (builtin/builtin_images.h). Every
+// other image is read, written, compared and sampled by OpenImageIO: the plugin
+// (images/oiio/, the file lucent-oiio.so) is the only code that includes its headers.
 //
 // The interface is a C++ abstract class: the plugin is built by the same compiler from the
 // same tree, so C++ types and exceptions cross the boundary safely. Pixels cross it as

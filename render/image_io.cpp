@@ -1,6 +1,7 @@
 #include "image_io.h"
 
 #include "images/address_sanitizer.h"
+#include "images/builtin/builtin_images.h"
 #include "images/image_plugin.h"
 #include "memory/system_memory.h"
 #include "scenegraph/render_limits.h"
@@ -180,7 +181,7 @@ void checkImageOutputPath(const std::string& path) {
         fmt::format("cannot write '{}': it exists and is not a regular file", path));
 }
 
-void writeImageFile(const Image& image, const std::string& path) {
+void writeImageFile(const Image& image, const std::string& path, ImageWriter writer) {
   checkImageOutputPath(path);
   const ImageFormat format = *imageFormatForPath(path);
   fs::path target(path);
@@ -196,7 +197,10 @@ void writeImageFile(const Image& image, const std::string& path) {
   std::vector<uint16_t> words;
   std::vector<float> floats;
   ImageToWrite pixels = encodePixels(image, format, bytes, words, floats);
-  if (WriteFailure failed = imagePlugin().writeFile(temp.path.string(), pixels))
+  // PNG and PPM, the common outputs, need not load OpenImageIO's 260 libraries.
+  const bool builtin = writer == ImageWriter::Automatic && builtinWrites(pixels);
+  if (WriteFailure failed = builtin ? builtinWriteFile(temp.path.string(), pixels)
+                                    : imagePlugin().writeFile(temp.path.string(), pixels))
     throw ImageIOError(fmt::format("cannot write '{}': {}: {}", path,
                                    failed.step == WriteFailure::Create
                                        ? "cannot create a temporary file there"
@@ -206,12 +210,16 @@ void writeImageFile(const Image& image, const std::string& path) {
 
   // Some writers do not report every failed write (a full disk, a file size limit):
   // reading the whole file back is the only proof that it is complete.
-  // The encoded pixels are done with: freed first, as the check holds a decoded copy.
-  std::vector<uint8_t>().swap(bytes);
-  std::vector<uint16_t>().swap(words);
-  std::vector<float>().swap(floats);
+  // The built-in formats are read back by the built-in part, a row at a time.
+  // Otherwise the encoded pixels are done with: freed first, as the check holds a decoded
+  // copy.
   bool complete = false;
-  {
+  if (builtin) {
+    complete = builtinReadsBackComplete(temp.path.string(), pixels);
+  } else {
+    std::vector<uint8_t>().swap(bytes);
+    std::vector<uint16_t>().swap(words);
+    std::vector<float>().swap(floats);
 #if defined(LUCENT_ASAN)
     // OpenImageIO 2.4's PNG reader leaks one string on a truncated file: its read callback
     // builds the error message, then libpng longjmps past the string's destructor

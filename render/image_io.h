@@ -1,4 +1,6 @@
-// Image files through OpenImageIO, the format chosen by the file's extension.
+// Image files, the format chosen by the file's extension: PNG and PPM are written by the
+// built-in part of the image layer (images/builtin/), everything else is read and written
+// through OpenImageIO (the plugin of images/image_plugin.h, loaded on first use).
 #pragma once
 
 #include "image.h"
@@ -36,7 +38,13 @@ void checkImageOutputPath(const std::string& path);
 // checked, and then renamed over `path` (an atomic replacement on POSIX file systems).
 // On any failure the temporary file is removed, an existing `path` is untouched, and
 // ImageIOError says what went wrong.
-void writeImageFile(const Image& image, const std::string& path);
+//
+// `writer`: Automatic writes PNG and PPM with the built-in writers (and reads them back
+// with the same), every other format through the plugin; Plugin sends every format through
+// OpenImageIO, as before the built-in writers existed (the tests compare the two).
+enum class ImageWriter { Automatic, Plugin };
+void writeImageFile(const Image& image, const std::string& path,
+                    ImageWriter writer = ImageWriter::Automatic);
 
 // How readImageFile() returns integer-encoded pixels.
 enum class PixelDecoding {

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # OpenImageIO lives in a plugin (lucent-oiio.so, images/image_plugin.h) loaded only when an
-# image is read or written. With LUCENT_IMAGE_PLUGIN naming a file that is missing or not
-# the plugin: commands that touch no image still work, and those that do fail with a
-# clear message, status 3, and the old output image untouched.
+# image is read, or written in a format other than PNG and PPM (those have built-in
+# writers). With LUCENT_IMAGE_PLUGIN naming a file that is missing or not the plugin:
+# commands that need no OpenImageIO still work, and those that do fail with a clear
+# message, status 3, and the old output image untouched.
 # Usage: bash image_plugin.sh <path-to-lucent> <source-dir>
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
@@ -23,17 +24,24 @@ export LUCENT_IMAGE_PLUGIN="$tmp/missing.so"
 "$lucent" export-pov "$tmp/scene.xml" -o "$tmp/scene.pov" >/dev/null 2>"$tmp/stderr" ||
   fail "export-pov needs the image library: $(cat "$tmp/stderr")"
 grep -q "sphere" "$tmp/scene.pov" 2>/dev/null || fail "export-pov wrote no sphere"
+# PNG and PPM are written by the built-in part.
+"$lucent" render "$tmp/scene.xml" -o "$tmp/plain.png" -q 2>"$tmp/stderr" ||
+  fail "render to PNG needs the image library: $(cat "$tmp/stderr")"
+[ "$(head -c 4 "$tmp/plain.png" | tail -c 3)" = "PNG" ] || fail "render without the plugin wrote no PNG"
+"$lucent" render "$tmp/scene.xml" -o "$tmp/plain.ppm" -q 2>"$tmp/stderr" ||
+  fail "render to PPM needs the image library: $(cat "$tmp/stderr")"
+[ "$(head -c 2 "$tmp/plain.ppm")" = "P6" ] || fail "render without the plugin wrote no PPM"
 
-# render: it must write an image, so it fails, and says what was tried.
+# render to EXR: OpenImageIO must write it, so it fails, and says what was tried.
 check_render_fails() {  # <label> <expected text in stderr>
-  echo "old image" > "$tmp/out.png"
-  "$lucent" render "$tmp/scene.xml" -o "$tmp/out.png" -q >/dev/null 2>"$tmp/stderr"
+  echo "old image" > "$tmp/out.exr"
+  "$lucent" render "$tmp/scene.xml" -o "$tmp/out.exr" -q >/dev/null 2>"$tmp/stderr"
   local status=$?
   [ "$status" -eq 3 ] || fail "$1: exit status $status, expected 3"
   grep -qF "lucent: error: cannot load the image library (lucent-oiio.so, OpenImageIO)" "$tmp/stderr" ||
     fail "$1: message: $(cat "$tmp/stderr")"
   grep -qF -- "$2" "$tmp/stderr" || fail "$1: stderr lacks '$2': $(cat "$tmp/stderr")"
-  [ "$(cat "$tmp/out.png")" = "old image" ] || fail "$1: the old image was changed"
+  [ "$(cat "$tmp/out.exr")" = "old image" ] || fail "$1: the old image was changed"
   [ -z "$(ls -A "$tmp" | grep lucent-)" ] || fail "$1: a temporary file was left: $(ls -A "$tmp")"
 }
 check_render_fails "missing plugin" "$tmp/missing.so: no such file"
@@ -55,8 +63,8 @@ grep -qF "cannot load the image library" "$tmp/stderr" || fail "texture: message
 
 unset LUCENT_IMAGE_PLUGIN
 # With the real plugin (found beside lucent or where the build wrote it) all works.
-"$lucent" render "$tmp/scene.xml" -o "$tmp/out.png" -q 2>"$tmp/stderr" || fail "render with the plugin: $(cat "$tmp/stderr")"
-[ "$(head -c 4 "$tmp/out.png" | tail -c 3)" = "PNG" ] || fail "render with the plugin wrote no PNG"
+"$lucent" render "$tmp/scene.xml" -o "$tmp/out.exr" -q 2>"$tmp/stderr" || fail "render with the plugin: $(cat "$tmp/stderr")"
+[ "$(head -c 4 "$tmp/out.exr" | od -An -tx1 | tr -d ' ')" = "762f3101" ] || fail "render with the plugin wrote no EXR"
 
 [ "$failures" -eq 0 ] && echo "image_plugin: all checks passed"
 exit $((failures > 0))

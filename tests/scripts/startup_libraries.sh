@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Start-up without OpenImageIO (images/image_plugin.h): `--version`, `check` and a render to
+# PNG or PPM load no part of it, while a render to EXR or of a scene with an image
+# texture does. Proved from the dynamic linker's own record of every object it loads
+# (LD_DEBUG=files), which needs no code in lucent.
+# Usage: bash startup_libraries.sh <path-to-lucent> <source-dir>
+set -u
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
+
+cat > "$tmp/scene.xml" <<'XML'
+<scene version="1">
+  <render width="64" height="48"/>
+  <camera position="0 0 5" look-at="0 0 0"/>
+  <light position="3 3 3"/>
+  <sphere radius="1"/>
+</scene>
+XML
+
+# loaded LABEL -- COMMAND...: runs the command with the linker's trace; prints the objects
+# it loaded (one per line) into $tmp/loaded, fails the test if the command fails.
+loaded() {
+  local label=$1
+  shift 2
+  rm -f "$tmp"/ld.*
+  LD_DEBUG=files LD_DEBUG_OUTPUT="$tmp/ld" "$@" >/dev/null 2>"$tmp/stderr" ||
+    fail "$label: exit status $?: $(cat "$tmp/stderr")"
+  cat "$tmp"/ld.* 2>/dev/null | sed -n 's/.*file=\([^ ]*\).*/\1/p' | sort -u > "$tmp/loaded"
+  # The trace itself works: the C library is always in it.
+  grep -q "libc\.so" "$tmp/loaded" || fail "$label: no linker trace (LD_DEBUG ignored?)"
+}
+
+without_oiio() {  # LABEL -- COMMAND...
+  loaded "$@"
+  if grep -E "OpenImageIO|lucent-oiio" "$tmp/loaded" >"$tmp/found"; then
+    fail "$1 loads OpenImageIO: $(tr '\n' ' ' < "$tmp/found")"
+  fi
+}
+
+with_oiio() {  # LABEL -- COMMAND...
+  loaded "$@"
+  grep -q "lucent-oiio\.so" "$tmp/loaded" || fail "$1 does not load the plugin"
+  grep -q "libOpenImageIO" "$tmp/loaded" || fail "$1 does not load OpenImageIO"
+}
+
+without_oiio "--version" -- "$lucent" --version
+without_oiio "check" -- "$lucent" check "$tmp/scene.xml"
+without_oiio "render to PNG" -- "$lucent" render "$tmp/scene.xml" -o "$tmp/out.png" -q
+[ "$(head -c 4 "$tmp/out.png" | tail -c 3)" = "PNG" ] || fail "render wrote no PNG"
+without_oiio "render to PPM" -- "$lucent" render "$tmp/scene.xml" -o "$tmp/out.ppm" -q
+[ "$(head -c 2 "$tmp/out.ppm")" = "P6" ] || fail "render wrote no PPM"
+
+# What needs OpenImageIO still gets it.
+with_oiio "render to EXR" -- "$lucent" render "$tmp/scene.xml" -o "$tmp/out.exr" -q
+[ -s "$tmp/out.exr" ] || fail "render wrote no EXR"
+with_oiio "a scene with an image texture" -- \
+  "$lucent" render "$src/examples/gallery/image-texture.xml" -o "$tmp/texture.png" -q -w 32 -h 24
+[ "$(head -c 4 "$tmp/texture.png" | tail -c 3)" = "PNG" ] || fail "the texture scene wrote no PNG"
+
+[ "$failures" -eq 0 ] && echo "startup_libraries: all checks passed"
+exit $((failures > 0))
