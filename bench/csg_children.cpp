@@ -2,7 +2,7 @@
 // same fixed set of camera rays traced through the node twice in one run, once searching
 // the children through the node's BVH (what scenes use) and once testing every child
 // (CsgSearch::EveryChild, which exists for this measurement only). Both must find the
-// same hits; the program prints both times and their ratio (issue 6 asks for >= 10x).
+// same hits; the program prints both times and their ratio (the aim is at least 10x).
 //
 //   csg_children [--spheres N] [--width W] [--height H] [--repeat R]
 #include "bench_util.h"

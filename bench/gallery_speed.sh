@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Lucent against POV-Ray 3.7 over the gallery (docs/performance.md, "The gallery against
-# POV-Ray"): every examples/gallery/*.xml rendered by `lucent render` and by `povray` on
+# Lucent against POV-Ray 3.7 over the gallery (docs/performance-history.md, "The gallery
+# against POV-Ray"): every examples/gallery/*.xml rendered by `lucent render` and by `povray` on
 # its export (`lucent export-pov`) at matched settings: the scene's size and depth, the same
 # samples per pixel (1 by default: both trace the pixel centres, the same rays), the same
 # thread count, the same kind of file (an 8-bit sRGB PNG, what users write: POV-Ray's +FN
@@ -10,13 +10,14 @@
 #   bash bench/gallery_speed.sh [--lucent PATH] [--threads N] [--samples N] [--reps N]
 #                               [--no-doc | --doc-only] [--built-from TEXT] [SCENE.xml...]
 # (--doc-only puts the last measured table, docs/performance-data/gallery-speed.md, into
-# docs/performance.md without measuring.)
+# docs/performance-history.md without measuring.)
 #
 # Three times per renderer: the whole process as a user waits for it (start-up, parsing,
 # building, rendering, writing), its CPU time (user + system, all threads), and the
 # renderer's own time for the image alone (Lucent's --stats "time", POV-Ray's "Trace Time").
 # Writes docs/performance-data/gallery-speed.tsv and docs/performance-data/gallery-speed.md
-# (the table), and puts the table into its section of docs/performance.md (unless --no-doc).
+# (the table, which docs/performance.md links to), and puts the table into its section of
+# docs/performance-history.md, beside the reading of the run (unless --no-doc).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -146,11 +147,11 @@ loads=$(tail -n +2 "$tsv" | cut -f13 | sort -g | awk 'NR == 1 { lo = $1 } { hi =
 } > "$md"
 fi
 
-# docs/performance.md: the table goes between the markers of the section "The gallery
+# docs/performance-history.md: the table goes between the markers of the section "The gallery
 # against POV-Ray" (the section with its markers is added before "## Raw outputs" the
 # first time); the rest of the page, the reading below the table included, is left alone.
 if [ $doc -eq 1 ]; then
-  page=${LUCENT_PERF_PAGE:-docs/performance.md}
+  page=${LUCENT_PERF_PAGE:-docs/performance-history.md}
   begin='<!-- gallery-speed: begin (bench/gallery_speed.sh writes what is between these markers) -->'
   end='<!-- gallery-speed: end -->'
   if ! grep -qF "$begin" "$page"; then

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Measures Lucent's performance on this machine: installs the benchmark dependencies
 # (Embree 3, gnuplot), builds the benchmarks (Release) in build-bench/, runs them and
-# writes the plots (docs/images/perf-*.png), the raw figures (docs/performance-data/*.tsv)
+# writes the plots (docs/images/perf-*.png), the raw figures (docs/performance-data/*.tsv),
+# every table of the run with the programs' raw outputs (docs/performance-data/latest-run.md)
 # and the section of docs/performance.md between its two "bench/run.sh" markers (the
-# latest full run: targets, tables, raw outputs). The rest of that page is written by
-# hand (dated measurements with the change each measured) and is left as it is.
+# targets with the latest figures, one table). The rest of that page is written by hand
+# and is left as it is; dated measurements go to docs/performance-history.md.
 #
 #   bash bench/run.sh           # the full run (about ten minutes on two cores)
 #   bash bench/run.sh --quick   # small sizes: checks the pipeline; figures not meaningful,
@@ -138,17 +139,14 @@ met() { awk -v x="$1" -v op="$2" -v y="$3" 'BEGIN { if (x == "" || x == "n/a") p
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
 {
 cat <<EOF
-## Latest full run of bench/run.sh
+## Latest figures
 
-Written by \`bash bench/run.sh\` (this section only; the sections around it are dated
-measurements kept with the change each measured). Measured on ${cpu}, $(nproc) hardware
-threads, $(date -u +"%Y-%m-%d %H:%M") UTC, commit ${commit}; each program prints the load
-average at its start (raw outputs at the end of this section). Every time is the best of
-three runs (${povRepeat} for POV-Ray; for Lucent against Embree, five passes over the rays
-and three builds, Lucent's and Embree's in turn, so that a slow spell of the machine
-falls on both). A high load lowers every figure, Lucent's and Embree's alike, which is
-why the comparisons are ratios measured in the same run on the same rays; the
-one-thread figures of \`bvh_scaling\` are CPU time.
+Written by \`bash bench/run.sh\` (this section only). Measured on ${cpu}, $(nproc) hardware
+threads, $(date -u +"%Y-%m-%d %H:%M") UTC, commit ${commit}. Every time is the best of three
+runs (${povRepeat} for POV-Ray); comparisons with Embree and POV-Ray are ratios measured in
+the same run on the same rays, and the one-thread figures of \`bvh_scaling\` are CPU time.
+Every table of the run, with the load average at each program's start:
+[performance-data/latest-run.md](performance-data/latest-run.md).
 
 | target | measured | |
 |---|---|---|
@@ -160,26 +158,42 @@ one-thread figures of \`bvh_scaling\` are CPU time.
 | peak memory rendering a 1M-triangle scene: under 150 MB | ${peak} MB (the process alone: ${peakBase} MB) | $(met "$peak" "<" 150) |
 | whole process on the 1M-triangle scene, one thread: at least 4× faster than POV-Ray | ${povMesh:-n/a}× wall (${povMeshCpu:-n/a}× CPU time) | $(met "${povMesh:-n/a}" ">=" 4) |
 | whole process on a thousand spheres, one thread: at least 2× faster than POV-Ray | ${povSpheres:-n/a}× wall (${povSpheresCpu:-n/a}× CPU time) | $(met "${povSpheres:-n/a}" ">=" 2) |
+EOF
+} > "$work/section.md"
 
-### Lucent and Embree 3 (${tris} triangles, ${size}×${size} camera rays)
+{
+cat <<EOF
+# Latest full run of bench/run.sh
+
+Written by \`bash bench/run.sh\` (the whole file); its targets are summed up in
+[docs/performance.md](../performance.md). Measured on ${cpu}, $(nproc) hardware threads,
+$(date -u +"%Y-%m-%d %H:%M") UTC, commit ${commit}; each program prints the load average at
+its start (raw outputs at the end). Every time is the best of three runs (${povRepeat} for
+POV-Ray; for Lucent against Embree, five passes over the rays and three builds, Lucent's
+and Embree's in turn, so that a slow spell of the machine falls on both). A high load
+lowers every figure, Lucent's and Embree's alike, which is why the comparisons are ratios
+measured in the same run on the same rays; the one-thread figures of \`bvh_scaling\` are
+CPU time.
+
+## Lucent and Embree 3 (${tris} triangles, ${size}×${size} camera rays)
 
 $(tables "$work/embree.md")
 
 $(grep -E '^agreement' "$work/embree.md")
 
-### Time per ray as the primitive count grows (${scaleSize}×${scaleSize} rays, one thread)
+## Time per ray as the primitive count grows (${scaleSize}×${scaleSize} rays, one thread)
 
 $(tables "$work/scaling.md")
 
-### Thread scaling (${tris} triangles)
+## Thread scaling (${tris} triangles)
 
 $(tables "$work/threads.md")
 
-### Peak memory of a whole render (${peakSize}×${peakSize})
+## Peak memory of a whole render (${peakSize}×${peakSize})
 
 $(tables "$work/peak.md")
 
-### Whole process against POV-Ray (one thread, best of ${povRepeat})
+## Whole process against POV-Ray (one thread, best of ${povRepeat})
 
 \`\`\`sh
 build-bench/bench/vs_povray build-bench/cli/lucent /tmp/work --triangles ${tris} --size ${peakSize} --repeat ${povRepeat}
@@ -187,15 +201,15 @@ build-bench/bench/vs_povray build-bench/cli/lucent /tmp/work --triangles ${tris}
 
 $(tables "$work/povray.md")
 
-### Raw outputs
+## Raw outputs
 
 \`\`\`
 $(grep -hE '^#' "$work/embree.md" "$work/scaling.md" "$work/threads.md" "$work/peak.md" "$work/povray.md")
 \`\`\`
 
-The tab-separated figures behind the plots are in \`docs/performance-data/\`.
+The tab-separated figures behind the plots are in this folder (\`*.tsv\`).
 EOF
-} > "$work/section.md"
+} > "$data/latest-run.md"
 
 # The page with the lines between the markers replaced by the new section.
 awk -v section="$work/section.md" -v begin="$begin" -v end="$end" '
@@ -206,5 +220,5 @@ cp "$work/page.md" "$page"
 if [ $quick -eq 1 ]; then
   echo "bench/run.sh: --quick: wrote $out (performance.md, images/, performance-data/); docs/ is unchanged" >&2
 else
-  echo "bench/run.sh: wrote the marked section of $page, $img/perf-*.png, $data/*.tsv" >&2
+  echo "bench/run.sh: wrote the marked section of $page, $img/perf-*.png, $data/*.tsv, $data/latest-run.md" >&2
 fi

@@ -66,7 +66,7 @@ std::string logTail(const fs::path& log, size_t lines) {
 }
 
 // A hand-written scene without `#version 3.7` is read with the 3.62 rules, which change
-// transparency and gamma (shared/povray-notes.md section 0).
+// transparency and gamma.
 std::vector<std::string> checkHandWritten(const std::string& path, const std::string& text,
                                           const PovAssumedGamma& gamma) {
   std::vector<std::string> notes;

@@ -1,40 +1,85 @@
 // What each fuzz target does with one input, shared by the libFuzzer entry points
-// (fuzz/*_fuzz.cpp, built with -DLUCENT_FUZZ=ON) and the regression test that replays every
-// kept crash input through the normal build (tests/fuzz/fuzz_regression_test.cpp).
+// (fuzz/*_fuzz.cpp, built with -DLUCENT_FUZZ=ON) and the regression test that replays the
+// kept inputs through the normal build (tests/fuzz/fuzz_regression_test.cpp).
 //
-// A finding is anything that is not an orderly refusal: a sanitizer report, a signal, an
-// abort, an uncaught exception, or (libFuzzer's -timeout / -rss_limit_mb) a hang or runaway
-// memory. Orderly refusals are the located diagnostics of the parser and the exceptions the
-// command line turns into exit status 2 or 3 (MeshError, LocatedError).
+// Each function returns the outcome: accepted, refused in an orderly way, or a finding (a
+// broken promise, with what broke). The entry points abort on a finding so that libFuzzer
+// keeps the input; the regression test checks the outcome. Sanitizer reports, signals, hangs
+// and runaway memory are findings too, caught by the sanitizers and libFuzzer themselves.
+// Orderly refusals are the located diagnostics of the parser and the exceptions the command
+// line turns into exit status 2 or 3 (see refusedInOrder).
 #pragma once
 
 #include "lang/parser.h"
 #include "meshes/mesh_files.h"
+#include "primitives/transform.h"
 #include "render/camera_frame.h"
+#include "render/image_io.h"
 #include "render/renderer.h"
 #include "render/texture.h"
+#include "scenegraph/located_error.h"
 #include "scenegraph/transform_syntax.h"
 #include "scenegraph/world.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <exception>
 #include <string>
 #include <string_view>
 
 namespace lucent::fuzz {
 
+struct Outcome {
+  bool accepted = false;  // parsed (and built), or read
+  std::string finding;    // empty unless a promise was broken
+};
+
+inline Outcome accepted() { return {true, {}}; }
+inline Outcome refused() { return {false, {}}; }
+inline Outcome finding(std::string what) { return {false, std::move(what)}; }
+
+// What may escape from building the world and tracing a pixel without being a bug: the
+// errors `lucent render` reports as an invalid scene (exit status 2) or a failure to read a
+// file (3). World reports a singular or overflowing nested transform as a std::runtime_error
+// whose message starts with the node's location, "FILE:LINE:COL: error: ", so any exception
+// whose message is located counts as such a report. A located error type for the errors
+// found after parsing, once there is one, belongs in the list of types below.
+inline bool locatedMessage(std::string_view m) {
+  size_t i = m.find(": error: ");
+  if (i == std::string_view::npos) return false;
+  for (int field = 0; field < 2; ++field) {  // ":COL", then ":LINE", right before it
+    const size_t end = i;
+    while (i > 0 && m[i - 1] >= '0' && m[i - 1] <= '9') --i;
+    if (i == end || i == 0 || m[i - 1] != ':') return false;
+    --i;
+  }
+  return i > 0;  // and a file name before them
+}
+
+inline bool refusedInOrder(const std::exception& e) {
+  if (dynamic_cast<const LocatedError*>(&e) || dynamic_cast<const ImageIOError*>(&e) ||
+      dynamic_cast<const MeshError*>(&e))
+    return true;
+  return locatedMessage(e.what());
+}
+
 // The scene is parsed as if it were a file in examples/, so its includes and meshes can
 // reach real files (examples/parts, examples/meshes) and nothing outside that folder.
-inline void sceneParser(const uint8_t* data, size_t size, const std::string& virtualPath) {
+inline Outcome sceneParser(const uint8_t* data, size_t size, const std::string& virtualPath) {
   std::string xml(reinterpret_cast<const char*>(data), size);
   ParseResult parsed = parseSceneString(xml, virtualPath);
   // The parser turns an escaped exception into an "internal error" diagnostic rather than
   // crash; for the fuzzer that is still a bug to find. Only a message that starts so: a
   // scene's own text can contain the words (tests/fuzz/crashes/scene_parser/).
   for (const Diagnostic& d : parsed.diagnostics.all())
-    if (d.message.rfind("internal error while reading the scene", 0) == 0) __builtin_trap();
-  if (!parsed.scene) return;
+    if (d.message.rfind("internal error while reading the scene", 0) == 0) return finding(d.str());
+  if (!parsed.scene) {
+    if (!parsed.diagnostics.hasErrors()) return finding("no scene and no error");
+    return refused();
+  }
   Scene& scene = *parsed.scene;
   // A valid scene is also built and one pixel traced, as `lucent render` would; the fuzzer
   // hunts crashes, not settings that are merely slow (a million samples, a thousand
@@ -52,22 +97,45 @@ inline void sceneParser(const uint8_t* data, size_t size, const std::string& vir
       RayStats stats;
       renderer.renderPixel(scene.render.width / 2, scene.render.height / 2, stats);
     }
-  } catch (const LocatedError&) {  // a camera, a texture, transforms beyond range
-  } catch (const MeshError&) {
+  } catch (const std::exception& e) {
+    if (refusedInOrder(e)) return refused();
+    return finding(std::string("an exception escaped that is not a located refusal: ") + e.what());
   }
+  return accepted();
 }
 
-inline void transformSyntax(const uint8_t* data, size_t size) {
+// The result keeps its promises: an accepted transform is finite and invertible (the scene
+// builds an Instance from it), a refused one says why at an offset inside the text.
+inline Outcome transformSyntax(const uint8_t* data, size_t size) {
   std::string_view text(reinterpret_cast<const char*>(data), size);
   TransformSyntaxResult r = parseTransformSyntax(text);
-  if (!r.ok && r.errorOffset > text.size()) __builtin_trap();  // an offset outside the text
+  if (!r.ok) {
+    if (r.error.empty()) return finding("refused without a message");
+    if (r.errorOffset > text.size()) return finding("error offset outside the text: " + r.error);
+    return refused();
+  }
+  if (!r.error.empty()) return finding("accepted with a message: " + r.error);
+  for (int c = 0; c < 4; ++c)
+    for (int row = 0; row < 4; ++row)
+      if (!std::isfinite(r.matrix[c][row])) return finding("accepted a matrix that is not finite");
+  if (!Transform::fromMatrix(r.matrix)) return finding("accepted a matrix that cannot be inverted");
+  return accepted();
 }
 
-inline void meshReader(const uint8_t* data, size_t size, MeshFormat format) {
+inline Outcome meshReader(const uint8_t* data, size_t size, MeshFormat format) {
   try {
     loadMeshBytes(std::string(reinterpret_cast<const char*>(data), size), format);
   } catch (const MeshError&) {
+    return refused();
   }
+  return accepted();
+}
+
+// For the libFuzzer entry points: a finding stops the run, and libFuzzer keeps the input.
+inline void abortOnFinding(const Outcome& outcome) {
+  if (outcome.finding.empty()) return;
+  std::fprintf(stderr, "fuzz finding: %s\n", outcome.finding.c_str());
+  __builtin_trap();
 }
 
 }  // namespace lucent::fuzz

@@ -2,6 +2,6 @@
 #include "fuzz/fuzz_inputs.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  lucent::fuzz::meshReader(data, size, lucent::MeshFormat::Obj);
+  lucent::fuzz::abortOnFinding(lucent::fuzz::meshReader(data, size, lucent::MeshFormat::Obj));
   return 0;
 }

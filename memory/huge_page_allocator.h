@@ -13,9 +13,9 @@ namespace lucent {
 
 // Large blocks are whole 2 MB pages with madvise(MADV_HUGEPAGE). In this VM writing memory
 // in 4 KB pages was several times slower than in 2 MB pages even once the pages were
-// present (a 32 MB memset: 30 to 60 ms against 3 to 8 ms), and each 4 KB page costs a
-// fault on first touch. Loading a mesh file and building its BVH write several hundred MB
-// of fresh memory per million triangles, mostly in arrays freed before the render.
+// present (docs/performance-history.md), and each 4 KB page costs a fault on first touch.
+// Loading a mesh file and building its BVH write several hundred MB of fresh memory per
+// million triangles, mostly in arrays freed before the render.
 // Smaller blocks take ordinary memory: a huge page would make a few elements cost 2 MB.
 // Leaves new elements uninitialised on resize (std::vector<T, HugePageAllocator<T>>(n)
 // holds garbage for a trivial T): every element must be written before it is read; the

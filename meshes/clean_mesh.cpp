@@ -70,8 +70,8 @@ std::optional<MeshData> cleanClosedMesh(const std::vector<Vec3>& points,
   canon = HugeVector<uint32_t>();
 
   // Closed, consistently oriented and manifold: checked on the half-edges leaving each
-  // vertex. They are grouped by that vertex with a counting sort (linear, where sorting
-  // three million keys took a tenth of a mesh file's load), then sorted within each group
+  // vertex. They are grouped by that vertex with a counting sort (linear, where a full
+  // sort was a noticeable part of a mesh file's load), then sorted within each group
   // by the vertex they lead to.
   struct OutEdge {
     uint32_t to;

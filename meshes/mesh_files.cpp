@@ -141,8 +141,8 @@ std::shared_ptr<MeshData> loadMeshBytes(std::string bytes, MeshFormat format) {
     auto mesh = std::make_shared<MeshData>(repairSoup(std::move(soup), attrs));
     // The soup and the repair's working arrays are freed by now, but glibc keeps such
     // blocks for reuse, and the BVH build that comes next takes its memory in huge pages
-    // of its own: hand them back, or a large mesh's peak counts them twice (1M triangles:
-    // 144 MB before the image is written, 103 MB with this).
+    // of its own: hand them back, or a large mesh's peak counts them twice
+    // (docs/performance-history.md, "Mesh loading").
     ::malloc_trim(0);
     return mesh;
   });

@@ -58,13 +58,13 @@ class Capped : public Base {
 };
 
 // A polygon's corners, held in place up to a quad: a million-triangle mesh would otherwise
-// make a million small heap blocks (a tenth of its load time went to allocating, faulting
-// in and freeing them). Capped, as CGAL's readers fill it.
+// make a million small heap blocks, a noticeable part of its load time
+// (docs/performance-history.md). Capped, as CGAL's readers fill it.
 using Polygon = Capped<boost::container::small_vector<std::size_t, 4>, Cap::Corners>;
 
-// The polygons in huge pages when large (huge_page_allocator.h): those of a million
-// triangles fill 56 MB of fresh memory. (The points cannot be: CGAL's repair swaps them
-// with a std::vector of its own.)
+// The polygons in huge pages when large (huge_page_allocator.h): those of a large mesh
+// are tens of MB of fresh memory. (The points cannot be: CGAL's repair swaps them with a
+// std::vector of its own.)
 struct Soup {
   std::vector<Point> points;
   HugeVector<Polygon> polygons;
@@ -85,10 +85,9 @@ struct CornerAttributes {
 void checkSoup(const Soup& soup, const char* vertex, const char* vertices, const char* face);
 
 // The repair pipeline (repair and orient the soup, Surface_mesh, triangulation, a second
-// soup) peaks at roughly this many bytes per input point and per polygon corner: measured
-// peak RSS of `lucent check` on an open 1000x1000 grid (10^6 vertices, 2x10^6 triangles) was
-// 1.20 GB; these give 1.27 GB. A mesh that cannot fit is refused before the pipeline
-// starts, rather than swapping for hours or being killed half way.
+// soup) peaks at roughly this many bytes per input point and per polygon corner, a little
+// above the measured peak (docs/performance-history.md). A mesh that cannot fit is refused
+// before the pipeline starts, rather than swapping for hours or being killed half way.
 inline constexpr std::uintmax_t kPipelineBytesPerPoint = 250;
 inline constexpr std::uintmax_t kPipelineBytesPerCorner = 170;
 

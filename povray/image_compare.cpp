@@ -123,7 +123,7 @@ RgbImage srgbEncoded(const RgbImage& linear) {
   RgbImage out = linear;
   for (float& v : out.rgb) {
     float x = std::clamp(v, 0.0f, 1.0f);
-    // IEC 61966-2-1, in float as POV-Ray computes it (shared/povray-notes.md section 5).
+    // IEC 61966-2-1, in float as POV-Ray computes it (its 8-bit files: 0.5 -> 188).
     v = x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
   }
   return out;

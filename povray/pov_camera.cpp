@@ -100,7 +100,7 @@ void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& 
         issues.warning(camera.loc, "fisheye camera: POV-Ray leaves the pixels outside the "
                                    "image circle black; Lucent gives them the background");
       // POV-Ray: u, v in [-1, 1] across the image, scaled by |right| and |up|; the image
-      // circle is r = 1 (povray-notes.md section 4). The renderer's circle spans the image
+      // circle is r = 1 (POV-Ray 3.7's fisheye camera). The renderer's circle spans the image
       // along fov-axis (render/fisheye.h): the width, the height, or the diagonal.
       std::string right, up;
       switch (camera.fovAxis) {

@@ -26,7 +26,7 @@ double horizontalFovDegrees(const Camera& camera, int width, int height);
 
 // Writes `camera { ... }`. POV-Ray is left-handed; our world is right-handed with +y up, so
 // `right -x*W/H` (negative handedness) makes look_at compute right = forward × sky, the
-// renderer's frame, with every world coordinate unchanged (povray-notes.md section 4).
+// renderer's frame, with every world coordinate unchanged.
 void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& out,
                  PovIssues& issues);
 

@@ -1,8 +1,8 @@
 // Writes a Lucent scene as an equivalent POV-Ray 3.7 scene file (`lucent export-pov`).
 //
 // What POV-Ray cannot express is an error naming the element; what it expresses only
-// approximately is a warning. The mapping follows shared/povray-notes.md (POV-Ray 3.7
-// semantics checked by rendering):
+// approximately is a warning. The mapping follows POV-Ray 3.7's documented semantics,
+// each checked by rendering:
 //   header         `#version 3.7;` (without it POV-Ray applies 3.62 rules) and
 //                  global_settings { assumed_gamma 1.0 max_trace_level adc_bailout ambient_light }
 //   camera         pov_camera.h     lights      pov_lights.h

@@ -110,7 +110,7 @@ std::string PovGeometry::meshName(const MeshSpec& mesh, const Node& node) {
   if (found != meshNames_.end()) return found->second;
 
   const MeshData& data = *mesh.data;
-  // The normals the renderer uses (scenegraph/make_shape.cpp): the file's for auto, none
+  // The normals the renderer uses (scenegraph/shapes/mesh.cpp): the file's for auto, none
   // for false, computed vertex normals for true.
   std::vector<Vec3> normals;
   if (mesh.smooth == SmoothMode::Auto) normals = data.normals;

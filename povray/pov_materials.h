@@ -1,5 +1,5 @@
-// Materials as POV-Ray textures (pigment + finish) and interiors, following section 8 of
-// shared/povray-notes.md. POV-Ray's local colour is
+// Materials as POV-Ray textures (pigment + finish) and interiors, following POV-Ray 3.7's
+// lighting model. POV-Ray's local colour is
 //   P·(ambient·ambient_light + emission)·a + Σ P·Lc·diffuse·a·(N·L) + Lc·specular·(N·Ĥ)^(1/roughness)
 // with opacity a = 1 − filter − transmit, reflection not scaled by P or a, and the light
 // behind it multiplied by F = P·filter + transmit. Lucent's is

@@ -1,5 +1,5 @@
 // Running the `povray` program: finding it, its command line for a comparison render
-// (shared/povray-notes.md section 7), and a run with its messages captured in a log file.
+// (no display, 16-bit linear PNG), and a run with its messages captured in a log file.
 #pragma once
 
 #include <optional>

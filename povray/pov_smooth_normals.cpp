@@ -54,7 +54,7 @@ void warnSmoothNormalRule(const Node& node, PovIssues& issues) {
     what = "<triangle>";
   } else if (const auto* m = std::get_if<MeshSpec>(&*node.shape)) {
     if (!m->data || m->smooth == SmoothMode::False) return;
-    // The normals the renderer uses (scenegraph/make_shape.cpp).
+    // The normals the renderer uses (scenegraph/shapes/mesh.cpp).
     const MeshData& data = *m->data;
     const std::vector<Vec3> normals =
         m->smooth == SmoothMode::True ? computeVertexNormals(data) : data.normals;

@@ -32,7 +32,8 @@ std::string povVector(const Vec3& v);
 // of its float value: 0.8 rather than 0.800000011920929.
 std::string povFloat(double v);
 // rgb <r, g, b>: always the five-channel-safe `rgb` form (a bare `color 0.5` would set
-// filter and transmit too, see shared/povray-notes.md section 0). Channels as povFloat.
+// filter and transmit too: POV-Ray spreads one float over all five channels). Channels
+// as povFloat.
 std::string povRgb(const Color& c);
 std::string povRgb(const Vec3& c);
 // rgbft <r, g, b, f, t>

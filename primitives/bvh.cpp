@@ -178,8 +178,7 @@ struct BinSet {
 // binning and partitioning, so both agree to the bit).
 // A node of n items uses 4 + n/20 bins, at most 16 (the rule of Embree's binned
 // builder): clearing and sweeping 3 × 16 bins cost more than binning a small node's
-// items. With min(16, n) bins the SAH cost of the million-triangle tree was 0.4 % lower
-// and the build executed 8 % more instructions (callgrind).
+// items, for a tree hardly better (docs/performance-history.md).
 struct Binner {
   v4f lo, scale;
   int count;
@@ -653,11 +652,9 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
   // nodes, which number items - 1, and the root). The allocator leaves new nodes
   // uninitialised, so those never used cost nothing. Large trees are built in place in
   // ordinary 4 KB pages made present a block ahead of the build (Builder::makePresent).
-  // Not in huge pages: camera rays measured 4 to 7 % slower on nodes in huge pages
-  // (bench/bvh_build, alternating runs), and again 3 to 10 % slower in four of five
-  // alternating pairs when that was tried once more (the reason was not found); and
-  // not built in huge pages and copied, as before: the copy cost 35 ms of a one-thread
-  // build and more on two threads (docs/performance.md, "BVH build speed").
+  // Not in huge pages, since rays were slower on nodes there (the reason was not found);
+  // and not built in huge pages and copied, since the copy costs more than the faults it
+  // saves (docs/performance-history.md, "Figures behind comments in the code").
   nodes_.resize(refs.size());
   order_.resize(refs.size());
   Builder builder(refs, nodes_.data(), uint32_t(refs.size()),

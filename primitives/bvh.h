@@ -313,8 +313,7 @@ class Bvh {
   //
   // With Order::Tree the entered children are searched in the tree's order instead of
   // nearest first: an any-hit search visits every entered box unless an item blocks the
-  // ray, so sorting them is wasted work (shadow rays on the 1M-triangle mesh: 11 to
-  // 14 % faster and 5 % fewer triangle tests, docs/performance.md).
+  // ray, so sorting them is wasted work (docs/performance-history.md, "Seventh pass").
   struct NoPrefetch {
     void operator()(uint32_t, uint32_t) const {}
   };
@@ -466,8 +465,8 @@ bool Bvh::candidatesWith(const Test& test, const double& tFar, Visit& visit,
       const BvhNode& n = nodes_[cur.index];
       int mask = test.test(n, tmax, tEnter);
       if (mask) {
-        // Fetch every entered child now (a million spheres: about 5 % faster; meshes,
-        // whose leaves are not in slot order, fetch only the nodes and are unchanged).
+        // Fetch every entered child now, so that their cache misses overlap (meshes, whose
+        // leaves are not in slot order, fetch only the nodes; docs/performance-history.md).
         for (int m = mask; m; m &= m - 1) {
           const int c = __builtin_ctz(m);
           if (n.count[c] == 0)

@@ -22,7 +22,7 @@ struct MeshData {
   bool closed = false;
 
   // What loading repaired that the file or the inline lists got wrong, for a warning
-  // (lang/mesh_parser.cpp). Faces counted as read, after duplicates and faces without
+  // (scenegraph/shapes/mesh.cpp). Faces counted as read, after duplicates and faces without
   // three distinct corners were dropped.
   struct Repairs {
     std::size_t faces = 0;         // faces read

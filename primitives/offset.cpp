@@ -8,8 +8,8 @@ namespace lucent {
 
 // The next double up from v, as std::nextafter(v, +inf), by stepping its bit pattern
 // (pbrt-v3 §3.9.2, NextFloatUp): std::nextafter is an out-of-line libm call that honours
-// the floating-point environment, and it showed as 9% of a render dominated by area-light
-// shadow rays (docs/performance.md).
+// the floating-point environment, and it showed in profiles of renders dominated by
+// area-light shadow rays (docs/performance-history.md).
 double nextUp(double v) {
   if (std::isnan(v) || (std::isinf(v) && v > 0.0)) return v;
   if (v == 0.0) v = 0.0;  // −0 steps to the smallest positive value, like +0

@@ -13,10 +13,9 @@ namespace lucent {
 namespace {
 // Subtrees of at most this many triangles are BVH leaves without a split search.
 constexpr uint32_t kMinLeaf = 2;
-// The SAH's cost of visiting a node, in triangle tests. 4-wide: with 1 the 1M-triangle
-// mesh had 268k nodes (34 B per triangle); with 3, 112k (14 B) and its build took 30 %
-// less time, for the same ray speed (2 and 4 were no faster). 8-wide: 4 builds 6 % fewer
-// instructions than 3 for rays 1 to 3 % slower (docs/performance.md).
+// The SAH's cost of visiting a node, in triangle tests: high enough that a mesh's tree has
+// few nodes and builds quickly at about the same ray speed (the choice of 3 and 4 is
+// measured in docs/performance-history.md, "Figures behind comments in the code").
 constexpr float kNodeCost = BvhNode::kWidth == 8 ? 4.0f : 3.0f;
 
 // isDegenerateTriangle's decision (watertight.cpp: |e1 × e2| <= gamma(6)·|e1|·|e2|) with
@@ -68,7 +67,7 @@ TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> mesh, bool useNormals
   }
   // Zero-area triangles are never hit: an empty box keeps them out of the BVH. Pairs of
   // triangles are leaves without a split search: splitting them saves few watertight
-  // tests for more nodes and a slower build (measured with bench/, docs/performance.md).
+  // tests for more nodes and a slower build (docs/performance-history.md).
   BvhOptions options;
   options.minLeafSize = kMinLeaf;
   options.traversalCost = kNodeCost;

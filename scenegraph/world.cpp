@@ -123,7 +123,7 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   // Spheres under a similarity transform become world-space spheres. A field of a
   // million spheres then costs one 32-byte read per leaf test instead of following
   // the BVH's slot to the Instance, and the Instance to its Sphere, each a separate
-  // allocation that misses the cache (docs/performance.md). The Instance stays the
+  // allocation that misses the cache (docs/performance-history.md). The Instance stays the
   // hit's shape: surface() and the material work as before.
   std::vector<Leaf> leafOf(bounded.size(), Leaf{0.0, 0.0, 0.0, -1.0});
   std::vector<AABB> boxes(bounded.size());
@@ -153,11 +153,10 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   }
 
   // The SAH weighs a leaf by the cost of testing its items: an inline sphere costs a
-  // fraction of a node's box test (kInlineSphereCost). At a million spheres larger
-  // leaves mean fewer nodes to fetch: 1 was 20 % slower than 0.35; since leaves are split
-  // into free node slots (bvh.cpp), 0.2 is 3 % faster than 0.35 there and the same at a
-  // thousand, while 0.5 and 0.8 are 7 % and 25 % slower (docs/performance.md). Other
-  // objects keep the default cost 1; a mixed world takes the mean.
+  // fraction of a node's box test (kInlineSphereCost), so that a million spheres make
+  // larger leaves and fewer nodes to fetch (the value is measured in
+  // docs/performance-history.md, "Figures behind comments in the code"). Other objects
+  // keep the default cost 1; a mixed world takes the mean.
   Bvh::Options options;
   if (!bounded.empty())
     options.itemCost = float((kInlineSphereCost * double(inlineSpheres_) +
@@ -253,10 +252,9 @@ World::ObjectId World::occluder(const Ray& ray, ObjectId first) const {
       (first < directCount ? direct_[first]->occluded(ray) : slotOccluded(first - directCount, ray)))
     return first;
   // The BVH before the unbounded objects (an any-hit search may take them in any
-  // order): on the gallery's light-area scene, whose floor plane is tested by every
-  // shadow ray and blocks none, the whole process took 3.0 s of CPU instead of 4.2 s
-  // this way (960x720, one thread; docs/performance.md, "Shadow rays"). Measured, not
-  // explained: the plane's test is the same either way.
+  // order): a floor plane is tested by every shadow ray and blocks few, and this order
+  // made such scenes markedly faster, which was measured, not explained
+  // (docs/performance-history.md, "Shadow rays").
   ObjectId found = kNoObject;
   bvh_.any(ray, [&](uint32_t slot, const Ray& r) {
     const ObjectId id = directCount + slot;

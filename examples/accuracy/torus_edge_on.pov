@@ -3,7 +3,7 @@
 #version 3.7;
 global_settings { assumed_gamma 1.0 ambient_light rgb 1 }
 background { rgb <0.1, 0.12, 0.16> }
-// Lucent's world is right-handed: right -x keeps the coordinates (povray-notes.md §4).
+// Lucent's world is right-handed: right -x keeps the coordinates.
 camera { location <0, 0, 5> right -x*4/3 up y angle 40 look_at <0, 0, 0> }
 light_source { <2, 6, 6> color rgb 1 }
 // Lucent material → POV-Ray finish: ambient k_a/k_d per channel, roughness 1/shininess.

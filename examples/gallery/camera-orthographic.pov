@@ -1,5 +1,5 @@
 // Hand-written POV-Ray 3.7 twin of camera-orthographic.xml (written from
-// shared/povray-notes.md, not exported). Lucent's orthographic camera with width w on a
+// POV-Ray's documentation, not exported). Lucent's orthographic camera with width w on a
 // W x H image is POV-Ray's orthographic camera with right w and up w * H / W, both given
 // explicitly so that POV-Ray does not rescale them by the distance to look_at.
 #version 3.7;

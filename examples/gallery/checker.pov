@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of checker.xml (written from shared/povray-notes.md, not
+// Hand-written POV-Ray 3.7 twin of checker.xml (written from POV-Ray's documentation, not
 // exported). Lucent's <checker scale="s"> is POV-Ray's `checker` pigment scaled by s, the
 // cube [0, s)^3 in color1. Lucent evaluates it in the shape's object space: in POV-Ray the
 // texture is written before the object's transforms, so it turns and shrinks with them.

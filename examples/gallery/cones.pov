@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of cones.xml (written from shared/povray-notes.md, not
+// Hand-written POV-Ray 3.7 twin of cones.xml (written from POV-Ray's documentation, not
 // exported). Lucent's cone (base, base-radius, cap, cap-radius) is POV-Ray's
 // cone { base, r_base, cap, r_cap }; a missing cap-radius is 0 (a point), and
 // open="true" is `open` (no end discs).

@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of csg-nested.xml (written from shared/povray-notes.md, not
+// Hand-written POV-Ray 3.7 twin of csg-nested.xml (written from POV-Ray's documentation, not
 // exported). The CSG tree is the same in both languages; the surface the union of cylinders
 // carves out of the intersection shows the union's (green) texture, the remaining faces
 // of the box and the sphere their own.

@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of cylinders.xml (written from shared/povray-notes.md, not
+// Hand-written POV-Ray 3.7 twin of cylinders.xml (written from POV-Ray's documentation, not
 // exported). Lucent's cylinder (base, cap, radius) is POV-Ray's cylinder { base, cap, r },
 // closed by end discs unless open="true", which is `open`.
 #version 3.7;

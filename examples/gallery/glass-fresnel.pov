@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of glass-fresnel.xml (written from shared/povray-notes.md,
+// Hand-written POV-Ray 3.7 twin of glass-fresnel.xml (written from POV-Ray's documentation,
 // not exported). Lucent's fresnel glass (transmissive 1, reflective 1, fresnel) reflects
 // F and transmits 1 - F: POV-Ray's `reflection { 0, 1 fresnel on }` gives F and
 // conserve_energy scales the transmitted light by 1 - F. The pigment is fully transmitting

@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of glass.xml (written from shared/povray-notes.md, not
+// Hand-written POV-Ray 3.7 twin of glass.xml (written from POV-Ray's documentation, not
 // exported). Lucent's glass without Fresnel (transmissive k_t, reflective k_r, no diffuse or
 // ambient) is a black pigment with transmit k_t: POV-Ray scales the local terms by the
 // opacity 1 - k_t (they are 0 here) but not the highlight, transmits k_t through every

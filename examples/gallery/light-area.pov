@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of light-area.xml (written from shared/povray-notes.md, not
+// Hand-written POV-Ray 3.7 twin of light-area.xml (written from POV-Ray's documentation, not
 // exported). Lucent's area light (centre, edge vectors u and v, samples nu x nv on a grid
 // that includes the edges) is POV-Ray's area_light <u>, <v>, nu, nv. Both average only the
 // shadow term and take the light direction from the centre. POV-Ray's recursive averaging

@@ -1,5 +1,5 @@
 // Hand-written POV-Ray 3.7 twin of light-directional.xml (written from
-// shared/povray-notes.md, not exported). A Lucent directional light travelling along d is
+// POV-Ray's documentation, not exported). A Lucent directional light travelling along d is
 // POV-Ray's parallel light: placed far up the other way (-d) and pointing at the origin,
 // so that L = -d everywhere and every object of the scene lies in front of it.
 #version 3.7;

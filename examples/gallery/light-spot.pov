@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of light-spot.xml (written from shared/povray-notes.md,
+// Hand-written POV-Ray 3.7 twin of light-spot.xml (written from POV-Ray's documentation,
 // not exported). Lucent's spot with `angle` A and `inner` I is POV-Ray's spotlight with
 // falloff A, radius I and tightness 0: full light inside I, POV-Ray's smoothstep
 // (3 - 2u)u^2 between I and A, none beyond. Without `inner` (I = A) the edge is hard.

@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of mesh-inline.xml (written from shared/povray-notes.md, not
+// Hand-written POV-Ray 3.7 twin of mesh-inline.xml (written from POV-Ray's documentation, not
 // exported). Lucent's inline mesh (positions, indices, optional normals: one per position)
 // is POV-Ray's mesh2 with vertex_vectors, face_indices and normal_vectors (the normals are
 // indexed like the vertices when normal_indices is absent). Interpolated normals are

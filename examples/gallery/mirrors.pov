@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of mirrors.xml (written from shared/povray-notes.md, not
+// Hand-written POV-Ray 3.7 twin of mirrors.xml (written from POV-Ray's documentation, not
 // exported). Lucent's reflective k_r is POV-Ray's constant `reflection rgb k_r`, which
 // neither renderer multiplies by the pigment; both cut the recursion at depth 5 with black.
 #version 3.7;

@@ -1,5 +1,5 @@
 // Hand-written POV-Ray 3.7 twin of sphere-box-shadows.xml (written from
-// shared/povray-notes.md, not exported), so an exporter bug cannot hide a renderer bug.
+// POV-Ray 3.7's documentation, not exported), so an exporter bug cannot hide a renderer bug.
 // Lucent's material k_a, k_d, k_s, n_s maps onto pigment k_d, ambient k_a/k_d (POV-Ray
 // multiplies ambient by the pigment), diffuse 1 and specular k_s with roughness 1/n_s
 // (POV-Ray's specular is Blinn's half-vector highlight with exponent 1/roughness).

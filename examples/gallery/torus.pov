@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of torus.xml (written from shared/povray-notes.md, not
+// Hand-written POV-Ray 3.7 twin of torus.xml (written from POV-Ray's documentation, not
 // exported). Both renderers put the torus in the xz-plane around the y axis:
 // torus { major, minor }. Lucent's transform list rotate-x(90) rotate-y(20) translate(...)
 // applies in the order written, as POV-Ray's rotate / rotate / translate do.

@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of transforms.xml (written from shared/povray-notes.md,
+// Hand-written POV-Ray 3.7 twin of transforms.xml (written from POV-Ray's documentation,
 // not exported). A node's transform applies before its parent's in Lucent, as an object's
 // own transform applies before that of the union holding it in POV-Ray; rotate y*a is
 // Lucent's rotate-y(a). Lucent's matrix rows (x' = x + 0.5 y) become POV-Ray's row-vector

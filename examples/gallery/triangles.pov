@@ -1,4 +1,4 @@
-// Hand-written POV-Ray 3.7 twin of triangles.xml (written from shared/povray-notes.md, not
+// Hand-written POV-Ray 3.7 twin of triangles.xml (written from POV-Ray's documentation, not
 // exported). A Lucent triangle is POV-Ray's triangle; with vertex normals na, nb, nc it is
 // smooth_triangle { a, na, b, nb, c, nc }: both normalise the vertex normals, interpolate
 // them barycentrically and normalise again. Both treat triangles as two-sided.

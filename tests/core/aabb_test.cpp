@@ -1,4 +1,4 @@
-// Slab test: every case issue 2 lists (signed zero directions, origins inside and on the
+// Slab test: the hard cases (signed zero directions, origins inside and on the
 // box, clipped ranges) with exact expected distances.
 #include "primitives/aabb.h"
 

@@ -2,7 +2,13 @@
 # One gallery scene held to POV-Ray 3.7: `lucent compare` against the exported scene and,
 # when a hand-written twin NAME.pov sits beside NAME.xml, against the twin too (so that an
 # exporter bug cannot hide a renderer bug). Each comparison must reach PSNR >= 40 dB and
-# SSIM >= 0.99 (issue 5), read from report.json. The reports stay in OUTDIR to look at.
+# SSIM >= 0.99, and at most 1 % of the pixels may be off by more than 2/255 in some channel
+# (report.json's share_over_threshold): PSNR averages, so a small object drawn wrong can
+# pass it, but not this. A scene with a known, documented difference from POV-Ray raises its
+# own bound with a comment line in NAME.xml, after the first comment (scripts/gallery's
+# description of the scene):
+#   <!-- gallery: at most 3 % of pixels off by more than 2/255 (REASON) -->
+# The reports stay in OUTDIR to look at (docs/gallery.md).
 # Usage: bash compare_scene.sh <path-to-lucent> <scene.xml> <outdir>
 set -u
 lucent=$1
@@ -12,6 +18,9 @@ name=$(basename "$scene" .xml)
 twin="${scene%.xml}.pov"
 min_psnr=40
 min_ssim=0.99
+max_share_percent=1
+own=$(sed -n 's/.*<!-- gallery: at most \([0-9.]*\) % of pixels off by more than 2\/255 (.*) -->.*/\1/p' "$scene" | head -n 1)
+[ -n "$own" ] && max_share_percent=$own
 failures=0
 fail() { echo "FAIL: $name: $*" >&2; failures=$((failures + 1)); }
 
@@ -37,11 +46,18 @@ compare() {
     cat "$out/stderr.txt" >&2
     return
   fi
-  local psnr ssim
+  local psnr ssim share threshold
   psnr=$(json_number "$out/report.json" psnr_db)
   ssim=$(json_number "$out/report.json" ssim)
-  if [ -z "$psnr" ] || [ -z "$ssim" ]; then
-    fail "$label: no psnr_db/ssim in $out/report.json"
+  share=$(json_number "$out/report.json" share_over_threshold)
+  threshold=$(json_number "$out/report.json" threshold)
+  if [ -z "$psnr" ] || [ -z "$ssim" ] || [ -z "$share" ]; then
+    fail "$label: no psnr_db/ssim/share_over_threshold in $out/report.json"
+    return
+  fi
+  # The share is counted at lucent compare's threshold, which must be the 2/255 meant here.
+  if ! awk -v t="$threshold" 'BEGIN { exit !(t > 0.00784 && t < 0.00785) }'; then
+    fail "$label: report.json counts pixels over $threshold, not 2/255"
     return
   fi
   local ok=1
@@ -54,7 +70,11 @@ compare() {
     fail "$label: SSIM $ssim < $min_ssim"
     ok=0
   fi
-  echo "$name ($label): PSNR $psnr dB, SSIM $ssim"
+  if ! awk -v s="$share" -v m="$max_share_percent" 'BEGIN { exit !(s * 100 <= m) }'; then
+    fail "$label: $(awk -v s="$share" 'BEGIN { printf "%.3f", s * 100 }') % of the pixels are off by more than 2/255 (at most $max_share_percent %)"
+    ok=0
+  fi
+  echo "$name ($label): PSNR $psnr dB, SSIM $ssim, $(awk -v s="$share" 'BEGIN { printf "%.3f", s * 100 }') % of pixels off by more than 2/255 (at most $max_share_percent %)"
   if [ $ok -eq 0 ]; then
     {
       cat "$out/stdout.txt"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The compare report in a real browser (issue 5): `lucent compare` on a gallery scene, then
+# The compare report in a real browser: `lucent compare` on a gallery scene, then
 # headless Chromium takes a screenshot of report.html, which must show the Lucent render,
 # the POV-Ray render and the heat map pixel for pixel, and the metrics table below them
 # (screenshot_check.py). The same check on a copy of the report whose image links are

@@ -163,17 +163,24 @@ TEST_CASE("lang: errors of several files and phases come back sorted by file, li
 }
 
 TEST_CASE("lang: hostile inputs never crash the parser", "[lang][invalid]") {
-  // Truncations of a valid scene at every byte: each is refused with a located error
-  // (or, at the few points where the rest is optional, accepted) but never crashes.
+  // Truncations of a valid scene at every byte: each is refused with a located error and
+  // never crashes (the root element is then unclosed, so no cut is a whole document).
   std::string scene =
-      "<scene version=\"1\"><param name=\"r\" value=\"2\"/><camera fov=\"$r0\"/>"
+      "<scene version=\"1\"><param name=\"r\" value=\"2\"/><camera fov=\"${r}0\"/>"
       "<defs><group id=\"g\"><sphere radius=\"${r}\"/></group></defs>"
       "<difference transform=\"rotate(30, 1 1 0) scale(2)\"><use ref=\"g\"/><box/></difference>"
       "<mesh positions=\"0 0 0 1 0 0 0 1 0\" indices=\"0 1 2\"/></scene>";
-  for (size_t n = 0; n <= scene.size(); ++n) {
+  ParseResult whole = parseSceneString(scene, "cut.xml");
+  INFO(messages(whole));
+  REQUIRE(whole.scene != nullptr);
+  REQUIRE(whole.diagnostics.all().empty());
+  CHECK(whole.scene->cameras.at(0).fov == Approx(20.0));
+  for (size_t n = 0; n < scene.size(); ++n) {
     ParseResult r = parseSceneString(scene.substr(0, n), "cut.xml");
+    INFO("cut after " << n << " bytes");
+    CHECK(r.scene == nullptr);
+    CHECK(r.diagnostics.hasErrors());
     for (const Diagnostic& d : r.diagnostics.all()) CHECK(d.loc.file == "cut.xml");
-    if (n < scene.size()) CHECK(r.scene == nullptr);
   }
   // Binary junk and an empty document.
   std::string junk;

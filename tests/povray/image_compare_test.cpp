@@ -90,7 +90,7 @@ TEST_CASE("the heat map is black where images agree and bright where they differ
 }
 
 TEST_CASE("sRGB encoding matches POV-Ray's 8-bit table", "[povray][metrics]") {
-  // shared/povray-notes.md section 5: 0.5 -> 188, 0.18 -> 118, 0.01 -> 25.
+  // The 8-bit codes POV-Ray 3.7 writes: 0.5 -> 188, 0.18 -> 118, 0.01 -> 25.
   RgbImage img(1, 1);
   img.rgb = {0.5f, 0.18f, 0.01f};
   RgbImage s = srgbEncoded(img);

@@ -11,7 +11,7 @@ using namespace lucent::test;
 
 namespace {
 
-// POV-Ray's light fade: 2 / (1 + (d/fd)^fp) (shared/povray-notes.md section 2).
+// POV-Ray's light fade: 2 / (1 + (d/fd)^fp) (fade_distance fd, fade_power fp).
 double povFadeAt(const PovFade& f, double d) {
   if (!f.fade) return f.scale;
   return f.scale * 2.0 / (1.0 + std::pow(d / f.distance, f.power));

@@ -1,4 +1,4 @@
-// --stats' intersection-test counts (issue 4): one test per object a ray is tested
+// --stats' intersection-test counts: one test per object a ray is tested
 // against, by kind, and the triangles tested inside meshes; the same counts whatever the
 // thread count.
 #include "scenegraph/shape_registry.h"

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <fstream>
 
 #include <unistd.h>
 
@@ -139,15 +140,23 @@ TEST_CASE("image texture: bilinear lookup at (u,v), v = 1 at the top row, repeat
 }
 
 TEST_CASE("8-bit sRGB image textures are decoded to linear", "[render][texture]") {
+  // A 1x1 PNG made outside Lucent (Python's zlib and struct: IHDR 8-bit RGB, one IDAT, IEND;
+  // no colour chunk, so sRGB) holding the codes 188, 124 and 3. The expected values are the
+  // IEC 61966-2-1 decoding ((c/255 + 0.055) / 1.055)^2.4, worked out by hand: 0.502886,
+  // 0.201556, and 3/255/12.92 = 0.000911 on the linear segment.
+  static const unsigned char kPng[] = {
+      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,
+      0x44, 0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x02, 0x00, 0x00,
+      0x00, 0x90, 0x77, 0x53, 0xde, 0x00, 0x00, 0x00, 0x0c, 0x49, 0x44, 0x41, 0x54, 0x78,
+      0x9c, 0x63, 0xd8, 0x53, 0xc3, 0x0c, 0x00, 0x03, 0x33, 0x01, 0x3c, 0x7d, 0x8a, 0x26,
+      0x6d, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
   auto path = (std::filesystem::temp_directory_path() /
                ("lucent-tex-" + std::to_string(::getpid()) + ".png")).string();
-  Image img(1, 1);
-  img.at(0, 0) = Color(0.5f, 0.2f, 0.0f);
-  writeImageFile(img, path);  // stored as sRGB bytes 188, 124, 0
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(kPng), sizeof kPng);
   ImageMap map(path);
   Color c = map.lookup(Vec2(0.5), Vec2(1.0));
-  CHECK(c.r == Approx(0.5).margin(0.003));  // one 8-bit step of sRGB near 0.5 is ~0.004
-  CHECK(c.g == Approx(0.2).margin(0.002));
-  CHECK(c.b == 0.0f);
+  CHECK(c.r == Approx(0.502886).margin(1e-5));
+  CHECK(c.g == Approx(0.201556).margin(1e-5));
+  CHECK(c.b == Approx(0.000911).margin(1e-6));
   std::filesystem::remove(path);
 }

@@ -7,8 +7,7 @@
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
 if grep -q __asan_init "$lucent" 2>/dev/null; then
-  echo "memory_limits: skipped (AddressSanitizer build: ulimit -v cannot be used)"
-  exit 0
+  skip "memory_limits: AddressSanitizer build (ulimit -v cannot be used)"
 fi
 
 # An open 1000x1000 grid: 10^6 vertices, about 2x10^6 triangles, 55 MB of OFF. Its repair

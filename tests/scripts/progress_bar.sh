@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The progress bar (issue 4): on a terminal, lucent render draws "rendering [###...] NN%
+# The progress bar: on a terminal, lucent render draws "rendering [###...] NN%
 # x.xx Mrays/s ETA m:ss" on stderr; with -q, or when stderr is not a terminal, it prints
 # nothing there. script(1) (util-linux, always on Debian) gives the render a terminal.
 # Usage: bash progress_bar.sh <path-to-lucent> <source-dir>

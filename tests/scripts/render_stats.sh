@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# lucent render --stats (issue 4): rays by kind, searches, intersection tests by kind of
+# lucent render --stats: rays by kind, searches, intersection tests by kind of
 # shape (only the kinds the scene has), time and Mrays/s. A 16x12 image of a sphere on a
 # plane, seen from above, under one point light: every pixel's primary ray hits and is lit.
 # Usage: bash render_stats.sh <path-to-lucent> <source-dir>
