@@ -214,14 +214,16 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
                                           node.element, mat.ior));
   warnSmoothNormalRule(node, issues_);
   used_[material] = true;
-  if (const auto* box = std::get_if<BoxSpec>(&*node.shape); box && materials_.usesImageMap(material)) {
-    // Each face has its own copy of the image: the box as the intersection of its six
-    // face planes, each with its own mapping. The same solid, surface and inside.
-    out.open("intersection", "<box> " + node.loc.str() + " with a per-face image map");
-    for (const BoxFace& face : boxFaces(*box)) {
+  std::vector<ImageMapFace> faces;
+  if (materials_.usesImageMap(material)) faces = shapeTypeOf(*node.shape).povImageFaces(*node.shape);
+  if (!faces.empty()) {
+    // Each face has its own copy of the image: the solid as the intersection of its face
+    // planes, each with its own mapping. The same solid, surface and inside.
+    out.open("intersection", "<" + node.element + "> " + node.loc.str() + " with a per-face image map");
+    for (const ImageMapFace& face : faces) {
       out.open("plane");
       out.line(fmt::format("{}, {}", povVector(face.normal), povNumber(face.offset)));
-      materials_.writeFor(material, face.mapping, "box", node.loc, out, issues_);
+      materials_.writeFor(material, face.mapping, node.element.c_str(), node.loc, out, issues_);
       out.close();
     }
     if (!isIdentity(m)) out.line(povMatrix(m));

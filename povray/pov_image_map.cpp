@@ -1,7 +1,6 @@
 #include "pov_image_map.h"
 
 #include "images/image_plugin.h"
-#include "primitives/plane.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <fmt/core.h>
@@ -64,76 +63,6 @@ ImageFacts imageFacts(const std::string& path) {
 }
 
 }  // namespace
-
-ImageMapping imageMappingFor(const ShapeSpec& shape) {
-  ImageMapping m;
-  if (const auto* sphere = std::get_if<SphereSpec>(&shape)) {
-    m.kind = ImageMapping::Spherical;
-    m.center = sphere->center;
-  } else if (const auto* plane = std::get_if<PlaneSpec>(&shape)) {
-    // (u, v) = (p·t1, p·t2) (primitives/plane.cpp).
-    Vec3 t1, t2;
-    planeTangents(plane->normal, t1, t2);
-    m.kind = ImageMapping::Planar;
-    m.uvFromObject = glm::transpose(basis(t1, t2, plane->normal));
-  } else if (const auto* disc = std::get_if<DiscSpec>(&shape)) {
-    // (u, v) = ((p − c)·t1, (p − c)·t2) (primitives/disc.cpp).
-    Vec3 t1, t2;
-    planeTangents(disc->normal, t1, t2);
-    m.kind = ImageMapping::Planar;
-    Mat4 rows = glm::transpose(basis(t1, t2, disc->normal));
-    Mat4 toCentre(1.0);
-    toCentre[3] = Vec4(-disc->center, 1.0);
-    m.uvFromObject = rows * toCentre;
-  } else if (const auto* mesh = std::get_if<MeshSpec>(&shape)) {
-    if (mesh->data && !mesh->data->uvs.empty() &&
-        mesh->data->uvs.size() == mesh->data->positions.size())
-      m.kind = ImageMapping::MeshUV;
-  }
-  return m;
-}
-
-std::vector<BoxFace> boxFaces(const BoxSpec& box) {
-  // Face (u, v) as primitives/box.cpp computes them: frac(i, fromMax) is the position along
-  // axis i across the box, measured from its min side or (fromMax) its max side.
-  const Vec3 lo = glm::min(box.min, box.max), hi = glm::max(box.min, box.max);
-  const Vec3 e = hi - lo;
-  auto frac = [&](int i, bool fromMax) {
-    Vec4 row(0.0);  // row·(p, 1)
-    if (!(e[i] > 0.0)) return row;
-    row[i] = fromMax ? -1.0 / e[i] : 1.0 / e[i];
-    row[3] = fromMax ? hi[i] / e[i] : -lo[i] / e[i];
-    return row;
-  };
-  std::vector<BoxFace> faces;
-  for (int axis = 0; axis < 3; ++axis) {
-    for (int side = 0; side < 2; ++side) {
-      const bool maxSide = side == 1;
-      Vec4 u, v;
-      if (axis == 0) {  // ±x: right is ∓z, up is +y
-        u = frac(2, maxSide);
-        v = frac(1, false);
-      } else if (axis == 1) {  // +y: right +x, up −z; −y: right +x, up +z
-        u = frac(0, false);
-        v = frac(2, maxSide);
-      } else {  // ±z: right is ±x, up is +y
-        u = frac(0, !maxSide);
-        v = frac(1, false);
-      }
-      Vec4 w(0.0);
-      w[axis] = 1.0;
-      BoxFace f;
-      f.normal = Vec3(0.0);
-      f.normal[axis] = maxSide ? 1.0 : -1.0;
-      f.offset = maxSide ? hi[axis] : -lo[axis];
-      f.mapping.kind = ImageMapping::Planar;
-      // Rows u, v, w, (0 0 0 1) as a column-major glm matrix.
-      f.mapping.uvFromObject = glm::transpose(Mat4(u, v, w, Vec4(0.0, 0.0, 0.0, 1.0)));
-      faces.push_back(f);
-    }
-  }
-  return faces;
-}
 
 void writeImagePigment(const ImageTexture& image, double filter, double transmit,
                        const ImageMapping& mapping, const char* shapeName, const SourceLoc& loc,

@@ -228,7 +228,7 @@ bool PovMaterials::usesImageMap(uint32_t index) const {
 
 void PovMaterials::writeFor(uint32_t index, const ShapeSpec& shape, const SourceLoc& loc,
                             PovWriter& out, PovIssues& issues, bool interior) const {
-  writeFor(index, imageMappingFor(shape), shapeElementName(shape), loc, out, issues, interior);
+  writeFor(index, shapeTypeOf(shape).povImageMapping(shape), shapeElementName(shape), loc, out, issues, interior);
 }
 
 void PovMaterials::writeInteriorFor(uint32_t index, PovWriter& out) const {

@@ -48,6 +48,27 @@ class PovShapeOut {
   virtual std::string declaredMesh(const MeshSpec& mesh) = 0;
 };
 
+// How a surface point becomes an image texture's (u, v), as POV-Ray's image_map can
+// reproduce it (povray/pov_image_map.h writes it).
+struct ImageMapping {
+  enum Kind { None, Planar, Spherical, MeshUV } kind = None;
+  // Planar: the affine map from the shape's object space to (u, v, w); u and v are Lucent's
+  // coordinates, w anything that keeps the map invertible.
+  Mat4 uvFromObject{1.0};
+  Vec3 center{0.0};  // spherical: the sphere's centre
+};
+// A face that takes its own copy of an image (a box's six faces): a POV-Ray plane, inside
+// towards the shape, with the face's mapping.
+struct ImageMapFace {
+  Vec3 normal{0.0};
+  double offset = 0.0;
+  ImageMapping mapping;
+};
+// The affine matrix whose rows are u, v and w (and 0 0 0 1).
+inline Mat4 rowsMatrix(const Vec4& u, const Vec4& v, const Vec4& w) {
+  return glm::transpose(Mat4(u, v, w, Vec4(0.0, 0.0, 0.0, 1.0)));
+}
+
 // One attribute of a shape element: what the schema and the attribute check need, and how
 // the generic reader stores it into the parameters (null for attributes the entry's
 // finish() reads itself).
@@ -83,6 +104,13 @@ struct ShapeEntry {
   Build build;
   WritePov pov;
   std::function<long long(const S&)> triangles = [](const S&) { return 0LL; };
+  // How POV-Ray's image_map reproduces the shape's (u, v): one mapping for the whole shape
+  // or, when povImageFaces gives any, one per face; with neither an image texture on the
+  // shape cannot be exported (an error that names the shape).
+  std::function<ImageMapping(const S&)> povImageMapping = [](const S&) { return ImageMapping{}; };
+  std::function<std::vector<ImageMapFace>(const S&)> povImageFaces = [](const S&) {
+    return std::vector<ImageMapFace>{};
+  };
   // Valid parameters that show the shape's cases (the contract tests run every one);
   // made on demand, so a render never pays for them.
   std::function<std::vector<std::pair<std::string, S>>()> samples;
@@ -132,6 +160,8 @@ struct ShapeType {
   std::function<std::shared_ptr<const Shape>(const ShapeSpec&)> build;
   std::function<void(const ShapeSpec&, PovShapeOut&)> writePov;
   std::function<long long(const ShapeSpec&)> triangles;
+  std::function<ImageMapping(const ShapeSpec&)> povImageMapping;
+  std::function<std::vector<ImageMapFace>(const ShapeSpec&)> povImageFaces;
   std::function<std::vector<std::pair<std::string, ShapeSpec>>()> samples;
 
   std::vector<std::string_view> attributeNames() const;
@@ -161,6 +191,8 @@ ShapeType eraseShapeEntry(ShapeEntry<S> e, size_t slot) {
   t.build = [f = e.build](const ShapeSpec& s) { return f(std::get<S>(s)); };
   t.writePov = [f = e.pov](const ShapeSpec& s, PovShapeOut& out) { f(std::get<S>(s), out); };
   t.triangles = [f = e.triangles](const ShapeSpec& s) { return f(std::get<S>(s)); };
+  t.povImageMapping = [f = e.povImageMapping](const ShapeSpec& s) { return f(std::get<S>(s)); };
+  t.povImageFaces = [f = e.povImageFaces](const ShapeSpec& s) { return f(std::get<S>(s)); };
   t.samples = [f = e.samples] {
     std::vector<std::pair<std::string, ShapeSpec>> out;
     if (f)

@@ -3,6 +3,7 @@
 #include "scenegraph/shape_type.h"
 
 #include "primitives/disc.h"
+#include "primitives/plane.h"
 
 #include <fmt/format.h>
 
@@ -29,6 +30,17 @@ ShapeEntry<DiscSpec> shapeEntry<DiscSpec>() {
                                                d.innerRadius, d.radius));
   };
   e.notSolid = [](const DiscSpec&) { return std::string("a disc encloses no volume"); };
+  // (u, v) = ((p − c)·t1, (p − c)·t2) (primitives/disc.cpp): a planar image_map.
+  e.povImageMapping = [](const DiscSpec& s) {
+    Vec3 t1, t2;
+    planeTangents(s.normal, t1, t2);
+    ImageMapping m;
+    m.kind = ImageMapping::Planar;
+    Mat4 toCentre(1.0);
+    toCentre[3] = Vec4(-s.center, 1.0);
+    m.uvFromObject = rowsMatrix(Vec4(t1, 0.0), Vec4(t2, 0.0), Vec4(s.normal, 0.0)) * toCentre;
+    return m;
+  };
   e.samples = [] {
     return std::vector<std::pair<std::string, DiscSpec>>{
         {"disc", {Vec3(0.2, 0.1, 0), glm::normalize(Vec3(0, 1, 1)), 1.0, 0.3}}};

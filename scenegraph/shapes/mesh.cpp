@@ -194,6 +194,13 @@ ShapeEntry<MeshSpec> shapeEntry<MeshSpec>() {
     return s.data && s.data->closed ? std::string() : std::string("the mesh is not closed and consistently oriented");
   };
   e.triangles = [](const MeshSpec& s) { return s.data ? static_cast<long long>(s.data->triangles.size()) : 0LL; };
+  // The mesh's own uv_vectors (uv_mapping), when it has one uv per position.
+  e.povImageMapping = [](const MeshSpec& s) {
+    ImageMapping m;
+    if (s.data && !s.data->uvs.empty() && s.data->uvs.size() == s.data->positions.size())
+      m.kind = ImageMapping::MeshUV;
+    return m;
+  };
   e.samples = meshSamples;
   return e;
 }

@@ -19,6 +19,13 @@ ShapeEntry<SphereSpec> shapeEntry<SphereSpec>() {
   e.doc = "A sphere (solid).";
   e.fields = {vectorField("center", &SphereSpec::center).doc("Centre."),
               numberField("radius", &SphereSpec::radius, NumberRule::positive()).doc("Radius.")};
+  // POV-Ray's map_type 1 (spherical), turned to Lucent's longitude and latitude.
+  e.povImageMapping = [](const SphereSpec& s) {
+    ImageMapping m;
+    m.kind = ImageMapping::Spherical;
+    m.center = s.center;
+    return m;
+  };
   e.samples = [] {
     return std::vector<std::pair<std::string, SphereSpec>>{
         {"sphere", {Vec3(0.5, -0.25, 1.0), 1.5}}, {"small sphere", {Vec3(0.0), 1e-3}}};

@@ -1,5 +1,6 @@
 // Image textures as POV-Ray image_maps: the mapping transform per shape kind, and the
 // shapes whose (u,v) POV-Ray cannot reproduce.
+#include "scenegraph/shape_registry.h"
 #include "povray/pov_export.h"
 #include "povray/pov_image_map.h"
 
@@ -70,7 +71,8 @@ TEST_CASE("an image on a box becomes six face planes, each with its own copy",
   // The +x face: u = (hi_z − z)/4, v = y/1: pattern x = 4 − 4u... as the inverse matrix.
   CHECK(has(e, "  plane {\n    <1, 0, 0>, 2\n"));
   CHECK(has(e, "  plane {\n    <-1, 0, 0>, 0\n"));
-  std::vector<BoxFace> faces = boxFaces(BoxSpec{Vec3(0, 0, 0), Vec3(2, 1, 4)});
+  const ShapeSpec box = BoxSpec{Vec3(0, 0, 0), Vec3(2, 1, 4)};
+  std::vector<ImageMapFace> faces = shapeTypeOf(box).povImageFaces(box);
   REQUIRE(faces.size() == 6);
   // Face +x (index 1): a point on it maps to Lucent's u = (4 − z)/4, v = y.
   Vec4 uv = faces[1].mapping.uvFromObject * Vec4(2.0, 0.25, 1.0, 1.0);
