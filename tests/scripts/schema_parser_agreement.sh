@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # docs/lucent.xsd and Lucent's parser must agree on the lexical edge cases listed in
-# tests/schema/lexical_cases.txt: each line says whether both accept the value, both
+# tests/lang/schema/lexical_cases.txt: each line says whether both accept the value, both
 # reject it, or only the parser rejects it (a rule XML Schema 1.0 cannot express). Above
 # all, the schema must never reject a value the parser accepts, or editors would flag
 # valid scenes.
@@ -10,7 +10,7 @@ set -u
 lucent=${1:?usage: schema_parser_agreement.sh <lucent-binary> <source-dir>}
 src=${2:?usage: schema_parser_agreement.sh <lucent-binary> <source-dir>}
 xsd="$src/docs/lucent.xsd"
-cases="$src/tests/schema/lexical_cases.txt"
+cases="$src/tests/lang/schema/lexical_cases.txt"
 
 if ! command -v xmllint >/dev/null; then
   echo "schema_parser_agreement: FAIL: xmllint not found (Debian package libxml2-utils)"

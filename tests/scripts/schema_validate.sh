@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # docs/lucent.xsd must accept every scene we ship or test as valid (examples/**/*.xml,
-# tests/lang/valid/*.xml, the xml examples of docs/scene-language.md) and reject every deliberately wrong file in tests/schema/bad/,
+# tests/lang/valid/*.xml, the xml examples of docs/scene-language.md) and reject every deliberately wrong file in tests/lang/schema/bad/,
 # each for the reason named by its "<!-- expect: TEXT -->" line (a substring of xmllint's
 # message), so a file rejected for an unrelated reason (a typo in the test) fails too.
 # Run by CTest as: bash schema_validate.sh <lucent-binary> <source-dir>
@@ -69,7 +69,7 @@ if [ "$doc_blocks" -lt 10 ]; then
   failures=$((failures + 1))
 fi
 
-bad_files=$(find "$src/tests/schema/bad" -name '*.xml' -type f | sort)
+bad_files=$(find "$src/tests/lang/schema/bad" -name '*.xml' -type f | sort)
 for f in $bad_files; do
   expect=$(sed -n 's/^<!-- expect: \(.*\) -->$/\1/p' "$f" | head -n 1)
   if [ -z "$expect" ]; then

@@ -2,7 +2,7 @@
 """Writes the small mesh files the mesh tests read (run from this folder; output is committed).
 
 The unit cube [0,1]^3 has its faces counter-clockwise seen from outside (outward); variants
-flip faces, drop faces, nest or move cubes. Expected results are in tests/mesh/*_test.cpp.
+flip faces, drop faces, nest or move cubes. Expected results are in tests/meshes/*_test.cpp.
 """
 import struct
 

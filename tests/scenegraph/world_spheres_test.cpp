@@ -1,7 +1,7 @@
 // The world keeps spheres under similarity transforms in world space (sphere_image.h):
 // it must give the same closest hit as testing every Instance through its own
 // object-space test, and secondary rays leaving such spheres must not re-hit them.
-#include "random_items.h"
+#include "../primitives/random_items.h"
 #include "world_helpers.h"
 
 #include "primitives/offset.h"

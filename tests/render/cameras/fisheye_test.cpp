@@ -2,7 +2,7 @@
 // spans the image along fov-axis; pixels outside it have no ray and render as background.
 #include "camera_checks.h"
 
-#include "../render/scene_builder.h"
+#include "../scene_builder.h"
 #include "render/camera_frame.h"
 #include "render/fisheye.h"
 #include "render/renderer.h"

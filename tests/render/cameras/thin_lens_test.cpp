@@ -2,7 +2,7 @@
 // pinhole; lens samples are stratified per pixel, so depth of field converges with samples.
 #include "camera_checks.h"
 
-#include "../render/scene_builder.h"
+#include "../scene_builder.h"
 #include "render/camera_frame.h"
 #include "render/renderer.h"
 #include "render/sampling.h"

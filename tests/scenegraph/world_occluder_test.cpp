@@ -1,6 +1,6 @@
 // World::occluder, the any-hit search a shadow cache drives: whichever object is tested
 // first, it answers as World::occluded does, and it names an object that blocks.
-#include "random_items.h"
+#include "../primitives/random_items.h"
 #include "world_helpers.h"
 
 #include "scenegraph/world.h"

@@ -1,7 +1,7 @@
 // CSG nodes with many children, whose crossings come only from the children whose boxes
 // the ray overlaps: checked against membership along the ray and against brute force.
-#include "mock_shapes.h"
-#include "random_items.h"
+#include "../primitives/mock_shapes.h"
+#include "../primitives/random_items.h"
 
 #include "csg/csg_node.h"
 #include "primitives/instance.h"

@@ -1,7 +1,7 @@
 // The world's top-level BVH answers as testing every object would, planes (unbounded)
 // are tested beside it, and a shape used many times through <use> is built once.
-#include "mock_shapes.h"
-#include "random_items.h"
+#include "../primitives/mock_shapes.h"
+#include "../primitives/random_items.h"
 #include "world_helpers.h"
 
 #include "scenegraph/world.h"

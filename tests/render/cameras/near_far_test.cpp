@@ -2,7 +2,7 @@
 // near or beyond far is not seen in a render through World and Renderer.
 #include "camera_checks.h"
 
-#include "../render/scene_builder.h"
+#include "../scene_builder.h"
 #include "render/renderer.h"
 
 using namespace lucent;
