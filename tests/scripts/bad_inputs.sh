@@ -63,6 +63,7 @@ before=$(cd "$bad" && find . -print0 | sort -z | xargs -0 md5sum 2>/dev/null)
 cd "$bad" || exit 1
 while IFS= read -r line; do
   [[ "$line" =~ ^[[:space:]]*(#|$) ]] && continue
+  [[ "$line" == "xmllint | "* ]] && continue  # the schema's expectation (schema_validate.sh)
   want=$(echo "${line%%|*}" | tr -d ' ')
   rest=${line#*|}
   argtext=${rest%%|*}

@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # docs/lucent.xsd must accept every scene we ship or test as valid (examples/**/*.xml,
-# tests/lang/valid/*.xml, the xml examples of docs/scene-language.md) and reject every deliberately wrong file in tests/lang/schema/bad/,
-# each for the reason named by its "<!-- expect: TEXT -->" line (a substring of xmllint's
-# message), so a file rejected for an unrelated reason (a typo in the test) fails too.
+# tests/lang/valid/*.xml, the xml examples of docs/scene-language.md) and reject every scene
+# of the bad-scene corpus that tests/bad/cases.txt marks with an "xmllint" line.
 # Run by CTest as: bash schema_validate.sh <lucent-binary> <source-dir>
 set -u
 
@@ -69,31 +68,36 @@ if [ "$doc_blocks" -lt 10 ]; then
   failures=$((failures + 1))
 fi
 
-bad_files=$(find "$src/tests/lang/schema/bad" -name '*.xml' -type f | sort)
-for f in $bad_files; do
-  expect=$(sed -n 's/^<!-- expect: \(.*\) -->$/\1/p' "$f" | head -n 1)
-  if [ -z "$expect" ]; then
-    echo "NO EXPECT LINE: ${f#$src/}"
+# The bad scenes the schema must reject: the "xmllint | scenes/X.xml | TEXT" lines of the
+# one bad-scene corpus, each rejected for the reason TEXT names (a substring of xmllint's
+# message), so a file rejected for an unrelated reason (a typo in the test) fails too.
+while IFS= read -r line; do
+  case "$line" in "xmllint | "*) ;; *) continue ;; esac
+  rest=${line#xmllint | }
+  file="$src/tests/bad/${rest%% | *}"
+  expect=${rest#* | }
+  if [ ! -f "$file" ]; then
+    echo "NO SUCH FILE: ${file#$src/}"
     failures=$((failures + 1))
     continue
   fi
-  out=$(xmllint --noout --schema "$xsd" "$f" 2>&1)
+  out=$(xmllint --noout --schema "$xsd" "$file" 2>&1)
   status=$?
   if [ $status -eq 0 ]; then
-    echo "ACCEPTED (should be rejected): ${f#$src/}"
+    echo "ACCEPTED (should be rejected): ${file#$src/}"
     failures=$((failures + 1))
   elif [ $status -ne 3 ] && [ $status -ne 4 ]; then
     echo "$out"
-    echo "NOT A VALIDATION ERROR (xmllint status $status): ${f#$src/}"
+    echo "NOT A VALIDATION ERROR (xmllint status $status): ${file#$src/}"
     failures=$((failures + 1))
   elif ! grep -qF -- "$expect" <<<"$out"; then
     echo "$out"
-    echo "REJECTED FOR ANOTHER REASON (expected \"$expect\"): ${f#$src/}"
+    echo "REJECTED FOR ANOTHER REASON (expected \"$expect\"): ${file#$src/}"
     failures=$((failures + 1))
   else
     rejected=$((rejected + 1))
   fi
-done
+done <"$src/tests/bad/cases.txt"
 
 # Guard against a vacuous pass (files moved, globs matching nothing).
 if [ -z "$valid_files" ]; then
