@@ -1,4 +1,5 @@
 #include "pov_geometry.h"
+#include "pov_coincident.h"
 #include "scenegraph/shape_registry.h"
 
 #include "pov_smooth_normals.h"
@@ -87,6 +88,7 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
         for (const auto& c : node.children) writeNode(*c, m, material, false, out);
         return;
       }
+      warnCoincidentSurfaces(node, issues_);
       out.open(csgKeyword(node.kind), "<" + node.element + "> " + node.loc.str());
       // A union keeps every operand's surfaces, each its own object to POV-Ray as to
       // Lucent: only the solid operations share one interior (see the header).
