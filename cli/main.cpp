@@ -113,9 +113,11 @@ bool checkCommandName(int argc, char** argv) {
   for (std::string_view c : kCommands)
     if (c == argv[1]) return true;
   std::string hint = didYouMean(argv[1], kCommands);
-  fmt::print(stderr, "lucent: error: unknown command '{}'{}; the commands are render, check, "
-                     "export-pov and compare (lucent --help)\n",
-             argv[1], hint);
+  std::string list;  // "render, check, ... and schema", from the one list of commands
+  for (size_t i = 0; i < kCommands.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == kCommands.size() ? " and " : ", ") + std::string(kCommands[i]);
+  fmt::print(stderr, "lucent: error: unknown command '{}'{}; the commands are {} (lucent --help)\n",
+             argv[1], hint, list);
   return false;
 }
 
