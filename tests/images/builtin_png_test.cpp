@@ -2,6 +2,7 @@
 // or pixels written both ways decode, through OpenImageIO, to the same values, bit depth
 // and colour space, and carry the same chunks; and the built-in read-back check refuses
 // what is not complete.
+#include "../temp_dir.h"
 #include "images/builtin/builtin_images.h"
 #include "images/image_plugin.h"
 #include "lang/parser.h"
@@ -22,23 +23,10 @@
 
 using namespace lucent;
 namespace fs = std::filesystem;
+using lucent::test::TempDir;
 
 namespace {
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    static int counter = 0;
-    path = fs::temp_directory_path() /
-           ("lucent-builtin-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-};
 
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -142,7 +130,7 @@ std::vector<uint16_t> rampWords(size_t n) {
 
 TEST_CASE("a render written as PNG by the built-in writer and by OpenImageIO decodes the same",
           "[images][builtin]") {
-  TempDir dir;
+  TempDir dir("builtin");
   const Image image = renderScene();
   writeImageFile(image, dir.file("builtin.png"));
   writeImageFile(image, dir.file("plugin.png"), ImageWriter::Plugin);
@@ -164,7 +152,7 @@ TEST_CASE("a render written as PNG by the built-in writer and by OpenImageIO dec
 
 TEST_CASE("a render written as PPM by the built-in writer is OpenImageIO's file byte for byte",
           "[images][builtin]") {
-  TempDir dir;
+  TempDir dir("builtin");
   const Image image = renderScene();
   writeImageFile(image, dir.file("builtin.ppm"));
   writeImageFile(image, dir.file("plugin.ppm"), ImageWriter::Plugin);
@@ -177,7 +165,7 @@ TEST_CASE("a render written as PPM by the built-in writer is OpenImageIO's file 
 
 TEST_CASE("8- and 16-bit, sRGB and linear, grey and RGB PNGs: built-in and OpenImageIO agree",
           "[images][builtin]") {
-  TempDir dir;
+  TempDir dir("builtin");
   const int width = 37, height = 11;  // odd sizes: no row padding hides a stride error
   for (StoredType type : {StoredType::UInt8, StoredType::UInt16})
     for (const char* space : {"sRGB", "Linear"})
@@ -242,7 +230,7 @@ TEST_CASE("the built-in writers leave the rest to OpenImageIO", "[images][builti
 
 TEST_CASE("the built-in read-back check refuses a truncated or damaged file",
           "[images][builtin]") {
-  TempDir dir;
+  TempDir dir("builtin");
   const Image image = renderScene();
   std::vector<uint8_t> bytes(image.pixels.size() * 3);
   for (size_t i = 0; i < image.pixels.size(); ++i)
@@ -292,7 +280,7 @@ TEST_CASE("the built-in read-back check refuses a truncated or damaged file",
 }
 
 TEST_CASE("a built-in write that fails says at which step and why", "[images][builtin]") {
-  TempDir dir;
+  TempDir dir("builtin");
   std::vector<uint8_t> bytes(4 * 3 * 3, 128);
   ImageToWrite file;
   file.width = 4;

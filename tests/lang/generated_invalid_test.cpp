@@ -1,5 +1,6 @@
 // Invalid scenes too large or too environment-dependent for data files: hostile nesting,
 // long include chains, symbolic links that leave the scene's folder, unreadable files.
+#include "../temp_dir.h"
 #include "lang/parser.h"
 
 #include <catch2/catch.hpp>
@@ -11,29 +12,11 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
+using lucent::test::TempDir;
 using namespace lucent;
 
 namespace {
 
-// A fresh folder under the system temp folder, removed at the end of the test.
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name) {
-    path = fs::temp_directory_path() / ("lucent-lang-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  fs::path write(const std::string& name, const std::string& text) const {
-    fs::path p = path / name;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p) << text;
-    return p;
-  }
-};
 
 std::string messages(const ParseResult& r) {
   std::string all;

@@ -64,10 +64,10 @@ const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
 
 TEST_CASE("missing, empty, folder and unknown-format paths are refused", "[mesh]") {
   TempDir dir;
-  CHECK(refusal(dir.path("nothing.obj")) == "the file does not exist");
+  CHECK(refusal(dir.file("nothing.obj")) == "the file does not exist");
   CHECK(refusal(dir.write("empty.ply", "")) == "the file is empty");
-  std::filesystem::create_directory(dir.path("folder.obj"));
-  CHECK(refusal(dir.path("folder.obj")) == "this is a folder, not a file");
+  std::filesystem::create_directory(dir.file("folder.obj"));
+  CHECK(refusal(dir.file("folder.obj")) == "this is a folder, not a file");
   CHECK(refusal(dir.write("model.3ds", "x")) == "unknown mesh format '.3ds'; expected .obj, .ply, .off or .stl");
   CHECK(refusal(dir.write("model", "x")) == "the file name has no extension; expected .obj, .ply, .off or .stl");
 }

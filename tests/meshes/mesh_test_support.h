@@ -2,6 +2,7 @@
 // MeshData computed independently of CGAL (signed volume, closedness by edge pairing).
 #pragma once
 
+#include "../temp_dir.h"
 #include "primitives/mesh_data.h"
 
 #include <catch2/catch.hpp>
@@ -71,31 +72,6 @@ inline void requireWellFormed(const MeshData& m) {
   if (m.closed) REQUIRE(edgesBalanceByPosition(m));
 }
 
-// A fresh folder under the system temporary folder, removed with everything in it.
-class TempDir {
- public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("lucent-mesh-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  std::string write(const std::string& name, const std::string& bytes) const {
-    const std::string file = (path_ / name).string();
-    std::ofstream(file, std::ios::binary) << bytes;
-    return file;
-  }
-  std::string path(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
+using lucent::test::TempDir;
 
 }  // namespace lucent::meshtest

@@ -1,6 +1,7 @@
 // Image files: the values each format stores, held to references independent of Lucent's
 // encoder (the sRGB formula written out here, a PPM read byte by byte, EXR's exact floats),
 // and failures that leave old files intact.
+#include "../temp_dir.h"
 #include "render/image_io.h"
 
 #include <catch2/catch.hpp>
@@ -18,25 +19,10 @@
 
 using namespace lucent;
 namespace fs = std::filesystem;
+using lucent::test::TempDir;
 
 namespace {
 
-// A fresh folder per test case, removed afterwards.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    static int counter = 0;
-    path = fs::temp_directory_path() /
-           ("lucent-io-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-  size_t entries() const { return static_cast<size_t>(std::distance(fs::directory_iterator(path), {})); }
-};
 
 // Values spanning the range, including out-of-range ones the 8-bit formats clamp.
 Image testImage() {
@@ -106,7 +92,7 @@ TEST_CASE("the sRGB reference of this test reproduces POV-Ray's 8-bit table", "[
 }
 
 TEST_CASE("PPM stores POV-Ray's 8-bit sRGB encoding, byte for byte", "[render][io]") {
-  TempDir dir;
+  TempDir dir("io");
   Image img = testImage();
   writeImageFile(img, dir.file("a.ppm"));
   Ppm ppm = readPpm(dir.file("a.ppm"));
@@ -126,7 +112,7 @@ TEST_CASE("PPM stores POV-Ray's 8-bit sRGB encoding, byte for byte", "[render][i
 }
 
 TEST_CASE("PNG stores the same 8-bit sRGB codes as decoded by OpenImageIO", "[render][io]") {
-  TempDir dir;
+  TempDir dir("io");
   Image img = testImage();
   writeImageFile(img, dir.file("a.png"));
   Image back = readImageFile(dir.file("a.png"), PixelDecoding::AsStored);
@@ -146,7 +132,7 @@ TEST_CASE("PNG stores the same 8-bit sRGB codes as decoded by OpenImageIO", "[re
 
 TEST_CASE("EXR keeps linear float values exactly, HDR to RGBE precision, TIFF in 16 bits",
           "[render][io]") {
-  TempDir dir;
+  TempDir dir("io");
   Image img = testImage();
   writeImageFile(img, dir.file("a.exr"));
   Image exr = readImageFile(dir.file("a.exr"));
@@ -175,7 +161,7 @@ TEST_CASE("EXR keeps linear float values exactly, HDR to RGBE precision, TIFF in
 
 TEST_CASE("JPEG stores sRGB codes within its compression error", "[render][io]") {
   // A flat image: JPEG's blocks reproduce a constant to within a code value or two.
-  TempDir dir;
+  TempDir dir("io");
   Image flat(16, 16);
   for (Color& p : flat.pixels) p = Color(0.18f, 0.5f, 0.001f);
   writeImageFile(flat, dir.file("a.jpg"));
@@ -190,7 +176,7 @@ TEST_CASE("JPEG stores sRGB codes within its compression error", "[render][io]")
 
 TEST_CASE("a write that fails leaves the existing file untouched and no temporary behind",
           "[render][io]") {
-  TempDir dir;
+  TempDir dir("io");
   const std::string out = dir.file("keep.png");
   writeImageFile(testImage(), out);
   const std::string before = slurp(out);
@@ -225,7 +211,7 @@ TEST_CASE("a write that fails leaves the existing file untouched and no temporar
 }
 
 TEST_CASE("a successful write replaces the old file completely", "[render][io]") {
-  TempDir dir;
+  TempDir dir("io");
   const std::string out = dir.file("img.exr");
   writeImageFile(Image(3, 3), out);
   Image bigger(9, 4);
