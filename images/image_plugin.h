@@ -40,13 +40,19 @@ struct ImageHeader {
   int alphaChannel = -1;     // the alpha channel's index, or -1
   std::string colorSpace;    // OpenImageIO's "oiio:ColorSpace" (empty if the file says none)
 
-  // Does the file say its values are sRGB-encoded (in any letter case)?
-  bool saysSrgb() const {
-    static const char kSrgb[] = "srgb";
-    if (colorSpace.size() != sizeof(kSrgb) - 1) return false;
-    for (size_t i = 0; i < colorSpace.size(); ++i)
-      if (std::tolower(static_cast<unsigned char>(colorSpace[i])) != kSrgb[i]) return false;
-    return true;
+  // Does the file say its values are gamma-encoded as sRGB's are (in any letter case)?
+  // OpenImageIO labels every PPM "Rec709": Netpbm's samples are gamma-encoded, and Lucent
+  // writes its PPMs sRGB-encoded, so they are decoded as sRGB, as 8-bit files that say
+  // nothing are.
+  bool saysSrgb() const { return colorSpaceIs("srgb") || colorSpaceIs("rec709"); }
+
+ private:
+  bool colorSpaceIs(const char* lower) const {
+    size_t i = 0;
+    for (; lower[i]; ++i)
+      if (i >= colorSpace.size() || std::tolower(static_cast<unsigned char>(colorSpace[i])) != lower[i])
+        return false;
+    return i == colorSpace.size();
   }
 };
 

@@ -160,3 +160,18 @@ TEST_CASE("8-bit sRGB image textures are decoded to linear", "[render][texture]"
   CHECK(c.b == Approx(0.000911).margin(1e-6));
   std::filesystem::remove(path);
 }
+
+TEST_CASE("8-bit PPM image textures are decoded to linear like sRGB PNGs", "[render][texture]") {
+  // OpenImageIO labels a PPM "Rec709"; its codes 188, 124 and 3 must decode as the PNG's
+  // above (IEC 61966-2-1, worked out by hand), not be taken as linear values.
+  const std::string ppm = std::string("P6\n1 1\n255\n") + char(188) + char(124) + char(3);
+  auto path = (std::filesystem::temp_directory_path() /
+               ("lucent-tex-" + std::to_string(::getpid()) + ".ppm")).string();
+  std::ofstream(path, std::ios::binary) << ppm;
+  ImageMap map(path);
+  Color c = map.lookup(Vec2(0.5), Vec2(1.0));
+  CHECK(c.r == Approx(0.502886).margin(1e-5));
+  CHECK(c.g == Approx(0.201556).margin(1e-5));
+  CHECK(c.b == Approx(0.000911).margin(1e-6));
+  std::filesystem::remove(path);
+}
