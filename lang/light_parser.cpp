@@ -116,7 +116,7 @@ void parseLight(ElementReader& r) {
         }
       }
       light.jitter = r.boolean("jitter", light.jitter);
-      // Levels of forced subdivision; a 1024-point axis is fully split after 11, so larger
+      // Levels of forced subdivision; a 1024-point axis is fully split within 10, so larger
       // values are all alike and are clamped to fit an int.
       if (r.has("adaptive")) {
         long long n = r.integer("adaptive", -1, 0);
