@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace lucent {
 
 namespace {
@@ -19,7 +21,7 @@ const std::vector<std::string_view>& typeAttributes(LightType t) {
   static const std::vector<std::string_view> point{"position", "attenuation"},
       directional{"direction"},
       spot{"position", "attenuation", "direction", "look-at", "angle", "inner"},
-      area{"position", "attenuation", "u", "v", "samples", "jitter"};
+      area{"position", "attenuation", "u", "v", "samples", "jitter", "adaptive"};
   switch (t) {
     case LightType::Point: return point;
     case LightType::Directional: return directional;
@@ -114,6 +116,12 @@ void parseLight(ElementReader& r) {
         }
       }
       light.jitter = r.boolean("jitter", light.jitter);
+      // Levels of forced subdivision; a 1024-point axis is fully split within 10, so larger
+      // values are all alike and are clamped to fit an int.
+      if (r.has("adaptive")) {
+        long long n = r.integer("adaptive", -1, 0);
+        if (n >= 0) light.adaptive = static_cast<int>(std::min(n, 1LL << 20));
+      }
       break;
     }
     case LightType::Point: break;

@@ -110,12 +110,17 @@ void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues&
     if (light.type == LightType::Area) {
       out.line(fmt::format("area_light {}, {}, {}, {}", povVector(light.u), povVector(light.v),
                            light.samplesU, light.samplesV));
+      // Lucent's adaptive light is POV-Ray's: the same corners, test and quadrant averages.
+      if (light.adaptive) out.line(fmt::format("adaptive {}", *light.adaptive));
       if (light.jitter) {
         out.line("jitter");
         issues.warning(light.loc, "area light: jitter is random in POV-Ray and a fixed hash in "
                                   "Lucent; the noise differs");
       }
-      if (!povAveragesUniformly(light.samplesU) || !povAveragesUniformly(light.samplesV))
+      // Without `adaptive` POV-Ray subdivides fully (its default level is 100), with its
+      // recursive weights; Lucent then averages plainly.
+      if (!light.adaptive &&
+          (!povAveragesUniformly(light.samplesU) || !povAveragesUniformly(light.samplesV)))
         issues.warning(light.loc,
                        fmt::format("area light: POV-Ray weights a {}x{} sample grid unevenly "
                                    "(edge samples count less); it matches Lucent's plain "

@@ -1,5 +1,6 @@
 #include "tracer.h"
 
+#include "adaptive_area.h"
 #include "optics.h"
 #include "sampling.h"
 #include "spawn.h"
@@ -227,9 +228,7 @@ Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightI
     return shadowRay(spawnRay(s, in.toLight, settings_.epsilon));
   const ShadowRays rays(s, settings_.epsilon);
   const std::vector<Vec3>& fixed = fixedTargets_[lightIndex];
-  const int count = shadowSampleCount(light);
-  Color sum(0.0f);
-  for (int k = 0; k < count; ++k) {
+  auto sampleRay = [&](int k) {
     Vec3 target;
     if (!fixed.empty()) {
       target = fixed[k];
@@ -241,8 +240,18 @@ Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightI
                   hashToUnit(seed.x, seed.y, path, 2 * which + 1));
       target = lightSamplePoint(light, k, jitter);
     }
-    sum += shadowRay(rays.to(target));
+    return shadowRay(rays.to(target));
+  };
+  if (light.type == LightType::Area && light.adaptive) {
+    // Its grid-point memo is reused from one estimate to the next (no allocation per point).
+    thread_local AdaptiveAreaSampler sampler;
+    const int nu = std::max(light.samplesU, 2), nv = std::max(light.samplesV, 2);
+    return sampler.average(nu, nv, *light.adaptive, in.radiance,
+                           [&](int a, int b) { return sampleRay(b * nu + a); });
   }
+  const int count = shadowSampleCount(light);
+  Color sum(0.0f);
+  for (int k = 0; k < count; ++k) sum += sampleRay(k);
   return sum / static_cast<float>(count);
 }
 

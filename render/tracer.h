@@ -54,7 +54,8 @@ class Tracer {
   Color directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
                     const Material& m, const MediaStack& media, PathSeed& seed,
                     RayStats& stats) const;
-  // A_shadow of one light at s: the transmittance averaged over the light's samples.
+  // A_shadow of one light at s: the transmittance averaged over the light's samples
+  // (an adaptive area light: AdaptiveAreaSampler's estimate of it).
   Color shadowFactor(const Light& light, uint32_t lightIndex, const LightIncidence& in,
                      const SurfaceInfo& s, const MediaStack& media, const PathSeed& seed,
                      RayStats& stats) const;

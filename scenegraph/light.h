@@ -5,6 +5,8 @@
 
 #include "primitives/math.h"
 
+#include <optional>
+
 namespace lucent {
 
 enum class LightType { Point, Directional, Spot, Area };
@@ -30,6 +32,10 @@ struct Light {
   int samplesU = 4;
   int samplesV = 4;
   bool jitter = false;
+  // POV-Ray's `adaptive N`: trace the grid's corners and subdivide where they differ, with
+  // at least N forced levels, combining by recursive quadrant averages. Absent: every grid
+  // point is traced and the plain average taken.
+  std::optional<int> adaptive;
 
   Color radiance() const { return color * static_cast<float>(intensity); }
 };

@@ -221,6 +221,8 @@ TEST_CASE("lang: lights: types, defaults, normalised directions, spot look-at, a
   CHECK(area.samplesU == 3);  // one number sets both
   CHECK(area.samplesV == 3);
   CHECK(area.jitter);
+  CHECK_FALSE(area.adaptive);  // absent: every grid point, plainly averaged
+  CHECK(s->lights[5].adaptive == 3);
   CHECK(s->lights[5].samplesU == 5);
   CHECK(s->lights[5].samplesV == 2);
   CHECK(s->lights[5].color == Color(0.5f));

@@ -120,6 +120,22 @@ TEST_CASE("area lights keep their grid, uneven POV-Ray weights are warned about"
         "per side\n");
 }
 
+TEST_CASE("an adaptive area light is POV-Ray's adaptive, whose weights it shares",
+          "[povray][lights]") {
+  Exported e = exportScene(
+      R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 1" samples="5 9" adaptive="2"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.has("  area_light <2, 0, 0>, <0, 0, 1>, 5, 9\n  adaptive 2\n"));
+  CHECK(e.pov.issues.empty());  // no warning about uneven weights: they are the definition
+
+  Exported zero = exportScene(
+      R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 1" samples="4" adaptive="0"/>)XML");
+  CHECK(zero.has("  area_light <2, 0, 0>, <0, 0, 1>, 4, 4\n  adaptive 0\n"));
+  Exported plain = exportScene(
+      R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 1" samples="4"/>)XML");
+  CHECK_FALSE(plain.has("adaptive"));
+}
+
 TEST_CASE("a light without shadows is shadowless, with a warning when highlights exist",
           "[povray][lights]") {
   Exported plain = exportScene(R"XML(<light position="0 5 0" shadows="false"/>

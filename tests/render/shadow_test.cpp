@@ -114,6 +114,35 @@ TEST_CASE("area light: the shadow factor is the fraction of grid samples that se
   CHECK(f.origin().r == Approx(6.0 / 9.0).epsilon(1e-6));
 }
 
+TEST_CASE("adaptive area light: POV-Ray's weighted mean from fewer shadow rays",
+          "[render][shadow][adaptive]") {
+  Light area;
+  area.type = LightType::Area;
+  area.position = Vec3(0, 10, 0);
+  area.u = Vec3(2, 0, 0);
+  area.v = Vec3(0, 0, 2);
+  area.samplesU = 9;
+  area.samplesV = 9;  // grid points x = -1 + a/4, a = 0..8
+  area.adaptive = 0;
+  Floor f(area);
+  RayStats stats;
+  CHECK(f.origin(&stats) == Color(1.0f));
+  CHECK(stats.shadow == 4);  // nothing in the way: the corners agree
+  // A blocker over x > 0.1 at height 5 hides the points with x/2 > 0.1, a >= 5.
+  Material opaque;
+  addShape(f.scene, BoxSpec{Vec3(0.1, 5, -50), Vec3(50, 6, 50)}, addMaterial(f.scene, opaque));
+  // Trapezoid weights (1 2 2 2 2 2 2 2 1)/16 of the lit columns 0..4: 9/16.
+  Color c = f.origin(&stats);
+  CHECK(c.r == Approx(9.0 / 16.0).epsilon(1e-6));
+  // Columns 4, 5, 6 around the edge in full, column 0 every 4th row, column 8 every 2nd.
+  CHECK(stats.shadow == 3 * 9 + 3 + 5);
+  // Without adaptive: all 81 points, the plain mean 45/81.
+  f.scene.lights[0].adaptive.reset();
+  c = f.origin(&stats);
+  CHECK(c.r == Approx(45.0 / 81.0).epsilon(1e-6));
+  CHECK(stats.shadow == 81);
+}
+
 TEST_CASE("area light direction and distance are taken from its centre", "[render][shadow]") {
   Light area;
   area.type = LightType::Area;
