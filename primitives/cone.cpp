@@ -93,19 +93,24 @@ bool Cone::solidSpan(const Ray& l, Span& s) const {
       pieces[n][0] = s1, pieces[n][1] = kInf, ++n;
     }
   }
-  // The slab 0 <= z <= height between the end discs.
-  double z0 = -kInf, z1 = kInf;
+  // The slab 0 <= z <= height between the end discs. Its crossings come from the ray as
+  // given, not from the shifted line: shifting the origin by tShift (the apex may be the
+  // cone's length away) rounds its z by ε·tShift, more than the offset that lifts a
+  // secondary ray off a disc near the origin, which could then find the disc it leaves.
+  // t0, t1 are ray parameters; z0, z1 the same in the shifted parameter, to clip with.
+  double t0 = -kInf, t1 = kInf;
   uint32_t p0 = 1, p1 = 2;
-  if (q.d.z == 0.0) {
-    if (q.o.z < 0.0 || q.o.z > height_) return false;
+  if (l.d.z == 0.0) {
+    if (l.o.z < 0.0 || l.o.z > height_) return false;
   } else {
-    z0 = -q.o.z / q.d.z;
-    z1 = (height_ - q.o.z) / q.d.z;
-    if (z0 > z1) {
-      std::swap(z0, z1);
+    t0 = -l.o.z / l.d.z;
+    t1 = (height_ - l.o.z) / l.d.z;
+    if (t0 > t1) {
+      std::swap(t0, t1);
       std::swap(p0, p1);
     }
   }
+  const double z0 = t0 - q.tShift, z1 = t1 - q.tShift;
   // Within the slab only the real nappe lies (the mirrored one is beyond the apex), and
   // the truncated cone is convex, so at most one piece survives the clipping (two only
   // when both merely touch the apex; keep the longer).
@@ -118,8 +123,8 @@ bool Cone::solidSpan(const Ray& l, Span& s) const {
     if (z1 < hi) { hi = z1; partHi = p1; }
     if (!(lo <= hi) || hi - lo <= bestLen) continue;
     bestLen = hi - lo;
-    s.tIn = q.tShift + lo;
-    s.tOut = q.tShift + hi;
+    s.tIn = partLo != 0 ? t0 : q.tShift + lo;
+    s.tOut = partHi != 0 ? t1 : q.tShift + hi;
     s.partIn = partLo;
     s.partOut = partHi;
     found = true;

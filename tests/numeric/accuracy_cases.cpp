@@ -395,15 +395,15 @@ std::vector<CaseResult> secondaryRayCases(double effort) {
   warp[1][0] += 0.4;
   const int n = count(1500, effort);
   std::vector<CaseResult> out;
-  const char* names[] = {"sphere", "cylinder", "cone", "box", "torus"};
-  for (int which = 0; which < 5; ++which) {
+  const std::vector<Subject> units = solids(1.0, Vec3(0.0));  // named as the cases are
+  for (size_t which = 0; which < units.size(); ++which) {
     // No error bounds: a crossing just ahead of the origin (a short chord near a rim) has
     // a t of any smallness, whose relative error is the origin's own rounding over it.
-    CaseResult r = newCase(group, names[which], 0.0, 0.0);
+    CaseResult r = newCase(group, units[which].name, 0.0, 0.0);
     Rng rng(1300 + which);
     std::vector<Subject> subjects;
     for (const Setting& st : settings) subjects.push_back(solids(st.k, st.at)[which]);
-    Subject unit = solids(1.0, Vec3(0.0))[which];
+    const Subject& unit = units[which];
     subjects.push_back(instanced(unit.name + " (warped instance)", unit.shape, unit.ref, warp));
     for (const Subject& s : subjects) {
       for (int i = 0, tries = 0; i < n && tries < 20 * n; ++tries) {
