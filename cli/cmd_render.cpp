@@ -159,9 +159,9 @@ int runRender(const RenderOptions& options, const CommonOptions& common) {
     return kRuntimeFailure;
   }
 
-  // The world is gone and the scene goes too before the image is written: writing loads
-  // OpenImageIO (images/image_plugin.h, 130 MB of libraries), and the two need not be
-  // in memory at once.
+  // The world is gone and the scene goes too before the image is written: writing an EXR,
+  // TIFF, HDR or JPEG loads OpenImageIO (images/image_plugin.h, 130 MB of libraries), and
+  // the two need not be in memory at once. (PNG and PPM are written without it.)
   const int width = scene.render.width, height = scene.render.height;
   loaded.scene.reset();
   // glibc keeps freed blocks for reuse (in each thread's arena, and below the top of
