@@ -217,13 +217,9 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
 Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightIncidence& in,
                            const SurfaceInfo& s, const MediaStack& media, const PathSeed& seed,
                            RayStats& stats) const {
-  // An opaque scene asks first the object that blocked this light's last shadow ray.
-  World::ObjectId* lastBlocker =
-      anyTransmissive_ ? nullptr
-                       : &stats.shadowCache.slot(cacheOwner_, lightIndex, lights_.size());
-  auto shadowRay = [&](const Ray& ray) {
-    return lastBlocker ? visibility(ray, *lastBlocker, stats) : transmittance(ray, media, stats);
-  };
+  // The object that blocked this light's last shadow ray is asked first.
+  World::ObjectId& lastBlocker = stats.shadowCache.slot(cacheOwner_, lightIndex, lights_.size());
+  auto shadowRay = [&](const Ray& ray) { return transmittance(ray, media, lastBlocker, stats); };
   if (light.type == LightType::Directional)
     return shadowRay(spawnRay(s, in.toLight, settings_.epsilon));
   const ShadowRays rays(s, settings_.epsilon);
@@ -255,32 +251,38 @@ Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightI
   return sum / static_cast<float>(count);
 }
 
-Color Tracer::visibility(const Ray& ray, World::ObjectId& lastBlocker, RayStats& stats) const {
-  ++stats.shadow;
+bool Tracer::blockedByOpaque(const Ray& ray, World::ObjectId& lastBlocker,
+                             RayStats& stats) const {
   ++stats.queries;
-  const World::ObjectId blocker = world_.occluder(ray, lastBlocker);
+  const World::ObjectId blocker = world_.opaqueOccluder(ray, lastBlocker);
   // Unblocked: the slot keeps its object, the next ray may need it.
-  if (blocker == World::kNoObject) return Color(1.0f);
+  if (blocker == World::kNoObject) return false;
   if (blocker == lastBlocker)
     ++stats.shadowCacheHits;
   else
     lastBlocker = blocker;
-  return Color(0.0f);
+  return true;
 }
 
 Color Tracer::transmittance(Ray ray, MediaStack media, RayStats& stats) const {
+  World::ObjectId none = World::kNoObject;
+  return transmittance(ray, std::move(media), none, stats);
+}
+
+Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBlocker,
+                            RayStats& stats) const {
   ++stats.shadow;
-  if (!anyTransmissive_) {
-    ++stats.queries;
-    return world_.occluded(ray) ? Color(0.0f) : Color(1.0f);
-  }
+  // Any opaque object in the way blocks the light, whatever else the ray crosses.
+  if (blockedByOpaque(ray, lastBlocker, stats)) return Color(0.0f);
+  if (!anyTransmissive_) return Color(1.0f);
+  // Only the objects that may transmit remain: their surfaces in order.
   Color t(1.0f);
   const double speed = glm::length(ray.d);  // world distance per unit of t
   double tPrevious = ray.tmin;
   for (;;) {
     Hit hit;
     ++stats.queries;
-    if (!world_.intersect(ray, hit)) break;
+    if (!world_.intersectTransmissive(ray, hit)) break;
     const Material& m = world_.material(hit);
     if (!m.isTransmissive()) return Color(0.0f);
     t *= m.transmissive;

@@ -42,10 +42,20 @@ class Tracer {
   MediaStack mediaAt(const Vec3& p) const;
 
   // Fraction of light that passes along the shadow ray (t in (ray.tmin, ray.tmax)),
-  // which starts in `media`: 0 at the first opaque surface, times k_t at every
+  // which starts in `media`: 0 if it crosses an opaque surface, else k_t for every
   // transparent one, times exp(−absorption·d) for each stretch inside an absorbing solid.
   // It uses no shadow cache.
   Color transmittance(Ray ray, MediaStack media, RayStats& stats) const;
+  // transmittance() with this light's slot of the tile's shadow cache (POV-Ray's): the
+  // opaque object that blocked the light's last shadow ray is tested first, and the new
+  // blocker stored there. The opaque objects are asked first, by one any-hit query
+  // (World::opaqueOccluder); only a ray that none blocks walks the surfaces of the
+  // objects that may transmit, in order (World::intersectTransmissive), as a scene
+  // without opaque objects would. The answer is the walk's through every object, except
+  // that an opaque surface crossed at the very same t as a transparent one now blocks
+  // (the walk through every object resumed beyond that t and could skip it).
+  Color transmittance(Ray ray, MediaStack media, World::ObjectId& lastBlocker,
+                      RayStats& stats) const;
 
  private:
   Color trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed& seed,
@@ -59,16 +69,8 @@ class Tracer {
   Color shadowFactor(const Light& light, uint32_t lightIndex, const LightIncidence& in,
                      const SurfaceInfo& s, const MediaStack& media, const PathSeed& seed,
                      RayStats& stats) const;
-  // transmittance() of a scene without transmissive materials, 1 or 0: one any-hit
-  // query that tests `lastBlocker` (this light's slot in the tile's shadow cache) first
-  // and stores the new blocker there.
-  //
-  // With any transmissive material in the scene, shadow rays walk their surfaces in
-  // order (transmittance()) and the cache is not used. A cached opaque blocker would
-  // answer 0 for every ray it blocks, as the walk does, except where an opaque and a
-  // transparent surface are crossed at the very same t: the walk resumes beyond that t
-  // and may skip the opaque one. That would not be an order change only, so it is not done.
-  Color visibility(const Ray& ray, World::ObjectId& lastBlocker, RayStats& stats) const;
+  // Whether an opaque object blocks the ray (one any-hit query; updates lastBlocker).
+  bool blockedByOpaque(const Ray& ray, World::ObjectId& lastBlocker, RayStats& stats) const;
   const Material* materialOf(const Shape& object) const;
 
   const World& world_;
@@ -80,7 +82,7 @@ class Tracer {
   // them. Empty for a jittered area light, whose targets differ per point.
   std::vector<std::vector<Vec3>> fixedTargets_;
   TextureSet textures_;
-  bool anyTransmissive_ = false;  // else shadow rays ask the cheaper any-hit question
+  bool anyTransmissive_ = false;  // else shadow rays ask only the any-hit question
   bool anyAbsorbing_ = false;     // else shadow rays need no media bookkeeping
   // What this tracer's entries in a ShadowCache carry (unique in the process). Copies
   // share it, as they share the world whose objects the cached ids name.

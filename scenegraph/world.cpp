@@ -20,6 +20,12 @@ namespace {
 // SAH cost of testing a sphere kept in the BVH's leaves, relative to a node visit.
 constexpr double kInlineSphereCost = 0.2;
 
+// The walk of a shadow ray through the objects that may transmit tests each in turn, when
+// they are at most this many, instead of traversing their BVH: they are few (glass
+// spheres and lenses), and the BVH's set-up per ray cost more than the box tests save
+// (docs/performance-history.md, "Figures behind comments in the code").
+constexpr size_t kLinearTransmissive = 4;
+
 bool finiteTransform(const Transform& t) {
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r)
@@ -35,6 +41,17 @@ CsgOp csgOpOf(NodeKind k) {
     case NodeKind::Intersection: return CsgOp::Intersection;
     default: return CsgOp::Difference;
   }
+}
+
+// Whether a leaf of the object has a transmissive material.
+bool transmitsLight(const Shape& object, const std::vector<Material>& materials) {
+  if (const auto* csg = dynamic_cast<const CsgNode*>(&object)) {
+    for (const auto& c : csg->children())
+      if (transmitsLight(*c, materials)) return true;
+    return false;
+  }
+  const auto* leaf = dynamic_cast<const Instance*>(&object);
+  return leaf && materials[leaf->tag()].isTransmissive();
 }
 
 // The node's world transform below `parentWorld`; throws what building the world refuses.
@@ -111,12 +128,12 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
     if (box.isBounded() || box.empty())
       bounded.push_back(o.get());  // an empty box is left out by the BVH itself
     else
-      direct_.push_back(o.get());
+      all_.direct.push_back(o.get());
   }
   if (bounded.size() == 1 && !bounded[0]->bounds().empty()) {
     // A lone object (one mesh, say) culls rays itself: a tree above it would only add
     // a box test and a traversal per ray.
-    direct_.push_back(bounded[0]);
+    all_.direct.push_back(bounded[0]);
     bounded.clear();
   }
 
@@ -157,20 +174,42 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   // larger leaves and fewer nodes to fetch (the value is measured in
   // docs/performance-history.md, "Figures behind comments in the code"). Other objects
   // keep the default cost 1; a mixed world takes the mean.
-  Bvh::Options options;
-  if (!bounded.empty())
-    options.itemCost = float((kInlineSphereCost * double(inlineSpheres_) +
-                              double(bounded.size() - inlineSpheres_)) /
-                             double(bounded.size()));
-  bvh_ = Bvh(bounded.size(), [&](uint32_t i) { return boxes[i]; }, options);
-  // Keep the leaves in leaf order: the traversal then hands out positions in leaves_.
-  std::vector<uint32_t> order = bvh_.takeOrder();
-  leaves_.reserve(order.size());
-  leafObjects_.reserve(order.size());
-  for (uint32_t i : order) {
-    leaves_.push_back(leafOf[i]);
-    leafObjects_.push_back(bounded[i]);
-  }
+  auto fill = [&](Objects& set, const std::vector<uint32_t>& items) {
+    size_t spheres = 0;
+    for (uint32_t i : items) spheres += leafOf[i].r2 >= 0.0;
+    Bvh::Options options;
+    if (!items.empty())
+      options.itemCost = float((kInlineSphereCost * double(spheres) +
+                                double(items.size() - spheres)) /
+                               double(items.size()));
+    set.bvh = Bvh(items.size(), [&](uint32_t k) { return boxes[items[k]]; }, options);
+    // Keep the leaves in leaf order: the traversal then hands out positions in leaves.
+    std::vector<uint32_t> order = set.bvh.takeOrder();
+    set.leaves.reserve(order.size());
+    set.leafObjects.reserve(order.size());
+    for (uint32_t k : order) {
+      set.leaves.push_back(leafOf[items[k]]);
+      set.leafObjects.push_back(bounded[items[k]]);
+    }
+  };
+  std::vector<uint32_t> every(bounded.size());
+  for (uint32_t i = 0; i < every.size(); ++i) every[i] = i;
+  fill(all_, every);
+
+  // The objects that may transmit, each tested as all_ tests it (one by one, or in a
+  // tree as the same kind of leaf), so that a walk through them finds the same hits.
+  auto mayTransmit = [&](const Shape* o) { return transmitsLight(*o, scene_.materials); };
+  std::vector<uint32_t> clear;
+  for (uint32_t i = 0; i < bounded.size(); ++i)
+    if (mayTransmit(bounded[i])) clear.push_back(i);
+  for (const Shape* o : all_.direct)
+    if (mayTransmit(o)) transmissive_.direct.push_back(o);
+  if (clear.empty() && transmissive_.direct.empty()) return;
+  fill(transmissive_, clear);
+  transmissive_.linearSearch = kLinearTransmissive;
+  transmits_.reserve(all_.direct.size() + all_.leafObjects.size());
+  for (const Shape* o : all_.direct) transmits_.push_back(mayTransmit(o));
+  for (const Shape* o : all_.leafObjects) transmits_.push_back(mayTransmit(o));
 }
 
 namespace {
@@ -183,10 +222,16 @@ inline bool sphereRoots(const Vec3& center, double r2, const Ray& ray, double& t
 
 }  // namespace
 
-bool World::intersect(const Ray& ray, Hit& hit) const {
+bool World::intersect(const Ray& ray, Hit& hit) const { return all_.intersect(ray, hit); }
+
+bool World::intersectTransmissive(const Ray& ray, Hit& hit) const {
+  return transmissive_.intersect(ray, hit);
+}
+
+bool World::Objects::intersect(const Ray& ray, Hit& hit) const {
   Ray r = ray;
   bool found = false;
-  for (const Shape* o : direct_) {
+  for (const Shape* o : direct) {
     if (o->intersect(r, hit)) {
       r.tmax = hit.t;
       found = true;
@@ -194,14 +239,14 @@ bool World::intersect(const Ray& ray, Hit& hit) const {
   }
   // The BVH search starts with tmax already at the nearest direct hit, if any. A sphere
   // hit records only t and its slot; its Instance is looked up once, for the winner
-  // (leafObjects_ is another array: reading it for every closer hit missed the cache).
+  // (leafObjects is another array: reading it for every closer hit missed the cache).
   const uint32_t kNoSlot = ~0u;
   uint32_t sphereSlot = kNoSlot;
   double sphereT = 0.0;
-  bool inTree = bvh_.closest(r, [&](uint32_t i, Ray& rr) {
-    const Leaf& leaf = leaves_[i];
+  auto hitSlot = [&](uint32_t i, Ray& rr) {
+    const Leaf& leaf = leaves[i];
     if (leaf.r2 < 0.0) {
-      if (!leafObjects_[i]->intersect(rr, hit)) return false;
+      if (!leafObjects[i]->intersect(rr, hit)) return false;
       rr.tmax = hit.t;
       sphereSlot = kNoSlot;
       return true;
@@ -219,25 +264,32 @@ bool World::intersect(const Ray& ray, Hit& hit) const {
     sphereSlot = i;
     sphereT = rr.tmax;
     return true;
-  }, [this](uint32_t first, uint32_t count) { prefetchLeaves(first, count); });
+  };
+  bool inTree = false;
+  if (leaves.size() <= linearSearch) {
+    for (uint32_t i = 0; i < leaves.size(); ++i) inTree = hitSlot(i, r) || inTree;
+  } else {
+    inTree = bvh.closest(r, hitSlot,
+                         [this](uint32_t first, uint32_t count) { prefetchLeaves(first, count); });
+  }
   if (sphereSlot != kNoSlot) {
     hit = Hit();
     hit.t = sphereT;
-    hit.shape = leafObjects_[sphereSlot];
+    hit.shape = leafObjects[sphereSlot];
   }
   return found || inTree;
 }
 
-void World::prefetchLeaves(uint32_t first, uint32_t count) const {
-  const char* p = reinterpret_cast<const char*>(leaves_.data() + first);
-  const char* end = reinterpret_cast<const char*>(leaves_.data() + first + count);
+void World::Objects::prefetchLeaves(uint32_t first, uint32_t count) const {
+  const char* p = reinterpret_cast<const char*>(leaves.data() + first);
+  const char* end = reinterpret_cast<const char*>(leaves.data() + first + count);
   // From the cache line holding the first record (the records are 32 bytes, aligned).
   for (p -= reinterpret_cast<uintptr_t>(p) & 63; p < end; p += 64) __builtin_prefetch(p);
 }
 
-bool World::slotOccluded(uint32_t slot, const Ray& ray) const {
-  const Leaf& leaf = leaves_[slot];
-  if (leaf.r2 < 0.0) return leafObjects_[slot]->occluded(ray);
+bool World::Objects::slotOccluded(uint32_t slot, const Ray& ray) const {
+  const Leaf& leaf = leaves[slot];
+  if (leaf.r2 < 0.0) return leafObjects[slot]->occluded(ray);
   ++threadTestCounts[slotOf<SphereSpec>()];
   double t0, t1;
   return sphereRoots(Vec3(leaf.cx, leaf.cy, leaf.cz), leaf.r2, ray, t0, t1) &&
@@ -247,30 +299,46 @@ bool World::slotOccluded(uint32_t slot, const Ray& ray) const {
 bool World::occluded(const Ray& ray) const { return occluder(ray) != kNoObject; }
 
 World::ObjectId World::occluder(const Ray& ray, ObjectId first) const {
-  const auto directCount = static_cast<ObjectId>(direct_.size());
-  if (first != kNoObject &&
-      (first < directCount ? direct_[first]->occluded(ray) : slotOccluded(first - directCount, ray)))
+  return findOccluder<false>(ray, first);
+}
+
+World::ObjectId World::opaqueOccluder(const Ray& ray, ObjectId first) const {
+  if (transmits_.empty()) return occluder(ray, first);
+  return findOccluder<true>(ray, first);
+}
+
+template <bool kOpaqueOnly>
+World::ObjectId World::findOccluder(const Ray& ray, ObjectId first) const {
+  const std::integral_constant<bool, kOpaqueOnly> opaqueOnly;
+  const auto& direct = all_.direct;
+  const auto directCount = static_cast<ObjectId>(direct.size());
+  if (first != kNoObject && !skips(first, opaqueOnly) &&
+      (first < directCount ? direct[first]->occluded(ray)
+                           : all_.slotOccluded(first - directCount, ray)))
     return first;
   // The BVH before the unbounded objects (an any-hit search may take them in any
   // order): a floor plane is tested by every shadow ray and blocks few, and this order
   // made such scenes markedly faster, which was measured, not explained
   // (docs/performance-history.md, "Shadow rays").
   ObjectId found = kNoObject;
-  bvh_.any(ray, [&](uint32_t slot, const Ray& r) {
+  auto blocks = [&](uint32_t slot, const Ray& r) {
     const ObjectId id = directCount + slot;
-    if (id == first || !slotOccluded(slot, r)) return false;  // `first` missed already
+    // `first` missed already
+    if (id == first || skips(id, opaqueOnly) || !all_.slotOccluded(slot, r)) return false;
     found = id;
     return true;
-  }, [this](uint32_t first, uint32_t count) { prefetchLeaves(first, count); });
+  };
+  all_.bvh.any(ray, blocks,
+               [this](uint32_t first, uint32_t count) { all_.prefetchLeaves(first, count); });
   if (found != kNoObject) return found;
   for (ObjectId k = 0; k < directCount; ++k)
-    if (k != first && direct_[k]->occluded(ray)) return k;
+    if (k != first && !skips(k, opaqueOnly) && direct[k]->occluded(ray)) return k;
   return kNoObject;
 }
 
 const Shape* World::object(ObjectId id) const {
   if (id == kNoObject) return nullptr;
-  return id < direct_.size() ? direct_[id] : leafObjects_[id - direct_.size()];
+  return id < all_.direct.size() ? all_.direct[id] : all_.leafObjects[id - all_.direct.size()];
 }
 
 }  // namespace lucent

@@ -8,7 +8,9 @@
 #include "primitives/instance.h"
 #include "primitives/shape.h"
 
+#include <cstdint>
 #include <functional>
+#include <type_traits>
 #include <memory>
 #include <vector>
 
@@ -58,10 +60,23 @@ class World {
   // The object an id names (an Instance or a CSG node), nullptr for kNoObject.
   const Shape* object(ObjectId id) const;
 
+  // For shadow rays in scenes with transmissive materials. An object "may transmit" when
+  // one of its leaves has a transmissive material. opaqueOccluder() is occluder() over
+  // the other objects only: one of them in the way blocks the light whatever else the ray
+  // crosses. intersectTransmissive() is intersect() over the objects that may transmit
+  // only, with the same tests and so the same hits to the last bit: a shadow ray that no
+  // opaque object blocks walks these alone.
+  ObjectId opaqueOccluder(const Ray& ray, ObjectId first = kNoObject) const;
+  bool intersectTransmissive(const Ray& ray, Hit& hit) const;
+  // How many top-level objects may transmit light.
+  size_t transmissiveObjectCount() const {
+    return transmissive_.direct.size() + transmissive_.leafObjects.size();
+  }
+
   // The top-level acceleration structure, for statistics.
-  const Bvh& bvh() const { return bvh_; }
+  const Bvh& bvh() const { return all_.bvh; }
   // The objects tested one by one beside the BVH: unbounded ones, or a lone object.
-  const std::vector<const Shape*>& directObjects() const { return direct_; }
+  const std::vector<const Shape*>& directObjects() const { return all_.direct; }
   // How many of the BVH's objects are spheres kept in world space.
   size_t inlineSphereCount() const { return inlineSpheres_; }
 
@@ -74,22 +89,38 @@ class World {
   const Scene& scene_;
   std::vector<std::unique_ptr<Shape>> objects_;  // top level: instances and CSG nodes
   std::vector<const Instance*> instances_;
-  // One entry per slot of the BVH's leaves, in leaf order, 32 bytes (two to a cache
+  // One entry per slot of a BVH's leaves, in leaf order, 32 bytes (two to a cache
   // line): a sphere in world space (centre and squared radius, r2 >= 0), or r2 < 0 for
-  // any other object, which is tested through leafObjects_.
+  // any other object, which is tested through leafObjects.
   struct alignas(32) Leaf {
     double cx, cy, cz, r2;
   };
-  std::vector<Leaf, CacheLineAllocator<Leaf>> leaves_;
-  std::vector<const Shape*> leafObjects_;  // the same slots: the sphere's Instance, or the object
-  std::vector<const Shape*> direct_;       // never in the BVH
-  size_t inlineSpheres_ = 0;
-  Bvh bvh_;
+  // Objects a search tests: some one by one, the others in a BVH.
+  struct Objects {
+    std::vector<Leaf, CacheLineAllocator<Leaf>> leaves;
+    std::vector<const Shape*> leafObjects;  // the same slots: the sphere's Instance, or the object
+    std::vector<const Shape*> direct;       // never in the BVH
+    Bvh bvh;
+    // intersect() tests the BVH's objects one by one when they are at most this many.
+    size_t linearSearch = 0;
 
-  // Any hit of the object in BVH leaf slot `slot`: the one test every search makes of it.
-  bool slotOccluded(uint32_t slot, const Ray& ray) const;
-  // Asks for the cache lines of leaves_[first, first + count) (Bvh::candidates).
-  void prefetchLeaves(uint32_t first, uint32_t count) const;
+    bool intersect(const Ray& ray, Hit& hit) const;
+    // Any hit of the object in BVH leaf slot `slot`: the one test every search makes of it.
+    bool slotOccluded(uint32_t slot, const Ray& ray) const;
+    // Asks for the cache lines of leaves[first, first + count) (Bvh::candidates).
+    void prefetchLeaves(uint32_t first, uint32_t count) const;
+  };
+  Objects all_;
+  Objects transmissive_;  // the objects of all_ that may transmit, tested as all_ tests them
+  // Per ObjectId of all_: 1 if the object may transmit. Empty in an opaque scene.
+  std::vector<uint8_t> transmits_;
+  size_t inlineSpheres_ = 0;
+
+  // occluder(), skipping the objects that may transmit when kOpaqueOnly.
+  template <bool kOpaqueOnly>
+  ObjectId findOccluder(const Ray& ray, ObjectId first) const;
+  bool skips(ObjectId id, std::true_type) const { return transmits_[id] != 0; }
+  bool skips(ObjectId, std::false_type) const { return false; }
 };
 
 }  // namespace lucent

@@ -3,6 +3,7 @@
 #include "../primitives/random_items.h"
 #include "world_helpers.h"
 
+#include "csg/csg_node.h"
 #include "scenegraph/world.h"
 
 #include <catch2/catch.hpp>
@@ -142,4 +143,95 @@ TEST_CASE("occluder blocks exactly when some object's own test does", "[bvh][wor
     }
   }
   CHECK(blocked > 2000);
+}
+
+namespace {
+
+// Whether a leaf of the object has a transmissive material (as World decides it).
+bool mayTransmit(const Shape& o, const std::vector<Material>& materials) {
+  if (const auto* inst = dynamic_cast<const Instance*>(&o))
+    return materials[inst->tag()].isTransmissive();
+  // The mixed scene's CSG nodes take their material from the node, so every leaf has it.
+  return false;
+}
+
+// mixedScene with every third top-level object made of glass (CSG nodes included: the
+// node's material is inherited by its leaves).
+Scene glassyScene(std::mt19937_64& rng, bool withSpheres) {
+  Scene scene = mixedScene(rng, withSpheres);
+  Material glass;
+  glass.transmissive = Color(0.9f);
+  scene.materials.push_back(glass);
+  const uint32_t glassId = static_cast<uint32_t>(scene.materials.size() - 1);
+  for (size_t i = 0; i < scene.root->children.size(); i += 3)
+    scene.root->children[i]->material = glassId;
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("opaqueOccluder blocks exactly when an opaque object's own test does",
+          "[bvh][world][occluder][glass]") {
+  std::mt19937_64 rng(43);
+  Scene scene = glassyScene(rng, false);
+  World world(scene);
+  // The CSG nodes hold glass when the node does: count the objects that may transmit.
+  size_t glassObjects = 0;
+  for (size_t i = 0; i < scene.root->children.size(); ++i) glassObjects += i % 3 == 0;
+  REQUIRE(world.transmissiveObjectCount() == glassObjects);
+  std::uniform_int_distribution<World::ObjectId> anyId(0, idCount(world) - 1);
+  size_t blockedByGlassOnly = 0, blocked = 0;
+  for (const Ray& ray : segments(rng, 20000)) {
+    bool opaque = false, glass = false;
+    for (size_t i = 0; i < world.objects().size(); ++i) {
+      const Shape& o = *world.objects()[i];
+      bool isGlass = false;
+      if (const auto* csg = dynamic_cast<const CsgNode*>(&o))
+        isGlass = mayTransmit(*csg->children().front(), scene.materials);
+      else
+        isGlass = mayTransmit(o, scene.materials);
+      (isGlass ? glass : opaque) = (isGlass ? glass : opaque) || o.occluded(ray);
+    }
+    const World::ObjectId found = world.opaqueOccluder(ray, anyId(rng));
+    REQUIRE((found != World::kNoObject) == opaque);
+    if (opaque) {
+      ++blocked;
+      REQUIRE(world.object(found)->occluded(ray));
+    }
+    if (glass && !opaque) ++blockedByGlassOnly;
+    // The full search still sees the glass.
+    REQUIRE((world.occluder(ray) != World::kNoObject) == (opaque || glass));
+  }
+  CHECK(blocked > 2000);
+  CHECK(blockedByGlassOnly > 500);
+}
+
+TEST_CASE("intersectTransmissive finds the closest hit among the glass objects, to the bit",
+          "[bvh][world][glass]") {
+  // With spheres: the glass spheres kept in world space must be tested as the full search
+  // tests them, so a ray that meets only glass gets the very hit intersect() gives.
+  std::mt19937_64 rng(44);
+  Scene scene = glassyScene(rng, true);
+  World world(scene);
+  REQUIRE(world.inlineSphereCount() > 0);
+  size_t compared = 0, glassHits = 0;
+  for (const Ray& ray : randomRays(rng, 20000, 10.0)) {
+    Hit all, clear;
+    const bool hitAll = world.intersect(ray, all);
+    const bool hitClear = world.intersectTransmissive(ray, clear);
+    if (hitClear) {
+      ++glassHits;
+      REQUIRE(world.material(clear).isTransmissive());
+      if (hitAll) REQUIRE(all.t <= clear.t);
+    }
+    // Where the nearest hit of all is glass, the glass-only search returns it exactly.
+    if (hitAll && world.material(all).isTransmissive()) {
+      REQUIRE(hitClear);
+      REQUIRE(clear.t == all.t);
+      REQUIRE(clear.shape == all.shape);
+      ++compared;
+    }
+  }
+  CHECK(compared > 1000);
+  CHECK(glassHits > compared);
 }
