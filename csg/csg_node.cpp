@@ -1,6 +1,7 @@
 #include "csg_node.h"
 
 #include "coincidence.h"
+#include "csg_scratch.h"
 
 #include <algorithm>
 #include <array>
@@ -140,10 +141,12 @@ bool CsgNode::closestChildHit(const Ray& ray, Hit& hit) const {
 
 void CsgNode::crossings(const Ray& ray, CrossingList& out) const {
   // Gather every child's crossings, tagged with the child they belong to, in t order.
-  struct Tagged { Crossing c; size_t child; };
-  std::vector<Tagged> all;
-  std::vector<char> in(children_.size(), 0);
-  CrossingList list;
+  using Tagged = CsgScratch::Tagged;
+  const CsgScratchLease scratch;
+  std::vector<Tagged>& all = scratch->all;
+  std::vector<char>& in = scratch->in;
+  in.assign(children_.size(), 0);
+  CrossingList& list = scratch->list;
   // Children whose box the ray misses add no crossings and start outside.
   forEachCandidate(ray, [&](uint32_t i) {
     list.clear();
@@ -189,7 +192,8 @@ void CsgNode::crossings(const Ray& ray, CrossingList& out) const {
 bool CsgNode::intersect(const Ray& ray, Hit& hit) const {
   // A union keeps the surfaces inside other children (as POV-Ray's union does).
   if (op_ == CsgOp::Union || !solid_) return closestChildHit(ray, hit);
-  CrossingList list;
+  const CsgScratchLease scratch;
+  CrossingList& list = scratch->result;
   crossings(ray, list);
   for (const Crossing& c : list.items) {
     if (c.hit.t > ray.tmin && c.hit.t < ray.tmax) {
