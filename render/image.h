@@ -22,6 +22,10 @@ struct Image {
 // sRGB encoding of one linear value, clamped to [0,1] (IEC 61966-2-1), as POV-Ray writes PNGs.
 float srgbEncode(float linear);
 // The 8-bit value POV-Ray stores for a linear value: floor(clamp(sRGB(x))·255 + 0.5).
+// Found in a table of the 255 values where the byte steps up, built once from that
+// formula, so it is the formula's own answer for every float.
 int srgbByte(float linear);
+// The formula itself, computed (for the tests of srgbByte).
+int srgbByteFormula(float linear);
 
 }  // namespace lucent
