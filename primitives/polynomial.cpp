@@ -21,18 +21,38 @@ double evalPolynomialDerivative(const double* c, int n, double x) {
 
 namespace {
 
+// Everything below is written for a degree known when compiling (N), so that the Horner
+// loops unroll; the arithmetic is the same, operation for operation, as for a degree
+// given at run time.
+
+template <int N>
+double evalN(const double* c, double x) {
+  double r = c[N];
+  for (int i = N - 1; i >= 0; --i) r = r * x + c[i];
+  return r;
+}
+
+template <int N>
+double evalDerivativeN(const double* c, double x) {
+  double r = N * c[N];
+  for (int i = N - 1; i >= 1; --i) r = r * x + i * c[i];
+  return r;
+}
+
 // p' and the magnitudes behind its coefficients.
-void derivative(const double* c, const double* cAbs, int n, double* d, double* dAbs) {
-  for (int i = 0; i < n; ++i) {
+template <int N>
+void derivative(const double* c, const double* cAbs, double* d, double* dAbs) {
+  for (int i = 0; i < N; ++i) {
     d[i] = (i + 1) * c[i + 1];
     dAbs[i] = (i + 1) * cAbs[i + 1];
   }
 }
 
-double errorBound(const double* cAbs, int n, double x) {
-  double ax = std::abs(x), r = cAbs[n];
-  for (int i = n - 1; i >= 0; --i) r = r * ax + cAbs[i];
-  return gamma(2 * n + 6) * r;
+template <int N>
+double errorBound(const double* cAbs, double x) {
+  double ax = std::abs(x), r = cAbs[N];
+  for (int i = N - 1; i >= 0; --i) r = r * ax + cAbs[i];
+  return gamma(2 * N + 6) * r;
 }
 
 // The one root of p in (a, b), where p(a) and p(b) have opposite signs and p is monotonic:
@@ -41,11 +61,11 @@ double errorBound(const double* cAbs, int n, double x) {
 // evaluation (then x is as good as the coefficients allow; one more Newton step is taken)
 // or the step falls below a few ulps: waiting for the step itself to vanish would make
 // Newton chase the rounding noise of p near the root for dozens of iterations.
-double refineBracketed(const double* c, const double* cAbs, int n, double a, double b,
-                       double fa) {
+template <int N>
+double refineBracketed(const double* c, const double* cAbs, double a, double b, double fa) {
   double x = 0.5 * (a + b);
   for (int it = 0; it < 100; ++it) {
-    double fx = evalPolynomial(c, n, x);
+    double fx = evalN<N>(c, x);
     if (fx == 0.0) return x;
     if ((fx < 0.0) == (fa < 0.0)) {
       a = x;
@@ -53,11 +73,11 @@ double refineBracketed(const double* c, const double* cAbs, int n, double a, dou
     } else {
       b = x;
     }
-    double df = evalPolynomialDerivative(c, n, x);
+    double df = evalDerivativeN<N>(c, x);
     double next = df != 0.0 ? x - fx / df : 0.5 * (a + b);
     bool newton = a < next && next < b;
     if (!newton) next = 0.5 * (a + b);
-    if (newton && std::abs(fx) <= errorBound(cAbs, n, x)) return next;
+    if (newton && std::abs(fx) <= errorBound<N>(cAbs, x)) return next;
     if (std::abs(next - x) <= 4.0 * kMachineEps * std::abs(next) || next == a || next == b)
       return next;
     x = next;
@@ -65,71 +85,68 @@ double refineBracketed(const double* c, const double* cAbs, int n, double a, dou
   return x;
 }
 
+// The root of a linear p in (lo, hi), if any.
+inline int linearRoot(const double* c, double lo, double hi, double& x) {
+  x = -c[0] / c[1];
+  return lo < x && x < hi ? 1 : 0;
+}
+
 // Roots where p changes sign in (lo, hi), ascending (used for the derivatives, whose
 // touching roots are inflections of p and need no splitting).
-int signChangeRoots(const double* c, const double* cAbs, int n, double lo, double hi,
-                    double* out) {
-  if (n == 1) {
-    double x = -c[0] / c[1];
-    if (lo < x && x < hi) {
-      out[0] = x;
-      return 1;
-    }
-    return 0;
-  }
-  double d[4] = {0.0, 0.0, 0.0, 0.0}, dAbs[4] = {0.0, 0.0, 0.0, 0.0};
-  derivative(c, cAbs, n, d, dAbs);
-  double pts[6];
+template <int N>
+int signChangeRoots(const double* c, const double* cAbs, double lo, double hi, double* out);
+
+template <>
+int signChangeRoots<1>(const double* c, const double*, double lo, double hi, double* out) {
+  return linearRoot(c, lo, hi, out[0]);
+}
+
+template <int N>
+int signChangeRoots(const double* c, const double* cAbs, double lo, double hi, double* out) {
+  double d[N] = {}, dAbs[N] = {};
+  derivative<N>(c, cAbs, d, dAbs);
+  double pts[N + 2];
   int m = 0;
   pts[m++] = lo;
-  m += signChangeRoots(d, dAbs, n - 1, lo, hi, pts + m);
+  m += signChangeRoots<N - 1>(d, dAbs, lo, hi, pts + m);
   pts[m++] = hi;
   int count = 0;
-  double fa = evalPolynomial(c, n, pts[0]);
+  double fa = evalN<N>(c, pts[0]);
   for (int i = 0; i + 1 < m; ++i) {
-    double fb = evalPolynomial(c, n, pts[i + 1]);
+    double fb = evalN<N>(c, pts[i + 1]);
     if (fa == 0.0 && i > 0) {
       out[count++] = pts[i];
     } else if ((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0)) {
-      out[count++] = refineBracketed(c, cAbs, n, pts[i], pts[i + 1], fa);
+      out[count++] = refineBracketed<N>(c, cAbs, pts[i], pts[i + 1], fa);
     }
     fa = fb;
   }
   return count;
 }
 
-}  // namespace
-
-int polynomialRoots(const double* c, const double* cAbs, int n, double lo, double hi,
-                    PolynomialRoot* out) {
-  if (n == 1) {
-    double x = -c[0] / c[1];
-    if (lo < x && x < hi) {
-      out[0] = {x, false};
-      return 1;
-    }
-    return 0;
-  }
+template <int N>
+int polynomialRootsN(const double* c, const double* cAbs, double lo, double hi,
+                     PolynomialRoot* out) {
   // Split points: the ends and the critical points (roots of p').
-  double d[4] = {0.0, 0.0, 0.0, 0.0}, dAbs[4] = {0.0, 0.0, 0.0, 0.0};
-  derivative(c, cAbs, n, d, dAbs);
-  double pts[6];
+  double d[N] = {}, dAbs[N] = {};
+  derivative<N>(c, cAbs, d, dAbs);
+  double pts[N + 2];
   int m = 0;
   pts[m++] = lo;
-  m += signChangeRoots(d, dAbs, n - 1, lo, hi, pts + m);
+  m += signChangeRoots<N - 1>(d, dAbs, lo, hi, pts + m);
   pts[m++] = hi;
 
   // Sign at each split point; 0 for an interior critical point where p is 0 up to its
   // rounding error (the two roots around it cannot be told apart from a double root).
-  double val[6];
-  int sgn[6];
+  double val[N + 2];
+  int sgn[N + 2];
   for (int i = 0; i < m; ++i) {
-    val[i] = evalPolynomial(c, n, pts[i]);
+    val[i] = evalN<N>(c, pts[i]);
     bool interior = i > 0 && i + 1 < m;
-    sgn[i] = (interior && std::abs(val[i]) <= errorBound(cAbs, n, pts[i])) ? 0
-             : val[i] > 0.0                                                  ? 1
-             : val[i] < 0.0                                                  ? -1
-                                                                             : 0;
+    sgn[i] = (interior && std::abs(val[i]) <= errorBound<N>(cAbs, pts[i])) ? 0
+             : val[i] > 0.0                                                 ? 1
+             : val[i] < 0.0                                                 ? -1
+                                                                            : 0;
   }
   int count = 0;
   int lastSign = sgn[0];
@@ -147,11 +164,29 @@ int polynomialRoots(const double* c, const double* cAbs, int n, double lo, doubl
       continue;
     }
     if (sgn[i] != lastSign && sgn[i - 1] != 0) {
-      out[count++] = {refineBracketed(c, cAbs, n, pts[i - 1], pts[i], val[i - 1]), false};
+      out[count++] = {refineBracketed<N>(c, cAbs, pts[i - 1], pts[i], val[i - 1]), false};
     }
     lastSign = sgn[i];
   }
   return count;
+}
+
+}  // namespace
+
+int polynomialRoots(const double* c, const double* cAbs, int n, double lo, double hi,
+                    PolynomialRoot* out) {
+  switch (n) {
+    case 1: {
+      double x;
+      if (!linearRoot(c, lo, hi, x)) return 0;
+      out[0] = {x, false};
+      return 1;
+    }
+    case 2: return polynomialRootsN<2>(c, cAbs, lo, hi, out);
+    case 3: return polynomialRootsN<3>(c, cAbs, lo, hi, out);
+    case 4: return polynomialRootsN<4>(c, cAbs, lo, hi, out);
+  }
+  return 0;
 }
 
 }  // namespace lucent
