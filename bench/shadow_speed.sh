@@ -3,8 +3,9 @@
 # rendered by each binary in turn, `reps` rounds, one thread, one sample, and the best
 # CPU time (user + system of the whole process, /usr/bin/time) and the best render time
 # (--stats "time", the image alone) of each binary are printed as a Markdown table, with
-# whether the binaries' images are identical. Alternating the binaries within each round
-# lets both see the same machine load.
+# whether the binaries' images are identical (their pixels: one more render each, to PPM,
+# since binaries may compress the same pixels differently). Alternating the binaries
+# within each round lets both see the same machine load.
 #
 # Usage: bash bench/shadow_speed.sh [--reps N] [--size WxH] LUCENT_A LUCENT_B [...] \
 #          [-- SCENE.xml ...]
@@ -74,8 +75,13 @@ for scene in "${scenes[@]}"; do
       if less "$s" "${render[$i]:-}"; then render[$i]=$s; fi
     done
   done
+  # The pixels, not the PNG files: binaries may compress the same pixels differently.
+  for i in "${!bins[@]}"; do
+    "${bins[$i]}" render "$scene" -o "$work/$i.ppm" -s 1 -t 1 -q "${sizeArgs[@]}" \
+      --allow-path "$here/examples" > /dev/null
+  done
   same=identical
-  for i in "${!bins[@]}"; do cmp -s "$work/0.png" "$work/$i.png" || same=differ; done
+  for i in "${!bins[@]}"; do cmp -s "$work/0.ppm" "$work/$i.ppm" || same=differ; done
   row="| $name |"
   for i in "${!bins[@]}"; do row+=" ${cpu[$i]} | ${render[$i]} |"; done
   echo "$row $same |"
