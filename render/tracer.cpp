@@ -219,7 +219,12 @@ Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightI
                            RayStats& stats) const {
   // The object that blocked this light's last shadow ray is asked first.
   World::ObjectId& lastBlocker = stats.shadowCache.slot(cacheOwner_, lightIndex, lights_.size());
-  auto shadowRay = [&](const Ray& ray) { return transmittance(ray, media, lastBlocker, stats); };
+  auto shadowRay = [&](const Ray& ray) {
+    if (anyTransmissive_) return transmittance(ray, media, lastBlocker, stats);
+    // An opaque scene: one any-hit query, nothing to copy.
+    ++stats.shadow;
+    return blockedByOpaque(ray, lastBlocker, stats) ? Color(0.0f) : Color(1.0f);
+  };
   if (light.type == LightType::Directional)
     return shadowRay(spawnRay(s, in.toLight, settings_.epsilon));
   const ShadowRays rays(s, settings_.epsilon);
