@@ -38,6 +38,11 @@ class Torus final : public Shape {
   int lineRoots(const Ray& ray, double t[4]) const;
 
  private:
+  // Whether the line o + s·dn (dn unit, s in (-L, L)) surely misses the torus: a test of
+  // its hull, so that lines near it skip the quartic.
+  bool missesHull(const Vec3& o, const Vec3& dn, double a2, double a1, double a0,
+                  double L) const;
+
   double R_, r_;
 };
 

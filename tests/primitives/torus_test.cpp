@@ -61,3 +61,29 @@ TEST_CASE("torus: inside() against the analytic formula", "[primitives][torus]")
     REQUIRE(t.inside(p) == (d2 < 0.04));
   }
 }
+
+TEST_CASE("torus: lines just outside and just inside its hull", "[primitives][torus]") {
+  // The quartic is skipped for lines that keep clear of the hull (|y| <= r, R - r <= ρ <=
+  // R + r) by more than a millionth; lines nearer than that must still get its answer.
+  const double R = 1.0, r = 0.25;
+  Torus t(R, r);
+  double roots[4];
+  for (double rel : {1e-3, 1e-5, 1e-7}) {
+    // Along z, grazing the outer equator from outside (no root) and from inside (two).
+    CHECK(t.lineRoots(Ray(Vec3(R + r + rel, 0, 5), Vec3(0, 0, -1)), roots) == 0);
+    REQUIRE(t.lineRoots(Ray(Vec3(R + r - rel, 0, 5), Vec3(0, 0, -1)), roots) == 2);
+    CHECK(roots[0] < 5.0);
+    CHECK(roots[1] > 5.0);
+    // Parallel to the axis through the hole, just inside the inner equator (no root) and
+    // just beyond it (two).
+    CHECK(t.lineRoots(Ray(Vec3(R - r - rel, 5, 0), Vec3(0, -1, 0)), roots) == 0);
+    REQUIRE(t.lineRoots(Ray(Vec3(R - r + rel, 5, 0), Vec3(0, -1, 0)), roots) == 2);
+    CHECK_THAT(roots[0] + roots[1], WithinRel(10.0, 1e-9));
+    // Over the top, just above the slab (no root) and just within it (two).
+    CHECK(t.lineRoots(Ray(Vec3(R, r + rel, 5), Vec3(0, 0, -1)), roots) == 0);
+    CHECK(t.lineRoots(Ray(Vec3(R, r - rel, 5), Vec3(0, 0, -1)), roots) == 2);
+  }
+  // A line far from the torus in every sense, and one crossing the slab outside R + r.
+  CHECK(t.lineRoots(Ray(Vec3(0, 3, 5), Vec3(0, 0, -1)), roots) == 0);
+  CHECK(t.lineRoots(Ray(Vec3(1.3, 5, 0.2), Vec3(0.01, -1, 0)), roots) == 0);
+}
