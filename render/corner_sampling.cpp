@@ -10,16 +10,22 @@ float encoded(float x) { return std::pow(std::max(x, 0.0f), 0.4f); }  // 1 / Ant
 
 }  // namespace
 
-bool cornersDiffer(const Color& a, const Color& b, float threshold) {
+Color encodeForCornerTest(const Color& c) { return Color(encoded(c.r), encoded(c.g), encoded(c.b)); }
+
+bool encodedDiffer(const Color& a, const Color& b, float threshold) {
   // POV-Ray also adds the difference in transmit, 0 in an image without alpha, its
   // background included (a sphere near the background colour splits in neither).
-  const float d = std::fabs(encoded(a.r) - encoded(b.r)) + std::fabs(encoded(a.g) - encoded(b.g)) +
-                  std::fabs(encoded(a.b) - encoded(b.b));
-  return d >= threshold;
+  return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b) >= threshold;
 }
 
-CornerTile::CornerTile(const Image& corners, float threshold, int depth, int x0, int x1)
+bool cornersDiffer(const Color& a, const Color& b, float threshold) {
+  return encodedDiffer(encodeForCornerTest(a), encodeForCornerTest(b), threshold);
+}
+
+CornerTile::CornerTile(const Image& corners, const Image& encodedCorners, float threshold,
+                       int depth, int x0, int x1)
     : corners_(corners),
+      encodedCorners_(encodedCorners),
       threshold_(threshold),
       depth_(depth),
       step_(1 << (depth - 1)),
@@ -33,18 +39,22 @@ void CornerTile::fill(int a, int b) {
   if (have(a, b)) return;
   Sample& s = at(a, b);
   s.color = (*trace_)(baseX_ + a, baseY_ + b, *stats_);
+  s.encoded = encodeForCornerTest(s.color);
   s.pixel = pixelNumber_;
 }
 
 Color CornerTile::subdivide(int a, int b, int size, int level) {
-  const Color& c00 = at(a, b).color;
-  const Color& c02 = at(a, b + size).color;
-  const Color& c20 = at(a + size, b).color;
-  const Color& c22 = at(a + size, b + size).color;
+  const Sample& s00 = at(a, b);
+  const Sample& s02 = at(a, b + size);
+  const Sample& s20 = at(a + size, b);
+  const Sample& s22 = at(a + size, b + size);
   const float t = threshold_;
-  if (level > 0 && (cornersDiffer(c00, c02, t) || cornersDiffer(c00, c20, t) ||
-                    cornersDiffer(c00, c22, t) || cornersDiffer(c02, c20, t) ||
-                    cornersDiffer(c02, c22, t) || cornersDiffer(c20, c22, t))) {
+  if (level > 0 && (encodedDiffer(s00.encoded, s02.encoded, t) ||
+                    encodedDiffer(s00.encoded, s20.encoded, t) ||
+                    encodedDiffer(s00.encoded, s22.encoded, t) ||
+                    encodedDiffer(s02.encoded, s20.encoded, t) ||
+                    encodedDiffer(s02.encoded, s22.encoded, t) ||
+                    encodedDiffer(s20.encoded, s22.encoded, t))) {
     const int h = size / 2;
     fill(a, b + h);
     fill(a + h, b);
@@ -58,7 +68,7 @@ Color CornerTile::subdivide(int a, int b, int size, int level) {
     const Color q11 = subdivide(a + h, b + h, h, level - 1);
     return (q00 + q01 + q10 + q11) / 4.0f;
   }
-  return (c00 + c02 + c20 + c22) / 4.0f;
+  return (s00.color + s02.color + s20.color + s22.color) / 4.0f;
 }
 
 Color CornerTile::pixel(int x, int y, const LatticeTrace& trace, RayStats& stats) {
@@ -69,27 +79,31 @@ Color CornerTile::pixel(int x, int y, const LatticeTrace& trace, RayStats& stats
   ++pixelNumber_;
   baseX_ = x * n;
   baseY_ = y * n;
-  auto put = [&](int a, int b, const Color& c) { at(a, b) = Sample{c, pixelNumber_}; };
-  put(0, 0, corners_.at(x, y));
-  put(n, 0, corners_.at(x + 1, y));
-  put(0, n, corners_.at(x, y + 1));
-  put(n, n, corners_.at(x + 1, y + 1));
+  auto put = [&](int a, int b, const Sample& s) { at(a, b) = Sample{s.color, s.encoded, pixelNumber_}; };
+  auto corner = [&](int i, int j) { return Sample{corners_.at(i, j), encodedCorners_.at(i, j), 0}; };
+  put(0, 0, corner(x, y));
+  put(n, 0, corner(x + 1, y));
+  put(0, n, corner(x, y + 1));
+  put(n, n, corner(x + 1, y + 1));
   // The edges shared with the pixel to the left and the pixel above, where they were split.
   if (n > 1) {
     if (y == lastY_ && x == lastX_ + 1)
       for (int b = 1; b < n; ++b)
-        if (right_[b].pixel) put(0, b, right_[b].color);
+        if (right_[b].pixel) put(0, b, right_[b]);
     if (belowRow_[column] == y - 1)
       for (int a = 1; a < n; ++a)
-        if (const Sample& s = below_[column * (n + 1) + a]; s.pixel) put(a, 0, s.color);
+        if (const Sample& s = below_[column * (n + 1) + a]; s.pixel) put(a, 0, s);
   }
 
   const Color result = subdivide(0, 0, n, depth_ - 1);
 
   if (n > 1) {
-    for (int b = 1; b < n; ++b) right_[b] = Sample{at(n, b).color, have(n, b) ? 1u : 0u};
-    for (int a = 1; a < n; ++a)
-      below_[column * (n + 1) + a] = Sample{at(a, n).color, have(a, n) ? 1u : 0u};
+    auto handOn = [&](int a, int b) {
+      const Sample& s = at(a, b);
+      return Sample{s.color, s.encoded, have(a, b) ? 1u : 0u};
+    };
+    for (int b = 1; b < n; ++b) right_[b] = handOn(n, b);
+    for (int a = 1; a < n; ++a) below_[column * (n + 1) + a] = handOn(a, n);
     belowRow_[column] = y;
   }
   lastX_ = x;

@@ -19,6 +19,9 @@ namespace lucent {
 // POV-Ray's test of two samples: the sum over r, g, b of the differences of the colours
 // encoded with its Antialias_Gamma 2.5 (x^(1/2.5), negatives as 0), at least `threshold`.
 bool cornersDiffer(const Color& a, const Color& b, float threshold);
+// The same test on colours already encoded with encodeForCornerTest.
+Color encodeForCornerTest(const Color& c);
+bool encodedDiffer(const Color& a, const Color& b, float threshold);
 
 // The colour at lattice point (fx, fy): film position (fx, fy) / step.
 using LatticeTrace = std::function<Color(int fx, int fy, RayStats& stats)>;
@@ -28,8 +31,10 @@ using LatticeTrace = std::function<Color(int fx, int fy, RayStats& stats)>;
 // allocates once and a pixel never.
 class CornerTile {
  public:
-  // `corners`: the (W+1) x (H+1) traced pixel corners, corner (i, j) at film (i, j).
-  CornerTile(const Image& corners, float threshold, int depth, int x0, int x1);
+  // `corners`: the (W+1) x (H+1) traced pixel corners, corner (i, j) at film (i, j), and
+  // the same encoded with encodeForCornerTest (once, not once for each of the 4 pixels).
+  CornerTile(const Image& corners, const Image& encodedCorners, float threshold, int depth, int x0,
+             int x1);
 
   // Pixel (x, y), which must follow the previous one in the visiting order (a new row may
   // start anywhere inside the tile, so that a cancelled row leaves nothing stale).
@@ -40,6 +45,7 @@ class CornerTile {
  private:
   struct Sample {
     Color color{0.0f};
+    Color encoded{0.0f};  // encodeForCornerTest(color): each sample is encoded once
     uint32_t pixel = 0;  // grid_: the pixel (numbered from 1) it belongs to; edges: 1 if traced
   };
   Sample& at(int a, int b) { return grid_[static_cast<size_t>(b) * (step_ + 1) + a]; }
@@ -48,6 +54,7 @@ class CornerTile {
   void fill(int a, int b);
 
   const Image& corners_;
+  const Image& encodedCorners_;
   float threshold_;
   int depth_, step_, x0_;
   // The current pixel's (step+1)^2 lattice points. An entry is valid when it carries the

@@ -123,10 +123,11 @@ RenderResult Renderer::render(const RenderControl& control) const {
   // splits its pixels where their corners differ (corner_sampling.h).
   auto runCorners = [&] {
     const int step = 1 << (settings_.adaptiveDepth - 1);
-    Image cornerImage(width + 1, height + 1);
+    Image cornerImage(width + 1, height + 1), encodedCorners(width + 1, height + 1);
     forEachPixel([&](int x, int y, RayStats& stats) {
       auto trace = [&](int i, int j) {
         cornerImage.at(i, j) = renderLatticeSample(i * step, j * step, step, stats);
+        encodedCorners.at(i, j) = encodeForCornerTest(cornerImage.at(i, j));
       };
       trace(x, y);
       if (x == width - 1) trace(width, y);
@@ -140,7 +141,7 @@ RenderResult Renderer::render(const RenderControl& control) const {
     };
     forEachTile(
         [&](int x0, int x1) {
-          return CornerTile(cornerImage, threshold, settings_.adaptiveDepth, x0, x1);
+          return CornerTile(cornerImage, encodedCorners, threshold, settings_.adaptiveDepth, x0, x1);
         },
         [&](CornerTile& tile, int x, int y, RayStats& stats) {
           image.at(x, y) = tile.pixel(x, y, trace, stats);
