@@ -16,7 +16,7 @@ TEST_CASE("corner sampling is parsed and exported as POV-Ray's +AM2 -J", "[povra
   CHECK(e.pov.issues.empty());
 }
 
-TEST_CASE("corner sampling keeps POV-Ray's depth 3 by default; a threshold above 1 is a warning",
+TEST_CASE("corner sampling keeps POV-Ray's depth 3 by default and warns of a threshold above 1",
           "[povray][corners]") {
   Exported e = exportScene(R"XML(<render adaptive="1.5" adaptive-mode="corners"/>)XML");
   REQUIRE(e.pov.ok());
