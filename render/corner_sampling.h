@@ -40,8 +40,6 @@ class CornerTile {
   // start anywhere inside the tile, so that a cancelled row leaves nothing stale).
   Color pixel(int x, int y, const LatticeTrace& trace, RayStats& stats);
 
-  int step() const { return step_; }
-
  private:
   struct Sample {
     Color color{0.0f};

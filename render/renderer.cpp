@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <vector>
 
@@ -86,9 +87,9 @@ RenderResult Renderer::render(const RenderControl& control) const {
   auto cancelled = [&] { return control.cancel && control.cancel->load(std::memory_order_relaxed); };
 
   tbb::enumerable_thread_specific<RayStats> perThread;
-  // Runs body(tile, pixel, stats) over the image in tiles, where pixel(x, y) is to be called
-  // for every pixel in row order and tile(firstColumn, endColumn) once before: a tile's own
-  // state. Counts progress per tile.
+  // Runs body(state, x, y, stats) for every pixel, tile by tile and in row order inside a
+  // tile, where state = startTile(firstColumn, endColumn) is made once per tile (a tile's
+  // own scratch). Counts progress per tile.
   auto forEachTile = [&](auto&& startTile, auto&& body, bool countsAsWork) {
     tbb::parallel_for(
         tbb::blocked_range2d<int>(0, height, kTile, 0, width, kTile),
@@ -122,7 +123,8 @@ RenderResult Renderer::render(const RenderControl& control) const {
   // traces its top-left corner, the last column and row the corners beyond); then each tile
   // splits its pixels where their corners differ (corner_sampling.h).
   auto runCorners = [&] {
-    const int step = 1 << (settings_.adaptiveDepth - 1);
+    const int depth = std::clamp(settings_.adaptiveDepth, 1, kMaxAdaptiveDepth);
+    const int step = 1 << (depth - 1);
     Image cornerImage(width + 1, height + 1), encodedCorners(width + 1, height + 1);
     forEachPixel([&](int x, int y, RayStats& stats) {
       auto trace = [&](int i, int j) {
@@ -141,7 +143,7 @@ RenderResult Renderer::render(const RenderControl& control) const {
     };
     forEachTile(
         [&](int x0, int x1) {
-          return CornerTile(cornerImage, encodedCorners, threshold, settings_.adaptiveDepth, x0, x1);
+          return CornerTile(cornerImage, encodedCorners, threshold, depth, x0, x1);
         },
         [&](CornerTile& tile, int x, int y, RayStats& stats) {
           image.at(x, y) = tile.pixel(x, y, trace, stats);
