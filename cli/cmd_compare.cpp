@@ -112,9 +112,14 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
   const Camera* camera = loaded.camera;
   RenderSettings& settings = scene.render;
   // One sample per pixel unless asked: both renderers then trace the pixel centres, the only
-  // sampling they share exactly.
-  settings.samples = options.samples.value_or(1);
-  settings.adaptive = 0.0;
+  // sampling they share exactly. Or corner sampling, which is POV-Ray's method 2 exactly,
+  // unless -s asks for samples.
+  const bool corners = settings.adaptiveMode == AdaptiveMode::Corners && !options.samples;
+  if (!corners) {
+    settings.samples = options.samples.value_or(1);
+    settings.adaptive = 0.0;
+    settings.adaptiveMode = AdaptiveMode::Centres;
+  }
 
   const fs::path dir(options.outputDir);
   std::error_code ec;
@@ -199,6 +204,9 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
   job.width = settings.width;
   job.height = settings.height;
   job.samples = settings.samples;
+  job.corners = corners;
+  job.cornerThreshold = settings.adaptive;
+  job.cornerDepth = settings.adaptiveDepth;
   job.threads = options.threads.value_or(0);
   job.fileGamma = fileGamma;
   std::vector<std::string> args = povrayArguments(job);

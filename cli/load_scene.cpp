@@ -53,7 +53,15 @@ LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) 
   RenderSettings& r = scene.render;
   if (request.width) r.width = *request.width;
   if (request.height) r.height = *request.height;
-  if (request.samples) r.samples = *request.samples;
+  if (request.samples) {
+    r.samples = *request.samples;
+    // -s asks for that many samples a pixel: corner sampling, which chooses its own (and
+    // whose threshold is on another scale), gives way to plain supersampling.
+    if (r.adaptiveMode == AdaptiveMode::Corners) {
+      r.adaptiveMode = AdaptiveMode::Centres;
+      r.adaptive = 0.0;
+    }
+  }
   if (request.maxDepth) r.maxDepth = *request.maxDepth;
 
   loaded.camera = scene.findCamera(request.camera);

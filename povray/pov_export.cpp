@@ -4,6 +4,7 @@
 #include "pov_geometry.h"
 #include "pov_lights.h"
 #include "pov_materials.h"
+#include "pov_runner.h"
 
 #include <fmt/core.h>
 
@@ -65,10 +66,21 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   PovWriter out;
   out.line(fmt::format("// {} exported by Lucent as a POV-Ray 3.7 scene.",
                        std::filesystem::path(scene.file).filename().string()));
-  out.line(fmt::format("// Render: povray +I<this file> +W{} +H{} -A   (+FN writes sRGB, "
-                       "File_Gamma=1.0 linear)",
-                       r.width, r.height));
-  if (r.samples > 1)
+  if (r.adaptiveMode == AdaptiveMode::Corners) {
+    // Lucent's corners mode is POV-Ray's method 2 without jitter: the same image.
+    out.line(fmt::format("// Render: povray +I<this file> +W{} +H{} +AM2 {} -J +R{}   (+FN writes "
+                         "sRGB, File_Gamma=1.0 linear)",
+                         r.width, r.height, cornerThresholdFlag(r.adaptive), r.adaptiveDepth));
+    if (r.adaptive > 1.0)
+      issues.warning(r.loc, fmt::format("render: adaptive {} exceeds 1, where POV-Ray clips its "
+                                        "antialiasing threshold",
+                                        r.adaptive));
+  } else {
+    out.line(fmt::format("// Render: povray +I<this file> +W{} +H{} -A   (+FN writes sRGB, "
+                         "File_Gamma=1.0 linear)",
+                         r.width, r.height));
+  }
+  if (r.samples > 1 && r.adaptiveMode != AdaptiveMode::Corners)
     // Sampling is a command-line matter in POV-Ray; its grid is not Lucent's Halton set.
     out.line(fmt::format("// Lucent takes {} samples per pixel at Halton offsets; the closest "
                          "POV-Ray has is +A0.0 -J +AM1 +R{}",

@@ -41,11 +41,22 @@ const char* povrayInstallHint() {
          "(macOS), or set LUCENT_POVRAY to the povray executable";
 }
 
+std::string cornerThresholdFlag(double threshold) {
+  // Fixed notation (POV-Ray's switch reads no exponent), trailing zeros dropped: "+A0.3",
+  // "+A0.0" (a bare +A would mean its default, 0.3).
+  std::string t = fmt::format("{:.6f}", threshold);
+  while (t.size() > 1 && t.back() == '0' && t[t.size() - 2] != '.') t.pop_back();
+  return "+A" + t;
+}
+
 std::vector<std::string> povrayArguments(const PovrayRender& r) {
   std::vector<std::string> args = {
       "+I" + r.input, "+O" + r.output, fmt::format("+W{}", r.width), fmt::format("+H{}", r.height),
       "-D", "-V", "-GS", "-GR", "+FN16", "File_Gamma=" + r.fileGamma};
-  if (r.samples <= 1) {
+  if (r.corners) {
+    args.insert(args.end(), {"+AM2", cornerThresholdFlag(r.cornerThreshold), "-J",
+                             fmt::format("+R{}", r.cornerDepth)});
+  } else if (r.samples <= 1) {
     args.push_back("-A");
   } else {
     // Threshold 0 supersamples every pixel, -J keeps the grid regular: an R×R grid plus the

@@ -19,16 +19,24 @@ struct PovrayRender {
   std::string output;  // .png, written as 16-bit linear values
   int width = 0, height = 0;
   int samples = 1;     // 1: no antialiasing (pixel centres, as Lucent's single sample)
+  // Lucent's adaptive-mode="corners" (samples is then not used): POV-Ray's own method 2.
+  bool corners = false;
+  double cornerThreshold = 0.3;
+  int cornerDepth = 3;
   int threads = 0;     // 0: POV-Ray's default
   // File_Gamma: 1.0 writes linear values; a scene with another assumed_gamma needs that
   // gamma here to write its working values (pov_gamma.h).
   std::string fileGamma = "1.0";
 };
 
-// povray +I.. +O.. +W +H -D -V -GS -GR +FN16 File_Gamma=G -A (or +A0.0 -J +AM1 +Rn):
+// povray +I.. +O.. +W +H -D -V -GS -GR +FN16 File_Gamma=G -A (or +A0.0 -J +AM1 +Rn, or for
+// corners +AM2 +At -J +Rd):
 // no preview window (Debian's povray.ini turns it on), warnings and errors kept, statistics
 // and progress dropped, 16-bit PNG holding linear values (G = 1.0, the default).
 std::vector<std::string> povrayArguments(const PovrayRender& render);
+
+// "+A0.3": POV-Ray's antialiasing flag with that threshold.
+std::string cornerThresholdFlag(double threshold);
 
 struct ProcessResult {
   bool started = false;

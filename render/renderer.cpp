@@ -1,5 +1,6 @@
 #include "renderer.h"
 
+#include "corner_sampling.h"
 #include "sampling.h"
 
 #include <tbb/blocked_range2d.h>
@@ -7,6 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <vector>
 
@@ -38,6 +40,17 @@ Color Renderer::renderSample(int x, int y, int k, int count, RayStats& stats) co
   return tracer_.traceCamera(ray, cameraMedia_, seed, stats);
 }
 
+Color Renderer::renderLatticeSample(int fx, int fy, int step, RayStats& stats) const {
+  const Vec2 film = Vec2(fx, fy) / static_cast<double>(step);
+  Ray ray;
+  // The lens centre, as one sample per pixel takes: a lattice point is one sample.
+  if (!projection_->generateRay(film, Vec2(0.5, 0.5), ray)) return settings_.background;
+  // Seeded by the lattice point alone, so a sample traced by two tiles is the same sample.
+  PathSeed seed{static_cast<uint32_t>(fx), static_cast<uint32_t>(fy),
+                0x80000000u | static_cast<uint32_t>(step), 0};
+  return tracer_.traceCamera(ray, cameraMedia_, seed, stats);
+}
+
 Color Renderer::renderPixel(int x, int y, RayStats& stats) const {
   const int count = std::max(1, settings_.samples);
   Color sum(0.0f);
@@ -62,7 +75,8 @@ RenderResult Renderer::render(const RenderControl& control) const {
   // Adaptive: every pixel's centre first; then each pixel whose centre differs from one of
   // its eight neighbours' by more than the threshold is refined, in stages (see
   // PixelRefinement and the stopping rule below).
-  const bool adaptive = settings_.adaptive > 0.0 && samples > 1;
+  const bool corners = settings_.adaptiveMode == AdaptiveMode::Corners;
+  const bool adaptive = corners || (settings_.adaptive > 0.0 && samples > 1);
   const uint64_t pixels = static_cast<uint64_t>(width) * height;
 
   RenderResult result;
@@ -73,8 +87,10 @@ RenderResult Renderer::render(const RenderControl& control) const {
   auto cancelled = [&] { return control.cancel && control.cancel->load(std::memory_order_relaxed); };
 
   tbb::enumerable_thread_specific<RayStats> perThread;
-  // Runs body(x, y, stats) over the image in tiles, counting progress per tile.
-  auto forEachPixel = [&](auto&& body, bool countsAsWork = true) {
+  // Runs body(state, x, y, stats) for every pixel, tile by tile and in row order inside a
+  // tile, where state = startTile(firstColumn, endColumn) is made once per tile (a tile's
+  // own scratch). Counts progress per tile.
+  auto forEachTile = [&](auto&& startTile, auto&& body, bool countsAsWork) {
     tbb::parallel_for(
         tbb::blocked_range2d<int>(0, height, kTile, 0, width, kTile),
         [&](const tbb::blocked_range2d<int>& tile) {
@@ -83,9 +99,10 @@ RenderResult Renderer::render(const RenderControl& control) const {
           // The tile runs on this thread from start to end, so the difference of the
           // thread's test counts is the tile's.
           const TestCounts testsBefore = threadTestCounts;
+          auto state = startTile(tile.cols().begin(), tile.cols().end());
           for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
             if (cancelled()) break;
-            for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) body(x, y, stats);
+            for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) body(state, x, y, stats);
             done += tile.cols().size();
           }
           stats.tests = threadTestCounts - testsBefore;
@@ -95,9 +112,50 @@ RenderResult Renderer::render(const RenderControl& control) const {
         },
         tbb::simple_partitioner());
   };
+  // Runs body(x, y, stats) over the image in tiles.
+  auto forEachPixel = [&](auto&& body, bool countsAsWork = true) {
+    forEachTile([](int, int) { return 0; },
+                [&](int, int x, int y, RayStats& stats) { body(x, y, stats); }, countsAsWork);
+  };
 
   Image& image = result.image;
+  // Corners mode: first the (W+1) x (H+1) pixel corners, each traced once (pixel (x, y)
+  // traces its top-left corner, the last column and row the corners beyond); then each tile
+  // splits its pixels where their corners differ (corner_sampling.h).
+  auto runCorners = [&] {
+    const int depth = std::clamp(settings_.adaptiveDepth, 1, kMaxAdaptiveDepth);
+    const int step = 1 << (depth - 1);
+    Image cornerImage(width + 1, height + 1), encodedCorners(width + 1, height + 1);
+    forEachPixel([&](int x, int y, RayStats& stats) {
+      auto trace = [&](int i, int j) {
+        cornerImage.at(i, j) = renderLatticeSample(i * step, j * step, step, stats);
+        encodedCorners.at(i, j) = encodeForCornerTest(cornerImage.at(i, j));
+      };
+      trace(x, y);
+      if (x == width - 1) trace(width, y);
+      if (y == height - 1) trace(x, height);
+      if (x == width - 1 && y == height - 1) trace(width, height);
+    });
+    if (cancelled()) return;
+    const float threshold = static_cast<float>(settings_.adaptive);
+    const LatticeTrace trace = [&](int fx, int fy, RayStats& stats) {
+      return renderLatticeSample(fx, fy, step, stats);
+    };
+    forEachTile(
+        [&](int x0, int x1) {
+          return CornerTile(cornerImage, encodedCorners, threshold, depth, x0, x1);
+        },
+        [&](CornerTile& tile, int x, int y, RayStats& stats) {
+          image.at(x, y) = tile.pixel(x, y, trace, stats);
+        },
+        true);
+  };
+
   auto run = [&] {
+    if (corners) {
+      runCorners();
+      return;
+    }
     if (!adaptive) {
       forEachPixel([&](int x, int y, RayStats& stats) { image.at(x, y) = renderPixel(x, y, stats); });
       return;

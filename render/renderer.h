@@ -1,4 +1,5 @@
-// The image loop: samples per pixel, adaptive supersampling, tiles over all cores.
+// The image loop: samples per pixel, adaptive supersampling (of pixel centres, or of
+// shared pixel corners: corner_sampling.h), tiles over all cores.
 #pragma once
 
 #include "image.h"
@@ -69,6 +70,8 @@ class Renderer {
     int taken = 0;
     bool disagrees(float threshold) const { return maxComponent(highest - lowest) > threshold; }
   };
+  // The sample at film position (fx, fy) / step (corners mode: a point of its lattice).
+  Color renderLatticeSample(int fx, int fy, int step, RayStats& stats) const;
   // Traces samples r.taken .. upTo-1 of pixel (x, y) into r.
   void addSamples(int x, int y, int upTo, PixelRefinement& r, RayStats& stats) const;
 

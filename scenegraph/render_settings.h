@@ -9,12 +9,23 @@
 
 namespace lucent {
 
+// How `adaptive` refines (docs/scene-language.md, <render>): Centres compares pixel centres
+// and adds Halton samples; Corners is POV-Ray's antialiasing method 2 (+AM2): pixel corners
+// shared by neighbouring pixels, squares split where their corners differ.
+enum class AdaptiveMode { Centres, Corners };
+
+// POV-Ray's +R range (it clips Antialias_Depth to 1..9): corners mode splits a pixel at most
+// adaptiveDepth - 1 times, into a grid of 2^(depth-1) + 1 samples a side.
+constexpr int kMaxAdaptiveDepth = 9;
+
 struct RenderSettings {
   SourceLoc loc;
   int width = 640;
   int height = 480;
   int samples = 1;
   double adaptive = 0.0;
+  AdaptiveMode adaptiveMode = AdaptiveMode::Centres;
+  int adaptiveDepth = 3;  // corners mode only; POV-Ray's +R
   int maxDepth = 5;
   double minWeight = 0.0039;
   Color background{0.0f};

@@ -115,3 +115,22 @@ TEST_CASE("povray runs without display, 16-bit linear, and without antialiasing 
   CHECK(std::vector<std::string>(args.end() - 5, args.end()) ==
         std::vector<std::string>{"+A0.0", "-J", "+AM1", "+R3", "+WT2"});
 }
+
+TEST_CASE("corner sampling runs POV-Ray's method 2 without jitter, at the same threshold and depth",
+          "[povray][runner]") {
+  PovrayRender r;
+  r.input = "scene.pov";
+  r.output = "out.png";
+  r.width = 64;
+  r.height = 48;
+  r.samples = 9;  // not used: corners choose their own samples
+  r.corners = true;
+  r.cornerThreshold = 0.3;
+  r.cornerDepth = 4;
+  std::vector<std::string> args = povrayArguments(r);
+  CHECK(std::vector<std::string>(args.end() - 4, args.end()) ==
+        std::vector<std::string>{"+AM2", "+A0.3", "-J", "+R4"});
+  CHECK(cornerThresholdFlag(0.0) == "+A0.0");
+  CHECK(cornerThresholdFlag(1.0) == "+A1.0");
+  CHECK(cornerThresholdFlag(0.125) == "+A0.125");
+}
