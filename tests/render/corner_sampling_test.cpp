@@ -39,11 +39,6 @@ RenderResult renderOn(const Scene& scene, int threads = 1) {
   return renderer.render(control);
 }
 
-bool sameBits(const Image& a, const Image& b) {
-  return a.width == b.width && a.height == b.height &&
-         std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color)) == 0;
-}
-
 }  // namespace
 
 TEST_CASE("POV-Ray's corner test: the sum of the channel differences at gamma 2.5",
@@ -142,15 +137,7 @@ TEST_CASE("corner sampling gives the same image bit for bit with 1 and 2 threads
   red.specular = Color(0.5f);
   red.shininess = 40;
   addShape(scene, SphereSpec{Vec3(0.5, 0.8, 0), 0.8}, addMaterial(scene, red));
-  Light area;
-  area.type = LightType::Area;
-  area.position = Vec3(3, 6, 4);
-  area.u = Vec3(1.5, 0, 0);
-  area.v = Vec3(0, 0, 1.5);
-  area.samplesU = 3;
-  area.samplesV = 3;
-  area.jitter = true;
-  scene.lights.push_back(area);
+  scene.lights.push_back(areaLight(Vec3(3, 6, 4), Vec3(1.5, 0, 0), Vec3(0, 0, 1.5), 3, 3, true));
 
   RenderResult a = renderOn(scene, 1);
   RenderResult b = renderOn(scene, 2);

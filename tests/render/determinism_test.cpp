@@ -38,21 +38,8 @@ void buildBusyScene(Scene& scene) {
   brick.diffuse = Color(1.0f, 0.3f, 0.2f);
   brick.reflective = Color(0.2f);
   addShape(scene, BoxSpec{Vec3(-2, 0, -1), Vec3(-0.5, 1.5, 0.5)}, addMaterial(scene, brick));
-  Light area;
-  area.type = LightType::Area;
-  area.position = Vec3(3, 6, 4);
-  area.u = Vec3(1.5, 0, 0);
-  area.v = Vec3(0, 0, 1.5);
-  area.samplesU = 3;
-  area.samplesV = 3;
-  area.jitter = true;
-  scene.lights.push_back(area);
+  scene.lights.push_back(areaLight(Vec3(3, 6, 4), Vec3(1.5, 0, 0), Vec3(0, 0, 1.5), 3, 3, true));
   scene.lights.push_back(pointLight(Vec3(-4, 5, 2), Color(0.4f)));
-}
-
-bool sameBits(const Image& a, const Image& b) {
-  return a.width == b.width && a.height == b.height &&
-         std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color)) == 0;
 }
 
 }  // namespace

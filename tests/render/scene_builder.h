@@ -1,6 +1,7 @@
 // Building small scenes in code for the render tests: no parser involved.
 #pragma once
 
+#include "render/image.h"
 #include "render/tracer.h"
 #include "scenegraph/shape_registry.h"
 #include "scenegraph/scene.h"
@@ -8,6 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cstring>
 #include <memory>
 #include <optional>
 
@@ -69,6 +71,26 @@ inline Color traceOne(const World& world, const Ray& ray, RayStats* statsOut = n
   Color c = tracer.traceCamera(ray, tracer.mediaAt(ray.o), seed, stats);
   if (statsOut) *statsOut = stats;
   return c;
+}
+
+// A rectangular area light of nu × nv samples centred on `position`, white.
+inline Light areaLight(const Vec3& position, const Vec3& u, const Vec3& v, int nu, int nv,
+                       bool jitter = false) {
+  Light area;
+  area.type = LightType::Area;
+  area.position = position;
+  area.u = u;
+  area.v = v;
+  area.samplesU = nu;
+  area.samplesV = nv;
+  area.jitter = jitter;
+  return area;
+}
+
+// Whether two images hold the same floats, bit for bit.
+inline bool sameBits(const Image& a, const Image& b) {
+  return a.width == b.width && a.height == b.height &&
+         std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color)) == 0;
 }
 
 }  // namespace lucent::test
