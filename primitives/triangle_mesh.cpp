@@ -152,7 +152,8 @@ bool TriangleMesh::intersect(const Ray& ray, Hit& hit) const {
   bool found = false;
   forEachLeafCandidate(ray, sr, tFar, [&](uint32_t i, const Vec3* const* p) {
     TriangleIntersection ti;
-    if (intersectTriangle(sr, *p[0], *p[1], *p[2], ti) && ray.tmin < ti.t && ti.t < tFar) {
+    if (intersectTriangle(sr, *p[0], *p[1], *p[2], ti, ray.tmin) && ray.tmin < ti.t &&
+        ti.t < tFar) {
       tFar = ti.t;
       hit.t = ti.t;
       hit.shape = this;
@@ -171,7 +172,7 @@ bool TriangleMesh::occluded(const Ray& ray) const {
   // Any hit will do: boxes in tree order, no sorting (Bvh::candidates).
   return forEachLeafCandidate(ray, sr, ray.tmax, [&](uint32_t, const Vec3* const* p) {
     TriangleIntersection ti;
-    return !(intersectTriangle(sr, *p[0], *p[1], *p[2], ti) && ray.tmin < ti.t &&
+    return !(intersectTriangle(sr, *p[0], *p[1], *p[2], ti, ray.tmin) && ray.tmin < ti.t &&
              ti.t < ray.tmax);
   }, Bvh::Order::Tree);
 }
