@@ -113,8 +113,8 @@ struct TriangleHit {
 template <class Exact>
 bool TriangleMesh::forEachLeafCandidate(const Ray& ray, const ShearedRay& sr, const double& tFar,
                                         Exact&& exact, Bvh::Order order) const {
-  // Counted here, once per search, for --stats: every triangle of the entered leaves, as
-  // one by one.
+  // Counted here, once per search, for --stats: the triangles of the entered leaves up to
+  // the one that ends the search, as when they were tested one by one.
   uint64_t tested = 0;
   const auto& P = mesh_->positions;
   const auto& T = mesh_->triangles;
@@ -136,7 +136,10 @@ bool TriangleMesh::forEachLeafCandidate(const Ray& ray, const ShearedRay& sr, co
           }
           for (int m = watertightCandidates(sr, corners, n); m; m &= m - 1) {
             const int i = __builtin_ctz(m);
-            if (!exact(items[i], corners[i])) return false;
+            if (!exact(items[i], corners[i])) {
+              tested -= e - (s + i + 1);
+              return false;
+            }
           }
         }
         return true;
