@@ -15,10 +15,6 @@ namespace lucent {
 namespace watertight_detail {
 typedef double v4d __attribute__((vector_size(32)));
 typedef int64_t v4l __attribute__((vector_size(32)));
-
-inline v4d absV(v4d x) {
-  return reinterpret_cast<v4d>(reinterpret_cast<v4l>(x) & (0x7fffffffffffffffLL - v4l{}));
-}
 }  // namespace watertight_detail
 
 // Bit i (i < n <= 4) is set unless triangle i (corners p[i][0..2]) surely misses the ray:
@@ -51,12 +47,18 @@ __attribute__((always_inline)) inline int watertightCandidates(const ShearedRay&
   // edgeFunction(px, py, qx, qy): l = px·qy, r = py·qx, e = l − r, decided when
   // |e| > gamma(3)·(|l| + |r|). u: (c, b), v: (a, c), w: (b, a).
   const v4d g = gamma(3) - v4d{};
+  // |x| by clearing the sign bit (no function: a 32-byte vector argument would change
+  // the calling convention where the target lacks AVX).
+  const v4l absMask = 0x7fffffffffffffffLL - v4l{};
   v4l neg = v4l{}, pos = v4l{};
   const int from[3] = {2, 0, 1}, to[3] = {1, 2, 0};
   for (int e = 0; e < 3; ++e) {
     const v4d l = sxv[from[e]] * syv[to[e]], rr = syv[from[e]] * sxv[to[e]];
     const v4d d = l - rr;
-    const v4l sure = absV(d) > g * (absV(l) + absV(rr));
+    const v4d absD = reinterpret_cast<v4d>(reinterpret_cast<v4l>(d) & absMask);
+    const v4d absL = reinterpret_cast<v4d>(reinterpret_cast<v4l>(l) & absMask);
+    const v4d absR = reinterpret_cast<v4d>(reinterpret_cast<v4l>(rr) & absMask);
+    const v4l sure = absD > g * (absL + absR);
     neg |= sure & (d < 0.0);
     pos |= sure & (d > 0.0);
   }
