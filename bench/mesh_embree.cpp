@@ -2,7 +2,12 @@
 // same machine, in the same run. Primary (camera) rays and shadow rays, one thread and all
 // threads; BVH build speed and memory per triangle for both.
 //
-//   mesh_embree [--triangles N] [--size W] [--tsv FILE]
+//   mesh_embree [--triangles N] [--size W] [--tsv FILE] [--only primary|shadow]
+//               [--passes P]
+//
+// --only measures one kind of ray on one thread and nothing else (no build rates, no
+// memory, no agreement check), P passes of Lucent's and Embree's in turn (default 5), on
+// the thread's CPU clock: for profiling one traversal with perf and comparing builds.
 //
 // Lucent traces through its World (an instance of the mesh shape: what the renderer
 // calls); Embree through rtcIntersect1/rtcOccluded1, its single-ray interface. Both are
@@ -30,6 +35,8 @@ struct Options {
   size_t triangles = 1000000;
   int size = 1024;
   std::string tsv;
+  std::string only;  // "", "primary" or "shadow"
+  int passes = 5;
 };
 
 Options parseArgs(int argc, char** argv) {
@@ -39,8 +46,12 @@ Options parseArgs(int argc, char** argv) {
     if (a == "--triangles") o.triangles = std::stoul(argv[i + 1]);
     else if (a == "--size") o.size = std::stoi(argv[i + 1]);
     else if (a == "--tsv") o.tsv = argv[i + 1];
+    else if (a == "--only") o.only = argv[i + 1];
+    else if (a == "--passes") o.passes = std::stoi(argv[i + 1]);
     else throw std::invalid_argument("unknown option " + a);
   }
+  if (!o.only.empty() && o.only != "primary" && o.only != "shadow")
+    throw std::invalid_argument("--only takes primary or shadow");
   return o;
 }
 
@@ -158,8 +169,10 @@ int main(int argc, char** argv) {
     }
     return std::make_pair(l, e);
   };
-  auto [lucentBuild1, embreeBuild1] = buildRates(1);
-  auto [lucentBuildN, embreeBuildN] = buildRates(threads);
+  const bool only = !opt.only.empty();
+  if (only) shape = std::make_shared<TriangleMesh>(mesh, false);
+  auto [lucentBuild1, embreeBuild1] = only ? std::make_pair(0.0, 0.0) : buildRates(1);
+  auto [lucentBuildN, embreeBuildN] = only ? std::make_pair(0.0, 0.0) : buildRates(threads);
 
   // Memory per triangle: the mesh data Lucent keeps (double positions and indices) plus
   // its BVH; Embree's device allocations (its BVH and the triangle data it copies).
@@ -200,7 +213,7 @@ int main(int argc, char** argv) {
   size_t disagree = 0, farApart = 0, checked = 0, lucentRight = 0;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
-  for (size_t i = 0; i < R; ++i) {
+  for (size_t i = 0; i < (only ? 0 : R); ++i) {
     RTCRayHit rh = embreeRay(primary[i]);
     rtcIntersect1(embree.scene, &ctx, &rh);
     bool eh = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
@@ -221,8 +234,21 @@ int main(int argc, char** argv) {
   auto measure = [&](bool parallel) {
     Rate pri{}, sha{};
     std::atomic<size_t> sink{0};
+    const int passes = opt.passes;
+    const bool doPrimary = opt.only != "shadow", doShadow = opt.only != "primary";
+    // With --only (one thread), on this thread's CPU clock: waits for a core on a busy
+    // machine are not counted.
+    auto bestOfAlternating = [&](int reps, auto&& a, auto&& b) {
+      if (!only) return bench::bestOfAlternating(reps, a, b);
+      double bestA = 1e300, bestB = 1e300;
+      for (int i = 0; i < reps; ++i) {
+        bestA = std::min(bestA, bestOfCpu(1, a));
+        bestB = std::min(bestB, bestOfCpu(1, b));
+      }
+      return std::make_pair(bestA, bestB);
+    };
     auto [lp, ep] = bestOfAlternating(
-        5,
+        doPrimary ? passes : 0,
         [&] {
           forRays(R, parallel, [&](size_t i) {
             Hit h;
@@ -240,7 +266,7 @@ int main(int argc, char** argv) {
           });
         });
     auto [ls, es] = bestOfAlternating(
-        5,
+        doShadow ? passes : 0,
         [&] {
           forRays(shadow.size(), parallel, [&](size_t i) {
             if (world.occluded(shadow[i])) sink.fetch_add(1, std::memory_order_relaxed);
@@ -263,6 +289,14 @@ int main(int argc, char** argv) {
   {
     tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
     one = measure(false);
+  }
+  if (only) {
+    fmt::print("\n| rays | threads | Lucent Mrays/s | Embree Mrays/s | Lucent/Embree |\n");
+    fmt::print("|---|---|---|---|---|\n");
+    const Rate& r = opt.only == "primary" ? one.first : one.second;
+    fmt::print("| {} | 1 | {:.2f} | {:.2f} | {:.2f} |\n", opt.only, r.lucent / 1e6,
+               r.embree / 1e6, r.lucent / r.embree);
+    return 0;
   }
   all = measure(true);
 

@@ -321,10 +321,25 @@ class Bvh {
   template <class Visit, class Prefetch = NoPrefetch>
   bool candidates(const Ray& ray, const double& tFar, Visit&& visit,
                   Prefetch&& prefetch = Prefetch(), Order order = Order::NearestFirst) const {
+    auto visitLeaf = [&](uint32_t first, uint32_t count) {
+      for (uint32_t s = first, e = first + count; s < e; ++s)
+        if (!visit(itemOf(s))) return false;
+      return true;
+    };
+    return leaves(ray, tFar, visitLeaf, prefetch, order);
+  }
+
+  // candidates() a leaf at a time: visitLeaf(uint32_t first, uint32_t count) for the slots
+  // [first, first + count) of each entered leaf (order() names their items), so that a
+  // caller can test a leaf's items together (a mesh's triangles, four at once). tFar is
+  // read again after every call; visitLeaf returns false to end the search.
+  template <class VisitLeaf, class Prefetch = NoPrefetch>
+  bool leaves(const Ray& ray, const double& tFar, VisitLeaf&& visitLeaf,
+              Prefetch&& prefetch = Prefetch(), Order order = Order::NearestFirst) const {
     if (nodes_.empty()) return true;
     bvh_detail::FastNodeTest fast(ray);
-    if (fast.usable) return candidatesWith(fast, tFar, visit, prefetch, order);
-    return candidatesWith(SafeNodeTest(ray), tFar, visit, prefetch, order);
+    if (fast.usable) return candidatesWith(fast, tFar, visitLeaf, prefetch, order);
+    return candidatesWith(SafeNodeTest(ray), tFar, visitLeaf, prefetch, order);
   }
 
   // Closest hit. hitItem(uint32_t item, Ray& ray) tests one item against (ray.tmin,
@@ -411,8 +426,8 @@ class Bvh {
   static void pushOrdered(const BvhNode& n, int mask, const T tEnter[BvhNode::kWidth],
                           Entry<T>* stack, int& sp, Entry<T>& next);
 
-  template <class Test, class Visit, class Prefetch>
-  bool candidatesWith(const Test& test, const double& tFar, Visit& visit,
+  template <class Test, class VisitLeaf, class Prefetch>
+  bool candidatesWith(const Test& test, const double& tFar, VisitLeaf& visitLeaf,
                       Prefetch& prefetch, Order order) const;
 
   BvhNodes nodes_;
@@ -449,8 +464,8 @@ void Bvh::pushOrdered(const BvhNode& n, int mask, const T tEnter[BvhNode::kWidth
   next = e[k - 1];
 }
 
-template <class Test, class Visit, class Prefetch>
-bool Bvh::candidatesWith(const Test& test, const double& tFar, Visit& visit,
+template <class Test, class VisitLeaf, class Prefetch>
+bool Bvh::candidatesWith(const Test& test, const double& tFar, VisitLeaf& visitLeaf,
                          Prefetch& prefetch, Order order) const {
   if (nodes_.empty()) return true;
   double lastFar = tFar;
@@ -492,8 +507,7 @@ bool Bvh::candidatesWith(const Test& test, const double& tFar, Visit& visit,
         continue;
       }
     } else {
-      for (uint32_t s = cur.index, e = s + cur.count; s < e; ++s)
-        if (!visit(itemOf(s))) return false;
+      if (!visitLeaf(cur.index, cur.count)) return false;
       if (tFar != lastFar) {
         lastFar = tFar;
         tmax = limit(test, lastFar);

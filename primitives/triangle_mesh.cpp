@@ -3,6 +3,7 @@
 #include "test_counts.h"
 #include "triangle_geometry.h"
 #include "watertight.h"
+#include "watertight_filter.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -109,15 +110,52 @@ struct TriangleHit {
 
 }  // namespace
 
+template <class Exact>
+bool TriangleMesh::forEachLeafCandidate(const Ray& ray, const ShearedRay& sr, const double& tFar,
+                                        Exact&& exact, Bvh::Order order) const {
+  // Counted here, once per search, for --stats: the triangles of the entered leaves up to
+  // the one that ends the search, as when they were tested one by one.
+  uint64_t tested = 0;
+  const auto& P = mesh_->positions;
+  const auto& T = mesh_->triangles;
+  const auto& slotOrder = bvh_.order();
+  bool ended = !bvh_.leaves(
+      ray, tFar,
+      [&](uint32_t first, uint32_t count) {
+        tested += count;
+        // Four at a time: the pre-test leaves only the triangles the exact test may hit,
+        // which then run in slot order, as one by one.
+        for (uint32_t s = first, e = first + count; s < e; s += 4) {
+          const int n = int(std::min<uint32_t>(4, e - s));
+          uint32_t items[4];
+          const Vec3* corners[4][3];
+          for (int i = 0; i < n; ++i) {
+            items[i] = slotOrder.empty() ? s + i : slotOrder[s + i];
+            const auto& tri = T[items[i]];
+            for (int k = 0; k < 3; ++k) corners[i][k] = &P[tri[k]];
+          }
+          for (int m = watertightCandidates(sr, corners, n); m; m &= m - 1) {
+            const int i = __builtin_ctz(m);
+            if (!exact(items[i], corners[i])) {
+              tested -= e - (s + i + 1);
+              return false;
+            }
+          }
+        }
+        return true;
+      },
+      Bvh::NoPrefetch(), order);
+  threadTestCounts[kMeshTriangleSlot] += tested;
+  return ended;
+}
+
 bool TriangleMesh::intersect(const Ray& ray, Hit& hit) const {
   const ShearedRay sr(ray);
-  const auto& P = mesh_->positions;
   double tFar = ray.tmax;
   bool found = false;
-  forEachCandidate(ray, tFar, [&](uint32_t i) {
-    const auto& tri = mesh_->triangles[i];
+  forEachLeafCandidate(ray, sr, tFar, [&](uint32_t i, const Vec3* const* p) {
     TriangleIntersection ti;
-    if (intersectTriangle(sr, P[tri[0]], P[tri[1]], P[tri[2]], ti) && ray.tmin < ti.t &&
+    if (intersectTriangle(sr, *p[0], *p[1], *p[2], ti, ray.tmin) && ray.tmin < ti.t &&
         ti.t < tFar) {
       tFar = ti.t;
       hit.t = ti.t;
@@ -134,16 +172,12 @@ bool TriangleMesh::intersect(const Ray& ray, Hit& hit) const {
 
 bool TriangleMesh::occluded(const Ray& ray) const {
   const ShearedRay sr(ray);
-  const auto& P = mesh_->positions;
-  bool found = false;
-  forEachCandidate(ray, ray.tmax, [&](uint32_t i) {
-    const auto& tri = mesh_->triangles[i];
+  // Any hit will do: boxes in tree order, no sorting (Bvh::candidates).
+  return forEachLeafCandidate(ray, sr, ray.tmax, [&](uint32_t, const Vec3* const* p) {
     TriangleIntersection ti;
-    found = intersectTriangle(sr, P[tri[0]], P[tri[1]], P[tri[2]], ti) && ray.tmin < ti.t &&
-            ti.t < ray.tmax;
-    return !found;
-  }, Bvh::Order::Tree);  // any hit will do: no sorting (Bvh::candidates)
-  return found;
+    return !(intersectTriangle(sr, *p[0], *p[1], *p[2], ti, ray.tmin) && ray.tmin < ti.t &&
+             ti.t < ray.tmax);
+  }, Bvh::Order::Tree);
 }
 
 void TriangleMesh::crossings(const Ray& ray, CrossingList& out) const {

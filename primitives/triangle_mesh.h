@@ -16,6 +16,7 @@
 #include "bvh.h"
 #include "mesh_data.h"
 #include "shape.h"
+#include "watertight.h"
 
 #include <memory>
 #include <vector>
@@ -55,6 +56,14 @@ class TriangleMesh final : public Shape {
   template <class Visit>
   void forEachCandidate(const Ray& ray, const double& tFar, Visit&& visit,
                         Bvh::Order order = Bvh::Order::NearestFirst) const;
+
+  // The same search a leaf at a time, for the closest and any-hit searches: exact(
+  // triangleIndex, corners) for the triangles of the entered leaves that the four-lane
+  // pre-test (watertight_filter.h) leaves, in slot order; exact returns false to stop.
+  // Returns true if it was stopped so.
+  template <class Exact>
+  bool forEachLeafCandidate(const Ray& ray, const ShearedRay& sr, const double& tFar,
+                            Exact&& exact, Bvh::Order order = Bvh::Order::NearestFirst) const;
 
   std::shared_ptr<const MeshData> mesh_;
   bool useNormals_;

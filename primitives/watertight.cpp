@@ -88,7 +88,7 @@ bool isDegenerateTriangle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
 }
 
 bool intersectTriangle(const ShearedRay& r, const Vec3& p0, const Vec3& p1, const Vec3& p2,
-                       TriangleIntersection& out) {
+                       TriangleIntersection& out, double tmin) {
   if (!r.valid) return false;
   const Vec3 a = p0 - r.o, b = p1 - r.o, c = p2 - r.o;
   const double ax = a[r.kx] - r.sx * a[r.kz], ay = a[r.ky] - r.sy * a[r.kz];
@@ -126,6 +126,9 @@ bool intersectTriangle(const ShearedRay& r, const Vec3& p0, const Vec3& p1, cons
   const int facing = det > 0.0 ? 1 : -1;
   out.t = t;
   if (std::abs(t) <= deltaT && deltaT > 0.0) {
+    // Every t this branch can give is within deltaT of 0: at most tmin, so the caller
+    // rejects it whatever its sign (the origin's side is not needed).
+    if (deltaT <= tmin) return false;
     // t cannot be told from 0 by its own bound. The exact side of the ray's origin
     // against the triangle's plane still gives its sign: t > 0 exactly when the origin
     // is on the side the ray comes from.

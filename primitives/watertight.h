@@ -43,8 +43,11 @@ struct TriangleIntersection {
 // bound of zero is moved just behind the origin (t = −bound), so a ray starting on the
 // triangle never finds it again at a tiny positive t. Rays parallel to the plane never
 // hit; callers skip zero-area triangles (isDegenerateTriangle) before asking.
+// A caller that rejects every t <= tmin may pass tmin: a hit whose t cannot be told from 0
+// within a bound that is at most tmin is then reported as no hit, without the exact side
+// test that would only give its sign (a shadow ray meeting the triangle it starts on).
 bool intersectTriangle(const ShearedRay& ray, const Vec3& p0, const Vec3& p1, const Vec3& p2,
-                       TriangleIntersection& out);
+                       TriangleIntersection& out, double tmin = -kInf);
 
 // Is the triangle degenerate, its area lost in rounding (|e1 × e2| <= gamma(6)·|e1|·|e2|)?
 bool isDegenerateTriangle(const Vec3& p0, const Vec3& p1, const Vec3& p2);

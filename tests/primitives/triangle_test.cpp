@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <random>
 
 using namespace lucent;
 using namespace lucent::test;
@@ -204,4 +205,35 @@ TEST_CASE("watertight: the determinant's sign tells the side of the counter-cloc
     REQUIRE_THAT(ti.b1, WithinAbs(0.3, 1e-9));
     REQUIRE_THAT(ti.b2, WithinAbs(0.5, 1e-9));
   }
+}
+
+TEST_CASE("watertight: passing tmin changes no answer of a caller that rejects t <= tmin",
+          "[primitives][triangle][watertight]") {
+  // Rays that start on (or within rounding of) the triangle they are tested against, as
+  // shadow rays do, and rays from afar: with and without tmin, the hits beyond tmin agree.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), w(0.0, 1.0);
+  int onTriangle = 0, beyond = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 p0(u(rng), u(rng), u(rng)), p1(u(rng), u(rng), u(rng)), p2(u(rng), u(rng), u(rng));
+    if (isDegenerateTriangle(p0, p1, p2)) continue;
+    double b1 = w(rng), b2 = w(rng) * (1.0 - b1);
+    const Vec3 onIt = p0 + b1 * (p1 - p0) + b2 * (p2 - p0);
+    const bool fromAfar = i % 4 == 0;
+    const Vec3 d(u(rng), u(rng), u(rng));
+    const Ray ray(fromAfar ? onIt - 3.0 * d : onIt, d);
+    const ShearedRay sr(ray);
+    for (double tmin : {0.0, 1e-300, 1e-12, 1e-4, 1.0}) {
+      TriangleIntersection a, b;
+      const bool plain = intersectTriangle(sr, p0, p1, p2, a) && tmin < a.t;
+      const bool given = intersectTriangle(sr, p0, p1, p2, b, tmin) && tmin < b.t;
+      REQUIRE(plain == given);
+      if (plain) REQUIRE(a.t == b.t);
+      beyond += plain;
+    }
+    TriangleIntersection a;
+    onTriangle += !fromAfar && intersectTriangle(sr, p0, p1, p2, a) && std::abs(a.t) < 1e-12;
+  }
+  CHECK(onTriangle > 1000);  // the case the shortcut is for does occur
+  CHECK(beyond > 1000);
 }
