@@ -12,8 +12,9 @@
 #                               [--built-from TEXT] [SCENE.xml...]
 # (--doc-only puts the last measured table, docs/performance-data/gallery-speed.md, into
 # docs/performance-history.md without measuring.) --size renders every scene at W x H
-# instead of its own size (Lucent's -w/-h, POV-Ray's +W/+H); --out writes PREFIX.tsv and
-# PREFIX.md instead of docs/performance-data/gallery-speed.{tsv,md} (bench/run.sh uses both).
+# instead of its own size (Lucent's -w/-h, POV-Ray's +W/+H); --out P writes the table to P
+# with .tsv and .md appended instead of docs/performance-data/gallery-speed.{tsv,md}
+# (bench/run.sh uses both options).
 #
 # Three times per renderer: the whole process as a user waits for it (start-up, parsing,
 # building, rendering, writing), its CPU time (user + system, all threads), and the
@@ -52,8 +53,8 @@ done
 lucent=$(realpath -m "$lucent")
 
 mkdir -p "$(dirname "$prefix")"
-tsv=$prefix.tsv
-md=$prefix.md
+tsv="$prefix".tsv
+md="$prefix".md
 sizeArgs=()
 if [ -n "$size" ]; then
   [[ $size =~ ^[0-9]+x[0-9]+$ ]] || { echo "gallery_speed: --size takes WxH, not $size" >&2; exit 2; }
