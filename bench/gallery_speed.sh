@@ -8,9 +8,13 @@
 # and the fastest kept; the 1-minute load average is recorded before each scene.
 #
 #   bash bench/gallery_speed.sh [--lucent PATH] [--threads N] [--samples N] [--reps N]
-#                               [--no-doc | --doc-only] [--built-from TEXT] [SCENE.xml...]
+#                               [--size WxH] [--out PREFIX] [--no-doc | --doc-only]
+#                               [--built-from TEXT] [SCENE.xml...]
 # (--doc-only puts the last measured table, docs/performance-data/gallery-speed.md, into
-# docs/performance-history.md without measuring.)
+# docs/performance-history.md without measuring.) --size renders every scene at W x H
+# instead of its own size (Lucent's -w/-h, POV-Ray's +W/+H); --out P writes the table to P
+# with .tsv and .md appended instead of docs/performance-data/gallery-speed.{tsv,md}
+# (bench/run.sh uses both options).
 #
 # Three times per renderer: the whole process as a user waits for it (start-up, parsing,
 # building, rendering, writing), its CPU time (user + system, all threads), and the
@@ -28,6 +32,8 @@ reps=3
 doc=1
 docOnly=0
 builtFrom=""
+size=""
+prefix=docs/performance-data/gallery-speed
 scenes=()
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -38,16 +44,22 @@ while [ $# -gt 0 ]; do
     --no-doc) doc=0; shift ;;
     --doc-only) docOnly=1; shift ;;
     --built-from) builtFrom=$2; shift 2 ;;
+    --size) size=$2; shift 2 ;;
+    --out) prefix=$2; shift 2 ;;
     *) scenes+=("$1"); shift ;;
   esac
 done
 [ ${#scenes[@]} -gt 0 ] || scenes=(examples/gallery/*.xml)
 lucent=$(realpath -m "$lucent")
 
-data=docs/performance-data
-mkdir -p "$data"
-tsv=$data/gallery-speed.tsv
-md=$data/gallery-speed.md
+mkdir -p "$(dirname "$prefix")"
+tsv="$prefix".tsv
+md="$prefix".md
+sizeArgs=()
+if [ -n "$size" ]; then
+  [[ $size =~ ^[0-9]+x[0-9]+$ ]] || { echo "gallery_speed: --size takes WxH, not $size" >&2; exit 2; }
+  sizeArgs=(-w "${size%x*}" -h "${size#*x}")
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -87,6 +99,7 @@ for scene in "${scenes[@]}"; do
   tag=$(grep -m1 -oE '<render[^>]*>' "$scene" || true)
   width=$(sed -nE 's/.*[ \t]width="([0-9]+)".*/\1/p' <<< "$tag"); width=${width:-640}
   height=$(sed -nE 's/.*[ \t]height="([0-9]+)".*/\1/p' <<< "$tag"); height=${height:-480}
+  if [ -n "$size" ]; then width=${size%x*}; height=${size#*x}; fi
   if ! "$lucent" export-pov "$scene" -o "$work/$name.pov" > "$work/export.log" 2>&1; then
     echo "gallery_speed: $name: not exportable, skipped: $(grep -m1 error "$work/export.log")" >&2
     continue
@@ -94,7 +107,7 @@ for scene in "${scenes[@]}"; do
   load=$(cut -d' ' -f1 /proc/loadavg)
   lw="" pw=""
   read -r lw lc lr < <(fastest lucentTime "$lucent" render "$scene" -o "$work/lucent.png" \
-    -s "$samples" -t "$threads" -q --stats)
+    -s "$samples" -t "$threads" "${sizeArgs[@]}" -q --stats)
   # shellcheck disable=SC2086
   read -r pw pc pr < <(cd "$work" && fastest povTime povray +I"$name.pov" +Opov.png +W"$width" \
     +H"$height" -D -V -GR +FN +WT"$threads" $povAA)
@@ -133,7 +146,7 @@ loads=$(tail -n +2 "$tsv" | cut -f13 | sort -g | awk 'NR == 1 { lo = $1 } { hi =
   echo "Measured $(date -u '+%Y-%m-%d %H:%M UTC') on $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) hardware threads, both renderers on $threads threads, $samples sample(s) per pixel (POV-Ray \`$povAA\`), best of $reps runs each; Lucent built from $builtFrom; POV-Ray $(povray --version 2>&1 | sed -nE 's/^POV-Ray ([0-9.]*[0-9]).*/\1/p' | head -1). The 1-minute load average before each scene was $loads (the machine is shared with other work; 2 would mean both cores already busy)."
   echo
   echo "\`\`\`sh"
-  echo "bash bench/gallery_speed.sh --lucent build/cli/lucent --threads $threads --samples $samples --reps $reps"
+  echo "bash bench/gallery_speed.sh --lucent build/cli/lucent --threads $threads --samples $samples --reps $reps${size:+ --size $size}"
   echo "\`\`\`"
   echo
   echo 'Wall: the whole process, as a user waits for it. CPU: user + system seconds of all threads of the whole process. Render: the renderer'\''s own wall time for the image alone (Lucent'\''s `--stats` time, POV-Ray'\''s Trace Time). Each ratio is POV-Ray'\''s time over Lucent'\''s: above 1, Lucent is faster.'
