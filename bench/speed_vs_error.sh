@@ -85,14 +85,16 @@ trap 'rm -rf "$work"' EXIT
 # element (a scene's own value is replaced). Fixed: N samples per pixel, adaptive off.
 # Adaptive (@adaptive=T): a pixel whose centre differs from a neighbour's by more than T,
 # largest linear channel, is refined in stages of 6, 12, 24, ... samples until they agree
-# within T or all N are taken. More settings come from --setting.
+# within T or all N are taken. Corners (@adaptive-mode=corners): POV-Ray's method 2 with
+# shared pixel corners, threshold and depth as +A and +R. More settings come from --setting.
 # POV-Ray: -A, then method 1 (+AM1: centre, then an R x R grid where the centre differs
 # from the left or upper neighbour by the threshold) and method 2 (+AM2: recursive corner
 # subdivision to depth R), with jitter at its default (on), as POV-Ray users render.
 # Threshold 0 supersamples every pixel.
 if [ $quick -eq 1 ]; then
   lucentSettings=("fixed|1 spp|-s 1" "fixed|4 spp|-s 4"
-    "adaptive|adaptive 4 spp threshold 0.05|-s 4 @adaptive=0.05")
+    "adaptive|adaptive 4 spp threshold 0.05|-s 4 @adaptive=0.05"
+    "corners|corners threshold 0.1 depth 3|@samples=1 @adaptive=0.1 @adaptive-mode=corners @adaptive-depth=3")
   povLevels=("-A" "+AM1 +A0.3 +R2")
   : "${refSamples:=16}" "${povRef:=+AM1 +A0.0 +R4}"
 else
@@ -100,6 +102,10 @@ else
   for n in 1 2 4 8 16 32 64; do lucentSettings+=("fixed|$n spp|-s $n"); done
   for a in 16:0.3 16:0.1 16:0.03 64:0.03 64:0.01; do
     lucentSettings+=("adaptive|adaptive ${a%%:*} spp threshold ${a##*:}|-s ${a%%:*} @adaptive=${a##*:}")
+  done
+  # Corner sampling (POV-Ray's +AM2 without jitter; THRESHOLD:DEPTH).
+  for c in 0.3:3 0.1:3 0.1:4 0.03:4 0.01:5; do
+    lucentSettings+=("corners|corners threshold ${c%%:*} depth ${c##*:}|@samples=1 @adaptive=${c%%:*} @adaptive-mode=corners @adaptive-depth=${c##*:}")
   done
   povLevels=("-A"
     "+AM1 +A0.3 +R3" "+AM1 +A0.1 +R3" "+AM1 +A0.0 +R2" "+AM1 +A0.0 +R3" "+AM1 +A0.0 +R4"
