@@ -18,6 +18,9 @@ struct ParseOptions {
   std::map<std::string, std::string> defines;
   // Folders (besides the scene file's own) that the scene may read files from.
   std::vector<std::string> allowPaths;
+  // The frame of an animated scene to expand (1-based): it sets the built-in names frame
+  // and clock. -D frame=F or -D clock=C win over it.
+  int frame = 1;
 };
 
 struct ParseResult {

@@ -14,8 +14,24 @@
 
 namespace lucent {
 
+// <animation frames clock-from clock-to cyclic>: the scene is a sequence of frames, and the
+// built-in names frame, frames and clock change from one to the next.
+struct Animation {
+  bool present = false;  // the scene has an <animation> element
+  int frames = 1;
+  double clockFrom = 0.0, clockTo = 1.0;
+  bool cyclic = false;
+
+  // clock in frame f (1-based): clock-from + (clock-to - clock-from) * (f - 1) / (N - 1),
+  // or / N when cyclic; clock-from when N = 1.
+  double clockOf(int frame) const;
+};
+
 struct Scene {
   std::string file;  // the scene file named on the command line
+  Animation animation;
+  int frame = 1;       // which frame of the animation this scene is (1 without one)
+  double clock = 0.0;  // its clock
   RenderSettings render;
   std::vector<Camera> cameras;  // at least one
   std::vector<Light> lights;
