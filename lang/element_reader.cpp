@@ -191,7 +191,7 @@ Mat4 ElementReader::transform(const char* attr) {
   std::string_view v = a.value();
   if (*t == v && r.errorOffset < v.size())
     if (auto inside = file_.locOf(a.value() + r.errorOffset)) where = *inside;
-  ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + message);
+  ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + message + instanceNote(ctx_.scope.get()));
   failed_ = true;
   return Mat4(1.0);
 }
