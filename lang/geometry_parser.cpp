@@ -9,6 +9,7 @@
 #include "scenegraph/shape_registry.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace lucent {
 
@@ -89,6 +90,22 @@ void registerId(ElementReader& r, Node& node) {
   }
 }
 
+// The attributes a geometry element accepts, made once per element name (a scene of a
+// million spheres reads them a million times).
+const std::vector<std::string_view>& nodeAttributes(std::string_view element) {
+  static std::unordered_map<std::string_view, std::vector<std::string_view>> cache;
+  auto it = cache.find(element);
+  if (it != cache.end()) return it->second;
+  std::vector<std::string_view> allowed{"id", "transform", "material"};
+  if (element == "use") allowed.push_back("ref");
+  for (auto a : shapeAttributes(element)) allowed.push_back(a);
+  // The key must outlive the call: the registry's and this file's names are static.
+  std::string_view key = element;
+  for (std::string_view n : geometryElementNames())
+    if (n == element) key = n;
+  return cache.emplace(key, std::move(allowed)).first->second;
+}
+
 }  // namespace
 
 // The shapes of the registry, then the groups, CSG operations and <use>.
@@ -124,22 +141,13 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
 
   const GroupEntry* group = findGroup(name);
   bool isUse = name == "use";
-  std::vector<std::string_view> allowed{"id", "transform", "material"};
-  if (isUse) allowed.push_back("ref");
-  for (auto a : shapeAttributes(name)) allowed.push_back(a);
-  r.checkAttributes(allowed);
+  r.checkAttributes(nodeAttributes(name));
 
   registerId(r, *node);
   node->parentFromNode = r.transform("transform");
 
   // Children: geometry (groups and CSG only) and at most one inline <material>.
   pugi::xml_node inlineMaterial;
-  std::vector<std::string_view> childNames{"material", "param"};
-  if (group) {
-    childNames.insert(childNames.end(), geometryElementNames().begin(), geometryElementNames().end());
-    childNames.push_back("repeat");
-    childNames.push_back("if");
-  }
   auto readChild = [&](pugi::xml_node c) {
     std::string_view cn = c.name();
     if (cn == "material") {
@@ -152,6 +160,12 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
     } else if (group && isGeometryElement(cn)) {
       if (auto child = parseGeometryNode(ctx, file, c, depth + 1)) node->children.push_back(std::move(child));
     } else {
+      std::vector<std::string_view> childNames{"material", "param"};
+      if (group) {
+        childNames.insert(childNames.end(), geometryElementNames().begin(), geometryElementNames().end());
+        childNames.push_back("repeat");
+        childNames.push_back("if");
+      }
       reportUnexpectedChild(r, c, childNames);
     }
   };
