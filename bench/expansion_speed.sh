@@ -5,17 +5,20 @@
 # rendered at 32×24 by one process on one core (taskset -c 0, -t 1); prints wall and CPU
 # time and peak memory of each, and the ratios. The aims: the repeat scene of 10^6 spheres
 # in under 2 s, and its peak memory within 1.5× of the literal one's.
-#   bash bench/expansion_speed.sh [--lucent PATH] [--n 1000] [--runs 3]
+#   bash bench/expansion_speed.sh [--lucent PATH] [--n 1000] [--runs 3] [--tsv FILE]
+# --tsv writes "scene<TAB>wall s<TAB>CPU s<TAB>peak MB" for each (bench/run.sh reads it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 lucent=build/cli/lucent
 n=1000
 runs=3
+tsv=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --lucent) lucent=$2; shift 2 ;;
     --n) n=$2; shift 2 ;;
     --runs) runs=$2; shift 2 ;;
+    --tsv) tsv=$2; shift 2 ;;
     *) echo "expansion_speed: unknown option $1" >&2; exit 1 ;;
   esac
 done
@@ -83,6 +86,13 @@ for pair in "repeats:$rep" "literal:$lit"; do
   name=${pair%%:*}; set -- ${pair#*:}
   awk -v n="$name" -v w="$1" -v u="$2" -v s="$3" -v m="$4" 'BEGIN{printf "| %s | %.2f | %.2f | %.0f |\n", n, w, u+s, m/1024}'
 done
+if [ -n "$tsv" ]; then
+  { printf 'scene\twall_s\tcpu_s\tpeak_mb\n'
+    for pair in "repeats:$rep" "literal:$lit"; do
+      name=${pair%%:*}; set -- ${pair#*:}
+      awk -v n="$name" -v w="$1" -v u="$2" -v s="$3" -v m="$4" 'BEGIN{printf "%s\t%.3f\t%.3f\t%.1f\n", n, w, u+s, m/1024}'
+    done; } > "$tsv"
+fi
 set -- $rep; rw=$1; rm=$4
 set -- $lit; lw=$1; lm=$4
 awk -v rw="$rw" -v lw="$lw" -v rm="$rm" -v lm="$lm" \
