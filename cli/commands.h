@@ -28,6 +28,7 @@ struct RenderOptions {
   std::string camera;
   bool quiet = false;
   bool stats = false;
+  std::string frames;  // --frames F or A..B (frame_range.h); empty: every frame
 };
 
 int runRender(const RenderOptions& options, const CommonOptions& common);

@@ -146,7 +146,11 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--max-depth", render.maxDepth, "Maximum recursion depth");
   renderCmd->add_option("--camera", render.camera, "Render through the camera with this name");
   renderCmd->add_flag("-q,--quiet", render.quiet, "No progress bar or closing line (warnings stay)");
-  renderCmd->add_flag("--stats", render.stats, "Print ray counts, time and Mrays/s");
+  renderCmd->add_flag("--stats", render.stats,
+                      "Print ray counts, time and Mrays/s (and each frame's time in an animation)");
+  renderCmd->add_option("--frames", render.frames,
+                        "Render only these frames of an animation: F or A..B (default: all)")
+      ->type_name("A..B");
   addCommonOptions(renderCmd, defines, allowPaths);
 
   CheckOptions check;

@@ -1,0 +1,31 @@
+#include "frame_loading.h"
+
+#include <fmt/core.h>
+
+#include <cstdio>
+
+namespace lucent::cli {
+
+bool picksOneMoment(const CommonOptions& common) {
+  return common.defines.count("frame") > 0 || common.defines.count("clock") > 0;
+}
+
+std::string frameName(int frame, const Animation& animation) {
+  return fmt::format("frame {} of {} (clock {})", frame, animation.frames, animation.clockOf(frame));
+}
+
+LoadedScene loadFrame(const SceneRequest& request, const CommonOptions& common,
+                      const Animation& animation) {
+  try {
+    return loadScene(request, common);
+  } catch (...) {
+    const int status = reportFailure(std::current_exception());
+    const char* what = status == kInvalidScene   ? "is invalid"
+                       : status == kUsage        ? "cannot be rendered as asked"
+                                                 : "cannot be loaded";
+    fmt::print(stderr, "lucent: {} {}\n", frameName(request.frame, animation), what);
+    throw ReportedFailure{status};
+  }
+}
+
+}  // namespace lucent::cli
