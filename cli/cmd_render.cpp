@@ -235,7 +235,7 @@ int runRender(const RenderOptions& options, const CommonOptions& common) {
   LoadedScene loaded = loadScene(request, common);
   const Animation animation = loaded.scene->animation;
   const bool sequence = animation.present && !picksOneMoment(common);
-  if (range) checkFrameRange(*range, options.frames, sequence ? animation.frames : 1, sequence);
+  if (range) checkFrameRange(*range, "--frames " + options.frames, sequence ? animation.frames : 1, sequence);
   if (sequence) {
     const FrameRange frames = range.value_or(FrameRange{1, animation.frames});
     // The numbered names must be writable too (a '#' run may change the extension's place).

@@ -50,6 +50,7 @@ struct ExportPovOptions {
   std::string output;
   std::optional<int> width, height, maxDepth;  // the image the .pov file is written for
   std::string camera;
+  std::optional<int> frame;  // of an animated scene; none: frame 1
 };
 int runExportPov(const ExportPovOptions& options, const CommonOptions& common);
 
@@ -59,6 +60,7 @@ struct CompareOptions {
   std::string povFile;  // --pov: a hand-written POV-Ray scene instead of the export
   std::optional<int> width, height, samples, threads, maxDepth;
   std::string camera;
+  std::optional<int> frame;  // of an animated scene; none: frame 1
 };
 int runCompare(const CompareOptions& options, const CommonOptions& common);
 

@@ -1,5 +1,7 @@
 #include "frame_loading.h"
 
+#include "frame_range.h"
+
 #include <fmt/core.h>
 
 #include <cstdio>
@@ -26,6 +28,21 @@ LoadedScene loadFrame(const SceneRequest& request, const CommonOptions& common,
     fmt::print(stderr, "lucent: {} {}\n", frameName(request.frame, animation), what);
     throw ReportedFailure{status};
   }
+}
+
+LoadedScene loadOneFrame(SceneRequest request, const CommonOptions& common,
+                         const std::optional<int>& frame) {
+  if (!frame) return loadScene(request, common);
+  const FrameRange range = singleFrame(*frame);
+  const std::string asked = fmt::format("--frame {}", *frame);
+  if (picksOneMoment(common))
+    throw UsageError(fmt::format("{} and -D {} both choose the moment; give one", asked,
+                                 common.defines.count("frame") ? "frame" : "clock"));
+  request.frame = *frame;
+  LoadedScene loaded = loadScene(request, common);
+  const Animation& animation = loaded.scene->animation;
+  checkFrameRange(range, asked, animation.present ? animation.frames : 1, animation.present);
+  return loaded;
 }
 
 }  // namespace lucent::cli

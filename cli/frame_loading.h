@@ -17,6 +17,11 @@ bool picksOneMoment(const CommonOptions& common);
 LoadedScene loadFrame(const SceneRequest& request, const CommonOptions& common,
                       const Animation& animation);
 
+// export-pov and compare: loadScene of frame `frame` (--frame F; none: frame 1). Throws
+// UsageError for a frame the scene does not have, or --frame given with -D frame/clock.
+LoadedScene loadOneFrame(SceneRequest request, const CommonOptions& common,
+                         const std::optional<int>& frame);
+
 // "frame 3 of 24 (clock 0.0869565)": the clock in its shortest exact form.
 std::string frameName(int frame, const Animation& animation);
 

@@ -41,12 +41,17 @@ FrameRange parseFrameRange(const std::string& text) {
   return FrameRange{*first, *last};
 }
 
-void checkFrameRange(const FrameRange& range, const std::string& text, int frames, bool animated) {
+void checkFrameRange(const FrameRange& range, const std::string& asked, int frames, bool animated) {
   if (range.last <= frames) return;
   if (!animated)
-    throw UsageError(fmt::format("--frames {}: the scene has no <animation>, so only frame 1", text));
-  throw UsageError(fmt::format("--frames {}: the animation has {} frame{} (1..{})", text, frames,
+    throw UsageError(fmt::format("{}: the scene has no <animation>, so only frame 1", asked));
+  throw UsageError(fmt::format("{}: the animation has {} frame{} (1..{})", asked, frames,
                                frames == 1 ? "" : "s", frames));
+}
+
+FrameRange singleFrame(int frame) {
+  if (frame < 1) throw UsageError(fmt::format("--frame {}: frames are numbered from 1", frame));
+  return FrameRange{frame, frame};
 }
 
 }  // namespace lucent::cli

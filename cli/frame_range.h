@@ -15,7 +15,11 @@ struct FrameRange {
 FrameRange parseFrameRange(const std::string& text);
 
 // Throws UsageError when the range goes beyond the scene's frames: `animated` false means
-// the scene has no <animation> and only frame 1.
-void checkFrameRange(const FrameRange& range, const std::string& text, int frames, bool animated);
+// the scene has no <animation> and only frame 1. `asked` is the option as given
+// ("--frames 2..30", "--frame 3"), which the message starts with.
+void checkFrameRange(const FrameRange& range, const std::string& asked, int frames, bool animated);
+
+// --frame F of export-pov and compare: F >= 1, or UsageError.
+FrameRange singleFrame(int frame);
 
 }  // namespace lucent::cli

@@ -38,8 +38,10 @@ TEST_CASE("frame ranges: F and A..B", "[cli][animation]") {
   CHECK(range.first == 2);
   CHECK(range.last == 24);
   CHECK(range.count() == 23);
-  CHECK_NOTHROW(checkFrameRange(range, "2..24", 24, true));
-  CHECK_NOTHROW(checkFrameRange(parseFrameRange("1"), "1", 1, false));
+  CHECK_NOTHROW(checkFrameRange(range, "--frames 2..24", 24, true));
+  CHECK_NOTHROW(checkFrameRange(parseFrameRange("1"), "--frames 1", 1, false));
+  CHECK(singleFrame(3).first == 3);
+  CHECK_THROWS_WITH(singleFrame(0), "--frame 0: frames are numbered from 1");
 }
 
 TEST_CASE("frame ranges: what is not a range is a usage error saying why", "[cli][animation]") {
@@ -64,7 +66,7 @@ TEST_CASE("frame ranges: what is not a range is a usage error saying why", "[cli
 TEST_CASE("frame ranges: beyond the scene's frames is a usage error", "[cli][animation]") {
   auto message = [](const std::string& text, int frames, bool animated) {
     try {
-      checkFrameRange(parseFrameRange(text), text, frames, animated);
+      checkFrameRange(parseFrameRange(text), "--frames " + text, frames, animated);
     } catch (const UsageError& e) {
       return std::string(e.what());
     }
