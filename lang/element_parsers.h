@@ -41,6 +41,10 @@ std::optional<ShapeSpec> parseShape(ElementReader& r);
 // The attributes each shape element accepts besides id, transform and material.
 std::vector<std::string_view> shapeAttributes(std::string_view element);
 
+// animation_parser.cpp: the <animation> element (at most one, top level) and the built-in
+// names frame, frames and clock for the frame being expanded (-D frame or -D clock win).
+void readAnimation(ParseContext& ctx, const std::vector<TopLevelItem>& items, int frame);
+
 // references.cpp: resolves <use ref>, finds reference cycles, limits the instance depth
 // and checks the operands of merge, intersection and difference are solids.
 void resolveReferences(ParseContext& ctx);

@@ -22,12 +22,12 @@ SourceLoc ElementReader::valueLoc(const char* attr) const {
 }
 
 void ElementReader::attrError(const char* attr, const std::string& message) {
-  ctx_.diags.error(valueLoc(attr), tag() + " attribute '" + attr + "': " + message);
+  ctx_.diags.error(valueLoc(attr), tag() + " attribute '" + attr + "': " + message + instanceNote(ctx_.scope.get()));
   failed_ = true;
 }
 
 void ElementReader::error(const std::string& message) {
-  ctx_.diags.error(loc(), message);
+  ctx_.diags.error(loc(), message + instanceNote(ctx_.scope.get()));
   failed_ = true;
 }
 
@@ -63,10 +63,13 @@ void ElementReader::checkAttributes(const std::vector<std::string_view>& allowed
 std::optional<std::string> ElementReader::text(const char* attr) {
   pugi::xml_attribute a = el_.attribute(attr);
   if (!a) return std::nullopt;
-  std::string error;
-  std::optional<std::string> v = ctx_.params.substitute(a.value(), error);
+  SubstitutionError error;
+  std::optional<std::string> v = ctx_.params.substitute(a.value(), ctx_.scope.get(), error);
   if (!v) {
-    if (!error.empty()) attrError(attr, error);
+    if (!error.message.empty()) {
+      SourceLoc where = error.offset != std::string::npos ? file_.locInValue(a, el_, error.offset) : valueLoc(attr);
+      ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + error.message + instanceNote(ctx_.scope.get()));
+    }
     failed_ = true;
   }
   return v;

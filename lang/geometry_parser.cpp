@@ -3,6 +3,7 @@
 // material (an id attribute or one inline <material> child, not both). A node without a
 // material leaves Node::material empty and inherits its nearest ancestor's (World does it).
 #include "element_parsers.h"
+#include "expansion.h"
 #include "povray_names.h"
 
 #include "scenegraph/shape_registry.h"
@@ -29,7 +30,7 @@ const GroupEntry* findGroup(std::string_view name) {
   return nullptr;
 }
 
-const std::vector<std::string_view> kTopLevelOnly{"render", "camera", "light", "param", "defs", "include"};
+const std::vector<std::string_view> kTopLevelOnly{"render", "camera", "light", "defs", "include", "animation"};
 
 // A child element that is not allowed where it stands: say where it belongs, or suggest
 // the closest allowed name.
@@ -74,9 +75,18 @@ void registerId(ElementReader& r, Node& node) {
     return;
   }
   node.id = *id;
-  auto [it, inserted] = r.ctx().nodeIds.try_emplace(*id, ParseContext::IdEntry{&node, node.loc});
-  if (!inserted)
-    r.attrError("id", "the id '" + *id + "' is already used (first defined at " + it->second.loc.str() + ")");
+  ParseContext& ctx = r.ctx();
+  if (!ctx.registerIds) return;  // a copy made by a <use> with parameters
+  auto [it, inserted] =
+      ctx.nodeIds.try_emplace(*id, ParseContext::IdEntry{&node, node.loc, &r.file(), r.element(), ctx.scope});
+  if (!inserted) {
+    const ParseContext::IdEntry& first = it->second;
+    std::string firstNote = instanceNote(first.scope.get());
+    r.attrError("id", "the id '" + *id + "' is already used (first defined at " + first.loc.str() + firstNote +
+                          ")" + (ctx.scope && instanceNote(ctx.scope.get()).size() ? "; an id inside a <repeat> must "
+                                                                                   "differ per instance, as in id=\"post${i}\""
+                                                                             : ""));
+  }
 }
 
 }  // namespace
@@ -105,6 +115,8 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
     r.error("elements nest deeper than " + std::to_string(kMaxElementDepth) + " levels here");
     return nullptr;
   }
+  if (!countNode(ctx)) return nullptr;
+  LocalScope scope(ctx, file, element);
   std::string_view name = element.name();
   auto node = std::make_unique<Node>();
   node->element = std::string(name);
@@ -122,9 +134,13 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
 
   // Children: geometry (groups and CSG only) and at most one inline <material>.
   pugi::xml_node inlineMaterial;
-  std::vector<std::string_view> childNames{"material"};
-  if (group) childNames.insert(childNames.end(), geometryElementNames().begin(), geometryElementNames().end());
-  r.forEachChild([&](pugi::xml_node c) {
+  std::vector<std::string_view> childNames{"material", "param"};
+  if (group) {
+    childNames.insert(childNames.end(), geometryElementNames().begin(), geometryElementNames().end());
+    childNames.push_back("repeat");
+    childNames.push_back("if");
+  }
+  auto readChild = [&](pugi::xml_node c) {
     std::string_view cn = c.name();
     if (cn == "material") {
       if (inlineMaterial) {
@@ -138,7 +154,14 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
     } else {
       reportUnexpectedChild(r, c, childNames);
     }
-  });
+  };
+  if (group) {
+    forEachExpandedChild(r, depth + 1, readChild);
+  } else {
+    r.forEachChild([&](pugi::xml_node c) {
+      if (std::string_view(c.name()) != "param") readChild(c);
+    });
+  }
   readNodeMaterial(r, *node, inlineMaterial);
 
   if (group) {
@@ -150,7 +173,12 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
     if (!r.has("ref")) {
       r.error("<use> needs a 'ref' attribute naming the id of the node to instantiate");
     } else if (auto ref = r.text("ref")) {
-      ctx.uses.push_back({node.get(), *ref, r.valueLoc("ref")});
+      bool hasParams = false;
+      for (pugi::xml_node c = element.child("param"); c && !hasParams; c = c.next_sibling("param")) hasParams = true;
+      // With parameters the target is read again with them (an instance of its own); without,
+      // the <use> shares the target's built geometry.
+      if (hasParams) ctx.instances.push_back({node.get(), *ref, r.valueLoc("ref"), ctx.scope, ctx.instanceChain});
+      else ctx.uses.push_back({node.get(), *ref, r.valueLoc("ref")});
     }
   } else {
     node->kind = NodeKind::Shape;
@@ -164,7 +192,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
 
 void parseDefs(ElementReader& r) {
   r.checkAttributes({});
-  r.forEachChild([&](pugi::xml_node c) {
+  forEachExpandedChild(r, 2, [&](pugi::xml_node c) {
     if (!isGeometryElement(c.name())) {
       reportUnexpectedChild(r, c, geometryElementNames());
       return;

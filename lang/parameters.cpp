@@ -1,16 +1,55 @@
 #include "parameters.h"
 
 #include "did_you_mean.h"
+#include "values.h"
 
 namespace lucent {
 
 namespace {
 bool isNameStart(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool isNameChar(char c) { return isNameStart(c) || (c >= '0' && c <= '9'); }
+
+std::string_view trimSpaces(std::string_view s) {
+  size_t b = s.find_first_not_of(" \t\n\r");
+  if (b == std::string_view::npos) return {};
+  size_t e = s.find_last_not_of(" \t\n\r");
+  return s.substr(b, e - b + 1);
+}
+
+// A parameter's value read as one number for an expression; the state caches the answer.
+std::optional<double> asNumber(std::string_view name, const std::string& value, int& state, double& number,
+                               std::string& error) {
+  if (state == 0) {
+    Parsed<double> n = parseNumber(value);
+    state = n ? 1 : 2;
+    if (n) number = *n;
+  }
+  if (state == 1) return number;
+  std::string shown = value.size() > 40 ? value.substr(0, 40) + "..." : value;
+  error = "the parameter '" + std::string(name) + "' is '" + shown + "', not one number, so it cannot be used in an expression";
+  return std::nullopt;
+}
 }  // namespace
 
+std::string paramLocation(const SourceFile& file, pugi::xml_node element) { return file.loc(element).str(); }
+
+class Parameters::Names final : public ExpressionNames {
+ public:
+  Names(Parameters& p, const Scope* scope) : p_(p), scope_(scope) {}
+  std::optional<double> number(std::string_view name, std::string& error, bool& known) override {
+    return p_.number(name, scope_, error, known);
+  }
+  std::vector<std::string> visibleNames() override { return p_.knownNames(scope_); }
+
+ private:
+  Parameters& p_;
+  const Scope* scope_;
+};
+
 Parameters::Parameters(const std::map<std::string, std::string>& defines, Diagnostics& diags)
-    : defines_(defines), diags_(diags) {}
+    : defines_(defines), diags_(diags) {
+  builtins_ = {{"pi", M_PI}, {"e", M_E}, {"clock", 0.0}, {"frame", 1.0}, {"frames", 1.0}};
+}
 
 bool Parameters::isValidName(std::string_view name) {
   if (name.empty() || !isNameStart(name[0])) return false;
@@ -19,47 +58,66 @@ bool Parameters::isValidName(std::string_view name) {
   return true;
 }
 
-void Parameters::declare(const std::string& name, const std::string& rawValue, const SourceLoc& loc,
-                         const SourceLoc& valueLoc) {
+void Parameters::declare(const std::string& name, const std::string& rawValue, const SourceFile& file,
+                         pugi::xml_node element) {
   auto [it, inserted] = params_.try_emplace(name);
   if (!inserted) {
-    diags_.error(loc, "<param> '" + name + "' is already declared (first declared at " +
-                          it->second.loc.str() + ")");
+    diags_.error(file.loc(element), "<param> '" + name + "' is already declared (first declared at " +
+                                        paramLocation(*it->second.file, it->second.element) + ")");
     return;
   }
   it->second.raw = rawValue;
-  it->second.loc = loc;
-  it->second.valueLoc = valueLoc;
+  it->second.file = &file;
+  it->second.element = element;
   order_.push_back(name);
 }
 
-std::vector<std::string> Parameters::knownNames() const {
-  std::vector<std::string> names = order_;
+void Parameters::setBuiltin(const std::string& name, double value) {
+  for (auto& [n, v] : builtins_)
+    if (n == name) {
+      v = value;
+      return;
+    }
+  builtins_.emplace_back(name, value);
+}
+
+const std::string* Parameters::define(const std::string& name) {
+  auto it = defines_.find(name);
+  if (it == defines_.end()) return nullptr;
+  usedDefines_.insert(name);
+  return &it->second;
+}
+
+std::vector<std::string> Parameters::knownNames(const Scope* scope) const {
+  std::vector<std::string> names;
+  for (const Scope* s = scope; s; s = s->parent.get()) {
+    if (!s->var.empty()) names.emplace_back(s->var);
+    for (const LocalParam& p : s->params) names.emplace_back(p.name);
+  }
+  names.insert(names.end(), order_.begin(), order_.end());
   for (const auto& [name, value] : defines_)
     if (!params_.count(name)) names.push_back(name);
+  for (const auto& [name, value] : builtins_) names.push_back(name);
   return names;
 }
 
-std::optional<std::string> Parameters::lookup(const std::string& name, std::string& error) {
-  auto it = params_.find(name);
-  if (it != params_.end()) it->second.used = true;
-  if (auto d = defines_.find(name); d != defines_.end()) {
-    usedDefines_.insert(name);
-    return d->second;  // -D wins, taken literally
-  }
-  if (it == params_.end()) {
-    error = "undefined parameter '" + name + "'" + didYouMean(name, knownNames()) +
-            "; declare it with <param name=\"" + name + "\" value=\"...\"/> or -D " + name + "=...";
-    return std::nullopt;
-  }
-  Param& p = it->second;
+void Parameters::reportInValue(const SourceFile& file, pugi::xml_node element, const std::string& name,
+                               const SubstitutionError& inner) {
+  pugi::xml_attribute value = element.attribute("value");
+  SourceLoc where = inner.offset != std::string::npos ? file.locInValue(value, element, inner.offset)
+                                                      : file.valueLoc(value, element);
+  diags_.error(where, "<param> '" + name + "' attribute 'value': " + inner.message);
+}
+
+std::optional<std::string> Parameters::resolveTop(const std::string& name, Param& p, std::string& error) {
+  (void)error;
   switch (p.state) {
     case State::Resolved: return p.value;
     case State::Failed: return std::nullopt;  // already reported at the <param>
     case State::Resolving: {
       std::string chain;
       for (const std::string& n : resolving_) chain += n + " -> ";
-      diags_.error(p.loc, "<param> '" + name + "' refers to itself: " + chain + name);
+      diags_.error(p.file->loc(p.element), "<param> '" + name + "' refers to itself: " + chain + name);
       p.state = State::Failed;
       return std::nullopt;
     }
@@ -67,25 +125,131 @@ std::optional<std::string> Parameters::lookup(const std::string& name, std::stri
   }
   p.state = State::Resolving;
   resolving_.push_back(name);
-  std::string inner;
-  std::optional<std::string> value = substitute(p.raw, inner);
+  SubstitutionError inner;
+  std::optional<std::string> value = substitute(p.raw, nullptr, inner);
   resolving_.pop_back();
-  Param& q = p;  // references into an unordered_map survive rehashing
   if (!value) {
-    if (!inner.empty()) diags_.error(q.valueLoc, "<param> '" + name + "' attribute 'value': " + inner);
-    q.state = State::Failed;
+    if (!inner.message.empty()) reportInValue(*p.file, p.element, name, inner);
+    p.state = State::Failed;
     return std::nullopt;
   }
-  if (q.state == State::Failed) return std::nullopt;  // a cycle through it was reported
-  q.state = State::Resolved;
-  q.value = *value;
-  return q.value;
+  if (p.state == State::Failed) return std::nullopt;  // a cycle through it was reported
+  p.state = State::Resolved;
+  p.value = *value;
+  return p.value;
 }
 
-std::optional<std::string> Parameters::substitute(std::string_view text, std::string& error) {
+std::optional<std::string> Parameters::resolveLocal(Scope& scope, LocalParam& p, std::string& error) {
+  if (p.aliasScope) return resolveLocal(*p.aliasScope, p.aliasScope->params[p.aliasIndex], error);
+  std::string name(p.name);
+  switch (p.state) {
+    case LocalParam::State::Resolved: return p.value;
+    case LocalParam::State::Failed: return std::nullopt;
+    case LocalParam::State::Resolving: {
+      std::string chain;
+      for (const std::string& n : resolving_) chain += n + " -> ";
+      diags_.error(p.file->loc(p.element), "<param> '" + name + "' refers to itself: " + chain + name);
+      p.state = LocalParam::State::Failed;
+      return std::nullopt;
+    }
+    case LocalParam::State::Unresolved: break;
+  }
+  p.state = LocalParam::State::Resolving;
+  resolving_.push_back(name);
+  SubstitutionError inner;
+  std::optional<std::string> value = substitute(p.raw, &scope, inner);  // its siblings are visible
+  resolving_.pop_back();
+  if (!value) {
+    if (!inner.message.empty()) reportInValue(*p.file, p.element, name, inner);
+    p.state = LocalParam::State::Failed;
+    return std::nullopt;
+  }
+  if (p.state == LocalParam::State::Failed) return std::nullopt;
+  p.state = LocalParam::State::Resolved;
+  p.value = *value;
+  return p.value;
+}
+
+std::optional<std::string> Parameters::lookup(std::string_view name, const Scope* scope, std::string& error,
+                                              bool& known) {
+  known = true;
+  for (const Scope* s = scope; s; s = s->parent.get()) {
+    if (!s->var.empty() && s->var == name) return formatNumber(s->value);
+    for (LocalParam& p : const_cast<Scope*>(s)->params)
+      if (p.name == name) return resolveLocal(*const_cast<Scope*>(s), p, error);
+  }
+  std::string key(name);
+  auto it = params_.find(key);
+  if (it != params_.end()) it->second.used = true;
+  if (auto d = defines_.find(key); d != defines_.end()) {
+    usedDefines_.insert(key);
+    return d->second;  // -D wins, taken literally
+  }
+  if (it != params_.end()) return resolveTop(key, it->second, error);
+  for (const auto& [n, v] : builtins_)
+    if (n == name) return formatNumber(v);
+  known = false;
+  error = "undefined parameter '" + key + "'" + didYouMean(key, knownNames(scope)) +
+          "; declare it with <param name=\"" + key + "\" value=\"...\"/> or -D " + key + "=...";
+  return std::nullopt;
+}
+
+std::optional<double> Parameters::number(std::string_view name, const Scope* scope, std::string& error,
+                                         bool& known) {
+  known = true;
+  for (const Scope* s = scope; s; s = s->parent.get()) {
+    if (!s->var.empty() && s->var == name) return s->value;
+    for (LocalParam& p : const_cast<Scope*>(s)->params) {
+      if (p.name != name) continue;
+      Scope* owner = const_cast<Scope*>(s);
+      LocalParam* q = &p;
+      while (q->aliasScope) {
+        owner = q->aliasScope.get();
+        q = &owner->params[q->aliasIndex];
+      }
+      if (q->numberState == 1) return q->number;
+      std::optional<std::string> v = resolveLocal(*owner, *q, error);
+      if (!v) return std::nullopt;
+      return asNumber(name, *v, q->numberState, q->number, error);
+    }
+  }
+  std::string key(name);
+  auto it = params_.find(key);
+  if (it != params_.end() && !defines_.count(key)) {
+    Param& p = it->second;
+    if (p.numberState == 1) {
+      p.used = true;
+      return p.number;
+    }
+  }
+  std::optional<std::string> v = lookup(name, nullptr, error, known);
+  if (!v) return std::nullopt;
+  if (it != params_.end() && !defines_.count(key)) return asNumber(name, *v, it->second.numberState, it->second.number, error);
+  int state = 0;
+  double n = 0.0;
+  return asNumber(name, *v, state, n, error);
+}
+
+std::string Parameters::whatIs(std::string_view name, const Scope* scope) {
+  for (const Scope* s = scope; s; s = s->parent.get()) {
+    if (!s->var.empty() && s->var == name) return "the variable of the <repeat> at " + s->file->loc(s->element).str();
+    for (const LocalParam& p : s->params)
+      if (p.name == name) return "a parameter declared at " + p.file->loc(p.element).str();
+  }
+  std::string key(name);
+  if (auto it = params_.find(key); it != params_.end())
+    return "the parameter declared at " + it->second.file->loc(it->second.element).str();
+  if (defines_.count(key)) return "a parameter given with -D";
+  for (const auto& [n, v] : builtins_)
+    if (n == name) return "a built-in name";
+  return "";
+}
+
+std::optional<std::string> Parameters::substitute(std::string_view text, const Scope* scope,
+                                                  SubstitutionError& error) {
   if (text.find('$') == std::string_view::npos) return std::string(text);
   std::string out;
-  out.reserve(text.size());
+  out.reserve(text.size() + 16);
   for (size_t i = 0; i < text.size();) {
     char c = text[i];
     if (c != '$') {
@@ -98,32 +262,50 @@ std::optional<std::string> Parameters::substitute(std::string_view text, std::st
       i += 2;
       continue;
     }
-    std::string name;
+    std::string message;
+    bool known = true;
     if (i + 1 < text.size() && text[i + 1] == '{') {
       size_t close = text.find('}', i + 2);
       if (close == std::string_view::npos) {
-        error = "'${' without a closing '}'";
+        error = {"'${' without a closing '}'", i};
         return std::nullopt;
       }
-      name = std::string(text.substr(i + 2, close - i - 2));
-      if (!isValidName(name)) {
-        error = "'${" + name + "}' is not a parameter name (letters, digits and '_')";
-        return std::nullopt;
+      std::string_view inside = text.substr(i + 2, close - i - 2);
+      std::string_view name = trimSpaces(inside);
+      if (isValidName(name)) {
+        std::optional<std::string> value = lookup(name, scope, message, known);
+        if (!value) {
+          error = {message, i + 2 + static_cast<size_t>(name.data() - inside.data())};
+          return std::nullopt;
+        }
+        out += *value;
+      } else {
+        Names names(*this, scope);
+        ExpressionError e;
+        std::optional<double> v = evaluator_.evaluate(inside, names, e);
+        if (!v) {
+          error = {e.reported ? std::string() : e.message, i + 2 + e.offset};
+          return std::nullopt;
+        }
+        out += formatNumber(*v);
       }
       i = close + 1;
-    } else {
-      size_t j = i + 1;
-      while (j < text.size() && isNameChar(text[j])) ++j;
-      name = std::string(text.substr(i + 1, j - i - 1));
-      if (!isValidName(name)) {
-        error = "'$' must be followed by a parameter name or {name} (write $$ for a literal '$')";
-        return std::nullopt;
-      }
-      i = j;
+      continue;
     }
-    std::optional<std::string> value = lookup(name, error);
-    if (!value) return std::nullopt;
+    size_t j = i + 1;
+    while (j < text.size() && isNameChar(text[j])) ++j;
+    std::string_view name = text.substr(i + 1, j - i - 1);
+    if (!isValidName(name)) {
+      error = {"'$' must be followed by a parameter name or {name} (write $$ for a literal '$')", i};
+      return std::nullopt;
+    }
+    std::optional<std::string> value = lookup(name, scope, message, known);
+    if (!value) {
+      error = {message, i + 1};
+      return std::nullopt;
+    }
     out += *value;
+    i = j;
   }
   return out;
 }

@@ -5,6 +5,7 @@
 #include "diagnostics.h"
 #include "file_access.h"
 #include "parameters.h"
+#include "scope.h"
 #include "source_file.h"
 
 #include "meshes/mesh_file_cache.h"
@@ -28,6 +29,9 @@ constexpr int kMaxElementDepth = 256;
 constexpr int kMaxInstanceDepth = 1024;
 // Files included within included files, at most this deep.
 constexpr int kMaxIncludeDepth = 16;
+// <repeat>, <if> and parameterised <use> expand a scene to at most this many nodes and
+// lights: a scene that would exceed it is refused before it expands (expansion.cpp).
+constexpr long long kMaxExpandedNodes = 10'000'000;
 
 // A top-level element of the scene, after <include>s were replaced by their files' children.
 struct TopLevelItem {
@@ -47,10 +51,24 @@ struct ParseContext {
   // Named materials: id -> index into scene.materials.
   std::unordered_map<std::string, uint32_t> materialIds;
 
-  // Node ids (one namespace for <defs> and the main tree) and the <use>s to resolve.
+  // The scope of the element being read: local <param>s and <repeat> variables (null at
+  // the top level).
+  ScopePtr scope;
+  // Nodes and lights made so far, against kMaxExpandedNodes; once over it, expansion stops.
+  long long nodeCount = 0;
+  bool overLimit = false;
+  // The outermost <repeat> being expanded (to blame when the limit is crossed).
+  const SourceFile* outerRepeatFile = nullptr;
+  pugi::xml_node outerRepeat;
+
+  // Node ids (one namespace for <defs> and the main tree) and the <use>s to resolve. A node
+  // keeps the element and scope it was read in, so a <use> with parameters can read it again.
   struct IdEntry {
     Node* node;
     SourceLoc loc;
+    const SourceFile* file = nullptr;
+    pugi::xml_node element;
+    ScopePtr scope;
   };
   std::unordered_map<std::string, IdEntry> nodeIds;
   struct PendingUse {
@@ -59,6 +77,20 @@ struct ParseContext {
     SourceLoc refLoc;  // the value of the ref attribute
   };
   std::vector<PendingUse> uses;
+  // <use>s with <param> children: instantiated once every id is known (references.cpp).
+  struct PendingInstance {
+    Node* use;
+    std::string ref;
+    SourceLoc refLoc;
+    ScopePtr scope;                 // the <use>'s own scope, holding its <param>s
+    std::vector<std::string> chain;  // the definitions being instantiated around it
+  };
+  std::vector<PendingInstance> instances;
+  // While an instance is read: its definitions chain, and the <use>'s scope whose <param>s
+  // hide the definition's own; ids inside an instance are not registered (they are copies).
+  std::vector<std::string> instanceChain;
+  ScopePtr instanceParams;
+  bool registerIds = true;
   // Nodes whose own element had errors: later checks (CSG solids) skip them rather than
   // repeat the problem in other words.
   std::unordered_set<const Node*> broken;

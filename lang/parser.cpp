@@ -7,6 +7,7 @@
 
 #include "camera_inside_warning.h"
 #include "element_parsers.h"
+#include "expansion.h"
 #include "povray_names.h"
 #include "scene_loader.h"
 
@@ -22,17 +23,42 @@ namespace {
 
 const std::vector<std::string_view>& topLevelElementNames() {
   static const std::vector<std::string_view> names = [] {
-    std::vector<std::string_view> n{"render", "camera", "light", "material", "param", "defs", "include"};
+    std::vector<std::string_view> n{"render", "camera", "light",  "material", "param",
+                                    "defs",   "include", "repeat", "if",       "animation"};
     n.insert(n.end(), geometryElementNames().begin(), geometryElementNames().end());
     return n;
   }();
   return names;
 }
 
+// An element inside a top-level <repeat> or <if>: a geometry node or a light.
+void readRepeated(ParseContext& ctx, const SourceFile& file, pugi::xml_node element) {
+  std::string_view name = element.name();
+  if (isGeometryElement(name)) {
+    if (auto node = parseGeometryNode(ctx, file, element, 2)) ctx.scene.root->children.push_back(std::move(node));
+  } else if (name == "light") {
+    if (!countNode(ctx)) return;
+    ElementReader r(ctx, file, element);
+    LocalScope scope(ctx, file, element);
+    parseLight(r);
+  } else {
+    ElementReader(ctx, file, element)
+        .error("<" + std::string(name) + "> is not allowed inside <repeat> or <if>; at the top level they hold "
+               "geometry nodes and lights" +
+               didYouMean(name, geometryElementNames()));
+  }
+}
+
 void readTopLevel(ParseContext& ctx, const TopLevelItem& item) {
   ElementReader r(ctx, *item.file, item.element);
   std::string_view name = item.element.name();
-  if (name == "param" || name == "material") return;  // read in earlier phases
+  if (name == "param" || name == "material" || name == "animation") return;  // read in earlier phases
+  if (name == "repeat" || name == "if") {
+    // The element itself is expanded as the only child of a pseudo-parent: the scene root.
+    ElementReader root(ctx, *item.file, item.file->root());
+    expandElement(root, item.element, 2, [&](pugi::xml_node c) { readRepeated(ctx, *item.file, c); });
+    return;
+  }
   if (name == "render") parseRender(r);
   else if (name == "camera") parseCamera(r);
   else if (name == "light") parseLight(r);
@@ -84,6 +110,7 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
                                             std::move(text));
     if (loader.load(std::move(top))) {
       for (const SourceFile* f : loader.sceneFiles()) checkSceneRoot(ctx, *f);
+      readAnimation(ctx, loader.items(), options.frame);
       for (const TopLevelItem& item : loader.items())
         if (std::string_view(item.element.name()) == "material") {
           ElementReader r(ctx, *item.file, item.element);

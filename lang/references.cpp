@@ -3,6 +3,7 @@
 // is limited, and the operands of merge, intersection and difference are checked to be
 // solids (which needs the references resolved, since a <use> is as solid as its target).
 #include "element_parsers.h"
+#include "expansion.h"
 #include "scenegraph/shape_registry.h"
 
 #include <algorithm>
@@ -147,9 +148,62 @@ void checkCsgOperands(ParseContext& ctx, const Node& csg) {
   }
 }
 
+// A <use> with <param>s: its target's element is read again in the scope it was written in,
+// with the <use>'s parameters hiding the target's own, and the copy becomes the <use>'s one
+// child (the <use> turns into a group). Instances may hold more of them: the list grows
+// while it is worked through. A definition that uses itself, even through others, is an
+// error; the chain of definitions makes that a check, not a stack overflow.
+void instantiate(ParseContext& ctx) {
+  std::vector<std::string_view> ids;
+  for (size_t k = 0; k < ctx.instances.size() && !ctx.overLimit; ++k) {
+    ParseContext::PendingInstance u = ctx.instances[k];
+    auto it = ctx.nodeIds.find(u.ref);
+    if (it == ctx.nodeIds.end()) {
+      if (ids.empty()) {
+        for (const auto& [id, entry] : ctx.nodeIds) ids.push_back(id);
+        std::sort(ids.begin(), ids.end());
+      }
+      ctx.diags.error(u.refLoc, "<use> attribute 'ref': no node has the id '" + u.ref + "'" + didYouMean(u.ref, ids));
+      ctx.broken.insert(u.use);
+      continue;
+    }
+    if (std::find(u.chain.begin(), u.chain.end(), u.ref) != u.chain.end()) {
+      std::string chain;
+      for (const std::string& c : u.chain) chain += "'" + c + "' -> ";
+      ctx.diags.error(u.use->loc, "<use ref=\"" + u.ref + "\"> instantiates '" + u.ref +
+                                      "' inside its own definition: " + chain + "'" + u.ref +
+                                      "' (a definition cannot use itself)");
+      ctx.broken.insert(u.use);
+      continue;
+    }
+    const ParseContext::IdEntry target = it->second;
+    ScopePtr savedScope = std::move(ctx.scope);
+    std::vector<std::string> savedChain = std::move(ctx.instanceChain);
+    bool savedRegister = ctx.registerIds;
+    ctx.scope = target.scope;
+    ctx.instanceChain = u.chain;
+    ctx.instanceChain.push_back(u.ref);
+    ctx.instanceParams = u.scope;
+    ctx.registerIds = false;
+    std::unique_ptr<Node> copy = parseGeometryNode(ctx, *target.file, target.element, 2);
+    ctx.scope = std::move(savedScope);
+    ctx.instanceChain = std::move(savedChain);
+    ctx.instanceParams = nullptr;
+    ctx.registerIds = savedRegister;
+    if (!copy) {
+      ctx.broken.insert(u.use);
+      continue;
+    }
+    if (ctx.broken.count(copy.get())) ctx.broken.insert(u.use);
+    u.use->kind = NodeKind::Group;
+    u.use->children.push_back(std::move(copy));
+  }
+}
+
 }  // namespace
 
 void resolveReferences(ParseContext& ctx) {
+  instantiate(ctx);
   // 1. Every <use ref> names a node.
   std::vector<std::string_view> ids;
   for (const ParseContext::PendingUse& u : ctx.uses) {

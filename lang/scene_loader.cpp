@@ -72,7 +72,7 @@ void SceneLoader::collectParams(const SourceFile& file) {
       r.attrError("name", "a parameter name is letters, digits and '_', not starting with a digit; got '" + name + "'");
       continue;
     }
-    ctx_.params.declare(name, r.verbatim("value"), r.loc(), r.valueLoc("value"));
+    ctx_.params.declare(name, r.verbatim("value"), file, c);
   }
 }
 

@@ -1,6 +1,7 @@
 #include "source_file.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 
@@ -30,8 +31,22 @@ std::optional<std::string> readSceneText(const std::filesystem::path& path, std:
 SourceFile::SourceFile(std::string display, std::filesystem::path folder, std::string text)
     : display_(std::move(display)), folder_(std::move(folder)), text_(std::move(text)) {
   lineStarts_.push_back(0);
-  for (size_t i = 0; i < text_.size(); ++i)
-    if (text_[i] == '\n') lineStarts_.push_back(i + 1);
+  for (size_t i = 0; i < text_.size(); ++i) {
+    char c = text_[i];
+    if (c == '\n') lineStarts_.push_back(i + 1);
+    else if (c == '\r' && i + 1 < text_.size() && text_[i + 1] == '\n') shrinks_.emplace_back(i, 1);
+    else if (c == '&') {
+      size_t end = text_.find(';', i);
+      if (end == std::string::npos || end - i > 12) continue;
+      size_t decoded = 1;
+      if (i + 1 < end && text_[i + 1] == '#') {  // a character reference: its UTF-8 length
+        bool hex = i + 2 < end && (text_[i + 2] == 'x' || text_[i + 2] == 'X');
+        unsigned long cp = std::strtoul(text_.c_str() + i + (hex ? 3 : 2), nullptr, hex ? 16 : 10);
+        decoded = cp < 0x80 ? 1 : cp < 0x800 ? 2 : cp < 0x10000 ? 3 : 4;
+      }
+      if (end + 1 - i > decoded) shrinks_.emplace_back(i, end + 1 - i - decoded);
+    }
+  }
 }
 
 std::optional<Diagnostic> SourceFile::parse() {
@@ -82,6 +97,19 @@ SourceLoc SourceFile::valueLoc(pugi::xml_attribute attr, pugi::xml_node owner) c
   if (*attr.value() != '\0')
     if (auto off = offsetOf(attr.value())) return locAt(*off);
   return nameLoc(attr, owner);
+}
+
+SourceLoc SourceFile::locInValue(pugi::xml_attribute attr, pugi::xml_node owner, size_t offset) const {
+  auto start = *attr.value() ? offsetOf(attr.value()) : std::nullopt;
+  if (!start) return valueLoc(attr, owner);
+  size_t lost = 0;
+  auto it = std::lower_bound(shrinks_.begin(), shrinks_.end(), std::make_pair(*start, size_t{0}));
+  for (; it != shrinks_.end(); ++it) {
+    size_t decodedAt = it->first - *start - lost;  // where this entity's character is
+    if (decodedAt >= offset) break;
+    lost += it->second;
+  }
+  return locAt(*start + offset + lost);
 }
 
 }  // namespace lucent

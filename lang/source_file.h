@@ -45,6 +45,9 @@ class SourceFile {
   // The attribute's name, and the first character of its value (inside the quotes).
   SourceLoc nameLoc(pugi::xml_attribute attr, pugi::xml_node owner) const;
   SourceLoc valueLoc(pugi::xml_attribute attr, pugi::xml_node owner) const;
+  // The character at `offset` of the attribute's value as parsed: pugixml decoded entities
+  // (&lt; is one '<') and line ends in place, so the offset is mapped back through them.
+  SourceLoc locInValue(pugi::xml_attribute attr, pugi::xml_node owner, size_t offset) const;
   // Where a pointer into the parsed text points (text content, say).
   std::optional<SourceLoc> locOf(const char* p) const;
 
@@ -56,6 +59,8 @@ class SourceFile {
   std::filesystem::path folder_;
   std::string text_;              // pugixml parses it in place: never reallocated after parse()
   std::vector<size_t> lineStarts_;  // computed before parsing rewrites newlines in values
+  // Where the text shrinks when parsed (an entity, a "\r\n"): offset and bytes lost.
+  std::vector<std::pair<size_t, size_t>> shrinks_;
   pugi::xml_document doc_;
 };
 
