@@ -24,7 +24,7 @@ namespace {
 std::string animationSummary(const Scene& scene, bool oneMoment) {
   const Animation& a = scene.animation;
   if (oneMoment)
-    return fmt::format("animation: {} frames; checked {} (clock {}), as -D chose\n", a.frames,
+    return fmt::format("animation: {} frames; checked frame {} (clock {}), as -D chose\n", a.frames,
                        scene.frame, scene.clock);
   return fmt::format("animation: {} frame{}, clock {} to {}{}; every frame checked\n", a.frames,
                      a.frames == 1 ? "" : "s", a.clockFrom, a.clockTo, a.cyclic ? " (cyclic)" : "");

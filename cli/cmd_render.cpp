@@ -137,11 +137,13 @@ int threadsShown(int threads) {
   return threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
 }
 
-// Every frame of `range`, each parsed again for its frame, to the numbered files.
-// `first` is the range's first frame, already loaded.
-int renderFrames(LoadedScene first, const FrameRange& range, const SceneRequest& request,
-                 const CommonOptions& common, const std::string& output, RenderRun& run) {
-  const Animation animation = first.scene->animation;
+// Every frame of `range` of `animation`, each parsed again for its frame, to the numbered
+// files. `first`, if it holds a scene, is the range's first frame, already loaded (in
+// `firstLoadSeconds`).
+int renderFrames(LoadedScene first, double firstLoadSeconds, const Animation& animation,
+                 const FrameRange& range,
+                 const SceneRequest& request, const CommonOptions& common,
+                 const std::string& output, RenderRun& run) {
   SceneRequest frameRequest = request;
   RayStats totalStats;
   double totalRender = 0.0;
@@ -153,15 +155,24 @@ int renderFrames(LoadedScene first, const FrameRange& range, const SceneRequest&
                  range.count(), name);
       return kRuntimeFailure;
     }
-    const auto frameStart = std::chrono::steady_clock::now();
+    auto frameStart = std::chrono::steady_clock::now();
     LoadedScene loaded;
-    if (f == range.first) {
+    double loadSeconds = 0.0;
+    if (f == range.first && first.scene) {
       loaded = std::move(first);
+      loadSeconds = firstLoadSeconds;
+      frameStart -= std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+          std::chrono::duration<double>(loadSeconds));
     } else {
       frameRequest.frame = f;
-      loaded = loadFrame(frameRequest, common, animation);
+      try {
+        loaded = loadFrame(frameRequest, common, animation);
+      } catch (...) {
+        fmt::print(stderr, "lucent: stopped; {} of {} frames written\n", written, range.count());
+        throw;
+      }
+      loadSeconds = secondsSince(frameStart);
     }
-    const double loadSeconds = secondsSince(frameStart);
     SequencePosition position{written + 1, range.count(), f, animation.frames, secondsSince(run.start)};
     RenderResult result = renderToFile(std::move(loaded), name, run, position);
     if (result.cancelled) {
@@ -187,6 +198,9 @@ int renderFrames(LoadedScene first, const FrameRange& range, const SceneRequest&
     const double total = secondsSince(run.start);
     fmt::print("frames:    {:>14}  in {:.3f} s ({}; {:.3f} s a frame, render {:.3f} s of it)\n", written,
                total, formatDuration(total), total / written, totalRender / written);
+    // Each file is read once for the run, not once a frame.
+    fmt::print("files:     {:>14}  mesh files read, {} image textures loaded, for {} frames\n",
+               request.meshCache->reads(), run.textures.loads(), written);
   }
   return kOk;
 }
@@ -231,8 +245,9 @@ int runRender(const RenderOptions& options, const CommonOptions& common) {
   request.meshCache = std::make_shared<MeshFileCache>();
   std::set<std::string> printed;  // the first frame's warnings, not repeated per frame
   request.printed = &printed;
-  request.frame = range ? range->first : 1;
+  // Frame 1 (or the moment -D picks) tells how many frames there are.
   LoadedScene loaded = loadScene(request, common);
+  const double firstLoadSeconds = secondsSince(run.start);
   const Animation animation = loaded.scene->animation;
   const bool sequence = animation.present && !picksOneMoment(common);
   if (range) checkFrameRange(*range, "--frames " + options.frames, sequence ? animation.frames : 1, sequence);
@@ -240,7 +255,9 @@ int runRender(const RenderOptions& options, const CommonOptions& common) {
     const FrameRange frames = range.value_or(FrameRange{1, animation.frames});
     // The numbered names must be writable too (a '#' run may change the extension's place).
     checkImageOutputPath(frameOutputPath(output, frames.first, animation.frames));
-    return renderFrames(std::move(loaded), frames, request, common, output, run);
+    if (frames.first != 1) loaded = {};
+    return renderFrames(std::move(loaded), firstLoadSeconds, animation, frames, request, common,
+                        output, run);
   }
 
   RenderResult result = renderToFile(std::move(loaded), output, run, std::nullopt);

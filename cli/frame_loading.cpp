@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include <cstdio>
+#include <set>
 
 namespace lucent::cli {
 
@@ -38,11 +39,17 @@ LoadedScene loadOneFrame(SceneRequest request, const CommonOptions& common,
   if (picksOneMoment(common))
     throw UsageError(fmt::format("{} and -D {} both choose the moment; give one", asked,
                                  common.defines.count("frame") ? "frame" : "clock"));
-  request.frame = *frame;
+  std::set<std::string> printed;  // frame 1's warnings, not repeated for frame F
+  if (!request.printed) request.printed = &printed;
+  // Frame 1 tells how many frames there are: a frame beyond them is wrong usage, not an
+  // invalid scene (which the parser would say of it).
   LoadedScene loaded = loadScene(request, common);
-  const Animation& animation = loaded.scene->animation;
+  const Animation animation = loaded.scene->animation;
   checkFrameRange(range, asked, animation.present ? animation.frames : 1, animation.present);
-  return loaded;
+  if (*frame == 1) return loaded;
+  loaded = {};
+  request.frame = *frame;
+  return loadFrame(request, common, animation);
 }
 
 }  // namespace lucent::cli

@@ -24,16 +24,24 @@ const std::string kImage = std::string(LUCENT_SOURCE_DIR) + "/examples/textures/
 
 // Three frames: a textured sphere moving with clock and a mesh from a file.
 std::string animatedScene(const std::string& mesh, const std::string& image) {
-  return R"(<scene version="1">
+  return R"xml(<scene version="1">
   <animation frames="3"/>
   <render width="16" height="12"/>
   <camera position="0 1 6" look-at="0 0 0"/>
   <light position="5 5 5"/>
   <sphere radius="0.5" transform="translate(${2*clock - 1} 0 0)">
-    <material><image src=")" + image + R"("/></material>
+    <material><image src=")xml" + image + R"xml("/></material>
   </sphere>
-  <mesh src=")" + mesh + R"(" transform="translate(0 -1.5 0)"/>
-</scene>)";
+  <mesh src=")xml" + mesh + R"xml(" transform="translate(0 -1.5 0)"/>
+</scene>)xml";
+}
+
+// The scene may read only its own folder: the files are copied there.
+std::string sceneWithFiles(const test::TempDir& dir) {
+  namespace fs = std::filesystem;
+  fs::copy_file(kMesh, dir.path / "cube.obj");
+  fs::copy_file(kImage, dir.path / "grid.png");
+  return animatedScene("cube.obj", "grid.png");
 }
 
 std::unique_ptr<Scene> parseFrame(const std::string& xml, const std::string& path, int frame,
@@ -51,7 +59,7 @@ std::unique_ptr<Scene> parseFrame(const std::string& xml, const std::string& pat
 
 TEST_CASE("animation: a mesh and an image texture are read once for three frames", "[render][animation]") {
   test::TempDir dir("frame-caches");
-  const std::string xml = animatedScene(kMesh, kImage);
+  const std::string xml = sceneWithFiles(dir);
   const std::string path = dir.file("scene.xml");
   auto meshes = std::make_shared<MeshFileCache>();
   ImageMapCache images;
@@ -72,7 +80,7 @@ TEST_CASE("animation: a mesh and an image texture are read once for three frames
 
 TEST_CASE("animation: without a shared cache each parse reads its meshes", "[render][animation]") {
   test::TempDir dir("frame-caches");
-  const std::string xml = animatedScene(kMesh, kImage);
+  const std::string xml = sceneWithFiles(dir);
   auto first = std::make_shared<MeshFileCache>(), second = std::make_shared<MeshFileCache>();
   parseFrame(xml, dir.file("scene.xml"), 1, first);
   parseFrame(xml, dir.file("scene.xml"), 2, second);
@@ -83,10 +91,8 @@ TEST_CASE("animation: without a shared cache each parse reads its meshes", "[ren
 TEST_CASE("animation: a mesh or an image changed between frames is read again", "[render][animation]") {
   namespace fs = std::filesystem;
   test::TempDir dir("frame-caches");
+  const std::string xml = sceneWithFiles(dir);
   const fs::path mesh = dir.path / "cube.obj", image = dir.path / "grid.png";
-  fs::copy_file(kMesh, mesh);
-  fs::copy_file(kImage, image);
-  const std::string xml = animatedScene(mesh.string(), image.string());
   auto meshes = std::make_shared<MeshFileCache>();
   ImageMapCache images;
   auto frame = [&](int f) {
