@@ -124,6 +124,18 @@ for f in 1 2 3; do
 done
 grep -q "^frames:  *3  in .* s a frame" "$tmp/stdout" || fail "--stats: no total: $(cat "$tmp/stdout")"
 
+# On a terminal the progress line names the frame and gives the whole run's ETA (redrawn
+# every 250 ms: these frames take longer, 64 samples at 320x240). -q hides it.
+mkdir "$tmp/tty"
+tty_render=("$lucent" render "$tmp/moving.xml" -w 320 -h 240 -s 64 -o "$tmp/tty/out.png")
+script -qec "$(printf '%q ' "${tty_render[@]}")" "$tmp/tty.log" >/dev/null 2>&1 ||
+  fail "render on a terminal exited with $?"
+grep -aq 'frame [123]/3 \[[#.]\{30\}\] \+[0-9]\+%  [0-9.]\+ Mrays/s  ETA [0-9?:]\+, all [0-9?:]\+' "$tmp/tty.log" ||
+  fail "no frame progress on the terminal: $(tr '\r' '\n' <"$tmp/tty.log" | head -5)"
+script -qec "$(printf '%q ' "${tty_render[@]}" -q)" "$tmp/tty-quiet.log" >/dev/null 2>&1 ||
+  fail "render -q on a terminal exited with $?"
+! grep -aq 'frame [123]/3' "$tmp/tty-quiet.log" || fail "-q still shows the frame progress"
+
 # check: every frame; the summary says how many; the first invalid frame is named.
 expect 0 "check an animation" -- "$lucent" check "$tmp/moving.xml"
 grep -q "^animation: 3 frames, clock 0 to 1; every frame checked$" "$tmp/stdout" ||
