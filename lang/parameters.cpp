@@ -97,7 +97,9 @@ std::vector<std::string> Parameters::knownNames(const Scope* scope) const {
   names.insert(names.end(), order_.begin(), order_.end());
   for (const auto& [name, value] : defines_)
     if (!params_.count(name)) names.push_back(name);
-  for (const auto& [name, value] : builtins_) names.push_back(name);
+  // pi and e are left out: a one-letter typo is rarely meant as e.
+  for (const auto& [name, value] : builtins_)
+    if (name != "e" && name != "pi") names.push_back(name);
   return names;
 }
 
