@@ -185,7 +185,7 @@ int renderFrames(LoadedScene first, double firstLoadSeconds, const Animation& an
     totalRender += result.seconds;
     if (run.options.stats) {
       const double seconds = secondsSince(frameStart);
-      fmt::print("frame {:>5}: {:10.3f}  s (load {:.3f} s, render {:.3f} s, write and the rest {:.3f} s)\n",
+      fmt::print("frame {:>5}: {:10.4f}  s (load {:.4f} s, render {:.4f} s, write and the rest {:.4f} s)\n",
                  f, seconds, loadSeconds, result.seconds,
                  std::max(0.0, seconds - loadSeconds - result.seconds));
     }
