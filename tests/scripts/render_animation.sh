@@ -168,6 +168,16 @@ usage_error "--frame 0: frames are numbered from 1" -- \
   "$lucent" export-pov "$tmp/moving.xml" -o "$tmp/x.pov" --frame 0
 [ -e "$tmp/x.pov" ] && fail "a refused export wrote a file"
 
+# compare --frame: the same, where POV-Ray is installed.
+if command -v povray >/dev/null 2>&1 || [ -n "${LUCENT_POVRAY:-}" ]; then
+  expect 0 "compare frame 3" -- "$lucent" compare "$tmp/moving.xml" -o "$tmp/cmp3" --frame 3
+  grep -q "matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  1.5, 0, 0>" "$tmp/cmp3/scene.pov" ||
+    fail "compare --frame 3: the exported sphere is not at x = 1.5"
+  usage_error "--frame 4: the animation has 3 frames (1..3)" -- \
+    "$lucent" compare "$tmp/moving.xml" -o "$tmp/cmp4" --frame 4
+  [ -e "$tmp/cmp4" ] && fail "a refused compare made its folder"
+fi
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures failure(s)" >&2
   exit 1
