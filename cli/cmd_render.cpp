@@ -156,25 +156,28 @@ int renderFrames(LoadedScene first, double firstLoadSeconds, const Animation& an
       return kRuntimeFailure;
     }
     auto frameStart = std::chrono::steady_clock::now();
-    LoadedScene loaded;
     double loadSeconds = 0.0;
-    if (f == range.first && first.scene) {
-      loaded = std::move(first);
-      loadSeconds = firstLoadSeconds;
-      frameStart -= std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-          std::chrono::duration<double>(loadSeconds));
-    } else {
-      frameRequest.frame = f;
-      try {
+    RenderResult result;
+    try {
+      LoadedScene loaded;
+      if (f == range.first && first.scene) {
+        loaded = std::move(first);
+        loadSeconds = firstLoadSeconds;
+        frameStart -= std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+            std::chrono::duration<double>(loadSeconds));
+      } else {
+        frameRequest.frame = f;
         loaded = loadFrame(frameRequest, common, animation);
-      } catch (...) {
-        fmt::print(stderr, "lucent: stopped; {} of {} frames written\n", written, range.count());
-        throw;
+        loadSeconds = secondsSince(frameStart);
       }
-      loadSeconds = secondsSince(frameStart);
+      SequencePosition position{written + 1, range.count(), f, animation.frames, secondsSince(run.start)};
+      result = renderToFile(std::move(loaded), name, run, position);
+    } catch (...) {
+      // Reported here, so that the frames written are said after the failure.
+      const int status = reportFailure(std::current_exception());
+      fmt::print(stderr, "lucent: stopped at frame {}; {} of {} frames written\n", f, written, range.count());
+      throw ReportedFailure{status};
     }
-    SequencePosition position{written + 1, range.count(), f, animation.frames, secondsSince(run.start)};
-    RenderResult result = renderToFile(std::move(loaded), name, run, position);
     if (result.cancelled) {
       fmt::print(stderr, "lucent: interrupted in frame {}; '{}' left unchanged, {} of {} frames written\n",
                  f, name, written, range.count());

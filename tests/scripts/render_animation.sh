@@ -151,7 +151,7 @@ grep -q "^lucent: frame 4 of 5 (clock 0.75) is invalid$" "$tmp/stderr" || fail "
 mkdir "$tmp/h"
 expect 2 "render an animation invalid from frame 4" -- "$lucent" render "$tmp/shrinking.xml" -o "$tmp/h/out.png" -q
 [ "$(files "$tmp/h")" = "out0001.png out0002.png out0003.png " ] || fail "render invalid: $(files "$tmp/h")"
-grep -q "^lucent: stopped; 3 of 5 frames written$" "$tmp/stderr" || fail "render invalid: $(cat "$tmp/stderr")"
+grep -q "^lucent: stopped at frame 4; 3 of 5 frames written$" "$tmp/stderr" || fail "render invalid: $(cat "$tmp/stderr")"
 
 # export-pov --frame: that frame (default 1), and out of range is a usage error.
 expect 0 "export frame 3" -- "$lucent" export-pov "$tmp/moving.xml" -o "$tmp/f3.pov" --frame 3
