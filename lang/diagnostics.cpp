@@ -12,6 +12,8 @@ void Diagnostics::error(const SourceLoc& loc, std::string message) {
 }
 
 void Diagnostics::warning(const SourceLoc& loc, std::string message) {
+  // An element inside a <repeat> is read once per instance: warn once, not a million times.
+  if (!warned_.insert(loc.str() + '\n' + message).second) return;
   all_.push_back({Severity::Warning, loc, std::move(message)});
 }
 

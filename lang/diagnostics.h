@@ -4,6 +4,7 @@
 #include "scenegraph/source_loc.h"
 
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 namespace lucent {
@@ -31,6 +32,7 @@ class Diagnostics {
  private:
   std::vector<Diagnostic> all_;
   size_t errorCount_ = 0;
+  std::unordered_set<std::string> warned_;  // location and message of each warning given
 };
 
 }  // namespace lucent

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <unordered_set>
 
 namespace lucent {
@@ -76,6 +77,11 @@ std::optional<std::string> ElementReader::text(const char* attr) {
 }
 
 std::optional<double> ElementReader::optionalNumber(const char* attr, const NumberRule& rule) {
+  // Expression-valued numbers skip the text round trip (the value is the same).
+  if (pugi::xml_attribute a = el_.attribute(attr); a && std::strchr(a.value(), '$')) {
+    double v;
+    if (ctx_.params.evaluateNumbers(a.value(), ctx_.scope.get(), &v, 1) && rule.accepts(v)) return v;
+  }
   auto t = text(attr);
   if (!t) return std::nullopt;
   Parsed<double> n = parseNumber(*t, rule.allowInfinity);
@@ -113,6 +119,10 @@ long long ElementReader::integer(const char* attr, long long def, long long min,
 }
 
 Vec3 ElementReader::vector(const char* attr, const Vec3& def) {
+  if (pugi::xml_attribute a = el_.attribute(attr); a && std::strchr(a.value(), '$')) {
+    double v[3];
+    if (ctx_.params.evaluateNumbers(a.value(), ctx_.scope.get(), v, 3)) return Vec3(v[0], v[1], v[2]);
+  }
   auto t = text(attr);
   if (!t) return def;
   Parsed<Vec3> v = parseVector(*t);
@@ -181,7 +191,7 @@ Mat4 ElementReader::transform(const char* attr) {
   std::string_view v = a.value();
   if (*t == v && r.errorOffset < v.size())
     if (auto inside = file_.locOf(a.value() + r.errorOffset)) where = *inside;
-  ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + message);
+  ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + message + instanceNote(ctx_.scope.get()));
   failed_ = true;
   return Mat4(1.0);
 }

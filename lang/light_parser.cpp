@@ -127,7 +127,8 @@ void parseLight(ElementReader& r) {
     case LightType::Point: break;
   }
   r.forEachChild([&](pugi::xml_node n) {
-    ElementReader(r.ctx(), r.file(), n).error("<light> takes no child elements, got <" + std::string(n.name()) + ">");
+    if (std::string_view(n.name()) == "param") return;  // a local parameter (the caller's LocalScope)
+    ElementReader(r.ctx(), r.file(), n).error("<light> takes no child elements but <param>, got <" + std::string(n.name()) + ">");
   });
   r.ctx().scene.lights.push_back(light);
 }

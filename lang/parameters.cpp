@@ -3,6 +3,9 @@
 #include "did_you_mean.h"
 #include "values.h"
 
+#include <charconv>
+#include <cmath>
+
 namespace lucent {
 
 namespace {
@@ -310,6 +313,59 @@ std::optional<std::string> Parameters::substitute(std::string_view text, const S
     i = j;
   }
   return out;
+}
+
+bool Parameters::evaluateNumbers(std::string_view raw, const Scope* scope, double* out, size_t count) {
+  auto isSpace = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  auto acceptable = [](double v) {
+    return std::isfinite(v) && std::abs(v) <= 1e30 && (v == 0.0 || std::abs(v) >= 1e-30);
+  };
+  size_t n = 0, i = 0;
+  while (i < raw.size() && isSpace(raw[i])) ++i;
+  while (i < raw.size()) {
+    if (n == count) return false;
+    double v;
+    if (raw[i] == '$') {
+      if (i + 1 >= raw.size() || raw[i + 1] != '{') return false;
+      size_t close = raw.find('}', i + 2);
+      if (close == std::string_view::npos) return false;
+      std::string_view inside = raw.substr(i + 2, close - i - 2);
+      std::string_view name = trimSpaces(inside);
+      std::optional<double> x;
+      if (isValidName(name)) {
+        std::string message;
+        bool known = true;
+        x = number(name, scope, message, known);
+      } else {
+        Names names(*this, scope);
+        ExpressionError e;
+        x = evaluator_.evaluate(inside, names, e);
+      }
+      if (!x) return false;
+      v = *x;
+      i = close + 1;
+    } else {
+      size_t end = i;
+      while (end < raw.size() && !isSpace(raw[end]) && raw[end] != ',' && raw[end] != '$') ++end;
+      if (end == i || raw[i] == '+') return false;
+      auto [p, ec] = std::from_chars(raw.data() + i, raw.data() + end, v);
+      if (ec != std::errc() || p != raw.data() + end) return false;
+      i = end;
+    }
+    if (!acceptable(v)) return false;
+    out[n++] = v;
+    // A separator: spaces, or one comma with optional spaces around it; none at the end.
+    size_t j = i;
+    while (j < raw.size() && isSpace(raw[j])) ++j;
+    if (j < raw.size() && raw[j] == ',') {
+      ++j;
+      while (j < raw.size() && isSpace(raw[j])) ++j;
+      if (j == raw.size()) return false;
+    }
+    if (j == i && j < raw.size()) return false;  // "1${a}": glued together
+    i = j;
+  }
+  return n == count;
 }
 
 std::vector<std::string> Parameters::unusedDefines() const {

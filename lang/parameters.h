@@ -48,6 +48,13 @@ class Parameters {
   // Replaces every reference in `text` as seen from `scope` (null: the top level).
   std::optional<std::string> substitute(std::string_view text, const Scope* scope, SubstitutionError& error);
 
+  // A shortcut for numeric attributes: when `raw` is `count` numbers separated by spaces or
+  // single commas, each a literal or one whole `${...}`, and every one evaluates to a number
+  // the value syntax accepts, writes them to `out` and returns true. Anything else (an
+  // error included) returns false and the caller takes the textual way, which reports it:
+  // the numbers are the same either way, as substitution writes them back exactly.
+  bool evaluateNumbers(std::string_view raw, const Scope* scope, double* out, size_t count);
+
   // Is `name` visible from `scope` (a parameter, a repeat variable, -D or a built-in)?
   // Returns a description ("the parameter declared at 3:5") or "" when it is not.
   std::string whatIs(std::string_view name, const Scope* scope);

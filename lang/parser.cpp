@@ -60,8 +60,11 @@ void readTopLevel(ParseContext& ctx, const TopLevelItem& item) {
     return;
   }
   if (name == "render") parseRender(r);
+  else if (name == "light") {
+    LocalScope scope(ctx, *item.file, item.element);
+    parseLight(r);
+  }
   else if (name == "camera") parseCamera(r);
-  else if (name == "light") parseLight(r);
   else if (name == "defs") parseDefs(r);
   else if (isGeometryElement(name)) {
     if (auto node = parseGeometryNode(ctx, *item.file, item.element, 1))

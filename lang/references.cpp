@@ -220,29 +220,50 @@ void resolveReferences(ParseContext& ctx) {
     ctx.broken.insert(u.use);
   }
 
-  // 2. No node contains itself, and nothing nests too deep through <use>.
-  GraphWalk walk(ctx);
-  walk.walk(*ctx.scene.root);
-  for (const auto& d : ctx.scene.defs) walk.walk(*d);
-  // Depths ignore the back edges of cycles (reported above), so they are finite.
-  bool tooDeep = false;
-  auto checkDepth = [&](const Node& top) {
-    if (!tooDeep && walk.depth(top) > kMaxInstanceDepth) {
-      ctx.diags.error(top.loc, "<" + top.element + "> nests deeper than " + std::to_string(kMaxInstanceDepth) +
-                                   " levels, counting what its <use>s instantiate");
-      tooDeep = true;
-    }
-  };
-  for (const auto& c : ctx.scene.root->children) checkDepth(*c);
-  for (const auto& d : ctx.scene.defs) checkDepth(*d);
-  if (tooDeep) return;
-
   // 3. merge, intersection and difference combine solids only. Checked in source order.
   std::vector<const Node*> csgNodes;
-  walk.forEachNode([&](const Node& n) {
-    if (n.kind == NodeKind::Merge || n.kind == NodeKind::Intersection || n.kind == NodeKind::Difference)
-      csgNodes.push_back(&n);
-  });
+  auto isCsgOperation = [](const Node& n) {
+    return n.kind == NodeKind::Merge || n.kind == NodeKind::Intersection || n.kind == NodeKind::Difference;
+  };
+  if (ctx.uses.empty()) {
+    // Without <use> references the nodes form a tree (no cycles, and no deeper than the
+    // elements nest): a plain walk finds the CSG operations, with no map over every node.
+    // Parameterised uses nest copies in copies, so the depth is still checked.
+    std::vector<std::pair<const Node*, int>> stack;
+    stack.emplace_back(ctx.scene.root.get(), 1);
+    for (const auto& d : ctx.scene.defs) stack.emplace_back(d.get(), 1);
+    while (!stack.empty()) {
+      auto [n, depth] = stack.back();
+      stack.pop_back();
+      if (depth > kMaxInstanceDepth) {
+        ctx.diags.error(n->loc, "<" + n->element + "> nests deeper than " + std::to_string(kMaxInstanceDepth) +
+                                    " levels, counting what the <use>s around it instantiate");
+        return;
+      }
+      if (isCsgOperation(*n)) csgNodes.push_back(n);
+      for (const auto& c : n->children) stack.emplace_back(c.get(), depth + 1);
+    }
+  } else {
+    // 2. No node contains itself, and nothing nests too deep through <use>.
+    GraphWalk walk(ctx);
+    walk.walk(*ctx.scene.root);
+    for (const auto& d : ctx.scene.defs) walk.walk(*d);
+    // Depths ignore the back edges of cycles (reported above), so they are finite.
+    bool tooDeep = false;
+    auto checkDepth = [&](const Node& top) {
+      if (!tooDeep && walk.depth(top) > kMaxInstanceDepth) {
+        ctx.diags.error(top.loc, "<" + top.element + "> nests deeper than " + std::to_string(kMaxInstanceDepth) +
+                                     " levels, counting what its <use>s instantiate");
+        tooDeep = true;
+      }
+    };
+    for (const auto& c : ctx.scene.root->children) checkDepth(*c);
+    for (const auto& d : ctx.scene.defs) checkDepth(*d);
+    if (tooDeep) return;
+    walk.forEachNode([&](const Node& n) {
+      if (isCsgOperation(n)) csgNodes.push_back(&n);
+    });
+  }
   std::sort(csgNodes.begin(), csgNodes.end(), [](const Node* a, const Node* b) {
     return std::tie(a->loc.file, a->loc.line, a->loc.col) < std::tie(b->loc.file, b->loc.line, b->loc.col);
   });

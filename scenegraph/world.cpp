@@ -56,6 +56,8 @@ bool transmitsLight(const Shape& object, const std::vector<Material>& materials)
 
 // The node's world transform below `parentWorld`; throws what building the world refuses.
 Transform nodeWorld(const Node& node, const Transform& parentWorld) {
+  // Most nodes of a large scene have no transform of their own: no inverse to compute.
+  if (node.parentFromNode == Mat4(1.0)) return parentWorld;
   auto local = Transform::fromMatrix(node.parentFromNode);
   if (!local) throw LocatedError(node.loc, "singular transform");
   Transform world = local->followedBy(parentWorld);
@@ -72,9 +74,24 @@ void checkNode(const Node& node, const Transform& parentWorld) {
   for (const auto& c : node.children) checkNode(*c, world);
 }
 
+// Does any node lead to another through <use> (so that one node may be reached twice)?
+bool hasUses(const Scene& scene) {
+  std::vector<const Node*> stack{scene.root.get()};
+  while (!stack.empty()) {
+    const Node* n = stack.back();
+    stack.pop_back();
+    if (n->kind == NodeKind::Use) return true;
+    for (const auto& c : n->children) stack.push_back(c.get());
+  }
+  return false;
+}
+
 struct Builder {
   const ShapeMaker& makeShape;
-  std::unordered_map<const Node*, std::shared_ptr<const Shape>> shapes;  // built once per node
+  // A shape reached through several <use>s is built once; without <use>s every shape is
+  // reached once, and the map (a hash per node of a million) is skipped.
+  bool share;
+  std::unordered_map<const Node*, std::shared_ptr<const Shape>> shapes;
   std::vector<const Instance*>& instances;
 
   void add(const Node& node, const Transform& parentWorld, uint32_t inherited,
@@ -84,9 +101,15 @@ struct Builder {
 
     switch (node.kind) {
       case NodeKind::Shape: {
-        auto& shape = shapes[&node];
-        if (!shape) shape = makeShape(*node.shape);
-        auto inst = std::make_unique<Instance>(shape, world, material, node.shape->index());
+        std::shared_ptr<const Shape> shape;
+        if (share) {
+          auto& shared = shapes[&node];
+          if (!shared) shared = makeShape(*node.shape);
+          shape = shared;
+        } else {
+          shape = makeShape(*node.shape);
+        }
+        auto inst = std::make_unique<Instance>(std::move(shape), world, material, node.shape->index());
         instances.push_back(inst.get());
         out.push_back(std::move(inst));
         break;
@@ -119,7 +142,7 @@ void checkWorld(const Scene& scene) { checkNode(*scene.root, Transform()); }
 World::World(const Scene& scene) : World(scene, makeShape) {}
 
 World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
-  Builder b{make, {}, instances_};
+  Builder b{make, hasUses(scene), {}, instances_};
   b.add(*scene.root, Transform(), 0, objects_);
 
   std::vector<Shape*> bounded;
