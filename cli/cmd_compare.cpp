@@ -15,6 +15,7 @@
 // The metrics never change the status: comparing is a measurement.
 #include "commands.h"
 
+#include "frame_loading.h"
 #include "load_scene.h"
 
 #include "povray/compare_report.h"
@@ -107,7 +108,7 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
   if (!options.povFile.empty() && !fs::is_regular_file(options.povFile))
     throw IoFailure(fmt::format("--pov {}: no such file", options.povFile));
 
-  LoadedScene loaded = loadScene(request, common);
+  LoadedScene loaded = loadOneFrame(request, common, options.frame);
   Scene& scene = *loaded.scene;
   const Camera* camera = loaded.camera;
   RenderSettings& settings = scene.render;

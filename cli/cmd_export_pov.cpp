@@ -6,6 +6,7 @@
 // only approximated) are printed and the file is written.
 #include "commands.h"
 
+#include "frame_loading.h"
 #include "load_scene.h"
 
 #include "povray/pov_export.h"
@@ -76,7 +77,7 @@ int runExportPov(const ExportPovOptions& options, const CommonOptions& common) {
   checkOverrides(request);
   checkPovOutputPath(options.output);
 
-  LoadedScene loaded = loadScene(request, common);
+  LoadedScene loaded = loadOneFrame(request, common, options.frame);
   const Scene& scene = *loaded.scene;
   PovExport exported = exportPov(scene, PovExportOptions{options.camera});
   size_t errors = 0;

@@ -28,6 +28,7 @@ struct RenderOptions {
   std::string camera;
   bool quiet = false;
   bool stats = false;
+  std::string frames;  // --frames F or A..B (frame_range.h); empty: every frame
 };
 
 int runRender(const RenderOptions& options, const CommonOptions& common);
@@ -49,6 +50,7 @@ struct ExportPovOptions {
   std::string output;
   std::optional<int> width, height, maxDepth;  // the image the .pov file is written for
   std::string camera;
+  std::optional<int> frame;  // of an animated scene; none: frame 1
 };
 int runExportPov(const ExportPovOptions& options, const CommonOptions& common);
 
@@ -58,6 +60,7 @@ struct CompareOptions {
   std::string povFile;  // --pov: a hand-written POV-Ray scene instead of the export
   std::optional<int> width, height, samples, threads, maxDepth;
   std::string camera;
+  std::optional<int> frame;  // of an animated scene; none: frame 1
 };
 int runCompare(const CompareOptions& options, const CommonOptions& common);
 

@@ -38,8 +38,14 @@ LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) 
   ParseOptions options;
   options.defines = common.defines;
   options.allowPaths = common.allowPaths;
+  options.frame = request.frame;
+  options.meshCache = request.meshCache;
   ParseResult parsed = parseSceneFile(request.scene, options);
-  for (const Diagnostic& d : parsed.diagnostics.all()) fmt::print(stderr, "{}\n", d.str());
+  for (const Diagnostic& d : parsed.diagnostics.all()) {
+    std::string line = d.str();
+    if (request.printed && !request.printed->insert(line).second) continue;
+    fmt::print(stderr, "{}\n", line);
+  }
   if (parsed.ioFailure) throw ReportedFailure{kRuntimeFailure};  // the scene file is unreadable
   if (!parsed.scene) {
     const size_t n = parsed.diagnostics.errorCount();

@@ -9,7 +9,12 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
+
+namespace lucent {
+class MeshFileCache;
+}
 
 namespace lucent::cli {
 
@@ -18,6 +23,12 @@ struct SceneRequest {
   // Each replaces the scene's <render> value; -t is checked only (it is not in the scene).
   std::optional<int> width, height, samples, threads, maxDepth;
   std::string camera;  // --camera; empty: the scene's first camera
+  int frame = 1;       // of an animated scene (ParseOptions::frame)
+  // Shared by the loads of one process (the frames of an animation); null: none.
+  std::shared_ptr<MeshFileCache> meshCache;
+  // Diagnostics already printed (by an earlier frame's load), not to be printed again;
+  // null: print all.
+  std::set<std::string>* printed = nullptr;
 };
 
 struct LoadedScene {

@@ -146,7 +146,11 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--max-depth", render.maxDepth, "Maximum recursion depth");
   renderCmd->add_option("--camera", render.camera, "Render through the camera with this name");
   renderCmd->add_flag("-q,--quiet", render.quiet, "No progress bar or closing line (warnings stay)");
-  renderCmd->add_flag("--stats", render.stats, "Print ray counts, time and Mrays/s");
+  renderCmd->add_flag("--stats", render.stats,
+                      "Print ray counts, time and Mrays/s (and each frame's time in an animation)");
+  renderCmd->add_option("--frames", render.frames,
+                        "Render only these frames of an animation: F or A..B (default: all)")
+      ->type_name("A..B");
   addCommonOptions(renderCmd, defines, allowPaths);
 
   CheckOptions check;
@@ -171,6 +175,7 @@ int main(int argc, char** argv) {
   exportCmd->add_option("-h,--height", exportPov.height, "Image height the camera is set up for");
   exportCmd->add_option("--max-depth", exportPov.maxDepth, "Maximum recursion depth");
   exportCmd->add_option("--camera", exportPov.camera, "Export the camera with this name");
+  exportCmd->add_option("--frame", exportPov.frame, "Export this frame of an animation (default 1)");
   addCommonOptions(exportCmd, defines, allowPaths);
 
   CompareOptions compare;
@@ -189,6 +194,7 @@ int main(int argc, char** argv) {
   compareCmd->add_option("-t,--threads", compare.threads, "Threads for both renderers");
   compareCmd->add_option("--max-depth", compare.maxDepth, "Maximum recursion depth");
   compareCmd->add_option("--camera", compare.camera, "Render through the camera with this name");
+  compareCmd->add_option("--frame", compare.frame, "Compare this frame of an animation (default 1)");
   addCommonOptions(compareCmd, defines, allowPaths);
 
   std::string schemaOutput;

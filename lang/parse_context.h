@@ -8,6 +8,7 @@
 #include "scope.h"
 #include "source_file.h"
 
+#include "meshes/mesh_file_cache.h"
 #include "scenegraph/scene.h"
 
 #include <pugixml.hpp>
@@ -94,8 +95,9 @@ struct ParseContext {
   // repeat the problem in other words.
   std::unordered_set<const Node*> broken;
 
-  // Meshes read from files, by canonical path: a file used twice is read once.
-  std::unordered_map<std::string, std::shared_ptr<const MeshData>> meshCache;
+  // Meshes read from files, by canonical path: a file used twice is read once (and once
+  // for all the parses that share ParseOptions::meshCache).
+  std::shared_ptr<MeshFileCache> meshCache = std::make_shared<MeshFileCache>();
 
   // Camera names, for duplicates.
   std::unordered_map<std::string, SourceLoc> cameraNames;

@@ -105,6 +105,7 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
   fs::path folder = fs::path(path).parent_path();
   FileAccess files(folder.empty() ? fs::path(".") : folder, options.allowPaths);
   ParseContext ctx{*scene, diags, params, files};
+  if (options.meshCache) ctx.meshCache = options.meshCache;
   SceneLoader loader(ctx);
 
   try {

@@ -13,6 +13,8 @@
 
 namespace lucent {
 
+class MeshFileCache;  // meshes/mesh_file_cache.h
+
 struct ParseOptions {
   // -D name=value: wins over <param> declarations.
   std::map<std::string, std::string> defines;
@@ -21,6 +23,9 @@ struct ParseOptions {
   // The frame of an animated scene to expand (1-based): it sets the built-in names frame
   // and clock. -D frame=F or -D clock=C win over it.
   int frame = 1;
+  // Mesh files already read, to share with this parse (and to fill): a caller that parses
+  // many scenes, as the frames of an animation, keeps one. Null: a cache for this parse.
+  std::shared_ptr<MeshFileCache> meshCache;
 };
 
 struct ParseResult {

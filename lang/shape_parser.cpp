@@ -3,7 +3,7 @@
 // one XML element, and knows no shape by name.
 #include "element_parsers.h"
 
-#include "meshes/mesh_files.h"
+#include "meshes/mesh_file_cache.h"
 #include "scenegraph/shape_registry.h"
 
 namespace lucent {
@@ -66,14 +66,8 @@ std::shared_ptr<const MeshData> ElementInput::meshFile(const char* attr, bool* f
     r_.attrError(attr, f.error);
     return nullptr;
   }
-  auto& cache = r_.ctx().meshCache;
-  std::string key = f.path.string();
-  if (auto it = cache.find(key); it != cache.end()) return it->second;
   try {
-    std::shared_ptr<const MeshData> data = loadMeshFile(key);
-    cache.emplace(key, data);
-    if (firstRead) *firstRead = true;
-    return data;
+    return r_.ctx().meshCache->get(f.path.string(), firstRead);
   } catch (const std::exception& e) {  // MeshError, and anything a reader library throws
     r_.attrError(attr, "cannot read the mesh '" + *src + "': " + e.what());
     return nullptr;

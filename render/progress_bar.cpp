@@ -13,8 +13,26 @@ std::string formatDuration(double seconds) {
   return fmt::format("{}:{:02}", s / 60, s % 60);
 }
 
-ProgressBar::ProgressBar(const RenderProgress& progress, std::FILE* out)
-    : progress_(progress), out_(out), thread_([this] { run(); }) {}
+std::string progressLine(double fraction, double raysPerSecond, double seconds,
+                         const std::optional<SequencePosition>& sequence) {
+  constexpr int kWidth = 30;
+  const int filled = static_cast<int>(fraction * kWidth);
+  const std::string bar = std::string(filled, '#') + std::string(kWidth - filled, '.');
+  const std::string eta = fraction > 0.0 ? formatDuration(seconds * (1.0 - fraction) / fraction) : "?";
+  const std::string line = fmt::format("[{}] {:3.0f}%  {:.2f} Mrays/s  ETA {}", bar, 100.0 * fraction,
+                                       raysPerSecond * 1e-6, eta);
+  if (!sequence) return "rendering " + line;
+  // The run's frames so far, this one counted by its fraction, give the time a frame takes.
+  const double framesDone = (sequence->index - 1) + fraction;
+  const double framesLeft = sequence->count - framesDone;
+  const double elapsed = sequence->secondsBefore + seconds;
+  const std::string all = framesDone > 0.0 ? formatDuration(elapsed / framesDone * framesLeft) : "?";
+  return fmt::format("frame {}/{} {}, all {}", sequence->frame, sequence->frames, line, all);
+}
+
+ProgressBar::ProgressBar(const RenderProgress& progress, std::FILE* out,
+                         std::optional<SequencePosition> sequence)
+    : progress_(progress), out_(out), sequence_(sequence), thread_([this] { run(); }) {}
 
 ProgressBar::~ProgressBar() { stop(); }
 
@@ -44,12 +62,7 @@ void ProgressBar::draw(double seconds) {
   const uint64_t total = std::max<uint64_t>(1, progress_.workTotal.load(std::memory_order_relaxed));
   const double fraction = std::min(1.0, static_cast<double>(done) / total);
   const double raysPerSecond = seconds > 0.0 ? progress_.rays.load() / seconds : 0.0;
-  constexpr int kWidth = 30;
-  const int filled = static_cast<int>(fraction * kWidth);
-  std::string bar = std::string(filled, '#') + std::string(kWidth - filled, '.');
-  std::string eta = fraction > 0.0 ? formatDuration(seconds * (1.0 - fraction) / fraction) : "?";
-  fmt::print(out_, "\r\033[Krendering [{}] {:3.0f}%  {:.2f} Mrays/s  ETA {}", bar,
-             100.0 * fraction, raysPerSecond * 1e-6, eta);
+  fmt::print(out_, "\r\033[K{}", progressLine(fraction, raysPerSecond, seconds, sequence_));
   std::fflush(out_);
 }
 

@@ -25,11 +25,11 @@ float colorDifference(const Color& a, const Color& b) { return maxComponent(glm:
 
 }  // namespace
 
-Renderer::Renderer(const World& world, const Camera& camera)
+Renderer::Renderer(const World& world, const Camera& camera, ImageMapCache* textures)
     : world_(world),
       settings_(world.scene().render),
       projection_(makeProjection(camera, settings_.width, settings_.height)),
-      tracer_(world),
+      tracer_(world, textures),
       cameraMedia_(tracer_.mediaAt(projection_->frame().origin)) {}
 
 Color Renderer::renderSample(int x, int y, int k, int count, RayStats& stats) const {

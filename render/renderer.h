@@ -40,8 +40,9 @@ class Renderer {
  public:
   // Settings (size, samples, depth, ...) come from world.scene().render, so command-line
   // overrides are applied to the scene before the renderer is built. Throws LocatedError
-  // for a camera that cannot form an image or an unreadable image texture.
-  Renderer(const World& world, const Camera& camera);
+  // for a camera that cannot form an image or an unreadable image texture. Image textures
+  // come from `textures` when given (shared with other renderers), else are loaded.
+  Renderer(const World& world, const Camera& camera, ImageMapCache* textures = nullptr);
 
   // The whole image. Bit-identical for any thread count and from run to run: a pixel's
   // value depends only on its coordinates.

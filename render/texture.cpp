@@ -1,6 +1,7 @@
 #include "texture.h"
 
 #include "image_io.h"
+#include "image_map_cache.h"
 
 #include "images/image_plugin.h"
 
@@ -54,7 +55,7 @@ Color ImageMap::lookup(const Vec2& uv, const Vec2& scale) const {
   return c;
 }
 
-TextureSet::TextureSet(const std::vector<Material>& materials) {
+TextureSet::TextureSet(const std::vector<Material>& materials, ImageMapCache* cache) {
   maps_.resize(materials.size());
   std::map<std::string, std::shared_ptr<const ImageMap>> byPath;
   for (size_t i = 0; i < materials.size(); ++i) {
@@ -63,7 +64,7 @@ TextureSet::TextureSet(const std::vector<Material>& materials) {
     auto& map = byPath[image->path];
     if (!map) {
       try {
-        map = std::make_shared<const ImageMap>(image->path);
+        map = cache ? cache->get(image->path) : std::make_shared<const ImageMap>(image->path);
       } catch (const ImageIOError& e) {
         throw LocatedError(image->loc, e.what(), LocatedError::Kind::Input);
       }

@@ -47,12 +47,14 @@ class ImageMap {
 // TextureSet would for a file that is not an image or too large (LocatedError, Kind::Input).
 void checkImageTextures(const std::vector<Material>& materials);
 
+class ImageMapCache;  // image_map_cache.h
+
 // The image maps of a scene's materials, each file loaded once, indexed by material.
 class TextureSet {
  public:
-  // Loads every <image> texture; throws LocatedError (Kind::Input, at the <image>) for
-  // one that cannot be read.
-  explicit TextureSet(const std::vector<Material>& materials);
+  // Loads every <image> texture, or takes it from `cache` (which keeps it for later
+  // sets); throws LocatedError (Kind::Input, at the <image>) for one that cannot be read.
+  explicit TextureSet(const std::vector<Material>& materials, ImageMapCache* cache = nullptr);
 
   // The texture colour T of material `index` at the hit (1 for a material without one).
   Color eval(uint32_t index, const Material& material, const SurfaceInfo& surface,

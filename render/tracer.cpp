@@ -23,12 +23,12 @@ double boxVolume(const AABB& b) {
 
 }  // namespace
 
-Tracer::Tracer(const World& world)
+Tracer::Tracer(const World& world, ImageMapCache* textures)
     : world_(world),
       scene_(world.scene()),
       settings_(world.scene().render),
       lights_(world.scene().lights),
-      textures_(world.scene().materials) {
+      textures_(world.scene().materials, textures) {
   for (const Material& m : scene_.materials) {
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
     anyAbsorbing_ = anyAbsorbing_ || (m.isAbsorbing() && m.isTransmissive());

@@ -30,8 +30,9 @@ struct PathSeed {
 class Tracer {
  public:
   // Reads the render settings, lights and materials from world.scene() and loads the
-  // image textures (throws LocatedError). The world must outlive the tracer.
-  explicit Tracer(const World& world);
+  // image textures (throws LocatedError), through `textures` if given. The world must
+  // outlive the tracer.
+  explicit Tracer(const World& world, ImageMapCache* textures = nullptr);
 
   // The colour seen along a camera ray (depth 1, weight 1) that starts in `media`.
   Color traceCamera(const Ray& ray, const MediaStack& media, PathSeed& seed,
