@@ -50,6 +50,10 @@ LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) 
   if (!parsed.scene) {
     const size_t n = parsed.diagnostics.errorCount();
     fmt::print(stderr, "{}: {} error{}; the scene is invalid\n", request.scene, n, n == 1 ? "" : "s");
+    // Later frames are named by the caller (frame_loading.cpp); the first one read, here.
+    if (parsed.animation.present && request.frame == 1)
+      fmt::print(stderr, "lucent: frame {} of {} (clock {}) is invalid\n", parsed.frame, parsed.animation.frames,
+                 parsed.clock);
     throw ReportedFailure{kInvalidScene};
   }
 

@@ -135,6 +135,9 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
   }
 
   result.diagnostics = sorted(diags, loader.files());
+  result.animation = scene->animation;
+  result.frame = scene->frame;
+  result.clock = scene->clock;
   if (!diags.hasErrors()) result.scene = std::move(scene);
   return result;
 }

@@ -34,6 +34,11 @@ struct ParseResult {
   // The scene file itself could not be read (missing, a folder, unreadable): an
   // input/output failure rather than an invalid scene (exit status 3, not 2).
   bool ioFailure = false;
+  // The scene's <animation> and the frame read, also when there are errors (so that a
+  // message can name the frame).
+  Animation animation;
+  int frame = 1;
+  double clock = 0.0;
 };
 
 // Parses and validates the scene file at `path`.
