@@ -12,6 +12,9 @@
 # users) is held to its hand-written twin alone, which must exist; the comparison with the
 # export still runs and its metrics are printed, but they do not fail the test:
 #   <!-- gallery: held to its twin only (REASON) -->
+# A scene that needs options to be compared (a frame of an animation) names them, without
+# parentheses, in a comment line; both comparisons get them:
+#   <!-- gallery: compared with -D frame=13 (REASON) -->
 # The reports stay in OUTDIR to look at (docs/gallery.md).
 # Usage: bash compare_scene.sh <path-to-lucent> <scene.xml> <outdir>
 set -u
@@ -25,6 +28,8 @@ min_ssim=0.99
 max_share_percent=1
 own=$(sed -n 's/.*<!-- gallery: at most \([0-9.]*\) % of pixels off by more than 2\/255 (.*) -->.*/\1/p' "$scene" | head -n 1)
 [ -n "$own" ] && max_share_percent=$own
+options=$(sed -n 's/.*<!-- gallery: compared with \([^()]*\) (.*) -->.*/\1/p' "$scene" | head -n 1)
+read -r -a options <<<"$options"
 twin_only=$(sed -n 's/.*<!-- gallery: held to its twin only (\(.*\)) -->.*/\1/p' "$scene" | head -n 1)
 failures=0
 fail() { echo "FAIL: $name: $*" >&2; failures=$((failures + 1)); }
@@ -44,7 +49,7 @@ compare() {
   local out="$outdir/$label"
   rm -rf "$out"
   mkdir -p "$out"
-  "$lucent" compare "$scene" -o "$out" "$@" >"$out/stdout.txt" 2>"$out/stderr.txt"
+  "$lucent" compare "$scene" -o "$out" "${options[@]}" "$@" >"$out/stdout.txt" 2>"$out/stderr.txt"
   local status=$?
   if [ $status -ne 0 ]; then
     fail "$label: lucent compare exited with status $status:"
