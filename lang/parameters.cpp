@@ -9,6 +9,10 @@
 namespace lucent {
 
 namespace {
+// A parameter's value may use another's, resolved when first used, recursively: a chain
+// of 100,000 parameters each naming the next must be an error, not a stack overflow.
+constexpr size_t kMaxParameterDepth = 1000;
+
 bool isNameStart(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool isNameChar(char c) { return isNameStart(c) || (c >= '0' && c <= '9'); }
 
@@ -128,6 +132,12 @@ std::optional<std::string> Parameters::resolveTop(const std::string& name, Param
     }
     case State::Unresolved: break;
   }
+  if (resolving_.size() >= kMaxParameterDepth) {
+    diags_.error(p.file->loc(p.element), "<param> '" + name + "': parameters refer to one another more than " +
+                                             std::to_string(kMaxParameterDepth) + " deep here");
+    p.state = State::Failed;
+    return std::nullopt;
+  }
   p.state = State::Resolving;
   resolving_.push_back(name);
   SubstitutionError inner;
@@ -158,6 +168,12 @@ std::optional<std::string> Parameters::resolveLocal(Scope& scope, LocalParam& p,
       return std::nullopt;
     }
     case LocalParam::State::Unresolved: break;
+  }
+  if (resolving_.size() >= kMaxParameterDepth) {
+    diags_.error(p.file->loc(p.element), "<param> '" + name + "': parameters refer to one another more than " +
+                                             std::to_string(kMaxParameterDepth) + " deep here");
+    p.state = LocalParam::State::Failed;
+    return std::nullopt;
   }
   p.state = LocalParam::State::Resolving;
   resolving_.push_back(name);
