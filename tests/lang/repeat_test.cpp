@@ -257,6 +257,17 @@ TEST_CASE("parameterised use: the use's values hide the defaults, a use without 
   CHECK(sphere(ball).radius == 0.5);  // the definition keeps its default
 }
 
+TEST_CASE("parameterised use: its parameters are visible in its own attributes too", "[lang][use]") {
+  auto s = loadString(R"X(<scene version="1"><camera/>
+    <defs><sphere id="ball" radius="$size"><param name="size" value="0.5"/></sphere></defs>
+    <use ref="ball" transform="translate(${2 * size} 0 0)"><param name="size" value="0.25"/></use>
+  </scene>)X");
+  const Node& use = child(*s->root, 0);
+  CHECK(use.parentFromNode[3][0] == 0.5);  // 2 * the use's size
+  REQUIRE(use.children.size() == 1);
+  CHECK(sphere(child(use, 0)).radius == 0.25);
+}
+
 TEST_CASE("text parameters: ${name} of a non-numeric parameter is its text, $$ is a literal $",
           "[lang][params]") {
   auto s = load("text_params.xml");
