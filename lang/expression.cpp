@@ -240,6 +240,7 @@ void ExpressionEvaluator::locateFault(const Compiled& c, ExpressionError& error)
         variant.insert(p, 1, kFunctionTwinPrefix);
         if (faultsWith(variant)) {
           error.offset = p;
+          error.message = fault.what;  // the twin's own record, also when muParser folded it
           return;
         }
       }
@@ -249,6 +250,7 @@ void ExpressionEvaluator::locateFault(const Compiled& c, ExpressionError& error)
         variant[p] = t.twin;
         if (faultsWith(variant)) {
           error.offset = p;
+          error.message = fault.what;  // the twin's own record, also when muParser folded it
           return;
         }
       }

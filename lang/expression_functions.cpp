@@ -37,14 +37,16 @@ template <F2 f, char symbol, bool Twin>
 double binary(double a, double b) {
   double r = f(a, b);
   if (finite(a) && finite(b) && !std::isfinite(r)) {
-    if (Twin) throw FaultHere{};
-    if (!tFault.happened) {
+    // A twin records its message too: muParser folds constant parts when it compiles, so
+    // the plain evaluation of a cached expression may not call this again.
+    if (!tFault.happened || Twin) {
       tFault.happened = true;
       if ((symbol == '/' || symbol == '%') && b == 0.0)
         tFault.what = fmt::format("division by zero ({} {} {})", num(a), symbol, num(b));
       else
         tFault.what = fmt::format("{} {} {} is not a finite number", num(a), symbol, num(b));
     }
+    if (Twin) throw FaultHere{};
   }
   return r;
 }
@@ -90,12 +92,12 @@ void noteFunction(const char* name, std::initializer_list<double> args, double r
   for (double a : args)
     if (!finite(a)) return;
   if (std::isfinite(r)) return;
-  if (Twin) throw FaultHere{};
-  if (tFault.happened) return;
+  if (tFault.happened && !Twin) return;
   std::string list;
   for (double a : args) list += (list.empty() ? "" : ", ") + num(a);
   tFault.happened = true;
   tFault.what = fmt::format("{}({}) is not a finite number", name, list);
+  if (Twin) throw FaultHere{};
 }
 
 template <F1 f, const char* name, bool Twin>
@@ -187,8 +189,10 @@ void defineFaultingOperators(mu::Parser& p, bool twinSymbols) {
 ExpressionFault& currentExpressionFault() { return tFault; }
 
 const std::vector<OperatorTwin>& faultingOperators() {
-  static const std::vector<OperatorTwin> ops{{'+', '\x02'}, {'-', '\x03'}, {'*', '\x04'},
-                                             {'/', '\x05'}, {'%', '\x06'}, {'^', '\x07'}};
+  // Printable characters that expressions never hold: muParser skips every character up
+  // to ' ' as white space, so control characters would vanish instead of naming a twin.
+  static const std::vector<OperatorTwin> ops{{'+', '#'}, {'-', '~'}, {'*', '`'},
+                                             {'/', '\''}, {'%', '['}, {'^', ']'}};
   return ops;
 }
 

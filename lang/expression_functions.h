@@ -22,9 +22,10 @@ struct ExpressionFault {
 ExpressionFault& currentExpressionFault();
 
 // How a parser is set up: `Plain` for evaluation; `Locating` adds, for each operator and
-// function, a twin that throws on a fault (its operator written with a control character,
-// its name prefixed with '\x01'), so that replacing one occurrence by its twin tells
-// whether that occurrence is the faulty one.
+// function, a twin that throws on a fault (its operator written with a character that
+// expressions never hold, its name prefixed with '@'), so that replacing one occurrence by
+// its twin tells whether that occurrence is the faulty one; the twin records the fault's
+// message before it throws.
 enum class ParserRole { Plain, Locating };
 void defineLanguage(mu::Parser& parser, ParserRole role);
 
@@ -34,7 +35,7 @@ struct OperatorTwin {
   char twin;
 };
 const std::vector<OperatorTwin>& faultingOperators();
-constexpr char kFunctionTwinPrefix = '\x01';
+constexpr char kFunctionTwinPrefix = '@';
 
 // The contract's function names, for "did you mean" and for telling a function from a name.
 const std::vector<std::string_view>& expressionFunctionNames();

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <tuple>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace lucent {
 
@@ -155,6 +156,12 @@ void checkCsgOperands(ParseContext& ctx, const Node& csg) {
 // error; the chain of definitions makes that a check, not a stack overflow.
 void instantiate(ParseContext& ctx) {
   std::vector<std::string_view> ids;
+  // A definition is read by itself and again for each parameterised <use> of it: a faulty
+  // <use> inside it gives the same error each time, so it is reported once.
+  std::unordered_set<std::string> reported;
+  auto reportOnce = [&](const SourceLoc& loc, std::string message) {
+    if (reported.insert(loc.str() + '\n' + message).second) ctx.diags.error(loc, std::move(message));
+  };
   for (size_t k = 0; k < ctx.instances.size() && !ctx.overLimit; ++k) {
     ParseContext::PendingInstance u = ctx.instances[k];
     auto it = ctx.nodeIds.find(u.ref);
@@ -163,16 +170,15 @@ void instantiate(ParseContext& ctx) {
         for (const auto& [id, entry] : ctx.nodeIds) ids.push_back(id);
         std::sort(ids.begin(), ids.end());
       }
-      ctx.diags.error(u.refLoc, "<use> attribute 'ref': no node has the id '" + u.ref + "'" + didYouMean(u.ref, ids));
+      reportOnce(u.refLoc, "<use> attribute 'ref': no node has the id '" + u.ref + "'" + didYouMean(u.ref, ids));
       ctx.broken.insert(u.use);
       continue;
     }
     if (std::find(u.chain.begin(), u.chain.end(), u.ref) != u.chain.end()) {
       std::string chain;
       for (const std::string& c : u.chain) chain += "'" + c + "' -> ";
-      ctx.diags.error(u.use->loc, "<use ref=\"" + u.ref + "\"> instantiates '" + u.ref +
-                                      "' inside its own definition: " + chain + "'" + u.ref +
-                                      "' (a definition cannot use itself)");
+      reportOnce(u.use->loc, "<use ref=\"" + u.ref + "\"> instantiates '" + u.ref + "' inside its own definition: " +
+                                 chain + "'" + u.ref + "' (a definition cannot use itself)");
       ctx.broken.insert(u.use);
       continue;
     }
