@@ -87,6 +87,117 @@ double estimateChildren(ParseContext& ctx, pugi::xml_node element, const ScopePt
   return sum;
 }
 
+// --- Counting ahead ------------------------------------------------------------------
+// The outermost <repeat> counts what it will make before making any of it, evaluating its
+// counts and tests as the expansion will (quietly: the expansion reports what is wrong),
+// and stops counting soon after the limit: a repeat whose inner counts grow with the outer
+// variable (count="${i}"), which the estimate from the first instance cannot see, is
+// refused before it makes anything. Bodies without <repeat> or <if> are counted once and
+// multiplied, so a valid scene pays a small fraction of its expansion for this.
+
+// Is anything under `element` made a varying number of times?
+bool varies(pugi::xml_node element) {
+  for (pugi::xml_node c = element.first_child(); c; c = c.next_sibling()) {
+    if (c.type() != pugi::node_element) continue;
+    std::string_view n = c.name();
+    if (n == "repeat" || n == "if") return true;
+    if (n != "material" && c.first_child() && varies(c)) return true;
+  }
+  return false;
+}
+
+// What the children of an element without repeats or ifs make: one each, with theirs.
+long long fixedCount(pugi::xml_node element) {
+  long long n = 0;
+  for (pugi::xml_node c = element.first_child(); c; c = c.next_sibling()) {
+    if (c.type() != pugi::node_element) continue;
+    std::string_view name = c.name();
+    if (name == "param" || name == "material") continue;
+    n += 1 + fixedCount(c);
+  }
+  return n;
+}
+
+// The element's <param>s as a scope, with nothing reported (the expansion checks them).
+ScopePtr quietScope(const ParseContext& ctx, const SourceFile& file, pugi::xml_node element, const ScopePtr& parent) {
+  (void)ctx;
+  ScopePtr s;
+  for (pugi::xml_node c = element.child("param"); c; c = c.next_sibling("param")) {
+    std::string_view name = c.attribute("name").value();
+    if (!Parameters::isValidName(name) || !c.attribute("value")) continue;
+    if (!s) {
+      s = std::make_shared<Scope>();
+      s->parent = parent;
+      s->file = &file;
+      s->element = element;
+    }
+    LocalParam p;
+    p.name = name;
+    p.raw = c.attribute("value").value();
+    p.file = &file;
+    p.element = c;
+    s->params.push_back(std::move(p));
+  }
+  return s ? s : parent;
+}
+
+long long countChildren(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, const ScopePtr& scope,
+                        int depth, long long total, long long limit);
+
+// What one element makes, added to `total`.
+long long countElement(ParseContext& ctx, const SourceFile& file, pugi::xml_node c, const ScopePtr& scope,
+                       int depth, long long total, long long limit) {
+  if (depth > kMaxElementDepth || total > limit) return total;
+  std::string_view name = c.name();
+  if (name == "param" || name == "material") return total;
+  SubstitutionError error;
+  if (name == "repeat") {
+    auto text = ctx.params.substitute(c.attribute("count").value(), scope.get(), error);
+    Parsed<long long> n = text ? parseInteger(*text) : Parsed<long long>{};
+    if (!n || *n <= 0) return total;
+    if (!varies(c)) {
+      double made = static_cast<double>(*n) * static_cast<double>(1 + fixedCount(c));
+      return made > static_cast<double>(limit - total) ? limit + 1 : total + static_cast<long long>(made);
+    }
+    std::string_view var = c.attribute("var").value();
+    for (long long i = 0; i < *n && total <= limit; ++i) {
+      ++total;
+      auto s = std::make_shared<Scope>();
+      s->parent = scope;
+      s->var = var;
+      s->value = static_cast<double>(i);
+      s->file = &file;
+      s->element = c;
+      ScopePtr withParams = quietScope(ctx, file, c, s);
+      if (withParams != s) {  // the repeat's own parameters belong to the instance's scope
+        s->params = std::move(withParams->params);
+      }
+      total = countChildren(ctx, file, c, s, depth + 1, total, limit);
+    }
+    return total;
+  }
+  ScopePtr inner = quietScope(ctx, file, c, scope);
+  if (name == "if") {
+    auto text = ctx.params.substitute(c.attribute("test").value(), inner.get(), error);
+    Parsed<double> v = text ? parseNumber(*text) : Parsed<double>{};
+    if (!v || *v == 0.0) return total;
+    return countChildren(ctx, file, c, inner, depth + 1, total, limit);
+  }
+  ++total;  // a geometry node or a light
+  return countChildren(ctx, file, c, inner, depth + 1, total, limit);
+}
+
+long long countChildren(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, const ScopePtr& scope,
+                        int depth, long long total, long long limit) {
+  if (!varies(element)) {
+    long long n = fixedCount(element);
+    return n > limit - total ? limit + 1 : total + n;
+  }
+  for (pugi::xml_node c = element.first_child(); c && total <= limit; c = c.next_sibling())
+    if (c.type() == pugi::node_element) total = countElement(ctx, file, c, scope, depth, total, limit);
+  return total;
+}
+
 void expandRepeat(ElementReader& parent, pugi::xml_node element, int depth,
                   const std::function<void(pugi::xml_node)>& f) {
   ParseContext& ctx = parent.ctx();
@@ -123,6 +234,17 @@ void expandRepeat(ElementReader& parent, pugi::xml_node element, int depth,
                           static_cast<double>(ctx.nodeCount) + estimate, kMaxExpandedNodes));
       ctx.overLimit = true;
       return;
+    }
+    {
+      Parameters::Quiet quiet(ctx.params);
+      long long made = countElement(ctx, file, element, ctx.scope, depth, ctx.nodeCount, kMaxExpandedNodes);
+      if (made > kMaxExpandedNodes) {
+        r.error(fmt::format("this <repeat> would expand the scene to more than {} nodes, lights and repeat "
+                            "instances (the limit)",
+                            kMaxExpandedNodes));
+        ctx.overLimit = true;
+        return;
+      }
     }
     ctx.outerRepeatFile = &file;
     ctx.outerRepeat = element;
@@ -190,6 +312,12 @@ LocalScope::LocalScope(ParseContext& ctx, const SourceFile& file, pugi::xml_node
     }
   }
   if (params.empty()) return;
+  if (std::string_view(element.name()) == "use")
+    for (LocalParam& p : params)
+      if (!p.aliasScope) {
+        p.readOutside = true;
+        p.outside = ctx.scope;
+      }
   auto s = std::make_shared<Scope>();
   s->parent = ctx.scope;
   s->file = &file;

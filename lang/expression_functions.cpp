@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 namespace lucent {
 
@@ -168,6 +169,27 @@ void defineFunctions(mu::Parser& p, const std::string& prefix) {
 // Precedences, lowest first (the ternary ?: is muParser's own, below all of them).
 enum Precedence { kOr = 1, kAnd, kEquality, kOrder, kSum, kProduct, kUnary, kPower };
 
+// muParser takes no unary operator right after another ("--x", "!-x", "!!x"), which the
+// language allows: each run of two to four of them is defined as one operator that applies
+// them from right to left. Bit k of Bits is the k-th operator from the right: 1 is '!'.
+template <unsigned Bits, unsigned Len>
+double unaryRun(double x) {
+  for (unsigned k = 0; k < Len; ++k) x = (Bits >> k & 1u) ? (x == 0.0 ? 1.0 : 0.0) : -x;
+  return x;
+}
+
+std::string unaryRunName(unsigned bits, unsigned len) {
+  std::string s(len, '-');
+  for (unsigned i = 0; i < len; ++i)
+    if (bits >> (len - 1 - i) & 1u) s[i] = '!';
+  return s;
+}
+
+template <unsigned Len, unsigned... B>
+void defineUnaryRuns(mu::Parser& p, std::integer_sequence<unsigned, B...>) {
+  (p.DefineInfixOprt(unaryRunName(B, Len), unaryRun<B, Len>, kUnary), ...);
+}
+
 template <bool Twin>
 void defineFaultingOperators(mu::Parser& p, bool twinSymbols) {
   auto name = [&](char op) {
@@ -229,6 +251,9 @@ void defineLanguage(mu::Parser& p, ParserRole role) {
   defineFaultingOperators<false>(p, false);
   p.DefineInfixOprt("-", negOp, kUnary);
   p.DefineInfixOprt("!", notOp, kUnary);
+  defineUnaryRuns<2>(p, std::make_integer_sequence<unsigned, 4>{});
+  defineUnaryRuns<3>(p, std::make_integer_sequence<unsigned, 8>{});
+  defineUnaryRuns<4>(p, std::make_integer_sequence<unsigned, 16>{});
   defineFunctions<false>(p, "");
   if (role == ParserRole::Locating) {
     defineFaultingOperators<true>(p, true);

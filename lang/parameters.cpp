@@ -115,7 +115,11 @@ void Parameters::reportInValue(const SourceFile& file, pugi::xml_node element, c
   pugi::xml_attribute value = element.attribute("value");
   SourceLoc where = inner.offset != std::string::npos ? file.locInValue(value, element, inner.offset)
                                                       : file.valueLoc(value, element);
-  diags_.error(where, "<param> '" + name + "' attribute 'value': " + inner.message);
+  report(where, "<param> '" + name + "' attribute 'value': " + inner.message);
+}
+
+void Parameters::report(const SourceLoc& loc, std::string message) {
+  if (!quiet_) diags_.error(loc, std::move(message));
 }
 
 std::optional<std::string> Parameters::resolveTop(const std::string& name, Param& p, std::string& error) {
@@ -126,16 +130,16 @@ std::optional<std::string> Parameters::resolveTop(const std::string& name, Param
     case State::Resolving: {
       std::string chain;
       for (const std::string& n : resolving_) chain += n + " -> ";
-      diags_.error(p.file->loc(p.element), "<param> '" + name + "' refers to itself: " + chain + name);
-      p.state = State::Failed;
+      report(p.file->loc(p.element), "<param> '" + name + "' refers to itself: " + chain + name);
+      p.state = quiet_ ? State::Unresolved : State::Failed;
       return std::nullopt;
     }
     case State::Unresolved: break;
   }
   if (resolving_.size() >= kMaxParameterDepth) {
-    diags_.error(p.file->loc(p.element), "<param> '" + name + "': parameters refer to one another more than " +
-                                             std::to_string(kMaxParameterDepth) + " deep here");
-    p.state = State::Failed;
+    report(p.file->loc(p.element), "<param> '" + name + "': parameters refer to one another more than " +
+                                       std::to_string(kMaxParameterDepth) + " deep here");
+    p.state = quiet_ ? State::Unresolved : State::Failed;
     return std::nullopt;
   }
   p.state = State::Resolving;
@@ -145,7 +149,7 @@ std::optional<std::string> Parameters::resolveTop(const std::string& name, Param
   resolving_.pop_back();
   if (!value) {
     if (!inner.message.empty()) reportInValue(*p.file, p.element, name, inner);
-    p.state = State::Failed;
+    p.state = quiet_ ? State::Unresolved : State::Failed;
     return std::nullopt;
   }
   if (p.state == State::Failed) return std::nullopt;  // a cycle through it was reported
@@ -163,26 +167,27 @@ std::optional<std::string> Parameters::resolveLocal(Scope& scope, LocalParam& p,
     case LocalParam::State::Resolving: {
       std::string chain;
       for (const std::string& n : resolving_) chain += n + " -> ";
-      diags_.error(p.file->loc(p.element), "<param> '" + name + "' refers to itself: " + chain + name);
-      p.state = LocalParam::State::Failed;
+      report(p.file->loc(p.element), "<param> '" + name + "' refers to itself: " + chain + name);
+      p.state = quiet_ ? LocalParam::State::Unresolved : LocalParam::State::Failed;
       return std::nullopt;
     }
     case LocalParam::State::Unresolved: break;
   }
   if (resolving_.size() >= kMaxParameterDepth) {
-    diags_.error(p.file->loc(p.element), "<param> '" + name + "': parameters refer to one another more than " +
-                                             std::to_string(kMaxParameterDepth) + " deep here");
-    p.state = LocalParam::State::Failed;
+    report(p.file->loc(p.element), "<param> '" + name + "': parameters refer to one another more than " +
+                                       std::to_string(kMaxParameterDepth) + " deep here");
+    p.state = quiet_ ? LocalParam::State::Unresolved : LocalParam::State::Failed;
     return std::nullopt;
   }
   p.state = LocalParam::State::Resolving;
   resolving_.push_back(name);
   SubstitutionError inner;
-  std::optional<std::string> value = substitute(p.raw, &scope, inner);  // its siblings are visible
+  // Its siblings are visible, except for a <use>'s arguments.
+  std::optional<std::string> value = substitute(p.raw, p.readOutside ? p.outside.get() : &scope, inner);
   resolving_.pop_back();
   if (!value) {
     if (!inner.message.empty()) reportInValue(*p.file, p.element, name, inner);
-    p.state = LocalParam::State::Failed;
+    p.state = quiet_ ? LocalParam::State::Unresolved : LocalParam::State::Failed;
     return std::nullopt;
   }
   if (p.state == LocalParam::State::Failed) return std::nullopt;

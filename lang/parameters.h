@@ -59,6 +59,19 @@ class Parameters {
   // Returns a description ("the parameter declared at 3:5") or "" when it is not.
   std::string whatIs(std::string_view name, const Scope* scope);
 
+  // While one lives, nothing is reported and no failure is remembered: for looking ahead
+  // (counting what a repeat will make) without reporting twice what the reading reports.
+  class Quiet {
+   public:
+    explicit Quiet(Parameters& p) : p_(p) { ++p_.quiet_; }
+    ~Quiet() { --p_.quiet_; }
+    Quiet(const Quiet&) = delete;
+    Quiet& operator=(const Quiet&) = delete;
+
+   private:
+    Parameters& p_;
+  };
+
   // The -D names the scene never used (a likely typo on the command line).
   std::vector<std::string> unusedDefines() const;
 
@@ -83,6 +96,7 @@ class Parameters {
   std::optional<std::string> resolveTop(const std::string& name, Param& p, std::string& error);
   std::optional<std::string> resolveLocal(Scope& scope, LocalParam& p, std::string& error);
   std::vector<std::string> knownNames(const Scope* scope) const;
+  void report(const SourceLoc& loc, std::string message);
   void reportInValue(const SourceFile& file, pugi::xml_node element, const std::string& name,
                      const SubstitutionError& inner);
 
@@ -93,6 +107,7 @@ class Parameters {
   std::vector<std::string> resolving_;  // the chain being resolved, to name cycles
   std::vector<std::pair<std::string, double>> builtins_;
   ExpressionEvaluator evaluator_;
+  int quiet_ = 0;
   Diagnostics& diags_;
 };
 

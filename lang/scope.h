@@ -35,6 +35,10 @@ struct LocalParam {
   // that gives the value (read where the <use> stands). Null for an ordinary parameter.
   ScopePtr aliasScope;
   size_t aliasIndex = 0;
+  // A <use>'s parameters are arguments: their values are read in the scope around the
+  // <use> (`size="${size * 2}"` doubles the size seen there), not among themselves.
+  bool readOutside = false;
+  ScopePtr outside;  // may be null: the top level
 };
 
 struct Scope {

@@ -89,14 +89,18 @@ TEST_CASE("expressions: unary - and ! bind tighter than * and looser than ^", "[
   CHECK(eval("2 - -3") == 5);
 }
 
-// muParser refuses an infix operator right after another ("unexpected '-'"), so these
-// stacked forms, which the grammar of unary - and ! allows, fail for now: kept visible
-// (Catch2's !mayfail) until the evaluator accepts them.
-TEST_CASE("expressions: unary operators stack: --x, !!x, -!x, !-x", "[lang][expression][!mayfail]") {
+// muParser refuses an infix operator right after another, so runs of up to four are
+// defined as operators of their own (expression_functions.cpp): they must compose exactly.
+TEST_CASE("expressions: unary operators stack: --x, !!x, -!x, !-x", "[lang][expression]") {
   CHECK(sub("${--3}") == "3");
   CHECK(sub("${!!5}") == "1");
   CHECK(sub("${-!0}") == "-1");
   CHECK(sub("${!-1}") == "0");
+  CHECK(sub("${!!!0}") == "1");
+  CHECK(sub("${-!-!0}") == "-0");  // !0 = 1, then -1, !-1 = 0, -0
+  CHECK(eval("--2^2") == 4);       // the run still binds below ^: -(-(2^2))
+  CHECK(eval("2---3") == -1);      // binary minus, then the run --
+  CHECK(eval("1 - -1") == 2);
 }
 
 TEST_CASE("expressions: ^ is right-associative, the others left-associative", "[lang][expression]") {

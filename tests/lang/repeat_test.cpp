@@ -268,6 +268,20 @@ TEST_CASE("parameterised use: its parameters are visible in its own attributes t
   CHECK(sphere(child(use, 0)).radius == 0.25);
 }
 
+TEST_CASE("parameterised use: its values are read around the use, so a name may use its outer self",
+          "[lang][use]") {
+  auto s = loadString(R"X(<scene version="1"><camera/>
+    <param name="size" value="0.5"/>
+    <defs><sphere id="ball" radius="$size"/></defs>
+    <group><param name="size" value="0.75"/>
+      <use ref="ball"><param name="size" value="${size * 2}"/><param name="other" value="${size}"/></use>
+    </group>
+  </scene>)X");
+  const Node& use = child(child(*s->root, 0), 0);
+  REQUIRE(use.children.size() == 1);
+  CHECK(sphere(child(use, 0)).radius == 1.5);  // the group's 0.75, doubled
+}
+
 TEST_CASE("text parameters: ${name} of a non-numeric parameter is its text, $$ is a literal $",
           "[lang][params]") {
   auto s = load("text_params.xml");
