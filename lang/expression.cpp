@@ -104,6 +104,14 @@ ExpressionError syntaxError(const mu::ParserError& e, std::string_view text,
   }
   err.offset = pos;
   err.message = token.empty() ? "syntax error" : "unexpected '" + token + "'";
+  // "- -x": muParser reads the unary operators of a run written together only.
+  size_t at = text.empty() ? 0 : std::min(pos, text.size() - 1);
+  while (at > 0 && text[at] != '-' && text[at] != '!') --at;  // muParser may point past it
+  if (!token.empty() && (token[0] == '-' || token[0] == '!') && at > 0) {
+    size_t before = text.find_last_not_of(" \t\n\r", at - 1);
+    if (before != std::string_view::npos && before + 1 < at && (text[before] == '-' || text[before] == '!'))
+      err.message += "; write unary operators in a row without spaces (--x, !-x) or with parentheses (-(-x))";
+  }
   return err;
 }
 
