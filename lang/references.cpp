@@ -210,20 +210,24 @@ void instantiate(ParseContext& ctx) {
 
 void resolveReferences(ParseContext& ctx) {
   instantiate(ctx);
-  // 1. Every <use ref> names a node.
+  // 1. Every <use ref> names a node. A <use> inside a <repeat> is one element made many
+  // times: a wrong ref there is one error, not one per instance (as the repeat would stop
+  // at its first faulty instance had the ref been known then).
   std::vector<std::string_view> ids;
+  std::unordered_set<std::string> reported;
   for (const ParseContext::PendingUse& u : ctx.uses) {
     auto it = ctx.nodeIds.find(u.ref);
     if (it != ctx.nodeIds.end()) {
       u.use->target = it->second.node;
       continue;
     }
+    ctx.broken.insert(u.use);
+    if (!reported.insert(u.refLoc.str() + '\n' + u.ref).second) continue;
     if (ids.empty()) {
       for (const auto& [id, entry] : ctx.nodeIds) ids.push_back(id);
       std::sort(ids.begin(), ids.end());
     }
     ctx.diags.error(u.refLoc, "<use> attribute 'ref': no node has the id '" + u.ref + "'" + didYouMean(u.ref, ids));
-    ctx.broken.insert(u.use);
   }
 
   // 3. merge, intersection and difference combine solids only. Checked in source order.
