@@ -16,6 +16,14 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+// Lanes of one vector picked by constant indices: GCC spells it __builtin_shuffle, clang
+// (the fuzz build) __builtin_shufflevector; both compile to the same one instruction.
+#if defined(__clang__)
+#define LUCENT_SHUFFLE4(v, a, b, c, d) __builtin_shufflevector(v, v, a, b, c, d)
+#else
+#define LUCENT_SHUFFLE4(v, a, b, c, d) __builtin_shuffle(v, v4i{a, b, c, d})
+#endif
+
 namespace lucent {
 
 BvhRay::BvhRay(const Ray& r) : o(r.o), invDir(1.0 / r.d) {
@@ -57,7 +65,7 @@ struct Box4 {
     const v4f e = hi - lo;
     // The three products in one multiplication (e times e rotated), summed in the order
     // e0e1 + e1e2 + e2e0, as written out lane by lane: the same float to the bit.
-    const v4f p = e * __builtin_shuffle(e, v4i{1, 2, 0, 3});
+    const v4f p = e * LUCENT_SHUFFLE4(e, 1, 2, 0, 3);
     return p[0] + p[1] + p[2];
   }
 };
@@ -518,7 +526,7 @@ class Builder {
       const v4f ctr = r.centroid2();
       const v4i goesLeft = (ctr - lo) * scale < split;
       // All ones in every lane if the ref goes left.
-      const v4i m = __builtin_shuffle(goesLeft, v4i{A, A, A, A});
+      const v4i m = LUCENT_SHUFFLE4(goesLeft, A, A, A, A);
       const v4i ci = reinterpret_cast<v4i>(ctr);
       const v4f toLeft = reinterpret_cast<v4f>(ci | (qnan & ~m));
       const v4f toRight = reinterpret_cast<v4f>(ci | (qnan & m));
