@@ -10,6 +10,8 @@
 // line turns into exit status 2 or 3 (see refusedInOrder).
 #pragma once
 
+#include "fuzz/expansion_scene.h"
+#include "lang/expression.h"
 #include "lang/parser.h"
 #include "meshes/mesh_files.h"
 #include "primitives/transform.h"
@@ -26,9 +28,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace lucent::fuzz {
 
@@ -129,6 +134,110 @@ inline Outcome meshReader(const uint8_t* data, size_t size, MeshFormat format) {
     return refused();
   }
   return accepted();
+}
+
+// The names the expression target's evaluator knows: numbers (ordinary, huge, tiny, zero),
+// a parameter that is not one number, and one whose problem was already reported.
+class ExpressionFuzzNames final : public ExpressionNames {
+ public:
+  std::optional<double> number(std::string_view name, std::string& error, bool& known) override {
+    known = true;
+    for (const auto& [n, v] : kNumbers)
+      if (name == n) return v;
+    if (name == "text") {
+      error = "the parameter 'text' is 'a b', not one number";
+      return std::nullopt;
+    }
+    if (name == "reported") return std::nullopt;  // empty error: said already
+    known = false;
+    return std::nullopt;
+  }
+  std::vector<std::string> visibleNames() override {
+    std::vector<std::string> names{"text", "reported"};
+    for (const auto& [n, v] : kNumbers) names.emplace_back(n);
+    return names;
+  }
+
+ private:
+  static constexpr std::pair<const char*, double> kNumbers[] = {
+      {"i", 3}, {"r", 0.5}, {"n", 10}, {"zero", 0}, {"neg", -2}, {"big", 1e308}, {"tiny", 4.9e-324}};
+};
+
+// The expression scene: the input is the text of ${...} in an attribute on its own line, in
+// a repeat with a local parameter, beside top-level parameters (one not a number, one that
+// refers to itself).
+constexpr int kExpressionLine = 6;
+inline std::string expressionScene(std::string_view text, size_t& valueColumn, size_t& valueLength) {
+  std::string escaped;
+  for (unsigned char c : text) {
+    switch (c) {
+      case '&': escaped += "&amp;"; break;
+      case '<': escaped += "&lt;"; break;
+      case '"': escaped += "&quot;"; break;
+      case '\n': escaped += "&#10;"; break;
+      case '\t': escaped += "&#9;"; break;
+      case '\r': escaped += "&#13;"; break;
+      default: escaped += c < 0x20 ? ' ' : static_cast<char>(c);  // not allowed in XML even escaped
+    }
+  }
+  const std::string before = "<sphere radius=\"";
+  valueColumn = before.size() + 1;
+  valueLength = escaped.size() + 3;  // with ${ and }
+  return "<scene version=\"1\">\n"
+         "<camera position=\"0 0 5\" look-at=\"0 0 0\"/>\n"
+         "<param name=\"r\" value=\"2\"/><param name=\"s\" value=\"1 2 3\"/><param name=\"c\" value=\"${c+1}\"/>\n"
+         "<repeat var=\"i\" count=\"2\">\n"
+         "<param name=\"k\" value=\"${i*2}\"/>\n" +
+         before + "${" + escaped + "}\"/>\n" +
+         "</repeat>\n"
+         "</scene>\n";
+}
+
+// Arbitrary text as an expression: evaluated directly (the result is finite; an error has a
+// message and an offset inside the text; a second evaluation, from the cache, agrees), then
+// inside a scene, where every error must point into the attribute that holds it (or at the
+// parameters it used).
+inline Outcome expression(const uint8_t* data, size_t size) {
+  std::string_view text(reinterpret_cast<const char*>(data), size);
+  bool ok = false;
+  {
+    ExpressionEvaluator evaluator;
+    ExpressionFuzzNames names;
+    std::optional<double> first;
+    for (int round = 0; round < 2; ++round) {
+      ExpressionError error;
+      std::optional<double> v = evaluator.evaluate(text, names, error);
+      if (v && !std::isfinite(*v)) return finding("a result that is not finite");
+      if (!v && error.message.empty() && !error.reported) return finding("an error without a message");
+      if (!v && error.offset >= std::max<size_t>(1, text.size()))
+        return finding("error offset " + std::to_string(error.offset) + " outside the text: " + error.message);
+      if (round == 0) first = v;
+      else if (v.has_value() != first.has_value() || (v && std::memcmp(&*v, &*first, sizeof(double)) != 0))
+        return finding("a second evaluation of the same text gives another answer");
+    }
+    ok = first.has_value();
+  }
+  size_t column = 0, length = 0;
+  const std::string xml = expressionScene(text, column, length);
+  ParseResult parsed = parseSceneString(xml, LUCENT_SOURCE_DIR "/examples/fuzz-input.xml");
+  for (const Diagnostic& d : parsed.diagnostics.all()) {
+    if (d.message.rfind("internal error while reading the scene", 0) == 0) return finding(d.str());
+    if (d.severity != Severity::Error) continue;
+    if (d.loc.line == 3) continue;  // at the parameter the expression used
+    if (d.loc.line != kExpressionLine || d.loc.col < static_cast<int>(column) ||
+        d.loc.col >= static_cast<int>(column + length))
+      return finding("an error outside the expression's attribute: " + d.str());
+  }
+  if (!parsed.scene && !parsed.diagnostics.hasErrors()) return finding("no scene and no error");
+  return ok ? accepted() : refused();
+}
+
+// Bytes as a program that writes a scene of repeats, ifs, local parameters and (parameterised)
+// uses (fuzz/expansion_scene.h), which is then parsed, built and traced like any scene.
+inline Outcome expansion(const uint8_t* data, size_t size) {
+  const std::string xml = expansionScene(data, size);
+  return sceneParser(reinterpret_cast<const uint8_t*>(xml.data()), xml.size(),
+                     LUCENT_SOURCE_DIR "/examples/fuzz-input.xml");
 }
 
 // For the libFuzzer entry points: a finding stops the run, and libFuzzer keeps the input.

@@ -75,6 +75,16 @@ TEST_CASE("fuzz regressions: transform syntax inputs keep their outcome", "[fuzz
   CHECK(n >= 20);
 }
 
+TEST_CASE("fuzz regressions: expression inputs are evaluated or refused at a place inside them", "[fuzz]") {
+  const size_t n = replayAll("expression", [](const uint8_t* d, size_t n) { return lucent::fuzz::expression(d, n); });
+  CHECK(n > 0);
+}
+
+TEST_CASE("fuzz regressions: expansion programs give scenes that are refused or built cleanly", "[fuzz]") {
+  const size_t n = replayAll("expansion", [](const uint8_t* d, size_t n) { return lucent::fuzz::expansion(d, n); });
+  CHECK(n > 0);
+}
+
 TEST_CASE("fuzz regressions: mesh reader inputs", "[fuzz]") {
   using lucent::MeshFormat;
   for (auto [target, format] : {std::pair{"mesh_obj", MeshFormat::Obj}, std::pair{"mesh_ply", MeshFormat::Ply},
