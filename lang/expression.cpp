@@ -102,6 +102,14 @@ ExpressionError syntaxError(const mu::ParserError& e, std::string_view text,
       return err;
     default: break;
   }
+  if (pos >= text.size()) {
+    // muParser places some errors past the last character ("1 + -", "!", "a:"), naming a
+    // token that is not there: the expression stops where it still needs something.
+    err.message = "the expression ends too early";
+    size_t last = text.find_last_not_of(" \t\n\r");
+    err.offset = last == std::string_view::npos ? 0 : last;
+    return err;
+  }
   err.offset = pos;
   err.message = token.empty() ? "syntax error" : "unexpected '" + token + "'";
   // "- -x": muParser reads the unary operators of a run written together only.
