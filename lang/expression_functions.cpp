@@ -228,6 +228,10 @@ const std::vector<std::string_view>& expressionFunctionNames() {
 
 void defineLanguage(mu::Parser& p, ParserRole role) {
   p.EnableBuiltInOprt(false);  // every operator below, with the contract's precedences
+  // No constant folding: it would call the functions once, while the expression is first
+  // compiled, so a fault in a constant part ("1 || 1/0") was reported by the first
+  // evaluation only and every later one (from the cache) gave a number.
+  p.EnableOptimizer(false);
   p.ClearFun();
   p.ClearConst();  // pi and e are names the scene may hide with its own parameters
   p.ClearInfixOprt();
