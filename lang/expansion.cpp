@@ -348,6 +348,10 @@ void expandElement(ElementReader& r, pugi::xml_node element, int depth, const st
   else expandIf(r, element, depth, f);
 }
 
+double estimateNodes(ParseContext& ctx, pugi::xml_node element, const ScopePtr& scope) {
+  return std::min(kEstimateCap, 1 + estimateChildren(ctx, element, scope, 0));
+}
+
 bool countNode(ParseContext& ctx) {
   if (ctx.overLimit) return false;
   // Only what repeats and instances make counts: a plain scene is as large as its file.

@@ -36,6 +36,10 @@ void forEachExpandedChild(ElementReader& r, int depth, const std::function<void(
 // Expands one <repeat> or <if> element that is a child of r's element.
 void expandElement(ElementReader& r, pugi::xml_node element, int depth, const std::function<void(pugi::xml_node)>& f);
 
+// At most how many nodes, lights and repeat instances reading `element` (a geometry node)
+// in `scope` makes, judged as for a <repeat> (counts it cannot evaluate there count as 1).
+double estimateNodes(ParseContext& ctx, pugi::xml_node element, const ScopePtr& scope);
+
 // Counts one node or light made by the expansion; false (and, once, an error at the outermost
 // repeat) when the scene is over kMaxExpandedNodes.
 bool countNode(ParseContext& ctx);

@@ -6,6 +6,8 @@
 #include "expansion.h"
 #include "scenegraph/shape_registry.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <tuple>
 #include <unordered_map>
@@ -162,7 +164,29 @@ void instantiate(ParseContext& ctx) {
   auto reportOnce = [&](const SourceLoc& loc, std::string message) {
     if (reported.insert(loc.str() + '\n' + message).second) ctx.diags.error(loc, std::move(message));
   };
+  // What the instances not made yet will make, estimated from their definitions as each
+  // joins the list: a <repeat> of a million parameterised uses of a large definition is
+  // refused before the first copy, not after 10^7 nodes (the running count stays the
+  // backstop for what the estimate cannot see, such as counts given by the <use>).
+  std::vector<double> estimates;
+  double pending = 0;
   for (size_t k = 0; k < ctx.instances.size() && !ctx.overLimit; ++k) {
+    for (size_t e = estimates.size(); e < ctx.instances.size(); ++e) {
+      auto target = ctx.nodeIds.find(ctx.instances[e].ref);
+      const bool found = target != ctx.nodeIds.end();
+      estimates.push_back(found ? estimateNodes(ctx, target->second.element, target->second.scope) : 0.0);
+      pending += estimates.back();
+    }
+    if (static_cast<double>(ctx.nodeCount) + pending > static_cast<double>(kMaxExpandedNodes)) {
+      ctx.diags.error(ctx.instances[k].use->loc,
+                      fmt::format("the <use>s with parameters would expand the scene to about {:.3g} nodes, lights "
+                                  "and repeat instances, more than the limit of {}; this <use> is the first of "
+                                  "those not made yet",
+                                  static_cast<double>(ctx.nodeCount) + pending, kMaxExpandedNodes));
+      ctx.overLimit = true;
+      break;
+    }
+    pending -= estimates[k];
     ParseContext::PendingInstance u = ctx.instances[k];
     auto it = ctx.nodeIds.find(u.ref);
     if (it == ctx.nodeIds.end()) {
