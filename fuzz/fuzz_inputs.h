@@ -204,6 +204,7 @@ inline Outcome expression(const uint8_t* data, size_t size) {
     ExpressionEvaluator evaluator;
     ExpressionFuzzNames names;
     std::optional<double> first;
+    std::string firstText;
     for (int round = 0; round < 2; ++round) {
       ExpressionError error;
       std::optional<double> v = evaluator.evaluate(text, names, error);
@@ -211,9 +212,13 @@ inline Outcome expression(const uint8_t* data, size_t size) {
       if (!v && error.message.empty() && !error.reported) return finding("an error without a message");
       if (!v && error.offset >= std::max<size_t>(1, text.size()))
         return finding("error offset " + std::to_string(error.offset) + " outside the text: " + error.message);
-      if (round == 0) first = v;
-      else if (v.has_value() != first.has_value() || (v && std::memcmp(&*v, &*first, sizeof(double)) != 0))
-        return finding("a second evaluation of the same text gives another answer");
+      const std::string shown = v ? formatNumber(*v) : "error at " + std::to_string(error.offset) + ": " + error.message;
+      if (round == 0) {
+        first = v;
+        firstText = shown;
+      } else if (v.has_value() != first.has_value() || (v && std::memcmp(&*v, &*first, sizeof(double)) != 0)) {
+        return finding("a second evaluation of the same text gives another answer: " + firstText + ", then " + shown);
+      }
     }
     ok = first.has_value();
   }
