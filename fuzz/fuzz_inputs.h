@@ -160,7 +160,8 @@ class ExpressionFuzzNames final : public ExpressionNames {
 
  private:
   static constexpr std::pair<const char*, double> kNumbers[] = {
-      {"i", 3}, {"r", 0.5}, {"n", 10}, {"zero", 0}, {"neg", -2}, {"big", 1e308}, {"tiny", 4.9e-324}};
+      {"i", 3},    {"r", 0.5},    {"n", 10},           {"zero", 0},        {"neg", -2},
+      {"big", 1e308}, {"tiny", 4.9e-324}, {"pi", 3.141592653589793}, {"e", 2.718281828459045}};
 };
 
 // The expression scene: the input is the text of ${...} in an attribute on its own line, in
