@@ -172,9 +172,30 @@ void instantiate(ParseContext& ctx) {
   double pending = 0;
   for (size_t k = 0; k < ctx.instances.size() && !ctx.overLimit; ++k) {
     for (size_t e = estimates.size(); e < ctx.instances.size(); ++e) {
-      auto target = ctx.nodeIds.find(ctx.instances[e].ref);
-      const bool found = target != ctx.nodeIds.end();
-      estimates.push_back(found ? estimateNodes(ctx, target->second.element, target->second.scope) : 0.0);
+      const ParseContext::PendingInstance& next = ctx.instances[e];
+      auto target = ctx.nodeIds.find(next.ref);
+      if (target == ctx.nodeIds.end()) {
+        estimates.push_back(0.0);
+        continue;
+      }
+      // In the scope the copy will have, so that counts given by the <use>'s parameters
+      // count; quietly, since reading the copy reports what is wrong.
+      ScopePtr scope = target->second.scope;
+      if (next.scope && !next.scope->params.empty()) {
+        auto s = std::make_shared<Scope>();
+        s->parent = scope;
+        s->file = target->second.file;
+        s->element = target->second.element;
+        for (size_t i = 0; i < next.scope->params.size(); ++i) {
+          LocalParam given = next.scope->params[i];
+          given.aliasScope = next.scope;
+          given.aliasIndex = i;
+          s->params.push_back(std::move(given));
+        }
+        scope = std::move(s);
+      }
+      Parameters::Quiet quiet(ctx.params);
+      estimates.push_back(estimateNodes(ctx, target->second.element, scope));
       pending += estimates.back();
     }
     if (static_cast<double>(ctx.nodeCount) + pending > static_cast<double>(kMaxExpandedNodes)) {
