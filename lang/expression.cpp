@@ -237,6 +237,7 @@ void ExpressionEvaluator::locateFault(const Compiled& c, ExpressionError& error)
   mu::Parser locator;
   defineLanguage(locator, ParserRole::Locating);
   auto faultsWith = [&](const std::string& variant) {
+    locateBudget_ -= std::min(locateBudget_, variant.size());
     try {
       locator.ClearVar();
       for (size_t i = 0; i < c.names.size(); ++i) locator.DefineVar(c.names[i], &c.slots[i]);
@@ -249,9 +250,15 @@ void ExpressionEvaluator::locateFault(const Compiled& c, ExpressionError& error)
     }
     return false;
   };
-  for (size_t p = 0; p < c.text.size(); ++p) {
-    for (const NameToken& n : c.tokens)
-      if (n.offset == p && n.call) {
+  // Each try parses the whole text again, so locating is quadratic in its length: past the
+  // evaluator's budget (well under a second of parsing) the fault is reported at the start of the
+  // expression, so that long faulty expressions (a 20,000-character one took minutes) or
+  // thousands of them cannot stall the scene's loading.
+  size_t next = 0;  // the first token at or after p (tokens are in text order)
+  for (size_t p = 0; p < c.text.size() && locateBudget_ > 0; ++p) {
+    while (next < c.tokens.size() && c.tokens[next].offset < p) ++next;
+    for (size_t k = next; k < c.tokens.size() && c.tokens[k].offset == p && locateBudget_ > 0; ++k)
+      if (const NameToken& n = c.tokens[k]; n.call) {
         std::string variant = c.text;
         variant.insert(p, 1, kFunctionTwinPrefix);
         if (faultsWith(variant)) {
@@ -261,7 +268,7 @@ void ExpressionEvaluator::locateFault(const Compiled& c, ExpressionError& error)
         }
       }
     for (const OperatorTwin& t : faultingOperators())
-      if (c.text[p] == t.op) {
+      if (c.text[p] == t.op && locateBudget_ > 0) {
         std::string variant = c.text;
         variant[p] = t.twin;
         if (faultsWith(variant)) {

@@ -50,6 +50,8 @@ class ExpressionEvaluator {
   // By text; a scene with very many distinct expressions clears it now and then, so that
   // its memory (a parser each) stays bounded.
   std::unordered_map<std::string_view, std::unique_ptr<Compiled>> cache_;
+  // Characters the fault locator may still parse (locateFault).
+  size_t locateBudget_ = 200'000;
 };
 
 // Shortest decimal text that reads back as exactly `v` ("0.1", "3", "1e+21").
