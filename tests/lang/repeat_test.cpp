@@ -4,6 +4,7 @@
 // ParseOptions::frame pick the parameters and the moment, and a repeat-made scene renders
 // exactly as the same scene written out by hand.
 #include "lang/parser.h"
+#include "valid_scene_loading.h"
 #include "povray/pov_export.h"
 #include "render/renderer.h"
 #include "render/scene_check.h"
@@ -22,21 +23,9 @@ using namespace lucent;
 
 namespace {
 
-fs::path validDir() { return fs::path(LUCENT_SOURCE_DIR) / "tests" / "lang" / "valid"; }
-
-std::string messages(const ParseResult& r) {
-  std::string all;
-  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
-  return all;
-}
-
-std::unique_ptr<Scene> load(const std::string& name, const ParseOptions& options = {}) {
-  ParseResult r = parseSceneFile((validDir() / name).string(), options);
-  INFO(messages(r));
-  REQUIRE(r.scene != nullptr);
-  REQUIRE(r.diagnostics.all().empty());
-  return std::move(r.scene);
-}
+using testing::load;
+using testing::messages;
+using testing::validDir;
 
 std::unique_ptr<Scene> loadString(const std::string& xml, const ParseOptions& options = {}) {
   ParseResult r = parseSceneString(xml, "inline.xml", options);

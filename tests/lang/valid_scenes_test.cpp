@@ -2,6 +2,7 @@
 // counts, every attribute's value, parameters, includes, defs/use, inherited materials
 // (through the World's instances) and world transforms against hand-computed matrices.
 #include "lang/parser.h"
+#include "valid_scene_loading.h"
 #include "scenegraph/scene_summary.h"
 #include "scenegraph/world.h"
 
@@ -14,21 +15,9 @@ using namespace lucent;
 
 namespace {
 
-fs::path validDir() { return fs::path(LUCENT_SOURCE_DIR) / "tests" / "lang" / "valid"; }
-
-std::string messages(const ParseResult& r) {
-  std::string all;
-  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
-  return all;
-}
-
-std::unique_ptr<Scene> load(const std::string& name, const ParseOptions& options = {}) {
-  ParseResult r = parseSceneFile((validDir() / name).string(), options);
-  INFO(messages(r));
-  REQUIRE(r.scene != nullptr);
-  REQUIRE(r.diagnostics.all().empty());  // no warnings either
-  return std::move(r.scene);
-}
+using testing::load;
+using testing::messages;
+using testing::validDir;
 
 bool close(const Vec3& a, const Vec3& b, double tol = 1e-12) { return glm::length(a - b) <= tol; }
 bool close(const Mat4& a, const Mat4& b, double tol = 1e-12) {

@@ -1,0 +1,33 @@
+// Loading the valid scenes of tests/lang/valid/ in a test: a scene that must parse with no
+// diagnostic at all (the diagnostics are shown when it does not).
+#pragma once
+
+#include "lang/parser.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace lucent::testing {
+
+inline std::filesystem::path validDir() {
+  return std::filesystem::path(LUCENT_SOURCE_DIR) / "tests" / "lang" / "valid";
+}
+
+inline std::string messages(const ParseResult& r) {
+  std::string all;
+  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
+  return all;
+}
+
+inline std::unique_ptr<Scene> load(const std::string& name, const ParseOptions& options = {}) {
+  ParseResult r = parseSceneFile((validDir() / name).string(), options);
+  INFO(messages(r));
+  REQUIRE(r.scene != nullptr);
+  REQUIRE(r.diagnostics.all().empty());  // no warnings either
+  return std::move(r.scene);
+}
+
+}  // namespace lucent::testing
