@@ -52,6 +52,8 @@ void ProgressBar::stop() {
 void ProgressBar::run() {
   const auto start = std::chrono::steady_clock::now();
   std::unique_lock<std::mutex> lock(mutex_);
+  // A frame of a sequence says at once which frame it is, however soon it ends.
+  if (sequence_) draw(0.0);
   while (!wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return stopping_; })) {
     draw(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }

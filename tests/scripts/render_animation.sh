@@ -124,8 +124,8 @@ for f in 1 2 3; do
 done
 grep -q "^frames:  *3  in .* s a frame" "$tmp/stdout" || fail "--stats: no total: $(cat "$tmp/stdout")"
 
-# On a terminal the progress line names the frame and gives the whole run's ETA (redrawn
-# every 250 ms: these frames take longer, 64 samples at 320x240). -q hides it.
+# On a terminal the progress line names the frame and gives the whole run's ETA (drawn when
+# each frame starts, then every 250 ms). -q hides it.
 mkdir "$tmp/tty"
 tty_render=("$lucent" render "$tmp/moving.xml" -w 320 -h 240 -s 64 -o "$tmp/tty/out.png")
 script -qec "$(printf '%q ' "${tty_render[@]}")" "$tmp/tty.log" >/dev/null 2>&1 ||
