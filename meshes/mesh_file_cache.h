@@ -1,16 +1,16 @@
 // Mesh files read once and shared: by every element of one scene that names the file, and,
 // when the caller keeps the cache (ParseOptions::meshCache), by every scene it parses, as
 // the frames of an animation. A file whose size or modification time changed since it was
-// read is read again.
+// read is read again (memory/file_cache.h).
 #pragma once
 
 #include "primitives/mesh_data.h"
 
+#include "memory/file_cache.h"
+
 #include <cstdint>
-#include <filesystem>
 #include <memory>
 #include <string>
-#include <unordered_map>
 
 namespace lucent {
 
@@ -21,16 +21,10 @@ class MeshFileCache {
   std::shared_ptr<const MeshData> get(const std::string& canonicalPath, bool* firstRead = nullptr);
 
   // Files read so far (each re-read counts): what the tests observe.
-  uint64_t reads() const { return reads_; }
+  uint64_t reads() const { return files_.loads(); }
 
  private:
-  struct Entry {
-    std::shared_ptr<const MeshData> data;
-    std::filesystem::file_time_type modified;
-    std::uintmax_t size = 0;
-  };
-  std::unordered_map<std::string, Entry> entries_;
-  uint64_t reads_ = 0;
+  FileCache<MeshData> files_;
 };
 
 }  // namespace lucent
