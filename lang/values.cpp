@@ -1,7 +1,12 @@
 #include "values.h"
 
+#include "color_names.h"
+#include "did_you_mean.h"
+
 #include "primitives/value_limits.h"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -152,6 +157,27 @@ Parsed<ParsedColor> parseColor(std::string_view text) {
     }
     return {pc, {}};
   }
+  // A word is a CSS colour name: sRGB like #rrggbb.
+  if (!t.empty() && std::isalpha(static_cast<unsigned char>(t[0]))) {
+    bool word = std::all_of(t.begin(), t.end(), [](char c) {
+      return std::isalpha(static_cast<unsigned char>(c)) != 0;
+    });
+    // nan and inf are numbers to the number parser, which says why they are refused.
+    std::string lower(t);
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (lower == "nan" || lower == "inf" || lower == "infinity") word = false;
+    if (word) {
+      auto srgb = cssColorByName(t);
+      if (!srgb)
+        return {std::nullopt, "unknown colour name " + quote(t) + didYouMean(t, cssColorNames()) +
+                                  "; a colour is 3 numbers, 1 number for grey, #rrggbb or a CSS "
+                                  "colour name"};
+      ParsedColor pc;
+      const uint8_t bytes[3] = {srgb->r, srgb->g, srgb->b};
+      for (int k = 0; k < 3; ++k) pc.color[k] = static_cast<float>(srgbToLinear(bytes[k] / 255.0));
+      return {pc, {}};
+    }
+  }
   auto list = parseNumberList(t);
   if (!list) return {std::nullopt, list.error};
   const auto& v = *list;
@@ -162,7 +188,7 @@ Parsed<ParsedColor> parseColor(std::string_view text) {
   } else if (v.size() == 3) {
     pc.color = Color(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
   } else {
-    return {std::nullopt, "expected a colour (3 numbers, 1 number for grey, or #rrggbb), got " +
+    return {std::nullopt, "expected a colour (3 numbers, 1 number for grey, #rrggbb or a CSS colour name), got " +
                               std::to_string(v.size()) + " numbers (" + quote(t) + ")"};
   }
   // Unreachable while numbers stop at kMaxMagnitude (1e30 < FLT_MAX); kept should that change.

@@ -1,6 +1,6 @@
 // The value syntax of attributes (contract, "Lexical rules"): decimal numbers, vectors of
 // three numbers separated by spaces and/or commas, colours (3 numbers, 1 number for grey,
-// or #rrggbb in sRGB), booleans, integers. Each parser returns the value or an error
+// or #rrggbb or a CSS name in sRGB), booleans, integers. Each parser returns the value or an error
 // message without location; the caller names the element and attribute.
 #pragma once
 
@@ -43,7 +43,8 @@ struct ParsedColor {
   Color color{0.0f};
   bool scalar = false;  // written as one number
 };
-// 3 numbers (linear RGB), 1 number (grey) or #rrggbb (sRGB-encoded, decoded to linear).
+// 3 numbers (linear RGB), 1 number (grey), #rrggbb or a CSS colour name (sRGB-encoded,
+// decoded to linear).
 Parsed<ParsedColor> parseColor(std::string_view text);
 
 // The exact sRGB decoding (IEC 61966-2-1): c/12.92 at or below 0.04045, else

@@ -1,9 +1,12 @@
 // The value syntax: numbers, lists, vectors, colours (#rrggbb through the exact sRGB
 // curve), booleans, integers; and the did-you-mean distance.
+#include "lang/color_names.h"
 #include "lang/did_you_mean.h"
 #include "lang/values.h"
 
 #include <catch2/catch.hpp>
+
+#include <algorithm>
 
 using namespace lucent;
 
@@ -74,10 +77,38 @@ TEST_CASE("lang: colours of three numbers are linear, one number is grey", "[lan
   REQUIRE(grey);
   CHECK(grey->color == Color(0.5f));
   CHECK(grey->scalar);
-  CHECK(parseColor("1 0").error == "expected a colour (3 numbers, 1 number for grey, or #rrggbb), got 2 numbers ('1 0')");
-  CHECK(parseColor("red").error == "expected a number, got 'red'");
+  CHECK(parseColor("1 0").error == "expected a colour (3 numbers, 1 number for grey, #rrggbb or a CSS colour name), got 2 numbers ('1 0')");
   // Beyond float range, and beyond the 1e30 limit of every number (docs/security.md).
   CHECK(parseColor("1e39").error == "the number '1e39' is too large (the limit is 1e30 in magnitude)");
+}
+
+TEST_CASE("lang: CSS colour names are sRGB like #rrggbb, in any case", "[lang][values]") {
+  auto css = parseColor("midnightblue");  // #191970
+  REQUIRE(css);
+  CHECK(css->color == parseColor("#191970")->color);
+  CHECK_FALSE(css->scalar);
+  CHECK(parseColor(" MidnightBlue ")->color == css->color);
+  CHECK(parseColor("red")->color == Color(1.0f, 0.0f, 0.0f));
+  // CSS, not X11, where the two disagree: CSS green is #008000, gray #808080.
+  CHECK(parseColor("green")->color == parseColor("#008000")->color);
+  CHECK(parseColor("grey")->color == parseColor("#808080")->color);
+  CHECK(parseColor("gray")->color == parseColor("#808080")->color);
+  CHECK(parseColor("rebeccapurple")->color == parseColor("#663399")->color);
+  CHECK(parseColor("#ffffff")->color == parseColor("white")->color);
+  CHECK(cssColorNames().size() == 148);
+  CHECK(std::is_sorted(cssColorNames().begin(), cssColorNames().end()));
+  for (std::string_view name : cssColorNames()) CHECK(cssColorByName(name));
+
+  CHECK(parseColor("redd").error ==
+        "unknown colour name 'redd' (did you mean 'red'?); a colour is 3 numbers, 1 number "
+        "for grey, #rrggbb or a CSS colour name");
+  CHECK(parseColor("midnigthblue").error.find("(did you mean 'midnightblue'?)") != std::string::npos);
+  CHECK(parseColor("xyzzyq").error ==
+        "unknown colour name 'xyzzyq'; a colour is 3 numbers, 1 number for grey, #rrggbb or a "
+        "CSS colour name");
+  CHECK(parseColor("nan").error == "expected a number, got 'nan' (NaN is not allowed)");
+  // A word followed by numbers is not a name.
+  CHECK(parseColor("red 1").error == "expected a number, got 'red'");
 }
 
 TEST_CASE("lang: integers, booleans", "[lang][values]") {
