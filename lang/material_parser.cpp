@@ -12,7 +12,8 @@ namespace {
 
 const std::vector<std::string_view> kMaterialAttributes{
     "id",       "emissive",   "ambient",      "diffuse", "specular", "shininess",
-    "reflective", "transmissive", "ior",      "fresnel", "absorption"};
+    "reflective", "transmissive", "ior",      "fresnel", "absorption", "phong",
+    "phong-size", "brilliance", "metallic"};
 const std::vector<std::string_view> kTextureElements{"checker", "image"};
 
 Texture parseChecker(ElementReader& t) {
@@ -82,6 +83,10 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel) {
   m.ior = r.number("ior", m.ior, NumberRule::positive());
   m.fresnel = r.boolean("fresnel", m.fresnel);
   m.absorption = r.color("absorption", m.absorption);
+  m.phong = r.color("phong", m.phong);
+  m.phongSize = r.number("phong-size", m.phongSize, NumberRule::positive());
+  m.brilliance = r.number("brilliance", m.brilliance, NumberRule::nonNegative());
+  m.metallic = r.boolean("metallic", m.metallic);
 
   SourceLoc textureLoc;
   r.forEachChild([&](pugi::xml_node n) {

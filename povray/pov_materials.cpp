@@ -88,7 +88,10 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
   double d = 0.0;
   if (!filterOnly) {
     s.useTexture = hasTexture;
-    if (isGrey(kd)) {
+    // POV-Ray's metallic tints highlights by the pigment: it must then carry the whole
+    // diffuse colour, as it does for a coloured k_d.
+    const bool metallicPigment = m.metallic && m.hasHighlight() && !isImage && !isZero(kd);
+    if (isGrey(kd) && !metallicPigment) {
       d = kd.x;
     } else if (isImage) {
       d = mean(kd);
@@ -133,6 +136,29 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
                                         "specular {} becomes {}",
                                         name, colourText(m.specular), floatText(s.specular)));
     }
+  }
+  if (!isZero(v3(m.phong))) {
+    const Vec3 kp = v3(m.phong);
+    s.phong = kp.x;
+    if (!isGrey(kp)) {
+      s.phong = mean(kp);
+      issues.warning(m.loc, fmt::format("{}: POV-Ray's phong is one number; the coloured phong "
+                                        "{} becomes {}",
+                                        name, colourText(m.phong), floatText(s.phong)));
+    }
+  }
+  s.phongSize = m.phongSize;
+  s.brilliance = m.brilliance;
+  if (m.metallic && m.hasHighlight()) {
+    s.metallic = true;
+    if (filterOnly || isZero(kd))
+      issues.warning(m.loc, fmt::format("{}: metallic without a diffuse colour: POV-Ray tints "
+                                        "the highlights by its pigment, which here is not k_d",
+                                        name));
+    else if (isImage && !(isGrey(kd) && kd.x == 1.0))
+      issues.warning(m.loc, fmt::format("{}: metallic with an image and diffuse {}: POV-Ray "
+                                        "tints the highlights by the image alone",
+                                        name, colourText(m.diffuse)));
   }
   // n_s = 0 means (N·H)^0 = 1: an exponent of 1e-9 differs from it by less than float
   // resolution for any N·H above 1e-30.
@@ -199,7 +225,7 @@ PovMaterials::PovMaterials(const std::vector<Material>& materials, PovIssues& is
 
 bool PovMaterials::anySpecular(const std::vector<bool>& used) const {
   for (size_t i = 0; i < surfaces_.size() && i < used.size(); ++i)
-    if (used[i] && surfaces_[i].specular > 0.0) return true;
+    if (used[i] && (surfaces_[i].specular > 0.0 || surfaces_[i].phong > 0.0)) return true;
   return false;
 }
 
@@ -275,10 +301,12 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping,
   out.line("ambient " + povRgb(s.ambient));
   out.line("emission " + povRgb(s.emission));
   out.line("diffuse " + povFloat(s.diffuse));
-  out.line("brilliance 1");
-  out.line("phong 0");
+  out.line("brilliance " + povNumber(s.brilliance));
+  out.line("phong " + povFloat(s.phong));
+  if (s.phong > 0.0) out.line("phong_size " + povNumber(s.phongSize));
   out.line("specular " + povFloat(s.specular));
   out.line("roughness " + povNumber(s.roughness));
+  if (s.metallic) out.line("metallic");
   if (s.fresnel) {
     out.line("reflection { rgb <0, 0, 0>, " + povRgb(s.reflection) + " fresnel on }");
   } else {

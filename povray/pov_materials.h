@@ -3,7 +3,8 @@
 //   P·(ambient·ambient_light + emission)·a + Σ P·Lc·diffuse·a·(N·L) + Lc·specular·(N·Ĥ)^(1/roughness)
 // with opacity a = 1 − filter − transmit, reflection not scaled by P or a, and the light
 // behind it multiplied by F = P·filter + transmit. Lucent's is
-//   k_e + k_a·I_La + Σ I_L·[k_d (N·L) + k_s (N·H)^n_s] + k_r·I_r + k_t·I_t.
+//   k_e + k_a·I_La + Σ I_L·[k_d (N·L)^b + k_s (N·H)^n_s + k_p (R·L)^size] + k_r·I_r + k_t·I_t
+// (brilliance b, phong and metallic mean the same in both).
 // So the pigment carries the diffuse colour, and every term multiplied by P·a in POV-Ray is
 // divided by it here.
 #pragma once
@@ -34,6 +35,10 @@ struct PovSurface {
   double diffuse = 0.0;
   double specular = 0.0;
   double roughness = 1.0 / 64.0;
+  double brilliance = 1.0;
+  double phong = 0.0;
+  double phongSize = 40.0;
+  bool metallic = false;  // the pigment then carries the whole diffuse colour
   Vec3 reflection{0.0};  // the maximum (fresnel) or constant reflection
   bool fresnel = false;
   bool conserveEnergy = false;

@@ -1,6 +1,7 @@
 #include "tracer.h"
 
 #include "adaptive_area.h"
+#include "finish.h"
 #include "optics.h"
 #include "sampling.h"
 #include "spawn.h"
@@ -117,7 +118,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
                     settings_.ambient;
     if (leaving) ambient *= m.transmissive;
     local += ambient;
-    if (!lights_.empty() && (anyPositive(kd) || anyPositive(m.specular))) {
+    if (!lights_.empty() && (anyPositive(kd) || m.hasHighlight())) {
       local += directLight(s, n, v, kd, m, media, seed, stats);
       ++seed.event;
     }
@@ -190,19 +191,12 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
                           const Material& m, const MediaStack& media, PathSeed& seed,
                           RayStats& stats) const {
   Color sum(0.0f);
-  const bool specular = anyPositive(m.specular);
   for (size_t i = 0; i < lights_.size(); ++i) {
     const Light& light = lights_[i];
     const LightIncidence in = lightIncidence(light, s.p);
     if (!anyPositive(in.radiance)) continue;
-    const double nDotL = glm::dot(n, in.toLight);
-    if (nDotL <= 0.0) continue;  // light behind the surface: no diffuse, no highlight
-    Color brdf = kd * static_cast<float>(nDotL);
-    if (specular) {
-      const double nDotH = glm::dot(n, glm::normalize(in.toLight + v));
-      if (nDotH > 0.0)
-        brdf += m.specular * static_cast<float>(std::pow(nDotH, m.shininess));
-    }
+    if (glm::dot(n, in.toLight) <= 0.0) continue;  // light behind: no diffuse, no highlight
+    const Color brdf = surfaceResponse(m, kd, n, v, in.toLight);
     if (!anyPositive(brdf)) continue;
     Color shadow(1.0f);
     if (light.shadows) {

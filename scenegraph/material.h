@@ -39,6 +39,10 @@ struct Material {
   Color diffuse{0.0f};       // k_d (1 when a texture is present and diffuse is not given)
   Color specular{0.0f};      // k_s
   double shininess = 64.0;   // n_s
+  Color phong{0.0f};         // k_p: POV-Ray's Phong highlight k_p·(R·L)^phongSize
+  double phongSize = 40.0;
+  double brilliance = 1.0;   // the diffuse term is k_d·(N·L)^brilliance
+  bool metallic = false;     // highlights take the surface colour (POV-Ray's metallic)
   Color reflective{0.0f};    // k_r
   Color transmissive{0.0f};  // k_t
   double ior = 1.0;          // eta
@@ -51,6 +55,9 @@ struct Material {
   bool isTransmissive() const { return maxComponent(transmissive) > 0.0f; }
   bool isReflective() const { return maxComponent(reflective) > 0.0f; }
   bool isAbsorbing() const { return maxComponent(absorption) > 0.0f; }
+  bool hasHighlight() const {
+    return maxComponent(specular) > 0.0f || maxComponent(phong) > 0.0f;
+  }
 
   // What a shape with no material at all gets: diffuse 0.8 and nothing else.
   static Material defaultMaterial() {

@@ -236,6 +236,10 @@ TEST_CASE("lang: materials: every attribute, textures and the texture defaults",
   CHECK(all.ior == 1.33);
   CHECK(all.fresnel);
   CHECK(all.absorption == Color(0.2f, 1.8f, 1.4f));
+  CHECK(all.phong == Color(0.5f, 0.4f, 0.3f));
+  CHECK(all.phongSize == 12.5);
+  CHECK(all.brilliance == 2.5);
+  CHECK(all.metallic);
   CHECK_FALSE(all.hasTexture());
 
   const Material& checker = s->materials[materialIndex(*s, "checker")];
@@ -262,6 +266,12 @@ TEST_CASE("lang: materials: every attribute, textures and the texture defaults",
   CHECK(empty.diffuse == Color(0.0f));
   CHECK(empty.shininess == 64.0);
   CHECK(empty.ior == 1.0);
+  // The finish defaults: no Phong highlight, size 40, brilliance 1, not metallic.
+  CHECK(empty.phong == Color(0.0f));
+  CHECK(empty.phongSize == 40.0);
+  CHECK(empty.brilliance == 1.0);
+  CHECK_FALSE(empty.metallic);
+  CHECK_FALSE(empty.hasHighlight());
 }
 
 TEST_CASE("lang: shapes: every attribute, with normals normalised on load", "[lang][valid]") {

@@ -150,3 +150,32 @@ TEST_CASE("approximations are warnings naming the material", "[povray][materials
                           "reflection POV-Ray reflects with weight 1, Lucent with transmissive "
                           "0.8\n");
 }
+
+TEST_CASE("phong, phong-size, brilliance and metallic are POV-Ray's finish keywords",
+          "[povray][materials][finish]") {
+  Exported e = exportMaterial(R"XML(diffuse="0.6" phong="0.7" phong-size="15" brilliance="3")XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.pov.issues.empty());
+  CHECK(e.has("    diffuse 0.6\n    brilliance 3\n    phong 0.7\n    phong_size 15\n"));
+  CHECK_FALSE(e.has("metallic"));
+
+  // metallic tints by the pigment: a grey diffuse moves into the pigment (diffuse 1) so
+  // that the pigment is Lucent's k_d.
+  Exported metal = exportMaterial(R"XML(diffuse="0.6" specular="0.5" metallic="true")XML");
+  REQUIRE(metal.pov.ok());
+  CHECK(metal.has("  pigment { rgbft <0.6, 0.6, 0.6, 0, 0> }\n"));
+  CHECK(metal.has("    diffuse 1\n"));
+  CHECK(metal.has("    metallic\n"));
+
+  // Without a highlight, metallic changes nothing and is not written.
+  Exported plain = exportMaterial(R"XML(diffuse="0.6" metallic="true")XML");
+  REQUIRE(plain.pov.ok());
+  CHECK_FALSE(plain.has("metallic"));
+}
+
+TEST_CASE("a coloured phong is written as its mean with a warning", "[povray][materials][finish]") {
+  Exported e = exportMaterial(R"XML(diffuse="0.5" phong="0.9 0.6 0.3")XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.has("    phong 0.6\n"));
+  REQUIRE(e.pov.issues.size() == 1);
+}
