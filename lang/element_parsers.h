@@ -18,7 +18,9 @@ void parseLight(ElementReader& r);
 
 // material_parser.cpp. A top-level <material id> is registered under its id; an inline one
 // (a child of a geometry node) is added without a name. Both return its index.
-std::optional<uint32_t> parseNamedMaterial(ElementReader& r);
+// The named-materials phase: every top-level <material>, each after the material its
+// base= names (forward references allowed; a cycle is an error).
+void parseNamedMaterials(ParseContext& ctx, const std::vector<TopLevelItem>& items);
 std::optional<uint32_t> parseInlineMaterial(ElementReader& r);
 // The index of the material named by a material="id" attribute, with did-you-mean.
 std::optional<uint32_t> lookupMaterial(ElementReader& r, const char* attr);

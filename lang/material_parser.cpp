@@ -1,10 +1,13 @@
 // <material> (contract, "<material>"): all attributes optional, colours default to 0,
 // shininess 64, ior 1. One texture child at most: <checker color1 color2 scale> or
 // <image src scale>; with a texture, diffuse defaults to 1 so the texture shows as it is.
+// base="id" starts from another material and overrides what is written; default="true"
+// makes a named material the one of shapes that have none.
 #include "element_parsers.h"
 #include "povray_names.h"
 
 #include <algorithm>
+#include <functional>
 
 namespace lucent {
 
@@ -13,7 +16,7 @@ namespace {
 const std::vector<std::string_view> kMaterialAttributes{
     "id",       "emissive",   "ambient",      "diffuse", "specular", "shininess",
     "reflective", "transmissive", "ior",      "fresnel", "absorption", "phong",
-    "phong-size", "brilliance", "metallic"};
+    "phong-size", "brilliance", "metallic", "base", "default"};
 const std::vector<std::string_view> kTextureElements{"checker", "image"};
 
 Texture parseChecker(ElementReader& t) {
@@ -59,9 +62,21 @@ Texture parseImage(ElementReader& t) {
   return img;
 }
 
-std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel) {
+// Finds the material a base= names (reading it first when it comes later in the file).
+using BaseResolver = std::function<std::optional<uint32_t>(ElementReader&)>;
+
+std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const BaseResolver& baseOf) {
   r.checkAttributes(kMaterialAttributes);
+  ParseContext& ctx = r.ctx();
   Material m;
+  bool wroteDiffuse = false;
+  if (r.has("base")) {
+    if (std::optional<uint32_t> base = baseOf(r)) {
+      m = ctx.scene.materials[*base];
+      wroteDiffuse = ctx.materialsWithDiffuse.count(*base) > 0;
+    }
+  }
+  m.id.clear();
   m.loc = r.loc();
   if (topLevel) {
     if (!r.has("id")) r.error("a top-level <material> needs an 'id' so that shapes can name it");
@@ -72,10 +87,14 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel) {
   } else if (r.has("id")) {
     r.attrError("id", "an inline <material> has no id; declare it at the top level of <scene> to share it");
   }
+  const bool isDefault = r.boolean("default", false);
+  if (!topLevel && r.has("default"))
+    r.attrError("default", "only a top-level <material> with an id can be the default material");
 
   m.emissive = r.color("emissive", m.emissive);
   m.ambient = r.color("ambient", m.ambient, &m.ambientIsScalar);
   m.diffuse = r.color("diffuse", m.diffuse);
+  wroteDiffuse = wroteDiffuse || r.has("diffuse");
   m.specular = r.color("specular", m.specular);
   m.shininess = r.number("shininess", m.shininess, NumberRule::nonNegative());
   m.reflective = r.color("reflective", m.reflective);
@@ -88,9 +107,10 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel) {
   m.brilliance = r.number("brilliance", m.brilliance, NumberRule::nonNegative());
   m.metallic = r.boolean("metallic", m.metallic);
 
-  SourceLoc textureLoc;
+  // A texture of its own replaces the base's.
+  std::optional<SourceLoc> textureLoc;
   r.forEachChild([&](pugi::xml_node n) {
-    ElementReader t(r.ctx(), r.file(), n);
+    ElementReader t(ctx, r.file(), n);
     std::string_view name = n.name();
     if (name != "checker" && name != "image") {
       std::string pov = povrayElementHint("material", name);
@@ -98,33 +118,101 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel) {
               std::string(name) + ">" + (pov.empty() ? didYouMean(name, kTextureElements) : pov));
       return;
     }
-    if (m.hasTexture()) {
-      t.error("<material> holds one texture at most; the first is at " + textureLoc.str());
+    if (textureLoc) {
+      t.error("<material> holds one texture at most; the first is at " + textureLoc->str());
       return;
     }
     textureLoc = t.loc();
     m.texture = name == "checker" ? parseChecker(t) : parseImage(t);
   });
   // The contract: with a texture and no diffuse, the texture shows as it is.
-  if (m.hasTexture() && !r.has("diffuse")) m.diffuse = Color(1.0f);
+  if (m.hasTexture() && !wroteDiffuse) m.diffuse = Color(1.0f);
 
   if (topLevel && !m.id.empty()) {
-    auto [it, inserted] = r.ctx().materialIds.try_emplace(m.id, 0);
+    auto [it, inserted] = ctx.materialIds.try_emplace(m.id, 0);
     if (!inserted) {
       r.error("material '" + m.id + "' is already defined (first defined at " +
-              r.ctx().scene.materials[it->second].loc.str() + ")");
+              ctx.scene.materials[it->second].loc.str() + ")");
       return std::nullopt;
     }
-    it->second = static_cast<uint32_t>(r.ctx().scene.materials.size());
+    it->second = static_cast<uint32_t>(ctx.scene.materials.size());
   }
-  r.ctx().scene.materials.push_back(std::move(m));
-  return static_cast<uint32_t>(r.ctx().scene.materials.size() - 1);
+  if (isDefault && topLevel) {
+    if (ctx.defaultMaterialLoc) {
+      r.attrError("default", "there is already a default material (at " +
+                                 ctx.defaultMaterialLoc->str() + "); at most one may be");
+    } else {
+      ctx.defaultMaterialLoc = m.loc;
+      // Index 0 is what a shape without any material gets.
+      ctx.scene.materials[0] = m;
+    }
+  }
+  const auto index = static_cast<uint32_t>(ctx.scene.materials.size());
+  if (wroteDiffuse) ctx.materialsWithDiffuse.insert(index);
+  ctx.scene.materials.push_back(std::move(m));
+  return index;
 }
 
 }  // namespace
 
-std::optional<uint32_t> parseNamedMaterial(ElementReader& r) { return parseMaterial(r, true); }
-std::optional<uint32_t> parseInlineMaterial(ElementReader& r) { return parseMaterial(r, false); }
+std::optional<uint32_t> parseInlineMaterial(ElementReader& r) {
+  // Every named material is read by now.
+  return parseMaterial(r, false, [](ElementReader& e) { return lookupMaterial(e, "base"); });
+}
+
+void parseNamedMaterials(ParseContext& ctx, const std::vector<TopLevelItem>& items) {
+  // The <material>s, and the first one of each id as written (for forward bases).
+  std::vector<const TopLevelItem*> materials;
+  std::unordered_map<std::string, size_t> byId;
+  for (const TopLevelItem& item : items) {
+    if (std::string_view(item.element.name()) != "material") continue;
+    byId.try_emplace(item.element.attribute("id").value(), materials.size());
+    materials.push_back(&item);
+  }
+  enum class State { unread, reading, read };
+  std::vector<State> state(materials.size(), State::unread);
+  std::vector<std::optional<uint32_t>> index(materials.size());
+  std::vector<size_t> chain;  // the materials being read, outermost first
+
+  std::function<void(size_t)> read = [&](size_t i) {
+    state[i] = State::reading;
+    chain.push_back(i);
+    ElementReader r(ctx, *materials[i]->file, materials[i]->element);
+    index[i] = parseMaterial(r, true, [&](ElementReader& e) -> std::optional<uint32_t> {
+      auto id = e.text("base");
+      if (!id) return std::nullopt;
+      auto it = byId.find(*id);
+      if (it == byId.end()) {
+        std::vector<std::string_view> names;
+        for (const auto& [name, k] : byId) names.push_back(name);
+        std::sort(names.begin(), names.end());  // a stable hint whatever the hash order
+        e.attrError("base", "no material has the id '" + *id + "'" + didYouMean(*id, names));
+        return std::nullopt;
+      }
+      const size_t b = it->second;
+      if (state[b] == State::reading) {
+        std::string cycle;
+        for (size_t k = std::find(chain.begin(), chain.end(), b) - chain.begin(); k < chain.size(); ++k)
+          cycle += "'" + std::string(materials[chain[k]]->element.attribute("id").value()) + "' -> ";
+        e.attrError("base", "materials are based on each other in a cycle: " + cycle + "'" + *id + "'");
+        return std::nullopt;
+      }
+      if (state[b] == State::unread) {
+        if (chain.size() >= static_cast<size_t>(kMaxElementDepth)) {
+          e.attrError("base", "base= chains are longer than " + std::to_string(kMaxElementDepth) +
+                                  " materials");
+          return std::nullopt;
+        }
+        read(b);
+      }
+      return index[b];
+    });
+    chain.pop_back();
+    state[i] = State::read;
+  };
+  for (size_t i = 0; i < materials.size(); ++i)
+    if (state[i] == State::unread) read(i);
+}
 
 std::optional<uint32_t> lookupMaterial(ElementReader& r, const char* attr) {
   auto id = r.text(attr);

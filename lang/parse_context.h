@@ -14,6 +14,7 @@
 #include <pugixml.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -50,6 +51,11 @@ struct ParseContext {
 
   // Named materials: id -> index into scene.materials.
   std::unordered_map<std::string, uint32_t> materialIds;
+  // The indices of the materials whose diffuse was written, by themselves or along their
+  // base= chain: a texture shows as it is only where no diffuse was written.
+  std::unordered_set<uint32_t> materialsWithDiffuse;
+  // Where the <material default="true"> is, once one was read (at most one).
+  std::optional<SourceLoc> defaultMaterialLoc;
 
   // The scope of the element being read: local <param>s and <repeat> variables (null at
   // the top level).

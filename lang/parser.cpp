@@ -114,11 +114,7 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
     if (loader.load(std::move(top))) {
       for (const SourceFile* f : loader.sceneFiles()) checkSceneRoot(ctx, *f);
       readAnimation(ctx, loader.items(), options.frame);
-      for (const TopLevelItem& item : loader.items())
-        if (std::string_view(item.element.name()) == "material") {
-          ElementReader r(ctx, *item.file, item.element);
-          parseNamedMaterial(r);
-        }
+      parseNamedMaterials(ctx, loader.items());
       for (const TopLevelItem& item : loader.items()) readTopLevel(ctx, item);
       resolveReferences(ctx);
       if (scene->cameras.empty()) {

@@ -388,6 +388,54 @@ TEST_CASE("lang: defs and use: targets, forward references, chains, world placem
   CHECK(&inst[1]->shape() == &inst[5]->shape());  // one shape for every use of a node
 }
 
+TEST_CASE("lang: base= chains copy and override, default= replaces the default material",
+          "[lang][valid]") {
+  auto s = load("material_bases.xml");
+  auto get = [&](const char* id) -> const Material& { return s->materials[materialIndex(*s, id)]; };
+  const Material& red = get("red");
+  // A forward reference: shiny-red comes before red in the file.
+  const Material& shiny = get("shiny-red");
+  CHECK(shiny.diffuse == Color(0.8f, 0.1f, 0.1f));
+  CHECK(shiny.ambient == red.ambient);
+  CHECK(shiny.phong == Color(0.3f));
+  CHECK(shiny.specular == Color(0.5f));
+  CHECK(shiny.shininess == 20.0);
+  CHECK(shiny.id == "shiny-red");
+  // Two steps: dull-red is shiny-red with specular 0, shininess still 20.
+  const Material& dull = get("dull-red");
+  CHECK(dull.specular == Color(0.0f));
+  CHECK(dull.shininess == 20.0);
+  CHECK(dull.diffuse == red.diffuse);
+  // A texture added to a base whose diffuse was written keeps that diffuse ...
+  const Material& checked = get("checked");
+  REQUIRE(std::holds_alternative<CheckerTexture>(checked.texture));
+  CHECK(std::get<CheckerTexture>(checked.texture).scale == 2.0);
+  CHECK(checked.diffuse == red.diffuse);
+  CHECK_FALSE(red.hasTexture());  // the base is unchanged
+  // ... and to one whose diffuse was never written shows as it is.
+  CHECK(get("tiled").diffuse == Color(1.0f));
+  CHECK(get("tiled-dim").diffuse == Color(0.5f));
+  CHECK(std::holds_alternative<CheckerTexture>(get("tiled-dim").texture));
+  // A texture of its own replaces the base's; the diffuse written along the chain stays.
+  const Material& other = get("tiled-other");
+  CHECK(std::get<CheckerTexture>(other.texture).color1 == Color(0, 1, 0));
+  CHECK(other.diffuse == Color(0.5f));
+  // The default material: what shapes without a material get.
+  const Material& def = s->materials[0];
+  CHECK(def.diffuse == Color(0.3f));
+  CHECK(def.phong == Color(0.3f));
+  CHECK(def.ambient == red.ambient);
+  const Node& root = *s->root;
+  REQUIRE(root.children.size() == 3);
+  CHECK_FALSE(child(root, 0).material.has_value());  // takes index 0, the default
+  CHECK(child(root, 1).material == materialIndex(*s, "dull-red"));
+  // An inline material with a base.
+  const Material& inl = s->materials[*child(root, 2).material];
+  CHECK(inl.ior == 1.5);
+  CHECK(inl.diffuse == red.diffuse);
+  CHECK(inl.id.empty());
+}
+
 TEST_CASE("lang: materials are inherited from the nearest group, CSG node or use", "[lang][valid]") {
   auto s = load("inheritance.xml");
   uint32_t brass = materialIndex(*s, "brass"), glass = materialIndex(*s, "glass"),
