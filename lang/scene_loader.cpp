@@ -2,6 +2,7 @@
 
 #include "did_you_mean.h"
 #include "element_reader.h"
+#include "library.h"
 
 
 namespace fs = std::filesystem;
@@ -96,15 +97,35 @@ void SceneLoader::include(const SourceFile& from, pugi::xml_node element) {
   }
   auto src = r.text("src");
   if (!src) return;
-  FileAccess::Resolved f = ctx_.files.resolve(*src, from.folder());
-  if (f.path.empty()) {
-    r.attrError("src", f.error);
-    return;
+  const bool fromLibrary = src->rfind(kLibraryPrefix, 0) == 0;
+  FileAccess::Resolved f;
+  std::string display;
+  std::optional<std::string_view> libraryText;
+  if (fromLibrary) {
+    // The shipped library: compiled in, so no file access is involved.
+    const std::string name = src->substr(kLibraryPrefix.size());
+    libraryText = libraryFile(name);
+    if (!libraryText) {
+      std::vector<std::string_view> names = libraryFileNames();
+      std::string list;
+      for (std::string_view n : names) list += (list.empty() ? "" : ", ") + std::string(n);
+      r.attrError("src", "the library has no file '" + name + "'" + didYouMean(name, names) +
+                             " (it has " + list + ")");
+      return;
+    }
+    f.path = *src;  // the key for include cycles and repeats
+    display = *src;
+  } else {
+    f = ctx_.files.resolve(*src, from.folder());
+    if (f.path.empty()) {
+      r.attrError("src", f.error);
+      return;
+    }
+    fs::path written(*src);
+    display = written.is_absolute()
+                  ? written.lexically_normal().string()
+                  : (fs::path(from.display()).parent_path() / written).lexically_normal().string();
   }
-  fs::path written(*src);
-  std::string display = written.is_absolute()
-                            ? written.lexically_normal().string()
-                            : (fs::path(from.display()).parent_path() / written).lexically_normal().string();
   for (size_t i = 0; i < stack_.size(); ++i) {
     if (stack_[i].canonical != f.path) continue;
     std::string chain;
@@ -119,11 +140,15 @@ void SceneLoader::include(const SourceFile& from, pugi::xml_node element) {
   if (!seen_.insert(f.path).second) return;  // included already: insert once
 
   std::string text;
-  if (auto problem = readSceneText(f.path, text)) {
+  if (libraryText) {
+    text = *libraryText;
+  } else if (auto problem = readSceneText(f.path, text)) {
     r.attrError("src", "cannot read '" + *src + "': " + *problem);
     return;
   }
-  files_.push_back(std::make_unique<SourceFile>(display, f.path.parent_path(), std::move(text)));
+  // A library file names no other files (but lucent: ones), so its folder is never used.
+  files_.push_back(std::make_unique<SourceFile>(display, fromLibrary ? fs::path(".") : f.path.parent_path(),
+                                                std::move(text)));
   SourceFile& file = *files_.back();
   if (!parseFile(file, true)) return;
   stack_.push_back({f.path, display});

@@ -214,18 +214,23 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
 }
 
 PovMaterials::PovMaterials(const std::vector<Material>& materials, PovIssues& issues)
-    : materials_(materials) {
+    : materials_(materials), issues_(issues), surfaces_(materials.size()) {
   for (size_t i = 0; i < materials.size(); ++i) {
-    surfaces_.push_back(povSurface(materials[i], issues));
     const Material& m = materials[i];
     std::string id = m.id == "(default)" ? "default" : m.id;
     names_.push_back(povIdentifier(fmt::format("M{}", i), id));
   }
 }
 
+const PovSurface& PovMaterials::surface(uint32_t material) const {
+  std::optional<PovSurface>& s = surfaces_[material];
+  if (!s) s = povSurface(materials_[material], issues_);
+  return *s;
+}
+
 bool PovMaterials::anySpecular(const std::vector<bool>& used) const {
-  for (size_t i = 0; i < surfaces_.size() && i < used.size(); ++i)
-    if (used[i] && (surfaces_[i].specular > 0.0 || surfaces_[i].phong > 0.0)) return true;
+  for (uint32_t i = 0; i < surfaces_.size() && i < used.size(); ++i)
+    if (used[i] && (surface(i).specular > 0.0 || surface(i).phong > 0.0)) return true;
   return false;
 }
 
@@ -239,9 +244,9 @@ void PovMaterials::writeDeclarations(const std::vector<bool>& used, PovWriter& o
       writeTexture(static_cast<uint32_t>(i), nullptr, nullptr, nullptr, out, nullptr);
       out.close();
     }
-    if (surfaces_[i].interior) {
+    if (surface(static_cast<uint32_t>(i)).interior) {
       out.open("#declare I" + names_[i] + " = interior");
-      writeInterior(surfaces_[i], out);
+      writeInterior(surface(static_cast<uint32_t>(i)), out);
       out.close();
     }
   }
@@ -249,7 +254,7 @@ void PovMaterials::writeDeclarations(const std::vector<bool>& used, PovWriter& o
 
 bool PovMaterials::usesImageMap(uint32_t index) const {
   return std::holds_alternative<ImageTexture>(materials_[index].texture) &&
-         surfaces_[index].useTexture;
+         surface(index).useTexture;
 }
 
 void PovMaterials::writeFor(uint32_t index, const ShapeSpec& shape, const SourceLoc& loc,
@@ -258,7 +263,7 @@ void PovMaterials::writeFor(uint32_t index, const ShapeSpec& shape, const Source
 }
 
 void PovMaterials::writeInteriorFor(uint32_t index, PovWriter& out) const {
-  if (surfaces_[index].interior) out.line("interior { I" + names_[index] + " }");
+  if (surface(index).interior) out.line("interior { I" + names_[index] + " }");
 }
 
 void PovMaterials::writeFor(uint32_t index, const ImageMapping& mapping, const char* shapeName,
@@ -278,7 +283,7 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping,
                                 const char* shapeName, const SourceLoc* loc, PovWriter& out,
                                 PovIssues* issues) const {
   const Material& m = materials_[index];
-  const PovSurface& s = surfaces_[index];
+  const PovSurface& s = surface(index);
   const auto* checker = std::get_if<CheckerTexture>(&m.texture);
   const auto* image = std::get_if<ImageTexture>(&m.texture);
 

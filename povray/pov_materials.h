@@ -15,6 +15,7 @@
 #include "scenegraph/material.h"
 #include "scenegraph/shape_spec.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,7 +58,8 @@ PovSurface povSurface(const Material& m, PovIssues& issues);
 
 // Writes `#declare` of a texture (and an interior where needed) for every material whose
 // flag in `used` is set, except image textures, which depend on the shape and are written
-// inline by writeTexture().
+// inline by writeTexture(). A material is converted when first used, so an unused one (a
+// whole included library, say) gives no error or warning.
 class PovMaterials {
  public:
   PovMaterials(const std::vector<Material>& materials, PovIssues& issues);
@@ -78,7 +80,7 @@ class PovMaterials {
   bool usesImageMap(uint32_t material) const;
 
   const std::string& textureName(uint32_t material) const { return names_[material]; }
-  const PovSurface& surface(uint32_t material) const { return surfaces_[material]; }
+  const PovSurface& surface(uint32_t material) const;
   // Has any material flagged in `used` a highlight?
   bool anySpecular(const std::vector<bool>& used) const;
 
@@ -89,7 +91,8 @@ class PovMaterials {
   void writeInterior(const PovSurface& s, PovWriter& out) const;
 
   const std::vector<Material>& materials_;
-  std::vector<PovSurface> surfaces_;
+  PovIssues& issues_;
+  mutable std::vector<std::optional<PovSurface>> surfaces_;  // converted on first use
   std::vector<std::string> names_;  // the texture identifier; interior: "I" + name
 };
 
