@@ -1,0 +1,84 @@
+// The cost of one evaluation of each procedural pattern (render/patterns/): patternValue,
+// perturbNormal and the colour lookups, timed over a fixed set of points on one thread.
+// The figures go to docs/patterns-noise.md; nothing asserts on them.
+#include "render/patterns/block_pattern.h"
+#include "render/patterns/color_map.h"
+#include "render/patterns/noise.h"
+#include "render/patterns/normal_perturbation.h"
+#include "render/patterns/pattern_value.h"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <vector>
+
+using namespace lucent;
+
+namespace {
+
+const char* kNames[kPatternTypeCount] = {
+    "gradient", "onion", "radial", "spiral1", "spiral2", "wood", "marble", "agate", "granite",
+    "bozo", "spotted", "leopard", "crackle", "wrinkles", "bumps", "dents", "ripples", "waves"};
+
+std::vector<Vec3> points(int n) {
+  std::vector<Vec3> p;
+  uint32_t s = 12345;
+  auto next = [&] {
+    s = s * 1664525u + 1013904223u;
+    return (s >> 8) / 16777216.0 * 16.0 - 8.0;
+  };
+  for (int i = 0; i < n; ++i) p.emplace_back(next(), next(), next());
+  return p;
+}
+
+// Nanoseconds per call of f over the points, the best of five passes.
+template <class F>
+double nanoseconds(const std::vector<Vec3>& pts, F&& f) {
+  double best = 1e30;
+  volatile double sink = 0.0;
+  for (int pass = 0; pass < 5; ++pass) {
+    const auto t0 = std::chrono::steady_clock::now();
+    double acc = 0.0;
+    for (const Vec3& p : pts) acc += f(p);
+    const auto t1 = std::chrono::steady_clock::now();
+    sink = sink + acc;
+    best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count() / pts.size());
+  }
+  return best;
+}
+
+}  // namespace
+
+int main() {
+  const std::vector<Vec3> pts = points(200000);
+  fmt::print("| pattern | value, ns | value with turbulence 0.5, ns | normal (depth 0.5), ns |\n");
+  fmt::print("|---|---:|---:|---:|\n");
+  for (int t = 0; t < kPatternTypeCount; ++t) {
+    PatternSpec s;
+    s.type = static_cast<PatternType>(t);
+    PatternSpec turbulent = s;
+    turbulent.placement.turbulence = Vec3(0.5);
+    NormalSpec n;
+    n.pattern = s;
+    const double plain = nanoseconds(pts, [&](const Vec3& p) { return patternValue(s, p); });
+    const double turb = nanoseconds(pts, [&](const Vec3& p) { return patternValue(turbulent, p); });
+    const double normal = nanoseconds(
+        pts, [&](const Vec3& p) { return perturbNormal(n, p, Vec3(0, 0, -1)).x; });
+    fmt::print("| {} | {:.0f} | {:.0f} | {:.0f} |\n", kNames[t], plain, turb, normal);
+  }
+  const ColorMap map{{{0.2, Color(1, 0, 0)}, {0.5, Color(0, 1, 0)}, {0.9, Color(0, 0, 1)}}};
+  const HexagonSpec hex;
+  const BrickSpec brick;
+  fmt::print("\n| other | ns |\n|---|---:|\n");
+  for (int g = 1; g <= 3; ++g)
+    fmt::print("| noise, generator {} | {:.1f} |\n", g,
+               nanoseconds(pts, [&](const Vec3& p) { return noise(p, g); }));
+  fmt::print("| dnoise | {:.1f} |\n", nanoseconds(pts, [&](const Vec3& p) { return dnoise(p).x; }));
+  fmt::print("| colour map lookup (3 entries) | {:.1f} |\n",
+             nanoseconds(pts, [&](const Vec3& p) { return lookupColorMap(map, p.x * 0.1).r; }));
+  fmt::print("| hexagon | {:.1f} |\n",
+             nanoseconds(pts, [&](const Vec3& p) { return hexagonColor(hex, p).r; }));
+  fmt::print("| brick | {:.1f} |\n",
+             nanoseconds(pts, [&](const Vec3& p) { return brickColor(brick, p).r; }));
+  return 0;
+}

@@ -1,0 +1,15 @@
+// POV-Ray 3.7's crackle (pattern.cpp, crackle_pattern): one random point in every unit
+// cube; the value combines the distances to the nearest three.
+#pragma once
+
+#include "scenegraph/pattern.h"
+
+namespace lucent {
+
+// form.x·d1 + form.y·d2 + form.z·d3 clamped to [0, 1], d1 ≤ d2 ≤ d3 the distances (in
+// `metric`, with `offset` added) from p to the points of the 81 cubes within a 3-D
+// knight's move of p's cube; with `solid`, the noise at the nearest point instead.
+// Allocates nothing; the random table is built once, on first use.
+double crackleValue(const Vec3& p, const CrackleParams& crackle, int generator);
+
+}  // namespace lucent

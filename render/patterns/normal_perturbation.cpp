@@ -1,0 +1,107 @@
+#include "normal_perturbation.h"
+
+#include "noise.h"
+#include "pattern_point.h"
+#include "pattern_value.h"
+#include "wave_sources.h"
+
+#include <cmath>
+
+namespace lucent {
+
+namespace {
+
+// POV-Ray's sampling directions (normal.cpp, Pyramid_Vect): a regular tetrahedron.
+constexpr double kPyramid[4][3] = {{0.942809041, -0.333333333, 0.0},
+                                   {-0.471404521, -0.333333333, 0.816496581},
+                                   {-0.471404521, -0.333333333, -0.816496581},
+                                   {0.0, 1.0, 0.0}};
+
+// POV-Ray's VNormalize: a multiplication by the reciprocal length.
+Vec3 normalised(const Vec3& v) {
+  const double inv = 1.0 / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+  return Vec3(v.x * inv, v.y * inv, v.z * inv);
+}
+
+// r_i = Σ_j n_j·m[i][j] (POV-Ray's normal transforms; POV-Ray's row-vector matrices have
+// glm's memory layout): with m = patternFromObject this is its transpose times n.
+Vec3 transposedTimes(const Mat3& m, const Vec3& n) {
+  Vec3 r;
+  for (int i = 0; i < 3; ++i) r[i] = n.x * m[i][0] + n.y * m[i][1] + n.z * m[i][2];
+  return r;
+}
+
+Vec3 addScaled(const Vec3& n, double k, const Vec3& v) {
+  return Vec3(n.x + k * v.x, n.y + k * v.y, n.z + k * v.z);
+}
+
+Vec3 wrinkles(const Vec3& n, const Vec3& p, double amount) {
+  Vec3 sum(0.0);
+  double scale = 1.0;
+  for (int i = 0; i < 10; scale *= 2.0, ++i) {
+    const Vec3 d = dnoise(Vec3(p.x * scale, p.y * scale, p.z * scale));
+    sum.x += std::fabs(d.x / scale);
+    sum.y += std::fabs(d.y / scale);
+    sum.z += std::fabs(d.z / scale);
+  }
+  return addScaled(n, amount, sum);
+}
+
+Vec3 slope(const PatternSpec& spec, const Vec3& n, const Vec3& p, double amount) {
+  const double delta = static_cast<float>(kNormalAccuracy);
+  const double k = amount * -5.0 * (0.02 / delta);  // POV-Ray's "fudge factor"
+  Vec3 r = n;
+  for (const auto& d : kPyramid) {
+    const Vec3 q(p.x + delta * d[0], p.y + delta * d[1], p.z + delta * d[2]);
+    const double value = patternValueAt(spec, q);
+    r = addScaled(r, value * k, Vec3(d[0], d[1], d[2]));
+  }
+  return r;
+}
+
+}  // namespace
+
+Vec3 perturbNormal(const NormalSpec& normal, const Vec3& objPoint, const Vec3& objNormal) {
+  const PatternSpec& spec = normal.pattern;
+  const Mat4& m = spec.placement.patternFromObject;
+  const bool identity = m == Mat4(1.0);
+  const Mat3 toPattern = identity ? Mat3(1.0) : glm::inverse(Mat3(m));
+  const double amount = static_cast<float>(normal.depth);
+
+  // Into pattern space with the transform's inverse transpose, normalised before and after
+  // as POV-Ray's Warp_Normal does (twice even without a transform).
+  Vec3 n = normalised(objNormal);
+  if (!identity) n = transposedTimes(toPattern, n);
+  n = normalised(n);
+
+  const Vec3 p = warpPoint(spec.placement, objPoint, turbulenceDisplaces(spec.type));
+  switch (spec.type) {
+    case PatternType::bumps:
+      n = addScaled(n, amount, dnoise(p));
+      break;
+    case PatternType::dents: {
+      const double v = noise(p, spec.noiseGenerator);
+      n = addScaled(n, v * v * v * amount, dnoise(p));
+      break;
+    }
+    case PatternType::wrinkles:
+      n = wrinkles(n, p, amount);
+      break;
+    case PatternType::ripples:
+      n = ripplesNormal(n, p, spec.frequency, spec.phase, amount);
+      break;
+    case PatternType::waves:
+      n = wavesNormal(n, p, spec.frequency, spec.phase, amount);
+      break;
+    default:
+      n = slope(spec, n, p, amount);
+      break;
+  }
+
+  // Back to object space (POV-Ray's UnWarp_Normal), unit length.
+  n = normalised(n);
+  if (!identity) n = transposedTimes(Mat3(m), n);
+  return normalised(n);
+}
+
+}  // namespace lucent

@@ -1,0 +1,174 @@
+#include "pattern_value.h"
+
+#include "crackle.h"
+#include "noise.h"
+#include "pattern_point.h"
+#include "turbulence.h"
+#include "wave.h"
+#include "wave_sources.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lucent {
+
+namespace {
+
+constexpr double kPi = 3.1415926535897932384626;
+constexpr double kHalfPi = 1.57079632679489661923;
+constexpr double kTwoPi = 6.283185307179586476925286766560;
+
+bool hasTurbulence(const PatternPlacement& t) {
+  return t.turbulence.x != 0.0 || t.turbulence.y != 0.0 || t.turbulence.z != 0.0;
+}
+
+// The turbulence marble and the spirals add to their value: turbulence.x times the scalar
+// turbulence (0 without turbulence).
+double scalarTurbulence(const Vec3& p, const PatternSpec& spec) {
+  if (!hasTurbulence(spec.placement)) return 0.0;
+  return spec.placement.turbulence.x * turbulence(p, spec.placement, spec.noiseGenerator);
+}
+
+double gradient(const Vec3& p, const Vec3& axis) {
+  // POV-Ray normalises the axis when it parses it (VNormalizeEq).
+  const double inv = 1.0 / std::sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
+  const Vec3 g(axis.x * inv, axis.y * inv, axis.z * inv);
+  const double r = p.x * g.x + p.y * g.y + p.z * g.z;
+  return r > 1.0 ? std::fmod(r, 1.0) : r;
+}
+
+double onion(const Vec3& p) { return std::fmod(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z), 1.0); }
+
+double radial(const Vec3& p) {
+  if (std::fabs(p.x) < 0.001 && std::fabs(p.z) < 0.001) return 0.25;
+  return 0.25 + (std::atan2(p.x, p.z) + kPi) / kTwoPi;
+}
+
+// Both spirals: the angle about z in [0, 2π) from asin, as POV-Ray computes it.
+double spiralAngle(double x, double y, double rad) {
+  if (rad == 0.0) return 0.0;
+  return x < 0.0 ? 3.0 * kHalfPi - std::asin(y / rad) : kHalfPi + std::asin(y / rad);
+}
+
+double spiral1(const Vec3& p, const PatternSpec& spec) {
+  const double turb = scalarTurbulence(p, spec);
+  const double rad = std::sqrt(p.x * p.x + p.y * p.y);
+  const double phi = spiralAngle(p.x, p.y, rad);
+  const double arms = static_cast<short>(spec.arms);  // POV-Ray keeps arms in a short
+  return p.z + rad + arms * phi / kTwoPi + turb;
+}
+
+double spiral2(const Vec3& p, const PatternSpec& spec) {
+  const double turb = scalarTurbulence(p, spec);
+  const double rad = std::sqrt(p.x * p.x + p.y * p.y);
+  const double phi = spiralAngle(p.x, p.y, rad);
+  const double arms = static_cast<short>(spec.arms);  // POV-Ray keeps arms in a short
+  const double arm = triangleWave(p.z + rad + arms * phi / kTwoPi + turb);
+  return triangleWave(rad) + arm;
+}
+
+double wood(const Vec3& p, const PatternPlacement& t) {
+  double px = 0.0, py = 0.0;
+  if (hasTurbulence(t)) {
+    const Vec3 w = dturbulence(p, t);
+    px = cycloidal((p.x + w.x) * t.turbulence.x);
+    py = cycloidal((p.y + w.y) * t.turbulence.y);
+  }
+  px += p.x;
+  py += p.y;
+  return std::sqrt(px * px + py * py + 0.0 * 0.0);
+}
+
+double marble(const Vec3& p, const PatternSpec& spec) { return p.x + scalarTurbulence(p, spec); }
+
+double agate(const Vec3& p, const PatternSpec& spec) {
+  // agate_turb is 1 (the exporter keeps it); POV-Ray always gives agate a turbulence
+  // record, so its octaves, omega and lambda apply even without turbulence.
+  const double turb = 1.0 * turbulence(p, spec.placement, spec.noiseGenerator);
+  double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
+  if (v < 0.0) return 0.0;
+  return std::pow(std::min(1.0, v), 0.77);
+}
+
+double granite(const Vec3& p, int generator) {
+  const Vec3 base(p.x * 4.0, p.y * 4.0, p.z * 4.0);
+  double sum = 0.0, freq = 1.0;
+  for (int i = 0; i < 6; freq *= 2.0, ++i) {
+    const double n = noise(Vec3(base.x * freq, base.y * freq, base.z * freq), generator);
+    double t;
+    if (generator == 1) {
+      t = std::fabs(0.5 - n);
+    } else {
+      t = std::fabs(1.0 - 2.0 * n);
+      if (t > 0.5) t = 0.5;
+    }
+    sum += t / freq;
+  }
+  return sum;
+}
+
+double leopard(const Vec3& p) {
+  const double v = (std::sin(p.x) + std::sin(p.y) + std::sin(p.z)) / 3.0;
+  return v * v;
+}
+
+double wrinkles(const Vec3& p, int generator) {
+  double lambda = 2.0, omega = 0.5, value;
+  if (generator > 1)
+    value = std::min(std::max(noise(p, generator) * 2.0 - 0.5, 0.0), 1.0);
+  else
+    value = noise(p, generator);
+  for (int i = 1; i < 10; ++i) {
+    const Vec3 q(p.x * lambda, p.y * lambda, p.z * lambda);
+    if (generator > 1)
+      value += omega * std::min(std::max(noise(q, generator) * 2.0 - 0.5, 0.0), 1.0);
+    else
+      value += omega * noise(q, generator);
+    lambda *= 2.0;
+    omega *= 0.5;
+  }
+  return value / 2.0;
+}
+
+double dents(const Vec3& p, int generator) {
+  const double n = noise(p, generator);
+  return n * n * n;
+}
+
+}  // namespace
+
+double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
+  const int gen = spec.noiseGenerator;
+  switch (spec.type) {
+    case PatternType::gradient: return gradient(p, spec.axis);
+    case PatternType::onion: return onion(p);
+    case PatternType::radial: return radial(p);
+    case PatternType::spiral1: return spiral1(p, spec);
+    case PatternType::spiral2: return spiral2(p, spec);
+    case PatternType::wood: return wood(p, spec.placement);
+    case PatternType::marble: return marble(p, spec);
+    case PatternType::agate: return agate(p, spec);
+    case PatternType::granite: return granite(p, gen);
+    case PatternType::bozo:
+    case PatternType::spotted:
+    case PatternType::bumps: return noise(p, gen);
+    case PatternType::leopard: return leopard(p);
+    case PatternType::crackle: return crackleValue(p, spec.crackle, gen);
+    case PatternType::wrinkles: return wrinkles(p, gen);
+    case PatternType::dents: return dents(p, gen);
+    case PatternType::ripples: return ripplesValue(p, spec.frequency, spec.phase);
+    case PatternType::waves: return wavesValue(p, spec.frequency, spec.phase);
+  }
+  return 0.0;
+}
+
+double patternValueAt(const PatternSpec& spec, const Vec3& patternPoint) {
+  return shapeValue(rawPatternValue(spec, patternPoint), spec);
+}
+
+double patternValue(const PatternSpec& spec, const Vec3& objectPoint) {
+  const Vec3 p = warpPoint(spec.placement, objectPoint, turbulenceDisplaces(spec.type));
+  return patternValueAt(spec, p);
+}
+
+}  // namespace lucent

@@ -1,0 +1,231 @@
+#!/usr/bin/env bash
+# Regenerates the POV-Ray 3.7 reference values of tests/patterns from POV-Ray itself.
+#
+# Values come from POV-Ray's functions, printed to 17 decimals: `function { pattern {...} }`
+# (the pattern with its transform, turbulence, frequency and wave: POV-Ray's f_pattern),
+# `function { pigment {...} }` (the colour, float) and f_noise_generator (the raw noise).
+# Points are k/4096 for integer k, so the CSV's integers give them exactly. Normals cannot
+# be read from a function: they are rendered (normals.csv, see there).
+#
+# Needs povray (3.7) and oiiotool. Usage: make_references.sh [output folder]
+set -euo pipefail
+
+out=${1:-$(cd "$(dirname "$0")" && pwd)}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+run_pov() {  # scene, then extra povray options
+  local scene=$1
+  shift
+  if ! povray -D -V -GS -GR "+I$scene" "$@" >"$work/log" 2>&1; then
+    cat "$work/log" >&2
+    exit 1
+  fi
+}
+
+header() {
+  cat <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+#include "functions.inc"
+// N points k/4096 with |k/4096| < R, from a seeded stream; Row(KX, KY, KZ, X, Y, Z)
+// writes one line.
+#macro Points(N, Seed, R)
+  #local S = seed(Seed);
+  #for (I, 1, N)
+    #local KX = floor((rand(S) * 2 - 1) * R * 4096);
+    #local KY = floor((rand(S) * 2 - 1) * R * 4096);
+    #local KZ = floor((rand(S) * 2 - 1) * R * 4096);
+    Row(KX, KY, KZ, KX / 4096, KY / 4096, KZ / 4096)
+  #end
+#end
+#macro Ints(KX, KY, KZ) concat(str(KX, 0, 0), ",", str(KY, 0, 0), ",", str(KZ, 0, 0)) #end
+POV
+}
+
+# --- noise.csv: x,y,z as k/4096, then noise for generators 1, 2, 3 -------------------------
+{
+  header
+  cat <<POV
+#fopen Out "$work/noise.csv" write
+#write (Out, "kx,ky,kz,n1,n2,n3\n")
+#macro Row(KX, KY, KZ, X, Y, Z)
+  #write (Out, Ints(KX, KY, KZ), ",", str(f_noise_generator(X, Y, Z, 1), 0, 17), ",",
+         str(f_noise_generator(X, Y, Z, 2), 0, 17), ",", str(f_noise_generator(X, Y, Z, 3), 0, 17), "\n")
+#end
+Points(300, 11, 8)
+Points(100, 12, 4096)
+#fclose Out
+POV
+} >"$work/noise.pov"
+run_pov "$work/noise.pov" +W8 +H8 "+O$work/discard.png"
+cp "$work/noise.csv" "$out/noise.csv"
+
+# --- patterns.csv and colors.csv: one case a line, NAME|HALF-RANGE|POV-Ray text ----------
+# tests/patterns/pattern_cases.h holds the same cases as Lucent specs.
+pattern_cases=(
+  "gradient|8|gradient <1, 2, -0.5>"
+  "onion|8|onion"
+  "radial|8|radial"
+  "spiral1|8|spiral1 3"
+  "spiral2|8|spiral2 5"
+  "wood|8|wood"
+  "marble|8|marble"
+  "agate|8|agate"
+  "granite|8|granite"
+  "bozo|8|bozo"
+  "spotted|8|spotted"
+  "leopard|8|leopard"
+  "crackle|8|crackle"
+  "wrinkles|8|wrinkles"
+  "bumps|8|bumps"
+  "dents|8|dents"
+  "ripples|8|ripples"
+  "waves|8|waves"
+  "bozo_generator1|8|bozo noise_generator 1"
+  "bozo_generator3|8|bozo noise_generator 3"
+  "bozo_far|4096|bozo"
+  "granite_generator1|8|granite noise_generator 1"
+  "granite_generator3|8|granite noise_generator 3"
+  "agate_generator1|8|agate noise_generator 1"
+  "wrinkles_generator1|8|wrinkles noise_generator 1"
+  "dents_generator3|8|dents noise_generator 3"
+  "spotted_generator1|8|spotted noise_generator 1"
+  "crackle_far|2048|crackle"
+  "crackle_metric1|8|crackle metric 1 form <1, 0, 0>"
+  "crackle_metric3|8|crackle metric 3 form <-0.5, 1.2, 0.3> offset 0.2"
+  "crackle_offset|8|crackle offset 0.5"
+  "crackle_solid|8|crackle solid"
+  "crackle_solid_generator1|8|crackle solid noise_generator 1"
+  "ripples_frequency|8|ripples frequency 2.5 phase 0.3"
+  "waves_frequency|8|waves frequency 0.7 phase -0.2"
+  "turbulence_scalar|8|bozo turbulence 0.5"
+  "turbulence_vector|8|bozo turbulence <0.2, 0.6, 1.1> octaves 3 omega 0.7 lambda 2.5"
+  "turbulence_generator3|8|bozo turbulence 0.7 noise_generator 3"
+  "turbulence_generator1|8|granite turbulence 0.3 noise_generator 1"
+  "turbulence_octaves_clamped|8|onion turbulence 0.2 octaves 12"
+  "dnoise_x|8|gradient x turbulence <1, 0, 0> octaves 1 frequency 0"
+  "dnoise_y|8|gradient y turbulence <0, 1, 0> octaves 1 frequency 0"
+  "dnoise_z|8|gradient z turbulence <0, 0, 1> octaves 1 frequency 0"
+  "marble_turbulence|8|marble turbulence 0.8"
+  "marble_octaves|8|marble turbulence <1.5, 0, 0> octaves 9 omega 0.35 lambda 3.1"
+  "wood_turbulence|8|wood turbulence <0.3, 0.2, 0.1>"
+  "spiral1_turbulence|8|spiral1 2 turbulence 0.4"
+  "spiral2_turbulence|8|spiral2 4 turbulence <0.1, 0.3, 0.2> octaves 4"
+  "agate_octaves|8|agate octaves 3 omega 0.6 lambda 1.7"
+  "agate_turbulence|8|agate turbulence 0.3"
+  "onion_frequency|8|onion frequency 3 phase 0.25"
+  "gradient_negative_frequency|8|gradient y frequency -2.5 phase 0.1"
+  "bozo_frequency0|8|bozo frequency 0 phase 0.5"
+  "onion_sine|8|onion sine_wave"
+  "onion_triangle|8|onion triangle_wave"
+  "onion_scallop|8|onion scallop_wave"
+  "onion_cubic|8|onion cubic_wave"
+  "onion_poly|8|onion poly_wave 2.5"
+  "marble_ramp|8|marble ramp_wave"
+  "wood_sine|8|wood sine_wave frequency 0.3"
+  "bozo_transform|8|bozo scale 0.37 translate <1, 2, 3>"
+  "gradient_rotate|8|gradient x rotate <0, 0, 30>"
+  "marble_scaled_turbulence|8|marble turbulence 0.5 scale <2, 0.5, 1>"
+)
+color_cases=(
+  "map_bozo|8|bozo color_map { [0.2 rgb <1, 0, 0>] [0.5 rgb <0, 1, 0.5>] [0.9 rgb <0.1, 0.2, 0.9>] }"
+  "map_single|8|onion color_map { [0.5 rgb <0.3, 0.6, 0.9>] }"
+  "map_step|2|gradient x color_map { [0 rgb 0] [0.5 rgb <1, 0, 0>] [0.5 rgb <0, 0, 1>] [1 rgb 1] }"
+  "map_single_precision|8|leopard color_map { [0.1 rgb <0.25, 0.5, 0.75>] [0.3 rgb <1, 0.5, 0>] [0.7 rgb <0, 0.3, 0.1>] }"
+  "map_none|8|granite"
+  "map_wide|8|marble turbulence 0.6 color_map { [-0.5 rgb <0.2, 0.4, 0.6>] [0.3 rgb <0.9, 0.1, 0.3>] [1.5 rgb <0.05, 0.95, 0.5>] }"
+  "hexagon|8|hexagon rgb <1, 0, 0>, rgb <0, 1, 0>, rgb <0, 0, 1>"
+  "hexagon_scaled|8|hexagon rgb <0.2, 0.3, 0.4>, rgb <0.9, 0.8, 0.1>, rgb <0.5, 0.5, 0> scale 0.3 translate <0.1, 0, -0.2>"
+  "hexagon_turbulence|8|hexagon rgb <1, 0, 0>, rgb <0, 1, 0>, rgb <0, 0, 1> turbulence 0.3"
+  "brick|32|brick rgb <0.1, 0.2, 0.3>, rgb <0.9, 0.8, 0.7>"
+  "brick_sized|4|brick rgb <0.1, 0.2, 0.3>, rgb <0.9, 0.8, 0.7> mortar 0.2 brick_size <1, 0.5, 0.7>"
+  "brick_turbulence|16|brick rgb <1, 1, 1>, rgb <0, 0, 0> turbulence 0.4 octaves 3"
+)
+
+write_cases() {  # kind (pattern or pigment), csv path, cases...
+  local kind=$1 csv=$2
+  shift 2
+  header
+  echo "#fopen Out \"$csv\" write"
+  if [ "$kind" = pattern ]; then
+    echo '#write (Out, "case,kx,ky,kz,value\n")'
+  else
+    echo '#write (Out, "case,kx,ky,kz,r,g,b\n")'
+  fi
+  local i=0
+  for c in "$@"; do
+    IFS='|' read -r name range text <<<"$c"
+    i=$((i + 1))
+    echo "#declare F$i = function { $kind { $text } }"
+    echo "#macro Row(KX, KY, KZ, X, Y, Z)"
+    if [ "$kind" = pattern ]; then
+      echo "  #write (Out, \"$name,\", Ints(KX, KY, KZ), \",\", str(F$i(X, Y, Z), 0, 17), \"\\n\")"
+    else
+      echo "  #local C = F$i(X, Y, Z);"
+      echo "  #write (Out, \"$name,\", Ints(KX, KY, KZ), \",\", str(C.red, 0, 17), \",\", str(C.green, 0, 17), \",\", str(C.blue, 0, 17), \"\\n\")"
+    fi
+    echo "#end"
+    echo "Points(100, $((100 + i)), $range)"
+  done
+  echo "#fclose Out"
+}
+
+write_cases pattern "$work/patterns.csv" "${pattern_cases[@]}" >"$work/patterns.pov"
+run_pov "$work/patterns.pov" +W8 +H8 "+O$work/discard.png"
+cp "$work/patterns.csv" "$out/patterns.csv"
+
+write_cases pigment "$work/colors.csv" "${color_cases[@]}" >"$work/colors.pov"
+run_pov "$work/colors.pov" +W8 +H8 "+O$work/discard.png"
+cp "$work/colors.csv" "$out/colors.csv"
+
+# --- normals.csv: perturbed normals, rendered ----------------------------------------------
+# A plane z = 0 facing the camera (normal -z) seen by an orthographic camera over the square
+# of side 4 centred at (0.375, -1.25), 16x16 pixels, pixel (i, j) at x = 0.375 + 4((i+0.5)/16
+# - 0.5), y = -1.25 + 4(0.5 - (j+0.5)/16). Three shadowless parallel lights, red from -z, green
+# from (1, 0, -1)/√2, blue from (0, 1, -1)/√2, on a white surface with diffuse 1 and no ambient:
+# each 16-bit channel is 65535·max(0, N·L) for its light, N the perturbed normal.
+normal_cases=(
+  "bumps|bumps 0.5"
+  "bumps_scaled|bumps 0.8 scale <0.5, 1.5, 1>"
+  "bumps_turbulence|bumps 0.5 turbulence 0.4"
+  "dents|dents 0.9"
+  "dents_generator1|dents 0.9 noise_generator 1"
+  "wrinkles|wrinkles 0.4"
+  "ripples|ripples 0.6 frequency 3"
+  "waves|waves 0.7 frequency 2 phase 0.1"
+  "granite|granite 0.3"
+  "bozo|bozo 0.6 scale 0.5"
+  "marble|marble 0.5 turbulence 0.5"
+  "crackle|crackle 0.5"
+  "agate|agate 0.4"
+  "onion|onion 0.5 sine_wave"
+  "leopard|leopard 0.5 scale 0.2"
+  "gradient|gradient x 0.5 frequency 2"
+  "wood|wood 0.5 turbulence 0.1"
+  "spiral1|spiral1 3 0.5"
+  "spiral2|spiral2 2 0.5"
+  "radial|radial 0.4 frequency 6"
+  "spotted|spotted 0.5 noise_generator 3"
+  "slope_rotated|granite 0.6 rotate <20, 30, 40> scale <1, 0.5, 2>"
+)
+echo "case,i,j,r,g,b" >"$work/normals.csv"
+for c in "${normal_cases[@]}"; do
+  IFS='|' read -r name text <<<"$c"
+  cat >"$work/normal.pov" <<POV
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { orthographic location <0.375, -1.25, -10> direction z right 4 * x up 4 * y }
+light_source { <0, 0, -1000> rgb <1, 0, 0> parallel point_at 0 shadowless }
+light_source { <1000, 0, -1000> rgb <0, 1, 0> parallel point_at 0 shadowless }
+light_source { <0, 1000, -1000> rgb <0, 0, 1> parallel point_at 0 shadowless }
+plane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { $text } }
+POV
+  run_pov "$work/normal.pov" +W16 +H16 +FN16 File_Gamma=1.0 "+O$work/normal.png"
+  oiiotool --dumpdata "$work/normal.png" |
+    sed -n 's/^ *Pixel (\([0-9]*\), \([0-9]*\)): \([0-9]*\) \([0-9]*\) \([0-9]*\) .*/\1,\2,\3,\4,\5/p' |
+    sed "s/^/$name,/" >>"$work/normals.csv"
+done
+cp "$work/normals.csv" "$out/normals.csv"
+
+echo "references written to $out"

@@ -1,0 +1,49 @@
+// The normal cases of tests/data/patterns/make_references.sh (normals.csv) as Lucent specs.
+#pragma once
+
+#include "pattern_cases.h"
+
+#include <map>
+#include <string>
+
+namespace lucent::test {
+
+inline NormalSpec bumpy(PatternSpec s, double depth) {
+  NormalSpec n;
+  n.pattern = s;
+  n.depth = depth;
+  return n;
+}
+
+inline std::map<std::string, NormalSpec> normalCases() {
+  using T = PatternType;
+  return {
+      {"bumps", bumpy(spec(T::bumps), 0.5)},
+      {"bumps_scaled", bumpy(placed(spec(T::bumps), inverseScale(Vec3(0.5, 1.5, 1))), 0.8)},
+      {"bumps_turbulence", bumpy(turbulent(spec(T::bumps), Vec3(0.4)), 0.5)},
+      {"dents", bumpy(spec(T::dents), 0.9)},
+      {"dents_generator1", bumpy(generator(spec(T::dents), 1), 0.9)},
+      {"wrinkles", bumpy(spec(T::wrinkles), 0.4)},
+      {"ripples", bumpy(tuned(spec(T::ripples), 3, 0), 0.6)},
+      {"waves", bumpy(tuned(spec(T::waves), 2, 0.1), 0.7)},
+      {"granite", bumpy(spec(T::granite), 0.3)},
+      {"bozo", bumpy(placed(spec(T::bozo), inverseScale(Vec3(0.5))), 0.6)},
+      {"marble", bumpy(turbulent(spec(T::marble), Vec3(0.5)), 0.5)},
+      {"crackle", bumpy(spec(T::crackle), 0.5)},
+      {"agate", bumpy(spec(T::agate), 0.4)},
+      {"onion", bumpy(waved(spec(T::onion), WaveShape::sine), 0.5)},
+      {"leopard", bumpy(placed(spec(T::leopard), inverseScale(Vec3(0.2))), 0.5)},
+      {"gradient", bumpy(tuned(axis(spec(T::gradient), Vec3(1, 0, 0)), 2, 0), 0.5)},
+      {"wood", bumpy(turbulent(spec(T::wood), Vec3(0.1)), 0.5)},
+      {"spiral1", bumpy(arms(spec(T::spiral1), 3), 0.5)},
+      {"spiral2", bumpy(arms(spec(T::spiral2), 2), 0.5)},
+      {"radial", bumpy(tuned(spec(T::radial), 6, 0), 0.4)},
+      {"spotted", bumpy(generator(spec(T::spotted), 3), 0.5)},
+      {"slope_rotated",
+       bumpy(placed(spec(T::granite), then(inverseRotate(Vec3(20, 30, 40)),
+                                           inverseScale(Vec3(1, 0.5, 2)))),
+             0.6)},
+  };
+}
+
+}  // namespace lucent::test

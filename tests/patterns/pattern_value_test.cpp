@@ -1,0 +1,66 @@
+// Lucent's pattern values against POV-Ray 3.7's (function { pattern { ... } }, the pattern
+// with its transform, turbulence, frequency, phase and wave; tests/data/patterns).
+#include "pattern_cases.h"
+#include "reference_csv.h"
+
+#include "render/patterns/pattern_value.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace lucent;
+using namespace lucent::test;
+
+namespace {
+
+double worstError(const PatternSpec& spec, const std::vector<ReferenceRow>& rows, Vec3* where) {
+  double worst = 0.0;
+  for (const ReferenceRow& r : rows) {
+    const Vec3 p(fromGrid(r.values[0]), fromGrid(r.values[1]), fromGrid(r.values[2]));
+    const double error = std::fabs(patternValue(spec, p) - r.values[3]);
+    if (!(error <= worst)) {
+      worst = error;
+      *where = p;
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("every reference case has a Lucent spec and every spec a reference", "[pattern]") {
+  const auto cases = referenceCases("patterns.csv");
+  const auto specs = patternCases();
+  for (const auto& [name, rows] : cases) {
+    INFO(name);
+    CHECK(specs.count(name) == 1);
+    CHECK(rows.size() == 100);
+  }
+  CHECK(cases.size() == specs.size());
+}
+
+TEST_CASE("the 18 types, turbulence, frequency, phase and waves equal POV-Ray's to 1e-13",
+          "[pattern]") {
+  const auto cases = referenceCases("patterns.csv");
+  for (const auto& [name, s] : patternCases()) {
+    auto it = cases.find(name);
+    REQUIRE(it != cases.end());
+    Vec3 where(0.0);
+    const double worst = worstError(s, it->second, &where);
+    INFO(name << ": worst error " << worst << " at " << where.x << " " << where.y << " "
+              << where.z);
+    CHECK(worst <= 1e-13);
+  }
+}
+
+TEST_CASE("pattern values stay within POV-Ray's range [0, 1.00001]", "[pattern]") {
+  for (const auto& [name, s] : patternCases())
+    for (int i = 0; i < 200; ++i) {
+      const Vec3 p(0.731 * i - 70.0, 0.377 * i - 30.0, -0.519 * i + 50.0);
+      const double v = patternValue(s, p);
+      INFO(name << " at " << p.x << " " << p.y << " " << p.z);
+      CHECK(v >= 0.0);
+      CHECK(v <= 1.00001);
+    }
+}
