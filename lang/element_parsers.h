@@ -22,6 +22,8 @@ void parseLight(ElementReader& r);
 // base= names (forward references allowed; a cycle is an error).
 void parseNamedMaterials(ParseContext& ctx, const std::vector<TopLevelItem>& items);
 std::optional<uint32_t> parseInlineMaterial(ElementReader& r);
+// <sky> (top level, at most one).
+void parseSky(ElementReader& r);
 // The index of the material named by a material="id" attribute, with did-you-mean.
 std::optional<uint32_t> lookupMaterial(ElementReader& r, const char* attr);
 

@@ -4,6 +4,7 @@
 // base="id" starts from another material and overrides what is written; default="true"
 // makes a named material the one of shapes that have none.
 #include "element_parsers.h"
+#include "pattern_parser.h"
 #include "povray_names.h"
 
 #include <algorithm>
@@ -17,7 +18,22 @@ const std::vector<std::string_view> kMaterialAttributes{
     "id",       "emissive",   "ambient",      "diffuse", "specular", "shininess",
     "reflective", "transmissive", "ior",      "fresnel", "absorption", "phong",
     "phong-size", "brilliance", "metallic", "base", "default"};
-const std::vector<std::string_view> kTextureElements{"checker", "image"};
+const std::vector<std::string_view> kTextureElements{"checker", "image", "pattern", "hexagon",
+                                                     "brick"};
+const std::vector<std::string_view> kMaterialChildren{"checker", "image",  "pattern",
+                                                      "hexagon", "brick", "normal"};
+
+Texture parseImage(ElementReader& t);
+Texture parseChecker(ElementReader& t);
+
+Texture parseTexture(ElementReader& t) {
+  const std::string name = t.name();
+  if (name == "checker") return parseChecker(t);
+  if (name == "image") return parseImage(t);
+  if (name == "pattern") return parsePatternTexture(t);
+  if (name == "hexagon") return parseHexagonTexture(t);
+  return parseBrickTexture(t);
+}
 
 Texture parseChecker(ElementReader& t) {
   t.checkAttributes({"color1", "color2", "scale"});
@@ -107,15 +123,24 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
   m.brilliance = r.number("brilliance", m.brilliance, NumberRule::nonNegative());
   m.metallic = r.boolean("metallic", m.metallic);
 
-  // A texture of its own replaces the base's.
-  std::optional<SourceLoc> textureLoc;
+  // A texture (or normal) of its own replaces the base's.
+  std::optional<SourceLoc> textureLoc, normalLoc;
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader t(ctx, r.file(), n);
     std::string_view name = n.name();
-    if (name != "checker" && name != "image") {
+    if (name == "normal") {
+      if (normalLoc) {
+        t.error("<material> holds one <normal> at most; the first is at " + normalLoc->str());
+        return;
+      }
+      normalLoc = t.loc();
+      m.normal = parseNormal(t);
+      return;
+    }
+    if (std::find(kTextureElements.begin(), kTextureElements.end(), name) == kTextureElements.end()) {
       std::string pov = povrayElementHint("material", name);
-      t.error("<material> may hold a texture (" + elementList(kTextureElements) + "), not <" +
-              std::string(name) + ">" + (pov.empty() ? didYouMean(name, kTextureElements) : pov));
+      t.error("<material> may hold a texture (" + elementList(kTextureElements) + ") and a <normal>, not <" +
+              std::string(name) + ">" + (pov.empty() ? didYouMean(name, kMaterialChildren) : pov));
       return;
     }
     if (textureLoc) {
@@ -123,7 +148,7 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
       return;
     }
     textureLoc = t.loc();
-    m.texture = name == "checker" ? parseChecker(t) : parseImage(t);
+    m.texture = parseTexture(t);
   });
   // The contract: with a texture and no diffuse, the texture shows as it is.
   if (m.hasTexture() && !wroteDiffuse) m.diffuse = Color(1.0f);

@@ -24,7 +24,7 @@ namespace {
 const std::vector<std::string_view>& topLevelElementNames() {
   static const std::vector<std::string_view> names = [] {
     std::vector<std::string_view> n{"render", "camera", "light",  "material", "param",
-                                    "defs",   "include", "repeat", "if",       "animation"};
+                                    "defs",   "include", "repeat", "if",       "animation", "sky"};
     n.insert(n.end(), geometryElementNames().begin(), geometryElementNames().end());
     return n;
   }();
@@ -65,12 +65,16 @@ void readTopLevel(ParseContext& ctx, const TopLevelItem& item) {
     parseLight(r);
   }
   else if (name == "camera") parseCamera(r);
+  else if (name == "sky") parseSky(r);
   else if (name == "defs") parseDefs(r);
   else if (isGeometryElement(name)) {
     if (auto node = parseGeometryNode(ctx, *item.file, item.element, 1))
       ctx.scene.root->children.push_back(std::move(node));
-  } else if (name == "checker" || name == "image") {
+  } else if (name == "checker" || name == "image" || name == "pattern" || name == "hexagon" ||
+             name == "brick") {
     r.error("<" + std::string(name) + "> is a texture: it goes inside a <material>");
+  } else if (name == "normal") {
+    r.error("<normal> perturbs a material's normal: it goes inside a <material>");
   } else {
     std::string pov = povrayElementHint("scene", name);
     r.error("unknown element <" + std::string(name) + "> in <scene>" +

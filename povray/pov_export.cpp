@@ -4,6 +4,7 @@
 #include "pov_geometry.h"
 #include "pov_lights.h"
 #include "pov_materials.h"
+#include "pov_patterns.h"
 #include "pov_runner.h"
 
 #include <fmt/core.h>
@@ -92,6 +93,16 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   out.blank();
   writeCamera(*camera, r, out, issues);
   out.blank();
+  if (scene.sky) {
+    // The pigment is evaluated at the ray direction carried through the inverse of the
+    // sky's transform, as Lucent's <sky>.
+    out.open("sky_sphere");
+    writePatternPigment(scene.sky->pattern, Vec3(1.0), 0.0, 0.0, out);
+    const Mat4 worldFromSky = glm::inverse(scene.sky->skyFromWorld);
+    if (worldFromSky != Mat4(1.0)) out.line(povMatrix(worldFromSky));
+    out.close();
+    out.blank();
+  }
 
   PovMaterials materials(scene.materials, issues);
   PovCameraFrame frame = povCameraFrame(*camera);

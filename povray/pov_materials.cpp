@@ -1,4 +1,5 @@
 #include "pov_materials.h"
+#include "pov_patterns.h"
 #include "scenegraph/shape_registry.h"
 
 #include <fmt/core.h>
@@ -298,9 +299,16 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping,
   } else if (s.useTexture && image && mapping) {
     writeImagePigment(*image, s.filter, s.transmit, *mapping, shapeName, *loc, materialLabel(m),
                       out, *issues);
+  } else if (const auto* pattern = std::get_if<PatternTexture>(&m.texture); s.useTexture && pattern) {
+    writePatternPigment(*pattern, s.pigmentScale, s.filter, s.transmit, out);
+  } else if (const auto* hexagon = std::get_if<HexagonTexture>(&m.texture); s.useTexture && hexagon) {
+    writeHexagonPigment(*hexagon, s.pigmentScale, s.filter, s.transmit, out);
+  } else if (const auto* brick = std::get_if<BrickTexture>(&m.texture); s.useTexture && brick) {
+    writeBrickPigment(*brick, s.pigmentScale, s.filter, s.transmit, out);
   } else {
     out.line("pigment { " + povRgbft(s.pigmentScale, s.filter, s.transmit) + " }");
   }
+  if (m.normal) writeNormal(*m.normal, out);
 
   out.open("finish");
   out.line("ambient " + povRgb(s.ambient));

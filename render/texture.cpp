@@ -1,5 +1,10 @@
 #include "texture.h"
 
+#include "patterns/block_pattern.h"
+#include "patterns/color_map.h"
+#include "patterns/pattern_point.h"
+#include "patterns/pattern_value.h"
+
 #include "image_io.h"
 #include "image_map_cache.h"
 
@@ -100,6 +105,12 @@ Color TextureSet::eval(uint32_t index, const Material& material, const SurfaceIn
     // A shape without (u,v) reads the image at (0,0): one flat colour.
     return maps_[index]->lookup(surface.hasUV ? surface.uv : Vec2(0.0), image->scale);
   }
+  if (const auto* pattern = std::get_if<PatternTexture>(&material.texture))
+    return lookupColorMap(pattern->map, patternValue(pattern->pattern, surface.pObject));
+  if (const auto* hexagon = std::get_if<HexagonTexture>(&material.texture))
+    return hexagonColor(hexagon->spec, warpPoint(hexagon->placement, surface.pObject));
+  if (const auto* brick = std::get_if<BrickTexture>(&material.texture))
+    return brickColor(brick->spec, warpPoint(brick->placement, surface.pObject));
   return Color(1.0f);
 }
 

@@ -2,6 +2,8 @@
 
 #include "adaptive_area.h"
 #include "finish.h"
+#include "shading_normal.h"
+#include "sky_color.h"
 #include "optics.h"
 #include "sampling.h"
 #include "spawn.h"
@@ -29,6 +31,7 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
       scene_(world.scene()),
       settings_(world.scene().render),
       lights_(world.scene().lights),
+      sky_(world.scene().sky),
       textures_(world.scene().materials, textures) {
   for (const Material& m : scene_.materials) {
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
@@ -83,7 +86,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     Hit hit;
     ++stats.queries;
     if (!world_.intersect(ray, hit)) {
-      Color background = settings_.background;
+      Color background = sky_ ? skyColor(*sky_, ray.d) : settings_.background;
       if (const Material* medium = media.top(); medium && medium->isAbsorbing())
         background *= beerLambert(medium->absorption, kInf);
       return sum + throughput * background;
@@ -108,6 +111,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     const Vec3 ng = front ? s.ng : -s.ng;
     Vec3 n = front ? s.ns : -s.ns;
     if (glm::dot(n, v) <= 0.0) n = ng;
+    if (m.normal) n = perturbedShadingNormal(*m.normal, leaf.transform(), s, n, v);
 
     // Local terms: k_e + k_a·I_La (·k_t inside an object) + direct light.
     Color local = m.emissive;

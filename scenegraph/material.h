@@ -1,11 +1,13 @@
 // Materials of the Trace shading model (the contract's <material>) and their textures.
 #pragma once
 
+#include "pattern.h"
 #include "source_loc.h"
 
 #include "primitives/math.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -27,7 +29,25 @@ struct ImageTexture {
   SourceLoc loc;
 };
 
-using Texture = std::variant<std::monostate, CheckerTexture, ImageTexture>;
+// <pattern type>: a procedural pattern's value turned into a colour by its colour map (an
+// empty map: the value is the grey level).
+struct PatternTexture {
+  PatternSpec pattern;
+  ColorMap map;
+};
+
+// <hexagon> and <brick>: block patterns with colours of their own.
+struct HexagonTexture {
+  HexagonSpec spec;
+  PatternPlacement placement;
+};
+struct BrickTexture {
+  BrickSpec spec;
+  PatternPlacement placement;
+};
+
+using Texture = std::variant<std::monostate, CheckerTexture, ImageTexture, PatternTexture,
+                             HexagonTexture, BrickTexture>;
 
 struct Material {
   std::string id;   // empty for inline materials
@@ -50,6 +70,8 @@ struct Material {
   Color absorption{0.0f};    // Beer–Lambert coefficient per world unit
 
   Texture texture;
+  // <normal>: the shading normal perturbed by a pattern's slope (geometry unchanged).
+  std::optional<NormalSpec> normal;
 
   bool hasTexture() const { return !std::holds_alternative<std::monostate>(texture); }
   bool isTransmissive() const { return maxComponent(transmissive) > 0.0f; }

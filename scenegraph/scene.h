@@ -5,10 +5,12 @@
 #include "camera.h"
 #include "light.h"
 #include "material.h"
+#include "sky.h"
 #include "node.h"
 #include "render_settings.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,8 @@ struct Scene {
   std::unique_ptr<Node> root = std::make_unique<Node>();
   // Nodes declared in <defs>: instantiated only through <use>.
   std::vector<std::unique_ptr<Node>> defs;
+  // <sky>, if the scene has one.
+  std::optional<Sky> sky;
 
   // The camera used for rendering: by name, or the first. Null if the name is unknown.
   const Camera* findCamera(const std::string& name) const;

@@ -1,0 +1,194 @@
+// The contract's colour patterns and normal perturbations: <pattern type> with its
+// <color-map>, <hexagon>, <brick> (textures of a <material>) and <normal type depth>.
+// Every pattern element takes the same placement attributes: transform, turbulence,
+// octaves, omega, lambda, and (for value patterns) frequency, phase, wave and exponent.
+#include "pattern_parser.h"
+
+#include "expression.h"
+#include "povray_names.h"
+
+namespace lucent {
+
+namespace {
+
+const std::vector<std::pair<std::string_view, PatternType>> kColourPatterns{
+    {"gradient", PatternType::gradient}, {"onion", PatternType::onion},
+    {"radial", PatternType::radial},     {"spiral1", PatternType::spiral1},
+    {"spiral2", PatternType::spiral2},   {"wood", PatternType::wood},
+    {"marble", PatternType::marble},     {"agate", PatternType::agate},
+    {"granite", PatternType::granite},   {"bozo", PatternType::bozo},
+    {"spotted", PatternType::spotted},   {"leopard", PatternType::leopard},
+    {"crackle", PatternType::crackle},   {"wrinkles", PatternType::wrinkles},
+    {"bumps", PatternType::bumps}};
+
+// Normals take every colour pattern (its slope) and three of their own.
+std::vector<std::pair<std::string_view, PatternType>> normalPatterns() {
+  auto all = kColourPatterns;
+  all.insert(all.end(), {{"dents", PatternType::dents},
+                         {"ripples", PatternType::ripples},
+                         {"waves", PatternType::waves}});
+  return all;
+}
+
+const std::vector<std::pair<std::string_view, WaveShape>> kWaves{
+    {"ramp", WaveShape::ramp},       {"sine", WaveShape::sine},   {"triangle", WaveShape::triangle},
+    {"scallop", WaveShape::scallop}, {"cubic", WaveShape::cubic}, {"poly", WaveShape::poly}};
+
+const std::vector<std::string_view> kPlacementAttributes{"transform", "turbulence", "octaves",
+                                                         "omega", "lambda"};
+const std::vector<std::string_view> kValueAttributes{"type",  "axis", "arms",     "frequency",
+                                                     "phase", "wave", "exponent", "noise-generator"};
+
+std::vector<std::string_view> joined(std::vector<std::string_view> a,
+                                     const std::vector<std::string_view>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+void noChildren(ElementReader& r) {
+  r.forEachChild([&](pugi::xml_node n) {
+    ElementReader(r.ctx(), r.file(), n)
+        .error(r.tag() + " takes no child elements, got <" + std::string(n.name()) + ">");
+  });
+}
+
+// transform (the pattern on the object, as a node's transform places it in its parent) and
+// turbulence: one number for all three axes or three numbers.
+PatternPlacement parsePlacement(ElementReader& r) {
+  PatternPlacement p;
+  p.patternFromObject = glm::inverse(r.transform("transform"));
+  if (auto t = r.text("turbulence")) {
+    auto list = parseNumberList(*t);
+    if (!list) {
+      r.attrError("turbulence", list.error);
+    } else if (list->size() != 1 && list->size() != 3) {
+      r.attrError("turbulence", "expected 1 number or 3 (x y z), got " + std::to_string(list->size()));
+    } else {
+      const Vec3 v = list->size() == 1 ? Vec3((*list)[0]) : Vec3((*list)[0], (*list)[1], (*list)[2]);
+      if (v.x < 0 || v.y < 0 || v.z < 0) r.attrError("turbulence", "expected numbers >= 0, got '" + *t + "'");
+      else p.turbulence = v;
+    }
+  }
+  // POV-Ray clamps octaves to 1..10; Lucent refuses what it would change.
+  p.octaves = static_cast<int>(r.integer("octaves", p.octaves, 1, 10));
+  p.omega = r.number("omega", p.omega, NumberRule::positive());
+  p.lambda = r.number("lambda", p.lambda, NumberRule::positive());
+  return p;
+}
+
+void parseValueAttributes(ElementReader& r, PatternSpec& s) {
+  s.placement = parsePlacement(r);
+  if (r.has("axis")) s.axis = r.direction("axis", s.axis);
+  s.arms = static_cast<int>(r.integer("arms", s.arms, 1, 1000));
+  s.frequency = r.number("frequency", s.frequency);
+  s.phase = r.number("phase", s.phase);
+  if (r.has("wave")) s.wave = r.choice("wave", WaveShape::ramp, kWaves);
+  s.exponent = r.number("exponent", s.exponent, NumberRule::positive());
+  if (r.has("exponent") && s.waveShape() != WaveShape::poly)
+    r.attrError("exponent", "only wave=\"poly\" takes an exponent");
+  s.noiseGenerator = static_cast<int>(r.integer("noise-generator", s.noiseGenerator, 1, 3));
+}
+
+// <color-map><entry at color/>...</color-map>: at in [0, 1], never decreasing (two
+// entries at one value make a sharp edge).
+ColorMap parseColorMap(ElementReader& r) {
+  r.checkAttributes({});
+  ColorMap map;
+  r.forEachChild([&](pugi::xml_node n) {
+    ElementReader e(r.ctx(), r.file(), n);
+    if (std::string_view(n.name()) != "entry") {
+      e.error("<color-map> holds <entry at color/> elements, not <" + std::string(n.name()) + ">");
+      return;
+    }
+    e.checkAttributes({"at", "color"});
+    if (!e.has("at") || !e.has("color")) {
+      e.error("<entry> needs 'at' (a value from 0 to 1) and 'color'");
+      return;
+    }
+    ColorMapEntry entry;
+    entry.at = e.number("at", 0.0, NumberRule::between(0.0, 1.0, "a number from 0 to 1"));
+    entry.color = e.color("color", entry.color);
+    noChildren(e);
+    if (!map.entries.empty() && entry.at < map.entries.back().at) {
+      e.attrError("at", "the entries of a <color-map> go in increasing order of 'at'; this one is below the one before (" +
+                            formatNumber(map.entries.back().at) + ")");
+      return;
+    }
+    map.entries.push_back(entry);
+  });
+  if (map.entries.empty() && !r.failed()) r.error("<color-map> needs at least one <entry at color/>");
+  return map;
+}
+
+}  // namespace
+
+Texture parsePatternTexture(ElementReader& r) {
+  r.checkAttributes(joined(kValueAttributes, kPlacementAttributes));
+  PatternTexture t;
+  if (!r.has("type")) {
+    r.error("<pattern> needs a 'type' (" + [] {
+      std::string list;
+      for (const auto& [n, e] : kColourPatterns) list += (list.empty() ? "" : ", ") + std::string(n);
+      return list;
+    }() + ")");
+  } else {
+    t.pattern.type = r.choice("type", PatternType::bozo, kColourPatterns);
+  }
+  parseValueAttributes(r, t.pattern);
+  std::optional<SourceLoc> mapLoc;
+  r.forEachChild([&](pugi::xml_node n) {
+    ElementReader c(r.ctx(), r.file(), n);
+    if (std::string_view(n.name()) != "color-map") {
+      std::string pov = povrayElementHint("pattern", n.name());
+      c.error("<pattern> may hold one <color-map>, not <" + std::string(n.name()) + ">" + pov);
+      return;
+    }
+    if (mapLoc) {
+      c.error("<pattern> holds one <color-map> at most; the first is at " + mapLoc->str());
+      return;
+    }
+    mapLoc = c.loc();
+    t.map = parseColorMap(c);
+  });
+  return t;
+}
+
+Texture parseHexagonTexture(ElementReader& r) {
+  r.checkAttributes(joined({"color1", "color2", "color3"}, kPlacementAttributes));
+  HexagonTexture t;
+  t.placement = parsePlacement(r);
+  t.spec.colors[0] = r.color("color1", t.spec.colors[0]);
+  t.spec.colors[1] = r.color("color2", t.spec.colors[1]);
+  t.spec.colors[2] = r.color("color3", t.spec.colors[2]);
+  noChildren(r);
+  return t;
+}
+
+Texture parseBrickTexture(ElementReader& r) {
+  r.checkAttributes(joined({"color1", "color2", "mortar", "size"}, kPlacementAttributes));
+  BrickTexture t;
+  t.placement = parsePlacement(r);
+  t.spec.color1 = r.color("color1", t.spec.color1);
+  t.spec.color2 = r.color("color2", t.spec.color2);
+  t.spec.mortar = r.number("mortar", t.spec.mortar, NumberRule::nonNegative());
+  const Vec3 size = r.vector("size", t.spec.size);
+  if (size.x <= 0 || size.y <= 0 || size.z <= 0)
+    r.attrError("size", "the brick's size must be positive in x, y and z");
+  else
+    t.spec.size = size;
+  noChildren(r);
+  return t;
+}
+
+NormalSpec parseNormal(ElementReader& r) {
+  r.checkAttributes(joined(joined(kValueAttributes, kPlacementAttributes), {"depth"}));
+  NormalSpec n;
+  if (!r.has("type")) r.error("<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles or a colour pattern)");
+  else n.pattern.type = r.choice("type", PatternType::bumps, normalPatterns());
+  parseValueAttributes(r, n.pattern);
+  n.depth = r.number("depth", n.depth);
+  noChildren(r);
+  return n;
+}
+
+}  // namespace lucent

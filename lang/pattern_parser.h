@@ -1,0 +1,16 @@
+// Parsers of the contract's colour patterns (<pattern>, <hexagon>, <brick>, textures of a
+// <material>) and of <normal>: the elements, their placement attributes and <color-map>.
+#pragma once
+
+#include "element_reader.h"
+
+#include "scenegraph/material.h"
+
+namespace lucent {
+
+Texture parsePatternTexture(ElementReader& r);
+Texture parseHexagonTexture(ElementReader& r);
+Texture parseBrickTexture(ElementReader& r);
+NormalSpec parseNormal(ElementReader& r);
+
+}  // namespace lucent

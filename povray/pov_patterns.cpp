@@ -1,0 +1,134 @@
+#include "pov_patterns.h"
+
+namespace lucent {
+
+namespace {
+
+const char* povPatternName(PatternType t) {
+  switch (t) {
+    case PatternType::gradient: return "gradient";
+    case PatternType::onion: return "onion";
+    case PatternType::radial: return "radial";
+    case PatternType::spiral1: return "spiral1";
+    case PatternType::spiral2: return "spiral2";
+    case PatternType::wood: return "wood";
+    case PatternType::marble: return "marble";
+    case PatternType::agate: return "agate";
+    case PatternType::granite: return "granite";
+    case PatternType::bozo: return "bozo";
+    case PatternType::spotted: return "spotted";
+    case PatternType::leopard: return "leopard";
+    case PatternType::crackle: return "crackle";
+    case PatternType::wrinkles: return "wrinkles";
+    case PatternType::bumps: return "bumps";
+    case PatternType::dents: return "dents";
+    case PatternType::ripples: return "ripples";
+    case PatternType::waves: return "waves";
+  }
+  return "bozo";
+}
+
+const char* povWaveName(WaveShape w) {
+  switch (w) {
+    case WaveShape::ramp: return "ramp_wave";
+    case WaveShape::sine: return "sine_wave";
+    case WaveShape::triangle: return "triangle_wave";
+    case WaveShape::scallop: return "scallop_wave";
+    case WaveShape::cubic: return "cubic_wave";
+    case WaveShape::poly: return "poly_wave";
+  }
+  return "ramp_wave";
+}
+
+// The pattern keyword and what belongs to it (gradient's axis, the spirals' arms).
+std::string patternKeyword(const PatternSpec& s) {
+  std::string k = povPatternName(s.type);
+  if (s.type == PatternType::gradient) k += " " + povVector(s.axis);
+  if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2) k += " " + std::to_string(s.arms);
+  // Lucent's agate uses POV-Ray's default agate_turb, written so that it cannot drift.
+  if (s.type == PatternType::agate) k += " agate_turb 1";
+  return k;
+}
+
+void writePlacement(const PatternPlacement& p, PovWriter& out) {
+  if (p.turbulence != Vec3(0.0)) {
+    out.line("turbulence " + povVector(p.turbulence));
+    out.line("octaves " + std::to_string(p.octaves) + " omega " + povNumber(p.omega) +
+             " lambda " + povNumber(p.lambda));
+  }
+  if (p.patternFromObject != Mat4(1.0)) out.line(povMatrix(glm::inverse(p.patternFromObject)));
+}
+
+void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
+  if (s.frequency != 1.0) out.line("frequency " + povNumber(s.frequency));
+  if (s.phase != 0.0) out.line("phase " + povNumber(s.phase));
+  if (s.wave) {
+    std::string w = povWaveName(*s.wave);
+    if (*s.wave == WaveShape::poly) w += " " + povNumber(s.exponent);
+    out.line(w);
+  }
+  // 2 is POV-Ray 3.7's global default (global_settings noise_generator).
+  if (s.noiseGenerator != 2) out.line("noise_generator " + std::to_string(s.noiseGenerator));
+}
+
+std::string colour(const Color& c, const Vec3& scale, double filter, double transmit) {
+  return povRgbft(scale * Vec3(c.r, c.g, c.b), filter, transmit);
+}
+
+}  // namespace
+
+void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filter,
+                         double transmit, PovWriter& out) {
+  out.open("pigment");
+  out.line(patternKeyword(t.pattern));
+  out.open("color_map");
+  if (t.map.entries.empty()) {
+    out.line("[0 " + colour(Color(0.0f), scale, filter, transmit) + "]");
+    out.line("[1 " + colour(Color(1.0f), scale, filter, transmit) + "]");
+  } else {
+    for (const ColorMapEntry& e : t.map.entries)
+      out.line("[" + povNumber(e.at) + " " + colour(e.color, scale, filter, transmit) + "]");
+  }
+  out.close();
+  writeValueModifiers(t.pattern, out);
+  writePlacement(t.pattern.placement, out);
+  out.close();
+}
+
+void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filter,
+                         double transmit, PovWriter& out) {
+  out.open("pigment");
+  out.line("hexagon");
+  for (int i = 0; i < 3; ++i)
+    out.line(colour(t.spec.colors[i], scale, filter, transmit) + (i < 2 ? "," : ""));
+  writePlacement(t.placement, out);
+  out.close();
+}
+
+void writeBrickPigment(const BrickTexture& t, const Vec3& scale, double filter, double transmit,
+                       PovWriter& out) {
+  out.open("pigment");
+  out.line("brick");
+  out.line(colour(t.spec.color1, scale, filter, transmit) + ",");
+  out.line(colour(t.spec.color2, scale, filter, transmit));
+  out.line("brick_size " + povVector(t.spec.size) + " mortar " + povNumber(t.spec.mortar));
+  writePlacement(t.placement, out);
+  out.close();
+}
+
+void writeNormal(const NormalSpec& n, PovWriter& out) {
+  out.open("normal");
+  std::string keyword = patternKeyword(n.pattern);
+  const std::string agate = " agate_turb 1";
+  if (keyword.size() > agate.size() && keyword.compare(keyword.size() - agate.size(), agate.size(), agate) == 0)
+    out.line(keyword.substr(0, keyword.size() - agate.size()) + " " + povNumber(n.depth) + agate);
+  else
+    out.line(keyword + " " + povNumber(n.depth));
+  // POV-Ray's slope method samples at this distance (its default, which Lucent uses).
+  out.line("accuracy 0.02");
+  writeValueModifiers(n.pattern, out);
+  writePlacement(n.pattern.placement, out);
+  out.close();
+}
+
+}  // namespace lucent

@@ -1,0 +1,25 @@
+// The contract's patterns as POV-Ray 3.7 pigments and normals: the pattern keyword with its
+// own modifiers, a color_map (always written: without one Lucent's value is the grey
+// level, POV-Ray's default map is not), then turbulence and the pattern's transform in that
+// order (POV-Ray applies a transform written after a warp to the point before the warp, so
+// the turbulence works in pattern space, as in Lucent).
+#pragma once
+
+#include "pov_writer.h"
+
+#include "scenegraph/material.h"
+
+namespace lucent {
+
+// `scale` multiplies every colour (the diffuse colour the pigment carries); filter and
+// transmit are written into each colour.
+void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filter,
+                         double transmit, PovWriter& out);
+void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filter,
+                         double transmit, PovWriter& out);
+void writeBrickPigment(const BrickTexture& t, const Vec3& scale, double filter, double transmit,
+                       PovWriter& out);
+// `normal { PATTERN depth ... }`.
+void writeNormal(const NormalSpec& n, PovWriter& out);
+
+}  // namespace lucent
