@@ -2,6 +2,7 @@
 
 #include "adaptive_area.h"
 #include "finish.h"
+#include "fog.h"
 #include "optics.h"
 #include "sampling.h"
 #include "spawn.h"
@@ -29,6 +30,7 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
       scene_(world.scene()),
       settings_(world.scene().render),
       lights_(world.scene().lights),
+      fog_(world.scene().fog),
       textures_(world.scene().materials, textures) {
   for (const Material& m : scene_.materials) {
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
@@ -86,6 +88,8 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
       Color background = settings_.background;
       if (const Material* medium = media.top(); medium && medium->isAbsorbing())
         background *= beerLambert(medium->absorption, kInf);
+      if (fog_ && media.empty())
+        background = fogAlong(*fog_, ray.o, glm::normalize(ray.d), kInf).apply(background);
       return sum + throughput * background;
     }
 
@@ -95,6 +99,14 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     const bool solid = leaf.isSolid();
     const bool front = glm::dot(ray.d, s.ng) < 0.0;
     const bool leaving = solid && !front;  // the ray was inside this solid
+
+    // Fog over the stretch just travelled, if it ran outside every solid (render/fog.h).
+    if (fog_ && !leaving && media.empty()) {
+      const double speed = glm::length(ray.d);
+      const FogEffect fog = fogAlong(*fog_, ray.o, ray.d / speed, hit.t * speed);
+      sum += throughput * fog.add;
+      throughput *= fog.keep;
+    }
 
     // The stretch just travelled lies inside the solid being left, or else in the
     // innermost medium the ray is known to be in.

@@ -3,12 +3,14 @@
 #pragma once
 
 #include "camera.h"
+#include "fog.h"
 #include "light.h"
 #include "material.h"
 #include "node.h"
 #include "render_settings.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +37,7 @@ struct Scene {
   RenderSettings render;
   std::vector<Camera> cameras;  // at least one
   std::vector<Light> lights;
+  std::optional<Fog> fog;  // <fog>, at most one
   // Index 0 is the default material (diffuse 0.8) for shapes with none at all.
   std::vector<Material> materials{Material::defaultMaterial()};
   // The top-level geometry: a group with identity transform. <defs> are not under it.
