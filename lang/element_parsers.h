@@ -15,6 +15,8 @@ namespace lucent {
 void parseRender(ElementReader& r);
 void parseCamera(ElementReader& r);
 void parseLight(ElementReader& r);
+// fog_parser.cpp: the scene's <fog> (at most one).
+void parseFog(ElementReader& r);
 
 // material_parser.cpp. A top-level <material id> is registered under its id; an inline one
 // (a child of a geometry node) is added without a name. Both return its index.

@@ -31,7 +31,7 @@ const GroupEntry* findGroup(std::string_view name) {
   return nullptr;
 }
 
-const std::vector<std::string_view> kTopLevelOnly{"render", "camera", "light", "defs", "include", "animation"};
+const std::vector<std::string_view> kTopLevelOnly{"render", "camera", "light", "defs", "include", "animation", "fog"};
 
 // A child element that is not allowed where it stands: say where it belongs, or suggest
 // the closest allowed name.

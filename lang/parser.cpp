@@ -24,7 +24,7 @@ namespace {
 const std::vector<std::string_view>& topLevelElementNames() {
   static const std::vector<std::string_view> names = [] {
     std::vector<std::string_view> n{"render", "camera", "light",  "material", "param",
-                                    "defs",   "include", "repeat", "if",       "animation", "sky"};
+                                    "defs",   "include", "repeat", "if",       "animation", "sky", "fog"};
     n.insert(n.end(), geometryElementNames().begin(), geometryElementNames().end());
     return n;
   }();
@@ -60,6 +60,7 @@ void readTopLevel(ParseContext& ctx, const TopLevelItem& item) {
     return;
   }
   if (name == "render") parseRender(r);
+  else if (name == "fog") parseFog(r);
   else if (name == "light") {
     LocalScope scope(ctx, *item.file, item.element);
     parseLight(r);

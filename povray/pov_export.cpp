@@ -1,6 +1,7 @@
 #include "pov_export.h"
 
 #include "pov_camera.h"
+#include "pov_fog.h"
 #include "pov_geometry.h"
 #include "pov_lights.h"
 #include "pov_materials.h"
@@ -90,6 +91,7 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   out.line("#version 3.7;");
   out.blank();
   writeSettings(r, out, issues);
+  if (scene.fog) writeFog(*scene.fog, out);
   out.blank();
   writeCamera(*camera, r, out, issues);
   out.blank();

@@ -4,6 +4,7 @@
 #include "finish.h"
 #include "shading_normal.h"
 #include "sky_color.h"
+#include "fog.h"
 #include "optics.h"
 #include "sampling.h"
 #include "spawn.h"
@@ -32,6 +33,7 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
       settings_(world.scene().render),
       lights_(world.scene().lights),
       sky_(world.scene().sky),
+      fog_(world.scene().fog),
       textures_(world.scene().materials, textures) {
   for (const Material& m : scene_.materials) {
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
@@ -89,6 +91,8 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
       Color background = sky_ ? skyColor(*sky_, ray.d) : settings_.background;
       if (const Material* medium = media.top(); medium && medium->isAbsorbing())
         background *= beerLambert(medium->absorption, kInf);
+      if (fog_ && media.empty())
+        background = fogAlong(*fog_, ray.o, glm::normalize(ray.d), kInf).apply(background);
       return sum + throughput * background;
     }
 
@@ -98,6 +102,14 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     const bool solid = leaf.isSolid();
     const bool front = glm::dot(ray.d, s.ng) < 0.0;
     const bool leaving = solid && !front;  // the ray was inside this solid
+
+    // Fog over the stretch just travelled, if it ran outside every solid (render/fog.h).
+    if (fog_ && !leaving && media.empty()) {
+      const double speed = glm::length(ray.d);
+      const FogEffect fog = fogAlong(*fog_, ray.o, ray.d / speed, hit.t * speed);
+      sum += throughput * fog.add;
+      throughput *= fog.keep;
+    }
 
     // The stretch just travelled lies inside the solid being left, or else in the
     // innermost medium the ray is known to be in.

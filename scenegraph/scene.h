@@ -3,6 +3,7 @@
 #pragma once
 
 #include "camera.h"
+#include "fog.h"
 #include "light.h"
 #include "material.h"
 #include "sky.h"
@@ -37,6 +38,7 @@ struct Scene {
   RenderSettings render;
   std::vector<Camera> cameras;  // at least one
   std::vector<Light> lights;
+  std::optional<Fog> fog;  // <fog>, at most one
   // Index 0 is the default material (diffuse 0.8) for shapes with none at all.
   std::vector<Material> materials{Material::defaultMaterial()};
   // The top-level geometry: a group with identity transform. <defs> are not under it.

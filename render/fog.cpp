@@ -1,0 +1,59 @@
+#include "fog.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lucent {
+
+namespace {
+
+// POV-Ray's EPSILON: below this height difference (in altitudes) a stretch counts as level.
+constexpr double kLevel = 1e-10;
+
+// The ground fog's density integrated over height (in altitudes): y below 0 has density 1,
+// above it 1/(1 + y²), whose integral is atan(y).
+double heightIntegral(double y) { return y <= 0.0 ? y : std::atan(y); }
+
+double groundDepth(const Fog& fog, const Vec3& origin, const Vec3& dir, double length) {
+  const double start = (glm::dot(origin, fog.up) - fog.offset) / fog.altitude;
+  if (std::isinf(length)) {
+    // A ray that leaves the scene: it climbs out of the fog (a finite depth) only if it
+    // rises. POV-Ray traces such rays to 2e10, which gives the same to ~1e-10 relative.
+    const double rise = glm::dot(dir, fog.up);
+    if (!(rise > 0.0)) return kInf;
+    return (kPi / 2.0 - heightIntegral(start)) * fog.altitude / rise;
+  }
+  // POV-Ray's cases, in its order: the mean density over the stretch times its length.
+  const Vec3 end3 = origin + dir * length;
+  const double end = (glm::dot(end3, fog.up) - fog.offset) / fog.altitude;
+  double density;
+  if (start <= 0.0) {
+    density = end <= 0.0 ? 1.0 : (std::atan(end) - start) / (end - start);
+  } else if (end <= 0.0) {
+    density = (std::atan(start) - end) / (start - end);
+  } else {
+    const double delta = start - end;
+    density = std::fabs(delta) > kLevel ? (std::atan(start) - std::atan(end)) / delta
+                                        : 1.0 / (start * start + 1.0);
+  }
+  return length * density;
+}
+
+}  // namespace
+
+double fogDepth(const Fog& fog, const Vec3& origin, const Vec3& dir, double length) {
+  if (fog.type == FogType::Ground) return groundDepth(fog, origin, dir, length);
+  return length;
+}
+
+FogEffect fogAlong(const Fog& fog, const Vec3& origin, const Vec3& dir, double length) {
+  double kept = std::exp(-fogDepth(fog, origin, dir, length) / fog.distance);
+  kept = std::max(kept, static_cast<double>(fog.transmit));
+  const float a = static_cast<float>(kept);
+  FogEffect e;
+  e.keep = a * ((1.0f - fog.filter) + fog.filter * fog.color);
+  e.add = (1.0f - a) * fog.color;
+  return e;
+}
+
+}  // namespace lucent
