@@ -101,7 +101,9 @@ Vec3 perturbNormal(const NormalSpec& normal, const Vec3& objPoint, const Vec3& o
   // Back to object space (POV-Ray's UnWarp_Normal), unit length.
   n = normalised(n);
   if (!identity) n = transposedTimes(Mat3(m), n);
-  return normalised(n);
+  n = normalised(n);
+  // A perturbation that overflowed (points near 1e300) leaves the normal unperturbed.
+  return isFinite(n) ? n : normalised(objNormal);
 }
 
 }  // namespace lucent

@@ -163,7 +163,10 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
 }
 
 double patternValueAt(const PatternSpec& spec, const Vec3& patternPoint) {
-  return shapeValue(rawPatternValue(spec, patternPoint), spec);
+  const double v = shapeValue(rawPatternValue(spec, patternPoint), spec);
+  // Only absurd points (|p| near 1e300, where squares overflow) give NaN; POV-Ray would
+  // return it, Lucent returns 0 so a colour map or a normal never sees it.
+  return std::isnan(v) ? 0.0 : v;
 }
 
 double patternValue(const PatternSpec& spec, const Vec3& objectPoint) {

@@ -15,8 +15,8 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& patternPoint);
 double patternValueAt(const PatternSpec& spec, const Vec3& patternPoint);
 
 // The value at an object-space point: placement and turbulence, then patternValueAt.
-// Usually in [0, 1]; POV-Ray's wrap lets values up to 1.00001 through. Pure, thread-safe,
-// allocates nothing.
+// In [0, 1]; POV-Ray's wrap lets values up to 1.00001 through (never NaN, unlike
+// POV-Ray's at points near 1e300). Pure, thread-safe, allocates nothing.
 double patternValue(const PatternSpec& spec, const Vec3& objectPoint);
 
 }  // namespace lucent

@@ -3,6 +3,7 @@
 #include "pattern_cases.h"
 #include "reference_csv.h"
 
+#include "render/patterns/normal_perturbation.h"
 #include "render/patterns/pattern_value.h"
 
 #include <catch2/catch.hpp>
@@ -63,4 +64,24 @@ TEST_CASE("pattern values stay within POV-Ray's range [0, 1.00001]", "[pattern]"
       CHECK(v >= 0.0);
       CHECK(v <= 1.00001);
     }
+}
+
+TEST_CASE("pattern values and normals are defined at huge and non-finite points",
+          "[pattern]") {
+  const double far[] = {3e9, -1e15, 1e300, -1e300, INFINITY, NAN};
+  for (int t = 0; t < kPatternTypeCount; ++t) {
+    PatternSpec s;
+    s.type = static_cast<PatternType>(t);
+    s.placement.turbulence = Vec3(0.4);
+    NormalSpec n;
+    n.pattern = s;
+    for (double a : far) {
+      const Vec3 p(a, 0.5, -a);
+      INFO("type " << t << " at " << a);
+      const double v = patternValue(s, p);
+      CHECK(v >= 0.0);
+      CHECK(v <= 1.00001);
+      CHECK(isFinite(perturbNormal(n, p, Vec3(0, 0, -1))));
+    }
+  }
 }
