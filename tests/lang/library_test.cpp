@@ -3,6 +3,7 @@
 // their documentation says (metals reflect, glass is a Fresnel dielectric with its ior).
 #include "lang/library.h"
 #include "lang/parser.h"
+#include "valid_scene_loading.h"
 
 #include <catch2/catch.hpp>
 
@@ -11,14 +12,9 @@
 #include <set>
 
 using namespace lucent;
+using lucent::testing::messages;
 
 namespace {
-
-std::string messages(const ParseResult& r) {
-  std::string all;
-  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
-  return all;
-}
 
 ParseResult parseWith(const std::string& includes) {
   return parseSceneString("<scene version=\"1\">" + includes +
