@@ -90,13 +90,31 @@ void registerId(ElementReader& r, Node& node) {
   }
 }
 
+// shadows="false" on a part of a merge, intersection or difference changes nothing: the
+// operation casts its shadow as a whole, as in POV-Ray (whose no_shadow there counts on
+// the whole object only). Nested operations have warned about their own parts.
+void warnShadowlessOperands(ParseContext& ctx, const Node& csg) {
+  std::vector<const Node*> stack;
+  for (const auto& c : csg.children) stack.push_back(c.get());
+  while (!stack.empty()) {
+    const Node* n = stack.back();
+    stack.pop_back();
+    if (!n->shadows)
+      ctx.diags.warning(n->loc, "<" + n->element + "> shadows=\"false\" has no effect inside <" + csg.element +
+                                    "> (at " + csg.loc.str() + "), which casts its shadow as a whole, as in "
+                                    "POV-Ray; put shadows=\"false\" on the <" + csg.element + ">");
+    if (n->kind == NodeKind::Group || n->kind == NodeKind::Union)
+      for (const auto& c : n->children) stack.push_back(c.get());
+  }
+}
+
 // The attributes a geometry element accepts, made once per element name (a scene of a
 // million spheres reads them a million times).
 const std::vector<std::string_view>& nodeAttributes(std::string_view element) {
   static std::unordered_map<std::string_view, std::vector<std::string_view>> cache;
   auto it = cache.find(element);
   if (it != cache.end()) return it->second;
-  std::vector<std::string_view> allowed{"id", "transform", "material"};
+  std::vector<std::string_view> allowed{"id", "transform", "material", "shadows"};
   if (element == "use") allowed.push_back("ref");
   for (auto a : shapeAttributes(element)) allowed.push_back(a);
   // The key must outlive the call: the registry's and this file's names are static.
@@ -145,6 +163,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
 
   registerId(r, *node);
   node->parentFromNode = r.transform("transform");
+  node->shadows = r.boolean("shadows", true);
 
   // Children: geometry (groups and CSG only) and at most one inline <material>.
   pugi::xml_node inlineMaterial;
@@ -182,6 +201,9 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
     node->kind = group->kind;
     if (node->isCsg() && node->children.empty() && !r.failed())
       r.error(r.tag() + " needs at least one child shape");
+    if (node->kind == NodeKind::Merge || node->kind == NodeKind::Intersection ||
+        node->kind == NodeKind::Difference)
+      warnShadowlessOperands(ctx, *node);
   } else if (isUse) {
     node->kind = NodeKind::Use;
     if (!r.has("ref")) {

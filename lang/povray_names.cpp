@@ -63,6 +63,7 @@ const std::vector<PovWord> kAttributes{
     {kOnShape, "color", "a <material> child or material=\"id\""},
     {kOnShape, "colour", "a <material> child or material=\"id\""},
     {kOnShape, "normal", "no equivalent: Lucent's materials do not perturb the normal"},
+    {kOnShape, "no_shadow", "shadows=\"false\""},
     {kOnShape, "translate", "transform=\"translate(x y z)\""},
     {kOnShape, "rotate", "transform=\"rotate-x(degrees) ...\""},
     {kOnShape, "scale", "transform=\"scale(s)\""},

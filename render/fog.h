@@ -1,5 +1,5 @@
-// What fog does to the colour seen along a stretch of ray, as POV-Ray 3.7's ComputeFog
-// (render/trace.cpp there): the colour C seen beyond the stretch becomes
+// What fog does to the colour seen along a stretch of ray, as POV-Ray 3.7's Trace::ComputeFog:
+// the colour C seen beyond the stretch becomes
 //   C' = (1 − a)·F + a·((1 − filter) + filter·F)·C,   a = max(exp(−τ/distance), transmit)
 // with F the fog colour and τ the stretch's optical depth: its length for constant fog,
 // its length times the mean ground-fog density along it for ground fog. The tracer applies

@@ -26,6 +26,10 @@ struct Node {
 
   Mat4 parentFromNode{1.0};  // the node's own transform, in the order written
   std::optional<uint32_t> material;  // index into Scene::materials; none: inherit
+  // shadows="false": the node and everything under it cast no shadow (POV-Ray's no_shadow).
+  // Inside a merge, intersection or difference only the whole operation's counts, as in
+  // POV-Ray (World splits a union whose children differ, as POV-Ray splits its unions).
+  bool shadows = true;
 
   std::optional<ShapeSpec> shape;             // kind == Shape
   std::vector<std::unique_ptr<Node>> children;  // groups and CSG operations
