@@ -31,7 +31,7 @@ const GroupEntry* findGroup(std::string_view name) {
   return nullptr;
 }
 
-const std::vector<std::string_view> kTopLevelOnly{"render", "camera", "light", "defs", "include", "animation", "fog"};
+const std::vector<std::string_view> kTopLevelOnly{"render", "camera", "defs", "include", "animation", "fog"};
 
 // A child element that is not allowed where it stands: say where it belongs, or suggest
 // the closest allowed name.
@@ -43,6 +43,9 @@ void reportUnexpectedChild(ElementReader& parent, pugi::xml_node child,
   if (topLevel)
     c.error("<" + std::string(name) + "> is not allowed inside " + parent.tag() +
             "; it belongs at the top level of <scene>");
+  else if (name == "light")
+    c.error("<light> is not allowed inside " + parent.tag() +
+            "; a light stands at the top level or in a group, CSG operation, <defs>, <repeat> or <if>");
   else if (isGeometryElement(name) || name == "material")
     c.error("<" + std::string(name) + "> is not allowed inside " + parent.tag());
   else if (std::string pov = povrayElementHint(parent.name(), name); !pov.empty())
@@ -68,7 +71,9 @@ void readNodeMaterial(ElementReader& r, Node& node, pugi::xml_node inlineMateria
   }
 }
 
-void registerId(ElementReader& r, Node& node) {
+}  // namespace
+
+void registerNodeId(ElementReader& r, Node& node) {
   auto id = r.text("id");
   if (!id) return;
   if (!isValidId(*id)) {
@@ -89,6 +94,8 @@ void registerId(ElementReader& r, Node& node) {
                                                                              : ""));
   }
 }
+
+namespace {
 
 // shadows="false" on a part of a merge, intersection or difference changes nothing: the
 // operation casts its shadow as a whole, as in POV-Ray (whose no_shadow there counts on
@@ -145,6 +152,7 @@ bool isGeometryElement(std::string_view name) {
 
 std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& file, pugi::xml_node element,
                                         int depth) {
+  if (std::string_view(element.name()) == "light") return parseLightNode(ctx, file, element, depth);
   ElementReader r(ctx, file, element);
   if (depth > kMaxElementDepth) {
     r.error("elements nest deeper than " + std::to_string(kMaxElementDepth) + " levels here");
@@ -161,7 +169,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
   bool isUse = name == "use";
   r.checkAttributes(nodeAttributes(name));
 
-  registerId(r, *node);
+  registerNodeId(r, *node);
   node->parentFromNode = r.transform("transform");
   node->shadows = r.boolean("shadows", true);
 
@@ -176,12 +184,13 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
         return;
       }
       inlineMaterial = c;
-    } else if (group && isGeometryElement(cn)) {
+    } else if (group && (isGeometryElement(cn) || cn == "light")) {
       if (auto child = parseGeometryNode(ctx, file, c, depth + 1)) node->children.push_back(std::move(child));
     } else {
       std::vector<std::string_view> childNames{"material", "param"};
       if (group) {
         childNames.insert(childNames.end(), geometryElementNames().begin(), geometryElementNames().end());
+        childNames.push_back("light");
         childNames.push_back("repeat");
         childNames.push_back("if");
       }
@@ -199,7 +208,8 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
 
   if (group) {
     node->kind = group->kind;
-    if (node->isCsg() && node->children.empty() && !r.failed())
+    if (node->isCsg() && !r.failed() &&
+        std::all_of(node->children.begin(), node->children.end(), [](const auto& c) { return c->isLight(); }))
       r.error(r.tag() + " needs at least one child shape");
     if (node->kind == NodeKind::Merge || node->kind == NodeKind::Intersection ||
         node->kind == NodeKind::Difference)
@@ -229,7 +239,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
 void parseDefs(ElementReader& r) {
   r.checkAttributes({});
   forEachExpandedChild(r, 2, [&](pugi::xml_node c) {
-    if (!isGeometryElement(c.name())) {
+    if (!isGeometryElement(c.name()) && std::string_view(c.name()) != "light") {
       reportUnexpectedChild(r, c, geometryElementNames());
       return;
     }

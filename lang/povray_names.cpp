@@ -87,7 +87,7 @@ const std::vector<PovWord> kElements{
     {kOnShape, "texture", "<material>"},
     {kOnShape, "pigment", "<material>"},
     {kOnShape, "finish", "<material>"},
-    {kOnShape, "light_source", "<light>, at the top level of <scene>"},
+    {kOnShape, "light_source", "<light>"},
 };
 
 std::string hint(std::string_view word, std::string_view lucent) {

@@ -53,6 +53,7 @@ int PovGeometry::operandCount(const Node& node) const {
     }
     case NodeKind::Use: return node.target ? operandCount(*node.target) : 0;
     case NodeKind::Shape: return 1;
+    case NodeKind::Light: return 0;
     default: {
       int n = 0;
       for (const auto& c : node.children) n += operandCount(*c);
@@ -81,6 +82,8 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
     case NodeKind::Shape:
       writeLeaf(node, m, material, topLevel, out);
       break;
+    case NodeKind::Light:
+      break;  // written with the lights, placed in the world (Scene::lights)
     case NodeKind::Union:
     case NodeKind::Merge:
     case NodeKind::Intersection:

@@ -128,6 +128,8 @@ struct Builder {
         // The referenced node's own transform applies first, then the <use>'s.
         add(*node.target, world, material, castsShadow, inSolid, out, casts);
         break;
+      case NodeKind::Light:
+        break;  // placed by placeLights, not built
       case NodeKind::Union: {
         std::vector<std::unique_ptr<Shape>> children;
         std::vector<char> childCasts;
