@@ -11,10 +11,12 @@
 
 namespace lucent {
 
-// <render>, <camera>, <light> (render_parser.cpp, camera_parser.cpp, light_parser.cpp).
+// <render>, <camera> (render_parser.cpp, camera_parser.cpp).
 void parseRender(ElementReader& r);
 void parseCamera(ElementReader& r);
-void parseLight(ElementReader& r);
+// light_parser.cpp: a <light>, wherever it stands, as a node (parseGeometryNode reads
+// lights too, through it). Null if too deep or over the expansion limit (reported).
+std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, int depth);
 // fog_parser.cpp: the scene's <fog> (at most one).
 void parseFog(ElementReader& r);
 
@@ -29,7 +31,8 @@ void parseSky(ElementReader& r);
 // The index of the material named by a material="id" attribute, with did-you-mean.
 std::optional<uint32_t> lookupMaterial(ElementReader& r, const char* attr);
 
-// geometry_parser.cpp: every geometry element, groups, CSG operations and <use>.
+// geometry_parser.cpp: every geometry element, groups, CSG operations and <use>, and the
+// lights among them.
 bool isGeometryElement(std::string_view name);
 const std::vector<std::string_view>& geometryElementNames();
 // Null if the element is too deep (reported). Errors inside still yield a node, marked
@@ -38,6 +41,8 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
                                         pugi::xml_node element, int depth);
 // <defs>: its children go to scene.defs.
 void parseDefs(ElementReader& r);
+// The node's id attribute, registered for <use ref> (a duplicate is an error naming the first).
+void registerNodeId(ElementReader& r, Node& node);
 
 // shape_parser.cpp: the parameters of one shape element ("sphere", ...), read through the
 // shape registry. Returns nothing when the element is not a shape. Errors are reported

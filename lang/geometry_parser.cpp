@@ -31,7 +31,7 @@ const GroupEntry* findGroup(std::string_view name) {
   return nullptr;
 }
 
-const std::vector<std::string_view> kTopLevelOnly{"render", "camera", "light", "defs", "include", "animation", "fog"};
+const std::vector<std::string_view> kTopLevelOnly{"render", "camera", "defs", "include", "animation", "fog"};
 
 // A child element that is not allowed where it stands: say where it belongs, or suggest
 // the closest allowed name.
@@ -43,6 +43,9 @@ void reportUnexpectedChild(ElementReader& parent, pugi::xml_node child,
   if (topLevel)
     c.error("<" + std::string(name) + "> is not allowed inside " + parent.tag() +
             "; it belongs at the top level of <scene>");
+  else if (name == "light")
+    c.error("<light> is not allowed inside " + parent.tag() +
+            "; a light stands at the top level or in a group, CSG operation, <defs>, <repeat> or <if>");
   else if (isGeometryElement(name) || name == "material")
     c.error("<" + std::string(name) + "> is not allowed inside " + parent.tag());
   else if (std::string pov = povrayElementHint(parent.name(), name); !pov.empty())
@@ -68,7 +71,9 @@ void readNodeMaterial(ElementReader& r, Node& node, pugi::xml_node inlineMateria
   }
 }
 
-void registerId(ElementReader& r, Node& node) {
+}  // namespace
+
+void registerNodeId(ElementReader& r, Node& node) {
   auto id = r.text("id");
   if (!id) return;
   if (!isValidId(*id)) {
@@ -90,13 +95,33 @@ void registerId(ElementReader& r, Node& node) {
   }
 }
 
+namespace {
+
+// shadows="false" on a part of a merge, intersection or difference changes nothing: the
+// operation casts its shadow as a whole, as in POV-Ray (whose no_shadow there counts on
+// the whole object only). Nested operations have warned about their own parts.
+void warnShadowlessOperands(ParseContext& ctx, const Node& csg) {
+  std::vector<const Node*> stack;
+  for (const auto& c : csg.children) stack.push_back(c.get());
+  while (!stack.empty()) {
+    const Node* n = stack.back();
+    stack.pop_back();
+    if (!n->shadows)
+      ctx.diags.warning(n->loc, "<" + n->element + "> shadows=\"false\" has no effect inside <" + csg.element +
+                                    "> (at " + csg.loc.str() + "), which casts its shadow as a whole, as in "
+                                    "POV-Ray; put shadows=\"false\" on the <" + csg.element + ">");
+    if (n->kind == NodeKind::Group || n->kind == NodeKind::Union)
+      for (const auto& c : n->children) stack.push_back(c.get());
+  }
+}
+
 // The attributes a geometry element accepts, made once per element name (a scene of a
 // million spheres reads them a million times).
 const std::vector<std::string_view>& nodeAttributes(std::string_view element) {
   static std::unordered_map<std::string_view, std::vector<std::string_view>> cache;
   auto it = cache.find(element);
   if (it != cache.end()) return it->second;
-  std::vector<std::string_view> allowed{"id", "transform", "material"};
+  std::vector<std::string_view> allowed{"id", "transform", "material", "shadows"};
   if (element == "use") allowed.push_back("ref");
   for (auto a : shapeAttributes(element)) allowed.push_back(a);
   // The key must outlive the call: the registry's and this file's names are static.
@@ -127,6 +152,7 @@ bool isGeometryElement(std::string_view name) {
 
 std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& file, pugi::xml_node element,
                                         int depth) {
+  if (std::string_view(element.name()) == "light") return parseLightNode(ctx, file, element, depth);
   ElementReader r(ctx, file, element);
   if (depth > kMaxElementDepth) {
     r.error("elements nest deeper than " + std::to_string(kMaxElementDepth) + " levels here");
@@ -143,8 +169,9 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
   bool isUse = name == "use";
   r.checkAttributes(nodeAttributes(name));
 
-  registerId(r, *node);
+  registerNodeId(r, *node);
   node->parentFromNode = r.transform("transform");
+  node->shadows = r.boolean("shadows", true);
 
   // Children: geometry (groups and CSG only) and at most one inline <material>.
   pugi::xml_node inlineMaterial;
@@ -157,12 +184,13 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
         return;
       }
       inlineMaterial = c;
-    } else if (group && isGeometryElement(cn)) {
+    } else if (group && (isGeometryElement(cn) || cn == "light")) {
       if (auto child = parseGeometryNode(ctx, file, c, depth + 1)) node->children.push_back(std::move(child));
     } else {
       std::vector<std::string_view> childNames{"material", "param"};
       if (group) {
         childNames.insert(childNames.end(), geometryElementNames().begin(), geometryElementNames().end());
+        childNames.push_back("light");
         childNames.push_back("repeat");
         childNames.push_back("if");
       }
@@ -180,8 +208,12 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
 
   if (group) {
     node->kind = group->kind;
-    if (node->isCsg() && node->children.empty() && !r.failed())
+    if (node->isCsg() && !r.failed() &&
+        std::all_of(node->children.begin(), node->children.end(), [](const auto& c) { return c->isLight(); }))
       r.error(r.tag() + " needs at least one child shape");
+    if (node->kind == NodeKind::Merge || node->kind == NodeKind::Intersection ||
+        node->kind == NodeKind::Difference)
+      warnShadowlessOperands(ctx, *node);
   } else if (isUse) {
     node->kind = NodeKind::Use;
     if (!r.has("ref")) {
@@ -207,7 +239,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
 void parseDefs(ElementReader& r) {
   r.checkAttributes({});
   forEachExpandedChild(r, 2, [&](pugi::xml_node c) {
-    if (!isGeometryElement(c.name())) {
+    if (!isGeometryElement(c.name()) && std::string_view(c.name()) != "light") {
       reportUnexpectedChild(r, c, geometryElementNames());
       return;
     }

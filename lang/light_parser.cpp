@@ -1,7 +1,10 @@
 // <light> (contract, "<light>"): point (default), directional, spot and area lights.
-// Every light has color (1), intensity (1) and shadows (true); directions are normalised.
-// An attribute of another light type is an error that says which type it belongs to.
+// Every light has color (1), intensity (1), shadows (true), id and transform; directions
+// are normalised. An attribute of another light type is an error that says which type it
+// belongs to. A light is a node of the hierarchy (NodeKind::Light) wherever it stands, in
+// its parent's frame; placeLights puts the scene's lights in the world once it is read.
 #include "element_parsers.h"
+#include "expansion.h"
 
 #include <fmt/format.h>
 
@@ -39,12 +42,24 @@ const char* typeName(LightType t) {
 
 }  // namespace
 
-void parseLight(ElementReader& r) {
+std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, int depth) {
+  ElementReader r(ctx, file, element);
+  if (depth > kMaxElementDepth) {
+    r.error("elements nest deeper than " + std::to_string(kMaxElementDepth) + " levels here");
+    return nullptr;
+  }
+  if (!countNode(ctx)) return nullptr;
+  LocalScope scope(ctx, file, element);
+  auto node = std::make_unique<Node>();
+  node->kind = NodeKind::Light;
+  node->element = "light";
+  node->loc = r.loc();
+
   Light light;
   light.loc = r.loc();
   light.type = r.choice("type", LightType::Point, kLightTypes);
 
-  std::vector<std::string_view> allowed{"type", "color", "intensity", "shadows"};
+  std::vector<std::string_view> allowed{"type", "color", "intensity", "shadows", "id", "transform"};
   for (auto a : typeAttributes(light.type)) allowed.push_back(a);
   r.checkAttributes(allowed, [&](std::string_view attr) -> std::string {
     for (const auto& [name, type] : kLightTypes)
@@ -55,6 +70,8 @@ void parseLight(ElementReader& r) {
     return {};
   });
 
+  registerNodeId(r, *node);
+  node->parentFromNode = r.transform("transform");
   light.color = r.color("color", light.color);
   light.intensity = r.number("intensity", light.intensity, NumberRule::nonNegative());
   light.shadows = r.boolean("shadows", light.shadows);
@@ -130,7 +147,9 @@ void parseLight(ElementReader& r) {
     if (std::string_view(n.name()) == "param") return;  // a local parameter (the caller's LocalScope)
     ElementReader(r.ctx(), r.file(), n).error("<light> takes no child elements but <param>, got <" + std::string(n.name()) + ">");
   });
-  r.ctx().scene.lights.push_back(light);
+  node->light = std::make_unique<Light>(light);
+  if (r.failed()) ctx.broken.insert(node.get());
+  return node;
 }
 
 }  // namespace lucent

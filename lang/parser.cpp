@@ -11,6 +11,9 @@
 #include "povray_names.h"
 #include "scene_loader.h"
 
+#include "scenegraph/light_placement.h"
+#include "scenegraph/located_error.h"
+
 #include <algorithm>
 #include <optional>
 #include <unordered_map>
@@ -34,13 +37,9 @@ const std::vector<std::string_view>& topLevelElementNames() {
 // An element inside a top-level <repeat> or <if>: a geometry node or a light.
 void readRepeated(ParseContext& ctx, const SourceFile& file, pugi::xml_node element) {
   std::string_view name = element.name();
-  if (isGeometryElement(name)) {
-    if (auto node = parseGeometryNode(ctx, file, element, 2)) ctx.scene.root->children.push_back(std::move(node));
-  } else if (name == "light") {
-    if (!countNode(ctx)) return;
-    ElementReader r(ctx, file, element);
-    LocalScope scope(ctx, file, element);
-    parseLight(r);
+  if (isGeometryElement(name) || name == "light") {
+    Node& parent = name == "light" ? *ctx.scene.lightRoot : *ctx.scene.root;
+    if (auto node = parseGeometryNode(ctx, file, element, 2)) parent.children.push_back(std::move(node));
   } else {
     ElementReader(ctx, file, element)
         .error("<" + std::string(name) + "> is not allowed inside <repeat> or <if>; at the top level they hold "
@@ -61,16 +60,12 @@ void readTopLevel(ParseContext& ctx, const TopLevelItem& item) {
   }
   if (name == "render") parseRender(r);
   else if (name == "fog") parseFog(r);
-  else if (name == "light") {
-    LocalScope scope(ctx, *item.file, item.element);
-    parseLight(r);
-  }
   else if (name == "camera") parseCamera(r);
   else if (name == "sky") parseSky(r);
   else if (name == "defs") parseDefs(r);
-  else if (isGeometryElement(name)) {
-    if (auto node = parseGeometryNode(ctx, *item.file, item.element, 1))
-      ctx.scene.root->children.push_back(std::move(node));
+  else if (isGeometryElement(name) || name == "light") {
+    Node& parent = name == "light" ? *ctx.scene.lightRoot : *ctx.scene.root;
+    if (auto node = parseGeometryNode(ctx, *item.file, item.element, 1)) parent.children.push_back(std::move(node));
   } else if (name == "checker" || name == "image" || name == "pattern" || name == "hexagon" ||
              name == "brick") {
     r.error("<" + std::string(name) + "> is a texture: it goes inside a <material>");
@@ -122,6 +117,13 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
       parseNamedMaterials(ctx, loader.items());
       for (const TopLevelItem& item : loader.items()) readTopLevel(ctx, item);
       resolveReferences(ctx);
+      if (!diags.hasErrors()) {
+        try {
+          scene->lights = placeLights(*scene, static_cast<size_t>(kMaxExpandedNodes));
+        } catch (const LocatedError& e) {
+          diags.error(e.loc(), e.message());
+        }
+      }
       if (scene->cameras.empty()) {
         const SourceFile& topFile = *loader.files().front();
         diags.error(topFile.loc(topFile.root()), "the scene has no <camera> (at least one is required)");

@@ -68,6 +68,7 @@ const std::vector<PovWord> kAttributes{
     {"normal", "bump_size", "'depth'"},
     {"normal", "noise_generator", "'noise-generator'"},
     {"brick", "brick_size", "'size'"},
+    {kOnShape, "no_shadow", "shadows=\"false\""},
     {kOnShape, "translate", "transform=\"translate(x y z)\""},
     {kOnShape, "rotate", "transform=\"rotate-x(degrees) ...\""},
     {kOnShape, "scale", "transform=\"scale(s)\""},
@@ -95,7 +96,7 @@ const std::vector<PovWord> kElements{
     {kOnShape, "texture", "<material>"},
     {kOnShape, "pigment", "<material>"},
     {kOnShape, "finish", "<material>"},
-    {kOnShape, "light_source", "<light>, at the top level of <scene>"},
+    {kOnShape, "light_source", "<light>"},
 };
 
 std::string hint(std::string_view word, std::string_view lucent) {

@@ -118,7 +118,8 @@ const Node* findNonSolid(const ParseContext& ctx, const Node& n) {
     case NodeKind::Use: return n.target && !ctx.broken.count(&n) ? findNonSolid(ctx, *n.target) : nullptr;
     case NodeKind::Merge:
     case NodeKind::Intersection:
-    case NodeKind::Difference: return nullptr;
+    case NodeKind::Difference:
+    case NodeKind::Light: return nullptr;  // a light is no operand: it neither adds nor spoils
     case NodeKind::Union:
     case NodeKind::Group:
       if (n.children.empty()) return &n;

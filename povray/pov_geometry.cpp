@@ -53,6 +53,7 @@ int PovGeometry::operandCount(const Node& node) const {
     }
     case NodeKind::Use: return node.target ? operandCount(*node.target) : 0;
     case NodeKind::Shape: return 1;
+    case NodeKind::Light: return 0;
     default: {
       int n = 0;
       for (const auto& c : node.children) n += operandCount(*c);
@@ -65,31 +66,41 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
                             bool topLevel, PovWriter& out) {
   const Mat4 m = fromContext * node.parentFromNode;
   const uint32_t material = node.material.value_or(inherited);
+  // The flags of the enclosing writes, restored on return.
+  const bool outerShadowless = shadowless_, outerIgnore = ignoreOwnShadows_, outerInSolid = inWrittenSolid_;
+  if (!ignoreOwnShadows_ && !node.shadows) shadowless_ = true;
+  const bool solid = node.kind == NodeKind::Merge || node.kind == NodeKind::Intersection ||
+                     node.kind == NodeKind::Difference;
   switch (node.kind) {
     case NodeKind::Group:
       for (const auto& c : node.children) writeNode(*c, m, material, topLevel, out);
-      return;
+      break;
     case NodeKind::Use:
       // The referenced node's own transform applies first, then the <use>'s.
       if (node.target) writeNode(*node.target, m, material, topLevel, out);
-      return;
+      break;
     case NodeKind::Shape:
       writeLeaf(node, m, material, topLevel, out);
-      return;
+      break;
+    case NodeKind::Light:
+      break;  // written with the lights, placed in the world (Scene::lights)
     case NodeKind::Union:
     case NodeKind::Merge:
     case NodeKind::Intersection:
     case NodeKind::Difference: {
       int operands = 0;
       for (const auto& c : node.children) operands += operandCount(*c);
-      if (operands == 0) return;
+      if (operands == 0) break;
+      if (solid) ignoreOwnShadows_ = true;
       if (operands == 1) {
         // One operand is the operand itself (POV-Ray would warn about a one-object CSG).
         for (const auto& c : node.children) writeNode(*c, m, material, false, out);
-        return;
+        break;
       }
       warnCoincidentSurfaces(node, issues_);
       out.open(csgKeyword(node.kind), "<" + node.element + "> " + node.loc.str());
+      const bool markHere = solid && shadowless_ && !inWrittenSolid_;
+      if (solid) inWrittenSolid_ = true;
       // A union keeps every operand's surfaces, each its own object to POV-Ray as to
       // Lucent: only the solid operations share one interior (see the header).
       const std::optional<uint32_t> outer = csgInterior_;
@@ -100,10 +111,14 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
       if (share) materials_.writeInteriorFor(material, out);
       csgInterior_ = outer;
       if (!isIdentity(m)) out.line(povMatrix(m));
+      if (markHere) out.line("no_shadow");
       out.close();
-      return;
+      break;
     }
   }
+  shadowless_ = outerShadowless;
+  ignoreOwnShadows_ = outerIgnore;
+  inWrittenSolid_ = outerInSolid;
 }
 
 std::string PovGeometry::meshName(const MeshSpec& mesh, const Node& node) {
@@ -229,12 +244,14 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
       out.close();
     }
     if (!isIdentity(m)) out.line(povMatrix(m));
+    if (shadowless_ && !inWrittenSolid_) out.line("no_shadow");
     out.close();
     return;
   }
   writeShapeHead(node, m, material, topLevel, out);
   materials_.writeFor(material, *node.shape, node.loc, out, issues_, csgInterior_ != material);
   if (!isIdentity(m)) out.line(povMatrix(m));
+  if (shadowless_ && !inWrittenSolid_) out.line("no_shadow");
   out.close();
 }
 

@@ -13,6 +13,9 @@
 // leaving by the interior a ray carries, so a ray entering a lens through one sphere and
 // leaving through the other must meet the same interior (with one per leaf it takes the
 // exit for an entry into a second glass and does not bend there; Lucent bends there).
+// shadows="false" is POV-Ray's no_shadow on each leaf (POV-Ray splits unions into their
+// children, so a union's parts keep their own) or on the whole merge, intersection or
+// difference, whose parts' no_shadow POV-Ray ignores.
 #pragma once
 
 #include "pov_materials.h"
@@ -59,6 +62,13 @@ class PovGeometry {
   // The material whose interior the enclosing merge, intersection or difference holds:
   // leaves of that material leave theirs out, so POV-Ray sees one shared interior.
   std::optional<uint32_t> csgInterior_;
+  // shadows="false" as no_shadow, as the World reads it: `shadowless_` is inherited by
+  // the node being written; inside a merge, intersection or difference the parts' own
+  // flags are ignored (`ignoreOwnShadows_`), and a written one carries no_shadow itself
+  // (`inWrittenSolid_`: its parts write none).
+  bool shadowless_ = false;
+  bool ignoreOwnShadows_ = false;
+  bool inWrittenSolid_ = false;
 };
 
 // Should a top-level plane be written facing the other way because the camera is inside

@@ -41,6 +41,7 @@ bool contains(const Node& node, const Transform& parentWorld, const Vec3& p) {
       }
     }
     case NodeKind::Use: return node.target && contains(*node.target, *world, p);
+    case NodeKind::Light: return false;
     case NodeKind::Group:
     case NodeKind::Union:
     case NodeKind::Merge:

@@ -12,6 +12,7 @@ const char* nodeKindName(NodeKind k) {
     case NodeKind::Intersection: return "intersection";
     case NodeKind::Difference: return "difference";
     case NodeKind::Use: return "use";
+    case NodeKind::Light: return "light";
   }
   return "?";
 }
@@ -27,8 +28,9 @@ bool Node::isSolid() const {
     case NodeKind::Group:
       if (children.empty()) return false;
       for (const auto& c : children)
-        if (!c->isSolid()) return false;
+        if (!c->isLight() && !c->isSolid()) return false;
       return true;
+    case NodeKind::Light: return false;
   }
   return false;
 }

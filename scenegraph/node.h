@@ -1,7 +1,8 @@
-// Nodes of the scene graph: shapes, groups, CSG operations and <use> references, each with
-// its local transform (parentFromNode) and, optionally, its own material.
+// Nodes of the scene graph: shapes, groups, CSG operations, <use> references and lights,
+// each with its local transform (parentFromNode) and, optionally, its own material.
 #pragma once
 
+#include "light.h"
 #include "shape_spec.h"
 #include "source_loc.h"
 
@@ -14,7 +15,7 @@
 
 namespace lucent {
 
-enum class NodeKind { Shape, Group, Union, Merge, Intersection, Difference, Use };
+enum class NodeKind { Shape, Group, Union, Merge, Intersection, Difference, Use, Light };
 
 const char* nodeKindName(NodeKind k);  // "shape", "group", "union", ...
 
@@ -26,17 +27,30 @@ struct Node {
 
   Mat4 parentFromNode{1.0};  // the node's own transform, in the order written
   std::optional<uint32_t> material;  // index into Scene::materials; none: inherit
+  // shadows="false": the node and everything under it cast no shadow (POV-Ray's no_shadow).
+  // Inside a merge, intersection or difference only the whole operation's counts, as in
+  // POV-Ray (World splits a union whose children differ, as POV-Ray splits its unions).
+  bool shadows = true;
 
   std::optional<ShapeSpec> shape;             // kind == Shape
   std::vector<std::unique_ptr<Node>> children;  // groups and CSG operations
   const Node* target = nullptr;                 // kind == Use: the referenced node
+  // kind == Light: the light in the node's own frame; Scene::lights holds it placed in the
+  // world, once for every path from the root to it (scenegraph/light_placement.h). A light
+  // is no operand: groups and CSG operations build their geometry without it.
+  std::unique_ptr<Light> light;
 
   bool isCsg() const {
     return kind == NodeKind::Union || kind == NodeKind::Merge ||
            kind == NodeKind::Intersection || kind == NodeKind::Difference;
   }
   // Does the node enclose a volume, so it may be an operand of merge/intersection/difference?
+  // Lights among a group's children do not count either way.
   bool isSolid() const;
+  // A light, or a <use> of one.
+  bool isLight() const {
+    return kind == NodeKind::Light || (kind == NodeKind::Use && target && target->kind == NodeKind::Light);
+  }
 };
 
 }  // namespace lucent

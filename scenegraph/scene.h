@@ -37,12 +37,16 @@ struct Scene {
   double clock = 0.0;  // its clock
   RenderSettings render;
   std::vector<Camera> cameras;  // at least one
-  std::vector<Light> lights;
+  std::vector<Light> lights;  // in world space: what the renderer and the exporter read
   std::optional<Fog> fog;  // <fog>, at most one
   // Index 0 is the default material (diffuse 0.8) for shapes with none at all.
   std::vector<Material> materials{Material::defaultMaterial()};
   // The top-level geometry: a group with identity transform. <defs> are not under it.
   std::unique_ptr<Node> root = std::make_unique<Node>();
+  // The top-level lights (and those of top-level <repeat>s and <if>s), as light nodes of a
+  // group with identity transform beside root; lights in the hierarchy are under root or
+  // in defs. Scene::lights holds them all placed in the world (light_placement.h).
+  std::unique_ptr<Node> lightRoot = std::make_unique<Node>();
   // Nodes declared in <defs>: instantiated only through <use>.
   std::vector<std::unique_ptr<Node>> defs;
   // <sky>, if the scene has one.

@@ -61,6 +61,7 @@ class Expander {
 };
 
 void countNodes(const Node& n, std::map<std::string, int>& out) {
+  if (n.kind == NodeKind::Light) return;  // counted among the lights, where they are placed
   ++out[n.element];
   for (const auto& c : n.children) countNodes(*c, out);
 }

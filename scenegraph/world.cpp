@@ -10,8 +10,10 @@
 #include "primitives/sphere_image.h"
 #include "primitives/test_counts.h"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace lucent {
 
@@ -94,10 +96,14 @@ struct Builder {
   std::unordered_map<const Node*, std::shared_ptr<const Shape>> shapes;
   std::vector<const Instance*>& instances;
 
-  void add(const Node& node, const Transform& parentWorld, uint32_t inherited,
-           std::vector<std::unique_ptr<Shape>>& out) {
+  // Adds the node's objects to `out`, each with whether it casts shadows in `casts`.
+  // `inSolid`: the node is (inside) an operand of a merge, intersection or difference,
+  // whose shadow is the whole operation's: the flags of its parts are not consulted.
+  void add(const Node& node, const Transform& parentWorld, uint32_t inherited, bool castsAbove,
+           bool inSolid, std::vector<std::unique_ptr<Shape>>& out, std::vector<char>& casts) {
     Transform world = nodeWorld(node, parentWorld);
     uint32_t material = node.material.value_or(inherited);
+    const bool castsShadow = inSolid || (castsAbove && node.shadows);
 
     switch (node.kind) {
       case NodeKind::Shape: {
@@ -112,23 +118,50 @@ struct Builder {
         auto inst = std::make_unique<Instance>(std::move(shape), world, material, node.shape->index());
         instances.push_back(inst.get());
         out.push_back(std::move(inst));
+        casts.push_back(castsShadow);
         break;
       }
       case NodeKind::Group:
-        for (const auto& c : node.children) add(*c, world, material, out);
+        for (const auto& c : node.children) add(*c, world, material, castsShadow, inSolid, out, casts);
         break;
       case NodeKind::Use:
         // The referenced node's own transform applies first, then the <use>'s.
-        add(*node.target, world, material, out);
+        add(*node.target, world, material, castsShadow, inSolid, out, casts);
         break;
-      case NodeKind::Union:
+      case NodeKind::Light:
+        break;  // placed by placeLights, not built
+      case NodeKind::Union: {
+        std::vector<std::unique_ptr<Shape>> children;
+        std::vector<char> childCasts;
+        for (const auto& c : node.children) add(*c, world, material, castsShadow, inSolid, children, childCasts);
+        if (children.empty()) break;
+        const bool mixed =
+            std::any_of(childCasts.begin(), childCasts.end(), [&](char c) { return c != childCasts.front(); });
+        if (!mixed) {
+          out.push_back(std::make_unique<CsgNode>(CsgOp::Union, std::move(children)));
+          casts.push_back(childCasts.front());
+          break;
+        }
+        // Some children cast shadows and some do not: two unions, which together show and
+        // hold the same as one (POV-Ray splits every union into its children).
+        for (char flag : {char(1), char(0)}) {
+          std::vector<std::unique_ptr<Shape>> part;
+          for (size_t i = 0; i < children.size(); ++i)
+            if (childCasts[i] == flag) part.push_back(std::move(children[i]));
+          out.push_back(std::make_unique<CsgNode>(CsgOp::Union, std::move(part)));
+          casts.push_back(flag);
+        }
+        break;
+      }
       case NodeKind::Merge:
       case NodeKind::Intersection:
       case NodeKind::Difference: {
         std::vector<std::unique_ptr<Shape>> children;
-        for (const auto& c : node.children) add(*c, world, material, children);
-        if (!children.empty())
-          out.push_back(std::make_unique<CsgNode>(csgOpOf(node.kind), std::move(children)));
+        std::vector<char> ignored;
+        for (const auto& c : node.children) add(*c, world, material, true, true, children, ignored);
+        if (children.empty()) break;
+        out.push_back(std::make_unique<CsgNode>(csgOpOf(node.kind), std::move(children)));
+        casts.push_back(castsShadow);
         break;
       }
     }
@@ -143,7 +176,12 @@ World::World(const Scene& scene) : World(scene, makeShape) {}
 
 World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   Builder b{make, hasUses(scene), {}, instances_};
-  b.add(*scene.root, Transform(), 0, objects_);
+  std::vector<char> casts;
+  b.add(*scene.root, Transform(), 0, true, false, objects_, casts);
+  // The objects that cast no shadow (shadows="false").
+  std::unordered_set<const Shape*> shadowless;
+  for (size_t i = 0; i < objects_.size(); ++i)
+    if (!casts[i]) shadowless.insert(objects_[i].get());
 
   std::vector<Shape*> bounded;
   for (const auto& o : objects_) {
@@ -219,20 +257,28 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   for (uint32_t i = 0; i < every.size(); ++i) every[i] = i;
   fill(all_, every);
 
-  // The objects that may transmit, each tested as all_ tests it (one by one, or in a
-  // tree as the same kind of leaf), so that a walk through them finds the same hits.
-  auto mayTransmit = [&](const Shape* o) { return transmitsLight(*o, scene_.materials); };
+  // The objects that may transmit and cast shadows, each tested as all_ tests it (one by
+  // one, or in a tree as the same kind of leaf), so that a walk through them finds the
+  // same hits.
+  auto castsNone = [&](const Shape* o) { return shadowless.count(o) != 0; };
+  auto mayTransmit = [&](const Shape* o) { return !castsNone(o) && transmitsLight(*o, scene_.materials); };
   std::vector<uint32_t> clear;
   for (uint32_t i = 0; i < bounded.size(); ++i)
     if (mayTransmit(bounded[i])) clear.push_back(i);
   for (const Shape* o : all_.direct)
     if (mayTransmit(o)) transmissive_.direct.push_back(o);
-  if (clear.empty() && transmissive_.direct.empty()) return;
-  fill(transmissive_, clear);
-  transmissive_.linearSearch = kLinearTransmissive;
-  transmits_.reserve(all_.direct.size() + all_.leafObjects.size());
-  for (const Shape* o : all_.direct) transmits_.push_back(mayTransmit(o));
-  for (const Shape* o : all_.leafObjects) transmits_.push_back(mayTransmit(o));
+  anyShadowless_ = !shadowless.empty();
+  if (clear.empty() && transmissive_.direct.empty() && !anyShadowless_) return;
+  if (!clear.empty() || !transmissive_.direct.empty()) {
+    fill(transmissive_, clear);
+    transmissive_.linearSearch = kLinearTransmissive;
+  }
+  auto flags = [&](const Shape* o) {
+    return static_cast<uint8_t>((mayTransmit(o) ? kTransmits : 0) | (castsNone(o) ? kShadowless : 0));
+  };
+  skip_.reserve(all_.direct.size() + all_.leafObjects.size());
+  for (const Shape* o : all_.direct) skip_.push_back(flags(o));
+  for (const Shape* o : all_.leafObjects) skip_.push_back(flags(o));
 }
 
 namespace {
@@ -322,20 +368,21 @@ bool World::Objects::slotOccluded(uint32_t slot, const Ray& ray) const {
 bool World::occluded(const Ray& ray) const { return occluder(ray) != kNoObject; }
 
 World::ObjectId World::occluder(const Ray& ray, ObjectId first) const {
-  return findOccluder<false>(ray, first);
+  if (!anyShadowless_) return findOccluder<0>(ray, first);
+  return findOccluder<kShadowless>(ray, first);
 }
 
 World::ObjectId World::opaqueOccluder(const Ray& ray, ObjectId first) const {
-  if (transmits_.empty()) return occluder(ray, first);
-  return findOccluder<true>(ray, first);
+  if (skip_.empty()) return findOccluder<0>(ray, first);
+  return findOccluder<kTransmits | kShadowless>(ray, first);
 }
 
-template <bool kOpaqueOnly>
+template <uint8_t kSkip>
 World::ObjectId World::findOccluder(const Ray& ray, ObjectId first) const {
-  const std::integral_constant<bool, kOpaqueOnly> opaqueOnly;
+  const std::integral_constant<uint8_t, kSkip> skipped;
   const auto& direct = all_.direct;
   const auto directCount = static_cast<ObjectId>(direct.size());
-  if (first != kNoObject && !skips(first, opaqueOnly) &&
+  if (first != kNoObject && !skips(first, skipped) &&
       (first < directCount ? direct[first]->occluded(ray)
                            : all_.slotOccluded(first - directCount, ray)))
     return first;
@@ -347,7 +394,7 @@ World::ObjectId World::findOccluder(const Ray& ray, ObjectId first) const {
   auto blocks = [&](uint32_t slot, const Ray& r) {
     const ObjectId id = directCount + slot;
     // `first` missed already
-    if (id == first || skips(id, opaqueOnly) || !all_.slotOccluded(slot, r)) return false;
+    if (id == first || skips(id, skipped) || !all_.slotOccluded(slot, r)) return false;
     found = id;
     return true;
   };
@@ -355,7 +402,7 @@ World::ObjectId World::findOccluder(const Ray& ray, ObjectId first) const {
                [this](uint32_t first, uint32_t count) { all_.prefetchLeaves(first, count); });
   if (found != kNoObject) return found;
   for (ObjectId k = 0; k < directCount; ++k)
-    if (k != first && !skips(k, opaqueOnly) && direct[k]->occluded(ray)) return k;
+    if (k != first && !skips(k, skipped) && direct[k]->occluded(ray)) return k;
   return kNoObject;
 }
 

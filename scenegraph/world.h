@@ -43,6 +43,8 @@ class World {
   const std::vector<const Instance*>& instances() const { return instances_; }
 
   bool intersect(const Ray& ray, Hit& hit) const;
+  // Whether an object that casts shadows crosses the ray (objects of shadows="false"
+  // nodes are not asked, here and in every shadow query below).
   bool occluded(const Ray& ray) const;
 
   // A top-level object as occluder() names it: an index into directObjects(), then into
@@ -61,7 +63,8 @@ class World {
   const Shape* object(ObjectId id) const;
 
   // For shadow rays in scenes with transmissive materials. An object "may transmit" when
-  // one of its leaves has a transmissive material. opaqueOccluder() is occluder() over
+  // one of its leaves has a transmissive material and it casts shadows (the shadow
+  // queries skip every object built from shadows="false" nodes). opaqueOccluder() is occluder() over
   // the other objects only: one of them in the way blocks the light whatever else the ray
   // crosses. intersectTransmissive() is intersect() over the objects that may transmit
   // only, with the same tests and so the same hits to the last bit: a shadow ray that no
@@ -112,15 +115,21 @@ class World {
   };
   Objects all_;
   Objects transmissive_;  // the objects of all_ that may transmit, tested as all_ tests them
-  // Per ObjectId of all_: 1 if the object may transmit. Empty in an opaque scene.
-  std::vector<uint8_t> transmits_;
+  // Per ObjectId of all_: kTransmits if the object may transmit (and casts shadows),
+  // kShadowless if it casts none (shadows="false"). Empty when no object is either.
+  static constexpr uint8_t kTransmits = 1, kShadowless = 2;
+  std::vector<uint8_t> skip_;
+  bool anyShadowless_ = false;
   size_t inlineSpheres_ = 0;
 
-  // occluder(), skipping the objects that may transmit when kOpaqueOnly.
-  template <bool kOpaqueOnly>
+  // occluder(), skipping the objects with a flag of kSkip.
+  template <uint8_t kSkip>
   ObjectId findOccluder(const Ray& ray, ObjectId first) const;
-  bool skips(ObjectId id, std::true_type) const { return transmits_[id] != 0; }
-  bool skips(ObjectId, std::false_type) const { return false; }
+  template <uint8_t kSkip>
+  bool skips(ObjectId id, std::integral_constant<uint8_t, kSkip>) const {
+    if constexpr (kSkip == 0) return false;
+    else return (skip_[id] & kSkip) != 0;
+  }
 };
 
 }  // namespace lucent

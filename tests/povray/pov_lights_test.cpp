@@ -148,3 +148,13 @@ TEST_CASE("a light without shadows is shadowless, with a warning when highlights
   CHECK(shiny.messages() == "test.xml:3:1: warning: point light with shadows=\"false\": "
                             "POV-Ray's shadowless lights give no specular highlights\n");
 }
+
+TEST_CASE("a light in the hierarchy is written where it is placed in the world", "[povray][lights]") {
+  Exported e = exportScene(R"XML(
+    <defs><group id="lamp"><light type="spot" position="0 2 0" direction="1 0 0" angle="20"/><sphere radius="0.1" center="0 2 0" shadows="false"/></group></defs>
+    <use ref="lamp" transform="rotate-y(90) translate(5 0 0)"/>)XML");
+  REQUIRE(e.pov.ok());
+  // rotate-y(90) turns +x to -z: the spot at (5, 2, 0) points along -z.
+  CHECK(e.has("light_source {\n  <5, 2, 0>\n  color rgb <1, 1, 1>\n  spotlight\n  point_at <5, 2, -1>\n"));
+  CHECK(e.has("no_shadow"));
+}

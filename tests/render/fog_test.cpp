@@ -42,7 +42,7 @@ void checkColor(const Color& got, const Color& want) {
   CHECK(got.b == Approx(want.b).margin(1e-6));
 }
 
-// The ground fog's density at height y (POV-Ray's ascii graph in trace.cpp).
+// The ground fog's density at height y (the graph in POV-Ray's ComputeGroundFogColour).
 double density(const Fog& f, double y) {
   double s = (y - f.offset) / f.altitude;
   return s <= 0.0 ? 1.0 : 1.0 / (1.0 + s * s);
