@@ -67,10 +67,7 @@ void readCone(ElementReader& r, Light& light) {
 
 std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, int depth) {
   ElementReader r(ctx, file, element);
-  if (depth > kMaxElementDepth) {
-    r.error("elements nest deeper than " + std::to_string(kMaxElementDepth) + " levels here");
-    return nullptr;
-  }
+  if (!withinElementDepth(r, depth)) return nullptr;
   if (!countNode(ctx)) return nullptr;
   LocalScope scope(ctx, file, element);
   auto node = std::make_unique<Node>();
