@@ -121,7 +121,7 @@ const std::vector<std::string_view>& nodeAttributes(std::string_view element) {
   static std::unordered_map<std::string_view, std::vector<std::string_view>> cache;
   auto it = cache.find(element);
   if (it != cache.end()) return it->second;
-  std::vector<std::string_view> allowed{"id", "transform", "material", "shadows"};
+  std::vector<std::string_view> allowed{"id", "transform", "material", "shadows", "inverse"};
   if (element == "use") allowed.push_back("ref");
   for (auto a : shapeAttributes(element)) allowed.push_back(a);
   // The key must outlive the call: the registry's and this file's names are static.
@@ -169,6 +169,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
   registerNodeId(r, *node);
   node->parentFromNode = r.transform("transform");
   node->shadows = r.boolean("shadows", true);
+  node->inverse = r.boolean("inverse", false);
 
   // Children: geometry (groups and CSG only) and at most one inline <material>.
   pugi::xml_node inlineMaterial;

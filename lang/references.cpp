@@ -152,6 +152,20 @@ void checkCsgOperands(ParseContext& ctx, const Node& csg) {
   }
 }
 
+// inverse="true" swaps a solid's inside and outside: a surface without one cannot have it.
+void checkInverse(ParseContext& ctx, const Node& n) {
+  if (ctx.broken.count(&n)) return;
+  const Node* leaf = findNonSolid(ctx, n);
+  if (!leaf || ctx.broken.count(leaf)) return;
+  std::string message = "<" + n.element + "> inverse=\"true\" needs a solid: ";
+  if (leaf == &n)
+    message += "it is not one (" + whyNotSolid(*leaf) + ")";
+  else
+    message += "it contains <" + leaf->element + "> at " + leaf->loc.str() + ", which is not a solid (" +
+               whyNotSolid(*leaf) + ")";
+  ctx.diags.error(n.loc, message);
+}
+
 // A <use> with <param>s: its target's element is read again in the scope it was written in,
 // with the <use>'s parameters hiding the target's own, and the copy becomes the <use>'s one
 // child (the <use> turns into a group). Instances may hold more of them: the list grows
@@ -276,10 +290,12 @@ void resolveReferences(ParseContext& ctx) {
     ctx.diags.error(u.refLoc, "<use> attribute 'ref': no node has the id '" + u.ref + "'" + didYouMean(u.ref, ids));
   }
 
-  // 3. merge, intersection and difference combine solids only. Checked in source order.
+  // 3. merge, intersection and difference combine solids only, and only a solid can be
+  // inverse. Checked in source order.
   std::vector<const Node*> csgNodes;
   auto isCsgOperation = [](const Node& n) {
-    return n.kind == NodeKind::Merge || n.kind == NodeKind::Intersection || n.kind == NodeKind::Difference;
+    return n.kind == NodeKind::Merge || n.kind == NodeKind::Intersection || n.kind == NodeKind::Difference ||
+           n.inverse;
   };
   if (ctx.uses.empty()) {
     // Without <use> references the nodes form a tree (no cycles, and no deeper than the
@@ -323,7 +339,11 @@ void resolveReferences(ParseContext& ctx) {
   std::sort(csgNodes.begin(), csgNodes.end(), [](const Node* a, const Node* b) {
     return std::tie(a->loc.file, a->loc.line, a->loc.col) < std::tie(b->loc.file, b->loc.line, b->loc.col);
   });
-  for (const Node* n : csgNodes) checkCsgOperands(ctx, *n);
+  for (const Node* n : csgNodes) {
+    if (n->inverse) checkInverse(ctx, *n);
+    if (n->kind == NodeKind::Merge || n->kind == NodeKind::Intersection || n->kind == NodeKind::Difference)
+      checkCsgOperands(ctx, *n);
+  }
 }
 
 }  // namespace lucent

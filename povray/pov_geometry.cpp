@@ -71,6 +71,23 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
   if (!ignoreOwnShadows_ && !node.shadows) shadowless_ = true;
   const bool solid = node.kind == NodeKind::Merge || node.kind == NodeKind::Intersection ||
                      node.kind == NodeKind::Difference;
+  if (node.inverse) {
+    if ((node.kind == NodeKind::Group || node.kind == NodeKind::Use) && operandCount(node) > 1) {
+      // Several objects inverted as one: POV-Ray's union of them, inverse.
+      const bool inv = !takeInverse();
+      out.open("union", "<" + node.element + "> " + node.loc.str() + " (inverse)");
+      if (node.kind == NodeKind::Group)
+        for (const auto& c : node.children) writeNode(*c, m, material, false, out);
+      else if (node.target)
+        writeNode(*node.target, m, material, false, out);
+      if (inv) out.line("inverse");
+      out.close();
+      shadowless_ = outerShadowless;
+      pendingInverse_ = false;
+      return;
+    }
+    pendingInverse_ = !pendingInverse_;
+  }
   switch (node.kind) {
     case NodeKind::Group:
       for (const auto& c : node.children) writeNode(*c, m, material, topLevel, out);
@@ -98,6 +115,7 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
         break;
       }
       warnCoincidentSurfaces(node, issues_);
+      const bool inv = takeInverse();
       out.open(csgKeyword(node.kind), "<" + node.element + "> " + node.loc.str());
       const bool markHere = solid && shadowless_ && !inWrittenSolid_;
       if (solid) inWrittenSolid_ = true;
@@ -112,6 +130,7 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
       csgInterior_ = outer;
       if (!isIdentity(m)) out.line(povMatrix(m));
       if (markHere) out.line("no_shadow");
+      if (inv) out.line("inverse");
       out.close();
       break;
     }
@@ -119,6 +138,7 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
   shadowless_ = outerShadowless;
   ignoreOwnShadows_ = outerIgnore;
   inWrittenSolid_ = outerInSolid;
+  pendingInverse_ = false;  // an inverse its subtree did not use (no object) ends with it
 }
 
 std::string PovGeometry::meshName(const MeshSpec& mesh, const Node& node) {
@@ -198,10 +218,16 @@ class ShapeOut final : public PovShapeOut {
 }  // namespace
 
 void PovGeometry::writeShapeHead(const Node& node, const Mat4& m, uint32_t material,
-                                 bool topLevel, PovWriter& out) {
+                                 bool topLevel, bool& inverse, PovWriter& out) {
   std::string where = "<" + node.element + "> " + node.loc.str();
   ShapeSpec spec = *node.shape;
   if (const auto* p = std::get_if<PlaneSpec>(&spec)) {
+    // An inverse plane is the plane facing the other way.
+    if (inverse) {
+      spec = PlaneSpec{-p->normal, -p->offset};
+      p = &std::get<PlaneSpec>(spec);
+      inverse = false;
+    }
     // A top-level plane holding the camera is turned inside out (the same surface) unless
     // the camera is meant to be in its medium: POV-Ray would start camera rays inside it.
     const Material& mat = scene_.materials[material];
@@ -217,6 +243,7 @@ void PovGeometry::writeShapeHead(const Node& node, const Mat4& m, uint32_t mater
 
 void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
                             PovWriter& out) {
+  bool inv = takeInverse();
   if (!node.shape) return;
   if (const auto* mesh = std::get_if<MeshSpec>(&*node.shape)) {
     if (!mesh->data || mesh->data->triangles.empty()) {
@@ -245,13 +272,15 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
     }
     if (!isIdentity(m)) out.line(povMatrix(m));
     if (shadowless_ && !inWrittenSolid_) out.line("no_shadow");
+    if (inv) out.line("inverse");
     out.close();
     return;
   }
-  writeShapeHead(node, m, material, topLevel, out);
+  writeShapeHead(node, m, material, topLevel, inv, out);
   materials_.writeFor(material, *node.shape, node.loc, out, issues_, csgInterior_ != material);
   if (!isIdentity(m)) out.line(povMatrix(m));
   if (shadowless_ && !inWrittenSolid_) out.line("no_shadow");
+  if (inv) out.line("inverse");
   out.close();
 }
 

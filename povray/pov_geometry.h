@@ -46,7 +46,7 @@ class PovGeometry {
                  PovWriter& out);
   void writeLeaf(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
                  PovWriter& out);
-  void writeShapeHead(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
+  void writeShapeHead(const Node& node, const Mat4& m, uint32_t material, bool topLevel, bool& inverse,
                       PovWriter& out);
   std::string meshName(const MeshSpec& mesh, const Node& node);
   // Operands a CSG node gets once groups and <use> are flattened.
@@ -69,6 +69,15 @@ class PovGeometry {
   bool shadowless_ = false;
   bool ignoreOwnShadows_ = false;
   bool inWrittenSolid_ = false;
+  // inverse="true" still to be written: by the next object opened (a leaf or a CSG block),
+  // so that a group or <use> of one operand passes it down; two inverses cancel.
+  bool pendingInverse_ = false;
+  // Takes the pending inverse for the object being opened.
+  bool takeInverse() {
+    const bool inv = pendingInverse_;
+    pendingInverse_ = false;
+    return inv;
+  }
 };
 
 // Should a top-level plane be written facing the other way because the camera is inside

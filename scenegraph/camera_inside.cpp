@@ -19,7 +19,15 @@ std::optional<Transform> worldOf(const Node& node, const Transform& parentWorld)
 }
 
 // Is the world point p inside the node, by the shapes' own inside() tests?
+bool containsPlain(const Node& node, const Transform& parentWorld, const Vec3& p);
+
 bool contains(const Node& node, const Transform& parentWorld, const Vec3& p) {
+  const bool in = containsPlain(node, parentWorld, p);
+  return node.inverse ? !in : in;
+}
+
+// The same, the node's own inverse aside.
+bool containsPlain(const Node& node, const Transform& parentWorld, const Vec3& p) {
   auto world = worldOf(node, parentWorld);
   if (!world) return false;
   switch (node.kind) {

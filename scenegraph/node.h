@@ -31,6 +31,9 @@ struct Node {
   // Inside a merge, intersection or difference only the whole operation's counts, as in
   // POV-Ray (World splits a union whose children differ, as POV-Ray splits its unions).
   bool shadows = true;
+  // inverse="true" on a solid: inside and outside swapped (POV-Ray's inverse), built as
+  // csg/inverted.h around the node's geometry.
+  bool inverse = false;
 
   std::optional<ShapeSpec> shape;             // kind == Shape
   std::vector<std::unique_ptr<Node>> children;  // groups and CSG operations

@@ -7,6 +7,7 @@
 #include "primitives/offset.h"
 #include "primitives/quadratic.h"
 #include "primitives/sphere.h"
+#include "csg/inverted.h"
 #include "primitives/sphere_image.h"
 #include "primitives/test_counts.h"
 
@@ -101,6 +102,13 @@ struct Builder {
   // whose shadow is the whole operation's: the flags of its parts are not consulted.
   void add(const Node& node, const Transform& parentWorld, uint32_t inherited, bool castsAbove,
            bool inSolid, std::vector<std::unique_ptr<Shape>>& out, std::vector<char>& casts) {
+    if (node.inverse) addInverted(node, parentWorld, inherited, castsAbove, inSolid, out, casts);
+    else addPlain(node, parentWorld, inherited, castsAbove, inSolid, out, casts);
+  }
+
+  // The node's objects as written, its own inverse aside.
+  void addPlain(const Node& node, const Transform& parentWorld, uint32_t inherited, bool castsAbove,
+                bool inSolid, std::vector<std::unique_ptr<Shape>>& out, std::vector<char>& casts) {
     Transform world = nodeWorld(node, parentWorld);
     uint32_t material = node.material.value_or(inherited);
     const bool castsShadow = inSolid || (castsAbove && node.shadows);
@@ -165,6 +173,21 @@ struct Builder {
         break;
       }
     }
+  }
+
+  // inverse="true": the node's objects as one solid (a union of them when there are
+  // several, unsplit by shadow flags: the inverse of a union is not the union of the
+  // inverses), inside out. It casts shadows as the node says.
+  void addInverted(const Node& node, const Transform& parentWorld, uint32_t inherited, bool castsAbove,
+                   bool inSolid, std::vector<std::unique_ptr<Shape>>& out, std::vector<char>& casts) {
+    std::vector<std::unique_ptr<Shape>> parts;
+    std::vector<char> partCasts;
+    addPlain(node, parentWorld, inherited, castsAbove, inSolid, parts, partCasts);
+    if (parts.empty()) return;
+    std::unique_ptr<Shape> solid = parts.size() == 1 ? std::move(parts.front())
+                                                     : std::make_unique<CsgNode>(CsgOp::Union, std::move(parts));
+    out.push_back(std::make_unique<Inverted>(std::move(solid)));
+    casts.push_back(inSolid || (castsAbove && node.shadows));
   }
 };
 
