@@ -10,6 +10,7 @@
 #include "spawn.h"
 
 #include "csg/csg_node.h"
+#include "csg/inverted.h"
 
 #include <algorithm>
 
@@ -51,7 +52,11 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
 const Material* Tracer::materialOf(const Shape& object) const {
   // A CSG node's medium is its first leaf's material (its surfaces normally share it).
   const Shape* s = &object;
-  while (const auto* csg = dynamic_cast<const CsgNode*>(s)) s = csg->children().front().get();
+  for (;;) {
+    if (const auto* csg = dynamic_cast<const CsgNode*>(s)) s = csg->children().front().get();
+    else if (const auto* inv = dynamic_cast<const Inverted*>(s)) s = &inv->solid();
+    else break;
+  }
   const auto* leaf = dynamic_cast<const Instance*>(s);
   return leaf ? &scene_.materials[leaf->tag()] : nullptr;
 }

@@ -53,6 +53,7 @@ bool transmitsLight(const Shape& object, const std::vector<Material>& materials)
       if (transmitsLight(*c, materials)) return true;
     return false;
   }
+  if (const auto* inv = dynamic_cast<const Inverted*>(&object)) return transmitsLight(inv->solid(), materials);
   const auto* leaf = dynamic_cast<const Instance*>(&object);
   return leaf && materials[leaf->tag()].isTransmissive();
 }

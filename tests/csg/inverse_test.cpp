@@ -143,3 +143,19 @@ TEST_CASE("inverse is exported as POV-Ray's inverse, a plane as the plane turned
   CHECK(count == 3);
   CHECK(out.text.find("<0, -1, 0>, -2") != std::string::npos);  // plane { -y, -2 }: y > 2 inside
 }
+
+TEST_CASE("inverse: a transparent inverse solid filters shadows as the solid does", "[csg][inverse]") {
+  auto sceneWith = [](const char* inverse) {
+    return std::string(R"(<render ambient="0"/><light type="point" position="0 6 0"/>
+      <plane normal="0 1 0" offset="0"><material diffuse="1"/></plane>
+      <sphere center="0 2 0" radius="1" inverse=")") + inverse +
+           R"("><material diffuse="0.1" transmissive="0.5"/></sphere>)";
+  };
+  auto plain = parse(sceneWith("false")), inverted = parse(sceneWith("true"));
+  World wp(*plain), wi(*inverted);
+  // Straight below the ball: the shadow ray crosses its surface twice, 0.5 kept each time.
+  const Ray down(Vec3(0.01, 0.5, 0.02), Vec3(0, -1, 0));
+  const float lit = traceOne(wp, down).r;
+  CHECK(lit > 0.05f);
+  CHECK(traceOne(wi, down).r == Approx(lit).epsilon(1e-6));
+}
