@@ -99,7 +99,7 @@ TEST_CASE("inverse: union and merge with an inverse solid are the inverse of a d
               "<union>" + std::string(kBox) + "<group inverse=\"true\">" + ball(false) + "</group></union>");
 }
 
-TEST_CASE("inverse: alone, the same surface with the normal turned; inverse twice is the solid",
+TEST_CASE("inverse: alone, the same surface with the normal turned, and inverse twice is the solid",
           "[csg][inverse]") {
   auto plain = parse(ball(false)), inverted = parse(ball(true));
   auto twice = parse(R"(<group inverse="true">)" + ball(true) + "</group>");
