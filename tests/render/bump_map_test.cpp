@@ -6,6 +6,7 @@
 #include "lang/parser.h"
 #include "render/bump_map.h"
 #include "render/image_io.h"
+#include "render/image_map_cache.h"
 #include "render/texture.h"
 
 #include <catch2/catch.hpp>
@@ -184,4 +185,19 @@ TEST_CASE("<bump-map> parses: src resolved, depth, one normal perturbation per m
   CHECK_FALSE(material("c").bumpMap);
   REQUIRE(material("d").bumpMap);
   CHECK(material("d").bumpMap->depth == -0.25);
+}
+
+TEST_CASE("the image cache keeps a file as an <image> and as a <bump-map> apart",
+          "[render][bump-map]") {
+  BumpImage image("cache");
+  ImageMapCache cache;
+  auto stored = cache.get(image.path, PixelDecoding::AsStored);
+  auto linear = cache.get(image.path);
+  CHECK(cache.loads() == 2);
+  CHECK(cache.get(image.path, PixelDecoding::AsStored) == stored);
+  CHECK(cache.get(image.path) == linear);
+  CHECK(cache.loads() == 2);
+  // Pixel (1,0) stores 64: 64/255 as stored, its sRGB decoding as an <image>.
+  CHECK(stored->lookupPixel(1.5, 0.5).r == Approx(64 / 255.0).margin(1e-7));
+  CHECK(linear->lookupPixel(1.5, 0.5).r == Approx(linearFor(64)).margin(1e-6));
 }
