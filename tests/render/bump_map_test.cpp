@@ -104,7 +104,7 @@ TEST_CASE("bump map: the normal from three pixels and the frame of N and +y",
   }
 }
 
-TEST_CASE("a bump-mapped mesh shades with the bent normal; hits and shadows do not change",
+TEST_CASE("a bump-mapped mesh shades with the bent normal, its hits and shadows unchanged",
           "[render][bump-map]") {
   BumpImage image("scene");
   const std::string folder = std::filesystem::path(image.path).parent_path().string();
