@@ -203,10 +203,7 @@ void expandRepeat(ElementReader& parent, pugi::xml_node element, int depth,
   ParseContext& ctx = parent.ctx();
   const SourceFile& file = parent.file();
   ElementReader r(ctx, file, element);
-  if (depth > kMaxElementDepth) {
-    r.error("elements nest deeper than " + std::to_string(kMaxElementDepth) + " levels here");
-    return;
-  }
+  if (!withinElementDepth(r, depth)) return;
   r.checkAttributes({"var", "count"});
   if (!r.has("var") || !r.has("count")) {
     r.error("<repeat> needs 'var' (the name of its variable) and 'count' (how many instances)");
@@ -272,10 +269,7 @@ void expandRepeat(ElementReader& parent, pugi::xml_node element, int depth,
 void expandIf(ElementReader& parent, pugi::xml_node element, int depth, const std::function<void(pugi::xml_node)>& f) {
   ParseContext& ctx = parent.ctx();
   ElementReader r(ctx, parent.file(), element);
-  if (depth > kMaxElementDepth) {
-    r.error("elements nest deeper than " + std::to_string(kMaxElementDepth) + " levels here");
-    return;
-  }
+  if (!withinElementDepth(r, depth)) return;
   r.checkAttributes({"test"});
   if (!r.has("test")) {
     r.error("<if> needs a 'test' attribute, such as test=\"${i % 2 == 0}\"");
@@ -350,6 +344,12 @@ void expandElement(ElementReader& r, pugi::xml_node element, int depth, const st
 
 double estimateNodes(ParseContext& ctx, pugi::xml_node element, const ScopePtr& scope) {
   return std::min(kEstimateCap, 1 + estimateChildren(ctx, element, scope, 0));
+}
+
+bool withinElementDepth(ElementReader& r, int depth) {
+  if (depth <= kMaxElementDepth) return true;
+  r.error("elements nest deeper than " + std::to_string(kMaxElementDepth) + " levels here");
+  return false;
 }
 
 bool countNode(ParseContext& ctx) {

@@ -40,6 +40,10 @@ void expandElement(ElementReader& r, pugi::xml_node element, int depth, const st
 // in `scope` makes, judged as for a <repeat> (counts it cannot evaluate there count as 1).
 double estimateNodes(ParseContext& ctx, pugi::xml_node element, const ScopePtr& scope);
 
+// False, with an error at the element, when it stands deeper than kMaxElementDepth (a bound
+// on recursion, so a deeply nested file cannot exhaust the stack).
+bool withinElementDepth(ElementReader& r, int depth);
+
 // Counts one node or light made by the expansion; false (and, once, an error at the outermost
 // repeat) when the scene is over kMaxExpandedNodes.
 bool countNode(ParseContext& ctx);

@@ -154,10 +154,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
                                         int depth) {
   if (std::string_view(element.name()) == "light") return parseLightNode(ctx, file, element, depth);
   ElementReader r(ctx, file, element);
-  if (depth > kMaxElementDepth) {
-    r.error("elements nest deeper than " + std::to_string(kMaxElementDepth) + " levels here");
-    return nullptr;
-  }
+  if (!withinElementDepth(r, depth)) return nullptr;
   if (!countNode(ctx)) return nullptr;
   LocalScope scope(ctx, file, element);
   std::string_view name = element.name();

@@ -1,7 +1,8 @@
 // <light> (contract, "<light>"): point (default), directional, spot and area lights.
 // Every light has color (1), intensity (1), shadows (true), id and transform; directions
-// are normalised. An attribute of another light type is an error that says which type it
-// belongs to. A light is a node of the hierarchy (NodeKind::Light) wherever it stands, in
+// are normalised. An area light that has a spot attribute (direction, look-at, angle,
+// inner) is spot-shaped: its cone is seen from its centre. An attribute of another light
+// type is an error that says which types it belongs to. A light is a node of the hierarchy (NodeKind::Light) wherever it stands, in
 // its parent's frame; placeLights puts the scene's lights in the world once it is read.
 #include "element_parsers.h"
 #include "expansion.h"
@@ -24,7 +25,8 @@ const std::vector<std::string_view>& typeAttributes(LightType t) {
   static const std::vector<std::string_view> point{"position", "attenuation"},
       directional{"direction"},
       spot{"position", "attenuation", "direction", "look-at", "angle", "inner"},
-      area{"position", "attenuation", "u", "v", "samples", "jitter", "adaptive"};
+      area{"position", "attenuation", "u", "v", "samples", "jitter", "adaptive", "direction", "look-at", "angle",
+           "inner"};
   switch (t) {
     case LightType::Point: return point;
     case LightType::Directional: return directional;
@@ -40,14 +42,32 @@ const char* typeName(LightType t) {
   return "?";
 }
 
+// The cone of a spot light or a spot-shaped area light: its axis (direction, or look-at
+// from the position) and its outer and inner half-angles.
+void readCone(ElementReader& r, Light& light) {
+  if (r.has("direction") && r.has("look-at")) {
+    r.attrError("look-at", "give either 'direction' or 'look-at', not both");
+  } else if (r.has("look-at")) {
+    Vec3 target = r.vector("look-at", light.position + light.direction);
+    Vec3 d = target - light.position;
+    double len = glm::length(d);
+    if (!(len > 0.0)) r.attrError("look-at", "'look-at' must differ from 'position'");
+    else light.direction = d / len;
+  } else {
+    light.direction = r.direction("direction", light.direction);
+  }
+  light.angle = r.number("angle", light.angle, NumberRule::between(0.0, 90.0, "an angle above 0 and at most 90", true));
+  light.inner = r.number("inner", light.angle, NumberRule::between(0.0, 90.0, "an angle from 0 to 90"));
+  if (light.inner > light.angle)
+    r.attrError("inner", "'inner' (" + fmt::format("{}", light.inner) + ") must not exceed 'angle' (" +
+                             fmt::format("{}", light.angle) + ")");
+}
+
 }  // namespace
 
 std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, int depth) {
   ElementReader r(ctx, file, element);
-  if (depth > kMaxElementDepth) {
-    r.error("elements nest deeper than " + std::to_string(kMaxElementDepth) + " levels here");
-    return nullptr;
-  }
+  if (!withinElementDepth(r, depth)) return nullptr;
   if (!countNode(ctx)) return nullptr;
   LocalScope scope(ctx, file, element);
   auto node = std::make_unique<Node>();
@@ -62,12 +82,15 @@ std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, 
   std::vector<std::string_view> allowed{"type", "color", "intensity", "shadows", "id", "transform"};
   for (auto a : typeAttributes(light.type)) allowed.push_back(a);
   r.checkAttributes(allowed, [&](std::string_view attr) -> std::string {
+    std::vector<std::string> owners;
     for (const auto& [name, type] : kLightTypes)
       for (auto a : typeAttributes(type))
-        if (a == attr)
-          return "belongs to " + std::string(name) + " lights; this light is " + typeName(light.type) +
-                 " (set type=\"" + std::string(name) + "\")";
-    return {};
+        if (a == attr) owners.emplace_back(name);
+    if (owners.empty()) return {};
+    std::string list = owners[0];
+    for (size_t i = 1; i < owners.size(); ++i) list += (i + 1 == owners.size() ? " and " : ", ") + owners[i];
+    return "belongs to " + list + " lights; this light is " + typeName(light.type) + " (set type=\"" + owners[0] +
+           "\")";
   });
 
   registerNodeId(r, *node);
@@ -91,28 +114,13 @@ std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, 
     case LightType::Directional:
       light.direction = r.direction("direction", light.direction);
       break;
-    case LightType::Spot: {
-      if (r.has("direction") && r.has("look-at")) {
-        r.attrError("look-at", "give either 'direction' or 'look-at', not both");
-      } else if (r.has("look-at")) {
-        Vec3 target = r.vector("look-at", light.position + light.direction);
-        Vec3 d = target - light.position;
-        double len = glm::length(d);
-        if (!(len > 0.0)) r.attrError("look-at", "'look-at' must differ from 'position'");
-        else light.direction = d / len;
-      } else {
-        light.direction = r.direction("direction", light.direction);
-      }
-      light.angle = r.number("angle", light.angle,
-                             NumberRule::between(0.0, 90.0, "an angle above 0 and at most 90", true));
-      light.inner = r.number("inner", light.angle,
-                             NumberRule::between(0.0, 90.0, "an angle from 0 to 90"));
-      if (light.inner > light.angle)
-        r.attrError("inner", "'inner' (" + fmt::format("{}", light.inner) + ") must not exceed 'angle' (" +
-                                 fmt::format("{}", light.angle) + ")");
+    case LightType::Spot:
+      readCone(r, light);
       break;
-    }
     case LightType::Area: {
+      // Any spot attribute makes the area light spot-shaped.
+      light.cone = r.has("direction") || r.has("look-at") || r.has("angle") || r.has("inner");
+      if (light.cone) readCone(r, light);
       light.u = r.vector("u", light.u);
       light.v = r.vector("v", light.v);
       if (!(glm::length(glm::cross(light.u, light.v)) > 0.0))

@@ -14,10 +14,11 @@ void parseSky(ElementReader& r) {
   Sky sky;
   sky.loc = r.loc();
   sky.skyFromWorld = glm::inverse(r.transform("transform"));
-  bool found = false;
+  bool found = false, wrongChild = false;
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader c(r.ctx(), r.file(), n);
     if (std::string_view(n.name()) != "pattern") {
+      wrongChild = true;
       c.error("<sky> holds one <pattern> (with its <color-map>), not <" + std::string(n.name()) + ">");
       return;
     }
@@ -28,7 +29,7 @@ void parseSky(ElementReader& r) {
     found = true;
     sky.pattern = std::get<PatternTexture>(parsePatternTexture(c));
   });
-  if (!found && !r.failed()) {
+  if (!found && !wrongChild && !r.failed()) {
     r.error("<sky> needs a <pattern> child, e.g. <pattern type=\"gradient\"> with a <color-map>");
     return;
   }

@@ -93,9 +93,11 @@ void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues&
                                    type, light.attenuation.x, light.attenuation.y,
                                    light.attenuation.z, povNumber(fade.exactBeyond)));
     }
-    if (light.type == LightType::Spot) {
+    if (light.hasCone()) {
       // The contract's spot is POV-Ray's spotlight with tightness 0: full light inside
-      // `radius`, smoothstep to 0 at `falloff` (both half-angles in degrees).
+      // `radius`, smoothstep to 0 at `falloff` (both half-angles in degrees). A spot-shaped
+      // area light is POV-Ray's area_light with spotlight, whose cone is also seen from
+      // the centre for every sample.
       Vec3 axis = glm::normalize(light.direction);
       out.line("spotlight");
       out.line("point_at " + povVector(light.position + axis));

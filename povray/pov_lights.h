@@ -1,5 +1,6 @@
 // light_source blocks: point, directional (parallel), spot (spotlight, tightness 0) and
-// area (area_light) lights, with the contract's distance attenuation mapped onto fade.
+// area (area_light, with spotlight when spot-shaped) lights, with the contract's distance
+// attenuation mapped onto fade.
 #pragma once
 
 #include "pov_writer.h"

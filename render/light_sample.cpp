@@ -31,7 +31,7 @@ LightIncidence lightIncidence(const Light& light, const Vec3& p) {
   in.distance = glm::length(toLight);
   in.toLight = in.distance > 0.0 ? toLight / in.distance : Vec3(0.0, 1.0, 0.0);
   double factor = distanceAttenuation(light.attenuation, in.distance);
-  if (light.type == LightType::Spot)
+  if (light.hasCone())  // a spot, or an area light's cone from its centre (POV-Ray's)
     factor *= spotFactor(light, glm::dot(-in.toLight, glm::normalize(light.direction)));
   in.radiance = light.radiance() * static_cast<float>(factor);
   return in;

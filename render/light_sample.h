@@ -24,7 +24,8 @@ double distanceAttenuation(const Vec3& abc, double r);
 double spotFactor(const Light& light, double cosTheta);
 
 // Direction, distance and unshadowed light at point p. Directional lights are not
-// attenuated (they have no distance). An area light uses its centre, as POV-Ray does.
+// attenuated (they have no distance). An area light uses its centre, as POV-Ray does,
+// for its cone too: every shadow sample carries the centre's spot factor.
 LightIncidence lightIncidence(const Light& light, const Vec3& p);
 
 // The shadow-ray targets of a light: 1 for point and spot lights, nu·nv for area lights.

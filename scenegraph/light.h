@@ -25,6 +25,10 @@ struct Light {
   // Spot: outer and inner half-angles in degrees.
   double angle = 30.0;
   double inner = 30.0;
+  // Area: shaped by the spot cone (direction, angle, inner) seen from its centre, as
+  // POV-Ray's area_light with spotlight (set when an area light has a spot attribute).
+  bool cone = false;
+  bool hasCone() const { return type == LightType::Spot || (type == LightType::Area && cone); }
 
   // Area: edge vectors of a rectangle centred on position, sample grid, jitter.
   Vec3 u{1.0, 0.0, 0.0};

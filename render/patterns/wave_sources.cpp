@@ -68,14 +68,19 @@ double wavesValue(const Vec3& p, double frequency, double phase) {
   return 0.2 * (2.5 + (scalar / static_cast<double>(kWaveCount)));
 }
 
-Vec3 ripplesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase,
-                   double amount) {
+namespace {
+
+// Ripples and waves bend the normal alike; waves scale each source by its own frequency
+// (multiplying and dividing by 1 for ripples leaves POV-Ray's values bit for bit).
+Vec3 bendByWaveSources(const Vec3& normal, const Vec3& p, double frequency, double phase, double amount,
+                       bool perSourceFrequency) {
   const WaveSources& w = waveSources();
   const double f = single(frequency), ph = single(phase);
   Vec3 n = normal;
   for (int i = 0; i < kWaveCount; ++i) {
     const Source s = fromSource(p, w.source[i]);
-    const double scalar = cycloidal(s.length * f + ph) * amount;
+    const double fi = perSourceFrequency ? w.frequency[i] : 1.0;
+    const double scalar = cycloidal(s.length * f * fi + ph) * amount / fi;
     const double k = scalar / (s.length * static_cast<double>(kWaveCount));
     n.x += k * s.toPoint.x;
     n.y += k * s.toPoint.y;
@@ -84,20 +89,16 @@ Vec3 ripplesNormal(const Vec3& normal, const Vec3& p, double frequency, double p
   return n;
 }
 
+}  // namespace
+
+Vec3 ripplesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase,
+                   double amount) {
+  return bendByWaveSources(normal, p, frequency, phase, amount, false);
+}
+
 Vec3 wavesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase,
                  double amount) {
-  const WaveSources& w = waveSources();
-  const double f = single(frequency), ph = single(phase);
-  Vec3 n = normal;
-  for (int i = 0; i < kWaveCount; ++i) {
-    const Source s = fromSource(p, w.source[i]);
-    const double scalar = cycloidal(s.length * f * w.frequency[i] + ph) * amount / w.frequency[i];
-    const double k = scalar / (s.length * static_cast<double>(kWaveCount));
-    n.x += k * s.toPoint.x;
-    n.y += k * s.toPoint.y;
-    n.z += k * s.toPoint.z;
-  }
-  return n;
+  return bendByWaveSources(normal, p, frequency, phase, amount, true);
 }
 
 }  // namespace lucent

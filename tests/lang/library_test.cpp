@@ -52,7 +52,7 @@ TEST_CASE("library: every file loads without a diagnostic, ids unique across fil
   CHECK(all.diagnostics.all().empty());
   for (const Material& m : all.scene->materials)
     if (!m.id.empty() && m.id != "(default)") CHECK(ids.insert(m.id).second);
-  CHECK(ids.size() >= 40);
+  CHECK(ids.size() >= 60);
 }
 
 TEST_CASE("library: metals reflect their colour, glass is a dielectric with its ior",
@@ -78,6 +78,53 @@ TEST_CASE("library: metals reflect their colour, glass is a dielectric with its 
   // Materials based on others inherit: red-plastic keeps plastic's highlight.
   CHECK(byId(s, "red-plastic").specular == byId(s, "plastic").specular);
   CHECK(byId(s, "frosted-glass").ior == 1.52);
+}
+
+TEST_CASE("library: woods and stones are patterns with colour maps", "[lang][library]") {
+  ParseResult r = parseWith("<include src=\"lucent:materials.xml\"/>");
+  REQUIRE(r.scene);
+  const Scene& s = *r.scene;
+  auto patternOf = [&](const std::string& id) -> const PatternTexture& {
+    const Material& m = byId(s, id);
+    INFO(id);
+    REQUIRE(std::holds_alternative<PatternTexture>(m.texture));
+    return std::get<PatternTexture>(m.texture);
+  };
+  for (const char* id : {"oak", "dark-oak", "pine", "cherry", "walnut", "mahogany", "birch",
+                         "teak", "varnished-oak", "varnished-mahogany"}) {
+    INFO(id);
+    const PatternTexture& t = patternOf(id);
+    CHECK(t.pattern.type == PatternType::wood);
+    CHECK(t.map.entries.size() >= 2);
+  }
+  for (auto [id, type] : {std::pair{"granite", PatternType::granite},
+                          {"rose-granite", PatternType::granite},
+                          {"pink-granite", PatternType::granite},
+                          {"black-granite", PatternType::granite},
+                          {"white-marble", PatternType::marble},
+                          {"red-marble", PatternType::marble},
+                          {"green-marble", PatternType::marble},
+                          {"jade", PatternType::marble},
+                          {"brown-agate", PatternType::agate},
+                          {"blue-agate", PatternType::agate},
+                          {"sandstone", PatternType::gradient},
+                          {"slate", PatternType::bozo},
+                          {"pink-alabaster", PatternType::bozo}}) {
+    INFO(id);
+    const PatternTexture& t = patternOf(id);
+    CHECK(t.pattern.type == type);
+    CHECK(t.map.entries.size() >= 2);
+  }
+  // Jade is POV-Ray's: marble with turbulence 1.8 and a sharp edge at 0.8 of its map.
+  const PatternTexture& jade = patternOf("jade");
+  REQUIRE(jade.map.entries.size() == 4);
+  CHECK(jade.map.entries[1].at == 0.8);
+  CHECK(jade.map.entries[2].at == 0.8);
+  CHECK(jade.map.entries[1].color == Color(0.0f, 0.3f, 0.0f));
+  // Varnished woods keep their wood's pattern and add a sharp highlight.
+  CHECK(patternOf("varnished-oak").map.entries.size() == patternOf("oak").map.entries.size());
+  CHECK(byId(s, "varnished-oak").shininess == 200);
+  CHECK(byId(s, "oak").shininess == 30);
 }
 
 TEST_CASE("library: lucent: files are readable whatever the file-access rules",

@@ -135,3 +135,29 @@ TEST_CASE("placedLight maps position as a point and directions and axes as vecto
   CHECK(p.u == Vec3(2, 0, 0));
   CHECK(p.v == Vec3(0, 3, 0));
 }
+
+TEST_CASE("lang: an area light with spot attributes is spot-shaped, its cone placed with it", "[lang][lights]") {
+  auto s = load(R"XML(<defs><group id="lamp">
+      <light type="area" position="0 0 0" u="0.6 0 0" v="0 0 0.6" samples="2 2" direction="0 -1 0"
+             angle="15" inner="6"/>
+    </group></defs>
+    <use ref="lamp" transform="rotate-z(90) translate(0 4 0)"/>
+    <light type="area" position="0 3 0" u="1 0 0" v="0 0 1" samples="2 2" look-at="3 3 0"/>
+    <light type="area" position="0 3 0" u="1 0 0" v="0 0 1" samples="2 2"/>)XML");
+  REQUIRE(s->lights.size() == 3);
+  // Top-level lights come first (scenegraph/light_placement.h).
+  const Light& aimed = s->lights[0];
+  CHECK(aimed.hasCone());
+  CHECK(close(aimed.direction, Vec3(1, 0, 0)));
+  CHECK(aimed.angle == 30.0);  // the spot's default angle
+  CHECK(aimed.inner == 30.0);
+  CHECK_FALSE(s->lights[1].hasCone());  // no spot attribute: a plain area light
+  const Light& lamp = s->lights[2];
+  CHECK(lamp.hasCone());
+  CHECK(lamp.angle == 15.0);
+  CHECK(lamp.inner == 6.0);
+  // rotate-z(90) turns -y to +x, and the axis u to +y.
+  CHECK(glm::length(lamp.direction - Vec3(1, 0, 0)) <= 1e-12);
+  CHECK(glm::length(lamp.u - Vec3(0, 0.6, 0)) <= 1e-12);
+  CHECK(close(lamp.position, Vec3(0, 4, 0)));
+}

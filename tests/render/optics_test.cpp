@@ -121,3 +121,29 @@ TEST_CASE("area light samples form a grid that includes the rectangle's edges", 
   moved = lightSamplePoint(area, 4, Vec2(0.9, 0.9));
   CHECK(moved.z == Approx(2.0));  // clamped to the edge
 }
+
+TEST_CASE("a spot-shaped area light's cone is seen from its centre, for every sample", "[render][light]") {
+  Light area;
+  area.type = LightType::Area;
+  area.cone = true;
+  area.position = Vec3(0, 4, 0);
+  area.direction = Vec3(0, -1, 0);
+  area.u = Vec3(2, 0, 0);
+  area.v = Vec3(0, 0, 2);
+  area.angle = 20.0;
+  area.inner = 10.0;
+  REQUIRE(area.hasCone());
+  // Straight below the centre: full light (attenuation 1 by default).
+  CHECK(lightIncidence(area, Vec3(0, 0, 0)).radiance == Color(1.0f));
+  // 4·tan 15° off the axis: between inner and angle, the smoothstep of the centre's angle,
+  // though a corner sample at x = 1 sees the point at a smaller angle.
+  const Vec3 p(4.0 * std::tan(radians(15.0)), 0, 0);
+  const double u = (std::cos(radians(15.0)) - std::cos(radians(20.0))) /
+                   (std::cos(radians(10.0)) - std::cos(radians(20.0)));
+  CHECK(lightIncidence(area, p).radiance.r == Approx((3.0 - 2.0 * u) * u * u).epsilon(1e-6));
+  // Outside the centre's cone: dark, though the rectangle's edge at x = 1 is above.
+  CHECK(lightIncidence(area, Vec3(4.0 * std::tan(radians(21.0)), 0, 0)).radiance == Color(0.0f));
+  // The same rectangle without a cone lights every point.
+  area.cone = false;
+  CHECK(lightIncidence(area, Vec3(4.0 * std::tan(radians(21.0)), 0, 0)).radiance == Color(1.0f));
+}

@@ -98,3 +98,82 @@ TEST_CASE("patterns, normals and the sky are exported as POV-Ray's", "[povray][p
   CHECK_THAT(e.text, Catch::Contains("ripples 0.4"));
   CHECK_THAT(e.text, Catch::Contains("[0 rgbft <1, 1, 1, 0, 0>]"));
 }
+
+TEST_CASE("frequency, phase and wave shape the value before the colour map", "[render][pattern]") {
+  // gradient x, frequency 2, phase 0.25: v = fmod(2·fract(x) + 0.25, 1.00001) (POV-Ray wraps
+  // by 1.00001 so that a value of exactly 1 stays 1), then the wave.
+  auto shaded = [](const std::string& attrs, double x) {
+    auto scene = parse(R"XML(<render ambient="1"/>
+      <plane normal="0 1 0" offset="0"><material ambient="1">
+        <pattern type="gradient" axis="1 0 0" )XML" + attrs + R"XML(/></material></plane>)XML");
+    World world(*scene);
+    return traceOne(world, Ray(Vec3(x, 1, 0.2), Vec3(0, -1, 0))).r;
+  };
+  for (double x : {0.1, 0.3, 0.45, 0.7, 1.9}) {
+    INFO("x = " << x);
+    const double fx = x - std::floor(x);
+    const double v = std::fmod(2 * fx + 0.25, 1.00001);
+    // Without a map the value is the grey level.
+    CHECK(shaded("frequency=\"2\" phase=\"0.25\"", x) == Approx(v).margin(1e-5));
+    // triangle: up then down, 2v below 1/2 and 2(1 − v) above.
+    CHECK(shaded("frequency=\"2\" phase=\"0.25\" wave=\"triangle\"", x) ==
+          Approx(v < 0.5 ? 2 * v : 2 * (1 - v)).margin(1e-5));
+    // poly with exponent 3: v³.
+    CHECK(shaded("frequency=\"2\" phase=\"0.25\" wave=\"poly\" exponent=\"3\"", x) ==
+          Approx(v * v * v).margin(1e-5));
+  }
+}
+
+TEST_CASE("a colour map is constant before its first entry and after its last", "[render][pattern]") {
+  auto scene = parse(R"XML(<render ambient="1"/>
+    <plane normal="0 1 0" offset="0"><material ambient="1">
+      <pattern type="gradient" axis="1 0 0">
+        <color-map><entry at="0.25" color="0.2 0.2 0.2"/><entry at="0.5" color="1 0 0"/>
+                   <entry at="0.5" color="0 0 1"/><entry at="0.75" color="0 1 0"/></color-map>
+      </pattern></material></plane>)XML");
+  World world(*scene);
+  auto at = [&](double x) { return traceOne(world, Ray(Vec3(x, 1, 0.2), Vec3(0, -1, 0))); };
+  CHECK(at(0.1).r == Approx(0.2).margin(1e-5));   // before the first entry
+  CHECK(at(0.375).r == Approx(0.6).margin(1e-5));  // halfway from 0.2 grey to red
+  CHECK(at(0.375).g == Approx(0.1).margin(1e-5));
+  CHECK(at(0.49).b == Approx(0.2 * 0.04).margin(1e-5));  // grey to red: 0.04 of grey's blue left
+  CHECK(at(0.51).b == Approx(1 - 0.04).margin(1e-5));    // two entries at 0.5: a sharp edge to blue
+  CHECK(at(0.9).g == Approx(1.0).margin(1e-5));    // after the last
+  CHECK(at(0.9).b == Approx(0.0).margin(1e-5));
+}
+
+TEST_CASE("a sky's transform turns the directions it is evaluated on, and it hides the background",
+          "[render][sky]") {
+  // gradient y turned by rotate-z(90): a world direction d is seen in the sky's frame as
+  // rotate-z(-90)·d, whose y is −d.x, so directions with −d.x = s in (0, 1) have value s.
+  auto scene = parse(R"XML(<render background="0 1 0"/><sky transform="rotate-z(90)"><pattern type="gradient">
+      <color-map><entry at="0" color="0 0 0"/><entry at="1" color="1 0 0"/></color-map>
+    </pattern></sky>)XML");
+  World world(*scene);
+  for (double s : {0.2, 0.6, 0.9}) {
+    const Vec3 d = glm::normalize(Vec3(-s, 0, -std::sqrt(1 - s * s)));
+    Color c = traceOne(world, Ray(Vec3(0), d));
+    INFO("s = " << s);
+    CHECK(c.r == Approx(s).margin(1e-5));
+    CHECK(c.g == Approx(0.0).margin(1e-6));  // the background is not seen
+  }
+}
+
+TEST_CASE("a bumpy sphere casts the same shadow as a smooth one", "[render][pattern]") {
+  auto sceneWith = [](const std::string& normal) {
+    return R"XML(<render ambient="0"/><light type="point" position="0 6 0"/>
+      <plane normal="0 1 0" offset="0"><material diffuse="1"/></plane>
+      <sphere center="0 2 0" radius="1"><material diffuse="1">)XML" +
+           normal + R"XML(</material></sphere>)XML";
+  };
+  auto flat = parse(sceneWith(""));
+  auto bumpy = parse(sceneWith("<normal type=\"bumps\" depth=\"2\" transform=\"scale(0.1)\"/>"));
+  World a(*flat), b(*bumpy);
+  for (int i = 0; i < 40; ++i) {
+    // Points on the floor across the shadow's edge (radius 1.5 at y = 0 from the light at 6).
+    const Vec3 o(0.05 * i, 0.5, 0.013);
+    const Ray down(o, Vec3(0, -1, 0));
+    INFO("x = " << o.x);
+    CHECK(traceOne(a, down).r == traceOne(b, down).r);
+  }
+}
