@@ -21,7 +21,7 @@ const std::vector<std::string_view> kMaterialAttributes{
 const std::vector<std::string_view> kTextureElements{"checker", "image", "pattern", "hexagon",
                                                      "brick"};
 const std::vector<std::string_view> kMaterialChildren{"checker", "image",  "pattern",
-                                                      "hexagon", "brick", "normal"};
+                                                      "hexagon", "brick", "normal", "bump-map"};
 
 Texture parseImage(ElementReader& t);
 Texture parseChecker(ElementReader& t);
@@ -128,18 +128,23 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader t(ctx, r.file(), n);
     std::string_view name = n.name();
-    if (name == "normal") {
+    if (name == "normal" || name == "bump-map") {
       if (normalLoc) {
-        t.error("<material> holds one <normal> at most; the first is at " + normalLoc->str());
+        t.error("<material> holds one normal perturbation (<normal> or <bump-map>) at most; the first is at " +
+                normalLoc->str());
         return;
       }
       normalLoc = t.loc();
-      m.normal = parseNormal(t);
+      // Either replaces the base's normal perturbation, whichever kind that was.
+      m.normal.reset();
+      m.bumpMap.reset();
+      if (name == "normal") m.normal = parseNormal(t);
+      else m.bumpMap = parseBumpMap(t);
       return;
     }
     if (std::find(kTextureElements.begin(), kTextureElements.end(), name) == kTextureElements.end()) {
       std::string pov = povrayElementHint("material", name);
-      t.error("<material> may hold a texture (" + elementList(kTextureElements) + ") and a <normal>, not <" +
+      t.error("<material> may hold a texture (" + elementList(kTextureElements) + ") and a <normal> or <bump-map>, not <" +
               std::string(name) + ">" + (pov.empty() ? didYouMean(name, kMaterialChildren) : pov));
       return;
     }

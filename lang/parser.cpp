@@ -69,8 +69,8 @@ void readTopLevel(ParseContext& ctx, const TopLevelItem& item) {
   } else if (name == "checker" || name == "image" || name == "pattern" || name == "hexagon" ||
              name == "brick") {
     r.error("<" + std::string(name) + "> is a texture: it goes inside a <material>");
-  } else if (name == "normal") {
-    r.error("<normal> perturbs a material's normal: it goes inside a <material>");
+  } else if (name == "normal" || name == "bump-map") {
+    r.error("<" + std::string(name) + "> perturbs a material's normal: it goes inside a <material>");
   } else {
     std::string pov = povrayElementHint("scene", name);
     r.error("unknown element <" + std::string(name) + "> in <scene>" +

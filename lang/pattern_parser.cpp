@@ -1,5 +1,6 @@
 // The contract's colour patterns and normal perturbations: <pattern type> with its
-// <color-map>, <hexagon>, <brick> (textures of a <material>) and <normal type depth>.
+// <color-map>, <hexagon>, <brick> (textures of a <material>), <normal type depth> and
+// <bump-map src depth>.
 // Every pattern element takes the same placement attributes: transform, turbulence,
 // octaves, omega, lambda, and (for value patterns) frequency, phase, wave and exponent.
 #include "pattern_parser.h"
@@ -189,6 +190,22 @@ NormalSpec parseNormal(ElementReader& r) {
   n.depth = r.number("depth", n.depth);
   noChildren(r);
   return n;
+}
+
+BumpMapSpec parseBumpMap(ElementReader& r) {
+  r.checkAttributes({"src", "depth"});
+  BumpMapSpec b;
+  b.loc = r.loc();
+  if (!r.has("src")) {
+    r.error("<bump-map> needs a 'src' attribute (the image file whose grey levels are the bumps)");
+  } else if (auto src = r.text("src")) {
+    FileAccess::Resolved f = r.ctx().files.resolve(*src, r.file().folder());
+    if (f.path.empty()) r.attrError("src", f.error);
+    else b.path = f.path.string();
+  }
+  b.depth = r.number("depth", b.depth);
+  noChildren(r);
+  return b;
 }
 
 }  // namespace lucent

@@ -1,5 +1,5 @@
 // Parsers of the contract's colour patterns (<pattern>, <hexagon>, <brick>, textures of a
-// <material>) and of <normal>: the elements, their placement attributes and <color-map>.
+// <material>) and of <normal> and <bump-map>: the elements, their placement attributes and <color-map>.
 #pragma once
 
 #include "element_reader.h"
@@ -12,5 +12,7 @@ Texture parsePatternTexture(ElementReader& r);
 Texture parseHexagonTexture(ElementReader& r);
 Texture parseBrickTexture(ElementReader& r);
 NormalSpec parseNormal(ElementReader& r);
+// <bump-map src depth>: src is resolved by the file-access rules, as <image>'s.
+BumpMapSpec parseBumpMap(ElementReader& r);
 
 }  // namespace lucent

@@ -141,4 +141,37 @@ void writeImagePigment(const ImageTexture& image, double filter, double transmit
   out.close();
 }
 
+void writeBumpMapNormal(const BumpMapSpec& bump, const ImageMapping& mapping,
+                        const char* shapeName, const SourceLoc& loc,
+                        const std::string& materialName, PovWriter& out, PovIssues& issues) {
+  std::string format = povImageFormat(bump.path);
+  if (format.empty()) {
+    issues.error(bump.loc, fmt::format("{}: POV-Ray cannot read the bump map '{}'", materialName,
+                                       bump.path));
+    return;
+  }
+  ImageFacts facts = imageFacts(bump.path);
+  if (!facts.readable) {
+    issues.error(bump.loc, fmt::format("{}: cannot read the bump map '{}'", materialName,
+                                       bump.path));
+    return;
+  }
+  if (mapping.kind != ImageMapping::MeshUV) {
+    issues.error(loc, fmt::format("<{}> with the bump map of {}: POV-Ray's bump_map bends the "
+                                  "normal as Lucent's only with uv_mapping, whose (u,v) equal "
+                                  "Lucent's only on meshes with uvs",
+                                  shapeName, materialName));
+    return;
+  }
+  std::string absolute = std::filesystem::absolute(bump.path).lexically_normal().string();
+  std::string map = fmt::format("bump_map {{ {} {}", format, povString(absolute));
+  if (!facts.floating) map += " gamma 1.0";
+  map += " interpolate 2 use_color }";
+  out.open("normal");
+  out.line("uv_mapping");
+  out.line(map);
+  out.line("bump_size " + povNumber(bump.depth));
+  out.close();
+}
+
 }  // namespace lucent

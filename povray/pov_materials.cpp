@@ -240,7 +240,7 @@ void PovMaterials::writeDeclarations(const std::vector<bool>& used, PovWriter& o
     if (i >= used.size() || !used[i]) continue;
     const Material& m = materials_[i];
     out.line(fmt::format("// {}{}", materialLabel(m), m.loc.line > 0 ? " at " + m.loc.str() : ""));
-    if (!usesImageMap(static_cast<uint32_t>(i))) {
+    if (!dependsOnShape(static_cast<uint32_t>(i))) {
       out.open("#declare " + names_[i] + " = texture");
       writeTexture(static_cast<uint32_t>(i), nullptr, nullptr, nullptr, out, nullptr);
       out.close();
@@ -258,6 +258,10 @@ bool PovMaterials::usesImageMap(uint32_t index) const {
          surface(index).useTexture;
 }
 
+bool PovMaterials::dependsOnShape(uint32_t index) const {
+  return usesImageMap(index) || materials_[index].bumpMap.has_value();
+}
+
 void PovMaterials::writeFor(uint32_t index, const ShapeSpec& shape, const SourceLoc& loc,
                             PovWriter& out, PovIssues& issues, bool interior) const {
   writeFor(index, shapeTypeOf(shape).povImageMapping(shape), shapeElementName(shape), loc, out, issues, interior);
@@ -270,7 +274,7 @@ void PovMaterials::writeInteriorFor(uint32_t index, PovWriter& out) const {
 void PovMaterials::writeFor(uint32_t index, const ImageMapping& mapping, const char* shapeName,
                             const SourceLoc& loc, PovWriter& out, PovIssues& issues,
                             bool interior) const {
-  if (usesImageMap(index)) {
+  if (dependsOnShape(index)) {
     out.open("texture");
     writeTexture(index, &mapping, shapeName, &loc, out, &issues);
     out.close();
@@ -309,6 +313,8 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping,
     out.line("pigment { " + povRgbft(s.pigmentScale, s.filter, s.transmit) + " }");
   }
   if (m.normal) writeNormal(*m.normal, out);
+  if (m.bumpMap && mapping)
+    writeBumpMapNormal(*m.bumpMap, *mapping, shapeName, *loc, materialLabel(m), out, *issues);
 
   out.open("finish");
   out.line("ambient " + povRgb(s.ambient));

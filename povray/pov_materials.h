@@ -78,6 +78,8 @@ class PovMaterials {
   void writeInteriorFor(uint32_t material, PovWriter& out) const;
   // Does the material show an image map (whose mapping depends on the shape)?
   bool usesImageMap(uint32_t material) const;
+  // Is its texture written per shape (an image map, or a bump map)?
+  bool dependsOnShape(uint32_t material) const;
 
   const std::string& textureName(uint32_t material) const { return names_[material]; }
   const PovSurface& surface(uint32_t material) const;

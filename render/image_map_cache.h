@@ -17,14 +17,17 @@ namespace lucent {
 
 class ImageMapCache {
  public:
-  // The image at `path`, keyed by its canonical path. Throws what ImageMap throws.
-  std::shared_ptr<const ImageMap> get(const std::string& path);
+  // The image at `path`, keyed by its canonical path and the decoding (a file used both
+  // as an <image> and as a <bump-map> is kept twice). Throws what ImageMap throws.
+  std::shared_ptr<const ImageMap> get(const std::string& path,
+                                      PixelDecoding decoding = PixelDecoding::Linear);
 
   // Files loaded so far (each reload counts): what the tests observe.
-  uint64_t loads() const { return files_.loads(); }
+  uint64_t loads() const { return files_.loads() + storedFiles_.loads(); }
 
  private:
-  FileCache<ImageMap> files_;
+  FileCache<ImageMap> files_;        // decoded to linear
+  FileCache<ImageMap> storedFiles_;  // as stored
 };
 
 }  // namespace lucent

@@ -1,5 +1,6 @@
 #include "shading_normal.h"
 
+#include "bump_map.h"
 #include "patterns/normal_perturbation.h"
 
 namespace lucent {
@@ -13,6 +14,12 @@ Vec3 perturbedShadingNormal(const NormalSpec& normal, const Transform& worldFrom
   const Vec3 bent = perturbNormal(normal, surface.pObject, objectNormal);
   const Vec3 world = worldFromObject.normalToWorld(bent);
   return glm::dot(world, v) > 0.0 ? world : n;
+}
+
+Vec3 bumpedShadingNormal(const ImageMap& map, const BumpMapSpec& bump, const SurfaceInfo& surface,
+                         const Vec3& n, const Vec3& v) {
+  const Vec3 bent = bumpMapNormal(map, bump.depth, surface.hasUV ? surface.uv : Vec2(0.0), n);
+  return glm::dot(bent, v) > 0.0 ? bent : n;
 }
 
 }  // namespace lucent

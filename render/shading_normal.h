@@ -1,7 +1,9 @@
-// The contract's normal perturbation (<normal> in a material): the shading normal bent by
+// The contract's normal perturbations (<normal> and <bump-map> in a material): the shading normal bent by
 // a pattern's slope in the shape's object space. Only shading sees it; hit points,
 // shadows and CSG keep the geometric surface.
 #pragma once
+
+#include "texture.h"
 
 #include "scenegraph/pattern.h"
 
@@ -16,5 +18,10 @@ namespace lucent {
 // there, so no shading point ever looks at its own back.
 Vec3 perturbedShadingNormal(const NormalSpec& normal, const Transform& worldFromObject,
                             const SurfaceInfo& surface, const Vec3& n, const Vec3& v);
+
+// The same for a <bump-map> (render/bump_map.h) with its loaded image: read at the hit's
+// (u,v), or at (0,0) on a shape without one (as an <image> is), in world space.
+Vec3 bumpedShadingNormal(const ImageMap& map, const BumpMapSpec& bump, const SurfaceInfo& surface,
+                         const Vec3& n, const Vec3& v);
 
 }  // namespace lucent

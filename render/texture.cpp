@@ -36,12 +36,13 @@ Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec
 }
 
 struct ImageMap::Impl {
-  Image linear;                            // RGB, linear
+  Image linear;                            // RGB, linear (or as stored, for bump maps)
   std::unique_ptr<TextureSampler> sampler;  // OpenImageIO's bilinear lookup of `linear`
 };
 
-ImageMap::ImageMap(const std::string& path) : impl_(std::make_unique<Impl>()) {
-  impl_->linear = readImageFile(path, PixelDecoding::Linear);
+ImageMap::ImageMap(const std::string& path, PixelDecoding decoding)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->linear = readImageFile(path, decoding);
   static_assert(sizeof(Color) == 3 * sizeof(float), "Image pixels are packed RGB floats");
   impl_->sampler = imagePlugin().textureSampler(&impl_->linear.pixels[0][0],
                                                 impl_->linear.width, impl_->linear.height);
@@ -57,6 +58,13 @@ Color ImageMap::lookup(const Vec2& uv, const Vec2& scale) const {
   float t = static_cast<float>(1.0 - uv.y / scale.y);  // image row 0 is the top (v = 1)
   Color c;
   impl_->sampler->lookup(s, t, &c[0]);
+  return c;
+}
+
+Color ImageMap::lookupPixel(double x, double y) const {
+  Color c;
+  impl_->sampler->lookup(static_cast<float>(x / impl_->linear.width),
+                         static_cast<float>(y / impl_->linear.height), &c[0]);
   return c;
 }
 
@@ -76,6 +84,22 @@ TextureSet::TextureSet(const std::vector<Material>& materials, ImageMapCache* ca
     }
     maps_[i] = map;
   }
+  bumpMaps_.resize(materials.size());
+  std::map<std::string, std::shared_ptr<const ImageMap>> bumpsByPath;
+  for (size_t i = 0; i < materials.size(); ++i) {
+    const auto& bump = materials[i].bumpMap;
+    if (!bump) continue;
+    auto& map = bumpsByPath[bump->path];
+    if (!map) {
+      try {
+        map = cache ? cache->get(bump->path, PixelDecoding::AsStored)
+                    : std::make_shared<const ImageMap>(bump->path, PixelDecoding::AsStored);
+      } catch (const ImageIOError& e) {
+        throw LocatedError(bump->loc, e.what(), LocatedError::Kind::Input);
+      }
+    }
+    bumpMaps_[i] = map;
+  }
 }
 
 void checkImageTextures(const std::vector<Material>& materials) {
@@ -87,6 +111,14 @@ void checkImageTextures(const std::vector<Material>& materials) {
       checkImageFile(image->path);
     } catch (const ImageIOError& e) {
       throw LocatedError(image->loc, e.what(), LocatedError::Kind::Input);
+    }
+  }
+  for (const Material& m : materials) {
+    if (!m.bumpMap || !checked.insert(m.bumpMap->path).second) continue;
+    try {
+      checkImageFile(m.bumpMap->path);
+    } catch (const ImageIOError& e) {
+      throw LocatedError(m.bumpMap->loc, e.what(), LocatedError::Kind::Input);
     }
   }
 }

@@ -4,6 +4,8 @@
 #include "scenegraph/located_error.h"
 #include "scenegraph/material.h"
 
+#include "image_io.h"
+
 #include "primitives/hit.h"
 #include "primitives/instance.h"
 
@@ -27,14 +29,18 @@ Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec
 // those tagged sRGB are decoded to linear RGB once, on load.
 class ImageMap {
  public:
-  // Throws ImageIOError naming the file.
-  explicit ImageMap(const std::string& path);
+  // Throws ImageIOError naming the file. A bump map keeps the stored values
+  // (PixelDecoding::AsStored), as POV-Ray reads bump_map images without gamma.
+  explicit ImageMap(const std::string& path, PixelDecoding decoding = PixelDecoding::Linear);
   ~ImageMap();
   ImageMap(const ImageMap&) = delete;
   ImageMap& operator=(const ImageMap&) = delete;
 
   // `scale` enlarges the image on the surface: one copy covers scale.x by scale.y of (u,v).
   Color lookup(const Vec2& uv, const Vec2& scale) const;
+  // The same bilinear lookup at pixel coordinates: (x, y) = (i + ½, j + ½) is the centre
+  // of the pixel in column i, row j (row 0 the top), repeating.
+  Color lookupPixel(double x, double y) const;
   int width() const;
   int height() const;
 
@@ -43,7 +49,7 @@ class ImageMap {
   std::unique_ptr<Impl> impl_;
 };
 
-// Reads the header of every <image> texture's file, as `lucent check` does: throws what
+// Reads the header of every <image> texture's and <bump-map>'s file, as `lucent check` does: throws what
 // TextureSet would for a file that is not an image or too large (LocatedError, Kind::Input).
 void checkImageTextures(const std::vector<Material>& materials);
 
@@ -52,16 +58,21 @@ class ImageMapCache;  // image_map_cache.h
 // The image maps of a scene's materials, each file loaded once, indexed by material.
 class TextureSet {
  public:
-  // Loads every <image> texture, or takes it from `cache` (which keeps it for later
-  // sets); throws LocatedError (Kind::Input, at the <image>) for one that cannot be read.
+  // Loads every <image> texture and <bump-map>, or takes it from `cache` (which keeps it
+  // for later sets); throws LocatedError (Kind::Input, at the element) for one that cannot
+  // be read.
   explicit TextureSet(const std::vector<Material>& materials, ImageMapCache* cache = nullptr);
 
   // The texture colour T of material `index` at the hit (1 for a material without one).
   Color eval(uint32_t index, const Material& material, const SurfaceInfo& surface,
              const Instance& leaf) const;
 
+  // The <bump-map> image of material `index` (stored values), null if it has none.
+  const ImageMap* bumpMap(uint32_t index) const { return bumpMaps_[index].get(); }
+
  private:
   std::vector<std::shared_ptr<const ImageMap>> maps_;  // per material; null if no image
+  std::vector<std::shared_ptr<const ImageMap>> bumpMaps_;  // per material; null if none
 };
 
 }  // namespace lucent

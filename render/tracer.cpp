@@ -129,6 +129,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     Vec3 n = front ? s.ns : -s.ns;
     if (glm::dot(n, v) <= 0.0) n = ng;
     if (m.normal) n = perturbedShadingNormal(*m.normal, leaf.transform(), s, n, v);
+    if (m.bumpMap) n = bumpedShadingNormal(*textures_.bumpMap(leaf.tag()), *m.bumpMap, s, n, v);
 
     // Local terms: k_e + k_a·I_La (·k_t inside an object) + direct light.
     Color local = m.emissive;

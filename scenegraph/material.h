@@ -46,6 +46,14 @@ struct BrickTexture {
   PatternPlacement placement;
 };
 
+// <bump-map src depth>: POV-Ray's bump_map read at the shape's (u,v): the shading normal
+// bent by the image's grey levels (render/bump_map.h). The renderer loads the pixels.
+struct BumpMapSpec {
+  std::string path;  // resolved, as ImageTexture's
+  double depth = 0.5;  // POV-Ray's bump_size
+  SourceLoc loc;
+};
+
 using Texture = std::variant<std::monostate, CheckerTexture, ImageTexture, PatternTexture,
                              HexagonTexture, BrickTexture>;
 
@@ -72,6 +80,8 @@ struct Material {
   Texture texture;
   // <normal>: the shading normal perturbed by a pattern's slope (geometry unchanged).
   std::optional<NormalSpec> normal;
+  // <bump-map>: the other normal perturbation (a material holds one of the two at most).
+  std::optional<BumpMapSpec> bumpMap;
 
   bool hasTexture() const { return !std::holds_alternative<std::monostate>(texture); }
   bool isTransmissive() const { return maxComponent(transmissive) > 0.0f; }
