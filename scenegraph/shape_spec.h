@@ -39,7 +39,13 @@ struct MeshSpec {
   std::shared_ptr<const MeshData> data;  // loaded, triangulated, oriented
 };
 
+// Q(p) = a·(x², y², z²) + b·(xy, xz, yz) + c·(x, y, z) + d; Q < 0 is inside. The default
+// is the unit sphere.
+struct QuadricSpec {
+  Vec3 a{1.0, 1.0, 1.0}, b{0.0}, c{0.0};
+  double d = -1.0;
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
-                               DiscSpec, TriangleSpec, MeshSpec>;
+                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec>;
 
 }  // namespace lucent

@@ -1,0 +1,144 @@
+#include "quadric.h"
+
+#include "quadratic.h"
+
+#include <stdexcept>
+
+namespace lucent {
+
+Quadric::Quadric(const QuadricCoefficients& q) {
+  const double all[10] = {q.squares.x, q.squares.y, q.squares.z, q.mixed.x, q.mixed.y,
+                          q.mixed.z,   q.linear.x,  q.linear.y,  q.linear.z, q.constant};
+  bool surface = false;
+  for (int i = 0; i < 10; ++i) {
+    if (!std::isfinite(all[i])) throw std::invalid_argument("quadric: coefficients must be finite");
+    if (i < 9 && all[i] != 0.0) surface = true;
+  }
+  if (!surface) throw std::invalid_argument("quadric: every coefficient but the constant is 0");
+  // Columns of the symmetric matrix (glm is column-major; symmetric anyway).
+  m_ = Mat3(q.squares.x, 0.5 * q.mixed.x, 0.5 * q.mixed.y,
+            0.5 * q.mixed.x, q.squares.y, 0.5 * q.mixed.z,
+            0.5 * q.mixed.y, 0.5 * q.mixed.z, q.squares.z);
+  g_ = q.linear;
+  j_ = q.constant;
+
+  // Q = (p − c)ᵀM(p − c) + J − cᵀMc with Mc = −g/2 when M is invertible.
+  const double det = glm::determinant(m_);
+  const double scale = std::max({std::abs(m_[0][0]), std::abs(m_[1][1]), std::abs(m_[2][2]),
+                                 std::abs(m_[0][1]), std::abs(m_[0][2]), std::abs(m_[1][2])});
+  if (scale > 0.0 && std::abs(det) > 1e-12 * scale * scale * scale) {
+    const Mat3 inv = glm::inverse(m_);
+    centre_ = -0.5 * (inv * g_);
+    // Positive definite (Sylvester): an ellipsoid, inside where (p−c)ᵀM(p−c) < k.
+    const double m1 = m_[0][0], m2 = m_[0][0] * m_[1][1] - m_[0][1] * m_[0][1];
+    if (m1 > 0.0 && m2 > 0.0 && det > 0.0) {
+      const double k = glm::dot(centre_, m_ * centre_) - j_;
+      if (k <= 0.0) {
+        bounds_ = AABB();  // empty: Q ≥ 0 everywhere (a point at most)
+      } else {
+        // The ellipsoid's extent along axis i is √(k·(M⁻¹)ᵢᵢ); widened by a few roundings.
+        Vec3 half(std::sqrt(k * inv[0][0]), std::sqrt(k * inv[1][1]), std::sqrt(k * inv[2][2]));
+        half *= 1.0 + 1e-9;
+        bounds_ = AABB{centre_ - half, centre_ + half};
+      }
+    }
+  }
+}
+
+double Quadric::value(const Vec3& p) const { return glm::dot(p, m_ * p) + glm::dot(g_, p) + j_; }
+
+Vec3 Quadric::gradient(const Vec3& p) const { return 2.0 * (m_ * p) + g_; }
+
+int Quadric::lineCrossings(const Ray& ray, double t[2], bool entering[2], bool& startsInside) const {
+  // Shift the origin along the ray to its closest approach to the centre: s = s0 + u.
+  const double dd = glm::dot(ray.d, ray.d);
+  const double s0 = dd > 0.0 ? glm::dot(centre_ - ray.o, ray.d) / dd : 0.0;
+  const Vec3 o = ray.o + s0 * ray.d;
+  const Vec3 md = m_ * ray.d;
+  const double a = glm::dot(ray.d, md);
+  const double h = glm::dot(o, md) + 0.5 * glm::dot(g_, ray.d);
+  const double c = value(o);
+  int n = 0;
+  auto polish = [&](double u) {
+    // One Newton step on Q itself, unless the slope is too flat to trust.
+    const double s = s0 + u;
+    const Vec3 p = ray.o + s * ray.d;
+    const double slope = glm::dot(gradient(p), ray.d);
+    const double step = slope != 0.0 ? value(p) / slope : 0.0;
+    return std::abs(step) <= 1e-6 * (1.0 + std::abs(u)) ? s - step : s;
+  };
+  if (a != 0.0) {
+    double u0, u1;
+    const double disc = h * h - a * c;
+    if (!solveQuadratic(a, h, c, disc, u0, u1) || !(u0 < u1)) {
+      // No root or a double one: the sign of a holds on the whole line (but at a point).
+      startsInside = a < 0.0;
+      return 0;
+    }
+    t[0] = polish(u0);
+    t[1] = polish(u1);
+    if (t[1] < t[0]) std::swap(t[0], t[1]);
+    entering[0] = a > 0.0;
+    entering[1] = !entering[0];
+    startsInside = a < 0.0;
+    n = 2;
+  } else if (h != 0.0) {
+    t[0] = polish(-c / (2.0 * h));
+    entering[0] = h < 0.0;  // Q decreases along the ray
+    startsInside = !entering[0];
+    n = 1;
+  } else {
+    startsInside = c < 0.0;  // Q is constant along the line
+  }
+  return n;
+}
+
+bool Quadric::intersect(const Ray& ray, Hit& hit) const {
+  double t[2];
+  bool entering[2], startsInside;
+  const int n = lineCrossings(ray, t, entering, startsInside);
+  for (int i = 0; i < n; ++i) {
+    if (ray.tmin < t[i] && t[i] < ray.tmax) {
+      hit.t = t[i];
+      hit.shape = this;
+      hit.part = 0;
+      return true;
+    }
+  }
+  return false;
+}
+
+void Quadric::crossings(const Ray& ray, CrossingList& out) const {
+  double t[2];
+  bool entering[2], inside;
+  const int n = lineCrossings(ray, t, entering, inside);
+  // Inside at tmin: the state after the crossings before it (a root at tmin is listed).
+  for (int i = 0; i < n; ++i)
+    if (t[i] < ray.tmin) inside = entering[i];
+  out.startsInside = inside;
+  for (int i = 0; i < n; ++i) {
+    if (ray.tmin <= t[i] && t[i] <= ray.tmax) {
+      Crossing c;
+      c.hit.t = t[i];
+      c.hit.shape = this;
+      c.entering = entering[i];
+      out.items.push_back(c);
+    }
+  }
+}
+
+SurfaceInfo Quadric::surface(const Ray& ray, const Hit& hit) const {
+  SurfaceInfo s;
+  s.p = ray.at(hit.t);
+  Vec3 n = gradient(s.p);
+  const double len = glm::length(n);
+  n = len > 0.0 ? n / len : Vec3(1.0, 0.0, 0.0);
+  // A hit point is off the surface by about the rounding of t·d and of the origin; bound
+  // it generously by the size of the numbers involved.
+  s.pError = gamma(8) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d)) + gamma(4) * glm::abs(s.p);
+  s.ng = n;
+  s.ns = n;
+  return s;
+}
+
+}  // namespace lucent
