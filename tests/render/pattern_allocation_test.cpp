@@ -1,4 +1,4 @@
-// "Pattern evaluation allocates nothing per ray" (issue 21): every pattern's value, its
+// Pattern evaluation allocates nothing per ray (docs/patterns-noise.md): every pattern's value, its
 // colour through a colour map, the block patterns, the normal perturbations and the sky are
 // evaluated while a counting operator new (this file replaces the global one for the test
 // executable, counting only while a Counting scope is open on the calling thread) watches.
