@@ -1,6 +1,7 @@
 #include "quadric.h"
 
 #include "quadratic.h"
+#include "span.h"
 
 #include <stdexcept>
 
@@ -97,15 +98,8 @@ bool Quadric::intersect(const Ray& ray, Hit& hit) const {
   double t[2];
   bool entering[2], startsInside;
   const int n = lineCrossings(ray, t, entering, startsInside);
-  for (int i = 0; i < n; ++i) {
-    if (ray.tmin < t[i] && t[i] < ray.tmax) {
-      hit.t = t[i];
-      hit.shape = this;
-      hit.part = 0;
-      return true;
-    }
-  }
-  return false;
+  const SurfaceRoot roots[2] = {{t[0]}, {t[1]}};
+  return intersectRoots(roots, n, ray, this, hit);
 }
 
 void Quadric::crossings(const Ray& ray, CrossingList& out) const {
