@@ -33,6 +33,8 @@ struct TriangleSpec {
   std::optional<std::array<Vec3, 3>> normals;  // unit vertex normals na, nb, nc
 };
 enum class SmoothMode { Auto, True, False };
+// Exponents as POV-Ray's superellipsoid { <e, n> }; the poles lie on the z axis.
+struct SuperellipsoidSpec { double e = 1.0; double n = 1.0; };
 struct MeshSpec {
   std::string src;  // as written ("" for inline meshes)
   SmoothMode smooth = SmoothMode::Auto;
@@ -46,6 +48,6 @@ struct QuadricSpec {
   double d = -1.0;
 };
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
-                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec>;
+                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec>;
 
 }  // namespace lucent

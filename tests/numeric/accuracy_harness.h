@@ -62,6 +62,9 @@ std::shared_ptr<RefShape> refCone(const Vec3& base, double rBase, const Vec3& ca
 // sampling and refined by golden-section search) and bisected to the last bit. Tangent
 // rays are caught at the critical point, not lost between samples.
 std::shared_ptr<RefShape> refTorus(double major, double minor);
+// A superellipsoid (POV-Ray's axes): its gauge sampled along the line cut at the
+// coordinate planes, extrema refined, sign changes bisected to the last bit.
+std::shared_ptr<RefShape> refSuperellipsoid(double e, double n);
 // The inner reference placed by an affine map (the double matrix is the truth; its
 // inverse and normal matrix are computed in long double).
 std::shared_ptr<RefShape> refInstance(std::shared_ptr<RefShape> inner, const Mat4& worldFromObject);

@@ -4,6 +4,7 @@
 // bisection of the tube's distance function instead of a quartic).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "accuracy_harness.h"
 
@@ -400,6 +401,136 @@ class RefTorusImpl final : public RefShape {
   LD R_, r_;
 };
 
+// The superellipsoid (x, y, z in POV-Ray's axes, poles on z): the roots of its gauge
+// N(p) − 1, N = ‖(‖(|x|, |y|)‖_{2/e}, |z|)‖_{2/n}, along the line cut at the planes x = 0,
+// y = 0, z = 0 (where N has kinks or cusps); on each piece N is sampled densely, its
+// extrema refined by golden-section search, and every sign change between them bisected
+// to the last long-double bit. The normal is the gradient of the equation's other form,
+// (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n), independent of the gauge's formulas.
+class RefSuperellipsoidImpl final : public RefShape {
+ public:
+  RefSuperellipsoidImpl(double e, double n) : e_(e), n_(n), p_(2 / e_), q_(2 / n_) {}
+
+  void lineRoots(const LRay& ray, std::vector<LRoot>& out) const override {
+    const LD B = 1.0625L;
+    LD t0 = -std::numeric_limits<LD>::infinity(), t1 = std::numeric_limits<LD>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      if (ray.d[i] == 0) {
+        if (std::abs(ray.o[i]) > B) return;
+        continue;
+      }
+      LD a = (-B - ray.o[i]) / ray.d[i], b = (B - ray.o[i]) / ray.d[i];
+      if (a > b) std::swap(a, b);
+      t0 = std::max(t0, a);
+      t1 = std::min(t1, b);
+    }
+    if (!(t0 < t1)) return;
+    std::vector<LD> cuts = {t0, t1};
+    for (int i = 0; i < 3; ++i)
+      if (ray.d[i] != 0) {
+        LD t = -ray.o[i] / ray.d[i];
+        if (t0 < t && t < t1) cuts.push_back(t);
+      }
+    std::sort(cuts.begin(), cuts.end());
+    std::vector<std::pair<LD, LD>> breaks;  // monotone between consecutive ones
+    std::vector<LD> touching;
+    for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const LD a = cuts[k], b = cuts[k + 1];
+      const int n = 2000;
+      std::vector<LD> ts(n + 1), gs(n + 1);
+      for (int i = 0; i <= n; ++i) {
+        ts[i] = i == n ? b : a + (b - a) * i / n;
+        gs[i] = g(ray, ts[i]);
+      }
+      breaks.push_back({ts[0], gs[0]});
+      for (int i = 1; i < n; ++i) {
+        bool isMin = gs[i] < gs[i - 1] && gs[i] <= gs[i + 1];
+        bool isMax = gs[i] > gs[i - 1] && gs[i] >= gs[i + 1];
+        if (!isMin && !isMax) continue;
+        LD t = golden(ray, ts[i - 1], ts[i + 1], isMin ? 1 : -1);
+        LD gt = g(ray, t);
+        breaks.push_back({t, gt});
+        if (isMin && gt == 0) touching.push_back(t);
+      }
+    }
+    breaks.push_back({cuts.back(), g(ray, cuts.back())});
+    std::vector<LD> roots = touching;
+    for (LD t : touching) roots.push_back(t);
+    for (size_t i = 0; i + 1 < breaks.size(); ++i) {
+      auto [a, ga] = breaks[i];
+      auto [b, gb] = breaks[i + 1];
+      if ((ga < 0 && gb > 0) || (ga > 0 && gb < 0)) roots.push_back(bisect(ray, a, b, ga));
+    }
+    std::sort(roots.begin(), roots.end());
+    for (LD t : roots) {
+      LRoot r{t, LVec(0), true};
+      if (!normalAt(ray.at(t), r.n)) r.normalDefined = false;
+      out.push_back(r);
+    }
+  }
+
+ private:
+  static LD norm(LD a, LD b, LD p) {
+    LD m = std::max(a, b), s = std::min(a, b);
+    if (!(s > 0)) return m;
+    return m * std::pow(1 + std::pow(s / m, p), 1 / p);
+  }
+  LD g(const LRay& ray, LD t) const {
+    LVec p = ray.at(t);
+    return norm(norm(std::abs(p.x), std::abs(p.y), p_), std::abs(p.z), q_) - 1;
+  }
+  LD golden(const LRay& ray, LD a, LD b, int sign) const {
+    const LD k = (std::sqrt(5.0L) - 1) / 2;
+    LD x1 = b - k * (b - a), x2 = a + k * (b - a);
+    LD f1 = sign * g(ray, x1), f2 = sign * g(ray, x2);
+    for (int i = 0; i < 120 && x1 < x2; ++i) {
+      if (f1 < f2) {
+        b = x2, x2 = x1, f2 = f1;
+        x1 = b - k * (b - a);
+        f1 = sign * g(ray, x1);
+      } else {
+        a = x1, x1 = x2, f1 = f2;
+        x2 = a + k * (b - a);
+        f2 = sign * g(ray, x2);
+      }
+    }
+    return f1 < f2 ? x1 : x2;
+  }
+  LD bisect(const LRay& ray, LD a, LD b, LD ga) const {
+    for (int i = 0; i < 200; ++i) {
+      LD m = (a + b) / 2;
+      if (m == a || m == b) break;
+      LD gm = g(ray, m);
+      if (gm == 0) return m;
+      if ((gm < 0) == (ga < 0)) {
+        a = m;
+        ga = gm;
+      } else {
+        b = m;
+      }
+    }
+    return (a + b) / 2;
+  }
+  // ∇((X^a + Y^a)^b + Z^c), a = 2/e, b = e/n, c = 2/n; false where it is not finite and
+  // non-zero (a crease or tip of exponents above 2).
+  bool normalAt(const LVec& p, LVec& n) const {
+    const LD a = 2 / e_, b = e_ / n_, c = 2 / n_;
+    LD X = std::abs(p.x), Y = std::abs(p.y), Z = std::abs(p.z);
+    LD S = std::pow(X, a) + std::pow(Y, a);
+    LD common = S > 0 ? b * std::pow(S, b - 1) * a : 0;
+    LD gx = X > 0 ? common * std::pow(X, a - 1) : (a > 1 ? 0 : std::numeric_limits<LD>::infinity());
+    LD gy = Y > 0 ? common * std::pow(Y, a - 1) : (a > 1 ? 0 : std::numeric_limits<LD>::infinity());
+    LD gz = Z > 0 ? c * std::pow(Z, c - 1) : (c > 1 ? 0 : std::numeric_limits<LD>::infinity());
+    LVec v(std::copysign(gx, p.x), std::copysign(gy, p.y), std::copysign(gz, p.z));
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return false;
+    if (glm::dot(v, v) == 0) return false;
+    n = normalizeL(v);
+    return true;
+  }
+
+  LD e_, n_, p_, q_;
+};
+
 class RefInstanceImpl final : public RefShape {
  public:
   RefInstanceImpl(std::shared_ptr<RefShape> inner, const Mat4& m) : inner_(std::move(inner)) {
@@ -439,6 +570,9 @@ std::shared_ptr<RefShape> refCone(const Vec3& base, double r0, const Vec3& cap, 
 }
 std::shared_ptr<RefShape> refTorus(double R, double r) {
   return std::make_shared<RefTorusImpl>(R, r);
+}
+std::shared_ptr<RefShape> refSuperellipsoid(double e, double n) {
+  return std::make_shared<RefSuperellipsoidImpl>(e, n);
 }
 std::shared_ptr<RefShape> refInstance(std::shared_ptr<RefShape> inner, const Mat4& m) {
   return std::make_shared<RefInstanceImpl>(std::move(inner), m);

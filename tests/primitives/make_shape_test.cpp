@@ -28,6 +28,7 @@ TEST_CASE("makeShape: every element builds its primitive with the spec's paramet
       DiscSpec{Vec3(0.0), Vec3(0, 0, 1), 1.0, 0.0},
       tri,
       meshSpec,
+      SuperellipsoidSpec{0.3, 0.7},
   };
   // Every one of them is crossed by the z axis from z = 5 first at z = 1 (the torus at its
   // tube: the ray runs at x = 1 for it; the open cylinder from the side) or, for the flat
@@ -100,6 +101,8 @@ TEST_CASE("makeShape: impossible parameters throw std::invalid_argument", "[prim
       DiscSpec{Vec3(0.0), Vec3(0, 1, 0), 1.0, 1.0},
       DiscSpec{Vec3(0.0), Vec3(0, 1, 0), 0.0, 0.0},
       DiscSpec{Vec3(0.0), Vec3(0.0), 1.0, 0.0},
+      SuperellipsoidSpec{0.0, 1.0},
+      SuperellipsoidSpec{1.0, 20.0},
   };
   for (const ShapeSpec& spec : bad) {
     INFO(shapeElementName(spec));

@@ -87,7 +87,12 @@ Outcome leaveSurfaces(const Shape& shape, bool convex, const AABB& aim, int coun
       bool bad = false;
       if (shape.intersect(ray, again)) {
         double dist = again.t * glm::length(ray.d);
-        bad = dist < 1e-6 * size || (convex && shape.isSolid() && outward);
+        // A solid may truly be thinner than 1e-6 (a superellipsoid's fins near its creases):
+        // a re-hit far beyond the offset's error box, with the stretch before it on the side
+        // the ray left to, is that wall's other face, not the surface found again.
+        bool thinWall = shape.isSolid() && dist > 1e3 * glm::length(si.pError) &&
+                        shape.inside(ray.at(0.5 * again.t)) == !outward;
+        bad = (dist < 1e-6 * size && !thinWall) || (convex && shape.isSolid() && outward);
       }
       if (bad) {
         ++out.rehits;

@@ -1,0 +1,332 @@
+#include "superellipsoid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace lucent {
+
+namespace {
+
+// The clipping box: N >= max(|x|, |y|, |z|) for every exponent, so N > 1 on its faces by
+// far more than the rounding of points far from the origin.
+constexpr double kBoxHalf = 1.0 + 1.0 / 64.0;
+// N's computed value is within a few ulps of the exact gauge at the computed point (each
+// ‖·‖ is 1-Lipschitz in its arguments, each pow errs by an ulp): a range of N farther than
+// this from 1, plus the rounding of the points themselves, surely holds no root.
+constexpr double kRangeMargin = 1e-14;
+// Relative slack on comparing the derivative's bounds, far above their rounding.
+constexpr double kSlopeSlack = 1e-9;
+// Halvings of a piece before a stretch is decided by its end signs alone (a tangency
+// within rounding).
+constexpr int kMaxDepth = 80;
+
+// ‖(a, b)‖ with exponent p, for a, b >= 0, scaled by the larger.
+double normOf(double a, double b, double p, double invP) {
+  double m = std::max(a, b), s = std::min(a, b);
+  if (!(s > 0.0)) return m;
+  return m * std::pow(1.0 + std::pow(s / m, p), invP);
+}
+
+// a / ‖(a, b)‖, in [0, 1]: increasing in a, decreasing in b.
+double ratioOf(double a, double b, double p, double invP) {
+  if (!(a > 0.0)) return 0.0;
+  if (!(b > 0.0)) return 1.0;
+  if (a >= b) return 1.0 / std::pow(1.0 + std::pow(b / a, p), invP);
+  double r = a / b;
+  return r / std::pow(1.0 + std::pow(r, p), invP);
+}
+
+// A range of non-negative values.
+struct Range {
+  double lo, hi;
+};
+
+// {x^k : x in r}, r within [0, 1] (0^k is infinite for k < 0).
+Range powRange(Range r, double k) {
+  if (k >= 0.0) return {std::pow(r.lo, k), std::pow(r.hi, k)};
+  return {std::pow(r.hi, k), std::pow(r.lo, k)};
+}
+
+Range product(Range a, Range b) {
+  double lo = a.lo * b.lo, hi = a.hi * b.hi;
+  if (std::isnan(lo)) lo = 0.0;  // 0·∞: nothing is known beyond the obvious
+  if (std::isnan(hi)) hi = kInf;
+  return {lo, hi};
+}
+
+}  // namespace
+
+Superellipsoid::Superellipsoid(double e, double n) : e_(e), n_(n) {
+  auto ok = [](double v) { return v >= kMinExponent && v <= kMaxExponent; };
+  if (!ok(e) || !ok(n))
+    throw std::invalid_argument("superellipsoid: the exponents e and n must lie in [0.01, 10]");
+  p_ = 2.0 / e;
+  invP_ = 0.5 * e;
+  q_ = 2.0 / n;
+  invQ_ = 0.5 * n;
+}
+
+AABB Superellipsoid::bounds() const { return {Vec3(-1.0), Vec3(1.0)}; }
+
+double Superellipsoid::gauge(const Vec3& p) const {
+  double r = normOf(std::abs(p.x), std::abs(p.y), p_, invP_);
+  return normOf(r, std::abs(p.z), q_, invQ_);
+}
+
+Vec3 Superellipsoid::gradient(const Vec3& p) const {
+  // ∂N/∂z = (Z/N)^(q−1), ∂N/∂x = (R/N)^(q−1)·(X/R)^(p−1), R = ‖(X, Y)‖_p: powers of ratios
+  // in [0, 1], so only a zero ratio under a negative power (a crease) is infinite.
+  const double X = std::abs(p.x), Y = std::abs(p.y), Z = std::abs(p.z);
+  const double R = normOf(X, Y, p_, invP_);
+  const double gR = std::pow(ratioOf(R, Z, q_, invQ_), q_ - 1.0);
+  double gX = gR * std::pow(ratioOf(X, Y, p_, invP_), p_ - 1.0);
+  double gY = gR * std::pow(ratioOf(Y, X, p_, invP_), p_ - 1.0);
+  double gZ = std::pow(ratioOf(Z, R, q_, invQ_), q_ - 1.0);
+  // On a coordinate plane the surface is symmetric: its normal (or the mean of the two
+  // sides' normals, on a kink or crease) has no component across the plane.
+  if (X == 0.0 || std::isnan(gX)) gX = 0.0;
+  if (Y == 0.0 || std::isnan(gY)) gY = 0.0;
+  if (Z == 0.0 || std::isnan(gZ)) gZ = 0.0;
+  return {std::copysign(gX, p.x), std::copysign(gY, p.y), std::copysign(gZ, p.z)};
+}
+
+bool Superellipsoid::inside(const Vec3& p) const { return gauge(p) < 1.0; }
+
+namespace {
+
+// One line's search: the pieces, their stretches and the refinement of each root.
+class LineSolver {
+ public:
+  LineSolver(const Superellipsoid& s, double p, double invP, double q, double invQ,
+             const Ray& ray, double margin, Superellipsoid::Roots& out, double firstAfter)
+      : s_(s), p_(p), invP_(invP), q_(q), invQ_(invQ), o_(ray.o), d_(ray.d),
+        margin_(margin), out_(out), firstAfter_(firstAfter) {}
+
+  // N − 1 at o + t·d: negative inside.
+  double value(double t) const { return s_.gauge(o_ + t * d_) - 1.0; }
+
+  // The roots on one piece [a, b], on which the signs of x, y, z are fixed: slope holds
+  // d|x|/dt, d|y|/dt, d|z|/dt there.
+  void piece(double a, double fa, double b, double fb, const Vec3& slope) {
+    slope_ = slope;
+    isolate(a, fa, b, fb, 0);
+  }
+
+  bool done() const { return done_; }
+
+ private:
+  Vec3 absAt(double t) const { return glm::abs(o_ + t * d_); }
+
+  void isolate(double a, double fa, double b, double fb, int depth) {
+    if (done_) return;
+    const bool change = (fa < 0.0) != (fb < 0.0);
+    const Vec3 A = absAt(a), B = absAt(b);
+    const Vec3 lo = glm::min(A, B), hi = glm::max(A, B);
+    const double rLo = normOf(lo.x, lo.y, p_, invP_), rHi = normOf(hi.x, hi.y, p_, invP_);
+    // N is increasing in |x|, |y|, |z|, each affine over the stretch.
+    const double nLo = normOf(rLo, lo.z, q_, invQ_), nHi = normOf(rHi, hi.z, q_, invQ_);
+    if (nLo > 1.0 + margin_ || nHi < 1.0 - margin_ || monotone(lo, hi, rLo, rHi)) {
+      if (change) addRoot(a, fa, b, fb);
+      return;
+    }
+    const double m = a + 0.5 * (b - a);
+    if (depth >= kMaxDepth || !(a < m && m < b) ||
+        b - a <= 4.0 * kMachineEps * std::max(std::abs(a), std::abs(b))) {
+      if (change) addRoot(a, fa, b, fb);
+      return;
+    }
+    const double fm = value(m);
+    isolate(a, fa, m, fm, depth + 1);
+    isolate(m, fm, b, fb, depth + 1);
+  }
+
+  // Whether dN/dt surely keeps one sign over the box [lo, hi] of (|x|, |y|, |z|).
+  bool monotone(const Vec3& lo, const Vec3& hi, double rLo, double rHi) const {
+    double posLo = 0.0, posHi = 0.0, negLo = 0.0, negHi = 0.0;
+    auto add = [&](Range g, double slope) {
+      if (slope > 0.0) {
+        posLo += g.lo * slope;
+        posHi += g.hi * slope;
+      } else if (slope < 0.0) {
+        negLo += g.lo * -slope;
+        negHi += g.hi * -slope;
+      }
+    };
+    if (slope_.x != 0.0 || slope_.y != 0.0) {
+      // R/N rises with R and falls with |z|; X/R rises with |x| and falls with |y|.
+      const Range gR = powRange({ratioOf(rLo, hi.z, q_, invQ_), ratioOf(rHi, lo.z, q_, invQ_)}, q_ - 1.0);
+      if (slope_.x != 0.0)
+        add(product(gR, powRange({ratioOf(lo.x, hi.y, p_, invP_), ratioOf(hi.x, lo.y, p_, invP_)}, p_ - 1.0)),
+            slope_.x);
+      if (slope_.y != 0.0)
+        add(product(gR, powRange({ratioOf(lo.y, hi.x, p_, invP_), ratioOf(hi.y, lo.x, p_, invP_)}, p_ - 1.0)),
+            slope_.y);
+    }
+    if (slope_.z != 0.0)
+      add(powRange({ratioOf(lo.z, rHi, q_, invQ_), ratioOf(hi.z, rLo, q_, invQ_)}, q_ - 1.0), slope_.z);
+    const bool rising = negHi == 0.0 || posLo > negHi * (1.0 + kSlopeSlack);
+    const bool falling = posHi == 0.0 || negLo > posHi * (1.0 + kSlopeSlack);
+    return rising || falling;
+  }
+
+  void addRoot(double a, double fa, double b, double fb) {
+    double t = refine(a, fa, b, fb);
+    if (out_.count < Superellipsoid::kMaxRoots) out_.t[out_.count++] = t;
+    if (t > firstAfter_) done_ = true;
+  }
+
+  // Newton kept inside the bracket [a, b] whose ends differ in sign, bisecting when a step
+  // leaves it or does not halve the previous one (Numerical Recipes' rtsafe). Returns the
+  // bracket's end where |N − 1| is smaller once the two are adjacent (or N = 1 exactly).
+  double refine(double a, double fa, double b, double fb) const {
+    const bool aInside = fa < 0.0;
+    double lo = a, hi = b, fLo = fa, fHi = fb;
+    double t = a + 0.5 * (b - a);
+    double dxOld = b - a, dx = dxOld;
+    for (int it = 0; it < 200; ++it) {
+      const Vec3 pt = o_ + t * d_;
+      const double f = s_.gauge(pt) - 1.0;
+      if (f == 0.0) return t;
+      if ((f < 0.0) == aInside) {
+        lo = t;
+        fLo = f;
+      } else {
+        hi = t;
+        fHi = f;
+      }
+      const double df = glm::dot(s_.gradient(pt), d_);
+      double next = 0.0;
+      bool newton = std::isfinite(df) && df != 0.0;
+      if (newton) {
+        next = t - f / df;
+        newton = lo < next && next < hi && std::abs(2.0 * f) <= std::abs(dxOld * df);
+      }
+      if (!newton) next = lo + 0.5 * (hi - lo);
+      dxOld = dx;
+      dx = next - t;
+      if (!(lo < next && next < hi)) break;  // lo and hi are adjacent doubles
+      t = next;
+    }
+    return std::abs(fLo) <= std::abs(fHi) ? lo : hi;
+  }
+
+  const Superellipsoid& s_;
+  double p_, invP_, q_, invQ_;
+  Vec3 o_, d_;
+  double margin_;
+  Superellipsoid::Roots& out_;
+  double firstAfter_;
+  Vec3 slope_{0.0};
+  bool done_ = false;
+};
+
+}  // namespace
+
+void Superellipsoid::roots(const Ray& ray, double lo, double hi, Roots& out,
+                           double firstAfter) const {
+  out.count = 0;
+  out.startsInside = false;
+  // The line's stretch inside the clipping box.
+  double tEnter = -kInf, tExit = kInf;
+  for (int i = 0; i < 3; ++i) {
+    if (ray.d[i] == 0.0) {
+      if (!(std::abs(ray.o[i]) <= kBoxHalf)) return;
+      continue;
+    }
+    double t0 = (-kBoxHalf - ray.o[i]) / ray.d[i], t1 = (kBoxHalf - ray.o[i]) / ray.d[i];
+    if (t0 > t1) std::swap(t0, t1);
+    tEnter = std::max(tEnter, t0);
+    tExit = std::min(tExit, t1);
+  }
+  if (!(tEnter < tExit)) return;
+  const double a = std::max(lo, tEnter), b = std::min(hi, tExit);
+  // The rounding of the points themselves, for the range test.
+  const double scale =
+      maxComponent(glm::abs(ray.o)) + std::max(std::abs(a), std::abs(b)) * maxComponent(glm::abs(ray.d));
+  LineSolver solver(*this, p_, invP_, q_, invQ_, ray,
+                    kRangeMargin + 8.0 * kMachineEps * (std::isfinite(scale) ? scale : 0.0), out,
+                    firstAfter);
+  if (!(a <= b)) {
+    out.startsInside = tEnter <= lo && lo <= tExit && solver.value(lo) < 0.0;
+    return;
+  }
+  // Cut at the coordinate planes: on each piece |x|, |y|, |z| are affine.
+  double ts[5];
+  int nt = 0;
+  ts[nt++] = a;
+  for (int i = 0; i < 3; ++i) {
+    if (ray.d[i] == 0.0) continue;
+    double t = -ray.o[i] / ray.d[i];
+    if (a < t && t < b) ts[nt++] = t;
+  }
+  ts[nt++] = b;
+  std::sort(ts + 1, ts + nt - 1);
+  double f0 = solver.value(ts[0]);
+  out.startsInside = f0 < 0.0;
+  for (int k = 0; k + 1 < nt && !solver.done(); ++k) {
+    const double t0 = ts[k], t1 = ts[k + 1];
+    const double f1 = solver.value(t1);
+    if (t0 < t1) {
+      const Vec3 mid = ray.at(t0 + 0.5 * (t1 - t0));
+      Vec3 slope(0.0);
+      for (int i = 0; i < 3; ++i)
+        slope[i] = mid[i] > 0.0 ? ray.d[i] : mid[i] < 0.0 ? -ray.d[i] : 0.0;
+      solver.piece(t0, f0, t1, f1, slope);
+    }
+    f0 = f1;
+  }
+}
+
+bool Superellipsoid::intersect(const Ray& ray, Hit& hit) const {
+  Roots r;
+  roots(ray, ray.tmin, ray.tmax, r, ray.tmin);
+  for (int i = 0; i < r.count; ++i) {
+    if (ray.tmin < r.t[i] && r.t[i] < ray.tmax) {
+      hit.t = r.t[i];
+      hit.shape = this;
+      hit.part = 0;
+      return true;
+    }
+  }
+  return false;
+}
+
+void Superellipsoid::crossings(const Ray& ray, CrossingList& out) const {
+  Roots r;
+  roots(ray, ray.tmin, ray.tmax, r);
+  out.startsInside = r.startsInside;
+  bool in = r.startsInside;
+  for (int i = 0; i < r.count; ++i) {
+    Crossing c;
+    c.hit.t = r.t[i];
+    c.hit.shape = this;
+    in = !in;
+    c.entering = in;
+    out.items.push_back(c);
+  }
+}
+
+SurfaceInfo Superellipsoid::surface(const Ray& ray, const Hit& hit) const {
+  SurfaceInfo s;
+  s.p = ray.at(hit.t);
+  // The point's rounding, plus its distance from the surface: |N − 1| is a few ulps and
+  // |∇N| >= N/|p| >= 1/√3 (Euler: ∇N·p = N), so that distance is below √3 times it.
+  s.pError = gamma(16) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d)) + Vec3(gamma(64));
+  Vec3 g = gradient(s.p);
+  double m = maxComponent(glm::abs(g));
+  if (std::isinf(m)) {
+    // On a crease of an exponent above 2: the limit of the normals is along the axis
+    // whose component is infinite.
+    for (int i = 0; i < 3; ++i) g[i] = std::isinf(g[i]) ? std::copysign(1.0, g[i]) : 0.0;
+  } else if (m > 0.0) {
+    g /= m;
+  } else {
+    g = s.p;
+  }
+  s.ng = glm::normalize(g);
+  s.ns = s.ng;
+  return s;
+}
+
+}  // namespace lucent
