@@ -15,8 +15,8 @@ constexpr double kBoxHalf = 1.0 + 1.0 / 64.0;
 // ‖·‖ is 1-Lipschitz in its arguments, each pow errs by an ulp): a range of N farther than
 // this from 1, plus the rounding of the points themselves, surely holds no root.
 constexpr double kRangeMargin = 1e-14;
-// Relative slack on comparing the derivative's bounds, far above their rounding.
-constexpr double kSlopeSlack = 1e-9;
+// The relative rounding of the derivative's bounds, per unit of the exponents: each bound
+// is a product of pows whose exponents (p − 1, q − 1) multiply their base's rounding.
 // Halvings of a piece before a stretch is decided by its end signs alone (a tangency
 // within rounding).
 constexpr int kMaxDepth = 80;
@@ -101,7 +101,8 @@ class LineSolver {
   LineSolver(const Superellipsoid& s, double p, double invP, double q, double invQ,
              const Ray& ray, double margin, Superellipsoid::Roots& out, double firstAfter)
       : s_(s), p_(p), invP_(invP), q_(q), invQ_(invQ), o_(ray.o), d_(ray.d),
-        margin_(margin), out_(out), firstAfter_(firstAfter) {}
+        margin_(margin), slopeSlack_(8.0 * kMachineEps * (std::abs(p - 1.0) + std::abs(q - 1.0) + 8.0)),
+        out_(out), firstAfter_(firstAfter) {}
 
   // N − 1 at o + t·d: negative inside.
   double value(double t) const { return s_.gauge(o_ + t * d_) - 1.0; }
@@ -121,12 +122,7 @@ class LineSolver {
   void isolate(double a, double fa, double b, double fb, int depth) {
     if (done_) return;
     const bool change = (fa < 0.0) != (fb < 0.0);
-    const Vec3 A = absAt(a), B = absAt(b);
-    const Vec3 lo = glm::min(A, B), hi = glm::max(A, B);
-    const double rLo = normOf(lo.x, lo.y, p_, invP_), rHi = normOf(hi.x, hi.y, p_, invP_);
-    // N is increasing in |x|, |y|, |z|, each affine over the stretch.
-    const double nLo = normOf(rLo, lo.z, q_, invQ_), nHi = normOf(rHi, hi.z, q_, invQ_);
-    if (nLo > 1.0 + margin_ || nHi < 1.0 - margin_ || monotone(lo, hi, rLo, rHi)) {
+    if (resolved(a, fa, b, fb)) {
       if (change) addRoot(a, fa, b, fb);
       return;
     }
@@ -141,8 +137,32 @@ class LineSolver {
     isolate(m, fm, b, fb, depth + 1);
   }
 
-  // Whether dN/dt surely keeps one sign over the box [lo, hi] of (|x|, |y|, |z|).
-  bool monotone(const Vec3& lo, const Vec3& hi, double rLo, double rHi) const {
+  // Whether the stretch [a, b] holds exactly as many roots as its end signs tell (one if
+  // they differ, none if not): N − 1 surely excludes 0 there, or is monotone, or varies
+  // less than its own rounding (a face flat to rounding, a tangency: nothing finer can be
+  // told).
+  bool resolved(double a, double fa, double b, double fb) const {
+    const Vec3 A = absAt(a), B = absAt(b);
+    const Vec3 lo = glm::min(A, B), hi = glm::max(A, B);
+    const double rLo = normOf(lo.x, lo.y, p_, invP_), rHi = normOf(hi.x, hi.y, p_, invP_);
+    // N is increasing in |x|, |y|, |z|, each affine over the stretch: N at the corners.
+    double low = normOf(rLo, lo.z, q_, invQ_) - 1.0, high = normOf(rHi, hi.z, q_, invQ_) - 1.0;
+    if (low > margin_ || high < -margin_) return true;
+    double dLo, dHi;
+    slopeBounds(lo, hi, rLo, rHi, dLo, dHi);
+    if (dLo >= 0.0 || dHi <= 0.0) return true;
+    // The mean-value form, f(t) = f(a) + f'(ξ)(t − a): tight where the corners are loose,
+    // as on a ray parallel to a flat face, along which |x|, |y|, |z| change and N does not.
+    const double w = b - a;
+    low = std::max({low, fa + dLo * w, fb - dHi * w});
+    high = std::min({high, fa + dHi * w, fb - dLo * w});
+    return low > margin_ || high < -margin_ || high - low <= margin_;
+  }
+
+  // Bounds of dN/dt over the box [lo, hi] of (|x|, |y|, |z|), widened by their rounding;
+  // 0 is a bound only when the derivative surely has that sign (or is 0).
+  void slopeBounds(const Vec3& lo, const Vec3& hi, double rLo, double rHi, double& dLo,
+                   double& dHi) const {
     double posLo = 0.0, posHi = 0.0, negLo = 0.0, negHi = 0.0;
     auto add = [&](Range g, double slope) {
       if (slope > 0.0) {
@@ -165,9 +185,10 @@ class LineSolver {
     }
     if (slope_.z != 0.0)
       add(powRange({ratioOf(lo.z, rHi, q_, invQ_), ratioOf(hi.z, rLo, q_, invQ_)}, q_ - 1.0), slope_.z);
-    const bool rising = negHi == 0.0 || posLo > negHi * (1.0 + kSlopeSlack);
-    const bool falling = posHi == 0.0 || negLo > posHi * (1.0 + kSlopeSlack);
-    return rising || falling;
+    dLo = negHi == 0.0 ? 0.0 : posLo * (1.0 - slopeSlack_) - negHi * (1.0 + slopeSlack_);
+    dHi = posHi == 0.0 ? 0.0 : posHi * (1.0 + slopeSlack_) - negLo * (1.0 - slopeSlack_);
+    if (std::isnan(dLo)) dLo = -kInf;
+    if (std::isnan(dHi)) dHi = kInf;
   }
 
   void addRoot(double a, double fa, double b, double fb) {
@@ -215,6 +236,7 @@ class LineSolver {
   double p_, invP_, q_, invQ_;
   Vec3 o_, d_;
   double margin_;
+  double slopeSlack_;  // relative rounding of the derivative's bounds
   Superellipsoid::Roots& out_;
   double firstAfter_;
   Vec3 slope_{0.0};
