@@ -59,7 +59,7 @@ TEST_CASE("accuracy: near-singular transforms through Instance", "[numeric][accu
   requireWithinBounds(nearSingularCases(1.0));
 }
 
-TEST_CASE("accuracy: superellipsoids: nearly a cube, grazing its edges and along its faces; tangent and secondary rays",
+TEST_CASE("accuracy: superellipsoids: a near cube grazed at its edges and along its faces, tangent and secondary rays",
           "[numeric][accuracy][superellipsoid]") {
   requireWithinBounds(superellipsoidCases(1.0));
 }
