@@ -116,8 +116,46 @@ class LineSolver {
 
   bool done() const { return done_; }
 
+  // For e, n <= 2, N is a norm (an absolute norm of a norm), so N − 1 is convex along the
+  // whole line: one root where the ends' signs differ, none where both are negative; with
+  // both positive, Kelley's cutting planes (the tangents at the bracket's ends bound a
+  // convex function from below, their meeting point is the next trial) either find a
+  // negative point, which splits the window into two one-root brackets, or prove the
+  // minimum positive. False when it cannot decide (a tangency within rounding): then the
+  // general search runs, nothing having been recorded.
+  bool convexWindow(double a, double fa, double b, double fb) {
+    if ((fa < 0.0) != (fb < 0.0)) {
+      addRoot(a, fa, b, fb);
+      return true;
+    }
+    if (fa < 0.0) return true;
+    double ga = slopeAt(a), gb = slopeAt(b);
+    for (int it = 0; it < 64; ++it) {
+      if (!std::isfinite(ga) || !std::isfinite(gb)) return false;
+      if (ga >= 0.0 || gb <= 0.0) return true;  // the minimum at an end, where N > 1
+      const double c = (fb - fa + ga * a - gb * b) / (ga - gb);
+      if (!(a < c && c < b)) return false;
+      const double lower = fa + ga * (c - a);
+      if (lower > margin_ + 1e-12 * (std::abs(ga) + std::abs(gb)) * (b - a)) return true;
+      const double fc = value(c);
+      if (fc < 0.0) {
+        addRoot(a, fa, c, fc);
+        if (!done_) addRoot(c, fc, b, fb);
+        return true;
+      }
+      const double gc = slopeAt(c);
+      if (gc < 0.0) {
+        a = c, fa = fc, ga = gc;
+      } else {
+        b = c, fb = fc, gb = gc;
+      }
+    }
+    return false;
+  }
+
  private:
   Vec3 absAt(double t) const { return glm::abs(o_ + t * d_); }
+  double slopeAt(double t) const { return glm::dot(s_.gradient(o_ + t * d_), d_); }
 
   void isolate(double a, double fa, double b, double fb, int depth) {
     if (done_) return;
@@ -286,6 +324,7 @@ void Superellipsoid::roots(const Ray& ray, double lo, double hi, Roots& out,
   std::sort(ts + 1, ts + nt - 1);
   double f0 = solver.value(ts[0]);
   out.startsInside = f0 < 0.0;
+  if (e_ <= 2.0 && n_ <= 2.0 && solver.convexWindow(a, f0, b, solver.value(b))) return;
   for (int k = 0; k + 1 < nt && !solver.done(); ++k) {
     const double t0 = ts[k], t1 = ts[k + 1];
     const double f1 = solver.value(t1);
