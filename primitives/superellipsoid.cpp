@@ -15,8 +15,8 @@ constexpr double kBoxHalf = 1.0 + 1.0 / 64.0;
 // ‖·‖ is 1-Lipschitz in its arguments, each pow errs by an ulp): a range of N farther than
 // this from 1, plus the rounding of the points themselves, surely holds no root.
 constexpr double kRangeMargin = 1e-14;
-// Relative slack on comparing the derivative's bounds, far above their rounding.
-constexpr double kSlopeSlack = 1e-9;
+// The relative rounding of the derivative's bounds, per unit of the exponents: each bound
+// is a product of pows whose exponents (p − 1, q − 1) multiply their base's rounding.
 // Halvings of a piece before a stretch is decided by its end signs alone (a tangency
 // within rounding).
 constexpr int kMaxDepth = 80;
@@ -101,7 +101,8 @@ class LineSolver {
   LineSolver(const Superellipsoid& s, double p, double invP, double q, double invQ,
              const Ray& ray, double margin, Superellipsoid::Roots& out, double firstAfter)
       : s_(s), p_(p), invP_(invP), q_(q), invQ_(invQ), o_(ray.o), d_(ray.d),
-        margin_(margin), out_(out), firstAfter_(firstAfter) {}
+        margin_(margin), slopeSlack_(8.0 * kMachineEps * (std::abs(p - 1.0) + std::abs(q - 1.0) + 8.0)),
+        out_(out), firstAfter_(firstAfter) {}
 
   // N − 1 at o + t·d: negative inside.
   double value(double t) const { return s_.gauge(o_ + t * d_) - 1.0; }
@@ -115,18 +116,51 @@ class LineSolver {
 
   bool done() const { return done_; }
 
+  // For e, n <= 2, N is a norm (an absolute norm of a norm), so N − 1 is convex along the
+  // whole line: one root where the ends' signs differ, none where both are negative; with
+  // both positive, Kelley's cutting planes (the tangents at the bracket's ends bound a
+  // convex function from below, their meeting point is the next trial) either find a
+  // negative point, which splits the window into two one-root brackets, or prove the
+  // minimum positive. False when it cannot decide (a tangency within rounding): then the
+  // general search runs, nothing having been recorded.
+  bool convexWindow(double a, double fa, double b, double fb) {
+    if ((fa < 0.0) != (fb < 0.0)) {
+      addRoot(a, fa, b, fb);
+      return true;
+    }
+    if (fa < 0.0) return true;
+    double ga = slopeAt(a), gb = slopeAt(b);
+    for (int it = 0; it < 64; ++it) {
+      if (!std::isfinite(ga) || !std::isfinite(gb)) return false;
+      if (ga >= 0.0 || gb <= 0.0) return true;  // the minimum at an end, where N > 1
+      const double c = (fb - fa + ga * a - gb * b) / (ga - gb);
+      if (!(a < c && c < b)) return false;
+      const double lower = fa + ga * (c - a);
+      if (lower > margin_ + 1e-12 * (std::abs(ga) + std::abs(gb)) * (b - a)) return true;
+      const double fc = value(c);
+      if (fc < 0.0) {
+        addRoot(a, fa, c, fc);
+        if (!done_) addRoot(c, fc, b, fb);
+        return true;
+      }
+      const double gc = slopeAt(c);
+      if (gc < 0.0) {
+        a = c, fa = fc, ga = gc;
+      } else {
+        b = c, fb = fc, gb = gc;
+      }
+    }
+    return false;
+  }
+
  private:
   Vec3 absAt(double t) const { return glm::abs(o_ + t * d_); }
+  double slopeAt(double t) const { return glm::dot(s_.gradient(o_ + t * d_), d_); }
 
   void isolate(double a, double fa, double b, double fb, int depth) {
     if (done_) return;
     const bool change = (fa < 0.0) != (fb < 0.0);
-    const Vec3 A = absAt(a), B = absAt(b);
-    const Vec3 lo = glm::min(A, B), hi = glm::max(A, B);
-    const double rLo = normOf(lo.x, lo.y, p_, invP_), rHi = normOf(hi.x, hi.y, p_, invP_);
-    // N is increasing in |x|, |y|, |z|, each affine over the stretch.
-    const double nLo = normOf(rLo, lo.z, q_, invQ_), nHi = normOf(rHi, hi.z, q_, invQ_);
-    if (nLo > 1.0 + margin_ || nHi < 1.0 - margin_ || monotone(lo, hi, rLo, rHi)) {
+    if (resolved(a, fa, b, fb)) {
       if (change) addRoot(a, fa, b, fb);
       return;
     }
@@ -141,8 +175,32 @@ class LineSolver {
     isolate(m, fm, b, fb, depth + 1);
   }
 
-  // Whether dN/dt surely keeps one sign over the box [lo, hi] of (|x|, |y|, |z|).
-  bool monotone(const Vec3& lo, const Vec3& hi, double rLo, double rHi) const {
+  // Whether the stretch [a, b] holds exactly as many roots as its end signs tell (one if
+  // they differ, none if not): N − 1 surely excludes 0 there, or is monotone, or varies
+  // less than its own rounding (a face flat to rounding, a tangency: nothing finer can be
+  // told).
+  bool resolved(double a, double fa, double b, double fb) const {
+    const Vec3 A = absAt(a), B = absAt(b);
+    const Vec3 lo = glm::min(A, B), hi = glm::max(A, B);
+    const double rLo = normOf(lo.x, lo.y, p_, invP_), rHi = normOf(hi.x, hi.y, p_, invP_);
+    // N is increasing in |x|, |y|, |z|, each affine over the stretch: N at the corners.
+    double low = normOf(rLo, lo.z, q_, invQ_) - 1.0, high = normOf(rHi, hi.z, q_, invQ_) - 1.0;
+    if (low > margin_ || high < -margin_) return true;
+    double dLo, dHi;
+    slopeBounds(lo, hi, rLo, rHi, dLo, dHi);
+    if (dLo >= 0.0 || dHi <= 0.0) return true;
+    // The mean-value form, f(t) = f(a) + f'(ξ)(t − a): tight where the corners are loose,
+    // as on a ray parallel to a flat face, along which |x|, |y|, |z| change and N does not.
+    const double w = b - a;
+    low = std::max({low, fa + dLo * w, fb - dHi * w});
+    high = std::min({high, fa + dHi * w, fb - dLo * w});
+    return low > margin_ || high < -margin_ || high - low <= margin_;
+  }
+
+  // Bounds of dN/dt over the box [lo, hi] of (|x|, |y|, |z|), widened by their rounding;
+  // 0 is a bound only when the derivative surely has that sign (or is 0).
+  void slopeBounds(const Vec3& lo, const Vec3& hi, double rLo, double rHi, double& dLo,
+                   double& dHi) const {
     double posLo = 0.0, posHi = 0.0, negLo = 0.0, negHi = 0.0;
     auto add = [&](Range g, double slope) {
       if (slope > 0.0) {
@@ -165,9 +223,10 @@ class LineSolver {
     }
     if (slope_.z != 0.0)
       add(powRange({ratioOf(lo.z, rHi, q_, invQ_), ratioOf(hi.z, rLo, q_, invQ_)}, q_ - 1.0), slope_.z);
-    const bool rising = negHi == 0.0 || posLo > negHi * (1.0 + kSlopeSlack);
-    const bool falling = posHi == 0.0 || negLo > posHi * (1.0 + kSlopeSlack);
-    return rising || falling;
+    dLo = negHi == 0.0 ? 0.0 : posLo * (1.0 - slopeSlack_) - negHi * (1.0 + slopeSlack_);
+    dHi = posHi == 0.0 ? 0.0 : posHi * (1.0 + slopeSlack_) - negLo * (1.0 - slopeSlack_);
+    if (std::isnan(dLo)) dLo = -kInf;
+    if (std::isnan(dHi)) dHi = kInf;
   }
 
   void addRoot(double a, double fa, double b, double fb) {
@@ -215,6 +274,7 @@ class LineSolver {
   double p_, invP_, q_, invQ_;
   Vec3 o_, d_;
   double margin_;
+  double slopeSlack_;  // relative rounding of the derivative's bounds
   Superellipsoid::Roots& out_;
   double firstAfter_;
   Vec3 slope_{0.0};
@@ -264,6 +324,7 @@ void Superellipsoid::roots(const Ray& ray, double lo, double hi, Roots& out,
   std::sort(ts + 1, ts + nt - 1);
   double f0 = solver.value(ts[0]);
   out.startsInside = f0 < 0.0;
+  if (e_ <= 2.0 && n_ <= 2.0 && solver.convexWindow(a, f0, b, solver.value(b))) return;
   for (int k = 0; k + 1 < nt && !solver.done(); ++k) {
     const double t0 = ts[k], t1 = ts[k + 1];
     const double f1 = solver.value(t1);

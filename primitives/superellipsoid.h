@@ -17,14 +17,19 @@
 // N over a stretch of the piece lies between N at the low and at the high corner of
 // those affine ranges, and dN/dt = Σ ∂N/∂X·X' with each ∂N/∂X a product of powers of
 // ratios (X/R, R/N) that are themselves monotone in X, Y, Z: its lower and upper bounds
-// come from the same corners. A stretch whose range of N excludes 1 (by more than N's
-// rounding) holds no root; one whose derivative bound has one sign is monotone and holds
-// one root exactly when its ends differ in sign; any other stretch is halved, down to
-// rounding-sized stretches near a tangency. Each root is then refined by Newton steps kept
-// inside its bracket (bisection when a step leaves it or converges slowly), to the last
-// bits of double. Every evaluation point is evaluated once and every crossing is a sign
-// change between consecutive points, so crossings alternate and agree with inside() by
-// construction. (Interval Newton-style isolation, e.g. Moore, Kearfott & Cloud,
+// come from the same corners; the mean-value form N(a) + [dN/dt]·(t − a) narrows the
+// range where the corners are loose (a ray parallel to a flat face). A stretch whose range
+// of N excludes 1 (by more than N's rounding) holds no root; one whose derivative bound has
+// one sign is monotone and holds one root exactly when its ends differ in sign, as does
+// one over which N varies less than its rounding; any other stretch is halved. For e, n
+// <= 2, N is a norm and so convex along the line: the tangents at the ends of a bracket
+// bound it from below (Kelley's cutting planes), which decides the whole line in a few
+// steps (a negative point splits it into two one-root brackets, or a positive bound proves
+// a miss); the general search remains for what they leave undecided. Each root is then
+// refined by Newton steps kept inside its bracket (bisection when a step leaves it or
+// converges slowly), to the last bits of double. Every crossing is a sign change between
+// two evaluated points, each evaluated once, so crossings alternate and agree with
+// inside() by construction. (Interval Newton-style isolation, e.g. Moore, Kearfott & Cloud,
 // "Introduction to Interval Analysis", ch. 8; POV-Ray's own method, from the same plane
 // cuts, samples chords and may miss roots.)
 #pragma once

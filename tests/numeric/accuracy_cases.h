@@ -24,6 +24,11 @@ std::vector<CaseResult> meshCases(double effort);
 // so its test can be marked as expected to fail (docs/accuracy.md).
 std::vector<CaseResult> meshAlongEdgeCases(double effort);
 
+// Superellipsoids (accuracy_superellipsoid_cases.cpp): nearly a cube, rays grazing its
+// edges and corners and along its faces; tangent rays on convex and pinched ones; rays
+// leaving the surface.
+std::vector<CaseResult> superellipsoidCases(double effort);
+
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);
 

@@ -436,24 +436,32 @@ class RefSuperellipsoidImpl final : public RefShape {
     std::vector<LD> touching;
     for (size_t k = 0; k + 1 < cuts.size(); ++k) {
       const LD a = cuts[k], b = cuts[k + 1];
-      const int n = 2000;
+      const int n = 600;
       std::vector<LD> ts(n + 1), gs(n + 1);
       for (int i = 0; i <= n; ++i) {
         ts[i] = i == n ? b : a + (b - a) * i / n;
         gs[i] = g(ray, ts[i]);
       }
       breaks.push_back({ts[0], gs[0]});
-      for (int i = 1; i < n; ++i) {
-        bool isMin = gs[i] < gs[i - 1] && gs[i] <= gs[i + 1];
-        bool isMax = gs[i] > gs[i - 1] && gs[i] >= gs[i + 1];
+      // Every sample that is a local extremum of the samples, the piece's ends included
+      // (an extremum just past a cut lies between the first two samples).
+      for (int i = 0; i <= n; ++i) {
+        const int l = std::max(i - 1, 0), r = std::min(i + 1, n);
+        bool isMin = (i == 0 || gs[i] < gs[l]) && gs[i] <= gs[r] && (i > 0 || gs[i] < gs[r]);
+        bool isMax = (i == 0 || gs[i] > gs[l]) && gs[i] >= gs[r] && (i > 0 || gs[i] > gs[r]);
+        if (i == n) {
+          isMin = gs[i] < gs[l];
+          isMax = gs[i] > gs[l];
+        }
         if (!isMin && !isMax) continue;
-        LD t = golden(ray, ts[i - 1], ts[i + 1], isMin ? 1 : -1);
+        LD t = golden(ray, ts[l], ts[r], isMin ? 1 : -1);
         LD gt = g(ray, t);
         breaks.push_back({t, gt});
         if (isMin && gt == 0) touching.push_back(t);
       }
     }
     breaks.push_back({cuts.back(), g(ray, cuts.back())});
+    std::sort(breaks.begin(), breaks.end());
     std::vector<LD> roots = touching;
     for (LD t : touching) roots.push_back(t);
     for (size_t i = 0; i + 1 < breaks.size(); ++i) {

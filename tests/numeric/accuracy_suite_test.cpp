@@ -59,6 +59,11 @@ TEST_CASE("accuracy: near-singular transforms through Instance", "[numeric][accu
   requireWithinBounds(nearSingularCases(1.0));
 }
 
+TEST_CASE("accuracy: superellipsoids: a near cube grazed at its edges and along its faces, tangent and secondary rays",
+          "[numeric][accuracy][superellipsoid]") {
+  requireWithinBounds(superellipsoidCases(1.0));
+}
+
 TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and vertices, slivers",
           "[numeric][accuracy][mesh]") {
   requireWithinBounds(meshCases(1.0));
