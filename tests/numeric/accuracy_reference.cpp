@@ -24,6 +24,45 @@ bool edgeTie(const LRay& ray, LD ta, LD tb) {
   return std::abs(ta - tb) <= 1e-13L * scale;
 }
 
+// The minimum (sign 1) or maximum (sign −1) of g on [a, b] by golden-section search, to long
+// double precision within `iterations` steps.
+template <class G>
+LD goldenExtremum(const G& g, LD a, LD b, int sign, int iterations) {
+  const LD k = (std::sqrt(5.0L) - 1) / 2;
+  LD x1 = b - k * (b - a), x2 = a + k * (b - a);
+  LD f1 = sign * g(x1), f2 = sign * g(x2);
+  for (int i = 0; i < iterations && x1 < x2; ++i) {
+    if (f1 < f2) {
+      b = x2, x2 = x1, f2 = f1;
+      x1 = b - k * (b - a);
+      f1 = sign * g(x1);
+    } else {
+      a = x1, x1 = x2, f1 = f2;
+      x2 = a + k * (b - a);
+      f2 = sign * g(x2);
+    }
+  }
+  return f1 < f2 ? x1 : x2;
+}
+
+// A root of g in [a, b], where g(a) = ga and g changes sign, by bisection to the last bit.
+template <class G>
+LD bisectRoot(const G& g, LD a, LD b, LD ga) {
+  for (int i = 0; i < 200; ++i) {
+    LD m = (a + b) / 2;
+    if (m == a || m == b) break;
+    LD gm = g(m);
+    if (gm == 0) return m;
+    if ((gm < 0) == (ga < 0)) {
+      a = m;
+      ga = gm;
+    } else {
+      b = m;
+    }
+  }
+  return (a + b) / 2;
+}
+
 // Roots of a·s² + 2h·s + c = 0, cancellation-free (quadratic.h's form), ascending.
 bool quadraticRoots(LD a, LD h, LD c, LD disc, LD& s0, LD& s1) {
   if (disc < 0) return false;
@@ -362,36 +401,10 @@ class RefTorusImpl final : public RefShape {
   }
   // The minimum (sign 1) or maximum (sign −1) of g on [a, b], to long double precision.
   LD golden(const LRay& ray, LD a, LD b, int sign) const {
-    const LD k = (std::sqrt(5.0L) - 1) / 2;
-    LD x1 = b - k * (b - a), x2 = a + k * (b - a);
-    LD f1 = sign * g(ray, x1), f2 = sign * g(ray, x2);
-    for (int i = 0; i < 100 && x1 < x2; ++i) {
-      if (f1 < f2) {
-        b = x2, x2 = x1, f2 = f1;
-        x1 = b - k * (b - a);
-        f1 = sign * g(ray, x1);
-      } else {
-        a = x1, x1 = x2, f1 = f2;
-        x2 = a + k * (b - a);
-        f2 = sign * g(ray, x2);
-      }
-    }
-    return f1 < f2 ? x1 : x2;
+    return goldenExtremum([&](LD t) { return g(ray, t); }, a, b, sign, 100);
   }
   LD bisect(const LRay& ray, LD a, LD b, LD ga) const {
-    for (int i = 0; i < 200; ++i) {
-      LD m = (a + b) / 2;
-      if (m == a || m == b) break;
-      LD gm = g(ray, m);
-      if (gm == 0) return m;
-      if ((gm < 0) == (ga < 0)) {
-        a = m;
-        ga = gm;
-      } else {
-        b = m;
-      }
-    }
-    return (a + b) / 2;
+    return bisectRoot([&](LD t) { return g(ray, t); }, a, b, ga);
   }
   LVec normalAt(const LVec& p) const {
     LD rho = std::sqrt(p.x * p.x + p.z * p.z);
@@ -488,36 +501,10 @@ class RefSuperellipsoidImpl final : public RefShape {
     return norm(norm(std::abs(p.x), std::abs(p.y), p_), std::abs(p.z), q_) - 1;
   }
   LD golden(const LRay& ray, LD a, LD b, int sign) const {
-    const LD k = (std::sqrt(5.0L) - 1) / 2;
-    LD x1 = b - k * (b - a), x2 = a + k * (b - a);
-    LD f1 = sign * g(ray, x1), f2 = sign * g(ray, x2);
-    for (int i = 0; i < 120 && x1 < x2; ++i) {
-      if (f1 < f2) {
-        b = x2, x2 = x1, f2 = f1;
-        x1 = b - k * (b - a);
-        f1 = sign * g(ray, x1);
-      } else {
-        a = x1, x1 = x2, f1 = f2;
-        x2 = a + k * (b - a);
-        f2 = sign * g(ray, x2);
-      }
-    }
-    return f1 < f2 ? x1 : x2;
+    return goldenExtremum([&](LD t) { return g(ray, t); }, a, b, sign, 120);
   }
   LD bisect(const LRay& ray, LD a, LD b, LD ga) const {
-    for (int i = 0; i < 200; ++i) {
-      LD m = (a + b) / 2;
-      if (m == a || m == b) break;
-      LD gm = g(ray, m);
-      if (gm == 0) return m;
-      if ((gm < 0) == (ga < 0)) {
-        a = m;
-        ga = gm;
-      } else {
-        b = m;
-      }
-    }
-    return (a + b) / 2;
+    return bisectRoot([&](LD t) { return g(ray, t); }, a, b, ga);
   }
   // ∇((X^a + Y^a)^b + Z^c), a = 2/e, b = e/n, c = 2/n; false where it is not finite and
   // non-zero (a crease or tip of exponents above 2).
