@@ -106,19 +106,7 @@ void Quadric::crossings(const Ray& ray, CrossingList& out) const {
   double t[2];
   bool entering[2], inside;
   const int n = lineCrossings(ray, t, entering, inside);
-  // Inside at tmin: the state after the crossings before it (a root at tmin is listed).
-  for (int i = 0; i < n; ++i)
-    if (t[i] < ray.tmin) inside = entering[i];
-  out.startsInside = inside;
-  for (int i = 0; i < n; ++i) {
-    if (ray.tmin <= t[i] && t[i] <= ray.tmax) {
-      Crossing c;
-      c.hit.t = t[i];
-      c.hit.shape = this;
-      c.entering = entering[i];
-      out.items.push_back(c);
-    }
-  }
+  crossingsOfLine(t, entering, n, inside, ray, this, out);
 }
 
 SurfaceInfo Quadric::surface(const Ray& ray, const Hit& hit) const {

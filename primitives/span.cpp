@@ -59,4 +59,14 @@ void crossingsOfRoots(const SurfaceRoot* roots, int n, const Ray& ray, const Sha
             [](const Crossing& a, const Crossing& b) { return a.hit.t < b.hit.t; });
 }
 
+void crossingsOfLine(const double* t, const bool* entering, int n, bool insideBefore,
+                     const Ray& ray, const Shape* shape, CrossingList& out) {
+  bool inside = insideBefore;
+  for (int i = 0; i < n; ++i)
+    if (t[i] < ray.tmin) inside = entering[i];
+  out.startsInside = inside;
+  for (int i = 0; i < n; ++i)
+    if (ray.tmin <= t[i] && t[i] <= ray.tmax) out.items.push_back({makeHit(shape, t[i], 0, 0.0, 0.0), entering[i]});
+}
+
 }  // namespace lucent

@@ -37,4 +37,11 @@ bool intersectRoots(const SurfaceRoot* roots, int n, const Ray& ray, const Shape
 void crossingsOfRoots(const SurfaceRoot* roots, int n, const Ray& ray, const Shape* shape,
                       CrossingList& out);
 
+// A solid's crossings from its sign changes along the whole line: t ascending, each
+// entering or not, and whether the line is inside before the first. Lists those in
+// [tmin, tmax]; startsInside is the state after the ones before tmin (so a root exactly at
+// tmin is listed rather than counted as behind).
+void crossingsOfLine(const double* t, const bool* entering, int n, bool insideBefore,
+                     const Ray& ray, const Shape* shape, CrossingList& out);
+
 }  // namespace lucent

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 namespace lucent {
 
@@ -47,7 +48,13 @@ struct QuadricSpec {
   Vec3 a{1.0, 1.0, 1.0}, b{0.0}, c{0.0};
   double d = -1.0;
 };
+// P(x, y, z) < 0 is inside; the coefficients in POV-Ray's order for the order (primitives/poly.h).
+struct PolySpec {
+  int order = 0;  // required
+  std::vector<double> coefficients;
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
-                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec>;
+                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
+                               PolySpec>;
 
 }  // namespace lucent
