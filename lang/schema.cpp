@@ -36,7 +36,8 @@ std::string typeName(const AttributeInfo& a) {
     case AttrType::Boolean: return "boolean";
     case AttrType::Text: return "xs:string";
     case AttrType::File: return "path";
-    case AttrType::NumberList: return a.listArity == 2 ? "pairList" : "tripleList";
+    case AttrType::NumberList:
+      return a.listArity == 3 ? "tripleList" : (a.listArity == 2 ? "pairList" : "numberList");
     case AttrType::IntegerList: return "indexTripleList";
     case AttrType::Choice: return "";
   }
