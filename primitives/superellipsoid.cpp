@@ -21,20 +21,30 @@ constexpr double kRangeMargin = 1e-14;
 // within rounding).
 constexpr int kMaxDepth = 80;
 
+// x^k, without pow for the exponents of round (e or n = 1: k = 2, 1/2) and straight
+// (e or n = 2: k = 1) cross-sections, whose results are the same correctly rounded values.
+double power(double x, double k) {
+  if (k == 2.0) return x * x;
+  if (k == 1.0) return x;
+  if (k == 0.5) return std::sqrt(x);
+  if (k == 0.0) return 1.0;
+  return std::pow(x, k);
+}
+
 // ‖(a, b)‖ with exponent p, for a, b >= 0, scaled by the larger.
 double normOf(double a, double b, double p, double invP) {
   double m = std::max(a, b), s = std::min(a, b);
   if (!(s > 0.0)) return m;
-  return m * std::pow(1.0 + std::pow(s / m, p), invP);
+  return m * power(1.0 + power(s / m, p), invP);
 }
 
 // a / ‖(a, b)‖, in [0, 1]: increasing in a, decreasing in b.
 double ratioOf(double a, double b, double p, double invP) {
   if (!(a > 0.0)) return 0.0;
   if (!(b > 0.0)) return 1.0;
-  if (a >= b) return 1.0 / std::pow(1.0 + std::pow(b / a, p), invP);
+  if (a >= b) return 1.0 / power(1.0 + power(b / a, p), invP);
   double r = a / b;
-  return r / std::pow(1.0 + std::pow(r, p), invP);
+  return r / power(1.0 + power(r, p), invP);
 }
 
 // A range of non-negative values.
@@ -44,8 +54,8 @@ struct Range {
 
 // {x^k : x in r}, r within [0, 1] (0^k is infinite for k < 0).
 Range powRange(Range r, double k) {
-  if (k >= 0.0) return {std::pow(r.lo, k), std::pow(r.hi, k)};
-  return {std::pow(r.hi, k), std::pow(r.lo, k)};
+  if (k >= 0.0) return {power(r.lo, k), power(r.hi, k)};
+  return {power(r.hi, k), power(r.lo, k)};
 }
 
 Range product(Range a, Range b) {
@@ -74,21 +84,41 @@ double Superellipsoid::gauge(const Vec3& p) const {
   return normOf(r, std::abs(p.z), q_, invQ_);
 }
 
-Vec3 Superellipsoid::gradient(const Vec3& p) const {
+namespace {
+
+// ‖(a, b)‖_p for a, b >= 0 as normOf computes it, with the partial derivatives (a/N)^(p−1)
+// and (b/N)^(p−1) from the same two pows (a zero argument's is 0: see gaugeAndGradient).
+double normAndSlopes(double a, double b, double p, double invP, double& da, double& db) {
+  const bool aMax = a >= b;
+  const double m = aMax ? a : b, s = aMax ? b : a;
+  if (!(s > 0.0)) {
+    da = aMax ? 1.0 : 0.0;
+    db = aMax ? 0.0 : 1.0;
+    return m;
+  }
+  const double ratio = s / m, up = power(ratio, p), sum = 1.0 + up, root = power(sum, invP);
+  const double dMax = root / sum, dMin = up / ratio * dMax;
+  da = aMax ? dMax : dMin;
+  db = aMax ? dMin : dMax;
+  return m * root;
+}
+
+}  // namespace
+
+std::pair<double, Vec3> Superellipsoid::gaugeAndGradient(const Vec3& p) const {
   // ∂N/∂z = (Z/N)^(q−1), ∂N/∂x = (R/N)^(q−1)·(X/R)^(p−1), R = ‖(X, Y)‖_p: powers of ratios
   // in [0, 1], so only a zero ratio under a negative power (a crease) is infinite.
   const double X = std::abs(p.x), Y = std::abs(p.y), Z = std::abs(p.z);
-  const double R = normOf(X, Y, p_, invP_);
-  const double gR = std::pow(ratioOf(R, Z, q_, invQ_), q_ - 1.0);
-  double gX = gR * std::pow(ratioOf(X, Y, p_, invP_), p_ - 1.0);
-  double gY = gR * std::pow(ratioOf(Y, X, p_, invP_), p_ - 1.0);
-  double gZ = std::pow(ratioOf(Z, R, q_, invQ_), q_ - 1.0);
+  double dX, dY, dR, dZ;
+  const double R = normAndSlopes(X, Y, p_, invP_, dX, dY);
+  const double N = normAndSlopes(R, Z, q_, invQ_, dR, dZ);
+  double gX = dR * dX, gY = dR * dY, gZ = dZ;
   // On a coordinate plane the surface is symmetric: its normal (or the mean of the two
   // sides' normals, on a kink or crease) has no component across the plane.
   if (X == 0.0 || std::isnan(gX)) gX = 0.0;
   if (Y == 0.0 || std::isnan(gY)) gY = 0.0;
   if (Z == 0.0 || std::isnan(gZ)) gZ = 0.0;
-  return {std::copysign(gX, p.x), std::copysign(gY, p.y), std::copysign(gZ, p.z)};
+  return {N, {std::copysign(gX, p.x), std::copysign(gY, p.y), std::copysign(gZ, p.z)}};
 }
 
 bool Superellipsoid::inside(const Vec3& p) const { return gauge(p) < 1.0; }
@@ -116,44 +146,80 @@ class LineSolver {
 
   bool done() const { return done_; }
 
-  // For e, n <= 2, N is a norm (an absolute norm of a norm), so N − 1 is convex along the
-  // whole line: one root where the ends' signs differ, none where both are negative; with
-  // both positive, Kelley's cutting planes (the tangents at the bracket's ends bound a
-  // convex function from below, their meeting point is the next trial) either find a
-  // negative point, which splits the window into two one-root brackets, or prove the
-  // minimum positive. False when it cannot decide (a tangency within rounding): then the
+  // For e, n <= 2, N is a norm (an absolute norm of a norm), so f = N − 1 is convex along
+  // the whole line, and a tangent (with any subgradient at a kink) lies below it. Newton's
+  // steps from an end where f > 0 therefore never pass a root: from the left they climb to
+  // the first root (quadratically where it is simple), from the right to the last, and a
+  // step that meets a non-negative slope, or lands beyond the window, proves that side
+  // holds no root. One root where the ends' signs differ, none where both are negative.
+  // False when it cannot decide (no convergence, a slope that is not finite): then the
   // general search runs, nothing having been recorded.
-  bool convexWindow(double a, double fa, double b, double fb) {
-    if ((fa < 0.0) != (fb < 0.0)) {
-      addRoot(a, fa, b, fb);
-      return true;
-    }
-    if (fa < 0.0) return true;
-    double ga = slopeAt(a), gb = slopeAt(b);
-    for (int it = 0; it < 64; ++it) {
-      if (!std::isfinite(ga) || !std::isfinite(gb)) return false;
-      if (ga >= 0.0 || gb <= 0.0) return true;  // the minimum at an end, where N > 1
-      const double c = (fb - fa + ga * a - gb * b) / (ga - gb);
-      if (!(a < c && c < b)) return false;
-      const double lower = fa + ga * (c - a);
-      if (lower > margin_ + 1e-12 * (std::abs(ga) + std::abs(gb)) * (b - a)) return true;
-      const double fc = value(c);
-      if (fc < 0.0) {
-        addRoot(a, fa, c, fc);
-        if (!done_) addRoot(c, fc, b, fb);
+  // fa and ga: f and its slope at a, known to the caller; f at b is computed only if needed.
+  bool convexWindow(double a, double fa, double ga, double b) {
+    double tl = a, tr = b;
+    if (fa >= 0.0) {
+      const Side left = newtonFrom(a, fa, ga, b, +1.0, tl);
+      if (left == Side::Undecided) return false;
+      if (left == Side::None) return true;  // the tangents prove f > 0 over [a, b]
+      if (tl > firstAfter_) {
+        recordRoot(tl);
         return true;
       }
-      const double gc = slopeAt(c);
-      if (gc < 0.0) {
-        a = c, fa = fc, ga = gc;
-      } else {
-        b = c, fb = fc, gb = gc;
-      }
     }
-    return false;
+    const auto [nb, gradB] = s_.gaugeAndGradient(o_ + b * d_);
+    const double fb = nb - 1.0;
+    if (fb < 0.0) {
+      if (fa >= 0.0) recordRoot(tl);  // the one root; none at all when both ends are inside
+      return true;
+    }
+    const Side right = newtonFrom(b, fb, glm::dot(gradB, d_), fa >= 0.0 ? tl : a, -1.0, tr);
+    if (right != Side::Root) return false;  // a root must be there: leave it to the search
+    if (fa >= 0.0) recordRoot(tl);
+    if (!done_) recordRoot(tr);
+    return true;
+  }
+
+  // f and its slope at t, from one evaluation.
+  std::pair<double, double> valueAndSlope(double t) const {
+    const auto [n, grad] = s_.gaugeAndGradient(o_ + t * d_);
+    return {n - 1.0, glm::dot(grad, d_)};
   }
 
  private:
+  enum class Side { Root, None, Undecided };
+
+  // Newton's steps on f from t (f(t) >= 0, slope given) in the direction `dir` (+1: up),
+  // towards `limit`: Root with the root in `root`, None if the tangents prove f > 0 all the
+  // way to `limit`, Undecided if neither within the iterations or the slope is not finite.
+  Side newtonFrom(double t, double f, double slope, double limit, double dir, double& root) const {
+    double g = slope * dir;
+    for (int it = 0; it < 100; ++it) {
+      if (f <= 0.0) {
+        root = t;  // on the surface to the last bit, or just past it by rounding
+        return Side::Root;
+      }
+      if (!std::isfinite(g)) return Side::Undecided;
+      if (g >= 0.0) return Side::None;  // f rises from here on that side
+      const double next = t - dir * f / g;
+      if (dir * (next - limit) >= 0.0) return Side::None;  // the tangent meets 0 beyond the window
+      // A step within the last bits of t: the root, as closely as double tells.
+      if (std::abs(next - t) <= 2.0 * kMachineEps * std::max(std::abs(t), std::abs(next))) {
+        root = next;
+        return Side::Root;
+      }
+      t = next;
+      const auto [N, grad] = s_.gaugeAndGradient(o_ + t * d_);
+      f = N - 1.0;
+      g = glm::dot(grad, d_) * dir;
+    }
+    return Side::Undecided;
+  }
+
+  void recordRoot(double t) {
+    if (out_.count < Superellipsoid::kMaxRoots) out_.t[out_.count++] = t;
+    if (t > firstAfter_) done_ = true;
+  }
+
   Vec3 absAt(double t) const { return glm::abs(o_ + t * d_); }
   double slopeAt(double t) const { return glm::dot(s_.gradient(o_ + t * d_), d_); }
 
@@ -244,8 +310,8 @@ class LineSolver {
     double t = a + 0.5 * (b - a);
     double dxOld = b - a, dx = dxOld;
     for (int it = 0; it < 200; ++it) {
-      const Vec3 pt = o_ + t * d_;
-      const double f = s_.gauge(pt) - 1.0;
+      const auto [N, grad] = s_.gaugeAndGradient(o_ + t * d_);
+      const double f = N - 1.0;
       if (f == 0.0) return t;
       if ((f < 0.0) == aInside) {
         lo = t;
@@ -254,7 +320,7 @@ class LineSolver {
         hi = t;
         fHi = f;
       }
-      const double df = glm::dot(s_.gradient(pt), d_);
+      const double df = glm::dot(grad, d_);
       double next = 0.0;
       bool newton = std::isfinite(df) && df != 0.0;
       if (newton) {
@@ -322,9 +388,16 @@ void Superellipsoid::roots(const Ray& ray, double lo, double hi, Roots& out,
   }
   ts[nt++] = b;
   std::sort(ts + 1, ts + nt - 1);
-  double f0 = solver.value(ts[0]);
-  out.startsInside = f0 < 0.0;
-  if (e_ <= 2.0 && n_ <= 2.0 && solver.convexWindow(a, f0, b, solver.value(b))) return;
+  double f0;
+  if (e_ <= 2.0 && n_ <= 2.0) {
+    const auto [fa, ga] = solver.valueAndSlope(a);
+    out.startsInside = fa < 0.0;
+    if (solver.convexWindow(a, fa, ga, b)) return;
+    f0 = fa;
+  } else {
+    f0 = solver.value(a);
+    out.startsInside = f0 < 0.0;
+  }
   for (int k = 0; k + 1 < nt && !solver.done(); ++k) {
     const double t0 = ts[k], t1 = ts[k + 1];
     const double f1 = solver.value(t1);

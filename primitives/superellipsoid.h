@@ -22,10 +22,12 @@
 // of N excludes 1 (by more than N's rounding) holds no root; one whose derivative bound has
 // one sign is monotone and holds one root exactly when its ends differ in sign, as does
 // one over which N varies less than its rounding; any other stretch is halved. For e, n
-// <= 2, N is a norm and so convex along the line: the tangents at the ends of a bracket
-// bound it from below (Kelley's cutting planes), which decides the whole line in a few
-// steps (a negative point splits it into two one-root brackets, or a positive bound proves
-// a miss); the general search remains for what they leave undecided. Each root is then
+// <= 2, N is a norm and so convex along the line: its tangents bound it from below, so
+// Newton's steps from an end of the clipped line outside the shape never pass a root (they
+// climb to the first one, quadratically; a step meeting a rising slope or leaving the line
+// proves a miss), and the line is decided from the ends alone in a few steps; the general
+// search remains for what they leave undecided. Each step evaluates N and its gradient
+// from the same four powers (no pow at all for e or n = 1 or 2). Each root is then
 // refined by Newton steps kept inside its bracket (bisection when a step leaves it or
 // converges slowly), to the last bits of double. Every crossing is a sign change between
 // two evaluated points, each evaluated once, so crossings alternate and agree with
@@ -35,6 +37,8 @@
 #pragma once
 
 #include "shape.h"
+
+#include <utility>
 
 namespace lucent {
 
@@ -57,7 +61,11 @@ class Superellipsoid final : public Shape {
   // The gauge N (N < 1 inside, N = 1 on the surface) and its gradient (not normalised;
   // components may be infinite at the creases of exponents above 2). For tests.
   double gauge(const Vec3& p) const;
-  Vec3 gradient(const Vec3& p) const;
+  Vec3 gradient(const Vec3& p) const { return gaugeAndGradient(p).second; }
+  // Both from the same four powers: with S = 1 + (min/max)^p, the ratio powers of the
+  // gradient are (max/R)^(p−1) = S^(1/p)/S and (min/R)^(p−1) = (min/max)^(p−1)·S^(1/p)/S,
+  // and likewise one level up: no pow beyond those N itself needs.
+  std::pair<double, Vec3> gaugeAndGradient(const Vec3& p) const;
 
   // The roots within [lo, hi] of the line o + t·d, ascending, and whether the point at lo
   // is inside (the count of roots before any t tells inside from outside). At most
