@@ -140,6 +140,13 @@ bool CsgNode::closestChildHit(const Ray& ray, Hit& hit) const {
 }
 
 void CsgNode::crossings(const Ray& ray, CrossingList& out) const {
+  // The result lies within the node's box: a ray that misses it has no crossings and is
+  // outside, and no child is asked (an unbounded one, a plane or a poly cut to size by a
+  // box, would otherwise be solved for every ray that reaches the node).
+  if (bounds_.isBounded() && !bounds_.hit(ray, Vec3(1.0) / ray.d)) {
+    out.startsInside = false;
+    return;
+  }
   // Gather every child's crossings, tagged with the child they belong to, in t order.
   using Tagged = CsgScratch::Tagged;
   const CsgScratchLease scratch;

@@ -20,6 +20,7 @@ Poly::Poly(int order, const std::vector<double>& coefficients) : order_(order) {
       for (int k = order - i - j; k >= 0; --k) {
         const double c = coefficients[index++];
         if (!std::isfinite(c)) throw std::invalid_argument("poly: coefficients must be finite");
+        dense_[i][j][k] = c;
         if (c == 0.0) continue;
         if (i + j + k > 0) surface = true;
         terms_.push_back({i, j, k, c});
@@ -69,25 +70,63 @@ namespace {
 
 constexpr int kN = Poly::kMaxOrder + 1;
 
-// (a + b·u)^p for p = 0..n as polynomials in u (binomial rows), and the same with |a|, |b|
-// for the magnitudes.
-void linearPowers(double a, double b, int n, double out[kN][kN]) {
-  for (int p = 0; p <= n; ++p)
-    for (int m = 0; m <= n; ++m) out[p][m] = 0.0;
-  out[0][0] = 1.0;
-  for (int p = 1; p <= n; ++p)
-    for (int m = 0; m <= p; ++m)
-      out[p][m] = out[p - 1][m] * a + (m > 0 ? out[p - 1][m - 1] * b : 0.0);
+// A polynomial in u of degree <= D, and the magnitudes of what each of its coefficients
+// sums (the inputs' absolute values through the same operations), for the root finder's
+// error bound.
+template <int D>
+struct LinePolynomial {
+  double c[D + 1] = {}, a[D + 1] = {};
+};
+
+// r = r·(o + d·u) + add: one Horner step in polynomial arithmetic, r of degree < D.
+template <int D>
+void hornerStep(LinePolynomial<D>& r, double o, double d, double ao, double ad,
+                const LinePolynomial<D>& add) {
+  for (int m = D; m >= 1; --m) {
+    r.c[m] = r.c[m] * o + r.c[m - 1] * d + add.c[m];
+    r.a[m] = r.a[m] * ao + r.a[m - 1] * ad + add.a[m];
+  }
+  r.c[0] = r.c[0] * o + add.c[0];
+  r.a[0] = r.a[0] * ao + add.a[0];
 }
 
-// r = f·g, of degrees df and dg.
-void multiply(const double* f, int df, const double* g, int dg, double* r) {
-  for (int m = 0; m <= df + dg; ++m) r[m] = 0.0;
-  for (int a = 0; a <= df; ++a)
-    for (int b = 0; b <= dg; ++b) r[a + b] += f[a] * g[b];
+// P = Σ_i x^i Σ_j y^j Σ_k c_ijk z^k, each sum by Horner's rule in its variable, the
+// variables being the linear polynomials o + d·u; N the order, known when compiling so
+// that the loops unroll.
+template <int N>
+void expandAlongLine(const double (&dense)[kN][kN][kN], const Vec3& o, const Vec3& d, double* c,
+                     double* cAbs) {
+  const Vec3 ao = glm::abs(o), ad = glm::abs(d);
+  LinePolynomial<N> px;
+  for (int i = N; i >= 0; --i) {
+    LinePolynomial<N> py;
+    for (int j = N - i; j >= 0; --j) {
+      LinePolynomial<N> pz;
+      for (int k = N - i - j; k >= 0; --k) {
+        LinePolynomial<N> constant;
+        constant.c[0] = dense[i][j][k];
+        constant.a[0] = std::abs(constant.c[0]);
+        hornerStep(pz, o.z, d.z, ao.z, ad.z, constant);
+      }
+      hornerStep(py, o.y, d.y, ao.y, ad.y, pz);
+    }
+    hornerStep(px, o.x, d.x, ao.x, ad.x, py);
+  }
+  for (int m = 0; m <= N; ++m) {
+    c[m] = px.c[m];
+    cAbs[m] = px.a[m];
+  }
 }
 
 }  // namespace
+
+void Poly::linePolynomial(const Vec3& o, const Vec3& d, double* c, double* cAbs) const {
+  switch (order_) {
+    case 2: return expandAlongLine<2>(dense_, o, d, c, cAbs);
+    case 3: return expandAlongLine<3>(dense_, o, d, c, cAbs);
+    default: return expandAlongLine<4>(dense_, o, d, c, cAbs);
+  }
+}
 
 int Poly::lineCrossings(const Ray& ray, double t[kMaxOrder], bool entering[kMaxOrder],
                         bool& startsInside) const {
@@ -95,26 +134,8 @@ int Poly::lineCrossings(const Ray& ray, double t[kMaxOrder], bool entering[kMaxO
   const double dd = glm::dot(ray.d, ray.d);
   const double s0 = dd > 0.0 ? -glm::dot(ray.o, ray.d) / dd : 0.0;
   const Vec3 o = ray.o + s0 * ray.d;
-  double X[kN][kN], Y[kN][kN], Z[kN][kN], XA[kN][kN], YA[kN][kN], ZA[kN][kN];
-  linearPowers(o.x, ray.d.x, order_, X);
-  linearPowers(o.y, ray.d.y, order_, Y);
-  linearPowers(o.z, ray.d.z, order_, Z);
-  linearPowers(std::abs(o.x), std::abs(ray.d.x), order_, XA);
-  linearPowers(std::abs(o.y), std::abs(ray.d.y), order_, YA);
-  linearPowers(std::abs(o.z), std::abs(ray.d.z), order_, ZA);
-  double c[kN] = {}, cAbs[kN] = {};
-  for (const Term& term : terms_) {
-    double xy[kN], xyz[kN], xyA[kN], xyzA[kN];
-    multiply(X[term.i], term.i, Y[term.j], term.j, xy);
-    multiply(xy, term.i + term.j, Z[term.k], term.k, xyz);
-    multiply(XA[term.i], term.i, YA[term.j], term.j, xyA);
-    multiply(xyA, term.i + term.j, ZA[term.k], term.k, xyzA);
-    const int degree = term.i + term.j + term.k;
-    for (int m = 0; m <= degree; ++m) {
-      c[m] += term.c * xyz[m];
-      cAbs[m] += std::abs(term.c) * xyzA[m];
-    }
-  }
+  double c[kN], cAbs[kN];
+  linePolynomial(o, ray.d, c, cAbs);
   // A leading coefficient within its own rounding error is 0: the line runs along an
   // asymptotic direction and that root has gone to infinity.
   int degree = order_;

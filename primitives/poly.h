@@ -57,7 +57,11 @@ class Poly final : public Shape {
   };
   int order_;
   std::vector<Term> terms_;  // the non-zero ones
+  double dense_[kMaxOrder + 1][kMaxOrder + 1][kMaxOrder + 1] = {};  // c_ijk, zero where absent
   AABB bounds_ = AABB::everything();
+
+  // P(o + u·d) as a polynomial in u (degree order_), with its coefficients' magnitudes.
+  void linePolynomial(const Vec3& o, const Vec3& d, double* c, double* cAbs) const;
 };
 
 }  // namespace lucent
