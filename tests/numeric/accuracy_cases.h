@@ -29,6 +29,10 @@ std::vector<CaseResult> meshAlongEdgeCases(double effort);
 // leaving the surface.
 std::vector<CaseResult> superellipsoidCases(double effort);
 
+// Quadrics and polys (accuracy_quadric_cases.cpp): a cylinder, a double cone and a plane
+// written as quadrics; a torus as a quartic poly, the tangle cube, an ellipsoid of order 2.
+std::vector<CaseResult> quadricCases(double effort);
+
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);
 

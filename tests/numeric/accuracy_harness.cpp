@@ -89,7 +89,7 @@ Decision decide(const RefShape& ref, const LRay& ray, LD tmin, LD tmax, bool sol
     // A surface: every root counts, nothing is inside.
     return d;
   }
-  d.startsInside = before % 2 == 1;
+  d.startsInside = (before % 2 == 1) != ref.insideAtStart(ray);
   return d;
 }
 

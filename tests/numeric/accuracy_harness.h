@@ -51,6 +51,9 @@ class RefShape {
  public:
   virtual ~RefShape() = default;
   virtual void lineRoots(const LRay& ray, std::vector<LRoot>& out) const = 0;
+  // Whether the line is inside before its first root (true for some unbounded solids: a
+  // cone's inside along a steep line, a plane's along a line leaving it).
+  virtual bool insideAtStart(const LRay&) const { return false; }
 };
 
 std::shared_ptr<RefShape> refSphere(const Vec3& center, double radius);
@@ -65,6 +68,15 @@ std::shared_ptr<RefShape> refTorus(double major, double minor);
 // A superellipsoid (POV-Ray's axes): its gauge sampled along the line cut at the
 // coordinate planes, extrema refined, sign changes bisected to the last bit.
 std::shared_ptr<RefShape> refSuperellipsoid(double e, double n);
+// Q(p) = pᵀMp + g·p + J < 0 (quadric.h's coefficients): the quadratic along the line in
+// long double, cancellation-free, from the line's point closest to the origin; unbounded
+// shapes and their inside at −∞ included.
+std::shared_ptr<RefShape> refQuadric(const Vec3& squares, const Vec3& mixed, const Vec3& linear,
+                                     double constant);
+// A poly (POV-Ray's coefficient order) whose surface lies within `radius` of the origin:
+// P evaluated term by term along the line in long double, sampled densely, its extrema
+// refined by golden-section search and each sign change bisected (the torus's method).
+std::shared_ptr<RefShape> refPoly(int order, const std::vector<double>& coefficients, double radius);
 // The inner reference placed by an affine map (the double matrix is the truth; its
 // inverse and normal matrix are computed in long double).
 std::shared_ptr<RefShape> refInstance(std::shared_ptr<RefShape> inner, const Mat4& worldFromObject);

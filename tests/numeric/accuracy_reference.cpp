@@ -526,6 +526,143 @@ class RefSuperellipsoidImpl final : public RefShape {
   LD e_, n_, p_, q_;
 };
 
+class RefQuadricImpl final : public RefShape {
+ public:
+  RefQuadricImpl(const Vec3& sq, const Vec3& mx, const Vec3& lin, double j)
+      : m_(LD(sq.x), LD(mx.x) / 2, LD(mx.y) / 2, LD(mx.x) / 2, LD(sq.y), LD(mx.z) / 2, LD(mx.y) / 2,
+           LD(mx.z) / 2, LD(sq.z)),
+        g_(toL(lin)),
+        j_(j) {}
+  void lineRoots(const LRay& ray, std::vector<LRoot>& out) const override {
+    Line l = line(ray);
+    LD s0, s1;
+    if (l.a != 0) {
+      if (!quadraticRoots(l.a, l.h, l.c, l.h * l.h - l.a * l.c, s0, s1)) return;
+      for (LD s : {s0, s1}) out.push_back(rootAt(ray, l.shift + s));
+    } else if (l.h != 0) {
+      out.push_back(rootAt(ray, l.shift - l.c / (2 * l.h)));
+    }
+  }
+  bool insideAtStart(const LRay& ray) const override {
+    Line l = line(ray);
+    if (l.a != 0) return l.a < 0;  // Q → −∞ at both ends
+    if (l.h != 0) return l.h > 0;  // Q → −∞ as s → −∞
+    return l.c < 0;
+  }
+
+ private:
+  struct Line {
+    LD shift, a, h, c;
+  };
+  // Q(o' + s·d) = a s² + 2h s + c, o' the line's point closest to the origin.
+  Line line(const LRay& ray) const {
+    LD dd = glm::dot(ray.d, ray.d);
+    LD shift = dd > 0 ? -glm::dot(ray.o, ray.d) / dd : 0;
+    LVec o = ray.at(shift);
+    LVec md = m_ * ray.d;
+    return {shift, glm::dot(ray.d, md), glm::dot(o, md) + glm::dot(g_, ray.d) / 2, value(o)};
+  }
+  LD value(const LVec& p) const { return glm::dot(p, m_ * p) + glm::dot(g_, p) + j_; }
+  LRoot rootAt(const LRay& ray, LD t) const {
+    LVec p = ray.at(t);
+    LVec n = LD(2) * (m_ * p) + g_;
+    bool defined = glm::dot(n, n) > 0;
+    return {t, defined ? normalizeL(n) : LVec(1, 0, 0), defined};
+  }
+  LMat3 m_;
+  LVec g_;
+  LD j_;
+};
+
+class RefPolyImpl final : public RefShape {
+ public:
+  RefPolyImpl(int order, const std::vector<double>& c, double radius) : radius_(radius) {
+    size_t index = 0;
+    for (int i = order; i >= 0; --i)
+      for (int j = order - i; j >= 0; --j)
+        for (int k = order - i - j; k >= 0; --k) {
+          const double v = c.at(index++);
+          if (v != 0.0) terms_.push_back({i, j, k, v});
+        }
+  }
+  void lineRoots(const LRay& ray, std::vector<LRoot>& out) const override {
+    LD lo, hi;
+    if (!chord(ray, lo, hi)) return;
+    const int n = 4000;
+    std::vector<LD> ts(n + 1), gs(n + 1);
+    for (int i = 0; i <= n; ++i) {
+      ts[i] = lo + (hi - lo) * i / n;
+      gs[i] = g(ray.at(ts[i]));
+    }
+    // Breakpoints: the chord's ends and every refined extremum; g is monotonic between
+    // consecutive ones, so each sign change between them brackets one root.
+    std::vector<std::pair<LD, LD>> breaks = {{ts[0], gs[0]}};
+    std::vector<LD> roots;
+    for (int i = 1; i < n; ++i) {
+      bool isMin = gs[i] < gs[i - 1] && gs[i] <= gs[i + 1];
+      bool isMax = gs[i] > gs[i - 1] && gs[i] >= gs[i + 1];
+      if (!isMin && !isMax) continue;
+      LD t = goldenExtremum([&](LD s) { return g(ray.at(s)); }, ts[i - 1], ts[i + 1], isMin ? 1 : -1, 120);
+      LD gt = g(ray.at(t));
+      breaks.push_back({t, gt});
+      if (gt == 0) roots.insert(roots.end(), {t, t});  // a double root is listed twice
+    }
+    breaks.push_back({ts[n], gs[n]});
+    for (size_t i = 0; i + 1 < breaks.size(); ++i) {
+      auto [a, ga] = breaks[i];
+      auto [b, gb] = breaks[i + 1];
+      if ((ga < 0 && gb > 0) || (ga > 0 && gb < 0))
+        roots.push_back(bisectRoot([&](LD s) { return g(ray.at(s)); }, a, b, ga));
+    }
+    std::sort(roots.begin(), roots.end());
+    for (LD t : roots) out.push_back({t, normalizeL(gradient(ray.at(t)))});
+  }
+  bool insideAtStart(const LRay& ray) const override {
+    LD lo, hi;
+    if (!chord(ray, lo, hi)) return g(ray.o) < 0;  // never near the surface: P keeps its sign
+    return g(ray.at(lo)) < 0;
+  }
+
+ private:
+  struct Term {
+    int i, j, k;
+    LD c;
+  };
+  // The line's chord of the sphere of 1.1 times the radius (outside which P keeps a sign).
+  bool chord(const LRay& ray, LD& lo, LD& hi) const {
+    LD dd = glm::dot(ray.d, ray.d);
+    if (!(dd > 0)) return false;
+    LD tc = -glm::dot(ray.o, ray.d) / dd;
+    LD o2 = glm::dot(ray.at(tc), ray.at(tc)), r2 = 1.21L * radius_ * radius_;
+    if (o2 >= r2) return false;
+    LD half = std::sqrt((r2 - o2) / dd);
+    lo = tc - half;
+    hi = tc + half;
+    return true;
+  }
+  LD g(const LVec& p) const {
+    LD v = 0;
+    for (const Term& t : terms_) v += t.c * ipow(p.x, t.i) * ipow(p.y, t.j) * ipow(p.z, t.k);
+    return v;
+  }
+  LVec gradient(const LVec& p) const {
+    LVec d(0);
+    for (const Term& t : terms_) {
+      if (t.i) d.x += t.c * t.i * ipow(p.x, t.i - 1) * ipow(p.y, t.j) * ipow(p.z, t.k);
+      if (t.j) d.y += t.c * t.j * ipow(p.x, t.i) * ipow(p.y, t.j - 1) * ipow(p.z, t.k);
+      if (t.k) d.z += t.c * t.k * ipow(p.x, t.i) * ipow(p.y, t.j) * ipow(p.z, t.k - 1);
+    }
+    return d;
+  }
+  static LD ipow(LD x, int k) {
+    LD r = 1;
+    for (int m = 0; m < k; ++m) r *= x;
+    return r;
+  }
+  std::vector<Term> terms_;
+  LD radius_;
+};
+
 class RefInstanceImpl final : public RefShape {
  public:
   RefInstanceImpl(std::shared_ptr<RefShape> inner, const Mat4& m) : inner_(std::move(inner)) {
@@ -541,6 +678,9 @@ class RefInstanceImpl final : public RefShape {
     size_t first = out.size();
     inner_->lineRoots(LRay(o, d), out);
     for (size_t i = first; i < out.size(); ++i) out[i].n = normalizeL(normal_ * out[i].n);
+  }
+  bool insideAtStart(const LRay& ray) const override {
+    return inner_->insideAtStart(LRay(LVec(inv_ * glm::vec<4, LD>(ray.o, 1)), LMat3(inv_) * ray.d));
   }
 
  private:
@@ -568,6 +708,13 @@ std::shared_ptr<RefShape> refTorus(double R, double r) {
 }
 std::shared_ptr<RefShape> refSuperellipsoid(double e, double n) {
   return std::make_shared<RefSuperellipsoidImpl>(e, n);
+}
+std::shared_ptr<RefShape> refQuadric(const Vec3& squares, const Vec3& mixed, const Vec3& linear,
+                                     double constant) {
+  return std::make_shared<RefQuadricImpl>(squares, mixed, linear, constant);
+}
+std::shared_ptr<RefShape> refPoly(int order, const std::vector<double>& coefficients, double radius) {
+  return std::make_shared<RefPolyImpl>(order, coefficients, radius);
 }
 std::shared_ptr<RefShape> refInstance(std::shared_ptr<RefShape> inner, const Mat4& m) {
   return std::make_shared<RefInstanceImpl>(std::move(inner), m);

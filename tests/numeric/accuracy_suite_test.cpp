@@ -64,6 +64,11 @@ TEST_CASE("accuracy: superellipsoids: a near cube grazed at its edges and along 
   requireWithinBounds(superellipsoidCases(1.0));
 }
 
+TEST_CASE("accuracy: quadrics and polys: a cylinder, a cone and a plane as quadrics, a torus as a quartic, the tangle cube",
+          "[numeric][accuracy][quadric][poly]") {
+  requireWithinBounds(quadricCases(1.0));
+}
+
 TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and vertices, slivers",
           "[numeric][accuracy][mesh]") {
   requireWithinBounds(meshCases(1.0));
