@@ -4,6 +4,7 @@
 
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
+#include "primitives/prism_outline.h"
 
 #include <array>
 #include <memory>
@@ -47,7 +48,16 @@ struct QuadricSpec {
   Vec3 a{1.0, 1.0, 1.0}, b{0.0}, c{0.0};
   double d = -1.0;
 };
+// POV-Ray's prism: x z points read by the spline's rules (primitives/prism_outline.h).
+struct PrismSpec {
+  std::vector<Vec2> points;
+  double height1 = 0.0, height2 = 1.0;
+  PrismSpline spline = PrismSpline::Linear;
+  bool conic = false;  // sweep="conic"
+  bool open = false;
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
-                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec>;
+                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
+                               PrismSpec>;
 
 }  // namespace lucent
