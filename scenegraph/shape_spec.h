@@ -4,6 +4,7 @@
 
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
+#include "primitives/prism_outline.h"
 
 #include <array>
 #include <memory>
@@ -53,8 +54,16 @@ struct PolySpec {
   int order = 0;  // required
   std::vector<double> coefficients;
 };
+// POV-Ray's prism: x z points read by the spline's rules (primitives/prism_outline.h).
+struct PrismSpec {
+  std::vector<Vec2> points;
+  double height1 = 0.0, height2 = 1.0;
+  PrismSpline spline = PrismSpline::Linear;
+  bool conic = false;  // sweep="conic"
+  bool open = false;
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
-                               PolySpec>;
+                               PolySpec, PrismSpec>;
 
 }  // namespace lucent
