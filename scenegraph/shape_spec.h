@@ -2,6 +2,7 @@
 // these; the world builder turns them into primitives; the POV-Ray exporter reads them.
 #pragma once
 
+#include "primitives/blob_component.h"
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
 
@@ -10,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 namespace lucent {
 
@@ -47,7 +49,13 @@ struct QuadricSpec {
   Vec3 a{1.0, 1.0, 1.0}, b{0.0}, c{0.0};
   double d = -1.0;
 };
+// POV-Ray's blob: the field of the components above the threshold (primitives/blob.h).
+struct BlobSpec {
+  double threshold = 1.0;
+  std::vector<BlobComponent> components;
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
-                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec>;
+                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
+                               BlobSpec>;
 
 }  // namespace lucent

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "primitives/blob_component.h"
 #include "primitives/shape.h"
 
 namespace lucent::accuracy {
@@ -65,6 +66,9 @@ std::shared_ptr<RefShape> refTorus(double major, double minor);
 // A superellipsoid (POV-Ray's axes): its gauge sampled along the line cut at the
 // coordinate planes, extrema refined, sign changes bisected to the last bit.
 std::shared_ptr<RefShape> refSuperellipsoid(double e, double n);
+// A blob: its field minus the threshold along the line cut at the components' radii and
+// the planes through cylinders' ends, extrema refined, sign changes bisected.
+std::shared_ptr<RefShape> refBlob(double threshold, const std::vector<BlobComponent>& components);
 // The inner reference placed by an affine map (the double matrix is the truth; its
 // inverse and normal matrix are computed in long double).
 std::shared_ptr<RefShape> refInstance(std::shared_ptr<RefShape> inner, const Mat4& worldFromObject);
