@@ -29,6 +29,11 @@ std::vector<CaseResult> meshAlongEdgeCases(double effort);
 // leaving the surface.
 std::vector<CaseResult> superellipsoidCases(double effort);
 
+// Blobs (accuracy_blob_cases.cpp): sphere and cylinder components, random and tangent rays;
+// a strength just above the threshold; two spheres whose fields just merge; a carved hole;
+// rays leaving the surface.
+std::vector<CaseResult> blobCases(double effort);
+
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);
 

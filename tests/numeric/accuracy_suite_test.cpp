@@ -64,6 +64,11 @@ TEST_CASE("accuracy: superellipsoids: a near cube grazed at its edges and along 
   requireWithinBounds(superellipsoidCases(1.0));
 }
 
+TEST_CASE("accuracy: blobs: tangent rays, a strength just above the threshold, fields just merging, a carved hole, secondary rays",
+          "[numeric][accuracy][blob]") {
+  requireWithinBounds(blobCases(1.0));
+}
+
 TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and vertices, slivers",
           "[numeric][accuracy][mesh]") {
   requireWithinBounds(meshCases(1.0));
