@@ -79,6 +79,8 @@ class ElementReader {
   void error(const std::string& message);
   void warning(const std::string& message);
   bool failed() const { return failed_; }
+  // For an error reported on a child element that makes this element unusable too.
+  void markFailed() { failed_ = true; }
 
   // Calls `f` for every child element; text other than whitespace is an error.
   void forEachChild(const std::function<void(pugi::xml_node)>& f);

@@ -163,6 +163,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
   node->loc = r.loc();
 
   const GroupEntry* group = findGroup(name);
+  const ShapeType* shapeType = findShapeType(name);
   bool isUse = name == "use";
   r.checkAttributes(nodeAttributes(name));
 
@@ -184,8 +185,12 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
       inlineMaterial = c;
     } else if (group && (isGeometryElement(cn) || cn == "light")) {
       if (auto child = parseGeometryNode(ctx, file, c, depth + 1)) node->children.push_back(std::move(child));
+    } else if (shapeType && shapeType->child(cn)) {
+      // The shape's own child (a blob's <component>): its entry reads it in parseShape.
     } else {
       std::vector<std::string_view> childNames{"material", "param"};
+      if (shapeType)
+        for (const ChildElementInfo& ch : shapeType->children) childNames.push_back(ch.name);
       if (group) {
         childNames.insert(childNames.end(), geometryElementNames().begin(), geometryElementNames().end());
         childNames.push_back("light");

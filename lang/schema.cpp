@@ -76,9 +76,36 @@ std::string shapeElements() {
   return out;
 }
 
+// A shape with child elements of its own (a blob's <component>): leafType's children (local
+// parameters, one inline material) and its own, in any order, and the node attributes.
+std::string shapeWithChildrenXsd(const ShapeType& t) {
+  std::string out = fmt::format("  <xs:complexType name=\"{}Type\">\n"
+                                "    <xs:choice minOccurs=\"0\" maxOccurs=\"unbounded\">\n"
+                                "      <xs:group ref=\"localParam\"/>\n"
+                                "      <xs:element name=\"material\" type=\"inlineMaterialType\"/>\n", t.element);
+  for (const ChildElementInfo& c : t.children)
+    out += fmt::format("      <xs:element name=\"{0}\" type=\"{1}{0}Type\">\n"
+                       "        <xs:annotation><xs:documentation>{2}</xs:documentation></xs:annotation>\n"
+                       "      </xs:element>\n", c.name, t.element, escaped(c.doc));
+  out += "    </xs:choice>\n    <xs:attributeGroup ref=\"nodeAttributes\"/>\n";
+  for (const AttributeInfo& a : t.attributes) out += attributeXsd(a);
+  out += "  </xs:complexType>\n\n";
+  // Each child's own type (named after the shape: blobcomponentType), after the shape's.
+  for (const ChildElementInfo& c : t.children) {
+    out += fmt::format("  <xs:complexType name=\"{}{}Type\">\n", t.element, c.name);
+    for (const AttributeInfo& a : c.attributes) out += attributeXsd(a);
+    out += "  </xs:complexType>\n\n";
+  }
+  return out;
+}
+
 std::string shapeTypesXsd() {
   std::string out;
   for (const ShapeType& t : shapeTypes()) {
+    if (!t.children.empty()) {
+      out += shapeWithChildrenXsd(t);
+      continue;
+    }
     out += fmt::format("  <xs:complexType name=\"{}Type\">\n    <xs:complexContent>\n"
                        "      <xs:extension base=\"leafType\">\n", t.element);
     for (const AttributeInfo& a : t.attributes) out += attributeXsd(a);

@@ -47,6 +47,25 @@ class ElementInput final : public AttributeInput {
   }
   std::shared_ptr<const MeshData> meshFile(const char* attr, bool* firstRead) override;
 
+  void forEachChild(const char* element, const std::function<void(AttributeInput&)>& read) override {
+    const ShapeType* t = findShapeType(r_.element().name());
+    const ChildElementInfo* info = t ? t->child(element) : nullptr;
+    std::vector<std::string_view> allowed;
+    if (info)
+      for (const AttributeInfo& a : info->attributes) allowed.push_back(a.name);
+    for (pugi::xml_node c = r_.element().child(element); c; c = c.next_sibling(element)) {
+      ElementReader cr(r_.ctx(), r_.file(), c);
+      cr.checkAttributes(allowed);
+      cr.forEachChild([&](pugi::xml_node g) {
+        ElementReader(r_.ctx(), r_.file(), g).error("<" + std::string(g.name()) + "> is not allowed inside " + cr.tag());
+        cr.markFailed();
+      });
+      ElementInput in(cr);
+      read(in);
+      if (cr.failed()) r_.markFailed();
+    }
+  }
+
   void attrError(const char* attr, const std::string& message) override { r_.attrError(attr, message); }
   void error(const std::string& message) override { r_.error(message); }
   void warning(const std::string& message) override { r_.warning(message); }

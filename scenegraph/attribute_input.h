@@ -7,6 +7,7 @@
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -58,6 +59,11 @@ class AttributeInput {
   // once per process however many elements name it; null when it cannot be read (reported).
   // `firstRead`, if given, tells whether this call read the file.
   virtual std::shared_ptr<const MeshData> meshFile(const char* attr, bool* firstRead = nullptr) = 0;
+
+  // Each child element named `element` (a shape's own children, which its entry declares,
+  // e.g. a blob's <component>), in order, read through an input of its own whose errors
+  // are located at the child; the parser reports any other child element itself.
+  virtual void forEachChild(const char* element, const std::function<void(AttributeInput&)>& read) = 0;
 
   // "<sphere> attribute 'radius': message", at the attribute's value.
   virtual void attrError(const char* attr, const std::string& message) = 0;

@@ -40,6 +40,12 @@ std::vector<std::string_view> ShapeType::attributeNames() const {
   return names;
 }
 
+const ChildElementInfo* ShapeType::child(std::string_view name) const {
+  for (const ChildElementInfo& c : children)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
 std::string attributeText(double v) { return fmt::format("{}", v); }
 std::string attributeText(const Vec3& v) { return fmt::format("{} {} {}", v.x, v.y, v.z); }
 

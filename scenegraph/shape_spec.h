@@ -2,6 +2,7 @@
 // these; the world builder turns them into primitives; the POV-Ray exporter reads them.
 #pragma once
 
+#include "primitives/blob_component.h"
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
 #include "primitives/prism_outline.h"
@@ -62,8 +63,13 @@ struct PrismSpec {
   bool conic = false;  // sweep="conic"
   bool open = false;
 };
+// POV-Ray's blob: the field of the components above the threshold (primitives/blob.h).
+struct BlobSpec {
+  double threshold = 1.0;
+  std::vector<BlobComponent> components;
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
-                               PolySpec, PrismSpec>;
+                               PolySpec, PrismSpec, BlobSpec>;
 
 }  // namespace lucent

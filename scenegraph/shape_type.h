@@ -34,6 +34,15 @@ struct AttributeInfo {
   int listArity = 1;                      // lists: numbers per item (3 for x y z)
 };
 
+// A child element a shape reads itself (a blob's <component>): its name and attributes,
+// for the parser's attribute check and the schema.
+struct ChildElementInfo {
+  std::string name;
+  std::string doc;
+  std::vector<AttributeInfo> attributes;
+  bool required = false;  // at least one
+};
+
 // The exporter's side of writing one shape (povray/pov_geometry.cpp implements it). The
 // entry writes the object's keyword and the lines of its own parameters; the exporter adds
 // the material and the transform and closes the object.
@@ -97,6 +106,8 @@ struct ShapeEntry {
   const char* plural;   // "spheres", for --stats
   const char* doc = "";  // one sentence for the schema: "A sphere (solid)."
   std::vector<Field<S>> fields;
+  // Child elements the entry's finish() reads (AttributeInput::forEachChild); most have none.
+  std::vector<ChildElementInfo> children;
   // After the fields are read: checks between attributes, loading; may be empty.
   std::function<void(S&, AttributeInput&)> finish;
   // "" when the parameters make a solid, else why not ("it is open").
@@ -155,6 +166,7 @@ struct ShapeType {
   std::string doc;
   size_t slot = 0;  // the index in the registry: ShapeSpec's alternative, --stats' slot
   std::vector<AttributeInfo> attributes;
+  std::vector<ChildElementInfo> children;
   std::function<ShapeSpec(AttributeInput&)> read;
   std::function<std::string(const ShapeSpec&)> notSolid;
   std::function<std::shared_ptr<const Shape>(const ShapeSpec&)> build;
@@ -165,6 +177,7 @@ struct ShapeType {
   std::function<std::vector<std::pair<std::string, ShapeSpec>>()> samples;
 
   std::vector<std::string_view> attributeNames() const;
+  const ChildElementInfo* child(std::string_view name) const;
 };
 
 // Each shape's entry, defined in its own file under shapes/. A ShapeSpec alternative
@@ -180,6 +193,7 @@ ShapeType eraseShapeEntry(ShapeEntry<S> e, size_t slot) {
   t.doc = e.doc;
   t.slot = slot;
   for (const Field<S>& f : e.fields) t.attributes.push_back(f.info);
+  t.children = e.children;
   t.read = [fields = e.fields, finish = e.finish](AttributeInput& in) -> ShapeSpec {
     S s{};
     for (const Field<S>& f : fields)

@@ -543,7 +543,8 @@ std::vector<CaseResult> nearSingularCases(double effort) {
 std::vector<CaseResult> allCases(double effort) {
   std::vector<CaseResult> all;
   for (auto family : {baselineCases, grazingCases, farAndScaledCases, secondaryRayCases,
-                      zeroDirectionCases, nearSingularCases, superellipsoidCases, quadricCases, meshCases,
+                      zeroDirectionCases, nearSingularCases, superellipsoidCases, quadricCases, blobCases,
+                      meshCases,
                       meshAlongEdgeCases}) {
     std::vector<CaseResult> part = family(effort);
     all.insert(all.end(), part.begin(), part.end());

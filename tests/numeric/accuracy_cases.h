@@ -32,6 +32,10 @@ std::vector<CaseResult> superellipsoidCases(double effort);
 // Quadrics and polys (accuracy_quadric_cases.cpp): a cylinder, a double cone and a plane
 // written as quadrics; a torus as a quartic poly, the tangle cube, an ellipsoid of order 2.
 std::vector<CaseResult> quadricCases(double effort);
+// Blobs (accuracy_blob_cases.cpp): sphere and cylinder components, random and tangent rays;
+// a strength just above the threshold; two spheres whose fields just merge; a carved hole;
+// rays leaving the surface.
+std::vector<CaseResult> blobCases(double effort);
 
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "primitives/blob_component.h"
 #include "primitives/shape.h"
 
 namespace lucent::accuracy {
@@ -77,6 +78,9 @@ std::shared_ptr<RefShape> refQuadric(const Vec3& squares, const Vec3& mixed, con
 // P evaluated term by term along the line in long double, sampled densely, its extrema
 // refined by golden-section search and each sign change bisected (the torus's method).
 std::shared_ptr<RefShape> refPoly(int order, const std::vector<double>& coefficients, double radius);
+// A blob: its field minus the threshold along the line cut at the components' radii and
+// the planes through cylinders' ends, extrema refined, sign changes bisected.
+std::shared_ptr<RefShape> refBlob(double threshold, const std::vector<BlobComponent>& components);
 // The inner reference placed by an affine map (the double matrix is the truth; its
 // inverse and normal matrix are computed in long double).
 std::shared_ptr<RefShape> refInstance(std::shared_ptr<RefShape> inner, const Mat4& worldFromObject);

@@ -689,6 +689,131 @@ class RefInstanceImpl final : public RefShape {
   LMat3 normal_;
 };
 
+
+// The blob: the field Σ s·(1 − r²/R²)², r the distance to a sphere's centre or to a
+// cylinder's segment (computed here as the distance to the clamped closest point of the
+// segment, not from Lucent's three pieces), minus the threshold. The line is cut where it
+// enters or leaves a component's radius and where it crosses the planes through a
+// cylinder's ends (where the distance changes formula); on each cut the field is one
+// quartic, sampled, its extrema refined and its sign changes bisected as for the others.
+class RefBlobImpl final : public RefShape {
+ public:
+  RefBlobImpl(double threshold, std::vector<BlobComponent> cs) : T_(threshold), cs_(std::move(cs)) {}
+
+  void lineRoots(const LRay& ray, std::vector<LRoot>& out) const override {
+    std::vector<LD> cuts;
+    for (const BlobComponent& c : cs_) {
+      LD R2 = (LD)c.radius * c.radius;
+      LVec a = toL(c.a), b = toL(c.b);
+      auto ball = [&](const LVec& ctr) {
+        LVec w = ray.o - ctr;
+        LD dd = glm::dot(ray.d, ray.d), tc = -glm::dot(w, ray.d) / dd;
+        LVec pc = w + tc * ray.d;
+        LD h2 = (R2 - glm::dot(pc, pc)) / dd;
+        if (h2 > 0) {
+          cuts.push_back(tc - std::sqrt(h2));
+          cuts.push_back(tc + std::sqrt(h2));
+        }
+      };
+      if (c.kind == BlobComponent::Sphere) {
+        ball(a);
+        continue;
+      }
+      ball(a);
+      ball(b);
+      LVec ax = b - a;
+      LD len = std::sqrt(glm::dot(ax, ax));
+      ax /= len;
+      LD z0 = glm::dot(ray.o - a, ax), zd = glm::dot(ray.d, ax);
+      LVec wp = (ray.o - a) - z0 * ax, dp = ray.d - zd * ax;
+      LD dd = glm::dot(dp, dp);
+      if (dd > 0) {
+        LD tc = -glm::dot(wp, dp) / dd;
+        LVec pc = wp + tc * dp;
+        LD h2 = (R2 - glm::dot(pc, pc)) / dd;
+        if (h2 > 0) {
+          cuts.push_back(tc - std::sqrt(h2));
+          cuts.push_back(tc + std::sqrt(h2));
+        }
+      }
+      if (zd != 0) {
+        cuts.push_back(-z0 / zd);
+        cuts.push_back((len - z0) / zd);
+      }
+    }
+    if (cuts.empty()) return;
+    std::sort(cuts.begin(), cuts.end());
+    std::vector<std::pair<LD, LD>> breaks;
+    std::vector<LD> touching;
+    for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const LD a = cuts[k], b = cuts[k + 1];
+      if (!(a < b)) continue;
+      const int n = 200;
+      std::vector<LD> ts(n + 1), gs(n + 1);
+      for (int i = 0; i <= n; ++i) {
+        ts[i] = i == n ? b : a + (b - a) * i / n;
+        gs[i] = g(ray, ts[i]);
+      }
+      breaks.push_back({ts[0], gs[0]});
+      for (int i = 1; i < n; ++i) {
+        bool isMin = gs[i] < gs[i - 1] && gs[i] <= gs[i + 1];
+        bool isMax = gs[i] > gs[i - 1] && gs[i] >= gs[i + 1];
+        if (!isMin && !isMax) continue;
+        LD t = goldenExtremum([&](LD x) { return g(ray, x); }, ts[i - 1], ts[i + 1], isMax ? -1 : 1, 120);
+        LD gt = g(ray, t);
+        breaks.push_back({t, gt});
+        if (isMax && gt == 0) touching.push_back(t);
+      }
+    }
+    breaks.push_back({cuts.back(), g(ray, cuts.back())});
+    std::sort(breaks.begin(), breaks.end());
+    std::vector<LD> roots = touching;
+    for (LD t : touching) roots.push_back(t);
+    for (size_t i = 0; i + 1 < breaks.size(); ++i) {
+      auto [a, ga] = breaks[i];
+      auto [b, gb] = breaks[i + 1];
+      if ((ga < 0 && gb > 0) || (ga > 0 && gb < 0))
+        roots.push_back(bisectRoot([&](LD x) { return g(ray, x); }, a, b, ga));
+    }
+    std::sort(roots.begin(), roots.end());
+    for (LD t : roots) {
+      LVec grad = gradient(ray.at(t));
+      LD len = std::sqrt(glm::dot(grad, grad));
+      out.push_back({t, len > 0 ? -grad / len : LVec(0), len > 0});
+    }
+  }
+
+ private:
+  // p minus its closest point on the component's centre or segment.
+  LVec offset(const BlobComponent& c, const LVec& p) const {
+    LVec a = toL(c.a);
+    if (c.kind == BlobComponent::Sphere) return p - a;
+    LVec ax = toL(c.b) - a;
+    LD z = std::clamp(glm::dot(p - a, ax) / glm::dot(ax, ax), (LD)0, (LD)1);
+    return p - (a + z * ax);
+  }
+  LD g(const LRay& ray, LD t) const {
+    LVec p = ray.at(t);
+    LD f = 0;
+    for (const BlobComponent& c : cs_) {
+      LVec w = offset(c, p);
+      LD q = glm::dot(w, w) / ((LD)c.radius * c.radius);
+      if (q < 1) f += c.strength * (1 - q) * (1 - q);
+    }
+    return f - T_;
+  }
+  LVec gradient(const LVec& p) const {
+    LVec grad(0);
+    for (const BlobComponent& c : cs_) {
+      LVec w = offset(c, p);
+      LD R2 = (LD)c.radius * c.radius, q = glm::dot(w, w) / R2;
+      if (q < 1) grad += (-4 * c.strength * (1 - q) / R2) * w;
+    }
+    return grad;
+  }
+  LD T_;
+  std::vector<BlobComponent> cs_;
+};
 }  // namespace
 
 std::shared_ptr<RefShape> refSphere(const Vec3& c, double r) {
@@ -715,6 +840,9 @@ std::shared_ptr<RefShape> refQuadric(const Vec3& squares, const Vec3& mixed, con
 }
 std::shared_ptr<RefShape> refPoly(int order, const std::vector<double>& coefficients, double radius) {
   return std::make_shared<RefPolyImpl>(order, coefficients, radius);
+}
+std::shared_ptr<RefShape> refBlob(double threshold, const std::vector<BlobComponent>& components) {
+  return std::make_shared<RefBlobImpl>(threshold, components);
 }
 std::shared_ptr<RefShape> refInstance(std::shared_ptr<RefShape> inner, const Mat4& m) {
   return std::make_shared<RefInstanceImpl>(std::move(inner), m);

@@ -69,6 +69,11 @@ TEST_CASE("accuracy: quadrics and polys: a cylinder, a cone and a plane as quadr
   requireWithinBounds(quadricCases(1.0));
 }
 
+TEST_CASE("accuracy: blobs: tangent rays, a strength just above the threshold, fields just merging, a carved hole, secondary rays",
+          "[numeric][accuracy][blob]") {
+  requireWithinBounds(blobCases(1.0));
+}
+
 TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and vertices, slivers",
           "[numeric][accuracy][mesh]") {
   requireWithinBounds(meshCases(1.0));

@@ -1,0 +1,16 @@
+// One component of a blob (primitives/blob.h), as the scene gives it.
+#pragma once
+
+#include "math.h"
+
+namespace lucent {
+
+struct BlobComponent {
+  enum Kind { Sphere, Cylinder } kind = Sphere;
+  Vec3 a{0.0};                  // the sphere's centre, or the cylinder's base
+  Vec3 b{0.0, 1.0, 0.0};        // the cylinder's cap (unused for a sphere)
+  double radius = 1.0;          // > 0
+  double strength = 1.0;        // may be negative
+};
+
+}  // namespace lucent

@@ -1,0 +1,218 @@
+#include "shape_checks.h"
+
+#include "primitives/blob.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace lucent;
+using namespace lucent::test;
+
+namespace {
+
+using LD = long double;
+using C = BlobComponent;
+
+// The field in long double, straight from POV-Ray's definition (primitives/blob.h).
+LD fieldL(const std::vector<C>& cs, const Vec3& p) {
+  LD f = 0;
+  for (const C& c : cs) {
+    LD px = p.x, py = p.y, pz = p.z, r2 = 0;
+    if (c.kind == C::Sphere) {
+      LD dx = px - c.a.x, dy = py - c.a.y, dz = pz - c.a.z;
+      r2 = dx * dx + dy * dy + dz * dz;
+    } else {
+      LD ax = (LD)c.b.x - c.a.x, ay = (LD)c.b.y - c.a.y, az = (LD)c.b.z - c.a.z;
+      LD len2 = ax * ax + ay * ay + az * az;
+      LD wx = px - c.a.x, wy = py - c.a.y, wz = pz - c.a.z;
+      LD z = std::clamp((wx * ax + wy * ay + wz * az) / len2, (LD)0, (LD)1);
+      LD dx = wx - z * ax, dy = wy - z * ay, dz = wz - z * az;
+      r2 = dx * dx + dy * dy + dz * dz;
+    }
+    LD R2 = (LD)c.radius * c.radius;
+    if (r2 < R2) {
+      LD g = 1 - r2 / R2;
+      f += c.strength * g * g;
+    }
+  }
+  return f;
+}
+
+struct Case {
+  const char* name;
+  double threshold;
+  std::vector<C> components;
+};
+
+const std::vector<Case> kCases = {
+    {"one sphere", 1.0, {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.0, 2.0}}},
+    {"two merging spheres", 0.6, {{C::Sphere, Vec3(-0.5, 0, 0), Vec3(0.0), 1.0, 1.0},
+                                  {C::Sphere, Vec3(0.5, 0, 0), Vec3(0.0), 1.0, 1.0}}},
+    {"negative hole", 0.5, {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.2, 2.0},
+                            {C::Sphere, Vec3(0.0, 0.7, 0.0), Vec3(0.0), 0.6, -3.0}}},
+    {"cylinder", 1.0, {{C::Cylinder, Vec3(0.0), Vec3(0.0, 2.0, 0.0), 1.0, 2.0}}},
+    {"cylinder and spheres", 0.5, {{C::Cylinder, Vec3(-1, 0, 0), Vec3(1, 0.5, 0.2), 0.6, 1.5},
+                                   {C::Sphere, Vec3(1, 0.5, 0.2), Vec3(0.0), 0.8, 1.0},
+                                   {C::Sphere, Vec3(0, 0.3, 0.1), Vec3(0.0), 0.5, -1.0},
+                                   {C::Cylinder, Vec3(0, -1, 0), Vec3(0, 1, 0), 0.4, 1.0}}},
+};
+
+double angle(const Vec3& a, const Vec3& b) {
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
+// The surface radius of one component of strength s at threshold T: s(1 − r²/R²)² = T.
+double surfaceRadius(double s, double T, double R) { return R * std::sqrt(1.0 - std::sqrt(T / s)); }
+
+}  // namespace
+
+TEST_CASE("blob: one sphere component is a sphere of the closed-form radius", "[primitives][blob]") {
+  Blob b(1.0, {{C::Sphere, Vec3(1, 2, 3), Vec3(0.0), 1.5, 2.0}});
+  double r = surfaceRadius(2.0, 1.0, 1.5);
+  Ray ray(Vec3(1, 2, -10), Vec3(0, 0, 2));
+  Hit h;
+  REQUIRE(b.intersect(ray, h));
+  CHECK(h.t == Approx((13.0 - r) / 2.0).epsilon(1e-15));
+  SurfaceInfo s = b.surface(ray, h);
+  CHECK(s.ng.z == Approx(-1.0).epsilon(1e-15));
+  CrossingList cl;
+  b.crossings(ray, cl);
+  REQUIRE(cl.items.size() == 2);
+  CHECK_FALSE(cl.startsInside);
+  CHECK(cl.items[1].hit.t == Approx((13.0 + r) / 2.0).epsilon(1e-15));
+  CHECK_FALSE(cl.items[1].entering);
+  CHECK(b.inside(Vec3(1, 2, 3)));
+  CHECK_FALSE(b.inside(Vec3(1, 2, 3 + r + 1e-9)));
+  CHECK(b.inside(Vec3(1, 2, 3 + r - 1e-9)));
+  // A ray starting inside.
+  Ray from(Vec3(1, 2, 3), Vec3(1, 0, 0));
+  CrossingList c2;
+  b.crossings(from, c2);
+  CHECK(c2.startsInside);
+  REQUIRE(c2.items.size() == 1);
+  CHECK(c2.items[0].hit.t == Approx(r).epsilon(1e-15));
+}
+
+TEST_CASE("blob: a cylinder component is a capsule of the closed-form radius", "[primitives][blob]") {
+  Blob b(1.0, {{C::Cylinder, Vec3(0.0), Vec3(0.0, 2.0, 0.0), 1.0, 2.0}});
+  double r = surfaceRadius(2.0, 1.0, 1.0);
+  Hit h;
+  Ray side(Vec3(-5, 1.3, 0), Vec3(1, 0, 0));
+  REQUIRE(b.intersect(side, h));
+  CHECK(h.t == Approx(5.0 - r).epsilon(1e-15));
+  CHECK(b.surface(side, h).ng.x == Approx(-1.0).epsilon(1e-15));
+  Ray axis(Vec3(0, -5, 0), Vec3(0, 1, 0));
+  CrossingList cl;
+  b.crossings(axis, cl);
+  REQUIRE(cl.items.size() == 2);
+  CHECK(cl.items[0].hit.t == Approx(5.0 - r).epsilon(1e-15));
+  CHECK(cl.items[1].hit.t == Approx(7.0 + r).epsilon(1e-15));
+  // The hemispherical end: a ray along the diagonal of the end ball.
+  Vec3 dir = glm::normalize(Vec3(1, 1, 0));
+  Ray end(Vec3(0, 2, 0) + 5.0 * dir, -dir);
+  REQUIRE(b.intersect(end, h));
+  CHECK(h.t == Approx(5.0 - r).epsilon(1e-14));
+  CHECK(angle(b.surface(end, h).ng, dir) < 1e-13);
+}
+
+TEST_CASE("blob: crossings alternate, lie on the surface and agree with inside() (long-double field)",
+          "[primitives][blob]") {
+  Rng rng(71);
+  for (const Case& cs : kCases) {
+    INFO(cs.name);
+    Blob b(cs.threshold, cs.components);
+    int hits = 0;
+    for (int i = 0; i < 400; ++i) {
+      Ray ray = randomRayAt(rng, b.bounds(), uniform(rng, 0.2, 2.0));
+      CrossingList cl;
+      b.crossings(ray, cl);
+      REQUIRE(crossingsViolation(b, ray, cl).empty());
+      REQUIRE(intersectAgreesWithCrossings(b, ray).empty());
+      CHECK(cl.startsInside == b.inside(ray.o));
+      // Each crossing within a few ulps of the true surface: |F − T| over the gradient.
+      for (const Crossing& c : cl.items) {
+        Vec3 p = ray.at(c.hit.t);
+        LD f = fieldL(cs.components, p) - cs.threshold;
+        double g = glm::length(b.gradient(p));
+        if (g > 1e-3) CHECK(std::abs((double)f) / g < 1e-13);
+        ++hits;
+      }
+      // Between the crossings the long-double field keeps one side (no root missed).
+      bool in = cl.startsInside;
+      double last = ray.tmin;
+      auto sample = [&](double a, double z) {
+        for (int k = 1; k < 64; ++k) {
+          double t = a + (z - a) * k / 64.0;
+          LD f = fieldL(cs.components, ray.at(t)) - cs.threshold;
+          if (std::abs((double)f) < 1e-9) continue;
+          REQUIRE((f > 0) == in);
+        }
+      };
+      for (const Crossing& c : cl.items) {
+        sample(last, c.hit.t);
+        in = c.entering;
+        last = c.hit.t;
+      }
+      Interval box = b.bounds().slab(ray, Vec3(1.0) / ray.d);
+      if (!box.empty() && box.hi > last) sample(last, box.hi);
+    }
+    CHECK(hits > 100);
+  }
+}
+
+TEST_CASE("blob: normals are the field's falling gradient", "[primitives][blob]") {
+  Rng rng(72);
+  for (const Case& cs : kCases) {
+    INFO(cs.name);
+    Blob b(cs.threshold, cs.components);
+    for (int i = 0; i < 300; ++i) {
+      Ray ray = randomRayAt(rng, b.bounds());
+      Hit h;
+      if (!b.intersect(ray, h)) continue;
+      SurfaceInfo s = b.surface(ray, h);
+      // A central difference of the long-double field.
+      const double e = 1e-6;
+      LD g[3];
+      for (int k = 0; k < 3; ++k) {
+        Vec3 dp(0.0);
+        dp[k] = e;
+        g[k] = (fieldL(cs.components, s.p + dp) - fieldL(cs.components, s.p - dp)) / (2 * e);
+      }
+      Vec3 expect = -glm::normalize(Vec3(double(g[0]), double(g[1]), double(g[2])));
+      CHECK(angle(s.ng, expect) < 1e-6);
+      CHECK(glm::dot(s.ng, ray.d) <= 0.0);
+    }
+  }
+}
+
+TEST_CASE("blob: a secondary ray leaving the surface does not hit it again at once", "[primitives][blob]") {
+  Rng rng(73);
+  for (const Case& cs : kCases) {
+    INFO(cs.name);
+    Blob b(cs.threshold, cs.components);
+    for (int i = 0; i < 300; ++i) {
+      Ray ray = randomRayAt(rng, b.bounds());
+      Hit h;
+      if (!b.intersect(ray, h)) continue;
+      SurfaceInfo s = b.surface(ray, h);
+      double off = glm::dot(glm::abs(s.ng), s.pError) * 2.0;
+      CHECK_FALSE(b.inside(s.p + s.ng * off));
+      CHECK(b.inside(s.p - s.ng * off));
+      Ray out(s.p + s.ng * off, s.ng + 0.3 * randomUnit(rng));
+      if (glm::dot(out.d, s.ng) <= 0.1) continue;
+      Hit h2;
+      if (b.intersect(out, h2)) CHECK(h2.t * glm::length(out.d) > 1e-6);
+    }
+  }
+}
+
+TEST_CASE("blob: invalid parameters are refused", "[primitives][blob]") {
+  CHECK_THROWS_AS(Blob(0.0, {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.0, 1.0}}), std::invalid_argument);
+  CHECK_THROWS_AS(Blob(1.0, {}), std::invalid_argument);
+  CHECK_THROWS_AS(Blob(1.0, {{C::Sphere, Vec3(0.0), Vec3(0.0), 0.0, 1.0}}), std::invalid_argument);
+  CHECK_THROWS_AS(Blob(1.0, {{C::Sphere, Vec3(0.0), Vec3(0.0), std::nan(""), 1.0}}), std::invalid_argument);
+  CHECK_THROWS_AS(Blob(1.0, {{C::Cylinder, Vec3(1.0), Vec3(1.0), 1.0, 1.0}}), std::invalid_argument);
+}
