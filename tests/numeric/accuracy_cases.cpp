@@ -543,7 +543,7 @@ std::vector<CaseResult> nearSingularCases(double effort) {
 std::vector<CaseResult> allCases(double effort) {
   std::vector<CaseResult> all;
   for (auto family : {baselineCases, grazingCases, farAndScaledCases, secondaryRayCases,
-                      zeroDirectionCases, nearSingularCases, superellipsoidCases, meshCases,
+                      zeroDirectionCases, nearSingularCases, superellipsoidCases, prismCases, meshCases,
                       meshAlongEdgeCases}) {
     std::vector<CaseResult> part = family(effort);
     all.insert(all.end(), part.begin(), part.end());

@@ -29,6 +29,10 @@ std::vector<CaseResult> meshAlongEdgeCases(double effort);
 // leaving the surface.
 std::vector<CaseResult> superellipsoidCases(double effort);
 
+// Prisms (accuracy_prism_cases.cpp): a star with a hole, rays through its vertices, along
+// its side faces and grazing its caps' edges.
+std::vector<CaseResult> prismCases(double effort);
+
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);
 
