@@ -50,6 +50,25 @@ double monotoneRoot(const double* c, int n, double lo, double hi, bool loPositiv
   return x;
 }
 
+// a·(c.x − q.x) + b·(c.z − q.z) to within a few ulps of its own value (error-free
+// differences and products, Ogita, Rump & Oishi 2005, "Accurate sum and dot product"): a
+// vertex's side of the ray's line is then right unless it lies within rounding of it, so a
+// ray along a side face keeps to the right side of both its ends.
+double sideOf(double a, double b, const Vec2& q, const Vec2& c) {
+  auto twoDiff = [](double x, double y, double& err) {
+    const double s = x - y, bb = s - x;
+    err = (x - (s - bb)) - (y + bb);
+    return s;
+  };
+  double ex, ez, es;
+  const double dx = twoDiff(c.x, q.x, ex), dz = twoDiff(c.y, q.y, ez);
+  const double p1 = a * dx, e1 = std::fma(a, dx, -p1);
+  const double p2 = b * dz, e2 = std::fma(b, dz, -p2);
+  const double sum = p1 + p2, bv = sum - p1;
+  es = (p1 - (sum - bv)) + (p2 - bv);
+  return sum + (es + e1 + e2 + a * ex + b * ez);
+}
+
 }  // namespace
 
 Prism::Prism(const std::vector<PrismContour>& contours, double height1, double height2,
@@ -176,6 +195,7 @@ bool Prism::insideOutline(double u, double v) const {
 }
 
 bool Prism::inside(const Vec3& p) const {
+  if (open_) return false;  // a surface has no inside (POV-Ray's open prism keeps one)
   if (!(p.y >= h1_ && p.y <= h2_)) return false;
   if (sweep_ == Sweep::Linear) return insideOutline(p.x, p.z);
   if (p.y == 0.0) return false;  // the apex
@@ -197,7 +217,7 @@ double Prism::eventT(const Ray& ray, const Vec2& c) const {
 void Prism::addPieceCrossings(const Piece& pc, uint32_t index, const Ray& ray, double a, double b,
                               const Vec2& q, std::vector<Event>& ev) const {
   auto g = [&](const Vec2& c) { return a * (c.x - q.x) + b * (c.y - q.y); };
-  const double g0 = g(pc.p0), g1 = g(pc.p1);
+  const double g0 = sideOf(a, b, q, pc.p0), g1 = sideOf(a, b, q, pc.p1);
   const bool pos0 = g0 >= 0.0, pos1 = g1 >= 0.0;
   if (pos0 == pos1) {
     // Both ends on one side: nothing crosses if the control box is strictly there too.

@@ -36,6 +36,9 @@ std::vector<CaseResult> quadricCases(double effort);
 // a strength just above the threshold; two spheres whose fields just merge; a carved hole;
 // rays leaving the surface.
 std::vector<CaseResult> blobCases(double effort);
+// Prisms (accuracy_prism_cases.cpp): a star with a hole, rays through its vertices, along
+// its side faces and grazing its caps' edges.
+std::vector<CaseResult> prismCases(double effort);
 
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);

@@ -74,6 +74,11 @@ TEST_CASE("accuracy: blobs: tangent rays, a strength just above the threshold, f
   requireWithinBounds(blobCases(1.0));
 }
 
+TEST_CASE("accuracy: prisms: a star with a hole, rays through vertices, along side faces, grazing the caps",
+          "[numeric][accuracy][prism]") {
+  requireWithinBounds(prismCases(1.0));
+}
+
 TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and vertices, slivers",
           "[numeric][accuracy][mesh]") {
   requireWithinBounds(meshCases(1.0));

@@ -29,6 +29,7 @@ TEST_CASE("makeShape: every element builds its primitive with the spec's paramet
       tri,
       meshSpec,
       SuperellipsoidSpec{0.3, 0.7},
+      PrismSpec{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}}, -1.0, 1.0},
   };
   // Every one of them is crossed by the z axis from z = 5 first at z = 1 (the torus at its
   // tube: the ray runs at x = 1 for it; the open cylinder from the side) or, for the flat

@@ -1,5 +1,6 @@
 #include "shape_checks.h"
 
+#include "csg/csg_node.h"
 #include "primitives/box.h"
 #include "primitives/prism.h"
 
@@ -283,4 +284,27 @@ TEST_CASE("prism: a secondary ray leaving the surface does not hit it again at o
       if (p.intersect(out, h2)) CHECK(h2.t > 1e-9);
     }
   }
+}
+
+TEST_CASE("prism: a square minus a box through it is the square ring", "[primitives][prism][csg]") {
+  std::vector<std::unique_ptr<Shape>> kids;
+  kids.push_back(std::make_unique<Prism>(std::vector<PrismContour>{polygon(kSquare)}, 0, 1));
+  kids.push_back(std::make_unique<Box>(Vec3(-0.5, -1, -0.5), Vec3(0.5, 2, 0.5)));
+  CsgNode d(CsgOp::Difference, std::move(kids));
+  Prism ring({polygon(kSquare), polygon(kHole)}, 0, 1);
+  Rng rng(46);
+  int hits = 0;
+  for (int i = 0; i < 3000; ++i) {
+    Ray ray = randomRayAt(rng, ring.bounds());
+    CrossingList a, b;
+    d.crossings(ray, a);
+    ring.crossings(ray, b);
+    REQUIRE(a.items.size() == b.items.size());
+    for (size_t k = 0; k < a.items.size(); ++k) {
+      CHECK(std::abs(a.items[k].hit.t - b.items[k].hit.t) <= 1e-14 * (1 + std::abs(b.items[k].hit.t)));
+      CHECK(a.items[k].entering == b.items[k].entering);
+    }
+    hits += !a.items.empty();
+  }
+  CHECK(hits > 1000);
 }
