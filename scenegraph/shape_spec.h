@@ -2,6 +2,7 @@
 // these; the world builder turns them into primitives; the POV-Ray exporter reads them.
 #pragma once
 
+#include "primitives/lathe_spline.h"
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
 
@@ -53,8 +54,13 @@ struct PolySpec {
   int order = 0;  // required
   std::vector<double> coefficients;
 };
+// A curve turned about the y axis, POV-Ray's lathe (primitives/lathe.h).
+struct LatheSpec {
+  LatheSpline spline = LatheSpline::Linear;
+  std::vector<Vec2> points;  // required: x >= 0, y
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
-                               PolySpec>;
+                               PolySpec, LatheSpec>;
 
 }  // namespace lucent
