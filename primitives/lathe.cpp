@@ -65,7 +65,8 @@ Lathe::Lathe(LatheSpline spline, const std::vector<Vec2>& points) {
   }
   // Each piece's polynomial, and its first and last point (for the joints).
   std::vector<std::pair<Vec2, Vec2>> ends;
-  auto add = [&](Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  // The ends from the points themselves: a + b + c + d need not round to the last one.
+  auto add = [&](Vec2 a, Vec2 b, Vec2 c, Vec2 d, Vec2 first, Vec2 last) {
     Piece p{a, b, c, d, 0, 0.0, 0.0, 0.0, true};
     p.degree = (a.x != 0.0 || a.y != 0.0) ? 3 : (b.x != 0.0 || b.y != 0.0) ? 2 : (c.x != 0.0 || c.y != 0.0) ? 1 : 0;
     if (p.degree == 0) return;  // a repeated point: no surface
@@ -75,26 +76,27 @@ Lathe::Lathe(LatheSpline spline, const std::vector<Vec2>& points) {
     extent(a.y, b.y, c.y, d.y, p.h1, p.h2);
     p.r2 = std::max(std::abs(x1), std::abs(x2));
     pieces_.push_back(p);
-    ends.emplace_back(d, a + b + c + d);
+    ends.emplace_back(first, last);
   };
   const auto& P = points;
   switch (spline) {
     case LatheSpline::Linear:
-      for (int i = 0; i + 1 < n; ++i) add(Vec2(0.0), Vec2(0.0), P[i + 1] - P[i], P[i]);
+      for (int i = 0; i + 1 < n; ++i) add(Vec2(0.0), Vec2(0.0), P[i + 1] - P[i], P[i], P[i], P[i + 1]);
       break;
     case LatheSpline::Quadratic:
       for (int i = 0; i + 2 < n; ++i)
-        add(Vec2(0.0), 0.5 * P[i] - P[i + 1] + 0.5 * P[i + 2], 0.5 * (P[i + 2] - P[i]), P[i + 1]);
+        add(Vec2(0.0), 0.5 * P[i] - P[i + 1] + 0.5 * P[i + 2], 0.5 * (P[i + 2] - P[i]), P[i + 1], P[i + 1], P[i + 2]);
       break;
     case LatheSpline::Cubic:  // Catmull-Rom from point i+1 to i+2
       for (int i = 0; i + 3 < n; ++i)
         add(-0.5 * P[i] + 1.5 * P[i + 1] - 1.5 * P[i + 2] + 0.5 * P[i + 3],
-            P[i] - 2.5 * P[i + 1] + 2.0 * P[i + 2] - 0.5 * P[i + 3], 0.5 * (P[i + 2] - P[i]), P[i + 1]);
+            P[i] - 2.5 * P[i + 1] + 2.0 * P[i + 2] - 0.5 * P[i + 3], 0.5 * (P[i + 2] - P[i]), P[i + 1],
+            P[i + 1], P[i + 2]);
       break;
     case LatheSpline::Bezier:
       for (int i = 0; i + 3 < n; i += 4)
         add(P[i + 3] - 3.0 * P[i + 2] + 3.0 * P[i + 1] - P[i], 3.0 * P[i + 2] - 6.0 * P[i + 1] + 3.0 * P[i],
-            3.0 * (P[i + 1] - P[i]), P[i]);
+            3.0 * (P[i + 1] - P[i]), P[i], P[i], P[i + 3]);
       break;
   }
   if (pieces_.empty()) throw std::invalid_argument("lathe: the curve has no extent");
