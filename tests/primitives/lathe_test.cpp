@@ -137,3 +137,28 @@ TEST_CASE("lathe: bad point lists are refused", "[primitives][lathe]") {
   CHECK_THROWS_AS(Lathe(LatheSpline::Linear, V{{-1, 0}, {1, 1}}), std::invalid_argument);
   CHECK_THROWS_AS(Lathe(LatheSpline::Linear, V{{1, 1}, {1, 1}}), std::invalid_argument);
 }
+
+TEST_CASE("lathe: rays through the axis and the poles against the closed form", "[primitives][lathe]") {
+  const Lathe l = cylinder();
+  Rng rng(5);
+  for (int i = 0; i < 2000; ++i) {
+    // From the axis inside, in every direction: one crossing, where the side or a cap is.
+    const Vec3 o(0.0, uniform(rng, 0.05, 0.95), 0.0);
+    const Vec3 d = randomUnit(rng);
+    const double rxz = std::sqrt(d.x * d.x + d.z * d.z);
+    const double tSide = rxz > 0.0 ? 1.0 / rxz : kInf;
+    const double tCap = d.y > 0.0 ? (1.0 - o.y) / d.y : d.y < 0.0 ? -o.y / d.y : kInf;
+    const double want = std::min(tSide, tCap);
+    if (std::abs(tSide - tCap) < 1e-9) continue;  // the rim
+    CrossingList cl;
+    l.crossings(Ray(o, d), cl);
+    CHECK(cl.startsInside);
+    REQUIRE(cl.items.size() == 1);
+    CHECK_THAT(cl.items[0].hit.t, WithinAbs(want, 1e-13 * (1.0 + want)));
+    // Back along the line from outside, through both poles' rings: enters and leaves.
+    const Ray back(o + 3.0 * d, -d);
+    Hit h;
+    REQUIRE(l.intersect(back, h));
+    CHECK_THAT(h.t, WithinAbs(3.0 - want, 1e-12));
+  }
+}
