@@ -185,6 +185,8 @@ int polynomialRoots(const double* c, const double* cAbs, int n, double lo, doubl
     case 2: return polynomialRootsN<2>(c, cAbs, lo, hi, out);
     case 3: return polynomialRootsN<3>(c, cAbs, lo, hi, out);
     case 4: return polynomialRootsN<4>(c, cAbs, lo, hi, out);
+    case 5: return polynomialRootsN<5>(c, cAbs, lo, hi, out);
+    case 6: return polynomialRootsN<6>(c, cAbs, lo, hi, out);
   }
   return 0;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "primitives/blob_component.h"
+#include "primitives/lathe_spline.h"
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
 #include "primitives/prism_outline.h"
@@ -68,8 +69,13 @@ struct BlobSpec {
   double threshold = 1.0;
   std::vector<BlobComponent> components;
 };
+// A curve turned about the y axis, POV-Ray's lathe (primitives/lathe.h).
+struct LatheSpec {
+  LatheSpline spline = LatheSpline::Linear;
+  std::vector<Vec2> points;  // required: x >= 0, y
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
-                               PolySpec, PrismSpec, BlobSpec>;
+                               PolySpec, PrismSpec, BlobSpec, LatheSpec>;
 
 }  // namespace lucent

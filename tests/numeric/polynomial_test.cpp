@@ -66,3 +66,29 @@ TEST_CASE("polynomial: no real roots, and lower degrees", "[numeric]") {
   REQUIRE(polynomialRoots(c3, a3, 3, -10.0, 10.0, out) == 3);
   CHECK_THAT(out[2].x, WithinRel(3.0, 1e-15));
 }
+
+TEST_CASE("polynomial: degrees 5 and 6, simple, close and double roots", "[numeric]") {
+  const double r6[6] = {-0.9, -0.1, 0.2, 0.21, 0.7, 1.3};
+  double c[7], cAbs[7];
+  fromRoots(r6, 6, c, cAbs);
+  PolynomialRoot out[6];
+  REQUIRE(polynomialRoots(c, cAbs, 6, -2.0, 2.0, out) == 6);
+  for (int i = 0; i < 6; ++i) {
+    CHECK_THAT(out[i].x, WithinAbs(r6[i], 1e-13));
+    CHECK_FALSE(out[i].touching);
+  }
+  const double r5[5] = {-3.0, -1.0, 0.0625, 0.5, 4.0};
+  fromRoots(r5, 5, c, cAbs);
+  REQUIRE(polynomialRoots(c, cAbs, 5, -10.0, 10.0, out) == 5);
+  for (int i = 0; i < 5; ++i) CHECK_THAT(out[i].x, WithinAbs(r5[i], 1e-13));
+  // A double root among four simple ones (a ray tangent to a lathe's silhouette).
+  const double d6[6] = {-1.0, 0.0, 0.375, 0.375, 0.75, 1.0};
+  fromRoots(d6, 6, c, cAbs);
+  REQUIRE(polynomialRoots(c, cAbs, 6, -2.0, 2.0, out) == 5);
+  CHECK_THAT(out[2].x, WithinAbs(0.375, 1e-13));
+  CHECK(out[2].touching);
+  CHECK_THAT(out[4].x, WithinAbs(1.0, 1e-13));
+  // x⁶ + 1 has no real root.
+  const double none[7] = {1, 0, 0, 0, 0, 0, 1};
+  CHECK(polynomialRoots(none, none, 6, -10.0, 10.0, out) == 0);
+}
