@@ -156,10 +156,10 @@ void writeBumpMapNormal(const BumpMapSpec& bump, const ImageMapping& mapping,
                                        bump.path));
     return;
   }
-  if (mapping.kind != ImageMapping::MeshUV) {
+  if (mapping.kind != ImageMapping::MeshUV && mapping.kind != ImageMapping::Spherical) {
     issues.error(loc, fmt::format("<{}> with the bump map of {}: POV-Ray's bump_map bends the "
                                   "normal as Lucent's only with uv_mapping, whose (u,v) equal "
-                                  "Lucent's only on meshes with uvs",
+                                  "Lucent's only on meshes with uvs and on spheres",
                                   shapeName, materialName));
     return;
   }
@@ -171,6 +171,15 @@ void writeBumpMapNormal(const BumpMapSpec& bump, const ImageMapping& mapping,
   out.line("uv_mapping");
   out.line(map);
   out.line("bump_size " + povNumber(bump.depth));
+  if (mapping.kind == ImageMapping::Spherical) {
+    // POV-Ray's sphere has u_P = longitude from +x towards +z, Lucent's u = 0.75 - u_P
+    // (primitives/sphere.cpp), and both have the same v. The pattern point (u_P, v, 0) is
+    // carried to (0.75 - u_P, v, 0) by a half turn about y, not a mirror: POV-Ray turns the
+    // normal into the pattern's space and back around the bump, and a half turn leaves the
+    // bump frame (built from the normal and +y) as Lucent's, where a mirror would flip it.
+    out.line("scale <-1, 1, -1>");
+    out.line("translate <0.75, 0, 0>");
+  }
   out.close();
 }
 

@@ -35,8 +35,10 @@ void writeImagePigment(const ImageTexture& image, double filter, double transmit
 // Writes `normal { uv_mapping bump_map {...} bump_size d }` for a <bump-map>: POV-Ray's
 // uv-mapped normal reads the image at the shape's (u, v) with the world normal, as Lucent
 // does (render/bump_map.h), but POV-Ray has such (u, v) equal to Lucent's only for meshes
-// with uvs (MeshUV); a planar or spherical image_map's normal would build its frame in the
-// pattern's space instead, so every other shape is an error that names it. The image is
+// with uvs (MeshUV) and, turned about y in the pattern's space, for spheres (Spherical);
+// planes and discs have no (u, v) in POV-Ray, a box's are laid out differently, and a
+// planar image_map's normal would build its frame in the pattern's space instead, so every
+// other shape is an error that names it. The image is
 // read without gamma (`gamma 1.0`: the stored values, as Lucent), bilinearly
 // (`interpolate 2`), its grey level from the colour (`use_color`).
 void writeBumpMapNormal(const BumpMapSpec& bump, const ImageMapping& mapping,
