@@ -1,5 +1,6 @@
 #include "poly.h"
 
+#include "implicit_surface.h"
 #include "polynomial.h"
 #include "quadric.h"
 #include "span.h"
@@ -197,25 +198,21 @@ void Poly::crossings(const Ray& ray, CrossingList& out) const {
 }
 
 SurfaceInfo Poly::surface(const Ray& ray, const Hit& hit) const {
-  SurfaceInfo s;
-  s.p = ray.at(hit.t);
-  Vec3 n = gradient(s.p);
-  const double len = glm::length(n);
-  n = len > 0.0 ? n / len : Vec3(1.0, 0.0, 0.0);
-  // The rounding of t·d and of the origin, as the quadric's, plus the band around the
-  // surface where P's computed sign is unsure: any line through a point near p evaluates P
-  // from coordinates of at most √2·|p| (its point closest to the origin and the step from
-  // there), so within gamma(2n + 6)·Σ|c|·(√2|p|)^degree of P, as polynomialRoots bounds it;
-  // divided by |∇P| that is a distance. Capped where ∇P vanishes (a singular point).
-  s.pError = gamma(8) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d)) + gamma(4) * glm::abs(s.p);
+  const Vec3 p = ray.at(hit.t);
+  const Vec3 g = gradient(p);
+  SurfaceInfo s = implicitSurface(ray, hit, p, g);
+  // Beyond the rounding of the point, the band around the surface where P's computed sign
+  // is unsure: any line through a point near p evaluates P from coordinates of at most
+  // √2·|p| (its point closest to the origin and the step from there), so within
+  // gamma(2n + 6)·Σ|c|·(√2|p|)^degree of P, as polynomialRoots bounds it; divided by |∇P|
+  // that is a distance. Capped where ∇P vanishes (a singular point).
+  const double len = glm::length(g);
   const double reach = std::sqrt(2.0) * glm::length(s.p);
   double magnitude = 0.0;
   for (const Term& t : terms_) magnitude += std::abs(t.c) * std::pow(reach, t.i + t.j + t.k);
   const double cap = 1e-6 * (1.0 + glm::length(s.p));
   const double band = gamma(2 * order_ + 6) * magnitude;
   s.pError += Vec3(len > 0.0 ? std::min(band / len, cap) : cap);
-  s.ng = n;
-  s.ns = n;
   return s;
 }
 

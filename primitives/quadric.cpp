@@ -1,5 +1,6 @@
 #include "quadric.h"
 
+#include "implicit_surface.h"
 #include "quadratic.h"
 #include "span.h"
 
@@ -110,17 +111,8 @@ void Quadric::crossings(const Ray& ray, CrossingList& out) const {
 }
 
 SurfaceInfo Quadric::surface(const Ray& ray, const Hit& hit) const {
-  SurfaceInfo s;
-  s.p = ray.at(hit.t);
-  Vec3 n = gradient(s.p);
-  const double len = glm::length(n);
-  n = len > 0.0 ? n / len : Vec3(1.0, 0.0, 0.0);
-  // A hit point is off the surface by about the rounding of t·d and of the origin; bound
-  // it generously by the size of the numbers involved.
-  s.pError = gamma(8) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d)) + gamma(4) * glm::abs(s.p);
-  s.ng = n;
-  s.ns = n;
-  return s;
+  const Vec3 p = ray.at(hit.t);
+  return implicitSurface(ray, hit, p, gradient(p));
 }
 
 }  // namespace lucent

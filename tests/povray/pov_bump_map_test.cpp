@@ -29,6 +29,15 @@ PovExport exportBumpScene(const std::string& shape, std::string& messages) {
 
 bool has(const PovExport& e, const std::string& s) { return e.text.find(s) != std::string::npos; }
 
+// The normal block written for the test scenes' material, ending with `extra` lines.
+std::string bumpNormalBlock(const std::string& extra) {
+  const std::string path = std::string(LUCENT_SOURCE_DIR) + "/examples/gallery/textures/bumps.png";
+  return "    normal {\n"
+         "      uv_mapping\n"
+         "      bump_map { png \"" + path + "\" gamma 1.0 interpolate 2 use_color }\n"
+         "      bump_size -1.25\n" + extra + "    }\n";
+}
+
 }  // namespace
 
 TEST_CASE("a bump map on a mesh with uvs is a uv-mapped bump_map read as stored",
@@ -39,12 +48,7 @@ TEST_CASE("a bump map on a mesh with uvs is a uv-mapped bump_map read as stored"
       messages);
   REQUIRE(e.ok());
   CHECK(messages.empty());
-  const std::string path = std::string(LUCENT_SOURCE_DIR) + "/examples/gallery/textures/bumps.png";
-  CHECK(has(e, "    normal {\n"
-               "      uv_mapping\n"
-               "      bump_map { png \"" + path + "\" gamma 1.0 interpolate 2 use_color }\n"
-               "      bump_size -1.25\n"
-               "    }\n"));
+  CHECK(has(e, bumpNormalBlock("")));
   // Written inline with the shape, not declared.
   CHECK_FALSE(has(e, "#declare M1 = texture"));
 }
@@ -56,16 +60,9 @@ TEST_CASE("a bump map on a sphere is a uv-mapped bump_map turned to Lucent's lon
                                 messages);
   REQUIRE(e.ok());
   CHECK(messages.empty());
-  const std::string path = std::string(LUCENT_SOURCE_DIR) + "/examples/gallery/textures/bumps.png";
   // (u, v, 0) to (0.75 - u, v, 0) by a half turn about y, so that the bump frame is kept
   // (examples/gallery/bump-map-sphere.xml holds it to POV-Ray's image).
-  CHECK(has(e, "    normal {\n"
-               "      uv_mapping\n"
-               "      bump_map { png \"" + path + "\" gamma 1.0 interpolate 2 use_color }\n"
-               "      bump_size -1.25\n"
-               "      scale <-1, 1, -1>\n"
-               "      translate <0.75, 0, 0>\n"
-               "    }\n"));
+  CHECK(has(e, bumpNormalBlock("      scale <-1, 1, -1>\n      translate <0.75, 0, 0>\n")));
 }
 
 TEST_CASE("a bump map on a shape without POV-Ray's equal uv mapping is an export error",

@@ -163,50 +163,52 @@ TEST_CASE("blob: crossings alternate, lie on the surface and agree with inside()
   }
 }
 
-TEST_CASE("blob: normals are the field's falling gradient", "[primitives][blob]") {
-  Rng rng(72);
+namespace {
+
+// Calls visit(case, blob, ray, surface) for the hits of 300 random rays about each case.
+template <class Visit>
+void forEachHit(Rng& rng, Visit&& visit) {
   for (const Case& cs : kCases) {
     INFO(cs.name);
     Blob b(cs.threshold, cs.components);
     for (int i = 0; i < 300; ++i) {
       Ray ray = randomRayAt(rng, b.bounds());
       Hit h;
-      if (!b.intersect(ray, h)) continue;
-      SurfaceInfo s = b.surface(ray, h);
-      // A central difference of the long-double field.
-      const double e = 1e-6;
-      LD g[3];
-      for (int k = 0; k < 3; ++k) {
-        Vec3 dp(0.0);
-        dp[k] = e;
-        g[k] = (fieldL(cs.components, s.p + dp) - fieldL(cs.components, s.p - dp)) / (2 * e);
-      }
-      Vec3 expect = -glm::normalize(Vec3(double(g[0]), double(g[1]), double(g[2])));
-      CHECK(angle(s.ng, expect) < 1e-6);
-      CHECK(glm::dot(s.ng, ray.d) <= 0.0);
+      if (b.intersect(ray, h)) visit(cs, b, ray, b.surface(ray, h));
     }
   }
 }
 
+}  // namespace
+
+TEST_CASE("blob: normals are the field's falling gradient", "[primitives][blob]") {
+  Rng rng(72);
+  forEachHit(rng, [&](const Case& cs, const Blob&, const Ray& ray, const SurfaceInfo& s) {
+    // A central difference of the long-double field.
+    const double e = 1e-6;
+    LD g[3];
+    for (int k = 0; k < 3; ++k) {
+      Vec3 dp(0.0);
+      dp[k] = e;
+      g[k] = (fieldL(cs.components, s.p + dp) - fieldL(cs.components, s.p - dp)) / (2 * e);
+    }
+    Vec3 expect = -glm::normalize(Vec3(double(g[0]), double(g[1]), double(g[2])));
+    CHECK(angle(s.ng, expect) < 1e-6);
+    CHECK(glm::dot(s.ng, ray.d) <= 0.0);
+  });
+}
+
 TEST_CASE("blob: a secondary ray leaving the surface does not hit it again at once", "[primitives][blob]") {
   Rng rng(73);
-  for (const Case& cs : kCases) {
-    INFO(cs.name);
-    Blob b(cs.threshold, cs.components);
-    for (int i = 0; i < 300; ++i) {
-      Ray ray = randomRayAt(rng, b.bounds());
-      Hit h;
-      if (!b.intersect(ray, h)) continue;
-      SurfaceInfo s = b.surface(ray, h);
-      double off = glm::dot(glm::abs(s.ng), s.pError) * 2.0;
-      CHECK_FALSE(b.inside(s.p + s.ng * off));
-      CHECK(b.inside(s.p - s.ng * off));
-      Ray out(s.p + s.ng * off, s.ng + 0.3 * randomUnit(rng));
-      if (glm::dot(out.d, s.ng) <= 0.1) continue;
-      Hit h2;
-      if (b.intersect(out, h2)) CHECK(h2.t * glm::length(out.d) > 1e-6);
-    }
-  }
+  forEachHit(rng, [&](const Case&, const Blob& b, const Ray&, const SurfaceInfo& s) {
+    double off = glm::dot(glm::abs(s.ng), s.pError) * 2.0;
+    CHECK_FALSE(b.inside(s.p + s.ng * off));
+    CHECK(b.inside(s.p - s.ng * off));
+    Ray out(s.p + s.ng * off, s.ng + 0.3 * randomUnit(rng));
+    if (glm::dot(out.d, s.ng) <= 0.1) return;
+    Hit h2;
+    if (b.intersect(out, h2)) CHECK(h2.t * glm::length(out.d) > 1e-6);
+  });
 }
 
 TEST_CASE("blob: invalid parameters are refused", "[primitives][blob]") {
