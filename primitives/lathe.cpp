@@ -221,9 +221,45 @@ void Lathe::pieceRoots(const Piece& p, uint32_t index, const Vec3& o, const Vec3
       keep(s, t);
       continue;
     }
-    if (r[i].touching) continue;
+    // A double root within rounding of the surface: a pair at the contact, which
+    // decideByInside keeps (a zero-length chord) or drops by the inside test there.
+    if (r[i].touching) {
+      keep(s, t);
+      keep(s, t);
+      continue;
+    }
     if (polish(p, o, d, s, t)) keep(s, t);
   }
+}
+
+bool Lathe::alternates(const std::vector<LineRoot>& roots, double dd) const {
+  // The order alone decides (the line starts outside and each root flips it) unless a root
+  // can have been found twice or not at all: an odd count; two roots within `close` (one
+  // crossing found on both pieces of a joint, or a corner clipped on both, or a tangent
+  // contact's pair); a root within 1e-6 of a piece's end, where a neighbour's root may be
+  // missing; a closing disc's root at its rim, where the curve's end meets it.
+  if (roots.size() % 2 != 0) return false;
+  const double close = 1e-9 * (scale_ / std::sqrt(dd));
+  for (size_t i = 0; i < roots.size(); ++i) {
+    const LineRoot& r = roots[i];
+    if (i > 0 && r.t - roots[i - 1].t <= close) return false;
+    if (r.part < pieces_.size() ? (r.s < 1e-6 || r.s > 1.0 - 1e-6) : r.s > 1.0 - 1e-9) return false;
+  }
+  return true;
+}
+
+void Lathe::decideByInside(const Vec3& o, const Vec3& d, std::vector<LineRoot>& roots) const {
+  // Each root is kept where the inside test differs on its two sides (between it and its
+  // neighbours; outside beyond the first and the last): the kept roots then alternate by
+  // construction, whatever was found twice or missed.
+  bool before = false;
+  size_t w = 0;
+  for (size_t i = 0; i < roots.size(); ++i) {
+    const bool after = i + 1 < roots.size() && inside(o + 0.5 * (roots[i].t + roots[i + 1].t) * d);
+    if (after != before) roots[w++] = roots[i];
+    before = after;
+  }
+  roots.resize(w);
 }
 
 void Lathe::lineRoots(const Ray& ray, std::vector<LineRoot>& out) const {
@@ -267,29 +303,12 @@ void Lathe::lineRoots(const Ray& ray, std::vector<LineRoot>& out) const {
     if (d.y == 0.0) continue;
     const double u = (discs_[i].y - o.y) / d.y;
     const double px = o.x + u * d.x, pz = o.z + u * d.z;
-    if (px * px + pz * pz < discs_[i].radius * discs_[i].radius)
-      out.push_back({u, static_cast<uint32_t>(pieces_.size() + i), 0.0});
+    const double r2 = discs_[i].radius * discs_[i].radius;
+    // s: the squared fraction of the radius, for the rim test of alternates().
+    if (px * px + pz * pz < r2) out.push_back({u, static_cast<uint32_t>(pieces_.size() + i), (px * px + pz * pz) / r2});
   }
   std::sort(out.begin(), out.end(), [](const LineRoot& a, const LineRoot& b) { return a.t < b.t; });
-  // A root at a joint is found on both pieces: keep one.
-  const double close = 1e-9 * (scale_ / std::sqrt(dd));
-  size_t w = 0;
-  for (size_t i = 0; i < out.size(); ++i) {
-    if (w > 0) {
-      const LineRoot& a = out[w - 1];
-      const LineRoot& b = out[i];
-      const bool pieces = a.part < pieces_.size() && b.part < pieces_.size();
-      if (pieces && std::abs(b.t - a.t) <= close) {
-        if (a.part == b.part && onAxis(pieces_[a.part], a.s) && onAxis(pieces_[b.part], b.s)) continue;
-        const auto joined = [&](uint32_t x, double sx, uint32_t y, double sy) {
-          return next_[x] == static_cast<int>(y) && sx > 1.0 - 1e-6 && sy < 1e-6;
-        };
-        if (joined(a.part, a.s, b.part, b.s) || joined(b.part, b.s, a.part, a.s)) continue;
-      }
-    }
-    out[w++] = out[i];
-  }
-  out.resize(w);
+  if (!alternates(out, dd)) decideByInside(o, d, out);
   for (size_t i = 0; i < out.size(); ++i) {
     out[i].t += s0;
     if (i % 2 == 0) out[i].part |= kEnteringBit;

@@ -53,8 +53,9 @@ class Lathe final : public Shape {
     uint32_t part;
     double s;
   };
-  // Every crossing of the whole line, ascending by t (tangent contacts left out); the line
-  // is outside before the first, and they alternate entering and leaving.
+  // Every crossing of the whole line, ascending by t (a tangent contact within rounding is
+  // a pair at one t or nothing, as the inside test there says); the line is outside before
+  // the first, and they alternate entering and leaving.
   void lineRoots(const Ray& ray, std::vector<LineRoot>& out) const;
 
  private:
@@ -73,6 +74,10 @@ class Lathe final : public Shape {
   void pieceRoots(const Piece& p, uint32_t index, const Vec3& o, const Vec3& d,
                   std::vector<LineRoot>& out) const;
   bool polish(const Piece& p, const Vec3& o, const Vec3& d, double& s, double& t) const;
+  // Whether the sorted roots of the line o + t·d can be trusted to alternate by their
+  // order alone; where not, decideByInside keeps those across which inside() changes.
+  bool alternates(const std::vector<LineRoot>& roots, double dd) const;
+  void decideByInside(const Vec3& o, const Vec3& d, std::vector<LineRoot>& roots) const;
 
   std::vector<Piece> pieces_;
   std::vector<int> next_;  // the piece each one's end joins, or -1

@@ -39,6 +39,9 @@ std::vector<CaseResult> blobCases(double effort);
 // Prisms (accuracy_prism_cases.cpp): a star with a hole, rays through its vertices, along
 // its side faces and grazing its caps' edges.
 std::vector<CaseResult> prismCases(double effort);
+// Lathes (accuracy_lathe_cases.cpp): a Bézier vase and a linear goblet, rays tangent to the
+// silhouette, through the axis and at the rims where pieces meet.
+std::vector<CaseResult> latheCases(double effort);
 
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);

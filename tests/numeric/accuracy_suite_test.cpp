@@ -79,6 +79,11 @@ TEST_CASE("accuracy: prisms: a star with a hole, rays through vertices, along si
   requireWithinBounds(prismCases(1.0));
 }
 
+TEST_CASE("accuracy: lathes: a Bezier vase and a linear goblet, tangent to the silhouette, through the axis, at the rims",
+          "[numeric][accuracy][lathe]") {
+  requireWithinBounds(latheCases(1.0));
+}
+
 TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and vertices, slivers",
           "[numeric][accuracy][mesh]") {
   requireWithinBounds(meshCases(1.0));

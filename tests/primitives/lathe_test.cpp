@@ -50,9 +50,49 @@ TEST_CASE("lathe: a linear cylinder is hit where the closed form says", "[primit
 
 TEST_CASE("lathe: a tangent ray touches the silhouette without crossing", "[primitives][lathe]") {
   const Lathe l = cylinder();
+  // Exactly tangent: at most a contact, an entering and a leaving crossing at one t (as a
+  // sphere's tangent ray), never a chord.
+  const Ray tangent(Vec3(1.0, 0.5, -3), Vec3(0, 0.1, 1));
+  CrossingList cl;
+  l.crossings(tangent, cl);
+  REQUIRE(cl.items.size() % 2 == 0);
+  if (!cl.items.empty()) {
+    REQUIRE(cl.items.size() == 2);
+    CHECK(cl.items[0].hit.t == cl.items[1].hit.t);
+    CHECK_THAT(cl.items[0].hit.t, WithinAbs(3.0, 1e-6));
+  }
   Hit h;
-  CHECK_FALSE(l.intersect(Ray(Vec3(1.0, 0.5, -3), Vec3(0, 0.1, 1)), h));
   CHECK(l.intersect(Ray(Vec3(0.999, 0.5, -3), Vec3(0, 0.1, 1)), h));
+  CHECK_FALSE(l.intersect(Ray(Vec3(1.001, 0.5, -3), Vec3(0, 0.1, 1)), h));
+}
+
+TEST_CASE("lathe: rays at a joint's corner and at a closing disc's rim keep their crossings paired",
+          "[primitives][lathe]") {
+  // Found by the accuracy rows (docs/accuracy.md, "Lathes"): a ray clipping the corner of a
+  // goblet's foot 4.5e-12 above the joint of its side and its bottom enters and leaves
+  // 1.9e-12 apart (the two roots were once merged as one found on both pieces), and a ray
+  // leaving a vase through its mouth's disc 4.4e-16 inside the rim must not also re-enter
+  // through the curve's end.
+  const Lathe goblet(LatheSpline::Linear, {{0, 0}, {0.8, 0}, {0.8, 0.1}, {0.15, 0.2}, {0.15, 0.9},
+                                           {0.7, 1.4}, {0.65, 1.45}, {0.1, 1.0}, {0, 1.0}});
+  const Ray corner(Vec3(-1.5837306108095823, 1.3670464104817854, -2.5072915427154534),
+                   Vec3(3.3803544680011766, -2.3485483187950038, 3.1016760177821525));
+  CrossingList cl;
+  goblet.crossings(corner, cl);
+  REQUIRE(cl.items.size() == 2);
+  CHECK(cl.items[0].entering);
+  CHECK_FALSE(cl.items[1].entering);
+  CHECK_THAT(cl.items[1].hit.t - cl.items[0].hit.t, WithinAbs(1.92e-12, 0.05e-12));
+
+  const Lathe vase(LatheSpline::Bezier, {{0, 0}, {0.9, 0}, {0.9, 0.3}, {0.6, 0.6},
+                                         {0.6, 0.6}, {0.3, 0.9}, {0.7, 1.2}, {0.5, 1.5}});
+  const Ray mouth(Vec3(2.3839893870331932, 0.56673086531584094, 0.38972714487587279),
+                  Vec3(-4.5673090762144568, 1.4985306982023796, -0.3129544260990334));
+  vase.crossings(mouth, cl = {});
+  REQUIRE(cl.items.size() == 2);
+  CHECK(cl.items[0].entering);
+  CHECK_FALSE(cl.items[1].entering);
+  CHECK_THAT(cl.items[1].hit.t, WithinAbs(0.6227894669116209, 1e-15));
 }
 
 TEST_CASE("lathe: a cone from an open linear profile closes with its base disc", "[primitives][lathe]") {
