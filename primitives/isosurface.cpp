@@ -65,7 +65,7 @@ bool Isosurface::inContainer(const Vec3& p) const {
   return glm::dot(p - c.center, p - c.center) <= c.radius * c.radius;
 }
 
-bool Isosurface::inside(const Vec3& p) const { return inContainer(p) && value(p) < 0.0; }
+bool Isosurface::inside(const Vec3& p) const { return !p_.open && inContainer(p) && value(p) < 0.0; }
 
 template <class Emit>
 void Isosurface::walk(const Ray& ray, double a, double ga, double b, double gb, Emit&& emit) const {
