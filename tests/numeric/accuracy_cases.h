@@ -40,6 +40,10 @@ std::vector<CaseResult> blobCases(double effort);
 // its side faces and grazing its caps' edges.
 std::vector<CaseResult> prismCases(double effort);
 
+// Isosurfaces (accuracy_isosurface_cases.cpp): a sphere and a torus as functions, random
+// and tangent rays; thin shells; a function steeper than its max-gradient; secondary rays.
+std::vector<CaseResult> isosurfaceCases(double effort);
+
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);
 
