@@ -101,6 +101,11 @@ void Isosurface::walk(const Ray& ray, double a, double ga, double b, double gb, 
     if (!change) continue;  // a pair of crossings closer than the accuracy, or none
     // Illinois false position on [lo, hi], lo on g0's side.
     double lo = s.t0, glo = g0, hi = s.t1, ghi = g1;
+    // g = 0 counts as outside: a zero at an end is the crossing itself.
+    if (glo == 0.0 || ghi == 0.0) {
+      if (!emit(glo == 0.0 ? lo : hi, !(g0 < 0.0), 0.0)) break;
+      continue;
+    }
     double t = lo;
     int side = 0;
     for (int k = 0; k < kMaxRefineSteps && std::isfinite(glo) && std::isfinite(ghi); ++k) {
@@ -123,7 +128,7 @@ void Isosurface::walk(const Ray& ray, double a, double ga, double b, double gb, 
         if (side == 1) glo *= 0.5;
         side = 1;
       }
-      if (hi - lo <= 1e-12 * (std::abs(lo) + std::abs(hi)) + 1e-15 * scale_ / dl) break;
+      if (hi - lo <= 2.0 * kMachineEps * std::max(std::abs(lo), std::abs(hi))) break;
     }
     double root = lo == hi ? lo : (std::isfinite(glo) && std::isfinite(ghi) ? std::clamp(t, lo, hi) : 0.5 * (lo + hi));
     if (!emit(root, !(g0 < 0.0), hi - lo)) break;
