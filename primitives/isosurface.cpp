@@ -15,6 +15,11 @@ constexpr int kMaxDepth = 100;
 // False-position steps at most once a crossing is isolated; each at least halves the
 // bracket's far side (Illinois), so a smooth crossing is exact to rounding long before.
 constexpr int kMaxRefineSteps = 40;
+// Function evaluations per search at most. A function near the threshold along a long
+// stretch (f = 0, or a tiny constant) leaves every piece undecided, so halving would visit
+// 2^(span/accuracy) pieces; past this budget the search keeps the resolution it reached
+// (sign changes between the values it has are still crossings, so they still alternate).
+constexpr long kEvaluationBudget = 8192;
 
 bool finitePositive(double v) { return v > 0.0 && std::isfinite(v); }
 
@@ -73,7 +78,11 @@ void Isosurface::walk(const Ray& ray, double a, double ga, double b, double gb, 
   const double dl = glm::length(ray.d);
   const double bound = p_.maxGradient * dl;  // the Lipschitz bound of g per unit t
   const double tAccuracy = p_.accuracy / dl;
-  auto g = [&](double t) { return value(ray.at(t)); };
+  long evaluations = 0;
+  auto g = [&](double t) {
+    ++evaluations;
+    return value(ray.at(t));
+  };
   struct Segment {
     double t0, g0, t1, g1;
     int depth;
@@ -91,7 +100,7 @@ void Isosurface::walk(const Ray& ray, double a, double ga, double b, double gb, 
     if (std::isfinite(g0) && std::isfinite(g1)) steepest = std::max(steepest, std::abs(g1 - g0) / (w * dl));
     const bool change = (g0 < 0.0) != (g1 < 0.0);
     if (!change && std::abs(g0) + std::abs(g1) > bound * w) continue;  // no crossing fits
-    if (w > tAccuracy && s.depth < kMaxDepth) {
+    if (w > tAccuracy && s.depth < kMaxDepth && evaluations < kEvaluationBudget) {
       const double m = s.t0 + 0.5 * w;
       const double gm = g(m);
       stack[n++] = {m, gm, s.t1, s.g1, s.depth + 1};
@@ -106,9 +115,11 @@ void Isosurface::walk(const Ray& ray, double a, double ga, double b, double gb, 
       if (!emit(glo == 0.0 ? lo : hi, !(g0 < 0.0), 0.0)) break;
       continue;
     }
-    double t = lo;
+    double t = 0.5 * (lo + hi);
     int side = 0;
-    for (int k = 0; k < kMaxRefineSteps && std::isfinite(glo) && std::isfinite(ghi); ++k) {
+    for (int k = 0; k < kMaxRefineSteps && evaluations < kEvaluationBudget && std::isfinite(glo) &&
+                    std::isfinite(ghi);
+         ++k) {
       t = (lo * ghi - hi * glo) / (ghi - glo);
       if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
       if (!(t > lo && t < hi)) break;  // adjacent doubles

@@ -262,6 +262,24 @@ TEST_CASE("isosurface: a gradient beyond max-gradient is recorded, one within it
   }
 }
 
+TEST_CASE("isosurface: a function at the threshold everywhere ends its search within the budget", "[primitives][isosurface]") {
+  // Every piece stays undecided: halving down to the accuracy would take 2^40 pieces.
+  Isosurface::Params p = params([](const Vec3&) { return 0.0; });
+  p.accuracy = 1e-12;
+  Isosurface iso(p);
+  Ray ray(Vec3(0.1, 0.2, 5), Vec3(0, 0, -1));
+  Hit h;
+  CHECK_FALSE(iso.intersect(ray, h));  // 0 counts as outside
+  CrossingList cl;
+  iso.crossings(ray, cl);
+  CHECK(cl.items.empty());
+  // Just below it: inside everywhere, so only the container's faces.
+  Isosurface below(params([](const Vec3&) { return -1e-300; }));
+  REQUIRE(below.intersect(ray, h));
+  CHECK(h.t == 4.0);
+  CHECK(h.part == Isosurface::kContainerSurface);
+}
+
 TEST_CASE("isosurface: invalid parameters are refused", "[primitives][isosurface]") {
   auto make = [](auto change) {
     Isosurface::Params p = params(sphereF);
