@@ -72,6 +72,8 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
         out.line("max_gradient " + out.number(s.maxGradient));
         out.line("accuracy " + out.number(s.accuracy));
         // Every crossing, as Lucent's CSG uses them (POV-Ray's default finds the first only).
+        // Written for lone isosurfaces too: without it POV-Ray's image of the gallery scene
+        // departs more from Lucent's (67 dB against 73), at twice POV-Ray's render time.
         out.line("all_intersections");
         if (s.open) out.line("open");
       });
