@@ -22,6 +22,7 @@
 #include "load_scene.h"
 
 #include "meshes/mesh_file_cache.h"
+#include "scenegraph/gradient_report.h"
 #include "scenegraph/shape_registry.h"
 #include "memory/system_memory.h"
 #include "render/image_io.h"
@@ -35,6 +36,7 @@
 #include <chrono>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <thread>
 
 #include <malloc.h>
@@ -90,6 +92,7 @@ struct RenderRun {
   const RenderOptions& options;
   int threads = 0;  // 0: every core
   ImageMapCache textures;
+  std::set<std::string> printed;  // after-render warnings, each once for all the frames
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 };
 
@@ -114,6 +117,9 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
     result = renderer.render(control);
   }
   if (result.cancelled) return result;
+  // Printed even with -q, like every warning.
+  for (const std::string& w : gradientWarnings(scene))
+    if (run.printed.insert(w).second) fmt::print(stderr, "{}\n", w);
 
   // The world is gone and the scene goes too before the image is written: writing an EXR,
   // TIFF, HDR or JPEG loads OpenImageIO (images/image_plugin.h, 130 MB of libraries), and

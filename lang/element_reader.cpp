@@ -76,6 +76,30 @@ std::optional<std::string> ElementReader::text(const char* attr) {
   return v;
 }
 
+std::optional<FunctionText> ElementReader::function(const char* attr, const std::vector<std::string>& variables) {
+  pugi::xml_attribute a = el_.attribute(attr);
+  if (!a) return std::nullopt;
+  // Written with ${...}: substituted first, and an error then points at the value.
+  const bool substituted = std::strchr(a.value(), '$') != nullptr;
+  std::string value = a.value();
+  if (substituted) {
+    auto t = text(attr);
+    if (!t) return std::nullopt;
+    value = *t;
+  }
+  SubstitutionError error;
+  std::optional<FunctionText> f = ctx_.params.function(value, ctx_.scope.get(), variables, error);
+  if (!f) {
+    if (!error.message.empty()) {
+      SourceLoc where = !substituted && error.offset != std::string::npos ? file_.locInValue(a, el_, error.offset)
+                                                                          : valueLoc(attr);
+      ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + error.message + instanceNote(ctx_.scope.get()));
+    }
+    failed_ = true;
+  }
+  return f;
+}
+
 std::optional<double> ElementReader::optionalNumber(const char* attr, const NumberRule& rule) {
   // Expression-valued numbers skip the text round trip (the value is the same).
   if (pugi::xml_attribute a = el_.attribute(attr); a && std::strchr(a.value(), '$')) {

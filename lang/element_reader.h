@@ -44,6 +44,10 @@ class ElementReader {
   // The value as written (no parameter substitution).
   std::string verbatim(const char* attr) const { return el_.attribute(attr).value(); }
 
+  // A function expression of `variables` (an isosurface's), checked and its other names
+  // resolved; errors point inside the expression when it was written without ${...}.
+  std::optional<FunctionText> function(const char* attr, const std::vector<std::string>& variables);
+
   double number(const char* attr, double def, const NumberRule& rule = NumberRule::any());
   std::optional<double> optionalNumber(const char* attr, const NumberRule& rule = NumberRule::any());
   long long integer(const char* attr, long long def, long long min, long long max = 1LL << 40);

@@ -280,4 +280,67 @@ void ExpressionEvaluator::locateFault(const Compiled& c, ExpressionError& error)
   }
 }
 
+std::optional<FunctionText> compileFunction(std::string_view text, const std::vector<std::string>& variables,
+                                            ExpressionNames& names, ExpressionError& error) {
+  FunctionText out;
+  out.text = std::string(text);
+  out.variables = variables;
+  const std::vector<NameToken> tokens = scanNames(out.text);
+  std::string_view t = out.text;
+  auto fail = [&](std::string message, size_t offset) {
+    error = ExpressionError{std::move(message), offset, false};
+    return std::nullopt;
+  };
+  if (t.find_first_not_of(" \t\n\r") == std::string_view::npos) return fail("an empty expression", 0);
+  if (auto d = t.find('$'); d != std::string_view::npos)
+    return fail("a function's names are written alone ('r', not '$r')", d);
+  for (const NameToken& n : tokens) {
+    if (n.call && !isFunction(n.name))
+      return fail("unknown function '" + std::string(n.name) + "'" + didYouMean(n.name, expressionFunctionNames()),
+                  n.offset);
+    if (!n.call && isFunction(n.name))
+      return fail("'" + std::string(n.name) + "' is a function: write " + std::string(n.name) + "(...)", n.offset);
+  }
+  std::vector<std::string> used;
+  try {
+    mu::Parser parser;
+    defineLanguage(parser, ParserRole::Plain);
+    parser.SetExpr(out.text);
+    for (const auto& entry : parser.GetUsedVar()) used.push_back(entry.first);
+  } catch (const mu::ParserError& e) {
+    error = syntaxError(e, out.text, tokens);
+    return std::nullopt;
+  }
+  for (const std::string& name : used) {
+    if (std::find(variables.begin(), variables.end(), name) != variables.end()) continue;
+    size_t offset = 0;
+    for (const NameToken& n : tokens)
+      if (!n.call && n.name == name) {
+        offset = n.offset;
+        break;
+      }
+    std::string message;
+    bool known = true;
+    std::optional<double> v = names.number(name, message, known);
+    if (v) {
+      out.constants.emplace_back(name, *v);
+      continue;
+    }
+    error.offset = offset;
+    error.reported = known && message.empty();
+    if (known) {
+      error.message = message;
+    } else {
+      std::vector<std::string> visible = names.visibleNames();
+      visible.insert(visible.end(), variables.begin(), variables.end());
+      error.message = "unknown name '" + name + "' in the function (its variables are ";
+      for (size_t i = 0; i < variables.size(); ++i)
+        error.message += (i ? (i + 1 == variables.size() ? " and " : ", ") : "") + variables[i];
+      error.message += "; other names are parameters)" + didYouMean(name, visible);
+    }
+    return std::nullopt;
+  }
+  return out;
+}
+
 }  // namespace lucent

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace lucent {
@@ -53,6 +54,20 @@ class ExpressionEvaluator {
   // Characters the fault locator may still parse (locateFault).
   size_t locateBudget_ = 200'000;
 };
+
+// A function expression (an isosurface's): its text, the names that stay variables (x, y,
+// z) and the values of its other names, resolved once where it stands.
+struct FunctionText {
+  std::string text;
+  std::vector<std::string> variables;
+  std::vector<std::pair<std::string, double>> constants;
+};
+
+// Checks `text` as an expression whose `variables` are left free and whose other names are
+// looked up in `names` now; nullopt with `error` (located within the text) on a syntax
+// error, an unknown function or name, or a name that is not a number.
+std::optional<FunctionText> compileFunction(std::string_view text, const std::vector<std::string>& variables,
+                                            ExpressionNames& names, ExpressionError& error);
 
 // Shortest decimal text that reads back as exactly `v` ("0.1", "3", "1e+21").
 std::string formatNumber(double v);

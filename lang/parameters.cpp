@@ -58,6 +58,19 @@ Parameters::Parameters(const std::map<std::string, std::string>& defines, Diagno
   builtins_ = {{"pi", M_PI}, {"e", M_E}, {"clock", 0.0}, {"frame", 1.0}, {"frames", 1.0}};
 }
 
+std::optional<FunctionText> Parameters::function(std::string_view text, const Scope* scope,
+                                                 const std::vector<std::string>& variables,
+                                                 SubstitutionError& error) {
+  Names names(*this, scope);
+  ExpressionError e;
+  std::optional<FunctionText> f = compileFunction(text, variables, names, e);
+  if (!f) {
+    error.message = e.reported || quiet_ ? "" : e.message;
+    error.offset = e.offset;
+  }
+  return f;
+}
+
 bool Parameters::isValidName(std::string_view name) {
   if (name.empty() || !isNameStart(name[0])) return false;
   for (char c : name)

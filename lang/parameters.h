@@ -55,6 +55,11 @@ class Parameters {
   // the numbers are the same either way, as substitution writes them back exactly.
   bool evaluateNumbers(std::string_view raw, const Scope* scope, double* out, size_t count);
 
+  // A function expression (an isosurface's) with `variables` left free and its other names
+  // resolved from `scope` now (expression.h, compileFunction).
+  std::optional<FunctionText> function(std::string_view text, const Scope* scope,
+                                       const std::vector<std::string>& variables, SubstitutionError& error);
+
   // Is `name` visible from `scope` (a parameter, a repeat variable, -D or a built-in)?
   // Returns a description ("the parameter declared at 3:5") or "" when it is not.
   std::string whatIs(std::string_view name, const Scope* scope);

@@ -2,6 +2,7 @@
 // (scenegraph/shape_registry.h): this file only connects the registry's AttributeInput to
 // one XML element, and knows no shape by name.
 #include "element_parsers.h"
+#include "expression_field.h"
 
 #include "meshes/mesh_file_cache.h"
 #include "scenegraph/shape_registry.h"
@@ -46,6 +47,20 @@ class ElementInput final : public AttributeInput {
     return *list;
   }
   std::shared_ptr<const MeshData> meshFile(const char* attr, bool* firstRead) override;
+  std::optional<FunctionInput> function(const char* attr, const std::vector<std::string>& variables) override {
+    std::optional<FunctionText> f = r_.function(attr, variables);
+    if (!f) return std::nullopt;
+    FunctionInput in;
+    in.text = f->text;
+    in.constants = f->constants;
+    try {
+      in.field = makeExpressionField(std::move(*f));
+    } catch (...) {  // muParser's own errors were reported above; this is a safety net
+      r_.attrError(attr, "cannot compile the function");
+      return std::nullopt;
+    }
+    return in;
+  }
 
   void forEachChild(const char* element, const std::function<void(AttributeInput&)>& read) override {
     const ShapeType* t = findShapeType(r_.element().name());

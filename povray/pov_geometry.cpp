@@ -201,18 +201,21 @@ namespace {
 // The registry's writers write into the exporter's text through this.
 class ShapeOut final : public PovShapeOut {
  public:
-  ShapeOut(PovWriter& out, std::string comment, std::function<std::string(const MeshSpec&)> mesh)
-      : out_(out), comment_(std::move(comment)), mesh_(std::move(mesh)) {}
+  ShapeOut(PovWriter& out, std::string comment, std::function<std::string(const MeshSpec&)> mesh,
+           std::function<void(const std::string&)> error)
+      : out_(out), comment_(std::move(comment)), mesh_(std::move(mesh)), error_(std::move(error)) {}
   void open(std::string_view keyword) override { out_.open(keyword, comment_); }
   void line(std::string_view text) override { out_.line(text); }
   std::string number(double v) const override { return povNumber(v); }
   std::string vector(const Vec3& v) const override { return povVector(v); }
   std::string declaredMesh(const MeshSpec& mesh) override { return mesh_(mesh); }
+  void error(const std::string& message) override { error_(message); }
 
  private:
   PovWriter& out_;
   std::string comment_;
   std::function<std::string(const MeshSpec&)> mesh_;
+  std::function<void(const std::string&)> error_;
 };
 
 }  // namespace
@@ -237,7 +240,8 @@ void PovGeometry::writeShapeHead(const Node& node, const Mat4& m, uint32_t mater
       where += " (turned so the camera is outside)";
     }
   }
-  ShapeOut shapeOut(out, where, [&](const MeshSpec& mesh) { return meshName(mesh, node); });
+  ShapeOut shapeOut(out, where, [&](const MeshSpec& mesh) { return meshName(mesh, node); },
+                    [&](const std::string& message) { issues_.error(node.loc, message); });
   shapeTypeOf(spec).writePov(spec, shapeOut);
 }
 

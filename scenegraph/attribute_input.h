@@ -6,12 +6,14 @@
 
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
+#include "primitives/scalar_field.h"
 
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace lucent {
@@ -38,6 +40,14 @@ struct NumberRule {
   }
 };
 
+// A function attribute (an isosurface's), compiled: the field to evaluate, its text and the
+// values its names other than the variables stood for where it was read.
+struct FunctionInput {
+  std::shared_ptr<const ScalarField> field;
+  std::string text;
+  std::vector<std::pair<std::string, double>> constants;
+};
+
 class AttributeInput {
  public:
   virtual ~AttributeInput() = default;
@@ -55,6 +65,9 @@ class AttributeInput {
   // Lists of numbers and of whole numbers >= 0; nullopt when absent or wrong (reported).
   virtual std::optional<std::vector<double>> numbers(const char* attr) = 0;
   virtual std::optional<std::vector<long long>> integers(const char* attr) = 0;
+  // A function of `variables` (x, y, z); nullopt when absent or wrong (reported, located
+  // inside the expression).
+  virtual std::optional<FunctionInput> function(const char* attr, const std::vector<std::string>& variables) = 0;
   // The mesh file the attribute names, resolved by the scene's file-access rules and read
   // once per process however many elements name it; null when it cannot be read (reported).
   // `firstRead`, if given, tells whether this call read the file.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "primitives/blob_component.h"
+#include "primitives/isosurface.h"
 #include "primitives/lathe_spline.h"
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
@@ -12,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -74,8 +76,21 @@ struct LatheSpec {
   LatheSpline spline = LatheSpline::Linear;
   std::vector<Vec2> points;  // required: x >= 0, y
 };
+// <isosurface function="..."/>: the function's text and the values of its parameters (for
+// the exporter), the compiled field, and the record of the gradients the render saw.
+struct IsosurfaceSpec {
+  std::string function;  // required
+  std::vector<std::pair<std::string, double>> constants;
+  std::shared_ptr<const ScalarField> field;
+  double threshold = 0.0;
+  IsosurfaceContainer container;
+  double maxGradient = 1.1;
+  double accuracy = 0.001;
+  bool open = false;
+  std::shared_ptr<GradientRecord> record = std::make_shared<GradientRecord>();
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
-                               PolySpec, PrismSpec, BlobSpec, LatheSpec>;
+                               PolySpec, PrismSpec, BlobSpec, LatheSpec, IsosurfaceSpec>;
 
 }  // namespace lucent

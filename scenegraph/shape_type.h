@@ -55,6 +55,9 @@ class PovShapeOut {
   virtual std::string vector(const Vec3& v) const = 0;   // <x, y, z>
   // The identifier of a mesh2 declared once for this mesh data (the exporter writes it).
   virtual std::string declaredMesh(const MeshSpec& mesh) = 0;
+  // What the shape's parameters cannot be written as (an isosurface's random()): an
+  // export error at the shape.
+  virtual void error(const std::string& message) = 0;
 };
 
 // How a surface point becomes an image texture's (u, v), as POV-Ray's image_map can

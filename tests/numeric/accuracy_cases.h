@@ -43,6 +43,10 @@ std::vector<CaseResult> prismCases(double effort);
 // silhouette, through the axis and at the rims where pieces meet.
 std::vector<CaseResult> latheCases(double effort);
 
+// Isosurfaces (accuracy_isosurface_cases.cpp): a sphere and a torus as functions, random
+// and tangent rays; thin shells; a function steeper than its max-gradient; secondary rays.
+std::vector<CaseResult> isosurfaceCases(double effort);
+
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);
 

@@ -74,6 +74,11 @@ TEST_CASE("accuracy: blobs: tangent rays, a strength just above the threshold, f
   requireWithinBounds(blobCases(1.0));
 }
 
+TEST_CASE("accuracy: isosurfaces: sphere and torus functions, thin shells, a too low max-gradient, secondary rays",
+          "[numeric][accuracy][isosurface]") {
+  requireWithinBounds(isosurfaceCases(1.0));
+}
+
 TEST_CASE("accuracy: prisms: a star with a hole, rays through vertices, along side faces, grazing the caps",
           "[numeric][accuracy][prism]") {
   requireWithinBounds(prismCases(1.0));

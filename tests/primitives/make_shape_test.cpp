@@ -13,6 +13,14 @@ TEST_CASE("makeShape: every element builds its primitive with the spec's paramet
   auto mesh = std::make_shared<MeshData>(*boxMesh(Vec3(-1.0), Vec3(1.0)));
   MeshSpec meshSpec;
   meshSpec.data = mesh;
+  struct UnitBall final : ScalarField {
+    double value(const Vec3& p) const override { return glm::length(p) - 1.0; }
+  };
+  IsosurfaceSpec iso;
+  iso.function = "sqrt(x*x + y*y + z*z) - 1";
+  iso.field = std::make_shared<UnitBall>();
+  iso.container.min = Vec3(-2.0);
+  iso.container.max = Vec3(2.0);
   TriangleSpec tri;
   tri.a = Vec3(-1, -1, 0);
   tri.b = Vec3(1, -1, 0);
@@ -30,6 +38,7 @@ TEST_CASE("makeShape: every element builds its primitive with the spec's paramet
       meshSpec,
       SuperellipsoidSpec{0.3, 0.7},
       PrismSpec{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}}, -1.0, 1.0},
+      iso,
   };
   // Every one of them is crossed by the z axis from z = 5 first at z = 1 (the torus at its
   // tube: the ray runs at x = 1 for it; the open cylinder from the side) or, for the flat

@@ -26,8 +26,9 @@ class RecordingOut final : public PovShapeOut {
     return "<" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ">";
   }
   std::string declaredMesh(const MeshSpec&) override { return "Mesh0"; }
+  void error(const std::string& message) override { errors.push_back(message); }
 
-  std::vector<std::string> keywords, lines;
+  std::vector<std::string> keywords, lines, errors;
 };
 
 const AttributeInfo* attribute(const ShapeType& t, const std::string& name) {
