@@ -7,6 +7,7 @@
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
 #include "primitives/prism_outline.h"
+#include "primitives/text_outline.h"
 
 #include <array>
 #include <memory>
@@ -74,8 +75,17 @@ struct LatheSpec {
   LatheSpline spline = LatheSpline::Linear;
   std::vector<Vec2> points;  // required: x >= 0, y
 };
+// POV-Ray's text: a string's glyphs in a TrueType or OpenType font (primitives/text_outline.h).
+struct TextSpec {
+  std::string string;
+  std::string font;      // as written ("" for the default font)
+  std::string fontPath;  // resolved by the file-access rules ("" for the default font)
+  double thickness = 1.0;
+  Vec2 offset{0.0};
+  std::shared_ptr<const TextOutline> outline;  // laid out when read; null: lay out when built
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
-                               PolySpec, PrismSpec, BlobSpec, LatheSpec>;
+                               PolySpec, PrismSpec, BlobSpec, LatheSpec, TextSpec>;
 
 }  // namespace lucent
