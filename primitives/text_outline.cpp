@@ -32,7 +32,7 @@ struct FreeTypeFace {
 std::string ftError(FT_Error e) {
   switch (e) {
     case FT_Err_Cannot_Open_Resource: return "the file cannot be opened";
-    case FT_Err_Unknown_File_Format: return "not a font file FreeType knows";
+    case FT_Err_Unknown_File_Format: return "not a font FreeType can read (another format, or damaged or truncated)";
     case FT_Err_Invalid_File_Format: return "the font file is damaged";
     case FT_Err_Out_Of_Memory: return "out of memory";
     default: return "FreeType error " + std::to_string(static_cast<int>(e)) + " (a damaged or unsupported font)";

@@ -266,3 +266,17 @@ TEST_CASE("text: a box minus an inverse text is the box and the text intersected
   CHECK(hits > 100);
   CHECK(differ > 100);  // the inverse changes what is cut
 }
+
+TEST_CASE("text: an empty string or only spaces is an empty shape with a warning", "[primitives][text]") {
+  for (const char* s : {"", "   "}) {
+    ParseResult p = parseSceneString(std::string("<scene version=\"1\"><camera/><text string=\"") + s + "\"/></scene>", "text.xml");
+    REQUIRE(p.scene);
+    CHECK(p.diagnostics.errorCount() == 0);
+    std::string all;
+    for (const Diagnostic& d : p.diagnostics.all()) all += d.str() + "\n";
+    CHECK(all.find("warning: <text>: the string has no visible glyph") != std::string::npos);
+    World w(*p.scene);
+    Hit h;
+    CHECK_FALSE(w.intersect(Ray(Vec3(0.3, 0.3, -1), Vec3(0, 0, 1)), h));
+  }
+}
