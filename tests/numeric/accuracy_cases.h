@@ -39,6 +39,9 @@ std::vector<CaseResult> blobCases(double effort);
 // Prisms (accuracy_prism_cases.cpp): a star with a hole, rays through its vertices, along
 // its side faces and grazing its caps' edges.
 std::vector<CaseResult> prismCases(double effort);
+// Text (accuracy_text_cases.cpp): DejaVu Sans' o, 8 and e (holes), random rays, rays into the
+// holes, along a glyph's edge and through the joins of its segments.
+std::vector<CaseResult> textCases(double effort);
 
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);
