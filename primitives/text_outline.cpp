@@ -39,12 +39,16 @@ std::string ftError(FT_Error e) {
   }
 }
 
-// Opens the face and selects a Unicode character map (the first map if it has none).
-std::string openFace(FreeTypeFace& f, const std::string& file) {
+// Opens the face (from the file, or from `bytes` when given) and selects a Unicode
+// character map (the first map if it has none).
+std::string openFace(FreeTypeFace& f, const std::string& file, const std::string* bytes = nullptr) {
   if (FT_Error e = FT_Init_FreeType(&f.lib)) return ftError(e);
-  if (FT_Error e = FT_New_Face(f.lib, file.c_str(), 0, &f.face)) {
+  const FT_Error opened =
+      bytes ? FT_New_Memory_Face(f.lib, reinterpret_cast<const FT_Byte*>(bytes->data()), static_cast<FT_Long>(bytes->size()), 0, &f.face)
+            : FT_New_Face(f.lib, file.c_str(), 0, &f.face);
+  if (opened) {
     f.face = nullptr;
-    return ftError(e);
+    return ftError(opened);
   }
   if (!FT_IS_SCALABLE(f.face)) return "the font has no outlines (a bitmap font)";
   // POV-Ray refuses the same range of units per em.
@@ -163,7 +167,9 @@ std::string describe(char32_t cp) {
 
 const char* defaultFontFile() { return LUCENT_DEFAULT_FONT; }
 
-TextOutline textOutline(const std::string& fontFile, const std::string& utf8, Vec2 offset) {
+namespace {
+
+TextOutline layout(const std::string& fontFile, const std::string* bytes, const std::string& utf8, Vec2 offset) {
   TextOutline out;
   std::vector<char32_t> cps;
   if (!decodeUtf8(utf8, cps)) {
@@ -171,7 +177,7 @@ TextOutline textOutline(const std::string& fontFile, const std::string& utf8, Ve
     return out;
   }
   FreeTypeFace f;
-  out.error = openFace(f, fontFile);
+  out.error = openFace(f, fontFile, bytes);
   if (!out.error.empty()) return out;
   Hmtx hmtx;
   const bool haveHmtx = hmtx.load(f.face);
@@ -226,6 +232,16 @@ TextOutline textOutline(const std::string& fontFile, const std::string& utf8, Ve
     out.glyphs.push_back(std::move(g));
   }
   return out;
+}
+
+}  // namespace
+
+TextOutline textOutline(const std::string& fontFile, const std::string& utf8, Vec2 offset) {
+  return layout(fontFile, nullptr, utf8, offset);
+}
+
+TextOutline textOutlineFromBytes(const std::string& fontBytes, const std::string& utf8, Vec2 offset) {
+  return layout({}, &fontBytes, utf8, offset);
 }
 
 long fillRuleDifference(const std::string& fontFile, char32_t codepoint, int pixelsPerEm) {

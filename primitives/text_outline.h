@@ -32,6 +32,8 @@ struct TextOutline {
 
 // Decodes `utf8` (an invalid sequence is an error) and lays out its glyphs in `fontFile`.
 TextOutline textOutline(const std::string& fontFile, const std::string& utf8, Vec2 offset);
+// The same from the font file's bytes (the fuzz target).
+TextOutline textOutlineFromBytes(const std::string& fontBytes, const std::string& utf8, Vec2 offset);
 
 // For the tests: the number of pixels where FreeType's rasteriser, at `pixelsPerEm`, fills
 // the glyph of `codepoint` differently by the even-odd and the nonzero rule (-1 on error).
