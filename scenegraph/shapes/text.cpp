@@ -65,7 +65,9 @@ std::shared_ptr<const Shape> buildText(const TextSpec& s) {
 }
 
 // A POV-Ray string: quotes and backslashes escaped, other characters than printable ASCII
-// as \uXXXX (POV-Ray's strings hold 16-bit characters; others become U+FFFD).
+// as \uXXXX (POV-Ray's strings hold 16-bit characters; others become U+FFFD). POV-Ray 3.7's
+// default `charset ascii` looks such codes up in the font's Macintosh Roman map first, so
+// they match only with `charset utf8` (docs/scene-language.md says so).
 std::string povText(const std::string& utf8) {
   std::string out = "\"";
   for (size_t i = 0; i < utf8.size();) {
