@@ -14,6 +14,8 @@
 #include "lang/expression.h"
 #include "lang/parser.h"
 #include "meshes/mesh_files.h"
+#include "primitives/text.h"
+#include "primitives/text_outline.h"
 #include "primitives/transform.h"
 #include "render/camera_frame.h"
 #include "render/image_io.h"
@@ -132,6 +134,38 @@ inline Outcome meshReader(const uint8_t* data, size_t size, MeshFormat format) {
     loadMeshBytes(std::string(reinterpret_cast<const char*>(data), size), format);
   } catch (const MeshError&) {
     return refused();
+  }
+  return accepted();
+}
+
+// A font file's bytes: laid out by FreeType as <text> lays out a string with holes, kerning
+// pairs and a space, built into the Text shape and crossed by a fan of rays. A message from
+// the layout or a Text that refuses the outlines is a refusal; the crossings must keep the
+// contract (sorted, alternating from outside: the rays start far outside the text).
+inline Outcome fontReader(const uint8_t* data, size_t size) {
+  const TextOutline o = textOutlineFromBytes(std::string(reinterpret_cast<const char*>(data), size), "Lo8e AV", Vec2(0.0));
+  if (!o.error.empty()) return refused();
+  std::vector<std::vector<PrismContour>> glyphs;
+  for (const PlacedGlyph& g : o.glyphs) glyphs.push_back(g.contours);
+  std::optional<Text> text;
+  try {
+    text.emplace(glyphs, 0.5);
+  } catch (const std::invalid_argument&) {
+    return refused();
+  }
+  for (int i = 0; i < 16; ++i) {
+    const Ray ray(Vec3(-10, 0.05 * i, 0.25), Vec3(1, 0.001 * i, 0.0));
+    CrossingList cl;
+    text->crossings(ray, cl);
+    bool in = cl.startsInside;
+    if (in) return finding("a ray from far outside starts inside the text");
+    double last = -kInf;
+    for (const Crossing& c : cl.items) {
+      if (!(c.hit.t >= last)) return finding("text crossings not sorted");
+      if (c.entering == in) return finding("text crossings do not alternate");
+      in = c.entering;
+      last = c.hit.t;
+    }
   }
   return accepted();
 }

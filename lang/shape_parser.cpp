@@ -62,6 +62,17 @@ class ElementInput final : public AttributeInput {
     return in;
   }
 
+  std::optional<std::string> filePath(const char* attr) override {
+    auto src = r_.text(attr);
+    if (!src) return std::nullopt;
+    FileAccess::Resolved f = r_.ctx().files.resolve(*src, r_.file().folder());
+    if (f.path.empty()) {
+      r_.attrError(attr, f.error);
+      return std::nullopt;
+    }
+    return f.path.string();
+  }
+
   void forEachChild(const char* element, const std::function<void(AttributeInput&)>& read) override {
     const ShapeType* t = findShapeType(r_.element().name());
     const ChildElementInfo* info = t ? t->child(element) : nullptr;

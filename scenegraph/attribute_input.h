@@ -73,6 +73,10 @@ class AttributeInput {
   // `firstRead`, if given, tells whether this call read the file.
   virtual std::shared_ptr<const MeshData> meshFile(const char* attr, bool* firstRead = nullptr) = 0;
 
+  // The file the attribute names, resolved by the scene's file-access rules (absolute);
+  // nullopt when absent or not allowed (reported).
+  virtual std::optional<std::string> filePath(const char* attr) = 0;
+
   // Each child element named `element` (a shape's own children, which its entry declares,
   // e.g. a blob's <component>), in order, read through an input of its own whose errors
   // are located at the child; the parser reports any other child element itself.

@@ -8,6 +8,7 @@
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
 #include "primitives/prism_outline.h"
+#include "primitives/text_outline.h"
 
 #include <array>
 #include <memory>
@@ -89,8 +90,17 @@ struct IsosurfaceSpec {
   bool open = false;
   std::shared_ptr<GradientRecord> record = std::make_shared<GradientRecord>();
 };
+// POV-Ray's text: a string's glyphs in a TrueType or OpenType font (primitives/text_outline.h).
+struct TextSpec {
+  std::string string;
+  std::string font;      // as written ("" for the default font)
+  std::string fontPath;  // resolved by the file-access rules ("" for the default font)
+  double thickness = 1.0;
+  Vec2 offset{0.0};
+  std::shared_ptr<const TextOutline> outline;  // laid out when read; null: lay out when built
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
-                               PolySpec, PrismSpec, BlobSpec, LatheSpec, IsosurfaceSpec>;
+                               PolySpec, PrismSpec, BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec>;
 
 }  // namespace lucent

@@ -97,6 +97,11 @@ TEST_CASE("fuzz regressions: mesh reader inputs", "[fuzz]") {
   }
 }
 
+TEST_CASE("fuzz regressions: font files for text are refused or laid out cleanly", "[fuzz]") {
+  const size_t n = replayAll("text_font", [](const uint8_t* d, size_t n) { return lucent::fuzz::fontReader(d, n); });
+  CHECK(n > 0);
+}
+
 TEST_CASE("fuzz harness: a located exception from building the world is a refusal, others are findings",
           "[fuzz]") {
   using lucent::fuzz::refusedInOrder;

@@ -46,6 +46,9 @@ std::vector<CaseResult> latheCases(double effort);
 // Isosurfaces (accuracy_isosurface_cases.cpp): a sphere and a torus as functions, random
 // and tangent rays; thin shells; a function steeper than its max-gradient; secondary rays.
 std::vector<CaseResult> isosurfaceCases(double effort);
+// Text (accuracy_text_cases.cpp): DejaVu Sans' o, 8 and e (holes), random rays, rays into the
+// holes, along a glyph's edge and through the joins of its segments.
+std::vector<CaseResult> textCases(double effort);
 
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);

@@ -89,6 +89,11 @@ TEST_CASE("accuracy: lathes: a Bezier vase and a linear goblet, tangent to the s
   requireWithinBounds(latheCases(1.0));
 }
 
+TEST_CASE("accuracy: text: o, 8 and e with holes, rays into the holes, along a glyph's edge, through segment joins",
+          "[numeric][accuracy][text]") {
+  requireWithinBounds(textCases(1.0));
+}
+
 TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and vertices, slivers",
           "[numeric][accuracy][mesh]") {
   requireWithinBounds(meshCases(1.0));
