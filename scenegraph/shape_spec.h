@@ -74,8 +74,13 @@ struct LatheSpec {
   LatheSpline spline = LatheSpline::Linear;
   std::vector<Vec2> points;  // required: x >= 0, y
 };
+// POV-Ray's surface of revolution: r² a cubic in y per segment (primitives/sor.h).
+struct SorSpec {
+  std::vector<Vec2> points;  // required: x >= 0, y increasing (the first and last steer)
+  bool open = false;
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
-                               PolySpec, PrismSpec, BlobSpec, LatheSpec>;
+                               PolySpec, PrismSpec, BlobSpec, LatheSpec, SorSpec>;
 
 }  // namespace lucent
