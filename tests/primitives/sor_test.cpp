@@ -123,7 +123,7 @@ TEST_CASE("sor: a cylinder of four points is hit where the closed form says", "[
   REQUIRE(cl.items.size() == 2);
   CHECK_THAT(cl.items[0].hit.t, WithinAbs(1.0, 1e-15));
   CHECK_THAT(cl.items[1].hit.t, WithinAbs(2.0, 1e-15));
-  CHECK(cl.items[1].hit.part == 2);  // the bottom cap
+  CHECK(cl.items[1].hit.part == s.segments());  // the bottom cap
   // Tangent to the side: no crossing; just inside: two.
   CHECK_FALSE(s.intersect(Ray(Vec3(1.0, 0.5, -3), Vec3(0, 0.1, 1)), h));
   CHECK(s.intersect(Ray(Vec3(0.999, 0.5, -3), Vec3(0, 0.1, 1)), h));
