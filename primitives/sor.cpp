@@ -52,8 +52,10 @@ Sor::Sor(const std::vector<Vec2>& P, bool open) : open_(open) {
     R = std::max(R, s.r);
     segs_.push_back(s);
     joints_.push_back(p1.y);
+    jointR2_.push_back(p1.x * p1.x);
   }
   joints_.push_back(P[n - 2].y);
+  jointR2_.push_back(P[n - 2].x * P[n - 2].x);
   bottomR2_ = P[1].x * P[1].x;
   topR2_ = P[n - 2].x * P[n - 2].x;
   bounds_ = AABB(Vec3(-R, joints_.front(), -R), Vec3(R, joints_.back(), R));
@@ -106,11 +108,13 @@ void Sor::segmentSpans(size_t i, const Vec3& o, const Vec3& d, double ta, double
       if (d.y < 0.0) std::reverse(roots, roots + nr);
     }
   } else {
-    const double W = o.y - s.y0, aw = std::abs(o.y) + std::abs(s.y0);
+    // The magnitudes behind each coefficient (for the tangent test), W's own rounding
+    // (an ulp of o.y and y0, moving f by f'·δW) included in the constant term.
+    const double W = o.y - s.y0, aw = std::abs(W), wErr = (std::abs(o.y) + std::abs(s.y0)) / 12.0;
     const double A = std::abs(s.a), B = std::abs(s.b), C = std::abs(s.c), ady = std::abs(d.y);
     const double c[4] = {oo - f(s, W), 2.0 * m - d.y * df(s, W), rr - d.y * d.y * (3.0 * s.a * W + s.b),
                          -s.a * d.y * d.y * d.y};
-    const double ca[4] = {oo + ((A * aw + B) * aw + C) * aw + std::abs(s.e),
+    const double ca[4] = {oo + ((A * aw + B) * aw + C) * aw + std::abs(s.e) + std::abs(df(s, W)) * wErr,
                           2.0 * std::abs(m) + ady * ((3.0 * A * aw + 2.0 * B) * aw + C),
                           rr + d.y * d.y * (3.0 * A * aw + B), A * ady * ady * ady};
     int k = 3;
@@ -137,16 +141,58 @@ void Sor::segmentSpans(size_t i, const Vec3& o, const Vec3& d, double ta, double
         for (int q = j; q > 0 && roots[q] < roots[q - 1]; --q) std::swap(roots[q], roots[q - 1]);
     }
   }
-  // The pieces between the roots; g's sign where it is surest (the longest piece's middle),
-  // alternating across the roots.
+  // The sign of g at each end: at a joint from the point's own x² (so both segments and
+  // the cap agree on it, whatever their cubics round to there); past the bounding
+  // cylinder positive; 0 where it is exactly 0 (unknown).
+  auto endSign = [&](double t, int joint, double& mag) {
+    if (joint < 0) {
+      mag = kInf;
+      return 1;
+    }
+    const double px = o.x + t * d.x, pz = o.z + t * d.z;
+    const double v = px * px + pz * pz - jointR2_[static_cast<size_t>(joint)];
+    mag = std::abs(v);
+    return v > 0.0 ? 1 : v < 0.0 ? -1 : 0;
+  };
+  double magA, magB;
+  const int sa = endSign(ta, ja, magA), sb = endSign(tb, jb, magB);
+  // An odd count of roots must change the sign between known ends. Where it does not, the
+  // cubic rounded the other way at the less certain end: a root found within rounding of
+  // that end goes, else the sign changes at the end itself (a root there).
+  if (sa != 0 && sb != 0 && ((nr & 1) == 0) != (sa == sb)) {
+    const bool atA = magA < magB;
+    const double near = 1e-6 * scale_;
+    if (nr > 0 && (atA ? roots[0] - ta : tb - roots[nr - 1]) <= near) {
+      if (atA) std::copy(roots + 1, roots + nr, roots);
+      --nr;
+    } else if (nr < 3) {
+      if (atA) {
+        std::copy_backward(roots, roots + nr, roots + nr + 1);
+        roots[0] = ta;
+      } else {
+        roots[nr] = tb;
+      }
+      ++nr;
+    }
+  }
   double pts[5];
   pts[0] = ta;
   for (int j = 0; j < nr; ++j) pts[j + 1] = roots[j];
   pts[nr + 1] = tb;
+  // The pieces' signs alternate across the roots, from a known end, else from g at the
+  // middle of the longest piece.
   int longest = 0;
-  for (int j = 1; j <= nr; ++j)
-    if (pts[j + 1] - pts[j] > pts[longest + 1] - pts[longest]) longest = j;
-  const bool negLongest = g(0.5 * (pts[longest] + pts[longest + 1])) < 0.0;
+  bool negLongest;
+  if (sa != 0 && (sb == 0 || nr > 0 || magA >= magB)) {
+    negLongest = sa < 0;
+  } else if (sb != 0) {
+    longest = nr;
+    negLongest = sb < 0;
+  } else {
+    for (int j = 1; j <= nr; ++j)
+      if (pts[j + 1] - pts[j] > pts[longest + 1] - pts[longest]) longest = j;
+    negLongest = g(0.5 * (pts[longest] + pts[longest + 1])) < 0.0;
+  }
   for (int j = 0; j <= nr; ++j) {
     if (negLongest != (((j - longest) & 1) == 0)) continue;
     if (!(pts[j] < pts[j + 1])) continue;

@@ -77,6 +77,7 @@ class Sor final : public Shape {
 
   std::vector<Segment> segs_;
   std::vector<double> joints_;  // the heights P1.y … P(n−2).y
+  std::vector<double> jointR2_;  // r² there: the points' x², exactly (not the cubics' values)
   double bottomR2_, topR2_;
   bool open_;
   AABB bounds_;

@@ -39,6 +39,9 @@ std::vector<CaseResult> blobCases(double effort);
 // Prisms (accuracy_prism_cases.cpp): a star with a hole, rays through its vertices, along
 // its side faces and grazing its caps' edges.
 std::vector<CaseResult> prismCases(double effort);
+// Surfaces of revolution (accuracy_sor_cases.cpp): a vase, random rays, rays tangent to its
+// silhouette, along and parallel to its axis, through its caps' rims; a bulb's poles.
+std::vector<CaseResult> sorCases(double effort);
 
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);

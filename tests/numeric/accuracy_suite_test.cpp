@@ -79,6 +79,11 @@ TEST_CASE("accuracy: prisms: a star with a hole, rays through vertices, along si
   requireWithinBounds(prismCases(1.0));
 }
 
+TEST_CASE("accuracy: sors: tangent to the silhouette, along the axis, through the caps' rims, through the poles",
+          "[numeric][accuracy][sor]") {
+  requireWithinBounds(sorCases(1.0));
+}
+
 TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and vertices, slivers",
           "[numeric][accuracy][mesh]") {
   requireWithinBounds(meshCases(1.0));
