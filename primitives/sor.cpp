@@ -254,16 +254,21 @@ void Sor::lineEvents(const Ray& ray, std::vector<Event>& out) const {
     }
   }
   std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.in.t < b.in.t; });
-  // Join spans that meet (at a shared joint the two segments use the same t).
+  // Join spans that meet (at a shared joint the two segments use the same t) or leave a
+  // gap within rounding (a ray through a joint's circle, seen by both segments), then drop
+  // what is left of rounding-sized spans.
+  const double close = 16.0 * kMachineEps * (scale_ + std::abs(s0));
   size_t w = 0;
   for (size_t k = 0; k < spans.size(); ++k) {
-    if (w > 0 && spans[k].in.t <= spans[w - 1].out.t) {
+    if (w > 0 && spans[k].in.t <= spans[w - 1].out.t + close) {
       if (spans[k].out.t > spans[w - 1].out.t) spans[w - 1].out = spans[k].out;
       continue;
     }
     spans[w++] = spans[k];
   }
   spans.resize(w);
+  spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const Span& sp) { return sp.out.t - sp.in.t <= close; }),
+              spans.end());
   const int top = static_cast<int>(ns);
   auto part = [&](const End& e, bool& cap) -> uint32_t {
     cap = false;

@@ -1,6 +1,6 @@
 // The sor's hard cases (docs/accuracy.md): a vase of four segments, random rays, rays
 // tangent to its silhouette (moved off by 1e-16 to 1e-1), rays along and parallel to the
-// axis, rays through the rims of its caps; a bulb closing at the axis, rays through its
+// axis, rays through the rims of its caps and a joint's circle; a bulb closing at the axis, rays through its
 // poles. Each against RefSor (long double: POV-Ray's Hermite cubic per segment; along the
 // line g = x² + z² − r²(y) on each segment's heights, split at g's critical points, every
 // sign change bisected to the last bit; the caps where the line meets them inside their
@@ -191,10 +191,12 @@ std::vector<CaseResult> sorCases(double effort) {
   }
   {
     Rng rng(2104);
-    CaseResult r = newCase("vase: through the caps' rims, 1e-16 to 1e-1 off in radius and height", kT, kN);
+    CaseResult r = newCase("vase: through the caps' rims and a joint's circle, 1e-16 to 1e-1 off in radius and height", kT, kN);
     for (int i = 0; i < n; ++i) {
-      const bool top = i % 2;
-      const double rim = top ? 0.5 : 0.6, h = top ? 1.4 : 0.0, phi = uniform(rng, 0, 2 * kPi);
+      // The bottom rim (0.6 at y = 0), the top rim (0.7 at 1.6), the joint at (0.5, 1.4).
+      const int which = i % 3;
+      const double rim = which == 0 ? 0.6 : which == 1 ? 0.7 : 0.5, h = which == 0 ? 0.0 : which == 1 ? 1.6 : 1.4;
+      const double phi = uniform(rng, 0, 2 * kPi);
       const double dr = (rng() % 3 == 0 ? 0.0 : (rng() % 2 ? 1 : -1) * logUniform(rng, -16, -1));
       const double dh = (rng() % 3 == 0 ? 0.0 : (rng() % 2 ? 1 : -1) * logUniform(rng, -16, -1));
       const Vec3 q((rim + dr) * std::cos(phi), h + dh, (rim + dr) * std::sin(phi));
