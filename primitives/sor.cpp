@@ -38,7 +38,8 @@ Sor::Sor(const std::vector<Vec2>& P, bool open) : open_(open) {
     const double D0 = 2.0 * p1.x * (p2.x - p0.x) / (p2.y - p0.y);
     const double D1 = 2.0 * p2.x * (p3.x - p1.x) / (p3.y - p1.y);
     const double q = (F1 - F0) / h;  // Hermite cubic on [0, h]
-    Segment s{(D0 + D1 - 2.0 * q) / (h * h), (3.0 * q - 2.0 * D0 - D1) / h, D0, F0, p1.y, h, 0.0};
+    Segment s{(D0 + D1 - 2.0 * q) / (h * h), (3.0 * q - 2.0 * D0 - D1) / h, D0, F0, p1.y, h, 0.0, 0.0, D1, F1};
+    s.bt = s.b + 3.0 * s.a * h;
     double top = std::max(F0, F1);
     const double dc[3] = {s.c, 2.0 * s.b, 3.0 * s.a};
     const double da[3] = {std::abs(s.c), std::abs(2.0 * s.b), std::abs(3.0 * s.a)};
@@ -86,11 +87,11 @@ void Sor::segmentSpans(size_t i, const Vec3& o, const Vec3& d, double ta, double
   // g along the line, from the point itself (not the expanded cubic).
   auto g = [&](double t) {
     const double px = o.x + t * d.x, pz = o.z + t * d.z;
-    return px * px + pz * pz - f(s, (o.y + t * d.y) - s.y0);
+    return px * px + pz * pz - fNear(s, (o.y + t * d.y) - s.y0);
   };
   auto dg = [&](double t) {
     const double px = o.x + t * d.x, pz = o.z + t * d.z;
-    return 2.0 * (px * d.x + pz * d.z) - d.y * df(s, (o.y + t * d.y) - s.y0);
+    return 2.0 * (px * d.x + pz * d.z) - d.y * dfNear(s, (o.y + t * d.y) - s.y0);
   };
   double roots[3];
   int nr = 0;
@@ -124,9 +125,12 @@ void Sor::segmentSpans(size_t i, const Vec3& o, const Vec3& d, double ta, double
       const int found = polynomialRoots(c, ca, k, ta, tb, r);
       for (int j = 0; j < found; ++j) {
         if (r[j].touching) continue;  // a tangent ray: g keeps its sign
-        // Newton on g itself, kept where it improves and stays in the interval.
+        // Newton on g itself, kept while it improves and stays in the interval: a step or
+        // two for a simple root; near a pole, where g has a double root, it halves the
+        // error each step (the cubic's own root is only good to the square root of its
+        // rounding there).
         double t = r[j].x, gt = g(t);
-        for (int it = 0; it < 2 && gt != 0.0; ++it) {
+        for (int it = 0; it < 60 && gt != 0.0; ++it) {
           const double dgt = dg(t);
           if (dgt == 0.0) break;
           const double next = t - gt / dgt;
@@ -341,7 +345,7 @@ SurfaceInfo Sor::surface(const Ray& ray, const Hit& hit) const {
     // The gradient of x² + z² − f(y), halved: outward, as POV-Ray's normal.
     const Segment& s = segs_[hit.part];
     const double w = std::clamp(p.y - s.y0, 0.0, s.h);
-    n = Vec3(p.x, -0.5 * df(s, w), p.z);
+    n = Vec3(p.x, -0.5 * dfNear(s, w), p.z);
     const double l = glm::length(n);
     n = l > 0.0 ? n / l : Vec3(0.0, 1.0, 0.0);
     v = (w / s.h + static_cast<double>(hit.part)) / static_cast<double>(ns);

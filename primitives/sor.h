@@ -60,9 +60,21 @@ class Sor final : public Shape {
     double a, b, c, e;  // f(w) = ((a·w + b)·w + c)·w + e, w = y − y0 in [0, h]
     double y0, h;
     double r;  // bounding cylinder radius: sqrt of f's largest value on [0, h]
+    double bt, ct, et;  // the same cubic about the top: ((a·v + bt)·v + ct)·v + et, v = w − h
   };
   static double f(const Segment& s, double w) { return ((s.a * w + s.b) * w + s.c) * w + s.e; }
   static double df(const Segment& s, double w) { return (3.0 * s.a * w + 2.0 * s.b) * w + s.c; }
+  // f from the nearer end: near a joint where r² is 0 (a pole) the value keeps its digits.
+  static double fNear(const Segment& s, double w) {
+    if (w <= 0.5 * s.h) return f(s, w);
+    const double v = w - s.h;
+    return ((s.a * v + s.bt) * v + s.ct) * v + s.et;
+  }
+  static double dfNear(const Segment& s, double w) {
+    if (w <= 0.5 * s.h) return df(s, w);
+    const double v = w - s.h;
+    return (3.0 * s.a * v + 2.0 * s.bt) * v + s.ct;
+  }
   size_t segmentAt(double y) const;
   struct End {
     double t;
