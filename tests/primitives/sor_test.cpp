@@ -124,6 +124,18 @@ TEST_CASE("sor: a cylinder of four points is hit where the closed form says", "[
   CHECK_THAT(cl.items[0].hit.t, WithinAbs(1.0, 1e-15));
   CHECK_THAT(cl.items[1].hit.t, WithinAbs(2.0, 1e-15));
   CHECK(cl.items[1].hit.part == s.segments());  // the bottom cap
+  // (u, v) as POV-Ray's: u the turn from +x towards +z, v the height through the segment;
+  // on the caps from the centre (-1 at the bottom's, 2 at the top's) to the rim (0 and 1).
+  const Ray fromZ(Vec3(0, 0.25, 3), Vec3(0, 0, -1));
+  REQUIRE(s.intersect(fromZ, h));
+  SurfaceInfo si = s.surface(fromZ, h);
+  CHECK_THAT(si.uv.x, WithinAbs(0.25, 1e-15));
+  CHECK_THAT(si.uv.y, WithinAbs(0.25, 1e-15));
+  si = s.surface(across, [&] { Hit a; s.intersect(across, a); return a; }());
+  CHECK_THAT(si.uv.x, WithinAbs(0.0, 1e-15));
+  CHECK_THAT(si.uv.y, WithinAbs(0.5, 1e-15));
+  si = s.surface(slant, cl.items[1].hit);
+  CHECK_THAT(si.uv.y, WithinAbs(-0.5, 1e-15));  // the slanted ray's exit through the bottom at radius 0.5
   // Tangent to the side: no crossing; just inside: two.
   CHECK_FALSE(s.intersect(Ray(Vec3(1.0, 0.5, -3), Vec3(0, 0.1, 1)), h));
   CHECK(s.intersect(Ray(Vec3(0.999, 0.5, -3), Vec3(0, 0.1, 1)), h));
