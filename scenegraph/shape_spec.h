@@ -99,8 +99,14 @@ struct TextSpec {
   Vec2 offset{0.0};
   std::shared_ptr<const TextOutline> outline;  // laid out when read; null: lay out when built
 };
+// POV-Ray's surface of revolution: r² a cubic in y per segment (primitives/sor.h).
+struct SorSpec {
+  std::vector<Vec2> points;  // required: x >= 0, y increasing (the first and last steer)
+  bool open = false;
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
-                               PolySpec, PrismSpec, BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec>;
+                               PolySpec, PrismSpec, BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec,
+                               SorSpec>;
 
 }  // namespace lucent

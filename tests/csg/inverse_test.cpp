@@ -159,3 +159,12 @@ TEST_CASE("inverse: a transparent inverse solid filters shadows as the solid doe
   CHECK(lit > 0.05f);
   CHECK(traceOne(wi, down).r == Approx(lit).epsilon(1e-6));
 }
+
+TEST_CASE("inverse: a sor in a CSG difference and intersection keeps the identities", "[csg][inverse][sor]") {
+  const std::string vase = R"X(<sor points="0 -1.5  0.6 -1  0.9 -0.4  0.4 0.4  0.7 1  0.8 1.2" transform="translate(0.3 0 0)")X";
+  const std::string plain = vase + "/>", inverted = vase + R"( inverse="true"/>)";
+  requireSame("<difference>" + std::string(kBox) + inverted + "</difference>",
+              "<intersection>" + std::string(kBox) + plain + "</intersection>");
+  requireSame("<intersection>" + std::string(kBox) + inverted + "</intersection>",
+              "<difference>" + std::string(kBox) + plain + "</difference>");
+}

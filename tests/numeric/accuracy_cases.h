@@ -49,6 +49,9 @@ std::vector<CaseResult> isosurfaceCases(double effort);
 // Text (accuracy_text_cases.cpp): DejaVu Sans' o, 8 and e (holes), random rays, rays into the
 // holes, along a glyph's edge and through the joins of its segments.
 std::vector<CaseResult> textCases(double effort);
+// Surfaces of revolution (accuracy_sor_cases.cpp): a vase, random rays, rays tangent to its
+// silhouette, along and parallel to its axis, through its caps' rims; a bulb's poles.
+std::vector<CaseResult> sorCases(double effort);
 
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);

@@ -94,6 +94,11 @@ TEST_CASE("accuracy: text: o, 8 and e with holes, rays into the holes, along a g
   requireWithinBounds(textCases(1.0));
 }
 
+TEST_CASE("accuracy: sors: tangent to the silhouette, along the axis, through the caps' rims, through the poles",
+          "[numeric][accuracy][sor]") {
+  requireWithinBounds(sorCases(1.0));
+}
+
 TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and vertices, slivers",
           "[numeric][accuracy][mesh]") {
   requireWithinBounds(meshCases(1.0));
