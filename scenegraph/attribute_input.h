@@ -5,6 +5,7 @@
 #pragma once
 
 #include "primitives/math.h"
+#include "primitives/height_map.h"
 #include "primitives/mesh_data.h"
 
 #include <functional>
@@ -59,6 +60,9 @@ class AttributeInput {
   // once per process however many elements name it; null when it cannot be read (reported).
   // `firstRead`, if given, tells whether this call read the file.
   virtual std::shared_ptr<const MeshData> meshFile(const char* attr, bool* firstRead = nullptr) = 0;
+  // The image the attribute names read as a height field's grid (images/height_map_file.h),
+  // resolved by the same rules (its path in `resolved`); null when it cannot be read (reported).
+  virtual std::shared_ptr<const HeightMap> heightMapFile(const char* attr, std::string& resolved) = 0;
 
   // Each child element named `element` (a shape's own children, which its entry declares,
   // e.g. a blob's <component>), in order, read through an input of its own whose errors
