@@ -16,7 +16,13 @@ namespace {
 
 // What OpenImageIO hides: a PNG's colour type and bit depth (its IHDR chunk) and GIF's
 // palette, which POV-Ray reads as indices.
-void refusePaletteFiles(const std::string& path) {
+// A PNG's IHDR facts, when the file is a PNG.
+struct PngFacts {
+  bool png = false;
+  int depth = 0, type = 0;
+};
+
+PngFacts refusePaletteFiles(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   unsigned char b[26] = {};
   f.read(reinterpret_cast<char*>(b), sizeof b);
@@ -25,19 +31,27 @@ void refusePaletteFiles(const std::string& path) {
     throw HeightMapError("a GIF holds palette indices, which POV-Ray takes as heights (index x 256); "
                          "save the image as a grey PNG");
   static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  if (n < 26 || !std::equal(png, png + 8, b)) return;
+  if (n < 26 || !std::equal(png, png + 8, b)) return {};
   const int depth = b[24], type = b[25];
   if (type == 3)
     throw HeightMapError("a palette PNG: POV-Ray takes its palette indices as heights (index x 256); "
                          "save the image as grey or RGB");
-  if (type == 0 && depth < 8)
-    throw HeightMapError(fmt::format("a {}-bit grey PNG: POV-Ray reads it unscaled; save it with 8 or 16 bits", depth));
+  return {true, depth, type};
+}
+
+// POV-Ray reads a grey PNG of up to 8 bits through a grey colour map: each value v becomes
+// c = v / max, then the grey of (c, c, c) by its float weights, stored truncated to 8 bits
+// (base/image/png.cpp, image.cpp: RGB2Gray, SetGrayValue). This can lower v by one.
+float povPngGrey(long v, int max) {
+  const float c = float(v) / float(max);
+  const float grey = c * 0.297f + c * 0.589f + c * 0.114f;
+  return float(static_cast<unsigned char>(grey * 255.0f)) / 255.0f;
 }
 
 }  // namespace
 
 std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
-  refusePaletteFiles(path);
+  const PngFacts pngFacts = refusePaletteFiles(path);
   std::string error;
   std::unique_ptr<ImageReader> in = imagePlugin().openFile(path, error);
   if (!in) throw HeightMapError(error.empty() ? std::string("not an image") : error);
@@ -68,7 +82,10 @@ std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
       // The stored code values, then POV-Ray's floats of them (value / max).
       auto code = [&](int c) { return static_cast<float>(std::lround(p[c] * top)) / top; };
       uint16_t v;
-      if (grey) {
+      if (pngFacts.png && pngFacts.type == 0 && pngFacts.depth <= 8) {
+        const int max = (1 << pngFacts.depth) - 1;
+        v = static_cast<uint16_t>(povPngGrey(std::lround(p[0] * max), max) * 65535.0f);
+      } else if (grey) {
         v = static_cast<uint16_t>(code(0) * 65535.0f);
       } else if (h.sixteenBit) {
         const float r = code(0), g = code(1), b = code(2);
