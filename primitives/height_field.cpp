@@ -41,7 +41,11 @@ HeightField::HeightField(std::shared_ptr<const HeightMap> map, bool smooth, doub
   const uint16_t top = *std::max_element(map_->values.begin(), map_->values.end());
   if (!(top * kRaw > water_))
     throw std::invalid_argument("HeightField: the water level is at or above the highest point");
-  bounds_ = AABB(Vec3(0.0, water_, 0.0), Vec3(1.0, top * kRaw, 1.0));
+  // The floor lies POV-Ray's HFIELD_OFFSET (0.001 of a 16-bit step) below the water, as
+  // its bounding box does: the surface at the water level itself is kept, a face of the
+  // solid, as POV-Ray shows it.
+  floor_ = water_ - 0.001 * kRaw;
+  bounds_ = AABB(Vec3(0.0, floor_, 0.0), Vec3(1.0, top * kRaw, 1.0));
 
   // Level 0: each cell's corners; level L + 1: the 2 x 2 blocks of level L.
   std::vector<MinMax> cells(static_cast<size_t>(cellsX_) * cellsZ_);
@@ -113,7 +117,7 @@ double HeightField::height(double x, double z) const {
 
 bool HeightField::inside(const Vec3& p) const {
   if (!(p.x >= 0.0 && p.x <= 1.0 && p.z >= 0.0 && p.z <= 1.0)) return false;
-  if (p.y < water_) return false;
+  if (p.y < floor_) return false;
   return p.y < height(p.x, p.z);
 }
 

@@ -6,10 +6,11 @@
 // vertex normals (each the normalised sum of the four neighbouring face normals, quantised
 // to 16 bits as POV-Ray stores them) bilinearly over the cell.
 //
-// The solid: the points of the unit square (x, z) with water-level <= y < height(x, z). It
-// is closed by vertical walls over the square's edges and a floor at the water level, so
-// the parts below the water level are gone (POV-Ray clips them by its bounding box) and
-// crossings alternate. POV-Ray's height field has neither walls nor floor (its inside goes
+// The solid: the points of the unit square (x, z) with floor <= y < height(x, z), where the
+// floor is the water level less 0.001 / 65536 (POV-Ray's HFIELD_OFFSET). It is closed by
+// vertical walls over the square's edges and that floor, so the parts below the water
+// level are gone (POV-Ray clips them by its bounding box, whose bottom is there) while the
+// surface at the water level stays, and crossings alternate. POV-Ray's height field has neither walls nor floor (its inside goes
 // on below the surface without end): the two agree wherever the surface is seen from above
 // and the edges lie at the water level.
 //
@@ -73,6 +74,7 @@ class HeightField final : public Shape {
   std::shared_ptr<const HeightMap> map_;
   bool smooth_;
   double water_;
+  double floor_;  // the solid's bottom: just under the water level
   int cellsX_, cellsZ_;
   std::vector<std::vector<MinMax>> levels_;  // levels_[L]: blocks of 2^L x 2^L cells
   std::vector<int> levelWidth_;
