@@ -98,8 +98,10 @@ ShapeEntry<HeightFieldSpec> shapeEntry<HeightFieldSpec>() {
   };
   e.samples = [] {
     HeightFieldSpec ridge;
+    ridge.src = ridge.path = "ridge.png";  // not read: the samples hold their grids
     ridge.map = sampleMap(3, 3, [](int x, int z) -> uint16_t { return x == 1 ? 40000 : (x == 2 && z == 2 ? 60000 : 10000); });
     HeightFieldSpec varied;
+    varied.src = varied.path = "varied.png";
     varied.map = sampleMap(5, 4, [](int x, int z) -> uint16_t { return static_cast<uint16_t>(((x * 7 + z * 13) % 11) * 5000 + 3000); });
     HeightFieldSpec smooth = varied;
     smooth.smooth = true;
