@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
-# Writes height-field.png, the 16-bit grey height image of height-field.xml: a few hills
+# Writes height-field.png, the 16-bit grey height image of height-field.xml (or, given a
+# size and a file, that terrain at another size: bench/shapes/height-field.png is
+# `height-field-image.py 257 ../../bench/shapes/height-field.png`): a few hills
 # (Gaussian bumps) and a ring-shaped ridge, faded to 0 at the border so that the field's
 # edges lie at its water level (where Lucent's walls have no height, as POV-Ray has none).
-import math, struct, zlib
+import math, struct, sys, zlib
 
-N = 49
+N = int(sys.argv[1]) if len(sys.argv) > 1 else 49
+out = sys.argv[2] if len(sys.argv) > 2 else 'height-field.png'
 def height(x, z):
     u, v = x / (N - 1), z / (N - 1)
     h = 0.55 * math.exp(-((u - 0.32) ** 2 + (v - 0.35) ** 2) / 0.02)
@@ -21,5 +24,5 @@ for z in range(N):
 def chunk(t, d):
     return struct.pack('>I', len(d)) + t + d + struct.pack('>I', zlib.crc32(t + d) & 0xffffffff)
 ihdr = struct.pack('>IIBBBBB', N, N, 16, 0, 0, 0, 0)
-with open('height-field.png', 'wb') as f:
+with open(out, 'wb') as f:
     f.write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', ihdr) + chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b''))
