@@ -39,6 +39,9 @@ std::vector<CaseResult> blobCases(double effort);
 // Prisms (accuracy_prism_cases.cpp): a star with a hole, rays through its vertices, along
 // its side faces and grazing its caps' edges.
 std::vector<CaseResult> prismCases(double effort);
+// Height fields (accuracy_height_field_cases.cpp): a 9 x 7 grid with a water level, random
+// rays, rays edge-on along its grid lines and diagonals, rays along its grid edges.
+std::vector<CaseResult> heightFieldCases(double effort);
 
 // Every family, in the table's order.
 std::vector<CaseResult> allCases(double effort);
