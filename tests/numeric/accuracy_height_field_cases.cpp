@@ -58,7 +58,12 @@ class RefHeightField final : public RefShape {
       p[axis] = plane;  // on the wall's plane exactly, not a rounding off it
       if (!(p.x >= 0 && p.x <= 1 && p.z >= 0 && p.z <= 1)) return;
       if (axis != 1 && !(p.y >= floor_)) return;
-      if (p.y < height(p.x * sx, p.z * sz)) roots.push_back({t, n, true});
+      // Where the wall or the floor meets the surface either normal is right.
+      const LD above = height(p.x * sx, p.z * sz) - p.y;
+      // So does a wall at the square's corner edges.
+      auto rim = [](LD v) { return std::abs(v) < 1e-12L || std::abs(v - 1) < 1e-12L; };
+      const bool corner = axis != 1 && rim(axis == 0 ? p.z : p.x);
+      if (above > 0) roots.push_back({t, n, above > 1e-9L && !corner});
     };
     wall(0, 0, LVec(-1, 0, 0));
     wall(0, 1, LVec(1, 0, 0));
