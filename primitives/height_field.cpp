@@ -1,6 +1,8 @@
 // The height field's grid walk (primitives/height_field.h says the method and its sources).
 #include "height_field.h"
 
+#include "transform.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -308,13 +310,31 @@ Vec3 HeightField::flatNormal(int i, int j, bool upper) const {
 }
 
 // POV-Ray's bilinear blend of the cell's four vertex normals (hfield.cpp, Normal).
-Vec3 HeightField::smoothNormal(double X, double Z) const {
+template <class Map>
+Vec3 HeightField::blendNormals(double X, double Z, Map&& toWorld) const {
   const int px = std::clamp(static_cast<int>(X), 0, cellsX_ - 1), pz = std::clamp(static_cast<int>(Z), 0, cellsZ_ - 1);
   const double x = X - px, z = Z - pz, u = 1.0 - x, v = 1.0 - z;
-  auto n = [&](int a, int b) { return vertexNormals_[static_cast<size_t>(b) * map_->width + a]; };
+  auto n = [&](int a, int b) { return toWorld(vertexNormals_[static_cast<size_t>(b) * map_->width + a]); };
   const Vec3 r = v * (u * n(px, pz) + x * n(px + 1, pz)) + z * (u * n(px, pz + 1) + x * n(px + 1, pz + 1));
   const double len = glm::length(r);
   return len > 0.0 ? r / len : Vec3(0.0, 1.0, 0.0);
+}
+
+Vec3 HeightField::smoothNormal(double X, double Z) const {
+  return blendNormals(X, Z, [](const Vec3& n) { return n; });
+}
+
+bool HeightField::worldShadingNormal(const Ray& objectRay, const Hit& hit, const Transform& worldFromObject,
+                                     Vec3& ns) const {
+  if (!smooth_ || hit.part >= kWallX0) return false;
+  const Vec3 p = objectRay.at(hit.t);
+  const Vec3 s = blendNormals(p.x * cellsX_, p.z * cellsZ_, [&](const Vec3& n) { return worldFromObject.normalToWorld(n); });
+  const uint32_t cell = hit.part >> 1;
+  const Vec3 ng = worldFromObject.normalToWorld(
+      flatNormal(static_cast<int>(cell % static_cast<uint32_t>(cellsX_)), static_cast<int>(cell / static_cast<uint32_t>(cellsX_)),
+                 (hit.part & 1u) != 0));
+  ns = glm::dot(s, ng) > 0.0 ? s : ng;  // never behind the facet, as surface() keeps it
+  return true;
 }
 
 SurfaceInfo HeightField::surface(const Ray& ray, const Hit& hit) const {

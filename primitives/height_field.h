@@ -4,7 +4,8 @@
 // 16-bit height h (primitives/height_map.h). Each cell is two triangles split along the
 // diagonal from (i + 1, j) to (i, j + 1), as in POV-Ray. `smooth` interpolates POV-Ray's
 // vertex normals (each the normalised sum of the four neighbouring face normals, quantised
-// to 16 bits as POV-Ray stores them) bilinearly over the cell.
+// to 16 bits as POV-Ray stores them) bilinearly over the cell, each taken to world space
+// first (worldShadingNormal), as POV-Ray does.
 //
 // The solid: the points of the unit square (x, z) with floor <= y < height(x, z), where the
 // floor is the water level less 0.001 / 65536 (POV-Ray's HFIELD_OFFSET). It is closed by
@@ -47,6 +48,9 @@ class HeightField final : public Shape {
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  // Smooth: POV-Ray's blend of the vertex normals taken to world space one by one.
+  bool worldShadingNormal(const Ray& objectRay, const Hit& hit, const Transform& worldFromObject,
+                          Vec3& ns) const override;
   size_t triangleCount() const override;
 
   // The surface's height at the object point (x, z) of the unit square (not clamped to
@@ -70,6 +74,9 @@ class HeightField final : public Shape {
   double triangleHeightGrid(int i, int j, bool upper, double X, double Z) const;
   Vec3 flatNormal(int i, int j, bool upper) const;
   Vec3 smoothNormal(double X, double Z) const;
+  // The bilinear blend of the cell's vertex normals, each mapped by `toWorld` first.
+  template <class Map>
+  Vec3 blendNormals(double X, double Z, Map&& toWorld) const;
 
   std::shared_ptr<const HeightMap> map_;
   bool smooth_;

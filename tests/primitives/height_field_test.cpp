@@ -4,6 +4,7 @@
 #include "csg/inverted.h"
 #include "primitives/box.h"
 #include "primitives/height_field.h"
+#include "primitives/transform.h"
 
 #include <catch2/catch.hpp>
 
@@ -386,4 +387,38 @@ TEST_CASE("height field: camera rays over a 5 x 5 map with a zero border", "[pri
     }
   CHECK(wrong == 0);
   CHECK(hits > 20000);
+}
+
+TEST_CASE("height field: smooth normals are blended in world space, as POV-Ray blends them", "[primitives][height-field]") {
+  HeightField hf(rough(), true, 0.0);
+  Mat4 m(1.0);
+  m[0][0] = 2.0;
+  m[1][1] = 0.5;
+  m[2][2] = 3.0;
+  const Transform t = *Transform::fromMatrix(m);
+  // Straight down onto a point inside cell (2, 3) of the 9 x 7 grid.
+  const double X = 2.3, Z = 3.6;
+  Ray ray(Vec3(X / 8.0, 2.0, Z / 6.0), Vec3(0.0, -1.0, 0.0));
+  Hit h;
+  REQUIRE(hf.intersect(ray, h));
+  Vec3 ns;
+  REQUIRE(hf.worldShadingNormal(ray, h, t, ns));
+  // The corners' normals (smoothNormal at a grid point is that point's normal), each taken
+  // to world space, then blended bilinearly.
+  auto corner = [&](int x, int z) {
+    Ray r(Vec3(x / 8.0, 2.0, z / 6.0), Vec3(0.0, -1.0, 0.0));
+    Hit c;
+    REQUIRE(hf.intersect(r, c));
+    return t.normalToWorld(hf.surface(r, c).ns);
+  };
+  const double x = X - 2, z = Z - 3;
+  const Vec3 expected = glm::normalize((1 - z) * ((1 - x) * corner(2, 3) + x * corner(3, 3)) +
+                                       z * ((1 - x) * corner(2, 4) + x * corner(3, 4)));
+  CHECK(glm::length(ns - expected) < 1e-12);
+  // Not the object-space blend taken to world space.
+  CHECK(glm::length(ns - t.normalToWorld(hf.surface(ray, h).ns)) > 1e-4);
+  // A flat field has no world-space blend.
+  HeightField flat(rough(), false, 0.0);
+  REQUIRE(flat.intersect(ray, h));
+  CHECK_FALSE(flat.worldShadingNormal(ray, h, t, ns));
 }
