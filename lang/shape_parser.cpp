@@ -4,6 +4,7 @@
 #include "element_parsers.h"
 #include "expression_field.h"
 
+#include "images/height_map_file.h"
 #include "meshes/mesh_file_cache.h"
 #include "scenegraph/shape_registry.h"
 
@@ -72,6 +73,7 @@ class ElementInput final : public AttributeInput {
     }
     return f.path.string();
   }
+  std::shared_ptr<const HeightMap> heightMapFile(const char* attr, std::string& resolved) override;
 
   void forEachChild(const char* element, const std::function<void(AttributeInput&)>& read) override {
     const ShapeType* t = findShapeType(r_.element().name());
@@ -115,6 +117,23 @@ std::shared_ptr<const MeshData> ElementInput::meshFile(const char* attr, bool* f
     return r_.ctx().meshCache->get(f.path.string(), firstRead);
   } catch (const std::exception& e) {  // MeshError, and anything a reader library throws
     r_.attrError(attr, "cannot read the mesh '" + *src + "': " + e.what());
+    return nullptr;
+  }
+}
+
+std::shared_ptr<const HeightMap> ElementInput::heightMapFile(const char* attr, std::string& resolved) {
+  auto src = r_.text(attr);
+  if (!src) return nullptr;
+  FileAccess::Resolved f = r_.ctx().files.resolve(*src, r_.file().folder());
+  if (f.path.empty()) {
+    r_.attrError(attr, f.error);
+    return nullptr;
+  }
+  resolved = f.path.string();
+  try {
+    return readHeightMapFile(resolved);
+  } catch (const std::exception& e) {  // HeightMapError, ImagePluginError, a library's own
+    r_.attrError(attr, "cannot read the height field's image '" + *src + "': " + e.what());
     return nullptr;
   }
 }

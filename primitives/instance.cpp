@@ -88,6 +88,7 @@ SurfaceInfo Instance::surface(const Ray& ray, const Hit& hit) const {
   if (placed_) w.pError += worldToObjectRoundTripError(t, w.p) + Vec3(placed_->surfaceError);
   w.ng = t.normalToWorld(s.ng);
   w.ns = t.normalToWorld(s.ns);
+  if (Vec3 ns; shape_->worldShadingNormal(toObject(ray), local, t, ns)) w.ns = ns;
   w.pObject = s.p;  // solid textures are evaluated in the leaf's object space
   if (hit.flip) {
     w.ng = -w.ng;

@@ -10,6 +10,8 @@
 
 namespace lucent {
 
+class Transform;
+
 // A shape answers geometric questions in its own coordinate system. It knows nothing of
 // materials or of the world: scenegraph/ adds those, csg/ composes solids.
 //
@@ -41,6 +43,14 @@ class Shape {
 
   // Geometry of a hit this shape found on the same ray.
   virtual SurfaceInfo surface(const Ray& ray, const Hit& hit) const = 0;
+
+  // The shading normal in world space where the shape blends its normals there, as POV-Ray
+  // blends a smooth height field's vertex normals after transforming them (Instance asks;
+  // false: the object-space shading normal of surface() is transformed as usual).
+  virtual bool worldShadingNormal(const Ray& /*objectRay*/, const Hit& /*hit*/, const Transform& /*worldFromObject*/,
+                                  Vec3& /*ns*/) const {
+    return false;
+  }
 
   // Statistics for `lucent check`.
   virtual size_t triangleCount() const { return 0; }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "primitives/math.h"
+#include "primitives/height_map.h"
 #include "primitives/mesh_data.h"
 #include "primitives/scalar_field.h"
 
@@ -72,6 +73,9 @@ class AttributeInput {
   // once per process however many elements name it; null when it cannot be read (reported).
   // `firstRead`, if given, tells whether this call read the file.
   virtual std::shared_ptr<const MeshData> meshFile(const char* attr, bool* firstRead = nullptr) = 0;
+  // The image the attribute names read as a height field's grid (images/height_map_file.h),
+  // resolved by the same rules (its path in `resolved`); null when it cannot be read (reported).
+  virtual std::shared_ptr<const HeightMap> heightMapFile(const char* attr, std::string& resolved) = 0;
 
   // The file the attribute names, resolved by the scene's file-access rules (absolute);
   // nullopt when absent or not allowed (reported).

@@ -4,6 +4,7 @@
 
 #include "primitives/blob_component.h"
 #include "primitives/isosurface.h"
+#include "primitives/height_map.h"
 #include "primitives/lathe_spline.h"
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
@@ -104,9 +105,17 @@ struct SorSpec {
   std::vector<Vec2> points;  // required: x >= 0, y increasing (the first and last steer)
   bool open = false;
 };
+// POV-Ray's height_field: the image's grid (primitives/height_field.h).
+struct HeightFieldSpec {
+  std::string src;   // as written
+  std::string path;  // resolved, for the POV-Ray file
+  bool smooth = false;
+  double waterLevel = 0.0;
+  std::shared_ptr<const HeightMap> map;  // loaded
+};
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
                                PolySpec, PrismSpec, BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec,
-                               SorSpec>;
+                               SorSpec, HeightFieldSpec>;
 
 }  // namespace lucent

@@ -99,6 +99,11 @@ TEST_CASE("accuracy: sors: tangent to the silhouette, along the axis, through th
   requireWithinBounds(sorCases(1.0));
 }
 
+TEST_CASE("accuracy: height fields: random rays, edge-on along grid lines and diagonals, along grid edges",
+          "[numeric][accuracy][height-field]") {
+  requireWithinBounds(heightFieldCases(1.0));
+}
+
 TEST_CASE("accuracy: meshes: 10^6 rays from inside all hit, shared edges and vertices, slivers",
           "[numeric][accuracy][mesh]") {
   requireWithinBounds(meshCases(1.0));

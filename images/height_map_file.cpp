@@ -1,0 +1,103 @@
+// Reading a height field's image (height_map_file.h says what POV-Ray does and why).
+#include "height_map_file.h"
+
+#include "images/image_plugin.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <vector>
+
+namespace lucent {
+
+namespace {
+
+// What OpenImageIO hides: a PNG's colour type and bit depth (its IHDR chunk) and GIF's
+// palette, which POV-Ray reads as indices.
+// A PNG's IHDR facts, when the file is a PNG.
+struct PngFacts {
+  bool png = false;
+  int depth = 0, type = 0;
+};
+
+PngFacts refusePaletteFiles(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  unsigned char b[26] = {};
+  f.read(reinterpret_cast<char*>(b), sizeof b);
+  const std::streamsize n = f.gcount();
+  if (n >= 6 && b[0] == 'G' && b[1] == 'I' && b[2] == 'F')
+    throw HeightMapError("a GIF holds palette indices, which POV-Ray takes as heights (index x 256); "
+                         "save the image as a grey PNG");
+  static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (n < 26 || !std::equal(png, png + 8, b)) return {};
+  const int depth = b[24], type = b[25];
+  if (type == 3)
+    throw HeightMapError("a palette PNG: POV-Ray takes its palette indices as heights (index x 256); "
+                         "save the image as grey or RGB");
+  return {true, depth, type};
+}
+
+// POV-Ray reads a grey PNG of up to 8 bits through a grey colour map: each value v becomes
+// c = v / max, then the grey of (c, c, c) by its float weights, stored truncated to 8 bits
+// (base/image/png.cpp, image.cpp: RGB2Gray, SetGrayValue). This can lower v by one.
+float povPngGrey(long v, int max) {
+  const float c = float(v) / float(max);
+  const float grey = c * 0.297f + c * 0.589f + c * 0.114f;
+  return float(static_cast<unsigned char>(grey * 255.0f)) / 255.0f;
+}
+
+}  // namespace
+
+std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
+  const PngFacts pngFacts = refusePaletteFiles(path);
+  std::string error;
+  std::unique_ptr<ImageReader> in = imagePlugin().openFile(path, error);
+  if (!in) throw HeightMapError(error.empty() ? std::string("not an image") : error);
+  const ImageHeader& h = in->header();
+  if (h.width <= 0 || h.height <= 0 || h.channels <= 0) throw HeightMapError("the image has no pixels");
+  if (h.width > kMaxHeightFieldSide || h.height > kMaxHeightFieldSide || h.channels > 4)
+    throw HeightMapError(fmt::format("a {}x{} image with {} channels is beyond the height field's limit of {} "
+                                     "pixels a side and 4 channels",
+                                     h.width, h.height, h.channels, kMaxHeightFieldSide));
+  if (h.width < 2 || h.height < 2)
+    throw HeightMapError(fmt::format("a {}x{} image: a height field needs at least 2 x 2 pixels", h.width, h.height));
+  if (h.floating || !(h.eightBit || h.sixteenBit))
+    throw HeightMapError("only 8- or 16-bit integer images are read as heights (not floating point)");
+  std::vector<float> px(static_cast<size_t>(h.width) * h.height * h.channels);
+  error = in->readPixels(px.data());
+  if (!error.empty()) throw HeightMapError(error);
+
+  auto map = std::make_shared<HeightMap>();
+  map->width = h.width;
+  map->depth = h.height;
+  map->values.resize(static_cast<size_t>(h.width) * h.height);
+  const float top = h.sixteenBit ? 65535.0f : 255.0f;
+  const bool grey = h.channels < 3;
+  for (int row = 0; row < h.height; ++row) {
+    const int z = h.height - 1 - row;  // POV-Ray's z = 0 is the image's bottom row
+    for (int x = 0; x < h.width; ++x) {
+      const float* p = &px[(static_cast<size_t>(row) * h.width + x) * h.channels];
+      // The stored code values, then POV-Ray's floats of them (value / max).
+      auto code = [&](int c) { return static_cast<float>(std::lround(p[c] * top)) / top; };
+      uint16_t v;
+      if (pngFacts.png && pngFacts.type == 0 && pngFacts.depth <= 8) {
+        const int max = (1 << pngFacts.depth) - 1;
+        v = static_cast<uint16_t>(povPngGrey(std::lround(p[0] * max), max) * 65535.0f);
+      } else if (grey) {
+        v = static_cast<uint16_t>(code(0) * 65535.0f);
+      } else if (h.sixteenBit) {
+        const float r = code(0), g = code(1), b = code(2);
+        v = static_cast<uint16_t>(std::min(65535.0, (0.297 * r + 0.589 * g + 0.114 * b) * 65535.0f));
+      } else {
+        const float r = code(0), g = code(1);
+        v = static_cast<uint16_t>((r * 256.0 + g) * 255.0);
+      }
+      map->values[static_cast<size_t>(z) * h.width + x] = v;
+    }
+  }
+  return map;
+}
+
+}  // namespace lucent

@@ -1,0 +1,30 @@
+// A height field's image read as POV-Ray 3.7 reads it (backend/support/imageutil.cpp,
+// image_height_at; the parser reads a height field's image without gamma correction):
+//   grey, 8 or 16 bits:  (unsigned short)(v / max * 65535), in float arithmetic (a grey PNG
+//                        of up to 8 bits first through POV-Ray's grey colour map, which
+//                        can lower v by one: height_map_file.cpp)
+//   colour, 16 bits:     (0.297 r + 0.589 g + 0.114 b) * 65535
+//   colour, 8 bits:      red is the high byte, green the low byte: (r * 256 + g) * 255
+// Palette images (POV-Ray reads their indices, times 256) and floating-point images are
+// refused with a message that says so.
+#pragma once
+
+#include "primitives/height_map.h"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace lucent {
+
+struct HeightMapError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The largest image side read as a height field (16.7 million grid points).
+constexpr int kMaxHeightFieldSide = 4096;
+
+// Throws HeightMapError with the reason (the caller names the file).
+std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path);
+
+}  // namespace lucent

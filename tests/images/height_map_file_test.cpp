@@ -1,0 +1,66 @@
+// A height field's image is read as POV-Ray 3.7 reads it: the heights of test images in
+// every storage POV-Ray treats differently (grey and RGB, 8 and 16 bits) against POV-Ray's
+// own, measured by tests/data/height_field/make_references.sh.
+#include "images/height_map_file.h"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+using namespace lucent;
+
+namespace {
+
+std::string dataFile(const std::string& name) {
+  return std::string(LUCENT_SOURCE_DIR) + "/tests/data/height_field/" + name;
+}
+
+std::vector<long> povHeights(const std::string& name) {
+  std::ifstream in(dataFile(name + ".pov-heights.txt"));
+  std::vector<long> v;
+  long x;
+  while (in >> x) v.push_back(x);
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("height field images: every value is POV-Ray's height", "[images][height-field]") {
+  for (const char* name : {"g8", "g16", "rgb8", "rgb16"}) {
+    INFO(name);
+    const std::vector<long> pov = povHeights(name);
+    REQUIRE(pov.size() == 256);
+    auto map = readHeightMapFile(dataFile(std::string(name) + ".png"));
+    REQUIRE(map->width == 258);
+    REQUIRE(map->depth == 3);
+    int wrong = 0;
+    for (int i = 0; i < 256; ++i) wrong += map->at(i + 1, 1) != pov[i];
+    CHECK(wrong == 0);
+  }
+  // The 8-bit grey PNG goes through POV-Ray's grey colour map, which lowers 84 of the 256
+  // values by one: 20 and 200 become 19 and 199 (x 257), 120 stays.
+  auto g8 = readHeightMapFile(dataFile("g8.png"));
+  CHECK(g8->at(21, 1) == 19 * 257);
+  CHECK(g8->at(201, 1) == 199 * 257);
+  CHECK(g8->at(121, 1) == 120 * 257);
+}
+
+TEST_CASE("height field images: the image's top row is at z = 1", "[images][height-field]") {
+  // rgb8.png's rows are equal; g8.png's too: the flip shows in a 2 x 2 image of the tests'.
+  auto map = readHeightMapFile(dataFile("flip.pgm"));
+  REQUIRE(map->width == 2);
+  REQUIRE(map->depth == 2);
+  CHECK(map->at(0, 1) == 10 * 257);  // image row 0
+  CHECK(map->at(1, 1) == 20 * 257);
+  CHECK(map->at(0, 0) == 30 * 257);  // image row 1
+  CHECK(map->at(1, 0) == 40 * 257);
+}
+
+TEST_CASE("height field images: what is refused", "[images][height-field]") {
+  CHECK_THROWS_AS(readHeightMapFile(dataFile("missing.png")), HeightMapError);
+  CHECK_THROWS_WITH(readHeightMapFile(dataFile("palette.png")), Catch::Contains("palette"));
+  CHECK_THROWS_WITH(readHeightMapFile(dataFile("one-pixel.pgm")), Catch::Contains("at least 2 x 2"));
+  CHECK_THROWS_AS(readHeightMapFile(dataFile("png.py")), HeightMapError);
+}
