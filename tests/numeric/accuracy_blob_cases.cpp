@@ -18,15 +18,8 @@ namespace {
 
 using C = BlobComponent;
 
-int count(double base, double effort) { return std::max(1, int(base * effort)); }
-
 CaseResult newCase(const std::string& name, double boundRelT, double boundAngle) {
-  CaseResult r;
-  r.group = "Blobs";
-  r.name = name;
-  r.boundRelT = boundRelT;
-  r.boundAngle = boundAngle;
-  return r;
+  return makeCase("Blobs", name, boundRelT, boundAngle);
 }
 
 // The surface point on the segment from an inside point to an outside one (bisection of
@@ -75,7 +68,7 @@ struct Setting {
 std::vector<CaseResult> blobCases(double effort) {
   // Bounds: as the other shapes' at unit scale, 1e-14 for t and 1e-12 for the normal.
   const double kT = 1e-14, kN = 1e-12;
-  const int n = count(300, effort);
+  const int n = rayCount(300, effort);
   std::vector<CaseResult> out;
 
   const std::vector<Setting> settings = {

@@ -96,8 +96,6 @@ CaseResult newCase(const std::string& group, const std::string& name, double bou
   return r;
 }
 
-int count(double base, double effort) { return std::max(1, int(base * effort)); }
-
 // The bounds of the unit-scale cases, asserted on the crossings at least 6° from grazing.
 // t: a root computed in double from exact data by a backward-stable method is within a
 // few u·κ (u = 2^-53), κ <= 1/|cos θ| <= 10 there; 1e-14 (90 u) leaves room for each
@@ -140,7 +138,7 @@ std::vector<CaseResult> baselineCases(double effort) {
   Rng rng(1001);
   for (const Subject& s : solids(1.0, Vec3(0.25, -0.5, 0.125))) {
     CaseResult r = newCase("Unit scale, random rays (for comparison)", s.name, kUnitT, kUnitN);
-    for (int i = 0; i < count(4000, effort); ++i)
+    for (int i = 0; i < rayCount(4000, effort); ++i)
       measureRay(r, *s.shape, *s.ref, aimedRay(rng, s, 3.0), s.size);
     out.push_back(std::move(r));
   }
@@ -150,7 +148,7 @@ std::vector<CaseResult> baselineCases(double effort) {
 std::vector<CaseResult> grazingCases(double effort) {
   const std::string group = "Grazing and tangent rays";
   std::vector<CaseResult> out;
-  const int n = count(4000, effort);
+  const int n = rayCount(4000, effort);
 
   {  // Sphere: tangent lines at random points, moved off by 1e-16 .. 1e-1 of the radius.
     Rng rng(1101);
@@ -303,7 +301,7 @@ std::vector<CaseResult> grazingCases(double effort) {
 
 std::vector<CaseResult> farAndScaledCases(double effort) {
   std::vector<CaseResult> out;
-  const int n = count(2000, effort);
+  const int n = rayCount(2000, effort);
   {
     // Unit objects 1e5 from the origin. Their points' coordinates are ~1e5, so a point
     // (and with it the normal of a unit object) is known only to ~1e5·ε ≈ 1e-11 absolute;
@@ -393,7 +391,7 @@ std::vector<CaseResult> secondaryRayCases(double effort) {
               glm::rotate(Mat4(1.0), 0.7, glm::normalize(Vec3(1, 2, 3))) *
               scale(Vec3(3.0, 0.5, -1.5));
   warp[1][0] += 0.4;
-  const int n = count(1500, effort);
+  const int n = rayCount(1500, effort);
   std::vector<CaseResult> out;
   const std::vector<Subject> units = solids(1.0, Vec3(0.0));  // named as the cases are
   for (size_t which = 0; which < units.size(); ++which) {
@@ -443,7 +441,7 @@ std::vector<CaseResult> zeroDirectionCases(double effort) {
   // Half of the box's rays run exactly in a face plane or along an edge line.
   const std::string group = "Rays with zero direction components";
   std::vector<CaseResult> out;
-  const int n = count(3000, effort);
+  const int n = rayCount(3000, effort);
   std::vector<Subject> subjects = solids(1.0, Vec3(0.0));
   // An upright cylinder and cone too: rays along the axis and in the cap planes.
   subjects.push_back(
@@ -520,7 +518,7 @@ std::vector<CaseResult> nearSingularCases(double effort) {
        refCone(base, 0.5, cap, 0.0), shearZ, kShearN},
   };
   std::vector<CaseResult> out;
-  const int n = count(3000, effort);
+  const int n = rayCount(3000, effort);
   Rng rng(1501);
   for (const Item& it : items) {
     Subject s = instanced(it.name, it.shape, it.ref, it.m);

@@ -12,6 +12,7 @@
 // answer is right, and it is counted as "within rounding" instead.
 #pragma once
 
+#include <algorithm>
 #include <glm/glm.hpp>
 #include <memory>
 #include <random>
@@ -158,6 +159,20 @@ Vec3 randomUnit(Rng& rng);
 Vec3 randomPerpendicular(Rng& rng, const Vec3& n);
 // 10^u with u uniform in [lo, hi].
 double logUniform(Rng& rng, double lo, double hi);
+
+// How many rays a case traces: `base` times the effort (1 in the tests, more for the
+// table), at least one.
+inline int rayCount(double base, double effort) { return std::max(1, int(base * effort)); }
+
+// A case of the table's section `group`, with the bounds its tests assert (0: none).
+inline CaseResult makeCase(std::string group, std::string name, double boundRelT, double boundAngle) {
+  CaseResult r;
+  r.group = std::move(group);
+  r.name = std::move(name);
+  r.boundRelT = boundRelT;
+  r.boundAngle = boundAngle;
+  return r;
+}
 
 // The table (GitHub markdown) of a list of results, grouped by CaseResult::group.
 std::string markdownTable(const std::vector<CaseResult>& results);

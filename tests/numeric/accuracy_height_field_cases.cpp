@@ -16,8 +16,6 @@ namespace lucent::accuracy {
 
 namespace {
 
-int count(double base, double effort) { return std::max(1, int(base * effort)); }
-
 class RefHeightField final : public RefShape {
  public:
   RefHeightField(std::shared_ptr<const HeightMap> m, double floor) : m_(std::move(m)), floor_(floor) {}
@@ -94,12 +92,7 @@ class RefHeightField final : public RefShape {
 };
 
 CaseResult newCase(const std::string& name) {
-  CaseResult r;
-  r.group = "Height fields";
-  r.name = name;
-  r.boundRelT = 1e-14;
-  r.boundAngle = 1e-12;
-  return r;
+  return makeCase("Height fields", name, 1e-14, 1e-12);
 }
 
 }  // namespace
@@ -114,7 +107,7 @@ std::vector<CaseResult> heightFieldCases(double effort) {
   const HeightField hf(m, false, water);
   const RefHeightField ref(m, water - 0.001 / 65536.0);
   const double size = 1.5;
-  const int n = count(1200, effort);
+  const int n = rayCount(1200, effort);
   std::vector<CaseResult> out;
   {
     Rng rng(2101);

@@ -17,15 +17,8 @@ namespace lucent::accuracy {
 
 namespace {
 
-int count(double base, double effort) { return std::max(1, int(base * effort)); }
-
 CaseResult newCase(const std::string& name, double boundRelT, double boundAngle) {
-  CaseResult r;
-  r.group = "Isosurfaces";
-  r.name = name;
-  r.boundRelT = boundRelT;
-  r.boundAngle = boundAngle;
-  return r;
+  return makeCase("Isosurfaces", name, boundRelT, boundAngle);
 }
 
 class FnField final : public ScalarField {
@@ -97,7 +90,7 @@ std::vector<CaseResult> isosurfaceCases(double effort) {
   // central differences with h = 1e-5 of the container: O(h²) truncation and O(ulp/h)
   // rounding, about 1e-10: bounded at 1e-8.
   const double kT = 1e-13, kN = 1e-8;
-  const int n = count(300, effort);
+  const int n = rayCount(300, effort);
   std::vector<CaseResult> out;
   const Vec3 c(0.1, -0.2, 0.05);
   {

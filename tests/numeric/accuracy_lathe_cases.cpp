@@ -25,8 +25,6 @@ namespace lucent::accuracy {
 
 namespace {
 
-int count(double base, double effort) { return std::max(1, int(base * effort)); }
-
 using LVec2 = glm::vec<2, long double>;
 using Bezier = std::array<LVec2, 4>;
 
@@ -218,12 +216,7 @@ class RefLathe final : public RefShape {
 // at most 6.8e-16 and 6.8e-15), except at the rims: a root found up to 1e-9 in s beyond a
 // piece's end (lathe.cpp's slack) takes the end's normal, 2e-9 off there (measured).
 CaseResult newCase(const std::string& name, double boundAngle = 1e-12) {
-  CaseResult r;
-  r.group = "Lathes";
-  r.name = name;
-  r.boundRelT = 1e-14;
-  r.boundAngle = boundAngle;
-  return r;
+  return makeCase("Lathes", name, 1e-14, boundAngle);
 }
 
 // A ray through `target` from a random direction about 3 units away.
@@ -264,7 +257,7 @@ std::vector<CaseResult> latheCases(double effort) {
   const Shape2 shapes[] = {{"Bézier vase", vase, vaseRef, vasePieces, 1.5},
                            {"linear goblet", goblet, gobletRef, gobletPieces, 1.45}};
   const double size = 3.0;
-  const int n = count(400, effort);
+  const int n = rayCount(400, effort);
   std::vector<CaseResult> out;
   uint64_t seed = 2101;
   for (const Shape2& sh : shapes) {

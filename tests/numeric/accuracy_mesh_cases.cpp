@@ -162,8 +162,6 @@ bool checkCrossing(CaseResult& r, const TriangleMesh& mesh, const Ray& ray, cons
   return true;
 }
 
-int count(double base, double effort) { return std::max(1, int(base * effort)); }
-
 // t: as for the analytic shapes (a few ε·κ away from grazing, with room). Normal: the
 // triangle's own (p1 − p0) × (p2 − p0), normalised, against the same in long double:
 // a few ε, 2e-15 with room.
@@ -234,7 +232,7 @@ std::vector<CaseResult> meshCases(double effort) {
   TriangleMesh hull(hullData, false);
   const auto& P = hullData->positions;
   const auto& T = hullData->triangles;
-  const int n = count(20000, effort);
+  const int n = rayCount(20000, effort);
   // A point inside the hull, on the grid (the hull of 300 points on the unit sphere
   // contains the ball of radius 0.3 by a wide margin).
   auto inner = [&] { return onGrid(0.3 * uniform(rng, 0.0, 1.0) * randomUnit(rng), 10); };
@@ -402,7 +400,7 @@ std::vector<CaseResult> meshAlongEdgeCases(double effort) {
   CaseResult r =
       newCase("Triangle meshes (exact predicates)",
               "convex grid mesh: rays along edges (touching only)", 0.0, 0.0);
-  for (int i = 0; i < count(20000, effort); ++i) {
+  for (int i = 0; i < rayCount(20000, effort); ++i) {
     const auto& tri = T[rng() % T.size()];
     int e = int(rng() % 3);
     Vec3 p = P[tri[size_t(e)]], q = P[tri[size_t((e + 1) % 3)]];

@@ -13,8 +13,6 @@ namespace lucent::accuracy {
 
 namespace {
 
-int count(double base, double effort) { return std::max(1, int(base * effort)); }
-
 using Polygon = std::vector<Vec2>;
 
 class RefPolygonPrism final : public RefShape {
@@ -84,12 +82,7 @@ PrismContour contour(const Polygon& pts) {
 }
 
 CaseResult newCase(const std::string& name) {
-  CaseResult r;
-  r.group = "Prisms";
-  r.name = name;
-  r.boundRelT = 1e-14;
-  r.boundAngle = 1e-12;
-  return r;
+  return makeCase("Prisms", name, 1e-14, 1e-12);
 }
 
 }  // namespace
@@ -108,7 +101,7 @@ std::vector<CaseResult> prismCases(double effort) {
   const Prism prism({contour(star), contour(hole)}, 0.0, 1.0);
   const RefPolygonPrism ref({star, hole}, 0.0, 1.0);
   const double size = 2.5;
-  const int n = count(1200, effort);
+  const int n = rayCount(1200, effort);
   std::vector<CaseResult> out;
   {
     Rng rng(1901);

@@ -17,15 +17,8 @@ namespace lucent::accuracy {
 
 namespace {
 
-int count(double base, double effort) { return std::max(1, int(base * effort)); }
-
 CaseResult newCase(const std::string& name, double boundRelT, double boundAngle) {
-  CaseResult r;
-  r.group = "Quadrics and polys";
-  r.name = name;
-  r.boundRelT = boundRelT;
-  r.boundAngle = boundAngle;
-  return r;
+  return makeCase("Quadrics and polys", name, boundRelT, boundAngle);
 }
 
 // A ray from 3 to 5 units away towards a point within `reach` of the origin.
@@ -54,7 +47,7 @@ std::vector<double> polyCoefficients(int order, const std::vector<std::pair<std:
 std::vector<CaseResult> quadricCases(double effort) {
   // Bounds as the other analytic shapes' at unit scale: 1e-14 for t, 1e-12 for the normal.
   const double kT = 1e-14, kN = 1e-12;
-  const int n = count(400, effort);
+  const int n = rayCount(400, effort);
   std::vector<CaseResult> out;
   {
     // x² + z² < 1: random rays, lines nearly along the axis (1e-12 to 1e-1 off parallel),

@@ -16,8 +16,6 @@ namespace lucent::accuracy {
 
 namespace {
 
-int count(double base, double effort) { return std::max(1, int(base * effort)); }
-
 using V = std::vector<Vec2>;
 
 class RefSor final : public RefShape {
@@ -130,12 +128,7 @@ class RefSor final : public RefShape {
 };
 
 CaseResult newCase(const std::string& name, double boundRelT, double boundAngle) {
-  CaseResult r;
-  r.group = "Surfaces of revolution";
-  r.name = name;
-  r.boundRelT = boundRelT;
-  r.boundAngle = boundAngle;
-  return r;
+  return makeCase("Surfaces of revolution", name, boundRelT, boundAngle);
 }
 
 }  // namespace
@@ -146,7 +139,7 @@ std::vector<CaseResult> sorCases(double effort) {
   const Sor sv(vase, false), sb(bulb, false);
   const RefSor rv(vase), rb(bulb);
   const double size = 2.0;
-  const int n = count(1200, effort);
+  const int n = rayCount(1200, effort);
   // Bounds: measured maxima with a margin (docs/accuracy.md).
   const double kT = 1e-13, kN = 1e-12;
   std::vector<CaseResult> out;

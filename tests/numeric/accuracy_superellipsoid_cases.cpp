@@ -15,15 +15,8 @@ namespace lucent::accuracy {
 
 namespace {
 
-int count(double base, double effort) { return std::max(1, int(base * effort)); }
-
 CaseResult newCase(const std::string& name, double boundRelT, double boundAngle) {
-  CaseResult r;
-  r.group = "Superellipsoids";
-  r.name = name;
-  r.boundRelT = boundRelT;
-  r.boundAngle = boundAngle;
-  return r;
+  return makeCase("Superellipsoids", name, boundRelT, boundAngle);
 }
 
 // The surface point in direction u from the centre (N is 1-homogeneous: u / N(u)) and its
@@ -71,7 +64,7 @@ std::vector<CaseResult> superellipsoidCases(double effort) {
   // largest clear normal error measured with 4x the tests' rays is 5e-14, at the rounded
   // edges of e = n = 0.1, whose curvature reaches about 1e2).
   const double kT = 1e-14, kN = 1e-12;
-  const int n = count(300, effort);
+  const int n = rayCount(300, effort);
   std::vector<CaseResult> out;
   const Superellipsoid box(0.1, 0.1), boxier(0.05, 0.05);
   auto refBox = refSuperellipsoid(0.1, 0.1), refBoxier = refSuperellipsoid(0.05, 0.05);

@@ -16,8 +16,6 @@ namespace lucent::accuracy {
 
 namespace {
 
-int count(double base, double effort) { return std::max(1, int(base * effort)); }
-
 struct LSeg {
   int degree;
   LD x[3], y[3];
@@ -119,12 +117,7 @@ class RefText final : public RefShape {
 };
 
 CaseResult newCase(const std::string& name) {
-  CaseResult r;
-  r.group = "Text";
-  r.name = name;
-  r.boundRelT = 1e-13;
-  r.boundAngle = 1e-11;
-  return r;
+  return makeCase("Text", name, 1e-13, 1e-11);
 }
 
 }  // namespace
@@ -138,7 +131,7 @@ std::vector<CaseResult> textCases(double effort) {
   const RefText ref(o, h);
   const AABB b = text.bounds();
   const double size = 2.0;
-  const int n = count(1500, effort);
+  const int n = rayCount(1500, effort);
   std::vector<CaseResult> out;
   auto inBox = [&](Rng& rng) {
     return Vec3(uniform(rng, b.lo.x, b.hi.x), uniform(rng, b.lo.y, b.hi.y), uniform(rng, 0, h));
