@@ -11,9 +11,11 @@
 #pragma once
 
 #include "fuzz/expansion_scene.h"
+#include "images/height_map_file.h"
 #include "lang/expression.h"
 #include "lang/parser.h"
 #include "meshes/mesh_files.h"
+#include "primitives/height_field.h"
 #include "primitives/text.h"
 #include "primitives/text_outline.h"
 #include "primitives/transform.h"
@@ -30,6 +32,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <optional>
@@ -165,6 +168,46 @@ inline Outcome fontReader(const uint8_t* data, size_t size) {
       if (c.entering == in) return finding("text crossings do not alternate");
       in = c.entering;
       last = c.hit.t;
+    }
+  }
+  return accepted();
+}
+
+// A height field's image file (written to a temporary file, since the reader takes a
+// path: OpenImageIO's formats, POV-Ray's reading of them), built into a HeightField and
+// crossed by a fan of rays. A HeightMapError is a refusal; the crossings must keep the
+// contract (sorted, alternating from outside: the rays start far outside the field).
+inline Outcome heightMapReader(const uint8_t* data, size_t size) {
+  char path[] = "/tmp/lucent-fuzz-height-XXXXXX.png";
+  const int fd = mkstemps(path, 4);
+  if (fd < 0) return refused();
+  FILE* f = fdopen(fd, "wb");
+  if (!f) return refused();
+  const bool written = fwrite(data, 1, size, f) == size;
+  fclose(f);
+  std::shared_ptr<const HeightMap> map;
+  try {
+    if (written) map = readHeightMapFile(path);
+  } catch (const HeightMapError&) {
+  }
+  std::remove(path);
+  if (!map) return refused();
+  for (bool smooth : {false, true}) {
+    const HeightField field(map, smooth, 0.0);
+    for (int i = 0; i < 16; ++i) {
+      const Ray ray(Vec3(-10, 0.06 * i, 0.03 + 0.06 * i), Vec3(1, 0.001 * (i - 8), 0.01 * i));
+      CrossingList cl;
+      field.crossings(ray, cl);
+      bool in = cl.startsInside;
+      if (in) return finding("a ray from far outside starts inside the height field");
+      double last = -kInf;
+      for (const Crossing& c : cl.items) {
+        if (!(c.hit.t >= last)) return finding("height field crossings not sorted");
+        if (c.entering == in) return finding("height field crossings do not alternate");
+        in = c.entering;
+        last = c.hit.t;
+      }
+      if (in) return finding("a ray ends inside the height field");
     }
   }
   return accepted();

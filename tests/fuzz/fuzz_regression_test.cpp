@@ -102,6 +102,13 @@ TEST_CASE("fuzz regressions: font files for text are refused or laid out cleanly
   CHECK(n > 0);
 }
 
+TEST_CASE("fuzz regressions: height-field images are refused or read into a field that keeps the contract",
+          "[fuzz]") {
+  // The corpus holds readable images (accept-*) as well as damaged ones (refuse-*).
+  const size_t n = replayAll("height_map", [](const uint8_t* d, size_t n) { return lucent::fuzz::heightMapReader(d, n); });
+  CHECK(n >= 4);
+}
+
 TEST_CASE("fuzz harness: a located exception from building the world is a refusal, others are findings",
           "[fuzz]") {
   using lucent::fuzz::refusedInOrder;
