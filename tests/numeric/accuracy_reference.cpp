@@ -726,6 +726,13 @@ class RefBlobImpl final : public RefShape {
         breaks.push_back({t, gt});
         if (isMax && gt == 0) touching.push_back(t);
       }
+      // A cut is a kink of the field, not a point outside the surface: an extremum within
+      // the first or last sample interval of the piece is unseen above.
+      for (int i : {0, n - 1})
+        for (int sign : {1, -1}) {
+          const LD t = goldenExtremum([&](LD x) { return g(ray, x); }, ts[i], ts[i + 1], sign, 120);
+          if (t > ts[i] && t < ts[i + 1]) breaks.push_back({t, g(ray, t)});
+        }
     }
     breaks.push_back({cuts.back(), g(ray, cuts.back())});
     std::sort(breaks.begin(), breaks.end());
