@@ -22,10 +22,12 @@ bool cornersDiffer(const Color& a, const Color& b, float threshold) {
   return encodedDiffer(encodeForCornerTest(a), encodeForCornerTest(b), threshold);
 }
 
-CornerTile::CornerTile(const Image& corners, const Image& encodedCorners, float threshold,
-                       int depth, int x0, int x1)
+CornerTile::CornerTile(const Image& corners, const Image& encodedCorners, int originX,
+                       int originY, float threshold, int depth, int x0, int x1)
     : corners_(corners),
       encodedCorners_(encodedCorners),
+      originX_(originX),
+      originY_(originY),
       threshold_(threshold),
       depth_(depth),
       step_(1 << (depth - 1)),
@@ -80,7 +82,9 @@ Color CornerTile::pixel(int x, int y, const LatticeTrace& trace, RayStats& stats
   baseX_ = x * n;
   baseY_ = y * n;
   auto put = [&](int a, int b, const Sample& s) { at(a, b) = Sample{s.color, s.encoded, pixelNumber_}; };
-  auto corner = [&](int i, int j) { return Sample{corners_.at(i, j), encodedCorners_.at(i, j), 0}; };
+  auto corner = [&](int i, int j) {
+    return Sample{corners_.at(i - originX_, j - originY_), encodedCorners_.at(i - originX_, j - originY_), 0};
+  };
   put(0, 0, corner(x, y));
   put(n, 0, corner(x + 1, y));
   put(0, n, corner(x, y + 1));

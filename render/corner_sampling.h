@@ -31,10 +31,12 @@ using LatticeTrace = std::function<Color(int fx, int fy, RayStats& stats)>;
 // allocates once and a pixel never.
 class CornerTile {
  public:
-  // `corners`: the (W+1) x (H+1) traced pixel corners, corner (i, j) at film (i, j), and
-  // the same encoded with encodeForCornerTest (once, not once for each of the 4 pixels).
-  CornerTile(const Image& corners, const Image& encodedCorners, float threshold, int depth, int x0,
-             int x1);
+  // `corners`: the traced pixel corners of a rectangle of the image whose top-left pixel is
+  // (originX, originY): corner (i, j), at film (i, j), is corners.at(i - originX, j -
+  // originY); `encodedCorners`, the same encoded with encodeForCornerTest (once, not once
+  // for each of the 4 pixels).
+  CornerTile(const Image& corners, const Image& encodedCorners, int originX, int originY,
+             float threshold, int depth, int x0, int x1);
 
   // Pixel (x, y), which must follow the previous one in the visiting order (a new row may
   // start anywhere inside the tile, so that a cancelled row leaves nothing stale).
@@ -53,6 +55,7 @@ class CornerTile {
 
   const Image& corners_;
   const Image& encodedCorners_;
+  int originX_, originY_;
   float threshold_;
   int depth_, step_, x0_;
   // The current pixel's (step+1)^2 lattice points. An entry is valid when it carries the

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <vector>
 
 namespace lucent {
@@ -69,30 +70,64 @@ void Renderer::addSamples(int x, int y, int upTo, PixelRefinement& r, RayStats& 
 }
 
 RenderResult Renderer::render(const RenderControl& control) const {
+  const PixelRect image = wholeImage(settings_.width, settings_.height);
+  if (control.progress) control.progress->workTotal = work(image);
+  return renderRect(image, control);
+}
+
+bool Renderer::adaptiveCentres() const {
+  return settings_.adaptiveMode != AdaptiveMode::Corners && settings_.adaptive > 0.0 &&
+         settings_.samples > 1;
+}
+
+int Renderer::adaptiveMargin() const {
+  if (!adaptiveCentres()) return 0;
+  const int samples = settings_.samples;
+  int stages = 1;
+  for (int stage = std::min(kFirstStage, samples); stage < samples; stage = std::min(2 * stage, samples))
+    ++stages;
+  return stages;
+}
+
+uint64_t Renderer::work(const PixelRect& rect) const {
+  const bool corners = settings_.adaptiveMode == AdaptiveMode::Corners;
+  if (corners) return 2 * static_cast<uint64_t>(rect.pixels());
+  if (!adaptiveCentres()) return static_cast<uint64_t>(rect.pixels());
+  const PixelRect area = rect.grown(adaptiveMargin(), wholeImage(settings_.width, settings_.height));
+  return 2 * static_cast<uint64_t>(area.pixels());
+}
+
+RenderResult Renderer::renderRect(const PixelRect& rect, const RenderControl& control) const {
   const auto start = std::chrono::steady_clock::now();
   const int width = settings_.width, height = settings_.height;
+  const PixelRect whole = wholeImage(width, height);
+  if (rect.empty() || !whole.contains(rect))
+    throw std::invalid_argument("Renderer::renderRect: the rectangle is empty or leaves the image");
   const int samples = std::max(1, settings_.samples);
   // Adaptive: every pixel's centre first; then each pixel whose centre differs from one of
   // its eight neighbours' by more than the threshold is refined, in stages (see
-  // PixelRefinement and the stopping rule below).
+  // PixelRefinement and the stopping rule below). Whether a pixel goes on after a stage
+  // depends on its neighbours' samples, so the pixels of `rect` depend on pixels up to one
+  // stage count beyond it: `area` holds those (adaptiveMargin), each pixel at distance d
+  // from `rect` refined only through the stages that can still reach it.
   const bool corners = settings_.adaptiveMode == AdaptiveMode::Corners;
-  const bool adaptive = corners || (settings_.adaptive > 0.0 && samples > 1);
-  const uint64_t pixels = static_cast<uint64_t>(width) * height;
+  const bool adaptive = corners || adaptiveCentres();
+  const int margin = adaptiveMargin();
+  const PixelRect area = rect.grown(margin, whole);
 
   RenderResult result;
-  result.image = Image(width, height);
+  result.image = Image(rect.width(), rect.height());
   RenderProgress localProgress;
   RenderProgress& progress = control.progress ? *control.progress : localProgress;
-  progress.workTotal = adaptive ? 2 * pixels : pixels;
   auto cancelled = [&] { return control.cancel && control.cancel->load(std::memory_order_relaxed); };
 
   tbb::enumerable_thread_specific<RayStats> perThread;
-  // Runs body(state, x, y, stats) for every pixel, tile by tile and in row order inside a
-  // tile, where state = startTile(firstColumn, endColumn) is made once per tile (a tile's
-  // own scratch). Counts progress per tile.
-  auto forEachTile = [&](auto&& startTile, auto&& body, bool countsAsWork) {
+  // Runs body(state, x, y, stats) for every pixel of `over`, tile by tile and in row order
+  // inside a tile, where state = startTile(firstColumn, endColumn) is made once per tile (a
+  // tile's own scratch). Counts progress per tile.
+  auto forEachTile = [&](const PixelRect& over, auto&& startTile, auto&& body, bool countsAsWork) {
     tbb::parallel_for(
-        tbb::blocked_range2d<int>(0, height, kTile, 0, width, kTile),
+        tbb::blocked_range2d<int>(over.y0, over.y1, kTile, over.x0, over.x1, kTile),
         [&](const tbb::blocked_range2d<int>& tile) {
           RayStats stats;
           uint64_t done = 0;
@@ -112,29 +147,32 @@ RenderResult Renderer::render(const RenderControl& control) const {
         },
         tbb::simple_partitioner());
   };
-  // Runs body(x, y, stats) over the image in tiles.
-  auto forEachPixel = [&](auto&& body, bool countsAsWork = true) {
-    forEachTile([](int, int) { return 0; },
+  // Runs body(x, y, stats) over `over` in tiles.
+  auto forEachPixel = [&](const PixelRect& over, auto&& body, bool countsAsWork = true) {
+    forEachTile(over, [](int, int) { return 0; },
                 [&](int, int x, int y, RayStats& stats) { body(x, y, stats); }, countsAsWork);
   };
 
   Image& image = result.image;
-  // Corners mode: first the (W+1) x (H+1) pixel corners, each traced once (pixel (x, y)
-  // traces its top-left corner, the last column and row the corners beyond); then each tile
-  // splits its pixels where their corners differ (corner_sampling.h).
+  auto out = [&](int x, int y) -> Color& { return image.at(x - rect.x0, y - rect.y0); };
+  // Corners mode: first the pixel corners of `rect`, each traced once (pixel (x, y) traces
+  // its top-left corner, the last column and row the corners beyond); then each tile
+  // splits its pixels where their corners differ (corner_sampling.h). A corner's colour
+  // depends on its lattice point alone, so no margin is needed.
   auto runCorners = [&] {
     const int depth = std::clamp(settings_.adaptiveDepth, 1, kMaxAdaptiveDepth);
     const int step = 1 << (depth - 1);
-    Image cornerImage(width + 1, height + 1), encodedCorners(width + 1, height + 1);
-    forEachPixel([&](int x, int y, RayStats& stats) {
+    Image cornerImage(rect.width() + 1, rect.height() + 1), encodedCorners(rect.width() + 1, rect.height() + 1);
+    forEachPixel(rect, [&](int x, int y, RayStats& stats) {
       auto trace = [&](int i, int j) {
-        cornerImage.at(i, j) = renderLatticeSample(i * step, j * step, step, stats);
-        encodedCorners.at(i, j) = encodeForCornerTest(cornerImage.at(i, j));
+        Color& c = cornerImage.at(i - rect.x0, j - rect.y0);
+        c = renderLatticeSample(i * step, j * step, step, stats);
+        encodedCorners.at(i - rect.x0, j - rect.y0) = encodeForCornerTest(c);
       };
       trace(x, y);
-      if (x == width - 1) trace(width, y);
-      if (y == height - 1) trace(x, height);
-      if (x == width - 1 && y == height - 1) trace(width, height);
+      if (x == rect.x1 - 1) trace(x + 1, y);
+      if (y == rect.y1 - 1) trace(x, y + 1);
+      if (x == rect.x1 - 1 && y == rect.y1 - 1) trace(x + 1, y + 1);
     });
     if (cancelled()) return;
     const float threshold = static_cast<float>(settings_.adaptive);
@@ -142,12 +180,11 @@ RenderResult Renderer::render(const RenderControl& control) const {
       return renderLatticeSample(fx, fy, step, stats);
     };
     forEachTile(
+        rect,
         [&](int x0, int x1) {
-          return CornerTile(cornerImage, encodedCorners, threshold, depth, x0, x1);
+          return CornerTile(cornerImage, encodedCorners, rect.x0, rect.y0, threshold, depth, x0, x1);
         },
-        [&](CornerTile& tile, int x, int y, RayStats& stats) {
-          image.at(x, y) = tile.pixel(x, y, trace, stats);
-        },
+        [&](CornerTile& tile, int x, int y, RayStats& stats) { out(x, y) = tile.pixel(x, y, trace, stats); },
         true);
   };
 
@@ -157,22 +194,33 @@ RenderResult Renderer::render(const RenderControl& control) const {
       return;
     }
     if (!adaptive) {
-      forEachPixel([&](int x, int y, RayStats& stats) { image.at(x, y) = renderPixel(x, y, stats); });
+      forEachPixel(rect, [&](int x, int y, RayStats& stats) { out(x, y) = renderPixel(x, y, stats); });
       return;
     }
-    Image centres(width, height);
-    forEachPixel([&](int x, int y, RayStats& stats) {
-      centres.at(x, y) = renderSample(x, y, 0, 1, stats);
-    });
-    image = centres;
+    const int areaWidth = area.width();
+    auto at = [&](int x, int y) { return static_cast<size_t>(y - area.y0) * areaWidth + (x - area.x0); };
+    // How far (in pixels, the chessboard distance) (x, y) lies outside `rect`.
+    auto distance = [&](int x, int y) {
+      return std::max({rect.x0 - x, x - (rect.x1 - 1), rect.y0 - y, y - (rect.y1 - 1), 0});
+    };
+    // Whether (x, y) still decides a pixel of `rect` when decisions reach `reach` pixels
+    // further (the pixels of `rect` always do).
+    auto reaches = [&](int x, int y, int reach) {
+      const int d = distance(x, y);
+      return d == 0 || d <= reach;
+    };
+    std::vector<Color> centres(static_cast<size_t>(area.pixels()));
+    forEachPixel(area, [&](int x, int y, RayStats& stats) { centres[at(x, y)] = renderSample(x, y, 0, 1, stats); });
+    for (int y = rect.y0; y < rect.y1; ++y)
+      for (int x = rect.x0; x < rect.x1; ++x) out(x, y) = centres[at(x, y)];
     if (cancelled()) return;
     const float threshold = static_cast<float>(settings_.adaptive);
-    auto at = [&](int x, int y) { return static_cast<size_t>(y) * width + x; };
     auto differ = [&](int x, int y, int nx, int ny) {
-      return colorDifference(centres.at(x, y), centres.at(nx, ny)) > threshold;
+      return colorDifference(centres[at(x, y)], centres[at(nx, ny)]) > threshold;
     };
-    // Calls f(nx, ny) for each of the eight neighbours of (x, y) inside the image: a
-    // diagonal edge shows first between diagonal neighbours.
+    // Calls f(nx, ny) for each of the eight neighbours of (x, y) inside the image (not
+    // only inside `area`: a pixel sees the same neighbours in every rectangle): a diagonal
+    // edge shows first between diagonal neighbours.
     auto forNeighbours = [&](int x, int y, auto&& f) {
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
@@ -180,35 +228,39 @@ RenderResult Renderer::render(const RenderControl& control) const {
           if ((dx || dy) && nx >= 0 && nx < width && ny >= 0 && ny < height) f(nx, ny);
         }
     };
-    std::vector<PixelRefinement> refine(pixels);
-    std::vector<char> active(pixels, 0), next(pixels, 0);
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) {
+    std::vector<PixelRefinement> refine(centres.size());
+    std::vector<char> active(centres.size(), 0), next(centres.size(), 0);
+    for (int y = area.y0; y < area.y1; ++y)
+      for (int x = area.x0; x < area.x1; ++x) {
         PixelRefinement& r = refine[at(x, y)];
-        r.lowest = r.highest = centres.at(x, y);
-        forNeighbours(x, y, [&](int nx, int ny) { active[at(x, y)] |= differ(x, y, nx, ny); });
+        r.lowest = r.highest = centres[at(x, y)];
+        // A pixel at the margin's edge is never refined (its neighbours are not all known).
+        if (distance(x, y) < margin)
+          forNeighbours(x, y, [&](int nx, int ny) { active[at(x, y)] |= differ(x, y, nx, ny); });
       }
     // Stages of 6, 12, 24, ... samples. After a stage a pixel stops when its samples (and
     // its centre) agree within the threshold AND every neighbour whose centre differs from
     // its own shows that disagreement inside itself: the edge between the two centres is
     // then in the neighbour. Otherwise the edge may be in this pixel where its samples so
     // far missed it (a silhouette cutting off a corner that no sample fell in), so both
-    // go on.
-    bool first = true;
-    for (int stage = std::min(kFirstStage, samples);; stage = std::min(2 * stage, samples)) {
+    // go on. Stage k (from 1) refines the pixels within margin - k of `rect`: only those
+    // still decide a pixel of `rect` (one stage's decision reaches one pixel further).
+    int k = 1;
+    for (int stage = std::min(kFirstStage, samples);; stage = std::min(2 * stage, samples), ++k) {
+      const int reach = margin - k;
       forEachPixel(
+          area,
           [&](int x, int y, RayStats& stats) {
-            if (active[at(x, y)]) addSamples(x, y, stage, refine[at(x, y)], stats);
+            if (active[at(x, y)] && reaches(x, y, reach)) addSamples(x, y, stage, refine[at(x, y)], stats);
           },
-          first);
-      first = false;
+          k == 1);
       if (cancelled() || stage == samples) break;
       bool any = false;
-      for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
+      for (int y = area.y0; y < area.y1; ++y)
+        for (int x = area.x0; x < area.x1; ++x) {
           const size_t i = at(x, y);
           next[i] = 0;
-          if (!active[i]) continue;
+          if (!active[i] || !reaches(x, y, reach - 1)) continue;
           bool settled = !refine[i].disagrees(threshold);
           forNeighbours(x, y, [&](int nx, int ny) {
             if (settled && differ(x, y, nx, ny) && !refine[at(nx, ny)].disagrees(threshold))
@@ -220,10 +272,9 @@ RenderResult Renderer::render(const RenderControl& control) const {
       active.swap(next);
       if (!any) break;
     }
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x)
-        if (const PixelRefinement& r = refine[at(x, y)]; r.taken > 0)
-          image.at(x, y) = r.sum / static_cast<float>(r.taken);
+    for (int y = rect.y0; y < rect.y1; ++y)
+      for (int x = rect.x0; x < rect.x1; ++x)
+        if (const PixelRefinement& r = refine[at(x, y)]; r.taken > 0) out(x, y) = r.sum / static_cast<float>(r.taken);
   };
 
   if (control.threads > 0) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "image.h"
+#include "pixel_rect.h"
 #include "projection.h"
 #include "ray_stats.h"
 #include "tracer.h"
@@ -45,8 +46,21 @@ class Renderer {
   Renderer(const World& world, const Camera& camera, ImageMapCache* textures = nullptr);
 
   // The whole image. Bit-identical for any thread count and from run to run: a pixel's
-  // value depends only on its coordinates.
+  // value depends only on its coordinates. Sets control.progress's workTotal.
   RenderResult render(const RenderControl& control = {}) const;
+
+  // The pixels of `rect` (inside the image, not empty) as an image of its size, each equal
+  // bit for bit to the same pixel of render(): regions, checkpoint tiles and the tiles of
+  // a distributed render are rendered with this. Leaves workTotal to the caller (work()).
+  RenderResult renderRect(const PixelRect& rect, const RenderControl& control = {}) const;
+
+  // The pixel passes renderRect(rect) counts into workDone (for a progress bar's total).
+  uint64_t work(const PixelRect& rect) const;
+
+  // How many pixels around a rectangle its pixels depend on: adaptive supersampling of
+  // centres decides after each stage whether a pixel goes on from its neighbours' samples,
+  // so each stage reaches one pixel further (the number of stages; 0 in the other modes).
+  int adaptiveMargin() const;
 
   // Pixel (x, y): the average of its `samples` camera samples.
   Color renderPixel(int x, int y, RayStats& stats) const;
@@ -71,6 +85,7 @@ class Renderer {
     int taken = 0;
     bool disagrees(float threshold) const { return maxComponent(highest - lowest) > threshold; }
   };
+  bool adaptiveCentres() const;  // adaptive supersampling of pixel centres
   // The sample at film position (fx, fy) / step (corners mode: a point of its lattice).
   Color renderLatticeSample(int fx, int fy, int step, RayStats& stats) const;
   // Traces samples r.taken .. upTo-1 of pixel (x, y) into r.

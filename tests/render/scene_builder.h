@@ -93,4 +93,35 @@ inline bool sameBits(const Image& a, const Image& b) {
          std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color)) == 0;
 }
 
+// Everything that could make threads disagree: jittered area light, supersampling,
+// adaptive refinement, glass, mirrors, textures, transparent shadows.
+inline void buildBusyScene(Scene& scene) {
+  scene.render.width = 40;
+  scene.render.height = 30;
+  scene.render.samples = 4;
+  scene.render.adaptive = 0.05;
+  scene.cameras.push_back(lookingFrom(Vec3(0, 2, 6), Vec3(0, 0.5, 0), 50));
+  Material floor;
+  floor.diffuse = Color(1.0f);
+  floor.texture = CheckerTexture{Color(1.0f), Color(0.2f), 1.0};
+  floor.ambient = Color(0.1f);
+  addShape(scene, PlaneSpec{Vec3(0, 1, 0), 0.0}, addMaterial(scene, floor));
+  Material glass;
+  glass.transmissive = Color(0.9f);
+  glass.reflective = Color(0.1f);
+  glass.ior = 1.5;
+  glass.fresnel = true;
+  glass.absorption = Color(0.1f, 0.2f, 0.3f);
+  glass.specular = Color(1.0f);
+  glass.shininess = 200;
+  addShape(scene, SphereSpec{Vec3(1.2, 0.7, 0), 0.7}, addMaterial(scene, glass));
+  Material brick;
+  brick.diffuse = Color(1.0f, 0.3f, 0.2f);
+  brick.reflective = Color(0.2f);
+  addShape(scene, BoxSpec{Vec3(-2, 0, -1), Vec3(-0.5, 1.5, 0.5)}, addMaterial(scene, brick));
+  scene.lights.push_back(areaLight(Vec3(3, 6, 4), Vec3(1.5, 0, 0), Vec3(0, 0, 1.5), 3, 3, true));
+  scene.lights.push_back(pointLight(Vec3(-4, 5, 2), Color(0.4f)));
+}
+
+
 }  // namespace lucent::test
