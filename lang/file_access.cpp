@@ -61,7 +61,14 @@ FileAccess::Resolved FileAccess::resolve(const std::string& written, const fs::p
     return out;
   }
   out.path = c;
+  std::lock_guard<std::mutex> lock(grantedMutex_);
+  if (std::find(granted_.begin(), granted_.end(), c) == granted_.end()) granted_.push_back(c);
   return out;
+}
+
+std::vector<fs::path> FileAccess::granted() const {
+  std::lock_guard<std::mutex> lock(grantedMutex_);
+  return granted_;
 }
 
 }  // namespace lucent

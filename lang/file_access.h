@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -24,9 +25,15 @@ class FileAccess {
 
   const std::vector<std::filesystem::path>& roots() const { return roots_; }
 
+  // Every path resolve() has granted, each once, in the order first granted: the files the
+  // scene reads (a checkpoint's digest covers them; a distributed render sends them).
+  std::vector<std::filesystem::path> granted() const;
+
  private:
   bool allowed(const std::filesystem::path& canonical) const;
   std::vector<std::filesystem::path> roots_;
+  mutable std::mutex grantedMutex_;  // shapes may be read on several threads
+  mutable std::vector<std::filesystem::path> granted_;
 };
 
 // The canonical form of an existing or not-yet-existing path (weakly_canonical of the

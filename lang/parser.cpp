@@ -11,6 +11,8 @@
 #include "povray_names.h"
 #include "scene_loader.h"
 
+#include "scenegraph/digest.h"
+
 #include "scenegraph/light_placement.h"
 #include "scenegraph/located_error.h"
 
@@ -96,7 +98,31 @@ Diagnostics sorted(const Diagnostics& in, const std::vector<std::unique_ptr<Sour
   return out;
 }
 
-ParseResult parseText(std::string text, const std::string& path, const ParseOptions& options) {
+// Feeds the elements, attributes and text under `root` to `d`, comments and layout left
+// out. Iterative: a file may nest elements far deeper than the stack allows recursion.
+void digestXml(pugi::xml_node root, Digest& d) {
+  for (pugi::xml_node n = root.first_child(); n;) {
+    if (n.type() == pugi::node_element) {
+      d.field("<").field(n.name());
+      for (pugi::xml_attribute a : n.attributes()) d.field(a.name()).field(a.value());
+      if (n.first_child()) {
+        n = n.first_child();
+        continue;
+      }
+      d.field(">");
+    } else if (n.type() == pugi::node_pcdata || n.type() == pugi::node_cdata) {
+      d.field("text").field(n.value());
+    }
+    while (!n.next_sibling()) {
+      n = n.parent();
+      if (n == root) return;
+      d.field(">");
+    }
+    n = n.next_sibling();
+  }
+}
+
+ParseResult parseText(std::string text, const std::string& path, const ParseOptions& options, bool isFile) {
   ParseResult result;
   auto scene = std::make_unique<Scene>();
   scene->file = path;
@@ -138,6 +164,15 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
   }
 
   result.diagnostics = sorted(diags, loader.files());
+  if (isFile) result.sources.push_back(canonicalPath(path));
+  for (const fs::path& f : files.granted()) {
+    const bool source = loader.sourcePaths().count(f) > 0;
+    std::vector<fs::path>& list = source ? result.sources : result.dataFiles;
+    if (std::find(list.begin(), list.end(), f) == list.end()) list.push_back(f);
+  }
+  Digest digest;
+  for (const auto& f : loader.files()) digestXml(f->root().parent(), digest.field("file"));
+  result.xmlDigest = digest.value();
   result.animation = scene->animation;
   result.frame = scene->frame;
   result.clock = scene->clock;
@@ -156,12 +191,12 @@ ParseResult parseSceneFile(const std::string& path, const ParseOptions& options)
     result.diagnostics.error(SourceLoc{path, 0, 0}, "cannot read the scene file: " + *problem);
     return result;
   }
-  return parseText(std::move(text), path, options);
+  return parseText(std::move(text), path, options, true);
 }
 
 ParseResult parseSceneString(const std::string& xml, const std::string& virtualPath,
                              const ParseOptions& options) {
-  return parseText(xml, virtualPath, options);
+  return parseText(xml, virtualPath, options, false);
 }
 
 }  // namespace lucent

@@ -6,6 +6,8 @@
 
 #include "scenegraph/scene.h"
 
+#include <cstdint>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
@@ -39,6 +41,14 @@ struct ParseResult {
   Animation animation;
   int frame = 1;
   double clock = 0.0;
+  // Every file read, by canonical path: `sources`, the scene file (when it is one) and the
+  // files it includes; `dataFiles`, the meshes, images, fonts and height maps it reads, in
+  // the order first read.
+  std::vector<std::filesystem::path> sources, dataFiles;
+  // A digest of the scene's XML after includes (elements, attributes and text of the scene
+  // file and every file it includes, in order; comments and layout left out): with the -D
+  // values, the frame and the files read, everything the expanded scene is made of.
+  uint64_t xmlDigest = 0;
 };
 
 // Parses and validates the scene file at `path`.

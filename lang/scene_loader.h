@@ -32,6 +32,8 @@ class SceneLoader {
   const std::vector<std::unique_ptr<SourceFile>>& files() const { return files_; }
   // The files whose root is one <scene>: the others were refused whole, with one error.
   const std::vector<const SourceFile*>& sceneFiles() const { return scenes_; }
+  // The canonical paths of the scene file and every file it includes.
+  const std::set<std::filesystem::path>& sourcePaths() const { return seen_; }
 
  private:
   struct Open {
