@@ -59,6 +59,9 @@ LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) 
 
   LoadedScene loaded;
   loaded.scene = std::move(parsed.scene);
+  loaded.sources = std::move(parsed.sources);
+  loaded.dataFiles = std::move(parsed.dataFiles);
+  loaded.xmlDigest = parsed.xmlDigest;
   Scene& scene = *loaded.scene;
   RenderSettings& r = scene.render;
   if (request.width) r.width = *request.width;

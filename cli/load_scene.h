@@ -7,10 +7,13 @@
 
 #include "scenegraph/scene.h"
 
+#include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace lucent {
 class MeshFileCache;
@@ -34,6 +37,10 @@ struct SceneRequest {
 struct LoadedScene {
   std::unique_ptr<Scene> scene;
   const Camera* camera = nullptr;  // in *scene
+  // What the scene was made of (ParseResult::sources, dataFiles and xmlDigest): a
+  // checkpoint's identity, and what a distributed render sends to the other processes.
+  std::vector<std::filesystem::path> sources, dataFiles;
+  uint64_t xmlDigest = 0;
 };
 
 // Throws UsageError for an override out of range (the first thing loadScene does, and

@@ -151,6 +151,19 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--frames", render.frames,
                         "Render only these frames of an animation: F or A..B (default: all)")
       ->type_name("A..B");
+  renderCmd->add_option("--region", render.region,
+                        "Render only these pixels of the image (right and bottom bounds excluded), "
+                        "written as an image of their size")
+      ->type_name("X0,Y0,X1,Y1");
+  renderCmd->add_option("--tile-size", render.tileSize,
+                        "Pixels a side of the tiles a checkpoint keeps (default 64)");
+  renderCmd->add_flag("--resume", render.resume,
+                      "Continue an interrupted render from the checkpoint beside its output");
+  renderCmd->add_option("--checkpoint-interval", render.checkpointInterval,
+                        "Seconds between saves of the checkpoint (default 60; 0: keep none)");
+  renderCmd->add_option("--tile-costs", render.tileCosts,
+                        "Write each tile's render time to FILE (for bench/tile_schedule)")
+      ->type_name("FILE");
   addCommonOptions(renderCmd, defines, allowPaths);
 
   CheckOptions check;

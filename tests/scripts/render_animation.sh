@@ -150,7 +150,8 @@ grep -q "^lucent: frame 4 of 5 (clock 0.75) is invalid$" "$tmp/stderr" || fail "
 # render stops at that frame, the frames before it written.
 mkdir "$tmp/h"
 expect 2 "render an animation invalid from frame 4" -- "$lucent" render "$tmp/shrinking.xml" -o "$tmp/h/out.png" -q
-[ "$(files "$tmp/h")" = "out0001.png out0002.png out0003.png " ] || fail "render invalid: $(files "$tmp/h")"
+# The checkpoint records the frames written, for --resume (render_checkpoint.sh).
+[ "$(files "$tmp/h")" = "out.png.checkpoint out0001.png out0002.png out0003.png " ] || fail "render invalid: $(files "$tmp/h")"
 grep -q "^lucent: stopped at frame 4; 3 of 5 frames written$" "$tmp/stderr" || fail "render invalid: $(cat "$tmp/stderr")"
 
 # export-pov --frame: that frame (default 1), and out of range is a usage error.

@@ -100,9 +100,14 @@ interrupt() {
   [ "$status" -eq 3 ] || fail "$name: exit status $status, expected 3; stderr: $(cat "$tmp/stderr")"
   grep -q "interrupted; '$tmp/big.png' left unchanged" "$tmp/stderr" || fail "$name: message: $(cat "$tmp/stderr")"
   cmp -s "$tmp/big.png" "$tmp/big-reference.png" || fail "$name changed the old image"
-  # Nothing else is written: no partial image, no temporary file.
-  extra=$(find "$tmp" -newer "$tmp/big-reference.png" -type f ! -name stdout ! -name stderr)
+  # Nothing else is written but the checkpoint (its tiles for --resume: render_checkpoint.sh):
+  # no partial image, no temporary file.
+  extra=$(find "$tmp" -newer "$tmp/big-reference.png" -type f ! -name stdout ! -name stderr ! -name big.png.checkpoint)
   [ -z "$extra" ] || fail "$name left files behind: $extra"
+  head -c 20 "$tmp/big.png.checkpoint" | grep -q "^lucent checkpoint 1" || fail "$name left no checkpoint"
+  grep -q "the checkpoint '$tmp/big.png.checkpoint' keeps the finished tiles" "$tmp/stderr" ||
+    fail "$name: no word of the checkpoint: $(cat "$tmp/stderr")"
+  rm -f "$tmp/big.png.checkpoint"
 }
 interrupt INT 2 "Ctrl-C"
 interrupt TERM $((1 << 14)) "SIGTERM"
