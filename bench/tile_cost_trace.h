@@ -10,7 +10,8 @@
 // '#' lines are comments, except the header: a '#' line whose first word is `image`, `tile`,
 // `threads` or `load`. It holds key/value pairs in any order (`image` takes two values,
 // every other key one; unknown keys are ignored). `image`, `tile` and `threads` are
-// required; `load` (seconds to load the scene) is optional. The column line
+// required; `load` (seconds to load the scene) is optional; the value of an unknown key
+// runs to the next known one (`image`, `tile`, `threads`, `load`, `samples`). The column line
 // `x0 y0 x1 y1 seconds` is optional. Each tile line gives half-open pixel bounds on the
 // grid of `tile`-sized tiles (edge tiles smaller) and the tile's wall time on `threads`
 // threads; every tile of the image has exactly one line.
@@ -155,11 +156,17 @@ inline CostGrid parseTileCosts(std::istream& in, const std::string& name) {
                                            std::to_string(headerLine) + ")");
       headerLine = line;
       std::map<std::string, std::vector<std::string>> keys;
+      auto known = [](const std::string& k) {
+        return k == "image" || k == "tile" || k == "threads" || k == "load" || k == "samples";
+      };
       for (size_t i = 0; i < w.size();) {
         const std::string key = w[i];
-        const size_t n = key == "image" ? 2 : 1;
+        size_t n = key == "image" ? 2 : 1;
         if (i + n >= w.size())
           throw fail(line, "header key '" + key + "' has no value");
+        // An unknown key's value (a scene path with spaces) runs to the next known key.
+        if (!known(key))
+          while (i + n + 1 < w.size() && !known(w[i + n + 1])) ++n;
         if (keys.count(key)) throw fail(line, "header key '" + key + "' given twice");
         keys[key] = std::vector<std::string>(w.begin() + long(i + 1), w.begin() + long(i + 1 + n));
         i += 1 + n;
