@@ -36,9 +36,9 @@ HotRegion parseHot(const std::string& s) {
 }
 
 std::string what(const CostGrid& g, const std::string& source) {
-  return fmt::format("{} ({}x{}, {} tiles of {} px recorded on {} thread{}, {:.4g} s in all)",
-                     source, g.width, g.height, g.count(), g.tile, g.threads,
-                     g.threads == 1 ? "" : "s", g.total());
+  return fmt::format("{}: {}x{}, {} tiles of {} px, {:.4g} s in all on {} thread{}", source,
+                     g.width, g.height, g.count(), g.tile, g.total(), g.threads,
+                     g.threads == 1 ? "" : "s");
 }
 
 }  // namespace
@@ -115,8 +115,8 @@ int main(int argc, char** argv) {
       grid = syntheticGrid(synthetic[0], synthetic[1], recordTile, pixelCost, hot);
       std::string hots;
       for (const HotRegion& h : hot)
-        hots += fmt::format(", region {},{}-{},{} costs {}x", h.x0, h.y0, h.x1, h.y1, h.factor);
-      source = fmt::format("synthetic, {:.3g} s per pixel{}", pixelCost, hots);
+        hots += fmt::format(", {}x in x {}-{} y {}-{}", h.factor, h.x0, h.x1, h.y0, h.y1);
+      source = fmt::format("synthetic ({:.3g} s a pixel{})", pixelCost, hots);
     }
     if (ranksList.empty())
       for (int r = 2; r <= 1024; r *= 2) ranksList.push_back(r);
@@ -163,6 +163,8 @@ int main(int argc, char** argv) {
   std::vector<CostGrid> grids;
   for (int t : tileList) grids.push_back(coarsen(grid, t / grid.tile));
 
+  // TSV rows grouped by tile size, so that a plot draws each size as one line.
+  std::vector<std::string> rows(grids.size());
   std::string head = "| ranks |", rule = "| --- |";
   for (int t : tileList) head += fmt::format(" {} px |", t), rule += " --- |";
   fmt::print("{} best tile | its makespan | rank 0 busy |\n{} --- | --- | --- |\n", head, rule);
@@ -177,13 +179,15 @@ int main(int argc, char** argv) {
       for (int i = 0; i < g.count(); ++i) pixels[size_t(i)] = g.pixels(i);
       const ScheduleResult res = simulateSchedule(g.cost, pixels, model, net);
       line += fmt::format(" {:.3f} |", res.efficiency);
-      tsv.row("{}\t{}\t{}\t{:.6f}\t{:.6g}\t{:.6g}\t{:.6g}\t{:.4f}", r, g.tile, g.count(),
-              res.efficiency, res.makespan, res.ideal, res.start, res.rank0Busy);
+      rows[k] += fmt::format("{}\t{}\t{}\t{:.6f}\t{:.6g}\t{:.6g}\t{:.6g}\t{:.4f}\n", r, g.tile,
+                             g.count(), res.efficiency, res.makespan, res.ideal, res.start,
+                             res.rank0Busy);
       if (!bestTile || res.efficiency > best.efficiency) bestTile = g.tile, best = res;
     }
     fmt::print("{} {} px ({:.3f}) | {:.4g} s | {:.0f}% |\n", line, bestTile, best.efficiency,
                best.makespan, 100 * best.rank0Busy);
   }
+  for (const std::string& block : rows) tsv.row("{}", block.substr(0, block.size() - 1));
 
   fmt::print(
       "\nWhere this model is optimistic (each point makes the prediction better than a real run on the same parameters):\n"
