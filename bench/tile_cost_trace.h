@@ -176,7 +176,7 @@ inline CostGrid parseTileCosts(std::istream& in, const std::string& name) {
         if (it == keys.end()) throw fail(line, "the header has no '" + key + "' key");
         long v = 0;
         if (!toInt(it->second[k], v) || v < 1 || v > 1000000)
-          throw fail(line, "header key '" + key + "' needs a positive integer, got '" +
+          throw fail(line, "header key '" + key + "' needs a positive integer (at most 1000000), got '" +
                                it->second[k] + "'");
         return int(v);
       };
@@ -190,7 +190,7 @@ inline CostGrid parseTileCosts(std::istream& in, const std::string& name) {
                                it->second[0] + "'");
         g.hasLoad = true;
       }
-      if (long(g.cols()) * g.rows() > 50000000L) throw fail(line, "too many tiles");
+      if (long(g.cols()) * g.rows() > 10000000L) throw fail(line, "more than 10 million tiles");
       g.cost.assign(size_t(g.count()), 0.0);
       lineOf.assign(size_t(g.count()), 0);
       continue;
