@@ -63,7 +63,8 @@ inline CostGrid coarsen(const CostGrid& g, int factor) {
   out.cost.assign(size_t(out.count()), 0.0);
   for (int cy = 0; cy < g.rows(); ++cy)
     for (int cx = 0; cx < g.cols(); ++cx)
-      out.cost[size_t((cy / factor) * out.cols() + cx / factor)] += g.cost[size_t(cy * g.cols() + cx)];
+      out.cost[size_t((cy / factor) * out.cols() + cx / factor)] +=
+          g.cost[size_t(cy * g.cols() + cx)];
   return out;
 }
 
@@ -147,13 +148,16 @@ inline CostGrid parseTileCosts(std::istream& in, const std::string& name) {
     if (w.empty()) continue;
     if (w[0][0] == '#') {
       // "#image ..." and "# image ..." are the same line.
-      if (w[0].size() > 1) w[0] = w[0].substr(1);
-      else w.erase(w.begin());
-      const bool header = !w.empty() && (w[0] == "image" || w[0] == "tile" ||
-                                         w[0] == "threads" || w[0] == "load");
+      if (w[0].size() > 1)
+        w[0] = w[0].substr(1);
+      else
+        w.erase(w.begin());
+      const bool header =
+          !w.empty() && (w[0] == "image" || w[0] == "tile" || w[0] == "threads" || w[0] == "load");
       if (!header) continue;
-      if (headerLine) throw fail(line, "a second header line (the first is line " +
-                                           std::to_string(headerLine) + ")");
+      if (headerLine)
+        throw fail(line,
+                   "a second header line (the first is line " + std::to_string(headerLine) + ")");
       headerLine = line;
       std::map<std::string, std::vector<std::string>> keys;
       auto known = [](const std::string& k) {
@@ -162,8 +166,7 @@ inline CostGrid parseTileCosts(std::istream& in, const std::string& name) {
       for (size_t i = 0; i < w.size();) {
         const std::string key = w[i];
         size_t n = key == "image" ? 2 : 1;
-        if (i + n >= w.size())
-          throw fail(line, "header key '" + key + "' has no value");
+        if (i + n >= w.size()) throw fail(line, "header key '" + key + "' has no value");
         // An unknown key's value (a scene path with spaces) runs to the next known key.
         if (!known(key))
           while (i + n + 1 < w.size() && !known(w[i + n + 1])) ++n;
@@ -176,7 +179,8 @@ inline CostGrid parseTileCosts(std::istream& in, const std::string& name) {
         if (it == keys.end()) throw fail(line, "the header has no '" + key + "' key");
         long v = 0;
         if (!toInt(it->second[k], v) || v < 1 || v > 1000000)
-          throw fail(line, "header key '" + key + "' needs a positive integer (at most 1000000), got '" +
+          throw fail(line, "header key '" + key +
+                               "' needs a positive integer (at most 1000000), got '" +
                                it->second[k] + "'");
         return int(v);
       };
@@ -186,8 +190,8 @@ inline CostGrid parseTileCosts(std::istream& in, const std::string& name) {
       g.threads = positive("threads", 0);
       if (auto it = keys.find("load"); it != keys.end()) {
         if (!toNumber(it->second[0], g.loadSeconds) || g.loadSeconds < 0)
-          throw fail(line, "header key 'load' needs seconds (at least 0), got '" +
-                               it->second[0] + "'");
+          throw fail(line,
+                     "header key 'load' needs seconds (at least 0), got '" + it->second[0] + "'");
         g.hasLoad = true;
       }
       if (long(g.cols()) * g.rows() > 10000000L) throw fail(line, "more than 10 million tiles");
@@ -200,13 +204,14 @@ inline CostGrid parseTileCosts(std::istream& in, const std::string& name) {
         throw fail(line, "the column line must read 'x0 y0 x1 y1 seconds'");
       continue;
     }
-    if (!headerLine) throw fail(line, "a tile line before the '# image W H tile T threads N' header");
+    if (!headerLine)
+      throw fail(line, "a tile line before the '# image W H tile T threads N' header");
     long b[4];
     double s = 0;
     if (w.size() != 5 || !toInt(w[0], b[0]) || !toInt(w[1], b[1]) || !toInt(w[2], b[2]) ||
         !toInt(w[3], b[3]) || !toNumber(w[4], s))
-      throw fail(line, "expected 'x0 y0 x1 y1 seconds' (four integers and a number), got '" +
-                           text + "'");
+      throw fail(line,
+                 "expected 'x0 y0 x1 y1 seconds' (four integers and a number), got '" + text + "'");
     if (s < 0) throw fail(line, "negative seconds");
     const long x0 = b[0], y0 = b[1], x1 = b[2], y1 = b[3];
     if (x0 < 0 || y0 < 0 || x0 >= g.width || y0 >= g.height || x0 % g.tile || y0 % g.tile ||
@@ -216,12 +221,14 @@ inline CostGrid parseTileCosts(std::istream& in, const std::string& name) {
                            "-pixel grid of the " + std::to_string(g.width) + "x" +
                            std::to_string(g.height) + " image");
     const size_t i = size_t((y0 / g.tile) * g.cols() + x0 / g.tile);
-    if (lineOf[i]) throw fail(line, "tile " + w[0] + " " + w[1] + " already given on line " +
-                                        std::to_string(lineOf[i]));
+    if (lineOf[i])
+      throw fail(line, "tile " + w[0] + " " + w[1] + " already given on line " +
+                           std::to_string(lineOf[i]));
     lineOf[i] = line;
     g.cost[i] = s;
   }
-  if (!headerLine) throw std::runtime_error(name + ": no '# image W H tile T threads N' header line");
+  if (!headerLine)
+    throw std::runtime_error(name + ": no '# image W H tile T threads N' header line");
   const long missing = std::count(lineOf.begin(), lineOf.end(), 0);
   if (missing) {
     const size_t i = size_t(std::find(lineOf.begin(), lineOf.end(), 0) - lineOf.begin());

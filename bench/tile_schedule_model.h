@@ -38,12 +38,12 @@ constexpr double kPixelBytes = 12.0;
 constexpr double kRequestBytes = 16.0;
 
 struct NetworkModel {
-  double latency = 50e-6;            // seconds per message, Ethernet-class (10 GbE, TCP)
-  double bandwidth = 1.25e9;         // bytes per second of a link, 10 Gb/s
-  double rank0Fixed = 2e-6;          // rank 0's cost per message it handles
-  double rank0MemBandwidth = 5e9;    // bytes per second rank 0 copies pixels into the image
-  double sceneBytes = 1e6;           // bytes of the scene broadcast to every rank
-  double loadSeconds = 0.0;          // seconds each rank spends loading the scene
+  double latency = 50e-6;          // seconds per message, Ethernet-class (10 GbE, TCP)
+  double bandwidth = 1.25e9;       // bytes per second of a link, 10 Gb/s
+  double rank0Fixed = 2e-6;        // rank 0's cost per message it handles
+  double rank0MemBandwidth = 5e9;  // bytes per second rank 0 copies pixels into the image
+  double sceneBytes = 1e6;         // bytes of the scene broadcast to every rank
+  double loadSeconds = 0.0;        // seconds each rank spends loading the scene
 };
 
 struct ScheduleModel {
@@ -55,19 +55,19 @@ struct ScheduleModel {
 };
 
 struct ScheduleResult {
-  double makespan = 0;        // seconds until rank 0 holds every tile
-  double ideal = 0;           // total render seconds / ranks
-  double efficiency = 0;      // ideal / makespan
-  double start = 0;           // seconds of broadcast and load before the first tile
-  double rank0Busy = 0;       // fraction of the makespan rank 0's coordinator was busy
+  double makespan = 0;    // seconds until rank 0 holds every tile
+  double ideal = 0;       // total render seconds / ranks
+  double efficiency = 0;  // ideal / makespan
+  double start = 0;       // seconds of broadcast and load before the first tile
+  double rank0Busy = 0;   // fraction of the makespan rank 0's coordinator was busy
   int maxTilesPerRank = 0;
 };
 
 // Simulates rendering tiles (row order; `cost[i]` seconds on recordThreads threads,
 // `pixels[i]` pixels) on the model's ranks.
 inline ScheduleResult simulateSchedule(const std::vector<double>& cost,
-                                       const std::vector<long>& pixels,
-                                       const ScheduleModel& s, const NetworkModel& net) {
+                                       const std::vector<long>& pixels, const ScheduleModel& s,
+                                       const NetworkModel& net) {
   if (cost.size() != pixels.size()) throw std::invalid_argument("cost and pixel counts differ");
   if (s.ranks < 1) throw std::invalid_argument("at least one rank");
   if (s.ranks == 1 && !s.rank0Renders) throw std::invalid_argument("one rank that does not render");
@@ -82,7 +82,14 @@ inline ScheduleResult simulateSchedule(const std::vector<double>& cost,
   auto renderTime = [&](int t) { return cost[size_t(t)] * speed; };
   auto wire = [&](double bytes) { return net.latency + bytes / net.bandwidth; };
 
-  enum Kind : uint8_t { Ready, RequestArrives, RequestServed, TileArrives, RenderDone, ResultArrives };
+  enum Kind : uint8_t {
+    Ready,
+    RequestArrives,
+    RequestServed,
+    TileArrives,
+    RenderDone,
+    ResultArrives
+  };
   struct Event {
     double t;
     uint64_t seq;  // ties keep the order they were made in
@@ -92,7 +99,9 @@ inline ScheduleResult simulateSchedule(const std::vector<double>& cost,
   };
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events;
   uint64_t seq = 0;
-  auto at = [&](double t, Kind k, int rank, int tile = -1) { events.push({t, seq++, k, rank, tile}); };
+  auto at = [&](double t, Kind k, int rank, int tile = -1) {
+    events.push({t, seq++, k, rank, tile});
+  };
 
   struct Rank {
     std::deque<int> queued;
@@ -101,10 +110,10 @@ inline ScheduleResult simulateSchedule(const std::vector<double>& cost,
     double linkFree = 0;
   };
   std::vector<Rank> rank(size_t(s.ranks));
-  int next = 0;            // the next tile rank 0 hands out
-  double coordFree = 0;    // when rank 0's coordinator is next free
+  int next = 0;          // the next tile rank 0 hands out
+  double coordFree = 0;  // when rank 0's coordinator is next free
   double coordBusy = 0;
-  double done = 0;         // when the last tile reached rank 0
+  double done = 0;  // when the last tile reached rank 0
   int stored = 0;
 
   auto send = [&](int r, double now, double bytes, Kind k, int tile) {
@@ -132,7 +141,8 @@ inline ScheduleResult simulateSchedule(const std::vector<double>& cost,
     w.tiles++;
     at(now + renderTime(t), RenderDone, r, t);
     // Rank 0 takes its tiles from the queue; a worker asks ahead for the next one.
-    if (r != 0 && s.prefetch && !w.noMore && w.outstanding == 0 && w.queued.empty()) request(r, now);
+    if (r != 0 && s.prefetch && !w.noMore && w.outstanding == 0 && w.queued.empty())
+      request(r, now);
   };
 
   const int rounds = s.ranks > 1 ? int(std::ceil(std::log2(double(s.ranks)) - 1e-12)) : 0;
@@ -157,7 +167,8 @@ inline ScheduleResult simulateSchedule(const std::vector<double>& cost,
         // The request for the next tile leaves before this tile's pixels.
         startNext(e.rank, e.t);
         if (!w.rendering && !w.noMore && w.outstanding == 0) request(e.rank, e.t);
-        if (e.kind == RenderDone) send(e.rank, e.t, kPixelBytes * double(pixels[size_t(e.tile)]), ResultArrives, e.tile);
+        if (e.kind == RenderDone)
+          send(e.rank, e.t, kPixelBytes * double(pixels[size_t(e.tile)]), ResultArrives, e.tile);
         break;
       case RequestArrives:
         at(coordinate(e.t, net.rank0Fixed), RequestServed, e.rank);
@@ -169,13 +180,16 @@ inline ScheduleResult simulateSchedule(const std::vector<double>& cost,
       }
       case TileArrives:
         w.outstanding--;
-        if (e.tile < 0) w.noMore = true;
-        else w.queued.push_back(e.tile);
+        if (e.tile < 0)
+          w.noMore = true;
+        else
+          w.queued.push_back(e.tile);
         if (!w.rendering) startNext(e.rank, e.t);
         break;
       case ResultArrives:
-        done = std::max(done, coordinate(e.t, net.rank0Fixed + kPixelBytes * double(pixels[size_t(e.tile)]) /
-                                                            net.rank0MemBandwidth));
+        done = std::max(
+            done, coordinate(e.t, net.rank0Fixed + kPixelBytes * double(pixels[size_t(e.tile)]) /
+                                                       net.rank0MemBandwidth));
         ++stored;
         break;
     }

@@ -1,13 +1,12 @@
 // The distributed-render model of bench/tile_schedule: cases whose makespan is known in
 // closed form, and the tile-cost trace reader's answers to good and bad files.
-#include "bench/tile_cost_trace.h"
-#include "bench/tile_schedule_model.h"
-
 #include <catch2/catch.hpp>
-
 #include <limits>
 #include <random>
 #include <sstream>
+
+#include "bench/tile_cost_trace.h"
+#include "bench/tile_schedule_model.h"
 
 using namespace lucent::bench;
 
@@ -48,7 +47,8 @@ TEST_CASE("equal tiles on a free network take ceil of tiles over ranks rounds") 
         ScheduleModel model;
         model.ranks = ranks;
         model.prefetch = prefetch;
-        const ScheduleResult r = simulate(std::vector<double>(size_t(tiles), 1.0), model, freeNetwork());
+        const ScheduleResult r =
+            simulate(std::vector<double>(size_t(tiles), 1.0), model, freeNetwork());
         const int rounds = (tiles + ranks - 1) / ranks;
         INFO("ranks " << ranks << ", tiles " << tiles << ", prefetch " << prefetch);
         CHECK(r.makespan == double(rounds));
@@ -210,12 +210,15 @@ TEST_CASE("a tile-cost trace is read with comments and header keys in any order"
 }
 
 TEST_CASE("a malformed tile line is an error with its line number") {
-  const std::string tiles = "0 0 16 16 1\n16 0 32 16 1\n32 0 40 16 1\n0 16 16 20 1\n16 16 32 20 1\n";
+  const std::string tiles =
+      "0 0 16 16 1\n16 0 32 16 1\n32 0 40 16 1\n0 16 16 20 1\n16 16 32 20 1\n";
   CHECK_NOTHROW(parse(std::string(kHeader) + tiles + "32 16 40 20 1\n"));
   CHECK_THROWS_WITH(parse(std::string(kHeader) + tiles + "32 16 40 20 fast\n"),
                     Catch::StartsWith("costs.txt:8: expected 'x0 y0 x1 y1 seconds'"));
-  CHECK_THROWS_WITH(parse(std::string(kHeader) + "0 0 16 16\n"), Catch::StartsWith("costs.txt:3: expected"));
-  CHECK_THROWS_WITH(parse(std::string(kHeader) + "0 0 16 16 -1\n"), Catch::StartsWith("costs.txt:3: negative"));
+  CHECK_THROWS_WITH(parse(std::string(kHeader) + "0 0 16 16\n"),
+                    Catch::StartsWith("costs.txt:3: expected"));
+  CHECK_THROWS_WITH(parse(std::string(kHeader) + "0 0 16 16 -1\n"),
+                    Catch::StartsWith("costs.txt:3: negative"));
   CHECK_THROWS_WITH(parse(std::string(kHeader) + "8 0 24 16 1\n"),
                     Catch::StartsWith("costs.txt:3: bounds 8 0 24 16 are not a tile"));
   CHECK_THROWS_WITH(parse(std::string(kHeader) + "0 0 16 16 1\n0 0 16 16 2\n"),
