@@ -128,12 +128,12 @@ PixelRect frameArea(const RenderRun& run, const RenderSettings& r) {
 
 // One line per tile, for bench/tile_schedule (docs/distributed.md).
 void writeTileCosts(const std::string& path, const std::vector<std::pair<PixelRect, double>>& costs,
-                    const RenderSettings& r, int threads, const std::string& scene, double loadSeconds) {
+                    const RenderSettings& r, int tileSize, int threads, const std::string& scene,
+                    double loadSeconds) {
   std::ofstream out(path);
   out << "# lucent tile costs 1\n";
   out << fmt::format("# image {} {} tile {} threads {} samples {} load {:.6f} scene {}\n", r.width, r.height,
-                     costs.empty() ? 0 : std::max(costs.front().first.width(), costs.front().first.height()),
-                     threads, r.samples, loadSeconds, scene);
+                     tileSize, threads, r.samples, loadSeconds, scene);
   out << "x0 y0 x1 y1 seconds\n";
   for (const auto& [t, seconds] : costs) out << fmt::format("{} {} {} {} {:.9f}\n", t.x0, t.y0, t.x1, t.y1, seconds);
   out.close();
@@ -230,7 +230,8 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
     result.cancelled = r.cancelled;
   }
   if (recordCosts)
-    writeTileCosts(run.options.tileCosts, costs, scene.render, threadsShown(run.threads), run.options.scene, loadSeconds);
+    writeTileCosts(run.options.tileCosts, costs, scene.render, run.tileSize, threadsShown(run.threads),
+                   run.options.scene, loadSeconds);
   if (result.cancelled) {
     if (run.checkpoint) {
       saveCheckpoint();
