@@ -27,7 +27,7 @@ std::string fileDigest(const std::filesystem::path& path) {
 }  // namespace
 
 Identity runIdentity(const RenderOptions& options, const CommonOptions& common,
-                     const std::optional<PixelRect>& region, int tileSize) {
+                     const std::optional<PixelRect>& region) {
   Identity id;
   id.emplace_back("program", "lucent 0.1");
   id.emplace_back("scene", options.scene);
@@ -41,12 +41,12 @@ Identity runIdentity(const RenderOptions& options, const CommonOptions& common,
   id.emplace_back("--camera", options.camera.empty() ? "the scene's first" : options.camera);
   id.emplace_back("--region", region ? fmt::format("{},{},{},{}", region->x0, region->y0, region->x1, region->y1)
                                      : "the whole image");
-  id.emplace_back("--tile-size", std::to_string(tileSize));
+  id.emplace_back("--tile-size", options.tileSize ? std::to_string(*options.tileSize) : "the default");
   id.emplace_back("--frames", options.frames.empty() ? "all" : options.frames);
   return id;
 }
 
-Identity frameIdentity(const LoadedScene& loaded, int frame) {
+Identity frameIdentity(const LoadedScene& loaded, int frame, int tileSize) {
   const Scene& scene = *loaded.scene;
   const RenderSettings& r = scene.render;
   Identity id;
@@ -55,6 +55,7 @@ Identity frameIdentity(const LoadedScene& loaded, int frame) {
   id.emplace_back("image size", fmt::format("{}x{}", r.width, r.height));
   id.emplace_back("samples", std::to_string(r.samples));
   id.emplace_back("max-depth", std::to_string(r.maxDepth));
+  id.emplace_back("tile size", std::to_string(tileSize));
   id.emplace_back("camera", loaded.camera && !loaded.camera->name.empty() ? loaded.camera->name : "unnamed");
   // The scene file and its includes are in the XML digest (a comment changes no pixel).
   for (const std::filesystem::path& f : loaded.dataFiles) id.emplace_back("digest of " + f.string(), fileDigest(f));

@@ -12,14 +12,14 @@
 
 namespace lucent::cli {
 
-// The run: the scene named, -D values, the overrides given, the region, tile size and
+// The run: the scene named, -D values, the overrides given, the region, --tile-size and
 // frames. (Threads, progress and output format do not change a pixel and are left out.)
 Identity runIdentity(const RenderOptions& options, const CommonOptions& common,
-                     const std::optional<PixelRect>& region, int tileSize);
+                     const std::optional<PixelRect>& region);
 
 // One frame: its number, the digest of the scene's XML, the settings after overrides, the
-// camera and a digest of every file the scene read (read again from disk for it). Throws
+// camera, the tile size used and a digest of every file the scene read (read again from disk for it). Throws
 // IoFailure when a file can no longer be read.
-Identity frameIdentity(const LoadedScene& loaded, int frame);
+Identity frameIdentity(const LoadedScene& loaded, int frame, int tileSize);
 
 }  // namespace lucent::cli

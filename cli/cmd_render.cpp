@@ -107,7 +107,7 @@ struct RenderRun {
   std::set<std::string> printed;  // after-render warnings, each once for all the frames
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   std::optional<PixelRect> region;  // --region; none: the whole image
-  int tileSize = kDefaultTileSize;
+  std::optional<int> tileSize;  // --tile-size; none: defaultTileSize of each frame
   double checkpointInterval = kDefaultCheckpointInterval;  // seconds; 0: no checkpoint
   std::optional<CheckpointWriter> checkpoint;
   std::optional<CheckpointContents> resumed;  // --resume: the checkpoint as read
@@ -149,7 +149,8 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
   Scene& scene = *loaded.scene;
   const PixelRect area = frameArea(run, scene.render);
   if (auto problem = imageMemoryProblem(area)) throw IoFailure(*problem);
-  const std::vector<PixelRect> tiles = tilesOf(area, run.tileSize);
+  const int tileSize = run.tileSize.value_or(defaultTileSize(scene.render));
+  const std::vector<PixelRect> tiles = tilesOf(area, tileSize);
   std::vector<char> skip(tiles.size(), 0);
   RenderResult result;
   result.image = Image(area.width(), area.height());
@@ -160,7 +161,7 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
 
   std::optional<Identity> identity;  // made when first needed: it reads every file again
   auto frameId = [&]() -> const Identity& {
-    if (!identity) identity = frameIdentity(loaded, frame);
+    if (!identity) identity = frameIdentity(loaded, frame, tileSize);
     return *identity;
   };
   bool begun = false;  // the checkpoint has this frame's start record
@@ -230,7 +231,7 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
     result.cancelled = r.cancelled;
   }
   if (recordCosts)
-    writeTileCosts(run.options.tileCosts, costs, scene.render, run.tileSize, threadsShown(run.threads),
+    writeTileCosts(run.options.tileCosts, costs, scene.render, tileSize, threadsShown(run.threads),
                    run.options.scene, loadSeconds);
   if (result.cancelled) {
     if (run.checkpoint) {
@@ -312,7 +313,7 @@ int renderFrames(LoadedScene first, double firstLoadSeconds, const Animation& an
       if (run.resumed) {
         const auto it = run.resumed->frames.find(f);
         if (it != run.resumed->frames.end() && it->second.written && std::filesystem::exists(name)) {
-          const std::vector<std::string> differ = identityDifferences(it->second.identity, frameIdentity(loaded, f));
+          const std::vector<std::string> differ = identityDifferences(it->second.identity, frameIdentity(loaded, f, run.tileSize.value_or(defaultTileSize(loaded.scene->render))));
           if (!differ.empty())
             throw UsageError(fmt::format("--resume: the checkpoint '{}' was made for another scene or other files; {}",
                                          run.checkpointPath, fmt::join(differ, "; ")));
@@ -404,7 +405,7 @@ void setUpTiles(RenderRun& run, const RenderOptions& options, const CommonOption
     }
     // The frames' identities are checked as each is loaded.
     const std::vector<std::string> differ =
-        identityDifferences(run.resumed->run, runIdentity(options, common, run.region, run.tileSize));
+        identityDifferences(run.resumed->run, runIdentity(options, common, run.region));
     if (!differ.empty())
       throw UsageError(fmt::format("--resume: the checkpoint '{}' was made for another render; {}",
                                    run.checkpointPath, fmt::join(differ, "; ")));
@@ -417,7 +418,7 @@ void setUpTiles(RenderRun& run, const RenderOptions& options, const CommonOption
     fmt::print(stderr, "lucent: '{}' holds the checkpoint of an earlier render; it is replaced when this "
                        "render saves its own (--resume continues it instead)\n", run.checkpointPath);
   }
-  run.checkpoint.emplace(run.checkpointPath, runIdentity(options, common, run.region, run.tileSize));
+  run.checkpoint.emplace(run.checkpointPath, runIdentity(options, common, run.region));
 }
 
 }  // namespace

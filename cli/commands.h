@@ -30,15 +30,12 @@ struct RenderOptions {
   bool stats = false;
   std::string frames;  // --frames F or A..B (frame_range.h); empty: every frame
   std::string region;  // --region X0,Y0,X1,Y1; empty: the whole image
-  std::optional<int> tileSize;  // --tile-size (pixels a side); none: kDefaultTileSize
+  std::optional<int> tileSize;  // --tile-size (pixels a side); none: defaultTileSize (tile_render.h)
   std::string tileCosts;        // --tile-costs FILE: each tile's time, for bench/tile_schedule
   bool resume = false;          // --resume: continue from the output's checkpoint
   std::optional<double> checkpointInterval;  // --checkpoint-interval SECONDS; 0: none
 };
 
-// The tiles a render is cut into (a checkpoint keeps finished ones; a distributed render
-// hands them out): docs/distributed.md says how this size was chosen.
-constexpr int kDefaultTileSize = 64;
 // At most this long between two saves of a render's checkpoint.
 constexpr double kDefaultCheckpointInterval = 60.0;
 

@@ -156,7 +156,7 @@ int main(int argc, char** argv) {
                         "written as an image of their size")
       ->type_name("X0,Y0,X1,Y1");
   renderCmd->add_option("--tile-size", render.tileSize,
-                        "Pixels a side of the tiles a checkpoint keeps (default 64)");
+                        "Pixels a side of the tiles a checkpoint keeps (default 32, or 128 with adaptive supersampling of centres)");
   renderCmd->add_flag("--resume", render.resume,
                       "Continue an interrupted render from the checkpoint beside its output");
   renderCmd->add_option("--checkpoint-interval", render.checkpointInterval,

@@ -80,9 +80,13 @@ bool Renderer::adaptiveCentres() const {
          settings_.samples > 1;
 }
 
-int Renderer::adaptiveMargin() const {
-  if (!adaptiveCentres()) return 0;
-  const int samples = settings_.samples;
+int Renderer::adaptiveMargin() const { return adaptiveMargin(settings_); }
+
+int Renderer::adaptiveMargin(const RenderSettings& settings) {
+  const bool centres = settings.adaptiveMode != AdaptiveMode::Corners && settings.adaptive > 0.0 &&
+                       settings.samples > 1;
+  if (!centres) return 0;
+  const int samples = settings.samples;
   int stages = 1;
   for (int stage = std::min(kFirstStage, samples); stage < samples; stage = std::min(2 * stage, samples))
     ++stages;

@@ -61,6 +61,7 @@ class Renderer {
   // centres decides after each stage whether a pixel goes on from its neighbours' samples,
   // so each stage reaches one pixel further (the number of stages; 0 in the other modes).
   int adaptiveMargin() const;
+  static int adaptiveMargin(const RenderSettings& settings);
 
   // Pixel (x, y): the average of its `samples` camera samples.
   Color renderPixel(int x, int y, RayStats& stats) const;

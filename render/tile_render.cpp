@@ -8,6 +8,10 @@
 
 namespace lucent {
 
+int defaultTileSize(const RenderSettings& settings) {
+  return Renderer::adaptiveMargin(settings) > 0 ? 128 : 32;
+}
+
 TileRenderResult renderTiles(const Renderer& renderer, const std::vector<PixelRect>& tiles,
                              const std::vector<char>& skip, const RenderControl& control,
                              bool oneAtATime, const TileFinished& finished) {

@@ -114,7 +114,7 @@ expect 1 "resume with other samples" -- "$lucent" render "$tmp/scene.xml" -o "$t
 grep -q "was made for another render; --samples: 'the scene's' in the checkpoint, '2' in this render" "$tmp/stderr" ||
   fail "other samples: $(cat "$tmp/stderr")"
 expect 1 "resume with another tile size" -- "$lucent" render "$tmp/scene.xml" -o "$tmp/out.png" -q --resume
-grep -q -- "--tile-size: '16' in the checkpoint, '64' in this render" "$tmp/stderr" || fail "tile size: $(cat "$tmp/stderr")"
+grep -q -- "--tile-size: '16' in the checkpoint, 'the default' in this render" "$tmp/stderr" || fail "tile size: $(cat "$tmp/stderr")"
 cp "$tmp/tex/wood.png" "$tmp/tex/wood-old.png"
 "$lucent" render "$tmp/tex/make.xml" -o "$tmp/tex/wood.png" -q -w 16 -h 16
 expect 1 "resume with a changed texture" -- "$lucent" render "$tmp/scene.xml" -o "$tmp/out.png" -q --tile-size 16 --resume
