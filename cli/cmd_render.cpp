@@ -21,6 +21,7 @@
 #include "frame_range.h"
 #include "interrupt_catcher.h"
 #include "load_scene.h"
+#include "tile_executor.h"
 
 #include "meshes/mesh_file_cache.h"
 #include "scenegraph/gradient_report.h"
@@ -100,8 +101,9 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 // What the run keeps from one frame to the next.
 struct RenderRun {
-  explicit RenderRun(const RenderOptions& o) : options(o) {}
+  RenderRun(const RenderOptions& o, const TileExecutor& e) : options(o), executor(e) {}
   const RenderOptions& options;
+  const TileExecutor& executor;  // empty: renderTiles
   int threads = 0;  // 0: every core
   ImageMapCache textures;
   std::set<std::string> printed;  // after-render warnings, each once for all the frames
@@ -225,7 +227,9 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
       if (run.interruptAfterTiles > 0 && ++run.tilesFinished == run.interruptAfterTiles) std::raise(SIGTERM);
       if (run.checkpoint && secondsSince(lastSave) >= run.checkpointInterval) saveCheckpoint();
     };
-    const TileRenderResult r = renderTiles(renderer, tiles, skip, control, recordCosts, finished);
+    const TileRenderResult r = run.executor
+                                   ? run.executor(renderer, loaded, frame, tiles, skip, control, recordCosts, finished)
+                                   : renderTiles(renderer, tiles, skip, control, recordCosts, finished);
     result.stats = r.stats;
     result.seconds = r.seconds;
     result.cancelled = r.cancelled;
@@ -427,18 +431,11 @@ std::string defaultRenderOutput(const std::string& scene) {
   return std::filesystem::path(scene).replace_extension(".png").string();
 }
 
-int runRender(const RenderOptions& options, const CommonOptions& common) {
+int runRender(const RenderOptions& options, const CommonOptions& common, const TileExecutor& executor) {
   // From the start, so a Ctrl-C during parsing still stops the render at its first row.
   InterruptCatcher interrupts;
   const std::string output = options.output.empty() ? defaultRenderOutput(options.scene) : options.output;
-  SceneRequest request;
-  request.scene = options.scene;
-  request.width = options.width;
-  request.height = options.height;
-  request.samples = options.samples;
-  request.threads = options.threads;
-  request.maxDepth = options.maxDepth;
-  request.camera = options.camera;
+  SceneRequest request = renderSceneRequest(options);
   checkOverrides(request);
   std::optional<FrameRange> range;
   if (!options.frames.empty()) {
@@ -450,7 +447,7 @@ int runRender(const RenderOptions& options, const CommonOptions& common) {
   // Before a long render: an output that can never be written is an error now.
   checkImageOutputPath(output);
 
-  RenderRun run{options};
+  RenderRun run{options, executor};
   run.threads = options.threads.value_or(0);
   setUpTiles(run, options, common, output);
   // --threads bounds every parallel step, building the world's BVHs too, not only the

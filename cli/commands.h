@@ -4,12 +4,27 @@
 
 #include "exit_status.h"
 
+#include <functional>
+
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+namespace lucent {
+class Renderer;
+struct PixelRect;
+struct RenderControl;
+struct RenderResult;
+struct TileRenderResult;
+}  // namespace lucent
+
 namespace lucent::cli {
+
+struct LoadedScene;
+using TileExecutor = std::function<TileRenderResult(
+    const Renderer&, const LoadedScene&, int, const std::vector<PixelRect>&, const std::vector<char>&,
+    const RenderControl&, bool, const std::function<void(size_t, const RenderResult&)>&)>;
 
 // The problem with a numeric override (-w, -h, -s, -t, --max-depth) named `name`, if any:
 // below 1, or above the limit the scene's <render> has too (render_settings.h).
@@ -39,7 +54,8 @@ struct RenderOptions {
 // At most this long between two saves of a render's checkpoint.
 constexpr double kDefaultCheckpointInterval = 60.0;
 
-int runRender(const RenderOptions& options, const CommonOptions& common);
+// `executor`: how tiles are rendered (tile_executor.h); empty: on this process's threads.
+int runRender(const RenderOptions& options, const CommonOptions& common, const TileExecutor& executor = {});
 // The image `render` writes without -o: the scene's path with the extension .png.
 std::string defaultRenderOutput(const std::string& scene);
 

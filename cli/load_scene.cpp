@@ -24,6 +24,18 @@ std::string cameraNames(const Scene& scene) {
 
 }  // namespace
 
+SceneRequest renderSceneRequest(const RenderOptions& options) {
+  SceneRequest request;
+  request.scene = options.scene;
+  request.width = options.width;
+  request.height = options.height;
+  request.samples = options.samples;
+  request.threads = options.threads;
+  request.maxDepth = options.maxDepth;
+  request.camera = options.camera;
+  return request;
+}
+
 void checkOverrides(const SceneRequest& request) {
   for (auto [value, name] : {std::pair{request.width, "--width"}, std::pair{request.height, "--height"},
                              std::pair{request.samples, "--samples"},
@@ -40,8 +52,10 @@ LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) 
   options.allowPaths = common.allowPaths;
   options.frame = request.frame;
   options.meshCache = request.meshCache;
+  options.replay = request.replay;
   ParseResult parsed = parseSceneFile(request.scene, options);
   for (const Diagnostic& d : parsed.diagnostics.all()) {
+    if (request.quiet && d.severity != Severity::Error) continue;
     std::string line = d.str();
     if (request.printed && !request.printed->insert(line).second) continue;
     fmt::print(stderr, "{}\n", line);
@@ -61,6 +75,7 @@ LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) 
   loaded.scene = std::move(parsed.scene);
   loaded.sources = std::move(parsed.sources);
   loaded.dataFiles = std::move(parsed.dataFiles);
+  loaded.grants = std::move(parsed.grants);
   loaded.xmlDigest = parsed.xmlDigest;
   Scene& scene = *loaded.scene;
   RenderSettings& r = scene.render;

@@ -5,6 +5,7 @@
 
 #include "commands.h"
 
+#include "lang/file_access.h"
 #include "scenegraph/scene.h"
 
 #include <cstdint>
@@ -32,6 +33,10 @@ struct SceneRequest {
   // Diagnostics already printed (by an earlier frame's load), not to be printed again;
   // null: print all.
   std::set<std::string>* printed = nullptr;
+  // A process of a distributed render: the scene's files are copies (ParseOptions::replay),
+  // and its warnings are the first process's to print (`quiet`).
+  std::shared_ptr<const FileReplay> replay;
+  bool quiet = false;
 };
 
 struct LoadedScene {
@@ -40,8 +45,12 @@ struct LoadedScene {
   // What the scene was made of (ParseResult::sources, dataFiles and xmlDigest): a
   // checkpoint's identity, and what a distributed render sends to the other processes.
   std::vector<std::filesystem::path> sources, dataFiles;
+  std::vector<FileGrant> grants;  // the names they were read by (ParseResult::grants)
   uint64_t xmlDigest = 0;
 };
+
+// The scene request `lucent render` makes of its options (the scene, its overrides).
+SceneRequest renderSceneRequest(const RenderOptions& options);
 
 // Throws UsageError for an override out of range (the first thing loadScene does, and
 // callable before it, to refuse a bad option before an output is looked at).

@@ -1,8 +1,8 @@
 // lucent: render, check, export-pov and compare scene files.
+#include "command_line.h"
 #include "commands.h"
 
 #include "lang/did_you_mean.h"
-#include "lang/parameters.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -16,90 +16,6 @@ using namespace lucent::cli;
 namespace {
 
 const std::vector<std::string_view> kCommands{"render", "check", "export-pov", "compare", "schema"};
-
-// Help is --help in every command: -h is the image height (the contract's -h/--height).
-void setHelp(CLI::App* app) { app->set_help_flag("--help", "Print this help and exit"); }
-
-// DIR or DIR:DIR:...: each part must be an existing folder (a typo would silently allow
-// nothing).
-std::vector<std::string> splitPathList(const std::string& list) {
-  std::vector<std::string> parts;
-  for (size_t start = 0;;) {
-    size_t colon = list.find(':', start);
-    std::string part = list.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
-    if (!part.empty()) parts.push_back(part);
-    if (colon == std::string::npos) break;
-    start = colon + 1;
-  }
-  return parts;
-}
-
-const CLI::Validator kExistingFolders(
-    [](std::string& list) -> std::string {
-      for (const std::string& part : splitPathList(list))
-        if (std::string e = CLI::ExistingDirectory(part); !e.empty()) return e;
-      return std::string();
-    },
-    "");
-
-// -D name=value, repeatable; the value may itself contain '='.
-void addCommonOptions(CLI::App* app, std::vector<std::string>& defines,
-                      std::vector<std::string>& allowPaths) {
-  app->add_option("-D,--define", defines, "Set a scene parameter: -D name=value")
-      ->type_name("NAME=VALUE")
-      ->allow_extra_args(false);
-  app->add_option("--allow-path", allowPaths,
-                  "Let the scene read files under these folders as well as its own "
-                  "(a colon-separated list; repeatable)")
-      ->type_name("DIR:DIR")
-      ->check(kExistingFolders)
-      ->allow_extra_args(false);
-  // Unknown arguments are reported by main with a "did you mean".
-  app->allow_extras();
-}
-
-// The -D list as a map; a malformed or repeated name is wrong usage (a scene parameter
-// name can never be '1x', and of two values one would be silently lost).
-void splitDefines(const std::vector<std::string>& defines, CommonOptions& common) {
-  for (const std::string& d : defines) {
-    auto eq = d.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw UsageError(fmt::format("-D expects name=value, got '{}'", d));
-    std::string name = d.substr(0, eq);
-    if (!Parameters::isValidName(name))
-      throw UsageError(fmt::format("-D {}: a parameter name is letters, digits and '_', not "
-                                   "starting with a digit; got '{}'",
-                                   d, name));
-    auto [it, inserted] = common.defines.emplace(name, d.substr(eq + 1));
-    if (!inserted)
-      throw UsageError(fmt::format("-D {} is given twice ({}={} and {}); give it once", name, name,
-                                   it->second, d));
-  }
-}
-
-// The option names of a command, for "did you mean".
-std::vector<std::string> optionNames(const CLI::App* app) {
-  std::vector<std::string> names{"--help"};
-  for (const CLI::Option* o : app->get_options()) {
-    for (const std::string& l : o->get_lnames()) names.push_back("--" + l);
-    for (const std::string& s : o->get_snames()) names.push_back("-" + s);
-  }
-  return names;
-}
-
-// Arguments the command does not take, as CLI11 words it. An unknown option comes first,
-// alone (what follows it may be its value) and with a hint if it is a misspelling.
-std::string unexpectedArguments(const CLI::App* app, const std::vector<std::string>& extras) {
-  for (const std::string& e : extras) {
-    if (e.size() < 2 || e[0] != '-') continue;
-    const std::string word = e.substr(0, e.find('='));
-    return "The following argument was not expected: " + e + didYouMean(word, optionNames(app));
-  }
-  std::string message = extras.size() == 1 ? "The following argument was not expected:"
-                                           : "The following arguments were not expected:";
-  for (const std::string& e : extras) message += " " + e;
-  return message;
-}
 
 // The first argument names the command; a misspelled one gets a hint (CLI11 alone would
 // only say that a command is required).
@@ -135,35 +51,7 @@ int main(int argc, char** argv) {
   RenderOptions render;
   CLI::App* renderCmd = app.add_subcommand("render", "Render a scene to an image");
   setHelp(renderCmd);
-  renderCmd->add_option("scene", render.scene, "Scene file (.xml)")->required();
-  renderCmd->add_option("-o,--output", render.output,
-                        "Output image; the format follows the extension (png exr tif jpg hdr "
-                        "ppm). Default: SCENE.png beside the scene");
-  renderCmd->add_option("-w,--width", render.width, "Image width in pixels");
-  renderCmd->add_option("-h,--height", render.height, "Image height in pixels");
-  renderCmd->add_option("-s,--samples", render.samples, "Samples per pixel");
-  renderCmd->add_option("-t,--threads", render.threads, "Threads (default: all cores)");
-  renderCmd->add_option("--max-depth", render.maxDepth, "Maximum recursion depth");
-  renderCmd->add_option("--camera", render.camera, "Render through the camera with this name");
-  renderCmd->add_flag("-q,--quiet", render.quiet, "No progress bar or closing line (warnings stay)");
-  renderCmd->add_flag("--stats", render.stats,
-                      "Print ray counts, time and Mrays/s (and each frame's time in an animation)");
-  renderCmd->add_option("--frames", render.frames,
-                        "Render only these frames of an animation: F or A..B (default: all)")
-      ->type_name("A..B");
-  renderCmd->add_option("--region", render.region,
-                        "Render only these pixels of the image (right and bottom bounds excluded), "
-                        "written as an image of their size")
-      ->type_name("X0,Y0,X1,Y1");
-  renderCmd->add_option("--tile-size", render.tileSize,
-                        "Pixels a side of the tiles a checkpoint keeps (default 32, or 128 with adaptive supersampling of centres)");
-  renderCmd->add_flag("--resume", render.resume,
-                      "Continue an interrupted render from the checkpoint beside its output");
-  renderCmd->add_option("--checkpoint-interval", render.checkpointInterval,
-                        "Seconds between saves of the checkpoint (default 60; 0: keep none)");
-  renderCmd->add_option("--tile-costs", render.tileCosts,
-                        "Write each tile's render time to FILE (for bench/tile_schedule)")
-      ->type_name("FILE");
+  addRenderOptions(renderCmd, render);
   addCommonOptions(renderCmd, defines, allowPaths);
 
   CheckOptions check;
@@ -230,9 +118,7 @@ int main(int argc, char** argv) {
       if (std::vector<std::string> extras = cmd->remaining(); !extras.empty())
         throw UsageError(unexpectedArguments(cmd, extras) + fmt::format(
                              "\nRun 'lucent {} --help' for more information.", cmd->get_name()));
-    splitDefines(defines, common);
-    for (const std::string& list : allowPaths)
-      for (std::string& dir : splitPathList(list)) common.allowPaths.push_back(std::move(dir));
+    takeCommonOptions(defines, allowPaths, common);
 
     if (*renderCmd) return runRender(render, common);
     if (*checkCmd) return runCheck(check, common);

@@ -17,7 +17,9 @@ fs::path canonicalPath(const fs::path& p) {
   return c;
 }
 
-FileAccess::FileAccess(const fs::path& sceneFolder, const std::vector<std::string>& allowPaths) {
+FileAccess::FileAccess(const fs::path& sceneFolder, const std::vector<std::string>& allowPaths,
+                       const FileReplay* replay)
+    : replay_(replay) {
   roots_.push_back(canonicalPath(sceneFolder.empty() ? fs::path(".") : sceneFolder));
   for (const std::string& p : allowPaths) roots_.push_back(canonicalPath(p));
 }
@@ -39,6 +41,7 @@ FileAccess::Resolved FileAccess::resolve(const std::string& written, const fs::p
     out.error = "the path is empty";
     return out;
   }
+  if (replay_) return replayed(written, baseFolder);
   fs::path p(written);
   if (p.is_relative()) p = baseFolder / p;
   fs::path c = canonicalPath(p);
@@ -61,14 +64,49 @@ FileAccess::Resolved FileAccess::resolve(const std::string& written, const fs::p
     return out;
   }
   out.path = c;
+  grant(written, canonicalPath(baseFolder), c);
+  return out;
+}
+
+void FileAccess::grant(const std::string& written, const fs::path& base, const fs::path& c) const {
   std::lock_guard<std::mutex> lock(grantedMutex_);
   if (std::find(granted_.begin(), granted_.end(), c) == granted_.end()) granted_.push_back(c);
+  FileGrant g{written, base, c};
+  if (std::find(grants_.begin(), grants_.end(), g) == grants_.end()) grants_.push_back(std::move(g));
+}
+
+// `p` with the leading components `root` taken off, as an absolute path; empty if `p`
+// is not under `root`.
+static fs::path underRoot(const fs::path& p, const fs::path& root) {
+  auto r = root.begin(), q = p.begin();
+  for (; r != root.end(); ++r, ++q)
+    if (q == p.end() || *r != *q) return {};
+  fs::path rest = "/";
+  for (; q != p.end(); ++q) rest /= *q;
+  return rest;
+}
+
+FileAccess::Resolved FileAccess::replayed(const std::string& written, const fs::path& baseFolder) const {
+  Resolved out;
+  const fs::path base = underRoot(canonicalPath(baseFolder), replay_->root);
+  for (const FileGrant& g : replay_->grants)
+    if (g.written == written && g.base == base) {
+      out.path = replay_->root / g.canonical.relative_path();
+      grant(written, canonicalPath(baseFolder), out.path);
+      return out;
+    }
+  out.error = "'" + written + "' (from '" + base.string() + "') is not among the files the first process sent";
   return out;
 }
 
 std::vector<fs::path> FileAccess::granted() const {
   std::lock_guard<std::mutex> lock(grantedMutex_);
   return granted_;
+}
+
+std::vector<FileGrant> FileAccess::grants() const {
+  std::lock_guard<std::mutex> lock(grantedMutex_);
+  return grants_;
 }
 
 }  // namespace lucent

@@ -11,9 +11,30 @@
 
 namespace lucent {
 
+// One name a scene gave a file and where the access rule led it: `written` as in the scene,
+// `base` the canonical folder it was relative to, `canonical` the file. A distributed
+// render sends these with the files, so that the other processes resolve the same names
+// to the copies they were sent (FileReplay) without a shared file system.
+struct FileGrant {
+  std::string written;
+  std::filesystem::path base, canonical;
+  bool operator==(const FileGrant& o) const {
+    return written == o.written && base == o.base && canonical == o.canonical;
+  }
+};
+
+// On a process that did not read the scene's files itself: each file is a copy under
+// `root` (root / canonical), and a name resolves to that copy when `grants` holds it, the
+// access rule having been applied where the files were read.
+struct FileReplay {
+  std::filesystem::path root;  // canonical
+  std::vector<FileGrant> grants;
+};
+
 class FileAccess {
  public:
-  FileAccess(const std::filesystem::path& sceneFolder, const std::vector<std::string>& allowPaths);
+  FileAccess(const std::filesystem::path& sceneFolder, const std::vector<std::string>& allowPaths,
+             const FileReplay* replay = nullptr);
 
   struct Resolved {
     std::filesystem::path path;  // canonical (symbolic links and `..` resolved); empty on error
@@ -28,12 +49,18 @@ class FileAccess {
   // Every path resolve() has granted, each once, in the order first granted: the files the
   // scene reads (a checkpoint's digest covers them; a distributed render sends them).
   std::vector<std::filesystem::path> granted() const;
+  // Every name resolve() has granted, each once (FileGrant).
+  std::vector<FileGrant> grants() const;
 
  private:
   bool allowed(const std::filesystem::path& canonical) const;
+  Resolved replayed(const std::string& written, const std::filesystem::path& baseFolder) const;
+  void grant(const std::string& written, const std::filesystem::path& base, const std::filesystem::path& c) const;
   std::vector<std::filesystem::path> roots_;
+  const FileReplay* replay_ = nullptr;
   mutable std::mutex grantedMutex_;  // shapes may be read on several threads
   mutable std::vector<std::filesystem::path> granted_;
+  mutable std::vector<FileGrant> grants_;
 };
 
 // The canonical form of an existing or not-yet-existing path (weakly_canonical of the

@@ -129,7 +129,7 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
   Diagnostics diags;
   Parameters params(options.defines, diags);
   fs::path folder = fs::path(path).parent_path();
-  FileAccess files(folder.empty() ? fs::path(".") : folder, options.allowPaths);
+  FileAccess files(folder.empty() ? fs::path(".") : folder, options.allowPaths, options.replay.get());
   ParseContext ctx{*scene, diags, params, files};
   if (options.meshCache) ctx.meshCache = options.meshCache;
   SceneLoader loader(ctx);
@@ -170,6 +170,7 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
     std::vector<fs::path>& list = source ? result.sources : result.dataFiles;
     if (std::find(list.begin(), list.end(), f) == list.end()) list.push_back(f);
   }
+  result.grants = files.grants();
   Digest digest;
   for (const auto& f : loader.files()) digestXml(f->root().parent(), digest.field("file"));
   result.xmlDigest = digest.value();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "diagnostics.h"
+#include "file_access.h"
 
 #include "scenegraph/scene.h"
 
@@ -28,6 +29,9 @@ struct ParseOptions {
   // Mesh files already read, to share with this parse (and to fill): a caller that parses
   // many scenes, as the frames of an animation, keeps one. Null: a cache for this parse.
   std::shared_ptr<MeshFileCache> meshCache;
+  // Set on a process of a distributed render that was sent the scene's files: names
+  // resolve to the copies (FileReplay); null: the files themselves, by the access rule.
+  std::shared_ptr<const FileReplay> replay;
 };
 
 struct ParseResult {
@@ -45,6 +49,8 @@ struct ParseResult {
   // files it includes; `dataFiles`, the meshes, images, fonts and height maps it reads, in
   // the order first read.
   std::vector<std::filesystem::path> sources, dataFiles;
+  // The names each was read by (what a distributed render sends with the files).
+  std::vector<FileGrant> grants;
   // A digest of the scene's XML after includes (elements, attributes and text of the scene
   // file and every file it includes, in order; comments and layout left out): with the -D
   // values, the frame and the files read, everything the expanded scene is made of.

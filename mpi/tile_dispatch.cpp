@@ -1,0 +1,126 @@
+#include "tile_dispatch.h"
+
+#include "file_bundle.h"
+#include "messages.h"
+#include "tile_message.h"
+
+#include "exit_status.h"
+
+#include <fmt/core.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace lucent::mpi {
+
+TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::LoadedScene& loaded, int frame,
+                                          const std::vector<PixelRect>& tiles, const std::vector<char>& skip,
+                                          const RenderControl& control, bool /*oneAtATime: each rank
+                                          renders one tile at a time anyway*/,
+                                          const TileFinished& finished) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<size_t> todo;
+  uint64_t work = 0;
+  for (size_t i = 0; i < tiles.size(); ++i)
+    if (skip.empty() || !skip[i]) {
+      todo.push_back(i);
+      work += renderer.work(tiles[i]);
+    }
+  RenderProgress localProgress;
+  RenderControl inner = control;
+  inner.threads = 0;  // the arena below bounds them
+  if (!inner.progress) inner.progress = &localProgress;
+  inner.progress->workTotal = work;
+  auto cancelled = [&] { return control.cancel && control.cancel->load(std::memory_order_relaxed); };
+
+  // Row order, as renderTiles: the next tile for whoever asks first.
+  std::atomic<size_t> next{0};
+  auto take = [&]() -> std::optional<size_t> {
+    if (cancelled()) return std::nullopt;
+    const size_t k = next.fetch_add(1);
+    if (k >= todo.size()) return std::nullopt;
+    return todo[k];
+  };
+  TileRenderResult result;
+  std::mutex reporting;  // `finished` is called one at a time
+  auto report = [&](size_t i, const RenderResult& tile) {
+    std::lock_guard<std::mutex> lock(reporting);
+    result.stats += tile.stats;
+    if (!tile.cancelled) finished(i, tile);
+  };
+
+  // The workers load the frame from the files sent.
+  const int workers = ranks() - 1;
+  if (workers > 0) {
+    std::vector<char> bundle = pack(makeBundle(frame, scene_, loaded.grants, [&] {
+      std::vector<std::filesystem::path> files = loaded.sources;
+      files.insert(files.end(), loaded.dataFiles.begin(), loaded.dataFiles.end());
+      return files;
+    }(), sent_));
+    for (int w = 1; w <= workers; ++w) {
+      send(w, kFrame, bundle);
+      busy_.insert(w);
+    }
+  }
+
+  // Rank 0 renders tiles too, on a thread of its own.
+  std::thread local([&] {
+    auto loop = [&] {
+      while (std::optional<size_t> i = take()) report(*i, renderer.renderRect(tiles[*i], inner));
+    };
+    if (control.threads > 0) {
+      tbb::task_arena arena(control.threads);
+      arena.execute(loop);
+    } else {
+      loop();
+    }
+  });
+
+  // Each worker asks (kReady, or with a result) and gets a tile or, once there are none, kNoMore.
+  std::optional<std::string> failure;
+  try {
+    Message m;
+    while (!busy_.empty() && !cancelled()) {
+      if (!receive(-1, m, control.cancel)) break;
+      if (m.tag == kFailed) {
+        busy_.erase(m.source);
+        Reader r(m.bytes);
+        throw cli::IoFailure(fmt::format("rank {} could not load frame {}: {}", m.source, frame, r.getString()));
+      }
+      if (m.tag == kResult) {
+        TileResult t = unpackResult(m.bytes);
+        if (t.frame != frame || t.index >= tiles.size())
+          throw cli::IoFailure(fmt::format("rank {} sent a tile that was not asked of it", m.source));
+        inner.progress->workDone += renderer.work(tiles[t.index]);
+        inner.progress->rays += t.result.stats.rays();
+        report(t.index, t.result);
+      } else if (m.tag != kReady) {
+        throw cli::IoFailure(fmt::format("rank {} sent an unexpected message ({})", m.source, m.tag));
+      }
+      if (std::optional<size_t> i = take()) {
+        send(m.source, kTile, pack(TileOrder{frame, *i, tiles[*i]}));
+      } else {
+        send(m.source, kNoMore, {});
+        busy_.erase(m.source);
+      }
+    }
+  } catch (const std::exception& e) {
+    failure = e.what();
+  }
+  if (failure) next = todo.size();  // the local thread stops after its tile
+  local.join();
+  if (failure) throw cli::IoFailure(*failure);
+  result.cancelled = cancelled();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+void TileDispatch::stopWorkers() {
+  for (int w = 1; w < ranks(); ++w) send(w, kStop, {});
+}
+
+}  // namespace lucent::mpi
