@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -44,6 +46,40 @@ PngFacts refusePaletteFiles(const std::string& path) {
   return {true, depth, type};
 }
 
+// A PNM file's header (P2, P3, P5, P6) names its maximum value, which Netpbm allows from 1
+// to 65535; OpenImageIO reads others anyway (a maximum of 0 as 8-bit white), so they are
+// refused here, before it.
+void refuseBadPnmMaximum(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  char magic[2] = {};
+  if (!f.read(magic, 2) || magic[0] != 'P' || (magic[1] != '2' && magic[1] != '3' && magic[1] != '5' && magic[1] != '6'))
+    return;
+  // Width, height and maximum: whitespace-separated, with '#' comments to the end of a line.
+  std::string token;
+  for (int field = 0; field < 3; ++field) {
+    token.clear();
+    for (int c; (c = f.get()) != EOF;) {
+      if (c == '#' && token.empty()) {
+        while ((c = f.get()) != EOF && c != '\n' && c != '\r') {
+        }
+        continue;
+      }
+      if (std::isspace(c)) {
+        if (token.empty()) continue;
+        break;
+      }
+      token += static_cast<char>(c);
+      if (token.size() > 20) break;
+    }
+  }
+  const bool digits = !token.empty() && token.size() <= 6 &&
+                      std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
+  const long max = digits ? std::stol(token) : -1;
+  if (max < 1 || max > 65535)
+    throw HeightMapError(fmt::format("a PNM image whose maximum value is '{}': Netpbm allows 1 to 65535",
+                                     token.substr(0, 20)));
+}
+
 // POV-Ray reads a grey PNG of up to 8 bits through a grey colour map: each value v becomes
 // c = v / max, then the grey of (c, c, c) by its float weights, stored truncated to 8 bits
 // (base/image/png.cpp, image.cpp: RGB2Gray, SetGrayValue). This can lower v by one.
@@ -57,6 +93,7 @@ float povPngGrey(long v, int max) {
 
 std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
   const PngFacts pngFacts = refusePaletteFiles(path);
+  refuseBadPnmMaximum(path);
   std::string error;
   std::unique_ptr<ImageReader> in;
   {

@@ -53,6 +53,10 @@ void readHeightField(HeightFieldSpec& s, AttributeInput& in) {
   s.map = in.heightMapFile("src", s.path);
   if (!s.map) return;
   const uint16_t top = *std::max_element(s.map->values.begin(), s.map->values.end());
+  if (top == 0) {
+    in.attrError("src", "'" + *src + "' is black everywhere (every height is 0): there is no field above the water level");
+    return;
+  }
   if (!(top / 65536.0 > s.waterLevel))
     in.attrError("water-level", fmt::format("{} is at or above the image's highest point ({}): nothing would be left",
                                             attributeText(s.waterLevel), attributeText(top / 65536.0)));

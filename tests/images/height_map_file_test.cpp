@@ -3,8 +3,11 @@
 // own, measured by tests/data/height_field/make_references.sh.
 #include "images/height_map_file.h"
 
+#include "../temp_dir.h"
+
 #include <catch2/catch.hpp>
 
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -63,4 +66,22 @@ TEST_CASE("height field images: what is refused", "[images][height-field]") {
   CHECK_THROWS_WITH(readHeightMapFile(dataFile("palette.png")), Catch::Contains("palette"));
   CHECK_THROWS_WITH(readHeightMapFile(dataFile("one-pixel.pgm")), Catch::Contains("at least 2 x 2"));
   CHECK_THROWS_AS(readHeightMapFile(dataFile("png.py")), HeightMapError);
+}
+
+TEST_CASE("height field images: a PNM maximum value outside 1..65535 is refused", "[images][height-field]") {
+  const test::TempDir dir("height-pnm");
+  const std::string path = (dir.path / "max.pgm").string();
+  auto write = [&](const std::string& header) {
+    std::ofstream out(path, std::ios::binary);
+    out << header << std::string(8, '\x01');
+  };
+  for (const char* max : {"0", "65536", "70000", "-3", "x"}) {
+    write(std::string("P5\n# a comment\n2 2\n") + max + "\n");
+    CHECK_THROWS_WITH(readHeightMapFile(path), Catch::Contains("maximum value is '" + std::string(max) + "'"));
+  }
+  // The bounds themselves are read.
+  write("P5 2 2 255\n");
+  CHECK(readHeightMapFile(path)->values.size() == 4);
+  write("P5 2 2 65535\n");
+  CHECK(readHeightMapFile(path)->values.size() == 4);
 }

@@ -422,3 +422,14 @@ TEST_CASE("height field: smooth normals are blended in world space, as POV-Ray b
   REQUIRE(flat.intersect(ray, h));
   CHECK_FALSE(flat.worldShadingNormal(ray, h, t, ns));
 }
+
+TEST_CASE("height field: an all-zero map is refused, as the parser refuses it by name", "[primitives][height-field]") {
+  // A black image leaves nothing above water level 0; the scene parser says so at the
+  // water-level attribute (tests/bad/cases.txt), and the shape itself refuses rather than
+  // build a solid of zero thickness.
+  CHECK_THROWS_AS(HeightField(grid(4, 4, std::vector<uint16_t>(16, 0)), false, 0.0), std::invalid_argument);
+  CHECK_THROWS_AS(HeightField(grid(4, 4, std::vector<uint16_t>(16, 0)), true, 0.0), std::invalid_argument);
+  std::vector<uint16_t> one(16, 0);
+  one[5] = 1;
+  CHECK_NOTHROW(HeightField(grid(4, 4, one), false, 0.0));
+}
