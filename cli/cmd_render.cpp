@@ -431,7 +431,8 @@ std::string defaultRenderOutput(const std::string& scene) {
   return std::filesystem::path(scene).replace_extension(".png").string();
 }
 
-int runRender(const RenderOptions& options, const CommonOptions& common, const TileExecutor& executor) {
+int runRender(const RenderOptions& options, const CommonOptions& common, const TileExecutor& executor,
+              LoadObserver* observer) {
   // From the start, so a Ctrl-C during parsing still stops the render at its first row.
   InterruptCatcher interrupts;
   const std::string output = options.output.empty() ? defaultRenderOutput(options.scene) : options.output;
@@ -459,6 +460,7 @@ int runRender(const RenderOptions& options, const CommonOptions& common, const T
   request.meshCache = std::make_shared<MeshFileCache>();
   std::set<std::string> printed;  // the first frame's warnings, not repeated per frame
   request.printed = &printed;
+  request.observer = observer;
   // Frame 1 (or the moment -D picks) tells how many frames there are.
   LoadedScene loaded = loadScene(request, common);
   const double firstLoadSeconds = secondsSince(run.start);

@@ -54,8 +54,11 @@ struct RenderOptions {
 // At most this long between two saves of a render's checkpoint.
 constexpr double kDefaultCheckpointInterval = 60.0;
 
+class LoadObserver;
 // `executor`: how tiles are rendered (tile_executor.h); empty: on this process's threads.
-int runRender(const RenderOptions& options, const CommonOptions& common, const TileExecutor& executor = {});
+// `observer`: told of each frame's load (load_scene.h); null: none.
+int runRender(const RenderOptions& options, const CommonOptions& common, const TileExecutor& executor = {},
+              LoadObserver* observer = nullptr);
 // The image `render` writes without -o: the scene's path with the extension .png.
 std::string defaultRenderOutput(const std::string& scene);
 

@@ -53,21 +53,31 @@ LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) 
   options.frame = request.frame;
   options.meshCache = request.meshCache;
   options.replay = request.replay;
+  if (request.observer) {
+    request.observer->loading(request.frame, request.scene);
+    options.onGrant = [o = request.observer](const FileGrant& g) { o->granted(g); };
+  }
+  auto say = [&](const std::string& line) {
+    if (request.heldMessages)
+      request.heldMessages->push_back(line);
+    else
+      fmt::print(stderr, "{}\n", line);
+  };
   ParseResult parsed = parseSceneFile(request.scene, options);
   for (const Diagnostic& d : parsed.diagnostics.all()) {
     if (request.quiet && d.severity != Severity::Error) continue;
     std::string line = d.str();
     if (request.printed && !request.printed->insert(line).second) continue;
-    fmt::print(stderr, "{}\n", line);
+    say(line);
   }
   if (parsed.ioFailure) throw ReportedFailure{kRuntimeFailure};  // the scene file is unreadable
   if (!parsed.scene) {
     const size_t n = parsed.diagnostics.errorCount();
-    fmt::print(stderr, "{}: {} error{}; the scene is invalid\n", request.scene, n, n == 1 ? "" : "s");
+    say(fmt::format("{}: {} error{}; the scene is invalid", request.scene, n, n == 1 ? "" : "s"));
     // Later frames are named by the caller (frame_loading.cpp); the first one read, here.
     if (parsed.animation.present && request.frame == 1)
-      fmt::print(stderr, "lucent: frame {} of {} (clock {}) is invalid\n", parsed.frame, parsed.animation.frames,
-                 parsed.clock);
+      say(fmt::format("lucent: frame {} of {} (clock {}) is invalid", parsed.frame, parsed.animation.frames,
+                      parsed.clock));
     throw ReportedFailure{kInvalidScene};
   }
 

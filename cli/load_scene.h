@@ -22,6 +22,13 @@ class MeshFileCache;
 
 namespace lucent::cli {
 
+class LoadObserver {
+ public:
+  virtual ~LoadObserver() = default;
+  virtual void loading(int frame, const std::filesystem::path& scene) = 0;
+  virtual void granted(const FileGrant& grant) = 0;
+};
+
 struct SceneRequest {
   std::string scene;
   // Each replaces the scene's <render> value; -t is checked only (it is not in the scene).
@@ -37,6 +44,12 @@ struct SceneRequest {
   // and its warnings are the first process's to print (`quiet`).
   std::shared_ptr<const FileReplay> replay;
   bool quiet = false;
+  // Set: the messages a failed load prints are kept here instead (a worker of lucent-mpi
+  // sends them to rank 0, or drops them when rank 0 failed the same way).
+  std::vector<std::string>* heldMessages = nullptr;
+  // Told when the parse starts and of each file name it is granted (ParseOptions::onGrant):
+  // lucent-mpi's rank 0 streams the files to the workers while all of them parse.
+  LoadObserver* observer = nullptr;
 };
 
 struct LoadedScene {

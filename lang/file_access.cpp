@@ -18,8 +18,8 @@ fs::path canonicalPath(const fs::path& p) {
 }
 
 FileAccess::FileAccess(const fs::path& sceneFolder, const std::vector<std::string>& allowPaths,
-                       const FileReplay* replay)
-    : replay_(replay) {
+                       const FileReplay* replay, GrantObserver onGrant)
+    : replay_(replay), onGrant_(std::move(onGrant)) {
   roots_.push_back(canonicalPath(sceneFolder.empty() ? fs::path(".") : sceneFolder));
   for (const std::string& p : allowPaths) roots_.push_back(canonicalPath(p));
 }
@@ -69,10 +69,14 @@ FileAccess::Resolved FileAccess::resolve(const std::string& written, const fs::p
 }
 
 void FileAccess::grant(const std::string& written, const fs::path& base, const fs::path& c) const {
-  std::lock_guard<std::mutex> lock(grantedMutex_);
-  if (std::find(granted_.begin(), granted_.end(), c) == granted_.end()) granted_.push_back(c);
   FileGrant g{written, base, c};
-  if (std::find(grants_.begin(), grants_.end(), g) == grants_.end()) grants_.push_back(std::move(g));
+  {
+    std::lock_guard<std::mutex> lock(grantedMutex_);
+    if (std::find(granted_.begin(), granted_.end(), c) == granted_.end()) granted_.push_back(c);
+    if (std::find(grants_.begin(), grants_.end(), g) != grants_.end()) return;
+    grants_.push_back(g);
+  }
+  if (onGrant_) onGrant_(g);  // outside the lock: it may take a while (send the file)
 }
 
 // `p` with the leading components `root` taken off, as an absolute path; empty if `p`
@@ -89,12 +93,14 @@ static fs::path underRoot(const fs::path& p, const fs::path& root) {
 FileAccess::Resolved FileAccess::replayed(const std::string& written, const fs::path& baseFolder) const {
   Resolved out;
   const fs::path base = underRoot(canonicalPath(baseFolder), replay_->root);
-  for (const FileGrant& g : replay_->grants)
-    if (g.written == written && g.base == base) {
-      out.path = replay_->root / g.canonical.relative_path();
-      grant(written, canonicalPath(baseFolder), out.path);
-      return out;
-    }
+  do {
+    for (const FileGrant& g : replay_->grants)
+      if (g.written == written && g.base == base) {
+        out.path = replay_->root / g.canonical.relative_path();
+        grant(written, canonicalPath(baseFolder), out.path);
+        return out;
+      }
+  } while (replay_->more && replay_->more());
   out.error = "'" + written + "' (from '" + base.string() + "') is not among the files the first process sent";
   return out;
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -25,16 +26,23 @@ struct FileGrant {
 
 // On a process that did not read the scene's files itself: each file is a copy under
 // `root` (root / canonical), and a name resolves to that copy when `grants` holds it, the
-// access rule having been applied where the files were read.
+// access rule having been applied where the files were read. `more`, if set, is asked
+// for a name `grants` lacks: it waits for the next grants (and their copies) to arrive,
+// adding them, and says false when no more will come (the files are streamed while
+// both processes parse).
 struct FileReplay {
   std::filesystem::path root;  // canonical
   std::vector<FileGrant> grants;
+  std::function<bool()> more;
 };
+
+// Told of each name resolve() grants for the first time, as it is granted.
+using GrantObserver = std::function<void(const FileGrant&)>;
 
 class FileAccess {
  public:
   FileAccess(const std::filesystem::path& sceneFolder, const std::vector<std::string>& allowPaths,
-             const FileReplay* replay = nullptr);
+             const FileReplay* replay = nullptr, GrantObserver onGrant = {});
 
   struct Resolved {
     std::filesystem::path path;  // canonical (symbolic links and `..` resolved); empty on error
@@ -58,6 +66,7 @@ class FileAccess {
   void grant(const std::string& written, const std::filesystem::path& base, const std::filesystem::path& c) const;
   std::vector<std::filesystem::path> roots_;
   const FileReplay* replay_ = nullptr;
+  GrantObserver onGrant_;
   mutable std::mutex grantedMutex_;  // shapes may be read on several threads
   mutable std::vector<std::filesystem::path> granted_;
   mutable std::vector<FileGrant> grants_;

@@ -129,7 +129,7 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
   Diagnostics diags;
   Parameters params(options.defines, diags);
   fs::path folder = fs::path(path).parent_path();
-  FileAccess files(folder.empty() ? fs::path(".") : folder, options.allowPaths, options.replay.get());
+  FileAccess files(folder.empty() ? fs::path(".") : folder, options.allowPaths, options.replay.get(), options.onGrant);
   ParseContext ctx{*scene, diags, params, files};
   if (options.meshCache) ctx.meshCache = options.meshCache;
   SceneLoader loader(ctx);

@@ -32,6 +32,9 @@ struct ParseOptions {
   // Set on a process of a distributed render that was sent the scene's files: names
   // resolve to the copies (FileReplay); null: the files themselves, by the access rule.
   std::shared_ptr<const FileReplay> replay;
+  // Told of each file name the parse is granted, as it is (lucent-mpi's rank 0 sends the
+  // file to the other ranks then, while they parse too).
+  GrantObserver onGrant;
 };
 
 struct ParseResult {

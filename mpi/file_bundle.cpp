@@ -7,7 +7,6 @@
 #include <fmt/core.h>
 
 #include <fstream>
-#include <sstream>
 
 namespace fs = std::filesystem;
 
@@ -21,11 +20,17 @@ FileBundle makeBundle(int frame, const fs::path& scene, const std::vector<FileGr
   b.grants = grants;
   for (const fs::path& f : files) {
     if (sent.count(f)) continue;
-    std::ifstream in(f, std::ios::binary);
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    if (!in || !bytes) throw cli::IoFailure(fmt::format("cannot read '{}' to send it to the other ranks", f.string()));
-    b.files.emplace_back(f, bytes.str());
+    // Read whole into a string of the file's size (a stream copy costs a tenth of a
+    // second for a 13 MB mesh, during which the workers wait for it).
+    std::ifstream in(f, std::ios::binary | std::ios::ate);
+    std::string bytes;
+    if (in) {
+      bytes.resize(static_cast<size_t>(in.tellg()));
+      in.seekg(0);
+      in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    }
+    if (!in) throw cli::IoFailure(fmt::format("cannot read '{}' to send it to the other ranks", f.string()));
+    b.files.emplace_back(f, std::move(bytes));
     sent.insert(f);
   }
   return b;
@@ -33,6 +38,10 @@ FileBundle makeBundle(int frame, const fs::path& scene, const std::vector<FileGr
 
 std::vector<char> pack(const FileBundle& b) {
   Writer w;
+  size_t size = 64 + b.scene.native().size();
+  for (const FileGrant& g : b.grants) size += 32 + g.written.size() + g.base.native().size() + g.canonical.native().size();
+  for (const auto& [path, bytes] : b.files) size += 16 + path.native().size() + bytes.size();
+  w.bytes.reserve(size);
   w.put<int32_t>(b.frame);
   w.putString(b.scene.string());
   w.put<uint64_t>(b.grants.size());

@@ -55,7 +55,7 @@ int run(int argc, char** argv, mpi::TileDispatch*& dispatch) {
     if (!first) return mpi::runWorker(render, common);
     static mpi::TileDispatch tiles(canonicalPath(render.scene));
     dispatch = &tiles;
-    return runRender(render, common, TileExecutor(std::ref(tiles)));
+    return runRender(render, common, TileExecutor(std::ref(tiles)), &tiles);
   } catch (...) {
     if (!first) return kUsage;  // rank 0 reports the same usage error
     return reportFailure(std::current_exception());

@@ -35,6 +35,25 @@ void send(int dest, Tag tag, const std::vector<char>& bytes) {
   }
 }
 
+void PendingSend::start(int dest, Tag tag, std::vector<char> bytes) {
+  wait();
+  bytes_ = std::move(bytes);
+  size_ = bytes_.size();
+  requests_.emplace_back();
+  MPI_Isend(&size_, 1, MPI_UINT64_T, dest, tag, MPI_COMM_WORLD, &requests_.back());
+  for (uint64_t at = 0; at < size_; at += kPiece) {
+    const int n = static_cast<int>(std::min(kPiece, size_ - at));
+    requests_.emplace_back();
+    MPI_Isend(bytes_.data() + at, n, MPI_BYTE, dest, tag, MPI_COMM_WORLD, &requests_.back());
+  }
+}
+
+void PendingSend::wait() {
+  if (requests_.empty()) return;
+  MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
+  requests_.clear();
+}
+
 bool tryReceive(int source, Message& out) {
   int ready = 0;
   MPI_Status status;

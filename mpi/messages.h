@@ -12,16 +12,24 @@
 #include <atomic>
 #include <vector>
 
+#include <mpi.h>
+
 namespace lucent::mpi {
 
+// A frame: kFrame, then kFile for each file name as rank 0's parse is granted it (the
+// worker parses meanwhile, waiting for a name it lacks), then kLoaded or, if rank 0 does
+// not render that frame after all, kNoMore; then tiles. Each of the three carries a
+// FileBundle (file_bundle.h).
 enum Tag : int {
-  kFrame = 1,    // 0 -> worker: a frame to load (file_bundle.h), then tiles of it
+  kFrame = 1,    // 0 -> worker: a frame to load: its scene file
   kTile = 2,     // 0 -> worker: a tile of the frame to render
-  kNoMore = 3,   // 0 -> worker: the frame has no more tiles for it
+  kNoMore = 3,   // 0 -> worker: the frame has no more tiles for it (or is not rendered)
   kStop = 4,     // 0 -> worker: the run is over
   kReady = 5,    // worker -> 0: the frame is loaded; a tile, please
   kResult = 6,   // worker -> 0: a tile's pixels and counts (and a tile, please)
   kFailed = 7,   // worker -> 0: the frame could not be loaded (the reason)
+  kFile = 8,     // 0 -> worker: a name the frame's parse was granted, and its file if new
+  kLoaded = 9,   // 0 -> worker: the frame is loaded: every name, any file not sent yet
 };
 
 // Writes and reads the fields of a message in order (native byte order: the ranks of one
@@ -79,6 +87,25 @@ struct Message {
 
 // Blocking send of a whole buffer.
 void send(int dest, Tag tag, const std::vector<char>& bytes);
+
+// A send that returns at once, its buffer kept until MPI is done with it: a worker sends a
+// tile's pixels and goes on to the next tile rather than wait for rank 0's polling thread
+// to take them (a large message is not sent until the receiver asks for it). One at a
+// time: start() first waits for the send before.
+class PendingSend {
+ public:
+  PendingSend() = default;
+  PendingSend(const PendingSend&) = delete;
+  PendingSend& operator=(const PendingSend&) = delete;
+  ~PendingSend() { wait(); }
+  void start(int dest, Tag tag, std::vector<char> bytes);
+  void wait();
+
+ private:
+  uint64_t size_ = 0;
+  std::vector<char> bytes_;
+  std::vector<MPI_Request> requests_;
+};
 // The next message from `source` (or any rank: -1), if one is there.
 bool tryReceive(int source, Message& out);
 // Waits for the next message from `source` (or any), polling with short sleeps: Open MPI's

@@ -6,16 +6,48 @@
 
 #include "exit_status.h"
 
+#include "lang/file_access.h"
+
 #include <fmt/core.h>
 #include <tbb/task_arena.h>
 
 #include <atomic>
 #include <chrono>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <thread>
 
 namespace lucent::mpi {
+
+void TileDispatch::sendAll(int tag, const std::vector<char>& bytes) {
+  for (int w = 1; w < ranks(); ++w) send(w, static_cast<Tag>(tag), bytes);
+}
+
+void TileDispatch::loading(int frame, const std::filesystem::path& scene) {
+  if (ranks() == 1) return;
+  if (loadingFrame_) sendAll(kNoMore, {});  // the frame loaded before is not rendered
+  scene_ = canonicalPath(scene);
+  loadingFrame_ = frame;
+  FileBundle b;
+  try {
+    b = makeBundle(frame, scene_, {}, {scene_}, sent_);
+  } catch (const cli::IoFailure&) {
+    b = makeBundle(frame, scene_, {}, {}, sent_);  // rank 0's own parse says what is wrong
+  }
+  sendAll(kFrame, pack(b));
+}
+
+void TileDispatch::granted(const FileGrant& grant) {
+  if (!loadingFrame_ || std::this_thread::get_id() != mainThread_) return;
+  FileBundle b;
+  try {
+    b = makeBundle(*loadingFrame_, scene_, {grant}, {grant.canonical}, sent_);
+  } catch (const cli::IoFailure&) {
+    b = makeBundle(*loadingFrame_, scene_, {grant}, {}, sent_);
+  }
+  sendAll(kFile, pack(b));
+}
 
 TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::LoadedScene& loaded, int frame,
                                           const std::vector<PixelRect>& tiles, const std::vector<char>& skip,
@@ -53,16 +85,19 @@ TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::L
     if (!tile.cancelled) finished(i, tile);
   };
 
-  // The workers load the frame from the files sent.
+  // The workers have parsed the frame too, from the files streamed while rank 0 parsed
+  // it (loading, granted): kLoaded completes them, with every name the parse was granted.
   const int workers = ranks() - 1;
   if (workers > 0) {
+    if (loadingFrame_ != frame) loading(frame, scene_);
     std::vector<char> bundle = pack(makeBundle(frame, scene_, loaded.grants, [&] {
       std::vector<std::filesystem::path> files = loaded.sources;
       files.insert(files.end(), loaded.dataFiles.begin(), loaded.dataFiles.end());
       return files;
     }(), sent_));
+    loadingFrame_.reset();
     for (int w = 1; w <= workers; ++w) {
-      send(w, kFrame, bundle);
+      send(w, kLoaded, bundle);
       busy_.insert(w);
     }
   }
@@ -80,7 +115,12 @@ TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::L
     }
   });
 
-  // Each worker asks (kReady, or with a result) and gets a tile or, once there are none, kNoMore.
+  // Each worker asks (kReady, or with a result) and gets a tile, so that it holds two: the
+  // one it renders and the next, already there when it finishes (a round trip through
+  // this polling thread costs a cheap tile's worth of time). Once there are none and its
+  // last is back, it gets kNoMore.
+  constexpr int kHeld = 2;
+  std::map<int, int> held;  // tiles sent to a worker and not yet back
   std::optional<std::string> failure;
   try {
     Message m;
@@ -98,12 +138,17 @@ TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::L
         inner.progress->workDone += renderer.work(tiles[t.index]);
         inner.progress->rays += t.result.stats.rays();
         report(t.index, t.result);
+        --held[m.source];
       } else if (m.tag != kReady) {
         throw cli::IoFailure(fmt::format("rank {} sent an unexpected message ({})", m.source, m.tag));
       }
-      if (std::optional<size_t> i = take()) {
+      while (held[m.source] < kHeld) {
+        const std::optional<size_t> i = take();
+        if (!i) break;
         send(m.source, kTile, pack(TileOrder{frame, *i, tiles[*i]}));
-      } else {
+        ++held[m.source];
+      }
+      if (held[m.source] == 0) {
         send(m.source, kNoMore, {});
         busy_.erase(m.source);
       }
@@ -120,7 +165,8 @@ TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::L
 }
 
 void TileDispatch::stopWorkers() {
-  for (int w = 1; w < ranks(); ++w) send(w, kStop, {});
+  loadingFrame_.reset();
+  sendAll(kStop, {});
 }
 
 }  // namespace lucent::mpi

@@ -58,6 +58,7 @@ bool renderFrame(const cli::LoadedScene& loaded, int frame, ImageMapCache& textu
   RenderControl control;
   control.cancel = &cli::InterruptCatcher::flag();
   send(0, kReady, {});
+  PendingSend result;
   for (Message m;;) {
     if (!receive(0, m, control.cancel)) return false;
     if (m.tag == kNoMore) return true;
@@ -65,8 +66,49 @@ bool renderFrame(const cli::LoadedScene& loaded, int frame, ImageMapCache& textu
     const TileOrder order = unpackOrder(m.bytes);
     TileResult t{frame, order.index, renderer.renderRect(order.rect, control)};
     if (t.result.cancelled) return false;
-    send(0, kResult, pack(t));
+    result.start(0, kResult, pack(t));
   }
+}
+
+// The files of the frame being loaded, as rank 0 streams them (messages.h): each message
+// adds names (and copies) to the replay the parse resolves names by, until kLoaded
+// completes them, or kNoMore (rank 0 does not render the frame) or kStop ends the wait.
+class StreamedFiles {
+ public:
+  enum class State { Loading, Loaded, Abandoned, Stopped, Interrupted };
+
+  StreamedFiles(const fs::path& root, std::shared_ptr<FileReplay> replay) : root_(root), replay_(std::move(replay)) {}
+
+  // Takes the next message from rank 0; false once the frame's files are complete or the
+  // wait has ended.
+  bool next() {
+    if (state_ != State::Loading) return false;
+    Message m;
+    if (!receive(0, m, &cli::InterruptCatcher::flag())) {
+      state_ = State::Interrupted;
+      return false;
+    }
+    if (m.tag == kNoMore) state_ = State::Abandoned;
+    if (m.tag == kStop) state_ = State::Stopped;
+    if (m.tag != kFile && m.tag != kLoaded) return false;
+    const FileBundle b = unpack(m.bytes);
+    materialise(b, root_);
+    replay_->grants.insert(replay_->grants.end(), b.grants.begin(), b.grants.end());
+    if (m.tag == kLoaded) state_ = State::Loaded;
+    return true;
+  }
+  State state() const { return state_; }
+
+ private:
+  fs::path root_;
+  std::shared_ptr<FileReplay> replay_;
+  State state_ = State::Loading;
+};
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string out;
+  for (const std::string& l : lines) out += "\n" + l;
+  return out;
 }
 
 }  // namespace
@@ -80,32 +122,48 @@ int runWorker(const cli::RenderOptions& options, const cli::CommonOptions& commo
   PrivateFolder folder;
   auto meshes = std::make_shared<MeshFileCache>();
   ImageMapCache textures;
-  std::vector<FileGrant> grants;
   for (Message m;;) {
     if (!receive(0, m, &cli::InterruptCatcher::flag())) return cli::kRuntimeFailure;
     if (m.tag == kStop) return cli::kOk;
     if (m.tag != kFrame) continue;  // a late kNoMore of a cancelled frame
+    // The frame is parsed while rank 0 parses it, each file name waited for as it is
+    // needed; whether it is rendered, rank 0 says after its own parse.
+    auto replay = std::make_shared<FileReplay>();
+    replay->root = folder.path();
+    StreamedFiles files(folder.path(), replay);
+    replay->more = [&files] { return files.next(); };
     cli::LoadedScene loaded;
+    std::vector<std::string> messages;
+    std::optional<std::string> failure;
     int frame = 1;
     try {
       const FileBundle bundle = unpack(m.bytes);
       frame = bundle.frame;
       materialise(bundle, folder.path());
-      auto replay = std::make_shared<FileReplay>();
-      replay->root = folder.path();
-      replay->grants = bundle.grants;
       cli::SceneRequest request = cli::renderSceneRequest(options);
       request.scene = (folder.path() / bundle.scene.relative_path()).string();
       request.frame = frame;
       request.meshCache = meshes;
       request.replay = replay;
       request.quiet = true;
+      request.heldMessages = &messages;
       loaded = cli::loadScene(request, common);
     } catch (const cli::ReportedFailure&) {
-      send(0, kFailed, text("its messages are above"));
-      continue;
+      failure = messages.empty() ? std::string("it could not parse the scene") : joined(messages);
     } catch (const std::exception& e) {
-      send(0, kFailed, text(e.what()));
+      failure = e.what();
+    }
+    while (files.next()) {
+    }
+    switch (files.state()) {
+      case StreamedFiles::State::Stopped: return cli::kOk;
+      case StreamedFiles::State::Interrupted: return cli::kRuntimeFailure;
+      case StreamedFiles::State::Abandoned: continue;
+      case StreamedFiles::State::Loading:
+      case StreamedFiles::State::Loaded: break;
+    }
+    if (failure) {
+      send(0, kFailed, text(*failure));
       continue;
     }
     if (!renderFrame(loaded, frame, textures)) return cli::kRuntimeFailure;

@@ -125,6 +125,40 @@ else
   fail "cannot make a mount namespace here (unshare -m, as root) to hide the scene from the workers"
 fi
 
+# An animation stopped (SIGTERM to rank 0, as a batch system's cancel sends every process
+# of the job) after its first frame, then resumed over the ranks: the written frame is
+# skipped (loaded, found written, not rendered: the workers, which parsed it alongside rank
+# 0, are told so), the others match a single process.
+cat > "$tmp/scene/slow-anim.xml" <<'XML'
+<scene version="1">
+  <animation frames="4"/>
+  <render width="160" height="120" samples="16"/>
+  <camera position="0 1.5 5" look-at="0 0.5 0"/>
+  <light type="area" position="3 5 4" u="1 0 0" v="0 0 1" samples="6 6" jitter="true"/>
+  <include src="parts/floor.xml"/>
+  <sphere center="${clock} 0.7 0" radius="0.7"><material transmissive="0.8" ior="1.5" reflective="0.1"/></sphere>
+</scene>
+XML
+"$lucent" render "$tmp/scene/slow-anim.xml" -o "$tmp/sa-one#.png" -q || fail "the slow animation"
+run_mpi 2 render "$tmp/scene/slow-anim.xml" -o "$tmp/sa#.png" -q -t 1 --tile-size 8 --checkpoint-interval 0.05 \
+  >"$tmp/term.out" 2>"$tmp/term.err" &
+job=$!
+for _ in $(seq 600); do
+  [ -f "$tmp/sa1.png" ] && break
+  sleep 0.01
+done
+for p in $(pgrep -f "$mpi render $tmp/scene/slow-anim.xml"); do
+  tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx OMPI_COMM_WORLD_RANK=0 && kill -TERM "$p"
+done
+wait "$job"
+[ -f "$tmp/sa4.png" ] && fail "the stopped animation wrote every frame (the test shows nothing)"
+grep -q "run again with --resume" "$tmp/term.err" || fail "the stopped animation kept no checkpoint: $(cat "$tmp/term.err")"
+expect 0 "an animation resumed over 2 ranks" -- run_mpi 2 render "$tmp/scene/slow-anim.xml" -o "$tmp/sa#.png" -t 1 --tile-size 8 --resume
+grep -q "frame 1: '$tmp/sa1.png' was written before; skipped" "$tmp/stderr" ||
+  fail "the resumed animation did not skip frame 1: $(cat "$tmp/stderr")"
+for f in 1 2 3 4; do
+  cmp -s "$tmp/sa-one$f.png" "$tmp/sa$f.png" || fail "the resumed animation's frame $f differs"
+done
 # A killed worker: mpirun ends the job naming the rank, rank 0 keeps its checkpoint, and
 # --resume (plain lucent) completes the same image.
 cat > "$tmp/scene/slow.xml" <<'XML'
