@@ -35,6 +35,42 @@ void send(int dest, Tag tag, const std::vector<char>& bytes) {
   }
 }
 
+namespace {
+void waitPolling(MPI_Request& request) {
+  for (int polls = 0;; ++polls) {
+    int done = 0;
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    if (polls > 100) std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+}
+
+// The header and then the pieces, each broadcast from rank 0; `head` is [tag, size].
+void broadcastParts(uint64_t head[2], std::vector<char>& bytes, bool root) {
+  MPI_Request request;
+  MPI_Ibcast(head, 2, MPI_UINT64_T, 0, MPI_COMM_WORLD, &request);
+  waitPolling(request);
+  if (!root) bytes.resize(head[1]);
+  for (uint64_t at = 0; at < head[1]; at += kPiece) {
+    const int n = static_cast<int>(std::min(kPiece, head[1] - at));
+    MPI_Ibcast(bytes.data() + at, n, MPI_BYTE, 0, MPI_COMM_WORLD, &request);
+    waitPolling(request);
+  }
+}
+}  // namespace
+
+void broadcast(Tag tag, const std::vector<char>& bytes) {
+  uint64_t head[2] = {static_cast<uint64_t>(tag), bytes.size()};
+  broadcastParts(head, const_cast<std::vector<char>&>(bytes), true);  // the root only reads it
+}
+
+void receiveBroadcast(Message& out) {
+  uint64_t head[2] = {0, 0};
+  broadcastParts(head, out.bytes, false);
+  out.source = 0;
+  out.tag = static_cast<int>(head[0]);
+}
+
 void PendingSend::start(int dest, Tag tag, std::vector<char> bytes) {
   wait();
   bytes_ = std::move(bytes);

@@ -88,6 +88,15 @@ struct Message {
 // Blocking send of a whole buffer.
 void send(int dest, Tag tag, const std::vector<char>& bytes);
 
+// Rank 0 to every worker at once, along MPI's broadcast (Open MPI's libnbc: a binomial
+// tree, or a pipelined chain for large messages, so rank 0 does not send each byte once
+// per worker): the scene's files as a frame loads, and the frame's and the run's ends.
+// Every worker takes every broadcast, in order, with receiveBroadcast; both wait polling
+// with naps, as receive() does. A worker does not stop waiting on SIGTERM: rank 0 then
+// ends the run with kStop (or MPI ends the job).
+void broadcast(Tag tag, const std::vector<char>& bytes);
+void receiveBroadcast(Message& out);
+
 // A send that returns at once, its buffer kept until MPI is done with it: a worker sends a
 // tile's pixels and goes on to the next tile rather than wait for rank 0's polling thread
 // to take them (a large message is not sent until the receiver asks for it). One at a

@@ -21,7 +21,7 @@
 namespace lucent::mpi {
 
 void TileDispatch::sendAll(int tag, const std::vector<char>& bytes) {
-  for (int w = 1; w < ranks(); ++w) send(w, static_cast<Tag>(tag), bytes);
+  if (ranks() > 1) broadcast(static_cast<Tag>(tag), bytes);
 }
 
 void TileDispatch::loading(int frame, const std::filesystem::path& scene) {
@@ -96,10 +96,8 @@ TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::L
       return files;
     }(), sent_));
     loadingFrame_.reset();
-    for (int w = 1; w <= workers; ++w) {
-      send(w, kLoaded, bundle);
-      busy_.insert(w);
-    }
+    sendAll(kLoaded, bundle);
+    for (int w = 1; w <= workers; ++w) busy_.insert(w);
   }
 
   // Rank 0 renders tiles too, on a thread of its own.

@@ -62,7 +62,6 @@ bool renderFrame(const cli::LoadedScene& loaded, int frame, ImageMapCache& textu
   for (Message m;;) {
     if (!receive(0, m, control.cancel)) return false;
     if (m.tag == kNoMore) return true;
-    if (m.tag == kStop) return false;
     const TileOrder order = unpackOrder(m.bytes);
     TileResult t{frame, order.index, renderer.renderRect(order.rect, control)};
     if (t.result.cancelled) return false;
@@ -75,7 +74,7 @@ bool renderFrame(const cli::LoadedScene& loaded, int frame, ImageMapCache& textu
 // completes them, or kNoMore (rank 0 does not render the frame) or kStop ends the wait.
 class StreamedFiles {
  public:
-  enum class State { Loading, Loaded, Abandoned, Stopped, Interrupted };
+  enum class State { Loading, Loaded, Abandoned, Stopped };
 
   StreamedFiles(const fs::path& root, std::shared_ptr<FileReplay> replay) : root_(root), replay_(std::move(replay)) {}
 
@@ -84,13 +83,11 @@ class StreamedFiles {
   bool next() {
     if (state_ != State::Loading) return false;
     Message m;
-    if (!receive(0, m, &cli::InterruptCatcher::flag())) {
-      state_ = State::Interrupted;
+    receiveBroadcast(m);
+    if (m.tag != kFile && m.tag != kLoaded) {
+      state_ = m.tag == kNoMore ? State::Abandoned : State::Stopped;  // kStop
       return false;
     }
-    if (m.tag == kNoMore) state_ = State::Abandoned;
-    if (m.tag == kStop) state_ = State::Stopped;
-    if (m.tag != kFile && m.tag != kLoaded) return false;
     const FileBundle b = unpack(m.bytes);
     materialise(b, root_);
     replay_->grants.insert(replay_->grants.end(), b.grants.begin(), b.grants.end());
@@ -123,9 +120,9 @@ int runWorker(const cli::RenderOptions& options, const cli::CommonOptions& commo
   auto meshes = std::make_shared<MeshFileCache>();
   ImageMapCache textures;
   for (Message m;;) {
-    if (!receive(0, m, &cli::InterruptCatcher::flag())) return cli::kRuntimeFailure;
+    receiveBroadcast(m);  // kFrame or kStop
     if (m.tag == kStop) return cli::kOk;
-    if (m.tag != kFrame) continue;  // a late kNoMore of a cancelled frame
+    if (m.tag != kFrame) continue;
     // The frame is parsed while rank 0 parses it, each file name waited for as it is
     // needed; whether it is rendered, rank 0 says after its own parse.
     auto replay = std::make_shared<FileReplay>();
@@ -157,7 +154,6 @@ int runWorker(const cli::RenderOptions& options, const cli::CommonOptions& commo
     }
     switch (files.state()) {
       case StreamedFiles::State::Stopped: return cli::kOk;
-      case StreamedFiles::State::Interrupted: return cli::kRuntimeFailure;
       case StreamedFiles::State::Abandoned: continue;
       case StreamedFiles::State::Loading:
       case StreamedFiles::State::Loaded: break;
