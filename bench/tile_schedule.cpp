@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
   double latencyUs = net.latency * 1e6, bandwidthGBs = net.bandwidth / 1e9;
   double rank0FixedUs = net.rank0Fixed * 1e6, rank0MemGBs = net.rank0MemBandwidth / 1e9;
   double sceneMB = net.sceneBytes / 1e6, load = -1;
+  double costScale = 1.0;
 
   app.add_option("trace", tracePath, "Tile-cost trace (lucent render --tile-costs FILE)");
   auto* synth =
@@ -103,6 +104,10 @@ int main(int argc, char** argv) {
   app.add_option("--load", load,
                  "Seconds a rank takes to load the scene (default: the trace's 'load' key, else 0)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--cost-scale", costScale,
+                 "Multiply every recorded tile cost (a trace at 4 samples a pixel, --cost-scale 4: "
+                 "16 samples; rendering time grows linearly with the samples)")
+      ->check(CLI::PositiveNumber);
   app.add_flag("--no-prefetch", noPrefetch,
                "A rank asks for its next tile only when it finishes one");
   app.add_flag("--rank0-idle", rank0Idle, "Rank 0 only coordinates and renders no tile");
@@ -119,6 +124,10 @@ int main(int argc, char** argv) {
       if (!in) throw std::runtime_error(tracePath + ": cannot open");
       grid = parseTileCosts(in, tracePath);
       source = "trace " + tracePath;
+      if (costScale != 1.0) {
+        for (double& c : grid.cost) c *= costScale;
+        source += fmt::format(", costs x {}", costScale);
+      }
     } else {
       std::vector<HotRegion> hot;
       if (!noHot) {

@@ -53,8 +53,10 @@ void broadcastParts(uint64_t head[2], std::vector<char>& bytes, bool root) {
   if (!root) bytes.resize(head[1]);
   for (uint64_t at = 0; at < head[1]; at += kPiece) {
     const int n = static_cast<int>(std::min(kPiece, head[1] - at));
+    // The pieces follow their header at once: waited for without naps, since a large
+    // broadcast moves in segments that each need a call into MPI on both sides.
     MPI_Ibcast(bytes.data() + at, n, MPI_BYTE, 0, MPI_COMM_WORLD, &request);
-    waitPolling(request);
+    MPI_Wait(&request, MPI_STATUS_IGNORE);
   }
 }
 }  // namespace

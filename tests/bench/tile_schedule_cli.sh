@@ -33,6 +33,17 @@ grep -q 'optimistic' "$tmp/stdout" || fail "good trace: no words on where the mo
 rows=$(grep -vc '^#' "$tmp/out.tsv")
 [ "$rows" -eq 10 ] || fail "good trace: $rows TSV rows, expected 10"
 
+# --cost-scale multiplies every tile's cost: the total is said 4 times larger (0.12 s to
+# 0.48 s), and the same messages then weigh less against the rendering.
+"$sched" "$tmp/good.txt" --ranks 4 --tiles 16 --tsv "$tmp/x1.tsv" >"$tmp/stdout1" 2>&1
+"$sched" "$tmp/good.txt" --ranks 4 --tiles 16 --cost-scale 4 --tsv "$tmp/x4.tsv" >"$tmp/stdout4" 2>&1
+grep -q '0.12 s in all' "$tmp/stdout1" || fail "cost scale 1: total: $(head -2 "$tmp/stdout1")"
+grep -q 'costs x 4: .*0.48 s in all' "$tmp/stdout4" || fail "cost scale 4: total: $(head -2 "$tmp/stdout4")"
+e1=$(grep -v '^#' "$tmp/x1.tsv" | head -1 | cut -f4)
+e4=$(grep -v '^#' "$tmp/x4.tsv" | head -1 | cut -f4)
+awk -v a="$e1" -v b="$e4" 'BEGIN { exit !(b > a) }' || fail "cost scale 4: efficiency $e4 not above $e1"
+"$sched" "$tmp/good.txt" --cost-scale 0 >/dev/null 2>&1 && fail "--cost-scale 0: exit status 0"
+
 sed 's/^16 16 32 32 0.01$/16 16 32 32 0.01 extra/' "$tmp/good.txt" > "$tmp/bad.txt"
 "$sched" "$tmp/bad.txt" >"$tmp/stdout" 2>"$tmp/stderr"
 status=$?
