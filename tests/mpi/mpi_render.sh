@@ -4,7 +4,8 @@
 # tile sizes and thread counts, a region and an animation's frames; the workers render from
 # the files rank 0 sent them, with the scene's folder hidden from them (a mount namespace
 # of their own); a killed rank ends the job naming it, and --resume completes the image;
-# a bad scene or option is said once, with the usual exit status.
+# an animation stopped after a frame resumes over the ranks; a bad scene or option is said
+# once, with the usual exit status.
 # Usage: bash mpi_render.sh <path-to-lucent> <source-dir> <path-to-lucent-mpi>
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/../scripts/lib/script_test.sh"
