@@ -20,8 +20,8 @@ FileBundle makeBundle(int frame, const fs::path& scene, const std::vector<FileGr
   b.grants = grants;
   for (const fs::path& f : files) {
     if (sent.count(f)) continue;
-    // Read whole into a string of the file's size (a stream copy costs a tenth of a
-    // second for a 13 MB mesh, during which the workers wait for it).
+    // Read whole into a string of the file's size: a stream copy is many times slower,
+    // and the workers wait for it.
     std::ifstream in(f, std::ios::binary | std::ios::ate);
     std::string bytes;
     if (in) {
