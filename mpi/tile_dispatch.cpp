@@ -55,18 +55,10 @@ TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::L
                                           renders one tile at a time anyway*/,
                                           const TileFinished& finished) {
   const auto start = std::chrono::steady_clock::now();
-  std::vector<size_t> todo;
-  uint64_t work = 0;
-  for (size_t i = 0; i < tiles.size(); ++i)
-    if (skip.empty() || !skip[i]) {
-      todo.push_back(i);
-      work += renderer.work(tiles[i]);
-    }
+  const TilesToDo toDo = tilesToDo(renderer, tiles, skip);
+  const std::vector<size_t>& todo = toDo.indices;
   RenderProgress localProgress;
-  RenderControl inner = control;
-  inner.threads = 0;  // the arena below bounds them
-  if (!inner.progress) inner.progress = &localProgress;
-  inner.progress->workTotal = work;
+  const RenderControl inner = tileControl(control, toDo.work, localProgress);
   auto cancelled = [&] { return control.cancel && control.cancel->load(std::memory_order_relaxed); };
 
   // Row order, as renderTiles: the next tile for whoever asks first.

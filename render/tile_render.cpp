@@ -12,22 +12,32 @@ int defaultTileSize(const RenderSettings& settings) {
   return Renderer::adaptiveMargin(settings) > 0 ? 128 : 32;
 }
 
+TilesToDo tilesToDo(const Renderer& renderer, const std::vector<PixelRect>& tiles, const std::vector<char>& skip) {
+  TilesToDo out;
+  for (size_t i = 0; i < tiles.size(); ++i)
+    if (skip.empty() || !skip[i]) {
+      out.indices.push_back(i);
+      out.work += renderer.work(tiles[i]);
+    }
+  return out;
+}
+
+RenderControl tileControl(const RenderControl& control, uint64_t work, RenderProgress& local) {
+  RenderControl inner = control;
+  inner.threads = 0;  // the caller's arena bounds them
+  if (!inner.progress) inner.progress = &local;
+  inner.progress->workTotal = work;
+  return inner;
+}
+
 TileRenderResult renderTiles(const Renderer& renderer, const std::vector<PixelRect>& tiles,
                              const std::vector<char>& skip, const RenderControl& control,
                              bool oneAtATime, const TileFinished& finished) {
   const auto start = std::chrono::steady_clock::now();
-  std::vector<size_t> todo;
-  uint64_t work = 0;
-  for (size_t i = 0; i < tiles.size(); ++i)
-    if (skip.empty() || !skip[i]) {
-      todo.push_back(i);
-      work += renderer.work(tiles[i]);
-    }
+  const TilesToDo toDo = tilesToDo(renderer, tiles, skip);
+  const std::vector<size_t>& todo = toDo.indices;
   RenderProgress localProgress;
-  RenderControl inner = control;
-  inner.threads = 0;  // the arena below bounds them
-  if (!inner.progress) inner.progress = &localProgress;
-  inner.progress->workTotal = work;
+  const RenderControl inner = tileControl(control, toDo.work, localProgress);
 
   TileRenderResult result;
   std::mutex reporting;
