@@ -387,7 +387,10 @@ void Superellipsoid::roots(const Ray& ray, double lo, double hi, Roots& out,
     if (a < t && t < b) ts[nt++] = t;
   }
   ts[nt++] = b;
-  std::sort(ts + 1, ts + nt - 1);
+  // At most three cuts between a and b: sorted in place (GCC 12 warns of an out-of-bounds
+  // read in std::sort's unrolled code for this array, a read it can never take).
+  for (int i = 2; i < nt - 1; ++i)
+    for (int j = i; j > 1 && ts[j] < ts[j - 1]; --j) std::swap(ts[j], ts[j - 1]);
   double f0;
   if (e_ <= 2.0 && n_ <= 2.0) {
     const auto [fa, ga] = solver.valueAndSlope(a);

@@ -137,22 +137,22 @@ std::string attributeText(const Vec3& v);
 
 template <class S>
 Field<S> numberField(const char* name, double S::*m, NumberRule rule = NumberRule::any()) {
-  return {{name, AttrType::Number, rule, {}, attributeText(S{}.*m), false},
+  return {{name, AttrType::Number, rule, {}, attributeText(S{}.*m), false, "", 1},
           [name, m, rule](S& s, AttributeInput& in) { s.*m = in.number(name, s.*m, rule); }};
 }
 template <class S>
 Field<S> vectorField(const char* name, Vec3 S::*m) {
-  return {{name, AttrType::Vector, {}, {}, attributeText(S{}.*m), false},
+  return {{name, AttrType::Vector, {}, {}, attributeText(S{}.*m), false, "", 1},
           [name, m](S& s, AttributeInput& in) { s.*m = in.vector(name, s.*m); }};
 }
 template <class S>
 Field<S> directionField(const char* name, Vec3 S::*m) {
-  return {{name, AttrType::Direction, {}, {}, attributeText(S{}.*m), false},
+  return {{name, AttrType::Direction, {}, {}, attributeText(S{}.*m), false, "", 1},
           [name, m](S& s, AttributeInput& in) { s.*m = in.direction(name, s.*m); }};
 }
 template <class S>
 Field<S> booleanField(const char* name, bool S::*m) {
-  return {{name, AttrType::Boolean, {}, {}, S{}.*m ? "true" : "false", false},
+  return {{name, AttrType::Boolean, {}, {}, S{}.*m ? "true" : "false", false, "", 1},
           [name, m](S& s, AttributeInput& in) { s.*m = in.boolean(name, s.*m); }};
 }
 // An attribute the entry's finish() reads itself (type and default for the schema only).
