@@ -309,7 +309,7 @@ inline Outcome expression(const uint8_t* data, size_t size) {
   }
   size_t column = 0, length = 0;
   const std::string xml = expressionScene(text, column, length);
-  ParseResult parsed = parseSceneString(xml, LUCENT_SOURCE_DIR "/examples/fuzz-input.xml");
+  ParseResult parsed = parseSceneString(xml, std::string(LUCENT_SOURCE_DIR) + "/examples/fuzz-input.xml");
   for (const Diagnostic& d : parsed.diagnostics.all()) {
     if (d.message.rfind("internal error while reading the scene", 0) == 0) return finding(d.str());
     if (d.severity != Severity::Error) continue;
@@ -327,7 +327,7 @@ inline Outcome expression(const uint8_t* data, size_t size) {
 inline Outcome expansion(const uint8_t* data, size_t size) {
   const std::string xml = expansionScene(data, size);
   return sceneParser(reinterpret_cast<const uint8_t*>(xml.data()), xml.size(),
-                     LUCENT_SOURCE_DIR "/examples/fuzz-input.xml");
+                     std::string(LUCENT_SOURCE_DIR) + "/examples/fuzz-input.xml");
 }
 
 // For the libFuzzer entry points: a finding stops the run, and libFuzzer keeps the input.

@@ -3,6 +3,6 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   lucent::fuzz::abortOnFinding(
-      lucent::fuzz::sceneParser(data, size, LUCENT_SOURCE_DIR "/examples/fuzz-input.xml"));
+      lucent::fuzz::sceneParser(data, size, std::string(LUCENT_SOURCE_DIR) + "/examples/fuzz-input.xml"));
   return 0;
 }

@@ -1,4 +1,4 @@
-// Runs the lucent binary (LUCENT_BINARY) as a user would, for the tests of the command line.
+// Runs the lucent binary (lucentBinaryPath()) as a user would, for the tests of the command line.
 #pragma once
 
 #include <catch2/catch.hpp>
@@ -9,6 +9,7 @@
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "../support/paths.h"
 
 namespace lucent::test {
 
@@ -24,7 +25,7 @@ inline LucentRun runLucent(const std::string& args) {
   static int counter = 0;
   fs::path errFile = fs::temp_directory_path() /
                      ("lucent-cli-test-" + std::to_string(::getpid()) + "-" + std::to_string(++counter) + ".err");
-  std::string cmd = std::string("'") + LUCENT_BINARY + "' " + args + " 2>'" + errFile.string() + "' </dev/null";
+  std::string cmd = std::string("'") + lucentBinaryPath() + "' " + args + " 2>'" + errFile.string() + "' </dev/null";
   LucentRun r;
   FILE* p = popen(cmd.c_str(), "r");
   REQUIRE(p);
@@ -47,7 +48,7 @@ inline LucentRun runLucent(const std::string& args) {
 }
 
 inline std::string sourcePath(const std::string& rel) {
-  return (std::filesystem::path(LUCENT_SOURCE_DIR) / rel).string();
+  return (std::filesystem::path(lucentSourceDir()) / rel).string();
 }
 
 // A fresh empty folder under the system's temporary folder, removed with the object.

@@ -5,6 +5,7 @@
 #include "../render/scene_builder.h"
 
 #include "csg/csg_node.h"
+#include "../support/scene_text.h"
 #include "lang/parser.h"
 #include "render/image_io.h"
 
@@ -20,15 +21,11 @@ using namespace lucent::test;
 namespace {
 
 std::unique_ptr<Scene> parse(const std::string& body) {
-  ParseResult parsed = parseSceneString(R"XML(<scene version="1"><camera/>
+  return parseValid(body, "cases.xml", R"XML(<camera/>
       <material id="red" diffuse="1 0 0"/>
       <material id="green" diffuse="0 1 0"/>
       <material id="blue" diffuse="0 0 1"/>
-      <material id="white" diffuse="1"/>)XML" + body + "</scene>",
-                                        "cases.xml");
-  INFO(body);
-  REQUIRE(parsed.scene);
-  return std::move(parsed.scene);
+      <material id="white" diffuse="1"/>)XML");
 }
 
 struct Seen {

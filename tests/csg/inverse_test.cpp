@@ -4,6 +4,7 @@
 // its inside is the outside. Compared ray by ray over a fan of rays through the shapes.
 #include "../render/scene_builder.h"
 
+#include "../support/scene_text.h"
 #include "lang/parser.h"
 #include "povray/pov_export.h"
 
@@ -14,15 +15,7 @@ using namespace lucent::test;
 
 namespace {
 
-std::unique_ptr<Scene> parse(const std::string& body) {
-  ParseResult parsed = parseSceneString("<scene version=\"1\"><camera/>" + body + "</scene>", "inverse.xml");
-  std::string all;
-  for (const Diagnostic& d : parsed.diagnostics.all()) all += d.str() + "\n";
-  INFO(body << "\n" << all);
-  REQUIRE(parsed.scene);
-  REQUIRE(parsed.diagnostics.errorCount() == 0);
-  return std::move(parsed.scene);
-}
+std::unique_ptr<Scene> parse(const std::string& body) { return parseValid(body, "inverse.xml"); }
 
 struct Seen {
   bool found = false;

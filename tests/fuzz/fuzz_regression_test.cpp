@@ -5,6 +5,10 @@
 // finding will do); tests/fuzz/corpus/TARGET/ holds inputs that cover the target, each named
 // after the outcome it must have (accept-* or refuse-*). The READMEs there tell how inputs
 // get there.
+#include "../support/paths.h"
+// The harness finds examples/ through LUCENT_SOURCE_DIR, which the fuzz targets' build
+// defines; here it is the tests' source folder.
+#define LUCENT_SOURCE_DIR lucentSourceDir()
 #include "fuzz/fuzz_inputs.h"
 
 #include <catch2/catch.hpp>
@@ -39,7 +43,7 @@ bool startsWith(const std::string& s, const std::string& prefix) { return s.rfin
 // Replays every kept input of `target`; returns how many there were.
 template <class Replay>
 size_t replayAll(const std::string& target, Replay replay) {
-  const fs::path root = fs::path(LUCENT_SOURCE_DIR) / "tests" / "fuzz";
+  const fs::path root = fs::path(lucentSourceDir()) / "tests" / "fuzz";
   size_t count = 0;
   for (const char* kind : {"crashes", "corpus"}) {
     for (const fs::path& p : filesIn(root / kind / target)) {
@@ -63,7 +67,7 @@ size_t replayAll(const std::string& target, Replay replay) {
 
 TEST_CASE("fuzz regressions: scene parser inputs are refused or built cleanly", "[fuzz]") {
   const size_t n = replayAll("scene_parser", [](const uint8_t* d, size_t n) {
-    return lucent::fuzz::sceneParser(d, n, LUCENT_SOURCE_DIR "/examples/fuzz-input.xml");
+    return lucent::fuzz::sceneParser(d, n, std::string(lucentSourceDir()) + "/examples/fuzz-input.xml");
   });
   CHECK(n > 0);
 }

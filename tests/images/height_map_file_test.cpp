@@ -4,6 +4,7 @@
 #include "images/height_map_file.h"
 
 #include "../temp_dir.h"
+#include "../support/paths.h"
 
 #include <catch2/catch.hpp>
 
@@ -17,7 +18,7 @@ using namespace lucent;
 namespace {
 
 std::string dataFile(const std::string& name) {
-  return std::string(LUCENT_SOURCE_DIR) + "/tests/data/height_field/" + name;
+  return std::string(lucentSourceDir()) + "/tests/data/height_field/" + name;
 }
 
 std::vector<long> povHeights(const std::string& name) {

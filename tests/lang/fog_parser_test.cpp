@@ -1,23 +1,16 @@
 // <fog>: its attributes and defaults, read into Scene::fog; a scene without one has none.
-#include "lang/parser.h"
+#include "../support/scene_text.h"
 
 #include <catch2/catch.hpp>
 
 #include <string>
 
 using namespace lucent;
+using namespace lucent::test;
 
 namespace {
 
-std::unique_ptr<Scene> parse(const std::string& body) {
-  ParseResult r = parseSceneString("<scene version=\"1\"><camera/>" + body + "</scene>", "fog.xml");
-  std::string all;
-  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
-  INFO(all);
-  REQUIRE(r.scene != nullptr);
-  REQUIRE(r.diagnostics.all().empty());
-  return std::move(r.scene);
-}
+std::unique_ptr<Scene> parse(const std::string& body) { return parseClean(body, "fog.xml"); }
 
 }  // namespace
 

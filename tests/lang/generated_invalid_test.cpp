@@ -1,5 +1,6 @@
 // Invalid scenes too large or too environment-dependent for data files: hostile nesting,
 // long include chains, symbolic links that leave the scene's folder, unreadable files.
+#include "../support/scene_text.h"
 #include "../temp_dir.h"
 #include "lang/parser.h"
 
@@ -12,19 +13,9 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
+using lucent::test::messages;
 using lucent::test::TempDir;
 using namespace lucent;
-
-namespace {
-
-
-std::string messages(const ParseResult& r) {
-  std::string all;
-  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
-  return all;
-}
-
-}  // namespace
 
 TEST_CASE("lang: 100,000 nested elements give an error at the first one too deep, not a crash", "[lang][invalid]") {
   const int n = 100000;

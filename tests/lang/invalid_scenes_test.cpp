@@ -6,6 +6,7 @@
 // through the binary, with time limits; this test runs them in the test build's sanitizers.
 #include "lang/parser.h"
 #include "render/scene_check.h"
+#include "../support/paths.h"
 
 #include <catch2/catch.hpp>
 
@@ -53,7 +54,7 @@ std::vector<SceneCase> checkCases(const fs::path& casesFile) {
 
 TEST_CASE("lang: every invalid scene of the corpus is refused with its expected located errors",
           "[lang][invalid]") {
-  const fs::path bad = fs::path(LUCENT_SOURCE_DIR) / "tests" / "bad";
+  const fs::path bad = fs::path(lucentSourceDir()) / "tests" / "bad";
   const std::vector<SceneCase> cases = checkCases(bad / "cases.txt");
   REQUIRE(cases.size() >= 180);
 

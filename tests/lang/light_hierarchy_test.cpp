@@ -1,7 +1,7 @@
 // Lights in the hierarchy: a <light> in a group, CSG operation, <defs>, <repeat> or <if>,
 // or instantiated by <use>, is placed in the world by its parent's world transform after
 // its own (Scene::lights, scenegraph/light_placement.h).
-#include "lang/parser.h"
+#include "../support/scene_text.h"
 #include "scenegraph/light_placement.h"
 
 #include <catch2/catch.hpp>
@@ -9,26 +9,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 using namespace lucent;
+using namespace lucent::test;
 
 namespace {
 
-ParseResult parse(const std::string& body) {
-  return parseSceneString("<scene version=\"1\"><camera/>" + body + "</scene>", "lights.xml");
-}
-
-std::string messages(const ParseResult& r) {
-  std::string all;
-  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
-  return all;
-}
-
-std::unique_ptr<Scene> load(const std::string& body) {
-  ParseResult r = parse(body);
-  INFO(messages(r));
-  REQUIRE(r.scene);
-  REQUIRE(r.diagnostics.all().empty());
-  return std::move(r.scene);
-}
+ParseResult parse(const std::string& body) { return parseBody(body, "lights.xml"); }
+std::unique_ptr<Scene> load(const std::string& body) { return parseClean(body, "lights.xml"); }
 
 bool close(const Vec3& a, const Vec3& b) { return glm::length(a - b) <= 1e-12; }
 

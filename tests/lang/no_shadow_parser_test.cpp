@@ -1,22 +1,15 @@
 // shadows="false" on geometry nodes: read into Node::shadows on every kind of node; on a
 // part of a merge, intersection or difference it is a warning (it changes nothing there).
-#include "lang/parser.h"
+#include "../support/scene_text.h"
 
 #include <catch2/catch.hpp>
 
 using namespace lucent;
+using namespace lucent::test;
 
 namespace {
 
-ParseResult parse(const std::string& body) {
-  return parseSceneString("<scene version=\"1\"><camera/>" + body + "</scene>", "shadows.xml");
-}
-
-std::string messages(const ParseResult& r) {
-  std::string all;
-  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
-  return all;
-}
+ParseResult parse(const std::string& body) { return parseBody(body, "shadows.xml"); }
 
 }  // namespace
 

@@ -2,6 +2,8 @@
 // diagnostic at all (the diagnostics are shown when it does not).
 #pragma once
 
+#include "../support/paths.h"
+#include "../support/scene_text.h"
 #include "lang/parser.h"
 
 #include <catch2/catch.hpp>
@@ -13,14 +15,10 @@
 namespace lucent::testing {
 
 inline std::filesystem::path validDir() {
-  return std::filesystem::path(LUCENT_SOURCE_DIR) / "tests" / "lang" / "valid";
+  return std::filesystem::path(lucentSourceDir()) / "tests" / "lang" / "valid";
 }
 
-inline std::string messages(const ParseResult& r) {
-  std::string all;
-  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
-  return all;
-}
+using lucent::test::messages;
 
 inline std::unique_ptr<Scene> load(const std::string& name, const ParseOptions& options = {}) {
   ParseResult r = parseSceneFile((validDir() / name).string(), options);

@@ -4,6 +4,7 @@
 #include "mesh_test_support.h"
 
 #include "lang/parser.h"
+#include "../support/paths.h"
 
 #include <fmt/format.h>
 
@@ -19,7 +20,7 @@ namespace {
 // The gallery's icosahedron (counter-clockwise seen from outside) with the faces in
 // `backwards` written clockwise.
 std::string icosahedronOff(const std::set<int>& backwards, bool insideOut = false) {
-  std::ifstream in(std::string(LUCENT_SOURCE_DIR) + "/examples/gallery/meshes/icosahedron.off");
+  std::ifstream in(std::string(lucentSourceDir()) + "/examples/gallery/meshes/icosahedron.off");
   std::string line, out;
   int face = 0;
   while (std::getline(in, line)) {

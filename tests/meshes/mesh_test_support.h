@@ -4,6 +4,7 @@
 
 #include "../temp_dir.h"
 #include "primitives/mesh_data.h"
+#include "../support/paths.h"
 
 #include <catch2/catch.hpp>
 
@@ -19,7 +20,7 @@
 namespace lucent::meshtest {
 
 inline std::string dataFile(const std::string& name) {
-  return std::string(LUCENT_SOURCE_DIR) + "/tests/data/meshes/" + name;
+  return std::string(lucentSourceDir()) + "/tests/data/meshes/" + name;
 }
 
 // Divergence theorem: the sum of signed tetrahedron volumes (origin, a, b, c). Positive for a

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include "../support/paths.h"
 
 namespace lucent::test {
 
@@ -18,7 +19,7 @@ struct ReferenceRow {
 };
 
 inline std::string referencePath(const std::string& file) {
-  return std::string(LUCENT_SOURCE_DIR) + "/tests/data/patterns/" + file;
+  return std::string(lucentSourceDir()) + "/tests/data/patterns/" + file;
 }
 
 // Reads `file`; with `named`, the first column is the case name.

@@ -4,6 +4,7 @@
 #include "povray/pov_export.h"
 
 #include "lang/parser.h"
+#include "../support/paths.h"
 
 #include <catch2/catch.hpp>
 
@@ -17,7 +18,7 @@ PovExport exportBumpScene(const std::string& shape, std::string& messages) {
                     "<material id=\"studs\" diffuse=\"0.8\"><bump-map src=\"textures/bumps.png\" "
                     "depth=\"-1.25\"/></material>\n" + shape + "\n</scene>\n";
   ParseResult parsed =
-      parseSceneString(xml, std::string(LUCENT_SOURCE_DIR) + "/examples/gallery/bump-test.xml");
+      parseSceneString(xml, std::string(lucentSourceDir()) + "/examples/gallery/bump-test.xml");
   for (const Diagnostic& d : parsed.diagnostics.all()) UNSCOPED_INFO(d.str());
   REQUIRE(parsed.scene);
   PovExport e = exportPov(*parsed.scene);
@@ -31,7 +32,7 @@ bool has(const PovExport& e, const std::string& s) { return e.text.find(s) != st
 
 // The normal block written for the test scenes' material, ending with `extra` lines.
 std::string bumpNormalBlock(const std::string& extra) {
-  const std::string path = std::string(LUCENT_SOURCE_DIR) + "/examples/gallery/textures/bumps.png";
+  const std::string path = std::string(lucentSourceDir()) + "/examples/gallery/textures/bumps.png";
   return "    normal {\n"
          "      uv_mapping\n"
          "      bump_map { png \"" + path + "\" gamma 1.0 interpolate 2 use_color }\n"

@@ -5,6 +5,7 @@
 #include "povray/pov_image_map.h"
 
 #include "lang/parser.h"
+#include "../support/paths.h"
 
 #include <catch2/catch.hpp>
 
@@ -19,7 +20,7 @@ PovExport exportImageScene(const std::string& shape, const std::string& scale,
                     "<material id=\"grid\" diffuse=\"1\"><image src=\"textures/uvgrid.png\" "
                     "scale=\"" + scale + "\"/></material>\n" + shape + "\n</scene>\n";
   ParseResult parsed =
-      parseSceneString(xml, std::string(LUCENT_SOURCE_DIR) + "/examples/image-test.xml");
+      parseSceneString(xml, std::string(lucentSourceDir()) + "/examples/image-test.xml");
   for (const Diagnostic& d : parsed.diagnostics.all()) UNSCOPED_INFO(d.str());
   REQUIRE(parsed.scene);
   PovExport e = exportPov(*parsed.scene);
@@ -39,7 +40,7 @@ TEST_CASE("an image on a plane is a planar image_map turned onto the plane's tan
   PovExport e = exportImageScene(R"XML(<plane normal="0 0 1" offset="-4" material="grid"/>)XML",
                                  "3 3", messages);
   REQUIRE(e.ok());
-  std::string path = std::string(LUCENT_SOURCE_DIR) + "/examples/textures/uvgrid.png";
+  std::string path = std::string(lucentSourceDir()) + "/examples/textures/uvgrid.png";
   // Wall: u = x, v = y; one copy per 3 units.
   CHECK(has(e, "      image_map { png \"" + path + "\" gamma srgb interpolate 2 }\n"
                "      matrix <3, 0, 0,  0, 3, 0,  0, 0, 1,  0, 0, 0>\n"));

@@ -9,6 +9,7 @@
 #include "render/image_map_cache.h"
 #include "render/renderer.h"
 #include "scenegraph/world.h"
+#include "../support/paths.h"
 
 #include <catch2/catch.hpp>
 
@@ -19,8 +20,8 @@ using namespace lucent;
 
 namespace {
 
-const std::string kMesh = std::string(LUCENT_SOURCE_DIR) + "/tests/data/meshes/cube.obj";
-const std::string kImage = std::string(LUCENT_SOURCE_DIR) + "/examples/textures/uvgrid.png";
+const std::string kMesh = std::string(lucentSourceDir()) + "/tests/data/meshes/cube.obj";
+const std::string kImage = std::string(lucentSourceDir()) + "/examples/textures/uvgrid.png";
 
 // Three frames: a textured sphere moving with clock and a mesh from a file.
 std::string animatedScene(const std::string& mesh, const std::string& image) {

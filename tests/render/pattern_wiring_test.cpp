@@ -2,6 +2,7 @@
 // against their definitions, and exported.
 #include "scene_builder.h"
 
+#include "../support/scene_text.h"
 #include "lang/parser.h"
 #include "povray/pov_export.h"
 
@@ -13,14 +14,7 @@ using namespace lucent::test;
 namespace {
 
 std::unique_ptr<Scene> parse(const std::string& body) {
-  ParseResult r = parseSceneString("<scene version=\"1\"><camera position=\"0 5 5\" look-at=\"0 0 0\"/>" + body +
-                                       "</scene>",
-                                   "pattern_wiring.xml");
-  std::string all;
-  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
-  INFO(all);
-  REQUIRE(r.scene);
-  return std::move(r.scene);
+  return parseValid(body, "pattern_wiring.xml", "<camera position=\"0 5 5\" look-at=\"0 0 0\"/>");
 }
 
 }  // namespace

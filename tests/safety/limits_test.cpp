@@ -9,6 +9,7 @@
 #include "memory/system_memory.h"
 #include "scenegraph/transform_syntax.h"
 #include "scenegraph/world.h"
+#include "../support/paths.h"
 
 #include <catch2/catch.hpp>
 
@@ -90,7 +91,7 @@ TEST_CASE("limits: a scene file must be a regular file", "[limits]") {
   CHECK(zero.ioFailure);
   REQUIRE(zero.diagnostics.errorCount() == 1);
   CHECK(zero.diagnostics.all()[0].message == "cannot read the scene file: it is not a regular file");
-  ParseResult folder = parseSceneFile(LUCENT_SOURCE_DIR "/examples");
+  ParseResult folder = parseSceneFile(std::string(lucentSourceDir()) + "/examples");
   CHECK(folder.ioFailure);
   CHECK(folder.diagnostics.all()[0].message == "cannot read the scene file: it is a folder, not a file");
 }

@@ -2,6 +2,7 @@
 // evaluated from several threads at once, in a CSG difference (also as inverse), the
 // warning after a render whose function was steeper than max-gradient, and the function
 // written for POV-Ray.
+#include "../support/scene_text.h"
 #include "lang/parser.h"
 #include "scenegraph/gradient_report.h"
 #include "scenegraph/pov_function.h"
@@ -20,14 +21,7 @@ using namespace lucent;
 namespace {
 
 std::unique_ptr<Scene> parse(const std::string& body) {
-  ParseResult parsed =
-      parseSceneString("<scene version=\"1\"><camera/><param name=\"r\" value=\"0.6\"/>" + body + "</scene>", "iso.xml");
-  std::string all;
-  for (const Diagnostic& d : parsed.diagnostics.all()) all += d.str() + "\n";
-  INFO(body << "\n" << all);
-  REQUIRE(parsed.scene);
-  REQUIRE(parsed.diagnostics.errorCount() == 0);
-  return std::move(parsed.scene);
+  return lucent::test::parseValid(body, "iso.xml", "<camera/><param name=\"r\" value=\"0.6\"/>");
 }
 
 const IsosurfaceSpec& firstIso(const Scene& s) {

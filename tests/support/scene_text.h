@@ -1,0 +1,49 @@
+// Scenes written inline in the tests: a <scene> around a body, parsed from a string.
+#pragma once
+
+#include "lang/parser.h"
+
+#include <catch2/catch.hpp>
+
+#include <memory>
+#include <string>
+
+namespace lucent::test {
+
+// Every diagnostic of a parse, one per line, as `lucent check` prints them.
+inline std::string messages(const ParseResult& r) {
+  std::string all;
+  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
+  return all;
+}
+
+// `<scene version="1">HEAD BODY</scene>` parsed as if read from the file NAME, which its
+// messages name; HEAD is a default camera unless given.
+inline ParseResult parseBody(const std::string& body, const std::string& name = "test.xml",
+                             const std::string& head = "<camera/>") {
+  return parseSceneString("<scene version=\"1\">" + head + body + "</scene>", name);
+}
+
+// The same, required to parse without an error (the body and the messages are shown if not).
+inline std::unique_ptr<Scene> parseValid(const std::string& body,
+                                         const std::string& name = "test.xml",
+                                         const std::string& head = "<camera/>") {
+  ParseResult r = parseBody(body, name, head);
+  INFO(body << "\n" << messages(r));
+  REQUIRE(r.scene);
+  REQUIRE(r.diagnostics.errorCount() == 0);
+  return std::move(r.scene);
+}
+
+// The same, required to parse without any message at all, warnings included.
+inline std::unique_ptr<Scene> parseClean(const std::string& body,
+                                         const std::string& name = "test.xml",
+                                         const std::string& head = "<camera/>") {
+  ParseResult r = parseBody(body, name, head);
+  INFO(body << "\n" << messages(r));
+  REQUIRE(r.scene);
+  REQUIRE(r.diagnostics.all().empty());
+  return std::move(r.scene);
+}
+
+}  // namespace lucent::test
