@@ -77,8 +77,9 @@ inline void writeSphereField(const std::string& dir, int count, int width, int h
     double x = -20.0 + spacing * ((i % side) + 0.2 + 0.6 * next());
     double z = -10.0 + spacing * ((i / side) + 0.2 + 0.6 * next());
     double r = spacing * (0.2 + 0.15 * next());
-    out << fmt::format("  <sphere center=\"{:.4f} {:.4f} {:.4f}\" radius=\"{:.4f}\" material=\"{}\"/>\n",
-                       x, r, z, r, materials[i % 3]);
+    out << fmt::format(
+        "  <sphere center=\"{:.4f} {:.4f} {:.4f}\" radius=\"{:.4f}\" material=\"{}\"/>\n", x, r, z,
+        r, materials[i % 3]);
   }
   out << "</scene>\n";
 }

@@ -9,8 +9,8 @@
 #include "bench_util.h"
 
 #include "primitives/bvh.h"
-#include "primitives/triangle_mesh.h"
 #include "primitives/hit.h"
+#include "primitives/triangle_mesh.h"
 
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>

@@ -54,8 +54,8 @@ int main(int argc, char** argv) {
     else throw std::invalid_argument("unknown option " + a);
   }
   tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-  fmt::print("# bvh_scaling: {}x{} camera rays, one thread (its CPU time); {}, load {}\n", size, size,
-             cpuModel(), loadAverage());
+  fmt::print("# bvh_scaling: {}x{} camera rays, one thread (its CPU time); {}, load {}\n", size,
+             size, cpuModel(), loadAverage());
   const auto rays = cameraRays(size, size, Vec3(0.6, 0.9, 3.2), Vec3(0.0), 40.0);
 
   TsvFile tsv(tsvPath);

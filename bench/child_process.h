@@ -16,10 +16,10 @@
 namespace lucent::bench {
 
 struct ChildRun {
-  bool ok = false;       // exited with status 0
-  double seconds = 0.0;  // wall time, fork to exit
+  bool ok = false;          // exited with status 0
+  double seconds = 0.0;     // wall time, fork to exit
   double cpuSeconds = 0.0;  // user + system time of the child
-  double peakMB = 0.0;   // ru_maxrss of the child
+  double peakMB = 0.0;      // ru_maxrss of the child
 };
 
 // Runs `program` with `args`; its standard output (and standard error unless keepStderr)
@@ -44,8 +44,7 @@ inline ChildRun runChild(const std::string& program, const std::vector<std::stri
   std::memset(&usage, 0, sizeof usage);
   wait4(pid, &status, 0, &usage);
   ChildRun run;
-  run.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   run.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
   run.cpuSeconds = double(usage.ru_utime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec) +
                    double(usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_stime.tv_usec);

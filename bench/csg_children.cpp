@@ -89,7 +89,8 @@ int main(int argc, char** argv) {
     else if (a == "--height") height = v;
     else if (a == "--repeat") repeat = v;
     else {
-      fmt::print(stderr, "usage: csg_children [--spheres N] [--width W] [--height H] [--repeat R]\n");
+      fmt::print(stderr,
+                 "usage: csg_children [--spheres N] [--width W] [--height H] [--repeat R]\n");
       return 1;
     }
   }
@@ -113,13 +114,16 @@ int main(int argc, char** argv) {
     if (x.found()) ++hits;
     if (x.found() && x.flip) ++carved;
   }
-  fmt::print("box minus {} spheres, {} camera rays ({}x{}), one thread, CPU time, "
-             "best of {} (interleaved)\n",
-             spheres, rays.size(), width, height, repeat);
-  fmt::print("hits {} (on a carved sphere surface {}), rays that differ {}\n", hits, carved, differ);
+  fmt::print(
+      "box minus {} spheres, {} camera rays ({}x{}), one thread, CPU time, "
+      "best of {} (interleaved)\n",
+      spheres, rays.size(), width, height, repeat);
+  fmt::print("hits {} (on a carved sphere surface {}), rays that differ {}\n", hits, carved,
+             differ);
   fmt::print("{:<24} {:>10} {:>14}\n", "children searched by", "CPU s", "Mrays/s");
   fmt::print("{:<24} {:>10.4f} {:>14.3f}\n", "BVH", a.seconds, rays.size() / a.seconds * 1e-6);
-  fmt::print("{:<24} {:>10.4f} {:>14.3f}\n", "every child", b.seconds, rays.size() / b.seconds * 1e-6);
+  fmt::print("{:<24} {:>10.4f} {:>14.3f}\n", "every child", b.seconds,
+             rays.size() / b.seconds * 1e-6);
   fmt::print("speed-up of the BVH: {:.1f}x\n", b.seconds / a.seconds);
   return differ == 0 ? 0 : 3;
 }

@@ -142,8 +142,8 @@ int main(int argc, char** argv) {
   const unsigned threads = hardwareThreads();
   auto mesh = std::make_shared<MeshData>(displacedSphereOf(opt.triangles));
   const size_t T = mesh->triangles.size();
-  fmt::print("# mesh_embree: {} triangles, {} vertices, {}x{} rays; {} ({} threads), load {}\n",
-             T, mesh->positions.size(), opt.size, opt.size, cpuModel(), threads, loadAverage());
+  fmt::print("# mesh_embree: {} triangles, {} vertices, {}x{} rays; {} ({} threads), load {}\n", T,
+             mesh->positions.size(), opt.size, opt.size, cpuModel(), threads, loadAverage());
 
   // Build: Lucent's mesh shape (its BVH and bookkeeping) and Embree's scene commit (its
   // vertex and index buffers are filled before), in turn (bestOfAlternating).
@@ -228,7 +228,9 @@ int main(int argc, char** argv) {
       lucentRight += bruteForce(*mesh, primary[i]) == tLucent[i];
     }
   }
-  struct Rate { double lucent, embree; };
+  struct Rate {
+    double lucent, embree;
+  };
   // Each figure is the best of five passes over the rays, Lucent's and Embree's passes
   // in turn (bestOfAlternating).
   auto measure = [&](bool parallel) {
@@ -294,8 +296,8 @@ int main(int argc, char** argv) {
     fmt::print("\n| rays | threads | Lucent Mrays/s | Embree Mrays/s | Lucent/Embree |\n");
     fmt::print("|---|---|---|---|---|\n");
     const Rate& r = opt.only == "primary" ? one.first : one.second;
-    fmt::print("| {} | 1 | {:.2f} | {:.2f} | {:.2f} |\n", opt.only, r.lucent / 1e6,
-               r.embree / 1e6, r.lucent / r.embree);
+    fmt::print("| {} | 1 | {:.2f} | {:.2f} | {:.2f} |\n", opt.only, r.lucent / 1e6, r.embree / 1e6,
+               r.lucent / r.embree);
     return 0;
   }
   all = measure(true);
@@ -331,10 +333,11 @@ int main(int argc, char** argv) {
   tsv.row("memory\tall\t{:.2f}\t{:.2f}\t{:.2f}", (meshBytes + lucentBvhBytes) / T,
           (embreeBufferBytes + embreeBvhBytes) / T, lucentBvhBytes / T);
 
-  fmt::print("\nagreement: of {} primary rays, {} hit in one renderer and miss in the other, "
-             "{} hit both more than 1e-4 apart (relative); Lucent's answer equals the "
-             "brute-force closest hit over all triangles for {} of the {} of these checked\n",
-             R, disagree, farApart, lucentRight, checked);
+  fmt::print(
+      "\nagreement: of {} primary rays, {} hit in one renderer and miss in the other, "
+      "{} hit both more than 1e-4 apart (relative); Lucent's answer equals the "
+      "brute-force closest hit over all triangles for {} of the {} of these checked\n",
+      R, disagree, farApart, lucentRight, checked);
   tsv.row("agreement\t-\t{}\t{}\t{}", disagree, farApart, R);
   return 0;
 }

@@ -19,28 +19,42 @@ namespace {
 std::string generateScene(int groups, int perGroup) {
   std::string xml;
   xml.reserve(static_cast<size_t>(groups) * perGroup * 110);
-  xml += "<scene version=\"1\">\n<render width=\"320\" height=\"240\"/>\n<camera position=\"0 5 40\"/>\n";
+  xml +=
+      "<scene version=\"1\">\n<render width=\"320\" height=\"240\"/>\n<camera position=\"0 5 "
+      "40\"/>\n";
   xml += "<param name=\"r\" value=\"0.4\"/>\n";
   for (int m = 0; m < 10; ++m)
-    xml += fmt::format("<material id=\"m{}\" diffuse=\"0.{} 0.5 0.5\" specular=\"0.3\" shininess=\"40\"/>\n", m, m);
-  xml += "<defs><group id=\"pair\"><sphere radius=\"0.2\"/><box min=\"-0.1 -0.1 -0.1\" max=\"0.1 0.1 0.1\"/></group></defs>\n";
+    xml += fmt::format(
+        "<material id=\"m{}\" diffuse=\"0.{} 0.5 0.5\" specular=\"0.3\" shininess=\"40\"/>\n", m,
+        m);
+  xml +=
+      "<defs><group id=\"pair\"><sphere radius=\"0.2\"/><box min=\"-0.1 -0.1 -0.1\" max=\"0.1 0.1 "
+      "0.1\"/></group></defs>\n";
   for (int g = 0; g < groups; ++g) {
-    xml += fmt::format("<group id=\"g{}\" material=\"m{}\" transform=\"translate({} 0 {}) rotate-y({})\">\n",
-                       g, g % 10, g % 40 - 20, g / 40 - 12, g % 360);
+    xml += fmt::format(
+        "<group id=\"g{}\" material=\"m{}\" transform=\"translate({} 0 {}) rotate-y({})\">\n", g,
+        g % 10, g % 40 - 20, g / 40 - 12, g % 360);
     for (int i = 1; i < perGroup; ++i) {
       switch (i % 4) {
         case 0:
           xml += fmt::format("  <sphere center=\"{} {} 0\" radius=\"$r\"/>\n", i % 10, i / 10);
           break;
         case 1:
-          xml += fmt::format("  <box min=\"0 0 {}\" max=\"0.5, 0.5, {}.5\" transform=\"scale(0.5) rotate(30, 1 1 0)\"/>\n", i, i);
+          xml += fmt::format(
+              "  <box min=\"0 0 {}\" max=\"0.5, 0.5, {}.5\" transform=\"scale(0.5) rotate(30, 1 1 "
+              "0)\"/>\n",
+              i, i);
           break;
         case 2:
-          xml += fmt::format("  <use ref=\"pair\" transform=\"translate({} 1 1)\" material=\"m{}\"/>\n", i, i % 10);
+          xml += fmt::format(
+              "  <use ref=\"pair\" transform=\"translate({} 1 1)\" material=\"m{}\"/>\n", i,
+              i % 10);
           break;
         default:
-          xml += fmt::format("  <sphere radius=\"0.3\" transform=\"translate(0 {} 0)\"><material diffuse=\"#{:02x}8040\"/></sphere>\n",
-                             i, i % 256);
+          xml += fmt::format(
+              "  <sphere radius=\"0.3\" transform=\"translate(0 {} 0)\"><material "
+              "diffuse=\"#{:02x}8040\"/></sphere>\n",
+              i, i % 256);
       }
     }
     xml += "</group>\n";
@@ -49,7 +63,9 @@ std::string generateScene(int groups, int perGroup) {
   return xml;
 }
 
-double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+double seconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
 
 }  // namespace
 
@@ -71,14 +87,15 @@ int main() {
   int nodes = 0;
   for (const auto& [name, n] : counts.nodes) nodes += n;
   nodes -= 3;  // the <defs> group and its two shapes are not part of the 100,000
-  fmt::print("scene text: {:.1f} MB, {} nodes, {} leaf instances, {} materials\n", xml.size() / 1e6, nodes,
-             counts.instances, r.scene->materials.size());
+  fmt::print("scene text: {:.1f} MB, {} nodes, {} leaf instances, {} materials\n", xml.size() / 1e6,
+             nodes, counts.instances, r.scene->materials.size());
   fmt::print("parse + graph: {:.3f} s wall, {:.3f} s CPU (target < 1 s)\n", seconds(t0, t1),
              double(c1 - c0) / CLOCKS_PER_SEC);
 
   auto t2 = Clock::now();
   World world(*r.scene);
   auto t3 = Clock::now();
-  fmt::print("world (shapes, transforms, BVH): {:.3f} s for {} instances\n", seconds(t2, t3), world.instances().size());
+  fmt::print("world (shapes, transforms, BVH): {:.3f} s for {} instances\n", seconds(t2, t3),
+             world.instances().size());
   return 0;
 }

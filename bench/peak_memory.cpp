@@ -32,8 +32,8 @@ int main(int argc, char** argv) {
   auto run = [&](std::vector<std::string> args) { return runChild(lucent, args); };
   ChildRun base = run({"--version"});
   ChildRun render = run({"render", dir + "/bumpy.xml", "-o", dir + "/bumpy.png", "-q"});
-  fmt::print("# peak_memory: lucent render of {} triangles at {}x{}; {}, load {}\n", written,
-             size, size, cpuModel(), loadAverage());
+  fmt::print("# peak_memory: lucent render of {} triangles at {}x{}; {}, load {}\n", written, size,
+             size, cpuModel(), loadAverage());
   fmt::print("\n| run | exit | wall time | peak memory |\n|---|---|---|---|\n");
   fmt::print("| `lucent --version` (the process alone) | {} | {:.1f} s | {:.0f} MB |\n",
              base.ok ? "0" : "FAILED", base.seconds, base.peakMB);

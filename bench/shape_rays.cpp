@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> scenes;
   int passes = 5;
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--passes") == 0 && i + 1 < argc) passes = std::max(1, std::atoi(argv[++i]));
+    if (std::strcmp(argv[i], "--passes") == 0 && i + 1 < argc)
+      passes = std::max(1, std::atoi(argv[++i]));
     else scenes.push_back(argv[i]);
   }
   if (scenes.empty()) {
@@ -76,9 +77,10 @@ int main(int argc, char** argv) {
       Hit hit;
       return world.intersect(r, hit) ? 1 : 0;
     });
-    const double any = nanoseconds(rays, passes, [&](const Ray& r) { return world.occluded(r) ? 1 : 0; });
-    fmt::print("{}\t{}\t{:.3f}\t{:.0f}\t{:.0f}\n", std::filesystem::path(path).stem().string(), rays.size(),
-               double(hits) / rays.size(), closest, any);
+    const double any =
+        nanoseconds(rays, passes, [&](const Ray& r) { return world.occluded(r) ? 1 : 0; });
+    fmt::print("{}\t{}\t{:.3f}\t{:.0f}\t{:.0f}\n", std::filesystem::path(path).stem().string(),
+               rays.size(), double(hits) / rays.size(), closest, any);
   }
   return 0;
 }

@@ -148,10 +148,8 @@ inline CostGrid parseTileCosts(std::istream& in, const std::string& name) {
     if (w.empty()) continue;
     if (w[0][0] == '#') {
       // "#image ..." and "# image ..." are the same line.
-      if (w[0].size() > 1)
-        w[0] = w[0].substr(1);
-      else
-        w.erase(w.begin());
+      if (w[0].size() > 1) w[0] = w[0].substr(1);
+      else w.erase(w.begin());
       const bool header =
           !w.empty() && (w[0] == "image" || w[0] == "tile" || w[0] == "threads" || w[0] == "load");
       if (!header) continue;

@@ -180,10 +180,8 @@ inline ScheduleResult simulateSchedule(const std::vector<double>& cost,
       }
       case TileArrives:
         w.outstanding--;
-        if (e.tile < 0)
-          w.noMore = true;
-        else
-          w.queued.push_back(e.tile);
+        if (e.tile < 0) w.noMore = true;
+        else w.queued.push_back(e.tile);
         if (!w.rendering) startNext(e.rank, e.t);
         break;
       case ResultArrives:

@@ -21,8 +21,7 @@ using namespace lucent::bench;
 
 namespace {
 
-ChildRun bestOfRuns(int repeat, const std::string& program,
-                    const std::vector<std::string>& args) {
+ChildRun bestOfRuns(int repeat, const std::string& program, const std::vector<std::string>& args) {
   ChildRun best;
   best.seconds = 1e300;
   double peak = 0.0;
@@ -62,9 +61,10 @@ int main(int argc, char** argv) {
 
   size_t written = writeMeshScene(dir, triangles, size);
   writeSphereField(dir, spheres, width, height);
-  fmt::print("# vs_povray: {} triangles at {}x{}, {} spheres at {}x{}, one thread, best of {}; "
-             "{}, load {}\n",
-             written, size, size, spheres, width, height, repeat, cpuModel(), loadAverage());
+  fmt::print(
+      "# vs_povray: {} triangles at {}x{}, {} spheres at {}x{}, one thread, best of {}; "
+      "{}, load {}\n",
+      written, size, size, spheres, width, height, repeat, cpuModel(), loadAverage());
 
   struct Scene {
     std::string name, label;
@@ -78,26 +78,28 @@ int main(int argc, char** argv) {
   // what the process itself costs, and the fairer figure when other work shares the
   // cores (on an idle machine the two agree for one thread).
   TsvFile tsv(tsvPath);
-  tsv.row("# scene\tlucent_s\tlucent_cpu_s\tlucent_MB\tpovray_s\tpovray_cpu_s\tpovray_MB\t"
-          "speedup_wall\tspeedup_cpu");
-  fmt::print("\n| scene | Lucent wall | Lucent CPU | Lucent peak memory | POV-Ray wall "
-             "| POV-Ray CPU | POV-Ray peak memory | POV-Ray / Lucent (wall) "
-             "| POV-Ray / Lucent (CPU) |\n|---|---|---|---|---|---|---|---|---|\n");
+  tsv.row(
+      "# scene\tlucent_s\tlucent_cpu_s\tlucent_MB\tpovray_s\tpovray_cpu_s\tpovray_MB\t"
+      "speedup_wall\tspeedup_cpu");
+  fmt::print(
+      "\n| scene | Lucent wall | Lucent CPU | Lucent peak memory | POV-Ray wall "
+      "| POV-Ray CPU | POV-Ray peak memory | POV-Ray / Lucent (wall) "
+      "| POV-Ray / Lucent (CPU) |\n|---|---|---|---|---|---|---|---|---|\n");
   bool ok = true;
   for (const Scene& s : scenes) {
     const std::string xml = dir + "/" + s.name + ".xml", pov = dir + "/" + s.name + ".pov";
     ChildRun exported = runChild(lucent, {"export-pov", xml, "-o", pov}, false);
-    ChildRun l = bestOfRuns(repeat, lucent,
-                            {"render", xml, "-o", dir + "/" + s.name + "-lucent.png", "-q",
-                             "--threads", "1"});
+    ChildRun l = bestOfRuns(
+        repeat, lucent,
+        {"render", xml, "-o", dir + "/" + s.name + "-lucent.png", "-q", "--threads", "1"});
     // POV-Ray's own defaults for the rest (no anti-aliasing, as Lucent's one sample);
     // -D: no display window, +WT1: one render thread.
     ChildRun p;
     if (exported.ok)
-      p = bestOfRuns(repeat, povray,
-                     {"+I" + pov, "+O" + dir + "/" + s.name + "-povray.png",
-                      fmt::format("+W{}", s.w), fmt::format("+H{}", s.h), "-D", "-V", "-GA",
-                      "+WT1", "-A"});
+      p = bestOfRuns(
+          repeat, povray,
+          {"+I" + pov, "+O" + dir + "/" + s.name + "-povray.png", fmt::format("+W{}", s.w),
+           fmt::format("+H{}", s.h), "-D", "-V", "-GA", "+WT1", "-A"});
     auto cell = [](const ChildRun& r, double v, const char* f) {
       return r.ok ? fmt::format(fmt::runtime(f), v) : std::string("FAILED");
     };

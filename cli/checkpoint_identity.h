@@ -18,8 +18,8 @@ Identity runIdentity(const RenderOptions& options, const CommonOptions& common,
                      const std::optional<PixelRect>& region);
 
 // One frame: its number, the digest of the scene's XML, the settings after overrides, the
-// camera, the tile size used and a digest of every file the scene read (read again from disk for it). Throws
-// IoFailure when a file can no longer be read.
+// camera, the tile size used and a digest of every file the scene read (read again from disk for
+// it). Throws IoFailure when a file can no longer be read.
 Identity frameIdentity(const LoadedScene& loaded, int frame, int tileSize);
 
 }  // namespace lucent::cli

@@ -72,11 +72,13 @@ std::vector<std::string> checkHandWritten(const std::string& path, const std::st
                                           const PovAssumedGamma& gamma) {
   std::vector<std::string> notes;
   if (text.find("#version") == std::string::npos)
-    notes.push_back(path + ": no #version directive: POV-Ray reads it with 3.62 rules "
-                           "(transparency and gamma differ); start it with `#version 3.7;`");
+    notes.push_back(path +
+                    ": no #version directive: POV-Ray reads it with 3.62 rules "
+                    "(transparency and gamma differ); start it with `#version 3.7;`");
   if (gamma.kind == PovAssumedGamma::Kind::Absent)
-    notes.push_back(path + ": no assumed_gamma: put `global_settings { assumed_gamma 1.0 }` "
-                           "so colours are linear as in Lucent");
+    notes.push_back(path +
+                    ": no assumed_gamma: put `global_settings { assumed_gamma 1.0 }` "
+                    "so colours are linear as in Lucent");
   if (gamma.nonLinear())
     notes.push_back(fmt::format(
         "{}:{}: assumed_gamma {}: POV-Ray computes with the scene's numbers as they are and "
@@ -170,10 +172,11 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const PovAssumedGamma gamma = findAssumedGamma(text);
     if (gamma.kind == PovAssumedGamma::Kind::Unreadable)
-      throw IoFailure(fmt::format("--pov {}: {}: POV-Ray's output depends on its working gamma, "
-                                  "which compare must know to read the image back; write "
-                                  "`assumed_gamma` with a number (or srgb) in global_settings",
-                                  options.povFile, gamma.problem));
+      throw IoFailure(
+          fmt::format("--pov {}: {}: POV-Ray's output depends on its working gamma, "
+                      "which compare must know to read the image back; write "
+                      "`assumed_gamma` with a number (or srgb) in global_settings",
+                      options.povFile, gamma.problem));
     fileGamma = gamma.fileGamma();
     for (const std::string& note : checkHandWritten(options.povFile, text, gamma)) {
       fmt::print(stderr, "lucent: warning: {}\n", note);

@@ -34,12 +34,14 @@ fs::path folderOf(const fs::path& target) {
 
 // Before the scene is read: an output that can never be written is an error now.
 void checkPovOutputPath(const std::string& path) {
-  if (fs::is_directory(path)) throw IoFailure(fmt::format("'{}' is a folder, not a .pov file", path));
+  if (fs::is_directory(path))
+    throw IoFailure(fmt::format("'{}' is a folder, not a .pov file", path));
   const fs::path folder = folderOf(path);
   std::error_code ec;
   const fs::file_status status = fs::status(folder, ec);
   if (status.type() == fs::file_type::not_found)
-    throw IoFailure(fmt::format("cannot write '{}': folder '{}' does not exist", path, folder.string()));
+    throw IoFailure(
+        fmt::format("cannot write '{}': folder '{}' does not exist", path, folder.string()));
   if (!ec && status.type() != fs::file_type::directory)
     throw IoFailure(fmt::format("cannot write '{}': '{}' is not a folder", path, folder.string()));
 }
@@ -55,8 +57,9 @@ void writeAtomically(const std::string& path, const std::string& text) {
   };
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw failed(fmt::format("cannot create a file in folder '{}': {}", folder.string(),
-                                       std::strerror(errno)));
+    if (!out)
+      throw failed(fmt::format("cannot create a file in folder '{}': {}", folder.string(),
+                               std::strerror(errno)));
     out << text;
     out.flush();
     if (!out) throw failed(std::strerror(errno));

@@ -23,15 +23,15 @@
 #include "load_scene.h"
 #include "tile_executor.h"
 
-#include "meshes/mesh_file_cache.h"
-#include "scenegraph/gradient_report.h"
-#include "scenegraph/shape_registry.h"
 #include "memory/system_memory.h"
+#include "meshes/mesh_file_cache.h"
 #include "render/image_io.h"
 #include "render/image_map_cache.h"
 #include "render/progress_bar.h"
 #include "render/renderer.h"
 #include "render/tile_render.h"
+#include "scenegraph/gradient_report.h"
+#include "scenegraph/shape_registry.h"
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -60,11 +60,12 @@ constexpr std::uintmax_t kImageBytesPerPixel = 3 * sizeof(Color);
 
 // An image too large for the memory left is refused before the render, not after hours.
 std::optional<std::string> imageMemoryProblem(const PixelRect& area) {
-  const std::uintmax_t need = std::uintmax_t(area.width()) * std::uintmax_t(area.height()) * kImageBytesPerPixel;
+  const std::uintmax_t need =
+      std::uintmax_t(area.width()) * std::uintmax_t(area.height()) * kImageBytesPerPixel;
   const std::optional<std::uintmax_t> available = availableMemoryBytes();
   if (!available || need <= *available) return std::nullopt;
-  return fmt::format("a {}x{} image needs about {} of memory, more than the {} available", area.width(),
-                     area.height(), formatBytes(need), formatBytes(*available));
+  return fmt::format("a {}x{} image needs about {} of memory, more than the {} available",
+                     area.width(), area.height(), formatBytes(need), formatBytes(*available));
 }
 
 void printStats(const RenderResult& r, int threads) {
@@ -72,9 +73,10 @@ void printStats(const RenderResult& r, int threads) {
   fmt::print("rays:      {:>14}  (primary {}, shadow {}, reflected {}, refracted {})\n", s.rays(),
              s.primary, s.shadow, s.reflected, s.refracted);
   fmt::print("searches:  {:>14}  (closest-hit and any-hit queries of the world)\n", s.queries);
-  fmt::print("cache hits:{:>14}  (shadow rays blocked by the object that blocked the light's "
-             "previous one, tested first)\n",
-             s.shadowCacheHits);
+  fmt::print(
+      "cache hits:{:>14}  (shadow rays blocked by the object that blocked the light's "
+      "previous one, tested first)\n",
+      s.shadowCacheHits);
   // Intersection tests by kind, the kinds the scene has only.
   uint64_t tests = 0;
   std::string byKind;
@@ -90,7 +92,6 @@ void printStats(const RenderResult& r, int threads) {
              r.seconds > 0.0 ? s.rays() / r.seconds * 1e-6 : 0.0, threads);
 }
 
-
 int threadsShown(int threads) {
   return threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
 }
@@ -104,17 +105,18 @@ struct RenderRun {
   RenderRun(const RenderOptions& o, const TileExecutor& e) : options(o), executor(e) {}
   const RenderOptions& options;
   const TileExecutor& executor;  // empty: renderTiles
-  int threads = 0;  // 0: every core
+  int threads = 0;               // 0: every core
   ImageMapCache textures;
   std::set<std::string> printed;  // after-render warnings, each once for all the frames
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   std::optional<PixelRect> region;  // --region; none: the whole image
-  std::optional<int> tileSize;  // --tile-size; none: defaultTileSize of each frame
+  std::optional<int> tileSize;      // --tile-size; none: defaultTileSize of each frame
   double checkpointInterval = kDefaultCheckpointInterval;  // seconds; 0: no checkpoint
   std::optional<CheckpointWriter> checkpoint;
   std::optional<CheckpointContents> resumed;  // --resume: the checkpoint as read
   std::string checkpointPath;
-  // A test's stand-in for Ctrl-C: SIGTERM after this many tiles (LUCENT_TEST_INTERRUPT_AFTER_TILES).
+  // A test's stand-in for Ctrl-C: SIGTERM after this many tiles
+  // (LUCENT_TEST_INTERRUPT_AFTER_TILES).
   long interruptAfterTiles = 0;
   long tilesFinished = 0;
 };
@@ -124,7 +126,8 @@ PixelRect frameArea(const RenderRun& run, const RenderSettings& r) {
   const PixelRect whole = wholeImage(r.width, r.height);
   if (!run.region) return whole;
   if (!whole.contains(*run.region))
-    throw UsageError(fmt::format("--region {}: outside the {}x{} image", run.options.region, r.width, r.height));
+    throw UsageError(
+        fmt::format("--region {}: outside the {}x{} image", run.options.region, r.width, r.height));
   return *run.region;
 }
 
@@ -134,10 +137,11 @@ void writeTileCosts(const std::string& path, const std::vector<std::pair<PixelRe
                     double loadSeconds) {
   std::ofstream out(path);
   out << "# lucent tile costs 1\n";
-  out << fmt::format("# image {} {} tile {} threads {} samples {} load {:.6f} scene {}\n", r.width, r.height,
-                     tileSize, threads, r.samples, loadSeconds, scene);
+  out << fmt::format("# image {} {} tile {} threads {} samples {} load {:.6f} scene {}\n", r.width,
+                     r.height, tileSize, threads, r.samples, loadSeconds, scene);
   out << "x0 y0 x1 y1 seconds\n";
-  for (const auto& [t, seconds] : costs) out << fmt::format("{} {} {} {} {:.9f}\n", t.x0, t.y0, t.x1, t.y1, seconds);
+  for (const auto& [t, seconds] : costs)
+    out << fmt::format("{} {} {} {} {:.9f}\n", t.x0, t.y0, t.x1, t.y1, seconds);
   out.close();
   if (!out) throw IoFailure(fmt::format("cannot write the tile costs '{}'", path));
 }
@@ -147,7 +151,8 @@ void writeTileCosts(const std::string& path, const std::vector<std::pair<PixelRe
 // holds. The scene is freed before the image is written. `cancelled` in the result:
 // nothing was written (the checkpoint holds the finished tiles).
 RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderRun& run,
-                          const std::optional<SequencePosition>& position, int frame, double loadSeconds) {
+                          const std::optional<SequencePosition>& position, int frame,
+                          double loadSeconds) {
   Scene& scene = *loaded.scene;
   const PixelRect area = frameArea(run, scene.render);
   if (auto problem = imageMemoryProblem(area)) throw IoFailure(*problem);
@@ -158,7 +163,8 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
   result.image = Image(area.width(), area.height());
   auto place = [&](const PixelRect& t, const Image& pixels) {
     for (int y = 0; y < t.height(); ++y)
-      std::copy_n(&pixels.at(0, y), t.width(), &result.image.at(t.x0 - area.x0, t.y0 - area.y0 + y));
+      std::copy_n(&pixels.at(0, y), t.width(),
+                  &result.image.at(t.x0 - area.x0, t.y0 - area.y0 + y));
   };
 
   std::optional<Identity> identity;  // made when first needed: it reads every file again
@@ -168,11 +174,13 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
   };
   bool begun = false;  // the checkpoint has this frame's start record
   if (run.resumed) {
-    if (auto it = run.resumed->frames.find(frame); it != run.resumed->frames.end() && !it->second.identity.empty()) {
+    if (auto it = run.resumed->frames.find(frame);
+        it != run.resumed->frames.end() && !it->second.identity.empty()) {
       const std::vector<std::string> differ = identityDifferences(it->second.identity, frameId());
       if (!differ.empty())
-        throw UsageError(fmt::format("--resume: the checkpoint '{}' was made for another scene or other files; {}",
-                                     run.checkpointPath, fmt::join(differ, "; ")));
+        throw UsageError(fmt::format(
+            "--resume: the checkpoint '{}' was made for another scene or other files; {}",
+            run.checkpointPath, fmt::join(differ, "; ")));
       begun = true;
       size_t taken = 0;
       for (const auto& [rect, pixels] : it->second.tiles)
@@ -183,7 +191,8 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
             ++taken;
           }
       if (!run.options.quiet)
-        fmt::print(stderr, "lucent: resuming '{}': {} of {} tiles from the checkpoint\n", output, taken, tiles.size());
+        fmt::print(stderr, "lucent: resuming '{}': {} of {} tiles from the checkpoint\n", output,
+                   taken, tiles.size());
     }
   }
 
@@ -199,7 +208,8 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
       const PixelRect& t = tiles[i];
       Image pixels(t.width(), t.height());
       for (int y = 0; y < t.height(); ++y)
-        std::copy_n(&result.image.at(t.x0 - area.x0, t.y0 - area.y0 + y), t.width(), &pixels.at(0, y));
+        std::copy_n(&result.image.at(t.x0 - area.x0, t.y0 - area.y0 + y), t.width(),
+                    &pixels.at(0, y));
       run.checkpoint->addTile(frame, t, pixels);
     }
     unsaved.clear();
@@ -224,12 +234,14 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
       place(tiles[i], tile.image);
       unsaved.push_back(i);
       if (recordCosts) costs.emplace_back(tiles[i], tile.seconds);
-      if (run.interruptAfterTiles > 0 && ++run.tilesFinished == run.interruptAfterTiles) std::raise(SIGTERM);
+      if (run.interruptAfterTiles > 0 && ++run.tilesFinished == run.interruptAfterTiles)
+        std::raise(SIGTERM);
       if (run.checkpoint && secondsSince(lastSave) >= run.checkpointInterval) saveCheckpoint();
     };
-    const TileRenderResult r = run.executor
-                                   ? run.executor(renderer, loaded, frame, tiles, skip, control, recordCosts, finished)
-                                   : renderTiles(renderer, tiles, skip, control, recordCosts, finished);
+    const TileRenderResult r =
+        run.executor
+            ? run.executor(renderer, loaded, frame, tiles, skip, control, recordCosts, finished)
+            : renderTiles(renderer, tiles, skip, control, recordCosts, finished);
     result.stats = r.stats;
     result.seconds = r.seconds;
     result.cancelled = r.cancelled;
@@ -240,7 +252,9 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
   if (result.cancelled) {
     if (run.checkpoint) {
       saveCheckpoint();
-      fmt::print(stderr, "lucent: the checkpoint '{}' keeps the finished tiles; run again with --resume to go on\n",
+      fmt::print(stderr,
+                 "lucent: the checkpoint '{}' keeps the finished tiles; run again with --resume to "
+                 "go on\n",
                  run.checkpoint->path());
     }
     return result;
@@ -273,8 +287,8 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
   if (!run.options.quiet) {
     const std::string frameText =
         position ? fmt::format("frame {}/{}, ", position->frame, position->frames) : "";
-    fmt::print(stderr, "lucent: wrote '{}' ({}{}x{}, {})\n", output, frameText, area.width(), area.height(),
-               formatDuration(result.seconds));
+    fmt::print(stderr, "lucent: wrote '{}' ({}{}x{}, {})\n", output, frameText, area.width(),
+               area.height(), formatDuration(result.seconds));
   }
   return result;
 }
@@ -283,8 +297,7 @@ RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderR
 // files. `first`, if it holds a scene, is the range's first frame, already loaded (in
 // `firstLoadSeconds`).
 int renderFrames(LoadedScene first, double firstLoadSeconds, const Animation& animation,
-                 const FrameRange& range,
-                 const SceneRequest& request, const CommonOptions& common,
+                 const FrameRange& range, const SceneRequest& request, const CommonOptions& common,
                  const std::string& output, RenderRun& run) {
   SceneRequest frameRequest = request;
   RayStats totalStats;
@@ -293,8 +306,8 @@ int renderFrames(LoadedScene first, double firstLoadSeconds, const Animation& an
   for (int f = range.first; f <= range.last; ++f) {
     const std::string name = frameOutputPath(output, f, animation.frames);
     if (InterruptCatcher::interrupted()) {
-      fmt::print(stderr, "lucent: interrupted; {} of {} frames written, '{}' not started\n", written,
-                 range.count(), name);
+      fmt::print(stderr, "lucent: interrupted; {} of {} frames written, '{}' not started\n",
+                 written, range.count(), name);
       return kRuntimeFailure;
     }
     auto frameStart = std::chrono::steady_clock::now();
@@ -316,26 +329,35 @@ int renderFrames(LoadedScene first, double firstLoadSeconds, const Animation& an
       // it is shown to be this scene's frame.
       if (run.resumed) {
         const auto it = run.resumed->frames.find(f);
-        if (it != run.resumed->frames.end() && it->second.written && std::filesystem::exists(name)) {
-          const std::vector<std::string> differ = identityDifferences(it->second.identity, frameIdentity(loaded, f, run.tileSize.value_or(defaultTileSize(loaded.scene->render))));
+        if (it != run.resumed->frames.end() && it->second.written &&
+            std::filesystem::exists(name)) {
+          const std::vector<std::string> differ = identityDifferences(
+              it->second.identity,
+              frameIdentity(loaded, f,
+                            run.tileSize.value_or(defaultTileSize(loaded.scene->render))));
           if (!differ.empty())
-            throw UsageError(fmt::format("--resume: the checkpoint '{}' was made for another scene or other files; {}",
-                                         run.checkpointPath, fmt::join(differ, "; ")));
-          if (!run.options.quiet) fmt::print(stderr, "lucent: frame {}: '{}' was written before; skipped\n", f, name);
+            throw UsageError(fmt::format(
+                "--resume: the checkpoint '{}' was made for another scene or other files; {}",
+                run.checkpointPath, fmt::join(differ, "; ")));
+          if (!run.options.quiet)
+            fmt::print(stderr, "lucent: frame {}: '{}' was written before; skipped\n", f, name);
           ++written;
           continue;
         }
       }
-      SequencePosition position{written + 1, range.count(), f, animation.frames, secondsSince(run.start)};
+      SequencePosition position{written + 1, range.count(), f, animation.frames,
+                                secondsSince(run.start)};
       result = renderToFile(std::move(loaded), name, run, position, f, loadSeconds);
     } catch (...) {
       // Reported here, so that the frames written are said after the failure.
       const int status = reportFailure(std::current_exception());
-      fmt::print(stderr, "lucent: stopped at frame {}; {} of {} frames written\n", f, written, range.count());
+      fmt::print(stderr, "lucent: stopped at frame {}; {} of {} frames written\n", f, written,
+                 range.count());
       throw ReportedFailure{status};
     }
     if (result.cancelled) {
-      fmt::print(stderr, "lucent: interrupted in frame {}; '{}' left unchanged, {} of {} frames written\n",
+      fmt::print(stderr,
+                 "lucent: interrupted in frame {}; '{}' left unchanged, {} of {} frames written\n",
                  f, name, written, range.count());
       return kRuntimeFailure;
     }
@@ -344,9 +366,11 @@ int renderFrames(LoadedScene first, double firstLoadSeconds, const Animation& an
     totalRender += result.seconds;
     if (run.options.stats) {
       const double seconds = secondsSince(frameStart);
-      fmt::print("frame {:>5}: {:10.4f}  s (load {:.4f} s, render {:.4f} s, write and the rest {:.4f} s)\n",
-                 f, seconds, loadSeconds, result.seconds,
-                 std::max(0.0, seconds - loadSeconds - result.seconds));
+      fmt::print(
+          "frame {:>5}: {:10.4f}  s (load {:.4f} s, render {:.4f} s, write and the rest {:.4f} "
+          "s)\n",
+          f, seconds, loadSeconds, result.seconds,
+          std::max(0.0, seconds - loadSeconds - result.seconds));
     }
   }
   // Every frame is written: the checkpoint has served.
@@ -357,8 +381,8 @@ int renderFrames(LoadedScene first, double firstLoadSeconds, const Animation& an
     sum.seconds = totalRender;
     printStats(sum, threadsShown(run.threads));
     const double total = secondsSince(run.start);
-    fmt::print("frames:    {:>14}  in {:.3f} s ({}; {:.3f} s a frame, render {:.3f} s of it)\n", written,
-               total, formatDuration(total), total / written, totalRender / written);
+    fmt::print("frames:    {:>14}  in {:.3f} s ({}; {:.3f} s a frame, render {:.3f} s of it)\n",
+               written, total, formatDuration(total), total / written, totalRender / written);
     // Each file is read once for the run, not once a frame.
     fmt::print("files:     {:>14}  mesh files read, {} image textures loaded, for {} frames\n",
                request.meshCache->reads(), run.textures.loads(), written);
@@ -371,12 +395,15 @@ PixelRect parseRegion(const std::string& text) {
   PixelRect r;
   char c1 = 0, c2 = 0, c3 = 0;
   std::istringstream in(text);
-  if (!(in >> r.x0 >> c1 >> r.y0 >> c2 >> r.x1 >> c3 >> r.y1) || c1 != ',' || c2 != ',' || c3 != ',' ||
-      !(in >> std::ws).eof())
-    throw UsageError(fmt::format("--region {}: expected X0,Y0,X1,Y1 (pixel bounds, e.g. 0,0,320,240)", text));
+  if (!(in >> r.x0 >> c1 >> r.y0 >> c2 >> r.x1 >> c3 >> r.y1) || c1 != ',' || c2 != ',' ||
+      c3 != ',' || !(in >> std::ws).eof())
+    throw UsageError(
+        fmt::format("--region {}: expected X0,Y0,X1,Y1 (pixel bounds, e.g. 0,0,320,240)", text));
   if (r.x0 < 0 || r.y0 < 0 || r.x1 <= r.x0 || r.y1 <= r.y0)
-    throw UsageError(fmt::format("--region {}: needs 0 <= X0 < X1 and 0 <= Y0 < Y1 (the right and bottom "
-                                 "bounds are not part of the region)", text));
+    throw UsageError(
+        fmt::format("--region {}: needs 0 <= X0 < X1 and 0 <= Y0 < Y1 (the right and bottom "
+                    "bounds are not part of the region)",
+                    text));
   return r;
 }
 
@@ -386,16 +413,19 @@ void setUpTiles(RenderRun& run, const RenderOptions& options, const CommonOption
   if (!options.region.empty()) run.region = parseRegion(options.region);
   if (options.tileSize) {
     if (*options.tileSize < 1 || *options.tileSize > kMaxTileSize)
-      throw UsageError(fmt::format("--tile-size {}: must be 1 to {}", *options.tileSize, kMaxTileSize));
+      throw UsageError(
+          fmt::format("--tile-size {}: must be 1 to {}", *options.tileSize, kMaxTileSize));
     run.tileSize = *options.tileSize;
   }
   if (options.checkpointInterval) {
     if (!(*options.checkpointInterval >= 0.0) || *options.checkpointInterval > 1e9)
-      throw UsageError(fmt::format("--checkpoint-interval {}: must be 0 (no checkpoint) or a number of seconds",
-                                   *options.checkpointInterval));
+      throw UsageError(
+          fmt::format("--checkpoint-interval {}: must be 0 (no checkpoint) or a number of seconds",
+                      *options.checkpointInterval));
     run.checkpointInterval = *options.checkpointInterval;
   }
-  if (const char* n = std::getenv("LUCENT_TEST_INTERRUPT_AFTER_TILES")) run.interruptAfterTiles = std::atol(n);
+  if (const char* n = std::getenv("LUCENT_TEST_INTERRUPT_AFTER_TILES"))
+    run.interruptAfterTiles = std::atol(n);
   run.checkpointPath = checkpointPathFor(output);
   if (options.resume && run.checkpointInterval == 0.0)
     throw UsageError("--resume needs a checkpoint, and --checkpoint-interval 0 keeps none");
@@ -417,10 +447,13 @@ void setUpTiles(RenderRun& run, const RenderOptions& options, const CommonOption
     return;
   } else if (options.resume) {
     if (!options.quiet)
-      fmt::print(stderr, "lucent: no checkpoint '{}' to resume; rendering from the start\n", run.checkpointPath);
+      fmt::print(stderr, "lucent: no checkpoint '{}' to resume; rendering from the start\n",
+                 run.checkpointPath);
   } else if (exists && !options.quiet) {
-    fmt::print(stderr, "lucent: '{}' holds the checkpoint of an earlier render; it is replaced when this "
-                       "render saves its own (--resume continues it instead)\n", run.checkpointPath);
+    fmt::print(stderr,
+               "lucent: '{}' holds the checkpoint of an earlier render; it is replaced when this "
+               "render saves its own (--resume continues it instead)\n",
+               run.checkpointPath);
   }
   run.checkpoint.emplace(run.checkpointPath, runIdentity(options, common, run.region));
 }
@@ -431,11 +464,12 @@ std::string defaultRenderOutput(const std::string& scene) {
   return std::filesystem::path(scene).replace_extension(".png").string();
 }
 
-int runRender(const RenderOptions& options, const CommonOptions& common, const TileExecutor& executor,
-              LoadObserver* observer) {
+int runRender(const RenderOptions& options, const CommonOptions& common,
+              const TileExecutor& executor, LoadObserver* observer) {
   // From the start, so a Ctrl-C during parsing still stops the render at its first row.
   InterruptCatcher interrupts;
-  const std::string output = options.output.empty() ? defaultRenderOutput(options.scene) : options.output;
+  const std::string output =
+      options.output.empty() ? defaultRenderOutput(options.scene) : options.output;
   SceneRequest request = renderSceneRequest(options);
   checkOverrides(request);
   std::optional<FrameRange> range;
@@ -443,7 +477,8 @@ int runRender(const RenderOptions& options, const CommonOptions& common, const T
     range = parseFrameRange(options.frames);
     if (picksOneMoment(common))
       throw UsageError(fmt::format("--frames {} and -D {} both choose what to render; give one",
-                                   options.frames, common.defines.count("frame") ? "frame" : "clock"));
+                                   options.frames,
+                                   common.defines.count("frame") ? "frame" : "clock"));
   }
   // Before a long render: an output that can never be written is an error now.
   checkImageOutputPath(output);
@@ -455,7 +490,8 @@ int runRender(const RenderOptions& options, const CommonOptions& common, const T
   // tracing: `-t 1` is one thread from start to end.
   std::optional<tbb::global_control> threadLimit;
   if (run.threads > 0)
-    threadLimit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(run.threads));
+    threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
+                        static_cast<size_t>(run.threads));
 
   request.meshCache = std::make_shared<MeshFileCache>();
   std::set<std::string> printed;  // the first frame's warnings, not repeated per frame
@@ -466,7 +502,9 @@ int runRender(const RenderOptions& options, const CommonOptions& common, const T
   const double firstLoadSeconds = secondsSince(run.start);
   const Animation animation = loaded.scene->animation;
   const bool sequence = animation.present && !picksOneMoment(common);
-  if (range) checkFrameRange(*range, "--frames " + options.frames, sequence ? animation.frames : 1, sequence);
+  if (range)
+    checkFrameRange(*range, "--frames " + options.frames, sequence ? animation.frames : 1,
+                    sequence);
   if (!options.tileCosts.empty() && sequence && (!range || range->count() != 1))
     throw UsageError("--tile-costs records the tiles of one frame: give --frames F or -D frame=F");
   if (sequence) {
@@ -478,7 +516,8 @@ int runRender(const RenderOptions& options, const CommonOptions& common, const T
                         output, run);
   }
 
-  RenderResult result = renderToFile(std::move(loaded), output, run, std::nullopt, 1, firstLoadSeconds);
+  RenderResult result =
+      renderToFile(std::move(loaded), output, run, std::nullopt, 1, firstLoadSeconds);
   if (result.cancelled) {
     // The output is left as it was (docs/security.md: a render writes only its output
     // image, that image's temporary file and its checkpoint).

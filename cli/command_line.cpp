@@ -15,7 +15,8 @@ std::vector<std::string> splitPathList(const std::string& list) {
   std::vector<std::string> parts;
   for (size_t start = 0;;) {
     size_t colon = list.find(':', start);
-    std::string part = list.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
+    std::string part =
+        list.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
     if (!part.empty()) parts.push_back(part);
     if (colon == std::string::npos) break;
     start = colon + 1;
@@ -40,9 +41,10 @@ void splitDefines(const std::vector<std::string>& defines, CommonOptions& common
       throw UsageError(fmt::format("-D expects name=value, got '{}'", d));
     std::string name = d.substr(0, eq);
     if (!Parameters::isValidName(name))
-      throw UsageError(fmt::format("-D {}: a parameter name is letters, digits and '_', not "
-                                   "starting with a digit; got '{}'",
-                                   d, name));
+      throw UsageError(
+          fmt::format("-D {}: a parameter name is letters, digits and '_', not "
+                      "starting with a digit; got '{}'",
+                      d, name));
     auto [it, inserted] = common.defines.emplace(name, d.substr(eq + 1));
     if (!inserted)
       throw UsageError(fmt::format("-D {} is given twice ({}={} and {}); give it once", name, name,
@@ -95,8 +97,8 @@ std::string unexpectedArguments(const CLI::App* app, const std::vector<std::stri
   return message;
 }
 
-void takeCommonOptions(const std::vector<std::string>& defines, const std::vector<std::string>& allowPaths,
-                       CommonOptions& common) {
+void takeCommonOptions(const std::vector<std::string>& defines,
+                       const std::vector<std::string>& allowPaths, CommonOptions& common) {
   splitDefines(defines, common);
   for (const std::string& list : allowPaths)
     for (std::string& dir : splitPathList(list)) common.allowPaths.push_back(std::move(dir));
@@ -105,8 +107,8 @@ void takeCommonOptions(const std::vector<std::string>& defines, const std::vecto
 void addRenderOptions(CLI::App* app, RenderOptions& render) {
   app->add_option("scene", render.scene, "Scene file (.xml)")->required();
   app->add_option("-o,--output", render.output,
-                        "Output image; the format follows the extension (png exr tif jpg hdr "
-                        "ppm). Default: SCENE.png beside the scene");
+                  "Output image; the format follows the extension (png exr tif jpg hdr "
+                  "ppm). Default: SCENE.png beside the scene");
   app->add_option("-w,--width", render.width, "Image width in pixels");
   app->add_option("-h,--height", render.height, "Image height in pixels");
   app->add_option("-s,--samples", render.samples, "Samples per pixel");
@@ -115,22 +117,23 @@ void addRenderOptions(CLI::App* app, RenderOptions& render) {
   app->add_option("--camera", render.camera, "Render through the camera with this name");
   app->add_flag("-q,--quiet", render.quiet, "No progress bar or closing line (warnings stay)");
   app->add_flag("--stats", render.stats,
-                      "Print ray counts, time and Mrays/s (and each frame's time in an animation)");
+                "Print ray counts, time and Mrays/s (and each frame's time in an animation)");
   app->add_option("--frames", render.frames,
-                        "Render only these frames of an animation: F or A..B (default: all)")
+                  "Render only these frames of an animation: F or A..B (default: all)")
       ->type_name("A..B");
   app->add_option("--region", render.region,
-                        "Render only these pixels of the image (right and bottom bounds excluded), "
-                        "written as an image of their size")
+                  "Render only these pixels of the image (right and bottom bounds excluded), "
+                  "written as an image of their size")
       ->type_name("X0,Y0,X1,Y1");
   app->add_option("--tile-size", render.tileSize,
-                        "Pixels a side of the tiles a checkpoint keeps (default 32, or 128 with adaptive supersampling of centres)");
+                  "Pixels a side of the tiles a checkpoint keeps (default 32, or 128 with adaptive "
+                  "supersampling of centres)");
   app->add_flag("--resume", render.resume,
-                      "Continue an interrupted render from the checkpoint beside its output");
+                "Continue an interrupted render from the checkpoint beside its output");
   app->add_option("--checkpoint-interval", render.checkpointInterval,
-                        "Seconds between saves of the checkpoint (default 60; 0: keep none)");
+                  "Seconds between saves of the checkpoint (default 60; 0: keep none)");
   app->add_option("--tile-costs", render.tileCosts,
-                        "Write each tile's render time to FILE (for bench/tile_schedule)")
+                  "Write each tile's render time to FILE (for bench/tile_schedule)")
       ->type_name("FILE");
 }
 

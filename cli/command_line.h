@@ -16,10 +16,11 @@ void setHelp(CLI::App* app);
 
 // -D name=value (repeatable) and --allow-path DIR:DIR, kept as given until
 // takeCommonOptions checks them.
-void addCommonOptions(CLI::App* app, std::vector<std::string>& defines, std::vector<std::string>& allowPaths);
+void addCommonOptions(CLI::App* app, std::vector<std::string>& defines,
+                      std::vector<std::string>& allowPaths);
 // Throws UsageError for a malformed or repeated -D.
-void takeCommonOptions(const std::vector<std::string>& defines, const std::vector<std::string>& allowPaths,
-                       CommonOptions& common);
+void takeCommonOptions(const std::vector<std::string>& defines,
+                       const std::vector<std::string>& allowPaths, CommonOptions& common);
 
 // The scene, -o and every option of `lucent render`.
 void addRenderOptions(CLI::App* app, RenderOptions& render);

@@ -23,12 +23,14 @@ namespace lucent::cli {
 
 struct LoadedScene;
 using TileExecutor = std::function<TileRenderResult(
-    const Renderer&, const LoadedScene&, int, const std::vector<PixelRect>&, const std::vector<char>&,
-    const RenderControl&, bool, const std::function<void(size_t, const RenderResult&)>&)>;
+    const Renderer&, const LoadedScene&, int, const std::vector<PixelRect>&,
+    const std::vector<char>&, const RenderControl&, bool,
+    const std::function<void(size_t, const RenderResult&)>&)>;
 
 // The problem with a numeric override (-w, -h, -s, -t, --max-depth) named `name`, if any:
 // below 1, or above the limit the scene's <render> has too (render_settings.h).
-std::optional<std::string> overrideProblem(const std::string& name, const std::optional<int>& value);
+std::optional<std::string> overrideProblem(const std::string& name,
+                                           const std::optional<int>& value);
 
 // Options every command accepts.
 struct CommonOptions {
@@ -45,9 +47,10 @@ struct RenderOptions {
   bool stats = false;
   std::string frames;  // --frames F or A..B (frame_range.h); empty: every frame
   std::string region;  // --region X0,Y0,X1,Y1; empty: the whole image
-  std::optional<int> tileSize;  // --tile-size (pixels a side); none: defaultTileSize (tile_render.h)
-  std::string tileCosts;        // --tile-costs FILE: each tile's time, for bench/tile_schedule
-  bool resume = false;          // --resume: continue from the output's checkpoint
+  std::optional<int>
+      tileSize;           // --tile-size (pixels a side); none: defaultTileSize (tile_render.h)
+  std::string tileCosts;  // --tile-costs FILE: each tile's time, for bench/tile_schedule
+  bool resume = false;    // --resume: continue from the output's checkpoint
   std::optional<double> checkpointInterval;  // --checkpoint-interval SECONDS; 0: none
 };
 
@@ -57,8 +60,8 @@ constexpr double kDefaultCheckpointInterval = 60.0;
 class LoadObserver;
 // `executor`: how tiles are rendered (tile_executor.h); empty: on this process's threads.
 // `observer`: told of each frame's load (load_scene.h); null: none.
-int runRender(const RenderOptions& options, const CommonOptions& common, const TileExecutor& executor = {},
-              LoadObserver* observer = nullptr);
+int runRender(const RenderOptions& options, const CommonOptions& common,
+              const TileExecutor& executor = {}, LoadObserver* observer = nullptr);
 // The image `render` writes without -o: the scene's path with the extension .png.
 std::string defaultRenderOutput(const std::string& scene);
 

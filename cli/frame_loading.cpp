@@ -14,7 +14,8 @@ bool picksOneMoment(const CommonOptions& common) {
 }
 
 std::string frameName(int frame, const Animation& animation) {
-  return fmt::format("frame {} of {} (clock {})", frame, animation.frames, animation.clockOf(frame));
+  return fmt::format("frame {} of {} (clock {})", frame, animation.frames,
+                     animation.clockOf(frame));
 }
 
 LoadedScene loadFrame(const SceneRequest& request, const CommonOptions& common,
@@ -23,9 +24,9 @@ LoadedScene loadFrame(const SceneRequest& request, const CommonOptions& common,
     return loadScene(request, common);
   } catch (...) {
     const int status = reportFailure(std::current_exception());
-    const char* what = status == kInvalidScene   ? "is invalid"
-                       : status == kUsage        ? "cannot be rendered as asked"
-                                                 : "cannot be loaded";
+    const char* what = status == kInvalidScene ? "is invalid"
+                       : status == kUsage      ? "cannot be rendered as asked"
+                                               : "cannot be loaded";
     fmt::print(stderr, "lucent: {} {}\n", frameName(request.frame, animation), what);
     throw ReportedFailure{status};
   }

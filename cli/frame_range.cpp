@@ -28,11 +28,13 @@ FrameRange parseFrameRange(const std::string& text) {
   const std::string_view s(text);
   const size_t dots = s.find("..");
   std::optional<int> first = wholeNumber(s.substr(0, dots));
-  std::optional<int> last = dots == std::string_view::npos ? first : wholeNumber(s.substr(dots + 2));
+  std::optional<int> last =
+      dots == std::string_view::npos ? first : wholeNumber(s.substr(dots + 2));
   if (!first || !last)
-    throw UsageError(fmt::format("--frames {}: expected a frame F or a range A..B of whole numbers "
-                                 "(as --frames 5 or --frames 1..24)",
-                                 text));
+    throw UsageError(
+        fmt::format("--frames {}: expected a frame F or a range A..B of whole numbers "
+                    "(as --frames 5 or --frames 1..24)",
+                    text));
   if (*first < 1 || *last < 1)
     throw UsageError(fmt::format("--frames {}: frames are numbered from 1", text));
   if (*first > *last)

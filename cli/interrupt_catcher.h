@@ -23,7 +23,7 @@ class InterruptCatcher {
 
  private:
   static constexpr int kSignals[2] = {SIGINT, SIGTERM};
-  struct sigaction previous_[2] {};
+  struct sigaction previous_[2]{};
   bool installed_[2] = {false, false};
 };
 

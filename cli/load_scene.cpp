@@ -37,10 +37,10 @@ SceneRequest renderSceneRequest(const RenderOptions& options) {
 }
 
 void checkOverrides(const SceneRequest& request) {
-  for (auto [value, name] : {std::pair{request.width, "--width"}, std::pair{request.height, "--height"},
-                             std::pair{request.samples, "--samples"},
-                             std::pair{request.threads, "--threads"},
-                             std::pair{request.maxDepth, "--max-depth"}})
+  for (auto [value, name] :
+       {std::pair{request.width, "--width"}, std::pair{request.height, "--height"},
+        std::pair{request.samples, "--samples"}, std::pair{request.threads, "--threads"},
+        std::pair{request.maxDepth, "--max-depth"}})
     if (auto problem = overrideProblem(name, value)) throw UsageError(*problem);
 }
 
@@ -58,10 +58,8 @@ LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) 
     options.onGrant = [o = request.observer](const FileGrant& g) { o->granted(g); };
   }
   auto say = [&](const std::string& line) {
-    if (request.heldMessages)
-      request.heldMessages->push_back(line);
-    else
-      fmt::print(stderr, "{}\n", line);
+    if (request.heldMessages) request.heldMessages->push_back(line);
+    else fmt::print(stderr, "{}\n", line);
   };
   ParseResult parsed = parseSceneFile(request.scene, options);
   for (const Diagnostic& d : parsed.diagnostics.all()) {
@@ -76,8 +74,8 @@ LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) 
     say(fmt::format("{}: {} error{}; the scene is invalid", request.scene, n, n == 1 ? "" : "s"));
     // Later frames are named by the caller (frame_loading.cpp); the first one read, here.
     if (parsed.animation.present && request.frame == 1)
-      say(fmt::format("lucent: frame {} of {} (clock {}) is invalid", parsed.frame, parsed.animation.frames,
-                      parsed.clock));
+      say(fmt::format("lucent: frame {} of {} (clock {}) is invalid", parsed.frame,
+                      parsed.animation.frames, parsed.clock));
     throw ReportedFailure{kInvalidScene};
   }
 

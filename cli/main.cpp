@@ -4,8 +4,8 @@
 
 #include "lang/did_you_mean.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <cstring>
@@ -21,8 +21,9 @@ const std::vector<std::string_view> kCommands{"render", "check", "export-pov", "
 // only say that a command is required).
 bool checkCommandName(int argc, char** argv) {
   if (argc >= 2 && std::strcmp(argv[1], "-h") == 0) {
-    fmt::print(stderr, "lucent: error: -h is the image height (lucent render -h 480); help is "
-                       "lucent --help\n");
+    fmt::print(stderr,
+               "lucent: error: -h is the image height (lucent render -h 480); help is "
+               "lucent --help\n");
     return false;
   }
   if (argc < 2 || argv[1][0] == '-') return true;
@@ -59,7 +60,8 @@ int main(int argc, char** argv) {
   setHelp(checkCmd);
   checkCmd->add_option("scene", check.scene, "Scene file (.xml)")->required();
   checkCmd->add_option("-w,--width", check.width, "Validate for this image width (as render -w)");
-  checkCmd->add_option("-h,--height", check.height, "Validate for this image height (as render -h)");
+  checkCmd->add_option("-h,--height", check.height,
+                       "Validate for this image height (as render -h)");
   checkCmd->add_option("-s,--samples", check.samples, "Samples per pixel (as render -s)");
   checkCmd->add_option("--max-depth", check.maxDepth, "Maximum recursion depth (as render)");
   checkCmd->add_option("--camera", check.camera, "Validate the camera with this name");
@@ -76,7 +78,8 @@ int main(int argc, char** argv) {
   exportCmd->add_option("-h,--height", exportPov.height, "Image height the camera is set up for");
   exportCmd->add_option("--max-depth", exportPov.maxDepth, "Maximum recursion depth");
   exportCmd->add_option("--camera", exportPov.camera, "Export the camera with this name");
-  exportCmd->add_option("--frame", exportPov.frame, "Export this frame of an animation (default 1)");
+  exportCmd->add_option("--frame", exportPov.frame,
+                        "Export this frame of an animation (default 1)");
   addCommonOptions(exportCmd, defines, allowPaths);
 
   CompareOptions compare;
@@ -95,7 +98,8 @@ int main(int argc, char** argv) {
   compareCmd->add_option("-t,--threads", compare.threads, "Threads for both renderers");
   compareCmd->add_option("--max-depth", compare.maxDepth, "Maximum recursion depth");
   compareCmd->add_option("--camera", compare.camera, "Render through the camera with this name");
-  compareCmd->add_option("--frame", compare.frame, "Compare this frame of an animation (default 1)");
+  compareCmd->add_option("--frame", compare.frame,
+                         "Compare this frame of an animation (default 1)");
   addCommonOptions(compareCmd, defines, allowPaths);
 
   std::string schemaOutput;
@@ -116,8 +120,9 @@ int main(int argc, char** argv) {
   try {
     for (const CLI::App* cmd : app.get_subcommands())
       if (std::vector<std::string> extras = cmd->remaining(); !extras.empty())
-        throw UsageError(unexpectedArguments(cmd, extras) + fmt::format(
-                             "\nRun 'lucent {} --help' for more information.", cmd->get_name()));
+        throw UsageError(
+            unexpectedArguments(cmd, extras) +
+            fmt::format("\nRun 'lucent {} --help' for more information.", cmd->get_name()));
     takeCommonOptions(defines, allowPaths, common);
 
     if (*renderCmd) return runRender(render, common);

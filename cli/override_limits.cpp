@@ -6,7 +6,8 @@
 
 namespace lucent::cli {
 
-std::optional<std::string> overrideProblem(const std::string& name, const std::optional<int>& value) {
+std::optional<std::string> overrideProblem(const std::string& name,
+                                           const std::optional<int>& value) {
   if (!value) return std::nullopt;
   if (*value < 1) return fmt::format("{} must be at least 1 (got {})", name, *value);
   int limit = 0;
@@ -14,7 +15,8 @@ std::optional<std::string> overrideProblem(const std::string& name, const std::o
   else if (name == "--samples") limit = kMaxSamples;
   else if (name == "--max-depth") limit = kMaxRecursionDepth;
   else if (name == "--threads") limit = 4096;  // far above any machine's cores; TBB's own cap
-  if (limit > 0 && *value > limit) return fmt::format("{} must be at most {} (got {})", name, limit, *value);
+  if (limit > 0 && *value > limit)
+    return fmt::format("{} must be at most {} (got {})", name, limit, *value);
   return std::nullopt;
 }
 

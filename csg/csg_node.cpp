@@ -11,10 +11,14 @@ namespace lucent {
 
 const char* csgOpName(CsgOp op) {
   switch (op) {
-    case CsgOp::Union: return "union";
-    case CsgOp::Merge: return "merge";
-    case CsgOp::Intersection: return "intersection";
-    case CsgOp::Difference: return "difference";
+    case CsgOp::Union:
+      return "union";
+    case CsgOp::Merge:
+      return "merge";
+    case CsgOp::Intersection:
+      return "intersection";
+    case CsgOp::Difference:
+      return "difference";
   }
   return "?";
 }
@@ -40,8 +44,8 @@ bool combine(CsgOp op, const std::vector<char>& in) {
 CsgNode::CsgNode(CsgOp op, std::vector<std::unique_ptr<Shape>> children, CsgSearch search)
     : op_(op), children_(std::move(children)), search_(search) {
   if (children_.empty()) throw std::invalid_argument("CSG node without children");
-  solid_ = std::all_of(children_.begin(), children_.end(),
-                       [](const auto& c) { return c->isSolid(); });
+  solid_ =
+      std::all_of(children_.begin(), children_.end(), [](const auto& c) { return c->isSolid(); });
   switch (op_) {
     case CsgOp::Union:
     case CsgOp::Merge:
@@ -97,7 +101,10 @@ bool CsgNode::closestChildHit(const Ray& ray, Hit& hit) const {
   // closest so far, in a fixed buffer (no allocation per ray): a closer hit drops those
   // now outside its window, and when more than fit tie, the highest-numbered child gives
   // way, as it can never win.
-  struct Candidate { Hit hit; uint32_t child; };
+  struct Candidate {
+    Hit hit;
+    uint32_t child;
+  };
   std::array<Candidate, 8> near;
   size_t count = 0;
   double tMin = kInf;
@@ -115,10 +122,9 @@ bool CsgNode::closestChildHit(const Ray& ray, Hit& hit) const {
     if (count < near.size()) {
       near[count++] = {h, i};
     } else {
-      auto last = std::max_element(near.begin(), near.end(),
-                                   [](const Candidate& a, const Candidate& b) {
-                                     return a.child < b.child;
-                                   });
+      auto last = std::max_element(
+          near.begin(), near.end(),
+          [](const Candidate& a, const Candidate& b) { return a.child < b.child; });
       if (last->child > i) *last = {h, i};
     }
     r.tmax = std::min(r.tmax, tMin + coincidenceWindow(r, tMin));
@@ -220,9 +226,8 @@ bool CsgNode::occluded(const Ray& ray) const {
                          [&](const auto& c) { return c->occluded(ray); });
     for (uint32_t i : unbounded_)
       if (children_[i]->occluded(ray)) return true;
-    return bvh_.any(ray, [&](uint32_t slot, const Ray& r) {
-      return children_[slotChild_[slot]]->occluded(r);
-    });
+    return bvh_.any(
+        ray, [&](uint32_t slot, const Ray& r) { return children_[slotChild_[slot]]->occluded(r); });
   }
   Hit h;
   return intersect(ray, h);

@@ -25,7 +25,9 @@ class Inverted final : public Shape {
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override { return !solid_->inside(p); }
   // Never called: hits name the leaf in hit.shape, and the leaf answers.
-  SurfaceInfo surface(const Ray& ray, const Hit& hit) const override { return solid_->surface(ray, hit); }
+  SurfaceInfo surface(const Ray& ray, const Hit& hit) const override {
+    return solid_->surface(ray, hit);
+  }
   size_t triangleCount() const override { return solid_->triangleCount(); }
 
   const Shape& solid() const { return *solid_; }

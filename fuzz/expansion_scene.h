@@ -14,8 +14,8 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <cstdlib>
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -33,7 +33,8 @@ class ExpansionSceneWriter {
     for (int d = 0, n = next() % 4; d < n; ++d) definition(d);
     out_ += "</defs>\n";
     double total = 0;
-    while (pos_ < size_ && elements_ < kMaxElements && total < kTotalBudget) total += element(0, false);
+    while (pos_ < size_ && elements_ < kMaxElements && total < kTotalBudget)
+      total += element(0, false);
     out_ += "</scene>\n";
     return out_;
   }
@@ -56,7 +57,8 @@ class ExpansionSceneWriter {
 
   void param(int depth) {
     static const char* const names[] = {"r", "n", "i", "k", "s", "pi"};
-    static const char* const values[] = {"1", "0.5", "${i}", "${r*2}", "$r", "1 2 3", "${n}", "${k}", "${r", "3"};
+    static const char* const values[] = {"1",     "0.5",  "${i}", "${r*2}", "$r",
+                                         "1 2 3", "${n}", "${k}", "${r",    "3"};
     const std::string name = pick(names);  // one pick a statement: the bytes are read in order
     out_ += indent(depth) + "<param name=\"" + name + "\" value=\"" + pick(values) + "\"/>\n";
   }
@@ -71,12 +73,14 @@ class ExpansionSceneWriter {
     if (next() % 2) out_ += "  <param name=\"r\" value=\"" + std::string(pick(kRadii)) + "\"/>\n";
     double weight = 1;
     if (kind != "sphere")
-      for (int n = 1 + next() % 3; n > 0 && elements_ < kMaxElements; --n) weight += element(1, true);
+      for (int n = 1 + next() % 3; n > 0 && elements_ < kMaxElements; --n)
+        weight += element(1, true);
     out_ += "</" + kind + ">\n";
     defWeights_[d] = weight;
   }
 
-  static constexpr const char* kRadii[] = {"1", "0.25", "${r*0.5}", "${r}", "-1", "${1/0}", "${i+1}", "${n}"};
+  static constexpr const char* kRadii[] = {"1",  "0.25",   "${r*0.5}", "${r}",
+                                           "-1", "${1/0}", "${i+1}",   "${n}"};
 
   // The largest value a count written as an expression can take: parameters double at most
   // a few times on the way (r = ${r*2} through nested uses), repeat variables are below the
@@ -91,10 +95,11 @@ class ExpansionSceneWriter {
   // when the scene is refused for it anyway).
   double element(int depth, bool inDefs) {
     ++elements_;
-    static const char* const counts[] = {"0",      "1",   "2",        "3",     "${n}", "${i+1}", "4",
-                                         "${k}",   "-1",  "1.5",      "abc",   "${2*r}", "10", "10000001",
-                                         kBig,     "99999999999999999999"};
-    static const char* const tests[] = {"1", "0", "${i % 2}", "${i == 0}", "${r > 0.5}", "$r", "${j}", "yes"};
+    static const char* const counts[] = {
+        "0",  "1",   "2",   "3",      "${n}", "${i+1}",   "4",  "${k}",
+        "-1", "1.5", "abc", "${2*r}", "10",   "10000001", kBig, "99999999999999999999"};
+    static const char* const tests[] = {"1",          "0",  "${i % 2}", "${i == 0}",
+                                        "${r > 0.5}", "$r", "${j}",     "yes"};
     static const char* const vars[] = {"i", "j", "k", "i", "j", "r", "pi"};
     static const char* const ids[] = {"", "", "a", "a${i}", "b${i}${j}", "d0", "${i}"};
     static const char* const refs[] = {"d0", "d1", "d2", "d3", "a", "a0", "nosuch"};
@@ -103,7 +108,8 @@ class ExpansionSceneWriter {
     switch (kind) {
       case 0: {
         // At the innermost repeat's variable, so that instances differ.
-        out_ += pad + "<sphere radius=\"" + pick(kRadii) + "\" center=\"" + (vars_.empty() ? "0" : "${" + vars_.back() + "}") + " 0 0\"";
+        out_ += pad + "<sphere radius=\"" + pick(kRadii) + "\" center=\"" +
+                (vars_.empty() ? "0" : "${" + vars_.back() + "}") + " 0 0\"";
         std::string id = pick(ids);
         if (!id.empty()) out_ += " id=\"" + id + "\"";
         out_ += "/>\n";
@@ -129,7 +135,9 @@ class ExpansionSceneWriter {
         out_ += pad + "<repeat var=\"" + vars_.back() + "\" count=\"";
         const size_t countAt = out_.size();
         out_ += count + "\">\n";
-        double max = big ? 5000 : count[0] == '$' ? expressionMax() : std::max(0.0, std::atof(count.c_str()));
+        double max = big               ? 5000
+                     : count[0] == '$' ? expressionMax()
+                                       : std::max(0.0, std::atof(count.c_str()));
         if (count.size() > 9) max = 0;  // beyond the limit: refused
         counts_.push_back(max);
         if (big) ++big_;
@@ -168,12 +176,14 @@ class ExpansionSceneWriter {
         // The copy of a definition written before; any other (one later, itself) at most
         // what a repeat may make.
         double target = kRepeatBudget;
-        if (ref.size() == 2 && ref[0] == 'd' && defWeights_[ref[1] - '0'] > 0) target = defWeights_[ref[1] - '0'];
+        if (ref.size() == 2 && ref[0] == 'd' && defWeights_[ref[1] - '0'] > 0)
+          target = defWeights_[ref[1] - '0'];
         return 1 + target;
       }
       default: {
         if (depth == 0 && !inDefs && next() % 2) {
-          out_ += pad + "<light type=\"point\" position=\"" + (vars_.empty() ? "0" : "${" + vars_.back() + "}") + " 5 0\"/>\n";
+          out_ += pad + "<light type=\"point\" position=\"" +
+                  (vars_.empty() ? "0" : "${" + vars_.back() + "}") + " 5 0\"/>\n";
           return 1;
         }
         param(depth);
@@ -184,7 +194,8 @@ class ExpansionSceneWriter {
 
   double children(int depth, bool inDefs) {
     double w = 0;
-    for (int n = next() % 4; n > 0 && elements_ < kMaxElements; --n) w += element(depth + 1, inDefs);
+    for (int n = next() % 4; n > 0 && elements_ < kMaxElements; --n)
+      w += element(depth + 1, inDefs);
     return w;
   }
 

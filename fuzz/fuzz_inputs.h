@@ -147,7 +147,8 @@ inline Outcome meshReader(const uint8_t* data, size_t size, MeshFormat format) {
 // contract (sorted, alternating from outside: the rays start left of the text's bounds,
 // wherever a damaged font put its outlines).
 inline Outcome fontReader(const uint8_t* data, size_t size) {
-  const TextOutline o = textOutlineFromBytes(std::string(reinterpret_cast<const char*>(data), size), "Lo8e AV", Vec2(0.0));
+  const TextOutline o = textOutlineFromBytes(std::string(reinterpret_cast<const char*>(data), size),
+                                             "Lo8e AV", Vec2(0.0));
   if (!o.error.empty()) return refused();
   std::vector<std::vector<PrismContour>> glyphs;
   for (const PlacedGlyph& g : o.glyphs) glyphs.push_back(g.contours);
@@ -243,26 +244,46 @@ class ExpressionFuzzNames final : public ExpressionNames {
   }
 
  private:
-  static constexpr std::pair<const char*, double> kNumbers[] = {
-      {"i", 3},    {"r", 0.5},    {"n", 10},           {"zero", 0},        {"neg", -2},
-      {"big", 1e308}, {"tiny", 4.9e-324}, {"pi", 3.141592653589793}, {"e", 2.718281828459045}};
+  static constexpr std::pair<const char*, double> kNumbers[] = {{"i", 3},
+                                                                {"r", 0.5},
+                                                                {"n", 10},
+                                                                {"zero", 0},
+                                                                {"neg", -2},
+                                                                {"big", 1e308},
+                                                                {"tiny", 4.9e-324},
+                                                                {"pi", 3.141592653589793},
+                                                                {"e", 2.718281828459045}};
 };
 
 // The expression scene: the input is the text of ${...} in an attribute on its own line, in
 // a repeat with a local parameter, beside top-level parameters (one not a number, one that
 // refers to itself).
 constexpr int kExpressionLine = 6;
-inline std::string expressionScene(std::string_view text, size_t& valueColumn, size_t& valueLength) {
+inline std::string expressionScene(std::string_view text, size_t& valueColumn,
+                                   size_t& valueLength) {
   std::string escaped;
   for (unsigned char c : text) {
     switch (c) {
-      case '&': escaped += "&amp;"; break;
-      case '<': escaped += "&lt;"; break;
-      case '"': escaped += "&quot;"; break;
-      case '\n': escaped += "&#10;"; break;
-      case '\t': escaped += "&#9;"; break;
-      case '\r': escaped += "&#13;"; break;
-      default: escaped += c < 0x20 ? ' ' : static_cast<char>(c);  // not allowed in XML even escaped
+      case '&':
+        escaped += "&amp;";
+        break;
+      case '<':
+        escaped += "&lt;";
+        break;
+      case '"':
+        escaped += "&quot;";
+        break;
+      case '\n':
+        escaped += "&#10;";
+        break;
+      case '\t':
+        escaped += "&#9;";
+        break;
+      case '\r':
+        escaped += "&#13;";
+        break;
+      default:
+        escaped += c < 0x20 ? ' ' : static_cast<char>(c);  // not allowed in XML even escaped
     }
   }
   const std::string before = "<sphere radius=\"";
@@ -270,7 +291,8 @@ inline std::string expressionScene(std::string_view text, size_t& valueColumn, s
   valueLength = escaped.size() + 3;  // with ${ and }
   return "<scene version=\"1\">\n"
          "<camera position=\"0 0 5\" look-at=\"0 0 0\"/>\n"
-         "<param name=\"r\" value=\"2\"/><param name=\"s\" value=\"1 2 3\"/><param name=\"c\" value=\"${c+1}\"/>\n"
+         "<param name=\"r\" value=\"2\"/><param name=\"s\" value=\"1 2 3\"/><param name=\"c\" "
+         "value=\"${c+1}\"/>\n"
          "<repeat var=\"i\" count=\"2\">\n"
          "<param name=\"k\" value=\"${i*2}\"/>\n" +
          before + "${" + escaped + "}\"/>\n" +
@@ -294,22 +316,28 @@ inline Outcome expression(const uint8_t* data, size_t size) {
       ExpressionError error;
       std::optional<double> v = evaluator.evaluate(text, names, error);
       if (v && !std::isfinite(*v)) return finding("a result that is not finite");
-      if (!v && error.message.empty() && !error.reported) return finding("an error without a message");
+      if (!v && error.message.empty() && !error.reported)
+        return finding("an error without a message");
       if (!v && error.offset >= std::max<size_t>(1, text.size()))
-        return finding("error offset " + std::to_string(error.offset) + " outside the text: " + error.message);
-      const std::string shown = v ? formatNumber(*v) : "error at " + std::to_string(error.offset) + ": " + error.message;
+        return finding("error offset " + std::to_string(error.offset) +
+                       " outside the text: " + error.message);
+      const std::string shown =
+          v ? formatNumber(*v) : "error at " + std::to_string(error.offset) + ": " + error.message;
       if (round == 0) {
         first = v;
         firstText = shown;
-      } else if (v.has_value() != first.has_value() || (v && std::memcmp(&*v, &*first, sizeof(double)) != 0)) {
-        return finding("a second evaluation of the same text gives another answer: " + firstText + ", then " + shown);
+      } else if (v.has_value() != first.has_value() ||
+                 (v && std::memcmp(&*v, &*first, sizeof(double)) != 0)) {
+        return finding("a second evaluation of the same text gives another answer: " + firstText +
+                       ", then " + shown);
       }
     }
     ok = first.has_value();
   }
   size_t column = 0, length = 0;
   const std::string xml = expressionScene(text, column, length);
-  ParseResult parsed = parseSceneString(xml, std::string(LUCENT_SOURCE_DIR) + "/examples/fuzz-input.xml");
+  ParseResult parsed =
+      parseSceneString(xml, std::string(LUCENT_SOURCE_DIR) + "/examples/fuzz-input.xml");
   for (const Diagnostic& d : parsed.diagnostics.all()) {
     if (d.message.rfind("internal error while reading the scene", 0) == 0) return finding(d.str());
     if (d.severity != Severity::Error) continue;

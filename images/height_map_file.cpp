@@ -35,14 +35,16 @@ PngFacts refusePaletteFiles(const std::string& path) {
   f.read(reinterpret_cast<char*>(b), sizeof b);
   const std::streamsize n = f.gcount();
   if (n >= 6 && b[0] == 'G' && b[1] == 'I' && b[2] == 'F')
-    throw HeightMapError("a GIF holds palette indices, which POV-Ray takes as heights (index x 256); "
-                         "save the image as a grey PNG");
+    throw HeightMapError(
+        "a GIF holds palette indices, which POV-Ray takes as heights (index x 256); "
+        "save the image as a grey PNG");
   static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   if (n < 26 || !std::equal(png, png + 8, b)) return {};
   const int depth = b[24], type = b[25];
   if (type == 3)
-    throw HeightMapError("a palette PNG: POV-Ray takes its palette indices as heights (index x 256); "
-                         "save the image as grey or RGB");
+    throw HeightMapError(
+        "a palette PNG: POV-Ray takes its palette indices as heights (index x 256); "
+        "save the image as grey or RGB");
   return {true, depth, type};
 }
 
@@ -52,7 +54,8 @@ PngFacts refusePaletteFiles(const std::string& path) {
 void refuseBadPnmMaximum(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   char magic[2] = {};
-  if (!f.read(magic, 2) || magic[0] != 'P' || (magic[1] != '2' && magic[1] != '3' && magic[1] != '5' && magic[1] != '6'))
+  if (!f.read(magic, 2) || magic[0] != 'P' ||
+      (magic[1] != '2' && magic[1] != '3' && magic[1] != '5' && magic[1] != '6'))
     return;
   // Width, height and maximum: whitespace-separated, with '#' comments to the end of a line.
   std::string token;
@@ -72,12 +75,13 @@ void refuseBadPnmMaximum(const std::string& path) {
       if (token.size() > 20) break;
     }
   }
-  const bool digits = !token.empty() && token.size() <= 6 &&
-                      std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
+  const bool digits =
+      !token.empty() && token.size() <= 6 &&
+      std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
   const long max = digits ? std::stol(token) : -1;
   if (max < 1 || max > 65535)
-    throw HeightMapError(fmt::format("a PNM image whose maximum value is '{}': Netpbm allows 1 to 65535",
-                                     token.substr(0, 20)));
+    throw HeightMapError(fmt::format(
+        "a PNM image whose maximum value is '{}': Netpbm allows 1 to 65535", token.substr(0, 20)));
 }
 
 // POV-Ray reads a grey PNG of up to 8 bits through a grey colour map: each value v becomes
@@ -107,15 +111,19 @@ std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
   }
   if (!in) throw HeightMapError(error.empty() ? std::string("not an image") : error);
   const ImageHeader& h = in->header();
-  if (h.width <= 0 || h.height <= 0 || h.channels <= 0) throw HeightMapError("the image has no pixels");
+  if (h.width <= 0 || h.height <= 0 || h.channels <= 0)
+    throw HeightMapError("the image has no pixels");
   if (h.width > kMaxHeightFieldSide || h.height > kMaxHeightFieldSide || h.channels > 4)
-    throw HeightMapError(fmt::format("a {}x{} image with {} channels is beyond the height field's limit of {} "
-                                     "pixels a side and 4 channels",
-                                     h.width, h.height, h.channels, kMaxHeightFieldSide));
+    throw HeightMapError(
+        fmt::format("a {}x{} image with {} channels is beyond the height field's limit of {} "
+                    "pixels a side and 4 channels",
+                    h.width, h.height, h.channels, kMaxHeightFieldSide));
   if (h.width < 2 || h.height < 2)
-    throw HeightMapError(fmt::format("a {}x{} image: a height field needs at least 2 x 2 pixels", h.width, h.height));
+    throw HeightMapError(fmt::format("a {}x{} image: a height field needs at least 2 x 2 pixels",
+                                     h.width, h.height));
   if (h.floating || !(h.eightBit || h.sixteenBit))
-    throw HeightMapError("only 8- or 16-bit integer images are read as heights (not floating point)");
+    throw HeightMapError(
+        "only 8- or 16-bit integer images are read as heights (not floating point)");
   std::vector<float> px(static_cast<size_t>(h.width) * h.height * h.channels);
   {
 #if defined(LUCENT_ASAN)
@@ -145,7 +153,8 @@ std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
         v = static_cast<uint16_t>(code(0) * 65535.0f);
       } else if (h.sixteenBit) {
         const float r = code(0), g = code(1), b = code(2);
-        v = static_cast<uint16_t>(std::min(65535.0, (0.297 * r + 0.589 * g + 0.114 * b) * 65535.0f));
+        v = static_cast<uint16_t>(
+            std::min(65535.0, (0.297 * r + 0.589 * g + 0.114 * b) * 65535.0f));
       } else {
         const float r = code(0), g = code(1);
         v = static_cast<uint16_t>((r * 256.0 + g) * 255.0);

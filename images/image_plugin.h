@@ -34,11 +34,11 @@ struct ImageHeader {
   int width = 0;
   int height = 0;
   int channels = 0;
-  bool eightBit = false;     // stored as 8-bit integers
-  bool sixteenBit = false;   // stored as 16-bit integers
-  bool floating = false;     // stored as floating point
-  int alphaChannel = -1;     // the alpha channel's index, or -1
-  std::string colorSpace;    // OpenImageIO's "oiio:ColorSpace" (empty if the file says none)
+  bool eightBit = false;    // stored as 8-bit integers
+  bool sixteenBit = false;  // stored as 16-bit integers
+  bool floating = false;    // stored as floating point
+  int alphaChannel = -1;    // the alpha channel's index, or -1
+  std::string colorSpace;   // OpenImageIO's "oiio:ColorSpace" (empty if the file says none)
 
   // Does the file say its values are gamma-encoded as sRGB's are (in any letter case)?
   // OpenImageIO labels every PPM "Rec709": Netpbm's samples are gamma-encoded, and Lucent
@@ -50,7 +50,8 @@ struct ImageHeader {
   bool colorSpaceIs(const char* lower) const {
     size_t i = 0;
     for (; lower[i]; ++i)
-      if (i >= colorSpace.size() || std::tolower(static_cast<unsigned char>(colorSpace[i])) != lower[i])
+      if (i >= colorSpace.size() ||
+          std::tolower(static_cast<unsigned char>(colorSpace[i])) != lower[i])
         return false;
     return i == colorSpace.size();
   }
@@ -72,7 +73,7 @@ enum class StoredType { UInt8, UInt16, Float };
 // Pixels to write, already encoded (sRGB bytes, 16-bit words or linear floats), with the
 // metadata that goes into the file.
 struct ImageToWrite {
-  std::string format;       // OpenImageIO's format name: "png", "openexr", "tiff"...
+  std::string format;  // OpenImageIO's format name: "png", "openexr", "tiff"...
   int width = 0;
   int height = 0;
   int channels = 3;
@@ -97,7 +98,7 @@ struct CompareStats {
   double rmsError = 0.0;  // over all pixels and channels
   double maxError = 0.0;  // largest channel difference
   int maxX = 0, maxY = 0;
-  long pixelsOver = 0;    // pixels with some channel off by more than the threshold
+  long pixelsOver = 0;  // pixels with some channel off by more than the threshold
 };
 
 // Why a file was not written: at which step, and OpenImageIO's reason (or the system's).

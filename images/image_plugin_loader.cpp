@@ -77,8 +77,8 @@ class Loader {
         tried += fmt::format("\n  {}: {}", path.string(), why ? why : "cannot be loaded");
         continue;
       }
-      auto entry = reinterpret_cast<LucentImagePluginEntry>(
-          ::dlsym(handle, LUCENT_IMAGE_PLUGIN_ENTRY));
+      auto entry =
+          reinterpret_cast<LucentImagePluginEntry>(::dlsym(handle, LUCENT_IMAGE_PLUGIN_ENTRY));
       int version = 0;
       const ImagePlugin* plugin = entry ? entry(&version) : nullptr;
       if (!plugin || version != kImagePluginVersion) {
@@ -90,12 +90,13 @@ class Loader {
       return;
     }
     const bool chosen = std::getenv("LUCENT_IMAGE_PLUGIN") && *std::getenv("LUCENT_IMAGE_PLUGIN");
-    error_ = fmt::format("cannot load the image library ({}, OpenImageIO), which reads and "
-                         "writes every image; tried:{}\n  ({})",
-                         kPluginFile, tried,
-                         chosen ? "the environment variable LUCENT_IMAGE_PLUGIN names it; unset "
-                                  "it to use the one beside the lucent program"
-                                : "rebuild Lucent, or keep it beside the lucent program");
+    error_ = fmt::format(
+        "cannot load the image library ({}, OpenImageIO), which reads and "
+        "writes every image; tried:{}\n  ({})",
+        kPluginFile, tried,
+        chosen ? "the environment variable LUCENT_IMAGE_PLUGIN names it; unset "
+                 "it to use the one beside the lucent program"
+               : "rebuild Lucent, or keep it beside the lucent program");
   }
 
   std::once_flag once_;

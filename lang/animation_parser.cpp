@@ -13,7 +13,8 @@ constexpr long long kMaxFrames = 1'000'000;
 void parseAnimation(ElementReader& r) {
   r.checkAttributes({"frames", "clock-from", "clock-to", "cyclic"});
   r.forEachChild([&](pugi::xml_node c) {
-    ElementReader(r.ctx(), r.file(), c).error("<animation> takes no child elements, got <" + std::string(c.name()) + ">");
+    ElementReader(r.ctx(), r.file(), c)
+        .error("<animation> takes no child elements, got <" + std::string(c.name()) + ">");
   });
   Animation& a = r.ctx().scene.animation;
   a.present = true;
@@ -32,7 +33,8 @@ void readAnimation(ParseContext& ctx, const std::vector<TopLevelItem>& items, in
     if (std::string_view(item.element.name()) != "animation") continue;
     ElementReader r(ctx, *item.file, item.element);
     if (first) {
-      r.error("a scene has one <animation> at most; the first is at " + first->file->loc(first->element).str());
+      r.error("a scene has one <animation> at most; the first is at " +
+              first->file->loc(first->element).str());
       continue;
     }
     first = &item;
@@ -46,8 +48,9 @@ void readAnimation(ParseContext& ctx, const std::vector<TopLevelItem>& items, in
     else frame = static_cast<int>(std::max(-1LL, std::min<long long>(*f, kMaxFrames + 1)));
   }
   if (frame < 1 || frame > a.frames) {
-    ctx.diags.error(commandLine, "frame " + std::to_string(frame) + " does not exist: the scene has " +
-                                     std::to_string(a.frames) + (a.frames == 1 ? " frame" : " frames"));
+    ctx.diags.error(commandLine, "frame " + std::to_string(frame) +
+                                     " does not exist: the scene has " + std::to_string(a.frames) +
+                                     (a.frames == 1 ? " frame" : " frames"));
     frame = 1;
   }
   double clock = a.clockOf(frame);

@@ -28,9 +28,10 @@ void warnCamerasInsideOpaqueSolids(const Scene& scene, Diagnostics& diags) {
         const Vec3& n = plane->normal;
         // Negating both keeps the surface and swaps the half-spaces: the camera's side
         // becomes the outside (as POV-Ray's plane { -n, -d } for plane { n, d }).
-        fix = fmt::format("to put the camera outside and keep the surface, negate the normal and "
-                          "the offset: normal=\"{} {} {}\" offset=\"{}\"",
-                          number(-n.x), number(-n.y), number(-n.z), number(-plane->offset));
+        fix = fmt::format(
+            "to put the camera outside and keep the surface, negate the normal and "
+            "the offset: normal=\"{} {} {}\" offset=\"{}\"",
+            number(-n.x), number(-n.y), number(-n.z), number(-plane->offset));
       }
     diags.warning(solid.loc,
                   fmt::format("{} is inside this opaque <{}>: its rays start inside it, so the "

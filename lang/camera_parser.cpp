@@ -15,27 +15,38 @@ namespace lucent {
 namespace {
 
 const std::vector<std::pair<std::string_view, CameraType>> kCameraTypes{
-    {"pinhole", CameraType::Pinhole},       {"thin-lens", CameraType::ThinLens},
-    {"orthographic", CameraType::Orthographic}, {"fisheye", CameraType::Fisheye},
-    {"panini", CameraType::Panini},         {"lenslet", CameraType::Lenslet},
-    {"octahedral", CameraType::Octahedral}, {"cubemap", CameraType::Cubemap},
+    {"pinhole", CameraType::Pinhole},
+    {"thin-lens", CameraType::ThinLens},
+    {"orthographic", CameraType::Orthographic},
+    {"fisheye", CameraType::Fisheye},
+    {"panini", CameraType::Panini},
+    {"lenslet", CameraType::Lenslet},
+    {"octahedral", CameraType::Octahedral},
+    {"cubemap", CameraType::Cubemap},
     {"fibonacci", CameraType::Fibonacci}};
 
-const std::vector<std::string_view> kCommon{"name", "type", "position", "look-at", "up", "transform",
-                                            "fov",  "fov-axis", "near", "far"};
+const std::vector<std::string_view> kCommon{"name",      "type", "position", "look-at", "up",
+                                            "transform", "fov",  "fov-axis", "near",    "far"};
 
 const std::vector<std::string_view>& typeAttributes(CameraType t) {
-  static const std::vector<std::string_view> none, thinLens{"focal-length", "f-stop", "focus-distance"},
-      ortho{"width"}, fisheye{"mapping"}, panini{"distance", "vertical-compression"},
-      lenslet{"lenses", "pitch"}, cubemap{"layout"};
+  static const std::vector<std::string_view> none,
+      thinLens{"focal-length", "f-stop", "focus-distance"}, ortho{"width"}, fisheye{"mapping"},
+      panini{"distance", "vertical-compression"}, lenslet{"lenses", "pitch"}, cubemap{"layout"};
   switch (t) {
-    case CameraType::ThinLens: return thinLens;
-    case CameraType::Orthographic: return ortho;
-    case CameraType::Fisheye: return fisheye;
-    case CameraType::Panini: return panini;
-    case CameraType::Lenslet: return lenslet;
-    case CameraType::Cubemap: return cubemap;
-    default: return none;
+    case CameraType::ThinLens:
+      return thinLens;
+    case CameraType::Orthographic:
+      return ortho;
+    case CameraType::Fisheye:
+      return fisheye;
+    case CameraType::Panini:
+      return panini;
+    case CameraType::Lenslet:
+      return lenslet;
+    case CameraType::Cubemap:
+      return cubemap;
+    default:
+      return none;
   }
 }
 
@@ -58,19 +69,22 @@ void checkPaniniFov(ElementReader& r, const Camera& cam) {
   const double limit = paniniLongitudeLimit(d);
   const std::string dText = fmt::format("{}", d);
   if (!paniniHalfFovFits(half, d)) {
-    std::string why = d > 1.0 ? fmt::format(" (beyond {:.6g} degrees from the axis the "
-                                            "projection folds back)",
-                                            degrees(limit))
+    std::string why = d > 1.0 ? fmt::format(
+                                    " (beyond {:.6g} degrees from the axis the "
+                                    "projection folds back)",
+                                    degrees(limit))
                               : std::string();
     r.attrError("fov", "with distance " + dText + " a panini camera's fov must be below " +
                            fmt::format("{:.6g}", 2.0 * degrees(limit)) + why);
   } else if (cam.fovAxis == FovAxis::Vertical && !(half < 0.5 * kPi)) {
-    r.attrError("fov", "a panini camera's vertical fov must be below 180 (the latitude at the "
-                       "top edge stays below 90 degrees)");
+    r.attrError("fov",
+                "a panini camera's vertical fov must be below 180 (the latitude at the "
+                "top edge stays below 90 degrees)");
   } else if (cam.fovAxis == FovAxis::Horizontal && cam.verticalCompression > 0.0 &&
              !(half < 0.5 * kPi)) {
-    r.attrError("fov", "with vertical-compression above 0 a panini camera's horizontal fov "
-                       "must be below 180");
+    r.attrError("fov",
+                "with vertical-compression above 0 a panini camera's horizontal fov "
+                "must be below 180");
   }
 }
 
@@ -94,9 +108,12 @@ void parseCamera(ElementReader& r) {
   });
 
   if (auto name = r.text("name")) {
-    if (!isValidId(*name)) r.attrError("name", "a camera name must be non-empty and contain no spaces, got '" + *name + "'");
+    if (!isValidId(*name))
+      r.attrError("name",
+                  "a camera name must be non-empty and contain no spaces, got '" + *name + "'");
     else if (auto [it, inserted] = ctx.cameraNames.try_emplace(*name, cam.loc); !inserted)
-      r.attrError("name", "a camera named '" + *name + "' already exists (at " + it->second.str() + ")");
+      r.attrError("name",
+                  "a camera named '" + *name + "' already exists (at " + it->second.str() + ")");
     else cam.name = *name;
   }
   cam.position = r.vector("position", cam.position);
@@ -107,20 +124,29 @@ void parseCamera(ElementReader& r) {
   Vec3 view = cam.lookAt - cam.position;
   if (!(glm::length(view) > 0.0)) {
     r.error("<camera>: 'look-at' must differ from 'position' (the camera would look nowhere)");
-  } else if (!(glm::length(glm::cross(view, cam.up)) > 1e-12 * glm::length(view) * glm::length(cam.up))) {
-    r.error("<camera>: 'up' must not be zero or parallel to the viewing direction (look-at - position)");
+  } else if (!(glm::length(glm::cross(view, cam.up)) >
+               1e-12 * glm::length(view) * glm::length(cam.up))) {
+    r.error(
+        "<camera>: 'up' must not be zero or parallel to the viewing direction (look-at - "
+        "position)");
   }
 
   if (usesFov(cam.type)) {
     switch (cam.type) {
       case CameraType::Fisheye:
-        cam.fov = r.number("fov", cam.fov, NumberRule::between(0.0, 360.0, "an angle above 0 and at most 360", true));
+        cam.fov =
+            r.number("fov", cam.fov,
+                     NumberRule::between(0.0, 360.0, "an angle above 0 and at most 360", true));
         break;
       case CameraType::Panini:
-        cam.fov = r.number("fov", cam.fov, NumberRule::between(0.0, 360.0, "an angle between 0 and 360", true, true));
+        cam.fov =
+            r.number("fov", cam.fov,
+                     NumberRule::between(0.0, 360.0, "an angle between 0 and 360", true, true));
         break;
       default:
-        cam.fov = r.number("fov", cam.fov, NumberRule::between(0.0, 180.0, "an angle between 0 and 180", true, true));
+        cam.fov =
+            r.number("fov", cam.fov,
+                     NumberRule::between(0.0, 180.0, "an angle between 0 and 180", true, true));
     }
     cam.fovAxis = r.choice("fov-axis", cam.fovAxis,
                            {{"horizontal", FovAxis::Horizontal},
@@ -129,9 +155,10 @@ void parseCamera(ElementReader& r) {
   } else {
     for (const char* a : {"fov", "fov-axis"})
       if (r.has(a))
-        r.warning(std::string("<camera>: '") + a + "' has no effect on cameras of type " +
-                  cameraTypeName(cam.type) +
-                  (cam.type == CameraType::Orthographic ? " (their 'width' frames the image)" : ""));
+        r.warning(
+            std::string("<camera>: '") + a + "' has no effect on cameras of type " +
+            cameraTypeName(cam.type) +
+            (cam.type == CameraType::Orthographic ? " (their 'width' frames the image)" : ""));
   }
 
   cam.near = r.number("near", cam.near, NumberRule::nonNegative());
@@ -150,9 +177,9 @@ void parseCamera(ElementReader& r) {
       cam.width = r.number("width", cam.width, NumberRule::positive());
       break;
     case CameraType::Fisheye:
-      cam.mapping = r.choice("mapping", cam.mapping,
-                             {{"equidistant", FisheyeMapping::Equidistant},
-                              {"equisolid", FisheyeMapping::Equisolid}});
+      cam.mapping = r.choice(
+          "mapping", cam.mapping,
+          {{"equidistant", FisheyeMapping::Equidistant}, {"equisolid", FisheyeMapping::Equisolid}});
       break;
     case CameraType::Panini: {
       cam.distance = r.number("distance", cam.distance, NumberRule::nonNegative());
@@ -166,7 +193,9 @@ void parseCamera(ElementReader& r) {
       if (auto t = r.text("lenses")) {
         auto list = parseIntegerList(*t);
         if (!list) r.attrError("lenses", list.error);
-        else if (list->size() != 2) r.attrError("lenses", "expected 2 whole numbers (nx ny), got " + std::to_string(list->size()));
+        else if (list->size() != 2)
+          r.attrError("lenses",
+                      "expected 2 whole numbers (nx ny), got " + std::to_string(list->size()));
         else if ((*list)[0] < 1 || (*list)[1] < 1 || (*list)[0] > 4096 || (*list)[1] > 4096)
           r.attrError("lenses", "each count must be from 1 to 4096, got '" + *t + "'");
         else {
@@ -180,10 +209,12 @@ void parseCamera(ElementReader& r) {
       cam.layout = r.choice("layout", cam.layout,
                             {{"cross", CubemapLayout::Cross}, {"strip", CubemapLayout::Strip}});
       break;
-    default: break;
+    default:
+      break;
   }
   r.forEachChild([&](pugi::xml_node n) {
-    ElementReader(ctx, r.file(), n).error("<camera> takes no child elements, got <" + std::string(n.name()) + ">");
+    ElementReader(ctx, r.file(), n)
+        .error("<camera> takes no child elements, got <" + std::string(n.name()) + ">");
   });
   ctx.scene.cameras.push_back(std::move(cam));
 }

@@ -16,7 +16,8 @@ void parseRender(ElementReader& r);
 void parseCamera(ElementReader& r);
 // light_parser.cpp: a <light>, wherever it stands, as a node (parseGeometryNode reads
 // lights too, through it). Null if too deep or over the expansion limit (reported).
-std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, int depth);
+std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file,
+                                     pugi::xml_node element, int depth);
 // fog_parser.cpp: the scene's <fog> (at most one).
 void parseFog(ElementReader& r);
 

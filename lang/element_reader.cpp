@@ -23,7 +23,8 @@ SourceLoc ElementReader::valueLoc(const char* attr) const {
 }
 
 void ElementReader::attrError(const char* attr, const std::string& message) {
-  ctx_.diags.error(valueLoc(attr), tag() + " attribute '" + attr + "': " + message + instanceNote(ctx_.scope.get()));
+  ctx_.diags.error(valueLoc(attr), tag() + " attribute '" + attr + "': " + message +
+                                       instanceNote(ctx_.scope.get()));
   failed_ = true;
 }
 
@@ -44,17 +45,18 @@ void ElementReader::checkAttributes(const std::vector<std::string_view>& allowed
       std::string specific = explain ? explain(n) : std::string();
       std::string pov = specific.empty() ? povrayAttributeHint(el_.name(), n) : std::string();
       ctx_.diags.error(file_.nameLoc(a, el_),
-                       specific.empty() ? tag() + ": unknown attribute '" + std::string(n) + "'" +
-                                              (pov.empty() ? didYouMean(n, allowed) : pov)
-                                        : tag() + " attribute '" + std::string(n) + "': " + specific);
+                       specific.empty()
+                           ? tag() + ": unknown attribute '" + std::string(n) + "'" +
+                                 (pov.empty() ? didYouMean(n, allowed) : pov)
+                           : tag() + " attribute '" + std::string(n) + "': " + specific);
       failed_ = true;
       continue;
     }
     for (pugi::xml_attribute b = el_.first_attribute(); b != a; b = b.next_attribute())
       if (n == b.name()) {
         ctx_.diags.error(file_.nameLoc(a, el_), tag() + ": attribute '" + std::string(n) +
-                                                     "' is given twice (first at " +
-                                                     file_.nameLoc(b, el_).str() + ")");
+                                                    "' is given twice (first at " +
+                                                    file_.nameLoc(b, el_).str() + ")");
         failed_ = true;
         break;
       }
@@ -68,15 +70,18 @@ std::optional<std::string> ElementReader::text(const char* attr) {
   std::optional<std::string> v = ctx_.params.substitute(a.value(), ctx_.scope.get(), error);
   if (!v) {
     if (!error.message.empty()) {
-      SourceLoc where = error.offset != std::string::npos ? file_.locInValue(a, el_, error.offset) : valueLoc(attr);
-      ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + error.message + instanceNote(ctx_.scope.get()));
+      SourceLoc where = error.offset != std::string::npos ? file_.locInValue(a, el_, error.offset)
+                                                          : valueLoc(attr);
+      ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + error.message +
+                                  instanceNote(ctx_.scope.get()));
     }
     failed_ = true;
   }
   return v;
 }
 
-std::optional<FunctionText> ElementReader::function(const char* attr, const std::vector<std::string>& variables) {
+std::optional<FunctionText> ElementReader::function(const char* attr,
+                                                    const std::vector<std::string>& variables) {
   pugi::xml_attribute a = el_.attribute(attr);
   if (!a) return std::nullopt;
   // Written with ${...}: substituted first, and an error then points at the value.
@@ -91,9 +96,11 @@ std::optional<FunctionText> ElementReader::function(const char* attr, const std:
   std::optional<FunctionText> f = ctx_.params.function(value, ctx_.scope.get(), variables, error);
   if (!f) {
     if (!error.message.empty()) {
-      SourceLoc where = !substituted && error.offset != std::string::npos ? file_.locInValue(a, el_, error.offset)
-                                                                          : valueLoc(attr);
-      ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + error.message + instanceNote(ctx_.scope.get()));
+      SourceLoc where = !substituted && error.offset != std::string::npos
+                            ? file_.locInValue(a, el_, error.offset)
+                            : valueLoc(attr);
+      ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + error.message +
+                                  instanceNote(ctx_.scope.get()));
     }
     failed_ = true;
   }
@@ -104,7 +111,8 @@ std::optional<double> ElementReader::optionalNumber(const char* attr, const Numb
   // Expression-valued numbers skip the text round trip (the value is the same).
   if (pugi::xml_attribute a = el_.attribute(attr); a && std::strchr(a.value(), '$')) {
     double v;
-    if (ctx_.params.evaluateNumbers(a.value(), ctx_.scope.get(), &v, 1) && rule.accepts(v)) return v;
+    if (ctx_.params.evaluateNumbers(a.value(), ctx_.scope.get(), &v, 1) && rule.accepts(v))
+      return v;
   }
   auto t = text(attr);
   if (!t) return std::nullopt;
@@ -134,8 +142,8 @@ long long ElementReader::integer(const char* attr, long long def, long long min,
   }
   if (*n < min || *n > max) {
     std::string expected = max >= (1LL << 40) ? "a whole number >= " + std::to_string(min)
-                                               : "a whole number from " + std::to_string(min) +
-                                                     " to " + std::to_string(max);
+                                              : "a whole number from " + std::to_string(min) +
+                                                    " to " + std::to_string(max);
     attrError(attr, "expected " + expected + ", got " + quote(*t));
     return def;
   }
@@ -145,7 +153,8 @@ long long ElementReader::integer(const char* attr, long long def, long long min,
 Vec3 ElementReader::vector(const char* attr, const Vec3& def) {
   if (pugi::xml_attribute a = el_.attribute(attr); a && std::strchr(a.value(), '$')) {
     double v[3];
-    if (ctx_.params.evaluateNumbers(a.value(), ctx_.scope.get(), v, 3)) return Vec3(v[0], v[1], v[2]);
+    if (ctx_.params.evaluateNumbers(a.value(), ctx_.scope.get(), v, 3))
+      return Vec3(v[0], v[1], v[2]);
   }
   auto t = text(attr);
   if (!t) return def;
@@ -215,7 +224,8 @@ Mat4 ElementReader::transform(const char* attr) {
   std::string_view v = a.value();
   if (*t == v && r.errorOffset < v.size())
     if (auto inside = file_.locOf(a.value() + r.errorOffset)) where = *inside;
-  ctx_.diags.error(where, tag() + " attribute '" + attr + "': " + message + instanceNote(ctx_.scope.get()));
+  ctx_.diags.error(
+      where, tag() + " attribute '" + attr + "': " + message + instanceNote(ctx_.scope.get()));
   failed_ = true;
   return Mat4(1.0);
 }
@@ -227,7 +237,8 @@ void ElementReader::forEachChild(const std::function<void(pugi::xml_node)>& f) {
     } else if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) {
       const char* value = c.value();
       size_t skip = 0;
-      while (value[skip] == ' ' || value[skip] == '\t' || value[skip] == '\n' || value[skip] == '\r')
+      while (value[skip] == ' ' || value[skip] == '\t' || value[skip] == '\n' ||
+             value[skip] == '\r')
         ++skip;
       std::string_view v = trim(value);
       if (v.empty()) continue;
@@ -243,7 +254,8 @@ void ElementReader::forEachChild(const std::function<void(pugi::xml_node)>& f) {
 std::string elementList(const std::vector<std::string_view>& names) {
   std::string list;
   for (size_t i = 0; i < names.size(); ++i)
-    list += (i ? (i + 1 == names.size() ? " or " : ", ") : "") + ("<" + std::string(names[i]) + ">");
+    list +=
+        (i ? (i + 1 == names.size() ? " or " : ", ") : "") + ("<" + std::string(names[i]) + ">");
   return list;
 }
 

@@ -49,7 +49,8 @@ class ElementReader {
   std::optional<FunctionText> function(const char* attr, const std::vector<std::string>& variables);
 
   double number(const char* attr, double def, const NumberRule& rule = NumberRule::any());
-  std::optional<double> optionalNumber(const char* attr, const NumberRule& rule = NumberRule::any());
+  std::optional<double> optionalNumber(const char* attr,
+                                       const NumberRule& rule = NumberRule::any());
   long long integer(const char* attr, long long def, long long min, long long max = 1LL << 40);
   Vec3 vector(const char* attr, const Vec3& def);
   // A direction: not zero, returned normalised.

@@ -9,14 +9,16 @@ namespace lucent {
 namespace {
 
 // The <param> children of `element`, checked; a name given twice in one element is an error.
-std::vector<LocalParam> collectParams(ParseContext& ctx, const SourceFile& file, pugi::xml_node element) {
+std::vector<LocalParam> collectParams(ParseContext& ctx, const SourceFile& file,
+                                      pugi::xml_node element) {
   std::vector<LocalParam> params;
   for (pugi::xml_node c = element.first_child(); c; c = c.next_sibling()) {
     if (c.type() != pugi::node_element || std::string_view(c.name()) != "param") continue;
     ElementReader r(ctx, file, c);
     r.checkAttributes({"name", "value"});
     r.forEachChild([&](pugi::xml_node n) {
-      ElementReader(ctx, file, n).error("<param> takes no child elements, got <" + std::string(n.name()) + ">");
+      ElementReader(ctx, file, n)
+          .error("<param> takes no child elements, got <" + std::string(n.name()) + ">");
     });
     if (!r.has("name") || !r.has("value")) {
       r.error("<param> needs 'name' and 'value'");
@@ -24,14 +26,16 @@ std::vector<LocalParam> collectParams(ParseContext& ctx, const SourceFile& file,
     }
     std::string_view name = c.attribute("name").value();
     if (!Parameters::isValidName(name)) {
-      r.attrError("name", "a parameter name is letters, digits and '_', not starting with a digit; got '" +
-                              std::string(name) + "'");
+      r.attrError("name",
+                  "a parameter name is letters, digits and '_', not starting with a digit; got '" +
+                      std::string(name) + "'");
       continue;
     }
-    auto same = std::find_if(params.begin(), params.end(), [&](const LocalParam& p) { return p.name == name; });
+    auto same = std::find_if(params.begin(), params.end(),
+                             [&](const LocalParam& p) { return p.name == name; });
     if (same != params.end()) {
-      r.attrError("name", "'" + std::string(name) + "' is already declared in this <" + element.name() + "> (at " +
-                              file.loc(same->element).str() + ")");
+      r.attrError("name", "'" + std::string(name) + "' is already declared in this <" +
+                              element.name() + "> (at " + file.loc(same->element).str() + ")");
       continue;
     }
     LocalParam p;
@@ -46,7 +50,8 @@ std::vector<LocalParam> collectParams(ParseContext& ctx, const SourceFile& file,
 
 constexpr double kEstimateCap = 1e18;
 
-double estimateChildren(ParseContext& ctx, pugi::xml_node element, const ScopePtr& scope, int depth);
+double estimateChildren(ParseContext& ctx, pugi::xml_node element, const ScopePtr& scope,
+                        int depth);
 
 // How many nodes a <repeat> makes, judged from its first instance: a cheap upper bound for
 // uniform bodies, so that a repeat of 10^6 inside a repeat of 10^6 is refused before anything
@@ -65,7 +70,8 @@ double estimateRepeat(ParseContext& ctx, pugi::xml_node repeat, const ScopePtr& 
   return std::min(kEstimateCap, n * (1.0 + estimateChildren(ctx, repeat, s, depth + 1)));
 }
 
-double estimateChildren(ParseContext& ctx, pugi::xml_node element, const ScopePtr& scope, int depth) {
+double estimateChildren(ParseContext& ctx, pugi::xml_node element, const ScopePtr& scope,
+                        int depth) {
   if (depth > kMaxElementDepth) return 0;
   double sum = 0;
   for (pugi::xml_node c = element.first_child(); c; c = c.next_sibling()) {
@@ -119,7 +125,8 @@ long long fixedCount(pugi::xml_node element) {
 }
 
 // The element's <param>s as a scope, with nothing reported (the expansion checks them).
-ScopePtr quietScope(const ParseContext& ctx, const SourceFile& file, pugi::xml_node element, const ScopePtr& parent) {
+ScopePtr quietScope(const ParseContext& ctx, const SourceFile& file, pugi::xml_node element,
+                    const ScopePtr& parent) {
   (void)ctx;
   ScopePtr s;
   for (pugi::xml_node c = element.child("param"); c; c = c.next_sibling("param")) {
@@ -141,12 +148,12 @@ ScopePtr quietScope(const ParseContext& ctx, const SourceFile& file, pugi::xml_n
   return s ? s : parent;
 }
 
-long long countChildren(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, const ScopePtr& scope,
-                        int depth, long long total, long long limit);
+long long countChildren(ParseContext& ctx, const SourceFile& file, pugi::xml_node element,
+                        const ScopePtr& scope, int depth, long long total, long long limit);
 
 // What one element makes, added to `total`.
-long long countElement(ParseContext& ctx, const SourceFile& file, pugi::xml_node c, const ScopePtr& scope,
-                       int depth, long long total, long long limit) {
+long long countElement(ParseContext& ctx, const SourceFile& file, pugi::xml_node c,
+                       const ScopePtr& scope, int depth, long long total, long long limit) {
   if (depth > kMaxElementDepth || total > limit) return total;
   std::string_view name = c.name();
   if (name == "param" || name == "material") return total;
@@ -157,7 +164,8 @@ long long countElement(ParseContext& ctx, const SourceFile& file, pugi::xml_node
     if (!n || *n <= 0) return total;
     if (!varies(c)) {
       double made = static_cast<double>(*n) * static_cast<double>(1 + fixedCount(c));
-      return made > static_cast<double>(limit - total) ? limit + 1 : total + static_cast<long long>(made);
+      return made > static_cast<double>(limit - total) ? limit + 1
+                                                       : total + static_cast<long long>(made);
     }
     std::string_view var = c.attribute("var").value();
     for (long long i = 0; i < *n && total <= limit; ++i) {
@@ -187,14 +195,15 @@ long long countElement(ParseContext& ctx, const SourceFile& file, pugi::xml_node
   return countChildren(ctx, file, c, inner, depth + 1, total, limit);
 }
 
-long long countChildren(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, const ScopePtr& scope,
-                        int depth, long long total, long long limit) {
+long long countChildren(ParseContext& ctx, const SourceFile& file, pugi::xml_node element,
+                        const ScopePtr& scope, int depth, long long total, long long limit) {
   if (!varies(element)) {
     long long n = fixedCount(element);
     return n > limit - total ? limit + 1 : total + n;
   }
   for (pugi::xml_node c = element.first_child(); c && total <= limit; c = c.next_sibling())
-    if (c.type() == pugi::node_element) total = countElement(ctx, file, c, scope, depth, total, limit);
+    if (c.type() == pugi::node_element)
+      total = countElement(ctx, file, c, scope, depth, total, limit);
   return total;
 }
 
@@ -211,12 +220,14 @@ void expandRepeat(ElementReader& parent, pugi::xml_node element, int depth,
   }
   std::string_view var = element.attribute("var").value();
   if (!Parameters::isValidName(var)) {
-    r.attrError("var", "a variable name is letters, digits and '_', not starting with a digit; got '" +
-                           std::string(var) + "'");
+    r.attrError("var",
+                "a variable name is letters, digits and '_', not starting with a digit; got '" +
+                    std::string(var) + "'");
     return;
   }
   if (std::string what = ctx.params.whatIs(var, ctx.scope.get()); !what.empty()) {
-    r.attrError("var", "'" + std::string(var) + "' is already " + what + "; give the repeat's variable another name");
+    r.attrError("var", "'" + std::string(var) + "' is already " + what +
+                           "; give the repeat's variable another name");
     return;
   }
   long long count = r.integer("count", -1, 0, kMaxExpandedNodes);
@@ -226,19 +237,22 @@ void expandRepeat(ElementReader& parent, pugi::xml_node element, int depth,
   if (outermost) {
     double estimate = estimateRepeat(ctx, element, ctx.scope, depth);
     if (static_cast<double>(ctx.nodeCount) + estimate > static_cast<double>(kMaxExpandedNodes)) {
-      r.error(fmt::format("this <repeat> would expand the scene to about {:.3g} nodes, lights and repeat "
-                          "instances, more than the limit of {}",
-                          static_cast<double>(ctx.nodeCount) + estimate, kMaxExpandedNodes));
+      r.error(fmt::format(
+          "this <repeat> would expand the scene to about {:.3g} nodes, lights and repeat "
+          "instances, more than the limit of {}",
+          static_cast<double>(ctx.nodeCount) + estimate, kMaxExpandedNodes));
       ctx.overLimit = true;
       return;
     }
     {
       Parameters::Quiet quiet(ctx.params);
-      long long made = countElement(ctx, file, element, ctx.scope, depth, ctx.nodeCount, kMaxExpandedNodes);
+      long long made =
+          countElement(ctx, file, element, ctx.scope, depth, ctx.nodeCount, kMaxExpandedNodes);
       if (made > kMaxExpandedNodes) {
-        r.error(fmt::format("this <repeat> would expand the scene to more than {} nodes, lights and repeat "
-                            "instances (the limit)",
-                            kMaxExpandedNodes));
+        r.error(fmt::format(
+            "this <repeat> would expand the scene to more than {} nodes, lights and repeat "
+            "instances (the limit)",
+            kMaxExpandedNodes));
         ctx.overLimit = true;
         return;
       }
@@ -266,7 +280,8 @@ void expandRepeat(ElementReader& parent, pugi::xml_node element, int depth,
   if (outermost) ctx.outerRepeatFile = nullptr;
 }
 
-void expandIf(ElementReader& parent, pugi::xml_node element, int depth, const std::function<void(pugi::xml_node)>& f) {
+void expandIf(ElementReader& parent, pugi::xml_node element, int depth,
+              const std::function<void(pugi::xml_node)>& f) {
   ParseContext& ctx = parent.ctx();
   ElementReader r(ctx, parent.file(), element);
   if (!withinElementDepth(r, depth)) return;
@@ -289,14 +304,16 @@ void expandIf(ElementReader& parent, pugi::xml_node element, int depth, const st
 
 }  // namespace
 
-LocalScope::LocalScope(ParseContext& ctx, const SourceFile& file, pugi::xml_node element) : ctx_(ctx) {
+LocalScope::LocalScope(ParseContext& ctx, const SourceFile& file, pugi::xml_node element)
+    : ctx_(ctx) {
   ScopePtr overrides = std::move(ctx.instanceParams);  // for the root of an instance only
   ctx.instanceParams = nullptr;
   std::vector<LocalParam> params = collectParams(ctx, file, element);
   if (overrides) {
     for (size_t k = 0; k < overrides->params.size(); ++k) {
       const LocalParam& given = overrides->params[k];
-      auto own = std::find_if(params.begin(), params.end(), [&](const LocalParam& p) { return p.name == given.name; });
+      auto own = std::find_if(params.begin(), params.end(),
+                              [&](const LocalParam& p) { return p.name == given.name; });
       if (own == params.end()) {
         params.push_back(given);
         own = params.end() - 1;
@@ -326,7 +343,8 @@ LocalScope::~LocalScope() {
   if (pushed_) ctx_.scope = std::move(saved_);
 }
 
-void forEachExpandedChild(ElementReader& r, int depth, const std::function<void(pugi::xml_node)>& f) {
+void forEachExpandedChild(ElementReader& r, int depth,
+                          const std::function<void(pugi::xml_node)>& f) {
   ParseContext& ctx = r.ctx();
   r.forEachChild([&](pugi::xml_node c) {
     if (ctx.overLimit) return;
@@ -337,7 +355,8 @@ void forEachExpandedChild(ElementReader& r, int depth, const std::function<void(
   });
 }
 
-void expandElement(ElementReader& r, pugi::xml_node element, int depth, const std::function<void(pugi::xml_node)>& f) {
+void expandElement(ElementReader& r, pugi::xml_node element, int depth,
+                   const std::function<void(pugi::xml_node)>& f) {
   if (std::string_view(element.name()) == "repeat") expandRepeat(r, element, depth, f);
   else expandIf(r, element, depth, f);
 }
@@ -358,10 +377,13 @@ bool countNode(ParseContext& ctx) {
   if (!ctx.outerRepeatFile && ctx.instanceChain.empty()) return true;
   if (++ctx.nodeCount <= kMaxExpandedNodes) return true;
   ctx.overLimit = true;
-  SourceLoc where = ctx.outerRepeatFile ? ctx.outerRepeatFile->loc(ctx.outerRepeat) : SourceLoc{ctx.scene.file, 0, 0};
-  ctx.diags.error(where, fmt::format("the scene expands to more than {} nodes, lights and repeat instances (the "
-                                     "limit); this <repeat> is where it crosses it",
-                                     kMaxExpandedNodes));
+  SourceLoc where = ctx.outerRepeatFile ? ctx.outerRepeatFile->loc(ctx.outerRepeat)
+                                        : SourceLoc{ctx.scene.file, 0, 0};
+  ctx.diags.error(
+      where,
+      fmt::format("the scene expands to more than {} nodes, lights and repeat instances (the "
+                  "limit); this <repeat> is where it crosses it",
+                  kMaxExpandedNodes));
   return false;
 }
 

@@ -31,10 +31,12 @@ class LocalScope {
 // Calls `f` for each child element of r's element, with <repeat> and <if> children expanded
 // (f sees every instance, with ctx.scope set for it) and <param> children skipped (the
 // element's LocalScope holds them). Text between elements is reported as by forEachChild.
-void forEachExpandedChild(ElementReader& r, int depth, const std::function<void(pugi::xml_node)>& f);
+void forEachExpandedChild(ElementReader& r, int depth,
+                          const std::function<void(pugi::xml_node)>& f);
 
 // Expands one <repeat> or <if> element that is a child of r's element.
-void expandElement(ElementReader& r, pugi::xml_node element, int depth, const std::function<void(pugi::xml_node)>& f);
+void expandElement(ElementReader& r, pugi::xml_node element, int depth,
+                   const std::function<void(pugi::xml_node)>& f);
 
 // At most how many nodes, lights and repeat instances reading `element` (a geometry node)
 // in `scope` makes, judged as for a <repeat> (counts it cannot evaluate there count as 1).

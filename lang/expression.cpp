@@ -84,7 +84,8 @@ ExpressionError syntaxError(const mu::ParserError& e, std::string_view text,
         if (n.call && n.name == token && n.offset < pos) at = n.offset;
       err.offset = at;
       err.message = fmt::format("{} arguments for '{}' (it takes {})",
-                                e.GetCode() == mu::ecTOO_FEW_PARAMS ? "too few" : "too many", token, arity(token));
+                                e.GetCode() == mu::ecTOO_FEW_PARAMS ? "too few" : "too many", token,
+                                arity(token));
       return err;
     }
     case mu::ecUNEXPECTED_EOF:
@@ -100,7 +101,8 @@ ExpressionError syntaxError(const mu::ParserError& e, std::string_view text,
       err.message = "'?' without its ':'";
       err.offset = text.find('?') == std::string_view::npos ? pos : text.find('?');
       return err;
-    default: break;
+    default:
+      break;
   }
   if (pos >= text.size()) {
     // muParser places some errors past the last character ("1 + -", "!", "a:"), naming a
@@ -117,8 +119,10 @@ ExpressionError syntaxError(const mu::ParserError& e, std::string_view text,
   while (at > 0 && text[at] != '-' && text[at] != '!') --at;  // muParser may point past it
   if (!token.empty() && (token[0] == '-' || token[0] == '!') && at > 0) {
     size_t before = text.find_last_not_of(" \t\n\r", at - 1);
-    if (before != std::string_view::npos && before + 1 < at && (text[before] == '-' || text[before] == '!'))
-      err.message += "; write unary operators in a row without spaces (--x, !-x) or with parentheses (-(-x))";
+    if (before != std::string_view::npos && before + 1 < at &&
+        (text[before] == '-' || text[before] == '!'))
+      err.message +=
+          "; write unary operators in a row without spaces (--x, !-x) or with parentheses (-(-x))";
   }
   return err;
 }
@@ -155,10 +159,12 @@ ExpressionEvaluator::Compiled& ExpressionEvaluator::compiled(std::string_view te
     fail("inside ${...} a parameter is written by its name alone ('r', not '$r')", d);
   for (const NameToken& n : c->tokens) {
     if (n.call && !isFunction(n.name))
-      fail("unknown function '" + std::string(n.name) + "'" + didYouMean(n.name, expressionFunctionNames()),
+      fail("unknown function '" + std::string(n.name) + "'" +
+               didYouMean(n.name, expressionFunctionNames()),
            n.offset);
     else if (!n.call && isFunction(n.name))
-      fail("'" + std::string(n.name) + "' is a function: write " + std::string(n.name) + "(...)", n.offset);
+      fail("'" + std::string(n.name) + "' is a function: write " + std::string(n.name) + "(...)",
+           n.offset);
   }
   if (!c->error) {
     try {
@@ -280,7 +286,8 @@ void ExpressionEvaluator::locateFault(const Compiled& c, ExpressionError& error)
   }
 }
 
-std::optional<FunctionText> compileFunction(std::string_view text, const std::vector<std::string>& variables,
+std::optional<FunctionText> compileFunction(std::string_view text,
+                                            const std::vector<std::string>& variables,
                                             ExpressionNames& names, ExpressionError& error) {
   FunctionText out;
   out.text = std::string(text);
@@ -291,15 +298,19 @@ std::optional<FunctionText> compileFunction(std::string_view text, const std::ve
     error = ExpressionError{std::move(message), offset, false};
     return std::nullopt;
   };
-  if (t.find_first_not_of(" \t\n\r") == std::string_view::npos) return fail("an empty expression", 0);
+  if (t.find_first_not_of(" \t\n\r") == std::string_view::npos)
+    return fail("an empty expression", 0);
   if (auto d = t.find('$'); d != std::string_view::npos)
     return fail("a function's names are written alone ('r', not '$r')", d);
   for (const NameToken& n : tokens) {
     if (n.call && !isFunction(n.name))
-      return fail("unknown function '" + std::string(n.name) + "'" + didYouMean(n.name, expressionFunctionNames()),
+      return fail("unknown function '" + std::string(n.name) + "'" +
+                      didYouMean(n.name, expressionFunctionNames()),
                   n.offset);
     if (!n.call && isFunction(n.name))
-      return fail("'" + std::string(n.name) + "' is a function: write " + std::string(n.name) + "(...)", n.offset);
+      return fail(
+          "'" + std::string(n.name) + "' is a function: write " + std::string(n.name) + "(...)",
+          n.offset);
   }
   std::vector<std::string> used;
   try {

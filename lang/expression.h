@@ -41,7 +41,8 @@ class ExpressionEvaluator {
   ExpressionEvaluator& operator=(const ExpressionEvaluator&) = delete;
 
   // Evaluates `text`; nullopt with `error` on any problem. The result is finite.
-  std::optional<double> evaluate(std::string_view text, ExpressionNames& names, ExpressionError& error);
+  std::optional<double> evaluate(std::string_view text, ExpressionNames& names,
+                                 ExpressionError& error);
 
  private:
   struct Compiled;
@@ -66,7 +67,8 @@ struct FunctionText {
 // Checks `text` as an expression whose `variables` are left free and whose other names are
 // looked up in `names` now; nullopt with `error` (located within the text) on a syntax
 // error, an unknown function or name, or a name that is not a number.
-std::optional<FunctionText> compileFunction(std::string_view text, const std::vector<std::string>& variables,
+std::optional<FunctionText> compileFunction(std::string_view text,
+                                            const std::vector<std::string>& variables,
                                             ExpressionNames& names, ExpressionError& error);
 
 // Shortest decimal text that reads back as exactly `v` ("0.1", "3", "1e+21").

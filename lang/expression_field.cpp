@@ -25,7 +25,8 @@ std::atomic<uint64_t> gNextFieldId{1};
 class ExpressionField final : public ScalarField {
  public:
   explicit ExpressionField(FunctionText f) : f_(std::move(f)), id_(gNextFieldId.fetch_add(1)) {
-    if (f_.variables.size() != 3) throw std::invalid_argument("an expression field has the variables x, y, z");
+    if (f_.variables.size() != 3)
+      throw std::invalid_argument("an expression field has the variables x, y, z");
     ThreadParser check;
     compile(check);  // throws mu::ParserError now rather than in a render thread
   }

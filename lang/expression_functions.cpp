@@ -44,8 +44,7 @@ double binary(double a, double b) {
       tFault.happened = true;
       if ((symbol == '/' || symbol == '%') && b == 0.0)
         tFault.what = fmt::format("division by zero ({} {} {})", num(a), symbol, num(b));
-      else
-        tFault.what = fmt::format("{} {} {} is not a finite number", num(a), symbol, num(b));
+      else tFault.what = fmt::format("{} {} {} is not a finite number", num(a), symbol, num(b));
     }
     if (Twin) throw FaultHere{};
   }
@@ -132,9 +131,10 @@ double fMax(const double* a, int n) {
 
 constexpr char kSin[] = "sin", kCos[] = "cos", kTan[] = "tan", kAsin[] = "asin", kAcos[] = "acos",
                kAtan[] = "atan", kAtan2[] = "atan2", kSqrt[] = "sqrt", kExp[] = "exp", kLn[] = "ln",
-               kLog10[] = "log10", kLog2[] = "log2", kAbs[] = "abs", kSign[] = "sign", kFloor[] = "floor",
-               kCeil[] = "ceil", kRound[] = "round", kTrunc[] = "trunc", kPow[] = "pow", kClamp[] = "clamp",
-               kMix[] = "mix", kRadians[] = "radians", kDegrees[] = "degrees", kRandom[] = "random";
+               kLog10[] = "log10", kLog2[] = "log2", kAbs[] = "abs", kSign[] = "sign",
+               kFloor[] = "floor", kCeil[] = "ceil", kRound[] = "round", kTrunc[] = "trunc",
+               kPow[] = "pow", kClamp[] = "clamp", kMix[] = "mix", kRadians[] = "radians",
+               kDegrees[] = "degrees", kRandom[] = "random";
 
 template <bool Twin>
 void defineFunctions(mu::Parser& p, const std::string& prefix) {
@@ -213,16 +213,16 @@ ExpressionFault& currentExpressionFault() { return tFault; }
 const std::vector<OperatorTwin>& faultingOperators() {
   // Printable characters that expressions never hold: muParser skips every character up
   // to ' ' as white space, so control characters would vanish instead of naming a twin.
-  static const std::vector<OperatorTwin> ops{{'+', '#'}, {'-', '~'}, {'*', '`'},
+  static const std::vector<OperatorTwin> ops{{'+', '#'},  {'-', '~'}, {'*', '`'},
                                              {'/', '\''}, {'%', '['}, {'^', ']'}};
   return ops;
 }
 
 const std::vector<std::string_view>& expressionFunctionNames() {
   static const std::vector<std::string_view> names{
-      "sin",  "cos",   "tan",   "asin",  "acos", "atan", "atan2", "sqrt",    "exp",     "ln",
-      "log10", "log2", "abs",   "sign",  "floor", "ceil", "round", "trunc",  "pow",     "min",
-      "max",  "clamp", "mix",   "radians", "degrees", "random"};
+      "sin", "cos",   "tan",  "asin",  "acos", "atan",    "atan2",   "sqrt",  "exp",
+      "ln",  "log10", "log2", "abs",   "sign", "floor",   "ceil",    "round", "trunc",
+      "pow", "min",   "max",  "clamp", "mix",  "radians", "degrees", "random"};
   return names;
 }
 

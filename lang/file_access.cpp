@@ -35,7 +35,8 @@ bool FileAccess::allowed(const fs::path& canonical) const {
   return false;
 }
 
-FileAccess::Resolved FileAccess::resolve(const std::string& written, const fs::path& baseFolder) const {
+FileAccess::Resolved FileAccess::resolve(const std::string& written,
+                                         const fs::path& baseFolder) const {
   Resolved out;
   if (written.empty()) {
     out.error = "the path is empty";
@@ -47,8 +48,7 @@ FileAccess::Resolved FileAccess::resolve(const std::string& written, const fs::p
   fs::path c = canonicalPath(p);
   if (!allowed(c)) {
     std::string folders;
-    for (size_t i = 0; i < roots_.size(); ++i)
-      folders += (i ? ", " : "") + roots_[i].string();
+    for (size_t i = 0; i < roots_.size(); ++i) folders += (i ? ", " : "") + roots_[i].string();
     out.error = "'" + written + "' leads to '" + c.string() +
                 "', outside the folders this scene may read (" + folders +
                 "); use --allow-path to permit another folder";
@@ -90,7 +90,8 @@ static fs::path underRoot(const fs::path& p, const fs::path& root) {
   return rest;
 }
 
-FileAccess::Resolved FileAccess::replayed(const std::string& written, const fs::path& baseFolder) const {
+FileAccess::Resolved FileAccess::replayed(const std::string& written,
+                                          const fs::path& baseFolder) const {
   Resolved out;
   const fs::path base = underRoot(canonicalPath(baseFolder), replay_->root);
   do {
@@ -101,7 +102,8 @@ FileAccess::Resolved FileAccess::replayed(const std::string& written, const fs::
         return out;
       }
   } while (replay_->more && replay_->more());
-  out.error = "'" + written + "' (from '" + base.string() + "') is not among the files the first process sent";
+  out.error = "'" + written + "' (from '" + base.string() +
+              "') is not among the files the first process sent";
   return out;
 }
 

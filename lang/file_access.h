@@ -63,7 +63,8 @@ class FileAccess {
  private:
   bool allowed(const std::filesystem::path& canonical) const;
   Resolved replayed(const std::string& written, const std::filesystem::path& baseFolder) const;
-  void grant(const std::string& written, const std::filesystem::path& base, const std::filesystem::path& c) const;
+  void grant(const std::string& written, const std::filesystem::path& base,
+             const std::filesystem::path& c) const;
   std::vector<std::filesystem::path> roots_;
   const FileReplay* replay_ = nullptr;
   GrantObserver onGrant_;

@@ -14,14 +14,17 @@ const std::vector<std::string_view> kGroundOnly{"offset", "altitude", "up"};
 void parseFog(ElementReader& r) {
   ParseContext& ctx = r.ctx();
   if (ctx.scene.fog) {
-    r.error("<fog> is given twice (first at " + ctx.scene.fog->loc.str() + "); a scene has at most one fog");
+    r.error("<fog> is given twice (first at " + ctx.scene.fog->loc.str() +
+            "); a scene has at most one fog");
     return;
   }
   Fog fog;
   fog.loc = r.loc();
-  fog.type = r.choice("type", FogType::Constant, {{"constant", FogType::Constant}, {"ground", FogType::Ground}});
+  fog.type = r.choice("type", FogType::Constant,
+                      {{"constant", FogType::Constant}, {"ground", FogType::Ground}});
   std::vector<std::string_view> allowed{"type", "color", "distance", "filter", "transmit"};
-  if (fog.type == FogType::Ground) allowed.insert(allowed.end(), kGroundOnly.begin(), kGroundOnly.end());
+  if (fog.type == FogType::Ground)
+    allowed.insert(allowed.end(), kGroundOnly.begin(), kGroundOnly.end());
   r.checkAttributes(allowed, [&](std::string_view attr) -> std::string {
     for (std::string_view a : kGroundOnly)
       if (a == attr) return "belongs to ground fog; this fog is constant (set type=\"ground\")";
@@ -29,7 +32,9 @@ void parseFog(ElementReader& r) {
   });
   if (!r.has("color")) r.error("<fog> needs 'color', the fog's colour");
   if (!r.has("distance"))
-    r.error("<fog> needs 'distance': a stretch of length t keeps exp(-t/distance) of the colour beyond it");
+    r.error(
+        "<fog> needs 'distance': a stretch of length t keeps exp(-t/distance) of the colour beyond "
+        "it");
   fog.color = r.color("color", fog.color);
   fog.distance = r.number("distance", fog.distance, NumberRule::positive());
   const NumberRule unit = NumberRule::between(0.0, 1.0, "a number from 0 to 1");
@@ -41,7 +46,8 @@ void parseFog(ElementReader& r) {
     fog.up = r.direction("up", fog.up);
   }
   r.forEachChild([&](pugi::xml_node n) {
-    ElementReader(ctx, r.file(), n).error("<fog> takes no child elements, got <" + std::string(n.name()) + ">");
+    ElementReader(ctx, r.file(), n)
+        .error("<fog> takes no child elements, got <" + std::string(n.name()) + ">");
   });
   ctx.scene.fog = fog;
 }

@@ -31,7 +31,8 @@ const GroupEntry* findGroup(std::string_view name) {
   return nullptr;
 }
 
-const std::vector<std::string_view> kTopLevelOnly{"render", "camera", "defs", "include", "animation", "fog"};
+const std::vector<std::string_view> kTopLevelOnly{"render",  "camera",    "defs",
+                                                  "include", "animation", "fog"};
 
 // A child element that is not allowed where it stands: say where it belongs, or suggest
 // the closest allowed name.
@@ -39,13 +40,15 @@ void reportUnexpectedChild(ElementReader& parent, pugi::xml_node child,
                            const std::vector<std::string_view>& allowed) {
   ElementReader c(parent.ctx(), parent.file(), child);
   std::string_view name = child.name();
-  bool topLevel = std::find(kTopLevelOnly.begin(), kTopLevelOnly.end(), name) != kTopLevelOnly.end();
+  bool topLevel =
+      std::find(kTopLevelOnly.begin(), kTopLevelOnly.end(), name) != kTopLevelOnly.end();
   if (topLevel)
     c.error("<" + std::string(name) + "> is not allowed inside " + parent.tag() +
             "; it belongs at the top level of <scene>");
   else if (name == "light")
-    c.error("<light> is not allowed inside " + parent.tag() +
-            "; a light stands at the top level or in a group, CSG operation, <defs>, <repeat> or <if>");
+    c.error(
+        "<light> is not allowed inside " + parent.tag() +
+        "; a light stands at the top level or in a group, CSG operation, <defs>, <repeat> or <if>");
   else if (isGeometryElement(name) || name == "material")
     c.error("<" + std::string(name) + "> is not allowed inside " + parent.tag());
   else if (std::string pov = povrayElementHint(parent.name(), name); !pov.empty())
@@ -58,8 +61,9 @@ void reportUnexpectedChild(ElementReader& parent, pugi::xml_node child,
 // The material of a geometry node: the material="id" attribute or one inline child.
 void readNodeMaterial(ElementReader& r, Node& node, pugi::xml_node inlineMaterial) {
   if (inlineMaterial && r.has("material")) {
-    r.attrError("material", "give either a 'material' attribute or an inline <material> child (at " +
-                                r.file().loc(inlineMaterial).str() + "), not both");
+    r.attrError("material",
+                "give either a 'material' attribute or an inline <material> child (at " +
+                    r.file().loc(inlineMaterial).str() + "), not both");
     return;
   }
   if (r.has("material")) {
@@ -83,15 +87,17 @@ void registerNodeId(ElementReader& r, Node& node) {
   node.id = *id;
   ParseContext& ctx = r.ctx();
   if (!ctx.registerIds) return;  // a copy made by a <use> with parameters
-  auto [it, inserted] =
-      ctx.nodeIds.try_emplace(*id, ParseContext::IdEntry{&node, node.loc, &r.file(), r.element(), ctx.scope});
+  auto [it, inserted] = ctx.nodeIds.try_emplace(
+      *id, ParseContext::IdEntry{&node, node.loc, &r.file(), r.element(), ctx.scope});
   if (!inserted) {
     const ParseContext::IdEntry& first = it->second;
     std::string firstNote = instanceNote(first.scope.get());
-    r.attrError("id", "the id '" + *id + "' is already used (first defined at " + first.loc.str() + firstNote +
-                          ")" + (ctx.scope && instanceNote(ctx.scope.get()).size() ? "; an id inside a <repeat> must "
-                                                                                   "differ per instance, as in id=\"post${i}\""
-                                                                             : ""));
+    r.attrError("id", "the id '" + *id + "' is already used (first defined at " + first.loc.str() +
+                          firstNote + ")" +
+                          (ctx.scope && instanceNote(ctx.scope.get()).size()
+                               ? "; an id inside a <repeat> must "
+                                 "differ per instance, as in id=\"post${i}\""
+                               : ""));
   }
 }
 
@@ -107,9 +113,11 @@ void warnShadowlessOperands(ParseContext& ctx, const Node& csg) {
     const Node* n = stack.back();
     stack.pop_back();
     if (!n->shadows)
-      ctx.diags.warning(n->loc, "<" + n->element + "> shadows=\"false\" has no effect inside <" + csg.element +
-                                    "> (at " + csg.loc.str() + "), which casts its shadow as a whole, as in "
-                                    "POV-Ray; put shadows=\"false\" on the <" + csg.element + ">");
+      ctx.diags.warning(n->loc, "<" + n->element + "> shadows=\"false\" has no effect inside <" +
+                                    csg.element + "> (at " + csg.loc.str() +
+                                    "), which casts its shadow as a whole, as in "
+                                    "POV-Ray; put shadows=\"false\" on the <" +
+                                    csg.element + ">");
     if (n->kind == NodeKind::Group || n->kind == NodeKind::Union)
       for (const auto& c : n->children) stack.push_back(c.get());
   }
@@ -150,8 +158,8 @@ bool isGeometryElement(std::string_view name) {
   return std::find(n.begin(), n.end(), name) != n.end();
 }
 
-std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& file, pugi::xml_node element,
-                                        int depth) {
+std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& file,
+                                        pugi::xml_node element, int depth) {
   if (std::string_view(element.name()) == "light") return parseLightNode(ctx, file, element, depth);
   ElementReader r(ctx, file, element);
   if (!withinElementDepth(r, depth)) return nullptr;
@@ -178,13 +186,15 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
     std::string_view cn = c.name();
     if (cn == "material") {
       if (inlineMaterial) {
-        ElementReader(ctx, file, c).error(r.tag() + " holds one <material> at most; the first is at " +
-                                         file.loc(inlineMaterial).str());
+        ElementReader(ctx, file, c)
+            .error(r.tag() + " holds one <material> at most; the first is at " +
+                   file.loc(inlineMaterial).str());
         return;
       }
       inlineMaterial = c;
     } else if (group && (isGeometryElement(cn) || cn == "light")) {
-      if (auto child = parseGeometryNode(ctx, file, c, depth + 1)) node->children.push_back(std::move(child));
+      if (auto child = parseGeometryNode(ctx, file, c, depth + 1))
+        node->children.push_back(std::move(child));
     } else if (shapeType && shapeType->child(cn)) {
       // The shape's own child (a blob's <component>): its entry reads it in parseShape.
     } else {
@@ -192,7 +202,8 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
       if (shapeType)
         for (const ChildElementInfo& ch : shapeType->children) childNames.push_back(ch.name);
       if (group) {
-        childNames.insert(childNames.end(), geometryElementNames().begin(), geometryElementNames().end());
+        childNames.insert(childNames.end(), geometryElementNames().begin(),
+                          geometryElementNames().end());
         childNames.push_back("light");
         childNames.push_back("repeat");
         childNames.push_back("if");
@@ -212,7 +223,8 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
   if (group) {
     node->kind = group->kind;
     if (node->isCsg() && !r.failed() &&
-        std::all_of(node->children.begin(), node->children.end(), [](const auto& c) { return c->isLight(); }))
+        std::all_of(node->children.begin(), node->children.end(),
+                    [](const auto& c) { return c->isLight(); }))
       r.error(r.tag() + " needs at least one child shape");
     if (node->kind == NodeKind::Merge || node->kind == NodeKind::Intersection ||
         node->kind == NodeKind::Difference)
@@ -223,10 +235,13 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
       r.error("<use> needs a 'ref' attribute naming the id of the node to instantiate");
     } else if (auto ref = r.text("ref")) {
       bool hasParams = false;
-      for (pugi::xml_node c = element.child("param"); c && !hasParams; c = c.next_sibling("param")) hasParams = true;
+      for (pugi::xml_node c = element.child("param"); c && !hasParams; c = c.next_sibling("param"))
+        hasParams = true;
       // With parameters the target is read again with them (an instance of its own); without,
       // the <use> shares the target's built geometry.
-      if (hasParams) ctx.instances.push_back({node.get(), *ref, r.valueLoc("ref"), ctx.scope, ctx.instanceChain});
+      if (hasParams)
+        ctx.instances.push_back(
+            {node.get(), *ref, r.valueLoc("ref"), ctx.scope, ctx.instanceChain});
       else ctx.uses.push_back({node.get(), *ref, r.valueLoc("ref")});
     }
   } else {
@@ -249,7 +264,8 @@ void parseDefs(ElementReader& r) {
     auto node = parseGeometryNode(r.ctx(), r.file(), c, 2);
     if (!node) return;
     if (node->id.empty() && !r.ctx().broken.count(node.get()))
-      r.ctx().diags.warning(node->loc, "<" + node->element + "> in <defs> has no id, so no <use> can instantiate it");
+      r.ctx().diags.warning(
+          node->loc, "<" + node->element + "> in <defs> has no id, so no <use> can instantiate it");
     r.ctx().scene.defs.push_back(std::move(node));
   });
 }

@@ -2,8 +2,9 @@
 // Every light has color (1), intensity (1), shadows (true), id and transform; directions
 // are normalised. An area light that has a spot attribute (direction, look-at, angle,
 // inner) is spot-shaped: its cone is seen from its centre. An attribute of another light
-// type is an error that says which types it belongs to. A light is a node of the hierarchy (NodeKind::Light) wherever it stands, in
-// its parent's frame; placeLights puts the scene's lights in the world once it is read.
+// type is an error that says which types it belongs to. A light is a node of the hierarchy
+// (NodeKind::Light) wherever it stands, in its parent's frame; placeLights puts the scene's lights
+// in the world once it is read.
 #include "element_parsers.h"
 #include "expansion.h"
 
@@ -25,13 +26,17 @@ const std::vector<std::string_view>& typeAttributes(LightType t) {
   static const std::vector<std::string_view> point{"position", "attenuation"},
       directional{"direction"},
       spot{"position", "attenuation", "direction", "look-at", "angle", "inner"},
-      area{"position", "attenuation", "u", "v", "samples", "jitter", "adaptive", "direction", "look-at", "angle",
-           "inner"};
+      area{"position", "attenuation", "u",       "v",     "samples", "jitter",
+           "adaptive", "direction",   "look-at", "angle", "inner"};
   switch (t) {
-    case LightType::Point: return point;
-    case LightType::Directional: return directional;
-    case LightType::Spot: return spot;
-    case LightType::Area: return area;
+    case LightType::Point:
+      return point;
+    case LightType::Directional:
+      return directional;
+    case LightType::Spot:
+      return spot;
+    case LightType::Area:
+      return area;
   }
   return point;
 }
@@ -56,16 +61,19 @@ void readCone(ElementReader& r, Light& light) {
   } else {
     light.direction = r.direction("direction", light.direction);
   }
-  light.angle = r.number("angle", light.angle, NumberRule::between(0.0, 90.0, "an angle above 0 and at most 90", true));
-  light.inner = r.number("inner", light.angle, NumberRule::between(0.0, 90.0, "an angle from 0 to 90"));
+  light.angle = r.number("angle", light.angle,
+                         NumberRule::between(0.0, 90.0, "an angle above 0 and at most 90", true));
+  light.inner =
+      r.number("inner", light.angle, NumberRule::between(0.0, 90.0, "an angle from 0 to 90"));
   if (light.inner > light.angle)
-    r.attrError("inner", "'inner' (" + fmt::format("{}", light.inner) + ") must not exceed 'angle' (" +
-                             fmt::format("{}", light.angle) + ")");
+    r.attrError("inner", "'inner' (" + fmt::format("{}", light.inner) +
+                             ") must not exceed 'angle' (" + fmt::format("{}", light.angle) + ")");
 }
 
 }  // namespace
 
-std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, int depth) {
+std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file,
+                                     pugi::xml_node element, int depth) {
   ElementReader r(ctx, file, element);
   if (!withinElementDepth(r, depth)) return nullptr;
   if (!countNode(ctx)) return nullptr;
@@ -88,9 +96,10 @@ std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, 
         if (a == attr) owners.emplace_back(name);
     if (owners.empty()) return {};
     std::string list = owners[0];
-    for (size_t i = 1; i < owners.size(); ++i) list += (i + 1 == owners.size() ? " and " : ", ") + owners[i];
-    return "belongs to " + list + " lights; this light is " + typeName(light.type) + " (set type=\"" + owners[0] +
-           "\")";
+    for (size_t i = 1; i < owners.size(); ++i)
+      list += (i + 1 == owners.size() ? " and " : ", ") + owners[i];
+    return "belongs to " + list + " lights; this light is " + typeName(light.type) +
+           " (set type=\"" + owners[0] + "\")";
   });
 
   registerNodeId(r, *node);
@@ -104,7 +113,8 @@ std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, 
     if (auto t = r.text("attenuation")) {
       auto v = parseVector(*t);
       if (!v) r.attrError("attenuation", v.error);
-      else if (v->x < 0.0 || v->y < 0.0 || v->z < 0.0 || (v->x == 0.0 && v->y == 0.0 && v->z == 0.0))
+      else if (v->x < 0.0 || v->y < 0.0 || v->z < 0.0 ||
+               (v->x == 0.0 && v->y == 0.0 && v->z == 0.0))
         r.attrError("attenuation", "expected 3 numbers a b c >= 0, not all zero, got '" + *t + "'");
       else light.attenuation = *v;
     }
@@ -124,16 +134,21 @@ std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, 
       light.u = r.vector("u", light.u);
       light.v = r.vector("v", light.v);
       if (!(glm::length(glm::cross(light.u, light.v)) > 0.0))
-        r.error("<light type=\"area\">: 'u' and 'v' must be non-zero and not parallel (they span the rectangle)");
+        r.error(
+            "<light type=\"area\">: 'u' and 'v' must be non-zero and not parallel (they span the "
+            "rectangle)");
       if (auto t = r.text("samples")) {
         auto list = parseIntegerList(*t);
         if (!list) r.attrError("samples", list.error);
         else if (list->size() != 2 && list->size() != 1)
-          r.attrError("samples", "expected 2 whole numbers (nu nv), got " + std::to_string(list->size()));
+          r.attrError("samples",
+                      "expected 2 whole numbers (nu nv), got " + std::to_string(list->size()));
         else {
           long long nu = (*list)[0], nv = list->size() == 2 ? (*list)[1] : nu;
           if (nu < 2 || nv < 2 || nu > 1024 || nv > 1024)
-            r.attrError("samples", "each count must be from 2 to 1024 (the grid includes the edges), got '" + *t + "'");
+            r.attrError("samples",
+                        "each count must be from 2 to 1024 (the grid includes the edges), got '" +
+                            *t + "'");
           else {
             light.samplesU = static_cast<int>(nu);
             light.samplesV = static_cast<int>(nv);
@@ -149,11 +164,14 @@ std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file, 
       }
       break;
     }
-    case LightType::Point: break;
+    case LightType::Point:
+      break;
   }
   r.forEachChild([&](pugi::xml_node n) {
-    if (std::string_view(n.name()) == "param") return;  // a local parameter (the caller's LocalScope)
-    ElementReader(r.ctx(), r.file(), n).error("<light> takes no child elements but <param>, got <" + std::string(n.name()) + ">");
+    if (std::string_view(n.name()) == "param")
+      return;  // a local parameter (the caller's LocalScope)
+    ElementReader(r.ctx(), r.file(), n)
+        .error("<light> takes no child elements but <param>, got <" + std::string(n.name()) + ">");
   });
   node->light = std::make_unique<Light>(light);
   if (r.failed()) ctx.broken.insert(node.get());

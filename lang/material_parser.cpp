@@ -15,13 +15,13 @@ namespace lucent {
 namespace {
 
 const std::vector<std::string_view> kMaterialAttributes{
-    "id",       "emissive",   "ambient",      "diffuse", "specular", "shininess",
+    "id",         "emissive",     "ambient",  "diffuse", "specular",   "shininess",
     "reflective", "transmissive", "ior",      "fresnel", "absorption", "phong",
-    "phong-size", "brilliance", "metallic", "base", "default"};
+    "phong-size", "brilliance",   "metallic", "base",    "default"};
 const std::vector<std::string_view> kTextureElements{"checker", "image", "pattern", "hexagon",
                                                      "brick"};
-const std::vector<std::string_view> kMaterialChildren{"checker", "image",  "pattern",
-                                                      "hexagon", "brick", "normal", "bump-map"};
+const std::vector<std::string_view> kMaterialChildren{"checker", "image",  "pattern", "hexagon",
+                                                      "brick",   "normal", "bump-map"};
 
 Texture parseImage(ElementReader& t);
 Texture parseChecker(ElementReader& t);
@@ -42,8 +42,8 @@ Texture parseChecker(ElementReader& t) {
   c.color2 = t.color("color2", c.color2);
   c.scale = t.number("scale", c.scale, NumberRule::positive());
   t.forEachChild([&](pugi::xml_node n) {
-    ElementReader(t.ctx(), t.file(), n).error("<checker> takes no child elements, got <" +
-                                                std::string(n.name()) + ">");
+    ElementReader(t.ctx(), t.file(), n)
+        .error("<checker> takes no child elements, got <" + std::string(n.name()) + ">");
   });
   return c;
 }
@@ -67,13 +67,14 @@ Texture parseImage(ElementReader& t) {
       t.attrError("scale", "expected 2 numbers (u v) or 1, got " + std::to_string(list->size()));
     } else {
       Vec2 v = list->size() == 1 ? Vec2((*list)[0]) : Vec2((*list)[0], (*list)[1]);
-      if (v.x == 0.0 || v.y == 0.0) t.attrError("scale", "the scale must not be zero, got '" + *s + "'");
+      if (v.x == 0.0 || v.y == 0.0)
+        t.attrError("scale", "the scale must not be zero, got '" + *s + "'");
       else img.scale = v;
     }
   }
   t.forEachChild([&](pugi::xml_node n) {
-    ElementReader(t.ctx(), t.file(), n).error("<image> takes no child elements, got <" +
-                                                std::string(n.name()) + ">");
+    ElementReader(t.ctx(), t.file(), n)
+        .error("<image> takes no child elements, got <" + std::string(n.name()) + ">");
   });
   return img;
 }
@@ -97,11 +98,13 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
   if (topLevel) {
     if (!r.has("id")) r.error("a top-level <material> needs an 'id' so that shapes can name it");
     else if (auto id = r.text("id")) {
-      if (!isValidId(*id)) r.attrError("id", "an id must be non-empty and contain no spaces, got '" + *id + "'");
+      if (!isValidId(*id))
+        r.attrError("id", "an id must be non-empty and contain no spaces, got '" + *id + "'");
       else m.id = *id;
     }
   } else if (r.has("id")) {
-    r.attrError("id", "an inline <material> has no id; declare it at the top level of <scene> to share it");
+    r.attrError(
+        "id", "an inline <material> has no id; declare it at the top level of <scene> to share it");
   }
   const bool isDefault = r.boolean("default", false);
   if (!topLevel && r.has("default"))
@@ -130,8 +133,10 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
     std::string_view name = n.name();
     if (name == "normal" || name == "bump-map") {
       if (normalLoc) {
-        t.error("<material> holds one normal perturbation (<normal> or <bump-map>) at most; the first is at " +
-                normalLoc->str());
+        t.error(
+            "<material> holds one normal perturbation (<normal> or <bump-map>) at most; the first "
+            "is at " +
+            normalLoc->str());
         return;
       }
       normalLoc = t.loc();
@@ -142,10 +147,12 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
       else m.bumpMap = parseBumpMap(t);
       return;
     }
-    if (std::find(kTextureElements.begin(), kTextureElements.end(), name) == kTextureElements.end()) {
+    if (std::find(kTextureElements.begin(), kTextureElements.end(), name) ==
+        kTextureElements.end()) {
       std::string pov = povrayElementHint("material", name);
-      t.error("<material> may hold a texture (" + elementList(kTextureElements) + ") and a <normal> or <bump-map>, not <" +
-              std::string(name) + ">" + (pov.empty() ? didYouMean(name, kMaterialChildren) : pov));
+      t.error("<material> may hold a texture (" + elementList(kTextureElements) +
+              ") and a <normal> or <bump-map>, not <" + std::string(name) + ">" +
+              (pov.empty() ? didYouMean(name, kMaterialChildren) : pov));
       return;
     }
     if (textureLoc) {
@@ -222,9 +229,12 @@ void parseNamedMaterials(ParseContext& ctx, const std::vector<TopLevelItem>& ite
       const size_t b = it->second;
       if (state[b] == State::reading) {
         std::string cycle;
-        for (size_t k = std::find(chain.begin(), chain.end(), b) - chain.begin(); k < chain.size(); ++k)
-          cycle += "'" + std::string(materials[chain[k]]->element.attribute("id").value()) + "' -> ";
-        e.attrError("base", "materials are based on each other in a cycle: " + cycle + "'" + *id + "'");
+        for (size_t k = std::find(chain.begin(), chain.end(), b) - chain.begin(); k < chain.size();
+             ++k)
+          cycle +=
+              "'" + std::string(materials[chain[k]]->element.attribute("id").value()) + "' -> ";
+        e.attrError("base",
+                    "materials are based on each other in a cycle: " + cycle + "'" + *id + "'");
         return std::nullopt;
       }
       if (state[b] == State::unread) {

@@ -24,8 +24,8 @@ std::string_view trimSpaces(std::string_view s) {
 }
 
 // A parameter's value read as one number for an expression; the state caches the answer.
-std::optional<double> asNumber(std::string_view name, const std::string& value, int& state, double& number,
-                               std::string& error) {
+std::optional<double> asNumber(std::string_view name, const std::string& value, int& state,
+                               double& number, std::string& error) {
   if (state == 0) {
     Parsed<double> n = parseNumber(value);
     state = n ? 1 : 2;
@@ -33,12 +33,15 @@ std::optional<double> asNumber(std::string_view name, const std::string& value, 
   }
   if (state == 1) return number;
   std::string shown = value.size() > 40 ? value.substr(0, 40) + "..." : value;
-  error = "the parameter '" + std::string(name) + "' is '" + shown + "', not one number, so it cannot be used in an expression";
+  error = "the parameter '" + std::string(name) + "' is '" + shown +
+          "', not one number, so it cannot be used in an expression";
   return std::nullopt;
 }
 }  // namespace
 
-std::string paramLocation(const SourceFile& file, pugi::xml_node element) { return file.loc(element).str(); }
+std::string paramLocation(const SourceFile& file, pugi::xml_node element) {
+  return file.loc(element).str();
+}
 
 class Parameters::Names final : public ExpressionNames {
  public:
@@ -78,11 +81,12 @@ bool Parameters::isValidName(std::string_view name) {
   return true;
 }
 
-void Parameters::declare(const std::string& name, const std::string& rawValue, const SourceFile& file,
-                         pugi::xml_node element) {
+void Parameters::declare(const std::string& name, const std::string& rawValue,
+                         const SourceFile& file, pugi::xml_node element) {
   auto [it, inserted] = params_.try_emplace(name);
   if (!inserted) {
-    diags_.error(file.loc(element), "<param> '" + name + "' is already declared (first declared at " +
+    diags_.error(file.loc(element), "<param> '" + name +
+                                        "' is already declared (first declared at " +
                                         paramLocation(*it->second.file, it->second.element) + ")");
     return;
   }
@@ -123,11 +127,12 @@ std::vector<std::string> Parameters::knownNames(const Scope* scope) const {
   return names;
 }
 
-void Parameters::reportInValue(const SourceFile& file, pugi::xml_node element, const std::string& name,
-                               const SubstitutionError& inner) {
+void Parameters::reportInValue(const SourceFile& file, pugi::xml_node element,
+                               const std::string& name, const SubstitutionError& inner) {
   pugi::xml_attribute value = element.attribute("value");
-  SourceLoc where = inner.offset != std::string::npos ? file.locInValue(value, element, inner.offset)
-                                                      : file.valueLoc(value, element);
+  SourceLoc where = inner.offset != std::string::npos
+                        ? file.locInValue(value, element, inner.offset)
+                        : file.valueLoc(value, element);
   report(where, "<param> '" + name + "' attribute 'value': " + inner.message);
 }
 
@@ -135,11 +140,14 @@ void Parameters::report(const SourceLoc& loc, std::string message) {
   if (!quiet_) diags_.error(loc, std::move(message));
 }
 
-std::optional<std::string> Parameters::resolveTop(const std::string& name, Param& p, std::string& error) {
+std::optional<std::string> Parameters::resolveTop(const std::string& name, Param& p,
+                                                  std::string& error) {
   (void)error;
   switch (p.state) {
-    case State::Resolved: return p.value;
-    case State::Failed: return std::nullopt;  // already reported at the <param>
+    case State::Resolved:
+      return p.value;
+    case State::Failed:
+      return std::nullopt;  // already reported at the <param>
     case State::Resolving: {
       std::string chain;
       for (const std::string& n : resolving_) chain += n + " -> ";
@@ -147,10 +155,12 @@ std::optional<std::string> Parameters::resolveTop(const std::string& name, Param
       p.state = quiet_ ? State::Unresolved : State::Failed;
       return std::nullopt;
     }
-    case State::Unresolved: break;
+    case State::Unresolved:
+      break;
   }
   if (resolving_.size() >= kMaxParameterDepth) {
-    report(p.file->loc(p.element), "<param> '" + name + "': parameters refer to one another more than " +
+    report(p.file->loc(p.element), "<param> '" + name +
+                                       "': parameters refer to one another more than " +
                                        std::to_string(kMaxParameterDepth) + " deep here");
     p.state = quiet_ ? State::Unresolved : State::Failed;
     return std::nullopt;
@@ -171,12 +181,15 @@ std::optional<std::string> Parameters::resolveTop(const std::string& name, Param
   return p.value;
 }
 
-std::optional<std::string> Parameters::resolveLocal(Scope& scope, LocalParam& p, std::string& error) {
+std::optional<std::string> Parameters::resolveLocal(Scope& scope, LocalParam& p,
+                                                    std::string& error) {
   if (p.aliasScope) return resolveLocal(*p.aliasScope, p.aliasScope->params[p.aliasIndex], error);
   std::string name(p.name);
   switch (p.state) {
-    case LocalParam::State::Resolved: return p.value;
-    case LocalParam::State::Failed: return std::nullopt;
+    case LocalParam::State::Resolved:
+      return p.value;
+    case LocalParam::State::Failed:
+      return std::nullopt;
     case LocalParam::State::Resolving: {
       std::string chain;
       for (const std::string& n : resolving_) chain += n + " -> ";
@@ -184,10 +197,12 @@ std::optional<std::string> Parameters::resolveLocal(Scope& scope, LocalParam& p,
       p.state = quiet_ ? LocalParam::State::Unresolved : LocalParam::State::Failed;
       return std::nullopt;
     }
-    case LocalParam::State::Unresolved: break;
+    case LocalParam::State::Unresolved:
+      break;
   }
   if (resolving_.size() >= kMaxParameterDepth) {
-    report(p.file->loc(p.element), "<param> '" + name + "': parameters refer to one another more than " +
+    report(p.file->loc(p.element), "<param> '" + name +
+                                       "': parameters refer to one another more than " +
                                        std::to_string(kMaxParameterDepth) + " deep here");
     p.state = quiet_ ? LocalParam::State::Unresolved : LocalParam::State::Failed;
     return std::nullopt;
@@ -196,7 +211,8 @@ std::optional<std::string> Parameters::resolveLocal(Scope& scope, LocalParam& p,
   resolving_.push_back(name);
   SubstitutionError inner;
   // Its siblings are visible, except for a <use>'s arguments.
-  std::optional<std::string> value = substitute(p.raw, p.readOutside ? p.outside.get() : &scope, inner);
+  std::optional<std::string> value =
+      substitute(p.raw, p.readOutside ? p.outside.get() : &scope, inner);
   resolving_.pop_back();
   if (!value) {
     if (!inner.message.empty()) reportInValue(*p.file, p.element, name, inner);
@@ -209,8 +225,8 @@ std::optional<std::string> Parameters::resolveLocal(Scope& scope, LocalParam& p,
   return p.value;
 }
 
-std::optional<std::string> Parameters::lookup(std::string_view name, const Scope* scope, std::string& error,
-                                              bool& known) {
+std::optional<std::string> Parameters::lookup(std::string_view name, const Scope* scope,
+                                              std::string& error, bool& known) {
   known = true;
   for (const Scope* s = scope; s; s = s->parent.get()) {
     if (!s->var.empty() && s->var == name) return formatNumber(s->value);
@@ -233,8 +249,8 @@ std::optional<std::string> Parameters::lookup(std::string_view name, const Scope
   return std::nullopt;
 }
 
-std::optional<double> Parameters::number(std::string_view name, const Scope* scope, std::string& error,
-                                         bool& known) {
+std::optional<double> Parameters::number(std::string_view name, const Scope* scope,
+                                         std::string& error, bool& known) {
   known = true;
   for (const Scope* s = scope; s; s = s->parent.get()) {
     if (!s->var.empty() && s->var == name) return s->value;
@@ -263,7 +279,8 @@ std::optional<double> Parameters::number(std::string_view name, const Scope* sco
   }
   std::optional<std::string> v = lookup(name, nullptr, error, known);
   if (!v) return std::nullopt;
-  if (it != params_.end() && !defines_.count(key)) return asNumber(name, *v, it->second.numberState, it->second.number, error);
+  if (it != params_.end() && !defines_.count(key))
+    return asNumber(name, *v, it->second.numberState, it->second.number, error);
   int state = 0;
   double n = 0.0;
   return asNumber(name, *v, state, n, error);
@@ -271,7 +288,8 @@ std::optional<double> Parameters::number(std::string_view name, const Scope* sco
 
 std::string Parameters::whatIs(std::string_view name, const Scope* scope) {
   for (const Scope* s = scope; s; s = s->parent.get()) {
-    if (!s->var.empty() && s->var == name) return "the variable of the <repeat> at " + s->file->loc(s->element).str();
+    if (!s->var.empty() && s->var == name)
+      return "the variable of the <repeat> at " + s->file->loc(s->element).str();
     for (const LocalParam& p : s->params)
       if (p.name == name) return "a parameter declared at " + p.file->loc(p.element).str();
   }
@@ -335,7 +353,8 @@ std::optional<std::string> Parameters::substitute(std::string_view text, const S
     while (j < text.size() && isNameChar(text[j])) ++j;
     std::string_view name = text.substr(i + 1, j - i - 1);
     if (!isValidName(name)) {
-      error = {"'$' must be followed by a parameter name or {name} (write $$ for a literal '$')", i};
+      error = {"'$' must be followed by a parameter name or {name} (write $$ for a literal '$')",
+               i};
       return std::nullopt;
     }
     std::optional<std::string> value = lookup(name, scope, message, known);
@@ -349,7 +368,8 @@ std::optional<std::string> Parameters::substitute(std::string_view text, const S
   return out;
 }
 
-bool Parameters::evaluateNumbers(std::string_view raw, const Scope* scope, double* out, size_t count) {
+bool Parameters::evaluateNumbers(std::string_view raw, const Scope* scope, double* out,
+                                 size_t count) {
   auto isSpace = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
   auto acceptable = [](double v) {
     return std::isfinite(v) && std::abs(v) <= 1e30 && (v == 0.0 || std::abs(v) >= 1e-30);

@@ -46,7 +46,8 @@ class Parameters {
   const std::string* define(const std::string& name);
 
   // Replaces every reference in `text` as seen from `scope` (null: the top level).
-  std::optional<std::string> substitute(std::string_view text, const Scope* scope, SubstitutionError& error);
+  std::optional<std::string> substitute(std::string_view text, const Scope* scope,
+                                        SubstitutionError& error);
 
   // A shortcut for numeric attributes: when `raw` is `count` numbers separated by spaces or
   // single commas, each a literal or one whole `${...}`, and every one evaluates to a number
@@ -58,7 +59,8 @@ class Parameters {
   // A function expression (an isosurface's) with `variables` left free and its other names
   // resolved from `scope` now (expression.h, compileFunction).
   std::optional<FunctionText> function(std::string_view text, const Scope* scope,
-                                       const std::vector<std::string>& variables, SubstitutionError& error);
+                                       const std::vector<std::string>& variables,
+                                       SubstitutionError& error);
 
   // Is `name` visible from `scope` (a parameter, a repeat variable, -D or a built-in)?
   // Returns a description ("the parameter declared at 3:5") or "" when it is not.
@@ -95,9 +97,11 @@ class Parameters {
   class Names;  // ExpressionNames seen from a scope
 
   // The text `name` stands for from `scope`; nullopt with error on failure.
-  std::optional<std::string> lookup(std::string_view name, const Scope* scope, std::string& error, bool& known);
+  std::optional<std::string> lookup(std::string_view name, const Scope* scope, std::string& error,
+                                    bool& known);
   // The number `name` stands for, for expressions.
-  std::optional<double> number(std::string_view name, const Scope* scope, std::string& error, bool& known);
+  std::optional<double> number(std::string_view name, const Scope* scope, std::string& error,
+                               bool& known);
   std::optional<std::string> resolveTop(const std::string& name, Param& p, std::string& error);
   std::optional<std::string> resolveLocal(Scope& scope, LocalParam& p, std::string& error);
   std::vector<std::string> knownNames(const Scope* scope) const;

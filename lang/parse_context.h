@@ -88,7 +88,7 @@ struct ParseContext {
     Node* use;
     std::string ref;
     SourceLoc refLoc;
-    ScopePtr scope;                 // the <use>'s own scope, holding its <param>s
+    ScopePtr scope;                  // the <use>'s own scope, holding its <param>s
     std::vector<std::string> chain;  // the definitions being instantiated around it
   };
   std::vector<PendingInstance> instances;

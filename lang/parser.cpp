@@ -28,8 +28,8 @@ namespace {
 
 const std::vector<std::string_view>& topLevelElementNames() {
   static const std::vector<std::string_view> names = [] {
-    std::vector<std::string_view> n{"render", "camera", "light",  "material", "param",
-                                    "defs",   "include", "repeat", "if",       "animation", "sky", "fog"};
+    std::vector<std::string_view> n{"render",  "camera", "light", "material",  "param", "defs",
+                                    "include", "repeat", "if",    "animation", "sky",   "fog"};
     n.insert(n.end(), geometryElementNames().begin(), geometryElementNames().end());
     return n;
   }();
@@ -41,10 +41,12 @@ void readRepeated(ParseContext& ctx, const SourceFile& file, pugi::xml_node elem
   std::string_view name = element.name();
   if (isGeometryElement(name) || name == "light") {
     Node& parent = name == "light" ? *ctx.scene.lightRoot : *ctx.scene.root;
-    if (auto node = parseGeometryNode(ctx, file, element, 2)) parent.children.push_back(std::move(node));
+    if (auto node = parseGeometryNode(ctx, file, element, 2))
+      parent.children.push_back(std::move(node));
   } else {
     ElementReader(ctx, file, element)
-        .error("<" + std::string(name) + "> is not allowed inside <repeat> or <if>; at the top level they hold "
+        .error("<" + std::string(name) +
+               "> is not allowed inside <repeat> or <if>; at the top level they hold "
                "geometry nodes and lights" +
                didYouMean(name, geometryElementNames()));
   }
@@ -53,11 +55,13 @@ void readRepeated(ParseContext& ctx, const SourceFile& file, pugi::xml_node elem
 void readTopLevel(ParseContext& ctx, const TopLevelItem& item) {
   ElementReader r(ctx, *item.file, item.element);
   std::string_view name = item.element.name();
-  if (name == "param" || name == "material" || name == "animation") return;  // read in earlier phases
+  if (name == "param" || name == "material" || name == "animation")
+    return;  // read in earlier phases
   if (name == "repeat" || name == "if") {
     // The element itself is expanded as the only child of a pseudo-parent: the scene root.
     ElementReader root(ctx, *item.file, item.file->root());
-    expandElement(root, item.element, 2, [&](pugi::xml_node c) { readRepeated(ctx, *item.file, c); });
+    expandElement(root, item.element, 2,
+                  [&](pugi::xml_node c) { readRepeated(ctx, *item.file, c); });
     return;
   }
   if (name == "render") parseRender(r);
@@ -67,12 +71,14 @@ void readTopLevel(ParseContext& ctx, const TopLevelItem& item) {
   else if (name == "defs") parseDefs(r);
   else if (isGeometryElement(name) || name == "light") {
     Node& parent = name == "light" ? *ctx.scene.lightRoot : *ctx.scene.root;
-    if (auto node = parseGeometryNode(ctx, *item.file, item.element, 1)) parent.children.push_back(std::move(node));
+    if (auto node = parseGeometryNode(ctx, *item.file, item.element, 1))
+      parent.children.push_back(std::move(node));
   } else if (name == "checker" || name == "image" || name == "pattern" || name == "hexagon" ||
              name == "brick") {
     r.error("<" + std::string(name) + "> is a texture: it goes inside a <material>");
   } else if (name == "normal" || name == "bump-map") {
-    r.error("<" + std::string(name) + "> perturbs a material's normal: it goes inside a <material>");
+    r.error("<" + std::string(name) +
+            "> perturbs a material's normal: it goes inside a <material>");
   } else {
     std::string pov = povrayElementHint("scene", name);
     r.error("unknown element <" + std::string(name) + "> in <scene>" +
@@ -89,7 +95,8 @@ Diagnostics sorted(const Diagnostics& in, const std::vector<std::unique_ptr<Sour
     auto it = rank.find(d.loc.file);
     return std::make_tuple(it == rank.end() ? files.size() : it->second, d.loc.line, d.loc.col);
   };
-  std::stable_sort(all.begin(), all.end(), [&](const Diagnostic& a, const Diagnostic& b) { return key(a) < key(b); });
+  std::stable_sort(all.begin(), all.end(),
+                   [&](const Diagnostic& a, const Diagnostic& b) { return key(a) < key(b); });
   Diagnostics out;
   for (Diagnostic& d : all) {
     if (d.severity == Severity::Error) out.error(d.loc, std::move(d.message));
@@ -122,21 +129,23 @@ void digestXml(pugi::xml_node root, Digest& d) {
   }
 }
 
-ParseResult parseText(std::string text, const std::string& path, const ParseOptions& options, bool isFile) {
+ParseResult parseText(std::string text, const std::string& path, const ParseOptions& options,
+                      bool isFile) {
   ParseResult result;
   auto scene = std::make_unique<Scene>();
   scene->file = path;
   Diagnostics diags;
   Parameters params(options.defines, diags);
   fs::path folder = fs::path(path).parent_path();
-  FileAccess files(folder.empty() ? fs::path(".") : folder, options.allowPaths, options.replay.get(), options.onGrant);
+  FileAccess files(folder.empty() ? fs::path(".") : folder, options.allowPaths,
+                   options.replay.get(), options.onGrant);
   ParseContext ctx{*scene, diags, params, files};
   if (options.meshCache) ctx.meshCache = options.meshCache;
   SceneLoader loader(ctx);
 
   try {
-    auto top = std::make_unique<SourceFile>(path, canonicalPath(folder.empty() ? fs::path(".") : folder),
-                                            std::move(text));
+    auto top = std::make_unique<SourceFile>(
+        path, canonicalPath(folder.empty() ? fs::path(".") : folder), std::move(text));
     if (loader.load(std::move(top))) {
       for (const SourceFile* f : loader.sceneFiles()) checkSceneRoot(ctx, *f);
       readAnimation(ctx, loader.items(), options.frame);
@@ -152,7 +161,8 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
       }
       if (scene->cameras.empty()) {
         const SourceFile& topFile = *loader.files().front();
-        diags.error(topFile.loc(topFile.root()), "the scene has no <camera> (at least one is required)");
+        diags.error(topFile.loc(topFile.root()),
+                    "the scene has no <camera> (at least one is required)");
       }
       if (!diags.hasErrors()) warnCamerasInsideOpaqueSolids(*scene, diags);
       for (const std::string& name : params.unusedDefines())
@@ -160,7 +170,8 @@ ParseResult parseText(std::string text, const std::string& path, const ParseOpti
     }
   } catch (const std::exception& e) {
     // Nothing an input contains should get here; if it does, fail cleanly, not crash.
-    diags.error(SourceLoc{path, 0, 0}, std::string("internal error while reading the scene: ") + e.what());
+    diags.error(SourceLoc{path, 0, 0},
+                std::string("internal error while reading the scene: ") + e.what());
   }
 
   result.diagnostics = sorted(diags, loader.files());

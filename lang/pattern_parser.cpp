@@ -37,8 +37,8 @@ const std::vector<std::pair<std::string_view, WaveShape>> kWaves{
 
 const std::vector<std::string_view> kPlacementAttributes{"transform", "turbulence", "octaves",
                                                          "omega", "lambda"};
-const std::vector<std::string_view> kValueAttributes{"type",  "axis", "arms",     "frequency",
-                                                     "phase", "wave", "exponent", "noise-generator"};
+const std::vector<std::string_view> kValueAttributes{
+    "type", "axis", "arms", "frequency", "phase", "wave", "exponent", "noise-generator"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -63,10 +63,13 @@ PatternPlacement parsePlacement(ElementReader& r) {
     if (!list) {
       r.attrError("turbulence", list.error);
     } else if (list->size() != 1 && list->size() != 3) {
-      r.attrError("turbulence", "expected 1 number or 3 (x y z), got " + std::to_string(list->size()));
+      r.attrError("turbulence",
+                  "expected 1 number or 3 (x y z), got " + std::to_string(list->size()));
     } else {
-      const Vec3 v = list->size() == 1 ? Vec3((*list)[0]) : Vec3((*list)[0], (*list)[1], (*list)[2]);
-      if (v.x < 0 || v.y < 0 || v.z < 0) r.attrError("turbulence", "expected numbers >= 0, got '" + *t + "'");
+      const Vec3 v =
+          list->size() == 1 ? Vec3((*list)[0]) : Vec3((*list)[0], (*list)[1], (*list)[2]);
+      if (v.x < 0 || v.y < 0 || v.z < 0)
+        r.attrError("turbulence", "expected numbers >= 0, got '" + *t + "'");
       else p.turbulence = v;
     }
   }
@@ -111,13 +114,16 @@ ColorMap parseColorMap(ElementReader& r) {
     entry.color = e.color("color", entry.color);
     noChildren(e);
     if (!map.entries.empty() && entry.at < map.entries.back().at) {
-      e.attrError("at", "the entries of a <color-map> go in increasing order of 'at'; this one is below the one before (" +
-                            formatNumber(map.entries.back().at) + ")");
+      e.attrError("at",
+                  "the entries of a <color-map> go in increasing order of 'at'; this one is below "
+                  "the one before (" +
+                      formatNumber(map.entries.back().at) + ")");
       return;
     }
     map.entries.push_back(entry);
   });
-  if (map.entries.empty() && !r.failed()) r.error("<color-map> needs at least one <entry at color/>");
+  if (map.entries.empty() && !r.failed())
+    r.error("<color-map> needs at least one <entry at color/>");
   return map;
 }
 
@@ -129,7 +135,8 @@ Texture parsePatternTexture(ElementReader& r) {
   if (!r.has("type")) {
     r.error("<pattern> needs a 'type' (" + [] {
       std::string list;
-      for (const auto& [n, e] : kColourPatterns) list += (list.empty() ? "" : ", ") + std::string(n);
+      for (const auto& [n, e] : kColourPatterns)
+        list += (list.empty() ? "" : ", ") + std::string(n);
       return list;
     }() + ")");
   } else {
@@ -175,8 +182,7 @@ Texture parseBrickTexture(ElementReader& r) {
   const Vec3 size = r.vector("size", t.spec.size);
   if (size.x <= 0 || size.y <= 0 || size.z <= 0)
     r.attrError("size", "the brick's size must be positive in x, y and z");
-  else
-    t.spec.size = size;
+  else t.spec.size = size;
   noChildren(r);
   return t;
 }
@@ -184,7 +190,8 @@ Texture parseBrickTexture(ElementReader& r) {
 NormalSpec parseNormal(ElementReader& r) {
   r.checkAttributes(joined(joined(kValueAttributes, kPlacementAttributes), {"depth"}));
   NormalSpec n;
-  if (!r.has("type")) r.error("<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles or a colour pattern)");
+  if (!r.has("type"))
+    r.error("<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles or a colour pattern)");
   else n.pattern.type = r.choice("type", PatternType::bumps, normalPatterns());
   parseValueAttributes(r, n.pattern);
   n.depth = r.number("depth", n.depth);

@@ -1,5 +1,6 @@
 // Parsers of the contract's colour patterns (<pattern>, <hexagon>, <brick>, textures of a
-// <material>) and of <normal> and <bump-map>: the elements, their placement attributes and <color-map>.
+// <material>) and of <normal> and <bump-map>: the elements, their placement attributes and
+// <color-map>.
 #pragma once
 
 #include "element_reader.h"

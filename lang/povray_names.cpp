@@ -39,8 +39,11 @@ const std::vector<PovWord> kAttributes{
     {"material", "color", "'diffuse'"},
     {"material", "colour", "'diffuse'"},
     {"material", "rgb", "'diffuse'"},
-    {"material", "pigment", "'diffuse' (a colour) or a <checker>, <image>, <pattern>, <hexagon> or <brick> child"},
-    {"material", "finish", "the material's own attributes: 'ambient', 'diffuse', 'specular', 'phong', 'brilliance', 'reflective'"},
+    {"material", "pigment",
+     "'diffuse' (a colour) or a <checker>, <image>, <pattern>, <hexagon> or <brick> child"},
+    {"material", "finish",
+     "the material's own attributes: 'ambient', 'diffuse', 'specular', 'phong', 'brilliance', "
+     "'reflective'"},
     {"material", "normal", "a <normal type depth> or <bump-map src depth> child"},
     {"material", "bump_map", "a <bump-map src depth> child"},
     {"material", "phong_size", "'phong-size'"},
@@ -88,8 +91,11 @@ const std::vector<PovWord> kElements{
     {"scene", "finish", "<material id=\"...\">"},
     {"scene", "mesh2", "<mesh>"},
     {"scene", "sky_sphere", "<sky>"},
-    {"material", "pigment", "the 'diffuse' colour or a <checker>, <image>, <pattern>, <hexagon> or <brick> child"},
-    {"material", "finish", "the material's own attributes: 'ambient', 'diffuse', 'specular', 'phong', 'brilliance', 'reflective'"},
+    {"material", "pigment",
+     "the 'diffuse' colour or a <checker>, <image>, <pattern>, <hexagon> or <brick> child"},
+    {"material", "finish",
+     "the material's own attributes: 'ambient', 'diffuse', 'specular', 'phong', 'brilliance', "
+     "'reflective'"},
     {"material", "interior", "the material's 'ior' and 'absorption'"},
     {"pattern", "color_map", "<color-map>"},
     {"pattern", "colour_map", "<color-map>"},
@@ -109,7 +115,8 @@ std::string hint(std::string_view word, std::string_view lucent) {
   return " (POV-Ray's '" + std::string(word) + "' is " + std::string(lucent) + " in Lucent)";
 }
 
-std::string lookup(const std::vector<PovWord>& table, std::string_view where, std::string_view word) {
+std::string lookup(const std::vector<PovWord>& table, std::string_view where,
+                   std::string_view word) {
   const PovWord* generic = nullptr;
   for (const PovWord& w : table) {
     if (w.povray != word) continue;

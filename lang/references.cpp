@@ -114,12 +114,15 @@ class GraphWalk {
 // cycle has one (the DFS back edge), so the recursion ends, within kMaxInstanceDepth.
 const Node* findNonSolid(const ParseContext& ctx, const Node& n) {
   switch (n.kind) {
-    case NodeKind::Shape: return n.shape && isSolid(*n.shape) ? nullptr : &n;
-    case NodeKind::Use: return n.target && !ctx.broken.count(&n) ? findNonSolid(ctx, *n.target) : nullptr;
+    case NodeKind::Shape:
+      return n.shape && isSolid(*n.shape) ? nullptr : &n;
+    case NodeKind::Use:
+      return n.target && !ctx.broken.count(&n) ? findNonSolid(ctx, *n.target) : nullptr;
     case NodeKind::Merge:
     case NodeKind::Intersection:
     case NodeKind::Difference:
-    case NodeKind::Light: return nullptr;  // a light is no operand: it neither adds nor spoils
+    case NodeKind::Light:
+      return nullptr;  // a light is no operand: it neither adds nor spoils
     case NodeKind::Union:
     case NodeKind::Group:
       if (n.children.empty()) return &n;
@@ -141,13 +144,12 @@ void checkCsgOperands(ParseContext& ctx, const Node& csg) {
     const Node* leaf = findNonSolid(ctx, *child);
     if (!leaf || ctx.broken.count(leaf)) continue;
     std::string what = child->kind == NodeKind::Use ? useLabel(*child) : "<" + child->element + ">";
-    std::string message = what + " cannot be an operand of <" + csg.element + "> (at " + csg.loc.str() +
-                          "), which needs solids: ";
-    if (leaf == child.get())
-      message += "it is not a solid (" + whyNotSolid(*leaf) + ")";
+    std::string message = what + " cannot be an operand of <" + csg.element + "> (at " +
+                          csg.loc.str() + "), which needs solids: ";
+    if (leaf == child.get()) message += "it is not a solid (" + whyNotSolid(*leaf) + ")";
     else
-      message += "it contains <" + leaf->element + "> at " + leaf->loc.str() + ", which is not a solid (" +
-                 whyNotSolid(*leaf) + ")";
+      message += "it contains <" + leaf->element + "> at " + leaf->loc.str() +
+                 ", which is not a solid (" + whyNotSolid(*leaf) + ")";
     ctx.diags.error(child->loc, message);
   }
 }
@@ -158,11 +160,10 @@ void checkInverse(ParseContext& ctx, const Node& n) {
   const Node* leaf = findNonSolid(ctx, n);
   if (!leaf || ctx.broken.count(leaf)) return;
   std::string message = "<" + n.element + "> inverse=\"true\" needs a solid: ";
-  if (leaf == &n)
-    message += "it is not one (" + whyNotSolid(*leaf) + ")";
+  if (leaf == &n) message += "it is not one (" + whyNotSolid(*leaf) + ")";
   else
-    message += "it contains <" + leaf->element + "> at " + leaf->loc.str() + ", which is not a solid (" +
-               whyNotSolid(*leaf) + ")";
+    message += "it contains <" + leaf->element + "> at " + leaf->loc.str() +
+               ", which is not a solid (" + whyNotSolid(*leaf) + ")";
   ctx.diags.error(n.loc, message);
 }
 
@@ -177,7 +178,8 @@ void instantiate(ParseContext& ctx) {
   // <use> inside it gives the same error each time, so it is reported once.
   std::unordered_set<std::string> reported;
   auto reportOnce = [&](const SourceLoc& loc, std::string message) {
-    if (reported.insert(loc.str() + '\n' + message).second) ctx.diags.error(loc, std::move(message));
+    if (reported.insert(loc.str() + '\n' + message).second)
+      ctx.diags.error(loc, std::move(message));
   };
   // What the instances not made yet will make, estimated from their definitions as each
   // joins the list: a <repeat> of a million parameterised uses of a large definition is
@@ -214,11 +216,13 @@ void instantiate(ParseContext& ctx) {
       pending += estimates.back();
     }
     if (static_cast<double>(ctx.nodeCount) + pending > static_cast<double>(kMaxExpandedNodes)) {
-      ctx.diags.error(ctx.instances[k].use->loc,
-                      fmt::format("the <use>s with parameters would expand the scene to about {:.3g} nodes, lights "
-                                  "and repeat instances, more than the limit of {}; this <use> is the first of "
-                                  "those not made yet",
-                                  static_cast<double>(ctx.nodeCount) + pending, kMaxExpandedNodes));
+      ctx.diags.error(
+          ctx.instances[k].use->loc,
+          fmt::format(
+              "the <use>s with parameters would expand the scene to about {:.3g} nodes, lights "
+              "and repeat instances, more than the limit of {}; this <use> is the first of "
+              "those not made yet",
+              static_cast<double>(ctx.nodeCount) + pending, kMaxExpandedNodes));
       ctx.overLimit = true;
       break;
     }
@@ -230,15 +234,17 @@ void instantiate(ParseContext& ctx) {
         for (const auto& [id, entry] : ctx.nodeIds) ids.push_back(id);
         std::sort(ids.begin(), ids.end());
       }
-      reportOnce(u.refLoc, "<use> attribute 'ref': no node has the id '" + u.ref + "'" + didYouMean(u.ref, ids));
+      reportOnce(u.refLoc, "<use> attribute 'ref': no node has the id '" + u.ref + "'" +
+                               didYouMean(u.ref, ids));
       ctx.broken.insert(u.use);
       continue;
     }
     if (std::find(u.chain.begin(), u.chain.end(), u.ref) != u.chain.end()) {
       std::string chain;
       for (const std::string& c : u.chain) chain += "'" + c + "' -> ";
-      reportOnce(u.use->loc, "<use ref=\"" + u.ref + "\"> instantiates '" + u.ref + "' inside its own definition: " +
-                                 chain + "'" + u.ref + "' (a definition cannot use itself)");
+      reportOnce(u.use->loc, "<use ref=\"" + u.ref + "\"> instantiates '" + u.ref +
+                                 "' inside its own definition: " + chain + "'" + u.ref +
+                                 "' (a definition cannot use itself)");
       ctx.broken.insert(u.use);
       continue;
     }
@@ -287,15 +293,16 @@ void resolveReferences(ParseContext& ctx) {
       for (const auto& [id, entry] : ctx.nodeIds) ids.push_back(id);
       std::sort(ids.begin(), ids.end());
     }
-    ctx.diags.error(u.refLoc, "<use> attribute 'ref': no node has the id '" + u.ref + "'" + didYouMean(u.ref, ids));
+    ctx.diags.error(u.refLoc, "<use> attribute 'ref': no node has the id '" + u.ref + "'" +
+                                  didYouMean(u.ref, ids));
   }
 
   // 3. merge, intersection and difference combine solids only, and only a solid can be
   // inverse. Checked in source order.
   std::vector<const Node*> csgNodes;
   auto isCsgOperation = [](const Node& n) {
-    return n.kind == NodeKind::Merge || n.kind == NodeKind::Intersection || n.kind == NodeKind::Difference ||
-           n.inverse;
+    return n.kind == NodeKind::Merge || n.kind == NodeKind::Intersection ||
+           n.kind == NodeKind::Difference || n.inverse;
   };
   if (ctx.uses.empty()) {
     // Without <use> references the nodes form a tree (no cycles, and no deeper than the
@@ -308,7 +315,8 @@ void resolveReferences(ParseContext& ctx) {
       auto [n, depth] = stack.back();
       stack.pop_back();
       if (depth > kMaxInstanceDepth) {
-        ctx.diags.error(n->loc, "<" + n->element + "> nests deeper than " + std::to_string(kMaxInstanceDepth) +
+        ctx.diags.error(n->loc, "<" + n->element + "> nests deeper than " +
+                                    std::to_string(kMaxInstanceDepth) +
                                     " levels, counting what the <use>s around it instantiate");
         return;
       }
@@ -324,7 +332,8 @@ void resolveReferences(ParseContext& ctx) {
     bool tooDeep = false;
     auto checkDepth = [&](const Node& top) {
       if (!tooDeep && walk.depth(top) > kMaxInstanceDepth) {
-        ctx.diags.error(top.loc, "<" + top.element + "> nests deeper than " + std::to_string(kMaxInstanceDepth) +
+        ctx.diags.error(top.loc, "<" + top.element + "> nests deeper than " +
+                                     std::to_string(kMaxInstanceDepth) +
                                      " levels, counting what its <use>s instantiate");
         tooDeep = true;
       }
@@ -337,11 +346,13 @@ void resolveReferences(ParseContext& ctx) {
     });
   }
   std::sort(csgNodes.begin(), csgNodes.end(), [](const Node* a, const Node* b) {
-    return std::tie(a->loc.file, a->loc.line, a->loc.col) < std::tie(b->loc.file, b->loc.line, b->loc.col);
+    return std::tie(a->loc.file, a->loc.line, a->loc.col) <
+           std::tie(b->loc.file, b->loc.line, b->loc.col);
   });
   for (const Node* n : csgNodes) {
     if (n->inverse) checkInverse(ctx, *n);
-    if (n->kind == NodeKind::Merge || n->kind == NodeKind::Intersection || n->kind == NodeKind::Difference)
+    if (n->kind == NodeKind::Merge || n->kind == NodeKind::Intersection ||
+        n->kind == NodeKind::Difference)
       checkCsgOperands(ctx, *n);
   }
 }

@@ -4,7 +4,6 @@
 #include "element_reader.h"
 #include "library.h"
 
-
 namespace fs = std::filesystem;
 
 namespace lucent {
@@ -17,12 +16,13 @@ bool SceneLoader::parseFile(SourceFile& file, bool included) {
   pugi::xml_node root = file.root();
   // The root first: a file of several <material>s is one mistake (not a scene), not two.
   if (std::string_view(root.name()) != "scene") {
-    ctx_.diags.error(file.loc(root), "the root element must be <scene version=\"1\">, got <" +
-                                         std::string(root.name()) + ">" +
-                                         didYouMean(root.name(), std::vector<std::string_view>{"scene"}) +
-                                         (included ? "; an included file is a scene file too: put its "
-                                                     "elements inside <scene version=\"1\">"
-                                                   : ""));
+    ctx_.diags.error(file.loc(root),
+                     "the root element must be <scene version=\"1\">, got <" +
+                         std::string(root.name()) + ">" +
+                         didYouMean(root.name(), std::vector<std::string_view>{"scene"}) +
+                         (included ? "; an included file is a scene file too: put its "
+                                     "elements inside <scene version=\"1\">"
+                                   : ""));
     return false;
   }
   // pugixml accepts several top-level elements (and text beside them); an XML document,
@@ -30,7 +30,8 @@ bool SceneLoader::parseFile(SourceFile& file, bool included) {
   for (pugi::xml_node n = root.next_sibling(); n; n = n.next_sibling()) {
     if (n.type() == pugi::node_element) {
       ctx_.diags.error(file.loc(n), "a second root element <" + std::string(n.name()) +
-                                        "> after <" + root.name() + ">: a scene file has exactly one root element");
+                                        "> after <" + root.name() +
+                                        ">: a scene file has exactly one root element");
       return false;
     }
     if (n.type() == pugi::node_pcdata || n.type() == pugi::node_cdata) {
@@ -62,7 +63,8 @@ void SceneLoader::collectParams(const SourceFile& file) {
     ElementReader r(ctx_, file, c);
     r.checkAttributes({"name", "value"});
     r.forEachChild([&](pugi::xml_node n) {
-      ElementReader(ctx_, file, n).error("<param> takes no child elements, got <" + std::string(n.name()) + ">");
+      ElementReader(ctx_, file, n)
+          .error("<param> takes no child elements, got <" + std::string(n.name()) + ">");
     });
     if (!r.has("name") || !r.has("value")) {
       r.error("<param> needs 'name' and 'value'");
@@ -70,7 +72,9 @@ void SceneLoader::collectParams(const SourceFile& file) {
     }
     std::string name = r.verbatim("name");
     if (!Parameters::isValidName(name)) {
-      r.attrError("name", "a parameter name is letters, digits and '_', not starting with a digit; got '" + name + "'");
+      r.attrError("name",
+                  "a parameter name is letters, digits and '_', not starting with a digit; got '" +
+                      name + "'");
       continue;
     }
     ctx_.params.declare(name, r.verbatim("value"), file, c);
@@ -89,7 +93,8 @@ void SceneLoader::include(const SourceFile& from, pugi::xml_node element) {
   ElementReader r(ctx_, from, element);
   r.checkAttributes({"src"});
   r.forEachChild([&](pugi::xml_node n) {
-    ElementReader(ctx_, from, n).error("<include> takes no child elements, got <" + std::string(n.name()) + ">");
+    ElementReader(ctx_, from, n)
+        .error("<include> takes no child elements, got <" + std::string(n.name()) + ">");
   });
   if (!r.has("src")) {
     r.error("<include> needs a 'src' attribute (the scene file to insert)");
@@ -147,8 +152,8 @@ void SceneLoader::include(const SourceFile& from, pugi::xml_node element) {
     return;
   }
   // A library file names no other files (but lucent: ones), so its folder is never used.
-  files_.push_back(std::make_unique<SourceFile>(display, fromLibrary ? fs::path(".") : f.path.parent_path(),
-                                                std::move(text)));
+  files_.push_back(std::make_unique<SourceFile>(
+      display, fromLibrary ? fs::path(".") : f.path.parent_path(), std::move(text)));
   SourceFile& file = *files_.back();
   if (!parseFile(file, true)) return;
   stack_.push_back({f.path, display});

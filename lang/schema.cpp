@@ -32,14 +32,20 @@ std::string typeName(const AttributeInfo& a) {
       if (a.rule.lo == 0.0) return "nonNegativeNumber";
       return "number";  // other ranges the parser checks alone
     case AttrType::Vector:
-    case AttrType::Direction: return "vector3";
-    case AttrType::Boolean: return "boolean";
-    case AttrType::Text: return "xs:string";
-    case AttrType::File: return "path";
+    case AttrType::Direction:
+      return "vector3";
+    case AttrType::Boolean:
+      return "boolean";
+    case AttrType::Text:
+      return "xs:string";
+    case AttrType::File:
+      return "path";
     case AttrType::NumberList:
       return a.listArity == 3 ? "tripleList" : (a.listArity == 2 ? "pairList" : "numberList");
-    case AttrType::IntegerList: return "indexTripleList";
-    case AttrType::Choice: return "";
+    case AttrType::IntegerList:
+      return "indexTripleList";
+    case AttrType::Choice:
+      return "";
   }
   throw std::logic_error("schema: unknown attribute type");
 }
@@ -51,9 +57,12 @@ std::string attributeXsd(const AttributeInfo& a) {
   if (a.required) head += " use=\"required\"";
   else if (!a.defaultText.empty()) head += fmt::format(" default=\"{}\"", escaped(a.defaultText));
   std::string doc = a.doc;
-  if (!a.required && !a.defaultText.empty()) doc += (doc.empty() ? "" : " ") + ("Default " + a.defaultText + ".");
+  if (!a.required && !a.defaultText.empty())
+    doc += (doc.empty() ? "" : " ") + ("Default " + a.defaultText + ".");
   std::string out = head + ">\n";
-  out += fmt::format("          <xs:annotation><xs:documentation>{}</xs:documentation></xs:annotation>\n", escaped(doc));
+  out += fmt::format(
+      "          <xs:annotation><xs:documentation>{}</xs:documentation></xs:annotation>\n",
+      escaped(doc));
   if (type.empty()) {
     out += "          <xs:simpleType>\n            <xs:union memberTypes=\"parameterReference\">\n";
     out += "              <xs:simpleType>\n                <xs:restriction base=\"xs:token\">\n";
@@ -79,14 +88,18 @@ std::string shapeElements() {
 // A shape with child elements of its own (a blob's <component>): leafType's children (local
 // parameters, one inline material) and its own, in any order, and the node attributes.
 std::string shapeWithChildrenXsd(const ShapeType& t) {
-  std::string out = fmt::format("  <xs:complexType name=\"{}Type\">\n"
-                                "    <xs:choice minOccurs=\"0\" maxOccurs=\"unbounded\">\n"
-                                "      <xs:group ref=\"localParam\"/>\n"
-                                "      <xs:element name=\"material\" type=\"inlineMaterialType\"/>\n", t.element);
+  std::string out = fmt::format(
+      "  <xs:complexType name=\"{}Type\">\n"
+      "    <xs:choice minOccurs=\"0\" maxOccurs=\"unbounded\">\n"
+      "      <xs:group ref=\"localParam\"/>\n"
+      "      <xs:element name=\"material\" type=\"inlineMaterialType\"/>\n",
+      t.element);
   for (const ChildElementInfo& c : t.children)
-    out += fmt::format("      <xs:element name=\"{0}\" type=\"{1}{0}Type\">\n"
-                       "        <xs:annotation><xs:documentation>{2}</xs:documentation></xs:annotation>\n"
-                       "      </xs:element>\n", c.name, t.element, escaped(c.doc));
+    out += fmt::format(
+        "      <xs:element name=\"{0}\" type=\"{1}{0}Type\">\n"
+        "        <xs:annotation><xs:documentation>{2}</xs:documentation></xs:annotation>\n"
+        "      </xs:element>\n",
+        c.name, t.element, escaped(c.doc));
   out += "    </xs:choice>\n    <xs:attributeGroup ref=\"nodeAttributes\"/>\n";
   for (const AttributeInfo& a : t.attributes) out += attributeXsd(a);
   out += "  </xs:complexType>\n\n";
@@ -106,8 +119,10 @@ std::string shapeTypesXsd() {
       out += shapeWithChildrenXsd(t);
       continue;
     }
-    out += fmt::format("  <xs:complexType name=\"{}Type\">\n    <xs:complexContent>\n"
-                       "      <xs:extension base=\"leafType\">\n", t.element);
+    out += fmt::format(
+        "  <xs:complexType name=\"{}Type\">\n    <xs:complexContent>\n"
+        "      <xs:extension base=\"leafType\">\n",
+        t.element);
     for (const AttributeInfo& a : t.attributes) out += attributeXsd(a);
     out += "      </xs:extension>\n    </xs:complexContent>\n  </xs:complexType>\n\n";
   }
@@ -122,7 +137,8 @@ std::string shapeXpath() {
 
 void replaceOnce(std::string& text, std::string_view marker, const std::string& with) {
   size_t at = text.find(marker);
-  if (at == std::string::npos) throw std::logic_error("schema template: no marker " + std::string(marker));
+  if (at == std::string::npos)
+    throw std::logic_error("schema template: no marker " + std::string(marker));
   text.replace(at, marker.size(), with);
 }
 

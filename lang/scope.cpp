@@ -17,7 +17,8 @@ std::string instanceNote(const Scope* scope) {
     ++repeats;
   }
   if (!repeats) return "";
-  return " (in the instance " + vars + " of the <repeat>" + (repeats > 1 ? "s" : "") + " at " + where + ")";
+  return " (in the instance " + vars + " of the <repeat>" + (repeats > 1 ? "s" : "") + " at " +
+         where + ")";
 }
 
 }  // namespace lucent

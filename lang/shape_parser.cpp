@@ -17,7 +17,9 @@ class ElementInput final : public AttributeInput {
   explicit ElementInput(ElementReader& r) : r_(r) {}
 
   bool has(const char* attr) const override { return r_.has(attr); }
-  double number(const char* attr, double def, const NumberRule& rule) override { return r_.number(attr, def, rule); }
+  double number(const char* attr, double def, const NumberRule& rule) override {
+    return r_.number(attr, def, rule);
+  }
   Vec3 vector(const char* attr, const Vec3& def) override { return r_.vector(attr, def); }
   Vec3 direction(const char* attr, const Vec3& def) override { return r_.direction(attr, def); }
   bool boolean(const char* attr, bool def) override { return r_.boolean(attr, def); }
@@ -48,7 +50,8 @@ class ElementInput final : public AttributeInput {
     return *list;
   }
   std::shared_ptr<const MeshData> meshFile(const char* attr, bool* firstRead) override;
-  std::optional<FunctionInput> function(const char* attr, const std::vector<std::string>& variables) override {
+  std::optional<FunctionInput> function(const char* attr,
+                                        const std::vector<std::string>& variables) override {
     std::optional<FunctionText> f = r_.function(attr, variables);
     if (!f) return std::nullopt;
     FunctionInput in;
@@ -75,7 +78,8 @@ class ElementInput final : public AttributeInput {
   }
   std::shared_ptr<const HeightMap> heightMapFile(const char* attr, std::string& resolved) override;
 
-  void forEachChild(const char* element, const std::function<void(AttributeInput&)>& read) override {
+  void forEachChild(const char* element,
+                    const std::function<void(AttributeInput&)>& read) override {
     const ShapeType* t = findShapeType(r_.element().name());
     const ChildElementInfo* info = t ? t->child(element) : nullptr;
     std::vector<std::string_view> allowed;
@@ -85,7 +89,8 @@ class ElementInput final : public AttributeInput {
       ElementReader cr(r_.ctx(), r_.file(), c);
       cr.checkAttributes(allowed);
       cr.forEachChild([&](pugi::xml_node g) {
-        ElementReader(r_.ctx(), r_.file(), g).error("<" + std::string(g.name()) + "> is not allowed inside " + cr.tag());
+        ElementReader(r_.ctx(), r_.file(), g)
+            .error("<" + std::string(g.name()) + "> is not allowed inside " + cr.tag());
         cr.markFailed();
       });
       ElementInput in(cr);
@@ -94,7 +99,9 @@ class ElementInput final : public AttributeInput {
     }
   }
 
-  void attrError(const char* attr, const std::string& message) override { r_.attrError(attr, message); }
+  void attrError(const char* attr, const std::string& message) override {
+    r_.attrError(attr, message);
+  }
   void error(const std::string& message) override { r_.error(message); }
   void warning(const std::string& message) override { r_.warning(message); }
   bool failed() const override { return r_.failed(); }
@@ -121,7 +128,8 @@ std::shared_ptr<const MeshData> ElementInput::meshFile(const char* attr, bool* f
   }
 }
 
-std::shared_ptr<const HeightMap> ElementInput::heightMapFile(const char* attr, std::string& resolved) {
+std::shared_ptr<const HeightMap> ElementInput::heightMapFile(const char* attr,
+                                                             std::string& resolved) {
   auto src = r_.text(attr);
   if (!src) return nullptr;
   FileAccess::Resolved f = r_.ctx().files.resolve(*src, r_.file().folder());

@@ -19,7 +19,8 @@ void parseSky(ElementReader& r) {
     ElementReader c(r.ctx(), r.file(), n);
     if (std::string_view(n.name()) != "pattern") {
       wrongChild = true;
-      c.error("<sky> holds one <pattern> (with its <color-map>), not <" + std::string(n.name()) + ">");
+      c.error("<sky> holds one <pattern> (with its <color-map>), not <" + std::string(n.name()) +
+              ">");
       return;
     }
     if (found) {

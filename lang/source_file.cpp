@@ -53,8 +53,8 @@ std::optional<Diagnostic> SourceFile::parse() {
   // In-place parsing keeps names and values inside text_, so a pointer minus text_.data()
   // is a byte offset for attributes too (pugixml's offset_debug() covers nodes only).
   // No document buffer is copied, which also halves the memory of large inline meshes.
-  pugi::xml_parse_result r =
-      doc_.load_buffer_inplace(text_.data(), text_.size(), pugi::parse_default, pugi::encoding_utf8);
+  pugi::xml_parse_result r = doc_.load_buffer_inplace(text_.data(), text_.size(),
+                                                      pugi::parse_default, pugi::encoding_utf8);
   if (r) return std::nullopt;
   Diagnostic d;
   d.loc = locAt(r.offset < 0 ? 0 : static_cast<size_t>(r.offset));
@@ -99,7 +99,8 @@ SourceLoc SourceFile::valueLoc(pugi::xml_attribute attr, pugi::xml_node owner) c
   return nameLoc(attr, owner);
 }
 
-SourceLoc SourceFile::locInValue(pugi::xml_attribute attr, pugi::xml_node owner, size_t offset) const {
+SourceLoc SourceFile::locInValue(pugi::xml_attribute attr, pugi::xml_node owner,
+                                 size_t offset) const {
   auto start = *attr.value() ? offsetOf(attr.value()) : std::nullopt;
   if (!start) return valueLoc(attr, owner);
   size_t lost = 0;

@@ -57,7 +57,7 @@ class SourceFile {
 
   std::string display_;
   std::filesystem::path folder_;
-  std::string text_;              // pugixml parses it in place: never reallocated after parse()
+  std::string text_;                // pugixml parses it in place: never reallocated after parse()
   std::vector<size_t> lineStarts_;  // computed before parsing rewrites newlines in values
   // Where the text shrinks when parsed (an entity, a "\r\n"): offset and bytes lost.
   std::vector<std::pair<size_t, size_t>> shrinks_;

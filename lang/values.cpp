@@ -75,13 +75,18 @@ Parsed<double> parseNumber(std::string_view text, bool allowInfinity) {
   // from_chars leaves the value unset on overflow and on underflow alike: refuse both.
   if (ec == std::errc::result_out_of_range)
     return {std::nullopt, "the number " + quote(t) + " is out of the range of double precision"};
-  if (std::isnan(value)) return {std::nullopt, "expected a number, got " + quote(t) + " (NaN is not allowed)"};
+  if (std::isnan(value))
+    return {std::nullopt, "expected a number, got " + quote(t) + " (NaN is not allowed)"};
   if (std::isinf(value) && !allowInfinity)
-    return {std::nullopt, "expected a finite number, got " + quote(t) + " (inf is allowed only for distances that may be infinite)"};
+    return {std::nullopt, "expected a finite number, got " + quote(t) +
+                              " (inf is allowed only for distances that may be infinite)"};
   if (!allowInfinity && std::abs(value) > kMaxMagnitude)
-    return {std::nullopt, "the number " + quote(t) + " is too large (the limit is 1e30 in magnitude)"};
+    return {std::nullopt,
+            "the number " + quote(t) + " is too large (the limit is 1e30 in magnitude)"};
   if (value != 0.0 && std::abs(value) < kMinMagnitude)
-    return {std::nullopt, "the number " + quote(t) + " is too small (a nonzero number must be at least 1e-30 in magnitude)"};
+    return {std::nullopt,
+            "the number " + quote(t) +
+                " is too small (a nonzero number must be at least 1e-30 in magnitude)"};
   return {value, {}};
 }
 
@@ -104,7 +109,8 @@ Parsed<Vec3> parseVector(std::string_view text) {
   if (!list) return {std::nullopt, list.error};
   const auto& v = *list;
   if (v.size() != 3)
-    return {std::nullopt, "expected 3 numbers, got " + std::to_string(v.size()) + " (" + quote(trim(text)) + ")"};
+    return {std::nullopt,
+            "expected 3 numbers, got " + std::to_string(v.size()) + " (" + quote(trim(text)) + ")"};
   return {Vec3(v[0], v[1], v[2]), {}};
 }
 
@@ -188,8 +194,9 @@ Parsed<ParsedColor> parseColor(std::string_view text) {
   } else if (v.size() == 3) {
     pc.color = Color(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
   } else {
-    return {std::nullopt, "expected a colour (3 numbers, 1 number for grey, #rrggbb or a CSS colour name), got " +
-                              std::to_string(v.size()) + " numbers (" + quote(t) + ")"};
+    return {std::nullopt,
+            "expected a colour (3 numbers, 1 number for grey, #rrggbb or a CSS colour name), got " +
+                std::to_string(v.size()) + " numbers (" + quote(t) + ")"};
   }
   // Unreachable while numbers stop at kMaxMagnitude (1e30 < FLT_MAX); kept should that change.
   if (!std::isfinite(pc.color.r) || !std::isfinite(pc.color.g) || !std::isfinite(pc.color.b))

@@ -25,7 +25,8 @@ class FileCache {
     const auto modified = std::filesystem::last_write_time(key, ec);
     const std::uintmax_t size = ec ? 0 : std::filesystem::file_size(key, ec);
     if (auto it = entries_.find(key); it != entries_.end()) {
-      if (!ec && it->second.modified == modified && it->second.size == size) return it->second.value;
+      if (!ec && it->second.modified == modified && it->second.size == size)
+        return it->second.value;
       entries_.erase(it);
     }
     std::shared_ptr<const T> value = load();

@@ -55,8 +55,8 @@ std::optional<MeshData> cleanClosedMesh(const std::vector<Vec3>& points,
     };
     std::sort(order.begin(), order.end(), less);
     for (size_t k = 0; k < n; ++k)
-      canon[order[k]] = k > 0 && points[order[k]] == points[order[k - 1]] ? canon[order[k - 1]]
-                                                                           : order[k];
+      canon[order[k]] =
+          k > 0 && points[order[k]] == points[order[k - 1]] ? canon[order[k - 1]] : order[k];
   }
 
   HugeVector<std::array<uint32_t, 3>> tris(m);

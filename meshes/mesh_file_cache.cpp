@@ -4,8 +4,10 @@
 
 namespace lucent {
 
-std::shared_ptr<const MeshData> MeshFileCache::get(const std::string& canonicalPath, bool* firstRead) {
-  return files_.get(canonicalPath, [&] { return loadMeshFile(canonicalPath); }, firstRead);
+std::shared_ptr<const MeshData> MeshFileCache::get(const std::string& canonicalPath,
+                                                   bool* firstRead) {
+  return files_.get(
+      canonicalPath, [&] { return loadMeshFile(canonicalPath); }, firstRead);
 }
 
 }  // namespace lucent

@@ -23,17 +23,22 @@ MeshFormat meshFormatOf(const std::string& path) {
   if (ext == ".ply") return MeshFormat::Ply;
   if (ext == ".off") return MeshFormat::Off;
   if (ext == ".stl") return MeshFormat::Stl;
-  if (ext.empty()) throw MeshError("the file name has no extension; expected .obj, .ply, .off or .stl");
+  if (ext.empty())
+    throw MeshError("the file name has no extension; expected .obj, .ply, .off or .stl");
   throw MeshError(fmt::format("unknown mesh format '{}'; expected .obj, .ply, .off or .stl",
                               fs::path(path).extension().string()));
 }
 
 const char* meshFormatName(MeshFormat format) {
   switch (format) {
-    case MeshFormat::Obj: return "OBJ";
-    case MeshFormat::Ply: return "PLY";
-    case MeshFormat::Off: return "OFF";
-    case MeshFormat::Stl: return "STL";
+    case MeshFormat::Obj:
+      return "OBJ";
+    case MeshFormat::Ply:
+      return "PLY";
+    case MeshFormat::Off:
+      return "OFF";
+    case MeshFormat::Stl:
+      return "STL";
   }
   return "?";
 }
@@ -71,19 +76,22 @@ void checkStlBytes(std::string& bytes) {
   while (start < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[start]))) ++start;
   const bool startsWithSolid = bytes.compare(start, 5, "solid") == 0;
   uint32_t count = 0;
-  if (bytes.size() >= 84) std::memcpy(&count, bytes.data() + 80, 4);  // little-endian, like the host
+  if (bytes.size() >= 84)
+    std::memcpy(&count, bytes.data() + 80, 4);  // little-endian, like the host
   const unsigned long long needed = 84ull + 50ull * count;
 
   if (bytes.size() < 84 || needed > bytes.size()) {  // can only be ASCII
     if (!startsWithSolid) {
       if (bytes.size() < 84)
-        throw MeshError(fmt::format("the file is too short ({} bytes) for a binary STL, which has "
-                                    "an 84-byte header, and does not start with 'solid' like an "
-                                    "ASCII STL",
-                                    bytes.size()));
-      throw MeshError(fmt::format("the binary STL is truncated: its header announces {} triangles "
-                                  "({} bytes), but the file has {} bytes",
-                                  count, needed, bytes.size()));
+        throw MeshError(
+            fmt::format("the file is too short ({} bytes) for a binary STL, which has "
+                        "an 84-byte header, and does not start with 'solid' like an "
+                        "ASCII STL",
+                        bytes.size()));
+      throw MeshError(
+          fmt::format("the binary STL is truncated: its header announces {} triangles "
+                      "({} bytes), but the file has {} bytes",
+                      count, needed, bytes.size()));
     }
     const std::size_t after = start + 5;
     if (after < bytes.size()) {
@@ -97,16 +105,18 @@ void checkStlBytes(std::string& bytes) {
   // the ASCII reader first.
   if (startsWithSolid && start < 80) bytes[start] = 'S';
   if (count > kMaxMeshFaces)
-    throw MeshError(fmt::format("the binary STL has {} triangles; the limit is {}", count, kMaxMeshFaces));
+    throw MeshError(
+        fmt::format("the binary STL has {} triangles; the limit is {}", count, kMaxMeshFaces));
   for (uint32_t t = 0; t < count; ++t) {
     const char* record = bytes.data() + 84 + 50ull * t;
     for (int k = 3; k < 12; ++k) {  // skip the facet normal, which CGAL ignores
       float v;
       std::memcpy(&v, record + 4 * k, 4);
       if (!std::isfinite(v))
-        throw MeshError(fmt::format("binary STL triangle {} (counting from 0) has a non-finite "
-                                    "vertex coordinate",
-                                    t));
+        throw MeshError(
+            fmt::format("binary STL triangle {} (counting from 0) has a non-finite "
+                        "vertex coordinate",
+                        t));
     }
   }
 }

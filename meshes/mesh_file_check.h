@@ -22,7 +22,7 @@ enum class MeshFormat { Obj, Ply, Off, Stl };
 // Limits that keep a hostile or broken file from exhausting memory. A mesh at the limits
 // costs a few GB inside CGAL (soup, then halfedge mesh); real scenes stay far below them.
 constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t{1} << 30;  // 1 GiB
-constexpr std::size_t kMaxMeshVertices = std::size_t{1} << 24;        // 16,777,216
+constexpr std::size_t kMaxMeshVertices = std::size_t{1} << 24;         // 16,777,216
 constexpr std::size_t kMaxMeshFaces = std::size_t{1} << 24;
 constexpr std::size_t kMaxFaceVertices = std::size_t{1} << 16;  // corners of one polygon
 
@@ -52,8 +52,10 @@ struct VertexAttributes {
 // PLY: normals from nx ny nz, texture coordinates from s t, u v, texture_u texture_v or
 // texture_s texture_t (each pair only when both are scalars of the vertex element);
 // colours are checked and ignored.
-void checkOffBytes(std::string_view bytes, VertexAttributes* attributes = nullptr);  // ASCII OFF, COFF, NOFF, CNOFF
-MeshCounts checkPlyBytes(std::string_view bytes, VertexAttributes* attributes = nullptr);  // ASCII and binary PLY
+void checkOffBytes(std::string_view bytes,
+                   VertexAttributes* attributes = nullptr);  // ASCII OFF, COFF, NOFF, CNOFF
+MeshCounts checkPlyBytes(std::string_view bytes,
+                         VertexAttributes* attributes = nullptr);  // ASCII and binary PLY
 // ASCII and binary STL; settles the layout for CGAL's reader, editing the buffer if needed.
 void checkStlBytes(std::string& bytes);
 // OBJ is walked by scanObj (obj_scan.h), which also collects normals and texture coordinates.

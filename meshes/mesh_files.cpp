@@ -11,9 +11,9 @@
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
+#include <malloc.h>
 #include <boost/iostreams/device/array.hpp>
 #include <boost/iostreams/stream.hpp>
-#include <malloc.h>
 
 #include <algorithm>
 #include <cmath>
@@ -35,14 +35,23 @@ Soup readSoup(const std::string& bytes, MeshFormat format, MeshCounts expected) 
   const auto quiet = CGAL::parameters::verbose(false);
   bool ok = false;
   switch (format) {
-    case MeshFormat::Obj: ok = CGAL::IO::read_OBJ(in, points, polygons, quiet); break;
-    case MeshFormat::Off: ok = CGAL::IO::read_OFF(in, points, polygons, quiet); break;
-    case MeshFormat::Ply: ok = CGAL::IO::read_PLY(in, points, polygons, quiet); break;
-    case MeshFormat::Stl: ok = CGAL::IO::read_STL(in, points, polygons, quiet); break;
+    case MeshFormat::Obj:
+      ok = CGAL::IO::read_OBJ(in, points, polygons, quiet);
+      break;
+    case MeshFormat::Off:
+      ok = CGAL::IO::read_OFF(in, points, polygons, quiet);
+      break;
+    case MeshFormat::Ply:
+      ok = CGAL::IO::read_PLY(in, points, polygons, quiet);
+      break;
+    case MeshFormat::Stl:
+      ok = CGAL::IO::read_STL(in, points, polygons, quiet);
+      break;
   }
   if (!ok)
-    throw MeshError(fmt::format("CGAL's {} reader could not read the file (malformed or truncated data)",
-                                meshFormatName(format)));
+    throw MeshError(
+        fmt::format("CGAL's {} reader could not read the file (malformed or truncated data)",
+                    meshFormatName(format)));
   // Moved, not copied: the polygons are most of a large mesh's memory.
   Soup soup;
   soup.points = std::move(static_cast<std::vector<Point>&>(points));
@@ -89,7 +98,8 @@ CornerAttributes vertexAttributes(const VertexAttributes& file, const Soup& soup
     attrs.normals.reserve(n);
     for (const Vec3& normal : file.normals) {
       const double length = glm::length(normal);
-      attrs.normals.push_back(length > 0 && std::isfinite(length) ? normal / length : Vec3(0, 0, 1));
+      attrs.normals.push_back(length > 0 && std::isfinite(length) ? normal / length
+                                                                  : Vec3(0, 0, 1));
     }
   }
   if (uvs) attrs.uvs = file.uvs;
@@ -121,9 +131,15 @@ std::shared_ptr<MeshData> loadMeshBytes(std::string bytes, MeshFormat format) {
       obj = scanObj(bytes);
       counts = {obj->vertexCount, obj->faceCount()};
       break;
-    case MeshFormat::Ply: counts = checkPlyBytes(bytes, &vertex); break;
-    case MeshFormat::Off: checkOffBytes(bytes, &vertex); break;
-    case MeshFormat::Stl: checkStlBytes(bytes); break;
+    case MeshFormat::Ply:
+      counts = checkPlyBytes(bytes, &vertex);
+      break;
+    case MeshFormat::Off:
+      checkOffBytes(bytes, &vertex);
+      break;
+    case MeshFormat::Stl:
+      checkStlBytes(bytes);
+      break;
   }
   return guarded([&] {
     Soup soup = readSoup(bytes, format, counts);

@@ -1,7 +1,7 @@
 #include "obj_scan.h"
 
-#include "mesh_file_check.h"
 #include "mesh_error.h"
+#include "mesh_file_check.h"
 #include "mesh_text.h"
 
 #include <fmt/format.h>
@@ -19,10 +19,12 @@ using namespace meshtext;
 // Statements CGAL's reader accepts and skips (CGAL/IO/OBJ.h, 5.5). Anything else makes it
 // refuse the file, so we refuse it first, with the line number.
 constexpr std::array<std::string_view, 43> kSkipped = {
-    "vp", "bevel", "lod", "ctech", "c_interp", "usemap", "usemtl", "stech", "d_interp", "mtllib",
-    "shadow_obj", "trace_obj", "o", "g", "s", "p", "cstype", "deg", "step", "bmat", "con", "curv",
-    "curv2", "surf", "parm", "trim", "hole", "scrv", "sp", "end", "surf_1", "q0_1", "q1_1",
-    "curv2d_1", "surf_2", "q0_2", "q1_2", "curv2d_2", "bsp", "bzp", "cdc", "cdp", "res"};
+    "vp",       "bevel",    "lod",        "ctech",     "c_interp", "usemap",   "usemtl", "stech",
+    "d_interp", "mtllib",   "shadow_obj", "trace_obj", "o",        "g",        "s",      "p",
+    "cstype",   "deg",      "step",       "bmat",      "con",      "curv",     "curv2",  "surf",
+    "parm",     "trim",     "hole",       "scrv",      "sp",       "end",      "surf_1", "q0_1",
+    "q1_1",     "curv2d_1", "surf_2",     "q0_2",      "q1_2",     "curv2d_2", "bsp",    "bzp",
+    "cdc",      "cdp",      "res"};
 
 [[noreturn]] void fail(std::size_t line, const std::string& message) {
   throw MeshError(fmt::format("OBJ line {}: {}", line, message));
@@ -41,7 +43,8 @@ struct MaxRef {
 };
 
 // Resolves an OBJ reference (1-based, or negative = relative to the count so far) to 0-based.
-long long resolve(long long ref, std::size_t countSoFar, const char* what, std::size_t line, MaxRef& max) {
+long long resolve(long long ref, std::size_t countSoFar, const char* what, std::size_t line,
+                  MaxRef& max) {
   if (ref == 0) fail(line, fmt::format("{} index 0 is invalid (OBJ counts from 1)", what));
   if (ref > 0) {
     max.note(ref, line);
@@ -55,7 +58,8 @@ long long resolve(long long ref, std::size_t countSoFar, const char* what, std::
 }  // namespace
 
 ObjScan scanObj(std::string& bytes) {
-  if (bytes.size() >= 2 && ((bytes[0] == '\xFE' && bytes[1] == '\xFF') || (bytes[0] == '\xFF' && bytes[1] == '\xFE')))
+  if (bytes.size() >= 2 &&
+      ((bytes[0] == '\xFE' && bytes[1] == '\xFF') || (bytes[0] == '\xFF' && bytes[1] == '\xFE')))
     throw MeshError("the OBJ file is UTF-16 text; save it as ASCII or UTF-8");
   if (bytes.compare(0, 3, "\xEF\xBB\xBF") == 0) bytes.replace(0, 3, "   ");  // UTF-8 BOM
   // CGAL skips from one face corner to the next with ignore(256, ' '): tabs would hide corners.
@@ -66,7 +70,8 @@ ObjScan scanObj(std::string& bytes) {
   Lines lines(bytes);
   std::string_view line;
   std::vector<std::string_view> tok;
-  const long long intMin = std::numeric_limits<int>::min(), intMax = std::numeric_limits<int>::max();
+  const long long intMin = std::numeric_limits<int>::min(),
+                  intMax = std::numeric_limits<int>::max();
 
   while (lines.next(line)) {
     const std::size_t n = lines.number();
@@ -74,8 +79,7 @@ ObjScan scanObj(std::string& bytes) {
     if (tok.empty()) continue;
     const std::string_view s = tok[0];
     auto numbers = [&](std::size_t needed, double* out) {
-      if (tok.size() < needed + 1)
-        fail(n, fmt::format("'{}' needs {} numbers", shown(s), needed));
+      if (tok.size() < needed + 1) fail(n, fmt::format("'{}' needs {} numbers", shown(s), needed));
       for (std::size_t i = 0; i < needed; ++i)
         if (!parseReal(tok[i + 1], out[i]))
           fail(n, fmt::format("'{}' is not a finite number", shown(tok[i + 1])));
@@ -101,7 +105,8 @@ ObjScan scanObj(std::string& bytes) {
       const double length = glm::length(normal);
       scan.normals.push_back(length > 0 && std::isfinite(length) ? normal / length : Vec3(0));
     } else if (s == "f") {
-      if (scan.faceCount() >= kMaxMeshFaces) fail(n, fmt::format("more than {} faces", kMaxMeshFaces));
+      if (scan.faceCount() >= kMaxMeshFaces)
+        fail(n, fmt::format("more than {} faces", kMaxMeshFaces));
       std::size_t cornerCount = 0;
       for (std::size_t i = 1; i < tok.size(); ++i) {
         const std::string_view c = tok[i];
@@ -113,7 +118,9 @@ ObjScan scanObj(std::string& bytes) {
         std::size_t count = 0, start = 0;
         for (std::size_t k = 0; k <= c.size(); ++k) {
           if (k == c.size() || c[k] == '/') {
-            if (count == 3) fail(n, fmt::format("'{}' is not a face corner (v, v/vt, v//vn or v/vt/vn)", shown(c)));
+            if (count == 3)
+              fail(n,
+                   fmt::format("'{}' is not a face corner (v, v/vt, v//vn or v/vt/vn)", shown(c)));
             parts[count++] = c.substr(start, k - start);
             start = k + 1;
           }
@@ -128,11 +135,13 @@ ObjScan scanObj(std::string& bytes) {
         ObjScan::Corner corner;
         if (count >= 2 && !parts[1].empty()) {
           parsePart(parts[1], t);
-          corner.texcoord = static_cast<int32_t>(resolve(t, scan.texcoords.size(), "texture coordinate", n, maxTexcoord));
+          corner.texcoord = static_cast<int32_t>(
+              resolve(t, scan.texcoords.size(), "texture coordinate", n, maxTexcoord));
         }
         if (count == 3) {
           parsePart(parts[2], nn);
-          corner.normal = static_cast<int32_t>(resolve(nn, scan.normals.size(), "normal", n, maxNormal));
+          corner.normal =
+              static_cast<int32_t>(resolve(nn, scan.normals.size(), "normal", n, maxNormal));
         }
         scan.everyCornerHasTexcoord &= corner.texcoord >= 0;
         scan.everyCornerHasNormal &= corner.normal >= 0;

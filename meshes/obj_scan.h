@@ -17,9 +17,9 @@
 namespace lucent {
 
 struct ObjScan {
-  std::size_t vertexCount = 0;   // 'v' statements
-  std::vector<Vec2> texcoords;   // 'vt' (u, v), in file order
-  std::vector<Vec3> normals;     // 'vn', normalised, in file order
+  std::size_t vertexCount = 0;  // 'v' statements
+  std::vector<Vec2> texcoords;  // 'vt' (u, v), in file order
+  std::vector<Vec3> normals;    // 'vn', normalised, in file order
   // Corners of face f are corners[faceStart[f] .. faceStart[f + 1]); each names the 0-based
   // texcoord and normal it uses, or -1.
   struct Corner {

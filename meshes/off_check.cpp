@@ -67,7 +67,8 @@ class OffCursor {
     if (end == std::string_view::npos) end = text_.size();
     std::string_view line = text_.substr(pos_, end - pos_);
     pos_ = end + 1;
-    if (std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    if (std::size_t hash = line.find('#'); hash != std::string_view::npos)
+      line = line.substr(0, hash);
     return line;
   }
 
@@ -104,9 +105,10 @@ OffHeader parseHeader(OffCursor& in) {
   if (prefix == "C" || prefix == "CN") h.colours = true;
   if (prefix == "N" || prefix == "CN") h.normals = true;
   if (!prefix.empty() && prefix != "C" && prefix != "N" && prefix != "CN")
-    fail(fmt::format("OFF variant '{}' is not supported (texture, homogeneous and n-dimensional "
-                     "OFF are not read reliably); use OFF, COFF, NOFF or CNOFF",
-                     std::string(keyword.substr(0, 20))));
+    fail(
+        fmt::format("OFF variant '{}' is not supported (texture, homogeneous and n-dimensional "
+                    "OFF are not read reliably); use OFF, COFF, NOFF or CNOFF",
+                    std::string(keyword.substr(0, 20))));
   in.skipComments();
   if (!in.atEnd() && std::isalpha(static_cast<unsigned char>(in.peek()))) {
     if (in.word() == "BINARY")
@@ -125,7 +127,8 @@ OffHeader parseHeader(OffCursor& in) {
   }
   if (h.vertices < 0 || h.faces < 0) fail("the OFF header has a negative count");
   if (static_cast<unsigned long long>(h.vertices) > kMaxMeshVertices)
-    fail(fmt::format("the OFF header declares {} vertices; the limit is {}", h.vertices, kMaxMeshVertices));
+    fail(fmt::format("the OFF header declares {} vertices; the limit is {}", h.vertices,
+                     kMaxMeshVertices));
   if (static_cast<unsigned long long>(h.faces) > kMaxMeshFaces)
     fail(fmt::format("the OFF header declares {} faces; the limit is {}", h.faces, kMaxMeshFaces));
   return h;
@@ -141,7 +144,8 @@ bool nextLine(OffCursor& in, std::vector<std::string_view>& tok, std::vector<dou
   numbers.resize(tok.size());
   for (std::size_t i = 0; i < tok.size(); ++i)
     if (!parseReal(tok[i], numbers[i]))
-      fail(fmt::format("OFF line {}: '{}' is not a number", line, std::string(tok[i].substr(0, 20))));
+      fail(fmt::format("OFF line {}: '{}' is not a number", line,
+                       std::string(tok[i].substr(0, 20))));
   return true;
 }
 
@@ -164,8 +168,9 @@ void checkColours(std::size_t count, const double* values, bool& seen, std::size
     for (int i = 0; i < 3; ++i) {
       const double byte = whole ? values[i] : values[i] * 255;
       if (!(byte >= 0 && byte < 256))
-        fail(fmt::format("OFF line {}: colour value {} is outside 0 to 255 (whole numbers) or 0 to 1",
-                         line, values[i]));
+        fail(fmt::format(
+            "OFF line {}: colour value {} is outside 0 to 255 (whole numbers) or 0 to 1", line,
+            values[i]));
     }
   }
 }
@@ -186,10 +191,13 @@ void checkOffBytes(std::string_view bytes, VertexAttributes* attributes) {
     if (!nextLine(in, tok, numbers, line))
       fail(fmt::format("the OFF file ends after {} of its {} vertices", v, h.vertices));
     if (numbers.size() < coords)
-      fail(fmt::format("OFF line {}: a vertex needs {} numbers, found {}", line, coords, numbers.size()));
-    if (h.colours) checkColours(numbers.size() - coords, numbers.data() + coords, vertexColours, line);
+      fail(fmt::format("OFF line {}: a vertex needs {} numbers, found {}", line, coords,
+                       numbers.size()));
+    if (h.colours)
+      checkColours(numbers.size() - coords, numbers.data() + coords, vertexColours, line);
     // CGAL reads a NOFF vertex as x y z nx ny nz, before any colour.
-    if (attributes && h.normals) attributes->normals.emplace_back(numbers[3], numbers[4], numbers[5]);
+    if (attributes && h.normals)
+      attributes->normals.emplace_back(numbers[3], numbers[4], numbers[5]);
   }
   for (long long f = 0; f < h.faces; ++f) {
     if (!nextLine(in, tok, numbers, line))
@@ -199,7 +207,8 @@ void checkOffBytes(std::string_view bytes, VertexAttributes* attributes) {
       fail(fmt::format("OFF line {}: '{}' is not a face vertex count between 0 and {}", line,
                        std::string(tok[0].substr(0, 20)), kMaxFaceVertices));
     if (tok.size() < static_cast<std::size_t>(n) + 1)
-      fail(fmt::format("OFF line {}: the face announces {} vertices but lists {}", line, n, tok.size() - 1));
+      fail(fmt::format("OFF line {}: the face announces {} vertices but lists {}", line, n,
+                       tok.size() - 1));
     for (long long k = 1; k <= n; ++k) {
       long long index = 0;
       if (!parseInt(tok[k], 0, h.vertices - 1, index))

@@ -9,8 +9,8 @@
 //   and be float or double; likewise colour and halfedge properties CGAL fetches by type.
 // Face indices are also range-checked here, to name the face in the message. Vertex normals
 // and texture coordinates, which CGAL's soup reader drops, are kept on the way.
-#include "mesh_file_check.h"
 #include "mesh_error.h"
+#include "mesh_file_check.h"
 #include "mesh_text.h"
 
 #include <fmt/format.h>
@@ -42,10 +42,18 @@ std::optional<PlyType> plyType(std::string_view name) {
 
 std::size_t byteSize(PlyType t) {
   switch (t) {
-    case PlyType::Int8: case PlyType::UInt8: return 1;
-    case PlyType::Int16: case PlyType::UInt16: return 2;
-    case PlyType::Int32: case PlyType::UInt32: case PlyType::Float32: return 4;
-    case PlyType::Float64: return 8;
+    case PlyType::Int8:
+    case PlyType::UInt8:
+      return 1;
+    case PlyType::Int16:
+    case PlyType::UInt16:
+      return 2;
+    case PlyType::Int32:
+    case PlyType::UInt32:
+    case PlyType::Float32:
+      return 4;
+    case PlyType::Float64:
+      return 8;
   }
   return 0;
 }
@@ -54,12 +62,30 @@ bool isReal(PlyType t) { return t == PlyType::Float32 || t == PlyType::Float64; 
 
 void intRange(PlyType t, long long& lo, long long& hi) {
   switch (t) {
-    case PlyType::Int8: lo = -128; hi = 127; return;
-    case PlyType::UInt8: lo = 0; hi = 255; return;
-    case PlyType::Int16: lo = -32768; hi = 32767; return;
-    case PlyType::UInt16: lo = 0; hi = 65535; return;
-    case PlyType::Int32: lo = std::numeric_limits<int32_t>::min(); hi = std::numeric_limits<int32_t>::max(); return;
-    default: lo = 0; hi = std::numeric_limits<uint32_t>::max(); return;
+    case PlyType::Int8:
+      lo = -128;
+      hi = 127;
+      return;
+    case PlyType::UInt8:
+      lo = 0;
+      hi = 255;
+      return;
+    case PlyType::Int16:
+      lo = -32768;
+      hi = 32767;
+      return;
+    case PlyType::UInt16:
+      lo = 0;
+      hi = 65535;
+      return;
+    case PlyType::Int32:
+      lo = std::numeric_limits<int32_t>::min();
+      hi = std::numeric_limits<int32_t>::max();
+      return;
+    default:
+      lo = 0;
+      hi = std::numeric_limits<uint32_t>::max();
+      return;
   }
 }
 
@@ -112,9 +138,10 @@ void checkColours(const PlyElement& e) {
   for (const char* tag : tags) {
     const PlyProperty* p = e.find(tag);
     if (p && !isScalarOf(p, PlyType::UInt8))
-      fail(fmt::format("PLY colour property '{}' (line {}) must be uchar like the other colour "
-                       "properties of '{}'",
-                       tag, p->line, e.name));
+      fail(
+          fmt::format("PLY colour property '{}' (line {}) must be uchar like the other colour "
+                      "properties of '{}'",
+                      tag, p->line, e.name));
   }
 }
 
@@ -131,18 +158,22 @@ void checkElementSemantics(const std::vector<PlyElement>& elements) {
       vertices += e.count;
       for (const char* axis : {"x", "y", "z"}) {
         const PlyProperty* p = e.find(axis);
-        if (!p) fail(fmt::format("PLY element '{}' (line {}) has no property '{}'", e.name, e.line, axis));
+        if (!p)
+          fail(
+              fmt::format("PLY element '{}' (line {}) has no property '{}'", e.name, e.line, axis));
         if (p->list || !isReal(p->type))
-          fail(fmt::format("PLY vertex property '{}' (line {}) must be float or double", axis, p->line));
+          fail(fmt::format("PLY vertex property '{}' (line {}) must be float or double", axis,
+                           p->line));
       }
       checkColours(e);
     } else if (e.isFace()) {
       haveFaceElement = true;
       faces += e.count;
       if (!faceIndexList(e))
-        fail(fmt::format("PLY element '{}' (line {}) has no 'vertex_indices' (or 'vertex_index') "
-                         "list of int or uint",
-                         e.name, e.line));
+        fail(
+            fmt::format("PLY element '{}' (line {}) has no 'vertex_indices' (or 'vertex_index') "
+                        "list of int or uint",
+                        e.name, e.line));
       checkColours(e);
     } else if (e.name == "halfedge") {
       for (const char* tag : {"source", "target"}) {
@@ -153,15 +184,18 @@ void checkElementSemantics(const std::vector<PlyElement>& elements) {
     }
   }
   if (!haveVertexElement) fail("the PLY header declares no 'vertex' element");
-  if (!haveFaceElement) fail("the PLY header declares no 'face' element (a point cloud has no surface)");
+  if (!haveFaceElement)
+    fail("the PLY header declares no 'face' element (a point cloud has no surface)");
   if (vertices > kMaxMeshVertices)
-    fail(fmt::format("the PLY header declares {} vertices; the limit is {}", vertices, kMaxMeshVertices));
+    fail(fmt::format("the PLY header declares {} vertices; the limit is {}", vertices,
+                     kMaxMeshVertices));
   if (faces > kMaxMeshFaces)
     fail(fmt::format("the PLY header declares {} faces; the limit is {}", faces, kMaxMeshFaces));
 }
 
 // Parses the header; returns the byte offset where the data starts.
-std::size_t parseHeader(std::string_view bytes, PlyEncoding& encoding, std::vector<PlyElement>& elements) {
+std::size_t parseHeader(std::string_view bytes, PlyEncoding& encoding,
+                        std::vector<PlyElement>& elements) {
   Lines lines(bytes);
   std::string_view line;
   std::vector<std::string_view> tok;
@@ -183,20 +217,25 @@ std::size_t parseHeader(std::string_view bytes, PlyEncoding& encoding, std::vect
       long long count = 0;
       if (tok.size() < 3 || !parseInt(tok[2], 0, std::numeric_limits<long long>::max(), count))
         fail(fmt::format("PLY header line {}: expected 'element <name> <count>'", n));
-      elements.push_back(PlyElement{std::string(tok[1]), static_cast<unsigned long long>(count), n, {}});
+      elements.push_back(
+          PlyElement{std::string(tok[1]), static_cast<unsigned long long>(count), n, {}});
     } else if (tok[0] == "property") {
       if (elements.empty()) fail(fmt::format("PLY header line {}: property before any element", n));
       PlyProperty p;
       if (tok.size() >= 2 && tok[1] == "list") {
-        if (tok.size() < 5) fail(fmt::format("PLY header line {}: expected 'property list <count type> <item type> <name>'", n));
+        if (tok.size() < 5)
+          fail(fmt::format(
+              "PLY header line {}: expected 'property list <count type> <item type> <name>'", n));
         auto count = plyType(tok[2]);
         auto item = plyType(tok[3]);
         if (!count || isReal(*count))
-          fail(fmt::format("PLY header line {}: list count type '{}' is not an integer type", n, tok[2]));
+          fail(fmt::format("PLY header line {}: list count type '{}' is not an integer type", n,
+                           tok[2]));
         if (!item) fail(fmt::format("PLY header line {}: unknown type '{}'", n, tok[3]));
         p = PlyProperty{std::string(tok[4]), n, true, *count, *item};
       } else {
-        if (tok.size() < 3) fail(fmt::format("PLY header line {}: expected 'property <type> <name>'", n));
+        if (tok.size() < 3)
+          fail(fmt::format("PLY header line {}: expected 'property <type> <name>'", n));
         auto type = plyType(tok[1]);
         if (!type) fail(fmt::format("PLY header line {}: unknown type '{}'", n, tok[1]));
         p = PlyProperty{std::string(tok[2]), n, false, PlyType::UInt8, *type};
@@ -229,14 +268,54 @@ class BinaryCursor {
     if (bigEndian_)
       for (std::size_t i = 0; i < n / 2; ++i) std::swap(b[i], b[n - 1 - i]);
     switch (t) {
-      case PlyType::Int8: { int8_t v; std::memcpy(&v, b, 1); value = v; break; }
-      case PlyType::UInt8: { uint8_t v; std::memcpy(&v, b, 1); value = v; break; }
-      case PlyType::Int16: { int16_t v; std::memcpy(&v, b, 2); value = v; break; }
-      case PlyType::UInt16: { uint16_t v; std::memcpy(&v, b, 2); value = v; break; }
-      case PlyType::Int32: { int32_t v; std::memcpy(&v, b, 4); value = v; break; }
-      case PlyType::UInt32: { uint32_t v; std::memcpy(&v, b, 4); value = v; break; }
-      case PlyType::Float32: { float v; std::memcpy(&v, b, 4); value = v; break; }
-      case PlyType::Float64: { double v; std::memcpy(&v, b, 8); value = v; break; }
+      case PlyType::Int8: {
+        int8_t v;
+        std::memcpy(&v, b, 1);
+        value = v;
+        break;
+      }
+      case PlyType::UInt8: {
+        uint8_t v;
+        std::memcpy(&v, b, 1);
+        value = v;
+        break;
+      }
+      case PlyType::Int16: {
+        int16_t v;
+        std::memcpy(&v, b, 2);
+        value = v;
+        break;
+      }
+      case PlyType::UInt16: {
+        uint16_t v;
+        std::memcpy(&v, b, 2);
+        value = v;
+        break;
+      }
+      case PlyType::Int32: {
+        int32_t v;
+        std::memcpy(&v, b, 4);
+        value = v;
+        break;
+      }
+      case PlyType::UInt32: {
+        uint32_t v;
+        std::memcpy(&v, b, 4);
+        value = v;
+        break;
+      }
+      case PlyType::Float32: {
+        float v;
+        std::memcpy(&v, b, 4);
+        value = v;
+        break;
+      }
+      case PlyType::Float64: {
+        double v;
+        std::memcpy(&v, b, 8);
+        value = v;
+        break;
+      }
     }
     return true;
   }
@@ -299,7 +378,8 @@ AttributeSlots attributeSlots(const PlyElement& e) {
     a.normals = true;
     for (int k = 0; k < 3; ++k) a.slot[static_cast<std::size_t>(n[k])] = k;
   }
-  const char* pairs[][2] = {{"s", "t"}, {"u", "v"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
+  const char* pairs[][2] = {
+      {"s", "t"}, {"u", "v"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
   for (const auto& pair : pairs) {
     const int u = indexOf(pair[0]), v = indexOf(pair[1]);
     if (u < 0 || v < 0) continue;
@@ -312,8 +392,8 @@ AttributeSlots attributeSlots(const PlyElement& e) {
 }
 
 template <class Cursor>
-void walkBody(Cursor& cursor, const std::vector<PlyElement>& elements, unsigned long long vertexTotal,
-              VertexAttributes* attributes) {
+void walkBody(Cursor& cursor, const std::vector<PlyElement>& elements,
+              unsigned long long vertexTotal, VertexAttributes* attributes) {
   for (const PlyElement& e : elements) {
     const bool vertex = e.isVertex();
     const PlyProperty* faceList = e.isFace() ? faceIndexList(e) : nullptr;
@@ -326,8 +406,9 @@ void walkBody(Cursor& cursor, const std::vector<PlyElement>& elements, unsigned 
       for (std::size_t i = 0; i < e.properties.size(); ++i) {
         const PlyProperty& p = e.properties[i];
         auto truncated = [&] {
-          fail(fmt::format("PLY data ends or is malformed in {} {} (counting from 0), property '{}'",
-                           e.name, item, p.name));
+          fail(
+              fmt::format("PLY data ends or is malformed in {} {} (counting from 0), property '{}'",
+                          e.name, item, p.name));
         };
         double value = 0;
         if (!p.list) {
@@ -372,15 +453,17 @@ MeshCounts checkPlyBytes(std::string_view bytes, VertexAttributes* attributes) {
     if (e.isFace()) faceTotal += e.count;
     const std::size_t item = minItemBytes(e, encoding);
     if (item > 0 && e.count > (data.size() + 1) / item)
-      fail(fmt::format("the PLY header declares {} '{}' elements, which need at least {} bytes, "
-                       "but the data has {} bytes",
-                       e.count, e.name, e.count * item, data.size()));
+      fail(
+          fmt::format("the PLY header declares {} '{}' elements, which need at least {} bytes, "
+                      "but the data has {} bytes",
+                      e.count, e.name, e.count * item, data.size()));
     needed += e.count * item;
   }
   if (needed > data.size() + 1)
-    fail(fmt::format("the PLY data is too short for the elements the header declares ({} bytes "
-                     "needed at least, {} present)",
-                     needed, data.size()));
+    fail(
+        fmt::format("the PLY data is too short for the elements the header declares ({} bytes "
+                    "needed at least, {} present)",
+                    needed, data.size()));
 
   if (encoding == PlyEncoding::Ascii) {
     AsciiCursor cursor(data);

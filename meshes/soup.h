@@ -12,8 +12,8 @@
 #include "primitives/value_limits.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <boost/container/small_vector.hpp>
 #include <fmt/format.h>
+#include <boost/container/small_vector.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -72,8 +72,8 @@ struct Soup {
 
 // Normals and texture coordinates of the input, per corner of each input polygon.
 struct CornerAttributes {
-  std::vector<Vec3> normals;  // empty: none
-  std::vector<Vec2> uvs;      // empty: none
+  std::vector<Vec3> normals;              // empty: none
+  std::vector<Vec2> uvs;                  // empty: none
   std::vector<std::size_t> polygonStart;  // corners of polygon p start at polygonStart[p]
   std::vector<int32_t> normalOf, uvOf;    // per corner, index into normals / uvs
 
@@ -92,7 +92,6 @@ inline constexpr std::uintmax_t kPipelineBytesPerPoint = 250;
 inline constexpr std::uintmax_t kPipelineBytesPerCorner = 170;
 
 void checkMemory(const Soup& soup);
-
 
 // The closed, outward-oriented (or open) triangle mesh of `soup`, with the attributes of
 // the corners each triangle came from (soup_repair.cpp).

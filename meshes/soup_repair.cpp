@@ -45,10 +45,11 @@ void checkSoup(const Soup& soup, const char* vertex, const char* vertices, const
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
     const Point& p = soup.points[i];
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw MeshError(fmt::format("{} {} (counting from 0) has a non-finite coordinate", vertex, i));
+      throw MeshError(
+          fmt::format("{} {} (counting from 0) has a non-finite coordinate", vertex, i));
     if (std::max({std::abs(p.x()), std::abs(p.y()), std::abs(p.z())}) > kMaxMagnitude)
-      throw MeshError(fmt::format("{} {} (counting from 0) has a coordinate beyond 1e30 in magnitude",
-                                  vertex, i));
+      throw MeshError(fmt::format(
+          "{} {} (counting from 0) has a coordinate beyond 1e30 in magnitude", vertex, i));
   }
   for (std::size_t f = 0; f < soup.polygons.size(); ++f)
     for (std::size_t index : soup.polygons[f])
@@ -64,10 +65,10 @@ void checkMemory(const Soup& soup) {
       soup.points.size() * kPipelineBytesPerPoint + corners * kPipelineBytesPerCorner;
   const std::optional<std::uintmax_t> available = availableMemoryBytes();
   if (available && need > *available)
-    throw MeshError(fmt::format("the mesh ({} vertices, {} faces) needs about {} of memory, more than "
-                                "the {} available",
-                                soup.points.size(), soup.polygons.size(), formatBytes(need),
-                                formatBytes(*available)));
+    throw MeshError(fmt::format(
+        "the mesh ({} vertices, {} faces) needs about {} of memory, more than "
+        "the {} available",
+        soup.points.size(), soup.polygons.size(), formatBytes(need), formatBytes(*available)));
 }
 
 namespace {
@@ -110,7 +111,7 @@ bool projectionIsSimple(const SurfaceMesh& mesh, SurfaceMesh::Face_index f) {
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
       if (glm::length(q[i] - q[j]) <= 1e-9 * size) return false;  // two corners on one point
-      if (j == i + 1 || (i == 0 && j == n - 1)) continue;          // neighbouring edges
+      if (j == i + 1 || (i == 0 && j == n - 1)) continue;         // neighbouring edges
       const Vec2 &a = q[i], &b = q[(i + 1) % n], &c = q[j], &d = q[(j + 1) % n];
       const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a),
                 o4 = orient(c, d, b);
@@ -168,7 +169,8 @@ std::size_t disagreeingFaces(const Soup& soup, const std::vector<char>& turned) 
     flipped[r] += turned[f] ? 1 : 0;
   }
   std::size_t wrong = 0;
-  for (std::size_t r = 0; r < total.size(); ++r) wrong += std::min(flipped[r], total[r] - flipped[r]);
+  for (std::size_t r = 0; r < total.size(); ++r)
+    wrong += std::min(flipped[r], total[r] - flipped[r]);
   return wrong;
 }
 
@@ -214,7 +216,8 @@ Soup usableTriangles(const SurfaceMesh& mesh, std::size_t& dropped) {
       continue;
     }
     Polygon t;
-    for (SurfaceMesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t.push_back(v);
+    for (SurfaceMesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      t.push_back(v);
     if (CGAL::collinear(tri.points[t[0]], tri.points[t[1]], tri.points[t[2]])) {
       ++dropped;
       continue;
@@ -272,11 +275,13 @@ MeshData solidOrSurface(Soup soup) {
   // walking around such a face never ends (PLY files found by fuzzing,
   // tests/fuzz/crashes/mesh_ply): check the halfedge structure before anything walks it.
   if (!mesh.is_valid(false))
-    throw MeshError("its polygons could not be split into triangles (a damaged or self-overlapping polygon)");
+    throw MeshError(
+        "its polygons could not be split into triangles (a damaged or self-overlapping polygon)");
   std::size_t dropped = 0;
   Soup triangles = usableTriangles(mesh, dropped);
   if (triangles.polygons.empty())
-    throw MeshError(fmt::format("no usable triangle: all {} faces are degenerate (zero area)", inputFaces));
+    throw MeshError(
+        fmt::format("no usable triangle: all {} faces are degenerate (zero area)", inputFaces));
   // Splitting a polygon can add an edge between two vertices that are already joined (a
   // polygon and triangles covering it: a flat "pillow"); the halfedge mesh allows such a
   // double edge, but then an edge is shared by more than two triangles. Going through the
@@ -321,9 +326,11 @@ bool carryAttributes(const Soup& input, const CornerAttributes& attrs, MeshData&
   for (std::size_t f = 0; f < input.polygons.size(); ++f)
     for (std::size_t j = 0; j < input.polygons[f].size(); ++j) {
       const Point& q = input.points[input.polygons[f][j]];
-      entries.push_back({Vec3(q.x(), q.y(), q.z()), static_cast<uint32_t>(f), static_cast<uint32_t>(j)});
+      entries.push_back(
+          {Vec3(q.x(), q.y(), q.z()), static_cast<uint32_t>(f), static_cast<uint32_t>(j)});
     }
-  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return lexLess(a.p, b.p); });
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& a, const Entry& b) { return lexLess(a.p, b.p); });
   auto cornerAt = [&](uint32_t f, const Vec3& p) -> int {
     const Polygon& poly = input.polygons[f];
     for (std::size_t j = 0; j < poly.size(); ++j) {
@@ -362,7 +369,8 @@ bool carryAttributes(const Soup& input, const CornerAttributes& attrs, MeshData&
       const int32_t n = withNormals ? attrs.normalOf[corner] : -1;
       const int32_t uv = withUVs ? attrs.uvOf[corner] : -1;
       auto& list = variants[t[k]];
-      auto it = std::find_if(list.begin(), list.end(), [&](const Variant& v) { return v.normal == n && v.uv == uv; });
+      auto it = std::find_if(list.begin(), list.end(),
+                             [&](const Variant& v) { return v.normal == n && v.uv == uv; });
       if (it == list.end()) {
         list.push_back({n, uv, static_cast<uint32_t>(result.positions.size())});
         result.positions.push_back(p[k]);
@@ -396,9 +404,11 @@ void finishMesh(MeshData& mesh) {
   const std::size_t n = mesh.positions.size();
   if (mesh.triangles.empty()) throw MeshError("the mesh has no triangles");
   if (!mesh.normals.empty() && mesh.normals.size() != n)
-    throw MeshError(fmt::format("{} normals for {} positions: give one normal per position", mesh.normals.size(), n));
+    throw MeshError(fmt::format("{} normals for {} positions: give one normal per position",
+                                mesh.normals.size(), n));
   if (!mesh.uvs.empty() && mesh.uvs.size() != n)
-    throw MeshError(fmt::format("{} uvs for {} positions: give one uv per position", mesh.uvs.size(), n));
+    throw MeshError(
+        fmt::format("{} uvs for {} positions: give one uv per position", mesh.uvs.size(), n));
 
   CornerAttributes attrs;
   for (std::size_t i = 0; i < mesh.normals.size(); ++i) {

@@ -29,7 +29,9 @@ FileBundle makeBundle(int frame, const fs::path& scene, const std::vector<FileGr
       in.seekg(0);
       in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     }
-    if (!in) throw cli::IoFailure(fmt::format("cannot read '{}' to send it to the other ranks", f.string()));
+    if (!in)
+      throw cli::IoFailure(
+          fmt::format("cannot read '{}' to send it to the other ranks", f.string()));
     b.files.emplace_back(f, std::move(bytes));
     sent.insert(f);
   }
@@ -39,7 +41,8 @@ FileBundle makeBundle(int frame, const fs::path& scene, const std::vector<FileGr
 std::vector<char> pack(const FileBundle& b) {
   Writer w;
   size_t size = 64 + b.scene.native().size();
-  for (const FileGrant& g : b.grants) size += 32 + g.written.size() + g.base.native().size() + g.canonical.native().size();
+  for (const FileGrant& g : b.grants)
+    size += 32 + g.written.size() + g.base.native().size() + g.canonical.native().size();
   for (const auto& [path, bytes] : b.files) size += 16 + path.native().size() + bytes.size();
   w.bytes.reserve(size);
   w.put<int32_t>(b.frame);
@@ -85,7 +88,9 @@ void materialise(const FileBundle& b, const fs::path& root) {
     std::ofstream out(copy, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.close();
-    if (!out) throw cli::IoFailure(fmt::format("cannot write the copy '{}' of a scene file", copy.string()));
+    if (!out)
+      throw cli::IoFailure(
+          fmt::format("cannot write the copy '{}' of a scene file", copy.string()));
   }
 }
 

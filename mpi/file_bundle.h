@@ -24,8 +24,10 @@ struct FileBundle {
 
 // The bundle of `frame`: reads each of `files` not in `sent` (and adds it there). Throws
 // IoFailure for a file that cannot be read.
-FileBundle makeBundle(int frame, const std::filesystem::path& scene, const std::vector<FileGrant>& grants,
-                      const std::vector<std::filesystem::path>& files, std::set<std::filesystem::path>& sent);
+FileBundle makeBundle(int frame, const std::filesystem::path& scene,
+                      const std::vector<FileGrant>& grants,
+                      const std::vector<std::filesystem::path>& files,
+                      std::set<std::filesystem::path>& sent);
 
 std::vector<char> pack(const FileBundle& bundle);
 FileBundle unpack(const std::vector<char>& bytes);

@@ -14,9 +14,9 @@
 
 #include "lang/file_access.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 #include <mpi.h>
+#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <functional>
@@ -28,13 +28,16 @@ namespace {
 
 int run(int argc, char** argv, mpi::TileDispatch*& dispatch) {
   const bool first = mpi::rank() == 0;
-  CLI::App app{"lucent-mpi: lucent render over the ranks of an MPI job (mpirun -np N lucent-mpi render SCENE)"};
+  CLI::App app{
+      "lucent-mpi: lucent render over the ranks of an MPI job (mpirun -np N lucent-mpi render "
+      "SCENE)"};
   setHelp(&app);
   app.require_subcommand(1);
   app.set_version_flag("--version", "lucent-mpi 0.1");
   RenderOptions render;
   std::vector<std::string> defines, allowPaths;
-  CLI::App* renderCmd = app.add_subcommand("render", "Render a scene to an image over the job's ranks");
+  CLI::App* renderCmd =
+      app.add_subcommand("render", "Render a scene to an image over the job's ranks");
   setHelp(renderCmd);
   addRenderOptions(renderCmd, render);
   addCommonOptions(renderCmd, defines, allowPaths);

@@ -107,7 +107,8 @@ bool tryReceive(int source, Message& out) {
   // messages between two ranks do not overtake each other).
   for (uint64_t at = 0; at < size; at += kPiece) {
     const int n = static_cast<int>(std::min(kPiece, size - at));
-    MPI_Recv(out.bytes.data() + at, n, MPI_BYTE, out.source, out.tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    MPI_Recv(out.bytes.data() + at, n, MPI_BYTE, out.source, out.tag, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
   }
   return true;
 }

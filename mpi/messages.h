@@ -4,12 +4,12 @@
 // scene's files of any size go in one message.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
-#include <atomic>
 #include <vector>
 
 #include <mpi.h>
@@ -21,15 +21,15 @@ namespace lucent::mpi {
 // not render that frame after all, kNoMore; then tiles. Each of the three carries a
 // FileBundle (file_bundle.h).
 enum Tag : int {
-  kFrame = 1,    // 0 -> worker: a frame to load: its scene file
-  kTile = 2,     // 0 -> worker: a tile of the frame to render
-  kNoMore = 3,   // 0 -> worker: the frame has no more tiles for it (or is not rendered)
-  kStop = 4,     // 0 -> worker: the run is over
-  kReady = 5,    // worker -> 0: the frame is loaded; a tile, please
-  kResult = 6,   // worker -> 0: a tile's pixels and counts (and a tile, please)
-  kFailed = 7,   // worker -> 0: the frame could not be loaded (the reason)
-  kFile = 8,     // 0 -> worker: a name the frame's parse was granted, and its file if new
-  kLoaded = 9,   // 0 -> worker: the frame is loaded: every name, any file not sent yet
+  kFrame = 1,   // 0 -> worker: a frame to load: its scene file
+  kTile = 2,    // 0 -> worker: a tile of the frame to render
+  kNoMore = 3,  // 0 -> worker: the frame has no more tiles for it (or is not rendered)
+  kStop = 4,    // 0 -> worker: the run is over
+  kReady = 5,   // worker -> 0: the frame is loaded; a tile, please
+  kResult = 6,  // worker -> 0: a tile's pixels and counts (and a tile, please)
+  kFailed = 7,  // worker -> 0: the frame could not be loaded (the reason)
+  kFile = 8,    // 0 -> worker: a name the frame's parse was granted, and its file if new
+  kLoaded = 9,  // 0 -> worker: the frame is loaded: every name, any file not sent yet
 };
 
 // Writes and reads the fields of a message in order (native byte order: the ranks of one
@@ -73,7 +73,8 @@ class Reader {
 
  private:
   void need(uint64_t n) const {
-    if (n > bytes_.size() - at_) throw std::runtime_error("a message from another rank is cut short");
+    if (n > bytes_.size() - at_)
+      throw std::runtime_error("a message from another rank is cut short");
   }
   const std::vector<char>& bytes_;
   size_t at_ = 0;

@@ -49,17 +49,21 @@ void TileDispatch::granted(const FileGrant& grant) {
   sendAll(kFile, pack(b));
 }
 
-TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::LoadedScene& loaded, int frame,
-                                          const std::vector<PixelRect>& tiles, const std::vector<char>& skip,
+TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::LoadedScene& loaded,
+                                          int frame, const std::vector<PixelRect>& tiles,
+                                          const std::vector<char>& skip,
                                           const RenderControl& control, bool /*oneAtATime: each rank
-                                          renders one tile at a time anyway*/,
+                                          renders one tile at a time anyway*/
+                                          ,
                                           const TileFinished& finished) {
   const auto start = std::chrono::steady_clock::now();
   const TilesToDo toDo = tilesToDo(renderer, tiles, skip);
   const std::vector<size_t>& todo = toDo.indices;
   RenderProgress localProgress;
   const RenderControl inner = tileControl(control, toDo.work, localProgress);
-  auto cancelled = [&] { return control.cancel && control.cancel->load(std::memory_order_relaxed); };
+  auto cancelled = [&] {
+    return control.cancel && control.cancel->load(std::memory_order_relaxed);
+  };
 
   // Row order, as renderTiles: the next tile for whoever asks first.
   std::atomic<size_t> next{0};
@@ -82,11 +86,14 @@ TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::L
   const int workers = ranks() - 1;
   if (workers > 0) {
     if (loadingFrame_ != frame) loading(frame, scene_);
-    std::vector<char> bundle = pack(makeBundle(frame, scene_, loaded.grants, [&] {
-      std::vector<std::filesystem::path> files = loaded.sources;
-      files.insert(files.end(), loaded.dataFiles.begin(), loaded.dataFiles.end());
-      return files;
-    }(), sent_));
+    std::vector<char> bundle = pack(makeBundle(
+        frame, scene_, loaded.grants,
+        [&] {
+          std::vector<std::filesystem::path> files = loaded.sources;
+          files.insert(files.end(), loaded.dataFiles.begin(), loaded.dataFiles.end());
+          return files;
+        }(),
+        sent_));
     loadingFrame_.reset();
     sendAll(kLoaded, bundle);
     for (int w = 1; w <= workers; ++w) busy_.insert(w);
@@ -119,18 +126,21 @@ TileRenderResult TileDispatch::operator()(const Renderer& renderer, const cli::L
       if (m.tag == kFailed) {
         busy_.erase(m.source);
         Reader r(m.bytes);
-        throw cli::IoFailure(fmt::format("rank {} could not load frame {}: {}", m.source, frame, r.getString()));
+        throw cli::IoFailure(
+            fmt::format("rank {} could not load frame {}: {}", m.source, frame, r.getString()));
       }
       if (m.tag == kResult) {
         TileResult t = unpackResult(m.bytes);
         if (t.frame != frame || t.index >= tiles.size())
-          throw cli::IoFailure(fmt::format("rank {} sent a tile that was not asked of it", m.source));
+          throw cli::IoFailure(
+              fmt::format("rank {} sent a tile that was not asked of it", m.source));
         inner.progress->workDone += renderer.work(tiles[t.index]);
         inner.progress->rays += t.result.stats.rays();
         report(t.index, t.result);
         --held[m.source];
       } else if (m.tag != kReady) {
-        throw cli::IoFailure(fmt::format("rank {} sent an unexpected message ({})", m.source, m.tag));
+        throw cli::IoFailure(
+            fmt::format("rank {} sent an unexpected message ({})", m.source, m.tag));
       }
       while (held[m.source] < kHeld) {
         const std::optional<size_t> i = take();

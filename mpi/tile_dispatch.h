@@ -30,7 +30,8 @@ class TileDispatch : public cli::LoadObserver {
 
   TileRenderResult operator()(const Renderer& renderer, const cli::LoadedScene& loaded, int frame,
                               const std::vector<PixelRect>& tiles, const std::vector<char>& skip,
-                              const RenderControl& control, bool oneAtATime, const TileFinished& finished);
+                              const RenderControl& control, bool oneAtATime,
+                              const TileFinished& finished);
 
   // No worker is rendering a tile (none was lost mid-way): they can be told to stop,
   // rather than the job aborted (a worker still loading a frame can).
@@ -40,8 +41,8 @@ class TileDispatch : public cli::LoadObserver {
 
  private:
   void sendAll(int tag, const std::vector<char>& bytes);
-  std::filesystem::path scene_;           // canonical, of the frame being loaded
-  std::optional<int> loadingFrame_;       // sent kFrame, not yet kLoaded or kNoMore
+  std::filesystem::path scene_;      // canonical, of the frame being loaded
+  std::optional<int> loadingFrame_;  // sent kFrame, not yet kLoaded or kNoMore
   std::thread::id mainThread_ = std::this_thread::get_id();
   std::set<std::filesystem::path> sent_;  // files the workers have
   std::set<int> busy_;                    // workers with tiles of a frame

@@ -34,7 +34,8 @@ std::vector<char> pack(const TileResult& t) {
   w.put<double>(r.seconds);
   w.put<uint8_t>(r.cancelled ? 1 : 0);
   const RayStats& s = r.stats;
-  for (uint64_t v : {s.primary, s.shadow, s.reflected, s.refracted, s.queries, s.shadowCacheHits}) w.put<uint64_t>(v);
+  for (uint64_t v : {s.primary, s.shadow, s.reflected, s.refracted, s.queries, s.shadowCacheHits})
+    w.put<uint64_t>(v);
   for (size_t k = 0; k < kTestSlots; ++k) w.put<uint64_t>(s.tests[k]);
   w.put<int32_t>(r.image.width);
   w.put<int32_t>(r.image.height);
@@ -51,7 +52,8 @@ TileResult unpackResult(const std::vector<char>& bytes) {
   out.seconds = r.get<double>();
   out.cancelled = r.get<uint8_t>() != 0;
   RayStats& s = out.stats;
-  for (uint64_t* v : {&s.primary, &s.shadow, &s.reflected, &s.refracted, &s.queries, &s.shadowCacheHits})
+  for (uint64_t* v :
+       {&s.primary, &s.shadow, &s.reflected, &s.refracted, &s.queries, &s.shadowCacheHits})
     *v = r.get<uint64_t>();
   for (size_t k = 0; k < kTestSlots; ++k) s.tests[k] = r.get<uint64_t>();
   const int width = r.get<int32_t>(), height = r.get<int32_t>();

@@ -30,9 +30,11 @@ class PrivateFolder {
  public:
   PrivateFolder() {
     const char* tmp = std::getenv("TMPDIR");
-    std::string pattern = (tmp && *tmp ? std::string(tmp) : std::string("/tmp")) + "/lucent-mpi-XXXXXX";
+    std::string pattern =
+        (tmp && *tmp ? std::string(tmp) : std::string("/tmp")) + "/lucent-mpi-XXXXXX";
     if (!::mkdtemp(pattern.data()))
-      throw cli::IoFailure(fmt::format("cannot make a temporary folder '{}' for the scene's files", pattern));
+      throw cli::IoFailure(
+          fmt::format("cannot make a temporary folder '{}' for the scene's files", pattern));
     path_ = canonicalPath(pattern);
   }
   ~PrivateFolder() {
@@ -76,7 +78,8 @@ class StreamedFiles {
  public:
   enum class State { Loading, Loaded, Abandoned, Stopped };
 
-  StreamedFiles(const fs::path& root, std::shared_ptr<FileReplay> replay) : root_(root), replay_(std::move(replay)) {}
+  StreamedFiles(const fs::path& root, std::shared_ptr<FileReplay> replay)
+      : root_(root), replay_(std::move(replay)) {}
 
   // Takes the next message from rank 0; false once the frame's files are complete or the
   // wait has ended.
@@ -115,7 +118,8 @@ int runWorker(const cli::RenderOptions& options, const cli::CommonOptions& commo
   cli::InterruptCatcher interrupts;
   std::optional<tbb::global_control> threadLimit;
   if (options.threads && *options.threads > 0)
-    threadLimit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(*options.threads));
+    threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
+                        static_cast<size_t>(*options.threads));
   PrivateFolder folder;
   auto meshes = std::make_shared<MeshFileCache>();
   ImageMapCache textures;
@@ -153,10 +157,13 @@ int runWorker(const cli::RenderOptions& options, const cli::CommonOptions& commo
     while (files.next()) {
     }
     switch (files.state()) {
-      case StreamedFiles::State::Stopped: return cli::kOk;
-      case StreamedFiles::State::Abandoned: continue;
+      case StreamedFiles::State::Stopped:
+        return cli::kOk;
+      case StreamedFiles::State::Abandoned:
+        continue;
       case StreamedFiles::State::Loading:
-      case StreamedFiles::State::Loaded: break;
+      case StreamedFiles::State::Loaded:
+        break;
     }
     if (failure) {
       send(0, kFailed, text(*failure));

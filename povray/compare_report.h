@@ -11,14 +11,14 @@
 namespace lucent {
 
 struct CompareReport {
-  std::string scene;        // the Lucent scene file
-  std::string povScene;     // the POV-Ray file rendered (exported or given with --pov)
-  bool handWritten = false; // --pov FILE rather than the export
+  std::string scene;         // the Lucent scene file
+  std::string povScene;      // the POV-Ray file rendered (exported or given with --pov)
+  bool handWritten = false;  // --pov FILE rather than the export
   int width = 0, height = 0;
   int samples = 1;
   int maxDepth = 5;
   double minWeight = 0.0;
-  std::string lucentRender;   // how Lucent rendered: "library" (the render API)
+  std::string lucentRender;  // how Lucent rendered: "library" (the render API)
   double lucentSeconds = 0.0;
   double povraySeconds = 0.0;
   std::string povrayCommand;

@@ -21,13 +21,13 @@ struct RgbImage {
 };
 
 struct ImageMetrics {
-  double psnr = 0.0;      // dB, 20·log10(1/RMSE); infinite for identical images
-  double ssim = 0.0;      // mean SSIM of the luminance, in [-1, 1]
-  double rmse = 0.0;      // over all pixels and channels
-  double maxDiff = 0.0;   // largest channel difference
-  int maxX = 0, maxY = 0; // where it is
-  long pixelsOver = 0;    // pixels with some channel off by more than `threshold`
-  double shareOver = 0.0; // pixelsOver / pixel count
+  double psnr = 0.0;       // dB, 20·log10(1/RMSE); infinite for identical images
+  double ssim = 0.0;       // mean SSIM of the luminance, in [-1, 1]
+  double rmse = 0.0;       // over all pixels and channels
+  double maxDiff = 0.0;    // largest channel difference
+  int maxX = 0, maxY = 0;  // where it is
+  long pixelsOver = 0;     // pixels with some channel off by more than `threshold`
+  double shareOver = 0.0;  // pixelsOver / pixel count
   double threshold = 0.0;
 };
 

@@ -18,8 +18,7 @@ PovCameraFrame povCameraFrame(const Camera& camera) {
   double side = glm::length(glm::cross(view, f.sky));
   // The renderer's own test (render/camera_frame.cpp): a look-at on the position or an up
   // parallel to the view leaves no frame.
-  f.ok = distance > 0.0 && std::isfinite(distance) &&
-         side > 1e-9 * glm::length(f.sky) * distance;
+  f.ok = distance > 0.0 && std::isfinite(distance) && side > 1e-9 * glm::length(f.sky) * distance;
   return f;
 }
 
@@ -52,8 +51,9 @@ void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& 
   const char* type = cameraTypeName(camera.type);
   PovCameraFrame frame = povCameraFrame(camera);
   if (!frame.ok) {
-    issues.error(camera.loc, "camera: look-at coincides with the position or up is parallel "
-                             "to the view; POV-Ray cannot orient it either");
+    issues.error(camera.loc,
+                 "camera: look-at coincides with the position or up is parallel "
+                 "to the view; POV-Ray cannot orient it either");
     return;
   }
   if (camera.near > 0.0 || std::isfinite(camera.far))
@@ -65,8 +65,8 @@ void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& 
   switch (camera.type) {
     case CameraType::Pinhole: {
       if (!(camera.fov > 0.0 && camera.fov < 180.0)) {
-        issues.error(camera.loc, fmt::format("pinhole camera: fov {} is outside (0, 180)",
-                                             camera.fov));
+        issues.error(camera.loc,
+                     fmt::format("pinhole camera: fov {} is outside (0, 180)", camera.fov));
         return;
       }
       out.open("camera");
@@ -91,14 +91,16 @@ void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& 
     }
     case CameraType::Fisheye: {
       if (camera.mapping != FisheyeMapping::Equidistant) {
-        issues.error(camera.loc, "fisheye camera: mapping 'equisolid' has no POV-Ray "
-                                 "equivalent (POV-Ray's fisheye is equidistant)");
+        issues.error(camera.loc,
+                     "fisheye camera: mapping 'equisolid' has no POV-Ray "
+                     "equivalent (POV-Ray's fisheye is equidistant)");
         return;
       }
       // A diagonal circle reaches the corners: no pixel is outside it.
       if (maxComponent(render.background) > 0.0f && camera.fovAxis != FovAxis::Diagonal)
-        issues.warning(camera.loc, "fisheye camera: POV-Ray leaves the pixels outside the "
-                                   "image circle black; Lucent gives them the background");
+        issues.warning(camera.loc,
+                       "fisheye camera: POV-Ray leaves the pixels outside the "
+                       "image circle black; Lucent gives them the background");
       // POV-Ray: u, v in [-1, 1] across the image, scaled by |right| and |up|; the image
       // circle is r = 1 (POV-Ray 3.7's fisheye camera). The renderer's circle spans the image
       // along fov-axis (render/fisheye.h): the width, the height, or the diagonal.

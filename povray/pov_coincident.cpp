@@ -16,9 +16,9 @@ namespace {
 // A leaf of one CSG operand, in the CSG node's space.
 struct Leaf {
   const Node* node;
-  size_t operand;  // which child of the CSG node it belongs to
-  AABB bounds;     // its bounding box
-  bool exact;      // the box is its surface (an axis-aligned box) or holds its plane
+  size_t operand;      // which child of the CSG node it belongs to
+  AABB bounds;         // its bounding box
+  bool exact;          // the box is its surface (an axis-aligned box) or holds its plane
   int planeAxis = -1;  // an axis-aligned plane: the axis, and its coordinate
   double planeAt = 0.0;
 };
@@ -141,18 +141,22 @@ std::optional<std::string> coincidence(const Leaf& a, const Leaf& b) {
 
 void warnCoincidentSurfaces(const Node& csg, PovIssues& issues) {
   std::vector<Leaf> leaves;
-  for (size_t i = 0; i < csg.children.size(); ++i) collect(*csg.children[i], Mat4(1.0), i, leaves, 0);
-  if (leaves.size() > 2000) return;  // pairs grow quadratically; large CSG is rare and slow to check
+  for (size_t i = 0; i < csg.children.size(); ++i)
+    collect(*csg.children[i], Mat4(1.0), i, leaves, 0);
+  if (leaves.size() > 2000)
+    return;  // pairs grow quadratically; large CSG is rare and slow to check
   for (size_t i = 0; i < leaves.size(); ++i)
     for (size_t j = i + 1; j < leaves.size(); ++j) {
       if (leaves[i].operand == leaves[j].operand) continue;
       if (auto what = coincidence(leaves[i], leaves[j])) {
-        issues.warning(csg.loc, fmt::format(
-            "<{}>: its operands <{}> ({}) and <{}> ({}) {}: where surfaces coincide POV-Ray "
-            "takes one or the other pixel by pixel (speckles), Lucent decides by its rule "
-            "for coincident surfaces (docs/csg.md), so the images differ there",
-            csg.element, leaves[i].node->element, leaves[i].node->loc.str(),
-            leaves[j].node->element, leaves[j].node->loc.str(), *what));
+        issues.warning(
+            csg.loc,
+            fmt::format(
+                "<{}>: its operands <{}> ({}) and <{}> ({}) {}: where surfaces coincide POV-Ray "
+                "takes one or the other pixel by pixel (speckles), Lucent decides by its rule "
+                "for coincident surfaces (docs/csg.md), so the images differ there",
+                csg.element, leaves[i].node->element, leaves[i].node->loc.str(),
+                leaves[j].node->element, leaves[j].node->loc.str(), *what));
         return;
       }
     }

@@ -70,23 +70,26 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
                        std::filesystem::path(scene.file).filename().string()));
   if (r.adaptiveMode == AdaptiveMode::Corners) {
     // Lucent's corners mode is POV-Ray's method 2 without jitter: the same image.
-    out.line(fmt::format("// Render: povray +I<this file> +W{} +H{} +AM2 {} -J +R{}   (+FN writes "
-                         "sRGB, File_Gamma=1.0 linear)",
-                         r.width, r.height, cornerThresholdFlag(r.adaptive), r.adaptiveDepth));
+    out.line(
+        fmt::format("// Render: povray +I<this file> +W{} +H{} +AM2 {} -J +R{}   (+FN writes "
+                    "sRGB, File_Gamma=1.0 linear)",
+                    r.width, r.height, cornerThresholdFlag(r.adaptive), r.adaptiveDepth));
     if (r.adaptive > 1.0)
       issues.warning(r.loc, fmt::format("render: adaptive {} exceeds 1, where POV-Ray clips its "
                                         "antialiasing threshold",
                                         r.adaptive));
   } else {
-    out.line(fmt::format("// Render: povray +I<this file> +W{} +H{} -A   (+FN writes sRGB, "
-                         "File_Gamma=1.0 linear)",
-                         r.width, r.height));
+    out.line(
+        fmt::format("// Render: povray +I<this file> +W{} +H{} -A   (+FN writes sRGB, "
+                    "File_Gamma=1.0 linear)",
+                    r.width, r.height));
   }
   if (r.samples > 1 && r.adaptiveMode != AdaptiveMode::Corners)
     // Sampling is a command-line matter in POV-Ray; its grid is not Lucent's Halton set.
-    out.line(fmt::format("// Lucent takes {} samples per pixel at Halton offsets; the closest "
-                         "POV-Ray has is +A0.0 -J +AM1 +R{}",
-                         r.samples, std::max(2, static_cast<int>(std::lround(std::sqrt(r.samples))))));
+    out.line(
+        fmt::format("// Lucent takes {} samples per pixel at Halton offsets; the closest "
+                    "POV-Ray has is +A0.0 -J +AM1 +R{}",
+                    r.samples, std::max(2, static_cast<int>(std::lround(std::sqrt(r.samples))))));
   // Without #version POV-Ray 3.7 applies the 3.62 rules (opacity, gamma): mandatory.
   out.line("#version 3.7;");
   out.blank();

@@ -26,8 +26,8 @@ struct PovExportOptions {
 };
 
 struct PovExport {
-  std::string text;               // the .pov file; empty when there are errors
-  std::vector<PovIssue> issues;   // errors and warnings, in the order found
+  std::string text;              // the .pov file; empty when there are errors
+  std::vector<PovIssue> issues;  // errors and warnings, in the order found
   bool ok() const;
 };
 

@@ -131,9 +131,10 @@ PovAssumedGamma findAssumedGamma(const std::string& text) {
         PovAssumedGamma several;
         several.kind = PovAssumedGamma::Kind::Unreadable;
         several.line = found.line;
-        several.problem = fmt::format("lines {} and {} give different assumed_gamma values "
-                                      "({} and {})",
-                                      found.line, g.line, found.fileGamma(), g.fileGamma());
+        several.problem = fmt::format(
+            "lines {} and {} give different assumed_gamma values "
+            "({} and {})",
+            found.line, g.line, found.fileGamma(), g.fileGamma());
         return several;
       }
       if (found.kind == PovAssumedGamma::Kind::Absent) found = g;

@@ -21,8 +21,8 @@ struct PovAssumedGamma {
   };
   Kind kind = Kind::Absent;
   double value = 1.0;
-  int line = 0;          // of the (first) assumed_gamma, 1-based
-  std::string problem;   // for Unreadable
+  int line = 0;         // of the (first) assumed_gamma, 1-based
+  std::string problem;  // for Unreadable
 
   // The File_Gamma option value that gives back POV-Ray's working values: "1.0", "2.2",
   // "sRGB". Only for Absent, Number and Srgb.

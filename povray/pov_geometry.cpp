@@ -15,10 +15,14 @@ namespace {
 
 const char* csgKeyword(NodeKind k) {
   switch (k) {
-    case NodeKind::Union: return "union";
-    case NodeKind::Merge: return "merge";
-    case NodeKind::Intersection: return "intersection";
-    default: return "difference";
+    case NodeKind::Union:
+      return "union";
+    case NodeKind::Merge:
+      return "merge";
+    case NodeKind::Intersection:
+      return "intersection";
+    default:
+      return "difference";
   }
 }
 
@@ -34,9 +38,12 @@ bool cameraInsidePlane(const PlaneSpec& plane, const Mat4& m, const Vec3& camera
   return glm::dot(normalWorld, camera - pointWorld) < 0.0;
 }
 
-PovGeometry::PovGeometry(const Scene& scene, const PovMaterials& materials,
-                         const Vec3& camera, PovIssues& issues)
-    : scene_(scene), materials_(materials), camera_(camera), issues_(issues),
+PovGeometry::PovGeometry(const Scene& scene, const PovMaterials& materials, const Vec3& camera,
+                         PovIssues& issues)
+    : scene_(scene),
+      materials_(materials),
+      camera_(camera),
+      issues_(issues),
       used_(scene.materials.size(), false) {}
 
 void PovGeometry::write(PovWriter& declarations, PovWriter& objects) {
@@ -51,9 +58,12 @@ int PovGeometry::operandCount(const Node& node) const {
       for (const auto& c : node.children) n += operandCount(*c);
       return n;
     }
-    case NodeKind::Use: return node.target ? operandCount(*node.target) : 0;
-    case NodeKind::Shape: return 1;
-    case NodeKind::Light: return 0;
+    case NodeKind::Use:
+      return node.target ? operandCount(*node.target) : 0;
+    case NodeKind::Shape:
+      return 1;
+    case NodeKind::Light:
+      return 0;
     default: {
       int n = 0;
       for (const auto& c : node.children) n += operandCount(*c);
@@ -67,7 +77,8 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
   const Mat4 m = fromContext * node.parentFromNode;
   const uint32_t material = node.material.value_or(inherited);
   // The flags of the enclosing writes, restored on return.
-  const bool outerShadowless = shadowless_, outerIgnore = ignoreOwnShadows_, outerInSolid = inWrittenSolid_;
+  const bool outerShadowless = shadowless_, outerIgnore = ignoreOwnShadows_,
+             outerInSolid = inWrittenSolid_;
   if (!ignoreOwnShadows_ && !node.shadows) shadowless_ = true;
   const bool solid = node.kind == NodeKind::Merge || node.kind == NodeKind::Intersection ||
                      node.kind == NodeKind::Difference;
@@ -78,8 +89,7 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
       out.open("union", "<" + node.element + "> " + node.loc.str() + " (inverse)");
       if (node.kind == NodeKind::Group)
         for (const auto& c : node.children) writeNode(*c, m, material, false, out);
-      else if (node.target)
-        writeNode(*node.target, m, material, false, out);
+      else if (node.target) writeNode(*node.target, m, material, false, out);
       if (inv) out.line("inverse");
       out.close();
       shadowless_ = outerShadowless;
@@ -122,8 +132,8 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
       // A union keeps every operand's surfaces, each its own object to POV-Ray as to
       // Lucent: only the solid operations share one interior (see the header).
       const std::optional<uint32_t> outer = csgInterior_;
-      const bool share = node.kind != NodeKind::Union && !csgInterior_ &&
-                         materials_.surface(material).interior;
+      const bool share =
+          node.kind != NodeKind::Union && !csgInterior_ && materials_.surface(material).interior;
       if (share) csgInterior_ = material;
       for (const auto& c : node.children) writeNode(*c, Mat4(1.0), material, false, out);
       if (share) materials_.writeInteriorFor(material, out);
@@ -185,8 +195,8 @@ std::string PovGeometry::meshName(const MeshSpec& mesh, const Node& node) {
   out.line(fmt::format("{},", data.triangles.size()));
   for (size_t i = 0; i < data.triangles.size(); ++i) {
     const auto& t = data.triangles[i];
-    out.line(fmt::format("<{}, {}, {}>{}", t[0], t[1], t[2],
-                         i + 1 < data.triangles.size() ? "," : ""));
+    out.line(
+        fmt::format("<{}, {}, {}>{}", t[0], t[1], t[2], i + 1 < data.triangles.size() ? "," : ""));
   }
   out.close();
   // A closed mesh is a solid in Lucent; POV-Ray needs an inside_vector to know its inside.
@@ -220,8 +230,8 @@ class ShapeOut final : public PovShapeOut {
 
 }  // namespace
 
-void PovGeometry::writeShapeHead(const Node& node, const Mat4& m, uint32_t material,
-                                 bool topLevel, bool& inverse, PovWriter& out) {
+void PovGeometry::writeShapeHead(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
+                                 bool& inverse, PovWriter& out) {
   std::string where = "<" + node.element + "> " + node.loc.str();
   ShapeSpec spec = *node.shape;
   if (const auto* p = std::get_if<PlaneSpec>(&spec)) {
@@ -240,8 +250,9 @@ void PovGeometry::writeShapeHead(const Node& node, const Mat4& m, uint32_t mater
       where += " (turned so the camera is outside)";
     }
   }
-  ShapeOut shapeOut(out, where, [&](const MeshSpec& mesh) { return meshName(mesh, node); },
-                    [&](const std::string& message) { issues_.error(node.loc, message); });
+  ShapeOut shapeOut(
+      out, where, [&](const MeshSpec& mesh) { return meshName(mesh, node); },
+      [&](const std::string& message) { issues_.error(node.loc, message); });
   shapeTypeOf(spec).writePov(spec, shapeOut);
 }
 
@@ -263,11 +274,13 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
   warnSmoothNormalRule(node, issues_);
   used_[material] = true;
   std::vector<ImageMapFace> faces;
-  if (materials_.usesImageMap(material)) faces = shapeTypeOf(*node.shape).povImageFaces(*node.shape);
+  if (materials_.usesImageMap(material))
+    faces = shapeTypeOf(*node.shape).povImageFaces(*node.shape);
   if (!faces.empty()) {
     // Each face has its own copy of the image: the solid as the intersection of its face
     // planes, each with its own mapping. The same solid, surface and inside.
-    out.open("intersection", "<" + node.element + "> " + node.loc.str() + " with a per-face image map");
+    out.open("intersection",
+             "<" + node.element + "> " + node.loc.str() + " with a per-face image map");
     for (const ImageMapFace& face : faces) {
       out.open("plane");
       out.line(fmt::format("{}, {}", povVector(face.normal), povNumber(face.offset)));

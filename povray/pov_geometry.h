@@ -44,10 +44,9 @@ class PovGeometry {
  private:
   void writeNode(const Node& node, const Mat4& fromContext, uint32_t inherited, bool topLevel,
                  PovWriter& out);
-  void writeLeaf(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
-                 PovWriter& out);
-  void writeShapeHead(const Node& node, const Mat4& m, uint32_t material, bool topLevel, bool& inverse,
-                      PovWriter& out);
+  void writeLeaf(const Node& node, const Mat4& m, uint32_t material, bool topLevel, PovWriter& out);
+  void writeShapeHead(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
+                      bool& inverse, PovWriter& out);
   std::string meshName(const MeshSpec& mesh, const Node& node);
   // Operands a CSG node gets once groups and <use> are flattened.
   int operandCount(const Node& node) const;

@@ -2,8 +2,8 @@
 
 #include "images/image_plugin.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <fmt/core.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -69,14 +69,14 @@ void writeImagePigment(const ImageTexture& image, double filter, double transmit
                        const std::string& materialName, PovWriter& out, PovIssues& issues) {
   std::string format = povImageFormat(image.path);
   if (format.empty()) {
-    issues.error(image.loc, fmt::format("{}: POV-Ray cannot read the image '{}'", materialName,
-                                        image.path));
+    issues.error(image.loc,
+                 fmt::format("{}: POV-Ray cannot read the image '{}'", materialName, image.path));
     return;
   }
   ImageFacts facts = imageFacts(image.path);
   if (!facts.readable) {
-    issues.error(image.loc, fmt::format("{}: cannot read the image '{}'", materialName,
-                                        image.path));
+    issues.error(image.loc,
+                 fmt::format("{}: cannot read the image '{}'", materialName, image.path));
     return;
   }
   if (facts.alpha)
@@ -141,19 +141,19 @@ void writeImagePigment(const ImageTexture& image, double filter, double transmit
   out.close();
 }
 
-void writeBumpMapNormal(const BumpMapSpec& bump, const ImageMapping& mapping,
-                        const char* shapeName, const SourceLoc& loc,
-                        const std::string& materialName, PovWriter& out, PovIssues& issues) {
+void writeBumpMapNormal(const BumpMapSpec& bump, const ImageMapping& mapping, const char* shapeName,
+                        const SourceLoc& loc, const std::string& materialName, PovWriter& out,
+                        PovIssues& issues) {
   std::string format = povImageFormat(bump.path);
   if (format.empty()) {
-    issues.error(bump.loc, fmt::format("{}: POV-Ray cannot read the bump map '{}'", materialName,
-                                       bump.path));
+    issues.error(bump.loc,
+                 fmt::format("{}: POV-Ray cannot read the bump map '{}'", materialName, bump.path));
     return;
   }
   ImageFacts facts = imageFacts(bump.path);
   if (!facts.readable) {
-    issues.error(bump.loc, fmt::format("{}: cannot read the bump map '{}'", materialName,
-                                       bump.path));
+    issues.error(bump.loc,
+                 fmt::format("{}: cannot read the bump map '{}'", materialName, bump.path));
     return;
   }
   if (mapping.kind != ImageMapping::MeshUV && mapping.kind != ImageMapping::Spherical) {

@@ -41,8 +41,8 @@ void writeImagePigment(const ImageTexture& image, double filter, double transmit
 // other shape is an error that names it. The image is
 // read without gamma (`gamma 1.0`: the stored values, as Lucent), bilinearly
 // (`interpolate 2`), its grey level from the colour (`use_color`).
-void writeBumpMapNormal(const BumpMapSpec& bump, const ImageMapping& mapping,
-                        const char* shapeName, const SourceLoc& loc,
-                        const std::string& materialName, PovWriter& out, PovIssues& issues);
+void writeBumpMapNormal(const BumpMapSpec& bump, const ImageMapping& mapping, const char* shapeName,
+                        const SourceLoc& loc, const std::string& materialName, PovWriter& out,
+                        PovIssues& issues);
 
 }  // namespace lucent

@@ -15,10 +15,14 @@ bool povAveragesUniformly(int n) { return n >= 2 && (n & (n - 1)) == 0; }
 
 const char* lightTypeName(LightType t) {
   switch (t) {
-    case LightType::Point: return "point";
-    case LightType::Directional: return "directional";
-    case LightType::Spot: return "spot";
-    case LightType::Area: return "area";
+    case LightType::Point:
+      return "point";
+    case LightType::Directional:
+      return "directional";
+    case LightType::Spot:
+      return "spot";
+    case LightType::Area:
+      return "area";
   }
   return "?";
 }
@@ -44,8 +48,9 @@ PovFade povFade(const Vec3& abc) {
   }
   if (b != 0.0 && c != 0.0) {
     f.exact = false;
-    f.problem = "attenuation with both b and c has no POV-Ray equivalent; the linear term b is "
-                "dropped";
+    f.problem =
+        "attenuation with both b and c has no POV-Ray equivalent; the linear term b is "
+        "dropped";
   }
   f.scale = 1.0 / (2.0 * a1);
   if (c != 0.0) {
@@ -83,8 +88,7 @@ void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues&
     if (fade.fade) {
       out.line("fade_distance " + povNumber(fade.distance));
       out.line("fade_power " + povNumber(fade.power));
-      if (!fade.exact)
-        issues.warning(light.loc, fmt::format("{} light: {}", type, fade.problem));
+      if (!fade.exact) issues.warning(light.loc, fmt::format("{} light: {}", type, fade.problem));
       if (fade.exactBeyond > 0.0)
         issues.warning(light.loc,
                        fmt::format("{} light: attenuation \"{} {} {}\" maps onto POV-Ray's fade "
@@ -116,8 +120,9 @@ void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues&
       if (light.adaptive) out.line(fmt::format("adaptive {}", *light.adaptive));
       if (light.jitter) {
         out.line("jitter");
-        issues.warning(light.loc, "area light: jitter is random in POV-Ray and a fixed hash in "
-                                  "Lucent; the noise differs");
+        issues.warning(light.loc,
+                       "area light: jitter is random in POV-Ray and a fixed hash in "
+                       "Lucent; the noise differs");
       }
       // Without `adaptive` POV-Ray subdivides fully (its default level is 100), with its
       // recursive weights; Lucent then averages plainly.

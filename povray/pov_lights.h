@@ -18,7 +18,7 @@ namespace lucent {
 // Equal wherever the clamp min(1, ·) is inactive: everywhere when a ≥ 1, else beyond
 // `exactBeyond` from the light. Both b and c non-zero has no equivalent (b is dropped).
 struct PovFade {
-  bool fade = false;     // false: no fade keywords (constant factor `scale`)
+  bool fade = false;  // false: no fade keywords (constant factor `scale`)
   double distance = 0.0;
   double power = 0.0;
   double scale = 1.0;

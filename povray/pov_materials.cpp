@@ -22,10 +22,8 @@ Vec3 divide(const Vec3& term, const Vec3& divisor, bool& bad) {
   Vec3 r(0.0);
   for (int i = 0; i < 3; ++i) {
     if (term[i] == 0.0) continue;
-    if (divisor[i] > 0.0)
-      r[i] = term[i] / divisor[i];
-    else
-      bad = true;
+    if (divisor[i] > 0.0) r[i] = term[i] / divisor[i];
+    else bad = true;
   }
   return r;
 }
@@ -71,8 +69,7 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
       issues.warning(m.loc, fmt::format("{}: a coloured transmissive ({}) with diffuse, ambient "
                                         "or emissive has no POV-Ray equivalent (its filter "
                                         "colour is the diffuse pigment); transmit {} is used",
-                                        name, colourText(m.transmissive),
-                                        floatText(s.transmit)));
+                                        name, colourText(m.transmissive), floatText(s.transmit)));
     }
   }
   const double a = 1.0 - s.filter - s.transmit;
@@ -264,7 +261,8 @@ bool PovMaterials::dependsOnShape(uint32_t index) const {
 
 void PovMaterials::writeFor(uint32_t index, const ShapeSpec& shape, const SourceLoc& loc,
                             PovWriter& out, PovIssues& issues, bool interior) const {
-  writeFor(index, shapeTypeOf(shape).povImageMapping(shape), shapeElementName(shape), loc, out, issues, interior);
+  writeFor(index, shapeTypeOf(shape).povImageMapping(shape), shapeElementName(shape), loc, out,
+           issues, interior);
 }
 
 void PovMaterials::writeInteriorFor(uint32_t index, PovWriter& out) const {
@@ -284,9 +282,8 @@ void PovMaterials::writeFor(uint32_t index, const ImageMapping& mapping, const c
   if (interior) writeInteriorFor(index, out);
 }
 
-void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping,
-                                const char* shapeName, const SourceLoc* loc, PovWriter& out,
-                                PovIssues* issues) const {
+void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, const char* shapeName,
+                                const SourceLoc* loc, PovWriter& out, PovIssues* issues) const {
   const Material& m = materials_[index];
   const PovSurface& s = surface(index);
   const auto* checker = std::get_if<CheckerTexture>(&m.texture);
@@ -303,9 +300,11 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping,
   } else if (s.useTexture && image && mapping) {
     writeImagePigment(*image, s.filter, s.transmit, *mapping, shapeName, *loc, materialLabel(m),
                       out, *issues);
-  } else if (const auto* pattern = std::get_if<PatternTexture>(&m.texture); s.useTexture && pattern) {
+  } else if (const auto* pattern = std::get_if<PatternTexture>(&m.texture);
+             s.useTexture && pattern) {
     writePatternPigment(*pattern, s.pigmentScale, s.filter, s.transmit, out);
-  } else if (const auto* hexagon = std::get_if<HexagonTexture>(&m.texture); s.useTexture && hexagon) {
+  } else if (const auto* hexagon = std::get_if<HexagonTexture>(&m.texture);
+             s.useTexture && hexagon) {
     writeHexagonPigment(*hexagon, s.pigmentScale, s.filter, s.transmit, out);
   } else if (const auto* brick = std::get_if<BrickTexture>(&m.texture); s.useTexture && brick) {
     writeBrickPigment(*brick, s.pigmentScale, s.filter, s.transmit, out);

@@ -1,6 +1,7 @@
 // Materials as POV-Ray textures (pigment + finish) and interiors, following POV-Ray 3.7's
 // lighting model. POV-Ray's local colour is
-//   P·(ambient·ambient_light + emission)·a + Σ P·Lc·diffuse·a·(N·L) + Lc·specular·(N·Ĥ)^(1/roughness)
+//   P·(ambient·ambient_light + emission)·a + Σ P·Lc·diffuse·a·(N·L) +
+//   Lc·specular·(N·Ĥ)^(1/roughness)
 // with opacity a = 1 − filter − transmit, reflection not scaled by P or a, and the light
 // behind it multiplied by F = P·filter + transmit. Lucent's is
 //   k_e + k_a·I_La + Σ I_L·[k_d (N·L)^b + k_s (N·H)^n_s + k_p (R·L)^size] + k_r·I_r + k_t·I_t
@@ -40,7 +41,7 @@ struct PovSurface {
   double phong = 0.0;
   double phongSize = 40.0;
   bool metallic = false;  // the pigment then carries the whole diffuse colour
-  Vec3 reflection{0.0};  // the maximum (fresnel) or constant reflection
+  Vec3 reflection{0.0};   // the maximum (fresnel) or constant reflection
   bool fresnel = false;
   bool conserveEnergy = false;
 
@@ -68,8 +69,8 @@ class PovMaterials {
   // Inside a shape block: its texture and interior (unless `interior` is false: the
   // enclosing CSG object holds it). `shape` chooses the image mapping; `loc` is the
   // shape's location for errors.
-  void writeFor(uint32_t material, const ShapeSpec& shape, const SourceLoc& loc,
-                PovWriter& out, PovIssues& issues, bool interior = true) const;
+  void writeFor(uint32_t material, const ShapeSpec& shape, const SourceLoc& loc, PovWriter& out,
+                PovIssues& issues, bool interior = true) const;
   // The same with an explicit image mapping (a box face).
   void writeFor(uint32_t material, const ImageMapping& mapping, const char* shapeName,
                 const SourceLoc& loc, PovWriter& out, PovIssues& issues,

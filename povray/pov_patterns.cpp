@@ -6,36 +6,60 @@ namespace {
 
 const char* povPatternName(PatternType t) {
   switch (t) {
-    case PatternType::gradient: return "gradient";
-    case PatternType::onion: return "onion";
-    case PatternType::radial: return "radial";
-    case PatternType::spiral1: return "spiral1";
-    case PatternType::spiral2: return "spiral2";
-    case PatternType::wood: return "wood";
-    case PatternType::marble: return "marble";
-    case PatternType::agate: return "agate";
-    case PatternType::granite: return "granite";
-    case PatternType::bozo: return "bozo";
-    case PatternType::spotted: return "spotted";
-    case PatternType::leopard: return "leopard";
-    case PatternType::crackle: return "crackle";
-    case PatternType::wrinkles: return "wrinkles";
-    case PatternType::bumps: return "bumps";
-    case PatternType::dents: return "dents";
-    case PatternType::ripples: return "ripples";
-    case PatternType::waves: return "waves";
+    case PatternType::gradient:
+      return "gradient";
+    case PatternType::onion:
+      return "onion";
+    case PatternType::radial:
+      return "radial";
+    case PatternType::spiral1:
+      return "spiral1";
+    case PatternType::spiral2:
+      return "spiral2";
+    case PatternType::wood:
+      return "wood";
+    case PatternType::marble:
+      return "marble";
+    case PatternType::agate:
+      return "agate";
+    case PatternType::granite:
+      return "granite";
+    case PatternType::bozo:
+      return "bozo";
+    case PatternType::spotted:
+      return "spotted";
+    case PatternType::leopard:
+      return "leopard";
+    case PatternType::crackle:
+      return "crackle";
+    case PatternType::wrinkles:
+      return "wrinkles";
+    case PatternType::bumps:
+      return "bumps";
+    case PatternType::dents:
+      return "dents";
+    case PatternType::ripples:
+      return "ripples";
+    case PatternType::waves:
+      return "waves";
   }
   return "bozo";
 }
 
 const char* povWaveName(WaveShape w) {
   switch (w) {
-    case WaveShape::ramp: return "ramp_wave";
-    case WaveShape::sine: return "sine_wave";
-    case WaveShape::triangle: return "triangle_wave";
-    case WaveShape::scallop: return "scallop_wave";
-    case WaveShape::cubic: return "cubic_wave";
-    case WaveShape::poly: return "poly_wave";
+    case WaveShape::ramp:
+      return "ramp_wave";
+    case WaveShape::sine:
+      return "sine_wave";
+    case WaveShape::triangle:
+      return "triangle_wave";
+    case WaveShape::scallop:
+      return "scallop_wave";
+    case WaveShape::cubic:
+      return "cubic_wave";
+    case WaveShape::poly:
+      return "poly_wave";
   }
   return "ramp_wave";
 }
@@ -44,7 +68,8 @@ const char* povWaveName(WaveShape w) {
 std::string patternKeyword(const PatternSpec& s) {
   std::string k = povPatternName(s.type);
   if (s.type == PatternType::gradient) k += " " + povVector(s.axis);
-  if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2) k += " " + std::to_string(s.arms);
+  if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
+    k += " " + std::to_string(s.arms);
   // Lucent's agate uses POV-Ray's default agate_turb, written so that it cannot drift.
   if (s.type == PatternType::agate) k += " agate_turb 1";
   return k;
@@ -53,8 +78,8 @@ std::string patternKeyword(const PatternSpec& s) {
 void writePlacement(const PatternPlacement& p, PovWriter& out) {
   if (p.turbulence != Vec3(0.0)) {
     out.line("turbulence " + povVector(p.turbulence));
-    out.line("octaves " + std::to_string(p.octaves) + " omega " + povNumber(p.omega) +
-             " lambda " + povNumber(p.lambda));
+    out.line("octaves " + std::to_string(p.octaves) + " omega " + povNumber(p.omega) + " lambda " +
+             povNumber(p.lambda));
   }
   if (p.patternFromObject != Mat4(1.0)) out.line(povMatrix(glm::inverse(p.patternFromObject)));
 }
@@ -77,8 +102,8 @@ std::string colour(const Color& c, const Vec3& scale, double filter, double tran
 
 }  // namespace
 
-void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filter,
-                         double transmit, PovWriter& out) {
+void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filter, double transmit,
+                         PovWriter& out) {
   out.open("pigment");
   out.line(patternKeyword(t.pattern));
   out.open("color_map");
@@ -95,8 +120,8 @@ void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filt
   out.close();
 }
 
-void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filter,
-                         double transmit, PovWriter& out) {
+void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filter, double transmit,
+                         PovWriter& out) {
   out.open("pigment");
   out.line("hexagon");
   for (int i = 0; i < 3; ++i)
@@ -120,10 +145,10 @@ void writeNormal(const NormalSpec& n, PovWriter& out) {
   out.open("normal");
   std::string keyword = patternKeyword(n.pattern);
   const std::string agate = " agate_turb 1";
-  if (keyword.size() > agate.size() && keyword.compare(keyword.size() - agate.size(), agate.size(), agate) == 0)
+  if (keyword.size() > agate.size() &&
+      keyword.compare(keyword.size() - agate.size(), agate.size(), agate) == 0)
     out.line(keyword.substr(0, keyword.size() - agate.size()) + " " + povNumber(n.depth) + agate);
-  else
-    out.line(keyword + " " + povNumber(n.depth));
+  else out.line(keyword + " " + povNumber(n.depth));
   // POV-Ray's slope method samples at this distance (its default, which Lucent uses).
   out.line("accuracy 0.02");
   writeValueModifiers(n.pattern, out);

@@ -13,10 +13,10 @@ namespace lucent {
 
 // `scale` multiplies every colour (the diffuse colour the pigment carries); filter and
 // transmit are written into each colour.
-void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filter,
-                         double transmit, PovWriter& out);
-void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filter,
-                         double transmit, PovWriter& out);
+void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filter, double transmit,
+                         PovWriter& out);
+void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filter, double transmit,
+                         PovWriter& out);
 void writeBrickPigment(const BrickTexture& t, const Vec3& scale, double filter, double transmit,
                        PovWriter& out);
 // `normal { PATTERN depth ... }`.

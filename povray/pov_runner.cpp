@@ -50,9 +50,16 @@ std::string cornerThresholdFlag(double threshold) {
 }
 
 std::vector<std::string> povrayArguments(const PovrayRender& r) {
-  std::vector<std::string> args = {
-      "+I" + r.input, "+O" + r.output, fmt::format("+W{}", r.width), fmt::format("+H{}", r.height),
-      "-D", "-V", "-GS", "-GR", "+FN16", "File_Gamma=" + r.fileGamma};
+  std::vector<std::string> args = {"+I" + r.input,
+                                   "+O" + r.output,
+                                   fmt::format("+W{}", r.width),
+                                   fmt::format("+H{}", r.height),
+                                   "-D",
+                                   "-V",
+                                   "-GS",
+                                   "-GR",
+                                   "+FN16",
+                                   "File_Gamma=" + r.fileGamma};
   if (r.corners) {
     args.insert(args.end(), {"+AM2", cornerThresholdFlag(r.cornerThreshold), "-J",
                              fmt::format("+R{}", r.cornerDepth)});
@@ -98,8 +105,7 @@ ProcessResult runProcess(const std::string& program, const std::vector<std::stri
     if (errno != EINTR) return result;
   }
   result.started = true;
-  result.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (WIFEXITED(status)) result.exitStatus = WEXITSTATUS(status);
   return result;
 }

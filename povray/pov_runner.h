@@ -18,12 +18,12 @@ struct PovrayRender {
   std::string input;   // .pov file
   std::string output;  // .png, written as 16-bit linear values
   int width = 0, height = 0;
-  int samples = 1;     // 1: no antialiasing (pixel centres, as Lucent's single sample)
+  int samples = 1;  // 1: no antialiasing (pixel centres, as Lucent's single sample)
   // Lucent's adaptive-mode="corners" (samples is then not used): POV-Ray's own method 2.
   bool corners = false;
   double cornerThreshold = 0.3;
   int cornerDepth = 3;
-  int threads = 0;     // 0: POV-Ray's default
+  int threads = 0;  // 0: POV-Ray's default
   // File_Gamma: 1.0 writes linear values; a scene with another assumed_gamma needs that
   // gamma here to write its working values (pov_gamma.h).
   std::string fileGamma = "1.0";

@@ -60,22 +60,24 @@ void warnSmoothNormalRule(const Node& node, PovIssues& issues) {
         m->smooth == SmoothMode::True ? computeVertexNormals(data) : data.normals;
     if (normals.size() != data.positions.size()) return;
     for (const auto& tri : data.triangles)
-      worst = std::max(worst, smoothNormalDeviation({data.positions[tri[0]], data.positions[tri[1]],
-                                                     data.positions[tri[2]]},
-                                                    {normals[tri[0]], normals[tri[1]], normals[tri[2]]}));
+      worst = std::max(worst,
+                       smoothNormalDeviation(
+                           {data.positions[tri[0]], data.positions[tri[1]], data.positions[tri[2]]},
+                           {normals[tri[0]], normals[tri[1]], normals[tri[2]]}));
     what = m->src.empty() ? "<mesh>" : fmt::format("<mesh src=\"{}\">", m->src);
   } else {
     return;
   }
   if (worst <= kNegligible) return;
-  issues.warning(node.loc,
-                 fmt::format("{}: its vertex normals depart from the faces' normals by {} {}: near "
-                             "silhouettes, where an interpolated normal faces away from the viewer "
-                             "while its triangle faces it, Lucent shades with the triangle's normal "
-                             "and POV-Ray 3.7 turns the interpolated normal towards the viewer, so "
-                             "POV-Ray's image can show thin dark slivers there (docs/scene-language.md, "
-                             "For POV-Ray users)",
-                             what, worst >= kPi / 2 ? "at least" : "up to", degrees(worst)));
+  issues.warning(
+      node.loc,
+      fmt::format("{}: its vertex normals depart from the faces' normals by {} {}: near "
+                  "silhouettes, where an interpolated normal faces away from the viewer "
+                  "while its triangle faces it, Lucent shades with the triangle's normal "
+                  "and POV-Ray 3.7 turns the interpolated normal towards the viewer, so "
+                  "POV-Ray's image can show thin dark slivers there (docs/scene-language.md, "
+                  "For POV-Ray users)",
+                  what, worst >= kPi / 2 ? "at least" : "up to", degrees(worst)));
 }
 
 }  // namespace lucent

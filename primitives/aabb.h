@@ -22,9 +22,19 @@ struct AABB {
   Vec3 extent() const { return hi - lo; }
   double surfaceArea() const;
 
-  void expand(const Vec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
-  void expand(const AABB& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
-  static AABB join(const AABB& a, const AABB& b) { AABB r = a; r.expand(b); return r; }
+  void expand(const Vec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  void expand(const AABB& b) {
+    lo = glm::min(lo, b.lo);
+    hi = glm::max(hi, b.hi);
+  }
+  static AABB join(const AABB& a, const AABB& b) {
+    AABB r = a;
+    r.expand(b);
+    return r;
+  }
   static AABB meet(const AABB& a, const AABB& b) {
     return {glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)};
   }

@@ -29,7 +29,9 @@ struct AxisFrame {
     Vec3 r = p - origin;
     return {glm::dot(r, u), glm::dot(r, v), glm::dot(r, a)};
   }
-  Vec3 vectorToLocal(const Vec3& d) const { return {glm::dot(d, u), glm::dot(d, v), glm::dot(d, a)}; }
+  Vec3 vectorToLocal(const Vec3& d) const {
+    return {glm::dot(d, u), glm::dot(d, v), glm::dot(d, a)};
+  }
   Ray rayToLocal(const Ray& r) const {
     return Ray(pointToLocal(r.o), vectorToLocal(r.d), r.tmin, r.tmax);
   }

@@ -12,7 +12,9 @@ namespace {
 
 using Piece = Blob::Piece;
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 // The vectors whose squared length is the piece's r² at o + t·d: w + t·dv.
 void radialLine(const Piece& p, const Vec3& w, const Vec3& d, Vec3& wr, Vec3& dr) {
@@ -81,9 +83,10 @@ Blob::Blob(double threshold, std::vector<BlobComponent> components) : threshold_
   if (components.empty()) throw std::invalid_argument("blob: needs at least one component");
   bool any = false;
   for (const BlobComponent& c : components) {
-    if (!(c.radius > 0.0) || !std::isfinite(c.radius) || !std::isfinite(c.strength) || !finite(c.a) ||
-        !finite(c.b))
-      throw std::invalid_argument("blob: a component needs a finite radius > 0, strength and position");
+    if (!(c.radius > 0.0) || !std::isfinite(c.radius) || !std::isfinite(c.strength) ||
+        !finite(c.a) || !finite(c.b))
+      throw std::invalid_argument(
+          "blob: a component needs a finite radius > 0, strength and position");
     double r2 = c.radius * c.radius;
     AABB box;
     if (c.kind == BlobComponent::Sphere) {
@@ -106,7 +109,8 @@ Blob::Blob(double threshold, std::vector<BlobComponent> components) : threshold_
     }
   }
   if (!any) bounds_ = AABB(components[0].a, components[0].a);  // empty solid: nothing is inside
-  scale_ = std::max({maxComponent(glm::abs(bounds_.lo)), maxComponent(glm::abs(bounds_.hi)), 1e-300});
+  scale_ =
+      std::max({maxComponent(glm::abs(bounds_.lo)), maxComponent(glm::abs(bounds_.hi)), 1e-300});
 }
 
 double Blob::field(const Vec3& p) const {

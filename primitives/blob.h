@@ -51,12 +51,12 @@ class Blob final : public Shape {
   // are the same numbers (a gap of one ulp between them would drop the field there).
   struct Piece {
     enum Kind { Ball, Body } kind = Ball;
-    Vec3 c{0.0};       // the ball's centre, or the body's base
-    Vec3 base{0.0};    // a cylinder's base
-    Vec3 axis{0.0};    // a cylinder's unit axis (zero for a sphere)
+    Vec3 c{0.0};                     // the ball's centre, or the body's base
+    Vec3 base{0.0};                  // a cylinder's base
+    Vec3 axis{0.0};                  // a cylinder's unit axis (zero for a sphere)
     double zlo = -kInf, zhi = kInf;  // the piece keeps zlo <= axis·(p − base) < zhi
-    double r2 = 1.0;   // radius²
-    double s = 1.0;    // strength
+    double r2 = 1.0;                 // radius²
+    double s = 1.0;                  // strength
   };
 
  private:

@@ -7,10 +7,10 @@ namespace lucent {
 
 struct BlobComponent {
   enum Kind { Sphere, Cylinder } kind = Sphere;
-  Vec3 a{0.0};                  // the sphere's centre, or the cylinder's base
-  Vec3 b{0.0, 1.0, 0.0};        // the cylinder's cap (unused for a sphere)
-  double radius = 1.0;          // > 0
-  double strength = 1.0;        // may be negative
+  Vec3 a{0.0};            // the sphere's centre, or the cylinder's base
+  Vec3 b{0.0, 1.0, 0.0};  // the cylinder's cap (unused for a sphere)
+  double radius = 1.0;    // > 0
+  double strength = 1.0;  // may be negative
 };
 
 }  // namespace lucent

@@ -28,8 +28,14 @@ bool Box::span(const Ray& ray, Span& out) const {
       std::swap(tLo, tHi);
       std::swap(fNear, fFar);
     }
-    if (tLo > out.tIn) { out.tIn = tLo; out.partIn = fNear; }
-    if (tHi < out.tOut) { out.tOut = tHi; out.partOut = fFar; }
+    if (tLo > out.tIn) {
+      out.tIn = tLo;
+      out.partIn = fNear;
+    }
+    if (tHi < out.tOut) {
+      out.tOut = tHi;
+      out.partOut = fFar;
+    }
   }
   return out.tIn <= out.tOut;
 }

@@ -35,7 +35,6 @@ BvhRay::BvhRay(const Ray& r) : o(r.o), invDir(1.0 / r.d) {
   }
 }
 
-
 AABB Bvh::bounds() const {
   AABB b;
   if (empty()) return b;
@@ -58,8 +57,14 @@ struct Box4 {
   v4f lo = splat(INFINITY);
   v4f hi = splat(-INFINITY);
 
-  void expand(const Box4& b) { lo = vmin(lo, b.lo); hi = vmax(hi, b.hi); }
-  void expand(v4f p) { lo = vmin(lo, p); hi = vmax(hi, p); }
+  void expand(const Box4& b) {
+    lo = vmin(lo, b.lo);
+    hi = vmax(hi, b.hi);
+  }
+  void expand(v4f p) {
+    lo = vmin(lo, p);
+    hi = vmax(hi, p);
+  }
   // Half the surface area (the SAH compares ratios only); lane 3 plays no part.
   float halfArea() const {
     const v4f e = hi - lo;
@@ -145,8 +150,7 @@ constexpr int kBins = 16;
 // depth stays below kSahDepth + 30, plus at most W - 1 for leaves split into a node's
 // free slots (Builder::build: one split per free slot), < Bvh::kMaxDepth.
 constexpr int kSahDepth = 64;
-static_assert(kSahDepth + 30 + (BvhNode::kWidth - 1) < Bvh::kMaxDepth,
-              "traversal stack too small");
+static_assert(kSahDepth + 30 + (BvhNode::kWidth - 1) < Bvh::kMaxDepth, "traversal stack too small");
 // Subtrees with fewer items are built by one task.
 constexpr uint32_t kParallelMin = 4096;
 // Nodes with fewer items bin into one set of bins (findSahSplit).
@@ -158,7 +162,11 @@ constexpr uint32_t kParallelBinMin = 1u << 16;
 struct Bin {
   v4f lo, hi;
   uint32_t count;
-  void clear() { lo = splat(INFINITY); hi = splat(-INFINITY); count = 0; }
+  void clear() {
+    lo = splat(INFINITY);
+    hi = splat(-INFINITY);
+    count = 0;
+  }
   Box4 box() const { return {lo, hi}; }
 };
 
@@ -214,7 +222,7 @@ struct Child {
   Box4 box, cbox;
   int depth;  // binary splits above it
   bool leaf;
-  bool sah;   // split by `split`; otherwise at the object median
+  bool sah;  // split by `split`; otherwise at the object median
   struct Split {
     int axis = -1;
     int bin = 0;     // items in bins [0, bin) go left
@@ -229,8 +237,8 @@ class Builder {
   // nodes: room for one node per ref; order: one slot per ref, filled at the leaves.
   // capacity: the nodes allocated; prefaultNodes: make them present ahead of the build
   // (large trees), instead of a fault per 4 KB page as each is first written.
-  Builder(RefVector& refs, BvhNode* nodes, uint32_t capacity, bool prefaultNodes,
-          uint32_t* order, const Bvh::Options& opt)
+  Builder(RefVector& refs, BvhNode* nodes, uint32_t capacity, bool prefaultNodes, uint32_t* order,
+          const Bvh::Options& opt)
       : refs_(refs),
         nodes_(nodes),
         capacity_(capacity),
@@ -465,10 +473,10 @@ class Builder {
       for (int a = 0; a < 3; ++a) {
         acc[a].expand(bins.b[k - 1][a].box());
         cnt[a] += bins.b[k - 1][a].count;
-        cost[k][a] = cnt[a] == 0 || rightCount[k][a] == 0
-                         ? INFINITY
-                         : acc[a].halfArea() * float(cnt[a]) +
-                               rightArea[k][a] * float(rightCount[k][a]);
+        cost[k][a] =
+            cnt[a] == 0 || rightCount[k][a] == 0
+                ? INFINITY
+                : acc[a].halfArea() * float(cnt[a]) + rightArea[k][a] * float(rightCount[k][a]);
       }
 
     Child::Split& s = c.split;
@@ -498,9 +506,12 @@ class Builder {
   // (build()), so the tree is the same whatever the order the partition leaves.
   uint32_t partition(const Child& c, Box4& lcbox, Box4& rcbox) {
     switch (c.split.axis) {
-      case 0: return partitionOn<0>(c, lcbox, rcbox);
-      case 1: return partitionOn<1>(c, lcbox, rcbox);
-      default: return partitionOn<2>(c, lcbox, rcbox);
+      case 0:
+        return partitionOn<0>(c, lcbox, rcbox);
+      case 1:
+        return partitionOn<1>(c, lcbox, rcbox);
+      default:
+        return partitionOn<2>(c, lcbox, rcbox);
     }
   }
 
@@ -595,7 +606,8 @@ class Builder {
 }  // namespace
 
 Bvh::Bvh(const std::vector<AABB>& itemBounds, const Options& options)
-    : Bvh(itemBounds.size(), [&](uint32_t i) { return itemBounds[i]; }, options) {}
+    : Bvh(
+          itemBounds.size(), [&](uint32_t i) { return itemBounds[i]; }, options) {}
 
 Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Options& options) {
   if (count >= kMaxItems) throw std::invalid_argument("BVH: too many items");
@@ -649,9 +661,9 @@ Bvh::Bvh(size_t count, const std::function<AABB(uint32_t)>& boundsOf, const Opti
   }
   if (all.unbounded) throw std::invalid_argument("BVH: an item has an unbounded box");
   if (all.empties)  // never hit: not in the tree
-    refs.erase(std::remove_if(refs.begin(), refs.end(),
-                              [](const Ref& r) { return std::isnan(r.lo[0]); }),
-               refs.end());
+    refs.erase(
+        std::remove_if(refs.begin(), refs.end(), [](const Ref& r) { return std::isnan(r.lo[0]); }),
+        refs.end());
   const Box4 box = all.box, cbox = all.cbox;
   itemCount_ = refs.size();
   if (refs.empty()) return;

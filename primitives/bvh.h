@@ -3,8 +3,8 @@
 #pragma once
 
 #include "aabb.h"
-#include "ray.h"
 #include "memory/uninitialised_construct.h"
+#include "ray.h"
 
 #include <cfloat>
 #include <cstddef>
@@ -221,8 +221,8 @@ struct FastNodeTest {
 // cannot take (a zero direction component, an origin beyond float range).
 struct BvhRay {
   Vec3 o;
-  Vec3 invDir;      // ±inf for ±0 components (IEEE division keeps the sign)
-  int nearOff[3];   // offsets in BvhNode::box of the plane met first on each axis
+  Vec3 invDir;     // ±inf for ±0 components (IEEE division keeps the sign)
+  int nearOff[3];  // offsets in BvhNode::box of the plane met first on each axis
   int farOff[3];
 
   explicit BvhRay(const Ray& r);
@@ -365,8 +365,7 @@ class Bvh {
   template <class Blocks, class Prefetch = NoPrefetch>
   bool any(const Ray& ray, Blocks&& blocks, Prefetch&& prefetch = Prefetch()) const {
     return !candidates(
-        ray, ray.tmax, [&](uint32_t item) { return !blocks(item, ray); }, prefetch,
-        Order::Tree);
+        ray, ray.tmax, [&](uint32_t item) { return !blocks(item, ray); }, prefetch, Order::Tree);
   }
 
   // Every item whose box the ray overlaps in [ray.tmin, ray.tmax]: visit(uint32_t item)
@@ -437,8 +436,8 @@ class Bvh {
 };
 
 template <class T>
-void Bvh::pushOrdered(const BvhNode& n, int mask, const T tEnter[BvhNode::kWidth],
-                      Entry<T>* stack, int& sp, Entry<T>& next) {
+void Bvh::pushOrdered(const BvhNode& n, int mask, const T tEnter[BvhNode::kWidth], Entry<T>* stack,
+                      int& sp, Entry<T>& next) {
   int c0 = __builtin_ctz(mask);
   mask &= mask - 1;
   int c1 = __builtin_ctz(mask);
@@ -484,10 +483,8 @@ bool Bvh::candidatesWith(const Test& test, const double& tFar, VisitLeaf& visitL
         // leaves are not in slot order, fetch only the nodes; docs/performance-history.md).
         for (int m = mask; m; m &= m - 1) {
           const int c = __builtin_ctz(m);
-          if (n.count[c] == 0)
-            prefetchNode(n.index[c]);
-          else
-            prefetch(n.index[c], n.count[c]);
+          if (n.count[c] == 0) prefetchNode(n.index[c]);
+          else prefetch(n.index[c], n.count[c]);
         }
         if ((mask & (mask - 1)) == 0) {
           int c = __builtin_ctz(mask);

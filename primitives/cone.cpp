@@ -8,8 +8,13 @@
 namespace lucent {
 
 Cone::Cone(const Vec3& base, double baseRadius, const Vec3& cap, double capRadius, bool open)
-    : base_(base), cap_(cap), rBase_(baseRadius), rCap_(capRadius),
-      height_(glm::length(cap - base)), slope_(0.0), open_(open),
+    : base_(base),
+      cap_(cap),
+      rBase_(baseRadius),
+      rCap_(capRadius),
+      height_(glm::length(cap - base)),
+      slope_(0.0),
+      open_(open),
       frame_(base, cap != base ? glm::normalize(cap - base) : Vec3(0, 0, 1)) {
   if (!isFinite(base) || !isFinite(cap) || !(height_ > 0.0) || !std::isfinite(height_))
     throw std::invalid_argument("cone: base and cap must be distinct finite points");
@@ -75,10 +80,8 @@ bool Cone::solidSpan(const Ray& l, Span& s) const {
       pieces[n][0] = -kInf, pieces[n][1] = kInf, ++n;
     } else {
       double s0 = -q.c / (2.0 * q.h);
-      if (q.h > 0.0)
-        pieces[n][0] = -kInf, pieces[n][1] = s0, ++n;
-      else
-        pieces[n][0] = s0, pieces[n][1] = kInf, ++n;
+      if (q.h > 0.0) pieces[n][0] = -kInf, pieces[n][1] = s0, ++n;
+      else pieces[n][0] = s0, pieces[n][1] = kInf, ++n;
     }
   } else {
     double s0, s1;
@@ -119,8 +122,14 @@ bool Cone::solidSpan(const Ray& l, Span& s) const {
   for (int i = 0; i < n; ++i) {
     double lo = pieces[i][0], hi = pieces[i][1];
     uint32_t partLo = 0, partHi = 0;
-    if (z0 > lo) { lo = z0; partLo = p0; }
-    if (z1 < hi) { hi = z1; partHi = p1; }
+    if (z0 > lo) {
+      lo = z0;
+      partLo = p0;
+    }
+    if (z1 < hi) {
+      hi = z1;
+      partHi = p1;
+    }
     if (!(lo <= hi) || hi - lo <= bestLen) continue;
     bestLen = hi - lo;
     s.tIn = partLo != 0 ? t0 : q.tShift + lo;

@@ -8,15 +8,18 @@
 namespace lucent {
 
 struct Crossing {
-  Hit hit;         // distance, leaf and payload, as a closest-hit search would give them
-  bool entering;   // true where the ray passes from outside to inside the solid
+  Hit hit;        // distance, leaf and payload, as a closest-hit search would give them
+  bool entering;  // true where the ray passes from outside to inside the solid
 };
 
 struct CrossingList {
-  bool startsInside = false;  // is the point at ray.tmin inside the solid?
+  bool startsInside = false;    // is the point at ray.tmin inside the solid?
   std::vector<Crossing> items;  // sorted by hit.t, all within [ray.tmin, ray.tmax]
 
-  void clear() { startsInside = false; items.clear(); }
+  void clear() {
+    startsInside = false;
+    items.clear();
+  }
 };
 
 }  // namespace lucent

@@ -7,7 +7,11 @@
 namespace lucent {
 
 Cylinder::Cylinder(const Vec3& base, const Vec3& cap, double radius, bool open)
-    : base_(base), cap_(cap), radius_(radius), height_(glm::length(cap - base)), open_(open),
+    : base_(base),
+      cap_(cap),
+      radius_(radius),
+      height_(glm::length(cap - base)),
+      open_(open),
       frame_(base, cap != base ? glm::normalize(cap - base) : Vec3(0, 0, 1)) {
   if (!isFinite(base) || !isFinite(cap) || !(height_ > 0.0) || !std::isfinite(height_))
     throw std::invalid_argument("cylinder: base and cap must be distinct finite points");
@@ -50,8 +54,14 @@ bool Cylinder::solidSpan(const Ray& l, Span& s) const {
       std::swap(tBase, tCap);
       std::swap(pBase, pCap);
     }
-    if (tBase > s.tIn) { s.tIn = tBase; s.partIn = pBase; }
-    if (tCap < s.tOut) { s.tOut = tCap; s.partOut = pCap; }
+    if (tBase > s.tIn) {
+      s.tIn = tBase;
+      s.partIn = pBase;
+    }
+    if (tCap < s.tOut) {
+      s.tOut = tCap;
+      s.partOut = pCap;
+    }
   }
   return s.tIn <= s.tOut;
 }

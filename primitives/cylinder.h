@@ -27,7 +27,7 @@ class Cylinder final : public Shape {
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
 
  private:
-  bool solidSpan(const Ray& local, Span& out) const;         // closed cylinder
+  bool solidSpan(const Ray& local, Span& out) const;            // closed cylinder
   int sideRoots(const Ray& local, SurfaceRoot roots[2]) const;  // open cylinder
 
   Vec3 base_, cap_;

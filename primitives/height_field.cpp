@@ -37,7 +37,8 @@ HeightField::HeightField(std::shared_ptr<const HeightMap> map, bool smooth, doub
   if (!map_ || map_->width < 2 || map_->depth < 2 ||
       map_->values.size() != static_cast<size_t>(map_->width) * map_->depth)
     throw std::invalid_argument("HeightField: the grid must be at least 2 x 2 points");
-  if (!std::isfinite(waterLevel)) throw std::invalid_argument("HeightField: the water level is not finite");
+  if (!std::isfinite(waterLevel))
+    throw std::invalid_argument("HeightField: the water level is not finite");
   cellsX_ = map_->width - 1;
   cellsZ_ = map_->depth - 1;
   const uint16_t top = *std::max_element(map_->values.begin(), map_->values.end());
@@ -53,8 +54,10 @@ HeightField::HeightField(std::shared_ptr<const HeightMap> map, bool smooth, doub
   std::vector<MinMax> cells(static_cast<size_t>(cellsX_) * cellsZ_);
   for (int j = 0; j < cellsZ_; ++j)
     for (int i = 0; i < cellsX_; ++i) {
-      const uint16_t a = map_->at(i, j), b = map_->at(i + 1, j), c = map_->at(i, j + 1), d = map_->at(i + 1, j + 1);
-      cells[static_cast<size_t>(j) * cellsX_ + i] = {std::min({a, b, c, d}), std::max({a, b, c, d})};
+      const uint16_t a = map_->at(i, j), b = map_->at(i + 1, j), c = map_->at(i, j + 1),
+                     d = map_->at(i + 1, j + 1);
+      cells[static_cast<size_t>(j) * cellsX_ + i] = {std::min({a, b, c, d}),
+                                                     std::max({a, b, c, d})};
     }
   levels_.push_back(std::move(cells));
   levelWidth_.push_back(cellsX_);
@@ -94,7 +97,8 @@ HeightField::HeightField(std::shared_ptr<const HeightMap> map, bool smooth, doub
                      static_cast<short>(32767 * n.z));
         Vec3 o(q.x * cellsX_, q.y * 65536.0, q.z * cellsZ_);
         const double ol = glm::length(o);
-        vertexNormals_[static_cast<size_t>(z) * map_->width + x] = ol > 0.0 ? o / ol : Vec3(0.0, 1.0, 0.0);
+        vertexNormals_[static_cast<size_t>(z) * map_->width + x] =
+            ol > 0.0 ? o / ol : Vec3(0.0, 1.0, 0.0);
       }
   }
 }
@@ -154,10 +158,15 @@ void HeightField::walk(const Ray& ray, Sink&& sink) const {
     if (d < 0.0 && p == c) --c;
     return std::clamp(c, 0, cells - 1);
   };
-  auto nextX = [&](int i) { return D.x > 0.0 ? (i + 1 - O.x) / D.x : D.x < 0.0 ? (i - O.x) / D.x : kInf; };
-  auto nextZ = [&](int j) { return D.z > 0.0 ? (j + 1 - O.z) / D.z : D.z < 0.0 ? (j - O.z) / D.z : kInf; };
+  auto nextX = [&](int i) {
+    return D.x > 0.0 ? (i + 1 - O.x) / D.x : D.x < 0.0 ? (i - O.x) / D.x : kInf;
+  };
+  auto nextZ = [&](int j) {
+    return D.z > 0.0 ? (j + 1 - O.z) / D.z : D.z < 0.0 ? (j - O.z) / D.z : kInf;
+  };
   auto triPart = [&](int i, int j, bool upper) {
-    return 2u * (static_cast<uint32_t>(j) * static_cast<uint32_t>(cellsX_) + static_cast<uint32_t>(i)) +
+    return 2u * (static_cast<uint32_t>(j) * static_cast<uint32_t>(cellsX_) +
+                 static_cast<uint32_t>(i)) +
            (upper ? 1u : 0u);
   };
 
@@ -240,7 +249,8 @@ void HeightField::walk(const Ray& ray, Sink&& sink) const {
         A = O.y - y1 - (y2 - y1) * (O.x - i) - (y3 - y1) * (O.z - j);
         B = D.y - (y2 - y1) * D.x - (y3 - y1) * D.z;
       } else {
-        const double y4 = gridHeight(i + 1, j + 1), y3 = gridHeight(i, j + 1), y2 = gridHeight(i + 1, j);
+        const double y4 = gridHeight(i + 1, j + 1), y3 = gridHeight(i, j + 1),
+                     y2 = gridHeight(i + 1, j);
         A = O.y - y4 - (y3 - y4) * (i + 1 - O.x) - (y2 - y4) * (j + 1 - O.z);
         B = D.y + (y3 - y4) * D.x + (y2 - y4) * D.z;
       }
@@ -302,7 +312,8 @@ void HeightField::crossings(const Ray& ray, CrossingList& out) const {
 Vec3 HeightField::flatNormal(int i, int j, bool upper) const {
   Vec3 n;
   if (!upper)
-    n = Vec3((gridHeight(i, j) - gridHeight(i + 1, j)) * cellsX_, 1.0, (gridHeight(i, j) - gridHeight(i, j + 1)) * cellsZ_);
+    n = Vec3((gridHeight(i, j) - gridHeight(i + 1, j)) * cellsX_, 1.0,
+             (gridHeight(i, j) - gridHeight(i, j + 1)) * cellsZ_);
   else
     n = Vec3((gridHeight(i, j + 1) - gridHeight(i + 1, j + 1)) * cellsX_, 1.0,
              (gridHeight(i + 1, j) - gridHeight(i + 1, j + 1)) * cellsZ_);
@@ -312,10 +323,14 @@ Vec3 HeightField::flatNormal(int i, int j, bool upper) const {
 // POV-Ray's bilinear blend of the cell's four vertex normals (hfield.cpp, Normal).
 template <class Map>
 Vec3 HeightField::blendNormals(double X, double Z, Map&& toWorld) const {
-  const int px = std::clamp(static_cast<int>(X), 0, cellsX_ - 1), pz = std::clamp(static_cast<int>(Z), 0, cellsZ_ - 1);
+  const int px = std::clamp(static_cast<int>(X), 0, cellsX_ - 1),
+            pz = std::clamp(static_cast<int>(Z), 0, cellsZ_ - 1);
   const double x = X - px, z = Z - pz, u = 1.0 - x, v = 1.0 - z;
-  auto n = [&](int a, int b) { return toWorld(vertexNormals_[static_cast<size_t>(b) * map_->width + a]); };
-  const Vec3 r = v * (u * n(px, pz) + x * n(px + 1, pz)) + z * (u * n(px, pz + 1) + x * n(px + 1, pz + 1));
+  auto n = [&](int a, int b) {
+    return toWorld(vertexNormals_[static_cast<size_t>(b) * map_->width + a]);
+  };
+  const Vec3 r =
+      v * (u * n(px, pz) + x * n(px + 1, pz)) + z * (u * n(px, pz + 1) + x * n(px + 1, pz + 1));
   const double len = glm::length(r);
   return len > 0.0 ? r / len : Vec3(0.0, 1.0, 0.0);
 }
@@ -324,15 +339,16 @@ Vec3 HeightField::smoothNormal(double X, double Z) const {
   return blendNormals(X, Z, [](const Vec3& n) { return n; });
 }
 
-bool HeightField::worldShadingNormal(const Ray& objectRay, const Hit& hit, const Transform& worldFromObject,
-                                     Vec3& ns) const {
+bool HeightField::worldShadingNormal(const Ray& objectRay, const Hit& hit,
+                                     const Transform& worldFromObject, Vec3& ns) const {
   if (!smooth_ || hit.part >= kWallX0) return false;
   const Vec3 p = objectRay.at(hit.t);
-  const Vec3 s = blendNormals(p.x * cellsX_, p.z * cellsZ_, [&](const Vec3& n) { return worldFromObject.normalToWorld(n); });
+  const Vec3 s = blendNormals(p.x * cellsX_, p.z * cellsZ_,
+                              [&](const Vec3& n) { return worldFromObject.normalToWorld(n); });
   const uint32_t cell = hit.part >> 1;
   const Vec3 ng = worldFromObject.normalToWorld(
-      flatNormal(static_cast<int>(cell % static_cast<uint32_t>(cellsX_)), static_cast<int>(cell / static_cast<uint32_t>(cellsX_)),
-                 (hit.part & 1u) != 0));
+      flatNormal(static_cast<int>(cell % static_cast<uint32_t>(cellsX_)),
+                 static_cast<int>(cell / static_cast<uint32_t>(cellsX_)), (hit.part & 1u) != 0));
   ns = glm::dot(s, ng) > 0.0 ? s : ng;  // never behind the facet, as surface() keeps it
   return true;
 }
@@ -342,12 +358,24 @@ SurfaceInfo HeightField::surface(const Ray& ray, const Hit& hit) const {
   si.p = ray.at(hit.t);
   Vec3 n;
   switch (hit.part) {
-    case kWallX0: n = Vec3(-1.0, 0.0, 0.0); break;
-    case kWallX1: n = Vec3(1.0, 0.0, 0.0); break;
-    case kWallZ0: n = Vec3(0.0, 0.0, -1.0); break;
-    case kWallZ1: n = Vec3(0.0, 0.0, 1.0); break;
-    case kFloor: n = Vec3(0.0, -1.0, 0.0); break;
-    case kTop: n = Vec3(0.0, 1.0, 0.0); break;
+    case kWallX0:
+      n = Vec3(-1.0, 0.0, 0.0);
+      break;
+    case kWallX1:
+      n = Vec3(1.0, 0.0, 0.0);
+      break;
+    case kWallZ0:
+      n = Vec3(0.0, 0.0, -1.0);
+      break;
+    case kWallZ1:
+      n = Vec3(0.0, 0.0, 1.0);
+      break;
+    case kFloor:
+      n = Vec3(0.0, -1.0, 0.0);
+      break;
+    case kTop:
+      n = Vec3(0.0, 1.0, 0.0);
+      break;
     default: {
       const uint32_t cell = hit.part >> 1;
       const int i = static_cast<int>(cell % static_cast<uint32_t>(cellsX_));

@@ -11,9 +11,9 @@
 // floor is the water level less 0.001 / 65536 (POV-Ray's HFIELD_OFFSET). It is closed by
 // vertical walls over the square's edges and that floor, so the parts below the water
 // level are gone (POV-Ray clips them by its bounding box, whose bottom is there) while the
-// surface at the water level stays, and crossings alternate. POV-Ray's height field has neither walls nor floor (its inside goes
-// on below the surface without end): the two agree wherever the surface is seen from above
-// and the edges lie at the water level.
+// surface at the water level stays, and crossings alternate. POV-Ray's height field has neither
+// walls nor floor (its inside goes on below the surface without end): the two agree wherever the
+// surface is seen from above and the edges lie at the water level.
 //
 // Method: a 2-D grid walk over the cells (Amanatides & Woo 1987, "A fast voxel traversal
 // algorithm for ray tracing") that skips whole blocks of cells through a min/max mip

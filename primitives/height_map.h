@@ -9,8 +9,8 @@
 namespace lucent {
 
 struct HeightMap {
-  int width = 0;  // grid points along x (the image's width), >= 2
-  int depth = 0;  // grid points along z (the image's height), >= 2
+  int width = 0;                 // grid points along x (the image's width), >= 2
+  int depth = 0;                 // grid points along z (the image's height), >= 2
   std::vector<uint16_t> values;  // width * depth, row z by column x
 
   uint16_t at(int x, int z) const { return values[static_cast<size_t>(z) * width + x]; }

@@ -23,8 +23,8 @@ struct Hit {
 
 // The geometry at a hit, computed once for the winner.
 struct SurfaceInfo {
-  Vec3 p{0.0};        // hit point
-  Vec3 pError{0.0};   // absolute rounding-error bound of p, per component
+  Vec3 p{0.0};             // hit point
+  Vec3 pError{0.0};        // absolute rounding-error bound of p, per component
   Vec3 ng{0.0, 1.0, 0.0};  // unit geometric normal, outward for solids (flipped by Hit::flip)
   Vec3 ns{0.0, 1.0, 0.0};  // unit shading normal (interpolated normals), same side as ng
   Vec2 uv{0.0};

@@ -33,7 +33,8 @@ Vec3 worldToObjectRoundTripError(const Transform& t, const Vec3& pWorld) {
 Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& worldFromObject,
                    uint32_t tag, size_t testSlot)
     : shape_(std::move(shape)), tag_(tag), testSlot_(static_cast<uint8_t>(testSlot)) {
-  if (!worldFromObject.isIdentity()) placed_ = std::make_unique<Placement>(Placement{worldFromObject});
+  if (!worldFromObject.isIdentity())
+    placed_ = std::make_unique<Placement>(Placement{worldFromObject});
   bounds_ = transformBounds(worldFromObject.worldFromObject(), shape_->bounds());
 }
 

@@ -22,9 +22,7 @@ struct Interval {
   bool surrounds(double t) const { return lo < t && t < hi; }
   double size() const { return hi - lo; }
 
-  Interval intersect(const Interval& o) const {
-    return {std::max(lo, o.lo), std::min(hi, o.hi)};
-  }
+  Interval intersect(const Interval& o) const { return {std::max(lo, o.lo), std::min(hi, o.hi)}; }
 };
 
 }  // namespace lucent

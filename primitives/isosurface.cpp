@@ -27,12 +27,15 @@ bool finitePositive(double v) { return v > 0.0 && std::isfinite(v); }
 
 Isosurface::Isosurface(Params p) : p_(std::move(p)) {
   if (!p_.field) throw std::invalid_argument("isosurface: no function");
-  if (!finitePositive(p_.maxGradient)) throw std::invalid_argument("isosurface: max-gradient must be > 0");
+  if (!finitePositive(p_.maxGradient))
+    throw std::invalid_argument("isosurface: max-gradient must be > 0");
   if (!finitePositive(p_.accuracy)) throw std::invalid_argument("isosurface: accuracy must be > 0");
-  if (!std::isfinite(p_.threshold)) throw std::invalid_argument("isosurface: threshold must be finite");
+  if (!std::isfinite(p_.threshold))
+    throw std::invalid_argument("isosurface: threshold must be finite");
   const IsosurfaceContainer& c = p_.container;
   if (c.kind == IsosurfaceContainer::Box) {
-    if (!(isFinite(c.min) && isFinite(c.max) && c.min.x < c.max.x && c.min.y < c.max.y && c.min.z < c.max.z))
+    if (!(isFinite(c.min) && isFinite(c.max) && c.min.x < c.max.x && c.min.y < c.max.y &&
+          c.min.z < c.max.z))
       throw std::invalid_argument("isosurface: the container box must have min < max");
     bounds_ = AABB(c.min, c.max);
   } else {
@@ -70,7 +73,9 @@ bool Isosurface::inContainer(const Vec3& p) const {
   return glm::dot(p - c.center, p - c.center) <= c.radius * c.radius;
 }
 
-bool Isosurface::inside(const Vec3& p) const { return !p_.open && inContainer(p) && value(p) < 0.0; }
+bool Isosurface::inside(const Vec3& p) const {
+  return !p_.open && inContainer(p) && value(p) < 0.0;
+}
 
 template <class Emit>
 void Isosurface::walk(const Ray& ray, double a, double ga, double b, double gb, Emit&& emit) const {
@@ -97,7 +102,8 @@ void Isosurface::walk(const Ray& ray, double a, double ga, double b, double gb, 
     if (!(w > 0.0)) continue;
     // A non-finite value (sqrt of a negative number, say) counts as outside.
     const double g0 = std::isnan(s.g0) ? kInf : s.g0, g1 = std::isnan(s.g1) ? kInf : s.g1;
-    if (std::isfinite(g0) && std::isfinite(g1)) steepest = std::max(steepest, std::abs(g1 - g0) / (w * dl));
+    if (std::isfinite(g0) && std::isfinite(g1))
+      steepest = std::max(steepest, std::abs(g1 - g0) / (w * dl));
     const bool change = (g0 < 0.0) != (g1 < 0.0);
     if (!change && std::abs(g0) + std::abs(g1) > bound * w) continue;  // no crossing fits
     if (w > tAccuracy && s.depth < kMaxDepth && evaluations < kEvaluationBudget) {
@@ -141,7 +147,9 @@ void Isosurface::walk(const Ray& ray, double a, double ga, double b, double gb, 
       }
       if (hi - lo <= 2.0 * kMachineEps * std::max(std::abs(lo), std::abs(hi))) break;
     }
-    double root = lo == hi ? lo : (std::isfinite(glo) && std::isfinite(ghi) ? std::clamp(t, lo, hi) : 0.5 * (lo + hi));
+    double root = lo == hi ? lo
+                           : (std::isfinite(glo) && std::isfinite(ghi) ? std::clamp(t, lo, hi)
+                                                                       : 0.5 * (lo + hi));
     if (!emit(root, !(g0 < 0.0), hi - lo)) break;
   }
   if (p_.record && steepest > p_.maxGradient) p_.record->note(steepest);
@@ -220,7 +228,8 @@ SurfaceInfo Isosurface::surface(const Ray& ray, const Hit& hit) const {
   s.p = ray.at(hit.t);
   const double dl = glm::length(ray.d);
   // Rounding of the point, plus how far the root may lie from it (the final bracket).
-  s.pError = gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) + Vec3(scale_)) + Vec3(hit.b1 * dl);
+  s.pError =
+      gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) + Vec3(scale_)) + Vec3(hit.b1 * dl);
   Vec3 n(0.0);
   if (hit.part == kContainerSurface) {
     const IsosurfaceContainer& c = p_.container;

@@ -46,10 +46,14 @@ void multiply(const double* f, int df, const double* g, int dg, double* r) {
 
 int Lathe::minPoints(LatheSpline spline) {
   switch (spline) {
-    case LatheSpline::Linear: return 2;
-    case LatheSpline::Quadratic: return 3;
-    case LatheSpline::Cubic: return 4;
-    case LatheSpline::Bezier: return 4;
+    case LatheSpline::Linear:
+      return 2;
+    case LatheSpline::Quadratic:
+      return 3;
+    case LatheSpline::Cubic:
+      return 4;
+    case LatheSpline::Bezier:
+      return 4;
   }
   return 2;
 }
@@ -60,7 +64,8 @@ Lathe::Lathe(LatheSpline spline, const std::vector<Vec2>& points) {
   if (spline == LatheSpline::Bezier && n % 4 != 0)
     throw std::invalid_argument("lathe: a bezier lathe needs a multiple of 4 points");
   for (const Vec2& p : points) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw std::invalid_argument("lathe: points must be finite");
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+      throw std::invalid_argument("lathe: points must be finite");
     if (p.x < 0.0) throw std::invalid_argument("lathe: x must be >= 0");
   }
   // Each piece's polynomial, and its first and last point (for the joints).
@@ -68,7 +73,10 @@ Lathe::Lathe(LatheSpline spline, const std::vector<Vec2>& points) {
   // The ends from the points themselves: a + b + c + d need not round to the last one.
   auto add = [&](Vec2 a, Vec2 b, Vec2 c, Vec2 d, Vec2 first, Vec2 last) {
     Piece p{a, b, c, d, 0, 0.0, 0.0, 0.0, true};
-    p.degree = (a.x != 0.0 || a.y != 0.0) ? 3 : (b.x != 0.0 || b.y != 0.0) ? 2 : (c.x != 0.0 || c.y != 0.0) ? 1 : 0;
+    p.degree = (a.x != 0.0 || a.y != 0.0)   ? 3
+               : (b.x != 0.0 || b.y != 0.0) ? 2
+               : (c.x != 0.0 || c.y != 0.0) ? 1
+                                            : 0;
     if (p.degree == 0) return;  // a repeated point: no surface
     if (a.x == 0.0 && b.x == 0.0 && c.x == 0.0 && d.x == 0.0) return;  // along the axis: no surface
     double x1, x2;
@@ -81,22 +89,25 @@ Lathe::Lathe(LatheSpline spline, const std::vector<Vec2>& points) {
   const auto& P = points;
   switch (spline) {
     case LatheSpline::Linear:
-      for (int i = 0; i + 1 < n; ++i) add(Vec2(0.0), Vec2(0.0), P[i + 1] - P[i], P[i], P[i], P[i + 1]);
+      for (int i = 0; i + 1 < n; ++i)
+        add(Vec2(0.0), Vec2(0.0), P[i + 1] - P[i], P[i], P[i], P[i + 1]);
       break;
     case LatheSpline::Quadratic:
       for (int i = 0; i + 2 < n; ++i)
-        add(Vec2(0.0), 0.5 * P[i] - P[i + 1] + 0.5 * P[i + 2], 0.5 * (P[i + 2] - P[i]), P[i + 1], P[i + 1], P[i + 2]);
+        add(Vec2(0.0), 0.5 * P[i] - P[i + 1] + 0.5 * P[i + 2], 0.5 * (P[i + 2] - P[i]), P[i + 1],
+            P[i + 1], P[i + 2]);
       break;
     case LatheSpline::Cubic:  // Catmull-Rom from point i+1 to i+2
       for (int i = 0; i + 3 < n; ++i)
         add(-0.5 * P[i] + 1.5 * P[i + 1] - 1.5 * P[i + 2] + 0.5 * P[i + 3],
-            P[i] - 2.5 * P[i + 1] + 2.0 * P[i + 2] - 0.5 * P[i + 3], 0.5 * (P[i + 2] - P[i]), P[i + 1],
-            P[i + 1], P[i + 2]);
+            P[i] - 2.5 * P[i + 1] + 2.0 * P[i + 2] - 0.5 * P[i + 3], 0.5 * (P[i + 2] - P[i]),
+            P[i + 1], P[i + 1], P[i + 2]);
       break;
     case LatheSpline::Bezier:
       for (int i = 0; i + 3 < n; i += 4)
-        add(P[i + 3] - 3.0 * P[i + 2] + 3.0 * P[i + 1] - P[i], 3.0 * P[i + 2] - 6.0 * P[i + 1] + 3.0 * P[i],
-            3.0 * (P[i + 1] - P[i]), P[i], P[i], P[i + 3]);
+        add(P[i + 3] - 3.0 * P[i + 2] + 3.0 * P[i + 1] - P[i],
+            3.0 * P[i + 2] - 6.0 * P[i + 1] + 3.0 * P[i], 3.0 * (P[i + 1] - P[i]), P[i], P[i],
+            P[i + 3]);
       break;
   }
   if (pieces_.empty()) throw std::invalid_argument("lathe: the curve has no extent");
@@ -116,8 +127,10 @@ Lathe::Lathe(LatheSpline spline, const std::vector<Vec2>& points) {
       }
     }
   for (size_t i = 0; i < m; ++i) {
-    if (pieces_[i].endsFree && ends[i].second.x > 0.0) discs_.push_back({ends[i].second.y, ends[i].second.x});
-    if (!startJoined[i] && ends[i].first.x > 0.0) discs_.push_back({ends[i].first.y, ends[i].first.x});
+    if (pieces_[i].endsFree && ends[i].second.x > 0.0)
+      discs_.push_back({ends[i].second.y, ends[i].second.x});
+    if (!startJoined[i] && ends[i].first.x > 0.0)
+      discs_.push_back({ends[i].first.y, ends[i].first.x});
   }
   double r = 0.0, h1 = kInf, h2 = -kInf;
   for (const Piece& p : pieces_) {
@@ -144,7 +157,8 @@ bool Lathe::polish(const Piece& p, const Vec3& o, const Vec3& d, double& s, doub
     if (!std::isfinite(ds) || !std::isfinite(dt) || std::abs(ds) > 0.05) return it > 0;
     s += ds;
     t += dt;
-    if (std::abs(ds) <= 4.0 * kMachineEps && std::abs(dt) <= 4.0 * kMachineEps * (std::abs(t) + scale_ / std::sqrt(glm::dot(d, d))))
+    if (std::abs(ds) <= 4.0 * kMachineEps &&
+        std::abs(dt) <= 4.0 * kMachineEps * (std::abs(t) + scale_ / std::sqrt(glm::dot(d, d))))
       break;
   }
   return true;
@@ -157,7 +171,8 @@ void Lathe::pieceRoots(const Piece& p, uint32_t index, const Vec3& o, const Vec3
     if (s >= -kSlack && s <= 1.0 + kSlack) out.push_back({t, index, std::clamp(s, 0.0, 1.0)});
   };
   const double yc[4] = {p.d.y - o.y, p.c.y, p.b.y, p.a.y};
-  const double ya[4] = {std::abs(p.d.y) + std::abs(o.y), std::abs(p.c.y), std::abs(p.b.y), std::abs(p.a.y)};
+  const double ya[4] = {std::abs(p.d.y) + std::abs(o.y), std::abs(p.c.y), std::abs(p.b.y),
+                        std::abs(p.a.y)};
   const double len = std::sqrt(glm::dot(d, d));
   if (std::abs(d.y) < kFlat * len) {
     // Nearly horizontal: the heights first, then the two distances along the ray.
@@ -305,7 +320,8 @@ void Lathe::lineRoots(const Ray& ray, std::vector<LineRoot>& out) const {
     const double px = o.x + u * d.x, pz = o.z + u * d.z;
     const double r2 = discs_[i].radius * discs_[i].radius;
     // s: the squared fraction of the radius, for the rim test of alternates().
-    if (px * px + pz * pz < r2) out.push_back({u, static_cast<uint32_t>(pieces_.size() + i), (px * px + pz * pz) / r2});
+    if (px * px + pz * pz < r2)
+      out.push_back({u, static_cast<uint32_t>(pieces_.size() + i), (px * px + pz * pz) / r2});
   }
   std::sort(out.begin(), out.end(), [](const LineRoot& a, const LineRoot& b) { return a.t < b.t; });
   if (!alternates(out, dd)) decideByInside(o, d, out);
@@ -360,7 +376,8 @@ bool Lathe::inside(const Vec3& q) const {
   for (const Piece& p : pieces_) {
     if (q.y < p.h1 || q.y > p.h2 || rho > p.r2) continue;
     double yc[4] = {p.d.y - q.y, p.c.y, p.b.y, p.a.y};
-    const double ya[4] = {std::abs(p.d.y) + std::abs(q.y), std::abs(p.c.y), std::abs(p.b.y), std::abs(p.a.y)};
+    const double ya[4] = {std::abs(p.d.y) + std::abs(q.y), std::abs(p.c.y), std::abs(p.b.y),
+                          std::abs(p.a.y)};
     int k = 3;
     while (k > 0 && yc[k] == 0.0) --k;
     if (k == 0) continue;
@@ -400,7 +417,8 @@ SurfaceInfo Lathe::surface(const Ray& ray, const Hit& hit) const {
   if ((glm::dot(n, ray.d) < 0.0) != entering) n = -n;
   si.ng = n;
   si.ns = n;
-  si.pError = gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) + glm::abs(si.p) + Vec3(scale_));
+  si.pError =
+      gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) + glm::abs(si.p) + Vec3(scale_));
   return si;
 }
 

@@ -60,8 +60,8 @@ class Lathe final : public Shape {
 
  private:
   struct Piece {
-    Vec2 a, b, c, d;  // (x, y)(s) = ((a·s + b)·s + c)·s + d, s in [0, 1]
-    int degree;       // the highest power of s with a nonzero coefficient (1 to 3)
+    Vec2 a, b, c, d;    // (x, y)(s) = ((a·s + b)·s + c)·s + d, s in [0, 1]
+    int degree;         // the highest power of s with a nonzero coefficient (1 to 3)
     double r2, h1, h2;  // bounding cylinder: |x| <= r2, y in [h1, h2]
     bool endsFree;      // the curve ends at s = 1 here (s = 1 belongs to this piece)
   };

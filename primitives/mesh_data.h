@@ -13,8 +13,8 @@ namespace lucent {
 struct MeshData {
   std::vector<Vec3> positions;
   std::vector<std::array<uint32_t, 3>> triangles;  // indices into positions
-  std::vector<Vec3> normals;  // empty, or one unit normal per position
-  std::vector<Vec2> uvs;      // empty, or one per position
+  std::vector<Vec3> normals;                       // empty, or one unit normal per position
+  std::vector<Vec2> uvs;                           // empty, or one per position
   // Closed (every edge shared by exactly two triangles) and consistently oriented with
   // outward normals (counter-clockwise seen from outside): then the mesh is a solid.
   // Edges are counted between coincident positions: a position is repeated where its

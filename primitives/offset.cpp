@@ -33,10 +33,8 @@ Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& ng, const Ve
   // the point when pError is 0 along the normal (a box face is exact), so the new origin
   // never lies on the surface it leaves.
   for (int i = 0; i < 3; ++i) {
-    if (side[i] > 0.0)
-      po[i] = nextUp(po[i]);
-    else if (side[i] < 0.0)
-      po[i] = nextDown(po[i]);
+    if (side[i] > 0.0) po[i] = nextUp(po[i]);
+    else if (side[i] < 0.0) po[i] = nextDown(po[i]);
   }
   return po;
 }

@@ -11,7 +11,8 @@
 namespace lucent {
 
 Poly::Poly(int order, const std::vector<double>& coefficients) : order_(order) {
-  if (order < 2 || order > kMaxOrder) throw std::invalid_argument("poly: the order must be 2, 3 or 4");
+  if (order < 2 || order > kMaxOrder)
+    throw std::invalid_argument("poly: the order must be 2, 3 or 4");
   if (static_cast<int>(coefficients.size()) != termCount(order))
     throw std::invalid_argument("poly: wrong number of coefficients for the order");
   size_t index = 0;
@@ -30,7 +31,9 @@ Poly::Poly(int order, const std::vector<double>& coefficients) : order_(order) {
   // x², xy, xz, x, y², yz, y, z², z, 1.
   const auto& q = coefficients;
   if (order == 2)
-    bounds_ = Quadric({Vec3(q[0], q[4], q[7]), Vec3(q[1], q[2], q[5]), Vec3(q[3], q[6], q[8]), q[9]}).bounds();
+    bounds_ =
+        Quadric({Vec3(q[0], q[4], q[7]), Vec3(q[1], q[2], q[5]), Vec3(q[3], q[6], q[8]), q[9]})
+            .bounds();
 }
 
 namespace {
@@ -123,9 +126,12 @@ void expandAlongLine(const double (&dense)[kN][kN][kN], const Vec3& o, const Vec
 
 void Poly::linePolynomial(const Vec3& o, const Vec3& d, double* c, double* cAbs) const {
   switch (order_) {
-    case 2: return expandAlongLine<2>(dense_, o, d, c, cAbs);
-    case 3: return expandAlongLine<3>(dense_, o, d, c, cAbs);
-    default: return expandAlongLine<4>(dense_, o, d, c, cAbs);
+    case 2:
+      return expandAlongLine<2>(dense_, o, d, c, cAbs);
+    case 3:
+      return expandAlongLine<3>(dense_, o, d, c, cAbs);
+    default:
+      return expandAlongLine<4>(dense_, o, d, c, cAbs);
   }
 }
 

@@ -56,7 +56,7 @@ class Poly final : public Shape {
     double c;
   };
   int order_;
-  std::vector<Term> terms_;  // the non-zero ones
+  std::vector<Term> terms_;                                         // the non-zero ones
   double dense_[kMaxOrder + 1][kMaxOrder + 1][kMaxOrder + 1] = {};  // c_ijk, zero where absent
   AABB bounds_ = AABB::everything();
 

@@ -144,9 +144,9 @@ int polynomialRootsN(const double* c, const double* cAbs, double lo, double hi,
     val[i] = evalN<N>(c, pts[i]);
     bool interior = i > 0 && i + 1 < m;
     sgn[i] = (interior && std::abs(val[i]) <= errorBound<N>(cAbs, pts[i])) ? 0
-             : val[i] > 0.0                                                 ? 1
-             : val[i] < 0.0                                                 ? -1
-                                                                            : 0;
+             : val[i] > 0.0                                                ? 1
+             : val[i] < 0.0                                                ? -1
+                                                                           : 0;
   }
   int count = 0;
   int lastSign = sgn[0];
@@ -182,11 +182,16 @@ int polynomialRoots(const double* c, const double* cAbs, int n, double lo, doubl
       out[0] = {x, false};
       return 1;
     }
-    case 2: return polynomialRootsN<2>(c, cAbs, lo, hi, out);
-    case 3: return polynomialRootsN<3>(c, cAbs, lo, hi, out);
-    case 4: return polynomialRootsN<4>(c, cAbs, lo, hi, out);
-    case 5: return polynomialRootsN<5>(c, cAbs, lo, hi, out);
-    case 6: return polynomialRootsN<6>(c, cAbs, lo, hi, out);
+    case 2:
+      return polynomialRootsN<2>(c, cAbs, lo, hi, out);
+    case 3:
+      return polynomialRootsN<3>(c, cAbs, lo, hi, out);
+    case 4:
+      return polynomialRootsN<4>(c, cAbs, lo, hi, out);
+    case 5:
+      return polynomialRootsN<5>(c, cAbs, lo, hi, out);
+    case 6:
+      return polynomialRootsN<6>(c, cAbs, lo, hi, out);
   }
   return 0;
 }

@@ -40,7 +40,8 @@ double monotoneRoot(const double* c, int n, double lo, double hi, bool loPositiv
   for (int it = 0; it < 200 && hi - lo > 0.0; ++it) {
     const double fx = evalPolynomial(c, n, x);
     if (fx == 0.0) return x;
-    if ((fx > 0.0) == loPositive) lo = x; else hi = x;
+    if ((fx > 0.0) == loPositive) lo = x;
+    else hi = x;
     const double d = evalPolynomialDerivative(c, n, x);
     double next = d != 0.0 ? x - fx / d : lo - 1.0;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
@@ -71,8 +72,8 @@ double sideOf(double a, double b, const Vec2& q, const Vec2& c) {
 
 }  // namespace
 
-Prism::Prism(const std::vector<PrismContour>& contours, double height1, double height2,
-             Sweep sweep, bool open)
+Prism::Prism(const std::vector<PrismContour>& contours, double height1, double height2, Sweep sweep,
+             bool open)
     : h1_(std::min(height1, height2)), h2_(std::max(height1, height2)), sweep_(sweep), open_(open) {
   if (!std::isfinite(h1_) || !std::isfinite(h2_) || !(h1_ < h2_))
     throw std::invalid_argument("prism: the heights must be finite and differ");
@@ -82,7 +83,8 @@ Prism::Prism(const std::vector<PrismContour>& contours, double height1, double h
     if (contour.empty()) continue;
     for (size_t k = 0; k < contour.size(); ++k) {
       const PrismSegment& sg = contour[k];
-      if (sg.degree < 1 || sg.degree > 3) throw std::invalid_argument("prism: a segment's degree is 1, 2 or 3");
+      if (sg.degree < 1 || sg.degree > 3)
+        throw std::invalid_argument("prism: a segment's degree is 1, 2 or 3");
       const PrismSegment& next = contour[(k + 1) % contour.size()];
       if (sg.end() != next.start()) throw std::invalid_argument("prism: a contour is not closed");
       Piece pc{};
@@ -136,7 +138,8 @@ Prism::Prism(const std::vector<PrismContour>& contours, double height1, double h
         m.xlo = std::min(m.a.x, m.b.x);
         m.xhi = std::max(m.a.x, m.b.x);
         double xr[2];
-        const int nx = pc.degree >= 2 ? unitQuadraticRoots(pc.x[1], 2.0 * pc.x[2], 3.0 * pc.x[3], xr) : 0;
+        const int nx =
+            pc.degree >= 2 ? unitQuadraticRoots(pc.x[1], 2.0 * pc.x[2], 3.0 * pc.x[3], xr) : 0;
         for (int j = 0; j < nx; ++j)
           if (xr[j] > m.s0 && xr[j] < m.s1) {
             const double xv = curve(pc, xr[j]).x;
@@ -163,13 +166,15 @@ Vec2 Prism::curve(const Piece& pc, double s) const {
 }
 
 Vec2 Prism::tangent(const Piece& pc, double s) const {
-  Vec2 t(evalPolynomialDerivative(pc.x, pc.degree, s), evalPolynomialDerivative(pc.z, pc.degree, s));
+  Vec2 t(evalPolynomialDerivative(pc.x, pc.degree, s),
+         evalPolynomialDerivative(pc.z, pc.degree, s));
   if (t.x == 0.0 && t.y == 0.0) t = pc.p1 - pc.p0;  // a cusp: the chord's direction
   return t;
 }
 
 bool Prism::insideOutline(double u, double v) const {
-  if (!(u >= outlineLo_.x && u <= outlineHi_.x && v >= outlineLo_.y && v <= outlineHi_.y)) return false;
+  if (!(u >= outlineLo_.x && u <= outlineHi_.x && v >= outlineLo_.y && v <= outlineHi_.y))
+    return false;
   bool in = false;
   for (const Monotone& m : monotone_) {
     const bool up = m.a.y < m.b.y;
@@ -221,7 +226,8 @@ void Prism::addPieceCrossings(const Piece& pc, uint32_t index, const Ray& ray, d
   const bool pos0 = g0 >= 0.0, pos1 = g1 >= 0.0;
   if (pos0 == pos1) {
     // Both ends on one side: nothing crosses if the control box is strictly there too.
-    const double c00 = g(pc.lo), c11 = g(pc.hi), c01 = g({pc.lo.x, pc.hi.y}), c10 = g({pc.hi.x, pc.lo.y});
+    const double c00 = g(pc.lo), c11 = g(pc.hi), c01 = g({pc.lo.x, pc.hi.y}),
+                 c10 = g({pc.hi.x, pc.lo.y});
     if (pc.degree == 1) return;
     if (pos0 && c00 > 0.0 && c11 > 0.0 && c01 > 0.0 && c10 > 0.0) return;
     if (!pos0 && c00 < 0.0 && c11 < 0.0 && c01 < 0.0 && c10 < 0.0) return;
@@ -233,7 +239,8 @@ void Prism::addPieceCrossings(const Piece& pc, uint32_t index, const Ray& ray, d
     return;
   }
   // f(s) = g(curve(s)), its constant term g at the start point.
-  double f[4] = {g0, a * pc.x[1] + b * pc.z[1], a * pc.x[2] + b * pc.z[2], a * pc.x[3] + b * pc.z[3]};
+  double f[4] = {g0, a * pc.x[1] + b * pc.z[1], a * pc.x[2] + b * pc.z[2],
+                 a * pc.x[3] + b * pc.z[3]};
   int deg = pc.degree;
   double cuts[4] = {0.0};
   int nc = 1 + unitQuadraticRoots(f[1], 2.0 * f[2], 3.0 * f[3], cuts + 1);
@@ -249,7 +256,8 @@ void Prism::addPieceCrossings(const Piece& pc, uint32_t index, const Ray& ray, d
   }
 }
 
-void Prism::lineCrossings(const Ray& ray, double a, double b, const Vec2& q, std::vector<Event>& ev) const {
+void Prism::lineCrossings(const Ray& ray, double a, double b, const Vec2& q,
+                          std::vector<Event>& ev) const {
   for (uint32_t i = 0; i < pieces_.size(); ++i) addPieceCrossings(pieces_[i], i, ray, a, b, q, ev);
 }
 
@@ -263,9 +271,13 @@ void Prism::spans(const Ray& ray, std::vector<Span>& out) const {
   if (d.y != 0.0) {
     const double t1 = (h1_ - o.y) / d.y, t2 = (h2_ - o.y) / d.y;
     if (d.y > 0.0) {
-      ta = t1; tb = t2;
+      ta = t1;
+      tb = t2;
     } else {
-      ta = t2; tb = t1; capA = kHighCap; capB = kLowCap;
+      ta = t2;
+      tb = t1;
+      capA = kHighCap;
+      capB = kLowCap;
     }
   } else if (!(o.y >= h1_ && o.y <= h2_)) {
     return;
@@ -330,8 +342,16 @@ void Prism::spans(const Ray& ray, std::vector<Span>& out) const {
     return kx != ky ? kx < ky : x.t < y.t;
   });
   auto clip = [&](double t0, uint32_t p0, double s0, double t1, uint32_t p1, double s1) {
-    if (t0 < ta) { t0 = ta; p0 = capA; s0 = 0.0; }
-    if (t1 > tb) { t1 = tb; p1 = capB; s1 = 0.0; }
+    if (t0 < ta) {
+      t0 = ta;
+      p0 = capA;
+      s0 = 0.0;
+    }
+    if (t1 > tb) {
+      t1 = tb;
+      p1 = capB;
+      s1 = 0.0;
+    }
     if (t0 <= t1) out.push_back({t0, t1, p0 | (p0 < kLowCap ? kEntering : 0u), p1, s0, s1});
   };
   for (size_t i = 0; i + 1 < ev.size(); i += 2) {
@@ -344,7 +364,8 @@ void Prism::spans(const Ray& ray, std::vector<Span>& out) const {
       clip(-kInf, 0, 0.0, e1.t, e1.piece, e1.s);
     }
   }
-  if (conicApex) std::sort(out.begin(), out.end(), [](const Span& x, const Span& y) { return x.t0 < y.t0; });
+  if (conicApex)
+    std::sort(out.begin(), out.end(), [](const Span& x, const Span& y) { return x.t0 < y.t0; });
 }
 
 bool Prism::intersect(const Ray& ray, Hit& hit) const {
@@ -371,12 +392,15 @@ void Prism::crossings(const Ray& ray, CrossingList& out) const {
   spans(ray, sp);
   for (const Span& s : sp) {
     if (open_) {
-      if (s.t0 >= ray.tmin && s.t0 <= ray.tmax) out.items.push_back({{s.t0, this, s.part0, s.s0}, true});
+      if (s.t0 >= ray.tmin && s.t0 <= ray.tmax)
+        out.items.push_back({{s.t0, this, s.part0, s.s0}, true});
       continue;
     }
     if (s.t0 < ray.tmin && ray.tmin <= s.t1) out.startsInside = true;
-    if (s.t0 >= ray.tmin && s.t0 <= ray.tmax) out.items.push_back({{s.t0, this, s.part0, s.s0}, true});
-    if (s.t1 >= ray.tmin && s.t1 <= ray.tmax) out.items.push_back({{s.t1, this, s.part1, s.s1}, false});
+    if (s.t0 >= ray.tmin && s.t0 <= ray.tmax)
+      out.items.push_back({{s.t0, this, s.part0, s.s0}, true});
+    if (s.t1 >= ray.tmin && s.t1 <= ray.tmax)
+      out.items.push_back({{s.t1, this, s.part1, s.s1}, false});
   }
 }
 
@@ -404,9 +428,11 @@ SurfaceInfo Prism::surface(const Ray& ray, const Hit& hit) const {
     }
   }
   // The point is off the surface by the rounding of t·d and of the outline's numbers.
-  const double scale = std::max({std::abs(outlineLo_.x), std::abs(outlineHi_.x), std::abs(outlineLo_.y),
-                                 std::abs(outlineHi_.y), std::abs(h1_), std::abs(h2_)});
-  si.pError = gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) + Vec3(scale * (sweep_ == Sweep::Conic ? scale : 1.0)));
+  const double scale =
+      std::max({std::abs(outlineLo_.x), std::abs(outlineHi_.x), std::abs(outlineLo_.y),
+                std::abs(outlineHi_.y), std::abs(h1_), std::abs(h2_)});
+  si.pError = gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) +
+                           Vec3(scale * (sweep_ == Sweep::Conic ? scale : 1.0)));
   si.ng = n;
   si.ns = n;
   return si;

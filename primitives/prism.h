@@ -58,7 +58,7 @@ class Prism final : public Shape {
  private:
   struct Piece {
     int degree;
-    Vec2 p0, p1;       // the exact end points (shared with the neighbours)
+    Vec2 p0, p1;        // the exact end points (shared with the neighbours)
     double x[4], z[4];  // power-basis coefficients of x(s), z(s), s in [0, 1]
     Vec2 lo, hi;        // box of the control points
   };
@@ -83,7 +83,8 @@ class Prism final : public Shape {
   // The spans of the whole line inside the solid, sorted (for open prisms: the side
   // crossings within the slab, as zero-length spans).
   void spans(const Ray& ray, std::vector<Span>& out) const;
-  void lineCrossings(const Ray& ray, double a, double b, const Vec2& q, std::vector<Event>& ev) const;
+  void lineCrossings(const Ray& ray, double a, double b, const Vec2& q,
+                     std::vector<Event>& ev) const;
   void addPieceCrossings(const Piece& pc, uint32_t index, const Ray& ray, double a, double b,
                          const Vec2& q, std::vector<Event>& ev) const;
   double eventT(const Ray& ray, const Vec2& c) const;

@@ -88,7 +88,8 @@ PrismOutline splineOutline(const std::vector<Vec2>& pts, bool cubic) {
   const size_t minPoints = cubic ? 6 : 5;
   const char* name = cubic ? "a cubic" : "a quadratic";
   if (pts.size() < minPoints)
-    return failed(std::string(name) + " spline prism needs at least " + std::to_string(minPoints) + " points");
+    return failed(std::string(name) + " spline prism needs at least " + std::to_string(minPoints) +
+                  " points");
   PrismOutline o;
   size_t start = 0;  // the contour's leading control point; its first point is start + 1
   while (start < pts.size()) {
@@ -122,8 +123,7 @@ PrismOutline bezierOutline(const std::vector<Vec2>& pts) {
   PrismContour cur;
   size_t loopStart = 0;
   auto finish = [&](size_t endIndex) {
-    if (!same(pts[endIndex], pts[loopStart]))
-      return false;
+    if (!same(pts[endIndex], pts[loopStart])) return false;
     closeExactly(cur);
     o.contours.push_back(std::move(cur));
     cur.clear();
@@ -152,10 +152,14 @@ PrismOutline bezierOutline(const std::vector<Vec2>& pts) {
 
 PrismOutline prismOutline(const std::vector<Vec2>& points, PrismSpline spline) {
   switch (spline) {
-    case PrismSpline::Linear: return linearOutline(points);
-    case PrismSpline::Quadratic: return splineOutline(points, false);
-    case PrismSpline::Cubic: return splineOutline(points, true);
-    case PrismSpline::Bezier: return bezierOutline(points);
+    case PrismSpline::Linear:
+      return linearOutline(points);
+    case PrismSpline::Quadratic:
+      return splineOutline(points, false);
+    case PrismSpline::Cubic:
+      return splineOutline(points, true);
+    case PrismSpline::Bezier:
+      return bezierOutline(points);
   }
   return failed("unknown spline");
 }

@@ -27,7 +27,7 @@ enum class PrismSpline { Linear, Quadratic, Cubic, Bezier };
 
 struct PrismOutline {
   std::vector<PrismContour> contours;
-  std::string error;      // non-empty when the points do not make a prism (then no contours)
+  std::string error;        // non-empty when the points do not make a prism (then no contours)
   bool closedLast = false;  // a linear outline whose last polygon was closed for the caller
 };
 

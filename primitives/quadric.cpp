@@ -9,7 +9,7 @@
 namespace lucent {
 
 Quadric::Quadric(const QuadricCoefficients& q) {
-  const double all[10] = {q.squares.x, q.squares.y, q.squares.z, q.mixed.x, q.mixed.y,
+  const double all[10] = {q.squares.x, q.squares.y, q.squares.z, q.mixed.x,  q.mixed.y,
                           q.mixed.z,   q.linear.x,  q.linear.y,  q.linear.z, q.constant};
   bool surface = false;
   for (int i = 0; i < 10; ++i) {
@@ -18,9 +18,8 @@ Quadric::Quadric(const QuadricCoefficients& q) {
   }
   if (!surface) throw std::invalid_argument("quadric: every coefficient but the constant is 0");
   // Columns of the symmetric matrix (glm is column-major; symmetric anyway).
-  m_ = Mat3(q.squares.x, 0.5 * q.mixed.x, 0.5 * q.mixed.y,
-            0.5 * q.mixed.x, q.squares.y, 0.5 * q.mixed.z,
-            0.5 * q.mixed.y, 0.5 * q.mixed.z, q.squares.z);
+  m_ = Mat3(q.squares.x, 0.5 * q.mixed.x, 0.5 * q.mixed.y, 0.5 * q.mixed.x, q.squares.y,
+            0.5 * q.mixed.z, 0.5 * q.mixed.y, 0.5 * q.mixed.z, q.squares.z);
   g_ = q.linear;
   j_ = q.constant;
 
@@ -51,7 +50,8 @@ double Quadric::value(const Vec3& p) const { return glm::dot(p, m_ * p) + glm::d
 
 Vec3 Quadric::gradient(const Vec3& p) const { return 2.0 * (m_ * p) + g_; }
 
-int Quadric::lineCrossings(const Ray& ray, double t[2], bool entering[2], bool& startsInside) const {
+int Quadric::lineCrossings(const Ray& ray, double t[2], bool entering[2],
+                           bool& startsInside) const {
   // Shift the origin along the ray to its closest approach to the centre: s = s0 + u.
   const double dd = glm::dot(ray.d, ray.d);
   const double s0 = dd > 0.0 ? glm::dot(centre_ - ray.o, ray.d) / dd : 0.0;

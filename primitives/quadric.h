@@ -19,9 +19,9 @@
 namespace lucent {
 
 struct QuadricCoefficients {
-  Vec3 squares{0.0};  // A B C: x², y², z²
-  Vec3 mixed{0.0};    // D E F: xy, xz, yz
-  Vec3 linear{0.0};   // G H I: x, y, z
+  Vec3 squares{0.0};      // A B C: x², y², z²
+  Vec3 mixed{0.0};        // D E F: xy, xz, yz
+  Vec3 linear{0.0};       // G H I: x, y, z
   double constant = 0.0;  // J
 };
 

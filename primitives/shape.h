@@ -47,8 +47,8 @@ class Shape {
   // The shading normal in world space where the shape blends its normals there, as POV-Ray
   // blends a smooth height field's vertex normals after transforming them (Instance asks;
   // false: the object-space shading normal of surface() is transformed as usual).
-  virtual bool worldShadingNormal(const Ray& /*objectRay*/, const Hit& /*hit*/, const Transform& /*worldFromObject*/,
-                                  Vec3& /*ns*/) const {
+  virtual bool worldShadingNormal(const Ray& /*objectRay*/, const Hit& /*hit*/,
+                                  const Transform& /*worldFromObject*/, Vec3& /*ns*/) const {
     return false;
   }
 

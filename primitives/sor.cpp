@@ -20,13 +20,15 @@ Sor::Sor(const std::vector<Vec2>& P, bool open) : open_(open) {
   const size_t n = P.size();
   if (n < 4) throw std::invalid_argument("sor: needs at least 4 points");
   for (const Vec2& p : P) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw std::invalid_argument("sor: points must be finite");
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+      throw std::invalid_argument("sor: points must be finite");
     if (p.x < 0.0) throw std::invalid_argument("sor: x must be >= 0");
   }
   for (size_t i = 2; i + 1 < n; ++i)
     if (!(P[i].y > P[i - 1].y)) throw std::invalid_argument("sor: the heights must increase");
   for (size_t i = 0; i + 2 < n; ++i)
-    if (std::abs(P[i + 2].y - P[i].y) < kPovEpsilon) throw std::invalid_argument("sor: a point at its neighbour's neighbour's height");
+    if (std::abs(P[i + 2].y - P[i].y) < kPovEpsilon)
+      throw std::invalid_argument("sor: a point at its neighbour's neighbour's height");
   bool offAxis = false;
   for (size_t i = 1; i + 1 < n; ++i) offAxis |= P[i].x > 0.0;
   if (!offAxis) throw std::invalid_argument("sor: the curve lies on the axis");
@@ -38,7 +40,16 @@ Sor::Sor(const std::vector<Vec2>& P, bool open) : open_(open) {
     const double D0 = 2.0 * p1.x * (p2.x - p0.x) / (p2.y - p0.y);
     const double D1 = 2.0 * p2.x * (p3.x - p1.x) / (p3.y - p1.y);
     const double q = (F1 - F0) / h;  // Hermite cubic on [0, h]
-    Segment s{(D0 + D1 - 2.0 * q) / (h * h), (3.0 * q - 2.0 * D0 - D1) / h, D0, F0, p1.y, h, 0.0, 0.0, D1, F1};
+    Segment s{(D0 + D1 - 2.0 * q) / (h * h),
+              (3.0 * q - 2.0 * D0 - D1) / h,
+              D0,
+              F0,
+              p1.y,
+              h,
+              0.0,
+              0.0,
+              D1,
+              F1};
     s.bt = s.b + 3.0 * s.a * h;
     double top = std::max(F0, F1);
     const double dc[3] = {s.c, 2.0 * s.b, 3.0 * s.a};
@@ -113,11 +124,12 @@ void Sor::segmentSpans(size_t i, const Vec3& o, const Vec3& d, double ta, double
     // (an ulp of o.y and y0, moving f by f'·δW) included in the constant term.
     const double W = o.y - s.y0, aw = std::abs(W), wErr = (std::abs(o.y) + std::abs(s.y0)) / 12.0;
     const double A = std::abs(s.a), B = std::abs(s.b), C = std::abs(s.c), ady = std::abs(d.y);
-    const double c[4] = {oo - f(s, W), 2.0 * m - d.y * df(s, W), rr - d.y * d.y * (3.0 * s.a * W + s.b),
-                         -s.a * d.y * d.y * d.y};
-    const double ca[4] = {oo + ((A * aw + B) * aw + C) * aw + std::abs(s.e) + std::abs(df(s, W)) * wErr,
-                          2.0 * std::abs(m) + ady * ((3.0 * A * aw + 2.0 * B) * aw + C),
-                          rr + d.y * d.y * (3.0 * A * aw + B), A * ady * ady * ady};
+    const double c[4] = {oo - f(s, W), 2.0 * m - d.y * df(s, W),
+                         rr - d.y * d.y * (3.0 * s.a * W + s.b), -s.a * d.y * d.y * d.y};
+    const double ca[4] = {
+        oo + ((A * aw + B) * aw + C) * aw + std::abs(s.e) + std::abs(df(s, W)) * wErr,
+        2.0 * std::abs(m) + ady * ((3.0 * A * aw + 2.0 * B) * aw + C),
+        rr + d.y * d.y * (3.0 * A * aw + B), A * ady * ady * ady};
     int k = 3;
     while (k > 0 && std::abs(c[k]) <= gamma(2 * k + 6) * ca[k]) --k;
     if (k > 0) {
@@ -234,7 +246,8 @@ void Sor::lineEvents(const Ray& ray, std::vector<Event>& out) const {
       const Segment& s = segs_[i];
       const double tl = (joints_[i] - o.y) / d.y, th = (joints_[i + 1] - o.y) / d.y;
       double ta = std::min(tl, th), tb = std::max(tl, th);
-      int ja = static_cast<int>(d.y > 0.0 ? i : i + 1), jb = static_cast<int>(d.y > 0.0 ? i + 1 : i);
+      int ja = static_cast<int>(d.y > 0.0 ? i : i + 1),
+          jb = static_cast<int>(d.y > 0.0 ? i + 1 : i);
       // The segment's bounding cylinder, a little widened: g > 0 outside it.
       const double rp = s.r + pad, c = oo - rp * rp;
       if (rr > 0.0) {
@@ -257,7 +270,8 @@ void Sor::lineEvents(const Ray& ray, std::vector<Event>& out) const {
       segmentSpans(i, o, d, ta, tb, ja, jb, spans);
     }
   }
-  std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.in.t < b.in.t; });
+  std::sort(spans.begin(), spans.end(),
+            [](const Span& a, const Span& b) { return a.in.t < b.in.t; });
   // Join spans that meet (at a shared joint the two segments use the same t) or leave a
   // gap within rounding (a ray through a joint's circle, seen by both segments), then drop
   // what is left of rounding-sized spans.
@@ -271,7 +285,8 @@ void Sor::lineEvents(const Ray& ray, std::vector<Event>& out) const {
     spans[w++] = spans[k];
   }
   spans.resize(w);
-  spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const Span& sp) { return sp.out.t - sp.in.t <= close; }),
+  spans.erase(std::remove_if(spans.begin(), spans.end(),
+                             [&](const Span& sp) { return sp.out.t - sp.in.t <= close; }),
               spans.end());
   const int top = static_cast<int>(ns);
   auto part = [&](const End& e, bool& cap) -> uint32_t {
@@ -351,7 +366,8 @@ SurfaceInfo Sor::surface(const Ray& ray, const Hit& hit) const {
     v = (w / s.h + static_cast<double>(hit.part)) / static_cast<double>(ns);
   } else if (hit.part == ns) {
     n = Vec3(0.0, -1.0, 0.0);
-    v = rho / std::sqrt(bottomR2_) - 1.0;  // POV-Ray's v on the base: -1 at the centre, 0 at the rim
+    v = rho / std::sqrt(bottomR2_) -
+        1.0;  // POV-Ray's v on the base: -1 at the centre, 0 at the rim
   } else {
     v = 2.0 - rho / std::sqrt(topR2_);  // on the cap: 1 at the rim, 2 at the centre
   }
@@ -365,7 +381,8 @@ SurfaceInfo Sor::surface(const Ray& ray, const Hit& hit) const {
   }
   si.uv = Vec2(u, v);
   si.hasUV = true;
-  si.pError = gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) + glm::abs(si.p) + Vec3(scale_));
+  si.pError =
+      gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) + glm::abs(si.p) + Vec3(scale_));
   return si;
 }
 

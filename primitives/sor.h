@@ -59,7 +59,7 @@ class Sor final : public Shape {
   struct Segment {
     double a, b, c, e;  // f(w) = ((a·w + b)·w + c)·w + e, w = y − y0 in [0, h]
     double y0, h;
-    double r;  // bounding cylinder radius: sqrt of f's largest value on [0, h]
+    double r;           // bounding cylinder radius: sqrt of f's largest value on [0, h]
     double bt, ct, et;  // the same cubic about the top: ((a·v + bt)·v + ct)·v + et, v = w − h
   };
   static double f(const Segment& s, double w) { return ((s.a * w + s.b) * w + s.c) * w + s.e; }
@@ -88,7 +88,7 @@ class Sor final : public Shape {
                     std::vector<Span>& out) const;
 
   std::vector<Segment> segs_;
-  std::vector<double> joints_;  // the heights P1.y … P(n−2).y
+  std::vector<double> joints_;   // the heights P1.y … P(n−2).y
   std::vector<double> jointR2_;  // r² there: the points' x², exactly (not the cubics' values)
   double bottomR2_, topR2_;
   bool open_;

@@ -37,8 +37,7 @@ void crossingsOfSpan(const Span& s, const Ray& ray, const Shape* shape, Crossing
     out.items.push_back({makeHit(shape, s.tOut, s.partOut, s.b1Out, s.b2Out), false});
 }
 
-bool intersectRoots(const SurfaceRoot* roots, int n, const Ray& ray, const Shape* shape,
-                    Hit& hit) {
+bool intersectRoots(const SurfaceRoot* roots, int n, const Ray& ray, const Shape* shape, Hit& hit) {
   int best = -1;
   for (int i = 0; i < n; ++i)
     if (ray.tmin < roots[i].t && roots[i].t < ray.tmax && (best < 0 || roots[i].t < roots[best].t))
@@ -54,7 +53,8 @@ void crossingsOfRoots(const SurfaceRoot* roots, int n, const Ray& ray, const Sha
   size_t first = out.items.size();
   for (int i = 0; i < n; ++i)
     if (ray.tmin <= roots[i].t && roots[i].t <= ray.tmax)
-      out.items.push_back({makeHit(shape, roots[i].t, roots[i].part, roots[i].b1, roots[i].b2), true});
+      out.items.push_back(
+          {makeHit(shape, roots[i].t, roots[i].part, roots[i].b1, roots[i].b2), true});
   std::sort(out.items.begin() + static_cast<std::ptrdiff_t>(first), out.items.end(),
             [](const Crossing& a, const Crossing& b) { return a.hit.t < b.hit.t; });
 }
@@ -66,7 +66,8 @@ void crossingsOfLine(const double* t, const bool* entering, int n, bool insideBe
     if (t[i] < ray.tmin) inside = entering[i];
   out.startsInside = inside;
   for (int i = 0; i < n; ++i)
-    if (ray.tmin <= t[i] && t[i] <= ray.tmax) out.items.push_back({makeHit(shape, t[i], 0, 0.0, 0.0), entering[i]});
+    if (ray.tmin <= t[i] && t[i] <= ray.tmax)
+      out.items.push_back({makeHit(shape, t[i], 0, 0.0, 0.0), entering[i]});
 }
 
 }  // namespace lucent

@@ -31,8 +31,7 @@ struct SurfaceRoot {
 };
 
 // Closest root strictly inside (tmin, tmax).
-bool intersectRoots(const SurfaceRoot* roots, int n, const Ray& ray, const Shape* shape,
-                    Hit& hit);
+bool intersectRoots(const SurfaceRoot* roots, int n, const Ray& ray, const Shape* shape, Hit& hit);
 // Every root in [tmin, tmax], sorted, all marked entering; startsInside = false.
 void crossingsOfRoots(const SurfaceRoot* roots, int n, const Ray& ray, const Shape* shape,
                       CrossingList& out);

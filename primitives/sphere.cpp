@@ -43,10 +43,8 @@ SurfaceInfo Sphere::surface(const Ray& ray, const Hit& hit) const {
   // ray.at(t) − center would round the hit point at the origin's distance first.
   Vec3 local = (ray.o - center_) + hit.t * ray.d;
   double len = glm::length(local);
-  if (len > 0.0)
-    local *= radius_ / len;
-  else
-    local = Vec3(0.0, radius_, 0.0);
+  if (len > 0.0) local *= radius_ / len;
+  else local = Vec3(0.0, radius_, 0.0);
   s.p = center_ + local;
   s.pError = gamma(5) * glm::abs(local) + gamma(1) * glm::abs(s.p);
   s.ng = glm::normalize(local);

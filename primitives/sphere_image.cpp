@@ -59,8 +59,7 @@ std::optional<SphereImage> sphereImage(const Transform& worldFromObject, const V
   double radiusErr = radius * distortion / s + gamma(2) * out.radius;
   out.error = (centerErr + radiusErr) * (1.0 + gamma(8));
   if (!isFinite(out.center) || !(out.radius > 0.0) || !(out.radius * out.radius > 0.0) ||
-      !std::isfinite(out.radius * out.radius) ||
-      !std::isfinite(out.error))
+      !std::isfinite(out.radius * out.radius) || !std::isfinite(out.error))
     return std::nullopt;
   return out;
 }

@@ -128,11 +128,19 @@ namespace {
 // One line's search: the pieces, their stretches and the refinement of each root.
 class LineSolver {
  public:
-  LineSolver(const Superellipsoid& s, double p, double invP, double q, double invQ,
-             const Ray& ray, double margin, Superellipsoid::Roots& out, double firstAfter)
-      : s_(s), p_(p), invP_(invP), q_(q), invQ_(invQ), o_(ray.o), d_(ray.d),
-        margin_(margin), slopeSlack_(8.0 * kMachineEps * (std::abs(p - 1.0) + std::abs(q - 1.0) + 8.0)),
-        out_(out), firstAfter_(firstAfter) {}
+  LineSolver(const Superellipsoid& s, double p, double invP, double q, double invQ, const Ray& ray,
+             double margin, Superellipsoid::Roots& out, double firstAfter)
+      : s_(s),
+        p_(p),
+        invP_(invP),
+        q_(q),
+        invQ_(invQ),
+        o_(ray.o),
+        d_(ray.d),
+        margin_(margin),
+        slopeSlack_(8.0 * kMachineEps * (std::abs(p - 1.0) + std::abs(q - 1.0) + 8.0)),
+        out_(out),
+        firstAfter_(firstAfter) {}
 
   // N − 1 at o + t·d: negative inside.
   double value(double t) const { return s_.gauge(o_ + t * d_) - 1.0; }
@@ -279,16 +287,20 @@ class LineSolver {
     };
     if (slope_.x != 0.0 || slope_.y != 0.0) {
       // R/N rises with R and falls with |z|; X/R rises with |x| and falls with |y|.
-      const Range gR = powRange({ratioOf(rLo, hi.z, q_, invQ_), ratioOf(rHi, lo.z, q_, invQ_)}, q_ - 1.0);
+      const Range gR =
+          powRange({ratioOf(rLo, hi.z, q_, invQ_), ratioOf(rHi, lo.z, q_, invQ_)}, q_ - 1.0);
       if (slope_.x != 0.0)
-        add(product(gR, powRange({ratioOf(lo.x, hi.y, p_, invP_), ratioOf(hi.x, lo.y, p_, invP_)}, p_ - 1.0)),
+        add(product(gR, powRange({ratioOf(lo.x, hi.y, p_, invP_), ratioOf(hi.x, lo.y, p_, invP_)},
+                                 p_ - 1.0)),
             slope_.x);
       if (slope_.y != 0.0)
-        add(product(gR, powRange({ratioOf(lo.y, hi.x, p_, invP_), ratioOf(hi.y, lo.x, p_, invP_)}, p_ - 1.0)),
+        add(product(gR, powRange({ratioOf(lo.y, hi.x, p_, invP_), ratioOf(hi.y, lo.x, p_, invP_)},
+                                 p_ - 1.0)),
             slope_.y);
     }
     if (slope_.z != 0.0)
-      add(powRange({ratioOf(lo.z, rHi, q_, invQ_), ratioOf(hi.z, rLo, q_, invQ_)}, q_ - 1.0), slope_.z);
+      add(powRange({ratioOf(lo.z, rHi, q_, invQ_), ratioOf(hi.z, rLo, q_, invQ_)}, q_ - 1.0),
+          slope_.z);
     dLo = negHi == 0.0 ? 0.0 : posLo * (1.0 - slopeSlack_) - negHi * (1.0 + slopeSlack_);
     dHi = posHi == 0.0 ? 0.0 : posHi * (1.0 + slopeSlack_) - negLo * (1.0 - slopeSlack_);
     if (std::isnan(dLo)) dLo = -kInf;
@@ -368,8 +380,8 @@ void Superellipsoid::roots(const Ray& ray, double lo, double hi, Roots& out,
   if (!(tEnter < tExit)) return;
   const double a = std::max(lo, tEnter), b = std::min(hi, tExit);
   // The rounding of the points themselves, for the range test.
-  const double scale =
-      maxComponent(glm::abs(ray.o)) + std::max(std::abs(a), std::abs(b)) * maxComponent(glm::abs(ray.d));
+  const double scale = maxComponent(glm::abs(ray.o)) +
+                       std::max(std::abs(a), std::abs(b)) * maxComponent(glm::abs(ray.d));
   LineSolver solver(*this, p_, invP_, q_, invQ_, ray,
                     kRangeMargin + 8.0 * kMachineEps * (std::isfinite(scale) ? scale : 0.0), out,
                     firstAfter);

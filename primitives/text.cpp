@@ -15,7 +15,8 @@ Ray toPrism(const Ray& r) { return Ray(swapYZ(r.o), swapYZ(r.d), r.tmin, r.tmax)
 }  // namespace
 
 Text::Text(const std::vector<std::vector<PrismContour>>& glyphs, double thickness) {
-  if (!(thickness > 0.0) || !std::isfinite(thickness)) throw std::invalid_argument("text: thickness must be > 0");
+  if (!(thickness > 0.0) || !std::isfinite(thickness))
+    throw std::invalid_argument("text: thickness must be > 0");
   for (const auto& g : glyphs) {
     if (g.empty()) continue;
     glyphs_.push_back(std::make_unique<Prism>(g, 0.0, thickness));
@@ -72,7 +73,8 @@ void Text::crossings(const Ray& ray, CrossingList& out) const {
     }
   });
   out.startsInside = depth > 0;
-  std::stable_sort(all.begin(), all.end(), [](const Crossing& a, const Crossing& b) { return a.hit.t < b.hit.t; });
+  std::stable_sort(all.begin(), all.end(),
+                   [](const Crossing& a, const Crossing& b) { return a.hit.t < b.hit.t; });
   // A union of the glyphs: a crossing counts only where the count of glyphs the ray is
   // inside goes between 0 and 1 (disjoint glyphs keep every crossing).
   for (const Crossing& c : all) {

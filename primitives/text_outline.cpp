@@ -31,11 +31,17 @@ struct FreeTypeFace {
 
 std::string ftError(FT_Error e) {
   switch (e) {
-    case FT_Err_Cannot_Open_Resource: return "the file cannot be opened";
-    case FT_Err_Unknown_File_Format: return "not a font FreeType can read (another format, or damaged or truncated)";
-    case FT_Err_Invalid_File_Format: return "the font file is damaged";
-    case FT_Err_Out_Of_Memory: return "out of memory";
-    default: return "FreeType error " + std::to_string(static_cast<int>(e)) + " (a damaged or unsupported font)";
+    case FT_Err_Cannot_Open_Resource:
+      return "the file cannot be opened";
+    case FT_Err_Unknown_File_Format:
+      return "not a font FreeType can read (another format, or damaged or truncated)";
+    case FT_Err_Invalid_File_Format:
+      return "the font file is damaged";
+    case FT_Err_Out_Of_Memory:
+      return "out of memory";
+    default:
+      return "FreeType error " + std::to_string(static_cast<int>(e)) +
+             " (a damaged or unsupported font)";
   }
 }
 
@@ -44,7 +50,8 @@ std::string ftError(FT_Error e) {
 std::string openFace(FreeTypeFace& f, const std::string& file, const std::string* bytes = nullptr) {
   if (FT_Error e = FT_Init_FreeType(&f.lib)) return ftError(e);
   const FT_Error opened =
-      bytes ? FT_New_Memory_Face(f.lib, reinterpret_cast<const FT_Byte*>(bytes->data()), static_cast<FT_Long>(bytes->size()), 0, &f.face)
+      bytes ? FT_New_Memory_Face(f.lib, reinterpret_cast<const FT_Byte*>(bytes->data()),
+                                 static_cast<FT_Long>(bytes->size()), 0, &f.face)
             : FT_New_Face(f.lib, file.c_str(), 0, &f.face);
   if (opened) {
     f.face = nullptr;
@@ -53,7 +60,8 @@ std::string openFace(FreeTypeFace& f, const std::string& file, const std::string
   if (!FT_IS_SCALABLE(f.face)) return "the font has no outlines (a bitmap font)";
   // POV-Ray refuses the same range of units per em.
   if (f.face->units_per_EM < 16 || f.face->units_per_EM > 16384)
-    return "the font's units per em (" + std::to_string(f.face->units_per_EM) + ") is outside 16 to 16384";
+    return "the font's units per em (" + std::to_string(f.face->units_per_EM) +
+           ") is outside 16 to 16384";
   if (FT_Select_Charmap(f.face, FT_ENCODING_UNICODE) != 0) {
     if (f.face->num_charmaps == 0) return "the font has no character map";
     if (FT_Error e = FT_Set_Charmap(f.face, f.face->charmaps[0])) return ftError(e);
@@ -96,7 +104,10 @@ struct Hmtx {
     return longCount > 0;
   }
   int u16(size_t at) const { return at + 1 < bytes.size() ? (bytes[at] << 8) | bytes[at + 1] : 0; }
-  int s16(size_t at) const { int v = u16(at); return v >= 0x8000 ? v - 0x10000 : v; }
+  int s16(size_t at) const {
+    int v = u16(at);
+    return v >= 0x8000 ? v - 0x10000 : v;
+  }
   // Glyphs beyond the long metrics share the last advance and have a bearing of their own.
   void metrics(unsigned glyph, int& advance, int& lsb) const {
     if (glyph < longCount) {
@@ -154,7 +165,8 @@ struct ContourBuilder {
   }
 };
 
-constexpr FT_Int32 kLoadFlags = FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP | FT_LOAD_IGNORE_TRANSFORM;
+constexpr FT_Int32 kLoadFlags =
+    FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP | FT_LOAD_IGNORE_TRANSFORM;
 
 std::string describe(char32_t cp) {
   char buf[32];
@@ -169,7 +181,8 @@ const char* defaultFontFile() { return LUCENT_DEFAULT_FONT; }
 
 namespace {
 
-TextOutline layout(const std::string& fontFile, const std::string* bytes, const std::string& utf8, Vec2 offset) {
+TextOutline layout(const std::string& fontFile, const std::string* bytes, const std::string& utf8,
+                   Vec2 offset) {
   TextOutline out;
   std::vector<char32_t> cps;
   if (!decodeUtf8(utf8, cps)) {
@@ -182,8 +195,12 @@ TextOutline layout(const std::string& fontFile, const std::string* bytes, const 
   Hmtx hmtx;
   const bool haveHmtx = hmtx.load(f.face);
   const double unit = 1.0 / f.face->units_per_EM;
-  const FT_Outline_Funcs funcs{&ContourBuilder::moveTo, &ContourBuilder::lineTo, &ContourBuilder::conicTo,
-                               &ContourBuilder::cubicTo, 0, 0};
+  const FT_Outline_Funcs funcs{&ContourBuilder::moveTo,
+                               &ContourBuilder::lineTo,
+                               &ContourBuilder::conicTo,
+                               &ContourBuilder::cubicTo,
+                               0,
+                               0};
   Vec2 pen{0.0};
   const bool kern = FT_HAS_KERNING(f.face);
   for (size_t i = 0; i < cps.size(); ++i) {
@@ -211,7 +228,8 @@ TextOutline layout(const std::string& fontFile, const std::string* bytes, const 
       pen.x = (advance - lsb) * unit;
     } else {
       FT_Vector k{0, 0};
-      if (kern) FT_Get_Kerning(f.face, out.glyphs.back().glyphIndex, g.glyphIndex, FT_KERNING_UNSCALED, &k);
+      if (kern)
+        FT_Get_Kerning(f.face, out.glyphs.back().glyphIndex, g.glyphIndex, FT_KERNING_UNSCALED, &k);
       const long kx = std::max<long>(k.x, -static_cast<long>(f.face->units_per_EM));
       g.kerning = kx * unit;
       g.origin = Vec2(pen.x + (lsb - box.xMin + kx) * unit, pen.y);
@@ -240,7 +258,8 @@ TextOutline textOutline(const std::string& fontFile, const std::string& utf8, Ve
   return layout(fontFile, nullptr, utf8, offset);
 }
 
-TextOutline textOutlineFromBytes(const std::string& fontBytes, const std::string& utf8, Vec2 offset) {
+TextOutline textOutlineFromBytes(const std::string& fontBytes, const std::string& utf8,
+                                 Vec2 offset) {
   return layout({}, &fontBytes, utf8, offset);
 }
 

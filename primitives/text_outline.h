@@ -17,10 +17,10 @@ namespace lucent {
 
 struct PlacedGlyph {
   char32_t codepoint = 0;
-  unsigned glyphIndex = 0;        // 0 (the font's missing-glyph box) when the font lacks it
-  Vec2 origin{0.0};               // where its font-unit origin went (x, y)
-  double advance = 0.0;           // hmtx advance, em units
-  double kerning = 0.0;           // kerning with the glyph before, em units
+  unsigned glyphIndex = 0;             // 0 (the font's missing-glyph box) when the font lacks it
+  Vec2 origin{0.0};                    // where its font-unit origin went (x, y)
+  double advance = 0.0;                // hmtx advance, em units
+  double kerning = 0.0;                // kerning with the glyph before, em units
   std::vector<PrismContour> contours;  // x in .x, y in .y; empty for blank glyphs
 };
 
@@ -33,7 +33,8 @@ struct TextOutline {
 // Decodes `utf8` (an invalid sequence is an error) and lays out its glyphs in `fontFile`.
 TextOutline textOutline(const std::string& fontFile, const std::string& utf8, Vec2 offset);
 // The same from the font file's bytes (the fuzz target).
-TextOutline textOutlineFromBytes(const std::string& fontBytes, const std::string& utf8, Vec2 offset);
+TextOutline textOutlineFromBytes(const std::string& fontBytes, const std::string& utf8,
+                                 Vec2 offset);
 
 // For the tests: the number of pixels where FreeType's rasteriser, at `pixelsPerEm`, fills
 // the glyph of `codepoint` differently by the even-odd and the nonzero rule (-1 on error).

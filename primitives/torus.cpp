@@ -124,18 +124,13 @@ int Torus::lineRoots(const Ray& ray, double t[4]) const {
   const double a1 = o.x * dn.x + o.z * dn.z;
   const double a0 = o.x * o.x + o.z * o.z;
   if (missesHull(o, dn, a2, a1, a0, L)) return 0;
-  const double c[5] = {alpha * alpha - 4.0 * R2 * a0,
-                       4.0 * alpha * beta - 8.0 * R2 * a1,
-                       4.0 * beta * beta + 2.0 * e * alpha - 4.0 * R2 * a2,
-                       4.0 * e * beta,
-                       e * e};
+  const double c[5] = {alpha * alpha - 4.0 * R2 * a0, 4.0 * alpha * beta - 8.0 * R2 * a1,
+                       4.0 * beta * beta + 2.0 * e * alpha - 4.0 * R2 * a2, 4.0 * e * beta, e * e};
   // Magnitudes of the terms behind each coefficient, for the rounding bound.
   const double alphaAbs = o2 + R2 + r2, betaAbs = std::abs(beta);
-  const double cAbs[5] = {alphaAbs * alphaAbs + 4.0 * R2 * a0,
-                          4.0 * alphaAbs * betaAbs + 8.0 * R2 * std::abs(a1),
-                          4.0 * beta * beta + 2.0 * e * alphaAbs + 4.0 * R2 * a2,
-                          4.0 * e * betaAbs,
-                          e * e};
+  const double cAbs[5] = {
+      alphaAbs * alphaAbs + 4.0 * R2 * a0, 4.0 * alphaAbs * betaAbs + 8.0 * R2 * std::abs(a1),
+      4.0 * beta * beta + 2.0 * e * alphaAbs + 4.0 * R2 * a2, 4.0 * e * betaAbs, e * e};
   PolynomialRoot roots[4];
   int n = polynomialRoots(c, cAbs, 4, -L, L, roots);
   int count = 0;

@@ -40,8 +40,7 @@ class Torus final : public Shape {
  private:
   // Whether the line o + s·dn (dn unit, s in (-L, L)) surely misses the torus: a test of
   // its hull, so that lines near it skip the quartic.
-  bool missesHull(const Vec3& o, const Vec3& dn, double a2, double a1, double a0,
-                  double L) const;
+  bool missesHull(const Vec3& o, const Vec3& dn, double a2, double a1, double a0, double L) const;
 
   double R_, r_;
 };

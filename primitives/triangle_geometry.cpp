@@ -20,10 +20,8 @@ SurfaceInfo triangleSurface(const Vec3* p, const Vec3* n, const Vec2* uv, double
     if (nl > 0.0 && std::isfinite(nl)) {
       s.ns = ns / nl;
       if (glm::dot(s.ns, s.ng) < 0.0) {
-        if (normalFollowsShading)
-          s.ng = -s.ng;
-        else
-          s.ns = -s.ns;
+        if (normalFollowsShading) s.ng = -s.ng;
+        else s.ns = -s.ns;
       }
     }
   }

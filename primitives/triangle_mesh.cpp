@@ -173,11 +173,14 @@ bool TriangleMesh::intersect(const Ray& ray, Hit& hit) const {
 bool TriangleMesh::occluded(const Ray& ray) const {
   const ShearedRay sr(ray);
   // Any hit will do: boxes in tree order, no sorting (Bvh::candidates).
-  return forEachLeafCandidate(ray, sr, ray.tmax, [&](uint32_t, const Vec3* const* p) {
-    TriangleIntersection ti;
-    return !(intersectTriangle(sr, *p[0], *p[1], *p[2], ti, ray.tmin) && ray.tmin < ti.t &&
-             ti.t < ray.tmax);
-  }, Bvh::Order::Tree);
+  return forEachLeafCandidate(
+      ray, sr, ray.tmax,
+      [&](uint32_t, const Vec3* const* p) {
+        TriangleIntersection ti;
+        return !(intersectTriangle(sr, *p[0], *p[1], *p[2], ti, ray.tmin) && ray.tmin < ti.t &&
+                 ti.t < ray.tmax);
+      },
+      Bvh::Order::Tree);
 }
 
 void TriangleMesh::crossings(const Ray& ray, CrossingList& out) const {
@@ -237,10 +240,8 @@ void TriangleMesh::crossings(const Ray& ray, CrossingList& out) const {
       // The representative hit is one whose side agrees with the change.
       size_t k = i;
       while (k + 1 < j && (hits[k].facing > 0) != next) ++k;
-      if (hits[k].t < ray.tmin)
-        out.startsInside = next;
-      else if (hits[k].t <= ray.tmax)
-        push(hits[k], next);
+      if (hits[k].t < ray.tmin) out.startsInside = next;
+      else if (hits[k].t <= ray.tmax) push(hits[k], next);
       in = next;
     }
     i = j;
@@ -257,8 +258,7 @@ bool TriangleMesh::inside(const Vec3& p) const {
 
 SurfaceInfo TriangleMesh::surface(const Ray&, const Hit& hit) const {
   const auto& tri = mesh_->triangles[hit.part];
-  const Vec3 p[3] = {mesh_->positions[tri[0]], mesh_->positions[tri[1]],
-                     mesh_->positions[tri[2]]};
+  const Vec3 p[3] = {mesh_->positions[tri[0]], mesh_->positions[tri[1]], mesh_->positions[tri[2]]};
   Vec3 n[3];
   Vec2 uv[3];
   if (useNormals_)

@@ -62,8 +62,8 @@ class TriangleMesh final : public Shape {
   // pre-test (watertight_filter.h) leaves, in slot order; exact returns false to stop.
   // Returns true if it was stopped so.
   template <class Exact>
-  bool forEachLeafCandidate(const Ray& ray, const ShearedRay& sr, const double& tFar,
-                            Exact&& exact, Bvh::Order order = Bvh::Order::NearestFirst) const;
+  bool forEachLeafCandidate(const Ray& ray, const ShearedRay& sr, const double& tFar, Exact&& exact,
+                            Bvh::Order order = Bvh::Order::NearestFirst) const;
 
   std::shared_ptr<const MeshData> mesh_;
   bool useNormals_;

@@ -62,9 +62,7 @@ int originSide(const Vec3& a, const Vec3& b, const Vec3& c) {
   return 0;
 }
 
-int maxDimension(const Vec3& v) {
-  return v.x > v.y ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2);
-}
+int maxDimension(const Vec3& v) { return v.x > v.y ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2); }
 
 }  // namespace
 

@@ -24,7 +24,8 @@ typedef int64_t v4l __attribute__((vector_size(32)));
 // opposite signs. intersectTriangle returns false for such a triangle, so testing only the
 // lanes left changes no result. An invalid ray (zero direction) clears every lane.
 // Inlined into the leaf loop: a call per four triangles showed in the profile.
-__attribute__((always_inline)) inline int watertightCandidates(const ShearedRay& r, const Vec3* const (*p)[3], int n) {
+__attribute__((always_inline)) inline int watertightCandidates(const ShearedRay& r,
+                                                               const Vec3* const (*p)[3], int n) {
   using namespace watertight_detail;
   if (!r.valid || n <= 0) return 0;
   v4d x[3], y[3], z[3];

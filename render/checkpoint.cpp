@@ -95,7 +95,8 @@ std::vector<std::string> identityDifferences(const Identity& saved, const Identi
     if (!old)
       out.push_back(fmt::format("{}: not in the checkpoint, '{}' in this render", key, value));
     else if (*old != value)
-      out.push_back(fmt::format("{}: '{}' in the checkpoint, '{}' in this render", key, *old, value));
+      out.push_back(
+          fmt::format("{}: '{}' in the checkpoint, '{}' in this render", key, *old, value));
   }
   for (const auto& [key, value] : saved)
     if (!find(current, key))
@@ -107,8 +108,11 @@ std::string checkpointPathFor(const std::string& output) { return output + ".che
 
 CheckpointContents readCheckpoint(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw CheckpointError(fmt::format("cannot read the checkpoint '{}': {}", path, errnoText()));
-  const auto notOne = [&] { return CheckpointError(fmt::format("'{}' is not a Lucent checkpoint", path)); };
+  if (!in)
+    throw CheckpointError(fmt::format("cannot read the checkpoint '{}': {}", path, errnoText()));
+  const auto notOne = [&] {
+    return CheckpointError(fmt::format("'{}' is not a Lucent checkpoint", path));
+  };
   std::string line;
   if (!std::getline(in, line) || line + "\n" != kMagic) throw notOne();
   std::string header;
@@ -153,7 +157,8 @@ CheckpointContents readCheckpoint(const std::string& path) {
       rect.y0 = static_cast<int>(p.get32());
       rect.x1 = static_cast<int>(p.get32());
       rect.y1 = static_cast<int>(p.get32());
-      if (rect.empty() || payload.size() - 20 != static_cast<size_t>(rect.pixels()) * sizeof(Color)) break;
+      if (rect.empty() || payload.size() - 20 != static_cast<size_t>(rect.pixels()) * sizeof(Color))
+        break;
       Image tile(rect.width(), rect.height());
       std::memcpy(tile.pixels.data(), payload.data() + 20, payload.size() - 20);
       c.frames[frame].tiles.emplace_back(rect, std::move(tile));
@@ -173,7 +178,8 @@ CheckpointContents readCheckpoint(const std::string& path) {
 CheckpointWriter::CheckpointWriter(std::string path, Identity run)
     : path_(std::move(path)), run_(std::move(run)) {}
 
-CheckpointWriter CheckpointWriter::continuing(std::string path, const CheckpointContents& contents) {
+CheckpointWriter CheckpointWriter::continuing(std::string path,
+                                              const CheckpointContents& contents) {
   CheckpointWriter w;
   w.path_ = std::move(path);
   w.run_ = contents.run;
@@ -207,7 +213,8 @@ void CheckpointWriter::addTile(int frame, const PixelRect& rect, const Image& pi
   std::string payload;
   put32(payload, static_cast<uint32_t>(frame));
   for (int v : {rect.x0, rect.y0, rect.x1, rect.y1}) put32(payload, static_cast<uint32_t>(v));
-  payload.append(reinterpret_cast<const char*>(pixels.pixels.data()), pixels.pixels.size() * sizeof(Color));
+  payload.append(reinterpret_cast<const char*>(pixels.pixels.data()),
+                 pixels.pixels.size() * sizeof(Color));
   putRecord(queue_, kTile, payload);
 }
 
@@ -223,7 +230,8 @@ void CheckpointWriter::open() {
     // either the old one or the new header, never half of one.
     const std::string temp = path_ + ".tmp";
     std::FILE* f = std::fopen(temp.c_str(), "wb");
-    if (!f) throw CheckpointError(fmt::format("cannot write the checkpoint '{}': {}", temp, errnoText()));
+    if (!f)
+      throw CheckpointError(fmt::format("cannot write the checkpoint '{}': {}", temp, errnoText()));
     const std::string header = std::string(kMagic) + identityText(run_) + "end\n";
     const bool ok = std::fwrite(header.data(), 1, header.size(), f) == header.size() &&
                     std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
@@ -231,12 +239,14 @@ void CheckpointWriter::open() {
     std::fclose(f);
     if (!ok || std::rename(temp.c_str(), path_.c_str()) != 0) {
       std::remove(temp.c_str());
-      throw CheckpointError(fmt::format("cannot write the checkpoint '{}': {}", path_, ok ? errnoText() : problem));
+      throw CheckpointError(
+          fmt::format("cannot write the checkpoint '{}': {}", path_, ok ? errnoText() : problem));
     }
     started_ = true;
   }
   file_ = std::fopen(path_.c_str(), "r+b");
-  if (!file_) throw CheckpointError(fmt::format("cannot write the checkpoint '{}': {}", path_, errnoText()));
+  if (!file_)
+    throw CheckpointError(fmt::format("cannot write the checkpoint '{}': {}", path_, errnoText()));
   // Unbuffered: a write that fails is cut off below, with nothing of it left in a buffer.
   std::setvbuf(file_, nullptr, _IONBF, 0);
   // Continuing: a torn record at the end is cut off, so the new ones follow whole ones.
@@ -257,7 +267,8 @@ void CheckpointWriter::save() {
     // Cut what was written of the failed records (a full disk), so that a later save
     // appends after whole records; the queue is kept for it.
     std::clearerr(file_);
-    if (before >= 0 && ::ftruncate(::fileno(file_), before) == 0) std::fseek(file_, before, SEEK_SET);
+    if (before >= 0 && ::ftruncate(::fileno(file_), before) == 0)
+      std::fseek(file_, before, SEEK_SET);
     throw CheckpointError(fmt::format("cannot write the checkpoint '{}': {}", path_, problem));
   }
   queue_.clear();

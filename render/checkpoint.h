@@ -92,7 +92,7 @@ class CheckpointWriter {
   Identity run_;
   std::string queue_;  // encoded records not yet written
   std::FILE* file_ = nullptr;
-  bool started_ = false;  // the header is on disk
+  bool started_ = false;      // the header is on disk
   long long keepBytes_ = -1;  // continuing: the valid length to cut the file to first
 };
 

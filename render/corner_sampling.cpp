@@ -10,7 +10,9 @@ float encoded(float x) { return std::pow(std::max(x, 0.0f), 0.4f); }  // 1 / Ant
 
 }  // namespace
 
-Color encodeForCornerTest(const Color& c) { return Color(encoded(c.r), encoded(c.g), encoded(c.b)); }
+Color encodeForCornerTest(const Color& c) {
+  return Color(encoded(c.r), encoded(c.g), encoded(c.b));
+}
 
 bool encodedDiffer(const Color& a, const Color& b, float threshold) {
   // POV-Ray also adds the difference in transmit, 0 in an image without alpha, its
@@ -22,8 +24,8 @@ bool cornersDiffer(const Color& a, const Color& b, float threshold) {
   return encodedDiffer(encodeForCornerTest(a), encodeForCornerTest(b), threshold);
 }
 
-CornerTile::CornerTile(const Image& corners, const Image& encodedCorners, int originX,
-                       int originY, float threshold, int depth, int x0, int x1)
+CornerTile::CornerTile(const Image& corners, const Image& encodedCorners, int originX, int originY,
+                       float threshold, int depth, int x0, int x1)
     : corners_(corners),
       encodedCorners_(encodedCorners),
       originX_(originX),
@@ -51,12 +53,10 @@ Color CornerTile::subdivide(int a, int b, int size, int level) {
   const Sample& s20 = at(a + size, b);
   const Sample& s22 = at(a + size, b + size);
   const float t = threshold_;
-  if (level > 0 && (encodedDiffer(s00.encoded, s02.encoded, t) ||
-                    encodedDiffer(s00.encoded, s20.encoded, t) ||
-                    encodedDiffer(s00.encoded, s22.encoded, t) ||
-                    encodedDiffer(s02.encoded, s20.encoded, t) ||
-                    encodedDiffer(s02.encoded, s22.encoded, t) ||
-                    encodedDiffer(s20.encoded, s22.encoded, t))) {
+  if (level > 0 &&
+      (encodedDiffer(s00.encoded, s02.encoded, t) || encodedDiffer(s00.encoded, s20.encoded, t) ||
+       encodedDiffer(s00.encoded, s22.encoded, t) || encodedDiffer(s02.encoded, s20.encoded, t) ||
+       encodedDiffer(s02.encoded, s22.encoded, t) || encodedDiffer(s20.encoded, s22.encoded, t))) {
     const int h = size / 2;
     fill(a, b + h);
     fill(a + h, b);
@@ -81,9 +81,12 @@ Color CornerTile::pixel(int x, int y, const LatticeTrace& trace, RayStats& stats
   ++pixelNumber_;
   baseX_ = x * n;
   baseY_ = y * n;
-  auto put = [&](int a, int b, const Sample& s) { at(a, b) = Sample{s.color, s.encoded, pixelNumber_}; };
+  auto put = [&](int a, int b, const Sample& s) {
+    at(a, b) = Sample{s.color, s.encoded, pixelNumber_};
+  };
   auto corner = [&](int i, int j) {
-    return Sample{corners_.at(i - originX_, j - originY_), encodedCorners_.at(i - originX_, j - originY_), 0};
+    return Sample{corners_.at(i - originX_, j - originY_),
+                  encodedCorners_.at(i - originX_, j - originY_), 0};
   };
   put(0, 0, corner(x, y));
   put(n, 0, corner(x + 1, y));

@@ -46,7 +46,7 @@ class CornerTile {
   struct Sample {
     Color color{0.0f};
     Color encoded{0.0f};  // encodeForCornerTest(color): each sample is encoded once
-    uint32_t pixel = 0;  // grid_: the pixel (numbered from 1) it belongs to; edges: 1 if traced
+    uint32_t pixel = 0;   // grid_: the pixel (numbered from 1) it belongs to; edges: 1 if traced
   };
   Sample& at(int a, int b) { return grid_[static_cast<size_t>(b) * (step_ + 1) + a]; }
   bool have(int a, int b) { return at(a, b).pixel == pixelNumber_; }

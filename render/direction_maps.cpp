@@ -45,12 +45,18 @@ CubeFaceAxes cubeFaceAxes(CubeFace face) {
   // Local coordinates (x right, y up, z forward) are left-handed, so each face's right is
   // -(forward x up) here; written out to keep the table readable.
   switch (face) {
-    case CubeFace::Right: return {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}};
-    case CubeFace::Left: return {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}};
-    case CubeFace::Up: return {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}};
-    case CubeFace::Down: return {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}};
-    case CubeFace::Back: return {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}};
-    case CubeFace::Front: break;
+    case CubeFace::Right:
+      return {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}};
+    case CubeFace::Left:
+      return {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}};
+    case CubeFace::Up:
+      return {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}};
+    case CubeFace::Down:
+      return {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}};
+    case CubeFace::Back:
+      return {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}};
+    case CubeFace::Front:
+      break;
   }
   return {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}};
 }

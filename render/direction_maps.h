@@ -28,7 +28,7 @@ inline Vec3 frameLocal(const CameraFrame& f, const Vec3& world) {
 // four corners. Centre of the image = forward, right edge midpoint = right, top edge
 // midpoint = up, the four image corners = backward.
 Vec3 octahedralDirection(const Vec2& uv);  // unit length
-Vec2 octahedralUV(const Vec3& direction);   // direction need not be unit; never zero
+Vec2 octahedralUV(const Vec3& direction);  // direction need not be unit; never zero
 
 // ---- Cube map: six 90-degree faces, each the image a 90-degree pinhole camera at the
 // camera position would see (seen from inside, never mirrored).
@@ -76,7 +76,8 @@ Vec2 cubemapUV(CubemapLayout layout, const Vec3& direction);
 //   y_k = 1 - (2k + 1) / n                    (height along camera up: equal-area bands)
 //   phi_k = 2 pi frac(k (sqrt(5) - 1) / 2)     (golden-angle turns, measured from forward
 //                                             towards right)
-//   direction_k = (sqrt(1 - y_k^2) sin phi_k, y_k, sqrt(1 - y_k^2) cos phi_k)   (x right, y up, z forward)
+//   direction_k = (sqrt(1 - y_k^2) sin phi_k, y_k, sqrt(1 - y_k^2) cos phi_k)   (x right, y up, z
+//   forward)
 Vec3 fibonacciDirection(uint64_t k, uint64_t n);
 // The index of the point nearest to a direction (smallest chord; ties go to the smaller
 // index). Exact: the points are sorted by height, so it scans outwards from the band of

@@ -6,8 +6,8 @@
 
 namespace lucent {
 
-FibonacciProjection::FibonacciProjection(const CameraFrame& frame, const Camera& camera,
-                                         int width, int height)
+FibonacciProjection::FibonacciProjection(const CameraFrame& frame, const Camera& camera, int width,
+                                         int height)
     : Projection(frame, camera, width, height),
       n_(static_cast<uint64_t>(width) * static_cast<uint64_t>(height)) {}
 

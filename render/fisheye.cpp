@@ -12,9 +12,15 @@ FisheyeProjection::FisheyeProjection(const CameraFrame& frame, const Camera& cam
         camera.loc,
         fmt::format("a fisheye camera needs 0 < fov <= 360 degrees (got {})", camera.fov));
   switch (camera.fovAxis) {
-    case FovAxis::Horizontal: radius_ = 0.5 * width; break;
-    case FovAxis::Vertical: radius_ = 0.5 * height; break;
-    case FovAxis::Diagonal: radius_ = 0.5 * std::hypot(double(width), double(height)); break;
+    case FovAxis::Horizontal:
+      radius_ = 0.5 * width;
+      break;
+    case FovAxis::Vertical:
+      radius_ = 0.5 * height;
+      break;
+    case FovAxis::Diagonal:
+      radius_ = 0.5 * std::hypot(double(width), double(height));
+      break;
   }
   halfFov_ = 0.5 * radians(camera.fov);
   sinQuarterFov_ = std::sin(0.5 * halfFov_);

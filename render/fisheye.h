@@ -29,8 +29,8 @@ class FisheyeProjection final : public Projection {
 
  private:
   FisheyeMapping mapping_;
-  double radius_;    // pixels
-  double halfFov_;   // radians
+  double radius_;   // pixels
+  double halfFov_;  // radians
   double sinQuarterFov_;
 };
 

@@ -40,12 +40,18 @@ std::string lowerExtension(const std::string& path) {
 // OpenImageIO's format name for each of ours.
 const char* oiioFormatName(ImageFormat f) {
   switch (f) {
-    case ImageFormat::Png: return "png";
-    case ImageFormat::Jpeg: return "jpeg";
-    case ImageFormat::Ppm: return "pnm";
-    case ImageFormat::Tiff: return "tiff";
-    case ImageFormat::Exr: return "openexr";
-    case ImageFormat::Hdr: return "hdr";
+    case ImageFormat::Png:
+      return "png";
+    case ImageFormat::Jpeg:
+      return "jpeg";
+    case ImageFormat::Ppm:
+      return "pnm";
+    case ImageFormat::Tiff:
+      return "tiff";
+    case ImageFormat::Exr:
+      return "openexr";
+    case ImageFormat::Hdr:
+      return "hdr";
   }
   return "";
 }
@@ -84,7 +90,8 @@ ImageToWrite encodePixels(const Image& image, ImageFormat format, std::vector<ui
       out.colorSpace = "sRGB";
       bytes.resize(n);
       for (size_t i = 0; i < image.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) bytes[3 * i + c] = static_cast<uint8_t>(srgbByte(image.pixels[i][c]));
+        for (int c = 0; c < 3; ++c)
+          bytes[3 * i + c] = static_cast<uint8_t>(srgbByte(image.pixels[i][c]));
       out.pixels = bytes.data();
       if (format == ImageFormat::Jpeg) out.compression = "jpeg:95";
       if (format == ImageFormat::Ppm) out.pnmBinary = true;
@@ -97,8 +104,8 @@ ImageToWrite encodePixels(const Image& image, ImageFormat format, std::vector<ui
       words.resize(n);
       for (size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c)
-          words[3 * i + c] = static_cast<uint16_t>(
-              std::floor(srgbEncode(image.pixels[i][c]) * 65535.0f + 0.5f));
+          words[3 * i + c] =
+              static_cast<uint16_t>(std::floor(srgbEncode(image.pixels[i][c]) * 65535.0f + 0.5f));
       out.pixels = words.data();
       return out;
     }
@@ -164,11 +171,11 @@ const char* supportedImageExtensions() { return "png, exr, tif, jpg, hdr, ppm"; 
 void checkImageOutputPath(const std::string& path) {
   if (!imageFormatForPath(path)) {
     std::string ext = fs::path(path).extension().string();
-    throw ImageIOError(fmt::format(
-        "cannot write '{}': {} (use one of {})", path,
-        ext.empty() ? std::string("no file extension to choose the format by")
-                    : "unknown image format '" + ext + "'",
-        supportedImageExtensions()));
+    throw ImageIOError(fmt::format("cannot write '{}': {} (use one of {})", path,
+                                   ext.empty()
+                                       ? std::string("no file extension to choose the format by")
+                                       : "unknown image format '" + ext + "'",
+                                   supportedImageExtensions()));
   }
   std::error_code ec;
   fs::path folder = folderOf(path);
@@ -177,8 +184,7 @@ void checkImageOutputPath(const std::string& path) {
                                    fs::exists(folder, ec) ? "is not a folder" : "does not exist"));
   fs::file_status st = fs::status(path, ec);
   if (fs::exists(st) && !fs::is_regular_file(st))
-    throw ImageIOError(
-        fmt::format("cannot write '{}': it exists and is not a regular file", path));
+    throw ImageIOError(fmt::format("cannot write '{}': it exists and is not a regular file", path));
 }
 
 void writeImageFile(const Image& image, const std::string& path, ImageWriter writer) {
@@ -189,9 +195,9 @@ void writeImageFile(const Image& image, const std::string& path, ImageWriter wri
   // Hidden, in the same folder (so the rename stays on one file system), keeping the
   // extension, unique per process.
   TempFile temp;
-  temp.path = folderOf(path) / fmt::format(".{}.lucent-{}{}", target.stem().string(),
-                                           static_cast<long>(::getpid()),
-                                           target.extension().string());
+  temp.path =
+      folderOf(path) / fmt::format(".{}.lucent-{}{}", target.stem().string(),
+                                   static_cast<long>(::getpid()), target.extension().string());
 
   std::vector<uint8_t> bytes;
   std::vector<uint16_t> words;
@@ -232,7 +238,8 @@ void writeImageFile(const Image& image, const std::string& path, ImageWriter wri
   if (!complete)
     throw ImageIOError(fmt::format(
         "cannot write '{}': the file written cannot be read back complete (is the disk full, "
-        "or a file size limit reached?)", path));
+        "or a file size limit reached?)",
+        path));
 
   std::error_code ec;
   fs::rename(temp.path, target, ec);
@@ -264,16 +271,18 @@ std::unique_ptr<ImageReader> openCheckedImage(const std::string& path) {
   // A small compressed file can claim an enormous image (a "decompression bomb"): refuse
   // it from its header, before any pixel is allocated.
   if (spec.width > kMaxImageSide || spec.height > kMaxImageSide || channels > 64)
-    throw ImageIOError(fmt::format("cannot read '{}': a {}x{} image with {} channels is beyond the "
-                                   "limit of {} pixels a side", path, spec.width, spec.height,
-                                   channels, kMaxImageSide));
+    throw ImageIOError(
+        fmt::format("cannot read '{}': a {}x{} image with {} channels is beyond the "
+                    "limit of {} pixels a side",
+                    path, spec.width, spec.height, channels, kMaxImageSide));
   // Float pixels as read, a decoded copy, and the linear RGB image kept.
   const std::uintmax_t need = std::uintmax_t(spec.width) * std::uintmax_t(spec.height) *
                               (2 * sizeof(float) * std::uintmax_t(channels) + sizeof(Color));
   if (auto available = availableMemoryBytes(); available && need > *available)
-    throw ImageIOError(fmt::format("cannot read '{}': the {}x{} image needs about {} of memory, more "
-                                   "than the {} available", path, spec.width, spec.height,
-                                   formatBytes(need), formatBytes(*available)));
+    throw ImageIOError(
+        fmt::format("cannot read '{}': the {}x{} image needs about {} of memory, more "
+                    "than the {} available",
+                    path, spec.width, spec.height, formatBytes(need), formatBytes(*available)));
   return in;
 }
 

@@ -26,8 +26,8 @@ class LensletProjection final : public Projection {
  private:
   int nx_, ny_;
   double pitch_;
-  double cellWidth_, cellHeight_;   // pixels
-  double halfWidth_, halfHeight_;   // image plane at distance 1, per cell
+  double cellWidth_, cellHeight_;  // pixels
+  double halfWidth_, halfHeight_;  // image plane at distance 1, per cell
 };
 
 }  // namespace lucent

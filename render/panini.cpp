@@ -35,7 +35,7 @@ bool PaniniProjection::localDirection(double h, double v, Vec3& direction) const
     discriminant = 0.0;
   }
   double c = (-kk * d_ + std::sqrt(discriminant)) / (kk + 1.0);
-  double sInverse = (d_ + c) / (d_ + 1.0);  // 1 / S
+  double sInverse = (d_ + c) / (d_ + 1.0);   // 1 / S
   double phi = std::atan2(sInverse * h, c);  // sin(phi) = h / S
   double theta = std::atan(v * sInverse);
   if (q_ > 0.0) theta += q_ * (std::atan(v * c) - theta);  // hard squeeze

@@ -16,13 +16,17 @@ struct PixelRect {
   long long pixels() const { return static_cast<long long>(width()) * height(); }
   bool empty() const { return x1 <= x0 || y1 <= y0; }
   bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
-  bool contains(const PixelRect& r) const { return r.x0 >= x0 && r.x1 <= x1 && r.y0 >= y0 && r.y1 <= y1; }
+  bool contains(const PixelRect& r) const {
+    return r.x0 >= x0 && r.x1 <= x1 && r.y0 >= y0 && r.y1 <= y1;
+  }
   // Grown by `margin` on every side, then cut to `bounds`.
   PixelRect grown(int margin, const PixelRect& bounds) const {
     return {std::max(x0 - margin, bounds.x0), std::max(y0 - margin, bounds.y0),
             std::min(x1 + margin, bounds.x1), std::min(y1 + margin, bounds.y1)};
   }
-  bool operator==(const PixelRect& o) const { return x0 == o.x0 && y0 == o.y0 && x1 == o.x1 && y1 == o.y1; }
+  bool operator==(const PixelRect& o) const {
+    return x0 == o.x0 && y0 == o.y0 && x1 == o.x1 && y1 == o.y1;
+  }
 };
 
 inline PixelRect wholeImage(int width, int height) { return {0, 0, width, height}; }

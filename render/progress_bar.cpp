@@ -18,15 +18,17 @@ std::string progressLine(double fraction, double raysPerSecond, double seconds,
   constexpr int kWidth = 30;
   const int filled = static_cast<int>(fraction * kWidth);
   const std::string bar = std::string(filled, '#') + std::string(kWidth - filled, '.');
-  const std::string eta = fraction > 0.0 ? formatDuration(seconds * (1.0 - fraction) / fraction) : "?";
-  const std::string line = fmt::format("[{}] {:3.0f}%  {:.2f} Mrays/s  ETA {}", bar, 100.0 * fraction,
-                                       raysPerSecond * 1e-6, eta);
+  const std::string eta =
+      fraction > 0.0 ? formatDuration(seconds * (1.0 - fraction) / fraction) : "?";
+  const std::string line = fmt::format("[{}] {:3.0f}%  {:.2f} Mrays/s  ETA {}", bar,
+                                       100.0 * fraction, raysPerSecond * 1e-6, eta);
   if (!sequence) return "rendering " + line;
   // The run's frames so far, this one counted by its fraction, give the time a frame takes.
   const double framesDone = (sequence->index - 1) + fraction;
   const double framesLeft = sequence->count - framesDone;
   const double elapsed = sequence->secondsBefore + seconds;
-  const std::string all = framesDone > 0.0 ? formatDuration(elapsed / framesDone * framesLeft) : "?";
+  const std::string all =
+      framesDone > 0.0 ? formatDuration(elapsed / framesDone * framesLeft) : "?";
   return fmt::format("frame {}/{} {}, all {}", sequence->frame, sequence->frames, line, all);
 }
 

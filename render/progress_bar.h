@@ -14,8 +14,8 @@ namespace lucent {
 
 // Where the frame being rendered stands among the frames of one run (an animation).
 struct SequencePosition {
-  int index = 1, count = 1;   // its place among the frames this run renders (1-based), how many
-  int frame = 1, frames = 1;  // its number in the animation, and the animation's frames
+  int index = 1, count = 1;    // its place among the frames this run renders (1-based), how many
+  int frame = 1, frames = 1;   // its number in the animation, and the animation's frames
   double secondsBefore = 0.0;  // the run's time until this frame's render began
 };
 

@@ -12,13 +12,13 @@ namespace lucent {
 
 struct RayStats {
   uint64_t primary = 0;
-  uint64_t shadow = 0;     // one per light sample tested (a shadow ray that crosses
-                           // transparent surfaces is still one ray)
-  uint64_t reflected = 0;  // mirror rays, including total internal reflection
-  uint64_t refracted = 0;  // transmitted rays, bent or straight through
-  uint64_t queries = 0;    // searches of the world (closest hit or any hit)
+  uint64_t shadow = 0;           // one per light sample tested (a shadow ray that crosses
+                                 // transparent surfaces is still one ray)
+  uint64_t reflected = 0;        // mirror rays, including total internal reflection
+  uint64_t refracted = 0;        // transmitted rays, bent or straight through
+  uint64_t queries = 0;          // searches of the world (closest hit or any hit)
   uint64_t shadowCacheHits = 0;  // shadow rays blocked by their light's cached last blocker
-  TestCounts tests;        // intersection tests by kind of shape
+  TestCounts tests;              // intersection tests by kind of shape
 
   // Not a count: the tile's shadow cache rides with its counts, the one object every
   // trace call of a tile already carries. operator+= leaves it alone.

@@ -88,7 +88,8 @@ int Renderer::adaptiveMargin(const RenderSettings& settings) {
   if (!centres) return 0;
   const int samples = settings.samples;
   int stages = 1;
-  for (int stage = std::min(kFirstStage, samples); stage < samples; stage = std::min(2 * stage, samples))
+  for (int stage = std::min(kFirstStage, samples); stage < samples;
+       stage = std::min(2 * stage, samples))
     ++stages;
   return stages;
 }
@@ -97,7 +98,8 @@ uint64_t Renderer::work(const PixelRect& rect) const {
   const bool corners = settings_.adaptiveMode == AdaptiveMode::Corners;
   if (corners) return 2 * static_cast<uint64_t>(rect.pixels());
   if (!adaptiveCentres()) return static_cast<uint64_t>(rect.pixels());
-  const PixelRect area = rect.grown(adaptiveMargin(), wholeImage(settings_.width, settings_.height));
+  const PixelRect area =
+      rect.grown(adaptiveMargin(), wholeImage(settings_.width, settings_.height));
   return 2 * static_cast<uint64_t>(area.pixels());
 }
 
@@ -123,7 +125,9 @@ RenderResult Renderer::renderRect(const PixelRect& rect, const RenderControl& co
   result.image = Image(rect.width(), rect.height());
   RenderProgress localProgress;
   RenderProgress& progress = control.progress ? *control.progress : localProgress;
-  auto cancelled = [&] { return control.cancel && control.cancel->load(std::memory_order_relaxed); };
+  auto cancelled = [&] {
+    return control.cancel && control.cancel->load(std::memory_order_relaxed);
+  };
 
   tbb::enumerable_thread_specific<RayStats> perThread;
   // Runs body(state, x, y, stats) for every pixel of `over`, tile by tile and in row order
@@ -153,8 +157,9 @@ RenderResult Renderer::renderRect(const PixelRect& rect, const RenderControl& co
   };
   // Runs body(x, y, stats) over `over` in tiles.
   auto forEachPixel = [&](const PixelRect& over, auto&& body, bool countsAsWork = true) {
-    forEachTile(over, [](int, int) { return 0; },
-                [&](int, int x, int y, RayStats& stats) { body(x, y, stats); }, countsAsWork);
+    forEachTile(
+        over, [](int, int) { return 0; },
+        [&](int, int x, int y, RayStats& stats) { body(x, y, stats); }, countsAsWork);
   };
 
   Image& image = result.image;
@@ -166,7 +171,8 @@ RenderResult Renderer::renderRect(const PixelRect& rect, const RenderControl& co
   auto runCorners = [&] {
     const int depth = std::clamp(settings_.adaptiveDepth, 1, kMaxAdaptiveDepth);
     const int step = 1 << (depth - 1);
-    Image cornerImage(rect.width() + 1, rect.height() + 1), encodedCorners(rect.width() + 1, rect.height() + 1);
+    Image cornerImage(rect.width() + 1, rect.height() + 1),
+        encodedCorners(rect.width() + 1, rect.height() + 1);
     forEachPixel(rect, [&](int x, int y, RayStats& stats) {
       auto trace = [&](int i, int j) {
         Color& c = cornerImage.at(i - rect.x0, j - rect.y0);
@@ -186,9 +192,12 @@ RenderResult Renderer::renderRect(const PixelRect& rect, const RenderControl& co
     forEachTile(
         rect,
         [&](int x0, int x1) {
-          return CornerTile(cornerImage, encodedCorners, rect.x0, rect.y0, threshold, depth, x0, x1);
+          return CornerTile(cornerImage, encodedCorners, rect.x0, rect.y0, threshold, depth, x0,
+                            x1);
         },
-        [&](CornerTile& tile, int x, int y, RayStats& stats) { out(x, y) = tile.pixel(x, y, trace, stats); },
+        [&](CornerTile& tile, int x, int y, RayStats& stats) {
+          out(x, y) = tile.pixel(x, y, trace, stats);
+        },
         true);
   };
 
@@ -198,11 +207,14 @@ RenderResult Renderer::renderRect(const PixelRect& rect, const RenderControl& co
       return;
     }
     if (!adaptive) {
-      forEachPixel(rect, [&](int x, int y, RayStats& stats) { out(x, y) = renderPixel(x, y, stats); });
+      forEachPixel(rect,
+                   [&](int x, int y, RayStats& stats) { out(x, y) = renderPixel(x, y, stats); });
       return;
     }
     const int areaWidth = area.width();
-    auto at = [&](int x, int y) { return static_cast<size_t>(y - area.y0) * areaWidth + (x - area.x0); };
+    auto at = [&](int x, int y) {
+      return static_cast<size_t>(y - area.y0) * areaWidth + (x - area.x0);
+    };
     // How far (in pixels, the chessboard distance) (x, y) lies outside `rect`.
     auto distance = [&](int x, int y) {
       return std::max({rect.x0 - x, x - (rect.x1 - 1), rect.y0 - y, y - (rect.y1 - 1), 0});
@@ -214,7 +226,9 @@ RenderResult Renderer::renderRect(const PixelRect& rect, const RenderControl& co
       return d == 0 || d <= reach;
     };
     std::vector<Color> centres(static_cast<size_t>(area.pixels()));
-    forEachPixel(area, [&](int x, int y, RayStats& stats) { centres[at(x, y)] = renderSample(x, y, 0, 1, stats); });
+    forEachPixel(area, [&](int x, int y, RayStats& stats) {
+      centres[at(x, y)] = renderSample(x, y, 0, 1, stats);
+    });
     for (int y = rect.y0; y < rect.y1; ++y)
       for (int x = rect.x0; x < rect.x1; ++x) out(x, y) = centres[at(x, y)];
     if (cancelled()) return;
@@ -255,7 +269,8 @@ RenderResult Renderer::renderRect(const PixelRect& rect, const RenderControl& co
       forEachPixel(
           area,
           [&](int x, int y, RayStats& stats) {
-            if (active[at(x, y)] && reaches(x, y, reach)) addSamples(x, y, stage, refine[at(x, y)], stats);
+            if (active[at(x, y)] && reaches(x, y, reach))
+              addSamples(x, y, stage, refine[at(x, y)], stats);
           },
           k == 1);
       if (cancelled() || stage == samples) break;
@@ -278,7 +293,8 @@ RenderResult Renderer::renderRect(const PixelRect& rect, const RenderControl& co
     }
     for (int y = rect.y0; y < rect.y1; ++y)
       for (int x = rect.x0; x < rect.x1; ++x)
-        if (const PixelRefinement& r = refine[at(x, y)]; r.taken > 0) out(x, y) = r.sum / static_cast<float>(r.taken);
+        if (const PixelRefinement& r = refine[at(x, y)]; r.taken > 0)
+          out(x, y) = r.sum / static_cast<float>(r.taken);
   };
 
   if (control.threads > 0) {
@@ -290,8 +306,7 @@ RenderResult Renderer::renderRect(const PixelRect& rect, const RenderControl& co
 
   for (const RayStats& s : perThread) result.stats += s;
   result.cancelled = cancelled();
-  result.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

@@ -18,7 +18,7 @@ namespace lucent {
 
 // Live counters another thread may read while rendering (the progress bar).
 struct RenderProgress {
-  std::atomic<uint64_t> workDone{0};  // pixel passes finished
+  std::atomic<uint64_t> workDone{0};   // pixel passes finished
   std::atomic<uint64_t> workTotal{0};  // pixel passes planned (2 per pixel when adaptive)
   std::atomic<uint64_t> rays{0};
 };

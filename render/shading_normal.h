@@ -1,6 +1,6 @@
-// The contract's normal perturbations (<normal> and <bump-map> in a material): the shading normal bent by
-// a pattern's slope in the shape's object space. Only shading sees it; hit points,
-// shadows and CSG keep the geometric surface.
+// The contract's normal perturbations (<normal> and <bump-map> in a material): the shading normal
+// bent by a pattern's slope in the shape's object space. Only shading sees it; hit points, shadows
+// and CSG keep the geometric surface.
 #pragma once
 
 #include "texture.h"

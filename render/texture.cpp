@@ -36,7 +36,7 @@ Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec
 }
 
 struct ImageMap::Impl {
-  Image linear;                            // RGB, linear (or as stored, for bump maps)
+  Image linear;                             // RGB, linear (or as stored, for bump maps)
   std::unique_ptr<TextureSampler> sampler;  // OpenImageIO's bilinear lookup of `linear`
 };
 
@@ -44,8 +44,8 @@ ImageMap::ImageMap(const std::string& path, PixelDecoding decoding)
     : impl_(std::make_unique<Impl>()) {
   impl_->linear = readImageFile(path, decoding);
   static_assert(sizeof(Color) == 3 * sizeof(float), "Image pixels are packed RGB floats");
-  impl_->sampler = imagePlugin().textureSampler(&impl_->linear.pixels[0][0],
-                                                impl_->linear.width, impl_->linear.height);
+  impl_->sampler = imagePlugin().textureSampler(&impl_->linear.pixels[0][0], impl_->linear.width,
+                                                impl_->linear.height);
 }
 
 ImageMap::~ImageMap() = default;

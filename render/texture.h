@@ -49,8 +49,8 @@ class ImageMap {
   std::unique_ptr<Impl> impl_;
 };
 
-// Reads the header of every <image> texture's and <bump-map>'s file, as `lucent check` does: throws what
-// TextureSet would for a file that is not an image or too large (LocatedError, Kind::Input).
+// Reads the header of every <image> texture's and <bump-map>'s file, as `lucent check` does: throws
+// what TextureSet would for a file that is not an image or too large (LocatedError, Kind::Input).
 void checkImageTextures(const std::vector<Material>& materials);
 
 class ImageMapCache;  // image_map_cache.h
@@ -71,7 +71,7 @@ class TextureSet {
   const ImageMap* bumpMap(uint32_t index) const { return bumpMaps_[index].get(); }
 
  private:
-  std::vector<std::shared_ptr<const ImageMap>> maps_;  // per material; null if no image
+  std::vector<std::shared_ptr<const ImageMap>> maps_;      // per material; null if no image
   std::vector<std::shared_ptr<const ImageMap>> bumpMaps_;  // per material; null if none
 };
 

@@ -20,8 +20,8 @@ Vec2 concentricDisc(const Vec2& u) {
   return r * Vec2(std::cos(theta), std::sin(theta));
 }
 
-ThinLensProjection::ThinLensProjection(const CameraFrame& frame, const Camera& camera,
-                                       int width, int height)
+ThinLensProjection::ThinLensProjection(const CameraFrame& frame, const Camera& camera, int width,
+                                       int height)
     : Projection(frame, camera, width, height) {
   if (!(camera.fov > 0.0 && camera.fov < 180.0))
     throw LocatedError(

@@ -12,7 +12,8 @@ int defaultTileSize(const RenderSettings& settings) {
   return Renderer::adaptiveMargin(settings) > 0 ? 128 : 32;
 }
 
-TilesToDo tilesToDo(const Renderer& renderer, const std::vector<PixelRect>& tiles, const std::vector<char>& skip) {
+TilesToDo tilesToDo(const Renderer& renderer, const std::vector<PixelRect>& tiles,
+                    const std::vector<char>& skip) {
   TilesToDo out;
   for (size_t i = 0; i < tiles.size(); ++i)
     if (skip.empty() || !skip[i]) {
@@ -41,7 +42,9 @@ TileRenderResult renderTiles(const Renderer& renderer, const std::vector<PixelRe
 
   TileRenderResult result;
   std::mutex reporting;
-  auto cancelled = [&] { return control.cancel && control.cancel->load(std::memory_order_relaxed); };
+  auto cancelled = [&] {
+    return control.cancel && control.cancel->load(std::memory_order_relaxed);
+  };
   auto renderOne = [&](size_t i) {
     if (cancelled()) return;
     RenderResult tile = renderer.renderRect(tiles[todo[i]], inner);
@@ -54,7 +57,8 @@ TileRenderResult renderTiles(const Renderer& renderer, const std::vector<PixelRe
       for (size_t i = 0; i < todo.size(); ++i) renderOne(i);
     } else {
       // One tile a task: tiles differ in cost, and each splits into threads' tiles anyway.
-      tbb::parallel_for(size_t(0), todo.size(), [&](size_t i) { renderOne(i); }, tbb::simple_partitioner());
+      tbb::parallel_for(
+          size_t(0), todo.size(), [&](size_t i) { renderOne(i); }, tbb::simple_partitioner());
     }
   };
   if (control.threads > 0) {

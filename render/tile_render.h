@@ -33,7 +33,8 @@ struct TilesToDo {
   std::vector<size_t> indices;
   uint64_t work = 0;
 };
-TilesToDo tilesToDo(const Renderer& renderer, const std::vector<PixelRect>& tiles, const std::vector<char>& skip);
+TilesToDo tilesToDo(const Renderer& renderer, const std::vector<PixelRect>& tiles,
+                    const std::vector<char>& skip);
 
 // The control each tile renders with: `control`'s, its threads left to the caller's arena,
 // and a progress (the caller's, else `local`) whose total is `work`.

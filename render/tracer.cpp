@@ -2,11 +2,11 @@
 
 #include "adaptive_area.h"
 #include "finish.h"
-#include "shading_normal.h"
-#include "sky_color.h"
 #include "fog.h"
 #include "optics.h"
 #include "sampling.h"
+#include "shading_normal.h"
+#include "sky_color.h"
 #include "spawn.h"
 
 #include "csg/csg_node.h"
@@ -136,8 +136,8 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     Color texture(1.0f);
     if (m.hasTexture()) texture = textures_.eval(leaf.tag(), m, s, leaf);
     const Color kd = m.diffuse * texture;
-    Color ambient = (m.hasTexture() && m.ambientIsScalar ? m.ambient * texture : m.ambient) *
-                    settings_.ambient;
+    Color ambient =
+        (m.hasTexture() && m.ambientIsScalar ? m.ambient * texture : m.ambient) * settings_.ambient;
     if (leaving) ambient *= m.transmissive;
     local += ambient;
     if (!lights_.empty() && (anyPositive(kd) || m.hasHighlight())) {
@@ -180,8 +180,8 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
           Color w = weight * kt;
           if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
             ++stats.refracted;
-            result += kt * trace(spawnRay(s, bent, settings_.epsilon), depth + 1, w, beyond,
-                                 seed, stats);
+            result +=
+                kt * trace(spawnRay(s, bent, settings_.epsilon), depth + 1, w, beyond, seed, stats);
           }
         } else {
           mirror += kt;  // total internal reflection: the k_t share joins the mirror ray
@@ -276,16 +276,13 @@ Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightI
   return sum / static_cast<float>(count);
 }
 
-bool Tracer::blockedByOpaque(const Ray& ray, World::ObjectId& lastBlocker,
-                             RayStats& stats) const {
+bool Tracer::blockedByOpaque(const Ray& ray, World::ObjectId& lastBlocker, RayStats& stats) const {
   ++stats.queries;
   const World::ObjectId blocker = world_.opaqueOccluder(ray, lastBlocker);
   // Unblocked: the slot keeps its object, the next ray may need it.
   if (blocker == World::kNoObject) return false;
-  if (blocker == lastBlocker)
-    ++stats.shadowCacheHits;
-  else
-    lastBlocker = blocker;
+  if (blocker == lastBlocker) ++stats.shadowCacheHits;
+  else lastBlocker = blocker;
   return true;
 }
 
@@ -319,10 +316,8 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
       if (segment && segment->isAbsorbing())
         t *= beerLambert(segment->absorption, (hit.t - tPrevious) * speed);
       if (leaf.isSolid()) {
-        if (leaving)
-          media.remove(&m);
-        else
-          media.push(&m);
+        if (leaving) media.remove(&m);
+        else media.push(&m);
       }
     }
     if (!anyPositive(t)) return Color(0.0f);

@@ -36,8 +36,7 @@ class Tracer {
   explicit Tracer(const World& world, ImageMapCache* textures = nullptr);
 
   // The colour seen along a camera ray (depth 1, weight 1) that starts in `media`.
-  Color traceCamera(const Ray& ray, const MediaStack& media, PathSeed& seed,
-                    RayStats& stats) const;
+  Color traceCamera(const Ray& ray, const MediaStack& media, PathSeed& seed, RayStats& stats) const;
 
   // The media containing point p (a camera's starting media): the top-level solids whose
   // inside() holds p, the largest bounding box outermost (an infinite plane is outermost).
@@ -77,7 +76,7 @@ class Tracer {
 
   const World& world_;
   const Scene& scene_;
-  const RenderSettings settings_;  // a copy: the scene may change after the renderer is built
+  const RenderSettings settings_;    // a copy: the scene may change after the renderer is built
   const std::vector<Light> lights_;  // a copy, as the settings
   const std::optional<Sky> sky_;     // a copy, as the settings
   const std::optional<Fog> fog_;     // a copy; none: no per-ray cost but this test

@@ -4,8 +4,8 @@
 // returns the default when the attribute is absent or wrong, so parsing goes on.
 #pragma once
 
-#include "primitives/math.h"
 #include "primitives/height_map.h"
+#include "primitives/math.h"
 #include "primitives/mesh_data.h"
 #include "primitives/scalar_field.h"
 
@@ -60,7 +60,8 @@ class AttributeInput {
   virtual Vec3 direction(const char* attr, const Vec3& def) = 0;
   virtual bool boolean(const char* attr, bool def) = 0;
   // The index of the value in `names`; `def` when absent or not one of them (reported).
-  virtual size_t choice(const char* attr, size_t def, const std::vector<std::string_view>& names) = 0;
+  virtual size_t choice(const char* attr, size_t def,
+                        const std::vector<std::string_view>& names) = 0;
   // The value after parameter substitution; nullopt when absent or wrong (reported).
   virtual std::optional<std::string> text(const char* attr) = 0;
   // Lists of numbers and of whole numbers >= 0; nullopt when absent or wrong (reported).
@@ -68,14 +69,16 @@ class AttributeInput {
   virtual std::optional<std::vector<long long>> integers(const char* attr) = 0;
   // A function of `variables` (x, y, z); nullopt when absent or wrong (reported, located
   // inside the expression).
-  virtual std::optional<FunctionInput> function(const char* attr, const std::vector<std::string>& variables) = 0;
+  virtual std::optional<FunctionInput> function(const char* attr,
+                                                const std::vector<std::string>& variables) = 0;
   // The mesh file the attribute names, resolved by the scene's file-access rules and read
   // once per process however many elements name it; null when it cannot be read (reported).
   // `firstRead`, if given, tells whether this call read the file.
   virtual std::shared_ptr<const MeshData> meshFile(const char* attr, bool* firstRead = nullptr) = 0;
   // The image the attribute names read as a height field's grid (images/height_map_file.h),
   // resolved by the same rules (its path in `resolved`); null when it cannot be read (reported).
-  virtual std::shared_ptr<const HeightMap> heightMapFile(const char* attr, std::string& resolved) = 0;
+  virtual std::shared_ptr<const HeightMap> heightMapFile(const char* attr,
+                                                         std::string& resolved) = 0;
 
   // The file the attribute names, resolved by the scene's file-access rules (absolute);
   // nullopt when absent or not allowed (reported).
@@ -84,7 +87,8 @@ class AttributeInput {
   // Each child element named `element` (a shape's own children, which its entry declares,
   // e.g. a blob's <component>), in order, read through an input of its own whose errors
   // are located at the child; the parser reports any other child element itself.
-  virtual void forEachChild(const char* element, const std::function<void(AttributeInput&)>& read) = 0;
+  virtual void forEachChild(const char* element,
+                            const std::function<void(AttributeInput&)>& read) = 0;
 
   // "<sphere> attribute 'radius': message", at the attribute's value.
   virtual void attrError(const char* attr, const std::string& message) = 0;

@@ -10,7 +10,15 @@
 namespace lucent {
 
 enum class CameraType {
-  Pinhole, ThinLens, Orthographic, Fisheye, Panini, Lenslet, Octahedral, Cubemap, Fibonacci
+  Pinhole,
+  ThinLens,
+  Orthographic,
+  Fisheye,
+  Panini,
+  Lenslet,
+  Octahedral,
+  Cubemap,
+  Fibonacci
 };
 enum class FovAxis { Horizontal, Vertical, Diagonal };
 enum class FisheyeMapping { Equidistant, Equisolid };
@@ -31,7 +39,7 @@ struct Camera {
   double far = kInf;
 
   // thin-lens
-  double focalLength = 0.05;    // metres (world units)
+  double focalLength = 0.05;  // metres (world units)
   double fStop = 8.0;
   double focusDistance = 0.0;  // 0: the distance from position to look-at
   // orthographic

@@ -48,8 +48,10 @@ bool containsPlain(const Node& node, const Transform& parentWorld, const Vec3& p
         return false;  // a shape that cannot be built is the world builder's error to report
       }
     }
-    case NodeKind::Use: return node.target && contains(*node.target, *world, p);
-    case NodeKind::Light: return false;
+    case NodeKind::Use:
+      return node.target && contains(*node.target, *world, p);
+    case NodeKind::Light:
+      return false;
     case NodeKind::Group:
     case NodeKind::Union:
     case NodeKind::Merge:

@@ -22,7 +22,7 @@ struct Fog {
   // Ground fog: full density at or below `offset` along `up`, 1/(1 + y²) above it, with
   // y = (height − offset)/altitude.
   double offset = 0.0;
-  double altitude = 1.0;  // > 0
+  double altitude = 1.0;   // > 0
   Vec3 up{0.0, 1.0, 0.0};  // unit
 };
 

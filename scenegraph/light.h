@@ -18,7 +18,7 @@ struct Light {
   Vec3 position{0.0};
   Vec3 direction{0.0, -1.0, 0.0};  // unit; directional: where light travels; spot: the axis
   Color color{1.0f};
-  double intensity = 1.0;          // I_L = color * intensity
+  double intensity = 1.0;           // I_L = color * intensity
   Vec3 attenuation{1.0, 0.0, 0.0};  // a b c of min(1, 1/(a + b r + c r^2))
   bool shadows = true;
 

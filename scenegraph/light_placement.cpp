@@ -49,8 +49,9 @@ void place(const Node& n, const Mat4& parentWorld, std::vector<Light>& out) {
       if (!finite(world))
         throw LocatedError(n.loc, "the transforms down to this light multiply beyond double range");
       Light placed = placedLight(*n.light, world);
-      const bool flat = !(glm::length(placed.direction) > 0.0) ||
-                        (placed.type == LightType::Area && !(glm::length(glm::cross(placed.u, placed.v)) > 0.0));
+      const bool flat =
+          !(glm::length(placed.direction) > 0.0) ||
+          (placed.type == LightType::Area && !(glm::length(glm::cross(placed.u, placed.v)) > 0.0));
       if (flat) throw LocatedError(n.loc, "the transforms down to this light scale it to nothing");
       out.push_back(placed);
       return;
@@ -85,10 +86,11 @@ std::vector<Light> placeLights(const Scene& scene, size_t limit) {
     for (const auto& c : top->children) {
       total += counter.of(*c);
       if (total > limit)
-        throw LocatedError(c->loc, fmt::format("the scene places more than {} lights (each <use> of a node "
-                                               "holding lights places them again); this node is where the "
-                                               "count crosses the limit",
-                                               limit));
+        throw LocatedError(c->loc,
+                           fmt::format("the scene places more than {} lights (each <use> of a node "
+                                       "holding lights places them again); this node is where the "
+                                       "count crosses the limit",
+                                       limit));
     }
   std::vector<Light> lights;
   lights.reserve(total);

@@ -19,9 +19,9 @@ namespace lucent {
 // fade_distance do not scale either).
 Light placedLight(const Light& local, const Mat4& worldFromLight);
 
-// Every light of Scene::lightRoot and reachable from Scene::root, placed. Throws LocatedError when more than
-// `limit` would be placed (each <use> of a group of lights makes another copy, and uses of
-// uses multiply), or when a light's world transform is not finite or flattens it.
+// Every light of Scene::lightRoot and reachable from Scene::root, placed. Throws LocatedError when
+// more than `limit` would be placed (each <use> of a group of lights makes another copy, and uses
+// of uses multiply), or when a light's world transform is not finite or flattens it.
 std::vector<Light> placeLights(const Scene& scene, size_t limit);
 
 }  // namespace lucent

@@ -24,7 +24,7 @@ struct CheckerTexture {
 // <image src scale>: an image looked up with the shape's (u,v). The pixels are loaded by
 // the renderer; the scene keeps the resolved path.
 struct ImageTexture {
-  std::string path;       // resolved, absolute or relative to the working directory
+  std::string path;  // resolved, absolute or relative to the working directory
   Vec2 scale{1.0, 1.0};
   SourceLoc loc;
 };
@@ -49,7 +49,7 @@ struct BrickTexture {
 // <bump-map src depth>: POV-Ray's bump_map read at the shape's (u,v): the shading normal
 // bent by the image's grey levels (render/bump_map.h). The renderer loads the pixels.
 struct BumpMapSpec {
-  std::string path;  // resolved, as ImageTexture's
+  std::string path;    // resolved, as ImageTexture's
   double depth = 0.5;  // POV-Ray's bump_size
   SourceLoc loc;
 };
@@ -58,16 +58,16 @@ using Texture = std::variant<std::monostate, CheckerTexture, ImageTexture, Patte
                              HexagonTexture, BrickTexture>;
 
 struct Material {
-  std::string id;   // empty for inline materials
+  std::string id;  // empty for inline materials
   SourceLoc loc;
 
-  Color emissive{0.0f};      // k_e
-  Color ambient{0.0f};       // k_a
+  Color emissive{0.0f};         // k_e
+  Color ambient{0.0f};          // k_a
   bool ambientIsScalar = true;  // a single-number ambient is multiplied by the texture
-  Color diffuse{0.0f};       // k_d (1 when a texture is present and diffuse is not given)
-  Color specular{0.0f};      // k_s
-  double shininess = 64.0;   // n_s
-  Color phong{0.0f};         // k_p: POV-Ray's Phong highlight k_p·(R·L)^phongSize
+  Color diffuse{0.0f};          // k_d (1 when a texture is present and diffuse is not given)
+  Color specular{0.0f};         // k_s
+  double shininess = 64.0;      // n_s
+  Color phong{0.0f};            // k_p: POV-Ray's Phong highlight k_p·(R·L)^phongSize
   double phongSize = 40.0;
   double brilliance = 1.0;   // the diffuse term is k_d·(N·L)^brilliance
   bool metallic = false;     // highlights take the surface colour (POV-Ray's metallic)
@@ -75,7 +75,7 @@ struct Material {
   Color transmissive{0.0f};  // k_t
   double ior = 1.0;          // eta
   bool fresnel = false;
-  Color absorption{0.0f};    // Beer–Lambert coefficient per world unit
+  Color absorption{0.0f};  // Beer–Lambert coefficient per world unit
 
   Texture texture;
   // <normal>: the shading normal perturbed by a pattern's slope (geometry unchanged).
@@ -87,9 +87,7 @@ struct Material {
   bool isTransmissive() const { return maxComponent(transmissive) > 0.0f; }
   bool isReflective() const { return maxComponent(reflective) > 0.0f; }
   bool isAbsorbing() const { return maxComponent(absorption) > 0.0f; }
-  bool hasHighlight() const {
-    return maxComponent(specular) > 0.0f || maxComponent(phong) > 0.0f;
-  }
+  bool hasHighlight() const { return maxComponent(specular) > 0.0f || maxComponent(phong) > 0.0f; }
 
   // What a shape with no material at all gets: diffuse 0.8 and nothing else.
   static Material defaultMaterial() {

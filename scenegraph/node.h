@@ -25,7 +25,7 @@ struct Node {
   std::string id;       // empty unless given
   SourceLoc loc;
 
-  Mat4 parentFromNode{1.0};  // the node's own transform, in the order written
+  Mat4 parentFromNode{1.0};          // the node's own transform, in the order written
   std::optional<uint32_t> material;  // index into Scene::materials; none: inherit
   // shadows="false": the node and everything under it cast no shadow (POV-Ray's no_shadow).
   // Inside a merge, intersection or difference only the whole operation's counts, as in
@@ -35,7 +35,7 @@ struct Node {
   // csg/inverted.h around the node's geometry.
   bool inverse = false;
 
-  std::optional<ShapeSpec> shape;             // kind == Shape
+  std::optional<ShapeSpec> shape;               // kind == Shape
   std::vector<std::unique_ptr<Node>> children;  // groups and CSG operations
   const Node* target = nullptr;                 // kind == Use: the referenced node
   // kind == Light: the light in the node's own frame; Scene::lights holds it placed in the
@@ -44,15 +44,16 @@ struct Node {
   std::unique_ptr<Light> light;
 
   bool isCsg() const {
-    return kind == NodeKind::Union || kind == NodeKind::Merge ||
-           kind == NodeKind::Intersection || kind == NodeKind::Difference;
+    return kind == NodeKind::Union || kind == NodeKind::Merge || kind == NodeKind::Intersection ||
+           kind == NodeKind::Difference;
   }
   // Does the node enclose a volume, so it may be an operand of merge/intersection/difference?
   // Lights among a group's children do not count either way.
   bool isSolid() const;
   // A light, or a <use> of one.
   bool isLight() const {
-    return kind == NodeKind::Light || (kind == NodeKind::Use && target && target->kind == NodeKind::Light);
+    return kind == NodeKind::Light ||
+           (kind == NodeKind::Use && target && target->kind == NodeKind::Light);
   }
 };
 

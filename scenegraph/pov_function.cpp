@@ -11,7 +11,8 @@ namespace {
 // checked by muParser when it was read, so a malformed one is a defect here (thrown).
 class Writer {
  public:
-  Writer(const std::string& t, const std::vector<std::pair<std::string, double>>& c, const std::function<std::string(double)>& number)
+  Writer(const std::string& t, const std::vector<std::pair<std::string, double>>& c,
+         const std::function<std::string(double)>& number)
       : t_(t), c_(c), number_(number) {}
 
   std::string all() {
@@ -30,7 +31,8 @@ class Writer {
     size_t n = std::char_traits<char>::length(op);
     if (t_.compare(i_, n, op) != 0) return false;
     // '<' is not '<=', '!' is not '!=', '=' alone is no operator of the language.
-    if (n == 1 && i_ + 1 < t_.size() && t_[i_ + 1] == '=' && (op[0] == '<' || op[0] == '>' || op[0] == '!'))
+    if (n == 1 && i_ + 1 < t_.size() && t_[i_ + 1] == '=' &&
+        (op[0] == '<' || op[0] == '>' || op[0] == '!'))
       return false;
     i_ += n;
     return true;
@@ -111,7 +113,8 @@ class Writer {
     }
     if (i_ < t_.size() && (std::isdigit(static_cast<unsigned char>(t_[i_])) || t_[i_] == '.')) {
       size_t j = i_;
-      while (j < t_.size() && (std::isdigit(static_cast<unsigned char>(t_[j])) || t_[j] == '.')) ++j;
+      while (j < t_.size() && (std::isdigit(static_cast<unsigned char>(t_[j])) || t_[j] == '.'))
+        ++j;
       if (j < t_.size() && (t_[j] == 'e' || t_[j] == 'E')) {
         size_t k = j + 1;
         if (k < t_.size() && (t_[k] == '+' || t_[k] == '-')) ++k;
@@ -151,14 +154,15 @@ class Writer {
       return s;
     };
     // The same name and meaning in POV-Ray.
-    for (const char* same : {"sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sqrt", "exp", "ln", "abs",
-                             "floor", "ceil", "pow"})
+    for (const char* same : {"sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sqrt", "exp",
+                             "ln", "abs", "floor", "ceil", "pow"})
       if (f == same) return f + "(" + args() + ")";
     if (f == "log10") return "log(" + a[0] + ")";
     if (f == "log2") return p("ln(" + a[0] + ") / ln(2)");
     if (f == "trunc") return "int(" + a[0] + ")";
     if (f == "sign") return "select(" + a[0] + ", -1, 0, 1)";
-    if (f == "round") return "select(" + a[0] + ", -floor(0.5 - " + a[0] + "), floor(" + a[0] + " + 0.5))";
+    if (f == "round")
+      return "select(" + a[0] + ", -floor(0.5 - " + a[0] + "), floor(" + a[0] + " + 0.5))";
     if (f == "radians") return p(a[0] + " * " + number_(0.017453292519943295));
     if (f == "degrees") return p(a[0] + " * " + number_(57.29577951308232));
     if (f == "clamp") return "min(max(" + a[0] + ", " + a[1] + "), " + a[2] + ")";
@@ -186,9 +190,9 @@ class Writer {
 
 }  // namespace
 
-std::optional<std::string> povFunctionText(const std::string& text,
-                                           const std::vector<std::pair<std::string, double>>& constants,
-                                           const std::function<std::string(double)>& number, std::string& problem) {
+std::optional<std::string> povFunctionText(
+    const std::string& text, const std::vector<std::pair<std::string, double>>& constants,
+    const std::function<std::string(double)>& number, std::string& problem) {
   try {
     return Writer(text, constants, number).all();
   } catch (const Writer::Unsupported& u) {

@@ -16,8 +16,8 @@ namespace lucent {
 
 // The POV-Ray text, or nullopt with `problem` set for what POV-Ray cannot express
 // (random()). `number` writes a number in POV-Ray's syntax.
-std::optional<std::string> povFunctionText(const std::string& text,
-                                           const std::vector<std::pair<std::string, double>>& constants,
-                                           const std::function<std::string(double)>& number, std::string& problem);
+std::optional<std::string> povFunctionText(
+    const std::string& text, const std::vector<std::pair<std::string, double>>& constants,
+    const std::function<std::string(double)>& number, std::string& problem);
 
 }  // namespace lucent

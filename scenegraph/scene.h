@@ -6,9 +6,9 @@
 #include "fog.h"
 #include "light.h"
 #include "material.h"
-#include "sky.h"
 #include "node.h"
 #include "render_settings.h"
+#include "sky.h"
 
 #include <memory>
 #include <optional>
@@ -37,8 +37,8 @@ struct Scene {
   double clock = 0.0;  // its clock
   RenderSettings render;
   std::vector<Camera> cameras;  // at least one
-  std::vector<Light> lights;  // in world space: what the renderer and the exporter read
-  std::optional<Fog> fog;  // <fog>, at most one
+  std::vector<Light> lights;    // in world space: what the renderer and the exporter read
+  std::optional<Fog> fog;       // <fog>, at most one
   // Index 0 is the default material (diffuse 0.8) for shapes with none at all.
   std::vector<Material> materials{Material::defaultMaterial()};
   // The top-level geometry: a group with identity transform. <defs> are not under it.

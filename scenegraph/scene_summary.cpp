@@ -12,10 +12,14 @@ namespace {
 
 const char* lightTypeName(LightType t) {
   switch (t) {
-    case LightType::Point: return "point";
-    case LightType::Directional: return "directional";
-    case LightType::Spot: return "spot";
-    case LightType::Area: return "area";
+    case LightType::Point:
+      return "point";
+    case LightType::Directional:
+      return "directional";
+    case LightType::Spot:
+      return "spot";
+    case LightType::Area:
+      return "area";
   }
   return "?";
 }
@@ -69,7 +73,8 @@ void countNodes(const Node& n, std::map<std::string, int>& out) {
 template <class Map>
 std::string breakdown(const Map& m) {
   std::string s;
-  for (const auto& [name, count] : m) s += (s.empty() ? "" : ", ") + name + ": " + std::to_string(count);
+  for (const auto& [name, count] : m)
+    s += (s.empty() ? "" : ", ") + name + ": " + std::to_string(count);
   return s;
 }
 

@@ -12,14 +12,14 @@
 namespace lucent {
 
 struct SceneCounts {
-  std::map<std::string, int> nodes;   // element name -> count, as written (defs included)
-  int defs = 0;                       // top-level nodes inside <defs>
-  std::map<std::string, int> lights;  // "point", "spot", ...
-  std::map<std::string, int> cameras; // "pinhole", ...
-  int materials = 0;                  // declared (named and inline), without the default
-  long long instances = 0;            // leaf shapes in the world, each <use> expanded
-  long long triangles = 0;            // of <triangle>s and meshes, each <use> expanded
-  int csgDepth = 0;                   // deepest nesting of union/merge/intersection/difference
+  std::map<std::string, int> nodes;    // element name -> count, as written (defs included)
+  int defs = 0;                        // top-level nodes inside <defs>
+  std::map<std::string, int> lights;   // "point", "spot", ...
+  std::map<std::string, int> cameras;  // "pinhole", ...
+  int materials = 0;                   // declared (named and inline), without the default
+  long long instances = 0;             // leaf shapes in the world, each <use> expanded
+  long long triangles = 0;             // of <triangle>s and meshes, each <use> expanded
+  int csgDepth = 0;                    // deepest nesting of union/merge/intersection/difference
 };
 
 SceneCounts countScene(const Scene& scene);

@@ -52,7 +52,9 @@ std::string attributeText(const Vec3& v) { return fmt::format("{} {} {}", v.x, v
 bool isSolid(const ShapeSpec& spec) { return shapeTypeOf(spec).notSolid(spec).empty(); }
 std::string whyNotSolid(const ShapeSpec& spec) { return shapeTypeOf(spec).notSolid(spec); }
 const char* shapeElementName(const ShapeSpec& spec) { return shapeTypeOf(spec).element.c_str(); }
-std::shared_ptr<const Shape> makeShape(const ShapeSpec& spec) { return shapeTypeOf(spec).build(spec); }
+std::shared_ptr<const Shape> makeShape(const ShapeSpec& spec) {
+  return shapeTypeOf(spec).build(spec);
+}
 
 std::string testSlotName(size_t slot) {
   if (slot < shapeTypes().size()) return shapeTypes()[slot].plural;

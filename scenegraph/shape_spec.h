@@ -3,8 +3,8 @@
 #pragma once
 
 #include "primitives/blob_component.h"
-#include "primitives/isosurface.h"
 #include "primitives/height_map.h"
+#include "primitives/isosurface.h"
 #include "primitives/lathe_spline.h"
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
@@ -21,20 +21,41 @@
 
 namespace lucent {
 
-struct SphereSpec { Vec3 center{0.0}; double radius = 1.0; };
-struct BoxSpec { Vec3 min{-1.0}; Vec3 max{1.0}; };
-struct CylinderSpec { Vec3 base{0.0}; Vec3 cap{0.0, 1.0, 0.0}; double radius = 1.0; bool open = false; };
-struct ConeSpec {
-  Vec3 base{0.0}; double baseRadius = 1.0;
-  Vec3 cap{0.0, 1.0, 0.0}; double capRadius = 0.0;
+struct SphereSpec {
+  Vec3 center{0.0};
+  double radius = 1.0;
+};
+struct BoxSpec {
+  Vec3 min{-1.0};
+  Vec3 max{1.0};
+};
+struct CylinderSpec {
+  Vec3 base{0.0};
+  Vec3 cap{0.0, 1.0, 0.0};
+  double radius = 1.0;
   bool open = false;
 };
-struct TorusSpec { double major = 1.0; double minor = 0.25; };
+struct ConeSpec {
+  Vec3 base{0.0};
+  double baseRadius = 1.0;
+  Vec3 cap{0.0, 1.0, 0.0};
+  double capRadius = 0.0;
+  bool open = false;
+};
+struct TorusSpec {
+  double major = 1.0;
+  double minor = 0.25;
+};
 // The points with normal·x = offset; normal is unit; normal·x < offset is inside.
-struct PlaneSpec { Vec3 normal{0.0, 1.0, 0.0}; double offset = 0.0; };
+struct PlaneSpec {
+  Vec3 normal{0.0, 1.0, 0.0};
+  double offset = 0.0;
+};
 struct DiscSpec {
-  Vec3 center{0.0}; Vec3 normal{0.0, 1.0, 0.0};  // normal is unit
-  double radius = 1.0; double innerRadius = 0.0;
+  Vec3 center{0.0};
+  Vec3 normal{0.0, 1.0, 0.0};  // normal is unit
+  double radius = 1.0;
+  double innerRadius = 0.0;
 };
 struct TriangleSpec {
   Vec3 a{0.0}, b{1.0, 0.0, 0.0}, c{0.0, 1.0, 0.0};
@@ -42,7 +63,10 @@ struct TriangleSpec {
 };
 enum class SmoothMode { Auto, True, False };
 // Exponents as POV-Ray's superellipsoid { <e, n> }; the poles lie on the z axis.
-struct SuperellipsoidSpec { double e = 1.0; double n = 1.0; };
+struct SuperellipsoidSpec {
+  double e = 1.0;
+  double n = 1.0;
+};
 struct MeshSpec {
   std::string src;  // as written ("" for inline meshes)
   SmoothMode smooth = SmoothMode::Auto;
@@ -113,9 +137,9 @@ struct HeightFieldSpec {
   double waterLevel = 0.0;
   std::shared_ptr<const HeightMap> map;  // loaded
 };
-using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
-                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
-                               PolySpec, PrismSpec, BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec,
-                               SorSpec, HeightFieldSpec>;
+using ShapeSpec =
+    std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec, DiscSpec,
+                 TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec, PolySpec, PrismSpec,
+                 BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec, SorSpec, HeightFieldSpec>;
 
 }  // namespace lucent

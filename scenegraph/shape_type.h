@@ -21,7 +21,17 @@
 
 namespace lucent {
 
-enum class AttrType { Number, Vector, Direction, Boolean, Choice, Text, NumberList, IntegerList, File };
+enum class AttrType {
+  Number,
+  Vector,
+  Direction,
+  Boolean,
+  Choice,
+  Text,
+  NumberList,
+  IntegerList,
+  File
+};
 
 struct AttributeInfo {
   std::string name;
@@ -30,8 +40,8 @@ struct AttributeInfo {
   std::vector<std::string_view> choices;  // choices: the words
   std::string defaultText;                // as a user would write it; "" when there is none
   bool required = false;
-  std::string doc;                        // one or two sentences, for the schema
-  int listArity = 1;                      // lists: numbers per item (3 for x y z)
+  std::string doc;    // one or two sentences, for the schema
+  int listArity = 1;  // lists: numbers per item (3 for x y z)
 };
 
 // A child element a shape reads itself (a blob's <component>): its name and attributes,
@@ -51,8 +61,8 @@ class PovShapeOut {
   virtual ~PovShapeOut() = default;
   virtual void open(std::string_view keyword) = 0;  // "sphere {"
   virtual void line(std::string_view text) = 0;
-  virtual std::string number(double v) const = 0;        // POV-Ray's number syntax
-  virtual std::string vector(const Vec3& v) const = 0;   // <x, y, z>
+  virtual std::string number(double v) const = 0;       // POV-Ray's number syntax
+  virtual std::string vector(const Vec3& v) const = 0;  // <x, y, z>
   // The identifier of a mesh2 declared once for this mesh data (the exporter writes it).
   virtual std::string declaredMesh(const MeshSpec& mesh) = 0;
   // What the shape's parameters cannot be written as (an isosurface's random()): an
@@ -105,8 +115,8 @@ struct ShapeEntry {
   ShapeEntry(const char* element, const char* plural, Build build, WritePov pov)
       : element(element), plural(plural), build(std::move(build)), pov(std::move(pov)) {}
 
-  const char* element;  // "sphere"
-  const char* plural;   // "spheres", for --stats
+  const char* element;   // "sphere"
+  const char* plural;    // "spheres", for --stats
   const char* doc = "";  // one sentence for the schema: "A sphere (solid)."
   std::vector<Field<S>> fields;
   // Child elements the entry's finish() reads (AttributeInput::forEachChild); most have none.
@@ -159,7 +169,8 @@ Field<S> booleanField(const char* name, bool S::*m) {
 template <class S>
 Field<S> readByEntry(const char* name, AttrType type, std::string defaultText = "",
                      std::vector<std::string_view> choices = {}, int listArity = 1) {
-  return {{name, type, {}, std::move(choices), std::move(defaultText), false, "", listArity}, nullptr};
+  return {{name, type, {}, std::move(choices), std::move(defaultText), false, "", listArity},
+          nullptr};
 }
 
 // The registry's view of a shape, whatever its parameter type.

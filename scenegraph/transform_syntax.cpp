@@ -21,10 +21,26 @@ bool isNameChar(char c) {
 void sinCosDegrees(double degrees, double& s, double& c) {
   double a = std::fmod(degrees, 360.0);
   if (a < 0.0) a += 360.0;
-  if (a == 0.0) { s = 0.0; c = 1.0; return; }
-  if (a == 90.0) { s = 1.0; c = 0.0; return; }
-  if (a == 180.0) { s = 0.0; c = -1.0; return; }
-  if (a == 270.0) { s = -1.0; c = 0.0; return; }
+  if (a == 0.0) {
+    s = 0.0;
+    c = 1.0;
+    return;
+  }
+  if (a == 90.0) {
+    s = 1.0;
+    c = 0.0;
+    return;
+  }
+  if (a == 180.0) {
+    s = 0.0;
+    c = -1.0;
+    return;
+  }
+  if (a == 270.0) {
+    s = -1.0;
+    c = 0.0;
+    return;
+  }
   s = std::sin(radians(degrees));
   c = std::cos(radians(degrees));
 }
@@ -68,7 +84,8 @@ struct Scanner {
              text[pos] != '(')
         ++pos;
       std::string_view token = text.substr(start, pos - start);
-      if (token.empty()) return fail(start, "'" + op + "': unexpected '" + std::string(1, ch) + "'");
+      if (token.empty())
+        return fail(start, "'" + op + "': unexpected '" + std::string(1, ch) + "'");
       // from_chars does not take a leading '+'; a decimal number may have one.
       std::string_view digits = token;
       if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);
@@ -77,11 +94,15 @@ struct Scanner {
       if (ec != std::errc() || end != digits.data() + digits.size())
         return fail(start, "'" + op + "': expected a number, got '" + std::string(token) + "'");
       if (!std::isfinite(value))
-        return fail(start, "'" + op + "': expected a finite number, got '" + std::string(token) + "'");
+        return fail(start,
+                    "'" + op + "': expected a finite number, got '" + std::string(token) + "'");
       if (std::abs(value) > kMaxMagnitude)
-        return fail(start, "'" + op + "': the number '" + std::string(token) + "' is too large (the limit is 1e30 in magnitude)");
+        return fail(start, "'" + op + "': the number '" + std::string(token) +
+                               "' is too large (the limit is 1e30 in magnitude)");
       if (value != 0.0 && std::abs(value) < kMinMagnitude)
-        return fail(start, "'" + op + "': the number '" + std::string(token) + "' is too small (a nonzero number must be at least 1e-30 in magnitude)");
+        return fail(start,
+                    "'" + op + "': the number '" + std::string(token) +
+                        "' is too small (a nonzero number must be at least 1e-30 in magnitude)");
       args.push_back(value);
       needNumber = false;
     }
@@ -107,7 +128,8 @@ struct Scanner {
     if (!arguments(op, opStart, a)) return false;
 
     auto arity = [&](const char* expected) {
-      return fail(opStart, "'" + op + "' expects " + expected + ", got " + std::to_string(a.size()));
+      return fail(opStart,
+                  "'" + op + "' expects " + expected + ", got " + std::to_string(a.size()));
     };
     Mat4 m(1.0);
     if (op == "translate") {
@@ -130,11 +152,13 @@ struct Scanner {
       axis[op.back() - 'x'] = 1.0;
       m = rotationMatrix(a[0], axis);
     } else {  // matrix
-      if (a.size() != 12 && a.size() != 16) return arity("12 numbers (3 rows of 4) or 16 (4 rows of 4)");
+      if (a.size() != 12 && a.size() != 16)
+        return arity("12 numbers (3 rows of 4) or 16 (4 rows of 4)");
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c) m[c][r] = a[r * 4 + c];  // row-major text, glm column-major
       if (a.size() == 16 && (a[12] != 0.0 || a[13] != 0.0 || a[14] != 0.0 || a[15] != 1.0))
-        return fail(opStart, "'matrix': the last row must be 0 0 0 1 (only affine transforms are allowed)");
+        return fail(opStart,
+                    "'matrix': the last row must be 0 0 0 1 (only affine transforms are allowed)");
     }
     // The first operation written is applied first: each new one multiplies from the left.
     result.matrix = m * result.matrix;
@@ -158,11 +182,14 @@ struct Scanner {
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r)
         if (!std::isfinite(result.matrix[c][r])) {
-          fail(0, "the transform overflows (its operations multiply to numbers beyond double range)");
+          fail(0,
+               "the transform overflows (its operations multiply to numbers beyond double range)");
           return;
         }
     if (!Transform::fromMatrix(result.matrix))
-      fail(0, "the transform is singular (it flattens space, e.g. a zero scale) and cannot be inverted");
+      fail(0,
+           "the transform is singular (it flattens space, e.g. a zero scale) and cannot be "
+           "inverted");
   }
 };
 

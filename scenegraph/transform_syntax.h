@@ -21,8 +21,8 @@ namespace lucent {
 struct TransformSyntaxResult {
   Mat4 matrix{1.0};  // glm: column-major, matrix[col][row]
   bool ok = true;
-  std::string error;        // without location; empty when ok
-  size_t errorOffset = 0;   // byte offset of the problem inside the attribute value
+  std::string error;       // without location; empty when ok
+  size_t errorOffset = 0;  // byte offset of the problem inside the attribute value
   // Set when the error is an unknown operation name, so the caller can add a
   // "did you mean" hint among transformOperationNames().
   std::string unknownOperation;

@@ -4,10 +4,10 @@
 #include "shape_registry.h"
 
 #include "csg/csg_node.h"
+#include "csg/inverted.h"
 #include "primitives/offset.h"
 #include "primitives/quadratic.h"
 #include "primitives/sphere.h"
-#include "csg/inverted.h"
 #include "primitives/sphere_image.h"
 #include "primitives/test_counts.h"
 
@@ -39,10 +39,14 @@ bool finiteTransform(const Transform& t) {
 
 CsgOp csgOpOf(NodeKind k) {
   switch (k) {
-    case NodeKind::Union: return CsgOp::Union;
-    case NodeKind::Merge: return CsgOp::Merge;
-    case NodeKind::Intersection: return CsgOp::Intersection;
-    default: return CsgOp::Difference;
+    case NodeKind::Union:
+      return CsgOp::Union;
+    case NodeKind::Merge:
+      return CsgOp::Merge;
+    case NodeKind::Intersection:
+      return CsgOp::Intersection;
+    default:
+      return CsgOp::Difference;
   }
 }
 
@@ -53,7 +57,8 @@ bool transmitsLight(const Shape& object, const std::vector<Material>& materials)
       if (transmitsLight(*c, materials)) return true;
     return false;
   }
-  if (const auto* inv = dynamic_cast<const Inverted*>(&object)) return transmitsLight(inv->solid(), materials);
+  if (const auto* inv = dynamic_cast<const Inverted*>(&object))
+    return transmitsLight(inv->solid(), materials);
   const auto* leaf = dynamic_cast<const Instance*>(&object);
   return leaf && materials[leaf->tag()].isTransmissive();
 }
@@ -124,14 +129,16 @@ struct Builder {
         } else {
           shape = makeShape(*node.shape);
         }
-        auto inst = std::make_unique<Instance>(std::move(shape), world, material, node.shape->index());
+        auto inst =
+            std::make_unique<Instance>(std::move(shape), world, material, node.shape->index());
         instances.push_back(inst.get());
         out.push_back(std::move(inst));
         casts.push_back(castsShadow);
         break;
       }
       case NodeKind::Group:
-        for (const auto& c : node.children) add(*c, world, material, castsShadow, inSolid, out, casts);
+        for (const auto& c : node.children)
+          add(*c, world, material, castsShadow, inSolid, out, casts);
         break;
       case NodeKind::Use:
         // The referenced node's own transform applies first, then the <use>'s.
@@ -142,10 +149,11 @@ struct Builder {
       case NodeKind::Union: {
         std::vector<std::unique_ptr<Shape>> children;
         std::vector<char> childCasts;
-        for (const auto& c : node.children) add(*c, world, material, castsShadow, inSolid, children, childCasts);
+        for (const auto& c : node.children)
+          add(*c, world, material, castsShadow, inSolid, children, childCasts);
         if (children.empty()) break;
-        const bool mixed =
-            std::any_of(childCasts.begin(), childCasts.end(), [&](char c) { return c != childCasts.front(); });
+        const bool mixed = std::any_of(childCasts.begin(), childCasts.end(),
+                                       [&](char c) { return c != childCasts.front(); });
         if (!mixed) {
           out.push_back(std::make_unique<CsgNode>(CsgOp::Union, std::move(children)));
           casts.push_back(childCasts.front());
@@ -179,14 +187,16 @@ struct Builder {
   // inverse="true": the node's objects as one solid (a union of them when there are
   // several, unsplit by shadow flags: the inverse of a union is not the union of the
   // inverses), inside out. It casts shadows as the node says.
-  void addInverted(const Node& node, const Transform& parentWorld, uint32_t inherited, bool castsAbove,
-                   bool inSolid, std::vector<std::unique_ptr<Shape>>& out, std::vector<char>& casts) {
+  void addInverted(const Node& node, const Transform& parentWorld, uint32_t inherited,
+                   bool castsAbove, bool inSolid, std::vector<std::unique_ptr<Shape>>& out,
+                   std::vector<char>& casts) {
     std::vector<std::unique_ptr<Shape>> parts;
     std::vector<char> partCasts;
     addPlain(node, parentWorld, inherited, castsAbove, inSolid, parts, partCasts);
     if (parts.empty()) return;
-    std::unique_ptr<Shape> solid = parts.size() == 1 ? std::move(parts.front())
-                                                     : std::make_unique<CsgNode>(CsgOp::Union, std::move(parts));
+    std::unique_ptr<Shape> solid = parts.size() == 1
+                                       ? std::move(parts.front())
+                                       : std::make_unique<CsgNode>(CsgOp::Union, std::move(parts));
     out.push_back(std::make_unique<Inverted>(std::move(solid)));
     casts.push_back(inSolid || (castsAbove && node.shadows));
   }
@@ -212,8 +222,7 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
     AABB box = o->bounds();
     if (box.isBounded() || box.empty())
       bounded.push_back(o.get());  // an empty box is left out by the BVH itself
-    else
-      all_.direct.push_back(o.get());
+    else all_.direct.push_back(o.get());
   }
   if (bounded.size() == 1 && !bounded[0]->bounds().empty()) {
     // A lone object (one mesh, say) culls rays itself: a tree above it would only add
@@ -236,8 +245,8 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
     if (!sphere) continue;
     auto image = sphereImage(inst->transform(), sphere->center(), sphere->radius());
     if (!image) continue;
-    leafOf[i] = Leaf{image->center.x, image->center.y, image->center.z,
-                     image->radius * image->radius};
+    leafOf[i] =
+        Leaf{image->center.x, image->center.y, image->center.z, image->radius * image->radius};
     if (image->error > 0.0) {
       // Secondary rays leaving this sphere are tested against the world copy: their
       // origins must clear it too. Its box: the copy's, widened by the same bound and
@@ -264,10 +273,11 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
     for (uint32_t i : items) spheres += leafOf[i].r2 >= 0.0;
     Bvh::Options options;
     if (!items.empty())
-      options.itemCost = float((kInlineSphereCost * double(spheres) +
-                                double(items.size() - spheres)) /
-                               double(items.size()));
-    set.bvh = Bvh(items.size(), [&](uint32_t k) { return boxes[items[k]]; }, options);
+      options.itemCost =
+          float((kInlineSphereCost * double(spheres) + double(items.size() - spheres)) /
+                double(items.size()));
+    set.bvh = Bvh(
+        items.size(), [&](uint32_t k) { return boxes[items[k]]; }, options);
     // Keep the leaves in leaf order: the traversal then hands out positions in leaves.
     std::vector<uint32_t> order = set.bvh.takeOrder();
     set.leaves.reserve(order.size());
@@ -285,7 +295,9 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   // one, or in a tree as the same kind of leaf), so that a walk through them finds the
   // same hits.
   auto castsNone = [&](const Shape* o) { return shadowless.count(o) != 0; };
-  auto mayTransmit = [&](const Shape* o) { return !castsNone(o) && transmitsLight(*o, scene_.materials); };
+  auto mayTransmit = [&](const Shape* o) {
+    return !castsNone(o) && transmitsLight(*o, scene_.materials);
+  };
   std::vector<uint32_t> clear;
   for (uint32_t i = 0; i < bounded.size(); ++i)
     if (mayTransmit(bounded[i])) clear.push_back(i);
@@ -298,7 +310,8 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
     transmissive_.linearSearch = kLinearTransmissive;
   }
   auto flags = [&](const Shape* o) {
-    return static_cast<uint8_t>((mayTransmit(o) ? kTransmits : 0) | (castsNone(o) ? kShadowless : 0));
+    return static_cast<uint8_t>((mayTransmit(o) ? kTransmits : 0) |
+                                (castsNone(o) ? kShadowless : 0));
   };
   skip_.reserve(all_.direct.size() + all_.leafObjects.size());
   for (const Shape* o : all_.direct) skip_.push_back(flags(o));
@@ -348,12 +361,9 @@ bool World::Objects::intersect(const Ray& ray, Hit& hit) const {
     double t0, t1;
     if (!sphereRoots(Vec3(leaf.cx, leaf.cy, leaf.cz), leaf.r2, rr, t0, t1)) return false;
     // The nearer root inside (tmin, tmax), else the farther (intersectSpan's rule).
-    if (rr.tmin < t0 && t0 < rr.tmax)
-      rr.tmax = t0;
-    else if (rr.tmin < t1 && t1 < rr.tmax)
-      rr.tmax = t1;
-    else
-      return false;
+    if (rr.tmin < t0 && t0 < rr.tmax) rr.tmax = t0;
+    else if (rr.tmin < t1 && t1 < rr.tmax) rr.tmax = t1;
+    else return false;
     sphereSlot = i;
     sphereT = rr.tmax;
     return true;

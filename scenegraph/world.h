@@ -10,8 +10,8 @@
 
 #include <cstdint>
 #include <functional>
-#include <type_traits>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 namespace lucent {
@@ -64,8 +64,8 @@ class World {
 
   // For shadow rays in scenes with transmissive materials. An object "may transmit" when
   // one of its leaves has a transmissive material and it casts shadows (the shadow
-  // queries skip every object built from shadows="false" nodes). opaqueOccluder() is occluder() over
-  // the other objects only: one of them in the way blocks the light whatever else the ray
+  // queries skip every object built from shadows="false" nodes). opaqueOccluder() is occluder()
+  // over the other objects only: one of them in the way blocks the light whatever else the ray
   // crosses. intersectTransmissive() is intersect() over the objects that may transmit
   // only, with the same tests and so the same hits to the last bit: a shadow ray that no
   // opaque object blocks walks these alone.

@@ -9,8 +9,8 @@
 
 int main(int argc, char* argv[]) {
   Catch::Session session;
-  session.configData().warnings =
-      static_cast<Catch::WarnAbout::What>(Catch::WarnAbout::NoAssertions | Catch::WarnAbout::NoTests);
+  session.configData().warnings = static_cast<Catch::WarnAbout::What>(
+      Catch::WarnAbout::NoAssertions | Catch::WarnAbout::NoTests);
   if (const int status = session.applyCommandLine(argc, argv); status != 0) return status;
   return session.run();
 }

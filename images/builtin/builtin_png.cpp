@@ -33,9 +33,7 @@ struct ErrorSink {
 
 void ignoreWarning(png_structp, png_const_charp) {}
 
-int colorTypeFor(int channels) {
-  return channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB;
-}
+int colorTypeFor(int channels) { return channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB; }
 
 int bitDepthFor(const ImageToWrite& image) { return image.type == StoredType::UInt16 ? 16 : 8; }
 
@@ -47,8 +45,7 @@ size_t rowBytes(const ImageToWrite& image) {
 constexpr bool kLittleEndian = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
 
 bool encode(FILE* file, const ImageToWrite& image, ErrorSink& sink) {
-  png_structp png =
-      png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, onError, ignoreWarning);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, onError, ignoreWarning);
   if (!png) {
     std::snprintf(sink.message, sizeof sink.message, "libpng cannot start (out of memory)");
     return false;
@@ -68,10 +65,8 @@ bool encode(FILE* file, const ImageToWrite& image, ErrorSink& sink) {
                static_cast<png_uint_32>(image.height), bitDepthFor(image),
                colorTypeFor(image.channels), PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                PNG_FILTER_TYPE_DEFAULT);
-  if (image.colorSpace == "sRGB")
-    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_ABSOLUTE);
-  else
-    png_set_gAMA(png, info, 1.0);
+  if (image.colorSpace == "sRGB") png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_ABSOLUTE);
+  else png_set_gAMA(png, info, 1.0);
   png_set_oFFs(png, info, 0, 0, PNG_OFFSET_PIXEL);
   // zlib level 3 instead of the default 6: half the deflate time of a typical render, files
   // within a few per cent (docs/performance-history.md, "Figures behind comments in the code").
@@ -95,8 +90,7 @@ bool encode(FILE* file, const ImageToWrite& image, ErrorSink& sink) {
 // Decodes every row into `row` (capacity bytes), then the chunks up to IEND.
 bool decode(FILE* file, const ImageToWrite& image, png_byte* row, size_t capacity) {
   ErrorSink sink;
-  png_structp png =
-      png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, onError, ignoreWarning);
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, onError, ignoreWarning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
   if (!info) {
@@ -109,12 +103,11 @@ bool decode(FILE* file, const ImageToWrite& image, png_byte* row, size_t capacit
   }
   png_init_io(png, file);
   png_read_info(png, info);
-  const bool expected =
-      png_get_image_width(png, info) == static_cast<png_uint_32>(image.width) &&
-      png_get_image_height(png, info) == static_cast<png_uint_32>(image.height) &&
-      png_get_channels(png, info) == image.channels &&
-      png_get_bit_depth(png, info) == bitDepthFor(image) &&
-      png_get_rowbytes(png, info) <= capacity;
+  const bool expected = png_get_image_width(png, info) == static_cast<png_uint_32>(image.width) &&
+                        png_get_image_height(png, info) == static_cast<png_uint_32>(image.height) &&
+                        png_get_channels(png, info) == image.channels &&
+                        png_get_bit_depth(png, info) == bitDepthFor(image) &&
+                        png_get_rowbytes(png, info) <= capacity;
   if (expected) {
     const int passes = png_set_interlace_handling(png);
     png_read_update_info(png, info);

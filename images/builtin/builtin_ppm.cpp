@@ -40,8 +40,8 @@ bool ppmReadsBackComplete(const std::string& path, const ImageToWrite& image) {
   int width = 0, height = 0, maxValue = 0;
   // The header as writePpm writes it, then every pixel byte and nothing after them.
   bool complete = std::fscanf(file, "P6 %d %d %d", &width, &height, &maxValue) == 3 &&
-                  std::fgetc(file) == '\n' && width == image.width &&
-                  height == image.height && maxValue == 255;
+                  std::fgetc(file) == '\n' && width == image.width && height == image.height &&
+                  maxValue == 255;
   if (complete) {
     std::vector<char> chunk(1 << 16);
     size_t total = 0;

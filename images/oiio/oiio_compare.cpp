@@ -31,8 +31,8 @@ CompareStats compare(const float* a, const float* b, int width, int height, floa
   return s;
 }
 
-std::vector<float> heatMap(const float* a, const float* b, int width, int height,
-                           float fullScale, std::string& error) {
+std::vector<float> heatMap(const float* a, const float* b, int width, int height, float fullScale,
+                           std::string& error) {
   OIIO::ImageBuf diff = OIIO::ImageBufAlgo::absdiff(wrap(a, width, height), wrap(b, width, height));
   OIIO::ImageBuf largest = OIIO::ImageBufAlgo::maxchan(diff);
   OIIO::ImageBuf scaled = OIIO::ImageBufAlgo::mul(largest, 1.0f / fullScale);

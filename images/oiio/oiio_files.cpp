@@ -14,9 +14,12 @@ namespace {
 
 OIIO::TypeDesc typeOf(StoredType t) {
   switch (t) {
-    case StoredType::UInt8: return OIIO::TypeDesc::UINT8;
-    case StoredType::UInt16: return OIIO::TypeDesc::UINT16;
-    case StoredType::Float: return OIIO::TypeDesc::FLOAT;
+    case StoredType::UInt8:
+      return OIIO::TypeDesc::UINT8;
+    case StoredType::UInt16:
+      return OIIO::TypeDesc::UINT16;
+    case StoredType::Float:
+      return OIIO::TypeDesc::FLOAT;
   }
   return OIIO::TypeDesc::UNKNOWN;
 }
@@ -89,8 +92,8 @@ std::string srgbToLinear(float* pixels, int width, int height, int channels) {
   OIIO::ImageBuf decoded =
       OIIO::ImageBufAlgo::colorconvert(encoded, "sRGB", "linear", /*unpremult=*/false);
   if (decoded.has_error()) return decoded.geterror();
-  if (!decoded.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, channels),
-                          OIIO::TypeDesc::FLOAT, pixels))
+  if (!decoded.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, channels), OIIO::TypeDesc::FLOAT,
+                          pixels))
     return decoded.geterror();
   return "";
 }

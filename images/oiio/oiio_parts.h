@@ -15,7 +15,7 @@ std::unique_ptr<TextureSampler> textureSampler(const float* rgb, int width, int 
 
 // oiio_compare.cpp
 CompareStats compare(const float* a, const float* b, int width, int height, float threshold);
-std::vector<float> heatMap(const float* a, const float* b, int width, int height,
-                           float fullScale, std::string& error);
+std::vector<float> heatMap(const float* a, const float* b, int width, int height, float fullScale,
+                           std::string& error);
 
 }  // namespace lucent::oiio

@@ -25,8 +25,8 @@ class OiioPlugin final : public ImagePlugin {
                        float threshold) const override {
     return oiio::compare(a, b, width, height, threshold);
   }
-  std::vector<float> heatMap(const float* a, const float* b, int width, int height,
-                             float fullScale, std::string& error) const override {
+  std::vector<float> heatMap(const float* a, const float* b, int width, int height, float fullScale,
+                             std::string& error) const override {
     return oiio::heatMap(a, b, width, height, fullScale, error);
   }
 };

@@ -6,7 +6,7 @@ namespace lucent {
 
 namespace {
 
-constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
+constexpr double kEpsilon = 1.0e-10;      // POV-Ray's EPSILON
 constexpr double kXFactor = 0.5;          // each triangle split in half for the grid
 constexpr double kZFactor = 0.866025404;  // √3/2 as POV-Ray writes it: a triangle's height
 
@@ -55,10 +55,8 @@ int hexagonIndex(const Vec3& point) {
       const double zl = zs - zm;
       if ((xm + zm) % 2 == 1) xl = 1.0 - xl;
       if (xl == 0.0) xl = 0.0001;  // POV-Ray's guard against dividing by zero
-      if (zl / xl < 1.0)
-        value = (zm == 0 || zm == 3) ? 0 : (zm == 2 || zm == 5) ? 1 : 2;
-      else
-        value = (zm == 0 || zm == 3) ? 2 : (zm == 2 || zm == 5) ? 0 : 1;
+      if (zl / xl < 1.0) value = (zm == 0 || zm == 3) ? 0 : (zm == 2 || zm == 5) ? 1 : 2;
+      else value = (zm == 0 || zm == 3) ? 2 : (zm == 2 || zm == 5) ? 0 : 1;
       break;
     }
     default:

@@ -79,8 +79,8 @@ double crackleValue(const Vec3& p, const CrackleParams& crackle, int generator) 
   const CubeTable& cubes = cubeTable();
 
   auto distance = [&](int i) {
-    const Vec3 c = cellPoint(fx + cubes.offset[i][0], fy + cubes.offset[i][1],
-                             fz + cubes.offset[i][2]);
+    const Vec3 c =
+        cellPoint(fx + cubes.offset[i][0], fy + cubes.offset[i][1], fz + cubes.offset[i][2]);
     const Vec3 d(c.x - p.x, c.y - p.y, c.z - p.z);
     if (square) return d.x * d.x + d.y * d.y + d.z * d.z;
     if (unity) return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);

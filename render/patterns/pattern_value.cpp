@@ -114,16 +114,13 @@ double leopard(const Vec3& p) {
 
 double wrinkles(const Vec3& p, int generator) {
   double lambda = 2.0, omega = 0.5, value;
-  if (generator > 1)
-    value = std::min(std::max(noise(p, generator) * 2.0 - 0.5, 0.0), 1.0);
-  else
-    value = noise(p, generator);
+  if (generator > 1) value = std::min(std::max(noise(p, generator) * 2.0 - 0.5, 0.0), 1.0);
+  else value = noise(p, generator);
   for (int i = 1; i < 10; ++i) {
     const Vec3 q(p.x * lambda, p.y * lambda, p.z * lambda);
     if (generator > 1)
       value += omega * std::min(std::max(noise(q, generator) * 2.0 - 0.5, 0.0), 1.0);
-    else
-      value += omega * noise(q, generator);
+    else value += omega * noise(q, generator);
     lambda *= 2.0;
     omega *= 0.5;
   }
@@ -140,24 +137,40 @@ double dents(const Vec3& p, int generator) {
 double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
   const int gen = spec.noiseGenerator;
   switch (spec.type) {
-    case PatternType::gradient: return gradient(p, spec.axis);
-    case PatternType::onion: return onion(p);
-    case PatternType::radial: return radial(p);
-    case PatternType::spiral1: return spiral1(p, spec);
-    case PatternType::spiral2: return spiral2(p, spec);
-    case PatternType::wood: return wood(p, spec.placement);
-    case PatternType::marble: return marble(p, spec);
-    case PatternType::agate: return agate(p, spec);
-    case PatternType::granite: return granite(p, gen);
+    case PatternType::gradient:
+      return gradient(p, spec.axis);
+    case PatternType::onion:
+      return onion(p);
+    case PatternType::radial:
+      return radial(p);
+    case PatternType::spiral1:
+      return spiral1(p, spec);
+    case PatternType::spiral2:
+      return spiral2(p, spec);
+    case PatternType::wood:
+      return wood(p, spec.placement);
+    case PatternType::marble:
+      return marble(p, spec);
+    case PatternType::agate:
+      return agate(p, spec);
+    case PatternType::granite:
+      return granite(p, gen);
     case PatternType::bozo:
     case PatternType::spotted:
-    case PatternType::bumps: return noise(p, gen);
-    case PatternType::leopard: return leopard(p);
-    case PatternType::crackle: return crackleValue(p, spec.crackle, gen);
-    case PatternType::wrinkles: return wrinkles(p, gen);
-    case PatternType::dents: return dents(p, gen);
-    case PatternType::ripples: return ripplesValue(p, spec.frequency, spec.phase);
-    case PatternType::waves: return wavesValue(p, spec.frequency, spec.phase);
+    case PatternType::bumps:
+      return noise(p, gen);
+    case PatternType::leopard:
+      return leopard(p);
+    case PatternType::crackle:
+      return crackleValue(p, spec.crackle, gen);
+    case PatternType::wrinkles:
+      return wrinkles(p, gen);
+    case PatternType::dents:
+      return dents(p, gen);
+    case PatternType::ripples:
+      return ripplesValue(p, spec.frequency, spec.phase);
+    case PatternType::waves:
+      return wavesValue(p, spec.frequency, spec.phase);
   }
   return 0.0;
 }

@@ -20,17 +20,13 @@ double turbulence(const Vec3& p, const PatternPlacement& placement, int generato
   const int n = octaves(placement);
   const double lam = lambda(placement), om = omega(placement);
   double value;
-  if (generator > 1)
-    value = std::min(std::max(2.0 * noise(p, generator) - 0.5, 0.0), 1.0);
-  else
-    value = noise(p, generator);
+  if (generator > 1) value = std::min(std::max(2.0 * noise(p, generator) - 0.5, 0.0), 1.0);
+  else value = noise(p, generator);
   double l = lam, o = om;
   for (int i = 2; i <= n; ++i) {
     const Vec3 q(p.x * l, p.y * l, p.z * l);
-    if (generator > 1)
-      value += o * (2.0 * noise(q, generator) - 0.5);
-    else
-      value += o * noise(q, generator);
+    if (generator > 1) value += o * (2.0 * noise(q, generator) - 0.5);
+    else value += o * noise(q, generator);
     if (i < n) {
       l *= lam;
       o *= om;

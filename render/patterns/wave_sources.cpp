@@ -72,8 +72,8 @@ namespace {
 
 // Ripples and waves bend the normal alike; waves scale each source by its own frequency
 // (multiplying and dividing by 1 for ripples leaves POV-Ray's values bit for bit).
-Vec3 bendByWaveSources(const Vec3& normal, const Vec3& p, double frequency, double phase, double amount,
-                       bool perSourceFrequency) {
+Vec3 bendByWaveSources(const Vec3& normal, const Vec3& p, double frequency, double phase,
+                       double amount, bool perSourceFrequency) {
   const WaveSources& w = waveSources();
   const double f = single(frequency), ph = single(phase);
   Vec3 n = normal;
@@ -96,8 +96,7 @@ Vec3 ripplesNormal(const Vec3& normal, const Vec3& p, double frequency, double p
   return bendByWaveSources(normal, p, frequency, phase, amount, false);
 }
 
-Vec3 wavesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase,
-                 double amount) {
+Vec3 wavesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase, double amount) {
   return bendByWaveSources(normal, p, frequency, phase, amount, true);
 }
 

@@ -29,7 +29,6 @@ double wavesValue(const Vec3& p, double frequency, double phase);
 // by its wave's value times `amount` over ten (the sum is not normalised).
 Vec3 ripplesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase,
                    double amount);
-Vec3 wavesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase,
-                 double amount);
+Vec3 wavesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase, double amount);
 
 }  // namespace lucent

@@ -20,15 +20,18 @@ void readComponent(BlobSpec& s, AttributeInput& c) {
     return;
   }
   BlobComponent comp;
-  comp.kind = c.choice("type", 0, kComponentTypes) == 1 ? BlobComponent::Cylinder : BlobComponent::Sphere;
+  comp.kind =
+      c.choice("type", 0, kComponentTypes) == 1 ? BlobComponent::Cylinder : BlobComponent::Sphere;
   if (!c.has("radius")) c.error("<component> needs a 'radius' (a number > 0)");
   comp.radius = c.number("radius", 1.0, NumberRule::positive());
   comp.strength = c.number("strength", 1.0, NumberRule::any());
   bool sphere = comp.kind == BlobComponent::Sphere;
-  for (const char* a : sphere ? std::vector<const char*>{"base", "cap"} : std::vector<const char*>{"center"})
+  for (const char* a :
+       sphere ? std::vector<const char*>{"base", "cap"} : std::vector<const char*>{"center"})
     if (c.has(a))
-      c.attrError(a, sphere ? "a sphere component has a 'center'; 'base' and 'cap' belong to a cylinder"
-                            : "a cylinder component has 'base' and 'cap'; 'center' belongs to a sphere");
+      c.attrError(
+          a, sphere ? "a sphere component has a 'center'; 'base' and 'cap' belong to a cylinder"
+                    : "a cylinder component has 'base' and 'cap'; 'center' belongs to a sphere");
   if (sphere) {
     comp.a = c.vector("center", Vec3(0.0));
   } else {
@@ -58,26 +61,32 @@ ShapeEntry<BlobSpec> shapeEntry<BlobSpec>() {
         out.line("threshold " + out.number(s.threshold));
         for (const BlobComponent& c : s.components) {
           if (c.kind == BlobComponent::Sphere)
-            out.line(fmt::format("sphere {{ {}, {}, strength {} }}", out.vector(c.a), out.number(c.radius),
-                                 out.number(c.strength)));
-          else
-            out.line(fmt::format("cylinder {{ {}, {}, {}, strength {} }}", out.vector(c.a), out.vector(c.b),
+            out.line(fmt::format("sphere {{ {}, {}, strength {} }}", out.vector(c.a),
                                  out.number(c.radius), out.number(c.strength)));
+          else
+            out.line(fmt::format("cylinder {{ {}, {}, {}, strength {} }}", out.vector(c.a),
+                                 out.vector(c.b), out.number(c.radius), out.number(c.strength)));
         }
       });
-  e.doc = "POV-Ray's blob: the solid where the summed field of its <component> children exceeds the threshold.";
+  e.doc =
+      "POV-Ray's blob: the solid where the summed field of its <component> children exceeds the "
+      "threshold.";
   e.fields = {numberField("threshold", &BlobSpec::threshold, NumberRule::positive())
                   .doc("The field value at the surface; inside, the field is above it.")};
-  e.children = {{"component",
-                 "One field component: strength·(1 − (r/radius)²)² within its radius, r the distance to a sphere's "
-                 "centre or to a cylinder's segment from base to cap.",
-                 {childAttribute("type", AttrType::Choice, "", "sphere or cylinder.", true, kComponentTypes),
-                  childAttribute("center", AttrType::Vector, "0 0 0", "A sphere's centre."),
-                  childAttribute("base", AttrType::Vector, "0 0 0", "A cylinder's first end."),
-                  childAttribute("cap", AttrType::Vector, "0 1 0", "A cylinder's second end."),
-                  childAttribute("radius", AttrType::Number, "", "Where the component's field ends (> 0).", true),
-                  childAttribute("strength", AttrType::Number, "1", "The field at the centre or axis; may be negative.")},
-                 true}};
+  e.children = {
+      {"component",
+       "One field component: strength·(1 − (r/radius)²)² within its radius, r the distance to a "
+       "sphere's "
+       "centre or to a cylinder's segment from base to cap.",
+       {childAttribute("type", AttrType::Choice, "", "sphere or cylinder.", true, kComponentTypes),
+        childAttribute("center", AttrType::Vector, "0 0 0", "A sphere's centre."),
+        childAttribute("base", AttrType::Vector, "0 0 0", "A cylinder's first end."),
+        childAttribute("cap", AttrType::Vector, "0 1 0", "A cylinder's second end."),
+        childAttribute("radius", AttrType::Number, "", "Where the component's field ends (> 0).",
+                       true),
+        childAttribute("strength", AttrType::Number, "1",
+                       "The field at the centre or axis; may be negative.")},
+       true}};
   e.finish = [](BlobSpec& s, AttributeInput& in) {
     in.forEachChild("component", [&](AttributeInput& c) { readComponent(s, c); });
     if (s.components.empty() && !in.failed())
@@ -88,10 +97,13 @@ ShapeEntry<BlobSpec> shapeEntry<BlobSpec>() {
     return std::vector<std::pair<std::string, BlobSpec>>{
         {"single sphere blob", {1.0, {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.0, 2.0}}}},
         {"two merging spheres blob",
-         {0.6, {{C::Sphere, Vec3(-0.5, 0, 0), Vec3(0.0), 1.0, 1.0}, {C::Sphere, Vec3(0.5, 0, 0), Vec3(0.0), 1.0, 1.0}}}},
+         {0.6,
+          {{C::Sphere, Vec3(-0.5, 0, 0), Vec3(0.0), 1.0, 1.0},
+           {C::Sphere, Vec3(0.5, 0, 0), Vec3(0.0), 1.0, 1.0}}}},
         {"blob with a negative sphere",
          {0.5,
-          {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.2, 2.0}, {C::Sphere, Vec3(0.0, 0.7, 0.0), Vec3(0.0), 0.6, -3.0}}}}};
+          {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.2, 2.0},
+           {C::Sphere, Vec3(0.0, 0.7, 0.0), Vec3(0.0), 0.6, -3.0}}}}};
   };
   return e;
 }

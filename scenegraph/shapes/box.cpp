@@ -61,7 +61,9 @@ ShapeEntry<BoxSpec> shapeEntry<BoxSpec>() {
         out.line(fmt::format("{}, {}", out.vector(s.min), out.vector(s.max)));
       });
   e.doc = "An axis-aligned box from min to max (solid).";
-  e.fields = {vectorField("min", &BoxSpec::min).doc("Minimum corner."), vectorField("max", &BoxSpec::max).doc("Maximum corner: each coordinate must be above min's.")};
+  e.fields = {vectorField("min", &BoxSpec::min).doc("Minimum corner."),
+              vectorField("max", &BoxSpec::max)
+                  .doc("Maximum corner: each coordinate must be above min's.")};
   e.finish = [](BoxSpec& b, AttributeInput& in) {
     for (int k = 0; k < 3; ++k)
       if (!(b.min[k] < b.max[k])) {
@@ -73,8 +75,9 @@ ShapeEntry<BoxSpec> shapeEntry<BoxSpec>() {
   };
   e.povImageFaces = imageMapFaces;
   e.samples = [] {
-    return std::vector<std::pair<std::string, BoxSpec>>{{"box", {Vec3(-1, -0.5, 0), Vec3(1, 2, 3)}},
-                                                        {"thin box", {Vec3(-1, -1e-3, -1), Vec3(1, 1e-3, 1)}}};
+    return std::vector<std::pair<std::string, BoxSpec>>{
+        {"box", {Vec3(-1, -0.5, 0), Vec3(1, 2, 3)}},
+        {"thin box", {Vec3(-1, -1e-3, -1), Vec3(1, 1e-3, 1)}}};
   };
   return e;
 }

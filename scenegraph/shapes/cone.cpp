@@ -23,13 +23,16 @@ ShapeEntry<ConeSpec> shapeEntry<ConeSpec>() {
       });
   e.doc = "A cone or truncated cone from base to cap (solid unless open).";
   e.fields = {vectorField("base", &ConeSpec::base).doc("Centre of the base."),
-              numberField("base-radius", &ConeSpec::baseRadius, NumberRule::nonNegative()).doc("Radius at base."),
+              numberField("base-radius", &ConeSpec::baseRadius, NumberRule::nonNegative())
+                  .doc("Radius at base."),
               vectorField("cap", &ConeSpec::cap).doc("Centre of the other end."),
-              numberField("cap-radius", &ConeSpec::capRadius, NumberRule::nonNegative()).doc("Radius at cap; 0 gives a pointed cone."),
+              numberField("cap-radius", &ConeSpec::capRadius, NumberRule::nonNegative())
+                  .doc("Radius at cap; 0 gives a pointed cone."),
               booleanField("open", &ConeSpec::open).doc("true: no end caps (then not solid).")};
   e.finish = [](ConeSpec& c, AttributeInput& in) {
     if (c.base == c.cap)
-      in.attrError(in.has("cap") ? "cap" : "base", "'base' and 'cap' must differ (the axis would have no length)");
+      in.attrError(in.has("cap") ? "cap" : "base",
+                   "'base' and 'cap' must differ (the axis would have no length)");
     if (c.baseRadius == 0.0 && c.capRadius == 0.0)
       in.error("<cone>: 'base-radius' and 'cap-radius' are both 0, so the cone has no surface");
   };

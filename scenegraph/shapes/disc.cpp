@@ -13,7 +13,9 @@ template <>
 ShapeEntry<DiscSpec> shapeEntry<DiscSpec>() {
   ShapeEntry<DiscSpec> e(
       "disc", "discs",
-      [](const DiscSpec& s) { return std::make_shared<Disc>(s.center, s.normal, s.radius, s.innerRadius); },
+      [](const DiscSpec& s) {
+        return std::make_shared<Disc>(s.center, s.normal, s.radius, s.innerRadius);
+      },
       [](const DiscSpec& s, PovShapeOut& out) {
         out.open("disc");
         std::string hole = s.innerRadius > 0.0 ? ", " + out.number(s.innerRadius) : "";
@@ -21,13 +23,16 @@ ShapeEntry<DiscSpec> shapeEntry<DiscSpec>() {
                              out.number(s.radius), hole));
       });
   e.doc = "A flat disc or annulus (not solid).";
-  e.fields = {vectorField("center", &DiscSpec::center).doc("Centre."), directionField("normal", &DiscSpec::normal).doc("Normal (normalised on load)."),
+  e.fields = {vectorField("center", &DiscSpec::center).doc("Centre."),
+              directionField("normal", &DiscSpec::normal).doc("Normal (normalised on load)."),
               numberField("radius", &DiscSpec::radius, NumberRule::positive()).doc("Outer radius."),
-              numberField("inner-radius", &DiscSpec::innerRadius, NumberRule::nonNegative()).doc("Radius of the hole (below radius).")};
+              numberField("inner-radius", &DiscSpec::innerRadius, NumberRule::nonNegative())
+                  .doc("Radius of the hole (below radius).")};
   e.finish = [](DiscSpec& d, AttributeInput& in) {
     if (d.innerRadius >= d.radius)
-      in.attrError("inner-radius", fmt::format("'inner-radius' ({}) must be smaller than 'radius' ({})",
-                                               d.innerRadius, d.radius));
+      in.attrError("inner-radius",
+                   fmt::format("'inner-radius' ({}) must be smaller than 'radius' ({})",
+                               d.innerRadius, d.radius));
   };
   e.notSolid = [](const DiscSpec&) { return std::string("a disc encloses no volume"); };
   // (u, v) = ((p − c)·t1, (p − c)·t2) (primitives/disc.cpp): a planar image_map.

@@ -19,7 +19,8 @@ namespace {
 // POV-Ray's keyword for the file's format, "" for one it does not read as a height field.
 std::string povFormat(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (ext == ".png") return "png";
   if (ext == ".pgm") return "pgm";
   if (ext == ".ppm") return "ppm";
@@ -47,19 +48,26 @@ void readHeightField(HeightFieldSpec& s, AttributeInput& in) {
   if (!src) return;
   s.src = *src;
   if (povFormat(*src).empty()) {
-    in.attrError("src", "'" + *src + "' is not a PNG, PGM, PPM, TGA, JPEG or TIFF file, the formats POV-Ray reads as height fields");
+    in.attrError("src", "'" + *src +
+                            "' is not a PNG, PGM, PPM, TGA, JPEG or TIFF file, the formats POV-Ray "
+                            "reads as height fields");
     return;
   }
   s.map = in.heightMapFile("src", s.path);
   if (!s.map) return;
   const uint16_t top = *std::max_element(s.map->values.begin(), s.map->values.end());
   if (top == 0) {
-    in.attrError("src", "'" + *src + "' is black everywhere (every height is 0): there is no field above the water level");
+    in.attrError(
+        "src",
+        "'" + *src +
+            "' is black everywhere (every height is 0): there is no field above the water level");
     return;
   }
   if (!(top / 65536.0 > s.waterLevel))
-    in.attrError("water-level", fmt::format("{} is at or above the image's highest point ({}): nothing would be left",
-                                            attributeText(s.waterLevel), attributeText(top / 65536.0)));
+    in.attrError(
+        "water-level",
+        fmt::format("{} is at or above the image's highest point ({}): nothing would be left",
+                    attributeText(s.waterLevel), attributeText(top / 65536.0)));
 }
 
 std::shared_ptr<const Shape> buildHeightField(const HeightFieldSpec& s) {
@@ -89,12 +97,20 @@ std::shared_ptr<const HeightMap> sampleMap(int w, int d, uint16_t (*f)(int, int)
 
 template <>
 ShapeEntry<HeightFieldSpec> shapeEntry<HeightFieldSpec>() {
-  ShapeEntry<HeightFieldSpec> e("height-field", "height fields", buildHeightField, writeHeightField);
-  e.doc = "POV-Ray's height_field: an image's brightness as heights over x, z in [0, 1], closed by walls and a floor at the water level (solid).";
+  ShapeEntry<HeightFieldSpec> e("height-field", "height fields", buildHeightField,
+                                writeHeightField);
+  e.doc =
+      "POV-Ray's height_field: an image's brightness as heights over x, z in [0, 1], closed by "
+      "walls and a floor at the water level (solid).";
   e.fields = {readByEntry<HeightFieldSpec>("src", AttrType::File)
-                  .doc("A grey or colour PNG, PGM, PPM, TGA, JPEG or TIFF image, relative to the scene file, read as POV-Ray reads it: grey values are heights; in an 8-bit colour image red is the high byte and green the low byte, in a 16-bit one the brightness is the height. The image's top row is at z = 1."),
-              booleanField("smooth", &HeightFieldSpec::smooth).doc("Interpolate POV-Ray's vertex normals over each cell."),
-              numberField("water-level", &HeightFieldSpec::waterLevel, NumberRule::between(0.0, 1.0, "a number from 0 to 1", false, true))
+                  .doc("A grey or colour PNG, PGM, PPM, TGA, JPEG or TIFF image, relative to the "
+                       "scene file, read as POV-Ray reads it: grey values are heights; in an 8-bit "
+                       "colour image red is the high byte and green the low byte, in a 16-bit one "
+                       "the brightness is the height. The image's top row is at z = 1."),
+              booleanField("smooth", &HeightFieldSpec::smooth)
+                  .doc("Interpolate POV-Ray's vertex normals over each cell."),
+              numberField("water-level", &HeightFieldSpec::waterLevel,
+                          NumberRule::between(0.0, 1.0, "a number from 0 to 1", false, true))
                   .doc("The height below which the field is removed (its floor).")};
   e.finish = readHeightField;
   e.triangles = [](const HeightFieldSpec& s) {
@@ -103,17 +119,23 @@ ShapeEntry<HeightFieldSpec> shapeEntry<HeightFieldSpec>() {
   e.samples = [] {
     HeightFieldSpec ridge;
     ridge.src = ridge.path = "ridge.png";  // not read: the samples hold their grids
-    ridge.map = sampleMap(3, 3, [](int x, int z) -> uint16_t { return x == 1 ? 40000 : (x == 2 && z == 2 ? 60000 : 10000); });
+    ridge.map = sampleMap(3, 3, [](int x, int z) -> uint16_t {
+      return x == 1 ? 40000 : (x == 2 && z == 2 ? 60000 : 10000);
+    });
     HeightFieldSpec varied;
     varied.src = varied.path = "varied.png";
-    varied.map = sampleMap(5, 4, [](int x, int z) -> uint16_t { return static_cast<uint16_t>(((x * 7 + z * 13) % 11) * 5000 + 3000); });
+    varied.map = sampleMap(5, 4, [](int x, int z) -> uint16_t {
+      return static_cast<uint16_t>(((x * 7 + z * 13) % 11) * 5000 + 3000);
+    });
     HeightFieldSpec smooth = varied;
     smooth.smooth = true;
     HeightFieldSpec water = varied;
     water.waterLevel = 0.4;
     return std::vector<std::pair<std::string, HeightFieldSpec>>{
-        {"3 x 3 height field", ridge}, {"5 x 4 height field", varied},
-        {"smooth height field", smooth}, {"height field with a water level", water}};
+        {"3 x 3 height field", ridge},
+        {"5 x 4 height field", varied},
+        {"smooth height field", smooth},
+        {"height field with a water level", water}};
   };
   return e;
 }

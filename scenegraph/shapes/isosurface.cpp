@@ -27,7 +27,8 @@ class SampleField final : public ScalarField {
   double (*f_)(const Vec3&);
 };
 
-IsosurfaceSpec sample(const char* text, double (*f)(const Vec3&), IsosurfaceContainer c, bool open = false) {
+IsosurfaceSpec sample(const char* text, double (*f)(const Vec3&), IsosurfaceContainer c,
+                      bool open = false) {
   IsosurfaceSpec s;
   s.function = text;
   s.field = std::make_shared<SampleField>(f);
@@ -65,9 +66,11 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
         out.line("function { " + *body + " }");
         const IsosurfaceContainer& c = s.container;
         if (c.kind == IsosurfaceContainer::Box)
-          out.line(fmt::format("contained_by {{ box {{ {}, {} }} }}", out.vector(c.min), out.vector(c.max)));
+          out.line(fmt::format("contained_by {{ box {{ {}, {} }} }}", out.vector(c.min),
+                               out.vector(c.max)));
         else
-          out.line(fmt::format("contained_by {{ sphere {{ {}, {} }} }}", out.vector(c.center), out.number(c.radius)));
+          out.line(fmt::format("contained_by {{ sphere {{ {}, {} }} }}", out.vector(c.center),
+                               out.number(c.radius)));
         out.line("threshold " + out.number(s.threshold));
         out.line("max_gradient " + out.number(s.maxGradient));
         out.line("accuracy " + out.number(s.accuracy));
@@ -77,22 +80,32 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
         out.line("all_intersections");
         if (s.open) out.line("open");
       });
-  e.doc = "POV-Ray's isosurface: the solid where a function of x, y, z is below the threshold, within a "
-          "box or sphere container (solid unless open).";
+  e.doc =
+      "POV-Ray's isosurface: the solid where a function of x, y, z is below the threshold, within "
+      "a "
+      "box or sphere container (solid unless open).";
   Field<IsosurfaceSpec> function = readByEntry<IsosurfaceSpec>("function", AttrType::Text);
   function.info.required = true;
   e.fields = {
-      std::move(function).doc("An expression in x, y and z (the syntax of ${...} expressions, without ${}); other "
-                              "names are parameters, taken as numbers where the element is read."),
-      numberField("threshold", &IsosurfaceSpec::threshold).doc("The function's value on the surface; below it is inside."),
+      std::move(function).doc(
+          "An expression in x, y and z (the syntax of ${...} expressions, without ${}); other "
+          "names are parameters, taken as numbers where the element is read."),
+      numberField("threshold", &IsosurfaceSpec::threshold)
+          .doc("The function's value on the surface; below it is inside."),
       readByEntry<IsosurfaceSpec>("container", AttrType::Choice, "box", kContainers)
-          .doc("The region the surface is sought in: a box (min, max) or a sphere (center, radius)."),
-      readByEntry<IsosurfaceSpec>("min", AttrType::Vector, "-1 -1 -1").doc("A box container's lowest corner."),
-      readByEntry<IsosurfaceSpec>("max", AttrType::Vector, "1 1 1").doc("A box container's highest corner."),
-      readByEntry<IsosurfaceSpec>("center", AttrType::Vector, "0 0 0").doc("A sphere container's centre."),
-      readByEntry<IsosurfaceSpec>("radius", AttrType::Number, "1").doc("A sphere container's radius (> 0)."),
+          .doc("The region the surface is sought in: a box (min, max) or a sphere (center, "
+               "radius)."),
+      readByEntry<IsosurfaceSpec>("min", AttrType::Vector, "-1 -1 -1")
+          .doc("A box container's lowest corner."),
+      readByEntry<IsosurfaceSpec>("max", AttrType::Vector, "1 1 1")
+          .doc("A box container's highest corner."),
+      readByEntry<IsosurfaceSpec>("center", AttrType::Vector, "0 0 0")
+          .doc("A sphere container's centre."),
+      readByEntry<IsosurfaceSpec>("radius", AttrType::Number, "1")
+          .doc("A sphere container's radius (> 0)."),
       numberField("max-gradient", &IsosurfaceSpec::maxGradient, NumberRule::positive())
-          .doc("A bound on the function's gradient length, which the root search steps by; a render that sees a "
+          .doc("A bound on the function's gradient length, which the root search steps by; a "
+               "render that sees a "
                "larger one warns with the largest it saw."),
       numberField("accuracy", &IsosurfaceSpec::accuracy, NumberRule::positive())
           .doc("How finely the ray is divided (object-space length) when crossings are sought."),
@@ -108,10 +121,14 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
     }
     const bool sphere = in.choice("container", 0, kContainers) == 1;
     s.container.kind = sphere ? IsosurfaceContainer::Sphere : IsosurfaceContainer::Box;
-    for (const char* a : sphere ? std::vector<const char*>{"min", "max"} : std::vector<const char*>{"center", "radius"})
+    for (const char* a : sphere ? std::vector<const char*>{"min", "max"}
+                                : std::vector<const char*>{"center", "radius"})
       if (in.has(a))
-        in.attrError(a, sphere ? "a sphere container has 'center' and 'radius'; 'min' and 'max' belong to a box"
-                               : "a box container has 'min' and 'max'; 'center' and 'radius' belong to container=\"sphere\"");
+        in.attrError(
+            a, sphere
+                   ? "a sphere container has 'center' and 'radius'; 'min' and 'max' belong to a box"
+                   : "a box container has 'min' and 'max'; 'center' and 'radius' belong to "
+                     "container=\"sphere\"");
     if (sphere) {
       s.container.center = in.vector("center", Vec3(0.0));
       s.container.radius = in.number("radius", 1.0, NumberRule::positive());
@@ -120,25 +137,36 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
       s.container.max = in.vector("max", Vec3(1.0));
       const Vec3 &lo = s.container.min, &hi = s.container.max;
       if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
-        in.attrError(in.has("max") ? "max" : "min",
-                     fmt::format("the container box needs min < max in x, y and z (min {} {} {}, max {} {} {})", lo.x,
-                                 lo.y, lo.z, hi.x, hi.y, hi.z));
+        in.attrError(
+            in.has("max") ? "max" : "min",
+            fmt::format(
+                "the container box needs min < max in x, y and z (min {} {} {}, max {} {} {})",
+                lo.x, lo.y, lo.z, hi.x, hi.y, hi.z));
     }
   };
-  e.notSolid = [](const IsosurfaceSpec& s) { return s.open ? std::string("it is open") : std::string(); };
+  e.notSolid = [](const IsosurfaceSpec& s) {
+    return s.open ? std::string("it is open") : std::string();
+  };
   e.samples = [] {
     IsosurfaceContainer box, ball;
     ball.kind = IsosurfaceContainer::Sphere;
     ball.radius = 1.5;
     return std::vector<std::pair<std::string, IsosurfaceSpec>>{
         {"sphere isosurface in a box",
-         sample("sqrt(x*x + y*y + z*z) - 0.8", [](const Vec3& p) { return glm::length(p) - 0.8; }, box)},
+         sample(
+             "sqrt(x*x + y*y + z*z) - 0.8", [](const Vec3& p) { return glm::length(p) - 0.8; },
+             box)},
         {"torus isosurface in a sphere",
-         sample("sqrt((sqrt(x*x + z*z) - 0.8)^2 + y*y) - 0.3",
-                [](const Vec3& p) { return std::hypot(std::hypot(p.x, p.z) - 0.8, p.y) - 0.3; }, ball)},
-        {"plane isosurface cut by its box", sample("y", [](const Vec3& p) { return p.y; }, box)},
+         sample(
+             "sqrt((sqrt(x*x + z*z) - 0.8)^2 + y*y) - 0.3",
+             [](const Vec3& p) { return std::hypot(std::hypot(p.x, p.z) - 0.8, p.y) - 0.3; },
+             ball)},
+        {"plane isosurface cut by its box", sample(
+                                                "y", [](const Vec3& p) { return p.y; }, box)},
         {"open sphere isosurface",
-         sample("sqrt(x*x + y*y + z*z) - 1.2", [](const Vec3& p) { return glm::length(p) - 1.2; }, box, true)}};
+         sample(
+             "sqrt(x*x + y*y + z*z) - 1.2", [](const Vec3& p) { return glm::length(p) - 1.2; }, box,
+             true)}};
   };
   return e;
 }

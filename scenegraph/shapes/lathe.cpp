@@ -11,7 +11,8 @@ namespace lucent {
 namespace {
 
 const std::vector<std::string_view> kSplineNames = {"linear", "quadratic", "cubic", "bezier"};
-const char* const kPovSpline[] = {"linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline"};
+const char* const kPovSpline[] = {"linear_spline", "quadratic_spline", "cubic_spline",
+                                  "bezier_spline"};
 
 }  // namespace
 
@@ -24,18 +25,23 @@ ShapeEntry<LatheSpec> shapeEntry<LatheSpec>() {
         out.open("lathe");
         out.line(kPovSpline[static_cast<int>(s.spline)]);
         std::string list = fmt::format("{}", s.points.size());
-        for (const Vec2& p : s.points) list += fmt::format(", <{}, {}>", out.number(p.x), out.number(p.y));
+        for (const Vec2& p : s.points)
+          list += fmt::format(", <{}, {}>", out.number(p.x), out.number(p.y));
         out.line(list);
         // sturm: POV-Ray's exact root isolation for the spline pieces' polynomials.
         if (s.spline != LatheSpline::Linear) out.line("sturm");
       });
   e.doc = "A curve of x y points (x >= 0) turned about the y axis (solid).";
-  Field<LatheSpec> points = readByEntry<LatheSpec>("points", AttrType::NumberList, "", {}, 2)
-                                .doc("The curve's points as x y pairs, x >= 0: linear 2 or more, quadratic 3 or more (the first steers), cubic 4 or more (the first and last steer), bezier groups of 4.");
+  Field<LatheSpec> points =
+      readByEntry<LatheSpec>("points", AttrType::NumberList, "", {}, 2)
+          .doc(
+              "The curve's points as x y pairs, x >= 0: linear 2 or more, quadratic 3 or more (the "
+              "first steers), cubic 4 or more (the first and last steer), bezier groups of 4.");
   points.info.required = true;
   e.fields = {std::move(points),
               readByEntry<LatheSpec>("spline", AttrType::Choice, "linear", kSplineNames)
-                  .doc("linear (a polygon) | quadratic | cubic (Catmull-Rom) | bezier (groups of 4 points), as POV-Ray's.")};
+                  .doc("linear (a polygon) | quadratic | cubic (Catmull-Rom) | bezier (groups of 4 "
+                       "points), as POV-Ray's.")};
   e.finish = [](LatheSpec& s, AttributeInput& in) {
     s.spline = static_cast<LatheSpline>(in.choice("spline", 0, kSplineNames));
     if (in.failed()) return;
@@ -53,7 +59,8 @@ ShapeEntry<LatheSpec> shapeEntry<LatheSpec>() {
     const size_t want = static_cast<size_t>(Lathe::minPoints(s.spline));
     const char* name = kSplineNames[static_cast<size_t>(s.spline)].data();
     if (n < want) {
-      in.attrError("points", fmt::format("a {} lathe needs at least {} points, not {}", name, want, n));
+      in.attrError("points",
+                   fmt::format("a {} lathe needs at least {} points, not {}", name, want, n));
       return;
     }
     if (s.spline == LatheSpline::Bezier && n % 4 != 0) {
@@ -83,10 +90,14 @@ ShapeEntry<LatheSpec> shapeEntry<LatheSpec>() {
     using V = std::vector<Vec2>;
     return std::vector<std::pair<std::string, LatheSpec>>{
         {"linear lathe cylinder", {LatheSpline::Linear, V{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}},
-        {"linear lathe ring", {LatheSpline::Linear, V{{0.5, -0.5}, {1, -0.5}, {1, 0.5}, {0.5, 0.5}, {0.5, -0.5}}}},
+        {"linear lathe ring",
+         {LatheSpline::Linear, V{{0.5, -0.5}, {1, -0.5}, {1, 0.5}, {0.5, 0.5}, {0.5, -0.5}}}},
         {"open linear lathe cone", {LatheSpline::Linear, V{{0, 1}, {1, 0}}}},
-        {"quadratic lathe", {LatheSpline::Quadratic, V{{0, -1}, {0, -0.5}, {0.8, 0}, {0.5, 0.6}, {0, 1}}}},
-        {"cubic lathe vase", {LatheSpline::Cubic, V{{0, -0.2}, {0, 0}, {0.6, 0.1}, {0.9, 0.5}, {0.4, 1}, {0.6, 1.4}, {0, 1.5}, {0, 1.7}}}},
+        {"quadratic lathe",
+         {LatheSpline::Quadratic, V{{0, -1}, {0, -0.5}, {0.8, 0}, {0.5, 0.6}, {0, 1}}}},
+        {"cubic lathe vase",
+         {LatheSpline::Cubic,
+          V{{0, -0.2}, {0, 0}, {0.6, 0.1}, {0.9, 0.5}, {0.4, 1}, {0.6, 1.4}, {0, 1.5}, {0, 1.7}}}},
         {"bezier lathe", {LatheSpline::Bezier, V{{0, 0}, {1.2, 0}, {1.2, 1}, {0, 1}}}}};
   };
   return e;

@@ -24,10 +24,10 @@ void warnRepairs(AttributeInput& in, const MeshData& data, const std::string& wh
   const MeshData::Repairs& repairs = data.repairs;
   if (repairs.flippedFaces == 0) return;
   const bool one = repairs.flippedFaces == 1;
-  in.warning(fmt::format("{}: {} of {} {} {} flipped to agree with {} neighbours{}", what,
-                         repairs.flippedFaces, repairs.faces, repairs.onlyTriangles ? "triangles" : "faces",
-                         one ? "was" : "were", one ? "its" : "their",
-                         data.closed ? "; the mesh is closed and is used as a solid" : ""));
+  in.warning(fmt::format(
+      "{}: {} of {} {} {} flipped to agree with {} neighbours{}", what, repairs.flippedFaces,
+      repairs.faces, repairs.onlyTriangles ? "triangles" : "faces", one ? "was" : "were",
+      one ? "its" : "their", data.closed ? "; the mesh is closed and is used as a solid" : ""));
 }
 
 bool readIndices(AttributeInput& in, MeshData& data) {
@@ -38,8 +38,9 @@ bool readIndices(AttributeInput& in, MeshData& data) {
   auto idx = in.integers("indices");
   if (!idx) return false;
   if (idx->empty() || idx->size() % 3 != 0) {
-    in.attrError("indices", fmt::format("expected three vertex numbers per triangle (a multiple of 3), got {}",
-                                        idx->size()));
+    in.attrError("indices",
+                 fmt::format("expected three vertex numbers per triangle (a multiple of 3), got {}",
+                             idx->size()));
     return false;
   }
   const size_t n = data.positions.size();
@@ -49,8 +50,10 @@ bool readIndices(AttributeInput& in, MeshData& data) {
     for (int k = 0; k < 3; ++k) {
       long long v = (*idx)[i + k];
       if (v < 0 || static_cast<size_t>(v) >= n) {
-        in.attrError("indices", fmt::format("index {} (number {} of the list) is outside the {} vertices (0 to {})",
-                                            v, i + k + 1, n, n - 1));
+        in.attrError(
+            "indices",
+            fmt::format("index {} (number {} of the list) is outside the {} vertices (0 to {})", v,
+                        i + k + 1, n, n - 1));
         return false;
       }
       tri[k] = static_cast<uint32_t>(v);
@@ -65,7 +68,8 @@ bool readNormals(AttributeInput& in, MeshData& data) {
   if (!nl) return !in.has("normals");
   const size_t n = data.positions.size();
   if (nl->size() != 3 * n) {
-    in.attrError("normals", fmt::format("expected one normal per position ({} numbers), got {}", 3 * n, nl->size()));
+    in.attrError("normals", fmt::format("expected one normal per position ({} numbers), got {}",
+                                        3 * n, nl->size()));
     return false;
   }
   data.normals.reserve(n);
@@ -86,7 +90,8 @@ bool readUvs(AttributeInput& in, MeshData& data) {
   if (!uv) return !in.has("uvs");
   const size_t n = data.positions.size();
   if (uv->size() != 2 * n) {
-    in.attrError("uvs", fmt::format("expected one u v pair per position ({} numbers), got {}", 2 * n, uv->size()));
+    in.attrError("uvs", fmt::format("expected one u v pair per position ({} numbers), got {}",
+                                    2 * n, uv->size()));
     return false;
   }
   data.uvs.reserve(n);
@@ -98,11 +103,14 @@ std::shared_ptr<const MeshData> buildInline(AttributeInput& in) {
   auto p = in.numbers("positions");
   if (!p) return nullptr;
   if (p->size() % 3 != 0 || p->empty()) {
-    in.attrError("positions", fmt::format("expected x y z for each vertex (a multiple of 3 numbers), got {}", p->size()));
+    in.attrError(
+        "positions",
+        fmt::format("expected x y z for each vertex (a multiple of 3 numbers), got {}", p->size()));
     return nullptr;
   }
   auto data = std::make_shared<MeshData>();
-  for (size_t i = 0; i < p->size(); i += 3) data->positions.emplace_back((*p)[i], (*p)[i + 1], (*p)[i + 2]);
+  for (size_t i = 0; i < p->size(); i += 3)
+    data->positions.emplace_back((*p)[i], (*p)[i + 1], (*p)[i + 2]);
   bool ok = readIndices(in, *data);
   ok = readNormals(in, *data) && ok;
   ok = readUvs(in, *data) && ok;
@@ -124,17 +132,21 @@ void readMesh(MeshSpec& m, AttributeInput& in) {
     in.error("<mesh> takes either 'src' (a file) or inline 'positions' and 'indices', not both");
   } else if (hasSrc) {
     for (const char* a : {"indices", "normals", "uvs"})
-      if (in.has(a)) in.attrError(a, "only an inline mesh (with 'positions') takes this; the file holds its own");
+      if (in.has(a))
+        in.attrError(a,
+                     "only an inline mesh (with 'positions') takes this; the file holds its own");
     if (auto src = in.text("src")) {
       m.src = *src;
       bool firstRead = false;
       m.data = in.meshFile("src", &firstRead);
-      if (m.data && firstRead) warnRepairs(in, *m.data, "<mesh src=\"" + *src + "\">");  // once per file
+      if (m.data && firstRead)
+        warnRepairs(in, *m.data, "<mesh src=\"" + *src + "\">");  // once per file
     }
   } else if (hasInline) {
     m.data = buildInline(in);
   } else {
-    in.error("<mesh> needs 'src' (an OBJ, PLY, OFF or STL file) or inline 'positions' and 'indices'");
+    in.error(
+        "<mesh> needs 'src' (an OBJ, PLY, OFF or STL file) or inline 'positions' and 'indices'");
   }
   if (!m.data && !in.failed()) in.error("<mesh> holds no triangles");
 }
@@ -164,7 +176,8 @@ std::vector<std::pair<std::string, MeshSpec>> meshSamples() {
   oct->positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   oct->normals = oct->positions;
   for (const Vec3& p : oct->positions) oct->uvs.push_back({p.x, p.y});
-  oct->triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  oct->triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
   oct->closed = true;
   auto square = std::make_shared<MeshData>();
   square->positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
@@ -182,18 +195,34 @@ ShapeEntry<MeshSpec> shapeEntry<MeshSpec>() {
     out.open("object");
     out.line(out.declaredMesh(s));
   });
-  e.doc = "A triangle mesh from a file (src) or inline (positions, indices); solid if closed and consistently oriented.";
-  e.fields = {readByEntry<MeshSpec>("src", AttrType::File).doc("An OBJ, PLY, OFF or STL file, relative to the scene file. Either src or positions + indices."),
-              readByEntry<MeshSpec>("positions", AttrType::NumberList, "", {}, 3).doc("Inline mesh: vertex positions, three numbers each."),
-              readByEntry<MeshSpec>("indices", AttrType::IntegerList, "", {}, 3).doc("Inline mesh: triangles, three 0-based vertex indices each, counter-clockwise seen from outside."),
-              readByEntry<MeshSpec>("normals", AttrType::NumberList, "", {}, 3).doc("Inline mesh: one normal (three numbers) per position; normalised and interpolated like a triangle's vertex normals. Optional."),
-              readByEntry<MeshSpec>("uvs", AttrType::NumberList, "", {}, 2).doc("Inline mesh: one (u,v) pair per position, for image textures. Optional."),
-              readByEntry<MeshSpec>("smooth", AttrType::Choice, "auto", {"auto", "true", "false"}).doc("auto (use the file's or the inline normals if any) | true (compute vertex normals) | false (flat).")};
+  e.doc =
+      "A triangle mesh from a file (src) or inline (positions, indices); solid if closed and "
+      "consistently oriented.";
+  e.fields = {readByEntry<MeshSpec>("src", AttrType::File)
+                  .doc("An OBJ, PLY, OFF or STL file, relative to the scene file. Either src or "
+                       "positions + indices."),
+              readByEntry<MeshSpec>("positions", AttrType::NumberList, "", {}, 3)
+                  .doc("Inline mesh: vertex positions, three numbers each."),
+              readByEntry<MeshSpec>("indices", AttrType::IntegerList, "", {}, 3)
+                  .doc("Inline mesh: triangles, three 0-based vertex indices each, "
+                       "counter-clockwise seen from outside."),
+              readByEntry<MeshSpec>("normals", AttrType::NumberList, "", {}, 3)
+                  .doc("Inline mesh: one normal (three numbers) per position; normalised and "
+                       "interpolated like a triangle's vertex normals. Optional."),
+              readByEntry<MeshSpec>("uvs", AttrType::NumberList, "", {}, 2)
+                  .doc("Inline mesh: one (u,v) pair per position, for image textures. Optional."),
+              readByEntry<MeshSpec>("smooth", AttrType::Choice, "auto", {"auto", "true", "false"})
+                  .doc("auto (use the file's or the inline normals if any) | true (compute vertex "
+                       "normals) | false (flat).")};
   e.finish = readMesh;
   e.notSolid = [](const MeshSpec& s) {
-    return s.data && s.data->closed ? std::string() : std::string("the mesh is not closed and consistently oriented");
+    return s.data && s.data->closed
+               ? std::string()
+               : std::string("the mesh is not closed and consistently oriented");
   };
-  e.triangles = [](const MeshSpec& s) { return s.data ? static_cast<long long>(s.data->triangles.size()) : 0LL; };
+  e.triangles = [](const MeshSpec& s) {
+    return s.data ? static_cast<long long>(s.data->triangles.size()) : 0LL;
+  };
   // The mesh's own uv_vectors (uv_mapping), when it has one uv per position.
   e.povImageMapping = [](const MeshSpec& s) {
     ImageMapping m;

@@ -11,13 +11,17 @@ namespace lucent {
 template <>
 ShapeEntry<PlaneSpec> shapeEntry<PlaneSpec>() {
   ShapeEntry<PlaneSpec> e(
-      "plane", "planes", [](const PlaneSpec& s) { return std::make_shared<Plane>(s.normal, s.offset); },
+      "plane", "planes",
+      [](const PlaneSpec& s) { return std::make_shared<Plane>(s.normal, s.offset); },
       [](const PlaneSpec& s, PovShapeOut& out) {
         out.open("plane");  // the same convention: n·x = d, inside n·x < d
         out.line(fmt::format("{}, {}", out.vector(s.normal), out.number(s.offset)));
       });
   e.doc = "An infinite plane N·x = offset; the half-space N·x < offset is inside (solid).";
-  e.fields = {directionField("normal", &PlaneSpec::normal).doc("Normal N (normalised on load; outward: N·x < offset is inside)."), numberField("offset", &PlaneSpec::offset).doc("The plane is N·x = offset (distance from the origin along N).")};
+  e.fields = {directionField("normal", &PlaneSpec::normal)
+                  .doc("Normal N (normalised on load; outward: N·x < offset is inside)."),
+              numberField("offset", &PlaneSpec::offset)
+                  .doc("The plane is N·x = offset (distance from the origin along N).")};
   // (u, v) = (p·t1, p·t2) (primitives/plane.cpp): a planar image_map.
   e.povImageMapping = [](const PlaneSpec& s) {
     Vec3 t1, t2;
@@ -28,7 +32,8 @@ ShapeEntry<PlaneSpec> shapeEntry<PlaneSpec>() {
     return m;
   };
   e.samples = [] {
-    return std::vector<std::pair<std::string, PlaneSpec>>{{"plane", {glm::normalize(Vec3(1, 2, -0.5)), 0.3}}};
+    return std::vector<std::pair<std::string, PlaneSpec>>{
+        {"plane", {glm::normalize(Vec3(1, 2, -0.5)), 0.3}}};
   };
   return e;
 }

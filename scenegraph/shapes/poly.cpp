@@ -16,7 +16,8 @@ Field<PolySpec> required(Field<PolySpec> f) {
 }
 
 // The coefficients of the sample surfaces, in POV-Ray's order.
-std::vector<double> coefficientsOf(int order, std::initializer_list<std::pair<std::array<int, 3>, double>> terms) {
+std::vector<double> coefficientsOf(
+    int order, std::initializer_list<std::pair<std::array<int, 3>, double>> terms) {
   std::vector<double> c;
   for (int i = order; i >= 0; --i)
     for (int j = order - i; j >= 0; --j)
@@ -45,11 +46,14 @@ ShapeEntry<PolySpec> shapeEntry<PolySpec>() {
         out.line(fmt::format("{}, <{}>", s.order, list));
         out.line("sturm");
       });
-  e.doc = "The solid where a polynomial of degree 2, 3 or 4 in x, y and z is below 0 (solid; unbounded).";
-  e.fields = {required(readByEntry<PolySpec>("order", AttrType::Number))
-                  .doc("The degree: 2, 3 or 4."),
-              required(readByEntry<PolySpec>("coefficients", AttrType::NumberList))
-                  .doc("The coefficients in POV-Ray's poly order: the terms x^i y^j z^k with i descending, then j, then k (10, 20 or 35 numbers).")};
+  e.doc =
+      "The solid where a polynomial of degree 2, 3 or 4 in x, y and z is below 0 (solid; "
+      "unbounded).";
+  e.fields = {
+      required(readByEntry<PolySpec>("order", AttrType::Number)).doc("The degree: 2, 3 or 4."),
+      required(readByEntry<PolySpec>("coefficients", AttrType::NumberList))
+          .doc("The coefficients in POV-Ray's poly order: the terms x^i y^j z^k with i descending, "
+               "then j, then k (10, 20 or 35 numbers).")};
   e.fields[0].info.rule = NumberRule::between(2, 4, "2, 3 or 4");
   e.finish = [](PolySpec& s, AttributeInput& in) {
     if (!in.has("order")) {
@@ -72,13 +76,15 @@ ShapeEntry<PolySpec> shapeEntry<PolySpec>() {
     if (!c) return;
     const size_t want = static_cast<size_t>(Poly::termCount(s.order));
     if (c->size() != want) {
-      in.attrError("coefficients", fmt::format("order {} needs {} coefficients, not {}", s.order, want, c->size()));
+      in.attrError("coefficients",
+                   fmt::format("order {} needs {} coefficients, not {}", s.order, want, c->size()));
       return;
     }
     bool surface = false;
     for (size_t i = 0; i + 1 < c->size(); ++i) surface |= (*c)[i] != 0.0;
     if (!surface) {
-      in.attrError("coefficients", "every coefficient but the constant is 0, so there is no surface");
+      in.attrError("coefficients",
+                   "every coefficient but the constant is 0, so there is no surface");
       return;
     }
     s.coefficients = std::move(*c);
@@ -87,14 +93,27 @@ ShapeEntry<PolySpec> shapeEntry<PolySpec>() {
     return std::vector<std::pair<std::string, PolySpec>>{
         {"sphere as a poly of order 2",
          {2, coefficientsOf(2, {{{2, 0, 0}, 1}, {{0, 2, 0}, 1}, {{0, 0, 2}, 1}, {{0, 0, 0}, -1}})}},
-        {"monkey saddle", {3, coefficientsOf(3, {{{3, 0, 0}, 1}, {{1, 2, 0}, -3}, {{0, 0, 1}, -1}})}},
+        {"monkey saddle",
+         {3, coefficientsOf(3, {{{3, 0, 0}, 1}, {{1, 2, 0}, -3}, {{0, 0, 1}, -1}})}},
         {"torus as a quartic",  // (x²+y²+z²+R²−r²)² − 4R²(x²+z²), R = 1, r = 0.25
-         {4, coefficientsOf(4, {{{4, 0, 0}, 1}, {{0, 4, 0}, 1}, {{0, 0, 4}, 1}, {{2, 2, 0}, 2}, {{2, 0, 2}, 2},
-                                {{0, 2, 2}, 2}, {{2, 0, 0}, 2 * 0.9375 - 4}, {{0, 2, 0}, 2 * 0.9375},
-                                {{0, 0, 2}, 2 * 0.9375 - 4}, {{0, 0, 0}, 0.9375 * 0.9375}})}},
-        {"quartic cylinder", {4, coefficientsOf(4, {{{4, 0, 0}, 1}, {{0, 0, 4}, 1}, {{0, 0, 0}, -1}})}},
+         {4, coefficientsOf(4, {{{4, 0, 0}, 1},
+                                {{0, 4, 0}, 1},
+                                {{0, 0, 4}, 1},
+                                {{2, 2, 0}, 2},
+                                {{2, 0, 2}, 2},
+                                {{0, 2, 2}, 2},
+                                {{2, 0, 0}, 2 * 0.9375 - 4},
+                                {{0, 2, 0}, 2 * 0.9375},
+                                {{0, 0, 2}, 2 * 0.9375 - 4},
+                                {{0, 0, 0}, 0.9375 * 0.9375}})}},
+        {"quartic cylinder",
+         {4, coefficientsOf(4, {{{4, 0, 0}, 1}, {{0, 0, 4}, 1}, {{0, 0, 0}, -1}})}},
         {"steiner-like quartic",
-         {4, coefficientsOf(4, {{{2, 2, 0}, 1}, {{0, 2, 2}, 1}, {{2, 0, 2}, 1}, {{1, 1, 1}, 1}, {{0, 0, 0}, -0.01}})}}};
+         {4, coefficientsOf(4, {{{2, 2, 0}, 1},
+                                {{0, 2, 2}, 1},
+                                {{2, 0, 2}, 1},
+                                {{1, 1, 1}, 1},
+                                {{0, 0, 0}, -0.01}})}}};
   };
   return e;
 }

@@ -17,12 +17,16 @@ QuadricCoefficients coefficients(const QuadricSpec& s) { return {s.a, s.b, s.c, 
 template <>
 ShapeEntry<QuadricSpec> shapeEntry<QuadricSpec>() {
   ShapeEntry<QuadricSpec> e(
-      "quadric", "quadrics", [](const QuadricSpec& s) { return std::make_shared<Quadric>(coefficients(s)); },
+      "quadric", "quadrics",
+      [](const QuadricSpec& s) { return std::make_shared<Quadric>(coefficients(s)); },
       [](const QuadricSpec& s, PovShapeOut& out) {
         out.open("quadric");  // A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J
-        out.line(fmt::format("{}, {}, {}, {}", out.vector(s.a), out.vector(s.b), out.vector(s.c), out.number(s.d)));
+        out.line(fmt::format("{}, {}, {}, {}", out.vector(s.a), out.vector(s.b), out.vector(s.c),
+                             out.number(s.d)));
       });
-  e.doc = "The solid where a second-degree polynomial of x, y and z is below 0 (solid; unbounded unless an ellipsoid).";
+  e.doc =
+      "The solid where a second-degree polynomial of x, y and z is below 0 (solid; unbounded "
+      "unless an ellipsoid).";
   e.fields = {vectorField("a", &QuadricSpec::a).doc("Coefficients of x², y² and z²."),
               vectorField("b", &QuadricSpec::b).doc("Coefficients of xy, xz and yz."),
               vectorField("c", &QuadricSpec::c).doc("Coefficients of x, y and z."),
@@ -30,7 +34,8 @@ ShapeEntry<QuadricSpec> shapeEntry<QuadricSpec>() {
   e.finish = [](QuadricSpec& q, AttributeInput& in) {
     if (q.a == Vec3(0.0) && q.b == Vec3(0.0) && q.c == Vec3(0.0))
       in.attrError(in.has("a") ? "a" : (in.has("b") ? "b" : (in.has("c") ? "c" : "a")),
-                   "a quadric needs a non-zero coefficient in 'a', 'b' or 'c' (with only 'd' it has no surface)");
+                   "a quadric needs a non-zero coefficient in 'a', 'b' or 'c' (with only 'd' it "
+                   "has no surface)");
   };
   e.samples = [] {
     return std::vector<std::pair<std::string, QuadricSpec>>{

@@ -27,8 +27,8 @@ ShapeEntry<SphereSpec> shapeEntry<SphereSpec>() {
     return m;
   };
   e.samples = [] {
-    return std::vector<std::pair<std::string, SphereSpec>>{
-        {"sphere", {Vec3(0.5, -0.25, 1.0), 1.5}}, {"small sphere", {Vec3(0.0), 1e-3}}};
+    return std::vector<std::pair<std::string, SphereSpec>>{{"sphere", {Vec3(0.5, -0.25, 1.0), 1.5}},
+                                                           {"small sphere", {Vec3(0.0), 1e-3}}};
   };
   return e;
 }

@@ -20,17 +20,19 @@ ShapeEntry<SuperellipsoidSpec> shapeEntry<SuperellipsoidSpec>() {
         out.line(fmt::format("<{}, {}>", out.number(s.e), out.number(s.n)));
       });
   e.doc = "A superellipsoid filling the cube from -1 to 1, its poles on the z axis (solid).";
-  const NumberRule exponent = NumberRule::between(Superellipsoid::kMinExponent, Superellipsoid::kMaxExponent,
-                                                  "a number from 0.01 to 10");
-  e.fields = {numberField("e", &SuperellipsoidSpec::e, exponent)
-                  .doc("East-west exponent: the cross-sections parallel to the xy-plane; 1 round, small values square, 2 a diamond, above 2 pinched."),
-              numberField("n", &SuperellipsoidSpec::n, exponent)
-                  .doc("North-south exponent: the profile along the z axis, with the same meaning.")};
+  const NumberRule exponent = NumberRule::between(
+      Superellipsoid::kMinExponent, Superellipsoid::kMaxExponent, "a number from 0.01 to 10");
+  e.fields = {
+      numberField("e", &SuperellipsoidSpec::e, exponent)
+          .doc("East-west exponent: the cross-sections parallel to the xy-plane; 1 round, small "
+               "values square, 2 a diamond, above 2 pinched."),
+      numberField("n", &SuperellipsoidSpec::n, exponent)
+          .doc("North-south exponent: the profile along the z axis, with the same meaning.")};
   e.samples = [] {
     return std::vector<std::pair<std::string, SuperellipsoidSpec>>{
-        {"round superellipsoid", {1.0, 1.0}},     {"boxy superellipsoid", {0.1, 0.1}},
+        {"round superellipsoid", {1.0, 1.0}},       {"boxy superellipsoid", {0.1, 0.1}},
         {"rounded box superellipsoid", {0.3, 0.6}}, {"octahedral superellipsoid", {2.0, 2.0}},
-        {"pinched superellipsoid", {3.0, 2.5}},   {"mixed superellipsoid", {0.5, 3.0}}};
+        {"pinched superellipsoid", {3.0, 2.5}},     {"mixed superellipsoid", {0.5, 3.0}}};
   };
   return e;
 }

@@ -14,7 +14,9 @@ namespace lucent {
 
 namespace {
 
-std::string fontOf(const TextSpec& s) { return s.fontPath.empty() ? defaultFontFile() : s.fontPath; }
+std::string fontOf(const TextSpec& s) {
+  return s.fontPath.empty() ? defaultFontFile() : s.fontPath;
+}
 
 void readText(TextSpec& s, AttributeInput& in) {
   if (!in.has("string")) {
@@ -41,8 +43,11 @@ void readText(TextSpec& s, AttributeInput& in) {
   auto outline = std::make_shared<TextOutline>(textOutline(fontOf(s), s.string, s.offset));
   if (!outline->error.empty()) {
     if (outline->error.find("UTF-8") != std::string::npos) in.attrError("string", outline->error);
-    else if (in.has("font")) in.attrError("font", "cannot read the font '" + s.font + "': " + outline->error);
-    else in.error(std::string("cannot read the default font '") + defaultFontFile() + "': " + outline->error);
+    else if (in.has("font"))
+      in.attrError("font", "cannot read the font '" + s.font + "': " + outline->error);
+    else
+      in.error(std::string("cannot read the default font '") + defaultFontFile() +
+               "': " + outline->error);
     return;
   }
   size_t drawn = 0;
@@ -50,8 +55,10 @@ void readText(TextSpec& s, AttributeInput& in) {
   if (drawn == 0) in.warning("<text>: the string has no visible glyph; the shape is empty");
   std::string missing;
   for (const PlacedGlyph& g : outline->glyphs)
-    if (g.glyphIndex == 0 && missing.size() < 40) missing += fmt::format(" U+{:04X}", static_cast<unsigned>(g.codepoint));
-  if (!missing.empty()) in.warning("<text>: the font has no glyph for" + missing + "; its missing-glyph box is shown");
+    if (g.glyphIndex == 0 && missing.size() < 40)
+      missing += fmt::format(" U+{:04X}", static_cast<unsigned>(g.codepoint));
+  if (!missing.empty())
+    in.warning("<text>: the font has no glyph for" + missing + "; its missing-glyph box is shown");
   s.outline = std::move(outline);
 }
 
@@ -85,8 +92,8 @@ std::string povText(const std::string& utf8) {
 
 void writeText(const TextSpec& s, PovShapeOut& out) {
   out.open("text");
-  out.line(fmt::format("ttf {} {} {}, <{}, {}, 0>", povText(fontOf(s)), povText(s.string), out.number(s.thickness),
-                       out.number(s.offset.x), out.number(s.offset.y)));
+  out.line(fmt::format("ttf {} {} {}, <{}, {}, 0>", povText(fontOf(s)), povText(s.string),
+                       out.number(s.thickness), out.number(s.offset.x), out.number(s.offset.y)));
 }
 
 }  // namespace
@@ -94,11 +101,16 @@ void writeText(const TextSpec& s, PovShapeOut& out) {
 template <>
 ShapeEntry<TextSpec> shapeEntry<TextSpec>() {
   ShapeEntry<TextSpec> e("text", "texts", buildText, writeText);
-  e.doc = "POV-Ray's text: the glyphs of a string in a TrueType or OpenType font on the xy-plane from the origin (baseline y = 0, 1 unit per em), extruded from z = 0 to z = thickness.";
-  e.fields = {readByEntry<TextSpec>("string", AttrType::Text).doc("The text, UTF-8 (required; an empty string makes an empty shape)."),
+  e.doc =
+      "POV-Ray's text: the glyphs of a string in a TrueType or OpenType font on the xy-plane from "
+      "the origin (baseline y = 0, 1 unit per em), extruded from z = 0 to z = thickness.";
+  e.fields = {readByEntry<TextSpec>("string", AttrType::Text)
+                  .doc("The text, UTF-8 (required; an empty string makes an empty shape)."),
               readByEntry<TextSpec>("font", AttrType::File)
-                  .doc("A TrueType or OpenType font file, relative to the scene file; default: DejaVu Sans, the font shipped with Lucent."),
-              numberField("thickness", &TextSpec::thickness, NumberRule::positive()).doc("The extrusion depth along z."),
+                  .doc("A TrueType or OpenType font file, relative to the scene file; default: "
+                       "DejaVu Sans, the font shipped with Lucent."),
+              numberField("thickness", &TextSpec::thickness, NumberRule::positive())
+                  .doc("The extrusion depth along z."),
               readByEntry<TextSpec>("offset", AttrType::NumberList, "0 0", {}, 2)
                   .doc("x y added to the pen after each character (POV-Ray's offset).")};
   e.finish = readText;
@@ -109,7 +121,8 @@ ShapeEntry<TextSpec> shapeEntry<TextSpec>() {
     spaced.string = "Lu A";
     spaced.thickness = 0.25;
     spaced.offset = Vec2(0.1, -0.05);
-    return std::vector<std::pair<std::string, TextSpec>>{{"text with holes", holes}, {"spaced text", spaced}};
+    return std::vector<std::pair<std::string, TextSpec>>{{"text with holes", holes},
+                                                         {"spaced text", spaced}};
   };
   return e;
 }

@@ -18,12 +18,15 @@ ShapeEntry<TorusSpec> shapeEntry<TorusSpec>() {
         out.line(fmt::format("{}, {}", out.number(s.major), out.number(s.minor)));
       });
   e.doc = "A torus in the xz-plane around the y axis (solid).";
-  e.fields = {numberField("major", &TorusSpec::major, NumberRule::positive()).doc("Radius of the ring's centre line, around the y axis."),
-              numberField("minor", &TorusSpec::minor, NumberRule::positive()).doc("Radius of the tube.")};
+  e.fields = {
+      numberField("major", &TorusSpec::major, NumberRule::positive())
+          .doc("Radius of the ring's centre line, around the y axis."),
+      numberField("minor", &TorusSpec::minor, NumberRule::positive()).doc("Radius of the tube.")};
   e.samples = [] {
-    return std::vector<std::pair<std::string, TorusSpec>>{
-        {"torus", {1.0, 0.25}}, {"thin torus", {2.0, 0.01}}, {"fat torus", {1.0, 0.9}},
-        {"spindle torus", {1.0, 1.3}}};
+    return std::vector<std::pair<std::string, TorusSpec>>{{"torus", {1.0, 0.25}},
+                                                          {"thin torus", {2.0, 0.01}},
+                                                          {"fat torus", {1.0, 0.9}},
+                                                          {"spindle torus", {1.0, 1.3}}};
   };
   return e;
 }

@@ -35,15 +35,22 @@ ShapeEntry<TriangleSpec> shapeEntry<TriangleSpec>() {
         }
       });
   e.doc = "A single triangle a, b, c (not solid).";
-  e.fields = {corner("a", &TriangleSpec::a).doc("First vertex. Seen from the front the vertices a, b, c run counter-clockwise (normal = (b−a)×(c−a))."), corner("b", &TriangleSpec::b).doc("Second vertex."), corner("c", &TriangleSpec::c).doc("Third vertex."),
-              readByEntry<TriangleSpec>("na", AttrType::Direction).doc("Vertex normal at a (normalised; give na, nb and nc together). Normals are interpolated with the barycentric coordinates and normalised again."),
+  e.fields = {corner("a", &TriangleSpec::a)
+                  .doc("First vertex. Seen from the front the vertices a, b, c run "
+                       "counter-clockwise (normal = (b−a)×(c−a))."),
+              corner("b", &TriangleSpec::b).doc("Second vertex."),
+              corner("c", &TriangleSpec::c).doc("Third vertex."),
+              readByEntry<TriangleSpec>("na", AttrType::Direction)
+                  .doc("Vertex normal at a (normalised; give na, nb and nc together). Normals are "
+                       "interpolated with the barycentric coordinates and normalised again."),
               readByEntry<TriangleSpec>("nb", AttrType::Direction).doc("Vertex normal at b."),
               readByEntry<TriangleSpec>("nc", AttrType::Direction).doc("Vertex normal at c.")};
   e.finish = [](TriangleSpec& t, AttributeInput& in) {
     bool complete = true;
     for (const char* c : {"a", "b", "c"})
       if (!in.has(c)) {
-        in.error(std::string("<triangle> needs the attribute '") + c + "' (its corners a, b and c)");
+        in.error(std::string("<triangle> needs the attribute '") + c +
+                 "' (its corners a, b and c)");
         complete = false;
       }
     Vec3 e1 = t.b - t.a, e2 = t.c - t.a;
@@ -53,7 +60,7 @@ ShapeEntry<TriangleSpec> shapeEntry<TriangleSpec>() {
     int given = in.has("na") + in.has("nb") + in.has("nc");
     if (given == 3)
       t.normals = std::array<Vec3, 3>{in.direction("na", Vec3(0.0)), in.direction("nb", Vec3(0.0)),
-                                       in.direction("nc", Vec3(0.0))};
+                                      in.direction("nc", Vec3(0.0))};
     else if (given > 0)
       in.error("<triangle>: give all three vertex normals na, nb and nc, or none");
   };
@@ -62,9 +69,11 @@ ShapeEntry<TriangleSpec> shapeEntry<TriangleSpec>() {
   e.samples = [] {
     TriangleSpec flat{Vec3(0, 0, 0), Vec3(1, 0.2, 0), Vec3(0.1, 1, 0.3), std::nullopt};
     TriangleSpec smooth = flat;
-    smooth.normals = std::array<Vec3, 3>{glm::normalize(Vec3(0.1, 0.2, 1)), glm::normalize(Vec3(-0.2, 0, 1)),
-                                         glm::normalize(Vec3(0, -0.3, 1))};
-    return std::vector<std::pair<std::string, TriangleSpec>>{{"triangle", flat}, {"smooth triangle", smooth}};
+    smooth.normals =
+        std::array<Vec3, 3>{glm::normalize(Vec3(0.1, 0.2, 1)), glm::normalize(Vec3(-0.2, 0, 1)),
+                            glm::normalize(Vec3(0, -0.3, 1))};
+    return std::vector<std::pair<std::string, TriangleSpec>>{{"triangle", flat},
+                                                             {"smooth triangle", smooth}};
   };
   return e;
 }

@@ -48,7 +48,8 @@ TEST_CASE("lang: check and render give the same status and first error on every 
   for (const fs::path& scene : scenes) {
     const std::string size = " -w 16 -h 12";
     LucentRun check = runLucent("check '" + scene.string() + "'" + size);
-    LucentRun render = runLucent("render '" + scene.string() + "' -o '" + tmp.str("out.png") + "'" + size + " -q");
+    LucentRun render =
+        runLucent("render '" + scene.string() + "' -o '" + tmp.str("out.png") + "'" + size + " -q");
     INFO(scene.string() << "\ncheck:\n" << check.err << "render:\n" << render.err);
     CHECK(check.status == render.status);
     CHECK(firstError(check.err) == firstError(render.err));
@@ -63,12 +64,14 @@ TEST_CASE("lang: check and render give the same status and first error on every 
   CHECK(refused == static_cast<int>(scenes.size()) - 1);
 }
 
-TEST_CASE("lang: check refuses what only building the world or the camera finds", "[lang][check][agreement]") {
+TEST_CASE("lang: check refuses what only building the world or the camera finds",
+          "[lang][check][agreement]") {
   // Each group's scale(1e30) is fine; eleven multiply beyond double range.
   const std::string nested = sourcePath("tests/bad/scenes/transform_nested_scale_overflow.xml");
   LucentRun r = runLucent("check '" + nested + "'");
   CHECK(r.status == 2);
-  CHECK(r.err == nested + ":13:23: error: the transforms down to this node multiply beyond double range\n");
+  CHECK(r.err ==
+        nested + ":13:23: error: the transforms down to this node multiply beyond double range\n");
 
   // A size of the scene's own, which the corpus's -w 16 -h 12 would replace.
   TempFolder tmp("lucent-check-cubemap");
@@ -77,8 +80,10 @@ TEST_CASE("lang: check refuses what only building the world or the camera finds"
                          "  <camera type=\"cubemap\" layout=\"cross\"/>\n  <sphere/>\n</scene>\n";
   r = runLucent("check '" + cube + "'");
   CHECK(r.status == 2);
-  CHECK(r.err == cube + ":3:3: error: a cubemap camera with layout=\"cross\" needs a width divisible by 4 "
-                        "and a height divisible by 3 (got 90x75; for square faces use e.g. 512x384)\n");
+  CHECK(r.err ==
+        cube +
+            ":3:3: error: a cubemap camera with layout=\"cross\" needs a width divisible by 4 "
+            "and a height divisible by 3 (got 90x75; for square faces use e.g. 512x384)\n");
   // The size render would use: -w 96 gives whole faces.
   CHECK(runLucent("check '" + cube + "' -w 96").status == 0);
 
@@ -86,6 +91,7 @@ TEST_CASE("lang: check refuses what only building the world or the camera finds"
   r = runLucent("check '" + texture + "'");
   CHECK(r.status == 3);
   // (libpng adds lines of its own on stderr.)
-  CHECK_THAT(r.err, Catch::Contains(texture + ":3:32: error: cannot read '" +
-                                    sourcePath("tests/bad/scenes/textures/truncated_header.png") + "': "));
+  CHECK_THAT(r.err,
+             Catch::Contains(texture + ":3:32: error: cannot read '" +
+                             sourcePath("tests/bad/scenes/textures/truncated_header.png") + "': "));
 }

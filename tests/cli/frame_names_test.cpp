@@ -1,13 +1,14 @@
 // The files an animation's frames are written to, and the --frames ranges a render takes.
-#include "cli/exit_status.h"
 #include "cli/frame_names.h"
+#include "cli/exit_status.h"
 #include "cli/frame_range.h"
 
 #include <catch2/catch.hpp>
 
 using namespace lucent::cli;
 
-TEST_CASE("frame names: the number goes before the extension, at least 4 digits", "[cli][animation]") {
+TEST_CASE("frame names: the number goes before the extension, at least 4 digits",
+          "[cli][animation]") {
   CHECK(frameOutputPath("out.png", 1, 24) == "out0001.png");
   CHECK(frameOutputPath("out.png", 24, 24) == "out0024.png");
   CHECK(frameOutputPath("shots/take.v2.exr", 7, 10) == "shots/take.v20007.exr");
@@ -22,7 +23,8 @@ TEST_CASE("frame names: a run of # is replaced by the padded number", "[cli][ani
   CHECK(frameOutputPath("a#/b##c##.png", 3, 10) == "a#/b##c03.png");
 }
 
-TEST_CASE("frame names: the number is padded to the digits the last frame needs", "[cli][animation]") {
+TEST_CASE("frame names: the number is padded to the digits the last frame needs",
+          "[cli][animation]") {
   CHECK(frameOutputPath("f_##.png", 7, 120) == "f_007.png");
   CHECK(frameOutputPath("f_##.png", 120, 120) == "f_120.png");
   CHECK(frameOutputPath("out.png", 1, 12345) == "out00001.png");
@@ -53,10 +55,11 @@ TEST_CASE("frame ranges: what is not a range is a usage error saying why", "[cli
     }
     return std::string("no error");
   };
-  const std::string syntax = ": expected a frame F or a range A..B of whole numbers (as --frames 5 "
-                             "or --frames 1..24)";
-  for (const char* bad : {"", "x", "1..", "..4", "1...4", "-3", "1.5", "1e2", " 2", "2..x", "1..2..3",
-                          "99999999999"})
+  const std::string syntax =
+      ": expected a frame F or a range A..B of whole numbers (as --frames 5 "
+      "or --frames 1..24)";
+  for (const char* bad :
+       {"", "x", "1..", "..4", "1...4", "-3", "1.5", "1e2", " 2", "2..x", "1..2..3", "99999999999"})
     CHECK(message(bad) == std::string("--frames ") + bad + syntax);
   CHECK(message("0") == "--frames 0: frames are numbered from 1");
   CHECK(message("0..3") == "--frames 0..3: frames are numbered from 1");

@@ -3,12 +3,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 #include "../support/paths.h"
 
 namespace lucent::test {
@@ -23,9 +23,10 @@ struct LucentRun {
 inline LucentRun runLucent(const std::string& args) {
   namespace fs = std::filesystem;
   static int counter = 0;
-  fs::path errFile = fs::temp_directory_path() /
-                     ("lucent-cli-test-" + std::to_string(::getpid()) + "-" + std::to_string(++counter) + ".err");
-  std::string cmd = std::string("'") + lucentBinaryPath() + "' " + args + " 2>'" + errFile.string() + "' </dev/null";
+  fs::path errFile = fs::temp_directory_path() / ("lucent-cli-test-" + std::to_string(::getpid()) +
+                                                  "-" + std::to_string(++counter) + ".err");
+  std::string cmd = std::string("'") + lucentBinaryPath() + "' " + args + " 2>'" +
+                    errFile.string() + "' </dev/null";
   LucentRun r;
   FILE* p = popen(cmd.c_str(), "r");
   REQUIRE(p);
@@ -55,8 +56,7 @@ inline std::string sourcePath(const std::string& rel) {
 class TempFolder {
  public:
   explicit TempFolder(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() /
-              (name + "-" + std::to_string(::getpid()))) {
+      : path_(std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()))) {
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
@@ -67,7 +67,9 @@ class TempFolder {
   TempFolder(const TempFolder&) = delete;
   TempFolder& operator=(const TempFolder&) = delete;
   const std::filesystem::path& path() const { return path_; }
-  std::string str(const std::string& rel = "") const { return rel.empty() ? path_.string() : (path_ / rel).string(); }
+  std::string str(const std::string& rel = "") const {
+    return rel.empty() ? path_.string() : (path_ / rel).string();
+  }
 
  private:
   std::filesystem::path path_;

@@ -124,15 +124,15 @@ TEST_CASE("CSG children without a finite box are tested beside the BVH", "[bvh][
   auto kids = randomSpheres(rng, 300, 8.0, 0.3, 1.5);
   std::vector<std::unique_ptr<Shape>> inter;
   inter.push_back(std::make_unique<CsgNode>(CsgOp::Union, std::move(kids)));
-  inter.push_back(std::make_unique<Instance>(
-      std::make_shared<MockHalfSpace>(Vec3(0, 1, 0), 0.0), Transform(), 0));
+  inter.push_back(std::make_unique<Instance>(std::make_shared<MockHalfSpace>(Vec3(0, 1, 0), 0.0),
+                                             Transform(), 0));
   CsgNode cut(CsgOp::Intersection, std::move(inter));
   requireCrossingsMatchMembership(cut, randomRays(rng, 20000, 10.0));
 
   std::vector<std::unique_ptr<Shape>> both;
   both.push_back(sphere(Vec3(0, 5, 0), 1.0));
-  both.push_back(std::make_unique<Instance>(
-      std::make_shared<MockHalfSpace>(Vec3(0, 1, 0), 0.0), Transform(), 0));
+  both.push_back(std::make_unique<Instance>(std::make_shared<MockHalfSpace>(Vec3(0, 1, 0), 0.0),
+                                            Transform(), 0));
   CsgNode u(CsgOp::Union, std::move(both));
   Hit h;
   REQUIRE(u.intersect(Ray(Vec3(0, 10, 0), Vec3(0, -1, 0)), h));

@@ -4,8 +4,8 @@
 // per crossing (union keeps the inner walls, merge removes them).
 #include "../render/scene_builder.h"
 
-#include "csg/csg_node.h"
 #include "../support/scene_text.h"
+#include "csg/csg_node.h"
 #include "lang/parser.h"
 #include "render/image_io.h"
 

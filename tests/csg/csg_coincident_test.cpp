@@ -33,12 +33,14 @@ const char* kStraightDown =
 // default straight down), flat materials: red, green, blue; a black background.
 Render renderFromAbove(const std::string& geometry, const std::string& camera = kStraightDown) {
   std::string xml = R"XML(<scene version="1">
-    <render width=")XML" + std::to_string(kSize) + R"XML(" height=")XML" + std::to_string(kSize) +
+    <render width=")XML" +
+                    std::to_string(kSize) + R"XML(" height=")XML" + std::to_string(kSize) +
                     R"XML("/>)XML" + camera + R"XML(
     <material id="red" ambient="1 0 0"/>
     <material id="green" ambient="0 1 0"/>
     <material id="blue" ambient="0 0 1"/>
-    )XML" + geometry + "</scene>";
+    )XML" + geometry +
+                    "</scene>";
   ParseResult parsed = parseSceneString(xml, "coincident.xml");
   INFO(xml);
   REQUIRE(parsed.scene);
@@ -84,7 +86,8 @@ int strictlyBefore(const std::string& geometry, const std::vector<Ray>& rays,
                    const std::function<double(Vec2)>& region, size_t first, size_t second) {
   ParseResult parsed = parseSceneString(
       R"XML(<scene version="1"><camera/><material id="red"/><material id="green"/>
-            <material id="blue"/>)XML" + geometry + "</scene>",
+            <material id="blue"/>)XML" +
+          geometry + "</scene>",
       "premise.xml");
   REQUIRE(parsed.scene);
   World world(*parsed.scene);
@@ -102,9 +105,8 @@ int strictlyBefore(const std::string& geometry, const std::vector<Ray>& rays,
 
 // Signed distance to the border of an axis-aligned square [lo, hi]^2, positive inside.
 std::function<double(Vec2)> square(double lo, double hi) {
-  return [=](Vec2 p) {
-    return std::min(std::min(p.x - lo, hi - p.x), std::min(p.y - lo, hi - p.y));
-  };
+  return
+      [=](Vec2 p) { return std::min(std::min(p.x - lo, hi - p.x), std::min(p.y - lo, hi - p.y)); };
 }
 
 std::function<double(Vec2)> disc(double r) {
@@ -129,8 +131,7 @@ TEST_CASE("coincident window: tiny against the scene, grows with its coordinates
   CHECK(coincidenceWindow(far, 4.0) == Approx(coincidenceWindow(near, 4.0) * (5e6 + 4) / 9));
 }
 
-TEST_CASE("box minus a box flush with its top: the pocket opening shows only the floor",
-          "[csg]") {
+TEST_CASE("box minus a box flush with its top: the pocket opening shows only the floor", "[csg]") {
   // Seen from above: the rim of the top face is red, the pocket (its floor carved by the
   // green box) green, and no red pixel inside the opening.
   Render img = renderFromAbove(R"XML(
@@ -142,8 +143,7 @@ TEST_CASE("box minus a box flush with its top: the pocket opening shows only the
   CHECK(wrongPixels(img, frame(1.0, 0.5), kRed) == 0);
 }
 
-TEST_CASE("box minus a flush box reached through other arithmetic: still no speckle",
-          "[csg]") {
+TEST_CASE("box minus a flush box reached through other arithmetic: still no speckle", "[csg]") {
   // The subtrahend is a box of size 10 scaled by 0.1 and moved up: its top is the plane
   // y = 1 of the minuend, but its distances are computed in another object space and
   // differ from the minuend's by rounding (checked below), where an exact-t rule speckles.
@@ -169,8 +169,7 @@ TEST_CASE("box minus a flush box reached through other arithmetic: still no spec
   CHECK(strictlyBefore(geometry, img.rays, opening, 0, 1) > 0);
 }
 
-TEST_CASE("two boxes sharing faces: the difference has no trace of the shared faces",
-          "[csg]") {
+TEST_CASE("two boxes sharing faces: the difference has no trace of the shared faces", "[csg]") {
   // The right half of the box is subtracted by a box sharing its top, bottom, front, back
   // and right faces: from above, the right half is background only.
   Render img = renderFromAbove(R"XML(
@@ -178,12 +177,13 @@ TEST_CASE("two boxes sharing faces: the difference has no trace of the shared fa
       <box min="-1 -1 -1" max="1 1 1"/>
       <box min="0 -1 -1" max="1 1 1" material="green"/>
     </difference>)XML");
-  CHECK(wrongPixels(img, [](Vec2 p) { return std::min(square(-1, 1)(p), p.x); }, kBlack) == 0);
-  CHECK(wrongPixels(img, [](Vec2 p) { return std::min(square(-1, 1)(p), -p.x); }, kRed) == 0);
+  CHECK(wrongPixels(
+            img, [](Vec2 p) { return std::min(square(-1, 1)(p), p.x); }, kBlack) == 0);
+  CHECK(wrongPixels(
+            img, [](Vec2 p) { return std::min(square(-1, 1)(p), -p.x); }, kRed) == 0);
 }
 
-TEST_CASE("union and merge of two equal spheres: one clean surface, the first child's",
-          "[csg]") {
+TEST_CASE("union and merge of two equal spheres: one clean surface, the first child's", "[csg]") {
   for (std::string op : {"union", "merge", "intersection"}) {
     INFO(op);
     Render rb = renderFromAbove("<" + op + R"XML(>
@@ -197,7 +197,8 @@ TEST_CASE("union and merge of two equal spheres: one clean surface, the first ch
       </)XML" + op + ">");
     CHECK(wrongPixels(br, disc(1.0), kBlue) == 0);
     // The same sphere reached through other arithmetic: radius 2 scaled by 0.5, turned.
-    const std::string other = "<" + op + R"XML( transform="translate(0.3 0.1 0.2) translate(-0.3 -0.1 -0.2)">
+    const std::string other = "<" + op +
+                              R"XML( transform="translate(0.3 0.1 0.2) translate(-0.3 -0.1 -0.2)">
         <sphere radius="1" material="red"/>
         <sphere radius="2" material="blue" transform="scale(0.5) rotate-y(17)"/>
       </)XML" + op + ">";
@@ -257,7 +258,10 @@ TEST_CASE("ten equal spheres in a union: the first child wins every pixel", "[cs
     std::string spheres;
     for (int k = 0; k < 10; ++k)
       spheres += std::string(R"XML(<sphere radius="1" material=")XML") +
-                 (k == red ? "red" : k % 2 ? "blue" : "green") + R"XML("/>)XML";
+                 (k == red ? "red"
+                  : k % 2  ? "blue"
+                           : "green") +
+                 R"XML("/>)XML";
     Render r = renderFromAbove("<union>" + spheres + "</union>");
     CHECK(wrongPixels(r, disc(1.0), red == 0 ? kRed : kGreen) == 0);
   }

@@ -30,7 +30,9 @@ Solid sphere(Vec3 c, double r) {
 }
 
 Solid box(Vec3 lo, Vec3 hi) {
-  return {[=] { return std::make_unique<Instance>(makeShape(BoxSpec{lo, hi}), Transform(), 0); },
+  return {[=] {
+            return std::make_unique<Instance>(makeShape(BoxSpec{lo, hi}), Transform(), 0);
+          },
           [=](const Vec3& p) {
             Vec3 d = glm::max(lo - p, p - hi);
             return std::max(d.x, std::max(d.y, d.z));
@@ -41,15 +43,16 @@ Solid box(Vec3 lo, Vec3 hi) {
 Solid octahedron(Vec3 c, double r) {
   return {[=] {
             auto data = std::make_shared<MeshData>();
-            data->positions = {Vec3(r, 0, 0), Vec3(-r, 0, 0), Vec3(0, r, 0),
-                               Vec3(0, -r, 0), Vec3(0, 0, r), Vec3(0, 0, -r)};
+            data->positions = {Vec3(r, 0, 0),  Vec3(-r, 0, 0), Vec3(0, r, 0),
+                               Vec3(0, -r, 0), Vec3(0, 0, r),  Vec3(0, 0, -r)};
             data->triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
             data->closed = true;
             MeshSpec spec;
             spec.data = data;
             spec.smooth = SmoothMode::False;
-            return std::make_unique<Instance>(makeShape(spec), *Transform::fromMatrix(glm::translate(Mat4(1.0), c)), 0);
+            return std::make_unique<Instance>(
+                makeShape(spec), *Transform::fromMatrix(glm::translate(Mat4(1.0), c)), 0);
           },
           [=](const Vec3& p) {
             Vec3 q = glm::abs(p - c);
@@ -70,7 +73,8 @@ Solid torus(Vec3 c, double major, double minor) {
   return {[=] {
             Mat4 m = glm::translate(Mat4(1.0), c) *
                      glm::rotate(Mat4(1.0), glm::radians(90.0), Vec3(1, 0, 0));
-            return std::make_unique<Instance>(makeShape(TorusSpec{major, minor}), *Transform::fromMatrix(m), 0);
+            return std::make_unique<Instance>(makeShape(TorusSpec{major, minor}),
+                                              *Transform::fromMatrix(m), 0);
           },
           [=](const Vec3& p) {
             Vec3 q = p - c;
@@ -106,9 +110,15 @@ Solid combine(CsgOp op, std::vector<Solid> kids) {
       double k = kids[i].sdf(p);
       switch (op) {
         case CsgOp::Union:
-        case CsgOp::Merge: v = std::min(v, k); break;
-        case CsgOp::Intersection: v = std::max(v, k); break;
-        case CsgOp::Difference: v = std::max(v, -k); break;
+        case CsgOp::Merge:
+          v = std::min(v, k);
+          break;
+        case CsgOp::Intersection:
+          v = std::max(v, k);
+          break;
+        case CsgOp::Difference:
+          v = std::max(v, -k);
+          break;
       }
     }
     return v;
@@ -140,8 +150,8 @@ std::vector<std::pair<std::string, Solid>> trees() {
   for (CsgOp op : {CsgOp::Union, CsgOp::Merge, CsgOp::Intersection, CsgOp::Difference}) {
     std::string name = std::string(csgOpName(op)) + " of mesh, plane, torus, cylinder";
     out.push_back({name + " depth 1", combine(op, {m, t, y, h})});
-    out.push_back({name + " depth 2",
-                   combine(op, {combine(CsgOp::Intersection, {m, h}), combine(CsgOp::Difference, {t, y})})});
+    out.push_back({name + " depth 2", combine(op, {combine(CsgOp::Intersection, {m, h}),
+                                                   combine(CsgOp::Difference, {t, y})})});
   }
   return out;
 }
@@ -263,7 +273,8 @@ TEST_CASE("CSG surfaces carry the bounding child's normal, flipped where subtrac
 }
 
 TEST_CASE("CSG bounds: intersection of boxes, difference is the first child's", "[csg]") {
-  auto inter = combine(CsgOp::Intersection, {sphere(Vec3(0), 1), sphere(Vec3(1.5, 0, 0), 1)}).make();
+  auto inter =
+      combine(CsgOp::Intersection, {sphere(Vec3(0), 1), sphere(Vec3(1.5, 0, 0), 1)}).make();
   CHECK(inter->bounds().lo.x == Approx(0.5));
   CHECK(inter->bounds().hi.x == Approx(1.0));
   auto diff = combine(CsgOp::Difference, {sphere(Vec3(0), 1), sphere(Vec3(5, 0, 0), 3)}).make();

@@ -66,7 +66,9 @@ void requireSame(const std::string& a, const std::string& b) {
 const char* kBox = R"(<box min="-1 -1 -1" max="1 1 1"/>)";
 const char* kBall = R"(<sphere center="0.6 0.3 0" radius="0.9")";
 
-std::string ball(bool inverse) { return std::string(kBall) + (inverse ? R"( inverse="true"/>)" : "/>"); }
+std::string ball(bool inverse) {
+  return std::string(kBall) + (inverse ? R"( inverse="true"/>)" : "/>");
+}
 
 }  // namespace
 
@@ -84,12 +86,14 @@ TEST_CASE("inverse: union and merge with an inverse solid are the inverse of a d
           "[csg][inverse]") {
   // A ∪ ¬B = ¬(B − A): everything but the part of the ball outside the box. Seen from
   // outside it, the rays meet the ball's outer surface, turned inwards.
-  const std::string outside = "<difference inverse=\"true\">" + ball(false) + kBox + "</difference>";
+  const std::string outside =
+      "<difference inverse=\"true\">" + ball(false) + kBox + "</difference>";
   requireSame("<merge>" + std::string(kBox) + ball(true) + "</merge>", outside);
   // A union keeps the surfaces inside other children: the box's faces inside ¬B are shown,
   // so compare the union with a union.
   requireSame("<union>" + std::string(kBox) + ball(true) + "</union>",
-              "<union>" + std::string(kBox) + "<group inverse=\"true\">" + ball(false) + "</group></union>");
+              "<union>" + std::string(kBox) + "<group inverse=\"true\">" + ball(false) +
+                  "</group></union>");
 }
 
 TEST_CASE("inverse: alone, the same surface with the normal turned, and inverse twice is the solid",
@@ -122,7 +126,8 @@ TEST_CASE("inverse: alone, the same surface with the normal turned, and inverse 
   CHECK(list.items[1].entering);
 }
 
-TEST_CASE("inverse is exported as POV-Ray's inverse, a plane as the plane turned", "[csg][inverse][povray]") {
+TEST_CASE("inverse is exported as POV-Ray's inverse, a plane as the plane turned",
+          "[csg][inverse][povray]") {
   auto scene = parse(R"(<sphere radius="1" inverse="true"/>
       <plane normal="0 1 0" offset="2" inverse="true"/>
       <group inverse="true"><sphere radius="0.5"/><box min="1 1 1" max="2 2 2"/></group>
@@ -131,18 +136,20 @@ TEST_CASE("inverse is exported as POV-Ray's inverse, a plane as the plane turned
   INFO(out.text);
   // The sphere, the union of the inverse group and the inverse sphere in the intersection.
   size_t count = 0;
-  for (size_t at = out.text.find("inverse\n"); at != std::string::npos; at = out.text.find("inverse\n", at + 1))
+  for (size_t at = out.text.find("inverse\n"); at != std::string::npos;
+       at = out.text.find("inverse\n", at + 1))
     ++count;
   CHECK(count == 3);
   CHECK(out.text.find("<0, -1, 0>, -2") != std::string::npos);  // plane { -y, -2 }: y > 2 inside
 }
 
-TEST_CASE("inverse: a transparent inverse solid filters shadows as the solid does", "[csg][inverse]") {
+TEST_CASE("inverse: a transparent inverse solid filters shadows as the solid does",
+          "[csg][inverse]") {
   auto sceneWith = [](const char* inverse) {
     return std::string(R"(<render ambient="0"/><light type="point" position="0 6 0"/>
       <plane normal="0 1 0" offset="0"><material diffuse="1"/></plane>
-      <sphere center="0 2 0" radius="1" inverse=")") + inverse +
-           R"("><material diffuse="0.1" transmissive="0.5"/></sphere>)";
+      <sphere center="0 2 0" radius="1" inverse=")") +
+           inverse + R"("><material diffuse="0.1" transmissive="0.5"/></sphere>)";
   };
   auto plain = parse(sceneWith("false")), inverted = parse(sceneWith("true"));
   World wp(*plain), wi(*inverted);
@@ -153,8 +160,10 @@ TEST_CASE("inverse: a transparent inverse solid filters shadows as the solid doe
   CHECK(traceOne(wi, down).r == Approx(lit).epsilon(1e-6));
 }
 
-TEST_CASE("inverse: a sor in a CSG difference and intersection keeps the identities", "[csg][inverse][sor]") {
-  const std::string vase = R"X(<sor points="0 -1.5  0.6 -1  0.9 -0.4  0.4 0.4  0.7 1  0.8 1.2" transform="translate(0.3 0 0)")X";
+TEST_CASE("inverse: a sor in a CSG difference and intersection keeps the identities",
+          "[csg][inverse][sor]") {
+  const std::string vase =
+      R"X(<sor points="0 -1.5  0.6 -1  0.9 -0.4  0.4 0.4  0.7 1  0.8 1.2" transform="translate(0.3 0 0)")X";
   const std::string plain = vase + "/>", inverted = vase + R"( inverse="true"/>)";
   requireSame("<difference>" + std::string(kBox) + inverted + "</difference>",
               "<intersection>" + std::string(kBox) + plain + "</intersection>");

@@ -51,7 +51,8 @@ size_t replayAll(const std::string& target, Replay replay) {
       INFO("tests/fuzz/" << kind << "/" << target << "/" << name);
       const std::string bytes = bytesOf(p);
       lucent::fuzz::Outcome outcome;
-      REQUIRE_NOTHROW(outcome = replay(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()));
+      REQUIRE_NOTHROW(outcome =
+                          replay(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()));
       CHECK(outcome.finding == "");
       if (std::string(kind) == "corpus") {
         REQUIRE((startsWith(name, "accept-") || startsWith(name, "refuse-")));
@@ -67,7 +68,8 @@ size_t replayAll(const std::string& target, Replay replay) {
 
 TEST_CASE("fuzz regressions: scene parser inputs are refused or built cleanly", "[fuzz]") {
   const size_t n = replayAll("scene_parser", [](const uint8_t* d, size_t n) {
-    return lucent::fuzz::sceneParser(d, n, std::string(lucentSourceDir()) + "/examples/fuzz-input.xml");
+    return lucent::fuzz::sceneParser(d, n,
+                                     std::string(lucentSourceDir()) + "/examples/fuzz-input.xml");
   });
   CHECK(n > 0);
 }
@@ -79,20 +81,25 @@ TEST_CASE("fuzz regressions: transform syntax inputs keep their outcome", "[fuzz
   CHECK(n >= 20);
 }
 
-TEST_CASE("fuzz regressions: expression inputs are evaluated or refused at a place inside them", "[fuzz]") {
-  const size_t n = replayAll("expression", [](const uint8_t* d, size_t n) { return lucent::fuzz::expression(d, n); });
+TEST_CASE("fuzz regressions: expression inputs are evaluated or refused at a place inside them",
+          "[fuzz]") {
+  const size_t n = replayAll(
+      "expression", [](const uint8_t* d, size_t n) { return lucent::fuzz::expression(d, n); });
   CHECK(n > 0);
 }
 
-TEST_CASE("fuzz regressions: expansion programs give scenes that are refused or built cleanly", "[fuzz]") {
-  const size_t n = replayAll("expansion", [](const uint8_t* d, size_t n) { return lucent::fuzz::expansion(d, n); });
+TEST_CASE("fuzz regressions: expansion programs give scenes that are refused or built cleanly",
+          "[fuzz]") {
+  const size_t n = replayAll(
+      "expansion", [](const uint8_t* d, size_t n) { return lucent::fuzz::expansion(d, n); });
   CHECK(n > 0);
 }
 
 TEST_CASE("fuzz regressions: mesh reader inputs", "[fuzz]") {
   using lucent::MeshFormat;
-  for (auto [target, format] : {std::pair{"mesh_obj", MeshFormat::Obj}, std::pair{"mesh_ply", MeshFormat::Ply},
-                                std::pair{"mesh_off", MeshFormat::Off}, std::pair{"mesh_stl", MeshFormat::Stl}}) {
+  for (auto [target, format] :
+       {std::pair{"mesh_obj", MeshFormat::Obj}, std::pair{"mesh_ply", MeshFormat::Ply},
+        std::pair{"mesh_off", MeshFormat::Off}, std::pair{"mesh_stl", MeshFormat::Stl}}) {
     INFO(target);
     const size_t n = replayAll(target, [format = format](const uint8_t* d, size_t n) {
       return lucent::fuzz::meshReader(d, n, format);
@@ -102,23 +109,30 @@ TEST_CASE("fuzz regressions: mesh reader inputs", "[fuzz]") {
 }
 
 TEST_CASE("fuzz regressions: font files for text are refused or laid out cleanly", "[fuzz]") {
-  const size_t n = replayAll("text_font", [](const uint8_t* d, size_t n) { return lucent::fuzz::fontReader(d, n); });
+  const size_t n = replayAll(
+      "text_font", [](const uint8_t* d, size_t n) { return lucent::fuzz::fontReader(d, n); });
   CHECK(n > 0);
 }
 
-TEST_CASE("fuzz regressions: height-field images are refused or read into a field that keeps the contract",
-          "[fuzz]") {
+TEST_CASE(
+    "fuzz regressions: height-field images are refused or read into a field that keeps the "
+    "contract",
+    "[fuzz]") {
   // The corpus holds readable images (accept-*) as well as damaged ones (refuse-*).
-  const size_t n = replayAll("height_map", [](const uint8_t* d, size_t n) { return lucent::fuzz::heightMapReader(d, n); });
+  const size_t n = replayAll(
+      "height_map", [](const uint8_t* d, size_t n) { return lucent::fuzz::heightMapReader(d, n); });
   CHECK(n >= 4);
 }
 
-TEST_CASE("fuzz harness: a located exception from building the world is a refusal, others are findings",
-          "[fuzz]") {
+TEST_CASE(
+    "fuzz harness: a located exception from building the world is a refusal, others are findings",
+    "[fuzz]") {
   using lucent::fuzz::refusedInOrder;
   CHECK(refusedInOrder(std::runtime_error("scene.xml:3:5: error: singular transform")));
-  CHECK(refusedInOrder(std::runtime_error("/a/b c.xml:12:1: error: the nested transforms overflow")));
-  CHECK(refusedInOrder(lucent::LocatedError(lucent::SourceLoc{"scene.xml", 3, 5}, "a camera that cannot frame the image")));
+  CHECK(
+      refusedInOrder(std::runtime_error("/a/b c.xml:12:1: error: the nested transforms overflow")));
+  CHECK(refusedInOrder(lucent::LocatedError(lucent::SourceLoc{"scene.xml", 3, 5},
+                                            "a camera that cannot frame the image")));
   CHECK(refusedInOrder(lucent::MeshError("mesh.obj: not a mesh")));
   CHECK_FALSE(refusedInOrder(std::runtime_error("vector::_M_range_check")));
   CHECK_FALSE(refusedInOrder(std::runtime_error(":3:5: error: no file")));

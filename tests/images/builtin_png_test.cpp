@@ -27,7 +27,6 @@ using lucent::test::TempDir;
 
 namespace {
 
-
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
@@ -141,7 +140,8 @@ TEST_CASE("a render written as PNG by the built-in writer and by OpenImageIO dec
   CHECK(d.header.channels == 3);
   CHECK(d.header.saysSrgb());
   // A real picture, not a blank one: the lit sphere and the checker give many values.
-  CHECK(std::count(d.values.begin(), d.values.end(), d.values[0]) < static_cast<long>(d.values.size() / 2));
+  CHECK(std::count(d.values.begin(), d.values.end(), d.values[0]) <
+        static_cast<long>(d.values.size() / 2));
 
   const std::vector<std::string> chunks = metadataChunks(dir.file("builtin.png"));
   CHECK(chunks == metadataChunks(dir.file("plugin.png")));
@@ -228,13 +228,13 @@ TEST_CASE("the built-in writers leave the rest to OpenImageIO", "[images][builti
   CHECK_FALSE(builtinWrites(image));
 }
 
-TEST_CASE("the built-in read-back check refuses a truncated or damaged file",
-          "[images][builtin]") {
+TEST_CASE("the built-in read-back check refuses a truncated or damaged file", "[images][builtin]") {
   TempDir dir("builtin");
   const Image image = renderScene();
   std::vector<uint8_t> bytes(image.pixels.size() * 3);
   for (size_t i = 0; i < image.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) bytes[3 * i + c] = static_cast<uint8_t>(srgbByte(image.pixels[i][c]));
+    for (int c = 0; c < 3; ++c)
+      bytes[3 * i + c] = static_cast<uint8_t>(srgbByte(image.pixels[i][c]));
   ImageToWrite file;
   file.width = image.width;
   file.height = image.height;

@@ -3,8 +3,8 @@
 // own, measured by tests/data/height_field/make_references.sh.
 #include "images/height_map_file.h"
 
-#include "../temp_dir.h"
 #include "../support/paths.h"
+#include "../temp_dir.h"
 
 #include <catch2/catch.hpp>
 
@@ -65,11 +65,13 @@ TEST_CASE("height field images: the image's top row is at z = 1", "[images][heig
 TEST_CASE("height field images: what is refused", "[images][height-field]") {
   CHECK_THROWS_AS(readHeightMapFile(dataFile("missing.png")), HeightMapError);
   CHECK_THROWS_WITH(readHeightMapFile(dataFile("palette.png")), Catch::Contains("palette"));
-  CHECK_THROWS_WITH(readHeightMapFile(dataFile("one-pixel.pgm")), Catch::Contains("at least 2 x 2"));
+  CHECK_THROWS_WITH(readHeightMapFile(dataFile("one-pixel.pgm")),
+                    Catch::Contains("at least 2 x 2"));
   CHECK_THROWS_AS(readHeightMapFile(dataFile("png.py")), HeightMapError);
 }
 
-TEST_CASE("height field images: a PNM maximum value outside 1..65535 is refused", "[images][height-field]") {
+TEST_CASE("height field images: a PNM maximum value outside 1..65535 is refused",
+          "[images][height-field]") {
   const test::TempDir dir("height-pnm");
   const std::string path = (dir.path / "max.pgm").string();
   auto write = [&](const std::string& header) {
@@ -78,7 +80,8 @@ TEST_CASE("height field images: a PNM maximum value outside 1..65535 is refused"
   };
   for (const char* max : {"0", "65536", "70000", "-3", "x"}) {
     write(std::string("P5\n# a comment\n2 2\n") + max + "\n");
-    CHECK_THROWS_WITH(readHeightMapFile(path), Catch::Contains("maximum value is '" + std::string(max) + "'"));
+    CHECK_THROWS_WITH(readHeightMapFile(path),
+                      Catch::Contains("maximum value is '" + std::string(max) + "'"));
   }
   // The bounds themselves are read.
   write("P5 2 2 255\n");

@@ -23,9 +23,10 @@ std::vector<std::string> messages(const std::string& body, const std::string& re
   return out;
 }
 
-const char* kFloor = "  <plane normal=\"0 1 0\" offset=\"0\">\n"
-                     "    <material ambient=\"0.2\" diffuse=\"0.7\"/>\n"
-                     "  </plane>\n";
+const char* kFloor =
+    "  <plane normal=\"0 1 0\" offset=\"0\">\n"
+    "    <material ambient=\"0.2\" diffuse=\"0.7\"/>\n"
+    "  </plane>\n";
 
 }  // namespace
 
@@ -42,12 +43,14 @@ TEST_CASE("lang: a camera below a plane whose normal points up is warned about, 
 }
 
 TEST_CASE("lang: a camera above the same plane gets no warning", "[lang][camera-inside]") {
-  CHECK(messages("  <camera position=\"0 1 3\" look-at=\"0 0 0\"/>\n" + std::string(kFloor)).empty());
+  CHECK(
+      messages("  <camera position=\"0 1 3\" look-at=\"0 0 0\"/>\n" + std::string(kFloor)).empty());
 }
 
 TEST_CASE("lang: the plane's fix negates its offset too", "[lang][camera-inside]") {
-  auto m = messages("  <camera position=\"0 0 3\" look-at=\"0 1 0\"/>\n"
-                    "  <plane normal=\"0 2 0\" offset=\"0.5\"><material ambient=\"0.1\"/></plane>\n");
+  auto m = messages(
+      "  <camera position=\"0 0 3\" look-at=\"0 1 0\"/>\n"
+      "  <plane normal=\"0 2 0\" offset=\"0.5\"><material ambient=\"0.1\"/></plane>\n");
   REQUIRE(m.size() == 1);
   CHECK_THAT(m[0], Catch::EndsWith("negate the normal and the offset: normal=\"0 -1 0\" "
                                    "offset=\"-0.5\""));
@@ -59,9 +62,11 @@ TEST_CASE("lang: the camera's transform and names, groups, <use> and CSG are fol
   // <use> of a group puts at x = 4.
   auto m = messages(
       "  <camera name=\"out\" position=\"0 0 6\"/>\n"
-      "  <camera name=\"in\" position=\"0 0 0\" look-at=\"0 0 -1\" transform=\"translate(4 0 0)\"/>\n"
+      "  <camera name=\"in\" position=\"0 0 0\" look-at=\"0 0 -1\" transform=\"translate(4 0 "
+      "0)\"/>\n"
       "  <material id=\"clay\" ambient=\"0.1\" diffuse=\"0.6\"/>\n"
-      "  <defs><group id=\"g\" transform=\"translate(1 0 0)\"><sphere radius=\"0.5\"/></group></defs>\n"
+      "  <defs><group id=\"g\" transform=\"translate(1 0 0)\"><sphere "
+      "radius=\"0.5\"/></group></defs>\n"
       "  <use ref=\"g\" material=\"clay\" transform=\"translate(3 0 0)\"/>\n"
       "  <difference material=\"clay\" transform=\"translate(0 0 6)\">\n"
       "    <box/>\n"
@@ -96,5 +101,6 @@ TEST_CASE("lang: no warning inside glass, an emissive dome, or without ambient l
                  " ambient=\"0\"")
             .empty());
   // The same opaque sphere with ambient light: warned.
-  CHECK(messages(camera + "  <sphere radius=\"2\"><material ambient=\"0.1\"/></sphere>\n").size() == 1);
+  CHECK(messages(camera + "  <sphere radius=\"2\"><material ambient=\"0.1\"/></sphere>\n").size() ==
+        1);
 }

@@ -44,39 +44,45 @@ double eval(const std::string& expr, const std::map<std::string, std::string>& d
 }
 
 // Exactly equal, or within a few ulps of a hand-derived value that is itself rounded.
-bool near(double a, double b, double tol = 1e-15) { return std::abs(a - b) <= tol * std::max(1.0, std::abs(b)); }
+bool near(double a, double b, double tol = 1e-15) {
+  return std::abs(a - b) <= tol * std::max(1.0, std::abs(b));
+}
 
-double floored(double a, double b) { return a - b * std::floor(a / b); }  // independent of the implementation
+double floored(double a, double b) {
+  return a - b * std::floor(a / b);
+}  // independent of the implementation
 
 }  // namespace
 
 TEST_CASE("expressions: ?: is the lowest operator and nests to the right", "[lang][expression]") {
   CHECK(eval("1 ? 2 : 3") == 2);
   CHECK(eval("0 ? 2 : 3") == 3);
-  CHECK(eval("0 || 1 ? 5 : 6") == 5);       // (0 || 1) ? 5 : 6
-  CHECK(eval("0 ? 2 : 3 + 10") == 13);      // 0 ? 2 : (3 + 10)
+  CHECK(eval("0 || 1 ? 5 : 6") == 5);   // (0 || 1) ? 5 : 6
+  CHECK(eval("0 ? 2 : 3 + 10") == 13);  // 0 ? 2 : (3 + 10)
   CHECK(eval("1 ? 2 : 3 + 10") == 2);
-  CHECK(eval("0 ? 1 : 0 ? 2 : 3") == 3);    // 0 ? 1 : (0 ? 2 : 3)
-  CHECK(eval("1 ? 0 ? 4 : 5 : 6") == 5);    // a ?: in the middle branch
+  CHECK(eval("0 ? 1 : 0 ? 2 : 3") == 3);  // 0 ? 1 : (0 ? 2 : 3)
+  CHECK(eval("1 ? 0 ? 4 : 5 : 6") == 5);  // a ?: in the middle branch
   CHECK(eval("2 > 1 ? 10 : 20") == 10);
 }
 
-TEST_CASE("expressions: || below &&, && below ==, == below <, < below +, + below *", "[lang][expression]") {
-  CHECK(eval("1 || 0 && 0") == 1);    // 1 || (0 && 0); (1 || 0) && 0 would be 0
+TEST_CASE("expressions: || below &&, && below ==, == below <, < below +, + below *",
+          "[lang][expression]") {
+  CHECK(eval("1 || 0 && 0") == 1);  // 1 || (0 && 0); (1 || 0) && 0 would be 0
   CHECK(eval("0 && 0 || 1") == 1);
-  CHECK(eval("1 && 2 == 2") == 1);    // 1 && (2 == 2); (1 && 2) == 2 would be 0
-  CHECK(eval("2 == 2 < 3") == 0);     // 2 == (2 < 3) = 2 == 1; (2 == 2) < 3 would be 1
-  CHECK(eval("3 != 2 > 1") == 1);     // 3 != (2 > 1)
-  CHECK(eval("3 < 1 + 5") == 1);      // 3 < 6; (3 < 1) + 5 would be 5
+  CHECK(eval("1 && 2 == 2") == 1);  // 1 && (2 == 2); (1 && 2) == 2 would be 0
+  CHECK(eval("2 == 2 < 3") == 0);   // 2 == (2 < 3) = 2 == 1; (2 == 2) < 3 would be 1
+  CHECK(eval("3 != 2 > 1") == 1);   // 3 != (2 > 1)
+  CHECK(eval("3 < 1 + 5") == 1);    // 3 < 6; (3 < 1) + 5 would be 5
   CHECK(eval("1 + 2 >= 3") == 1);
   CHECK(eval("2 + 3 * 4") == 14);
   CHECK(eval("2 * 3 + 4") == 10);
-  CHECK(eval("1 + 7 % 4") == 4);      // % binds like *
+  CHECK(eval("1 + 7 % 4") == 4);  // % binds like *
   CHECK(eval("1 + 8 / 4") == 3);
 }
 
-TEST_CASE("expressions: unary - and ! bind tighter than * and looser than ^", "[lang][expression]") {
-  CHECK(eval("!0 * 2") == 2);   // (!0) * 2; !(0 * 2) would be 1
+TEST_CASE("expressions: unary - and ! bind tighter than * and looser than ^",
+          "[lang][expression]") {
+  CHECK(eval("!0 * 2") == 2);  // (!0) * 2; !(0 * 2) would be 1
   CHECK(eval("!0 + 1") == 2);
   CHECK(eval("-2 * 3") == -6);
   CHECK(eval("-2 ^ 2") == -4);  // -(2 ^ 2)
@@ -103,7 +109,8 @@ TEST_CASE("expressions: unary operators stack: --x, !!x, -!x, !-x", "[lang][expr
   CHECK(eval("1 - -1") == 2);
 }
 
-TEST_CASE("expressions: ^ is right-associative, the others left-associative", "[lang][expression]") {
+TEST_CASE("expressions: ^ is right-associative, the others left-associative",
+          "[lang][expression]") {
   CHECK(eval("2 ^ 3 ^ 2") == 512);  // 2 ^ 9; (2 ^ 3) ^ 2 would be 64
   CHECK(eval("10 - 4 - 3") == 3);
   CHECK(eval("64 / 4 / 2") == 8);
@@ -144,7 +151,8 @@ TEST_CASE("expressions: comparisons and logic give exactly 1 or 0", "[lang][expr
   CHECK(sub("${-0.5 && 1}") == "1");  // any non-zero is true
 }
 
-TEST_CASE("expressions: % is a floored modulo, with the sign of the divisor", "[lang][expression]") {
+TEST_CASE("expressions: % is a floored modulo, with the sign of the divisor",
+          "[lang][expression]") {
   CHECK(eval("5 % 3") == 2);
   CHECK(eval("-1 % 3") == 2);
   CHECK(eval("1 % -3") == -2);
@@ -186,7 +194,8 @@ TEST_CASE("expressions: the trigonometric functions work in radians", "[lang][ex
   CHECK(eval("cos(0)") == 1);
 }
 
-TEST_CASE("expressions: atan2 takes y first, then x, and covers the four quadrants", "[lang][expression]") {
+TEST_CASE("expressions: atan2 takes y first, then x, and covers the four quadrants",
+          "[lang][expression]") {
   CHECK(near(eval("atan2(1, 1)"), M_PI / 4));
   CHECK(near(eval("atan2(1, -1)"), 3 * M_PI / 4));
   CHECK(near(eval("atan2(-1, -1)"), -3 * M_PI / 4));
@@ -215,7 +224,8 @@ TEST_CASE("expressions: sqrt, exp and the logarithms", "[lang][expression]") {
   CHECK(eval("log2(10)") == std::log2(10.0));
 }
 
-TEST_CASE("expressions: abs, sign, floor, ceil, round (halves away from zero) and trunc", "[lang][expression]") {
+TEST_CASE("expressions: abs, sign, floor, ceil, round (halves away from zero) and trunc",
+          "[lang][expression]") {
   CHECK(eval("abs(-3.5)") == 3.5);
   CHECK(eval("abs(2)") == 2);
   CHECK(eval("abs(0)") == 0);
@@ -263,7 +273,8 @@ TEST_CASE("expressions: pow, min, max, clamp, mix, radians and degrees", "[lang]
   CHECK(near(eval("degrees(radians(37))"), 37, 1e-14));
 }
 
-TEST_CASE("expressions: pi and e are the constants, names in expressions read their values", "[lang][expression]") {
+TEST_CASE("expressions: pi and e are the constants, names in expressions read their values",
+          "[lang][expression]") {
   CHECK(eval("pi") == M_PI);
   CHECK(eval("e") == M_E);
   CHECK(eval("2 * pi") == 2 * M_PI);
@@ -273,7 +284,8 @@ TEST_CASE("expressions: pi and e are the constants, names in expressions read th
   CHECK(eval("clock + frame + frames") == 2);  // 0 + 1 + 1 without <animation>
 }
 
-TEST_CASE("expressions: results are written in the shortest form that reads back exactly", "[lang][expression]") {
+TEST_CASE("expressions: results are written in the shortest form that reads back exactly",
+          "[lang][expression]") {
   CHECK(sub("${0.1+0.2}") == "0.30000000000000004");
   CHECK(sub("${2*3}") == "6");
   CHECK(sub("${1/3}") == "0.3333333333333333");
@@ -285,11 +297,12 @@ TEST_CASE("expressions: results are written in the shortest form that reads back
   CHECK(sub("${2^0.5}") == "1.4142135623730951");
   CHECK(sub("${4*cos(0)} 2 ${4*sin(0)}") == "4 2 0");
   CHECK(sub("rotate-y(${360*0.25})") == "rotate-y(90)");
-  CHECK(sub("a$$b") == "a$b");             // $$ is a literal '$'
-  CHECK(sub("$${1+1}") == "${1+1}");       // ... even before a brace
+  CHECK(sub("a$$b") == "a$b");        // $$ is a literal '$'
+  CHECK(sub("$${1+1}") == "${1+1}");  // ... even before a brace
   CHECK(sub("$$${1+1}") == "$2");
   // Every result reads back as the very same double.
-  for (const char* e : {"1/3", "2/7", "pi", "e^10", "1e-300*3", "sqrt(2)", "1e22/3", "-123456789.125/1024"}) {
+  for (const char* e :
+       {"1/3", "2/7", "pi", "e^10", "1e-300*3", "sqrt(2)", "1e22/3", "-123456789.125/1024"}) {
     std::string text = sub(std::string("${") + e + "}");
     double back = 0.0;
     std::from_chars(text.data(), text.data() + text.size(), back);
@@ -299,7 +312,8 @@ TEST_CASE("expressions: results are written in the shortest form that reads back
   }
 }
 
-TEST_CASE("expressions: an expression in a real attribute gives the attribute its value", "[lang][expression]") {
+TEST_CASE("expressions: an expression in a real attribute gives the attribute its value",
+          "[lang][expression]") {
   const std::string xml = R"(<scene version="1">
   <camera/>
   <param name="r" value="2"/>
@@ -338,13 +352,14 @@ TEST_CASE("expressions: a parameter is read after its own substitution, and hide
 }
 
 // random(seed, i): pinned values, so that a change of hash, compiler or machine is caught.
-TEST_CASE("expressions: random(seed, i) gives the same pinned values on every build", "[lang][expression][random]") {
+TEST_CASE("expressions: random(seed, i) gives the same pinned values on every build",
+          "[lang][expression][random]") {
   // Worked out once by a separate copy of the hash (SplitMix64's finaliser over the two
   // arguments' IEEE-754 bits, 53 bits of the result), written as exact hexadecimal floats.
-  CHECK(sceneRandom(0, 0) == 0x1.094db8bb4b47p-4);     // 0.064771386726265368
-  CHECK(sceneRandom(0, 1) == 0x1.48213c746a904p-3);    // 0.16021964292787783
-  CHECK(sceneRandom(1, 0) == 0x1.37dda92c15ed5p-1);    // 0.60911301291613518
-  CHECK(sceneRandom(42, 7) == 0x1.bb9686c13ec81p-1);   // 0.86638280018759428
+  CHECK(sceneRandom(0, 0) == 0x1.094db8bb4b47p-4);       // 0.064771386726265368
+  CHECK(sceneRandom(0, 1) == 0x1.48213c746a904p-3);      // 0.16021964292787783
+  CHECK(sceneRandom(1, 0) == 0x1.37dda92c15ed5p-1);      // 0.60911301291613518
+  CHECK(sceneRandom(42, 7) == 0x1.bb9686c13ec81p-1);     // 0.86638280018759428
   CHECK(sceneRandom(-3.5, 1e6) == 0x1.f6d3b6c253dcp-5);  // 0.061380249930717223
   CHECK(sub("${random(42, 7)}") == "0.8663828001875943");
   CHECK(sub("${random(0, 1)}") == "0.16021964292787783");
@@ -353,7 +368,8 @@ TEST_CASE("expressions: random(seed, i) gives the same pinned values on every bu
   CHECK(sub("${random(5, 9)}") == sub("${random(5, 9)}"));
 }
 
-TEST_CASE("expressions: random(seed, i) depends on both arguments and only on their values", "[lang][expression][random]") {
+TEST_CASE("expressions: random(seed, i) depends on both arguments and only on their values",
+          "[lang][expression][random]") {
   CHECK(sceneRandom(1, 2) != sceneRandom(2, 1));
   CHECK(sceneRandom(0, 0) != sceneRandom(0, 1));
   CHECK(sceneRandom(0, 0) != sceneRandom(1, 0));
@@ -421,8 +437,8 @@ Sample sample(F draw) {
 //   central moment of U(0,1) is 1/80): |variance - 1/12| < 4.1e-4 is 5.5 of them.
 // - the lag-1 correlation's standard deviation is 1/sqrt(10^6) = 1e-3: |r| < 5.5e-3.
 void checkUniform(const Sample& s) {
-  INFO("min " << s.min << " max " << s.max << " mean " << s.mean << " variance " << s.variance << " chi2 "
-              << s.chiSquare << " lag1 " << s.lag1);
+  INFO("min " << s.min << " max " << s.max << " mean " << s.mean << " variance " << s.variance
+              << " chi2 " << s.chiSquare << " lag1 " << s.lag1);
   CHECK(s.min >= 0.0);
   CHECK(s.max < 1.0);
   CHECK(std::abs(s.mean - 0.5) < 1.6e-3);
@@ -434,15 +450,18 @@ void checkUniform(const Sample& s) {
 
 }  // namespace
 
-TEST_CASE("expressions: random(seed, i) over 10^6 indices is uniform between 0 and 1", "[lang][expression][random]") {
+TEST_CASE("expressions: random(seed, i) over 10^6 indices is uniform between 0 and 1",
+          "[lang][expression][random]") {
   checkUniform(sample([](int k) { return sceneRandom(7, k); }));
 }
 
-TEST_CASE("expressions: random(seed, i) over 10^6 seeds is uniform between 0 and 1", "[lang][expression][random]") {
+TEST_CASE("expressions: random(seed, i) over 10^6 seeds is uniform between 0 and 1",
+          "[lang][expression][random]") {
   checkUniform(sample([](int k) { return sceneRandom(k, 3); }));
 }
 
-TEST_CASE("expressions: the check above would catch a lattice and a biased generator", "[lang][expression][random]") {
+TEST_CASE("expressions: the check above would catch a lattice and a biased generator",
+          "[lang][expression][random]") {
   // The thresholds of checkUniform are not vacuous: a perfectly even sequence fails the
   // chi-square from below, a slightly skewed one from above.
   Sample lattice = sample([](int k) { return std::fmod(k * 0.6180339887498949, 1.0); });

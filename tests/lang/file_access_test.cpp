@@ -11,8 +11,9 @@
 using namespace lucent;
 using lucent::test::TempDir;
 
-TEST_CASE("file access: the observer hears each new name once, as it is granted, and no refused one",
-          "[lang][file-access]") {
+TEST_CASE(
+    "file access: the observer hears each new name once, as it is granted, and no refused one",
+    "[lang][file-access]") {
   TempDir dir("access");
   dir.write("a.obj", "v 0 0 0\n");
   dir.write("sub/b.png", "png");

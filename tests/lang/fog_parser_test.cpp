@@ -14,7 +14,8 @@ std::unique_ptr<Scene> parse(const std::string& body) { return parseClean(body, 
 
 }  // namespace
 
-TEST_CASE("lang: <fog> is constant fog by default, ground fog takes offset, altitude and up", "[lang][fog]") {
+TEST_CASE("lang: <fog> is constant fog by default, ground fog takes offset, altitude and up",
+          "[lang][fog]") {
   CHECK_FALSE(parse("")->fog);
 
   auto s = parse("<fog color=\"0.7 0.8 0.9\" distance=\"12\"/>");
@@ -25,8 +26,10 @@ TEST_CASE("lang: <fog> is constant fog by default, ground fog takes offset, alti
   CHECK(s->fog->filter == 0.0f);
   CHECK(s->fog->transmit == 0.0f);
 
-  s = parse("<fog type=\"ground\" color=\"1\" distance=\"3\" filter=\"0.25\" transmit=\"0.5\" offset=\"-1\" "
-            "altitude=\"0.4\" up=\"0 2 0\"/>");
+  s = parse(
+      "<fog type=\"ground\" color=\"1\" distance=\"3\" filter=\"0.25\" transmit=\"0.5\" "
+      "offset=\"-1\" "
+      "altitude=\"0.4\" up=\"0 2 0\"/>");
   REQUIRE(s->fog);
   CHECK(s->fog->type == FogType::Ground);
   CHECK(s->fog->filter == 0.25f);

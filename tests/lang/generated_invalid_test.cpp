@@ -17,7 +17,8 @@ using lucent::test::messages;
 using lucent::test::TempDir;
 using namespace lucent;
 
-TEST_CASE("lang: 100,000 nested elements give an error at the first one too deep, not a crash", "[lang][invalid]") {
+TEST_CASE("lang: 100,000 nested elements give an error at the first one too deep, not a crash",
+          "[lang][invalid]") {
   const int n = 100000;
   std::string xml = "<scene version=\"1\">\n<camera/>\n";
   for (int i = 0; i < n; ++i) xml += "<group>";
@@ -34,7 +35,8 @@ TEST_CASE("lang: 100,000 nested elements give an error at the first one too deep
   CHECK_THAT(d.message, Catch::Contains("elements nest deeper than 256 levels"));
 }
 
-TEST_CASE("lang: 100,000 nested unknown elements and a long chain of <use> do not crash", "[lang][invalid]") {
+TEST_CASE("lang: 100,000 nested unknown elements and a long chain of <use> do not crash",
+          "[lang][invalid]") {
   const int n = 100000;
   std::string xml = "<scene version=\"1\"><camera/><group>";
   for (int i = 0; i < n; ++i) xml += "<a>";
@@ -52,16 +54,19 @@ TEST_CASE("lang: 100,000 nested unknown elements and a long chain of <use> do no
   ParseResult c = parseSceneString(chain, "chain.xml");
   INFO(messages(c));
   REQUIRE(c.scene == nullptr);
-  CHECK_THAT(messages(c), Catch::Contains("nests deeper than 1024 levels, counting what its <use>s instantiate"));
+  CHECK_THAT(
+      messages(c),
+      Catch::Contains("nests deeper than 1024 levels, counting what its <use>s instantiate"));
 }
 
 TEST_CASE("lang: includes nest at most 16 files deep", "[lang][invalid]") {
   TempDir dir("include-depth");
   for (int i = 0; i < 20; ++i)
-    dir.write("f" + std::to_string(i) + ".xml",
-              "<scene version=\"1\">\n  <include src=\"f" + std::to_string(i + 1) + ".xml\"/>\n</scene>\n");
+    dir.write("f" + std::to_string(i) + ".xml", "<scene version=\"1\">\n  <include src=\"f" +
+                                                    std::to_string(i + 1) + ".xml\"/>\n</scene>\n");
   dir.write("f20.xml", "<scene version=\"1\"><sphere/></scene>\n");
-  fs::path top = dir.write("top.xml", "<scene version=\"1\">\n<camera/>\n<include src=\"f0.xml\"/>\n</scene>\n");
+  fs::path top = dir.write(
+      "top.xml", "<scene version=\"1\">\n<camera/>\n<include src=\"f0.xml\"/>\n</scene>\n");
   ParseResult r = parseSceneFile(top.string());
   INFO(messages(r));
   REQUIRE(r.scene == nullptr);
@@ -74,14 +79,17 @@ TEST_CASE("lang: includes nest at most 16 files deep", "[lang][invalid]") {
   CHECK_THAT(d.message, Catch::Contains("includes nest deeper than 16 files"));
 }
 
-TEST_CASE("lang: a symbolic link that leaves the scene's folder is refused, --allow-path permits it", "[lang][invalid]") {
+TEST_CASE(
+    "lang: a symbolic link that leaves the scene's folder is refused, --allow-path permits it",
+    "[lang][invalid]") {
   TempDir dir("symlink");
   dir.write("outside/secret.xml", "<scene version=\"1\"><sphere id=\"secret\"/></scene>\n");
   dir.write("outside/mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   fs::create_directories(dir.path / "scene");
   fs::create_symlink(dir.path / "outside", dir.path / "scene" / "linked");
-  fs::path scene = dir.write("scene/main.xml",
-                             "<scene version=\"1\">\n<camera/>\n<include src=\"linked/secret.xml\"/>\n</scene>\n");
+  fs::path scene = dir.write(
+      "scene/main.xml",
+      "<scene version=\"1\">\n<camera/>\n<include src=\"linked/secret.xml\"/>\n</scene>\n");
   ParseResult r = parseSceneFile(scene.string());
   INFO(messages(r));
   REQUIRE(r.scene == nullptr);
@@ -90,7 +98,8 @@ TEST_CASE("lang: a symbolic link that leaves the scene's folder is refused, --al
   CHECK(d.loc.line == 3);
   CHECK(d.loc.col == 15);
   std::string resolved = fs::weakly_canonical(dir.path / "outside" / "secret.xml").string();
-  CHECK_THAT(d.message, Catch::Contains("'linked/secret.xml' leads to '" + resolved + "', outside the folders"));
+  CHECK_THAT(d.message, Catch::Contains("'linked/secret.xml' leads to '" + resolved +
+                                        "', outside the folders"));
 
   ParseOptions allow;
   allow.allowPaths.push_back((dir.path / "outside").string());
@@ -101,26 +110,29 @@ TEST_CASE("lang: a symbolic link that leaves the scene's folder is refused, --al
   CHECK(ok.scene->root->children[0]->id == "secret");
 }
 
-TEST_CASE("lang: a missing scene file is an input/output failure, not an invalid scene", "[lang][invalid]") {
+TEST_CASE("lang: a missing scene file is an input/output failure, not an invalid scene",
+          "[lang][invalid]") {
   TempDir dir("missing");
   ParseResult r = parseSceneFile((dir.path / "nothing.xml").string());
   CHECK(r.scene == nullptr);
   CHECK(r.ioFailure);
   REQUIRE(r.diagnostics.errorCount() == 1);
-  CHECK(r.diagnostics.all()[0].str() == (dir.path / "nothing.xml").string() + ": error: cannot read the scene file: no such file");
+  CHECK(r.diagnostics.all()[0].str() ==
+        (dir.path / "nothing.xml").string() + ": error: cannot read the scene file: no such file");
 
   ParseResult folder = parseSceneFile(dir.path.string());
   CHECK(folder.ioFailure);
   CHECK_THAT(folder.diagnostics.all()[0].message, Catch::Contains("it is a folder"));
 }
 
-TEST_CASE("lang: errors of several files and phases come back sorted by file, line and column", "[lang][invalid]") {
+TEST_CASE("lang: errors of several files and phases come back sorted by file, line and column",
+          "[lang][invalid]") {
   TempDir dir("sorted");
   dir.write("part.xml", "<scene version=\"1\">\n  <sphere radius=\"-2\"/>\n</scene>\n");
   fs::path top = dir.write("top.xml",
                            "<scene version=\"1\">\n"
                            "  <camera/>\n"
-                           "  <use ref=\"nothing\"/>\n"          // reported in the last phase
+                           "  <use ref=\"nothing\"/>\n"           // reported in the last phase
                            "  <material id=\"m\" ior=\"-1\"/>\n"  // reported in the material phase
                            "  <include src=\"part.xml\"/>\n"
                            "  <box material=\"m\" min=\"2 2 2\"/>\n"

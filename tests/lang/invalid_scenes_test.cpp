@@ -4,9 +4,9 @@
 // check` would print (every diagnostic, then "N errors; the scene is invalid" or the
 // located error of checkRenderable). tests/scripts/bad_inputs.sh runs the same cases
 // through the binary, with time limits; this test runs them in the test build's sanitizers.
+#include "../support/paths.h"
 #include "lang/parser.h"
 #include "render/scene_check.h"
-#include "../support/paths.h"
 
 #include <catch2/catch.hpp>
 
@@ -30,7 +30,8 @@ std::vector<std::string> splitFields(const std::string& text) {
   std::vector<std::string> fields;
   for (size_t start = 0;;) {
     size_t bar = text.find(" | ", start);
-    fields.push_back(text.substr(start, bar == std::string::npos ? std::string::npos : bar - start));
+    fields.push_back(
+        text.substr(start, bar == std::string::npos ? std::string::npos : bar - start));
     if (bar == std::string::npos) break;
     start = bar + 3;
   }
@@ -80,7 +81,8 @@ TEST_CASE("lang: every invalid scene of the corpus is refused with its expected 
         }
       } else {
         const size_t n = r.diagnostics.errorCount();
-        out += c.scene + ": " + std::to_string(n) + " error" + (n == 1 ? "" : "s") + "; the scene is invalid\n";
+        out += c.scene + ": " + std::to_string(n) + " error" + (n == 1 ? "" : "s") +
+               "; the scene is invalid\n";
       }
       INFO("output:\n" << out);
       CHECK_FALSE(r.ioFailure);

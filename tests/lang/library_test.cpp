@@ -39,8 +39,8 @@ TEST_CASE("library: every file loads without a diagnostic, ids unique across fil
   for (std::string_view name : names) {
     if (name == "materials.xml") continue;
     // Each file alone (with metals for the sphere's gold).
-    ParseResult r = parseWith("<include src=\"lucent:metals.xml\"/><include src=\"lucent:" +
-                              std::string(name) + "\"/>");
+    ParseResult r = parseWith(
+        "<include src=\"lucent:metals.xml\"/><include src=\"lucent:" + std::string(name) + "\"/>");
     INFO(name << "\n" << messages(r));
     REQUIRE(r.scene);
     CHECK(r.diagnostics.all().empty());
@@ -64,8 +64,11 @@ TEST_CASE("library: metals reflect their colour, glass is a dielectric with its 
   CHECK(gold.reflective.r > gold.reflective.g);
   CHECK(gold.reflective.g > gold.reflective.b);
   CHECK(byId(s, "silver").reflective.b > 0.7f);
-  for (auto [id, ior] : {std::pair{"water", 1.333}, {"diamond", 2.417}, {"glass", 1.52},
-                         {"ice", 1.309}, {"ruby", 1.77}}) {
+  for (auto [id, ior] : {std::pair{"water", 1.333},
+                         {"diamond", 2.417},
+                         {"glass", 1.52},
+                         {"ice", 1.309},
+                         {"ruby", 1.77}}) {
     const Material& m = byId(s, id);
     INFO(id);
     CHECK(m.ior == ior);
@@ -90,8 +93,8 @@ TEST_CASE("library: woods and stones are patterns with colour maps", "[lang][lib
     REQUIRE(std::holds_alternative<PatternTexture>(m.texture));
     return std::get<PatternTexture>(m.texture);
   };
-  for (const char* id : {"oak", "dark-oak", "pine", "cherry", "walnut", "mahogany", "birch",
-                         "teak", "varnished-oak", "varnished-mahogany"}) {
+  for (const char* id : {"oak", "dark-oak", "pine", "cherry", "walnut", "mahogany", "birch", "teak",
+                         "varnished-oak", "varnished-mahogany"}) {
     INFO(id);
     const PatternTexture& t = patternOf(id);
     CHECK(t.pattern.type == PatternType::wood);
@@ -127,8 +130,7 @@ TEST_CASE("library: woods and stones are patterns with colour maps", "[lang][lib
   CHECK(byId(s, "oak").shininess == 30);
 }
 
-TEST_CASE("library: lucent: files are readable whatever the file-access rules",
-          "[lang][library]") {
+TEST_CASE("library: lucent: files are readable whatever the file-access rules", "[lang][library]") {
   // A scene in a folder of its own may read nothing outside it, but the library is compiled in.
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "lucent_library_test";
   std::filesystem::create_directories(dir);
@@ -142,11 +144,11 @@ TEST_CASE("library: lucent: files are readable whatever the file-access rules",
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("library: an unknown library file is an error that lists the files",
-          "[lang][library]") {
+TEST_CASE("library: an unknown library file is an error that lists the files", "[lang][library]") {
   ParseResult r = parseWith("<include src=\"lucent:metal.xml\"/>");
   CHECK_FALSE(r.scene);
   const std::string m = messages(r);
-  CHECK_THAT(m, Catch::Contains("the library has no file 'metal.xml' (did you mean 'metals.xml'?)"));
+  CHECK_THAT(m,
+             Catch::Contains("the library has no file 'metal.xml' (did you mean 'metals.xml'?)"));
   CHECK_THAT(m, Catch::Contains("glass.xml"));
 }

@@ -20,7 +20,8 @@ bool close(const Vec3& a, const Vec3& b) { return glm::length(a - b) <= 1e-12; }
 
 }  // namespace
 
-TEST_CASE("lang: a light in a group is placed by the group's transform after its own", "[lang][lights]") {
+TEST_CASE("lang: a light in a group is placed by the group's transform after its own",
+          "[lang][lights]") {
   auto s = load(R"XML(<group transform="rotate-z(90) translate(10 0 0)">
       <light type="spot" position="1 0 0" direction="1 0 0" transform="translate(0 2 0)"/>
       <sphere/>
@@ -71,7 +72,8 @@ TEST_CASE("lang: a lamp defined once is placed by every use and repeat", "[lang]
   CHECK(s->lights[5].color == Color(1.0f, 0.5f, 0.0f));
 }
 
-TEST_CASE("lang: a light with an id is placed again by a use, with parameters too", "[lang][lights]") {
+TEST_CASE("lang: a light with an id is placed again by a use, with parameters too",
+          "[lang][lights]") {
   auto s = load(R"XML(<light id="key" position="1 1 1"/>
     <use ref="key" transform="translate(0 10 0)"/>
     <defs><light id="warm" position="0 3 0"><param name="c" value="1 0.8 0.6"/><param name="k" value="1"/></light></defs>
@@ -87,17 +89,20 @@ TEST_CASE("lang: a light with an id is placed again by a use, with parameters to
 }
 
 TEST_CASE("lang: a light inside a CSG operation is no operand", "[lang][lights]") {
-  auto s = load(R"XML(<difference><light position="0 5 0"/><box/><sphere radius="0.5"/></difference>)XML");
+  auto s = load(
+      R"XML(<difference><light position="0 5 0"/><box/><sphere radius="0.5"/></difference>)XML");
   CHECK(s->lights.size() == 1);
   ParseResult r = parse("<difference><light/></difference>");
   CHECK_FALSE(r.scene);
-  CHECK(messages(r).find("lights.xml:1:29: error: <difference> needs at least one child shape") != std::string::npos);
+  CHECK(messages(r).find("lights.xml:1:29: error: <difference> needs at least one child shape") !=
+        std::string::npos);
 }
 
 TEST_CASE("lang: lights placed through uses of uses are limited", "[lang][lights]") {
   // Ten lights, ten uses of them, ten uses of those ... seven levels: 10^8 lights from a
   // small file.
-  std::string body = "<defs><group id=\"l0\"><repeat var=\"i\" count=\"10\"><light/></repeat></group>";
+  std::string body =
+      "<defs><group id=\"l0\"><repeat var=\"i\" count=\"10\"><light/></repeat></group>";
   for (int k = 1; k <= 7; ++k)
     body += "<group id=\"l" + std::to_string(k) + "\"><repeat var=\"i\" count=\"10\"><use ref=\"l" +
             std::to_string(k - 1) + "\"/></repeat></group>";
@@ -107,7 +112,8 @@ TEST_CASE("lang: lights placed through uses of uses are limited", "[lang][lights
   CHECK(messages(r).find("error: the scene places more than 10000000 lights") != std::string::npos);
 }
 
-TEST_CASE("placedLight maps position as a point and directions and axes as vectors", "[scenegraph][lights]") {
+TEST_CASE("placedLight maps position as a point and directions and axes as vectors",
+          "[scenegraph][lights]") {
   Light l;
   l.type = LightType::Area;
   l.position = Vec3(1, 0, 0);
@@ -122,7 +128,8 @@ TEST_CASE("placedLight maps position as a point and directions and axes as vecto
   CHECK(p.v == Vec3(0, 3, 0));
 }
 
-TEST_CASE("lang: an area light with spot attributes is spot-shaped, its cone placed with it", "[lang][lights]") {
+TEST_CASE("lang: an area light with spot attributes is spot-shaped, its cone placed with it",
+          "[lang][lights]") {
   auto s = load(R"XML(<defs><group id="lamp">
       <light type="area" position="0 0 0" u="0.6 0 0" v="0 0 0.6" samples="2 2" direction="0 -1 0"
              angle="15" inner="6"/>

@@ -34,12 +34,16 @@ TEST_CASE("lang: shadows=\"false\" on shapes, groups, CSG, meshes and use", "[la
   CHECK_FALSE(top[5]->shadows);
 }
 
-TEST_CASE("lang: shadows=\"false\" inside a difference is a warning naming the operation", "[lang][no-shadow]") {
-  ParseResult r = parse("<difference><box/><group><sphere radius=\"0.5\" shadows=\"false\"/></group></difference>");
+TEST_CASE("lang: shadows=\"false\" inside a difference is a warning naming the operation",
+          "[lang][no-shadow]") {
+  ParseResult r = parse(
+      "<difference><box/><group><sphere radius=\"0.5\" shadows=\"false\"/></group></difference>");
   REQUIRE(r.scene);
   REQUIRE(r.diagnostics.all().size() == 1);
-  CHECK(r.diagnostics.all()[0].str() ==
-        "shadows.xml:1:54: warning: <sphere> shadows=\"false\" has no effect inside <difference> (at "
-        "shadows.xml:1:29), which casts its shadow as a whole, as in POV-Ray; put shadows=\"false\" on the "
-        "<difference>");
+  CHECK(
+      r.diagnostics.all()[0].str() ==
+      "shadows.xml:1:54: warning: <sphere> shadows=\"false\" has no effect inside <difference> (at "
+      "shadows.xml:1:29), which casts its shadow as a whole, as in POV-Ray; put shadows=\"false\" "
+      "on the "
+      "<difference>");
 }

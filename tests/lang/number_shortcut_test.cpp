@@ -17,8 +17,9 @@ namespace {
 struct Fixture {
   Diagnostics diags;
   Parameters params{{{"d", "0.25"}}, diags};
-  SourceFile file{"t.xml", ".", "<scene version=\"1\"><param name=\"r\" value=\"1.5\"/>"
-                                 "<param name=\"v\" value=\"1 2 3\"/></scene>"};
+  SourceFile file{"t.xml", ".",
+                  "<scene version=\"1\"><param name=\"r\" value=\"1.5\"/>"
+                  "<param name=\"v\" value=\"1 2 3\"/></scene>"};
   Fixture() {
     REQUIRE_FALSE(file.parse());
     for (pugi::xml_node p = file.root().child("param"); p; p = p.next_sibling("param"))
@@ -28,10 +29,11 @@ struct Fixture {
 
 }  // namespace
 
-TEST_CASE("the numeric shortcut agrees with substitution and the value syntax", "[lang][expressions]") {
+TEST_CASE("the numeric shortcut agrees with substitution and the value syntax",
+          "[lang][expressions]") {
   Fixture f;
-  const char* threes[] = {"${r} 0 ${2*r}", "1, ${r}, 3", "  ${r*1e-3}\t${-r} ${d} ", "${0.1+0.2} 1e3 -0",
-                          "${pi} ${e} ${sqrt(2)}"};
+  const char* threes[] = {"${r} 0 ${2*r}", "1, ${r}, 3", "  ${r*1e-3}\t${-r} ${d} ",
+                          "${0.1+0.2} 1e3 -0", "${pi} ${e} ${sqrt(2)}"};
   for (const char* raw : threes) {
     INFO(raw);
     double fast[3];
@@ -51,10 +53,10 @@ TEST_CASE("the numeric shortcut declines what the textual way must judge", "[lan
   Fixture f;
   // Wrong counts, separators the value syntax refuses, glued tokens, $name without braces,
   // a parameter that is not one number, values out of the accepted range, errors.
-  const char* declined[] = {"${r} 0",        "${r} 0 0 0",   "1,,${r},3", ",1 ${r} 3", "1 ${r} 3,",
-                            "1${r} 0",       "$r 0 0",       "${v}",      "${1e31} 0 0", "${1e-31} 0 0",
-                            "${1/0} 0 0",    "${rr} 0 0",    "+1 ${r} 0", "${r}x 0 0",  "${r",
-                            "inf ${r} 0"};
+  const char* declined[] = {"${r} 0",      "${r} 0 0 0",   "1,,${r},3",  ",1 ${r} 3",
+                            "1 ${r} 3,",   "1${r} 0",      "$r 0 0",     "${v}",
+                            "${1e31} 0 0", "${1e-31} 0 0", "${1/0} 0 0", "${rr} 0 0",
+                            "+1 ${r} 0",   "${r}x 0 0",    "${r",        "inf ${r} 0"};
   for (const char* raw : declined) {
     INFO(raw);
     double out[3];

@@ -12,13 +12,16 @@ namespace {
 std::string chain(int n) {
   std::string xml = "<scene version=\"1\"><camera/>\n";
   for (int i = 0; i < n; ++i)
-    xml += "<param name=\"p" + std::to_string(i) + "\" value=\"${p" + std::to_string(i + 1) + "}\"/>\n";
-  xml += "<param name=\"p" + std::to_string(n) + "\" value=\"3\"/>\n<sphere radius=\"${p0*0.5}\"/></scene>\n";
+    xml += "<param name=\"p" + std::to_string(i) + "\" value=\"${p" + std::to_string(i + 1) +
+           "}\"/>\n";
+  xml += "<param name=\"p" + std::to_string(n) +
+         "\" value=\"3\"/>\n<sphere radius=\"${p0*0.5}\"/></scene>\n";
   return xml;
 }
 }  // namespace
 
-TEST_CASE("a chain of parameters resolves up to its limit and is refused beyond it", "[lang][parameters]") {
+TEST_CASE("a chain of parameters resolves up to its limit and is refused beyond it",
+          "[lang][parameters]") {
   ParseResult ok = parseSceneString(chain(900), "chain.xml");
   REQUIRE(ok.scene);
   CHECK(std::get<SphereSpec>(*ok.scene->root->children.at(0)->shape).radius == 1.5);

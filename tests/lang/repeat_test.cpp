@@ -4,11 +4,11 @@
 // ParseOptions::frame pick the parameters and the moment, and a repeat-made scene renders
 // exactly as the same scene written out by hand.
 #include "lang/parser.h"
-#include "valid_scene_loading.h"
 #include "povray/pov_export.h"
 #include "render/renderer.h"
 #include "render/scene_check.h"
 #include "scenegraph/world.h"
+#include "valid_scene_loading.h"
 
 #include "../render/scene_builder.h"
 
@@ -64,7 +64,8 @@ bool same(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z
 
 }  // namespace
 
-TEST_CASE("repeat: count 0 makes nothing, count N makes N instances with i = 0 .. N-1", "[lang][repeat]") {
+TEST_CASE("repeat: count 0 makes nothing, count N makes N instances with i = 0 .. N-1",
+          "[lang][repeat]") {
   auto s = load("repeat.xml");
   const Node& root = *s->root;
   // post0..2, grid, union, difference, use row, use post1: the count-0 repeat made nothing.
@@ -83,8 +84,9 @@ TEST_CASE("repeat: count 0 makes nothing, count N makes N instances with i = 0 .
   CHECK(countNodes(root) == 1 + 8 + 6 + 2 + 4);
 }
 
-TEST_CASE("repeat: nested repeats run the inner one per outer instance, counts come from expressions",
-          "[lang][repeat]") {
+TEST_CASE(
+    "repeat: nested repeats run the inner one per outer instance, counts come from expressions",
+    "[lang][repeat]") {
   auto s = load("repeat.xml");
   const Node& grid = child(*s->root, 3);
   CHECK(grid.id == "grid");
@@ -128,7 +130,8 @@ TEST_CASE("repeat: inside union, difference and defs, ids made per instance can 
   CHECK(child(root, 7).target == &child(root, 1));
 }
 
-TEST_CASE("if: a test that is not 0 instantiates the children, anywhere a repeat may stand", "[lang][if]") {
+TEST_CASE("if: a test that is not 0 instantiates the children, anywhere a repeat may stand",
+          "[lang][if]") {
   auto s = load("if.xml");
   const Node& root = *s->root;
   // Spheres 1, 3 and 5 (tests 1, show == 1 && 2 > 1, -0.5), then the group, the union, the
@@ -204,8 +207,9 @@ TEST_CASE("local params: -D sets only the top-level parameter, not the local one
   CHECK(radii(*r.scene->root) == std::vector<double>{1, 2, 6, 2, 1, 3, 4, 5, 1.5, 1});
 }
 
-TEST_CASE("parameterised use: the use's values hide the defaults, a use without them shares the node",
-          "[lang][use]") {
+TEST_CASE(
+    "parameterised use: the use's values hide the defaults, a use without them shares the node",
+    "[lang][use]") {
   auto s = load("parameterised_use.xml");
   const Node& root = *s->root;
   REQUIRE(s->defs.size() == 2);
@@ -246,7 +250,8 @@ TEST_CASE("parameterised use: the use's values hide the defaults, a use without 
   CHECK(sphere(ball).radius == 0.5);  // the definition keeps its default
 }
 
-TEST_CASE("parameterised use: its parameters are visible in its own attributes too", "[lang][use]") {
+TEST_CASE("parameterised use: its parameters are visible in its own attributes too",
+          "[lang][use]") {
   auto s = loadString(R"X(<scene version="1"><camera/>
     <defs><sphere id="ball" radius="$size"><param name="size" value="0.5"/></sphere></defs>
     <use ref="ball" transform="translate(${2 * size} 0 0)"><param name="size" value="0.25"/></use>
@@ -293,7 +298,8 @@ namespace {
 Vec3 moment(const Scene& s) { return sphere(child(*s.root, 0)).center; }
 }  // namespace
 
-TEST_CASE("animation: clock runs from clock-from to clock-to over frames 1..N", "[lang][animation]") {
+TEST_CASE("animation: clock runs from clock-from to clock-to over frames 1..N",
+          "[lang][animation]") {
   for (int f = 1; f <= 5; ++f) {
     ParseOptions o;
     o.frame = f;
@@ -308,7 +314,8 @@ TEST_CASE("animation: clock runs from clock-from to clock-to over frames 1..N", 
   }
 }
 
-TEST_CASE("animation: cyclic divides by N, so the last frame leads back to the first", "[lang][animation]") {
+TEST_CASE("animation: cyclic divides by N, so the last frame leads back to the first",
+          "[lang][animation]") {
   const std::string xml = R"(<scene version="1"><camera/>
     <animation frames="4" clock-from="0" clock-to="360" cyclic="true"/>
     <sphere center="${clock} ${frame} ${frames}"/></scene>)";
@@ -324,11 +331,13 @@ TEST_CASE("animation: cyclic divides by N, so the last frame leads back to the f
 
 TEST_CASE("animation: one frame has clock = clock-from, no <animation> is frame 1 of 1 at clock 0",
           "[lang][animation]") {
-  auto one = loadString(R"(<scene version="1"><camera/><animation frames="1" clock-from="0.75" clock-to="9"/>
+  auto one = loadString(
+      R"(<scene version="1"><camera/><animation frames="1" clock-from="0.75" clock-to="9"/>
     <sphere center="${clock} ${frame} ${frames}"/></scene>)");
   CHECK(one->clock == 0.75);
   CHECK(same(moment(*one), Vec3(0.75, 1, 1)));
-  auto none = loadString(R"(<scene version="1"><camera/><sphere center="${clock} ${frame} ${frames}"/></scene>)");
+  auto none = loadString(
+      R"(<scene version="1"><camera/><sphere center="${clock} ${frame} ${frames}"/></scene>)");
   CHECK_FALSE(none->animation.present);
   CHECK(none->frame == 1);
   CHECK(none->clock == 0);
@@ -351,7 +360,8 @@ TEST_CASE("animation: -D clock=0.25 and -D frame=3 render one moment", "[lang][a
   f.frame = 5;
   CHECK(load("animation.xml", f)->frame == 3);
   // Without <animation>, -D clock still sets the clock.
-  auto none = loadString(R"(<scene version="1"><camera/><sphere center="${clock} ${frame} ${frames}"/></scene>)", c);
+  auto none = loadString(
+      R"(<scene version="1"><camera/><sphere center="${clock} ${frame} ${frames}"/></scene>)", c);
   CHECK(same(moment(*none), Vec3(0.25, 1, 1)));
 }
 
@@ -383,7 +393,8 @@ Image renderString(const std::string& xml) {
 }
 }  // namespace
 
-TEST_CASE("repeat: a scene made by repeats renders exactly as the same scene written out", "[lang][repeat][render]") {
+TEST_CASE("repeat: a scene made by repeats renders exactly as the same scene written out",
+          "[lang][repeat][render]") {
   const std::string head = R"(<scene version="1">
   <render width="20" height="20" samples="1"/>
   <camera position="0 1 7" look-at="0 0.9 0"/>
@@ -422,7 +433,9 @@ TEST_CASE("repeat: a scene made by repeats renders exactly as the same scene wri
   INFO("lit pixels: " << lit);
   CHECK(lit > 40);
   std::string fewer = literal;
-  fewer.erase(fewer.find("  <sphere center=\"2 1.75 0\""), std::string("  <sphere center=\"2 1.75 0\" radius=\"0.875\" material=\"m\"/>\n").size());
+  fewer.erase(
+      fewer.find("  <sphere center=\"2 1.75 0\""),
+      std::string("  <sphere center=\"2 1.75 0\" radius=\"0.875\" material=\"m\"/>\n").size());
   CHECK_FALSE(test::sameBits(a, renderString(fewer)));
   // export-pov writes the expanded scene: the same file as for the scene written out, but
   // for the comments that say where each element stands in the source.
@@ -434,7 +447,8 @@ TEST_CASE("repeat: a scene made by repeats renders exactly as the same scene wri
       if (end == std::string::npos) end = pov.size();
       std::string line = pov.substr(start, end - start);
       size_t note = line.find("  // <");
-      if (note != std::string::npos && line.find("render.xml:", note) != std::string::npos) line.resize(note);
+      if (note != std::string::npos && line.find("render.xml:", note) != std::string::npos)
+        line.resize(note);
       out += line + "\n";
       start = end + 1;
     }

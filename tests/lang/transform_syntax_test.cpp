@@ -51,11 +51,13 @@ TEST_CASE("lang: rotations are right-handed and exact at quarter turns", "[lang]
   CHECK(apply(parsed("rotate-z(-90)"), Vec3(1, 0, 0)) == Vec3(0, -1, 0));
   CHECK(apply(parsed("rotate-z(450)"), Vec3(1, 0, 0)) == Vec3(0, 1, 0));
   CHECK(apply(parsed("rotate-x(180)"), Vec3(0, 1, 0)) == Vec3(0, -1, 0));
-  CHECK(apply(parsed("rotate(90, 0 0 5)"), Vec3(1, 0, 0)) == Vec3(0, 1, 0));  // the axis is normalised
+  CHECK(apply(parsed("rotate(90, 0 0 5)"), Vec3(1, 0, 0)) ==
+        Vec3(0, 1, 0));  // the axis is normalised
   CHECK(close(apply(parsed("rotate(120, 1 1 1)"), Vec3(1, 0, 0)), Vec3(0, 1, 0)));
   double h = std::sqrt(0.5);
   CHECK(close(apply(parsed("rotate-y(45)"), Vec3(1, 0, 0)), Vec3(h, 0, -h)));
-  CHECK(close(apply(parsed("rotate(30, 0 1 0)"), Vec3(1, 2, 3)), apply(parsed("rotate-y(30)"), Vec3(1, 2, 3))));
+  CHECK(close(apply(parsed("rotate(30, 0 1 0)"), Vec3(1, 2, 3)),
+              apply(parsed("rotate-y(30)"), Vec3(1, 2, 3))));
 }
 
 TEST_CASE("lang: matrix() takes 3 rows of 4 or 4 rows of 4, row-major", "[lang][transform]") {
@@ -68,7 +70,8 @@ TEST_CASE("lang: matrix() takes 3 rows of 4 or 4 rows of 4, row-major", "[lang][
   CHECK(a == b);
 }
 
-TEST_CASE("lang: separators: spaces and commas in arguments, spaces between operations", "[lang][transform]") {
+TEST_CASE("lang: separators: spaces and commas in arguments, spaces between operations",
+          "[lang][transform]") {
   Mat4 t = parsed("translate(1 2 3)");
   CHECK(parsed("translate(1,2,3)") == t);
   CHECK(parsed("translate( 1 , 2 ,3 )") == t);
@@ -100,7 +103,8 @@ TEST_CASE("lang: transform errors say what is wrong and where", "[lang][transfor
   r = failed("rotate(10, 0 0 0)");
   CHECK(r.error == "'rotate': the rotation axis must not be zero");
   r = failed("scale(1 0 1)");
-  CHECK(r.error == "the transform is singular (it flattens space, e.g. a zero scale) and cannot be inverted");
+  CHECK(r.error ==
+        "the transform is singular (it flattens space, e.g. a zero scale) and cannot be inverted");
   // Numbers below 1e-30 are refused (docs/security.md); allowed ones whose product
   // underflows to a zero matrix make a singular transform.
   r = failed("scale(1e-200)");

@@ -2,9 +2,9 @@
 // counts, every attribute's value, parameters, includes, defs/use, inherited materials
 // (through the World's instances) and world transforms against hand-computed matrices.
 #include "lang/parser.h"
-#include "valid_scene_loading.h"
 #include "scenegraph/scene_summary.h"
 #include "scenegraph/world.h"
+#include "valid_scene_loading.h"
 
 #include <catch2/catch.hpp>
 
@@ -112,22 +112,24 @@ TEST_CASE("lang: the contract's example scene parses into its graph", "[lang][va
   CHECK_FALSE(child(diff, 0).material);  // inherited, resolved by World
 
   SceneCounts c = countScene(*s);
-  CHECK(c.nodes == std::map<std::string, int>{{"box", 1}, {"difference", 1}, {"plane", 1}, {"sphere", 2}});
+  CHECK(c.nodes ==
+        std::map<std::string, int>{{"box", 1}, {"difference", 1}, {"plane", 1}, {"sphere", 2}});
   CHECK(c.instances == 4);
   CHECK(c.csgDepth == 1);
-  CHECK(sceneSummary(*s) ==
-        "scene: " + (validDir() / "basic.xml").string() + "\n"
-        "image: 640x480, 4 samples per pixel, max depth 5\n"
-        "cameras: 1 (pinhole: 1)\n"
-        "lights: 1 (point: 1)\n"
-        "materials: 3\n"
-        "nodes: 5 (box: 1, difference: 1, plane: 1, sphere: 2)\n"
-        "instances: 4\n"
-        "triangles: 0\n"
-        "csg depth: 1\n");
+  CHECK(sceneSummary(*s) == "scene: " + (validDir() / "basic.xml").string() +
+                                "\n"
+                                "image: 640x480, 4 samples per pixel, max depth 5\n"
+                                "cameras: 1 (pinhole: 1)\n"
+                                "lights: 1 (point: 1)\n"
+                                "materials: 3\n"
+                                "nodes: 5 (box: 1, difference: 1, plane: 1, sphere: 2)\n"
+                                "instances: 4\n"
+                                "triangles: 0\n"
+                                "csg depth: 1\n");
 }
 
-TEST_CASE("lang: every camera type keeps its own attributes and the common defaults", "[lang][valid]") {
+TEST_CASE("lang: every camera type keeps its own attributes and the common defaults",
+          "[lang][valid]") {
   auto s = load("cameras.xml");
   REQUIRE(s->cameras.size() == 9);
   const Camera& main = *s->findCamera("main");
@@ -174,7 +176,8 @@ TEST_CASE("lang: every camera type keeps its own attributes and the common defau
   CHECK(s->findCamera("") == &s->cameras[0]);
 }
 
-TEST_CASE("lang: lights: types, defaults, normalised directions, spot look-at, area grids", "[lang][valid]") {
+TEST_CASE("lang: lights: types, defaults, normalised directions, spot look-at, area grids",
+          "[lang][valid]") {
   auto s = load("lights.xml");
   REQUIRE(s->lights.size() == 6);
   const Light& point = s->lights[0];
@@ -217,7 +220,8 @@ TEST_CASE("lang: lights: types, defaults, normalised directions, spot look-at, a
   CHECK(s->lights[5].color == Color(0.5f));
 
   SceneCounts c = countScene(*s);
-  CHECK(c.lights == std::map<std::string, int>{{"area", 2}, {"directional", 1}, {"point", 1}, {"spot", 2}});
+  CHECK(c.lights ==
+        std::map<std::string, int>{{"area", 2}, {"directional", 1}, {"point", 1}, {"spot", 2}});
 }
 
 TEST_CASE("lang: materials: every attribute, textures and the texture defaults", "[lang][valid]") {
@@ -260,7 +264,8 @@ TEST_CASE("lang: materials: every attribute, textures and the texture defaults",
   const ImageTexture& tex = std::get<ImageTexture>(image.texture);
   CHECK(tex.path == fs::canonical(validDir() / "textures" / "dot.png").string());
   CHECK(tex.scale == Vec2(2, 3));
-  CHECK(std::get<ImageTexture>(s->materials[materialIndex(*s, "image1")].texture).scale == Vec2(4, 4));
+  CHECK(std::get<ImageTexture>(s->materials[materialIndex(*s, "image1")].texture).scale ==
+        Vec2(4, 4));
 
   const Material& empty = s->materials[materialIndex(*s, "empty")];
   CHECK(empty.diffuse == Color(0.0f));
@@ -309,7 +314,8 @@ TEST_CASE("lang: shapes: every attribute, with normals normalised on load", "[la
   CHECK_FALSE(tri2.normals);
 }
 
-TEST_CASE("lang: parameters: $name, ${name}, nested values, use before declaration, -D wins", "[lang][valid]") {
+TEST_CASE("lang: parameters: $name, ${name}, nested values, use before declaration, -D wins",
+          "[lang][valid]") {
   auto s = load("params.xml");
   CHECK(s->cameras[0].fov == 90.0);
   const Node& root = *s->root;
@@ -321,7 +327,8 @@ TEST_CASE("lang: parameters: $name, ${name}, nested values, use before declarati
   CHECK(spec<BoxSpec>(child(root, 1)).max == Vec3(0.75));
   CHECK(spec<TorusSpec>(child(root, 2)).major == 0.755);  // "${r}5"
   CHECK(spec<TorusSpec>(child(root, 2)).minor == 0.25);
-  CHECK(close(child(root, 2).parentFromNode, rows({0, 0, 1, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 0, 1})));
+  CHECK(close(child(root, 2).parentFromNode,
+              rows({0, 0, 1, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 0, 1})));
 
   ParseOptions d;
   d.defines = {{"r", "2"}, {"turn", "45"}};
@@ -340,8 +347,10 @@ TEST_CASE("lang: parameters: $name, ${name}, nested values, use before declarati
   CHECK(r.diagnostics.all()[0].message == "-D radius is not used by the scene");
 }
 
-TEST_CASE("lang: includes: parameters, materials, lights and defs of included files, a diamond is inserted once",
-          "[lang][valid]") {
+TEST_CASE(
+    "lang: includes: parameters, materials, lights and defs of included files, a diamond is "
+    "inserted once",
+    "[lang][valid]") {
   auto s = load("include_main.xml");
   REQUIRE(s->materials.size() == 3);  // default, gold, silver: materials.xml once
   REQUIRE(s->lights.size() == 1);
@@ -360,7 +369,8 @@ TEST_CASE("lang: includes: parameters, materials, lights and defs of included fi
   CHECK(use.target->loc.col == 5);
 }
 
-TEST_CASE("lang: defs and use: targets, forward references, chains, world placement", "[lang][valid]") {
+TEST_CASE("lang: defs and use: targets, forward references, chains, world placement",
+          "[lang][valid]") {
   auto s = load("defs_use.xml");
   const Node& root = *s->root;
   REQUIRE(root.children.size() == 7);
@@ -377,14 +387,15 @@ TEST_CASE("lang: defs and use: targets, forward references, chains, world placem
   const auto& inst = world.instances();
   REQUIRE(inst.size() == 7);
   auto origin = [&](size_t i) { return inst[i]->transform().pointToWorld(Vec3(0.0)); };
-  CHECK(origin(0) == Vec3(0, 0, 0));   // ball
-  CHECK(origin(1) == Vec3(5, 1, 0));   // column: its own translate, then the use's
-  CHECK(origin(2) == Vec3(0, 0, 3));   // ball again
-  CHECK(origin(3) == Vec3(0, 0, 0));   // later, through the forward use
-  CHECK(origin(4) == Vec3(0, 0, 0));   // later itself
-  CHECK(origin(5) == Vec3(0, 1, 0));   // again
-  CHECK(origin(6) == Vec3(0, 2, 0));   // again, scaled by 2 after its translate
-  CHECK(inst[6]->transform().worldFromObject() == rows({2, 0, 0, 0, 0, 2, 0, 2, 0, 0, 2, 0, 0, 0, 0, 1}));
+  CHECK(origin(0) == Vec3(0, 0, 0));  // ball
+  CHECK(origin(1) == Vec3(5, 1, 0));  // column: its own translate, then the use's
+  CHECK(origin(2) == Vec3(0, 0, 3));  // ball again
+  CHECK(origin(3) == Vec3(0, 0, 0));  // later, through the forward use
+  CHECK(origin(4) == Vec3(0, 0, 0));  // later itself
+  CHECK(origin(5) == Vec3(0, 1, 0));  // again
+  CHECK(origin(6) == Vec3(0, 2, 0));  // again, scaled by 2 after its translate
+  CHECK(inst[6]->transform().worldFromObject() ==
+        rows({2, 0, 0, 0, 0, 2, 0, 2, 0, 0, 2, 0, 0, 0, 0, 1}));
   CHECK(&inst[1]->shape() == &inst[5]->shape());  // one shape for every use of a node
 }
 
@@ -436,7 +447,8 @@ TEST_CASE("lang: base= chains copy and override, default= replaces the default m
   CHECK(inl.id.empty());
 }
 
-TEST_CASE("lang: materials are inherited from the nearest group, CSG node or use", "[lang][valid]") {
+TEST_CASE("lang: materials are inherited from the nearest group, CSG node or use",
+          "[lang][valid]") {
   auto s = load("inheritance.xml");
   uint32_t brass = materialIndex(*s, "brass"), glass = materialIndex(*s, "glass"),
            stone = materialIndex(*s, "stone");
@@ -451,20 +463,23 @@ TEST_CASE("lang: materials are inherited from the nearest group, CSG node or use
   World world(*s);
   std::vector<uint32_t> tags;
   for (const Instance* i : world.instances()) tags.push_back(i->tag());
-  CHECK(tags == std::vector<uint32_t>{0,                       // bare sphere: the default
-                                      brass, glass, 4, brass,  // group: sphere, box, cylinder, torus
-                                      stone, glass,            // difference: box, sphere
-                                      stone, glass,            // use with material
-                                      0, glass,                // use without
-                                      5, glass});              // use with inline material
+  CHECK(tags == std::vector<uint32_t>{0,  // bare sphere: the default
+                                      brass, glass, 4,
+                                      brass,         // group: sphere, box, cylinder, torus
+                                      stone, glass,  // difference: box, sphere
+                                      stone, glass,  // use with material
+                                      0, glass,      // use without
+                                      5, glass});    // use with inline material
 }
 
-TEST_CASE("lang: world transforms and normal matrices match hand-computed matrices", "[lang][valid]") {
+TEST_CASE("lang: world transforms and normal matrices match hand-computed matrices",
+          "[lang][valid]") {
   auto s = load("transforms.xml");
   // The graph keeps each node's own transform, in the order written.
   const Node& root = *s->root;
   CHECK(child(root, 0).parentFromNode == rows({0, 0, 1, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 0, 1}));
-  CHECK(child(child(root, 0), 0).parentFromNode == rows({1, 0, 0, 3, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}));
+  CHECK(child(child(root, 0), 0).parentFromNode ==
+        rows({1, 0, 0, 3, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}));
 
   World world(*s);
   const auto& inst = world.instances();
@@ -501,7 +516,8 @@ TEST_CASE("lang: world transforms and normal matrices match hand-computed matric
   CHECK(close(world_(7), rows({0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 1})));
 }
 
-TEST_CASE("lang: meshes: inline closed meshes are solids, normals and uvs kept, files read once", "[lang][valid]") {
+TEST_CASE("lang: meshes: inline closed meshes are solids, normals and uvs kept, files read once",
+          "[lang][valid]") {
   auto s = load("meshes.xml");
   const Node& root = *s->root;
   const Node& oct = child(child(root, 0), 1);
@@ -544,7 +560,8 @@ TEST_CASE("lang: CSG: nested operations over groups, unions, uses and planes", "
   REQUIRE(diff.children.size() == 3);
   CHECK(child(diff, 0).kind == NodeKind::Intersection);
   CHECK(child(diff, 1).isSolid());  // a union of a sphere and a group of solids
-  CHECK_FALSE(child(*s->root, 1).isSolid());  // a union of a disc and a triangle (allowed outside CSG)
+  CHECK_FALSE(
+      child(*s->root, 1).isSolid());  // a union of a disc and a triangle (allowed outside CSG)
   World world(*s);
   CHECK(world.instances().size() == 11);
 }
@@ -557,13 +574,17 @@ TEST_CASE("lang: warnings do not refuse a scene", "[lang][valid]") {
   CHECK_FALSE(r.diagnostics.hasErrors());
   CHECK(r.diagnostics.all()[0].str() ==
         (validDir() / "warnings.xml").string() +
-            ":3:3: warning: <camera>: 'fov' has no effect on cameras of type orthographic (their 'width' frames the image)");
-  CHECK_THAT(r.diagnostics.all()[1].str(), Catch::EndsWith(":4:9: warning: <sphere> in <defs> has no id, so no <use> can instantiate it"));
+            ":3:3: warning: <camera>: 'fov' has no effect on cameras of type orthographic (their "
+            "'width' frames the image)");
+  CHECK_THAT(r.diagnostics.all()[1].str(),
+             Catch::EndsWith(
+                 ":4:9: warning: <sphere> in <defs> has no id, so no <use> can instantiate it"));
   CHECK(spec<SphereSpec>(child(*r.scene->root, 0)).radius == 1.0);
 }
 
 TEST_CASE("lang: in-memory scenes: defaults of an almost empty scene", "[lang][valid]") {
-  ParseResult r = parseSceneString("<?xml version=\"1.0\"?>\n<scene version=\"1\"><camera/></scene>", "mem.xml");
+  ParseResult r = parseSceneString(
+      "<?xml version=\"1.0\"?>\n<scene version=\"1\"><camera/></scene>", "mem.xml");
   REQUIRE(r.scene);
   const Scene& s = *r.scene;
   CHECK(s.file == "mem.xml");
@@ -586,10 +607,12 @@ TEST_CASE("lang: in-memory scenes: defaults of an almost empty scene", "[lang][v
   CHECK(s.root->children.empty());
 
   const std::string two =
-      "<scene version=\"1\"><render epsilon=\"auto\" background=\"#000000\"/><camera far=\"+inf\"/><render/></scene>";
+      "<scene version=\"1\"><render epsilon=\"auto\" background=\"#000000\"/><camera "
+      "far=\"+inf\"/><render/></scene>";
   ParseResult e = parseSceneString(two, "two.xml");
   CHECK_FALSE(e.scene);
   REQUIRE(e.diagnostics.errorCount() == 1);
-  CHECK(e.diagnostics.all()[0].str() == "two.xml:1:" + std::to_string(two.find("<render/>") + 1) +
-                                            ": error: <render> is given twice (first at two.xml:1:20)");
+  CHECK(e.diagnostics.all()[0].str() ==
+        "two.xml:1:" + std::to_string(two.find("<render/>") + 1) +
+            ": error: <render> is given twice (first at two.xml:1:20)");
 }

@@ -1,8 +1,8 @@
 // The value syntax: numbers, lists, vectors, colours (#rrggbb through the exact sRGB
 // curve), booleans, integers; and the did-you-mean distance.
+#include "lang/values.h"
 #include "lang/color_names.h"
 #include "lang/did_you_mean.h"
-#include "lang/values.h"
 
 #include <catch2/catch.hpp>
 
@@ -10,7 +10,8 @@
 
 using namespace lucent;
 
-TEST_CASE("lang: numbers are decimal floats without junk, inf only where allowed", "[lang][values]") {
+TEST_CASE("lang: numbers are decimal floats without junk, inf only where allowed",
+          "[lang][values]") {
   CHECK(*parseNumber("1") == 1.0);
   CHECK(*parseNumber("-2.5") == -2.5);
   CHECK(*parseNumber("1e-3") == 1e-3);
@@ -40,10 +41,13 @@ TEST_CASE("lang: vectors are three numbers separated by spaces and/or a comma", 
   CHECK(parseVector("1,,2,3").error == "two ',' without a value between them in '1,,2,3'");
   CHECK(parseVector(",1 2 3").error == "unexpected ',' before the first value in ',1 2 3'");
   CHECK(parseVector("1 2 3,").error == "unexpected ',' after the last value in '1 2 3,'");
-  CHECK(parseVector("1 2 inf").error == "expected a finite number, got 'inf' (inf is allowed only for distances that may be infinite)");
+  CHECK(parseVector("1 2 inf").error ==
+        "expected a finite number, got 'inf' (inf is allowed only for distances that may be "
+        "infinite)");
 }
 
-TEST_CASE("lang: #rrggbb colours are decoded to linear with the exact sRGB curve", "[lang][values]") {
+TEST_CASE("lang: #rrggbb colours are decoded to linear with the exact sRGB curve",
+          "[lang][values]") {
   auto hex = [](const char* t) {
     auto c = parseColor(t);
     REQUIRE(c);
@@ -77,9 +81,12 @@ TEST_CASE("lang: colours of three numbers are linear, one number is grey", "[lan
   REQUIRE(grey);
   CHECK(grey->color == Color(0.5f));
   CHECK(grey->scalar);
-  CHECK(parseColor("1 0").error == "expected a colour (3 numbers, 1 number for grey, #rrggbb or a CSS colour name), got 2 numbers ('1 0')");
+  CHECK(parseColor("1 0").error ==
+        "expected a colour (3 numbers, 1 number for grey, #rrggbb or a CSS colour name), got 2 "
+        "numbers ('1 0')");
   // Beyond float range, and beyond the 1e30 limit of every number (docs/security.md).
-  CHECK(parseColor("1e39").error == "the number '1e39' is too large (the limit is 1e30 in magnitude)");
+  CHECK(parseColor("1e39").error ==
+        "the number '1e39' is too large (the limit is 1e30 in magnitude)");
 }
 
 TEST_CASE("lang: CSS colour names are sRGB like #rrggbb, in any case", "[lang][values]") {
@@ -102,7 +109,8 @@ TEST_CASE("lang: CSS colour names are sRGB like #rrggbb, in any case", "[lang][v
   CHECK(parseColor("redd").error ==
         "unknown colour name 'redd' (did you mean 'red'?); a colour is 3 numbers, 1 number "
         "for grey, #rrggbb or a CSS colour name");
-  CHECK(parseColor("midnigthblue").error.find("(did you mean 'midnightblue'?)") != std::string::npos);
+  CHECK(parseColor("midnigthblue").error.find("(did you mean 'midnightblue'?)") !=
+        std::string::npos);
   CHECK(parseColor("xyzzyq").error ==
         "unknown colour name 'xyzzyq'; a colour is 3 numbers, 1 number for grey, #rrggbb or a "
         "CSS colour name");
@@ -116,7 +124,8 @@ TEST_CASE("lang: integers, booleans", "[lang][values]") {
   CHECK(*parseInteger(" +3 ") == 3);
   CHECK(parseInteger("640.0").error == "expected a whole number, got '640.0'");
   CHECK(parseInteger("1e3").error == "expected a whole number, got '1e3'");
-  CHECK(parseInteger("99999999999999999999").error == "the number '99999999999999999999' is too large");
+  CHECK(parseInteger("99999999999999999999").error ==
+        "the number '99999999999999999999' is too large");
   CHECK(*parseIntegerList("0 1, 2") == std::vector<long long>{0, 1, 2});
   CHECK(*parseBool("true"));
   CHECK_FALSE(*parseBool(" false "));

@@ -47,15 +47,18 @@ const std::map<std::string, Outcome> kPinned = {
     {"OBJ/empty_mat.obj", Loads{450, 256, true, true, false}},
     {"OBJ/multiple_spaces.obj", Loads{3, 1, false, false, false}},
     {"OBJ/number_formats.obj", Refused{"OBJ line 11: '3.1+e2' is not a finite number"}},
-    {"OBJ/point_cloud.obj", Refused{"the OBJ file has no faces ('f' statements); points and lines have no surface"}},
+    {"OBJ/point_cloud.obj",
+     Refused{"the OBJ file has no faces ('f' statements); points and lines have no surface"}},
     {"OBJ/regr01.obj", Loads{1382, 2703, false, false, false}},
     // A quad plus the two triangles that cover it: duplicates merge into one flat open quad.
     {"OBJ/regr_3429812.obj", Loads{4, 2, false, false, false}},
     {"OBJ/space_in_material_name.obj", Loads{64, 60, false, true, false}},
     {"OBJ/spider.obj", Loads{894, 1312, false, false, true}},
-    {"OBJ/testline.obj", Refused{"the OBJ file has no faces ('f' statements); points and lines have no surface"}},
+    {"OBJ/testline.obj",
+     Refused{"the OBJ file has no faces ('f' statements); points and lines have no surface"}},
     {"OBJ/testmixed.obj", Loads{8, 12, true, false, false}},
-    {"OBJ/testpoints.obj", Refused{"the OBJ file has no faces ('f' statements); points and lines have no surface"}},
+    {"OBJ/testpoints.obj",
+     Refused{"the OBJ file has no faces ('f' statements); points and lines have no surface"}},
     {"OFF/Cube.off", Loads{8, 12, true, false, false}},
     {"OFF/Wuson.off", Loads{2126, 3732, false, false, false}},
     {"OFF/invalid.off", Refused{"OFF line 7: the face announces 2 vertices but lists 1"}},
@@ -65,9 +68,12 @@ const std::map<std::string, Outcome> kPinned = {
     {"PLY/cube_binary.ply", Loads{8, 12, true, false, false}},
     {"PLY/cube_uv.ply", Loads{24, 12, true, true, true}},
     {"PLY/float-color.ply", Loads{3, 1, false, false, false}},
-    {"PLY/issue623.ply", Refused{"the PLY header declares no 'face' element (a point cloud has no surface)"}},
-    {"PLY/points.ply", Refused{"the PLY header declares no 'face' element (a point cloud has no surface)"}},
-    {"PLY/pond.0.ply", Refused{"the PLY header declares no 'face' element (a point cloud has no surface)"}},
+    {"PLY/issue623.ply",
+     Refused{"the PLY header declares no 'face' element (a point cloud has no surface)"}},
+    {"PLY/points.ply",
+     Refused{"the PLY header declares no 'face' element (a point cloud has no surface)"}},
+    {"PLY/pond.0.ply",
+     Refused{"the PLY header declares no 'face' element (a point cloud has no surface)"}},
     {"STL/3DSMaxExport.STL", Loads{1074, 2000, false, false, false}},
     {"STL/Spider_ascii.stl", Loads{722, 1312, false, false, false}},
     {"STL/Spider_binary.stl", Loads{722, 1312, false, false, false}},
@@ -76,11 +82,13 @@ const std::map<std::string, Outcome> kPinned = {
     {"STL/triangle.stl", Loads{3, 1, false, false, false}},
     {"STL/triangle_with_empty_solid.stl", Loads{3, 1, false, false, false}},
     {"STL/triangle_with_two_solids.stl", Loads{6, 2, false, false, false}},
-    {"invalid/OutOfMemory.off", Refused{"the OFF header count '353535235358' is not a number the reader can hold"}},
+    {"invalid/OutOfMemory.off",
+     Refused{"the OFF header count '353535235358' is not a number the reader can hold"}},
     {"invalid/empty.obj", Refused{"the file is empty"}},
     {"invalid/empty.off", Refused{"the file is empty"}},
     {"invalid/empty.ply", Refused{"the file is empty"}},
-    {"invalid/malformed.obj", Refused{"OBJ line 28: vertex index 0 is invalid (OBJ counts from 1)"}},
+    {"invalid/malformed.obj",
+     Refused{"OBJ line 28: vertex index 0 is invalid (OBJ counts from 1)"}},
     {"invalid/malformed2.obj", Loads{8, 10, false, false, false}},
 };
 
@@ -89,7 +97,8 @@ std::set<std::string> meshFilesUnder(const std::filesystem::path& root) {
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
     if (!entry.is_regular_file()) continue;
     std::string ext = entry.path().extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".stl")
       files.insert(std::filesystem::relative(entry.path(), root).generic_string());
   }
@@ -98,11 +107,13 @@ std::set<std::string> meshFilesUnder(const std::filesystem::path& root) {
 
 }  // namespace
 
-TEST_CASE("every assimp test model loads or is refused with a reason, as pinned", "[mesh][assimp]") {
+TEST_CASE("every assimp test model loads or is refused with a reason, as pinned",
+          "[mesh][assimp]") {
   if (!std::filesystem::is_directory(kModels))
-    FAIL(fmt::format("{} is missing: run scripts/install-deps (it installs the Debian package "
-                     "assimp-testmodels)",
-                     kModels));
+    FAIL(
+        fmt::format("{} is missing: run scripts/install-deps (it installs the Debian package "
+                    "assimp-testmodels)",
+                    kModels));
   const std::set<std::string> found = meshFilesUnder(kModels);
   for (const auto& [file, outcome] : kPinned) {
     (void)outcome;
@@ -123,10 +134,10 @@ TEST_CASE("every assimp test model loads or is refused with a reason, as pinned"
       refusal = e.what();
     }
     if (mesh) {
-      std::cout << fmt::format("  loads    {:<38} {:>5} positions {:>5} triangles{}{}{}\n", file,
-                               mesh->positions.size(), mesh->triangles.size(),
-                               mesh->closed ? ", closed" : "", mesh->normals.empty() ? "" : ", normals",
-                               mesh->uvs.empty() ? "" : ", uvs");
+      std::cout << fmt::format(
+          "  loads    {:<38} {:>5} positions {:>5} triangles{}{}{}\n", file, mesh->positions.size(),
+          mesh->triangles.size(), mesh->closed ? ", closed" : "",
+          mesh->normals.empty() ? "" : ", normals", mesh->uvs.empty() ? "" : ", uvs");
       requireWellFormed(*mesh);
       if (mesh->closed) {  // outward: positive volume, or zero for a flat closed mesh
         Vec3 lo(kInf), hi(-kInf);

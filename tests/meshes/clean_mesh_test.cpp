@@ -1,8 +1,8 @@
 // The fast path of mesh loading (meshes/clean_mesh.h): it must take exactly the clean
 // closed soups and hand everything else back to CGAL.
 #include "meshes/clean_mesh.h"
-#include "meshes/mesh_repair.h"
 #include "../primitives/test_meshes.h"
+#include "meshes/mesh_repair.h"
 
 #include <catch2/catch.hpp>
 
@@ -144,7 +144,7 @@ TEST_CASE("clean mesh: vertices of very high valence", "[primitives][mesh]") {
   Triangles t;
   for (uint32_t i = 0; i < N; ++i) {
     const uint32_t j = (i + 1) % N;
-    t.push_back({top, i, j});     // counter-clockwise seen from above: outward
+    t.push_back({top, i, j});  // counter-clockwise seen from above: outward
     t.push_back({bottom, j, i});
   }
   auto out = cleanClosedMesh(points, t);

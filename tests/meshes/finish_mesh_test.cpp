@@ -8,8 +8,10 @@ using namespace lucent::meshtest;
 
 namespace {
 
-const Vec3 kCube[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-const uint32_t kQuads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}};
+const Vec3 kCube[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                       {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+const uint32_t kQuads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                               {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}};
 const Vec3 kFaceNormal[6] = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 0, 0}};
 
 // The unit cube as 8 positions and 12 triangles, outward unless `insideOut`.
@@ -55,7 +57,8 @@ TEST_CASE("a single inline triangle is an open surface", "[mesh]") {
   CHECK_FALSE(m.closed);
   REQUIRE(m.triangles.size() == 1);
   const auto& t = m.triangles[0];  // winding kept: normal +z
-  CHECK(glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]).z > 0);
+  CHECK(glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]).z >
+        0);
 }
 
 TEST_CASE("degenerate inline triangles are dropped", "[mesh]") {
@@ -75,14 +78,16 @@ TEST_CASE("an inline mesh with no usable triangle is refused", "[mesh]") {
   MeshData collinear;
   collinear.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
   collinear.triangles = {{0, 1, 2}};
-  CHECK_THROWS_MATCHES(finishMesh(collinear), MeshError,
-                       Catch::Message("no usable triangle: all 1 faces are degenerate (zero area)"));
+  CHECK_THROWS_MATCHES(
+      finishMesh(collinear), MeshError,
+      Catch::Message("no usable triangle: all 1 faces are degenerate (zero area)"));
 
   MeshData repeated;
   repeated.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   repeated.triangles = {{0, 0, 1}, {2, 2, 2}};
-  CHECK_THROWS_MATCHES(finishMesh(repeated), MeshError,
-                       Catch::Message("no usable face: none of the 2 faces has three distinct vertices"));
+  CHECK_THROWS_MATCHES(
+      finishMesh(repeated), MeshError,
+      Catch::Message("no usable face: none of the 2 faces has three distinct vertices"));
 
   MeshData empty;
   empty.positions = {{0, 0, 0}};
@@ -92,8 +97,9 @@ TEST_CASE("an inline mesh with no usable triangle is refused", "[mesh]") {
 TEST_CASE("inline indices and coordinates are validated", "[mesh]") {
   MeshData outOfRange = cube();
   outOfRange.triangles[3] = {0, 1, 9};
-  CHECK_THROWS_MATCHES(finishMesh(outOfRange), MeshError,
-                       Catch::Message("triangle 3 (counting from 0) uses position 9, but there are 8 positions"));
+  CHECK_THROWS_MATCHES(
+      finishMesh(outOfRange), MeshError,
+      Catch::Message("triangle 3 (counting from 0) uses position 9, but there are 8 positions"));
 
   MeshData notFinite = cube();
   notFinite.positions[5].y = std::nan("");
@@ -145,7 +151,8 @@ TEST_CASE("inline per-face normals survive the merge that decides closedness", "
   CHECK(m.triangles.size() == 12);
   CHECK(signedVolume(m) == Approx(1.0).margin(1e-12));
   for (const auto& t : m.triangles) {
-    const Vec3 ng = glm::normalize(glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]));
+    const Vec3 ng = glm::normalize(
+        glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]));
     for (uint32_t i : t) {
       CHECK(glm::length(m.normals[i] - ng) < 1e-12);
       const int face = static_cast<int>(m.uvs[i].y);  // uv.y carries the face number

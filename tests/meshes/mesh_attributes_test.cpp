@@ -44,7 +44,8 @@ const FileVertex& fileVertexAt(const MeshData& m, uint32_t i, const std::vector<
   return *found;
 }
 
-void requireAttributesOf(const MeshData& m, const std::vector<FileVertex>& file, bool normals, bool uvs) {
+void requireAttributesOf(const MeshData& m, const std::vector<FileVertex>& file, bool normals,
+                         bool uvs) {
   requireWellFormed(m);
   REQUIRE(m.normals.empty() == !normals);
   REQUIRE(m.uvs.empty() == !uvs);
@@ -55,18 +56,21 @@ void requireAttributesOf(const MeshData& m, const std::vector<FileVertex>& file,
   }
 }
 
-std::string asciiPly(const std::vector<FileVertex>& vs, const std::vector<std::array<int, 3>>& faces,
-                     const std::string& uvNames, bool colours) {
+std::string asciiPly(const std::vector<FileVertex>& vs,
+                     const std::vector<std::array<int, 3>>& faces, const std::string& uvNames,
+                     bool colours) {
   std::ostringstream out;
   out << "ply\nformat ascii 1.0\ncomment written by mesh_attributes_test\n"
-      << "element vertex " << vs.size() << "\nproperty float x\nproperty float y\nproperty float z\n";
+      << "element vertex " << vs.size()
+      << "\nproperty float x\nproperty float y\nproperty float z\n";
   if (colours) out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
   out << "property float nx\nproperty float ny\nproperty float nz\n";
   std::istringstream names(uvNames);
   std::string u, v;
   names >> u >> v;
   out << "property float " << u << "\nproperty float " << v << "\n";
-  out << "element face " << faces.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  out << "element face " << faces.size()
+      << "\nproperty list uchar int vertex_indices\nend_header\n";
   for (const FileVertex& x : vs) {
     out << x.p.x << ' ' << x.p.y << ' ' << x.p.z << ' ';
     if (colours) out << "255 128 0 ";
@@ -84,7 +88,8 @@ void put(std::string& bytes, T value) {  // little-endian on the machines Lucent
 }
 
 // Binary little-endian, positions and normals as double, uvs as float named texture_u/v.
-std::string binaryPly(const std::vector<FileVertex>& vs, const std::vector<std::array<int, 3>>& faces) {
+std::string binaryPly(const std::vector<FileVertex>& vs,
+                      const std::vector<std::array<int, 3>>& faces) {
   std::string bytes = fmt::format(
       "ply\nformat binary_little_endian 1.0\nelement vertex {}\n"
       "property double x\nproperty double y\nproperty double z\n"
@@ -107,17 +112,20 @@ std::string binaryPly(const std::vector<FileVertex>& vs, const std::vector<std::
 
 }  // namespace
 
-TEST_CASE("PLY vertex normals and texture coordinates are kept, ASCII and binary", "[mesh][attributes]") {
+TEST_CASE("PLY vertex normals and texture coordinates are kept, ASCII and binary",
+          "[mesh][attributes]") {
   TempDir dir;
   for (const char* names : {"s t", "u v", "texture_u texture_v", "texture_s texture_t"}) {
     INFO(names);
-    const auto mesh = loadMeshFile(dir.write("tetra.ply", asciiPly(kTetra, kTetraFaces, names, false)));
+    const auto mesh =
+        loadMeshFile(dir.write("tetra.ply", asciiPly(kTetra, kTetraFaces, names, false)));
     CHECK(mesh->closed);
     CHECK(mesh->positions.size() == 4);
     requireAttributesOf(*mesh, kTetra, true, true);
   }
   SECTION("colours are read and ignored") {
-    const auto mesh = loadMeshFile(dir.write("tetra.ply", asciiPly(kTetra, kTetraFaces, "s t", true)));
+    const auto mesh =
+        loadMeshFile(dir.write("tetra.ply", asciiPly(kTetra, kTetraFaces, "s t", true)));
     requireAttributesOf(*mesh, kTetra, true, true);
   }
   SECTION("binary little-endian") {
@@ -135,7 +143,8 @@ TEST_CASE("PLY vertex normals and texture coordinates are kept, ASCII and binary
   }
 }
 
-TEST_CASE("PLY: a zero normal a face uses drops the file's normals, not its uvs", "[mesh][attributes]") {
+TEST_CASE("PLY: a zero normal a face uses drops the file's normals, not its uvs",
+          "[mesh][attributes]") {
   TempDir dir;
   std::vector<FileVertex> vs = kTetra;
   vs[2].n = Vec3(0);
@@ -143,7 +152,8 @@ TEST_CASE("PLY: a zero normal a face uses drops the file's normals, not its uvs"
   requireAttributesOf(*mesh, vs, false, true);
 }
 
-TEST_CASE("PLY: faces turned over by orientation keep the file's vertex normals", "[mesh][attributes]") {
+TEST_CASE("PLY: faces turned over by orientation keep the file's vertex normals",
+          "[mesh][attributes]") {
   // The last face written backwards: orientation turns it over (and the warning counts it),
   // but the normals stay those of the file at every position.
   TempDir dir;
@@ -157,7 +167,8 @@ TEST_CASE("PLY: faces turned over by orientation keep the file's vertex normals"
   requireAttributesOf(*mesh, kTetra, true, true);
 }
 
-TEST_CASE("OFF: NOFF and CNOFF vertex normals are kept, plain and COFF have none", "[mesh][attributes]") {
+TEST_CASE("OFF: NOFF and CNOFF vertex normals are kept, plain and COFF have none",
+          "[mesh][attributes]") {
   TempDir dir;
   auto off = [&](const std::string& keyword, bool normals, bool colours) {
     std::string text = keyword + "\n4 4 6\n";
@@ -211,12 +222,14 @@ std::vector<FileVertex> readXyzNxyzSt(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("assimp's PLY models with nx and s t load their normals and uvs", "[mesh][attributes][assimp]") {
+TEST_CASE("assimp's PLY models with nx and s t load their normals and uvs",
+          "[mesh][attributes][assimp]") {
   const std::string models = "/usr/share/assimp/models/PLY/";
   if (!std::filesystem::is_directory(models))
     FAIL(models + " is missing: run scripts/install-deps (it installs assimp-testmodels)");
 
-  SECTION("cube_uv.ply: each face's normals are the face's own, its uvs the unit square's corners") {
+  SECTION(
+      "cube_uv.ply: each face's normals are the face's own, its uvs the unit square's corners") {
     const auto mesh = loadMeshFile(models + "cube_uv.ply");
     CHECK(mesh->closed);
     CHECK(mesh->positions.size() == 24);  // four corners per face: normals and uvs differ
@@ -231,8 +244,8 @@ TEST_CASE("assimp's PLY models with nx and s t load their normals and uvs", "[me
         // The file's vertex with this position and normal has this uv.
         bool found = false;
         for (const FileVertex& v : file)
-          found |= v.p == mesh->positions[i] && glm::length(glm::normalize(v.n) - mesh->normals[i]) < 1e-7 &&
-                   v.uv == uv;
+          found |= v.p == mesh->positions[i] &&
+                   glm::length(glm::normalize(v.n) - mesh->normals[i]) < 1e-7 && v.uv == uv;
         CHECK(found);
       }
     }

@@ -96,8 +96,10 @@ TEST_CASE("OBJ vertex normals and texture coordinates are kept per corner", "[me
   CHECK(mesh->triangles.size() == 12);
   CHECK(signedVolume(*mesh) == Approx(1.0).margin(1e-12));
 
-  const Vec3 cube[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}};
+  const Vec3 cube[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                        {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                           {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}};
   const Vec3 faceNormal[6] = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 0, 0}};
   const Vec2 square[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   for (const auto& t : mesh->triangles) {
@@ -137,7 +139,8 @@ TEST_CASE("a zero-area triangle in a file is dropped and the cube stays closed",
 
 TEST_CASE("a non-planar quad is split in two, a self-intersecting one is dropped", "[mesh]") {
   TempDir dir;
-  const auto warped = loadMeshFile(dir.write("warped.obj", "v 0 0 0\nv 1 0 0.2\nv 1 1 0\nv 0 1 0.3\nf 1 2 3 4\n"));
+  const auto warped =
+      loadMeshFile(dir.write("warped.obj", "v 0 0 0\nv 1 0 0.2\nv 1 1 0\nv 0 1 0.3\nf 1 2 3 4\n"));
   requireWellFormed(*warped);
   CHECK(warped->positions.size() == 4);
   CHECK(warped->triangles.size() == 2);
@@ -145,7 +148,8 @@ TEST_CASE("a non-planar quad is split in two, a self-intersecting one is dropped
   // A bow-tie has no triangulation on its own corners: CGAL leaves it, and only the separate
   // triangle remains.
   const auto bowtie = loadMeshFile(dir.write(
-      "bowtie.obj", "v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nv 6 5 5\nv 5 6 5\nf 1 2 3 4\nf 5 6 7\n"));
+      "bowtie.obj",
+      "v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nv 6 5 5\nv 5 6 5\nf 1 2 3 4\nf 5 6 7\n"));
   requireWellFormed(*bowtie);
   CHECK(bowtie->triangles.size() == 1);
   CHECK(bowtie->positions.size() == 3);
@@ -154,7 +158,8 @@ TEST_CASE("a non-planar quad is split in two, a self-intersecting one is dropped
 
 TEST_CASE("coordinates that underflow are read as tiny numbers", "[mesh]") {
   TempDir dir;
-  const auto mesh = loadMeshFile(dir.write("tiny.obj", "v 0 0 0\nv 1 0 1e-400\nv 0 1 4.9e-324\nf 1 2 3\n"));
+  const auto mesh =
+      loadMeshFile(dir.write("tiny.obj", "v 0 0 0\nv 1 0 1e-400\nv 0 1 4.9e-324\nf 1 2 3\n"));
   requireWellFormed(*mesh);
   REQUIRE(mesh->positions.size() == 3);
   double zs = 0;

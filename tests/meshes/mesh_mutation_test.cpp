@@ -23,8 +23,9 @@ std::string readAll(const std::string& path) {
 // One random change: cut, overwrite a byte, insert a hostile token, or repeat a slice.
 std::string mutate(std::string bytes, std::mt19937& rng) {
   auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n)(rng); };
-  const char* tokens[] = {" 99999999999 ", " -1 ", " 1e999 ", " nan ", " 0 ", " 4294967295 ", "\n", " -7 ",
-                          "\t", "#", "/", " 3.5 ", "\xff\xff\xff\x7f", "\0\0\0\0"};
+  const char* tokens[] = {
+      " 99999999999 ", " -1 ", " 1e999 ", " nan ", " 0 ",   " 4294967295 ",     "\n",
+      " -7 ",          "\t",   "#",       "/",     " 3.5 ", "\xff\xff\xff\x7f", "\0\0\0\0"};
   switch (pick(3)) {
     case 0:
       bytes.resize(pick(bytes.size()));
@@ -38,7 +39,8 @@ std::string mutate(std::string bytes, std::mt19937& rng) {
       break;
     }
     default: {
-      const std::size_t from = pick(bytes.size()), length = pick(std::min<std::size_t>(64, bytes.size() - from));
+      const std::size_t from = pick(bytes.size()),
+                        length = pick(std::min<std::size_t>(64, bytes.size() - from));
       bytes.insert(pick(bytes.size()), bytes.substr(from, length));
       break;
     }
@@ -51,9 +53,11 @@ std::string mutate(std::string bytes, std::mt19937& rng) {
 TEST_CASE("damaged mesh files load well-formed or are refused with MeshError", "[mesh]") {
   std::mt19937 rng(20261123);
   TempDir dir;
-  const char* files[] = {"cube.obj", "cube_normals_uvs.obj", "cube_tabs_polyline_relative.obj", "cube.off",
-                         "cube_ascii.ply", "cube_binary_le.ply", "cube_binary_be.ply", "cube_ascii.stl",
-                         "cube_binary.stl", "hollow_cube.obj"};
+  const char* files[] = {
+      "cube.obj",           "cube_normals_uvs.obj", "cube_tabs_polyline_relative.obj",
+      "cube.off",           "cube_ascii.ply",       "cube_binary_le.ply",
+      "cube_binary_be.ply", "cube_ascii.stl",       "cube_binary.stl",
+      "hollow_cube.obj"};
   int loaded = 0, refused = 0;
   for (const char* file : files) {
     const std::string original = readAll(dataFile(file));

@@ -47,6 +47,8 @@ TEST_CASE("each separate shell is turned outward on its own", "[mesh]") {
   double second = 0;  // the moved cube alone, [2,3]^3
   for (const auto& t : mesh->triangles)
     if (mesh->positions[t[0]].x >= 2)
-      second += glm::dot(mesh->positions[t[0]], glm::cross(mesh->positions[t[1]], mesh->positions[t[2]])) / 6;
+      second += glm::dot(mesh->positions[t[0]],
+                         glm::cross(mesh->positions[t[1]], mesh->positions[t[2]])) /
+                6;
   CHECK(second == Approx(1.0).margin(1e-12));
 }

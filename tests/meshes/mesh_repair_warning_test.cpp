@@ -3,8 +3,8 @@
 // inside-out as a whole (only its global orientation is chosen), gives no warning.
 #include "mesh_test_support.h"
 
-#include "lang/parser.h"
 #include "../support/paths.h"
+#include "lang/parser.h"
 
 #include <fmt/format.h>
 
@@ -52,7 +52,8 @@ const char* kSceneWithFile = R"(<scene version="1">
 
 }  // namespace
 
-TEST_CASE("a closed mesh with a face written backwards is repaired with a located warning", "[mesh][lang]") {
+TEST_CASE("a closed mesh with a face written backwards is repaired with a located warning",
+          "[mesh][lang]") {
   TempDir dir;
   const std::string scene = dir.write("scene.xml", kSceneWithFile);
   const std::string at = scene + ":3:3: warning: <mesh src=\"ico.off\">: ";
@@ -60,21 +61,24 @@ TEST_CASE("a closed mesh with a face written backwards is repaired with a locate
   SECTION("one face") {
     dir.write("ico.off", icosahedronOff({7}));
     CHECK(diagnosticsOf(scene) ==
-          std::vector<std::string>{at + "1 of 20 triangles was flipped to agree with its neighbours; "
-                                        "the mesh is closed and is used as a solid"});
+          std::vector<std::string>{at +
+                                   "1 of 20 triangles was flipped to agree with its neighbours; "
+                                   "the mesh is closed and is used as a solid"});
   }
   SECTION("three faces, whichever face CGAL starts from") {
     // Faces 0 and 1 share an edge, so the first face CGAL meets may well be a wrong one.
     dir.write("ico.off", icosahedronOff({0, 1, 12}));
     CHECK(diagnosticsOf(scene) ==
-          std::vector<std::string>{at + "3 of 20 triangles were flipped to agree with their neighbours; "
-                                        "the mesh is closed and is used as a solid"});
+          std::vector<std::string>{at +
+                                   "3 of 20 triangles were flipped to agree with their neighbours; "
+                                   "the mesh is closed and is used as a solid"});
   }
   SECTION("the same three faces in a mesh written inside-out: the other 17 are the odd ones") {
     dir.write("ico.off", icosahedronOff({0, 1, 12}, /*insideOut=*/true));
     CHECK(diagnosticsOf(scene) ==
-          std::vector<std::string>{at + "3 of 20 triangles were flipped to agree with their neighbours; "
-                                        "the mesh is closed and is used as a solid"});
+          std::vector<std::string>{at +
+                                   "3 of 20 triangles were flipped to agree with their neighbours; "
+                                   "the mesh is closed and is used as a solid"});
   }
   SECTION("a clean mesh, and one inside-out as a whole, give no warning") {
     dir.write("ico.off", icosahedronOff({}));
@@ -84,7 +88,8 @@ TEST_CASE("a closed mesh with a face written backwards is repaired with a locate
   }
 }
 
-TEST_CASE("an inline mesh with a triangle written backwards is repaired with a located warning", "[mesh][lang]") {
+TEST_CASE("an inline mesh with a triangle written backwards is repaired with a located warning",
+          "[mesh][lang]") {
   TempDir dir;
   // The octahedron of docs/scene-language.md with its second triangle (2 1 4) reversed.
   const std::string scene = dir.write("scene.xml", R"(<scene version="1">
@@ -94,21 +99,25 @@ TEST_CASE("an inline mesh with a triangle written backwards is repaired with a l
 </scene>
 )");
   CHECK(diagnosticsOf(scene) ==
-        std::vector<std::string>{scene + ":3:3: warning: <mesh>: 1 of 8 triangles was flipped to agree "
-                                         "with its neighbours; the mesh is closed and is used as a solid"});
+        std::vector<std::string>{scene +
+                                 ":3:3: warning: <mesh>: 1 of 8 triangles was flipped to agree "
+                                 "with its neighbours; the mesh is closed and is used as a solid"});
 }
 
-TEST_CASE("an open mesh with a face written backwards is repaired with a warning too", "[mesh][lang]") {
+TEST_CASE("an open mesh with a face written backwards is repaired with a warning too",
+          "[mesh][lang]") {
   TempDir dir;
   // Two squares of a strip, the second one's triangles clockwise.
-  dir.write("strip.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\n"
-                         "f 1 2 5 4\nf 2 5 6 3\n");
+  dir.write("strip.obj",
+            "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\n"
+            "f 1 2 5 4\nf 2 5 6 3\n");
   const std::string scene = dir.write("scene.xml", R"(<scene version="1">
   <camera/>
     <mesh src="strip.obj"/>
 </scene>
 )");
   CHECK(diagnosticsOf(scene) ==
-        std::vector<std::string>{scene + ":3:5: warning: <mesh src=\"strip.obj\">: 1 of 2 faces was "
-                                         "flipped to agree with its neighbours"});
+        std::vector<std::string>{scene +
+                                 ":3:5: warning: <mesh src=\"strip.obj\">: 1 of 2 faces was "
+                                 "flipped to agree with its neighbours"});
 }

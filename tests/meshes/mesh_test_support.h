@@ -2,12 +2,13 @@
 // MeshData computed independently of CGAL (signed volume, closedness by edge pairing).
 #pragma once
 
+#include "../support/paths.h"
 #include "../temp_dir.h"
 #include "primitives/mesh_data.h"
-#include "../support/paths.h"
 
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
 #include <atomic>
 #include <cmath>
 #include <filesystem>
@@ -15,7 +16,6 @@
 #include <map>
 #include <string>
 #include <tuple>
-#include <unistd.h>
 
 namespace lucent::meshtest {
 

@@ -52,7 +52,8 @@ Ray randomRayTo(Rng& rng, const AABB& box) {
   Vec3 c = box.center();
   double r = 0.5 * glm::length(box.extent());
   Vec3 o = c + 3.0 * r * randomUnit(rng);
-  Vec3 target(uniform(rng, box.lo.x, box.hi.x), uniform(rng, box.lo.y, box.hi.y), uniform(rng, box.lo.z, box.hi.z));
+  Vec3 target(uniform(rng, box.lo.x, box.hi.x), uniform(rng, box.lo.y, box.hi.y),
+              uniform(rng, box.lo.z, box.hi.z));
   return Ray(o, (target - o) * uniform(rng, 0.5, 2.0));
 }
 
@@ -72,14 +73,25 @@ std::vector<CaseResult> blobCases(double effort) {
   std::vector<CaseResult> out;
 
   const std::vector<Setting> settings = {
-      {"one sphere component", 1.0, {{C::Sphere, Vec3(0.2, -0.1, 0.3), Vec3(0.0), 1.0, 2.0}}, Vec3(0.2, -0.1, 0.3)},
-      {"a capsule (one cylinder component)", 0.5, {{C::Cylinder, Vec3(-1, 0, 0), Vec3(1, 0.5, 0.2), 0.6, 1.5}}, Vec3(0.0, 0.25, 0.1)},
-      {"three spheres and a cylinder merged", 0.5,
-       {{C::Sphere, Vec3(-0.5, 0, 0), Vec3(0.0), 1.0, 1.0}, {C::Sphere, Vec3(0.5, 0, 0), Vec3(0.0), 1.0, 1.0},
-        {C::Sphere, Vec3(0, 0.8, 0), Vec3(0.0), 0.8, 1.0}, {C::Cylinder, Vec3(0, -1, -0.5), Vec3(0, -1, 0.5), 0.5, 1.5}},
+      {"one sphere component",
+       1.0,
+       {{C::Sphere, Vec3(0.2, -0.1, 0.3), Vec3(0.0), 1.0, 2.0}},
+       Vec3(0.2, -0.1, 0.3)},
+      {"a capsule (one cylinder component)",
+       0.5,
+       {{C::Cylinder, Vec3(-1, 0, 0), Vec3(1, 0.5, 0.2), 0.6, 1.5}},
+       Vec3(0.0, 0.25, 0.1)},
+      {"three spheres and a cylinder merged",
+       0.5,
+       {{C::Sphere, Vec3(-0.5, 0, 0), Vec3(0.0), 1.0, 1.0},
+        {C::Sphere, Vec3(0.5, 0, 0), Vec3(0.0), 1.0, 1.0},
+        {C::Sphere, Vec3(0, 0.8, 0), Vec3(0.0), 0.8, 1.0},
+        {C::Cylinder, Vec3(0, -1, -0.5), Vec3(0, -1, 0.5), 0.5, 1.5}},
        Vec3(0.0)},
-      {"a negative sphere carving a hole", 0.5,
-       {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.2, 2.0}, {C::Sphere, Vec3(0.0, 0.7, 0.0), Vec3(0.0), 0.6, -3.0}},
+      {"a negative sphere carving a hole",
+       0.5,
+       {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.2, 2.0},
+        {C::Sphere, Vec3(0.0, 0.7, 0.0), Vec3(0.0), 0.6, -3.0}},
        Vec3(0.0, -0.3, 0.0)},
   };
   for (size_t k = 0; k < settings.size(); ++k) {
@@ -103,7 +115,8 @@ std::vector<CaseResult> blobCases(double effort) {
     // Bounds from the conditioning, not the method: the field's slope at the surface is
     // 4·s·r/R² with r down to 1e-6, so the double field's rounding (1e-16) moves the root by
     // 1e-16/(4r) ≈ 4e-11 and turns the normal of a solid that small by about 1e-10/r.
-    CaseResult r = newCase("strength just above the threshold (1 + 1e-12 to 1 + 1e-2): a tiny solid", 1e-9, 1e-3);
+    CaseResult r = newCase(
+        "strength just above the threshold (1 + 1e-12 to 1 + 1e-2): a tiny solid", 1e-9, 1e-3);
     for (int i = 0; i < n; ++i) {
       double delta = logUniform(rng, -12.0, -2.0);
       std::vector<C> cs = {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.0, 1.0 + delta}};
@@ -124,12 +137,15 @@ std::vector<CaseResult> blobCases(double effort) {
     // Bounds from the conditioning: near the saddle the field's gradient vanishes (the
     // neck's radius is about √(relative gap) of the size), so the same rounding moves the
     // root by 1e-16 over a slope down to 1e-6 and the neck's normal with it.
-    CaseResult r = newCase("two spheres whose fields just merge (threshold 1e-12 to 1e-6 from the saddle's field)", 1e-9, 1e-3);
+    CaseResult r = newCase(
+        "two spheres whose fields just merge (threshold 1e-12 to 1e-6 from the saddle's field)",
+        1e-9, 1e-3);
     for (int i = 0; i < n; ++i) {
       double d = uniform(rng, 0.3, 0.8);
       double saddle = 2.0 * (1.0 - d * d) * (1.0 - d * d);
       double T = saddle * (1.0 + (rng() % 2 ? 1.0 : -1.0) * logUniform(rng, -12.0, -6.0));
-      std::vector<C> cs = {{C::Sphere, Vec3(-d, 0, 0), Vec3(0.0), 1.0, 1.0}, {C::Sphere, Vec3(d, 0, 0), Vec3(0.0), 1.0, 1.0}};
+      std::vector<C> cs = {{C::Sphere, Vec3(-d, 0, 0), Vec3(0.0), 1.0, 1.0},
+                           {C::Sphere, Vec3(d, 0, 0), Vec3(0.0), 1.0, 1.0}};
       Blob b(T, cs);
       auto ref = refBlob(T, cs);
       Vec3 target = logUniform(rng, -8.0, -2.0) * randomUnit(rng);
@@ -143,7 +159,8 @@ std::vector<CaseResult> blobCases(double effort) {
     // crossing the reference does not list is a re-hit. No bounds (a chord just ahead of
     // the origin has a t of any smallness).
     Rng rng(1813);
-    CaseResult r = newCase("secondary rays leaving merged spheres, a capsule and a carved hole", 0.0, 0.0);
+    CaseResult r =
+        newCase("secondary rays leaving merged spheres, a capsule and a carved hole", 0.0, 0.0);
     for (size_t k = 1; k < settings.size(); ++k) {
       const Setting& s = settings[k];
       Blob b(s.threshold, s.components);

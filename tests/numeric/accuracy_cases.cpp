@@ -218,10 +218,9 @@ std::vector<CaseResult> grazingCases(double effort) {
     Cone cone(base, rBase, cap, 0.0, false);
     auto ref = refCone(base, rBase, cap, 0.0);
     // t keeps its precision up to the apex (the clear rows' bound is 10x the worst
-    // measured, as everywhere here). The normal turns by t's error over the distance from the axis, so
-    // near the apex it is not bounded.
-    CaseResult apart =
-        newCase(group, "cone: lines passing the apex 1e-7 to 1e-1 away", 1e-13, 0.0);
+    // measured, as everywhere here). The normal turns by t's error over the distance from the axis,
+    // so near the apex it is not bounded.
+    CaseResult apart = newCase(group, "cone: lines passing the apex 1e-7 to 1e-1 away", 1e-13, 0.0);
     CaseResult close =
         newCase(group, "cone: lines passing the apex 1e-13 to 1e-7 away", 1e-13, 0.0);
     CaseResult rounding =
@@ -540,11 +539,10 @@ std::vector<CaseResult> nearSingularCases(double effort) {
 
 std::vector<CaseResult> allCases(double effort) {
   std::vector<CaseResult> all;
-  for (auto family : {baselineCases, grazingCases, farAndScaledCases, secondaryRayCases,
-                      zeroDirectionCases, nearSingularCases, superellipsoidCases, quadricCases, blobCases,
-                      prismCases, latheCases, isosurfaceCases, textCases, sorCases, heightFieldCases,
-                      meshCases,
-                      meshAlongEdgeCases}) {
+  for (auto family :
+       {baselineCases, grazingCases, farAndScaledCases, secondaryRayCases, zeroDirectionCases,
+        nearSingularCases, superellipsoidCases, quadricCases, blobCases, prismCases, latheCases,
+        isosurfaceCases, textCases, sorCases, heightFieldCases, meshCases, meshAlongEdgeCases}) {
     std::vector<CaseResult> part = family(effort);
     all.insert(all.end(), part.begin(), part.end());
   }

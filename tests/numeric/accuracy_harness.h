@@ -78,7 +78,8 @@ std::shared_ptr<RefShape> refQuadric(const Vec3& squares, const Vec3& mixed, con
 // A poly (POV-Ray's coefficient order) whose surface lies within `radius` of the origin:
 // P evaluated term by term along the line in long double, sampled densely, its extrema
 // refined by golden-section search and each sign change bisected (the torus's method).
-std::shared_ptr<RefShape> refPoly(int order, const std::vector<double>& coefficients, double radius);
+std::shared_ptr<RefShape> refPoly(int order, const std::vector<double>& coefficients,
+                                  double radius);
 // A blob: its field minus the threshold along the line cut at the components' radii and
 // the planes through cylinders' ends, extrema refined, sign changes bisected.
 std::shared_ptr<RefShape> refBlob(double threshold, const std::vector<BlobComponent>& components);
@@ -165,7 +166,8 @@ double logUniform(Rng& rng, double lo, double hi);
 inline int rayCount(double base, double effort) { return std::max(1, int(base * effort)); }
 
 // A case of the table's section `group`, with the bounds its tests assert (0: none).
-inline CaseResult makeCase(std::string group, std::string name, double boundRelT, double boundAngle) {
+inline CaseResult makeCase(std::string group, std::string name, double boundRelT,
+                           double boundAngle) {
   CaseResult r;
   r.group = std::move(group);
   r.name = std::move(name);

@@ -18,7 +18,8 @@ namespace {
 
 class RefHeightField final : public RefShape {
  public:
-  RefHeightField(std::shared_ptr<const HeightMap> m, double floor) : m_(std::move(m)), floor_(floor) {}
+  RefHeightField(std::shared_ptr<const HeightMap> m, double floor)
+      : m_(std::move(m)), floor_(floor) {}
 
   void lineRoots(const LRay& ray, std::vector<LRoot>& out) const override {
     std::vector<LRoot> roots;
@@ -84,7 +85,8 @@ class RefHeightField final : public RefShape {
     const int j = std::min(static_cast<int>(std::floor(Z)), m_->depth - 2);
     const LD s = X - i, u = Z - j;
     if (s + u <= 1) return h(i, j) + (h(i + 1, j) - h(i, j)) * s + (h(i, j + 1) - h(i, j)) * u;
-    return h(i + 1, j + 1) + (h(i, j + 1) - h(i + 1, j + 1)) * (1 - s) + (h(i + 1, j) - h(i + 1, j + 1)) * (1 - u);
+    return h(i + 1, j + 1) + (h(i, j + 1) - h(i + 1, j + 1)) * (1 - s) +
+           (h(i + 1, j) - h(i + 1, j + 1)) * (1 - u);
   }
 
   std::shared_ptr<const HeightMap> m_;
@@ -102,7 +104,9 @@ std::vector<CaseResult> heightFieldCases(double effort) {
   m->width = 9;
   m->depth = 7;
   for (int z = 0; z < 7; ++z)
-    for (int x = 0; x < 9; ++x) m->values.push_back(static_cast<uint16_t>((x * 7919 + z * 104729 + x * z * 31) % 60000 + 2000));
+    for (int x = 0; x < 9; ++x)
+      m->values.push_back(
+          static_cast<uint16_t>((x * 7919 + z * 104729 + x * z * 31) % 60000 + 2000));
   const double water = 0.15;
   const HeightField hf(m, false, water);
   const RefHeightField ref(m, water - 0.001 / 65536.0);
@@ -156,8 +160,10 @@ std::vector<CaseResult> heightFieldCases(double effort) {
     for (int i = 0; i < n; ++i) {
       const bool alongZ = i % 2 == 0;
       const int a = int(rng() % (alongZ ? 9 : 7)), b = int(rng() % (alongZ ? 6 : 8));
-      const int x0 = alongZ ? a : b, z0 = alongZ ? b : a, x1 = alongZ ? a : b + 1, z1 = alongZ ? b + 1 : a;
-      const Vec3 p0(x0 / 8.0, m->at(x0, z0) / 65536.0, z0 / 6.0), p1(x1 / 8.0, m->at(x1, z1) / 65536.0, z1 / 6.0);
+      const int x0 = alongZ ? a : b, z0 = alongZ ? b : a, x1 = alongZ ? a : b + 1,
+                z1 = alongZ ? b + 1 : a;
+      const Vec3 p0(x0 / 8.0, m->at(x0, z0) / 65536.0, z0 / 6.0),
+          p1(x1 / 8.0, m->at(x1, z1) / 65536.0, z1 / 6.0);
       const double off = (rng() % 2 ? 1 : -1) * logUniform(rng, -16, -1);
       const Vec3 d = p1 - p0;
       const Vec3 q = p0 + uniform(rng, 0, 1) * d + Vec3(0.0, off, 0.0);

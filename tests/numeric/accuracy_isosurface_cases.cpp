@@ -30,8 +30,8 @@ class FnField final : public ScalarField {
   std::function<double(const Vec3&)> f_;
 };
 
-Isosurface make(std::function<double(const Vec3&)> f, IsosurfaceContainer c, double maxGradient = 1.1,
-                double accuracy = 0.001) {
+Isosurface make(std::function<double(const Vec3&)> f, IsosurfaceContainer c,
+                double maxGradient = 1.1, double accuracy = 0.001) {
   Isosurface::Params p;
   p.field = std::make_shared<FnField>(std::move(f));
   p.container = c;
@@ -97,13 +97,15 @@ std::vector<CaseResult> isosurfaceCases(double effort) {
     Isosurface iso = make([c](const Vec3& p) { return glm::length(p - c) - 0.7; }, cube(1.0));
     auto ref = refSphere(c, 0.7);
     Rng rng(2101);
-    CaseResult r = newCase("a sphere function in a box: random rays, and tangent at random points", kT, kN);
+    CaseResult r =
+        newCase("a sphere function in a box: random rays, and tangent at random points", kT, kN);
     for (int i = 0; i < n; ++i) {
       measureRay(r, iso, *ref, rayTo(rng, c + uniform(rng, 0.0, 0.7) * randomUnit(rng), 3.0), 2.0);
       // A line tangent at a random surface point, moved off by ±δ (1e-16 to 1e-1).
       Vec3 nrm = randomUnit(rng), w = randomPerpendicular(rng, nrm);
       Vec3 q = c + (0.7 + (rng() % 2 ? 1.0 : -1.0) * logUniform(rng, -16.0, -1.0)) * nrm;
-      measureRay(r, iso, *ref, Ray(q - uniform(rng, 2.0, 4.0) * w, w * uniform(rng, 0.5, 2.0)), 2.0);
+      measureRay(r, iso, *ref, Ray(q - uniform(rng, 2.0, 4.0) * w, w * uniform(rng, 0.5, 2.0)),
+                 2.0);
     }
     // A graze whose chord is shorter than the accuracy may be missed as a pair: a stated
     // limitation (the method's, and POV-Ray's), so the tests leave decisions to the table.
@@ -130,26 +132,32 @@ std::vector<CaseResult> isosurfaceCases(double effort) {
     // A spherical shell 0.7 < |p| < 0.7 + thickness: 5 times the default accuracy, and half
     // of it. Rays aimed inside the inner sphere cross the shell twice at a steep angle.
     const double r1 = 0.7, r2 = 0.7 + thickness, mid = 0.5 * (r1 + r2);
-    Isosurface iso = make([=](const Vec3& p) { return std::abs(glm::length(p) - mid) - 0.5 * thickness; }, cube(1.0));
+    Isosurface iso = make(
+        [=](const Vec3& p) { return std::abs(glm::length(p) - mid) - 0.5 * thickness; }, cube(1.0));
     RefShell ref(r1, r2);
     Rng rng(2103);
-    CaseResult r = newCase(thickness > 0.001 ? "a shell 5 times the accuracy thick (0.005)"
-                                             : "a shell half the accuracy thick (0.0005): crossings may be lost",
+    CaseResult r = newCase(thickness > 0.001
+                               ? "a shell 5 times the accuracy thick (0.005)"
+                               : "a shell half the accuracy thick (0.0005): crossings may be lost",
                            kT, kN);
-    for (int i = 0; i < n; ++i) measureRay(r, iso, ref, rayTo(rng, uniform(rng, 0.0, 0.5) * randomUnit(rng), 3.0), 2.0);
+    for (int i = 0; i < n; ++i)
+      measureRay(r, iso, ref, rayTo(rng, uniform(rng, 0.0, 0.5) * randomUnit(rng), 3.0), 2.0);
     r.decisionsAsserted = thickness > 0.001;
     out.push_back(std::move(r));
   }
   for (double declared : {1.1, 5.5}) {
     // |grad f| = 5: with max-gradient 1.1 the search skips pieces that do hold crossings
     // (the render warns); with 5.5 it is exact again.
-    Isosurface iso = make([c](const Vec3& p) { return 5.0 * (glm::length(p - c) - 0.7); }, cube(1.0), declared);
+    Isosurface iso =
+        make([c](const Vec3& p) { return 5.0 * (glm::length(p - c) - 0.7); }, cube(1.0), declared);
     auto ref = refSphere(c, 0.7);
     Rng rng(2104);
-    CaseResult r = newCase(declared < 5.0 ? "gradient 5, declared max-gradient 1.1: crossings are skipped"
-                                          : "gradient 5, declared max-gradient 5.5",
-                           declared > 5.0 ? kT : 0.0, declared > 5.0 ? kN : 0.0);
-    for (int i = 0; i < n; ++i) measureRay(r, iso, *ref, rayTo(rng, c + uniform(rng, 0.0, 0.6) * randomUnit(rng), 3.0), 2.0);
+    CaseResult r =
+        newCase(declared < 5.0 ? "gradient 5, declared max-gradient 1.1: crossings are skipped"
+                               : "gradient 5, declared max-gradient 5.5",
+                declared > 5.0 ? kT : 0.0, declared > 5.0 ? kN : 0.0);
+    for (int i = 0; i < n; ++i)
+      measureRay(r, iso, *ref, rayTo(rng, c + uniform(rng, 0.0, 0.6) * randomUnit(rng), 3.0), 2.0);
     r.decisionsAsserted = declared > 5.0;
     out.push_back(std::move(r));
   }

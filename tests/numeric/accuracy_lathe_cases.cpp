@@ -238,8 +238,9 @@ std::vector<CaseResult> latheCases(double effort) {
                           toL2(vasePoints[i + 3])});
   // A linear goblet: a foot (a disc from the axis, a short cylinder), a stem, a cup whose
   // rim turns back inside and ends on the axis; every segment a cone, cylinder or annulus.
-  const std::vector<Vec2> gobletPoints = {{0, 0},     {0.8, 0},   {0.8, 0.1},  {0.15, 0.2}, {0.15, 0.9},
-                                          {0.7, 1.4}, {0.65, 1.45}, {0.1, 1.0}, {0, 1.0}};
+  const std::vector<Vec2> gobletPoints = {{0, 0},       {0.8, 0},    {0.8, 0.1},
+                                          {0.15, 0.2},  {0.15, 0.9}, {0.7, 1.4},
+                                          {0.65, 1.45}, {0.1, 1.0},  {0, 1.0}};
   std::vector<Bezier> gobletPieces;
   for (size_t i = 0; i + 1 < gobletPoints.size(); ++i) {
     const LVec2 a = toL2(gobletPoints[i]), b = toL2(gobletPoints[i + 1]);
@@ -264,17 +265,21 @@ std::vector<CaseResult> latheCases(double effort) {
     auto surfacePoint = [&](Rng& rng, Vec3& p, Vec3& normal) {
       const Bezier& b = sh.pieces[size_t(rng() % sh.pieces.size())];
       const LD s = uniform(rng, 0.02, 0.98), u = 1 - s;
-      const LVec2 q = u * u * u * b[0] + 3 * u * u * s * b[1] + 3 * u * s * s * b[2] + s * s * s * b[3];
-      const LVec2 tan = 3.0L * (u * u * (b[1] - b[0]) + 2 * u * s * (b[2] - b[1]) + s * s * (b[3] - b[2]));
+      const LVec2 q =
+          u * u * u * b[0] + 3 * u * u * s * b[1] + 3 * u * s * s * b[2] + s * s * s * b[3];
+      const LVec2 tan =
+          3.0L * (u * u * (b[1] - b[0]) + 2 * u * s * (b[2] - b[1]) + s * s * (b[3] - b[2]));
       const double phi = uniform(rng, 0, 2 * kPi);
       p = Vec3(double(q.x) * std::cos(phi), double(q.y), double(q.x) * std::sin(phi));
-      normal = glm::normalize(Vec3(double(tan.y) * std::cos(phi), -double(tan.x), double(tan.y) * std::sin(phi)));
+      normal = glm::normalize(
+          Vec3(double(tan.y) * std::cos(phi), -double(tan.x), double(tan.y) * std::sin(phi)));
     };
     {
       Rng rng(seed++);
       CaseResult r = newCase(std::string(sh.name) + ": random rays");
       for (int i = 0; i < n; ++i) {
-        const Vec3 target(uniform(rng, -0.9, 0.9), uniform(rng, 0, sh.height), uniform(rng, -0.9, 0.9));
+        const Vec3 target(uniform(rng, -0.9, 0.9), uniform(rng, 0, sh.height),
+                          uniform(rng, -0.9, 0.9));
         measureRay(r, sh.lathe, sh.ref, rayThrough(rng, target), size);
       }
       out.push_back(std::move(r));
@@ -283,7 +288,8 @@ std::vector<CaseResult> latheCases(double effort) {
       // In the tangent plane at a random surface point, moved 1e-16 to 1e-1 along the
       // normal (inside or outside): the silhouette's tangents and near misses.
       Rng rng(seed++);
-      CaseResult r = newCase(std::string(sh.name) + ": tangent to the silhouette, 1e-16 to 1e-1 inside or outside");
+      CaseResult r = newCase(std::string(sh.name) +
+                             ": tangent to the silhouette, 1e-16 to 1e-1 inside or outside");
       for (int i = 0; i < n; ++i) {
         Vec3 p, normal;
         surfacePoint(rng, p, normal);
@@ -311,7 +317,8 @@ std::vector<CaseResult> latheCases(double effort) {
     {
       // Aimed at the rims where pieces meet (and the curve's ends), 1e-16 to 1e-1 off.
       Rng rng(seed++);
-      CaseResult r = newCase(std::string(sh.name) + ": at the rims where pieces meet, 1e-16 to 1e-1 off", 1e-8);
+      CaseResult r = newCase(
+          std::string(sh.name) + ": at the rims where pieces meet, 1e-16 to 1e-1 off", 1e-8);
       for (int i = 0; i < n; ++i) {
         const Bezier& b = sh.pieces[size_t(rng() % sh.pieces.size())];
         const LVec2 q = rng() % 2 ? b[0] : b[3];

@@ -397,9 +397,8 @@ std::vector<CaseResult> meshAlongEdgeCases(double effort) {
   const auto& P = hullData->positions;
   const auto& T = hullData->triangles;
   const double spans[] = {0.5, 1.0, 2.0, 4.0};
-  CaseResult r =
-      newCase("Triangle meshes (exact predicates)",
-              "convex grid mesh: rays along edges (touching only)", 0.0, 0.0);
+  CaseResult r = newCase("Triangle meshes (exact predicates)",
+                         "convex grid mesh: rays along edges (touching only)", 0.0, 0.0);
   for (int i = 0; i < rayCount(20000, effort); ++i) {
     const auto& tri = T[rng() % T.size()];
     int e = int(rng() % 3);

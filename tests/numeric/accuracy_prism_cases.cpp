@@ -17,7 +17,8 @@ using Polygon = std::vector<Vec2>;
 
 class RefPolygonPrism final : public RefShape {
  public:
-  RefPolygonPrism(std::vector<Polygon> polys, double h1, double h2) : polys_(std::move(polys)), h1_(h1), h2_(h2) {}
+  RefPolygonPrism(std::vector<Polygon> polys, double h1, double h2)
+      : polys_(std::move(polys)), h1_(h1), h2_(h2) {}
 
   void lineRoots(const LRay& ray, std::vector<LRoot>& out) const override {
     std::vector<LRoot> roots;
@@ -58,7 +59,8 @@ class RefPolygonPrism final : public RefShape {
     bool in = false;
     for (const Polygon& pg : polys_)
       for (size_t i = 0; i < pg.size(); ++i) {
-        const LD ax = pg[i].x, az = pg[i].y, bx = pg[(i + 1) % pg.size()].x, bz = pg[(i + 1) % pg.size()].y;
+        const LD ax = pg[i].x, az = pg[i].y, bx = pg[(i + 1) % pg.size()].x,
+                 bz = pg[(i + 1) % pg.size()].y;
         if ((az <= v) == (bz <= v)) continue;
         const LD x = ax + (v - az) * (bx - ax) / (bz - az);
         if (x > u) in = !in;
@@ -81,9 +83,7 @@ PrismContour contour(const Polygon& pts) {
   return c;
 }
 
-CaseResult newCase(const std::string& name) {
-  return makeCase("Prisms", name, 1e-14, 1e-12);
-}
+CaseResult newCase(const std::string& name) { return makeCase("Prisms", name, 1e-14, 1e-12); }
 
 }  // namespace
 
@@ -144,7 +144,8 @@ std::vector<CaseResult> prismCases(double effort) {
   }
   {
     Rng rng(1904);
-    CaseResult r = newCase("star with a hole: grazing the caps' edges, 1e-16 to 1e-1 above or below");
+    CaseResult r =
+        newCase("star with a hole: grazing the caps' edges, 1e-16 to 1e-1 above or below");
     for (int i = 0; i < n; ++i) {
       const Polygon& pg = i % 3 == 2 ? hole : star;
       const size_t k = size_t(rng() % pg.size());

@@ -29,7 +29,8 @@ Ray randomRay(Rng& rng, double reach) {
 }
 
 // POV-Ray's order for `order`, from (powers, value) pairs.
-std::vector<double> polyCoefficients(int order, const std::vector<std::pair<std::array<int, 3>, double>>& terms) {
+std::vector<double> polyCoefficients(
+    int order, const std::vector<std::pair<std::array<int, 3>, double>>& terms) {
   std::vector<double> c;
   for (int i = order; i >= 0; --i)
     for (int j = order - i; j >= 0; --j)
@@ -56,7 +57,8 @@ std::vector<CaseResult> quadricCases(double effort) {
     auto ref = refQuadric(Vec3(1, 0, 1), Vec3(0), Vec3(0), -1);
     // Origins at least 0.3 from the surface: the cylinder is unbounded, and a ray starting
     // on it has a t of any smallness, whose relative error says nothing.
-    CaseResult r = newCase("cylinder x² + z² − 1: random, near the axis direction, tangent", kT, kN);
+    CaseResult r =
+        newCase("cylinder x² + z² − 1: random, near the axis direction, tangent", kT, kN);
     Rng rng(2201);
     for (int i = 0; i < n; ++i) {
       const double th = uniform(rng, 0.0, 2.0 * kPi);
@@ -86,8 +88,10 @@ std::vector<CaseResult> quadricCases(double effort) {
     // a root's t is ill-conditioned (δ-relative); the bound is asserted on the far rows.
     const Quadric q({Vec3(1, -1, 1), Vec3(0), Vec3(0), 0});
     auto ref = refQuadric(Vec3(1, -1, 1), Vec3(0), Vec3(0), 0);
-    CaseResult far = newCase("double cone x² − y² + z²: lines passing the apex 1e-7 to 1e-1 away", 1e-13, 0.0);
-    CaseResult near = newCase("double cone x² − y² + z²: lines passing the apex 1e-16 to 1e-7 away", 0.0, 0.0);
+    CaseResult far =
+        newCase("double cone x² − y² + z²: lines passing the apex 1e-7 to 1e-1 away", 1e-13, 0.0);
+    CaseResult near =
+        newCase("double cone x² − y² + z²: lines passing the apex 1e-16 to 1e-7 away", 0.0, 0.0);
     Rng rng(2202);
     for (int i = 0; i < n; ++i) {
       const bool isFar = i % 2 == 0;
@@ -104,12 +108,14 @@ std::vector<CaseResult> quadricCases(double effort) {
     // to it, and lines exactly parallel inside and outside.
     const Quadric q({Vec3(0), Vec3(0), Vec3(0, 1, 0), -0.5});
     auto ref = refQuadric(Vec3(0), Vec3(0), Vec3(0, 1, 0), -0.5);
-    CaseResult r = newCase("plane y − 0.5 as a quadric: random, grazing and parallel lines", kT, kN);
+    CaseResult r =
+        newCase("plane y − 0.5 as a quadric: random, grazing and parallel lines", kT, kN);
     Rng rng(2203);
     for (int i = 0; i < n; ++i) {
       measureRay(r, q, *ref, randomRay(rng, 1.0), 2.0);
       const double phi = uniform(rng, 0.0, 2.0 * kPi);
-      const double slope = i % 4 == 0 ? 0.0 : (rng() % 2 ? 1.0 : -1.0) * logUniform(rng, -16.0, -1.0);
+      const double slope =
+          i % 4 == 0 ? 0.0 : (rng() % 2 ? 1.0 : -1.0) * logUniform(rng, -16.0, -1.0);
       const Vec3 d(std::cos(phi), slope, std::sin(phi));
       const Vec3 o(uniform(rng, -2, 2), 0.5 + uniform(rng, -0.1, 0.1), uniform(rng, -2, 2));
       measureRay(r, q, *ref, Ray(o - 3.0 * d, d * uniform(rng, 0.5, 2.0)), 2.0);
@@ -121,11 +127,19 @@ std::vector<CaseResult> quadricCases(double effort) {
     // random rays, lines tangent to the tube at random points (1e-12 to 1e-1 off), and
     // lines through the hole along the axis.
     const double R = 1.0, rr = 0.3, a = R * R - rr * rr;
-    const Poly p(4, polyCoefficients(4, {{{4, 0, 0}, 1}, {{0, 4, 0}, 1}, {{0, 0, 4}, 1}, {{2, 2, 0}, 2},
-                                         {{2, 0, 2}, 2}, {{0, 2, 2}, 2}, {{2, 0, 0}, 2 * a - 4 * R * R},
-                                         {{0, 2, 0}, 2 * a}, {{0, 0, 2}, 2 * a - 4 * R * R}, {{0, 0, 0}, a * a}}));
+    const Poly p(4, polyCoefficients(4, {{{4, 0, 0}, 1},
+                                         {{0, 4, 0}, 1},
+                                         {{0, 0, 4}, 1},
+                                         {{2, 2, 0}, 2},
+                                         {{2, 0, 2}, 2},
+                                         {{0, 2, 2}, 2},
+                                         {{2, 0, 0}, 2 * a - 4 * R * R},
+                                         {{0, 2, 0}, 2 * a},
+                                         {{0, 0, 2}, 2 * a - 4 * R * R},
+                                         {{0, 0, 0}, a * a}}));
     auto ref = refTorus(R, rr);
-    CaseResult r = newCase("torus as a quartic poly: random, tangent to the tube, through the hole", kT, kN);
+    CaseResult r =
+        newCase("torus as a quartic poly: random, tangent to the tube, through the hole", kT, kN);
     Rng rng(2204);
     for (int i = 0; i < n; ++i) {
       measureRay(r, p, *ref, randomRay(rng, 1.3), 2.6);
@@ -136,23 +150,33 @@ std::vector<CaseResult> quadricCases(double effort) {
       const Vec3 w = randomPerpendicular(rng, nrm);
       measureRay(r, p, *ref, Ray(c + (rr + off) * nrm - 3.0 * w, w), 2.6);
       const Vec3 o(uniform(rng, -0.5, 0.5), 3.0, uniform(rng, -0.5, 0.5));
-      measureRay(r, p, *ref, Ray(o, Vec3(uniform(rng, -0.1, 0.1), -1.0, uniform(rng, -0.1, 0.1))), 2.6);
+      measureRay(r, p, *ref, Ray(o, Vec3(uniform(rng, -0.1, 0.1), -1.0, uniform(rng, -0.1, 0.1))),
+                 2.6);
     }
     out.push_back(std::move(r));
   }
   {
     // The tangle cube x⁴ − 5x² + y⁴ − 5y² + z⁴ − 5z² + 11.8 < 0: six lobes and holes, up to
     // eight crossings a line; and an ellipsoid of order 2 against the quadric reference.
-    const auto tangle = polyCoefficients(4, {{{4, 0, 0}, 1}, {{2, 0, 0}, -5}, {{0, 4, 0}, 1}, {{0, 2, 0}, -5},
-                                             {{0, 0, 4}, 1}, {{0, 0, 2}, -5}, {{0, 0, 0}, 11.8}});
+    const auto tangle = polyCoefficients(4, {{{4, 0, 0}, 1},
+                                             {{2, 0, 0}, -5},
+                                             {{0, 4, 0}, 1},
+                                             {{0, 2, 0}, -5},
+                                             {{0, 0, 4}, 1},
+                                             {{0, 0, 2}, -5},
+                                             {{0, 0, 0}, 11.8}});
     const Poly p(4, tangle);
     auto ref = refPoly(4, tangle, 3.6);  // its lobes reach 3.47 from the centre
     CaseResult r = newCase("tangle cube (quartic poly): random rays", kT, kN);
     Rng rng(2205);
     for (int i = 0; i < n; ++i) measureRay(r, p, *ref, randomRay(rng, 2.0), 7.0);
     out.push_back(std::move(r));
-    const auto ellipsoid = polyCoefficients(2, {{{2, 0, 0}, 0.25}, {{1, 1, 0}, 0.3}, {{0, 2, 0}, 1},
-                                                {{0, 0, 2}, 2}, {{0, 0, 1}, 0.2}, {{0, 0, 0}, -1}});
+    const auto ellipsoid = polyCoefficients(2, {{{2, 0, 0}, 0.25},
+                                                {{1, 1, 0}, 0.3},
+                                                {{0, 2, 0}, 1},
+                                                {{0, 0, 2}, 2},
+                                                {{0, 0, 1}, 0.2},
+                                                {{0, 0, 0}, -1}});
     const Poly e(2, ellipsoid);
     auto refE = refQuadric(Vec3(0.25, 1, 2), Vec3(0.3, 0, 0), Vec3(0, 0, 0.2), -1);
     CaseResult re = newCase("ellipsoid as a poly of order 2: random rays", kT, kN);

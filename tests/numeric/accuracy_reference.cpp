@@ -244,10 +244,8 @@ class RefConeImpl final : public RefShape {
         pieces[n][0] = -INFINITY, pieces[n][1] = INFINITY, ++n;
       } else {
         LD s0 = -c / (2 * h);
-        if (h > 0)
-          pieces[n][0] = -INFINITY, pieces[n][1] = s0, ++n;
-        else
-          pieces[n][0] = s0, pieces[n][1] = INFINITY, ++n;
+        if (h > 0) pieces[n][0] = -INFINITY, pieces[n][1] = s0, ++n;
+        else pieces[n][0] = s0, pieces[n][1] = INFINITY, ++n;
       }
     } else {
       LD s0, s1;
@@ -564,7 +562,8 @@ class RefPolyImpl final : public RefShape {
       bool isMin = gs[i] < gs[i - 1] && gs[i] <= gs[i + 1];
       bool isMax = gs[i] > gs[i - 1] && gs[i] >= gs[i + 1];
       if (!isMin && !isMax) continue;
-      LD t = goldenExtremum([&](LD s) { return g(ray.at(s)); }, ts[i - 1], ts[i + 1], isMin ? 1 : -1, 120);
+      LD t = goldenExtremum([&](LD s) { return g(ray.at(s)); }, ts[i - 1], ts[i + 1],
+                            isMin ? 1 : -1, 120);
       LD gt = g(ray.at(t));
       breaks.push_back({t, gt});
       if (gt == 0) roots.insert(roots.end(), {t, t});  // a double root is listed twice
@@ -651,7 +650,6 @@ class RefInstanceImpl final : public RefShape {
   LMat3 normal_;
 };
 
-
 // The blob: the field Σ s·(1 − r²/R²)², r the distance to a sphere's centre or to a
 // cylinder's segment (computed here as the distance to the clamped closest point of the
 // segment, not from Lucent's three pieces), minus the threshold. The line is cut where it
@@ -660,7 +658,8 @@ class RefInstanceImpl final : public RefShape {
 // quartic, sampled, its extrema refined and its sign changes bisected as for the others.
 class RefBlobImpl final : public RefShape {
  public:
-  RefBlobImpl(double threshold, std::vector<BlobComponent> cs) : T_(threshold), cs_(std::move(cs)) {}
+  RefBlobImpl(double threshold, std::vector<BlobComponent> cs)
+      : T_(threshold), cs_(std::move(cs)) {}
 
   void lineRoots(const LRay& ray, std::vector<LRoot>& out) const override {
     std::vector<LD> cuts;
@@ -721,7 +720,8 @@ class RefBlobImpl final : public RefShape {
         bool isMin = gs[i] < gs[i - 1] && gs[i] <= gs[i + 1];
         bool isMax = gs[i] > gs[i - 1] && gs[i] >= gs[i + 1];
         if (!isMin && !isMax) continue;
-        LD t = goldenExtremum([&](LD x) { return g(ray, x); }, ts[i - 1], ts[i + 1], isMax ? -1 : 1, 120);
+        LD t = goldenExtremum([&](LD x) { return g(ray, x); }, ts[i - 1], ts[i + 1], isMax ? -1 : 1,
+                              120);
         LD gt = g(ray, t);
         breaks.push_back({t, gt});
         if (isMax && gt == 0) touching.push_back(t);
@@ -807,7 +807,8 @@ std::shared_ptr<RefShape> refQuadric(const Vec3& squares, const Vec3& mixed, con
                                      double constant) {
   return std::make_shared<RefQuadricImpl>(squares, mixed, linear, constant);
 }
-std::shared_ptr<RefShape> refPoly(int order, const std::vector<double>& coefficients, double radius) {
+std::shared_ptr<RefShape> refPoly(int order, const std::vector<double>& coefficients,
+                                  double radius) {
   return std::make_shared<RefPolyImpl>(order, coefficients, radius);
 }
 std::shared_ptr<RefShape> refBlob(double threshold, const std::vector<BlobComponent>& components) {

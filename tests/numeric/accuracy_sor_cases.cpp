@@ -1,10 +1,9 @@
 // The sor's hard cases (docs/accuracy.md): a vase of four segments, random rays, rays
 // tangent to its silhouette (moved off by 1e-16 to 1e-1), rays along and parallel to the
-// axis, rays through the rims of its caps and a joint's circle; a bulb closing at the axis, rays through its
-// poles. Each against RefSor (long double: POV-Ray's Hermite cubic per segment; along the
-// line g = x² + z² − r²(y) on each segment's heights, split at g's critical points, every
-// sign change bisected to the last bit; the caps where the line meets them inside their
-// rims).
+// axis, rays through the rims of its caps and a joint's circle; a bulb closing at the axis, rays
+// through its poles. Each against RefSor (long double: POV-Ray's Hermite cubic per segment; along
+// the line g = x² + z² − r²(y) on each segment's heights, split at g's critical points, every sign
+// change bisected to the last bit; the caps where the line meets them inside their rims).
 #include "accuracy_cases.h"
 
 #include "primitives/sor.h"
@@ -25,7 +24,8 @@ class RefSor final : public RefShape {
       const LD x0 = P[i].x, x1 = P[i + 1].x, x2 = P[i + 2].x, x3 = P[i + 3].x;
       const LD y0 = P[i].y, y1 = P[i + 1].y, y2 = P[i + 2].y, y3 = P[i + 3].y;
       const LD h = y2 - y1, F0 = x1 * x1, F1 = x2 * x2;
-      const LD D0 = 2 * x1 * (x2 - x0) / (y2 - y0), D1 = 2 * x2 * (x3 - x1) / (y3 - y1), q = (F1 - F0) / h;
+      const LD D0 = 2 * x1 * (x2 - x0) / (y2 - y0), D1 = 2 * x2 * (x3 - x1) / (y3 - y1),
+               q = (F1 - F0) / h;
       seg_.push_back({(D0 + D1 - 2 * q) / (h * h), (3 * q - 2 * D0 - D1) / h, D0, F0, y1, y2});
     }
     bottom_ = (LD)P[1].x * P[1].x;
@@ -43,8 +43,8 @@ class RefSor final : public RefShape {
         if (ta > tb) std::swap(ta, tb);
       } else {
         if (!(ray.o.y >= s.y1 && ray.o.y < s.y2)) continue;
-        const LD far = 100 / std::sqrt(ray.d.x * ray.d.x + ray.d.z * ray.d.z) +
-                       std::abs(ray.o.x) + std::abs(ray.o.z);
+        const LD far = 100 / std::sqrt(ray.d.x * ray.d.x + ray.d.z * ray.d.z) + std::abs(ray.o.x) +
+                       std::abs(ray.o.z);
         ta = -far * 1e3L;
         tb = far * 1e3L;
       }
@@ -53,7 +53,8 @@ class RefSor final : public RefShape {
     if (dy != 0) {
       const LD t1 = (seg_.front().y1 - ray.o.y) / dy, t2 = (seg_.back().y2 - ray.o.y) / dy;
       // On a rim (to 1e-12) the cap's and the side's normals are both right.
-      if (rho2(ray, t1) < bottom_) roots.push_back({t1, LVec(0, -1, 0), bottom_ - rho2(ray, t1) > 1e-12L});
+      if (rho2(ray, t1) < bottom_)
+        roots.push_back({t1, LVec(0, -1, 0), bottom_ - rho2(ray, t1) > 1e-12L});
       if (rho2(ray, t2) < top_) roots.push_back({t2, LVec(0, 1, 0), top_ - rho2(ray, t2) > 1e-12L});
     }
     std::sort(roots.begin(), roots.end(), [](const LRoot& a, const LRoot& b) { return a.t < b.t; });
@@ -117,7 +118,8 @@ class RefSor final : public RefShape {
       const LD len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
       // No normal at a rim (either face's is right) or at a pole, where the curve meets the
       // axis with r² of zero slope (a cone's apex).
-      const bool rim = std::abs(p.y - seg_.front().y1) < 1e-12L || std::abs(p.y - seg_.back().y2) < 1e-12L;
+      const bool rim =
+          std::abs(p.y - seg_.front().y1) < 1e-12L || std::abs(p.y - seg_.back().y2) < 1e-12L;
       const bool pole = p.x * p.x + p.z * p.z < 1e-12L;
       out.push_back({t, len > 0 ? n / len : LVec(0, 1, 0), len > 0 && !rim && !pole});
     }
@@ -155,7 +157,8 @@ std::vector<CaseResult> sorCases(double effort) {
   }
   {
     Rng rng(2102);
-    CaseResult r = newCase("vase: tangent to the silhouette, 1e-16 to 1e-1 inside or outside", kT, kN);
+    CaseResult r =
+        newCase("vase: tangent to the silhouette, 1e-16 to 1e-1 inside or outside", kT, kN);
     for (int i = 0; i < n; ++i) {
       const double y = uniform(rng, 0.02, 1.58), phi = uniform(rng, 0, 2 * kPi);
       const double r2 = sv.radiusSquaredAt(y), rho = std::sqrt(r2);
@@ -172,7 +175,8 @@ std::vector<CaseResult> sorCases(double effort) {
   }
   {
     Rng rng(2103);
-    CaseResult r = newCase("vase: along the axis and parallel to it (exactly, and tilted by 1e-9)", kT, kN);
+    CaseResult r =
+        newCase("vase: along the axis and parallel to it (exactly, and tilted by 1e-9)", kT, kN);
     for (int i = 0; i < n; ++i) {
       const double rho = i % 5 == 0 ? 0.0 : uniform(rng, 0.0, 0.95), phi = uniform(rng, 0, 2 * kPi);
       const double tilt = (i / 2) % 2 ? 1e-9 : 0.0, up = i % 2 ? 1.0 : -1.0;
@@ -184,11 +188,18 @@ std::vector<CaseResult> sorCases(double effort) {
   }
   {
     Rng rng(2104);
-    CaseResult r = newCase("vase: through the caps' rims and a joint's circle, 1e-16 to 1e-1 off in radius and height", kT, kN);
+    CaseResult r = newCase(
+        "vase: through the caps' rims and a joint's circle, 1e-16 to 1e-1 off in radius and height",
+        kT, kN);
     for (int i = 0; i < n; ++i) {
       // The bottom rim (0.6 at y = 0), the top rim (0.7 at 1.6), the joint at (0.5, 1.4).
       const int which = i % 3;
-      const double rim = which == 0 ? 0.6 : which == 1 ? 0.7 : 0.5, h = which == 0 ? 0.0 : which == 1 ? 1.6 : 1.4;
+      const double rim = which == 0   ? 0.6
+                         : which == 1 ? 0.7
+                                      : 0.5,
+                   h = which == 0   ? 0.0
+                       : which == 1 ? 1.6
+                                    : 1.4;
       const double phi = uniform(rng, 0, 2 * kPi);
       const double dr = (rng() % 3 == 0 ? 0.0 : (rng() % 2 ? 1 : -1) * logUniform(rng, -16, -1));
       const double dh = (rng() % 3 == 0 ? 0.0 : (rng() % 2 ? 1 : -1) * logUniform(rng, -16, -1));

@@ -59,48 +59,66 @@ TEST_CASE("accuracy: near-singular transforms through Instance", "[numeric][accu
   requireWithinBounds(nearSingularCases(1.0));
 }
 
-TEST_CASE("accuracy: superellipsoids: a near cube grazed at its edges and along its faces, tangent and secondary rays",
-          "[numeric][accuracy][superellipsoid]") {
+TEST_CASE(
+    "accuracy: superellipsoids: a near cube grazed at its edges and along its faces, tangent and "
+    "secondary rays",
+    "[numeric][accuracy][superellipsoid]") {
   requireWithinBounds(superellipsoidCases(1.0));
 }
 
-TEST_CASE("accuracy: quadrics and polys: a cylinder, a cone and a plane as quadrics, a torus as a quartic, the tangle cube",
-          "[numeric][accuracy][quadric][poly]") {
+TEST_CASE(
+    "accuracy: quadrics and polys: a cylinder, a cone and a plane as quadrics, a torus as a "
+    "quartic, the tangle cube",
+    "[numeric][accuracy][quadric][poly]") {
   requireWithinBounds(quadricCases(1.0));
 }
 
-TEST_CASE("accuracy: blobs: tangent rays, a strength just above the threshold, fields just merging, a carved hole, secondary rays",
-          "[numeric][accuracy][blob]") {
+TEST_CASE(
+    "accuracy: blobs: tangent rays, a strength just above the threshold, fields just merging, a "
+    "carved hole, secondary rays",
+    "[numeric][accuracy][blob]") {
   requireWithinBounds(blobCases(1.0));
 }
 
-TEST_CASE("accuracy: isosurfaces: sphere and torus functions, thin shells, a too low max-gradient, secondary rays",
-          "[numeric][accuracy][isosurface]") {
+TEST_CASE(
+    "accuracy: isosurfaces: sphere and torus functions, thin shells, a too low max-gradient, "
+    "secondary rays",
+    "[numeric][accuracy][isosurface]") {
   requireWithinBounds(isosurfaceCases(1.0));
 }
 
-TEST_CASE("accuracy: prisms: a star with a hole, rays through vertices, along side faces, grazing the caps",
-          "[numeric][accuracy][prism]") {
+TEST_CASE(
+    "accuracy: prisms: a star with a hole, rays through vertices, along side faces, grazing the "
+    "caps",
+    "[numeric][accuracy][prism]") {
   requireWithinBounds(prismCases(1.0));
 }
 
-TEST_CASE("accuracy: lathes: a Bezier vase and a linear goblet, tangent to the silhouette, through the axis, at the rims",
-          "[numeric][accuracy][lathe]") {
+TEST_CASE(
+    "accuracy: lathes: a Bezier vase and a linear goblet, tangent to the silhouette, through the "
+    "axis, at the rims",
+    "[numeric][accuracy][lathe]") {
   requireWithinBounds(latheCases(1.0));
 }
 
-TEST_CASE("accuracy: text: o, 8 and e with holes, rays into the holes, along a glyph's edge, through segment joins",
-          "[numeric][accuracy][text]") {
+TEST_CASE(
+    "accuracy: text: o, 8 and e with holes, rays into the holes, along a glyph's edge, through "
+    "segment joins",
+    "[numeric][accuracy][text]") {
   requireWithinBounds(textCases(1.0));
 }
 
-TEST_CASE("accuracy: sors: tangent to the silhouette, along the axis, through the caps' rims, through the poles",
-          "[numeric][accuracy][sor]") {
+TEST_CASE(
+    "accuracy: sors: tangent to the silhouette, along the axis, through the caps' rims, through "
+    "the poles",
+    "[numeric][accuracy][sor]") {
   requireWithinBounds(sorCases(1.0));
 }
 
-TEST_CASE("accuracy: height fields: random rays, edge-on along grid lines and diagonals, along grid edges",
-          "[numeric][accuracy][height-field]") {
+TEST_CASE(
+    "accuracy: height fields: random rays, edge-on along grid lines and diagonals, along grid "
+    "edges",
+    "[numeric][accuracy][height-field]") {
   requireWithinBounds(heightFieldCases(1.0));
 }
 

@@ -79,8 +79,8 @@ std::vector<CaseResult> superellipsoidCases(double effort) {
     Rng rng(1702);
     CaseResult r = newCase("e = n = 0.1: tangent at the rounded edges and corners", kT, kN);
     for (int i = 0; i < n; ++i)
-      measureRay(r, box, *refBox, grazingRay(rng, pointToward(box, edgeOrCornerDirection(rng, i % 3 == 0))),
-                 size);
+      measureRay(r, box, *refBox,
+                 grazingRay(rng, pointToward(box, edgeOrCornerDirection(rng, i % 3 == 0))), size);
     out.push_back(std::move(r));
   }
   {
@@ -88,8 +88,10 @@ std::vector<CaseResult> superellipsoidCases(double effort) {
     // over most of their extent, so these rays cut long shallow chords or just miss. Half
     // exactly parallel to the face, half tilted by 1e-9.
     Rng rng(1703);
-    CaseResult r01 = newCase("e = n = 0.1: along the flat faces, 1e-16 to 1e-1 inside or outside", kT, kN);
-    CaseResult r005 = newCase("e = n = 0.05: along the flat faces, 1e-16 to 1e-1 inside or outside", kT, kN);
+    CaseResult r01 =
+        newCase("e = n = 0.1: along the flat faces, 1e-16 to 1e-1 inside or outside", kT, kN);
+    CaseResult r005 =
+        newCase("e = n = 0.05: along the flat faces, 1e-16 to 1e-1 inside or outside", kT, kN);
     for (int i = 0; i < 2 * n; ++i) {
       const bool first = i % 2 == 0;
       double delta = logUniform(rng, -16.0, -1.0);
@@ -118,12 +120,15 @@ std::vector<CaseResult> superellipsoidCases(double effort) {
     for (auto [e, nn] : exps) {
       Superellipsoid s(e, nn);
       auto ref = refSuperellipsoid(e, nn);
-      CaseResult r = newCase(fmt::format("e = {}, n = {}: tangent at random points, and random rays", e, nn), kT, kN);
+      CaseResult r = newCase(
+          fmt::format("e = {}, n = {}: tangent at random points, and random rays", e, nn), kT, kN);
       for (int i = 0; i < n / 2; ++i) {
         // The octahedron's faces are flat: a line within rounding of one lies on it over a
         // whole stretch, and where along it the crossing falls is rounding's choice (the
         // decision itself is then within rounding). Its tangent lines keep off by 1e-13.
-        measureRay(r, s, *ref, grazingRay(rng, pointToward(s, randomUnit(rng)), e == 2.0 ? -13.0 : -16.0), size);
+        measureRay(r, s, *ref,
+                   grazingRay(rng, pointToward(s, randomUnit(rng)), e == 2.0 ? -13.0 : -16.0),
+                   size);
         measureRay(r, s, *ref, randomRay(rng), size);
       }
       out.push_back(std::move(r));

@@ -19,10 +19,20 @@ namespace {
 struct LSeg {
   int degree;
   LD x[3], y[3];
-  LD X(LD s) const { return degree == 1 ? x[0] + s * (x[1] - x[0]) : (1 - s) * (1 - s) * x[0] + 2 * s * (1 - s) * x[1] + s * s * x[2]; }
-  LD Y(LD s) const { return degree == 1 ? y[0] + s * (y[1] - y[0]) : (1 - s) * (1 - s) * y[0] + 2 * s * (1 - s) * y[1] + s * s * y[2]; }
-  LD dX(LD s) const { return degree == 1 ? x[1] - x[0] : 2 * ((1 - s) * (x[1] - x[0]) + s * (x[2] - x[1])); }
-  LD dY(LD s) const { return degree == 1 ? y[1] - y[0] : 2 * ((1 - s) * (y[1] - y[0]) + s * (y[2] - y[1])); }
+  LD X(LD s) const {
+    return degree == 1 ? x[0] + s * (x[1] - x[0])
+                       : (1 - s) * (1 - s) * x[0] + 2 * s * (1 - s) * x[1] + s * s * x[2];
+  }
+  LD Y(LD s) const {
+    return degree == 1 ? y[0] + s * (y[1] - y[0])
+                       : (1 - s) * (1 - s) * y[0] + 2 * s * (1 - s) * y[1] + s * s * y[2];
+  }
+  LD dX(LD s) const {
+    return degree == 1 ? x[1] - x[0] : 2 * ((1 - s) * (x[1] - x[0]) + s * (x[2] - x[1]));
+  }
+  LD dY(LD s) const {
+    return degree == 1 ? y[1] - y[0] : 2 * ((1 - s) * (y[1] - y[0]) + s * (y[2] - y[1]));
+  }
 };
 
 // Roots in [0, 1) of p·X(s) + q·Y(s) + r = 0, polished by Newton steps.
@@ -79,7 +89,8 @@ class RefText final : public RefShape {
         std::vector<LD> ss;
         segmentRoots(g, dy, -dx, dx * ray.o.y - dy * ray.o.x, ss);
         for (LD s : ss) {
-          const LD t = std::fabs(dx) > std::fabs(dy) ? (g.X(s) - ray.o.x) / dx : (g.Y(s) - ray.o.y) / dy;
+          const LD t =
+              std::fabs(dx) > std::fabs(dy) ? (g.X(s) - ray.o.x) / dx : (g.Y(s) - ray.o.y) / dy;
           const LD z = ray.o.z + t * ray.d.z;
           if (!(z >= 0 && z <= h_)) continue;
           const LD tx = g.dX(s), ty = g.dY(s), len = std::sqrt(tx * tx + ty * ty);
@@ -89,7 +100,8 @@ class RefText final : public RefShape {
     if (ray.d.z != 0)
       for (LD h : {(LD)0, (LD)h_}) {
         const LD t = (h - ray.o.z) / ray.d.z;
-        if (inside(ray.o.x + t * dx, ray.o.y + t * dy)) roots.push_back({t, LVec(0, 0, h == 0 ? -1 : 1)});
+        if (inside(ray.o.x + t * dx, ray.o.y + t * dy))
+          roots.push_back({t, LVec(0, 0, h == 0 ? -1 : 1)});
       }
     std::sort(roots.begin(), roots.end(), [](const LRoot& a, const LRoot& b) { return a.t < b.t; });
     for (size_t i = 0; i < roots.size(); ++i) {
@@ -116,9 +128,7 @@ class RefText final : public RefShape {
   LD h_;
 };
 
-CaseResult newCase(const std::string& name) {
-  return makeCase("Text", name, 1e-13, 1e-11);
-}
+CaseResult newCase(const std::string& name) { return makeCase("Text", name, 1e-13, 1e-11); }
 
 }  // namespace
 
@@ -158,7 +168,8 @@ std::vector<CaseResult> textCases(double effort) {
           for (int k = 0; k <= s.degree; ++k) gb.expand(Vec3(s.p[k].x, s.p[k].y, 0));
       const double fy = i % 3 == 1 ? (rng() % 2 ? 0.27 : 0.73) : i % 3 == 2 ? 0.68 : 0.5;
       const Vec3 target(gb.lo.x + 0.5 * (gb.hi.x - gb.lo.x) + uniform(rng, -0.05, 0.05),
-                        gb.lo.y + fy * (gb.hi.y - gb.lo.y) + uniform(rng, -0.03, 0.03), uniform(rng, 0, h));
+                        gb.lo.y + fy * (gb.hi.y - gb.lo.y) + uniform(rng, -0.03, 0.03),
+                        uniform(rng, 0, h));
       Vec3 d = randomUnit(rng);
       if (i % 2) d.z = std::copysign(3.0, d.z);  // steep: mostly through the hole
       measureRay(r, text, ref, Ray(target - 3.0 * d, d * uniform(rng, 0.5, 2.0)), size);
@@ -167,7 +178,8 @@ std::vector<CaseResult> textCases(double effort) {
   }
   {
     Rng rng(2103);
-    CaseResult r = newCase("o, 8 and e: along a glyph's edge (a segment's tangent), 1e-16 to 1e-1 inside or outside");
+    CaseResult r = newCase(
+        "o, 8 and e: along a glyph's edge (a segment's tangent), 1e-16 to 1e-1 inside or outside");
     std::vector<PrismSegment> segs;
     for (const PlacedGlyph& g : o.glyphs)
       for (const PrismContour& c : g.contours) segs.insert(segs.end(), c.begin(), c.end());

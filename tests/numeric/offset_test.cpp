@@ -34,7 +34,8 @@ TEST_CASE("offsetRayOrigin: moves past the error box on the side of w", "[numeri
 
 TEST_CASE("offsetRayOrigin: an exact point still moves off its surface", "[numeric][offset]") {
   // A box face: pError is 0 along the normal; the origin must still leave the face plane.
-  Vec3 po = offsetRayOrigin(Vec3(1, 0.5, 0.25), Vec3(0, 1e-16, 1e-16), Vec3(1, 0, 0), Vec3(1, 1, 0));
+  Vec3 po =
+      offsetRayOrigin(Vec3(1, 0.5, 0.25), Vec3(0, 1e-16, 1e-16), Vec3(1, 0, 0), Vec3(1, 1, 0));
   CHECK(po.x > 1.0);
   CHECK(po.x == std::nextafter(1.0, 2.0));
   po = offsetRayOrigin(Vec3(1, 0.5, 0.25), Vec3(0.0), Vec3(1, 0, 0), Vec3(-1, 0, 0));
@@ -45,13 +46,27 @@ TEST_CASE("offsetRayOrigin: an exact point still moves off its surface", "[numer
 TEST_CASE("nextUp and nextDown step like std::nextafter", "[numeric][offset]") {
   const double lim = std::numeric_limits<double>::max();
   const double tiny = std::numeric_limits<double>::denorm_min();
-  std::vector<double> values = {0.0,  -0.0, tiny, -tiny, 1.0,  -1.0,  lim,  -lim,
-                                1e-310, -1e-310, 1e5, -1e5, 0.1, -0.3, kInf, -kInf,
-                                std::numeric_limits<double>::min(), -std::numeric_limits<double>::min()};
+  std::vector<double> values = {0.0,
+                                -0.0,
+                                tiny,
+                                -tiny,
+                                1.0,
+                                -1.0,
+                                lim,
+                                -lim,
+                                1e-310,
+                                -1e-310,
+                                1e5,
+                                -1e5,
+                                0.1,
+                                -0.3,
+                                kInf,
+                                -kInf,
+                                std::numeric_limits<double>::min(),
+                                -std::numeric_limits<double>::min()};
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int i = 0; i < 100000; ++i)
-    values.push_back(std::ldexp(u(rng), int(rng() % 2000) - 1000));
+  for (int i = 0; i < 100000; ++i) values.push_back(std::ldexp(u(rng), int(rng() % 2000) - 1000));
   for (double v : values) {
     INFO(v);
     const double up = std::nextafter(v, kInf), down = std::nextafter(v, -kInf);

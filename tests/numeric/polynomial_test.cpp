@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 
 using namespace lucent;
-using Catch::Matchers::WithinRel;
 using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
 
 namespace {
 // Coefficients of Π (x − r_i) and the magnitudes behind them.

@@ -7,8 +7,7 @@
 using namespace lucent;
 using Catch::Matchers::WithinRel;
 
-TEST_CASE("quadratic: both roots keep full precision when they differ by 20 orders",
-          "[numeric]") {
+TEST_CASE("quadratic: both roots keep full precision when they differ by 20 orders", "[numeric]") {
   // (t − 1e-10)(t − 1e10) = t² − (1e10 + 1e-10)·t + 1: h = −(1e10 + 1e-10)/2.
   double t0, t1;
   double a = 1.0, h = -0.5 * (1e10 + 1e-10), c = 1.0;

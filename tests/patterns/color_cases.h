@@ -32,8 +32,7 @@ inline std::map<std::string, ColorAt> colorCases() {
   const Color red(1, 0, 0), green(0, 1, 0), blue(0, 0, 1);
   PatternPlacement none;
   PatternPlacement hexPlaced;
-  hexPlaced.patternFromObject =
-      then(inverseScale(Vec3(0.3)), inverseTranslate(Vec3(0.1, 0, -0.2)));
+  hexPlaced.patternFromObject = then(inverseScale(Vec3(0.3)), inverseTranslate(Vec3(0.1, 0, -0.2)));
   PatternPlacement hexTurbulent;
   hexTurbulent.turbulence = Vec3(0.3);
   PatternPlacement brickTurbulent;
@@ -51,18 +50,20 @@ inline std::map<std::string, ColorAt> colorCases() {
   whiteBrick.color2 = Color(0.0f);
 
   return {
-      {"map_bozo", mapped(spec(T::bozo), {{{0.2, red}, {0.5, Color(0, 1, 0.5f)},
-                                           {0.9, Color(0.1f, 0.2f, 0.9f)}}})},
+      {"map_bozo",
+       mapped(spec(T::bozo),
+              {{{0.2, red}, {0.5, Color(0, 1, 0.5f)}, {0.9, Color(0.1f, 0.2f, 0.9f)}}})},
       {"map_single", mapped(spec(T::onion), {{{0.5, Color(0.3f, 0.6f, 0.9f)}}})},
       {"map_step", mapped(axis(spec(T::gradient), Vec3(1, 0, 0)),
                           {{{0, Color(0)}, {0.5, red}, {0.5, blue}, {1, Color(1)}}})},
-      {"map_single_precision",
-       mapped(spec(T::leopard), {{{0.1, Color(0.25f, 0.5f, 0.75f)}, {0.3, Color(1, 0.5f, 0)},
-                                  {0.7, Color(0, 0.3f, 0.1f)}}})},
+      {"map_single_precision", mapped(spec(T::leopard), {{{0.1, Color(0.25f, 0.5f, 0.75f)},
+                                                          {0.3, Color(1, 0.5f, 0)},
+                                                          {0.7, Color(0, 0.3f, 0.1f)}}})},
       {"map_none", mapped(spec(T::granite), ColorMap{})},
-      {"map_wide", mapped(turbulent(spec(T::marble), Vec3(0.6)),
-                          {{{-0.5, Color(0.2f, 0.4f, 0.6f)}, {0.3, Color(0.9f, 0.1f, 0.3f)},
-                            {1.5, Color(0.05f, 0.95f, 0.5f)}}})},
+      {"map_wide",
+       mapped(turbulent(spec(T::marble), Vec3(0.6)), {{{-0.5, Color(0.2f, 0.4f, 0.6f)},
+                                                       {0.3, Color(0.9f, 0.1f, 0.3f)},
+                                                       {1.5, Color(0.05f, 0.95f, 0.5f)}}})},
       {"hexagon", hexagon(HexagonSpec{{red, green, blue}}, none)},
       {"hexagon_scaled", hexagon(HexagonSpec{{Color(0.2f, 0.3f, 0.4f), Color(0.9f, 0.8f, 0.1f),
                                               Color(0.5f, 0.5f, 0)}},

@@ -20,8 +20,7 @@ TEST_CASE("every colour reference case has a Lucent spec", "[pattern]") {
   CHECK(cases.size() == specs.size());
 }
 
-TEST_CASE("colour maps, hexagon and brick give POV-Ray's float colours to 1e-9",
-          "[pattern]") {
+TEST_CASE("colour maps, hexagon and brick give POV-Ray's float colours to 1e-9", "[pattern]") {
   const auto cases = referenceCases("colors.csv");
   for (const auto& [name, colorAt] : colorCases()) {
     auto it = cases.find(name);
@@ -47,7 +46,9 @@ TEST_CASE("colour maps, hexagon and brick give POV-Ray's float colours to 1e-9",
 
 TEST_CASE("a colour map is constant beyond its ends and steps where two entries meet",
           "[pattern]") {
-  const ColorMap map{{{0.25, Color(1, 0, 0)}, {0.5, Color(0, 1, 0)}, {0.5, Color(0, 0, 1)},
+  const ColorMap map{{{0.25, Color(1, 0, 0)},
+                      {0.5, Color(0, 1, 0)},
+                      {0.5, Color(0, 0, 1)},
                       {0.75, Color(1, 1, 1)}}};
   CHECK(lookupColorMap(map, -3.0) == Color(1, 0, 0));
   CHECK(lookupColorMap(map, 0.25) == Color(1, 0, 0));

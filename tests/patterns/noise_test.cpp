@@ -27,8 +27,7 @@ TEST_CASE("noise of all three generators equals POV-Ray's to 1e-15", "[pattern]"
   CHECK(worst[0] <= 1e-15);
 }
 
-TEST_CASE("noise stays in [0, 1] and is defined at huge and non-finite coordinates",
-          "[pattern]") {
+TEST_CASE("noise stays in [0, 1] and is defined at huge and non-finite coordinates", "[pattern]") {
   const double far[] = {1e12, -3e15, 1e300, INFINITY, -INFINITY, NAN};
   for (double c : far)
     for (int g = 1; g <= 3; ++g) {

@@ -39,10 +39,9 @@ inline std::map<std::string, NormalSpec> normalCases() {
       {"spiral2", bumpy(arms(spec(T::spiral2), 2), 0.5)},
       {"radial", bumpy(tuned(spec(T::radial), 6, 0), 0.4)},
       {"spotted", bumpy(generator(spec(T::spotted), 3), 0.5)},
-      {"slope_rotated",
-       bumpy(placed(spec(T::granite), then(inverseRotate(Vec3(20, 30, 40)),
-                                           inverseScale(Vec3(1, 0.5, 2)))),
-             0.6)},
+      {"slope_rotated", bumpy(placed(spec(T::granite), then(inverseRotate(Vec3(20, 30, 40)),
+                                                            inverseScale(Vec3(1, 0.5, 2)))),
+                              0.6)},
   };
 }
 

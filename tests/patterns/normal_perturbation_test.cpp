@@ -37,8 +37,7 @@ TEST_CASE("every normal reference case has a Lucent spec", "[pattern]") {
   CHECK(cases.size() == specs.size());
 }
 
-TEST_CASE("perturbed normals light a plane as POV-Ray's do, to 16-bit quantisation",
-          "[pattern]") {
+TEST_CASE("perturbed normals light a plane as POV-Ray's do, to 16-bit quantisation", "[pattern]") {
   const auto cases = referenceCases("normals.csv");
   for (const auto& [name, s] : normalCases()) {
     auto it = cases.find(name);

@@ -66,8 +66,7 @@ TEST_CASE("pattern values stay within POV-Ray's range [0, 1.00001]", "[pattern]"
     }
 }
 
-TEST_CASE("pattern values and normals are defined at huge and non-finite points",
-          "[pattern]") {
+TEST_CASE("pattern values and normals are defined at huge and non-finite points", "[pattern]") {
   const double far[] = {3e9, -1e15, 1e300, -1e300, INFINITY, NAN};
   for (int t = 0; t < kPatternTypeCount; ++t) {
     PatternSpec s;

@@ -36,10 +36,8 @@ inline std::vector<ReferenceRow> readReference(const std::string& file, bool nam
     ReferenceRow row;
     bool first = true;
     while (std::getline(fields, field, ',')) {
-      if (first && named)
-        row.name = field;
-      else
-        row.values.push_back(std::stod(field));
+      if (first && named) row.name = field;
+      else row.values.push_back(std::stod(field));
       first = false;
     }
     rows.push_back(row);

@@ -24,8 +24,7 @@ RgbImage pattern(int w, int h) {
   RgbImage img(w, h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      for (int c = 0; c < 3; ++c)
-        img.at(x, y)[c] = 0.5f + 0.4f * std::sin(0.7f * x + 1.3f * y + c);
+      for (int c = 0; c < 3; ++c) img.at(x, y)[c] = 0.5f + 0.4f * std::sin(0.7f * x + 1.3f * y + c);
   return img;
 }
 
@@ -57,7 +56,7 @@ TEST_CASE("SSIM drops for noise and structure changes", "[povray][metrics]") {
 TEST_CASE("compareImages counts the pixels over the threshold and finds the maximum",
           "[povray][metrics]") {
   RgbImage a = constant(10, 10, 0.5f), b = a;
-  b.at(3, 4)[1] = 0.6f;             // 0.1 off: over 2/255
+  b.at(3, 4)[1] = 0.6f;               // 0.1 off: over 2/255
   b.at(7, 1)[0] = 0.5f + 1.0f / 255;  // under 2/255
   ImageMetrics m = compareImages(a, b, 2.0 / 255.0);
   CHECK(m.pixelsOver == 1);

@@ -3,8 +3,8 @@
 // (errors naming them).
 #include "povray/pov_export.h"
 
-#include "lang/parser.h"
 #include "../support/paths.h"
+#include "lang/parser.h"
 
 #include <catch2/catch.hpp>
 
@@ -14,9 +14,11 @@ namespace {
 
 // Scenes beside examples/gallery/, so that textures/bumps.png resolves.
 PovExport exportBumpScene(const std::string& shape, std::string& messages) {
-  std::string xml = "<scene version=\"1\">\n<camera position=\"0 1 5\"/>\n"
-                    "<material id=\"studs\" diffuse=\"0.8\"><bump-map src=\"textures/bumps.png\" "
-                    "depth=\"-1.25\"/></material>\n" + shape + "\n</scene>\n";
+  std::string xml =
+      "<scene version=\"1\">\n<camera position=\"0 1 5\"/>\n"
+      "<material id=\"studs\" diffuse=\"0.8\"><bump-map src=\"textures/bumps.png\" "
+      "depth=\"-1.25\"/></material>\n" +
+      shape + "\n</scene>\n";
   ParseResult parsed =
       parseSceneString(xml, std::string(lucentSourceDir()) + "/examples/gallery/bump-test.xml");
   for (const Diagnostic& d : parsed.diagnostics.all()) UNSCOPED_INFO(d.str());
@@ -35,8 +37,11 @@ std::string bumpNormalBlock(const std::string& extra) {
   const std::string path = std::string(lucentSourceDir()) + "/examples/gallery/textures/bumps.png";
   return "    normal {\n"
          "      uv_mapping\n"
-         "      bump_map { png \"" + path + "\" gamma 1.0 interpolate 2 use_color }\n"
-         "      bump_size -1.25\n" + extra + "    }\n";
+         "      bump_map { png \"" +
+         path +
+         "\" gamma 1.0 interpolate 2 use_color }\n"
+         "      bump_size -1.25\n" +
+         extra + "    }\n";
 }
 
 }  // namespace
@@ -57,8 +62,8 @@ TEST_CASE("a bump map on a mesh with uvs is a uv-mapped bump_map read as stored"
 TEST_CASE("a bump map on a sphere is a uv-mapped bump_map turned to Lucent's longitude",
           "[povray][bump-map]") {
   std::string messages;
-  PovExport e = exportBumpScene(R"XML(<sphere center="1 2 3" radius="2" material="studs"/>)XML",
-                                messages);
+  PovExport e =
+      exportBumpScene(R"XML(<sphere center="1 2 3" radius="2" material="studs"/>)XML", messages);
   REQUIRE(e.ok());
   CHECK(messages.empty());
   // (u, v, 0) to (0.75 - u, v, 0) by a half turn about y, so that the bump frame is kept

@@ -14,15 +14,16 @@ TEST_CASE("pinhole camera becomes a perspective camera with negative handedness"
   Exported e = exportScene(R"XML(<render width="640" height="480"/>
       <camera position="0 2 8" look-at="0 1 0" up="0 1 0" fov="50"/>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(e.has("camera {\n"
-              "  perspective\n"
-              "  right -x*640/480\n"
-              "  up y\n"
-              "  angle 50\n"
-              "  location <0, 2, 8>\n"
-              "  sky <0, 1, 0>\n"
-              "  look_at <0, 1, 0>\n"
-              "}\n"));
+  CHECK(
+      e.has("camera {\n"
+            "  perspective\n"
+            "  right -x*640/480\n"
+            "  up y\n"
+            "  angle 50\n"
+            "  location <0, 2, 8>\n"
+            "  sky <0, 1, 0>\n"
+            "  look_at <0, 1, 0>\n"
+            "}\n"));
 }
 
 TEST_CASE("vertical and diagonal fov are turned into POV-Ray's horizontal angle",
@@ -74,7 +75,8 @@ TEST_CASE("orthographic and fisheye cameras keep explicit right and up", "[povra
 
 TEST_CASE("cameras POV-Ray cannot express are errors naming the element and location",
           "[povray][camera]") {
-  Exported lens = exportScene(R"XML(<camera type="thin-lens" position="0 1 4" look-at="0 1 0"/>)XML");
+  Exported lens =
+      exportScene(R"XML(<camera type="thin-lens" position="0 1 4" look-at="0 1 0"/>)XML");
   CHECK_FALSE(lens.pov.ok());
   CHECK(lens.pov.text.empty());
   REQUIRE(lens.pov.issues.size() == 1);
@@ -90,8 +92,9 @@ TEST_CASE("cameras POV-Ray cannot express are errors naming the element and loca
 
   Exported clipped = exportScene(R"XML(<camera name="main" near="0.5"/>)XML");
   CHECK_FALSE(clipped.pov.ok());
-  CHECK(clipped.messages() == "test.xml:2:1: error: camera 'main': near/far clipping has no "
-                              "POV-Ray equivalent (POV-Ray cameras do not clip)\n");
+  CHECK(clipped.messages() ==
+        "test.xml:2:1: error: camera 'main': near/far clipping has no "
+        "POV-Ray equivalent (POV-Ray cameras do not clip)\n");
 }
 
 TEST_CASE("a fisheye on a coloured background warns that POV-Ray leaves the corners black",
@@ -102,8 +105,9 @@ TEST_CASE("a fisheye on a coloured background warns that POV-Ray leaves the corn
 
   Exported e = exportScene(R"XML(<camera type="fisheye"/><render background="0.2 0.3 0.4"/>)XML");
   CHECK(e.pov.ok());
-  CHECK(e.messages() == "test.xml:2:1: warning: fisheye camera: POV-Ray leaves the pixels "
-                        "outside the image circle black; Lucent gives them the background\n");
+  CHECK(e.messages() ==
+        "test.xml:2:1: warning: fisheye camera: POV-Ray leaves the pixels "
+        "outside the image circle black; Lucent gives them the background\n");
 }
 
 TEST_CASE("render settings become global_settings and background after #version 3.7",
@@ -112,12 +116,14 @@ TEST_CASE("render settings become global_settings and background after #version 
         background="0.1 0.2 0.3" ambient="0.5 0.5 0.4" epsilon="1e-4"/>)XML");
   REQUIRE(e.pov.ok());
   CHECK(e.pov.text.find("#version 3.7;\n") < e.pov.text.find("global_settings"));
-  CHECK(e.has("global_settings {\n  assumed_gamma 1.0\n  max_trace_level 7\n"
-              "  adc_bailout 0.01\n  ambient_light rgb <0.5, 0.5, 0.4>\n}\n"
-              "background { rgb <0.1, 0.2, 0.3> }\n"));
-  CHECK(e.messages() == "test.xml:3:1: warning: render: epsilon 0.0001 has no POV-Ray "
-                        "equivalent (POV-Ray ignores hits closer than its own fixed "
-                        "tolerances)\n");
+  CHECK(
+      e.has("global_settings {\n  assumed_gamma 1.0\n  max_trace_level 7\n"
+            "  adc_bailout 0.01\n  ambient_light rgb <0.5, 0.5, 0.4>\n}\n"
+            "background { rgb <0.1, 0.2, 0.3> }\n"));
+  CHECK(e.messages() ==
+        "test.xml:3:1: warning: render: epsilon 0.0001 has no POV-Ray "
+        "equivalent (POV-Ray ignores hits closer than its own fixed "
+        "tolerances)\n");
 }
 
 TEST_CASE("every camera type without a POV-Ray twin is refused by name, with no scene written",

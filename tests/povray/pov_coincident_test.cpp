@@ -53,12 +53,13 @@ TEST_CASE("export does not warn for operands that only come close or meet at an 
           "[povray][coincident]") {
   // A pocket below the top; boxes apart whose tops are level but do not overlap;
   // a sphere in a box it touches at six points; different spheres.
-  for (const char* body : {
-           R"XML(<difference><box/><box min="-0.5 0 -0.5" max="0.5 0.999 0.5"/></difference>)XML",
-           R"XML(<union><box min="0 0 0" max="1 1 1"/><box min="1.5 0 0" max="2.5 1 1"/></union>)XML",
-           R"XML(<intersection><box/><sphere/></intersection>)XML",
-           R"XML(<union><sphere/><sphere radius="1.0001"/></union>)XML",
-       }) {
+  for (
+      const char* body : {
+          R"XML(<difference><box/><box min="-0.5 0 -0.5" max="0.5 0.999 0.5"/></difference>)XML",
+          R"XML(<union><box min="0 0 0" max="1 1 1"/><box min="1.5 0 0" max="2.5 1 1"/></union>)XML",
+          R"XML(<intersection><box/><sphere/></intersection>)XML",
+          R"XML(<union><sphere/><sphere radius="1.0001"/></union>)XML",
+      }) {
     INFO(body);
     Exported e = exportScene(body);
     CHECK(e.pov.issues.empty());

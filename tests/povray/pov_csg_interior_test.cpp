@@ -16,22 +16,23 @@ TEST_CASE("a glass intersection holds one interior shared by its leaves", "[povr
   <box min="-3 -3 -3" max="3 0.5 3" material="amber"/>
 </intersection>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(e.has("intersection {  // <intersection> test.xml:5:1\n"
-              "  sphere {  // <sphere> test.xml:6:3\n"
-              "    <0, 0, -1.6>, 2\n"
-              "    texture { M1_glass }\n"
-              "  }\n"
-              "  sphere {  // <sphere> test.xml:7:3\n"
-              "    <0, 0, 1.6>, 2\n"
-              "    texture { M1_glass }\n"
-              "  }\n"
-              "  box {  // <box> test.xml:8:3\n"
-              "    <-3, -3, -3>, <3, 0.5, 3>\n"
-              "    texture { M2_amber }\n"
-              "    interior { IM2_amber }\n"
-              "  }\n"
-              "  interior { IM1_glass }\n"
-              "}\n"));
+  CHECK(
+      e.has("intersection {  // <intersection> test.xml:5:1\n"
+            "  sphere {  // <sphere> test.xml:6:3\n"
+            "    <0, 0, -1.6>, 2\n"
+            "    texture { M1_glass }\n"
+            "  }\n"
+            "  sphere {  // <sphere> test.xml:7:3\n"
+            "    <0, 0, 1.6>, 2\n"
+            "    texture { M1_glass }\n"
+            "  }\n"
+            "  box {  // <box> test.xml:8:3\n"
+            "    <-3, -3, -3>, <3, 0.5, 3>\n"
+            "    texture { M2_amber }\n"
+            "    interior { IM2_amber }\n"
+            "  }\n"
+            "  interior { IM1_glass }\n"
+            "}\n"));
 }
 
 TEST_CASE("a glass union keeps one interior per leaf, as it keeps every surface",
@@ -45,16 +46,18 @@ TEST_CASE("a glass union keeps one interior per leaf, as it keeps every surface"
   </merge>
 </union>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(e.has("  sphere {  // <sphere> test.xml:5:3\n"
-              "    <-0.5, 0, 0>, 1\n"
-              "    texture { M1_glass }\n"
-              "    interior { IM1_glass }\n"
-              "  }\n"));
+  CHECK(
+      e.has("  sphere {  // <sphere> test.xml:5:3\n"
+            "    <-0.5, 0, 0>, 1\n"
+            "    texture { M1_glass }\n"
+            "    interior { IM1_glass }\n"
+            "  }\n"));
   // The merge inside the union is a solid operation: its own leaves share its interior.
-  CHECK(e.has("    sphere {  // <sphere> test.xml:8:5\n"
-              "      <0.5, 1, 0>, 1\n"
-              "      texture { M1_glass }\n"
-              "    }\n"
-              "    interior { IM1_glass }\n"
-              "  }\n"));
+  CHECK(
+      e.has("    sphere {  // <sphere> test.xml:8:5\n"
+            "      <0.5, 1, 0>, 1\n"
+            "      texture { M1_glass }\n"
+            "    }\n"
+            "    interior { IM1_glass }\n"
+            "  }\n"));
 }

@@ -14,8 +14,10 @@ TEST_CASE("ground fog is POV-Ray's fog_type 2 with fog_offset, fog_alt and up", 
   Exported e = exportScene(
       R"XML(<fog type="ground" color="1" distance="4" filter="0.5" offset="0.25" altitude="0.5"/>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(e.has("  fog_type 2\n  distance 4\n  color rgbft <1, 1, 1, 0.5, 0>\n  fog_offset 0.25\n  fog_alt 0.5\n"
-              "  up <0, 1, 0>\n}\n"));
+  CHECK(
+      e.has("  fog_type 2\n  distance 4\n  color rgbft <1, 1, 1, 0.5, 0>\n  fog_offset 0.25\n  "
+            "fog_alt 0.5\n"
+            "  up <0, 1, 0>\n}\n"));
 }
 
 TEST_CASE("a scene without fog exports none", "[povray][fog]") {

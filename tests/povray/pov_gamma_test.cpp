@@ -57,13 +57,15 @@ TEST_CASE("pov gamma: expressions, names and disagreeing values are unreadable",
   g = findAssumedGamma("global_settings { assumed_gamma -1 }");
   CHECK(g.kind == Kind::Unreadable);
 
-  g = findAssumedGamma("#if (Old)\nglobal_settings { assumed_gamma 2.2 }\n#else\n"
-                       "global_settings { assumed_gamma 1.0 }\n#end\n");
+  g = findAssumedGamma(
+      "#if (Old)\nglobal_settings { assumed_gamma 2.2 }\n#else\n"
+      "global_settings { assumed_gamma 1.0 }\n#end\n");
   CHECK(g.kind == Kind::Unreadable);
   CHECK(g.problem == "lines 2 and 4 give different assumed_gamma values (2.2 and 1.0)");
 
   // The same value twice is one answer.
-  g = findAssumedGamma("global_settings { assumed_gamma 2.2 }\nglobal_settings { assumed_gamma 2.2 }");
+  g = findAssumedGamma(
+      "global_settings { assumed_gamma 2.2 }\nglobal_settings { assumed_gamma 2.2 }");
   CHECK(g.kind == Kind::Number);
   CHECK(g.value == 2.2);
 }

@@ -25,9 +25,10 @@ TEST_CASE("every primitive is written in POV-Ray's syntax", "[povray][geometry]"
   CHECK(e.has("torus {  // <torus> test.xml:7:1\n  2, 0.5\n"));
   CHECK(e.has("disc {  // <disc> test.xml:8:1\n  <0, 1, 0>, <0, 0, 1>, 2, 0.5\n"));
   CHECK(e.has("triangle {  // <triangle> test.xml:9:1\n  <0, 0, 0>, <1, 0, 0>, <0, 1, 0>\n"));
-  CHECK(e.has("smooth_triangle {  // <triangle> test.xml:10:1\n"
-              "  <0, 0, 0>, <0, 0, 1>,\n  <1, 0, 0>, <0, 0, 1>,\n"
-              "  <0, 1, 0>, <0, 0.7071067811865475, 0.7071067811865475>\n"));
+  CHECK(
+      e.has("smooth_triangle {  // <triangle> test.xml:10:1\n"
+            "  <0, 0, 0>, <0, 0, 1>,\n  <1, 0, 0>, <0, 0, 1>,\n"
+            "  <0, 1, 0>, <0, 0.7071067811865475, 0.7071067811865475>\n"));
 }
 
 TEST_CASE("transforms are written after the texture, so textures move with the shape",
@@ -46,17 +47,18 @@ TEST_CASE("CSG operations keep their operands, each leaf with its own material",
   <sphere radius="1.3" material="blue"/>
 </difference>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(e.has("difference {  // <difference> test.xml:5:1\n"
-              "  box {  // <box> test.xml:6:3\n"
-              "    <-1, -1, -1>, <1, 1, 1>\n"
-              "    texture { M1_red }\n"
-              "  }\n"
-              "  sphere {  // <sphere> test.xml:7:3\n"
-              "    <0, 0, 0>, 1.3\n"
-              "    texture { M2_blue }\n"
-              "  }\n"
-              "  matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  0, 1, 0>\n"
-              "}\n"));
+  CHECK(
+      e.has("difference {  // <difference> test.xml:5:1\n"
+            "  box {  // <box> test.xml:6:3\n"
+            "    <-1, -1, -1>, <1, 1, 1>\n"
+            "    texture { M1_red }\n"
+            "  }\n"
+            "  sphere {  // <sphere> test.xml:7:3\n"
+            "    <0, 0, 0>, 1.3\n"
+            "    texture { M2_blue }\n"
+            "  }\n"
+            "  matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  0, 1, 0>\n"
+            "}\n"));
 }
 
 TEST_CASE("groups and <use> are flattened with their transforms and inherited materials",
@@ -68,13 +70,15 @@ TEST_CASE("groups and <use> are flattened with their transforms and inherited ma
 </group>)XML");
   REQUIRE(e.pov.ok());
   // translate(0 2 0) · scale(2) · translate(1 0 0): the ball's centre lands at (2, 2, 0).
-  CHECK(e.has("  <0, 0, 0>, 0.5\n  texture { M1_gold }\n"
-              "  matrix <2, 0, 0,  0, 2, 0,  0, 0, 2,  2, 2, 0>\n"));
+  CHECK(
+      e.has("  <0, 0, 0>, 0.5\n  texture { M1_gold }\n"
+            "  matrix <2, 0, 0,  0, 2, 0,  0, 0, 2,  2, 2, 0>\n"));
   CHECK_FALSE(e.has("union"));
 }
 
 TEST_CASE("a CSG operation with one operand is that operand", "[povray][geometry]") {
-  Exported e = exportScene(R"XML(<intersection transform="translate(0 0 1)"><sphere/></intersection>)XML");
+  Exported e =
+      exportScene(R"XML(<intersection transform="translate(0 0 1)"><sphere/></intersection>)XML");
   REQUIRE(e.pov.ok());
   CHECK_FALSE(e.has("intersection"));
   CHECK(e.has("  matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  0, 0, 1>\n"));
@@ -86,8 +90,9 @@ TEST_CASE("a top-level plane holding the camera is turned so the camera is outsi
   Exported e = exportScene(R"XML(<plane normal="0 1 0" offset="5"/>
 <plane normal="0 1 0" offset="0"/>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(e.has("plane {  // <plane> test.xml:3:1 (turned so the camera is outside)\n"
-              "  <0, -1, 0>, -5\n"));
+  CHECK(
+      e.has("plane {  // <plane> test.xml:3:1 (turned so the camera is outside)\n"
+            "  <0, -1, 0>, -5\n"));
   CHECK(e.has("plane {  // <plane> test.xml:4:1\n  <0, 1, 0>, 0\n"));
 
   PlaneSpec floor{Vec3(0, 1, 0), 0.0};
@@ -106,14 +111,16 @@ TEST_CASE("meshes are declared once as mesh2 and instanced, closed ones get an i
 <use ref="tet"/>
 <use ref="tet" transform="translate(3 0 0)"/>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(e.has("#declare Mesh0 = mesh2 {\n"
-              "  vertex_vectors {\n    4,\n    <0, 0, 0>,\n    <0, 1, 0>,\n    <1, 0, 0>,\n"
-              "    <0, 0, 1>\n  }\n"
-              "  face_indices {\n    4,\n    <0, 1, 2>,\n    <0, 2, 3>,\n    <0, 3, 1>,\n"
-              "    <2, 1, 3>\n  }\n"
-              "  inside_vector <0.2672612419124244, 0.5345224838248488, 0.8017837257372732>\n"
-              "}\n"));
+  CHECK(
+      e.has("#declare Mesh0 = mesh2 {\n"
+            "  vertex_vectors {\n    4,\n    <0, 0, 0>,\n    <0, 1, 0>,\n    <1, 0, 0>,\n"
+            "    <0, 0, 1>\n  }\n"
+            "  face_indices {\n    4,\n    <0, 1, 2>,\n    <0, 2, 3>,\n    <0, 3, 1>,\n"
+            "    <2, 1, 3>\n  }\n"
+            "  inside_vector <0.2672612419124244, 0.5345224838248488, 0.8017837257372732>\n"
+            "}\n"));
   CHECK_FALSE(e.has("Mesh1"));
   CHECK(e.has("object {  // <mesh> test.xml:3:7\n  Mesh0\n  texture { M0_default }\n}\n"));
-  CHECK(e.has("  Mesh0\n  texture { M0_default }\n  matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  3, 0, 0>\n"));
+  CHECK(e.has(
+      "  Mesh0\n  texture { M0_default }\n  matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  3, 0, 0>\n"));
 }

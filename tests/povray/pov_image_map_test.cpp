@@ -1,11 +1,11 @@
 // Image textures as POV-Ray image_maps: the mapping transform per shape kind, and the
 // shapes whose (u,v) POV-Ray cannot reproduce.
-#include "scenegraph/shape_registry.h"
-#include "povray/pov_export.h"
 #include "povray/pov_image_map.h"
+#include "povray/pov_export.h"
+#include "scenegraph/shape_registry.h"
 
-#include "lang/parser.h"
 #include "../support/paths.h"
+#include "lang/parser.h"
 
 #include <catch2/catch.hpp>
 
@@ -16,9 +16,11 @@ namespace {
 // Scenes beside examples/, so that textures/uvgrid.png resolves.
 PovExport exportImageScene(const std::string& shape, const std::string& scale,
                            std::string& messages) {
-  std::string xml = "<scene version=\"1\">\n<camera position=\"0 1 5\"/>\n"
-                    "<material id=\"grid\" diffuse=\"1\"><image src=\"textures/uvgrid.png\" "
-                    "scale=\"" + scale + "\"/></material>\n" + shape + "\n</scene>\n";
+  std::string xml =
+      "<scene version=\"1\">\n<camera position=\"0 1 5\"/>\n"
+      "<material id=\"grid\" diffuse=\"1\"><image src=\"textures/uvgrid.png\" "
+      "scale=\"" +
+      scale + "\"/></material>\n" + shape + "\n</scene>\n";
   ParseResult parsed =
       parseSceneString(xml, std::string(lucentSourceDir()) + "/examples/image-test.xml");
   for (const Diagnostic& d : parsed.diagnostics.all()) UNSCOPED_INFO(d.str());
@@ -42,31 +44,34 @@ TEST_CASE("an image on a plane is a planar image_map turned onto the plane's tan
   REQUIRE(e.ok());
   std::string path = std::string(lucentSourceDir()) + "/examples/textures/uvgrid.png";
   // Wall: u = x, v = y; one copy per 3 units.
-  CHECK(has(e, "      image_map { png \"" + path + "\" gamma srgb interpolate 2 }\n"
-               "      matrix <3, 0, 0,  0, 3, 0,  0, 0, 1,  0, 0, 0>\n"));
+  CHECK(has(e, "      image_map { png \"" + path +
+                   "\" gamma srgb interpolate 2 }\n"
+                   "      matrix <3, 0, 0,  0, 3, 0,  0, 0, 1,  0, 0, 0>\n"));
 }
 
 TEST_CASE("an image on a sphere is POV-Ray's spherical map, reflected onto Lucent's (u,v)",
           "[povray][image]") {
   std::string messages;
-  PovExport e = exportImageScene(R"XML(<sphere center="1 2 3" material="grid"/>)XML", "1 1", messages);
+  PovExport e =
+      exportImageScene(R"XML(<sphere center="1 2 3" material="grid"/>)XML", "1 1", messages);
   REQUIRE(e.ok());
-  CHECK(has(e, "gamma srgb map_type 1 interpolate 2 }\n"
-               "      matrix <0, 0, -1,  0, 1, 0,  -1, 0, 0,  0, 0, 0>\n"
-               "      translate <1, 2, 3>\n"));
+  CHECK(has(e,
+            "gamma srgb map_type 1 interpolate 2 }\n"
+            "      matrix <0, 0, -1,  0, 1, 0,  -1, 0, 0,  0, 0, 0>\n"
+            "      translate <1, 2, 3>\n"));
 
   std::string scaled;
   PovExport bad = exportImageScene(R"XML(<sphere material="grid"/>)XML", "2 1", scaled);
   CHECK_FALSE(bad.ok());
-  CHECK(scaled == "<sphere> with the image texture of material 'grid': POV-Ray's spherical map "
-                  "covers the sphere once; image scale 2 1 has no equivalent\n");
+  CHECK(scaled ==
+        "<sphere> with the image texture of material 'grid': POV-Ray's spherical map "
+        "covers the sphere once; image scale 2 1 has no equivalent\n");
 }
 
-TEST_CASE("an image on a box becomes six face planes, each with its own copy",
-          "[povray][image]") {
+TEST_CASE("an image on a box becomes six face planes, each with its own copy", "[povray][image]") {
   std::string messages;
-  PovExport e = exportImageScene(R"XML(<box min="0 0 0" max="2 1 4" material="grid"/>)XML", "1 1",
-                                 messages);
+  PovExport e =
+      exportImageScene(R"XML(<box min="0 0 0" max="2 1 4" material="grid"/>)XML", "1 1", messages);
   REQUIRE(e.ok());
   CHECK(has(e, "intersection {  // <box>"));
   // The +x face: u = (hi_z − z)/4, v = y/1: pattern x = 4 − 4u... as the inverse matrix.
@@ -90,7 +95,8 @@ TEST_CASE("an image on a shape without a POV-Ray mapping is an error naming the 
   std::string messages;
   PovExport e = exportImageScene(R"XML(<cylinder material="grid"/>)XML", "1 1", messages);
   CHECK_FALSE(e.ok());
-  CHECK(messages == "<cylinder> with the image texture of material 'grid': POV-Ray has no "
-                    "mapping equal to Lucent's (u,v) for it (plane, disc, box, sphere and "
-                    "meshes with uvs can be exported)\n");
+  CHECK(messages ==
+        "<cylinder> with the image texture of material 'grid': POV-Ray has no "
+        "mapping equal to Lucent's (u,v) for it (plane, disc, box, sphere and "
+        "meshes with uvs can be exported)\n");
 }

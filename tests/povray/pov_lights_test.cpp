@@ -78,8 +78,9 @@ TEST_CASE("attenuation with both b and c is approximated with a warning", "[povr
   CHECK(f.distance == Approx(10.0));
   Exported e = exportScene(R"XML(<light position="0 4 0" attenuation="1 0.1 0.01"/>)XML");
   CHECK(e.pov.ok());
-  CHECK(e.messages() == "test.xml:3:1: warning: point light: attenuation with both b and c has "
-                        "no POV-Ray equivalent; the linear term b is dropped\n");
+  CHECK(e.messages() ==
+        "test.xml:3:1: warning: point light: attenuation with both b and c has "
+        "no POV-Ray equivalent; the linear term b is dropped\n");
 }
 
 TEST_CASE("a constant attenuation scales the colour", "[povray][lights]") {
@@ -92,8 +93,9 @@ TEST_CASE("a constant attenuation scales the colour", "[povray][lights]") {
 TEST_CASE("a directional light is a parallel light far behind the scene", "[povray][lights]") {
   Exported e = exportScene(R"XML(<light type="directional" direction="0 -2 0" color="0.5"/>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(e.has("light_source {\n  <0, 1000000, 0>\n  color rgb <0.5, 0.5, 0.5>\n  parallel\n"
-              "  point_at <0, 0, 0>\n}\n"));
+  CHECK(
+      e.has("light_source {\n  <0, 1000000, 0>\n  color rgb <0.5, 0.5, 0.5>\n  parallel\n"
+            "  point_at <0, 0, 0>\n}\n"));
 }
 
 TEST_CASE("a spot light is a spotlight with tightness 0", "[povray][lights]") {
@@ -131,8 +133,8 @@ TEST_CASE("an adaptive area light is POV-Ray's adaptive, whose weights it shares
   Exported zero = exportScene(
       R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 1" samples="4" adaptive="0"/>)XML");
   CHECK(zero.has("  area_light <2, 0, 0>, <0, 0, 1>, 4, 4\n  adaptive 0\n"));
-  Exported plain = exportScene(
-      R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 1" samples="4"/>)XML");
+  Exported plain =
+      exportScene(R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 1" samples="4"/>)XML");
   CHECK_FALSE(plain.has("adaptive"));
 }
 
@@ -145,16 +147,19 @@ TEST_CASE("a light without shadows is shadowless, with a warning when highlights
 
   Exported shiny = exportScene(R"XML(<light position="0 5 0" shadows="false"/>
       <sphere><material diffuse="0.5" specular="0.3"/></sphere>)XML");
-  CHECK(shiny.messages() == "test.xml:3:1: warning: point light with shadows=\"false\": "
-                            "POV-Ray's shadowless lights give no specular highlights\n");
+  CHECK(shiny.messages() ==
+        "test.xml:3:1: warning: point light with shadows=\"false\": "
+        "POV-Ray's shadowless lights give no specular highlights\n");
 }
 
-TEST_CASE("a light in the hierarchy is written where it is placed in the world", "[povray][lights]") {
+TEST_CASE("a light in the hierarchy is written where it is placed in the world",
+          "[povray][lights]") {
   Exported e = exportScene(R"XML(
     <defs><group id="lamp"><light type="spot" position="0 2 0" direction="1 0 0" angle="20"/><sphere radius="0.1" center="0 2 0" shadows="false"/></group></defs>
     <use ref="lamp" transform="rotate-y(90) translate(5 0 0)"/>)XML");
   REQUIRE(e.pov.ok());
   // rotate-y(90) turns +x to -z: the spot at (5, 2, 0) points along -z.
-  CHECK(e.has("light_source {\n  <5, 2, 0>\n  color rgb <1, 1, 1>\n  spotlight\n  point_at <5, 2, -1>\n"));
+  CHECK(e.has(
+      "light_source {\n  <5, 2, 0>\n  color rgb <1, 1, 1>\n  spotlight\n  point_at <5, 2, -1>\n"));
   CHECK(e.has("no_shadow"));
 }

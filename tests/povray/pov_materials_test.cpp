@@ -25,19 +25,20 @@ TEST_CASE("an opaque material with a coloured diffuse puts it in the pigment",
   REQUIRE(e.pov.ok());
   CHECK(e.pov.issues.empty());
   // POV-Ray multiplies ambient by the pigment: 0.1/0.5, 0.2/0.8, 0.05/0.25.
-  CHECK(e.has("#declare M1_m = texture {\n"
-              "  pigment { rgbft <0.5, 0.8, 0.25, 0, 0> }\n"
-              "  finish {\n"
-              "    ambient rgb <0.2, 0.25, 0.2>\n"
-              "    emission rgb <0, 0, 0>\n"
-              "    diffuse 1\n"
-              "    brilliance 1\n"
-              "    phong 0\n"
-              "    specular 0.5\n"
-              "    roughness 0.02\n"
-              "    reflection { rgb <0.2, 0.2, 0.2> }\n"
-              "  }\n"
-              "}\n"));
+  CHECK(
+      e.has("#declare M1_m = texture {\n"
+            "  pigment { rgbft <0.5, 0.8, 0.25, 0, 0> }\n"
+            "  finish {\n"
+            "    ambient rgb <0.2, 0.25, 0.2>\n"
+            "    emission rgb <0, 0, 0>\n"
+            "    diffuse 1\n"
+            "    brilliance 1\n"
+            "    phong 0\n"
+            "    specular 0.5\n"
+            "    roughness 0.02\n"
+            "    reflection { rgb <0.2, 0.2, 0.2> }\n"
+            "  }\n"
+            "}\n"));
   CHECK(e.has("sphere {  // <sphere> test.xml:4:1\n  <0, 0, 0>, 1\n  texture { M1_m }\n}\n"));
 }
 
@@ -73,8 +74,7 @@ TEST_CASE("a grey transmissive becomes transmit, local terms are divided by the 
   CHECK(s.ior == 1.5);
 }
 
-TEST_CASE("a coloured transmissive without local terms is an exact filter",
-          "[povray][materials]") {
+TEST_CASE("a coloured transmissive without local terms is an exact filter", "[povray][materials]") {
   Exported e = exportMaterial(R"XML(transmissive="0.9 0.5 0.2" ior="1.3")XML");
   REQUIRE(e.pov.ok());
   CHECK(e.has("  pigment { rgbft <0.9, 0.5, 0.2, 1, 0> }\n"));
@@ -83,25 +83,30 @@ TEST_CASE("a coloured transmissive without local terms is an exact filter",
   CHECK(e.has("  interior { IM1_m }\n"));
 }
 
-TEST_CASE("fresnel uses reflection { 0, k_r fresnel } with conserve_energy", "[povray][materials]") {
+TEST_CASE("fresnel uses reflection { 0, k_r fresnel } with conserve_energy",
+          "[povray][materials]") {
   Exported e = exportMaterial(R"XML(transmissive="1" reflective="1" fresnel="true" ior="1.5")XML");
   REQUIRE(e.pov.ok());
   CHECK(e.pov.issues.empty());
-  CHECK(e.has("    reflection { rgb <0, 0, 0>, rgb <1, 1, 1> fresnel on }\n"
-              "    conserve_energy\n"));
+  CHECK(
+      e.has("    reflection { rgb <0, 0, 0>, rgb <1, 1, 1> fresnel on }\n"
+            "    conserve_energy\n"));
 
-  Exported weak = exportMaterial(R"XML(transmissive="1" reflective="0.5" fresnel="true" ior="1.5")XML");
-  CHECK(weak.messages() == "test.xml:3:1: warning: material 'm': fresnel with reflective 0.5 "
-                           "(not 1): POV-Ray reduces the transmission by 1 - k_r*F, Lucent by "
-                           "1 - F\n");
+  Exported weak =
+      exportMaterial(R"XML(transmissive="1" reflective="0.5" fresnel="true" ior="1.5")XML");
+  CHECK(weak.messages() ==
+        "test.xml:3:1: warning: material 'm': fresnel with reflective 0.5 "
+        "(not 1): POV-Ray reduces the transmission by 1 - k_r*F, Lucent by "
+        "1 - F\n");
 }
 
 TEST_CASE("absorption maps onto an exponential interior fade", "[povray][materials]") {
   Exported e = exportMaterial(R"XML(transmissive="1" ior="1.5" absorption="0.5 0.25 0")XML");
   REQUIRE(e.pov.ok());
   // exp(−(1 − fade_color)·d / fade_distance) with fade_distance 1/0.5 = exp(−absorption·d).
-  CHECK(e.has("#declare IM1_m = interior {\n  ior 1.5\n  fade_power 1001\n  fade_distance 2\n"
-              "  fade_color rgb <0, 0.5, 1>\n}\n"));
+  CHECK(
+      e.has("#declare IM1_m = interior {\n  ior 1.5\n  fade_power 1001\n  fade_distance 2\n"
+            "  fade_color rgb <0, 0.5, 1>\n}\n"));
 }
 
 TEST_CASE("a checker texture premultiplies the diffuse colour and keeps its scale",
@@ -111,8 +116,9 @@ TEST_CASE("a checker texture premultiplies the diffuse colour and keeps its scal
       </material>
       <plane material="c"/>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(e.has("  pigment {\n    checker\n    rgbft <0.5, 0.5, 0, 0, 0>,\n"
-              "    rgbft <0.1, 0.2, 0.2, 0, 0>\n    scale 0.25\n  }\n"));
+  CHECK(
+      e.has("  pigment {\n    checker\n    rgbft <0.5, 0.5, 0, 0, 0>,\n"
+            "    rgbft <0.1, 0.2, 0.2, 0, 0>\n    scale 0.25\n  }\n"));
   // A single-number ambient is multiplied by the texture in Lucent too: 0.2 / (0.5 1 1).
   CHECK(e.has("    ambient rgb <0.4, 0.2, 0.2>\n"));
 }
@@ -121,34 +127,38 @@ TEST_CASE("materials POV-Ray cannot express are errors naming the material",
           "[povray][materials]") {
   Exported full = exportMaterial(R"XML(diffuse="0.5" transmissive="1")XML");
   CHECK_FALSE(full.pov.ok());
-  CHECK(full.messages() == "test.xml:3:1: error: material 'm': transmissive 1 with diffuse, "
-                           "ambient or emissive has no POV-Ray equivalent: POV-Ray scales those "
-                           "by 1 - transmit = 0\n");
+  CHECK(full.messages() ==
+        "test.xml:3:1: error: material 'm': transmissive 1 with diffuse, "
+        "ambient or emissive has no POV-Ray equivalent: POV-Ray scales those "
+        "by 1 - transmit = 0\n");
 
   Exported zero = exportMaterial(R"XML(diffuse="0.5 0 0.5" ambient="0.1")XML");
   CHECK_FALSE(zero.pov.ok());
-  CHECK(zero.messages() == "test.xml:3:1: error: material 'm': ambient or emissive is non-zero "
-                           "in a channel where diffuse (0.5 0 0.5) is zero; POV-Ray multiplies "
-                           "both by the pigment, which carries the diffuse colour\n");
+  CHECK(zero.messages() ==
+        "test.xml:3:1: error: material 'm': ambient or emissive is non-zero "
+        "in a channel where diffuse (0.5 0 0.5) is zero; POV-Ray multiplies "
+        "both by the pigment, which carries the diffuse colour\n");
 }
 
 TEST_CASE("approximations are warnings naming the material", "[povray][materials]") {
   Exported spec = exportMaterial(R"XML(diffuse="0.5" specular="1 0.5 0")XML");
   CHECK(spec.pov.ok());
   CHECK(spec.has("    specular 0.5\n"));
-  CHECK(spec.messages() == "test.xml:3:1: warning: material 'm': POV-Ray's specular is one "
-                           "number; the coloured specular 1 0.5 0 becomes 0.5\n");
+  CHECK(spec.messages() ==
+        "test.xml:3:1: warning: material 'm': POV-Ray's specular is one "
+        "number; the coloured specular 1 0.5 0 becomes 0.5\n");
 
-  Exported absorb =
-      exportMaterial(R"XML(transmissive="1" reflective="0.3" absorption="0.5")XML");
-  CHECK(absorb.messages() == "test.xml:3:1: warning: material 'm': POV-Ray does not attenuate "
-                             "light reflected inside an absorbing object (its fade applies to "
-                             "transmitted light only); Lucent does\n");
+  Exported absorb = exportMaterial(R"XML(transmissive="1" reflective="0.3" absorption="0.5")XML");
+  CHECK(absorb.messages() ==
+        "test.xml:3:1: warning: material 'm': POV-Ray does not attenuate "
+        "light reflected inside an absorbing object (its fade applies to "
+        "transmitted light only); Lucent does\n");
 
   Exported tir = exportMaterial(R"XML(transmissive="0.8" ior="1.5")XML");
-  CHECK(tir.messages() == "test.xml:3:1: warning: material 'm': under total internal "
-                          "reflection POV-Ray reflects with weight 1, Lucent with transmissive "
-                          "0.8\n");
+  CHECK(tir.messages() ==
+        "test.xml:3:1: warning: material 'm': under total internal "
+        "reflection POV-Ray reflects with weight 1, Lucent with transmissive "
+        "0.8\n");
 }
 
 TEST_CASE("phong, phong-size, brilliance and metallic are POV-Ray's finish keywords",

@@ -37,7 +37,8 @@ TEST_CASE("no_shadow goes on a whole difference, not on its parts", "[povray][no
 
 TEST_CASE("a one-operand difference written as its operand carries the difference's no_shadow",
           "[povray][no-shadow]") {
-  Exported e = exportScene(R"XML(<difference shadows="false"><sphere/></difference><intersection><box shadows="false"/></intersection>)XML");
+  Exported e = exportScene(
+      R"XML(<difference shadows="false"><sphere/></difference><intersection><box shadows="false"/></intersection>)XML");
   REQUIRE(e.pov.ok());
   CHECK(count(e.pov.text, "no_shadow") == 1);
 }

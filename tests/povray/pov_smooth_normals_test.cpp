@@ -42,10 +42,12 @@ TEST_CASE("smoothNormalDeviation: the largest angle between interpolated and fac
   CHECK(smoothNormalDeviation(p, {z, -tilted, z}) == Approx(kPi / 2));
 }
 
-TEST_CASE("export warns once per smooth mesh whose normals depart from its faces'", "[povray][smooth]") {
+TEST_CASE("export warns once per smooth mesh whose normals depart from its faces'",
+          "[povray][smooth]") {
   SECTION("inline normals, the mesh used twice") {
     Exported e = exportScene(std::string(R"XML(<defs>
-<mesh id="octa" )XML") + kOctahedron + R"XML(
+<mesh id="octa" )XML") + kOctahedron +
+                             R"XML(
       normals="1 0 0  -1 0 0  0 1 0  0 -1 0  0 0 1  0 0 -1"/>
 </defs>
 <use ref="octa"/>
@@ -60,21 +62,26 @@ TEST_CASE("export warns once per smooth mesh whose normals depart from its faces
   SECTION("flat meshes, and smooth=\"false\" over given normals, give none") {
     Exported flat = exportScene(std::string("<mesh ") + kOctahedron + "/>");
     CHECK(flat.pov.issues.empty());
-    Exported off = exportScene(std::string("<mesh ") + kOctahedron +
-                               R"XML( normals="1 0 0  -1 0 0  0 1 0  0 -1 0  0 0 1  0 0 -1" smooth="false"/>)XML");
+    Exported off = exportScene(
+        std::string("<mesh ") + kOctahedron +
+        R"XML( normals="1 0 0  -1 0 0  0 1 0  0 -1 0  0 0 1  0 0 -1" smooth="false"/>)XML");
     CHECK(off.pov.issues.empty());
   }
   SECTION("normals equal to the face normal give none") {
-    Exported e = exportScene(R"XML(<mesh positions="0 0 0  1 0 0  1 1 0  0 1 0" indices="0 1 2  0 2 3"
+    Exported e =
+        exportScene(R"XML(<mesh positions="0 0 0  1 0 0  1 1 0  0 1 0" indices="0 1 2  0 2 3"
       normals="0 0 1  0 0 1  0 0 1  0 0 1"/>)XML");
     CHECK(e.pov.issues.empty());
   }
 }
 
-TEST_CASE("export warns on smooth triangles whose normals depart from the face's", "[povray][smooth]") {
-  Exported e = exportScene(R"XML(<triangle a="0 0 0" b="1 0 0" c="0 1 0" na="0 0 1" nb="0 0 1" nc="0 1 1"/>
+TEST_CASE("export warns on smooth triangles whose normals depart from the face's",
+          "[povray][smooth]") {
+  Exported e =
+      exportScene(R"XML(<triangle a="0 0 0" b="1 0 0" c="0 1 0" na="0 0 1" nb="0 0 1" nc="0 1 1"/>
 <triangle a="0 0 0" b="1 0 0" c="0 1 0" na="0 0 1" nb="0 0 1" nc="0 0 1"/>
 <triangle a="0 0 0" b="1 0 0" c="0 1 0"/>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(e.messages() == "test.xml:3:1: warning: " + rule("<triangle>", "up to 45.0 degrees") + "\n");
+  CHECK(e.messages() ==
+        "test.xml:3:1: warning: " + rule("<triangle>", "up to 45.0 degrees") + "\n");
 }

@@ -26,9 +26,7 @@ struct Exported {
   std::unique_ptr<Scene> scene;
   PovExport pov;
 
-  bool has(const std::string& line) const {
-    return pov.text.find(line) != std::string::npos;
-  }
+  bool has(const std::string& line) const { return pov.text.find(line) != std::string::npos; }
   // The messages, one a line, for INFO and for exact checks.
   std::string messages() const {
     std::string all;

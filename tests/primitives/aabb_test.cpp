@@ -47,7 +47,8 @@ TEST_CASE("slab test with +0 and -0 direction components", "[aabb]") {
   }
 }
 
-TEST_CASE("slab test counts a ray running inside a face plane as hitting the closed box", "[aabb]") {
+TEST_CASE("slab test counts a ray running inside a face plane as hitting the closed box",
+          "[aabb]") {
   // Origin exactly on the slab plane y = 1 with a zero y component: (1 - 1) * inf is NaN
   // in a naive implementation.
   for (double zero : {0.0, -0.0}) {
@@ -104,7 +105,10 @@ TEST_CASE("slab test never loses a hit on shared faces of touching boxes", "[aab
   // be inside at least one box at every sampled t (no gap from rounding).
   AABB a(Vec3(-1, -1, -1), Vec3(0.3, 1, 1)), b(Vec3(0.3, -1, -1), Vec3(1, 1, 1));
   uint32_t seed = 12345;
-  auto rnd = [&] { seed = seed * 1664525u + 1013904223u; return (seed >> 8) / 16777216.0; };
+  auto rnd = [&] {
+    seed = seed * 1664525u + 1013904223u;
+    return (seed >> 8) / 16777216.0;
+  };
   for (int k = 0; k < 10000; ++k) {
     Vec3 o(-5.0, rnd() * 1.8 - 0.9, rnd() * 1.8 - 0.9);
     Vec3 target(0.3, rnd() * 1.8 - 0.9, rnd() * 1.8 - 0.9);

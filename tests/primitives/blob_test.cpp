@@ -49,15 +49,21 @@ struct Case {
 
 const std::vector<Case> kCases = {
     {"one sphere", 1.0, {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.0, 2.0}}},
-    {"two merging spheres", 0.6, {{C::Sphere, Vec3(-0.5, 0, 0), Vec3(0.0), 1.0, 1.0},
-                                  {C::Sphere, Vec3(0.5, 0, 0), Vec3(0.0), 1.0, 1.0}}},
-    {"negative hole", 0.5, {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.2, 2.0},
-                            {C::Sphere, Vec3(0.0, 0.7, 0.0), Vec3(0.0), 0.6, -3.0}}},
+    {"two merging spheres",
+     0.6,
+     {{C::Sphere, Vec3(-0.5, 0, 0), Vec3(0.0), 1.0, 1.0},
+      {C::Sphere, Vec3(0.5, 0, 0), Vec3(0.0), 1.0, 1.0}}},
+    {"negative hole",
+     0.5,
+     {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.2, 2.0},
+      {C::Sphere, Vec3(0.0, 0.7, 0.0), Vec3(0.0), 0.6, -3.0}}},
     {"cylinder", 1.0, {{C::Cylinder, Vec3(0.0), Vec3(0.0, 2.0, 0.0), 1.0, 2.0}}},
-    {"cylinder and spheres", 0.5, {{C::Cylinder, Vec3(-1, 0, 0), Vec3(1, 0.5, 0.2), 0.6, 1.5},
-                                   {C::Sphere, Vec3(1, 0.5, 0.2), Vec3(0.0), 0.8, 1.0},
-                                   {C::Sphere, Vec3(0, 0.3, 0.1), Vec3(0.0), 0.5, -1.0},
-                                   {C::Cylinder, Vec3(0, -1, 0), Vec3(0, 1, 0), 0.4, 1.0}}},
+    {"cylinder and spheres",
+     0.5,
+     {{C::Cylinder, Vec3(-1, 0, 0), Vec3(1, 0.5, 0.2), 0.6, 1.5},
+      {C::Sphere, Vec3(1, 0.5, 0.2), Vec3(0.0), 0.8, 1.0},
+      {C::Sphere, Vec3(0, 0.3, 0.1), Vec3(0.0), 0.5, -1.0},
+      {C::Cylinder, Vec3(0, -1, 0), Vec3(0, 1, 0), 0.4, 1.0}}},
 };
 
 double angle(const Vec3& a, const Vec3& b) {
@@ -69,7 +75,8 @@ double surfaceRadius(double s, double T, double R) { return R * std::sqrt(1.0 - 
 
 }  // namespace
 
-TEST_CASE("blob: one sphere component is a sphere of the closed-form radius", "[primitives][blob]") {
+TEST_CASE("blob: one sphere component is a sphere of the closed-form radius",
+          "[primitives][blob]") {
   Blob b(1.0, {{C::Sphere, Vec3(1, 2, 3), Vec3(0.0), 1.5, 2.0}});
   double r = surfaceRadius(2.0, 1.0, 1.5);
   Ray ray(Vec3(1, 2, -10), Vec3(0, 0, 2));
@@ -96,7 +103,8 @@ TEST_CASE("blob: one sphere component is a sphere of the closed-form radius", "[
   CHECK(c2.items[0].hit.t == Approx(r).epsilon(1e-15));
 }
 
-TEST_CASE("blob: a cylinder component is a capsule of the closed-form radius", "[primitives][blob]") {
+TEST_CASE("blob: a cylinder component is a capsule of the closed-form radius",
+          "[primitives][blob]") {
   Blob b(1.0, {{C::Cylinder, Vec3(0.0), Vec3(0.0, 2.0, 0.0), 1.0, 2.0}});
   double r = surfaceRadius(2.0, 1.0, 1.0);
   Hit h;
@@ -118,8 +126,9 @@ TEST_CASE("blob: a cylinder component is a capsule of the closed-form radius", "
   CHECK(angle(b.surface(end, h).ng, dir) < 1e-13);
 }
 
-TEST_CASE("blob: crossings alternate, lie on the surface and agree with inside() (long-double field)",
-          "[primitives][blob]") {
+TEST_CASE(
+    "blob: crossings alternate, lie on the surface and agree with inside() (long-double field)",
+    "[primitives][blob]") {
   Rng rng(71);
   for (const Case& cs : kCases) {
     INFO(cs.name);
@@ -198,7 +207,8 @@ TEST_CASE("blob: normals are the field's falling gradient", "[primitives][blob]"
   });
 }
 
-TEST_CASE("blob: a secondary ray leaving the surface does not hit it again at once", "[primitives][blob]") {
+TEST_CASE("blob: a secondary ray leaving the surface does not hit it again at once",
+          "[primitives][blob]") {
   Rng rng(73);
   forEachHit(rng, [&](const Case&, const Blob& b, const Ray&, const SurfaceInfo& s) {
     double off = glm::dot(glm::abs(s.ng), s.pError) * 2.0;
@@ -215,6 +225,8 @@ TEST_CASE("blob: invalid parameters are refused", "[primitives][blob]") {
   CHECK_THROWS_AS(Blob(0.0, {{C::Sphere, Vec3(0.0), Vec3(0.0), 1.0, 1.0}}), std::invalid_argument);
   CHECK_THROWS_AS(Blob(1.0, {}), std::invalid_argument);
   CHECK_THROWS_AS(Blob(1.0, {{C::Sphere, Vec3(0.0), Vec3(0.0), 0.0, 1.0}}), std::invalid_argument);
-  CHECK_THROWS_AS(Blob(1.0, {{C::Sphere, Vec3(0.0), Vec3(0.0), std::nan(""), 1.0}}), std::invalid_argument);
-  CHECK_THROWS_AS(Blob(1.0, {{C::Cylinder, Vec3(1.0), Vec3(1.0), 1.0, 1.0}}), std::invalid_argument);
+  CHECK_THROWS_AS(Blob(1.0, {{C::Sphere, Vec3(0.0), Vec3(0.0), std::nan(""), 1.0}}),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(Blob(1.0, {{C::Cylinder, Vec3(1.0), Vec3(1.0), 1.0, 1.0}}),
+                  std::invalid_argument);
 }

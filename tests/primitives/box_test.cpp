@@ -12,11 +12,16 @@ TEST_CASE("box: corners in any order, face hits, parts and normals", "[primitive
   Box b(Vec3(1, 2, 3), Vec3(-1, -2, -3));  // swapped corners, as POV-Ray allows
   CHECK(b.bounds().lo == Vec3(-1, -2, -3));
   CHECK(b.bounds().hi == Vec3(1, 2, 3));
-  struct Case { Vec3 o, d; double t; uint32_t part; Vec3 n; };
+  struct Case {
+    Vec3 o, d;
+    double t;
+    uint32_t part;
+    Vec3 n;
+  };
   const Case cases[] = {
-      {{5, 0, 0}, {-1, 0, 0}, 4.0, 1, {1, 0, 0}},   {{-5, 0, 0}, {2, 0, 0}, 2.0, 0, {-1, 0, 0}},
-      {{0, 7, 0}, {0, -1, 0}, 5.0, 3, {0, 1, 0}},   {{0, -7, 0}, {0, 1, 0}, 5.0, 2, {0, -1, 0}},
-      {{0, 0, 9}, {0, 0, -3}, 2.0, 5, {0, 0, 1}},   {{0, 0, -9}, {0, 0, 1}, 6.0, 4, {0, 0, -1}},
+      {{5, 0, 0}, {-1, 0, 0}, 4.0, 1, {1, 0, 0}}, {{-5, 0, 0}, {2, 0, 0}, 2.0, 0, {-1, 0, 0}},
+      {{0, 7, 0}, {0, -1, 0}, 5.0, 3, {0, 1, 0}}, {{0, -7, 0}, {0, 1, 0}, 5.0, 2, {0, -1, 0}},
+      {{0, 0, 9}, {0, 0, -3}, 2.0, 5, {0, 0, 1}}, {{0, 0, -9}, {0, 0, 1}, 6.0, 4, {0, 0, -1}},
   };
   for (const Case& c : cases) {
     Ray ray(c.o, c.d);

@@ -187,7 +187,7 @@ TEST_CASE("BVH finds hits on flat, axis-aligned triangles from grazing rays", "[
   for (int i = 0; i < 60; ++i)
     for (int j = 0; j < 60; ++j) {
       Vec3 a(i * 0.1, j * 0.1, 0.1), b = a + Vec3(0.1, 0, 0), c = a + Vec3(0, 0.1, 0),
-           d = a + Vec3(0.1, 0.1, 0);
+                                     d = a + Vec3(0.1, 0.1, 0);
       tris.push_back({a, b, c});
       tris.push_back({c, b, d});
     }
@@ -302,8 +302,7 @@ TEST_CASE("BVH over no items, one item, and items with empty boxes", "[bvh]") {
   CHECK(bvhClosest(single, one, Ray(Vec3(0, 3, -5), Vec3(0, 0, 1))).item == -1);
 
   // An empty box (a CSG intersection of disjoint solids, a NaN vertex) is never visited.
-  std::vector<AABB> boxes{AABB(), AABB(Vec3(-1.0), Vec3(1.0)),
-                          AABB(Vec3(std::nan("")), Vec3(1.0))};
+  std::vector<AABB> boxes{AABB(), AABB(Vec3(-1.0), Vec3(1.0)), AABB(Vec3(std::nan("")), Vec3(1.0))};
   Bvh skip(boxes);
   CHECK(skip.itemCount() == 1);
   std::vector<uint32_t> visited;
@@ -325,7 +324,8 @@ TEST_CASE("BVH over many identical items splits by count and keeps leaves small"
   CHECK(a.t == 5.5);
 }
 
-TEST_CASE("BVH depth stays bounded on inputs that make the SAH peel a few items at a time", "[bvh]") {
+TEST_CASE("BVH depth stays bounded on inputs that make the SAH peel a few items at a time",
+          "[bvh]") {
   // Thin slabs along x whose size grows geometrically, then stays at 1e15: there the
   // surface areas differ by less than float resolution, every split costs the same but
   // for rounding, and the SAH keeps cutting off thin slices. On this input it alone would
@@ -340,7 +340,7 @@ TEST_CASE("BVH depth stays bounded on inputs that make the SAH peel a few items 
   Bvh bvh(boundsOf(boxes));
   requireWellFormed(bvh, boundsOf(boxes), Bvh::Options().maxLeafSize);
   INFO("depth " << bvh.depth());
-  CHECK(bvh.depth() >= 64);  // the input really is adversarial...
+  CHECK(bvh.depth() >= 64);             // the input really is adversarial...
   CHECK(bvh.depth() < Bvh::kMaxDepth);  // ...and the traversal stack still suffices
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> x(-10.0, 80010.0), yz(-3.0, 3.0);
@@ -393,8 +393,7 @@ TEST_CASE("BVH float traversal keeps hits on items smaller than float spacing", 
   // outward to a few float steps; rays come from afar, aimed at the centres, and graze.
   std::mt19937_64 rng(10);
   std::vector<TestSphere> spheres;
-  for (int i = 0; i < 3000; ++i)
-    spheres.push_back({Vec3(1e4) + randomVec(rng, -0.05, 0.05), 1e-4});
+  for (int i = 0; i < 3000; ++i) spheres.push_back({Vec3(1e4) + randomVec(rng, -0.05, 0.05), 1e-4});
   Bvh bvh(boundsOf(spheres));
   std::vector<Ray> rays;
   std::uniform_int_distribution<size_t> pick(0, spheres.size() - 1);

@@ -1,9 +1,8 @@
 // Every shape against the contract of shape.h on seeded random rays: crossings sorted,
 // inside [tmin, tmax] and alternating from startsInside; intersect() and occluded() agree
 // with the first crossing; startsInside agrees with inside() away from the surface.
-#include "shape_checks.h"
 #include "scenegraph/shape_registry.h"
-
+#include "shape_checks.h"
 
 #include <catch2/catch.hpp>
 

@@ -21,9 +21,9 @@ TEST_CASE("disc: hits between the hole and the rim, from both sides", "[primitiv
   CHECK(h.t == 3.5);
   CHECK_FALSE(d.intersect(Ray(Vec3(1.25, 5, 3), Vec3(0, -1, 0)), h));  // the hole
   CHECK_FALSE(d.intersect(Ray(Vec3(2.25, 5, 3), Vec3(0, -1, 0)), h));  // beyond the rim
-  CHECK(d.intersect(Ray(Vec3(2.0, 5, 3), Vec3(0, -1, 0)), h));          // on the rim
-  CHECK(d.intersect(Ray(Vec3(1.5, 5, 3), Vec3(0, -1, 0)), h));          // on the hole's rim
-  CHECK_FALSE(d.intersect(Ray(Vec3(1.5, 5, 3), Vec3(1, 0, 0)), h));     // parallel
+  CHECK(d.intersect(Ray(Vec3(2.0, 5, 3), Vec3(0, -1, 0)), h));         // on the rim
+  CHECK(d.intersect(Ray(Vec3(1.5, 5, 3), Vec3(0, -1, 0)), h));         // on the hole's rim
+  CHECK_FALSE(d.intersect(Ray(Vec3(1.5, 5, 3), Vec3(1, 0, 0)), h));    // parallel
   CrossingList cl;
   d.crossings(Ray(Vec3(1.75, 5, 3), Vec3(0, -1, 0)), cl);
   CHECK_FALSE(cl.startsInside);

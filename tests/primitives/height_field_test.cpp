@@ -32,16 +32,18 @@ std::shared_ptr<const HeightMap> grid(int w, int d, std::vector<uint16_t> v) {
 
 // A 3 x 3 map: a ridge along z at x = 0.5, one raised corner.
 std::shared_ptr<const HeightMap> ridge() {
-  return grid(3, 3, {10000, 40000, 10000,  //
-                     10000, 40000, 10000,  //
-                     10000, 40000, 60000});
+  return grid(3, 3,
+              {10000, 40000, 10000,  //
+               10000, 40000, 10000,  //
+               10000, 40000, 60000});
 }
 
 // Pseudo-random 9 x 7 heights.
 std::shared_ptr<const HeightMap> rough() {
   std::vector<uint16_t> v;
   for (int z = 0; z < 7; ++z)
-    for (int x = 0; x < 9; ++x) v.push_back(static_cast<uint16_t>((x * 7919 + z * 104729 + x * z * 31) % 60000 + 2000));
+    for (int x = 0; x < 9; ++x)
+      v.push_back(static_cast<uint16_t>((x * 7919 + z * 104729 + x * z * 31) % 60000 + 2000));
   return grid(9, 7, v);
 }
 
@@ -73,7 +75,8 @@ std::vector<Tri> triangles(const HeightMap& m) {
 LD rayTriangle(const Ray& r, const Tri& t) {
   LD o[3] = {r.o.x, r.o.y, r.o.z}, d[3] = {r.d.x, r.d.y, r.d.z};
   LD e1[3], e2[3], s[3];
-  for (int k = 0; k < 3; ++k) e1[k] = t.p[1][k] - t.p[0][k], e2[k] = t.p[2][k] - t.p[0][k], s[k] = o[k] - t.p[0][k];
+  for (int k = 0; k < 3; ++k)
+    e1[k] = t.p[1][k] - t.p[0][k], e2[k] = t.p[2][k] - t.p[0][k], s[k] = o[k] - t.p[0][k];
   auto cross = [](const LD* a, const LD* b, LD* c) {
     c[0] = a[1] * b[2] - a[2] * b[1];
     c[1] = a[2] * b[0] - a[0] * b[2];
@@ -94,12 +97,14 @@ LD rayTriangle(const Ray& r, const Tri& t) {
 // The surface height in long double, from the triangle over (x, z).
 LD heightRef(const HeightMap& m, LD x, LD z) {
   const LD X = x * (m.width - 1), Z = z * (m.depth - 1);
-  int i = std::min(static_cast<int>(std::floor(X)), m.width - 2), j = std::min(static_cast<int>(std::floor(Z)), m.depth - 2);
+  int i = std::min(static_cast<int>(std::floor(X)), m.width - 2),
+      j = std::min(static_cast<int>(std::floor(Z)), m.depth - 2);
   i = std::max(i, 0), j = std::max(j, 0);
   const LD s = X - i, u = Z - j;
   auto h = [&](int a, int b) { return m.at(a, b) / 65536.0L; };
   if (s + u <= 1) return h(i, j) + (h(i + 1, j) - h(i, j)) * s + (h(i, j + 1) - h(i, j)) * u;
-  return h(i + 1, j + 1) + (h(i, j + 1) - h(i + 1, j + 1)) * (1 - s) + (h(i + 1, j) - h(i + 1, j + 1)) * (1 - u);
+  return h(i + 1, j + 1) + (h(i, j + 1) - h(i + 1, j + 1)) * (1 - s) +
+         (h(i + 1, j) - h(i + 1, j + 1)) * (1 - u);
 }
 
 // The first boundary point of the solid {(x, z) in the square, water <= y < height} after
@@ -118,7 +123,8 @@ LD firstHitRef(const HeightMap& m, LD water, const Ray& r) {
     const LD eps = 1e-15L;
     if (x < -eps || x > 1 + eps || z < -eps || z > 1 + eps || y < water - eps) return;
     // Strictly under the surface (where the solid is thinner than rounding, it has no wall).
-    if (y < heightRef(m, std::clamp<LD>(x, 0, 1), std::clamp<LD>(z, 0, 1)) - 1e-12L) best = std::min(best, th);
+    if (y < heightRef(m, std::clamp<LD>(x, 0, 1), std::clamp<LD>(z, 0, 1)) - 1e-12L)
+      best = std::min(best, th);
   };
   for (int a : {0, 2})
     if (r.d[a] != 0)
@@ -127,8 +133,8 @@ LD firstHitRef(const HeightMap& m, LD water, const Ray& r) {
   return best;
 }
 
-void checkAgainstReference(const HeightField& hf, const HeightMap& m, double water, uint64_t seed, int rays,
-                           int* hitsOut) {
+void checkAgainstReference(const HeightField& hf, const HeightMap& m, double water, uint64_t seed,
+                           int rays, int* hitsOut) {
   Rng rng(seed);
   int hits = 0, wrong = 0;
   for (int i = 0; i < rays; ++i) {
@@ -143,7 +149,8 @@ void checkAgainstReference(const HeightField& hf, const HeightMap& m, double wat
     ++hits;
     if (!got || std::abs(h.t - ref) > 1e-11L * (1 + std::abs(ref))) {
       ++wrong;
-      if (wrong < 4) UNSCOPED_INFO("ray " << i << " t " << (got ? h.t : -1.0) << " reference " << double(ref));
+      if (wrong < 4)
+        UNSCOPED_INFO("ray " << i << " t " << (got ? h.t : -1.0) << " reference " << double(ref));
     }
   }
   CHECK(wrong == 0);
@@ -152,7 +159,8 @@ void checkAgainstReference(const HeightField& hf, const HeightMap& m, double wat
 
 }  // namespace
 
-TEST_CASE("height field: hits are exact ray-triangle intersections on small maps", "[primitives][height-field]") {
+TEST_CASE("height field: hits are exact ray-triangle intersections on small maps",
+          "[primitives][height-field]") {
   int hits = 0;
   HeightField a(ridge(), false, 0.0);
   checkAgainstReference(a, *ridge(), floorOf(0.0), 11, 4000, &hits);
@@ -182,7 +190,8 @@ TEST_CASE("height field: the grid's layout is POV-Ray's", "[primitives][height-f
   CHECK(hf.bounds().lo.y == floorOf(0.0));
 }
 
-TEST_CASE("height field: a horizontal ray crosses walls and the ridge in order", "[primitives][height-field]") {
+TEST_CASE("height field: a horizontal ray crosses walls and the ridge in order",
+          "[primitives][height-field]") {
   HeightField hf(ridge(), false, 0.0);
   // At y = 0.3 (19660.8 raw) and z = 0.25 the section rises from 10000 / 65536 at x = 0 to
   // 40000 / 65536 at x = 0.5 and falls back to 10000 / 65536 at x = 1 (the raised corner is
@@ -212,19 +221,22 @@ TEST_CASE("height field: a horizontal ray crosses walls and the ridge in order",
   CHECK(si.ng == Vec3(-1.0, 0.0, 0.0));
 }
 
-TEST_CASE("height field: inside is below the surface, above the water, within the square", "[primitives][height-field]") {
+TEST_CASE("height field: inside is below the surface, above the water, within the square",
+          "[primitives][height-field]") {
   HeightField hf(rough(), false, 0.2);
   Rng rng(5);
   for (int i = 0; i < 5000; ++i) {
     const Vec3 p(uniform(rng, -0.2, 1.2), uniform(rng, -0.1, 1.1), uniform(rng, -0.2, 1.2));
     const bool square = p.x >= 0 && p.x <= 1 && p.z >= 0 && p.z <= 1;
-    const bool expected = square && p.y >= floorOf(0.2) && p.y < double(heightRef(*rough(), p.x, p.z));
+    const bool expected =
+        square && p.y >= floorOf(0.2) && p.y < double(heightRef(*rough(), p.x, p.z));
     if (square && std::abs(p.y - double(heightRef(*rough(), p.x, p.z))) < 1e-12) continue;
     CHECK(hf.inside(p) == expected);
   }
 }
 
-TEST_CASE("height field: the water level removes what lies below it", "[primitives][height-field]") {
+TEST_CASE("height field: the water level removes what lies below it",
+          "[primitives][height-field]") {
   // Heights 10000 at the edges, 40000 along the ridge: a water level at 0.3 leaves the ridge.
   HeightField hf(ridge(), false, 0.3);
   Hit h;
@@ -252,14 +264,16 @@ TEST_CASE("height field: flat and smooth normals", "[primitives][height-field]")
   // truncated: here n.y = 1 / 6708.2 becomes 4 / 32767 (not 4.88), which tilts the
   // smooth normal by 0.06 radians. Lucent keeps that, to shade as POV-Ray does.
   const Vec3 raw = glm::normalize(Vec3(-6000.0, 1.0, -3000.0));
-  const Vec3 q(static_cast<short>(32767 * raw.x), static_cast<short>(32767 * raw.y), static_cast<short>(32767 * raw.z));
+  const Vec3 q(static_cast<short>(32767 * raw.x), static_cast<short>(32767 * raw.y),
+               static_cast<short>(32767 * raw.z));
   REQUIRE(q.y == 4.0);
   const Vec3 quantised = glm::normalize(Vec3(q.x * 3, q.y * 65536.0, q.z * 3));
   HeightField flat(m, false, 0.0), smooth(m, true, 0.0);
   Rng rng(9);
   int n = 0;
   for (int i = 0; i < 500; ++i) {
-    Ray ray(Vec3(uniform(rng, 0.05, 0.95), 2.0, uniform(rng, 0.05, 0.95)), Vec3(uniform(rng, -0.1, 0.1), -1.0, uniform(rng, -0.1, 0.1)));
+    Ray ray(Vec3(uniform(rng, 0.05, 0.95), 2.0, uniform(rng, 0.05, 0.95)),
+            Vec3(uniform(rng, -0.1, 0.1), -1.0, uniform(rng, -0.1, 0.1)));
     Hit h;
     if (!flat.intersect(ray, h)) continue;
     ++n;
@@ -287,7 +301,8 @@ TEST_CASE("height field: flat and smooth normals", "[primitives][height-field]")
   CHECK(s.y > f.y);  // between the crest's and the slope's
 }
 
-TEST_CASE("height field: edge-on rays along grid lines and diagonals", "[primitives][height-field]") {
+TEST_CASE("height field: edge-on rays along grid lines and diagonals",
+          "[primitives][height-field]") {
   auto m = rough();
   HeightField hf(m, false, 0.0);
   // Rays in the vertical planes of the grid lines x = i / 8 and z = j / 6, and along the
@@ -328,7 +343,8 @@ TEST_CASE("height field: edge-on rays along grid lines and diagonals", "[primiti
   CHECK(checked == 27 + 7 + 13);
 }
 
-TEST_CASE("height field: inverse inside a CSG difference is the intersection", "[primitives][height-field][csg]") {
+TEST_CASE("height field: inverse inside a CSG difference is the intersection",
+          "[primitives][height-field][csg]") {
   auto m = rough();
   auto box = [] { return std::make_unique<Box>(Vec3(0.2, 0.1, 0.2), Vec3(0.8, 0.9, 0.8)); };
   // box - inverse(hf) = box ∩ hf
@@ -364,8 +380,13 @@ TEST_CASE("height field: inverse inside a CSG difference is the intersection", "
   CHECK(hits > 500);
 }
 
-TEST_CASE("height field: camera rays over a 5 x 5 map with a zero border", "[primitives][height-field]") {
-  const int img[5][5] = {{0, 0, 0, 0, 0}, {0, 90, 200, 40, 0}, {0, 250, 120, 180, 0}, {0, 30, 160, 60, 0}, {0, 0, 0, 0, 0}};
+TEST_CASE("height field: camera rays over a 5 x 5 map with a zero border",
+          "[primitives][height-field]") {
+  const int img[5][5] = {{0, 0, 0, 0, 0},
+                         {0, 90, 200, 40, 0},
+                         {0, 250, 120, 180, 0},
+                         {0, 30, 160, 60, 0},
+                         {0, 0, 0, 0, 0}};
   std::vector<uint16_t> v;
   for (int z = 0; z < 5; ++z)
     for (int x = 0; x < 5; ++x) v.push_back(static_cast<uint16_t>(img[4 - z][x] * 257));
@@ -382,14 +403,17 @@ TEST_CASE("height field: camera rays over a 5 x 5 map with a zero border", "[pri
       const bool got = hf.intersect(ray, h);
       if (!std::isinf(ref)) ++hits;
       if (got != !std::isinf(ref) || (got && std::abs(h.t - ref) > 1e-12L * (1 + ref))) {
-        if (++wrong < 5) UNSCOPED_INFO("target " << a << " " << b << " got " << got << " " << h.t << " ref " << double(ref));
+        if (++wrong < 5)
+          UNSCOPED_INFO("target " << a << " " << b << " got " << got << " " << h.t << " ref "
+                                  << double(ref));
       }
     }
   CHECK(wrong == 0);
   CHECK(hits > 20000);
 }
 
-TEST_CASE("height field: smooth normals are blended in world space, as POV-Ray blends them", "[primitives][height-field]") {
+TEST_CASE("height field: smooth normals are blended in world space, as POV-Ray blends them",
+          "[primitives][height-field]") {
   HeightField hf(rough(), true, 0.0);
   Mat4 m(1.0);
   m[0][0] = 2.0;
@@ -423,12 +447,15 @@ TEST_CASE("height field: smooth normals are blended in world space, as POV-Ray b
   CHECK_FALSE(flat.worldShadingNormal(ray, h, t, ns));
 }
 
-TEST_CASE("height field: an all-zero map is refused, as the parser refuses it by name", "[primitives][height-field]") {
+TEST_CASE("height field: an all-zero map is refused, as the parser refuses it by name",
+          "[primitives][height-field]") {
   // A black image leaves nothing above water level 0; the scene parser says so at the
   // water-level attribute (tests/bad/cases.txt), and the shape itself refuses rather than
   // build a solid of zero thickness.
-  CHECK_THROWS_AS(HeightField(grid(4, 4, std::vector<uint16_t>(16, 0)), false, 0.0), std::invalid_argument);
-  CHECK_THROWS_AS(HeightField(grid(4, 4, std::vector<uint16_t>(16, 0)), true, 0.0), std::invalid_argument);
+  CHECK_THROWS_AS(HeightField(grid(4, 4, std::vector<uint16_t>(16, 0)), false, 0.0),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(HeightField(grid(4, 4, std::vector<uint16_t>(16, 0)), true, 0.0),
+                  std::invalid_argument);
   std::vector<uint16_t> one(16, 0);
   one[5] = 1;
   CHECK_NOTHROW(HeightField(grid(4, 4, one), false, 0.0));

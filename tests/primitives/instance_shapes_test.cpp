@@ -34,10 +34,16 @@ TEST_CASE("instance: an ellipsoid from a scaled sphere, t in world units",
   // Unit sphere scaled (2, 3, 4) and moved to (10, 0, 0).
   Instance e(std::make_shared<Sphere>(Vec3(0.0), 1.0),
              make(translate(Vec3(10, 0, 0)) * scale(Vec3(2, 3, 4))), 0);
-  struct Case { Vec3 o, d; double t; Vec3 n; };
+  struct Case {
+    Vec3 o, d;
+    double t;
+    Vec3 n;
+  };
   const Case cases[] = {
-      {{0, 0, 0}, {1, 0, 0}, 8.0, {-1, 0, 0}},     {{10, 10, 0}, {0, -1, 0}, 7.0, {0, 1, 0}},
-      {{10, 0, -10}, {0, 0, 2}, 3.0, {0, 0, -1}},  {{20, 0, 0}, {-0.5, 0, 0}, 16.0, {1, 0, 0}},
+      {{0, 0, 0}, {1, 0, 0}, 8.0, {-1, 0, 0}},
+      {{10, 10, 0}, {0, -1, 0}, 7.0, {0, 1, 0}},
+      {{10, 0, -10}, {0, 0, 2}, 3.0, {0, 0, -1}},
+      {{20, 0, 0}, {-0.5, 0, 0}, 16.0, {1, 0, 0}},
   };
   for (const Case& c : cases) {
     Ray ray(c.o, c.d);

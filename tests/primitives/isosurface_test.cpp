@@ -57,7 +57,8 @@ double torusF(const Vec3& p) { return std::hypot(std::hypot(p.x, p.z) - 0.8, p.y
 
 }  // namespace
 
-TEST_CASE("isosurface: a sphere function is hit where the closed form says", "[primitives][isosurface]") {
+TEST_CASE("isosurface: a sphere function is hit where the closed form says",
+          "[primitives][isosurface]") {
   Isosurface::Params p = params(sphereF);
   p.container = box(Vec3(-1), Vec3(1));
   Isosurface iso(p);
@@ -66,7 +67,8 @@ TEST_CASE("isosurface: a sphere function is hit where the closed form says", "[p
   for (int i = 0; i < 400; ++i) {
     Ray ray = randomRayAt(rng, iso.bounds());
     double t0 = 0.0, t1 = 0.0;
-    bool exact = solveDistanceQuadratic(ray.o - Vec3(0.1, -0.2, 0.05), ray.d, 0.49, t0, t1) && t0 < t1;
+    bool exact =
+        solveDistanceQuadratic(ray.o - Vec3(0.1, -0.2, 0.05), ray.d, 0.49, t0, t1) && t0 < t1;
     Hit h;
     bool hit = iso.intersect(ray, h);
     // Rays grazing the sphere within the accuracy may go either way.
@@ -89,7 +91,8 @@ TEST_CASE("isosurface: a sphere function is hit where the closed form says", "[p
   CHECK(hits > 100);
 }
 
-TEST_CASE("isosurface: a torus function crosses where the exact torus does, in order", "[primitives][isosurface]") {
+TEST_CASE("isosurface: a torus function crosses where the exact torus does, in order",
+          "[primitives][isosurface]") {
   Isosurface::Params p = params(torusF);
   p.container = ball(Vec3(0.0), 1.2);
   Isosurface iso(p);
@@ -125,9 +128,10 @@ TEST_CASE("isosurface: a torus function crosses where the exact torus does, in o
   CHECK(fourCrossings > 10);
 }
 
-TEST_CASE("isosurface: inside is below the threshold within the container", "[primitives][isosurface]") {
+TEST_CASE("isosurface: inside is below the threshold within the container",
+          "[primitives][isosurface]") {
   Isosurface::Params p = params(torusF);
-  p.threshold = 0.05;  // a fatter torus: tube radius 0.35
+  p.threshold = 0.05;                                    // a fatter torus: tube radius 0.35
   p.container = box(Vec3(-1, -0.2, -1), Vec3(1, 1, 1));  // cuts the torus at y = -0.2
   Isosurface iso(p);
   CHECK(iso.inside(Vec3(0.8, 0.0, 0.0)));
@@ -139,12 +143,14 @@ TEST_CASE("isosurface: inside is below the threshold within the container", "[pr
   Rng rng(13);
   for (int i = 0; i < 2000; ++i) {
     Vec3 q = randomInBox(rng, Vec3(-1.5), Vec3(1.5));
-    bool in = q.y >= -0.2 && q.y <= 1 && std::abs(q.x) <= 1 && std::abs(q.z) <= 1 && torusF(q) < 0.05;
+    bool in =
+        q.y >= -0.2 && q.y <= 1 && std::abs(q.x) <= 1 && std::abs(q.z) <= 1 && torusF(q) < 0.05;
     CHECK(iso.inside(q) == in);
   }
 }
 
-TEST_CASE("isosurface: the box container closes the solid where the function is inside", "[primitives][isosurface]") {
+TEST_CASE("isosurface: the box container closes the solid where the function is inside",
+          "[primitives][isosurface]") {
   // f = y: the lower half of the box.
   Isosurface::Params p = params([](const Vec3& q) { return q.y; });
   p.container = box(Vec3(-1), Vec3(1));
@@ -179,7 +185,8 @@ TEST_CASE("isosurface: the box container closes the solid where the function is 
   CHECK(cl.items[0].hit.t == Approx(0.5).epsilon(1e-12));
 }
 
-TEST_CASE("isosurface: the sphere container closes a half-space into a hemisphere", "[primitives][isosurface]") {
+TEST_CASE("isosurface: the sphere container closes a half-space into a hemisphere",
+          "[primitives][isosurface]") {
   Isosurface::Params p = params([](const Vec3& q) { return q.y; });
   p.container = ball(Vec3(0.0), 1.0);
   Isosurface iso(p);
@@ -194,7 +201,8 @@ TEST_CASE("isosurface: the sphere container closes a half-space into a hemispher
   CHECK_FALSE(iso.occluded(above));
 }
 
-TEST_CASE("isosurface: open leaves only the function's surface, and is no solid", "[primitives][isosurface]") {
+TEST_CASE("isosurface: open leaves only the function's surface, and is no solid",
+          "[primitives][isosurface]") {
   Isosurface::Params p = params([](const Vec3& q) { return q.y; });
   p.container = box(Vec3(-1), Vec3(1));
   p.open = true;
@@ -215,7 +223,8 @@ TEST_CASE("isosurface: open leaves only the function's surface, and is no solid"
   CHECK(cl.items[0].entering);
 }
 
-TEST_CASE("isosurface: a secondary ray leaving the surface does not hit it again at once", "[primitives][isosurface]") {
+TEST_CASE("isosurface: a secondary ray leaving the surface does not hit it again at once",
+          "[primitives][isosurface]") {
   Isosurface::Params p = params(torusF);
   p.container = ball(Vec3(0.0), 1.2);
   Isosurface iso(p);
@@ -238,7 +247,8 @@ TEST_CASE("isosurface: a secondary ray leaving the surface does not hit it again
   CHECK(tried > 50);
 }
 
-TEST_CASE("isosurface: a gradient beyond max-gradient is recorded, one within it is not", "[primitives][isosurface]") {
+TEST_CASE("isosurface: a gradient beyond max-gradient is recorded, one within it is not",
+          "[primitives][isosurface]") {
   // |∇f| = 5 everywhere.
   auto steep = [](const Vec3& q) { return 5.0 * (glm::length(q) - 0.5); };
   for (double declared : {1.0, 6.0}) {
@@ -262,7 +272,8 @@ TEST_CASE("isosurface: a gradient beyond max-gradient is recorded, one within it
   }
 }
 
-TEST_CASE("isosurface: a function at the threshold everywhere ends its search within the budget", "[primitives][isosurface]") {
+TEST_CASE("isosurface: a function at the threshold everywhere ends its search within the budget",
+          "[primitives][isosurface]") {
   // Every piece stays undecided: halving down to the accuracy would take 2^40 pieces.
   Isosurface::Params p = params([](const Vec3&) { return 0.0; });
   p.accuracy = 1e-12;
@@ -287,9 +298,12 @@ TEST_CASE("isosurface: invalid parameters are refused", "[primitives][isosurface
     return [p] { Isosurface iso(p); };
   };
   CHECK_THROWS_AS(make([](Isosurface::Params& p) { p.field = nullptr; })(), std::invalid_argument);
-  CHECK_THROWS_AS(make([](Isosurface::Params& p) { p.maxGradient = 0.0; })(), std::invalid_argument);
+  CHECK_THROWS_AS(make([](Isosurface::Params& p) { p.maxGradient = 0.0; })(),
+                  std::invalid_argument);
   CHECK_THROWS_AS(make([](Isosurface::Params& p) { p.accuracy = -1.0; })(), std::invalid_argument);
-  CHECK_THROWS_AS(make([](Isosurface::Params& p) { p.container = box(Vec3(1), Vec3(1)); })(), std::invalid_argument);
-  CHECK_THROWS_AS(make([](Isosurface::Params& p) { p.container = ball(Vec3(0.0), 0.0); })(), std::invalid_argument);
+  CHECK_THROWS_AS(make([](Isosurface::Params& p) { p.container = box(Vec3(1), Vec3(1)); })(),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(make([](Isosurface::Params& p) { p.container = ball(Vec3(0.0), 0.0); })(),
+                  std::invalid_argument);
   CHECK_NOTHROW(make([](Isosurface::Params&) {})());
 }

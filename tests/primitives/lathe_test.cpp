@@ -73,8 +73,15 @@ TEST_CASE("lathe: rays at a joint's corner and at a closing disc's rim keep thei
   // 1.9e-12 apart (the two roots were once merged as one found on both pieces), and a ray
   // leaving a vase through its mouth's disc 4.4e-16 inside the rim must not also re-enter
   // through the curve's end.
-  const Lathe goblet(LatheSpline::Linear, {{0, 0}, {0.8, 0}, {0.8, 0.1}, {0.15, 0.2}, {0.15, 0.9},
-                                           {0.7, 1.4}, {0.65, 1.45}, {0.1, 1.0}, {0, 1.0}});
+  const Lathe goblet(LatheSpline::Linear, {{0, 0},
+                                           {0.8, 0},
+                                           {0.8, 0.1},
+                                           {0.15, 0.2},
+                                           {0.15, 0.9},
+                                           {0.7, 1.4},
+                                           {0.65, 1.45},
+                                           {0.1, 1.0},
+                                           {0, 1.0}});
   const Ray corner(Vec3(-1.5837306108095823, 1.3670464104817854, -2.5072915427154534),
                    Vec3(3.3803544680011766, -2.3485483187950038, 3.1016760177821525));
   CrossingList cl;
@@ -84,8 +91,9 @@ TEST_CASE("lathe: rays at a joint's corner and at a closing disc's rim keep thei
   CHECK_FALSE(cl.items[1].entering);
   CHECK_THAT(cl.items[1].hit.t - cl.items[0].hit.t, WithinAbs(1.92e-12, 0.05e-12));
 
-  const Lathe vase(LatheSpline::Bezier, {{0, 0}, {0.9, 0}, {0.9, 0.3}, {0.6, 0.6},
-                                         {0.6, 0.6}, {0.3, 0.9}, {0.7, 1.2}, {0.5, 1.5}});
+  const Lathe vase(
+      LatheSpline::Bezier,
+      {{0, 0}, {0.9, 0}, {0.9, 0.3}, {0.6, 0.6}, {0.6, 0.6}, {0.3, 0.9}, {0.7, 1.2}, {0.5, 1.5}});
   const Ray mouth(Vec3(2.3839893870331932, 0.56673086531584094, 0.38972714487587279),
                   Vec3(-4.5673090762144568, 1.4985306982023796, -0.3129544260990334));
   vase.crossings(mouth, cl = {});
@@ -95,7 +103,8 @@ TEST_CASE("lathe: rays at a joint's corner and at a closing disc's rim keep thei
   CHECK_THAT(cl.items[1].hit.t, WithinAbs(0.6227894669116209, 1e-15));
 }
 
-TEST_CASE("lathe: a cone from an open linear profile closes with its base disc", "[primitives][lathe]") {
+TEST_CASE("lathe: a cone from an open linear profile closes with its base disc",
+          "[primitives][lathe]") {
   const Lathe l(LatheSpline::Linear, {{0, 1}, {1, 0}});
   CHECK(l.inside(Vec3(0.2, 0.5, 0.1)));
   CHECK_FALSE(l.inside(Vec3(0.6, 0.5, 0)));
@@ -128,7 +137,8 @@ TEST_CASE("lathe: a Bezier profile against its own curve", "[primitives][lathe]"
 TEST_CASE("lathe: crossings alternate and agree with inside()", "[primitives][lathe]") {
   const std::vector<Lathe> shapes = {
       cylinder(), bulb(),
-      Lathe(LatheSpline::Cubic, {{0, -0.2}, {0, 0}, {0.6, 0.1}, {0.9, 0.5}, {0.4, 1}, {0.6, 1.4}, {0, 1.5}, {0, 1.7}}),
+      Lathe(LatheSpline::Cubic,
+            {{0, -0.2}, {0, 0}, {0.6, 0.1}, {0.9, 0.5}, {0.4, 1}, {0.6, 1.4}, {0, 1.5}, {0, 1.7}}),
       Lathe(LatheSpline::Quadratic, {{0, -1}, {0, -0.5}, {0.8, 0}, {0.5, 0.6}, {0, 1}})};
   Rng rng(7);
   int wrong = 0, total = 0;
@@ -145,7 +155,9 @@ TEST_CASE("lathe: crossings alternate and agree with inside()", "[primitives][la
         ++total;
         if (l.inside(ray.at(0.5 * (a + b))) != cl.items[k].entering) {
           ++wrong;
-          if (wrong < 6) WARN("shape " << (&l - shapes.data()) << " k " << k << " of " << cl.items.size() << " t " << a << " " << b);
+          if (wrong < 6)
+            WARN("shape " << (&l - shapes.data()) << " k " << k << " of " << cl.items.size()
+                          << " t " << a << " " << b);
         }
       }
     }
@@ -153,7 +165,8 @@ TEST_CASE("lathe: crossings alternate and agree with inside()", "[primitives][la
   CHECK(wrong == 0);
 }
 
-TEST_CASE("lathe: a secondary ray leaving the surface does not hit it again at once", "[primitives][lathe]") {
+TEST_CASE("lathe: a secondary ray leaving the surface does not hit it again at once",
+          "[primitives][lathe]") {
   const Lathe l = bulb();
   Rng rng(11);
   int selfHits = 0;
@@ -173,12 +186,14 @@ TEST_CASE("lathe: bad point lists are refused", "[primitives][lathe]") {
   using V = std::vector<Vec2>;
   CHECK_THROWS_AS(Lathe(LatheSpline::Linear, V{{1, 0}}), std::invalid_argument);
   CHECK_THROWS_AS(Lathe(LatheSpline::Cubic, V{{1, 0}, {1, 1}, {1, 2}}), std::invalid_argument);
-  CHECK_THROWS_AS(Lathe(LatheSpline::Bezier, V{{1, 0}, {1, 1}, {1, 2}, {0, 3}, {0, 4}}), std::invalid_argument);
+  CHECK_THROWS_AS(Lathe(LatheSpline::Bezier, V{{1, 0}, {1, 1}, {1, 2}, {0, 3}, {0, 4}}),
+                  std::invalid_argument);
   CHECK_THROWS_AS(Lathe(LatheSpline::Linear, V{{-1, 0}, {1, 1}}), std::invalid_argument);
   CHECK_THROWS_AS(Lathe(LatheSpline::Linear, V{{1, 1}, {1, 1}}), std::invalid_argument);
 }
 
-TEST_CASE("lathe: rays through the axis and the poles against the closed form", "[primitives][lathe]") {
+TEST_CASE("lathe: rays through the axis and the poles against the closed form",
+          "[primitives][lathe]") {
   const Lathe l = cylinder();
   Rng rng(5);
   for (int i = 0; i < 2000; ++i) {

@@ -53,12 +53,13 @@ TEST_CASE("makeShape: every element builds its primitive with the spec's paramet
     CHECK(s->isSolid() == isSolid(spec));
     bool torus = std::holds_alternative<TorusSpec>(spec);
     bool open = isOpenCylinder(spec);
-    Ray ray = torus ? Ray(Vec3(1, 5, 0), Vec3(0, -1, 0))
+    Ray ray = torus  ? Ray(Vec3(1, 5, 0), Vec3(0, -1, 0))
               : open ? Ray(Vec3(5, 0, 0), Vec3(-1, 0, 0))  // no caps: through the side
                      : Ray(Vec3(0, 0, 5), Vec3(0, 0, -1));
     Hit h;
     REQUIRE(s->intersect(ray, h));
-    bool flat = std::holds_alternative<DiscSpec>(spec) || std::holds_alternative<TriangleSpec>(spec);
+    bool flat =
+        std::holds_alternative<DiscSpec>(spec) || std::holds_alternative<TriangleSpec>(spec);
     CHECK_THAT(h.t, WithinAbs(torus ? 4.75 : flat ? 5.0 : 4.0, 1e-14));
   }
 }
@@ -96,7 +97,8 @@ TEST_CASE("makeShape: the mesh's smooth modes", "[primitives][scenegraph]") {
   CHECK(bare->normals.empty());  // the spec's data is never modified
 }
 
-TEST_CASE("makeShape: impossible parameters throw std::invalid_argument", "[primitives][scenegraph]") {
+TEST_CASE("makeShape: impossible parameters throw std::invalid_argument",
+          "[primitives][scenegraph]") {
   const ShapeSpec bad[] = {
       SphereSpec{Vec3(0.0), 0.0},
       SphereSpec{Vec3(0.0), -1.0},

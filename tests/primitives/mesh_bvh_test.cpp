@@ -18,11 +18,13 @@ std::shared_ptr<MeshData> bumpySphere(int rings, int segments, Vec3 c, double r)
   auto m = std::make_shared<MeshData>();
   auto point = [&](double th, double ph) {
     double bump = 1.0 + 0.08 * std::sin(7 * th) * std::cos(5 * ph);
-    return c + r * bump * Vec3(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
+    return c +
+           r * bump * Vec3(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
   };
   m->positions.push_back(point(0, 0));
   for (int i = 1; i < rings; ++i)
-    for (int j = 0; j < segments; ++j) m->positions.push_back(point(kPi * i / rings, 2 * kPi * j / segments));
+    for (int j = 0; j < segments; ++j)
+      m->positions.push_back(point(kPi * i / rings, 2 * kPi * j / segments));
   m->positions.push_back(point(kPi, 0));
   uint32_t south = uint32_t(m->positions.size() - 1);
   auto id = [&](int i, int j) { return uint32_t(1 + (i - 1) * segments + (j % segments)); };

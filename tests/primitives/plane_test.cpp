@@ -73,7 +73,7 @@ TEST_CASE("plane: (u,v) are world units along the documented tangents", "[primit
   CHECK(si.hasUV);
   CHECK_THAT(si.uv.x, WithinAbs(1.5, 1e-15));   // u = x
   CHECK_THAT(si.uv.y, WithinAbs(3.25, 1e-15));  // v = -z
-  Plane wall(Vec3(0, 0, 1), -5.0);  // facing the default camera: u = x, v = y
+  Plane wall(Vec3(0, 0, 1), -5.0);              // facing the default camera: u = x, v = y
   ray = Ray(Vec3(0.5, 0.75, 0), Vec3(0, 0, -1));
   REQUIRE(wall.intersect(ray, h));
   si = wall.surface(ray, h);

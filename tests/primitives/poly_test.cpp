@@ -17,11 +17,12 @@ namespace {
 
 // POV-Ray's documented quartic, a00 to a34 (source/core/shape/polynomial.cpp's comment):
 // the powers of x, y and z of each coefficient in turn.
-const std::array<std::array<int, 3>, 35> kPovQuarticTerms = {{
-    {4, 0, 0}, {3, 1, 0}, {3, 0, 1}, {3, 0, 0}, {2, 2, 0}, {2, 1, 1}, {2, 1, 0}, {2, 0, 2}, {2, 0, 1},
-    {2, 0, 0}, {1, 3, 0}, {1, 2, 1}, {1, 2, 0}, {1, 1, 2}, {1, 1, 1}, {1, 1, 0}, {1, 0, 3}, {1, 0, 2},
-    {1, 0, 1}, {1, 0, 0}, {0, 4, 0}, {0, 3, 1}, {0, 3, 0}, {0, 2, 2}, {0, 2, 1}, {0, 2, 0}, {0, 1, 3},
-    {0, 1, 2}, {0, 1, 1}, {0, 1, 0}, {0, 0, 4}, {0, 0, 3}, {0, 0, 2}, {0, 0, 1}, {0, 0, 0}}};
+const std::array<std::array<int, 3>, 35> kPovQuarticTerms = {
+    {{4, 0, 0}, {3, 1, 0}, {3, 0, 1}, {3, 0, 0}, {2, 2, 0}, {2, 1, 1}, {2, 1, 0},
+     {2, 0, 2}, {2, 0, 1}, {2, 0, 0}, {1, 3, 0}, {1, 2, 1}, {1, 2, 0}, {1, 1, 2},
+     {1, 1, 1}, {1, 1, 0}, {1, 0, 3}, {1, 0, 2}, {1, 0, 1}, {1, 0, 0}, {0, 4, 0},
+     {0, 3, 1}, {0, 3, 0}, {0, 2, 2}, {0, 2, 1}, {0, 2, 0}, {0, 1, 3}, {0, 1, 2},
+     {0, 1, 1}, {0, 1, 0}, {0, 0, 4}, {0, 0, 3}, {0, 0, 2}, {0, 0, 1}, {0, 0, 0}}};
 
 std::vector<double> quartic(const std::map<std::array<int, 3>, double>& terms) {
   std::vector<double> c;
@@ -35,9 +36,16 @@ std::vector<double> quartic(const std::map<std::array<int, 3>, double>& terms) {
 // (x² + y² + z² + R² − r²)² − 4R²(x² + z²): the torus about the y axis.
 std::vector<double> torusQuartic(double R, double r) {
   const double a = R * R - r * r;
-  return quartic({{{4, 0, 0}, 1}, {{0, 4, 0}, 1}, {{0, 0, 4}, 1}, {{2, 2, 0}, 2}, {{2, 0, 2}, 2},
-                  {{0, 2, 2}, 2}, {{2, 0, 0}, 2 * a - 4 * R * R}, {{0, 2, 0}, 2 * a},
-                  {{0, 0, 2}, 2 * a - 4 * R * R}, {{0, 0, 0}, a * a}});
+  return quartic({{{4, 0, 0}, 1},
+                  {{0, 4, 0}, 1},
+                  {{0, 0, 4}, 1},
+                  {{2, 2, 0}, 2},
+                  {{2, 0, 2}, 2},
+                  {{0, 2, 2}, 2},
+                  {{2, 0, 0}, 2 * a - 4 * R * R},
+                  {{0, 2, 0}, 2 * a},
+                  {{0, 0, 2}, 2 * a - 4 * R * R},
+                  {{0, 0, 0}, a * a}});
 }
 
 struct Lcg {
@@ -59,26 +67,30 @@ TEST_CASE("poly: the coefficients are read in POV-Ray's order", "[primitives][po
     const auto& e = kPovQuarticTerms[m];
     CHECK(poly.value(p) == Approx(std::pow(p.x, e[0]) * std::pow(p.y, e[1]) * std::pow(p.z, e[2])));
   }
-  // Order 3's twenty: x³, x²y, x²z, x², xy², xyz, xy, xz², xz, x, y³, y²z, y², yz², yz, y, z³, z², z, 1.
-  const std::array<std::array<int, 3>, 20> cubic = {{{3, 0, 0}, {2, 1, 0}, {2, 0, 1}, {2, 0, 0}, {1, 2, 0},
-                                                     {1, 1, 1}, {1, 1, 0}, {1, 0, 2}, {1, 0, 1}, {1, 0, 0},
-                                                     {0, 3, 0}, {0, 2, 1}, {0, 2, 0}, {0, 1, 2}, {0, 1, 1},
-                                                     {0, 1, 0}, {0, 0, 3}, {0, 0, 2}, {0, 0, 1}, {0, 0, 0}}};
+  // Order 3's twenty: x³, x²y, x²z, x², xy², xyz, xy, xz², xz, x, y³, y²z, y², yz², yz, y, z³, z²,
+  // z, 1.
+  const std::array<std::array<int, 3>, 20> cubic = {
+      {{3, 0, 0}, {2, 1, 0}, {2, 0, 1}, {2, 0, 0}, {1, 2, 0}, {1, 1, 1}, {1, 1, 0},
+       {1, 0, 2}, {1, 0, 1}, {1, 0, 0}, {0, 3, 0}, {0, 2, 1}, {0, 2, 0}, {0, 1, 2},
+       {0, 1, 1}, {0, 1, 0}, {0, 0, 3}, {0, 0, 2}, {0, 0, 1}, {0, 0, 0}}};
   for (size_t m = 0; m + 1 < cubic.size(); ++m) {
     std::vector<double> c(20, 0.0);
     c[m] = 2.0;
     c[19] = -1.0;
     const Poly poly(3, c);
     const auto& e = cubic[m];
-    CHECK(poly.value(p) == Approx(2.0 * std::pow(p.x, e[0]) * std::pow(p.y, e[1]) * std::pow(p.z, e[2]) - 1.0));
+    CHECK(poly.value(p) ==
+          Approx(2.0 * std::pow(p.x, e[0]) * std::pow(p.y, e[1]) * std::pow(p.z, e[2]) - 1.0));
   }
 }
 
-TEST_CASE("poly: order 2 is the quadric with the same coefficients, hit for hit", "[primitives][poly]") {
+TEST_CASE("poly: order 2 is the quadric with the same coefficients, hit for hit",
+          "[primitives][poly]") {
   // A hyperboloid of one sheet with mixed and linear terms: x², xy, xz, x, y², yz, y, z², z, 1.
   const std::vector<double> c = {1.0, 0.4, 0.0, -0.3, -0.5, 0.2, 0.1, 1.5, 0.0, -0.6};
   const Poly poly(2, c);
-  const Quadric quadric({Vec3(c[0], c[4], c[7]), Vec3(c[1], c[2], c[5]), Vec3(c[3], c[6], c[8]), c[9]});
+  const Quadric quadric(
+      {Vec3(c[0], c[4], c[7]), Vec3(c[1], c[2], c[5]), Vec3(c[3], c[6], c[8]), c[9]});
   Lcg next{11};
   int hits = 0;
   for (int i = 0; i < 3000; ++i) {
@@ -132,8 +144,13 @@ TEST_CASE("poly: a torus written as a quartic is the torus", "[primitives][poly]
 
 TEST_CASE("poly: crossings alternate and agree with inside()", "[primitives][poly]") {
   // The tangle cube: x⁴ − 5x² + y⁴ − 5y² + z⁴ − 5z² + 11.8, up to eight crossings per line.
-  const Poly poly(4, quartic({{{4, 0, 0}, 1}, {{2, 0, 0}, -5}, {{0, 4, 0}, 1}, {{0, 2, 0}, -5},
-                              {{0, 0, 4}, 1}, {{0, 0, 2}, -5}, {{0, 0, 0}, 11.8}}));
+  const Poly poly(4, quartic({{{4, 0, 0}, 1},
+                              {{2, 0, 0}, -5},
+                              {{0, 4, 0}, 1},
+                              {{0, 2, 0}, -5},
+                              {{0, 0, 4}, 1},
+                              {{0, 0, 2}, -5},
+                              {{0, 0, 0}, 11.8}}));
   Lcg next{3};
   int many = 0;
   for (int i = 0; i < 2000; ++i) {
@@ -168,9 +185,9 @@ TEST_CASE("poly: a cubic whose leading term vanishes along the ray", "[primitive
   // y − x³ + 3xz² (the monkey saddle y = x³ − 3xz²): along y it is linear, along z at x = 0
   // constant, along x a true cubic.
   std::vector<double> c(20, 0.0);
-  c[0] = -1.0;   // x³
-  c[7] = 3.0;    // xz²
-  c[15] = 1.0;   // y
+  c[0] = -1.0;  // x³
+  c[7] = 3.0;   // xz²
+  c[15] = 1.0;  // y
   const Poly poly(3, c);
   Hit h;
   CHECK(poly.intersect(Ray(Vec3(0.3, -5.0, 0.0), Vec3(0, 1, 0)), h));

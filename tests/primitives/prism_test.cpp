@@ -34,7 +34,7 @@ const std::vector<Vec2> kHole = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0
 PrismContour bezierCircle() {
   const double k = 0.5522847498307936;
   PrismContour c;
-  const Vec2 pts[13] = {{1, 0}, {1, k}, {k, 1}, {0, 1}, {-k, 1}, {-1, k}, {-1, 0},
+  const Vec2 pts[13] = {{1, 0},   {1, k},   {k, 1},  {0, 1},  {-k, 1}, {-1, k}, {-1, 0},
                         {-1, -k}, {-k, -1}, {0, -1}, {k, -1}, {1, -k}, {1, 0}};
   for (int i = 0; i < 4; ++i) {
     PrismSegment s;
@@ -46,7 +46,8 @@ PrismContour bezierCircle() {
 }
 
 // The exact crossings of a line with the convex solid of half-spaces n·p <= c, long double.
-bool clipConvex(const Ray& ray, const std::vector<std::pair<Vec3, double>>& planes, LD& t0, LD& t1) {
+bool clipConvex(const Ray& ray, const std::vector<std::pair<Vec3, double>>& planes, LD& t0,
+                LD& t1) {
   t0 = -1e300L;
   t1 = 1e300L;
   for (auto& [n, c] : planes) {
@@ -57,7 +58,8 @@ bool clipConvex(const Ray& ray, const std::vector<std::pair<Vec3, double>>& plan
       continue;
     }
     LD t = (c - on) / dn;
-    if (dn > 0) t1 = std::min(t1, t); else t0 = std::max(t0, t);
+    if (dn > 0) t1 = std::min(t1, t);
+    else t0 = std::max(t0, t);
   }
   return t0 <= t1;
 }
@@ -93,7 +95,8 @@ int checkSameCrossings(const Shape& a, const Shape& b, const AABB& box, Rng& rng
     b.crossings(ray, cb);
     REQUIRE(ca.items.size() == cb.items.size());
     for (size_t k = 0; k < ca.items.size(); ++k) {
-      CHECK(std::abs(ca.items[k].hit.t - cb.items[k].hit.t) <= 1e-14 * (1 + std::abs(cb.items[k].hit.t)));
+      CHECK(std::abs(ca.items[k].hit.t - cb.items[k].hit.t) <=
+            1e-14 * (1 + std::abs(cb.items[k].hit.t)));
       CHECK(ca.items[k].entering == cb.items[k].entering);
       if (!normals) continue;
       SurfaceInfo sa = a.surface(ray, ca.items[k].hit), sb = b.surface(ray, cb.items[k].hit);
@@ -195,8 +198,10 @@ TEST_CASE("prism: a Bézier circle's hits lie on the curve, normals radial", "[p
     // The hit's (x, z) against the curve at the hit's parameter, in long double.
     const PrismSegment sg = bezierCircle()[h.part & ~Prism::kEntering];
     LD s = h.b1, u = 1 - s;
-    LD bx = u * u * u * sg.p[0].x + 3 * u * u * s * sg.p[1].x + 3 * u * s * s * sg.p[2].x + s * s * s * sg.p[3].x;
-    LD bz = u * u * u * sg.p[0].y + 3 * u * u * s * sg.p[1].y + 3 * u * s * s * sg.p[2].y + s * s * s * sg.p[3].y;
+    LD bx = u * u * u * sg.p[0].x + 3 * u * u * s * sg.p[1].x + 3 * u * s * s * sg.p[2].x +
+            s * s * s * sg.p[3].x;
+    LD bz = u * u * u * sg.p[0].y + 3 * u * u * s * sg.p[1].y + 3 * u * s * s * sg.p[2].y +
+            s * s * s * sg.p[3].y;
     CHECK(std::hypot((double)(bx - si.p.x), (double)(bz - si.p.z)) < 1e-12);
     // The Bézier circle is within 3e-4 of round: the normal is nearly radial, outward.
     Vec3 radial = glm::normalize(Vec3(si.p.x, 0, si.p.z));
@@ -210,8 +215,9 @@ TEST_CASE("prism: a Bézier circle's hits lie on the curve, normals radial", "[p
 
 TEST_CASE("prism: a conic square is the pyramid |x|, |z| < y", "[primitives][prism]") {
   Prism p({polygon(kSquare)}, 0.25, 1, Prism::Sweep::Conic);
-  const std::vector<std::pair<Vec3, double>> planes = {
-      {{1, -1, 0}, 0}, {{-1, -1, 0}, 0}, {{0, -1, 1}, 0}, {{0, -1, -1}, 0}, {{0, 1, 0}, 1}, {{0, -1, 0}, -0.25}};
+  const std::vector<std::pair<Vec3, double>> planes = {{{1, -1, 0}, 0}, {{-1, -1, 0}, 0},
+                                                       {{0, -1, 1}, 0}, {{0, -1, -1}, 0},
+                                                       {{0, 1, 0}, 1},  {{0, -1, 0}, -0.25}};
   Rng rng(44);
   int hits = 0;
   for (int i = 0; i < 3000; ++i) {
@@ -243,8 +249,9 @@ TEST_CASE("prism: a conic square is the pyramid |x|, |z| < y", "[primitives][pri
 
 TEST_CASE("prism: POV-Ray's spline rules", "[primitives][prism]") {
   // Linear: two polygons, each closed by repeating its first point.
-  PrismOutline lin = prismOutline({{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {0, 0}, {0.1, 0}, {0, 0.1}, {0, 0}},
-                                  PrismSpline::Linear);
+  PrismOutline lin =
+      prismOutline({{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {0, 0}, {0.1, 0}, {0, 0.1}, {0, 0}},
+                   PrismSpline::Linear);
   REQUIRE(lin.error.empty());
   REQUIRE(lin.contours.size() == 2);
   CHECK(lin.contours[0].size() == 3);
@@ -253,26 +260,31 @@ TEST_CASE("prism: POV-Ray's spline rules", "[primitives][prism]") {
   CHECK(open.closedLast);
   CHECK(open.contours.at(0).size() == 3);
   // Quadratic: a control point, then the points, the first repeated.
-  PrismOutline quad = prismOutline({{-1, 0}, {0, -1}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}}, PrismSpline::Quadratic);
+  PrismOutline quad =
+      prismOutline({{-1, 0}, {0, -1}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}}, PrismSpline::Quadratic);
   REQUIRE(quad.error.empty());
   REQUIRE(quad.contours.size() == 1);
   CHECK(quad.contours[0].size() == 4);
   CHECK(quad.contours[0][0].p[0] == Vec2(0, -1));
   // Cubic: as quadratic with a control point after the closing point.
-  PrismOutline cub = prismOutline({{0, -1}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 0}, {0, 1}}, PrismSpline::Cubic);
+  PrismOutline cub =
+      prismOutline({{0, -1}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 0}, {0, 1}}, PrismSpline::Cubic);
   REQUIRE(cub.error.empty());
   REQUIRE(cub.contours.size() == 1);
   CHECK(cub.contours[0].size() == 4);
   CHECK(cub.contours[0][0].p[1] == Vec2(1, 2.0 / 6.0));  // P1 + (P2 - P0)/6
-  CHECK_FALSE(prismOutline({{0, -1}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 0}}, PrismSpline::Cubic).error.empty());
-  CHECK_FALSE(prismOutline({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}, PrismSpline::Quadratic).error.empty());
+  CHECK_FALSE(prismOutline({{0, -1}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 0}}, PrismSpline::Cubic)
+                  .error.empty());
+  CHECK_FALSE(
+      prismOutline({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}, PrismSpline::Quadratic).error.empty());
   CHECK_FALSE(prismOutline({{0, 0}, {1, 0}, {1, 1}, {2, 1}}, PrismSpline::Bezier).error.empty());
   CHECK_FALSE(prismOutline({{0, 0}, {1, 0}}, PrismSpline::Linear).error.empty());
   CHECK_THROWS_AS(Prism({polygon(kSquare)}, 1, 1), std::invalid_argument);
   CHECK_THROWS_AS(Prism({}, 0, 1), std::invalid_argument);
 }
 
-TEST_CASE("prism: a secondary ray leaving the surface does not hit it again at once", "[primitives][prism]") {
+TEST_CASE("prism: a secondary ray leaving the surface does not hit it again at once",
+          "[primitives][prism]") {
   std::vector<Prism> prisms;
   prisms.emplace_back(std::vector<PrismContour>{polygon(kSquare), polygon(kHole)}, 0, 1);
   prisms.emplace_back(std::vector<PrismContour>{bezierCircle()}, -1, 1);

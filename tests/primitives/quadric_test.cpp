@@ -1,8 +1,8 @@
 // <quadric>: hits against closed forms (a sphere, an ellipsoid's box, a plane, a cylinder
 // and a cone written as quadrics), the sign rules of the whole line (a > 0, a < 0, linear,
 // constant), and a ray from far away against a long-double reference.
-#include "primitives/plane.h"
 #include "primitives/quadric.h"
+#include "primitives/plane.h"
 #include "primitives/sphere.h"
 
 #include <catch2/catch.hpp>
@@ -84,7 +84,8 @@ TEST_CASE("quadric: an ellipsoid's box is exact", "[primitives][quadric]") {
   CHECK(tb.hi.x == Approx(maxX).epsilon(1e-5));  // the densest sample is within 1e-5
 }
 
-TEST_CASE("quadric: a cylinder written as a quadric, along and across its axis", "[primitives][quadric]") {
+TEST_CASE("quadric: a cylinder written as a quadric, along and across its axis",
+          "[primitives][quadric]") {
   const Quadric cyl({Vec3(1, 0, 1), Vec3(0), Vec3(0), -1});
   bool inside;
   // Along the axis inside: no crossing, inside all along (a = 0, h = 0, c < 0).
@@ -200,7 +201,8 @@ TEST_CASE("quadric: a hyperboloid of one sheet holds its axis inside (a < 0 with
   CHECK_FALSE(hyp.inside(Vec3(1, 0, 0)));
 }
 
-TEST_CASE("quadric: refuses coefficients without a surface or not finite", "[primitives][quadric]") {
+TEST_CASE("quadric: refuses coefficients without a surface or not finite",
+          "[primitives][quadric]") {
   CHECK_THROWS(Quadric({Vec3(0), Vec3(0), Vec3(0), 1}));
   CHECK_THROWS(Quadric({Vec3(1, std::nan(""), 1), Vec3(0), Vec3(0), -1}));
 }

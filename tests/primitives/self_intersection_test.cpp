@@ -72,10 +72,10 @@ Outcome leaveSurfaces(const Shape& shape, bool convex, const AABB& aim, int coun
     ++out.primaries;
     Vec3 nFacing = cosIn < 0.0 ? si.ng : -si.ng;  // the side the primary came from
     Vec3 dirs[4] = {
-        d - 2.0 * glm::dot(d, nFacing) * nFacing,          // mirror: back to that side
+        d - 2.0 * glm::dot(d, nFacing) * nFacing,                     // mirror: back to that side
         refractOrReflect(d, nFacing, cosIn < 0.0 ? 1.0 / 1.5 : 1.5),  // refracted-like
-        randomOnSide(rng, si.ng, 1.0),                     // random, out of the solid
-        randomOnSide(rng, si.ng, -1.0),                    // random, into the solid
+        randomOnSide(rng, si.ng, 1.0),                                // random, out of the solid
+        randomOnSide(rng, si.ng, -1.0),                               // random, into the solid
     };
     for (const Vec3& w0 : dirs) {
       Vec3 w = glm::normalize(w0);
@@ -99,8 +99,8 @@ Outcome leaveSurfaces(const Shape& shape, bool convex, const AABB& aim, int coun
         if (out.example.empty()) {
           std::ostringstream s;
           s.precision(17);
-          s << "re-hit at t=" << again.t << " from p=(" << si.p.x << "," << si.p.y << ","
-            << si.p.z << ") w=(" << w.x << "," << w.y << "," << w.z << ")";
+          s << "re-hit at t=" << again.t << " from p=(" << si.p.x << "," << si.p.y << "," << si.p.z
+            << ") w=(" << w.x << "," << w.y << "," << w.z << ")";
           out.example = s.str();
         }
       }
@@ -126,15 +126,19 @@ std::vector<Case> cases(double scale, const Vec3& at) {
   double s = scale;
   return {
       {"sphere", std::make_shared<Sphere>(c, s), true},
-      {"box", std::make_shared<Box>(c - Vec3(s, 0.5 * s, 0.7 * s), c + Vec3(s, 0.5 * s, 0.3 * s)), true},
+      {"box", std::make_shared<Box>(c - Vec3(s, 0.5 * s, 0.7 * s), c + Vec3(s, 0.5 * s, 0.3 * s)),
+       true},
       {"cylinder", std::make_shared<Cylinder>(c, c + s * Vec3(0.3, 1, 0.2), 0.6 * s, false), true},
       {"open cylinder", std::make_shared<Cylinder>(c, c + s * Vec3(0, 0, 1), 0.5 * s, true), false},
       {"cone", std::make_shared<Cone>(c, s, c + s * Vec3(0, 1.5, 0.4), 0.2 * s, false), true},
       {"torus", nullptr, false},  // object space only: see below
       {"disc", std::make_shared<Disc>(c, glm::normalize(Vec3(1, 2, 3)), s, 0.2 * s), false},
-      {"triangle", std::make_shared<Triangle>(c, c + s * Vec3(1, 0.1, 0), c + s * Vec3(0.2, 1, 0.5)), false},
-      {"plane", std::make_shared<Plane>(glm::normalize(Vec3(0.2, 1, 0.1)), glm::dot(glm::normalize(Vec3(0.2, 1, 0.1)), c)), true,
-       AABB(c - Vec3(s), c + Vec3(s))},
+      {"triangle",
+       std::make_shared<Triangle>(c, c + s * Vec3(1, 0.1, 0), c + s * Vec3(0.2, 1, 0.5)), false},
+      {"plane",
+       std::make_shared<Plane>(glm::normalize(Vec3(0.2, 1, 0.1)),
+                               glm::dot(glm::normalize(Vec3(0.2, 1, 0.1)), c)),
+       true, AABB(c - Vec3(s), c + Vec3(s))},
   };
 }
 
@@ -176,16 +180,19 @@ TEST_CASE("secondary rays never re-hit the surface they leave (object space)",
   }
   check("torus", Torus(1.0, 0.3), false, 10000, 102);
   check("thin torus", Torus(1.0, 0.02), false, 10000, 103);
-  check("box mesh", TriangleMesh(boxMesh(Vec3(-1, -0.5, 0), Vec3(1, 2, 3)), false), true, 10000, 104);
+  check("box mesh", TriangleMesh(boxMesh(Vec3(-1, -0.5, 0), Vec3(1, 2, 3)), false), true, 10000,
+        104);
   check("octahedron mesh", TriangleMesh(octahedronMesh(), true), true, 10000, 105);
 }
 
 TEST_CASE("secondary rays never re-hit: scenes scaled by 1e-4 and 1e4, and far from the origin",
           "[primitives][offset]") {
-  struct Setting { double scale; Vec3 at; };
-  const Setting settings[] = {{1e-4, Vec3(1e-4, 2e-4, -3e-4)},
-                              {1e4, Vec3(-2e4, 1e4, 5e3)},
-                              {1.0, Vec3(1e5, -3e4, 2e4)}};
+  struct Setting {
+    double scale;
+    Vec3 at;
+  };
+  const Setting settings[] = {
+      {1e-4, Vec3(1e-4, 2e-4, -3e-4)}, {1e4, Vec3(-2e4, 1e4, 5e3)}, {1.0, Vec3(1e5, -3e4, 2e4)}};
   for (const Setting& st : settings) {
     for (const Case& c : cases(st.scale, st.at)) {
       if (!c.shape) continue;
@@ -200,7 +207,7 @@ TEST_CASE("secondary rays never re-hit through instances (scale, shear, mirror, 
   Mat4 m = glm::translate(Mat4(1.0), Vec3(1e3, -2e3, 500.0)) *
            glm::rotate(Mat4(1.0), 0.7, glm::normalize(Vec3(1, 2, 3))) *
            glm::scale(Mat4(1.0), Vec3(3.0, 0.5, -1.5));  // non-uniform, mirrored
-  m[1][0] += 0.4;                                          // and sheared
+  m[1][0] += 0.4;                                        // and sheared
   auto world = Transform::fromMatrix(m);
   REQUIRE(world);
   for (const Case& c : cases(1.0, Vec3(0.1, 0.2, 0.3))) {

@@ -75,7 +75,8 @@ inline std::string intersectAgreesWithCrossings(const Shape& shape, const Ray& r
   Hit h;
   bool hit = shape.intersect(ray, h);
   if (hit != (first != nullptr)) return hit ? "intersect hits, no crossing" : "crossing, no hit";
-  if (hit && (h.t != first->hit.t || h.part != first->hit.part)) return "intersect != first crossing";
+  if (hit && (h.t != first->hit.t || h.part != first->hit.part))
+    return "intersect != first crossing";
   if (hit != shape.occluded(ray)) return "occluded disagrees with intersect";
   if (hit && h.shape != &shape) return "hit names another shape";
   return "";

@@ -16,7 +16,8 @@ namespace {
 using V = std::vector<Vec2>;
 const V kCylinder = {{1, -1}, {1, 0}, {1, 1}, {1, 2}};
 const V kVase = {{0, -0.5}, {0.6, 0}, {0.9, 0.4}, {0.4, 1}, {0.5, 1.4}, {0.7, 1.6}, {0.8, 1.8}};
-const V kBulb = {{0.5, -0.5}, {0, 0}, {0.8, 0.5}, {0, 1}, {0.5, 1.5}};  // meets the axis at both ends
+const V kBulb = {
+    {0.5, -0.5}, {0, 0}, {0.8, 0.5}, {0, 1}, {0.5, 1.5}};  // meets the axis at both ends
 const V kWaist = {{1, -1}, {1, 0}, {0.2, 0.5}, {0.9, 1.0}, {0.3, 1.6}, {0.1, 2.0}};
 
 // An independent reference in long double: POV-Ray's construction itself, the cubic
@@ -49,7 +50,8 @@ struct Reference {
           for (int k = 0; k < 5; ++k) M[r][k] -= q * M[c][k];
         }
       }
-      seg.push_back({M[0][4] / M[0][0], M[1][4] / M[1][1], M[2][4] / M[2][2], M[3][4] / M[3][3], y1, y2});
+      seg.push_back(
+          {M[0][4] / M[0][0], M[1][4] / M[1][1], M[2][4] / M[2][2], M[3][4] / M[3][3], y1, y2});
     }
   }
   const Cubic* at(long double y) const {
@@ -57,7 +59,9 @@ struct Reference {
       if (y >= c.y1 && y <= c.y2) return &c;
     return nullptr;
   }
-  static long double f(const Cubic& c, long double y) { return ((c.A * y + c.B) * y + c.C) * y + c.D; }
+  static long double f(const Cubic& c, long double y) {
+    return ((c.A * y + c.B) * y + c.C) * y + c.D;
+  }
   static long double df(const Cubic& c, long double y) { return (3 * c.A * y + 2 * c.B) * y + c.C; }
   bool inside(long double x, long double y, long double z) const {
     const Cubic* c = at(y);
@@ -66,7 +70,8 @@ struct Reference {
   // Every crossing of the solid's boundary on the line, by sampling 40000 steps over the
   // bounds and 200 bisections of each change (as long double).
   std::vector<long double> crossings(const Ray& ray, const AABB& box) const {
-    const long double ox = ray.o.x, oy = ray.o.y, oz = ray.o.z, dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
+    const long double ox = ray.o.x, oy = ray.o.y, oz = ray.o.z, dx = ray.d.x, dy = ray.d.y,
+                      dz = ray.d.z;
     const Interval span = box.slab(Ray(ray.o, ray.d, -kInf, kInf), 1.0 / ray.d);
     std::vector<long double> out;
     if (span.empty()) return out;
@@ -131,17 +136,23 @@ TEST_CASE("sor: a cylinder of four points is hit where the closed form says", "[
   SurfaceInfo si = s.surface(fromZ, h);
   CHECK_THAT(si.uv.x, WithinAbs(0.25, 1e-15));
   CHECK_THAT(si.uv.y, WithinAbs(0.25, 1e-15));
-  si = s.surface(across, [&] { Hit a; s.intersect(across, a); return a; }());
+  si = s.surface(across, [&] {
+    Hit a;
+    s.intersect(across, a);
+    return a;
+  }());
   CHECK_THAT(si.uv.x, WithinAbs(0.0, 1e-15));
   CHECK_THAT(si.uv.y, WithinAbs(0.5, 1e-15));
   si = s.surface(slant, cl.items[1].hit);
-  CHECK_THAT(si.uv.y, WithinAbs(-0.5, 1e-15));  // the slanted ray's exit through the bottom at radius 0.5
+  CHECK_THAT(si.uv.y,
+             WithinAbs(-0.5, 1e-15));  // the slanted ray's exit through the bottom at radius 0.5
   // Tangent to the side: no crossing; just inside: two.
   CHECK_FALSE(s.intersect(Ray(Vec3(1.0, 0.5, -3), Vec3(0, 0.1, 1)), h));
   CHECK(s.intersect(Ray(Vec3(0.999, 0.5, -3), Vec3(0, 0.1, 1)), h));
 }
 
-TEST_CASE("sor: the cubic takes POV-Ray's values at the joints and between them", "[primitives][sor]") {
+TEST_CASE("sor: the cubic takes POV-Ray's values at the joints and between them",
+          "[primitives][sor]") {
   const Sor s(kVase, false);
   const Reference ref(kVase, false);
   REQUIRE(s.segments() == 4);
@@ -149,7 +160,8 @@ TEST_CASE("sor: the cubic takes POV-Ray's values at the joints and between them"
     CHECK_THAT(s.radiusSquaredAt(kVase[i].y), WithinAbs(kVase[i].x * kVase[i].x, 1e-15));
   for (int k = 0; k <= 1000; ++k) {
     const double y = 1.6 * k / 1000;
-    CHECK_THAT(s.radiusSquaredAt(y), WithinAbs(static_cast<double>(Reference::f(*ref.at(y), y)), 1e-13));
+    CHECK_THAT(s.radiusSquaredAt(y),
+               WithinAbs(static_cast<double>(Reference::f(*ref.at(y), y)), 1e-13));
   }
 }
 
@@ -172,7 +184,8 @@ TEST_CASE("sor: all crossings, in order, against a long double reference", "[pri
       // Crossings closer than the sampling step cannot be told apart by the reference.
       bool close = false;
       for (size_t k = 0; k + 1 < want.size(); ++k) close |= want[k + 1] - want[k] < 1e-3;
-      for (size_t k = 0; k + 1 < cl.items.size(); ++k) close |= cl.items[k + 1].hit.t - cl.items[k].hit.t < 1e-3;
+      for (size_t k = 0; k + 1 < cl.items.size(); ++k)
+        close |= cl.items[k + 1].hit.t - cl.items[k].hit.t < 1e-3;
       if (close) {
         ++skipped;
         continue;
@@ -190,12 +203,14 @@ TEST_CASE("sor: all crossings, in order, against a long double reference", "[pri
   }
 }
 
-TEST_CASE("sor: the closest hit is the first crossing, and inside agrees with the reference", "[primitives][sor]") {
+TEST_CASE("sor: the closest hit is the first crossing, and inside agrees with the reference",
+          "[primitives][sor]") {
   for (const V* pts : {&kVase, &kBulb, &kWaist}) {
     const Sor s(*pts, false);
     const Reference ref(*pts, false);
     Rng rng(9);
-    for (int i = 0; i < 1500; ++i) CHECK(intersectAgreesWithCrossings(s, randomRayAt(rng, s.bounds())) == "");
+    for (int i = 0; i < 1500; ++i)
+      CHECK(intersectAgreesWithCrossings(s, randomRayAt(rng, s.bounds())) == "");
     int wrong = 0, in = 0;
     for (int i = 0; i < 20000; ++i) {
       const Vec3 p = randomInBox(rng, s.bounds().lo - 0.1, s.bounds().hi + 0.1);
@@ -228,7 +243,8 @@ TEST_CASE("sor: normals are the reference's gradient, caps face down and up", "[
     ++sides;
     const Reference::Cubic* c = ref.at(si.p.y);
     REQUIRE(c);
-    const Vec3 g = glm::normalize(Vec3(2 * si.p.x, -static_cast<double>(Reference::df(*c, si.p.y)), 2 * si.p.z));
+    const Vec3 g = glm::normalize(
+        Vec3(2 * si.p.x, -static_cast<double>(Reference::df(*c, si.p.y)), 2 * si.p.z));
     CHECK(glm::length(si.ng - g) < 1e-9);
     CHECK(glm::dot(si.ng, ray.d) < 0.0);  // entered from outside: the normal faces the ray
     CHECK(si.hasUV);
@@ -317,7 +333,8 @@ TEST_CASE("sor: open leaves out the caps and is no solid", "[primitives][sor]") 
   CHECK_FALSE(open.intersect(Ray(Vec3(0, 5, 0), Vec3(0, -1, 0)), h));
 }
 
-TEST_CASE("sor: a secondary ray leaving the surface does not hit it again at once", "[primitives][sor]") {
+TEST_CASE("sor: a secondary ray leaving the surface does not hit it again at once",
+          "[primitives][sor]") {
   const Sor s(kWaist, false);
   Rng rng(11);
   int selfHits = 0, hits = 0;
@@ -339,7 +356,9 @@ TEST_CASE("sor: bad point lists are refused", "[primitives][sor]") {
   CHECK_THROWS_AS(Sor(V{{1, 0}, {1, 1}, {1, 2}}, false), std::invalid_argument);
   CHECK_THROWS_AS(Sor(V{{1, 0}, {-1, 1}, {1, 2}, {1, 3}}, false), std::invalid_argument);
   CHECK_THROWS_AS(Sor(V{{1, 0}, {1, 1}, {1, 1}, {1, 3}}, false), std::invalid_argument);
-  CHECK_THROWS_AS(Sor(V{{1, 2}, {1, 1}, {1, 2}, {1, 3}}, false), std::invalid_argument);  // P0 at P2's height
+  CHECK_THROWS_AS(Sor(V{{1, 2}, {1, 1}, {1, 2}, {1, 3}}, false),
+                  std::invalid_argument);  // P0 at P2's height
   CHECK_THROWS_AS(Sor(V{{1, 0}, {0, 1}, {0, 2}, {1, 3}}, false), std::invalid_argument);
-  CHECK_NOTHROW(Sor(V{{1, 5}, {1, 1}, {1, 2}, {1, -3}}, false));  // the control points may lie anywhere else
+  CHECK_NOTHROW(
+      Sor(V{{1, 5}, {1, 1}, {1, 2}, {1, -3}}, false));  // the control points may lie anywhere else
 }

@@ -6,8 +6,8 @@
 
 using namespace lucent;
 using namespace lucent::test;
-using Catch::Matchers::WithinRel;
 using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
 
 TEST_CASE("sphere: hits at the analytic distances with outward normals", "[primitives][sphere]") {
   Sphere s(Vec3(1, 2, 3), 2.0);

@@ -18,9 +18,9 @@ using LD = long double;
 namespace {
 
 // The exponents the tests sweep: nearly a box to pinched stars, and mixed.
-const std::pair<double, double> kExponents[] = {{1.0, 1.0},  {0.05, 0.05}, {0.1, 0.1}, {0.25, 0.6},
-                                                {0.5, 0.5},  {2.0, 2.0},   {1.0, 2.0}, {3.0, 3.0},
-                                                {0.3, 4.0},  {4.0, 0.3},   {0.01, 0.01}, {10.0, 10.0}};
+const std::pair<double, double> kExponents[] = {
+    {1.0, 1.0}, {0.05, 0.05}, {0.1, 0.1}, {0.25, 0.6}, {0.5, 0.5},   {2.0, 2.0},
+    {1.0, 2.0}, {3.0, 3.0},   {0.3, 4.0}, {4.0, 0.3},  {0.01, 0.01}, {10.0, 10.0}};
 
 LD normL(LD a, LD b, LD p) {
   LD m = std::max(a, b), s = std::min(a, b);
@@ -145,13 +145,15 @@ TEST_CASE("superellipsoid: random rays against the long-double reference",
       bool clear = true;
       LD dl = std::sqrt(glm::dot(accuracy::toL(ray.d), accuracy::toL(ray.d)));
       for (auto& r : roots)
-        if (!r.normalDefined || std::abs(glm::dot(r.n, accuracy::toL(ray.d))) / dl < 0.05) clear = false;
+        if (!r.normalDefined || std::abs(glm::dot(r.n, accuracy::toL(ray.d))) / dl < 0.05)
+          clear = false;
       if (!clear) continue;
       CrossingList cl;
       s.crossings(ray, cl);
       REQUIRE(cl.items.size() == roots.size());
       for (size_t k = 0; k < roots.size(); ++k) {
-        CHECK(std::abs(cl.items[k].hit.t - (double)roots[k].t) <= 1e-13 * std::abs((double)roots[k].t));
+        CHECK(std::abs(cl.items[k].hit.t - (double)roots[k].t) <=
+              1e-13 * std::abs((double)roots[k].t));
         Vec3 ng = s.surface(ray, cl.items[k].hit).ng;
         Vec3 rn((double)roots[k].n.x, (double)roots[k].n.y, (double)roots[k].n.z);
         CHECK(angle(ng, rn) < 1e-11);
@@ -162,7 +164,8 @@ TEST_CASE("superellipsoid: random rays against the long-double reference",
   }
 }
 
-TEST_CASE("superellipsoid: crossings alternate and agree with inside()", "[primitives][superellipsoid]") {
+TEST_CASE("superellipsoid: crossings alternate and agree with inside()",
+          "[primitives][superellipsoid]") {
   Rng rng(34);
   for (auto [e, n] : kExponents) {
     INFO("e = " << e << ", n = " << n);
@@ -199,7 +202,8 @@ TEST_CASE("superellipsoid: inside() against the equation", "[primitives][superel
   }
 }
 
-TEST_CASE("superellipsoid: normals against the equation's gradient", "[primitives][superellipsoid]") {
+TEST_CASE("superellipsoid: normals against the equation's gradient",
+          "[primitives][superellipsoid]") {
   Rng rng(36);
   for (auto [e, n] : kExponents) {
     INFO("e = " << e << ", n = " << n);
@@ -217,7 +221,8 @@ TEST_CASE("superellipsoid: normals against the equation's gradient", "[primitive
       if (X == 0 || Y == 0 || Z == 0) continue;
       LD S = std::pow(X, a) + std::pow(Y, a);
       LD k = b * std::pow(S, b - 1) * a;
-      LD g[3] = {std::copysign(k * std::pow(X, a - 1), (LD)p.x), std::copysign(k * std::pow(Y, a - 1), (LD)p.y),
+      LD g[3] = {std::copysign(k * std::pow(X, a - 1), (LD)p.x),
+                 std::copysign(k * std::pow(Y, a - 1), (LD)p.y),
                  std::copysign(c * std::pow(Z, c - 1), (LD)p.z)};
       LD len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
       Vec3 expect(double(g[0] / len), double(g[1] / len), double(g[2] / len));
@@ -252,7 +257,8 @@ TEST_CASE("superellipsoid: a secondary ray leaving the surface does not hit it a
   }
 }
 
-TEST_CASE("superellipsoid: exponents outside [0.01, 10] are refused", "[primitives][superellipsoid]") {
+TEST_CASE("superellipsoid: exponents outside [0.01, 10] are refused",
+          "[primitives][superellipsoid]") {
   CHECK_THROWS_AS(Superellipsoid(0.0, 1.0), std::invalid_argument);
   CHECK_THROWS_AS(Superellipsoid(1.0, -1.0), std::invalid_argument);
   CHECK_THROWS_AS(Superellipsoid(std::nan(""), 1.0), std::invalid_argument);

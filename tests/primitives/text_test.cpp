@@ -76,7 +76,8 @@ std::vector<LD> lineCrossingsX(const TextOutline& o, LD y0) {
 
 }  // namespace
 
-TEST_CASE("text: glyphs placed by the font's advances, bearings and kerning as POV-Ray places them", "[primitives][text]") {
+TEST_CASE("text: glyphs placed by the font's advances, bearings and kerning as POV-Ray places them",
+          "[primitives][text]") {
   // hmtx (advance, lsb): A (1401, 16), V (1401, 16), T (1251, -6), o (1253, 113);
   // glyf xMin equals lsb for each; kern: A V -131, T o -348, none for V T.
   const TextOutline o = textOutline(kFont, "AVTo", Vec2(0.0));
@@ -112,7 +113,10 @@ TEST_CASE("text: glyphs placed by the font's advances, bearings and kerning as P
   CHECK(sp.glyphs[2].origin.x == Approx((1253 - 113 + 651) / kEm).epsilon(1e-15));
 }
 
-TEST_CASE("text: holes of o, e and 8 and every glyph of printable ASCII by the even-odd rule equal the nonzero rule", "[primitives][text]") {
+TEST_CASE(
+    "text: holes of o, e and 8 and every glyph of printable ASCII by the even-odd rule equal the "
+    "nonzero rule",
+    "[primitives][text]") {
   // TrueType fills by the nonzero rule, POV-Ray (Inside_Glyph) and the Prism by even-odd:
   // FreeType's rasteriser finds no pixel where the two differ in DejaVu Sans.
   for (char32_t c = 0x21; c < 0x7F; ++c) {
@@ -127,7 +131,8 @@ TEST_CASE("text: holes of o, e and 8 and every glyph of printable ASCII by the e
   CHECK(o.glyphs[2].contours.size() == 2);
 }
 
-TEST_CASE("text: a ray through the hole of o misses, one through its ring hits the front cap", "[primitives][text]") {
+TEST_CASE("text: a ray through the hole of o misses, one through its ring hits the front cap",
+          "[primitives][text]") {
   // o: xMin 113, xMax 1141, yMin -29, yMax 1147; placed first, so shifted by -113.
   const TextOutline o = textOutline(kFont, "o", Vec2(0.0));
   const auto t = makeText(o, 0.5);
@@ -150,7 +155,8 @@ TEST_CASE("text: a ray through the hole of o misses, one through its ring hits t
   CHECK(t->inside(Vec3(40 / kEm, cy, 0.25)));
 }
 
-TEST_CASE("text: side hits along a line through several glyphs match the outline's curves", "[primitives][text]") {
+TEST_CASE("text: side hits along a line through several glyphs match the outline's curves",
+          "[primitives][text]") {
   const TextOutline o = textOutline(kFont, "Lucent 8oe", Vec2(0.0));
   REQUIRE(o.error.empty());
   const auto t = makeText(o, 0.3);
@@ -174,7 +180,8 @@ TEST_CASE("text: side hits along a line through several glyphs match the outline
   CHECK(checked > 100);
 }
 
-TEST_CASE("text: random rays keep the crossings contract and the inside test agrees", "[primitives][text]") {
+TEST_CASE("text: random rays keep the crossings contract and the inside test agrees",
+          "[primitives][text]") {
   const TextOutline o = textOutline(kFont, "8oe AV", Vec2(-0.3, 0.02));  // overlapping glyphs
   const auto t = makeText(o, 0.4);
   Rng rng(7);
@@ -195,7 +202,8 @@ TEST_CASE("text: random rays keep the crossings contract and the inside test agr
   CHECK(hits > 500);
 }
 
-TEST_CASE("text: damaged, missing and non-font files are errors, never crashes", "[primitives][text]") {
+TEST_CASE("text: damaged, missing and non-font files are errors, never crashes",
+          "[primitives][text]") {
   CHECK_FALSE(textOutline("/nonexistent/font.ttf", "a", Vec2(0.0)).error.empty());
   std::ifstream in(kFont, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -214,7 +222,9 @@ TEST_CASE("text: damaged, missing and non-font files are errors, never crashes",
   int failed = 0;
   for (int m = 0; m < 60; ++m) {
     std::string b = bytes;
-    for (int k = 0; k < 20; ++k) b[static_cast<size_t>(uniform(rng, 0, b.size() - 1))] = static_cast<char>(uniform(rng, 0, 256));
+    for (int k = 0; k < 20; ++k)
+      b[static_cast<size_t>(uniform(rng, 0, b.size() - 1))] =
+          static_cast<char>(uniform(rng, 0, 256));
     if (m % 3 == 0) b.resize(static_cast<size_t>(uniform(rng, 12, b.size())));
     write(b);
     const TextOutline o = textOutline(path, "Lucent 8oe", Vec2(0.0));
@@ -235,9 +245,11 @@ TEST_CASE("text: damaged, missing and non-font files are errors, never crashes",
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("text: a box minus an inverse text is the box and the text intersected", "[primitives][text][csg]") {
+TEST_CASE("text: a box minus an inverse text is the box and the text intersected",
+          "[primitives][text][csg]") {
   auto world = [](const std::string& body) {
-    ParseResult p = parseSceneString("<scene version=\"1\"><camera/>" + body + "</scene>", "text.xml");
+    ParseResult p =
+        parseSceneString("<scene version=\"1\"><camera/>" + body + "</scene>", "text.xml");
     std::string all;
     for (const Diagnostic& d : p.diagnostics.all()) all += d.str() + "\n";
     INFO(all);
@@ -253,7 +265,8 @@ TEST_CASE("text: a box minus an inverse text is the box and the text intersected
   int hits = 0, differ = 0;
   for (int i = 0; i < 40; ++i)
     for (int j = 0; j < 20; ++j) {
-      const Ray ray(Vec3(0.05 + 1.2 * i / 40, 0.05 + 0.6 * j / 20, -1), glm::normalize(Vec3(0.1, 0.05, 1)));
+      const Ray ray(Vec3(0.05 + 1.2 * i / 40, 0.05 + 0.6 * j / 20, -1),
+                    glm::normalize(Vec3(0.1, 0.05, 1)));
       Hit ha, hb, hc;
       const bool fa = a->intersect(ray, ha), fb = b->intersect(ray, hb), fc = c->intersect(ray, hc);
       REQUIRE(fa == fb);
@@ -267,9 +280,12 @@ TEST_CASE("text: a box minus an inverse text is the box and the text intersected
   CHECK(differ > 100);  // the inverse changes what is cut
 }
 
-TEST_CASE("text: an empty string or only spaces is an empty shape with a warning", "[primitives][text]") {
+TEST_CASE("text: an empty string or only spaces is an empty shape with a warning",
+          "[primitives][text]") {
   for (const char* s : {"", "   "}) {
-    ParseResult p = parseSceneString(std::string("<scene version=\"1\"><camera/><text string=\"") + s + "\"/></scene>", "text.xml");
+    ParseResult p = parseSceneString(
+        std::string("<scene version=\"1\"><camera/><text string=\"") + s + "\"/></scene>",
+        "text.xml");
     REQUIRE(p.scene);
     CHECK(p.diagnostics.errorCount() == 0);
     std::string all;

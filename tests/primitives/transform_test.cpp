@@ -27,7 +27,8 @@ TEST_CASE("singular and non-affine matrices are refused", "[transform]") {
   CHECK(Transform::fromMatrix(glm::scale(Mat4(1.0), Vec3(1e-6))));
 }
 
-TEST_CASE("points, vectors and normals round-trip through a sheared, scaled transform", "[transform]") {
+TEST_CASE("points, vectors and normals round-trip through a sheared, scaled transform",
+          "[transform]") {
   Mat4 m(1.0);
   m[1][0] = 0.7;  // shear: x += 0.7 y
   m = glm::translate(Mat4(1.0), Vec3(1, -2, 3)) * glm::scale(Mat4(1.0), Vec3(2, 3, 0.5)) * m;

@@ -11,8 +11,7 @@ using namespace lucent::test;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
-TEST_CASE("mesh: a closed box mesh crosses rays exactly where the box does",
-          "[primitives][mesh]") {
+TEST_CASE("mesh: a closed box mesh crosses rays exactly where the box does", "[primitives][mesh]") {
   Vec3 lo(-1, -0.5, 0), hi(1, 2, 3);
   TriangleMesh mesh(boxMesh(lo, hi), false);
   Box box(lo, hi);
@@ -60,10 +59,10 @@ TEST_CASE("mesh: rays through the diagonals, edges and corners of a box mesh",
   // Along an edge, or lying in a face: the ray only touches the solid. The watertight
   // test decides such rays as if moved by an infinitesimal amount (watertight.cpp), so
   // they either miss or enter and leave, and intersect() agrees with crossings().
-  const Ray touching[] = {Ray(Vec3(1, 1, 5), Vec3(0, 0, -1)), Ray(Vec3(1, 0.5, 5), Vec3(0, 0, -1)),
-                          Ray(Vec3(-1, -1, 5), Vec3(0, 0, -1)),
-                          Ray(Vec3(-1, 0.5, 5), Vec3(0, 0, -1)), Ray(Vec3(5, 1, 1), Vec3(-1, 0, 0)),
-                          Ray(Vec3(5, -1, -1), Vec3(-1, 0, 0))};
+  const Ray touching[] = {
+      Ray(Vec3(1, 1, 5), Vec3(0, 0, -1)),   Ray(Vec3(1, 0.5, 5), Vec3(0, 0, -1)),
+      Ray(Vec3(-1, -1, 5), Vec3(0, 0, -1)), Ray(Vec3(-1, 0.5, 5), Vec3(0, 0, -1)),
+      Ray(Vec3(5, 1, 1), Vec3(-1, 0, 0)),   Ray(Vec3(5, -1, -1), Vec3(-1, 0, 0))};
   for (const Ray& ray : touching) {
     CrossingList cl;
     mesh.crossings(ray, cl);

@@ -39,7 +39,7 @@ TEST_CASE("triangle: vertex normals are interpolated and renormalised", "[primit
   std::array<Vec3, 3> n = {glm::normalize(Vec3(-1, 0, 1)), glm::normalize(Vec3(1, 0, 1)),
                            Vec3(0, 0, 1)};
   Triangle tri(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), n);
-  Ray ray(Vec3(1, 0, 1), Vec3(0, 0, -1));  // midpoint of a–b: normal (0, 0, 1)
+  Ray ray(Vec3(1, 0, 1), Vec3(0, 0, -1));   // midpoint of a–b: normal (0, 0, 1)
   Ray r2(Vec3(0.5, 0, 1), Vec3(0, 0, -1));  // a quarter along a–b
   Hit h;
   REQUIRE(tri.intersect(ray, h));
@@ -63,9 +63,9 @@ TEST_CASE("triangle: vertex normals are interpolated and renormalised", "[primit
 
 TEST_CASE("triangle: degenerate triangles never hit and never give NaN", "[primitives][triangle]") {
   const Triangle degenerate[] = {
-      Triangle(Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2)),        // collinear
+      Triangle(Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2)),              // collinear
       Triangle(Vec3(0.1, 0.2, 0.3), Vec3(0.1, 0.2, 0.3), Vec3(1, 0, 0)),  // two equal corners
-      Triangle(Vec3(1.0), Vec3(1.0), Vec3(1.0)),                    // a point
+      Triangle(Vec3(1.0), Vec3(1.0), Vec3(1.0)),                          // a point
       Triangle(Vec3(0, 0, 0), Vec3(1e-3, 1e-3, 0), Vec3(3e-3, 3e-3, 0)),  // collinear, scaled
   };
   Rng rng(8);
@@ -161,7 +161,8 @@ TEST_CASE("triangle: a ray exactly through a vertex shared by a fan hits the fan
     for (int k = 0; k < 6; ++k) {
       double ang = k * kPi / 3.0;
       ring.push_back(c + Vec3(std::round(1024 * std::cos(ang)), std::round(1024 * std::sin(ang)),
-                              (k % 2) * 100.0) / 1024.0);
+                              (k % 2) * 100.0) /
+                             1024.0);
     }
     Vec3 o = c + gridPoint(rng);
     if (o.z - c.z < 0.25) continue;  // from above, clear of the fan's slight folds

@@ -1,5 +1,5 @@
-#include "primitives/watertight.h"
 #include "primitives/watertight_filter.h"
+#include "primitives/watertight.h"
 
 #include <catch2/catch.hpp>
 
@@ -51,11 +51,12 @@ TEST_CASE("watertight pre-test: never clears a triangle the exact test hits (ran
     for (int i = 0; i < count; ++i) {
       // Small triangles near points of the ray, so that some are hit and some missed.
       Vec3 c = ray.at(2.0 * u(rng)) + 0.05 * Vec3(u(rng), u(rng), u(rng));
-      tris.push_back({c + 0.1 * Vec3(u(rng), u(rng), u(rng)), c + 0.1 * Vec3(u(rng), u(rng), u(rng)),
+      tris.push_back({c + 0.1 * Vec3(u(rng), u(rng), u(rng)),
+                      c + 0.1 * Vec3(u(rng), u(rng), u(rng)),
                       c + 0.1 * Vec3(u(rng), u(rng), u(rng))});
       TriangleIntersection ti;
-      hits += intersectTriangle(ShearedRay(ray), tris.back()[0], tris.back()[1],
-                                tris.back()[2], ti);
+      hits +=
+          intersectTriangle(ShearedRay(ray), tris.back()[0], tris.back()[1], tris.back()[2], ti);
     }
     cleared += checkGroups(ray, tris);
   }
@@ -72,8 +73,8 @@ TEST_CASE("watertight pre-test: rays exactly through shared edges and vertices",
   const int k = 7;
   for (int i = 0; i < k; ++i) {
     double a0 = 2.0 * M_PI * i / k, a1 = 2.0 * M_PI * (i + 1) / k;
-    fan.push_back({Vec3(0.0), Vec3(std::cos(a0), std::sin(a0), 0.0),
-                   Vec3(std::cos(a1), std::sin(a1), 0.0)});
+    fan.push_back(
+        {Vec3(0.0), Vec3(std::cos(a0), std::sin(a0), 0.0), Vec3(std::cos(a1), std::sin(a1), 0.0)});
   }
   const Vec3 dirs[] = {Vec3(0, 0, -1), Vec3(0.3, -0.2, -1), Vec3(1, 0, 0), Vec3(1, 1e-17, 0),
                        Vec3(-0.5, 0.25, 1)};

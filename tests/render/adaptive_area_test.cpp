@@ -34,13 +34,19 @@ struct Shadow {
 // rendering with POV-Ray 3.7, as povray/pov_lights.cpp notes; 6 and 9 by its halving rule).
 std::vector<double> fullWeights(int n) {
   switch (n) {
-    case 2: return {0.5, 0.5};
-    case 3: return {0.25, 0.5, 0.25};
-    case 4: return {0.25, 0.25, 0.25, 0.25};
-    case 5: return {1 / 8.0, 2 / 8.0, 2 / 8.0, 2 / 8.0, 1 / 8.0};
-    case 6: return {1 / 8.0, 2 / 8.0, 1 / 8.0, 1 / 8.0, 2 / 8.0, 1 / 8.0};
-    case 9: return {1 / 16.0, 2 / 16.0, 2 / 16.0, 2 / 16.0, 2 / 16.0,
-                    2 / 16.0, 2 / 16.0, 2 / 16.0, 1 / 16.0};
+    case 2:
+      return {0.5, 0.5};
+    case 3:
+      return {0.25, 0.5, 0.25};
+    case 4:
+      return {0.25, 0.25, 0.25, 0.25};
+    case 5:
+      return {1 / 8.0, 2 / 8.0, 2 / 8.0, 2 / 8.0, 1 / 8.0};
+    case 6:
+      return {1 / 8.0, 2 / 8.0, 1 / 8.0, 1 / 8.0, 2 / 8.0, 1 / 8.0};
+    case 9:
+      return {1 / 16.0, 2 / 16.0, 2 / 16.0, 2 / 16.0, 2 / 16.0,
+              2 / 16.0, 2 / 16.0, 2 / 16.0, 1 / 16.0};
   }
   return {};
 }

@@ -22,7 +22,8 @@ using namespace lucent::test;
 namespace {
 
 // The stored 8-bit values of the test image, row 0 at the top.
-constexpr int kBytes[4][4] = {{0, 64, 128, 255}, {32, 96, 160, 224}, {255, 0, 255, 0}, {10, 20, 30, 40}};
+constexpr int kBytes[4][4] = {
+    {0, 64, 128, 255}, {32, 96, 160, 224}, {255, 0, 255, 0}, {10, 20, 30, 40}};
 
 // The linear value whose 8-bit sRGB code is `code` (the PNG writer encodes it back).
 float linearFor(int code) {
@@ -35,7 +36,8 @@ struct BumpImage {
   std::string path;
   explicit BumpImage(const std::string& name) {
     path = (std::filesystem::temp_directory_path() /
-            ("lucent-bump-" + std::to_string(::getpid()) + "-" + name + ".png")).string();
+            ("lucent-bump-" + std::to_string(::getpid()) + "-" + name + ".png"))
+               .string();
     Image img(4, 4);
     for (int y = 0; y < 4; ++y)
       for (int x = 0; x < 4; ++x) img.at(x, y) = Color(linearFor(kBytes[y][x]));
@@ -115,7 +117,8 @@ TEST_CASE("a bump-mapped mesh shades with the bent normal, its hits and shadows 
         R"XML(<scene version="1"><camera position="0 5 5" look-at="0 0 0"/><render ambient="0"/>
         <light type="point" position="0.5 4 -0.5"/>
         <mesh positions="0 0 0  1 0 0  1 0 -1  0 0 -1" uvs="0 0  1 0  1 1  0 1"
-              indices="0 1 2  0 2 3"><material diffuse="1">)XML" + normal +
+              indices="0 1 2  0 2 3"><material diffuse="1">)XML" +
+            normal +
             R"XML(</material></mesh>
         <sphere center="0.275 1 -0.725" radius="0.05"/></scene>)XML",
         folder + "/bump.xml");
@@ -162,7 +165,8 @@ TEST_CASE("<bump-map> parses: src resolved, depth, one normal perturbation per m
   ParseResult r = parseSceneString(
       R"XML(<scene version="1"><camera position="0 5 5" look-at="0 0 0"/>
       <material id="a"><normal type="bumps"/></material>
-      <material id="b" base="a"><bump-map src=")XML" + src + R"XML(" depth="-0.25"/></material>
+      <material id="b" base="a"><bump-map src=")XML" +
+          src + R"XML(" depth="-0.25"/></material>
       <material id="c" base="b"><normal type="dents" depth="0.3"/></material>
       <material id="d" base="b" diffuse="0.5"/>
       <sphere material="a"/><sphere material="b"/><sphere material="c"/><sphere material="d"/></scene>)XML",

@@ -57,8 +57,10 @@ TEST_CASE("pinhole fov spans the chosen axis", "[render][camera]") {
   SECTION("horizontal: the left and right edges are fov/2 off axis") {
     cam.fovAxis = FovAxis::Horizontal;
     auto p = makeProjection(cam, w, h);
-    CHECK(angleBetween(rayThrough(*p, 0, h / 2.0).d, Vec3(0, 0, -1)) == Approx(half).epsilon(1e-12));
-    CHECK(angleBetween(rayThrough(*p, w, h / 2.0).d, Vec3(0, 0, -1)) == Approx(half).epsilon(1e-12));
+    CHECK(angleBetween(rayThrough(*p, 0, h / 2.0).d, Vec3(0, 0, -1)) ==
+          Approx(half).epsilon(1e-12));
+    CHECK(angleBetween(rayThrough(*p, w, h / 2.0).d, Vec3(0, 0, -1)) ==
+          Approx(half).epsilon(1e-12));
     // Square pixels: the top edge is atan(tan(half) * h / w) off axis.
     CHECK(angleBetween(rayThrough(*p, w / 2.0, 0).d, Vec3(0, 0, -1)) ==
           Approx(std::atan(std::tan(half) * h / w)).epsilon(1e-12));
@@ -66,8 +68,10 @@ TEST_CASE("pinhole fov spans the chosen axis", "[render][camera]") {
   SECTION("vertical: the top and bottom edges are fov/2 off axis") {
     cam.fovAxis = FovAxis::Vertical;
     auto p = makeProjection(cam, w, h);
-    CHECK(angleBetween(rayThrough(*p, w / 2.0, 0).d, Vec3(0, 0, -1)) == Approx(half).epsilon(1e-12));
-    CHECK(angleBetween(rayThrough(*p, w / 2.0, h).d, Vec3(0, 0, -1)) == Approx(half).epsilon(1e-12));
+    CHECK(angleBetween(rayThrough(*p, w / 2.0, 0).d, Vec3(0, 0, -1)) ==
+          Approx(half).epsilon(1e-12));
+    CHECK(angleBetween(rayThrough(*p, w / 2.0, h).d, Vec3(0, 0, -1)) ==
+          Approx(half).epsilon(1e-12));
   }
   SECTION("diagonal: the corners are fov/2 off axis") {
     cam.fovAxis = FovAxis::Diagonal;
@@ -121,7 +125,8 @@ TEST_CASE("degenerate cameras are errors that name the camera's location", "[ren
   }
 }
 
-TEST_CASE("sub-pixel offsets: centre for one sample, Halton (2,3) from index 1", "[render][camera]") {
+TEST_CASE("sub-pixel offsets: centre for one sample, Halton (2,3) from index 1",
+          "[render][camera]") {
   CHECK(pixelSampleOffset(0, 1) == Vec2(0.5, 0.5));
   CHECK(pixelSampleOffset(0, 4) == Vec2(0.5, 1.0 / 3.0));
   CHECK(pixelSampleOffset(1, 4) == Vec2(0.25, 2.0 / 3.0));

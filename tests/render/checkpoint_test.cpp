@@ -18,12 +18,14 @@ namespace {
 
 Image tileImage(int w, int h, float base) {
   Image image(w, h);
-  for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = Color(base + i, -base, 1e-30f * i);
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    image.pixels[i] = Color(base + i, -base, 1e-30f * i);
   return image;
 }
 
 struct TempFolder {
-  fs::path path = fs::temp_directory_path() / fs::path("lucent-checkpoint-test-" + std::to_string(::getpid()));
+  fs::path path =
+      fs::temp_directory_path() / fs::path("lucent-checkpoint-test-" + std::to_string(::getpid()));
   TempFolder() { fs::create_directories(path); }
   ~TempFolder() { fs::remove_all(path); }
 };
@@ -32,7 +34,8 @@ const Identity kRun = {{"scene", "a.xml"}, {"--samples", "16"}};
 
 }  // namespace
 
-TEST_CASE("a checkpoint reads back the tiles, frames and identities written", "[render][checkpoint]") {
+TEST_CASE("a checkpoint reads back the tiles, frames and identities written",
+          "[render][checkpoint]") {
   TempFolder tmp;
   const std::string path = (tmp.path / "out.png.checkpoint").string();
   CheckpointWriter w(path, kRun);
@@ -56,7 +59,8 @@ TEST_CASE("a checkpoint reads back the tiles, frames and identities written", "[
   REQUIRE(f1.tiles.size() == 2);
   CHECK(f1.tiles[1].first == PixelRect{4, 0, 6, 3});
   const Image expected = tileImage(2, 3, 7.0f);
-  CHECK(std::memcmp(f1.tiles[1].second.pixels.data(), expected.pixels.data(), expected.pixels.size() * sizeof(Color)) == 0);
+  CHECK(std::memcmp(f1.tiles[1].second.pixels.data(), expected.pixels.data(),
+                    expected.pixels.size() * sizeof(Color)) == 0);
   CHECK_FALSE(c.frames.at(2).written);
   CHECK(c.frames.at(2).identity.size() == 2);
   CHECK(c.validBytes == static_cast<long long>(fs::file_size(path)));
@@ -119,11 +123,14 @@ TEST_CASE("a file that is not a checkpoint is refused by name", "[render][checkp
   std::ofstream(path) << "lucent checkpoint 1\nscene\ta.xml\n";  // the header never ends
   CHECK_THROWS_WITH(readCheckpoint(path), Catch::Contains("is not a Lucent checkpoint"));
   std::ofstream(path) << "PNG";
-  CHECK_THROWS_WITH(readCheckpoint(path), Catch::Contains("'" + path + "' is not a Lucent checkpoint"));
-  CHECK_THROWS_WITH(readCheckpoint(path + ".missing"), Catch::Contains("cannot read the checkpoint"));
+  CHECK_THROWS_WITH(readCheckpoint(path),
+                    Catch::Contains("'" + path + "' is not a Lucent checkpoint"));
+  CHECK_THROWS_WITH(readCheckpoint(path + ".missing"),
+                    Catch::Contains("cannot read the checkpoint"));
 }
 
-TEST_CASE("identity differences name each key that changed, appeared or went", "[render][checkpoint]") {
+TEST_CASE("identity differences name each key that changed, appeared or went",
+          "[render][checkpoint]") {
   const Identity saved = {{"a", "1"}, {"b", "2"}, {"c", "3"}};
   const Identity current = {{"a", "1"}, {"b", "5"}, {"d", "4"}};
   const std::vector<std::string> d = identityDifferences(saved, current);

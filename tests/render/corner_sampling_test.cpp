@@ -77,8 +77,7 @@ TEST_CASE("threshold 0 splits every pixel fully, each lattice point traced once"
   for (const Color& p : r.image.pixels) REQUIRE(p == Color(0.25f, 0.5f, 0.75f));
 }
 
-TEST_CASE("only the pixels an edge crosses are split, and only where it is",
-          "[render][corners]") {
+TEST_CASE("only the pixels an edge crosses are split, and only where it is", "[render][corners]") {
   Scene scene;
   cornerSettings(scene, 0.3, 3);
   addWall(scene);

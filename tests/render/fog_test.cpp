@@ -72,8 +72,9 @@ TEST_CASE("fog: a surface at distance t keeps exp(-t/distance) of its colour", "
   checkColor(traceOne(world, Ray(Vec3(0.0), Vec3(0, 0, -2))), mixed(std::exp(-4.0 / 5.0), kWall));
 }
 
-TEST_CASE("fog: a ray that leaves the scene shows the fog colour, or keeps transmit of the background",
-          "[render][fog]") {
+TEST_CASE(
+    "fog: a ray that leaves the scene shows the fog colour, or keeps transmit of the background",
+    "[render][fog]") {
   Scene scene;
   scene.render.background = Color(0.2f, 0.4f, 0.9f);
   scene.fog = constantFog(5.0);
@@ -86,7 +87,8 @@ TEST_CASE("fog: a ray that leaves the scene shows the fog colour, or keeps trans
   checkColor(traceOne(world, Ray(Vec3(0.0), Vec3(0, 0, -1))), mixed(0.3, scene.render.background));
 }
 
-TEST_CASE("fog: transmit is the least share kept, filter tints it by the fog colour", "[render][fog]") {
+TEST_CASE("fog: transmit is the least share kept, filter tints it by the fog colour",
+          "[render][fog]") {
   Scene scene;
   scene.fog = constantFog(2.0);
   scene.fog->filter = 0.5f;
@@ -122,8 +124,10 @@ TEST_CASE("fog: no fog inside a solid, fog along reflected rays", "[render][fog]
   }
 }
 
-TEST_CASE("ground fog: a level ray at height y keeps exp(-t / (distance (1 + s^2))), s = (y - offset)/altitude",
-          "[render][fog]") {
+TEST_CASE(
+    "ground fog: a level ray at height y keeps exp(-t / (distance (1 + s^2))), s = (y - "
+    "offset)/altitude",
+    "[render][fog]") {
   Scene scene;
   Fog fog = constantFog(3.0);
   fog.type = FogType::Ground;
@@ -136,11 +140,13 @@ TEST_CASE("ground fog: a level ray at height y keeps exp(-t / (distance (1 + s^2
     double s = (y - 0.5) / 0.8;
     double d = s <= 0.0 ? 1.0 : 1.0 / (1.0 + s * s);
     INFO("height " << y);
-    checkColor(traceOne(world, Ray(Vec3(0, y, 0), Vec3(0, 0, -1))), mixed(std::exp(-4.0 * d / 3.0), kWall));
+    checkColor(traceOne(world, Ray(Vec3(0, y, 0), Vec3(0, 0, -1))),
+               mixed(std::exp(-4.0 * d / 3.0), kWall));
   }
 }
 
-TEST_CASE("ground fog: the depth of a stretch is the integral of the density along it", "[render][fog]") {
+TEST_CASE("ground fog: the depth of a stretch is the integral of the density along it",
+          "[render][fog]") {
   Fog fog = constantFog(1.0);
   fog.type = FogType::Ground;
   fog.offset = 0.3;
@@ -158,7 +164,8 @@ TEST_CASE("ground fog: the depth of a stretch is the integral of the density alo
   // A ray that leaves the scene: the limit of long stretches, finite only if it rises.
   const Vec3 o(0, 0.1, 0);
   const Vec3 level = glm::normalize(glm::cross(fog.up, Vec3(1, 0, 0)));
-  const Vec3 rising = glm::normalize(level + 0.3 * fog.up), falling = glm::normalize(level - 0.01 * fog.up);
+  const Vec3 rising = glm::normalize(level + 0.3 * fog.up),
+             falling = glm::normalize(level - 0.01 * fog.up);
   CHECK(fogDepth(fog, o, rising, kInf) == Approx(fogDepth(fog, o, rising, 1e9)).epsilon(1e-8));
   CHECK(fogDepth(fog, o, falling, kInf) == kInf);
   CHECK(fogDepth(fog, o, level, kInf) == kInf);

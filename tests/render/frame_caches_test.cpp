@@ -4,12 +4,12 @@
 // each file once; a changed file is read again.
 #include "../temp_dir.h"
 
+#include "../support/paths.h"
 #include "lang/parser.h"
 #include "meshes/mesh_file_cache.h"
 #include "render/image_map_cache.h"
 #include "render/renderer.h"
 #include "scenegraph/world.h"
-#include "../support/paths.h"
 
 #include <catch2/catch.hpp>
 
@@ -31,9 +31,11 @@ std::string animatedScene(const std::string& mesh, const std::string& image) {
   <camera position="0 1 6" look-at="0 0 0"/>
   <light position="5 5 5"/>
   <sphere radius="0.5" transform="translate(${2*clock - 1} 0 0)">
-    <material><image src=")xml" + image + R"xml("/></material>
+    <material><image src=")xml" +
+         image + R"xml("/></material>
   </sphere>
-  <mesh src=")xml" + mesh + R"xml(" transform="translate(0 -1.5 0)"/>
+  <mesh src=")xml" +
+         mesh + R"xml(" transform="translate(0 -1.5 0)"/>
 </scene>)xml";
 }
 
@@ -58,7 +60,8 @@ std::unique_ptr<Scene> parseFrame(const std::string& xml, const std::string& pat
 
 }  // namespace
 
-TEST_CASE("animation: a mesh and an image texture are read once for three frames", "[render][animation]") {
+TEST_CASE("animation: a mesh and an image texture are read once for three frames",
+          "[render][animation]") {
   test::TempDir dir("frame-caches");
   const std::string xml = sceneWithFiles(dir);
   const std::string path = dir.file("scene.xml");
@@ -89,7 +92,8 @@ TEST_CASE("animation: without a shared cache each parse reads its meshes", "[ren
   CHECK(second->reads() == 1);
 }
 
-TEST_CASE("animation: a mesh or an image changed between frames is read again", "[render][animation]") {
+TEST_CASE("animation: a mesh or an image changed between frames is read again",
+          "[render][animation]") {
   namespace fs = std::filesystem;
   test::TempDir dir("frame-caches");
   const std::string xml = sceneWithFiles(dir);

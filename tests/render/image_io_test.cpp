@@ -1,8 +1,8 @@
 // Image files: the values each format stores, held to references independent of Lucent's
 // encoder (the sRGB formula written out here, a PPM read byte by byte, EXR's exact floats),
 // and failures that leave old files intact.
-#include "../temp_dir.h"
 #include "render/image_io.h"
+#include "../temp_dir.h"
 
 #include <catch2/catch.hpp>
 
@@ -22,7 +22,6 @@ namespace fs = std::filesystem;
 using lucent::test::TempDir;
 
 namespace {
-
 
 // Values spanning the range, including out-of-range ones the 8-bit formats clamp.
 Image testImage() {
@@ -55,8 +54,7 @@ void checkCode(int stored, float linear, int maxCode) {
   INFO("linear " << linear << ": sRGB code " << exact);
   if (std::abs(exact + 0.5 - rounded) < 1e-3 || std::abs(exact + 0.5 - rounded - 1.0) < 1e-3)
     CHECK(std::abs(stored - exact) < 0.5 + 1e-3);
-  else
-    CHECK(stored == static_cast<int>(rounded));
+  else CHECK(stored == static_cast<int>(rounded));
 }
 
 // A binary PPM (P6, maxval 255) read byte by byte, without any image library.
@@ -155,7 +153,8 @@ TEST_CASE("EXR keeps linear float values exactly, HDR to RGBE precision, TIFF in
   for (size_t i = 0; i < img.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c) {
       INFO("pixel " << i << " channel " << c);
-      checkCode(static_cast<int>(std::lround(tif.pixels[i][c] * 65535.0f)), img.pixels[i][c], 65535);
+      checkCode(static_cast<int>(std::lround(tif.pixels[i][c] * 65535.0f)), img.pixels[i][c],
+                65535);
     }
 }
 

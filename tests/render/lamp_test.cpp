@@ -11,7 +11,8 @@
 using namespace lucent;
 using namespace lucent::test;
 
-TEST_CASE("a lamp's light shines from its world position, out of its shadowless bulb", "[render][lights]") {
+TEST_CASE("a lamp's light shines from its world position, out of its shadowless bulb",
+          "[render][lights]") {
   ParseResult r = parseSceneString(R"XML(<scene version="1"><camera/>
       <plane><material diffuse="1"/></plane>
       <defs>

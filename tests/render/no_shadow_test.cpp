@@ -56,7 +56,8 @@ std::vector<std::unique_ptr<Node>> nodes(std::unique_ptr<Node> a, std::unique_pt
 
 }  // namespace
 
-TEST_CASE("shadows=false: the floor under the node is lit, the node is still seen", "[render][no-shadow]") {
+TEST_CASE("shadows=false: the floor under the node is lit, the node is still seen",
+          "[render][no-shadow]") {
   Floor f;
   Node& box = f.add(f.blocker(0.0));
   CHECK(f.floorAt(0.0) == Color(0.0f));
@@ -67,11 +68,13 @@ TEST_CASE("shadows=false: the floor under the node is lit, the node is still see
   CHECK(traceOne(world, Ray(Vec3(0, 5, 0), Vec3(0, -1, 0))) == Color(0.25f));
 }
 
-TEST_CASE("shadows=false: a transparent node does not even filter the light", "[render][no-shadow]") {
+TEST_CASE("shadows=false: a transparent node does not even filter the light",
+          "[render][no-shadow]") {
   Floor f;
   Material glass;
   glass.transmissive = Color(0.5f);
-  Node& box = f.add(shapeNode(BoxSpec{Vec3(-0.5, 2, -0.5), Vec3(0.5, 3, 0.5)}, addMaterial(f.scene, glass)));
+  Node& box = f.add(
+      shapeNode(BoxSpec{Vec3(-0.5, 2, -0.5), Vec3(0.5, 3, 0.5)}, addMaterial(f.scene, glass)));
   CHECK(f.floorAt(0.0) == Color(0.25f));  // two crossings of k_t = 0.5
   box.shadows = false;
   CHECK(f.floorAt(0.0) == Color(1.0f));
@@ -110,7 +113,9 @@ TEST_CASE("shadows=false: a union's children keep their own, a difference casts 
   hole->shadows = false;
   f.csg(NodeKind::Difference, nodes(f.blocker(4.0), std::move(hole)));
   CHECK(f.floorAt(4.0) == Color(0.0f));
-  Node& whole = f.csg(NodeKind::Difference, nodes(f.blocker(6.0), shapeNode(BoxSpec{Vec3(5.9, 2.4, -0.1), Vec3(6.1, 2.6, 0.1)}, f.grey)));
+  Node& whole = f.csg(
+      NodeKind::Difference,
+      nodes(f.blocker(6.0), shapeNode(BoxSpec{Vec3(5.9, 2.4, -0.1), Vec3(6.1, 2.6, 0.1)}, f.grey)));
   whole.shadows = false;
   CHECK(f.floorAt(6.0) == Color(1.0f));
 }

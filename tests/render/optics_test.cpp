@@ -1,6 +1,6 @@
 // Snell, Fresnel, Beer–Lambert, lights: the formulas against closed forms.
-#include "render/light_sample.h"
 #include "render/optics.h"
+#include "render/light_sample.h"
 
 #include <catch2/catch.hpp>
 
@@ -26,8 +26,7 @@ TEST_CASE("refraction through a slab leaves parallel, displaced by t sin(i-r)/co
     const Vec3 exitPoint = inside * (thickness / -inside.z);
     // Perpendicular distance between the exit ray's line and the incident line.
     const Vec3 offset = exitPoint - glm::dot(exitPoint, d) * d;
-    CHECK(glm::length(offset) ==
-          Approx(thickness * std::sin(i - r) / std::cos(r)).epsilon(1e-12));
+    CHECK(glm::length(offset) == Approx(thickness * std::sin(i - r) / std::cos(r)).epsilon(1e-12));
   }
 }
 
@@ -51,7 +50,7 @@ TEST_CASE("Fresnel at normal incidence is ((n-1)/(n+1))^2 from either side", "[r
     CHECK(fresnelDielectric(1.0, 1.0, n) == Approx(expected).epsilon(1e-14));
     CHECK(fresnelDielectric(1.0, n, 1.0) == Approx(expected).epsilon(1e-14));
   }
-  CHECK(fresnelDielectric(0.7, 1.5, 1.5) == 0.0);  // no interface, no reflection
+  CHECK(fresnelDielectric(0.7, 1.5, 1.5) == 0.0);          // no interface, no reflection
   CHECK(fresnelDielectric(0.0, 1.0, 1.5) == Approx(1.0));  // grazing
   // Reciprocity: the reflectance is the same for the incident and the refracted angle
   // seen from the other side.
@@ -80,7 +79,8 @@ TEST_CASE("distance attenuation min(1, 1/(a + b r + c r^2)) is clamped at 1", "[
   CHECK(distanceAttenuation(Vec3(0, 0, 0.5), 4.0) == Approx(1.0 / 8.0));
 }
 
-TEST_CASE("spot light: full inside inner, zero beyond angle, smoothstep between", "[render][light]") {
+TEST_CASE("spot light: full inside inner, zero beyond angle, smoothstep between",
+          "[render][light]") {
   Light spot;
   spot.type = LightType::Spot;
   spot.angle = 30.0;
@@ -116,13 +116,14 @@ TEST_CASE("area light samples form a grid that includes the rectangle's edges", 
   Vec3 corner = lightSamplePoint(area, 0, Vec2(0.0, 0.0));
   CHECK(corner == Vec3(0, 5, -2));
   Vec3 moved = lightSamplePoint(area, 4, Vec2(0.9, 0.1));  // grid point (1, 1)
-  CHECK(moved.x == Approx(1.4));  // +0.4 of a step of 1
-  CHECK(moved.z == Approx(0.4));  // -0.4 of a step of 4
+  CHECK(moved.x == Approx(1.4));                           // +0.4 of a step of 1
+  CHECK(moved.z == Approx(0.4));                           // -0.4 of a step of 4
   moved = lightSamplePoint(area, 4, Vec2(0.9, 0.9));
   CHECK(moved.z == Approx(2.0));  // clamped to the edge
 }
 
-TEST_CASE("a spot-shaped area light's cone is seen from its centre, for every sample", "[render][light]") {
+TEST_CASE("a spot-shaped area light's cone is seen from its centre, for every sample",
+          "[render][light]") {
   Light area;
   area.type = LightType::Area;
   area.cone = true;

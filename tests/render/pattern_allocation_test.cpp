@@ -46,9 +46,11 @@ void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace lucent;
 
-TEST_CASE("pattern, colour-map, block, normal and sky evaluation allocate nothing", "[render][pattern]") {
+TEST_CASE("pattern, colour-map, block, normal and sky evaluation allocate nothing",
+          "[render][pattern]") {
   ColorMap map;
-  map.entries = {{0.0, Color(0.1f)}, {0.4, Color(1.0f, 0.2f, 0.1f)}, {1.0, Color(0.0f, 0.3f, 1.0f)}};
+  map.entries = {
+      {0.0, Color(0.1f)}, {0.4, Color(1.0f, 0.2f, 0.1f)}, {1.0, Color(0.0f, 0.3f, 1.0f)}};
   std::vector<PatternSpec> specs;
   for (int t = 0; t < kPatternTypeCount; ++t) {
     PatternSpec s;
@@ -81,7 +83,8 @@ TEST_CASE("pattern, colour-map, block, normal and sky evaluation allocate nothin
   double sum = 0.0;
   {
     Counting scope;
-    for (int i = 0; i < 200; ++i) sum += evaluateAll(Vec3(0.37 * i - 30.0, 0.11 * i, 5.0 - 0.23 * i));
+    for (int i = 0; i < 200; ++i)
+      sum += evaluateAll(Vec3(0.37 * i - 30.0, 0.11 * i, 5.0 - 0.23 * i));
     CHECK(allocations == 0);
   }
   CHECK(std::isfinite(sum + warm));

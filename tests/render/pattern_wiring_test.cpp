@@ -99,7 +99,8 @@ TEST_CASE("frequency, phase and wave shape the value before the colour map", "[r
   auto shaded = [](const std::string& attrs, double x) {
     auto scene = parse(R"XML(<render ambient="1"/>
       <plane normal="0 1 0" offset="0"><material ambient="1">
-        <pattern type="gradient" axis="1 0 0" )XML" + attrs + R"XML(/></material></plane>)XML");
+        <pattern type="gradient" axis="1 0 0" )XML" +
+                       attrs + R"XML(/></material></plane>)XML");
     World world(*scene);
     return traceOne(world, Ray(Vec3(x, 1, 0.2), Vec3(0, -1, 0))).r;
   };
@@ -118,7 +119,8 @@ TEST_CASE("frequency, phase and wave shape the value before the colour map", "[r
   }
 }
 
-TEST_CASE("a colour map is constant before its first entry and after its last", "[render][pattern]") {
+TEST_CASE("a colour map is constant before its first entry and after its last",
+          "[render][pattern]") {
   auto scene = parse(R"XML(<render ambient="1"/>
     <plane normal="0 1 0" offset="0"><material ambient="1">
       <pattern type="gradient" axis="1 0 0">
@@ -127,12 +129,12 @@ TEST_CASE("a colour map is constant before its first entry and after its last", 
       </pattern></material></plane>)XML");
   World world(*scene);
   auto at = [&](double x) { return traceOne(world, Ray(Vec3(x, 1, 0.2), Vec3(0, -1, 0))); };
-  CHECK(at(0.1).r == Approx(0.2).margin(1e-5));   // before the first entry
+  CHECK(at(0.1).r == Approx(0.2).margin(1e-5));    // before the first entry
   CHECK(at(0.375).r == Approx(0.6).margin(1e-5));  // halfway from 0.2 grey to red
   CHECK(at(0.375).g == Approx(0.1).margin(1e-5));
   CHECK(at(0.49).b == Approx(0.2 * 0.04).margin(1e-5));  // grey to red: 0.04 of grey's blue left
   CHECK(at(0.51).b == Approx(1 - 0.04).margin(1e-5));    // two entries at 0.5: a sharp edge to blue
-  CHECK(at(0.9).g == Approx(1.0).margin(1e-5));    // after the last
+  CHECK(at(0.9).g == Approx(1.0).margin(1e-5));          // after the last
   CHECK(at(0.9).b == Approx(0.0).margin(1e-5));
 }
 
@@ -140,7 +142,8 @@ TEST_CASE("a sky's transform turns the directions it is evaluated on, and it hid
           "[render][sky]") {
   // gradient y turned by rotate-z(90): a world direction d is seen in the sky's frame as
   // rotate-z(-90)·d, whose y is −d.x, so directions with −d.x = s in (0, 1) have value s.
-  auto scene = parse(R"XML(<render background="0 1 0"/><sky transform="rotate-z(90)"><pattern type="gradient">
+  auto scene = parse(
+      R"XML(<render background="0 1 0"/><sky transform="rotate-z(90)"><pattern type="gradient">
       <color-map><entry at="0" color="0 0 0"/><entry at="1" color="1 0 0"/></color-map>
     </pattern></sky>)XML");
   World world(*scene);

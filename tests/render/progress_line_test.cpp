@@ -12,7 +12,8 @@ TEST_CASE("progress line: one image", "[render][progress]") {
         "rendering [..............................]   0%  0.00 Mrays/s  ETA ?");
 }
 
-TEST_CASE("progress line: a frame of an animation, with the whole run's ETA", "[render][progress][animation]") {
+TEST_CASE("progress line: a frame of an animation, with the whole run's ETA",
+          "[render][progress][animation]") {
   // Frame 3 of 24, the 2nd of the 4 frames this run renders (--frames 2..5); the first
   // took 20 s, this one is half done after 10 s: 1.5 frames in 30 s, 2.5 frames left.
   SequencePosition p{2, 4, 3, 24, 20.0};

@@ -19,7 +19,8 @@ int differingPixels(const Image& whole, const Image& part, const PixelRect& rect
   int differ = 0;
   for (int y = rect.y0; y < rect.y1; ++y)
     for (int x = rect.x0; x < rect.x1; ++x)
-      differ += std::memcmp(&whole.at(x, y), &part.at(x - rect.x0, y - rect.y0), sizeof(Color)) != 0;
+      differ +=
+          std::memcmp(&whole.at(x, y), &part.at(x - rect.x0, y - rect.y0), sizeof(Color)) != 0;
   return differ;
 }
 

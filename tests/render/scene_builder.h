@@ -3,8 +3,8 @@
 
 #include "render/image.h"
 #include "render/tracer.h"
-#include "scenegraph/shape_registry.h"
 #include "scenegraph/scene.h"
+#include "scenegraph/shape_registry.h"
 #include "scenegraph/world.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -122,6 +122,5 @@ inline void buildBusyScene(Scene& scene) {
   scene.lights.push_back(areaLight(Vec3(3, 6, 4), Vec3(1.5, 0, 0), Vec3(0, 0, 1.5), 3, 3, true));
   scene.lights.push_back(pointLight(Vec3(-4, 5, 2), Color(0.4f)));
 }
-
 
 }  // namespace lucent::test

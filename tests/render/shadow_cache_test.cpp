@@ -1,7 +1,7 @@
 // The shadow cache (render/shadow_cache.h) and the shadow rays of one point computed
 // together (ShadowRays): faster answers, never different ones.
-#include "scenegraph/shape_registry.h"
 #include "scene_builder.h"
+#include "scenegraph/shape_registry.h"
 
 #include "render/renderer.h"
 #include "render/spawn.h"
@@ -108,7 +108,8 @@ TEST_CASE("every blocked shadow ray but the first hits the cache when one object
   camera.up = Vec3(0, 0, -1);
   scene.cameras.push_back(camera);
   addShape(scene, PlaneSpec{Vec3(0, 1, 0), 0.0}, addMaterial(scene, diffuse(1.0f)));
-  addShape(scene, DiscSpec{Vec3(0, 3, 0), Vec3(0, 1, 0), 1.5, 0.0}, addMaterial(scene, diffuse(1.0f)));
+  addShape(scene, DiscSpec{Vec3(0, 3, 0), Vec3(0, 1, 0), 1.5, 0.0},
+           addMaterial(scene, diffuse(1.0f)));
   scene.lights.push_back(pointLight(Vec3(3, 10, 0)));
   World world(scene);
   const RenderResult r = Renderer(world, scene.cameras[0]).render();
@@ -183,10 +184,8 @@ TEST_CASE("shadow rays through glass: asking the opaque objects first changes no
   for (int i = 0; i < 60; ++i) {
     const Vec3 c(u(rng), h(rng), u(rng));
     const uint32_t m = i % 3 == 0 ? opaque : (i % 3 == 1 ? g : t);
-    if (i % 4 == 3)
-      addShape(scene, BoxSpec{c - Vec3(0.3), c + Vec3(0.3)}, m);
-    else
-      addShape(scene, SphereSpec{c, r(rng)}, m);
+    if (i % 4 == 3) addShape(scene, BoxSpec{c - Vec3(0.3), c + Vec3(0.3)}, m);
+    else addShape(scene, SphereSpec{c, r(rng)}, m);
   }
   auto lens = std::make_unique<Node>();
   lens->kind = NodeKind::Intersection;

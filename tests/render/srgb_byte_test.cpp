@@ -28,7 +28,8 @@ uint32_t bitsOf(float f) {
 
 }  // namespace
 
-TEST_CASE("srgbByte equals the formula around every step and between them", "[render][image][srgb]") {
+TEST_CASE("srgbByte equals the formula around every step and between them",
+          "[render][image][srgb]") {
   // Walk up from 0 float by float near each step: find the step by the formula, then
   // compare a window of floats on both sides.
   int steps = 0;

@@ -1,8 +1,8 @@
 // --stats' intersection-test counts: one test per object a ray is tested
 // against, by kind, and the triangles tested inside meshes; the same counts whatever the
 // thread count.
-#include "scenegraph/shape_registry.h"
 #include "scene_builder.h"
+#include "scenegraph/shape_registry.h"
 
 #include "../primitives/test_meshes.h"
 #include "render/renderer.h"

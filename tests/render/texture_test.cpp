@@ -22,7 +22,8 @@ Color cell(const Vec3& p, double scale = 1.0) {
 }
 }  // namespace
 
-TEST_CASE("checker: the cube from 0 to scale is color1 and neighbours alternate", "[render][texture]") {
+TEST_CASE("checker: the cube from 0 to scale is color1 and neighbours alternate",
+          "[render][texture]") {
   CHECK(cell(Vec3(0.5, 0.5, 0.5)) == kOne);
   CHECK(cell(Vec3(1.5, 0.5, 0.5)) == kTwo);
   CHECK(cell(Vec3(1.5, 1.5, 0.5)) == kOne);
@@ -40,7 +41,7 @@ TEST_CASE("checker: a point on a cell boundary shows the cell on the positive si
   // A hair below through rounding: 0.3 / 0.1 is 2.9999999999999996 in doubles, so the
   // plane y = 0.3 under a checker of scale 0.1 lies on the boundary of cells 2 and 3.
   REQUIRE(0.3 / 0.1 < 3.0);
-  CHECK(cell(Vec3(0.05, 0.3, 0.05), 0.1) == kTwo);  // cell (0, 3, 0): odd
+  CHECK(cell(Vec3(0.05, 0.3, 0.05), 0.1) == kTwo);         // cell (0, 3, 0): odd
   CHECK(cell(Vec3(0.05, 0.3 - 1e-6, 0.05), 0.1) == kOne);  // really below: cell (0, 2, 0)
   // A point within its own rounding error of a boundary counts as on it.
   CHECK(checkerColor(CheckerTexture{kOne, kTwo, 1.0}, Vec3(0.5, -1e-7, 0.5), Vec3(0, 1e-7, 0)) ==
@@ -55,7 +56,9 @@ TEST_CASE("checker: far from the origin a point near a boundary keeps its own ce
   // boundary 100000.4 of cells of 0.4 (cell 250000 ends there), with a rounding bound of
   // 1e-11. The tolerance is rounding, not a share of the coordinate.
   const Vec3 err(1e-11);
-  auto at = [&](double x) { return checkerColor(CheckerTexture{kOne, kTwo, 0.4}, Vec3(x, 0.0, 0.2), err); };
+  auto at = [&](double x) {
+    return checkerColor(CheckerTexture{kOne, kTwo, 0.4}, Vec3(x, 0.0, 0.2), err);
+  };
   CHECK(at(100000.3999788) == at(100000.2));
   CHECK(at(100000.4000212) == at(100000.6));
   CHECK(at(100000.2) != at(100000.6));
@@ -115,7 +118,8 @@ TEST_CASE("a box top on a cell boundary shows the cell above it in every pixel",
 TEST_CASE("image texture: bilinear lookup at (u,v), v = 1 at the top row, repeating",
           "[render][texture]") {
   auto path = (std::filesystem::temp_directory_path() /
-               ("lucent-tex-" + std::to_string(::getpid()) + ".exr")).string();
+               ("lucent-tex-" + std::to_string(::getpid()) + ".exr"))
+                  .string();
   Image img(2, 2);
   img.at(0, 0) = Color(1, 0, 0);  // top left
   img.at(1, 0) = Color(0, 1, 0);  // top right
@@ -151,7 +155,8 @@ TEST_CASE("8-bit sRGB image textures are decoded to linear", "[render][texture]"
       0x9c, 0x63, 0xd8, 0x53, 0xc3, 0x0c, 0x00, 0x03, 0x33, 0x01, 0x3c, 0x7d, 0x8a, 0x26,
       0x6d, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
   auto path = (std::filesystem::temp_directory_path() /
-               ("lucent-tex-" + std::to_string(::getpid()) + ".png")).string();
+               ("lucent-tex-" + std::to_string(::getpid()) + ".png"))
+                  .string();
   std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(kPng), sizeof kPng);
   ImageMap map(path);
   Color c = map.lookup(Vec2(0.5), Vec2(1.0));
@@ -166,7 +171,8 @@ TEST_CASE("8-bit PPM image textures are decoded to linear like sRGB PNGs", "[ren
   // above (IEC 61966-2-1, worked out by hand), not be taken as linear values.
   const std::string ppm = std::string("P6\n1 1\n255\n") + char(188) + char(124) + char(3);
   auto path = (std::filesystem::temp_directory_path() /
-               ("lucent-tex-" + std::to_string(::getpid()) + ".ppm")).string();
+               ("lucent-tex-" + std::to_string(::getpid()) + ".ppm"))
+                  .string();
   std::ofstream(path, std::ios::binary) << ppm;
   ImageMap map(path);
   Color c = map.lookup(Vec2(0.5), Vec2(1.0));

@@ -60,12 +60,15 @@ void requireSame(const std::string& a, const std::string& b, double tol) {
   CHECK(hits > 50);
 }
 
-const char* kIsoBall = R"(<isosurface function="sqrt((x - 0.6)^2 + (y - 0.3)^2 + z*z) - 0.9" container="sphere" center="0.6 0.3 0" radius="1")";
+const char* kIsoBall =
+    R"(<isosurface function="sqrt((x - 0.6)^2 + (y - 0.3)^2 + z*z) - 0.9" container="sphere" center="0.6 0.3 0" radius="1")";
 
 }  // namespace
 
-TEST_CASE("isosurface scene: the function uses its parameters as they were when read", "[scenegraph][isosurface]") {
-  auto s = parse(R"(<isosurface function="sqrt(x*x + y*y + z*z) - r" max-gradient="1.5" accuracy="0.0001"/>)");
+TEST_CASE("isosurface scene: the function uses its parameters as they were when read",
+          "[scenegraph][isosurface]") {
+  auto s = parse(
+      R"(<isosurface function="sqrt(x*x + y*y + z*z) - r" max-gradient="1.5" accuracy="0.0001"/>)");
   const IsosurfaceSpec& iso = firstIso(*s);
   CHECK(iso.function == "sqrt(x*x + y*y + z*z) - r");
   REQUIRE(iso.constants.size() == 1);
@@ -80,7 +83,8 @@ TEST_CASE("isosurface scene: the function uses its parameters as they were when 
   CHECK(h.t == Approx(4.4).epsilon(1e-12));
 }
 
-TEST_CASE("isosurface scene: the compiled function is evaluated from many threads at once", "[scenegraph][isosurface]") {
+TEST_CASE("isosurface scene: the compiled function is evaluated from many threads at once",
+          "[scenegraph][isosurface]") {
   auto s = parse(R"(<isosurface function="sin(3*x) * cos(2*y) + z*z*z - r"/>)");
   std::shared_ptr<const ScalarField> f = firstIso(*s).field;
   std::vector<int> wrong(4, 0);
@@ -97,21 +101,26 @@ TEST_CASE("isosurface scene: the compiled function is evaluated from many thread
   CHECK(wrong == std::vector<int>(4, 0));
 }
 
-TEST_CASE("isosurface scene: in a difference it carves as the exact sphere does, and inverse agrees", "[scenegraph][isosurface]") {
+TEST_CASE(
+    "isosurface scene: in a difference it carves as the exact sphere does, and inverse agrees",
+    "[scenegraph][isosurface]") {
   const std::string box = R"(<box min="-1 -1 -1" max="1 1 1"/>)";
   const std::string iso = std::string(kIsoBall) + "/>";
   const std::string isoInverse = std::string(kIsoBall) + R"( inverse="true"/>)";
   // The function's roots are exact to rounding for this smooth function.
   requireSame("<difference>" + box + iso + "</difference>",
-              "<difference>" + box + R"(<sphere center="0.6 0.3 0" radius="0.9"/></difference>)", 1e-9);
-  requireSame("<difference>" + box + iso + "</difference>", "<intersection>" + box + isoInverse + "</intersection>",
-              1e-12);
+              "<difference>" + box + R"(<sphere center="0.6 0.3 0" radius="0.9"/></difference>)",
+              1e-9);
+  requireSame("<difference>" + box + iso + "</difference>",
+              "<intersection>" + box + isoInverse + "</intersection>", 1e-12);
 }
 
-TEST_CASE("isosurface scene: a function steeper than max-gradient is reported after rendering", "[scenegraph][isosurface]") {
+TEST_CASE("isosurface scene: a function steeper than max-gradient is reported after rendering",
+          "[scenegraph][isosurface]") {
   for (const char* declared : {"1", "20"}) {
-    auto s = parse(std::string(R"x(<isosurface function="10*(sqrt(x*x + y*y + z*z) - 0.5)" max-gradient=")x") + declared +
-                   R"("/>)");
+    auto s = parse(
+        std::string(R"x(<isosurface function="10*(sqrt(x*x + y*y + z*z) - 0.5)" max-gradient=")x") +
+        declared + R"("/>)");
     CHECK(gradientWarnings(*s).empty());  // nothing traced yet
     World w(*s);
     for (const Ray& ray : fan()) {
@@ -123,7 +132,8 @@ TEST_CASE("isosurface scene: a function steeper than max-gradient is reported af
     if (std::string(declared) == "1") {
       REQUIRE(warnings.size() == 1);
       CHECK(warnings[0].find("iso.xml:1:") == 0);
-      CHECK(warnings[0].find("warning: <isosurface> max-gradient is 1 but the function's gradient reached") !=
+      CHECK(warnings[0].find(
+                "warning: <isosurface> max-gradient is 1 but the function's gradient reached") !=
             std::string::npos);
       const double reached = firstIso(*s).record->largest();
       CHECK(reached > 1.0);  // slopes between pairs of values, up to the true 10
@@ -134,7 +144,8 @@ TEST_CASE("isosurface scene: a function steeper than max-gradient is reported af
   }
 }
 
-TEST_CASE("isosurface scene: the function is written in POV-Ray's function syntax", "[scenegraph][isosurface]") {
+TEST_CASE("isosurface scene: the function is written in POV-Ray's function syntax",
+          "[scenegraph][isosurface]") {
   auto number = [](double v) { return fmt::format("{}", v); };
   std::string problem;
   auto pov = [&](const std::string& t, std::vector<std::pair<std::string, double>> c = {}) {
@@ -147,7 +158,8 @@ TEST_CASE("isosurface scene: the function is written in POV-Ray's function synta
   CHECK(pov("x % 2") == "(x - 2 * floor(x / 2))");
   CHECK(pov("min(x, y, z) + log10(x) + trunc(y)") == "((min(x, min(y, z)) + log(x)) + int(y))");
   CHECK(pov("clamp(x, 0, 1) * mix(y, z, 0.5)") == "(min(max(x, 0), 1) * (y + (z - y) * 0.5))");
-  CHECK(pov("sign(x) + round(y)") == "(select(x, -1, 0, 1) + select(y, -floor(0.5 - y), floor(y + 0.5)))");
+  CHECK(pov("sign(x) + round(y)") ==
+        "(select(x, -1, 0, 1) + select(y, -floor(0.5 - y), floor(y + 0.5)))");
   CHECK(pov("1.5e-3 * x <= 2") == "((0.0015 * x) <= 2)");
   CHECK_FALSE(povFunctionText("random(1, x)", {}, number, problem));
   CHECK(problem.find("random() has no POV-Ray") != std::string::npos);

@@ -17,9 +17,7 @@ namespace {
 // Records what a writer writes.
 class RecordingOut final : public PovShapeOut {
  public:
-  void open(std::string_view keyword) override {
-    keywords.emplace_back(keyword);
-  }
+  void open(std::string_view keyword) override { keywords.emplace_back(keyword); }
   void line(std::string_view text) override { lines.emplace_back(text); }
   std::string number(double v) const override { return std::to_string(v); }
   std::string vector(const Vec3& v) const override {
@@ -39,7 +37,8 @@ const AttributeInfo* attribute(const ShapeType& t, const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("shape registry: one row per ShapeSpec alternative, each named once", "[scenegraph][registry]") {
+TEST_CASE("shape registry: one row per ShapeSpec alternative, each named once",
+          "[scenegraph][registry]") {
   const auto& types = shapeTypes();
   REQUIRE(types.size() == std::variant_size_v<ShapeSpec>);
   std::set<std::string> names;
@@ -56,7 +55,8 @@ TEST_CASE("shape registry: one row per ShapeSpec alternative, each named once", 
   CHECK(testSlotName(kMeshTriangleSlot) == "mesh triangles");
 }
 
-TEST_CASE("shape registry: samples build their element's primitive with its solidity", "[scenegraph][registry]") {
+TEST_CASE("shape registry: samples build their element's primitive with its solidity",
+          "[scenegraph][registry]") {
   for (const ShapeType& t : shapeTypes()) {
     for (const auto& [name, spec] : t.samples()) {
       INFO(t.element << ": " << name);
@@ -70,7 +70,8 @@ TEST_CASE("shape registry: samples build their element's primitive with its soli
   }
 }
 
-TEST_CASE("shape registry: every row writes a POV-Ray object for every sample", "[scenegraph][registry][povray]") {
+TEST_CASE("shape registry: every row writes a POV-Ray object for every sample",
+          "[scenegraph][registry][povray]") {
   for (const ShapeType& t : shapeTypes()) {
     REQUIRE(t.writePov);
     for (const auto& [name, spec] : t.samples()) {
@@ -83,7 +84,8 @@ TEST_CASE("shape registry: every row writes a POV-Ray object for every sample", 
   }
 }
 
-TEST_CASE("shape registry: declared attributes and defaults are the parameters'", "[scenegraph][registry]") {
+TEST_CASE("shape registry: declared attributes and defaults are the parameters'",
+          "[scenegraph][registry]") {
   const ShapeType& sphere = *findShapeType("sphere");
   CHECK(sphere.attributeNames() == std::vector<std::string_view>{"center", "radius"});
   CHECK(attribute(sphere, "center")->defaultText == "0 0 0");
@@ -101,6 +103,7 @@ TEST_CASE("shape registry: declared attributes and defaults are the parameters'"
   CHECK(attribute(triangle, "a")->defaultText.empty());
   CHECK_FALSE(attribute(triangle, "na")->required);
   const ShapeType& mesh = *findShapeType("mesh");
-  CHECK(attribute(mesh, "smooth")->choices == std::vector<std::string_view>{"auto", "true", "false"});
+  CHECK(attribute(mesh, "smooth")->choices ==
+        std::vector<std::string_view>{"auto", "true", "false"});
   CHECK(attribute(mesh, "smooth")->defaultText == "auto");
 }

@@ -26,8 +26,6 @@ struct CountingMaker {
   }
 };
 
-
-
 void requireSameAsBruteForce(const World& world, const std::vector<Ray>& rays) {
   size_t hits = 0;
   for (const Ray& ray : rays) {

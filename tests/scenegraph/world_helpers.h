@@ -2,8 +2,8 @@
 // by asking every top-level object in turn (no BVH).
 #pragma once
 
-#include "scenegraph/world.h"
 #include "scenegraph/shape_registry.h"
+#include "scenegraph/world.h"
 
 #include <memory>
 

@@ -36,19 +36,27 @@ Scene mixedScene(std::mt19937_64& rng, bool withSpheres) {
   for (int i = 0; i < 240; ++i) {
     switch (i % 6) {
       case 0:
-        if (withSpheres) scene.root->children.push_back(shapeNode(SphereSpec{randomVec(rng, -9, 9), uniform(rng, 0.1, 0.8)}));
+        if (withSpheres)
+          scene.root->children.push_back(
+              shapeNode(SphereSpec{randomVec(rng, -9, 9), uniform(rng, 0.1, 0.8)}));
         break;
       case 1:
-        if (withSpheres) scene.root->children.push_back(shapeNode(SphereSpec{Vec3(0.2, 0, 0), 0.5}, randomPlacement(rng, true)));
+        if (withSpheres)
+          scene.root->children.push_back(
+              shapeNode(SphereSpec{Vec3(0.2, 0, 0), 0.5}, randomPlacement(rng, true)));
         break;
       case 2:
-        if (withSpheres) scene.root->children.push_back(shapeNode(SphereSpec{Vec3(0.0), 0.5}, randomPlacement(rng, false)));
+        if (withSpheres)
+          scene.root->children.push_back(
+              shapeNode(SphereSpec{Vec3(0.0), 0.5}, randomPlacement(rng, false)));
         break;
       case 3:
-        scene.root->children.push_back(shapeNode(BoxSpec{Vec3(-0.4), Vec3(0.5, 0.3, 0.6)}, randomPlacement(rng, false)));
+        scene.root->children.push_back(
+            shapeNode(BoxSpec{Vec3(-0.4), Vec3(0.5, 0.3, 0.6)}, randomPlacement(rng, false)));
         break;
       case 4:
-        scene.root->children.push_back(shapeNode(CylinderSpec{Vec3(0.0), Vec3(0, 1, 0), 0.3, false}, randomPlacement(rng, false)));
+        scene.root->children.push_back(shapeNode(CylinderSpec{Vec3(0.0), Vec3(0, 1, 0), 0.3, false},
+                                                 randomPlacement(rng, false)));
         break;
       case 5: {
         auto csg = std::make_unique<Node>();
@@ -56,7 +64,8 @@ Scene mixedScene(std::mt19937_64& rng, bool withSpheres) {
         csg->element = "difference";
         csg->parentFromNode = randomPlacement(rng, false);
         csg->children.push_back(shapeNode(BoxSpec{Vec3(-0.5), Vec3(0.5)}));
-        csg->children.push_back(shapeNode(CylinderSpec{Vec3(0, -1, 0), Vec3(0, 1, 0), 0.35, false}));
+        csg->children.push_back(
+            shapeNode(CylinderSpec{Vec3(0, -1, 0), Vec3(0, 1, 0), 0.35, false}));
         scene.root->children.push_back(std::move(csg));
         break;
       }
@@ -65,7 +74,7 @@ Scene mixedScene(std::mt19937_64& rng, bool withSpheres) {
   scene.root->children.push_back(shapeNode(PlaneSpec{Vec3(0, 1, 0), -10.0}));
   scene.root->children.push_back(
       shapeNode(PlaneSpec{Vec3(0, 1, 0), 0.0},
-           glm::rotate(glm::translate(Mat4(1.0), Vec3(0, 0, 9.5)), 1.4, Vec3(1, 0, 0))));
+                glm::rotate(glm::translate(Mat4(1.0), Vec3(0, 0, 9.5)), 1.4, Vec3(1, 0, 0))));
   return scene;
 }
 
@@ -82,7 +91,8 @@ World::ObjectId idCount(const World& world) {
 
 }  // namespace
 
-TEST_CASE("occluder answers as occluded whichever object it tests first", "[bvh][world][occluder]") {
+TEST_CASE("occluder answers as occluded whichever object it tests first",
+          "[bvh][world][occluder]") {
   std::mt19937_64 rng(41);
   Scene scene = mixedScene(rng, true);
   World world(scene);
@@ -188,8 +198,7 @@ TEST_CASE("opaqueOccluder blocks exactly when an opaque object's own test does",
       bool isGlass = false;
       if (const auto* csg = dynamic_cast<const CsgNode*>(&o))
         isGlass = mayTransmit(*csg->children().front(), scene.materials);
-      else
-        isGlass = mayTransmit(o, scene.materials);
+      else isGlass = mayTransmit(o, scene.materials);
       (isGlass ? glass : opaque) = (isGlass ? glass : opaque) || o.occluded(ray);
     }
     const World::ObjectId found = world.opaqueOccluder(ray, anyId(rng));

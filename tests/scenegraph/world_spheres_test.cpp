@@ -80,7 +80,6 @@ Scene sphereField(std::mt19937_64& rng, int count, const Vec3& at, double extent
   return scene;
 }
 
-
 // The cosine between the ray and the normal of `shape` where the ray meets it at t.
 double cosineAt(const Shape& shape, const Ray& ray, double t) {
   Hit h;
@@ -127,7 +126,8 @@ Comparison compare(const World& world, const std::vector<Ray>& rays, double magn
     bool excused = false;
     if (found && want.found()) {
       excused = std::abs(got.t - want.t) * len <= 1e-14 * magnitude / 1e-4 ||
-                cosineAt(*want.shape, ray, want.t) < 1e-4 || cosineAt(*got.shape, ray, got.t) < 1e-4;
+                cosineAt(*want.shape, ray, want.t) < 1e-4 ||
+                cosineAt(*got.shape, ray, got.t) < 1e-4;
     } else {
       const Hit& h = found ? got : want;
       excused = cosineAt(*h.shape, ray, h.t) < 1e-4;
@@ -148,8 +148,9 @@ Comparison compare(const World& world, const std::vector<Ray>& rays, double magn
 
 }  // namespace
 
-TEST_CASE("spheres under similarity transforms, kept in world space, give the brute-force closest hit",
-          "[bvh][world][sphere]") {
+TEST_CASE(
+    "spheres under similarity transforms, kept in world space, give the brute-force closest hit",
+    "[bvh][world][sphere]") {
   struct Setting {
     Vec3 at;
     double extent;
@@ -157,8 +158,9 @@ TEST_CASE("spheres under similarity transforms, kept in world space, give the br
   const Setting settings[] = {{Vec3(0.0), 10.0}, {Vec3(1e5, -3e4, 2e4), 10.0}, {Vec3(0.0), 1e-3}};
   for (const Setting& st : settings) {
     std::mt19937_64 rng(71);
-    Scene scene = sphereField(rng, 1500, st.at, st.extent,
-                              [](int i) { return i % 2 ? Placing::Similarity : Placing::Identity; });
+    Scene scene = sphereField(rng, 1500, st.at, st.extent, [](int i) {
+      return i % 2 ? Placing::Similarity : Placing::Identity;
+    });
     World world(scene);
     REQUIRE(world.inlineSphereCount() == 1500);
     std::vector<Ray> rays = randomRays(rng, 100000, st.extent);
@@ -178,8 +180,8 @@ TEST_CASE("spheres under similarity transforms, kept in world space, give the br
 TEST_CASE("spheres placed by their centre give exactly the hits of their Instances",
           "[bvh][world][sphere]") {
   std::mt19937_64 rng(72);
-  Scene scene = sphereField(rng, 2000, Vec3(-40.0, 3.0, 7.0), 10.0,
-                            [](int) { return Placing::Identity; });
+  Scene scene =
+      sphereField(rng, 2000, Vec3(-40.0, 3.0, 7.0), 10.0, [](int) { return Placing::Identity; });
   World world(scene);
   REQUIRE(world.inlineSphereCount() == 2000);
   size_t hits = 0;
@@ -210,7 +212,8 @@ TEST_CASE("spheres under non-uniform scales stay Instances, beside spheres kept 
           "[bvh][world][sphere]") {
   std::mt19937_64 rng(73);
   Scene scene = sphereField(rng, 1200, Vec3(0.0), 10.0, [](int i) {
-    return i % 3 == 0 ? Placing::NonUniform : (i % 3 == 1 ? Placing::Similarity : Placing::Identity);
+    return i % 3 == 0 ? Placing::NonUniform
+                      : (i % 3 == 1 ? Placing::Similarity : Placing::Identity);
   });
   World world(scene);
   CHECK(world.inlineSphereCount() == 800);
@@ -254,8 +257,9 @@ Leaving leaveSpheres(const World& world, std::mt19937_64& rng, int count) {
   for (int tries = 0; out.primaries < count && tries < 20 * count; ++tries) {
     const Instance* target = world.instances()[size_t(tries) % world.instances().size()];
     AABB box = target->bounds();
-    Vec3 aim = box.center() + 0.5 * box.extent() * Vec3(uniform(rng, -1, 1), uniform(rng, -1, 1),
-                                                        uniform(rng, -1, 1));
+    Vec3 aim =
+        box.center() +
+        0.5 * box.extent() * Vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
     Vec3 o = aim + 3.0 * glm::length(box.extent()) * randomUnitVec(rng);
     Ray primary(o, (aim - o) * uniform(rng, 0.25, 4.0));
     Hit h;

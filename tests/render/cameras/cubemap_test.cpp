@@ -31,18 +31,12 @@ struct FaceSpec {
 // The documented layout (docs/cameras.md), in terms of the camera frame f.
 std::vector<FaceSpec> documented(CubemapLayout layout, const CameraFrame& f) {
   if (layout == CubemapLayout::Cross)
-    return {{"up", 1, 0, f.up, f.right, -f.forward},
-            {"left", 0, 1, -f.right, f.forward, f.up},
-            {"front", 1, 1, f.forward, f.right, f.up},
-            {"right", 2, 1, f.right, -f.forward, f.up},
-            {"back", 3, 1, -f.forward, -f.right, f.up},
-            {"down", 1, 2, -f.up, f.right, f.forward}};
-  return {{"right", 0, 0, f.right, -f.forward, f.up},
-          {"left", 1, 0, -f.right, f.forward, f.up},
-          {"up", 2, 0, f.up, f.right, -f.forward},
-          {"down", 3, 0, -f.up, f.right, f.forward},
-          {"back", 4, 0, -f.forward, -f.right, f.up},
-          {"front", 5, 0, f.forward, f.right, f.up}};
+    return {{"up", 1, 0, f.up, f.right, -f.forward},    {"left", 0, 1, -f.right, f.forward, f.up},
+            {"front", 1, 1, f.forward, f.right, f.up},  {"right", 2, 1, f.right, -f.forward, f.up},
+            {"back", 3, 1, -f.forward, -f.right, f.up}, {"down", 1, 2, -f.up, f.right, f.forward}};
+  return {{"right", 0, 0, f.right, -f.forward, f.up}, {"left", 1, 0, -f.right, f.forward, f.up},
+          {"up", 2, 0, f.up, f.right, -f.forward},    {"down", 3, 0, -f.up, f.right, f.forward},
+          {"back", 4, 0, -f.forward, -f.right, f.up}, {"front", 5, 0, f.forward, f.right, f.up}};
 }
 
 }  // namespace
@@ -92,7 +86,8 @@ TEST_CASE("cube cross: neighbouring cells share their edge, empty cells have no 
     }
     double x = s + t * s;
     CHECK(angleBetween(rayAt(*p, Vec2(x, s - 1e-9)).d, rayAt(*p, Vec2(x, s + 1e-9)).d) < 1e-9);
-    CHECK(angleBetween(rayAt(*p, Vec2(x, 2 * s - 1e-9)).d, rayAt(*p, Vec2(x, 2 * s + 1e-9)).d) < 1e-9);
+    CHECK(angleBetween(rayAt(*p, Vec2(x, 2 * s - 1e-9)).d, rayAt(*p, Vec2(x, 2 * s + 1e-9)).d) <
+          1e-9);
   }
   // The back face's right edge wraps around to the left face's left edge.
   CHECK(angleBetween(rayAt(*p, Vec2(4 * s, 1.5 * s)).d, rayAt(*p, Vec2(0, 1.5 * s)).d) < 1e-14);
@@ -195,7 +190,11 @@ TEST_CASE("cube-map cells that are whole but not square still hold 90-degree fac
   // are accepted; each face still spans 90 degrees both ways, with stretched pixels.
   Camera cam = tiltedCamera(CameraType::Cubemap);
   const CameraFrame f = makeCameraFrame(cam);
-  struct Case { CubemapLayout layout; int w, h; Vec2 front0, front1; };
+  struct Case {
+    CubemapLayout layout;
+    int w, h;
+    Vec2 front0, front1;
+  };
   for (const Case& c : {Case{CubemapLayout::Cross, 512, 192, Vec2(128, 64), Vec2(256, 128)},
                         Case{CubemapLayout::Strip, 48, 5, Vec2(40, 0), Vec2(48, 5)}}) {
     cam.layout = c.layout;
@@ -206,7 +205,8 @@ TEST_CASE("cube-map cells that are whole but not square still hold 90-degree fac
     CHECK(angleBetween(rayAt(*p, mid).d, f.forward) < 1e-12);
     CHECK(angleBetween(rayAt(*p, Vec2(c.front0.x, mid.y)).d, f.forward - f.right) < 1e-12);
     CHECK(angleBetween(rayAt(*p, Vec2(c.front1.x, mid.y)).d, f.forward + f.right) < 1e-12);
-    CHECK(angleBetween(rayAt(*p, Vec2(mid.x, c.front0.y)).d, f.forward) == Approx(q).epsilon(1e-12));
+    CHECK(angleBetween(rayAt(*p, Vec2(mid.x, c.front0.y)).d, f.forward) ==
+          Approx(q).epsilon(1e-12));
     CHECK(angleBetween(rayAt(*p, Vec2(mid.x, c.front0.y)).d, f.forward + f.up) < 1e-12);
     CHECK(angleBetween(rayAt(*p, Vec2(mid.x, c.front1.y)).d, f.forward - f.up) < 1e-12);
   }

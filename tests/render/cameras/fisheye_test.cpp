@@ -35,7 +35,8 @@ TEST_CASE("equidistant fisheye: angle from the axis proportional to the image ra
       cam.fovAxis = axis;
       auto p = makeProjection(cam, w, h);
       const double R = axis == FovAxis::Horizontal ? w / 2.0
-                       : axis == FovAxis::Vertical ? h / 2.0 : std::hypot(w, h) / 2.0;
+                       : axis == FovAxis::Vertical ? h / 2.0
+                                                   : std::hypot(w, h) / 2.0;
       CHECK(as<FisheyeProjection>(p).circleRadius() == R);
       int inside = 0;
       for (int n = 0; n < 2000; ++n) {
@@ -51,7 +52,8 @@ TEST_CASE("equidistant fisheye: angle from the axis proportional to the image ra
         double px = film.x - w / 2.0, py = h / 2.0 - film.y;
         double azimuth = std::atan2(glm::dot(ray.d, f.up), glm::dot(ray.d, f.right));
         if (r > 1e-6 && r * fov < 359.0)
-          CHECK(std::remainder(azimuth - std::atan2(py, px), 2.0 * kPi) == Approx(0.0).margin(1e-9));
+          CHECK(std::remainder(azimuth - std::atan2(py, px), 2.0 * kPi) ==
+                Approx(0.0).margin(1e-9));
       }
       // Some samples fall inside the circle, and (but for the diagonal circle) some outside.
       CHECK(inside > 100);
@@ -100,7 +102,8 @@ TEST_CASE("square 360-degree fisheye: the inscribed disc, its rim looking straig
       CHECK(angleBetween(rayAt(*p, rim).d, -f.forward) < 1e-7);
     // Half way out looks sideways: 90 degrees (equidistant) or 2 asin(1/2) = 60 (equisolid).
     double halfWay = angleBetween(rayAt(*p, Vec2(30, 20)).d, f.forward);
-    CHECK(halfWay == Approx(m == FisheyeMapping::Equidistant ? kPi / 2.0 : kPi / 3.0).epsilon(1e-12));
+    CHECK(halfWay ==
+          Approx(m == FisheyeMapping::Equidistant ? kPi / 2.0 : kPi / 3.0).epsilon(1e-12));
     // Corners are outside the inscribed disc.
     for (const Vec2& corner : {Vec2(0, 0), Vec2(40, 0), Vec2(0, 40), Vec2(40, 40), Vec2(3, 3)})
       CHECK_FALSE(hasRay(*p, corner));
@@ -121,7 +124,8 @@ TEST_CASE("fisheye pixels outside the image circle render as the background",
   scene.render.samples = 4;
   scene.render.background = Color(1.0f, 0.0f, 0.0f);
   // The camera sits inside a green emissive sphere: every ray that exists sees green.
-  addShape(scene, SphereSpec{Vec3(0.0), 10.0}, addMaterial(scene, emissive(Color(0.0f, 1.0f, 0.0f))));
+  addShape(scene, SphereSpec{Vec3(0.0), 10.0},
+           addMaterial(scene, emissive(Color(0.0f, 1.0f, 0.0f))));
   Camera cam;
   cam.type = CameraType::Fisheye;
   cam.fov = 360.0;
@@ -129,8 +133,8 @@ TEST_CASE("fisheye pixels outside the image circle render as the background",
   World world(scene);
   Renderer renderer(world, scene.cameras[0]);
   Image image = renderer.render().image;
-  CHECK(image.at(0, 0) == Color(1.0f, 0.0f, 0.0f));    // corner: outside the circle
+  CHECK(image.at(0, 0) == Color(1.0f, 0.0f, 0.0f));  // corner: outside the circle
   CHECK(image.at(15, 15) == Color(1.0f, 0.0f, 0.0f));
-  CHECK(image.at(8, 8) == Color(0.0f, 1.0f, 0.0f));    // inside
-  CHECK(image.at(8, 0) == Color(0.0f, 1.0f, 0.0f));    // the top edge's middle touches the rim
+  CHECK(image.at(8, 8) == Color(0.0f, 1.0f, 0.0f));  // inside
+  CHECK(image.at(8, 0) == Color(0.0f, 1.0f, 0.0f));  // the top edge's middle touches the rim
 }

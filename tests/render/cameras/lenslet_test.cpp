@@ -28,7 +28,8 @@ TEST_CASE("lenslet cells are pinhole images from lens centres pitch apart", "[ca
       Vec3 centre = f.origin + (i - 1.5) * 0.25 * f.right + (1.0 - j) * 0.25 * f.up;
       CHECK(glm::length(lenslet.lensCentre(i, j) - centre) < 1e-14);
       mean += lenslet.lensCentre(i, j) / 12.0;
-      for (const Vec2& at : {Vec2(0.5 * cw, 0.5 * ch), Vec2(0.0), Vec2(cw - 0.25, 3.0), Vec2(7.0, ch - 0.5)}) {
+      for (const Vec2& at :
+           {Vec2(0.5 * cw, 0.5 * ch), Vec2(0.0), Vec2(cw - 0.25, 3.0), Vec2(7.0, ch - 0.5)}) {
         Ray r = rayAt(*p, Vec2(i * cw, j * ch) + at);
         CHECK(glm::length(r.o - centre) < 1e-14);
         CHECK(angleBetween(r.d, rayAt(*sub, at).d) < 1e-14);
@@ -40,7 +41,8 @@ TEST_CASE("lenslet cells are pinhole images from lens centres pitch apart", "[ca
   CHECK(glm::dot(rayAt(*p, Vec2(1, 1)).o - f.origin, f.right) < 0.0);
   CHECK(glm::dot(rayAt(*p, Vec2(1, 1)).o - f.origin, f.up) > 0.0);
   // Horizontal fov spans each cell: its left and right edges are 25 degrees off the axis.
-  CHECK(angleBetween(rayAt(*p, Vec2(2 * cw, 1.5 * ch)).d, f.forward) == Approx(radians(25.0)).epsilon(1e-13));
+  CHECK(angleBetween(rayAt(*p, Vec2(2 * cw, 1.5 * ch)).d, f.forward) ==
+        Approx(radians(25.0)).epsilon(1e-13));
 }
 
 TEST_CASE("lenslet cells are framed like pinhole images of the cell for every fov-axis",

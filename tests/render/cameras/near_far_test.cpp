@@ -8,8 +8,7 @@
 using namespace lucent;
 using namespace lucent::camtest;
 
-TEST_CASE("every projection's primary rays have tmin = near and tmax = far",
-          "[cameras][nearfar]") {
+TEST_CASE("every projection's primary rays have tmin = near and tmax = far", "[cameras][nearfar]") {
   for (CameraType type : {CameraType::Pinhole, CameraType::ThinLens, CameraType::Orthographic,
                           CameraType::Fisheye, CameraType::Panini, CameraType::Lenslet,
                           CameraType::Octahedral, CameraType::Cubemap, CameraType::Fibonacci}) {

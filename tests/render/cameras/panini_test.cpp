@@ -153,7 +153,8 @@ TEST_CASE("panini diagonal fov puts the corners fov/2 off the axis", "[cameras][
       cam.fov = fov;
       auto p = makeProjection(cam, 64, 36);
       for (const Vec2& corner : {Vec2(0, 0), Vec2(64, 36), Vec2(64, 0)})
-        CHECK(angleBetween(rayAt(*p, corner).d, f.forward) == Approx(radians(fov / 2.0)).epsilon(1e-9));
+        CHECK(angleBetween(rayAt(*p, corner).d, f.forward) ==
+              Approx(radians(fov / 2.0)).epsilon(1e-9));
     }
 }
 

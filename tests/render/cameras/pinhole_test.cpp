@@ -38,9 +38,11 @@ TEST_CASE("pinhole corner rays make the analytic angle with the axis for every f
     }
     // The edge midpoints along the chosen axis are exactly fov/2 off the axis.
     if (c.axis == FovAxis::Horizontal)
-      CHECK(angleBetween(rayAt(*p, Vec2(w, h / 2.0)).d, f.forward) == Approx(radians(37.5)).epsilon(1e-13));
+      CHECK(angleBetween(rayAt(*p, Vec2(w, h / 2.0)).d, f.forward) ==
+            Approx(radians(37.5)).epsilon(1e-13));
     if (c.axis == FovAxis::Vertical)
-      CHECK(angleBetween(rayAt(*p, Vec2(w / 2.0, 0)).d, f.forward) == Approx(radians(37.5)).epsilon(1e-13));
+      CHECK(angleBetween(rayAt(*p, Vec2(w / 2.0, 0)).d, f.forward) ==
+            Approx(radians(37.5)).epsilon(1e-13));
     if (c.axis == FovAxis::Diagonal) CHECK(corner == Approx(radians(37.5)).epsilon(1e-13));
     // The centre ray is the view direction.
     Ray centre = rayAt(*p, Vec2(w / 2.0, h / 2.0));

@@ -28,7 +28,13 @@ TEST_CASE("thin lens: all rays of one film point meet at one point on the focus 
     auto p = makeProjection(cam, 32, 24);
     CHECK(as<ThinLensProjection>(p).focusDistance() == fd);
     CHECK(as<ThinLensProjection>(p).apertureRadius() == Approx(0.2 / 1.4 / 2.0));
-    auto pin = makeProjection([&] { Camera c = cam; c.type = CameraType::Pinhole; return c; }(), 32, 24);
+    auto pin = makeProjection(
+        [&] {
+          Camera c = cam;
+          c.type = CameraType::Pinhole;
+          return c;
+        }(),
+        32, 24);
     for (const Vec2& film : {Vec2(16, 12), Vec2(0.5, 0.5), Vec2(31.2, 20.7)}) {
       // Where the pinhole ray (through the lens centre) crosses the focus plane.
       Ray chief = rayAt(*pin, film);
@@ -190,7 +196,8 @@ TEST_CASE("a thin-lens pixel converges to the analytic blur of an edge with samp
   Scene scene;
   scene.render.width = 4;
   scene.render.height = 4;
-  addShape(scene, BoxSpec{Vec3(0, -100, -7), Vec3(100, 100, -6)}, addMaterial(scene, emissive(Color(1.0f))));
+  addShape(scene, BoxSpec{Vec3(0, -100, -7), Vec3(100, 100, -6)},
+           addMaterial(scene, emissive(Color(1.0f))));
   Camera cam;
   cam.type = CameraType::ThinLens;
   cam.fov = 2.0 * std::atan(0.1) * 180.0 / kPi;  // image plane half width 0.1 at distance 1
