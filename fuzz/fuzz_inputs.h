@@ -14,6 +14,7 @@
 #include "images/height_map_file.h"
 #include "lang/expression.h"
 #include "lang/parser.h"
+#include "lang/transform_syntax.h"
 #include "meshes/mesh_files.h"
 #include "primitives/height_field.h"
 #include "primitives/text.h"
@@ -24,7 +25,6 @@
 #include "render/renderer.h"
 #include "render/texture.h"
 #include "scenegraph/located_error.h"
-#include "scenegraph/transform_syntax.h"
 #include "scenegraph/world.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// libFuzzer target: the `transform` attribute syntax (scenegraph/transform_syntax).
+// libFuzzer target: the `transform` attribute syntax (lang/transform_syntax).
 #include "fuzz/fuzz_inputs.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

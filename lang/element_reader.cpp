@@ -1,7 +1,7 @@
 #include "element_reader.h"
 #include "povray_names.h"
 
-#include "scenegraph/transform_syntax.h"
+#include "transform_syntax.h"
 
 #include <algorithm>
 #include <cmath>

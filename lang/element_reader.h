@@ -58,7 +58,7 @@ class ElementReader {
   // Non-negative components. `scalar` tells whether it was written as one number.
   Color color(const char* attr, const Color& def, bool* scalar = nullptr);
   bool boolean(const char* attr, bool def);
-  // A transform attribute (scenegraph/transform_syntax.h); identity if absent.
+  // A transform attribute (lang/transform_syntax.h); identity if absent.
   Mat4 transform(const char* attr);
 
   template <class E>

@@ -7,6 +7,7 @@
 // shapes/sphere.cpp), and erased into a ShapeType for the table.
 #pragma once
 
+#include "attribute_info.h"
 #include "attribute_input.h"
 #include "shape_spec.h"
 
@@ -14,35 +15,13 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 namespace lucent {
-
-enum class AttrType {
-  Number,
-  Vector,
-  Direction,
-  Boolean,
-  Choice,
-  Text,
-  NumberList,
-  IntegerList,
-  File
-};
-
-struct AttributeInfo {
-  std::string name;
-  AttrType type = AttrType::Number;
-  NumberRule rule;                        // numbers: the range
-  std::vector<std::string_view> choices;  // choices: the words
-  std::string defaultText;                // as a user would write it; "" when there is none
-  bool required = false;
-  std::string doc;    // one or two sentences, for the schema
-  int listArity = 1;  // lists: numbers per item (3 for x y z)
-};
 
 // A child element a shape reads itself (a blob's <component>): its name and attributes,
 // for the parser's attribute check and the schema.
@@ -65,6 +44,12 @@ class PovShapeOut {
   virtual std::string vector(const Vec3& v) const = 0;  // <x, y, z>
   // The identifier of a mesh2 declared once for this mesh data (the exporter writes it).
   virtual std::string declaredMesh(const MeshSpec& mesh) = 0;
+  // An expression of the scene language as a POV-Ray function body with `constants` (the
+  // names other than x, y and z) written as their numbers; nullopt with `problem` set for
+  // what POV-Ray cannot express (random()).
+  virtual std::optional<std::string> function(
+      const std::string& text, const std::vector<std::pair<std::string, double>>& constants,
+      std::string& problem) const = 0;
   // What the shape's parameters cannot be written as (an isosurface's random()): an
   // export error at the shape.
   virtual void error(const std::string& message) = 0;

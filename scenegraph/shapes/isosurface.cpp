@@ -2,10 +2,8 @@
 // accuracy open/>: POV-Ray's isosurface (primitives/isosurface.h). The function is an
 // expression of the scene language in x, y, z, compiled where it is read (its other names
 // are parameters, taken as numbers then); POV-Ray gets it as a function { } body
-// (scenegraph/pov_function.h).
+// (PovShapeOut::function, written by povray/pov_function.h).
 #include "scenegraph/shape_type.h"
-
-#include "scenegraph/pov_function.h"
 
 #include <fmt/format.h>
 
@@ -56,8 +54,7 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
       },
       [](const IsosurfaceSpec& s, PovShapeOut& out) {
         std::string problem;
-        std::optional<std::string> body = povFunctionText(
-            s.function, s.constants, [&](double v) { return out.number(v); }, problem);
+        std::optional<std::string> body = out.function(s.function, s.constants, problem);
         if (!body) {
           out.error("<isosurface> function: " + problem);
           return;

@@ -1,6 +1,6 @@
 // The transform attribute's syntax: operations in the order written (the first applied
 // first), exact quarter turns, the matrix forms, and errors with their offsets.
-#include "scenegraph/transform_syntax.h"
+#include "lang/transform_syntax.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
 // The POV-Ray text of numbers, colours and matrices: the layout POV-Ray reads.
 #include "povray/pov_writer.h"
-#include "scenegraph/transform_syntax.h"
+#include "lang/transform_syntax.h"
 
 #include <catch2/catch.hpp>
 

@@ -4,11 +4,11 @@
 // message, and at the attribute's file:line:col where the value comes from a scene.
 #include "../support/paths.h"
 #include "lang/parser.h"
+#include "lang/transform_syntax.h"
 #include "lang/values.h"
 #include "memory/system_memory.h"
 #include "meshes/mesh_files.h"
 #include "meshes/mesh_repair.h"
-#include "scenegraph/transform_syntax.h"
 #include "scenegraph/world.h"
 
 #include <catch2/catch.hpp>

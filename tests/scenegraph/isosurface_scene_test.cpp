@@ -4,8 +4,8 @@
 // written for POV-Ray.
 #include "../support/scene_text.h"
 #include "lang/parser.h"
+#include "povray/pov_function.h"
 #include "scenegraph/gradient_report.h"
-#include "scenegraph/pov_function.h"
 #include "scenegraph/world.h"
 
 #include <catch2/catch.hpp>

@@ -24,6 +24,11 @@ class RecordingOut final : public PovShapeOut {
     return "<" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ">";
   }
   std::string declaredMesh(const MeshSpec&) override { return "Mesh0"; }
+  std::optional<std::string> function(const std::string& text,
+                                      const std::vector<std::pair<std::string, double>>&,
+                                      std::string&) const override {
+    return "f(" + text + ")";
+  }
   void error(const std::string& message) override { errors.push_back(message); }
 
   std::vector<std::string> keywords, lines, errors;
