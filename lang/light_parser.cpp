@@ -16,35 +16,19 @@ namespace lucent {
 
 namespace {
 
-const std::vector<std::pair<std::string_view, LightType>> kLightTypes{
-    {"point", LightType::Point},
-    {"directional", LightType::Directional},
-    {"spot", LightType::Spot},
-    {"area", LightType::Area}};
-
-const std::vector<std::string_view>& typeAttributes(LightType t) {
-  static const std::vector<std::string_view> point{"position", "attenuation"},
-      directional{"direction"},
-      spot{"position", "attenuation", "direction", "look-at", "angle", "inner"},
-      area{"position", "attenuation", "u",       "v",     "samples", "jitter",
-           "adaptive", "direction",   "look-at", "angle", "inner"};
-  switch (t) {
-    case LightType::Point:
-      return point;
-    case LightType::Directional:
-      return directional;
-    case LightType::Spot:
-      return spot;
-    case LightType::Area:
-      return area;
-  }
-  return point;
+// The names of type="..." (scenegraph/light.cpp's table).
+std::vector<std::pair<std::string_view, LightType>> typeChoices() {
+  std::vector<std::pair<std::string_view, LightType>> choices;
+  for (const LightTypeInfo& t : lightTypes()) choices.emplace_back(t.name, t.type);
+  return choices;
 }
 
-const char* typeName(LightType t) {
-  for (const auto& [name, type] : kLightTypes)
-    if (type == t) return name.data();
-  return "?";
+// The attributes a light of type t takes.
+std::vector<std::string_view> attributesOf(LightType t) {
+  std::vector<std::string_view> names;
+  for (const LightAttribute& a : lightAttributes())
+    if (a.takenBy(t)) names.push_back(a.info.name);
+  return names;
 }
 
 // The cone of a spot light or a spot-shaped area light: its axis (direction, or look-at
@@ -85,21 +69,20 @@ std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file,
 
   Light light;
   light.loc = r.loc();
-  light.type = r.choice("type", LightType::Point, kLightTypes);
+  light.type = r.choice("type", LightType::Point, typeChoices());
 
-  std::vector<std::string_view> allowed{"type", "color", "intensity", "shadows", "id", "transform"};
-  for (auto a : typeAttributes(light.type)) allowed.push_back(a);
-  r.checkAttributes(allowed, [&](std::string_view attr) -> std::string {
+  r.checkAttributes(attributesOf(light.type), [&](std::string_view attr) -> std::string {
     std::vector<std::string> owners;
-    for (const auto& [name, type] : kLightTypes)
-      for (auto a : typeAttributes(type))
-        if (a == attr) owners.emplace_back(name);
+    for (const LightAttribute& a : lightAttributes())
+      if (a.info.name == attr)
+        for (const LightTypeInfo& t : lightTypes())
+          if (a.takenBy(t.type)) owners.emplace_back(t.name);
     if (owners.empty()) return {};
     std::string list = owners[0];
     for (size_t i = 1; i < owners.size(); ++i)
       list += (i + 1 == owners.size() ? " and " : ", ") + owners[i];
-    return "belongs to " + list + " lights; this light is " + typeName(light.type) +
-           " (set type=\"" + owners[0] + "\")";
+    return "belongs to " + list + " lights; this light is " +
+           std::string(lightTypeInfo(light.type).name) + " (set type=\"" + owners[0] + "\")";
   });
 
   registerNodeId(r, *node);

@@ -2,6 +2,7 @@
 
 #include "schema_template.h"  // kSchemaTemplate, made by CMake from schema_template.xsd
 
+#include "scenegraph/light.h"
 #include "scenegraph/shape_registry.h"
 
 #include <fmt/format.h>
@@ -26,6 +27,7 @@ std::string escaped(std::string_view text) {
 
 // The template's simple type for an attribute; "" for a choice (written inline).
 std::string typeName(const AttributeInfo& a) {
+  if (!a.schemaType.empty()) return std::string(a.schemaType);
   switch (a.type) {
     case AttrType::Number:
       if (a.rule.lo == 0.0 && a.rule.loOpen) return "positiveNumber";
@@ -50,9 +52,11 @@ std::string typeName(const AttributeInfo& a) {
   throw std::logic_error("schema: unknown attribute type");
 }
 
-std::string attributeXsd(const AttributeInfo& a) {
+// An <xs:attribute> at `indent` spaces (8 inside a type's extension, 4 directly in a type).
+std::string attributeXsd(const AttributeInfo& a, int indent = 8) {
+  const std::string pad(static_cast<size_t>(indent), ' ');
   std::string type = typeName(a);
-  std::string head = fmt::format("        <xs:attribute name=\"{}\"", a.name);
+  std::string head = fmt::format("{}<xs:attribute name=\"{}\"", pad, a.name);
   if (!type.empty()) head += fmt::format(" type=\"{}\"", type);
   if (a.required) head += " use=\"required\"";
   else if (!a.defaultText.empty()) head += fmt::format(" default=\"{}\"", escaped(a.defaultText));
@@ -60,9 +64,8 @@ std::string attributeXsd(const AttributeInfo& a) {
   if (!a.required && !a.defaultText.empty())
     doc += (doc.empty() ? "" : " ") + ("Default " + a.defaultText + ".");
   std::string out = head + ">\n";
-  out += fmt::format(
-      "          <xs:annotation><xs:documentation>{}</xs:documentation></xs:annotation>\n",
-      escaped(doc));
+  out += fmt::format("{}  <xs:annotation><xs:documentation>{}</xs:documentation></xs:annotation>\n",
+                     pad, escaped(doc));
   if (type.empty()) {
     out += "          <xs:simpleType>\n            <xs:union memberTypes=\"parameterReference\">\n";
     out += "              <xs:simpleType>\n                <xs:restriction base=\"xs:token\">\n";
@@ -71,7 +74,7 @@ std::string attributeXsd(const AttributeInfo& a) {
     out += "                </xs:restriction>\n              </xs:simpleType>\n";
     out += "            </xs:union>\n          </xs:simpleType>\n";
   }
-  return out + "        </xs:attribute>\n";
+  return out + pad + "</xs:attribute>\n";
 }
 
 std::string shapeElements() {
@@ -129,6 +132,23 @@ std::string shapeTypesXsd() {
   return out;
 }
 
+// The light types as the enumeration of lightTypeLiteral, each with its line of documentation.
+std::string lightTypesXsd() {
+  std::string out;
+  for (const LightTypeInfo& t : lightTypes())
+    out += fmt::format(
+        "      <xs:enumeration value=\"{}\"><xs:annotation><xs:documentation>{}</xs:documentation>"
+        "</xs:annotation></xs:enumeration>\n",
+        t.name, escaped(t.doc));
+  return out;
+}
+
+std::string lightAttributesXsd() {
+  std::string out;
+  for (const LightAttribute& a : lightAttributes()) out += attributeXsd(a.info, 4);
+  return out;
+}
+
 std::string shapeXpath() {
   std::string out;
   for (const ShapeType& t : shapeTypes()) out += ".//" + t.element + " | ";
@@ -149,6 +169,8 @@ std::string schemaText() {
   replaceOnce(text, "@SHAPE_XPATH@", shapeXpath());
   replaceOnce(text, "@SHAPE_ELEMENTS@", shapeElements());
   replaceOnce(text, "@SHAPE_TYPES@", shapeTypesXsd());
+  replaceOnce(text, "@LIGHT_TYPES@", lightTypesXsd());
+  replaceOnce(text, "@LIGHT_ATTRIBUTES@", lightAttributesXsd());
   return text;
 }
 

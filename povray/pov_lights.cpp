@@ -13,20 +13,6 @@ namespace {
 // 3 gives ¼ ½ ¼, 5 gives 1 2 2 2 1 / 8 (checked by rendering with povray 3.7.0.10).
 bool povAveragesUniformly(int n) { return n >= 2 && (n & (n - 1)) == 0; }
 
-const char* lightTypeName(LightType t) {
-  switch (t) {
-    case LightType::Point:
-      return "point";
-    case LightType::Directional:
-      return "directional";
-    case LightType::Spot:
-      return "spot";
-    case LightType::Area:
-      return "area";
-  }
-  return "?";
-}
-
 }  // namespace
 
 PovFade povFade(const Vec3& abc) {
@@ -65,77 +51,94 @@ PovFade povFade(const Vec3& abc) {
   return f;
 }
 
-void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues& issues) {
-  const char* type = lightTypeName(light.type);
-  const Color colour = light.radiance();
+namespace {
 
-  if (light.type == LightType::Directional) {
-    // A parallel light: L = normalize(position − point_at) everywhere.
-    Vec3 dir = glm::normalize(light.direction);
-    out.open("light_source");
-    out.line(povVector(-dir * kParallelLightDistance));
-    out.line("color " + povRgb(colour));
-    out.line("parallel");
-    out.line("point_at <0, 0, 0>");
-    if (!light.shadows) out.line("shadowless");
-    out.close();
-  } else {
-    PovFade fade = povFade(light.attenuation);
-    Color c = colour * static_cast<float>(fade.scale);
-    out.open("light_source");
-    out.line(povVector(light.position));
-    out.line("color " + povRgb(c));
-    if (fade.fade) {
-      out.line("fade_distance " + povNumber(fade.distance));
-      out.line("fade_power " + povNumber(fade.power));
-      if (!fade.exact) issues.warning(light.loc, fmt::format("{} light: {}", type, fade.problem));
-      if (fade.exactBeyond > 0.0)
-        issues.warning(light.loc,
-                       fmt::format("{} light: attenuation \"{} {} {}\" maps onto POV-Ray's fade "
-                                   "exactly only {} or more from the light, where min(1, ...) "
-                                   "stops clamping",
-                                   type, light.attenuation.x, light.attenuation.y,
-                                   light.attenuation.z, povNumber(fade.exactBeyond)));
+// POV-Ray's parallel light: L = normalize(position − point_at) everywhere.
+void writeParallel(const Light& light, PovWriter& out) {
+  Vec3 dir = glm::normalize(light.direction);
+  out.open("light_source");
+  out.line(povVector(-dir * kParallelLightDistance));
+  out.line("color " + povRgb(light.radiance()));
+  out.line(lightTypeInfo(LightType::Directional).pov);
+  out.line("point_at <0, 0, 0>");
+  if (!light.shadows) out.line("shadowless");
+  out.close();
+}
+
+// A light at a position: its fade, then its cone and its area.
+void writePositioned(const Light& light, const std::string& type, PovWriter& out,
+                     PovIssues& issues) {
+  PovFade fade = povFade(light.attenuation);
+  Color c = light.radiance() * static_cast<float>(fade.scale);
+  out.open("light_source");
+  out.line(povVector(light.position));
+  out.line("color " + povRgb(c));
+  if (fade.fade) {
+    out.line("fade_distance " + povNumber(fade.distance));
+    out.line("fade_power " + povNumber(fade.power));
+    if (!fade.exact) issues.warning(light.loc, fmt::format("{} light: {}", type, fade.problem));
+    if (fade.exactBeyond > 0.0)
+      issues.warning(light.loc,
+                     fmt::format("{} light: attenuation \"{} {} {}\" maps onto POV-Ray's fade "
+                                 "exactly only {} or more from the light, where min(1, ...) "
+                                 "stops clamping",
+                                 type, light.attenuation.x, light.attenuation.y,
+                                 light.attenuation.z, povNumber(fade.exactBeyond)));
+  }
+  if (light.hasCone()) {
+    // The contract's spot is POV-Ray's spotlight with tightness 0: full light inside
+    // `radius`, smoothstep to 0 at `falloff` (both half-angles in degrees). A spot-shaped
+    // area light is POV-Ray's area_light with spotlight, whose cone is also seen from
+    // the centre for every sample.
+    Vec3 axis = glm::normalize(light.direction);
+    out.line(lightTypeInfo(LightType::Spot).pov);
+    out.line("point_at " + povVector(light.position + axis));
+    out.line("radius " + povNumber(std::min(light.inner, light.angle)));
+    out.line("falloff " + povNumber(light.angle));
+    out.line("tightness 0");
+    if (light.angle > 90.0)
+      issues.warning(light.loc, fmt::format("spot light: angle {} exceeds 90 degrees; "
+                                            "POV-Ray's spotlight gives no light behind it",
+                                            light.angle));
+  }
+  if (light.type == LightType::Area) {
+    out.line(fmt::format("{} {}, {}, {}, {}", lightTypeInfo(LightType::Area).pov,
+                         povVector(light.u), povVector(light.v), light.samplesU, light.samplesV));
+    // Lucent's adaptive light is POV-Ray's: the same corners, test and quadrant averages.
+    if (light.adaptive) out.line(fmt::format("adaptive {}", *light.adaptive));
+    if (light.jitter) {
+      out.line("jitter");
+      issues.warning(light.loc,
+                     "area light: jitter is random in POV-Ray and a fixed hash in "
+                     "Lucent; the noise differs");
     }
-    if (light.hasCone()) {
-      // The contract's spot is POV-Ray's spotlight with tightness 0: full light inside
-      // `radius`, smoothstep to 0 at `falloff` (both half-angles in degrees). A spot-shaped
-      // area light is POV-Ray's area_light with spotlight, whose cone is also seen from
-      // the centre for every sample.
-      Vec3 axis = glm::normalize(light.direction);
-      out.line("spotlight");
-      out.line("point_at " + povVector(light.position + axis));
-      out.line("radius " + povNumber(std::min(light.inner, light.angle)));
-      out.line("falloff " + povNumber(light.angle));
-      out.line("tightness 0");
-      if (light.angle > 90.0)
-        issues.warning(light.loc, fmt::format("spot light: angle {} exceeds 90 degrees; "
-                                              "POV-Ray's spotlight gives no light behind it",
-                                              light.angle));
-    }
-    if (light.type == LightType::Area) {
-      out.line(fmt::format("area_light {}, {}, {}, {}", povVector(light.u), povVector(light.v),
-                           light.samplesU, light.samplesV));
-      // Lucent's adaptive light is POV-Ray's: the same corners, test and quadrant averages.
-      if (light.adaptive) out.line(fmt::format("adaptive {}", *light.adaptive));
-      if (light.jitter) {
-        out.line("jitter");
-        issues.warning(light.loc,
-                       "area light: jitter is random in POV-Ray and a fixed hash in "
-                       "Lucent; the noise differs");
-      }
-      // Without `adaptive` POV-Ray subdivides fully (its default level is 100), with its
-      // recursive weights; Lucent then averages plainly.
-      if (!light.adaptive &&
-          (!povAveragesUniformly(light.samplesU) || !povAveragesUniformly(light.samplesV)))
-        issues.warning(light.loc,
-                       fmt::format("area light: POV-Ray weights a {}x{} sample grid unevenly "
-                                   "(edge samples count less); it matches Lucent's plain "
-                                   "average only for 2, 4, 8, ... samples per side",
-                                   light.samplesU, light.samplesV));
-    }
-    if (!light.shadows) out.line("shadowless");
-    out.close();
+    // Without `adaptive` POV-Ray subdivides fully (its default level is 100), with its
+    // recursive weights; Lucent then averages plainly.
+    if (!light.adaptive &&
+        (!povAveragesUniformly(light.samplesU) || !povAveragesUniformly(light.samplesV)))
+      issues.warning(light.loc,
+                     fmt::format("area light: POV-Ray weights a {}x{} sample grid unevenly "
+                                 "(edge samples count less); it matches Lucent's plain "
+                                 "average only for 2, 4, 8, ... samples per side",
+                                 light.samplesU, light.samplesV));
+  }
+  if (!light.shadows) out.line("shadowless");
+  out.close();
+}
+
+}  // namespace
+
+void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues& issues) {
+  const std::string type(lightTypeInfo(light.type).name);
+  switch (light.type) {
+    case LightType::Directional:
+      writeParallel(light, out);
+      break;
+    case LightType::Point:
+    case LightType::Spot:
+    case LightType::Area:
+      writePositioned(light, type, out, issues);
+      break;
   }
   if (!light.shadows && anySpecular)
     issues.warning(light.loc, fmt::format("{} light with shadows=\"false\": POV-Ray's shadowless "

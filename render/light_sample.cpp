@@ -19,14 +19,21 @@ double spotFactor(const Light& light, double cosTheta) {
   return (3.0 - 2.0 * u) * u * u;
 }
 
-LightIncidence lightIncidence(const Light& light, const Vec3& p) {
+namespace {
+
+// Parallel light: the same direction and radiance everywhere, from infinitely far.
+LightIncidence parallelIncidence(const Light& light) {
   LightIncidence in;
-  if (light.type == LightType::Directional) {
-    in.toLight = -glm::normalize(light.direction);
-    in.distance = kInf;
-    in.radiance = light.radiance();
-    return in;
-  }
+  in.toLight = -glm::normalize(light.direction);
+  in.distance = kInf;
+  in.radiance = light.radiance();
+  return in;
+}
+
+// Light from a position (the centre of an area light), attenuated with the distance and,
+// for a spot or a spot-shaped area light, by its cone.
+LightIncidence positionedIncidence(const Light& light, const Vec3& p) {
+  LightIncidence in;
   Vec3 toLight = light.position - p;
   in.distance = glm::length(toLight);
   in.toLight = in.distance > 0.0 ? toLight / in.distance : Vec3(0.0, 1.0, 0.0);
@@ -35,6 +42,20 @@ LightIncidence lightIncidence(const Light& light, const Vec3& p) {
     factor *= spotFactor(light, glm::dot(-in.toLight, glm::normalize(light.direction)));
   in.radiance = light.radiance() * static_cast<float>(factor);
   return in;
+}
+
+}  // namespace
+
+LightIncidence lightIncidence(const Light& light, const Vec3& p) {
+  switch (light.type) {
+    case LightType::Directional:
+      return parallelIncidence(light);
+    case LightType::Point:
+    case LightType::Spot:
+    case LightType::Area:
+      return positionedIncidence(light, p);
+  }
+  return {};  // not reached: the switch names every type
 }
 
 Vec3 lightSamplePoint(const Light& light, int k, const Vec2& jitter) {

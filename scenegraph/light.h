@@ -1,15 +1,41 @@
-// Light sources of the contract's <light>.
+// Light sources of the contract's <light>, and the table of light types and attributes that
+// the parser's checks, the schema, `lucent check` and the POV-Ray exporter read (light.cpp).
 #pragma once
 
+#include "attribute_info.h"
 #include "source_loc.h"
 
 #include "primitives/math.h"
 
 #include <optional>
+#include <string_view>
+#include <vector>
 
 namespace lucent {
 
+// A new type: a row in lightTypes() and its attributes in lightAttributes() (light.cpp),
+// its light in render/light_sample.cpp and its POV-Ray text in povray/pov_lights.cpp; both
+// switch over every type, so a type without them does not compile (docs/architecture.md).
 enum class LightType { Point, Directional, Spot, Area };
+
+struct LightTypeInfo {
+  LightType type;
+  std::string_view name;  // type="..."
+  std::string_view pov;   // POV-Ray's light_source modifier ("" for a point light)
+  std::string_view doc;   // one line, for the schema
+};
+// One row per type, in LightType's order.
+const std::vector<LightTypeInfo>& lightTypes();
+const LightTypeInfo& lightTypeInfo(LightType type);
+
+// An attribute of <light>, and the types that take it (every type when empty).
+struct LightAttribute {
+  AttributeInfo info;
+  std::vector<LightType> types;
+  bool takenBy(LightType t) const;
+};
+// Every attribute <light> takes, in the schema's order.
+const std::vector<LightAttribute>& lightAttributes();
 
 struct Light {
   LightType type = LightType::Point;

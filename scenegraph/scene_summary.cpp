@@ -10,20 +10,6 @@ namespace lucent {
 
 namespace {
 
-const char* lightTypeName(LightType t) {
-  switch (t) {
-    case LightType::Point:
-      return "point";
-    case LightType::Directional:
-      return "directional";
-    case LightType::Spot:
-      return "spot";
-    case LightType::Area:
-      return "area";
-  }
-  return "?";
-}
-
 long long triangleCount(const ShapeSpec& spec) { return shapeTypeOf(spec).triangles(spec); }
 
 // What a node contributes to the world, memoised per node: a node used many times is
@@ -92,7 +78,7 @@ SceneCounts countScene(const Scene& scene) {
   for (const auto& child : scene.root->children) countNodes(*child, c.nodes);
   for (const auto& d : scene.defs) countNodes(*d, c.nodes);
   c.defs = static_cast<int>(scene.defs.size());
-  for (const Light& l : scene.lights) ++c.lights[lightTypeName(l.type)];
+  for (const Light& l : scene.lights) ++c.lights[std::string(lightTypeInfo(l.type).name)];
   for (const Camera& cam : scene.cameras) ++c.cameras[cameraTypeName(cam.type)];
   c.materials = static_cast<int>(scene.materials.size()) - 1;
   Expansion e = Expander().of(*scene.root);
