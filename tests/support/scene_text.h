@@ -24,26 +24,26 @@ inline ParseResult parseBody(const std::string& body, const std::string& name = 
   return parseSceneString("<scene version=\"1\">" + head + body + "</scene>", name);
 }
 
-// The same, required to parse without an error (the body and the messages are shown if not).
-inline std::unique_ptr<Scene> parseValid(const std::string& body,
-                                         const std::string& name = "test.xml",
-                                         const std::string& head = "<camera/>") {
+// The same, required to parse without an error, or without any message at all (warnings
+// included) when `clean`; the body and the messages are shown if not.
+inline std::unique_ptr<Scene> parseRequired(const std::string& body, const std::string& name,
+                                            const std::string& head, bool clean) {
   ParseResult r = parseBody(body, name, head);
   INFO(body << "\n" << messages(r));
   REQUIRE(r.scene);
   REQUIRE(r.diagnostics.errorCount() == 0);
+  if (clean) REQUIRE(r.diagnostics.all().empty());
   return std::move(r.scene);
 }
-
-// The same, required to parse without any message at all, warnings included.
+inline std::unique_ptr<Scene> parseValid(const std::string& body,
+                                         const std::string& name = "test.xml",
+                                         const std::string& head = "<camera/>") {
+  return parseRequired(body, name, head, false);
+}
 inline std::unique_ptr<Scene> parseClean(const std::string& body,
                                          const std::string& name = "test.xml",
                                          const std::string& head = "<camera/>") {
-  ParseResult r = parseBody(body, name, head);
-  INFO(body << "\n" << messages(r));
-  REQUIRE(r.scene);
-  REQUIRE(r.diagnostics.all().empty());
-  return std::move(r.scene);
+  return parseRequired(body, name, head, true);
 }
 
 }  // namespace lucent::test
