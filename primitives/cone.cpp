@@ -1,5 +1,6 @@
 #include "cone.h"
 
+#include "open_or_solid.h"
 #include "quadratic.h"
 
 #include <algorithm>
@@ -156,27 +157,17 @@ int Cone::sideRoots(const Ray& l, SurfaceRoot roots[2]) const {
 }
 
 bool Cone::intersect(const Ray& ray, Hit& hit) const {
-  Ray l = frame_.rayToLocal(ray);
-  if (open_) {
-    SurfaceRoot roots[2];
-    int n = sideRoots(l, roots);
-    return intersectRoots(roots, n, ray, this, hit);
-  }
-  Span s;
-  return solidSpan(l, s) && intersectSpan(s, ray, this, hit);
+  return intersectOpenOrSolid(
+      open_, frame_.rayToLocal(ray),
+      [this](const Ray& l, SurfaceRoot* r) { return sideRoots(l, r); },
+      [this](const Ray& l, Span& s) { return solidSpan(l, s); }, ray, this, hit);
 }
 
 void Cone::crossings(const Ray& ray, CrossingList& out) const {
-  Ray l = frame_.rayToLocal(ray);
-  if (open_) {
-    SurfaceRoot roots[2];
-    int n = sideRoots(l, roots);
-    crossingsOfRoots(roots, n, ray, this, out);
-    return;
-  }
-  Span s;
-  if (!solidSpan(l, s)) s = Span();
-  crossingsOfSpan(s, ray, this, out);
+  crossingsOpenOrSolid(
+      open_, frame_.rayToLocal(ray),
+      [this](const Ray& l, SurfaceRoot* r) { return sideRoots(l, r); },
+      [this](const Ray& l, Span& s) { return solidSpan(l, s); }, ray, this, out);
 }
 
 bool Cone::inside(const Vec3& p) const {
