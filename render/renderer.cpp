@@ -27,8 +27,7 @@ float colorDifference(const Color& a, const Color& b) { return maxComponent(glm:
 }  // namespace
 
 Renderer::Renderer(const World& world, const Camera& camera, ImageMapCache* textures)
-    : world_(world),
-      settings_(world.scene().render),
+    : settings_(world.scene().render),
       projection_(makeProjection(camera, settings_.width, settings_.height)),
       tracer_(world, textures),
       cameraMedia_(tracer_.mediaAt(projection_->frame().origin)) {}

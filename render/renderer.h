@@ -92,7 +92,6 @@ class Renderer {
   // Traces samples r.taken .. upTo-1 of pixel (x, y) into r.
   void addSamples(int x, int y, int upTo, PixelRefinement& r, RayStats& stats) const;
 
-  const World& world_;
   const RenderSettings settings_;  // a copy: the scene may change after the renderer is built
   std::unique_ptr<Projection> projection_;
   Tracer tracer_;

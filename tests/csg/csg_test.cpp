@@ -181,7 +181,11 @@ TEST_CASE("CSG first hit is the first change of membership along the ray", "[csg
   std::mt19937_64 rng(77);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const auto all = trees();
-  for (auto& [name, solid] : all) {
+  for (auto& entry : all) {
+    // A named reference, not a structured binding: the lambdas below capture it (C++17
+    // lets no lambda capture a binding, which clang enforces).
+    const std::string& name = entry.first;
+    const auto& solid = entry.second;
     auto shape = solid.make();
     int wrong = 0, hits = 0;
     const int rays = 100000 / int(all.size()) + 1;  // 10^5 rays over all the trees
