@@ -16,11 +16,6 @@ using namespace lucent;
 
 namespace {
 
-const char* kNames[kPatternTypeCount] = {"gradient", "onion",   "radial",  "spiral1",  "spiral2",
-                                         "wood",     "marble",  "agate",   "granite",  "bozo",
-                                         "spotted",  "leopard", "crackle", "wrinkles", "bumps",
-                                         "dents",    "ripples", "waves"};
-
 std::vector<Vec3> points(int n) {
   std::vector<Vec3> p;
   uint32_t s = 12345;
@@ -65,7 +60,7 @@ int main() {
     const double turb = nanoseconds(pts, [&](const Vec3& p) { return patternValue(turbulent, p); });
     const double normal =
         nanoseconds(pts, [&](const Vec3& p) { return perturbNormal(n, p, Vec3(0, 0, -1)).x; });
-    fmt::print("| {} | {:.0f} | {:.0f} | {:.0f} |\n", kNames[t], plain, turb, normal);
+    fmt::print("| {} | {:.0f} | {:.0f} | {:.0f} |\n", kPatternTypes[t].name, plain, turb, normal);
   }
   const ColorMap map{{{0.2, Color(1, 0, 0)}, {0.5, Color(0, 1, 0)}, {0.9, Color(0, 0, 1)}}};
   const HexagonSpec hex;

@@ -12,23 +12,13 @@ namespace lucent {
 
 namespace {
 
-const std::vector<std::pair<std::string_view, PatternType>> kColourPatterns{
-    {"gradient", PatternType::gradient}, {"onion", PatternType::onion},
-    {"radial", PatternType::radial},     {"spiral1", PatternType::spiral1},
-    {"spiral2", PatternType::spiral2},   {"wood", PatternType::wood},
-    {"marble", PatternType::marble},     {"agate", PatternType::agate},
-    {"granite", PatternType::granite},   {"bozo", PatternType::bozo},
-    {"spotted", PatternType::spotted},   {"leopard", PatternType::leopard},
-    {"crackle", PatternType::crackle},   {"wrinkles", PatternType::wrinkles},
-    {"bumps", PatternType::bumps}};
-
-// Normals take every colour pattern (its slope) and three of their own.
-std::vector<std::pair<std::string_view, PatternType>> normalPatterns() {
-  auto all = kColourPatterns;
-  all.insert(all.end(), {{"dents", PatternType::dents},
-                         {"ripples", PatternType::ripples},
-                         {"waves", PatternType::waves}});
-  return all;
+// The names of the pattern table (scenegraph/pattern.h): every colour pattern, or every
+// pattern (a normal takes the slope of any colour pattern and the normal-only ones).
+std::vector<std::pair<std::string_view, PatternType>> patternNames(bool colourOnly) {
+  std::vector<std::pair<std::string_view, PatternType>> names;
+  for (const PatternTypeInfo& t : kPatternTypes)
+    if (t.colour || !colourOnly) names.emplace_back(t.name, t.type);
+  return names;
 }
 
 const std::vector<std::pair<std::string_view, WaveShape>> kWaves{
@@ -135,12 +125,12 @@ Texture parsePatternTexture(ElementReader& r) {
   if (!r.has("type")) {
     r.error("<pattern> needs a 'type' (" + [] {
       std::string list;
-      for (const auto& [n, e] : kColourPatterns)
+      for (const auto& [n, e] : patternNames(true))
         list += (list.empty() ? "" : ", ") + std::string(n);
       return list;
     }() + ")");
   } else {
-    t.pattern.type = r.choice("type", PatternType::bozo, kColourPatterns);
+    t.pattern.type = r.choice("type", PatternType::bozo, patternNames(true));
   }
   parseValueAttributes(r, t.pattern);
   std::optional<SourceLoc> mapLoc;
@@ -192,7 +182,7 @@ NormalSpec parseNormal(ElementReader& r) {
   NormalSpec n;
   if (!r.has("type"))
     r.error("<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles or a colour pattern)");
-  else n.pattern.type = r.choice("type", PatternType::bumps, normalPatterns());
+  else n.pattern.type = r.choice("type", PatternType::bumps, patternNames(false));
   parseValueAttributes(r, n.pattern);
   n.depth = r.number("depth", n.depth);
   noChildren(r);

@@ -3,6 +3,7 @@
 #include "schema_template.h"  // kSchemaTemplate, made by CMake from schema_template.xsd
 
 #include "scenegraph/light.h"
+#include "scenegraph/pattern.h"
 #include "scenegraph/shape_registry.h"
 
 #include <fmt/format.h>
@@ -143,6 +144,19 @@ std::string lightTypesXsd() {
   return out;
 }
 
+// POV-Ray's patterns, from the pattern table: the colour patterns, or those only a <normal>
+// takes.
+std::string patternTypesXsd(bool colour) {
+  std::string out;
+  for (const PatternTypeInfo& t : kPatternTypes)
+    if (t.colour == colour)
+      out += fmt::format(
+          "      <xs:enumeration value=\"{}\"><xs:annotation><xs:documentation>POV-Ray's {}: {}."
+          "</xs:documentation></xs:annotation></xs:enumeration>\n",
+          t.name, t.pov, escaped(t.doc));
+  return out;
+}
+
 std::string lightAttributesXsd() {
   std::string out;
   for (const LightAttribute& a : lightAttributes()) out += attributeXsd(a.info, 4);
@@ -171,6 +185,8 @@ std::string schemaText() {
   replaceOnce(text, "@SHAPE_TYPES@", shapeTypesXsd());
   replaceOnce(text, "@LIGHT_TYPES@", lightTypesXsd());
   replaceOnce(text, "@LIGHT_ATTRIBUTES@", lightAttributesXsd());
+  replaceOnce(text, "@COLOUR_PATTERNS@", patternTypesXsd(true));
+  replaceOnce(text, "@NORMAL_PATTERNS@", patternTypesXsd(false));
   return text;
 }
 

@@ -4,48 +4,6 @@ namespace lucent {
 
 namespace {
 
-const char* povPatternName(PatternType t) {
-  switch (t) {
-    case PatternType::gradient:
-      return "gradient";
-    case PatternType::onion:
-      return "onion";
-    case PatternType::radial:
-      return "radial";
-    case PatternType::spiral1:
-      return "spiral1";
-    case PatternType::spiral2:
-      return "spiral2";
-    case PatternType::wood:
-      return "wood";
-    case PatternType::marble:
-      return "marble";
-    case PatternType::agate:
-      return "agate";
-    case PatternType::granite:
-      return "granite";
-    case PatternType::bozo:
-      return "bozo";
-    case PatternType::spotted:
-      return "spotted";
-    case PatternType::leopard:
-      return "leopard";
-    case PatternType::crackle:
-      return "crackle";
-    case PatternType::wrinkles:
-      return "wrinkles";
-    case PatternType::bumps:
-      return "bumps";
-    case PatternType::dents:
-      return "dents";
-    case PatternType::ripples:
-      return "ripples";
-    case PatternType::waves:
-      return "waves";
-  }
-  return "bozo";
-}
-
 const char* povWaveName(WaveShape w) {
   switch (w) {
     case WaveShape::ramp:
@@ -66,7 +24,7 @@ const char* povWaveName(WaveShape w) {
 
 // The pattern keyword and what belongs to it (gradient's axis, the spirals' arms).
 std::string patternKeyword(const PatternSpec& s) {
-  std::string k = povPatternName(s.type);
+  std::string k(patternTypeInfo(s.type).pov);
   if (s.type == PatternType::gradient) k += " " + povVector(s.axis);
   if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
     k += " " + std::to_string(s.arms);

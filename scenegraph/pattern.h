@@ -4,12 +4,19 @@
 
 #include "primitives/math.h"
 
+#include <iterator>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace lucent {
 
+// How a pattern's value is shaped after frequency and phase (POV-Ray's wave types).
+enum class WaveShape { ramp, sine, triangle, scallop, cubic, poly };
+
 // The pattern functions of POV-Ray 3.7 that Lucent reproduces (pattern.cpp, normal.cpp).
+// A new pattern: its row in kPatternTypes below and its value in
+// render/patterns/pattern_value.cpp, whose switch covers every type (docs/architecture.md).
 enum class PatternType {
   gradient,
   onion,
@@ -30,24 +37,71 @@ enum class PatternType {
   ripples,
   waves,
 };
-constexpr int kPatternTypeCount = 18;
 
-// How a pattern's value is shaped after frequency and phase (POV-Ray's wave types).
-enum class WaveShape { ramp, sine, triangle, scallop, cubic, poly };
+// What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
+// read about a pattern type.
+struct PatternTypeInfo {
+  PatternType type;
+  std::string_view name;  // type="..." of <pattern> and <normal>
+  std::string_view pov;   // POV-Ray's keyword (its extra tokens, as gradient's axis, are
+                          // written by povray/pov_patterns.cpp)
+  bool colour;            // a colour pattern; false: only a <normal> takes it
+  WaveShape wave;         // POV-Ray's default wave for it (parstxtr.cpp, Parse_Pattern)
+  bool turbulenceInside;  // turbulence works inside the pattern and leaves the point alone
+  std::string_view doc;   // one line, for the schema
+};
 
-// POV-Ray's parser gives marble, wood and both spirals a triangle wave, every other
-// pattern a ramp (parstxtr.cpp, Parse_Pattern).
-constexpr WaveShape defaultWave(PatternType type) {
-  switch (type) {
-    case PatternType::marble:
-    case PatternType::wood:
-    case PatternType::spiral1:
-    case PatternType::spiral2:
-      return WaveShape::triangle;
-    default:
-      return WaveShape::ramp;
-  }
+// The pattern table: one row per PatternType, in its order.
+inline constexpr PatternTypeInfo kPatternTypes[] = {
+    {PatternType::gradient, "gradient", "gradient", true, WaveShape::ramp, false,
+     "the value rises from 0 to 1 along axis over one unit, then repeats"},
+    {PatternType::onion, "onion", "onion", true, WaveShape::ramp, false,
+     "concentric spheres about the origin, one unit apart"},
+    {PatternType::radial, "radial", "radial", true, WaveShape::ramp, false,
+     "the angle about the y axis, 0 to 1 once around"},
+    {PatternType::spiral1, "spiral1", "spiral1", true, WaveShape::triangle, false,
+     "a spiral of arms arms about the z axis, winding along z"},
+    {PatternType::spiral2, "spiral2", "spiral2", true, WaveShape::triangle, false,
+     "two crossed spirals of arms arms about the z axis"},
+    {PatternType::wood, "wood", "wood", true, WaveShape::triangle, true,
+     "concentric cylinders about the z axis, bent by turbulence"},
+    {PatternType::marble, "marble", "marble", true, WaveShape::triangle, true,
+     "bands across the x axis, bent by turbulence"},
+    {PatternType::agate, "agate", "agate", true, WaveShape::ramp, false,
+     "agate's turbulent bands (agate_turb 1)"},
+    {PatternType::granite, "granite", "granite", true, WaveShape::ramp, false,
+     "six octaves of absolute noise"},
+    {PatternType::bozo, "bozo", "bozo", true, WaveShape::ramp, false, "smooth noise"},
+    {PatternType::spotted, "spotted", "spotted", true, WaveShape::ramp, false,
+     "smooth noise (as bozo)"},
+    {PatternType::leopard, "leopard", "leopard", true, WaveShape::ramp, false,
+     "regular spots, the square of the mean of sin x, sin y and sin z"},
+    {PatternType::crackle, "crackle", "crackle", true, WaveShape::ramp, false,
+     "cells about random points, the distance to the nearest cell wall"},
+    {PatternType::wrinkles, "wrinkles", "wrinkles", true, WaveShape::ramp, false,
+     "ten octaves of noise"},
+    {PatternType::bumps, "bumps", "bumps", true, WaveShape::ramp, false,
+     "smooth noise (as bozo; as a normal, the noise's gradient)"},
+    {PatternType::dents, "dents", "dents", false, WaveShape::ramp, false,
+     "the noise's gradient scaled by the noise cubed"},
+    {PatternType::ripples, "ripples", "ripples", false, WaveShape::ramp, false,
+     "circular waves from ten sources around the origin"},
+    {PatternType::waves, "waves", "waves", false, WaveShape::ramp, false,
+     "as ripples, each source with a frequency of its own"},
+};
+inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
+
+constexpr const PatternTypeInfo& patternTypeInfo(PatternType type) {
+  return kPatternTypes[static_cast<int>(type)];
 }
+
+// Every row sits at its enumerator's index, so patternTypeInfo is a plain lookup.
+constexpr bool patternRowsInOrder() {
+  for (int i = 0; i < kPatternTypeCount; ++i)
+    if (static_cast<int>(kPatternTypes[i].type) != i) return false;
+  return true;
+}
+static_assert(patternRowsInOrder(), "kPatternTypes: one row per PatternType, in its order");
 
 // Where a pattern sits on its object and how turbulence displaces it. The object point is
 // carried into pattern space first; turbulence then works in pattern space, so it scales
@@ -75,12 +129,12 @@ struct PatternSpec {
   int arms = 1;              // spiral1, spiral2
   double frequency = 1.0;    // 0 leaves the value unwrapped (POV-Ray's rule)
   double phase = 0.0;
-  std::optional<WaveShape> wave;  // nullopt: defaultWave(type)
+  std::optional<WaveShape> wave;  // nullopt: POV-Ray's default for the type
   double exponent = 1.0;          // poly_wave's exponent
   CrackleParams crackle;
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin
 
-  WaveShape waveShape() const { return wave.value_or(defaultWave(type)); }
+  WaveShape waveShape() const { return wave ? *wave : patternTypeInfo(type).wave; }
 };
 
 // A colour map: entries sorted by `at`, colours interpolated linearly between them and

@@ -12,7 +12,7 @@ Vec3 toPatternSpace(const Mat4& patternFromObject, const Vec3& objectPoint);
 // Whether turbulence moves the point of this type: POV-Ray leaves marble's and wood's
 // point alone and applies their turbulence inside the pattern.
 constexpr bool turbulenceDisplaces(PatternType type) {
-  return type != PatternType::marble && type != PatternType::wood;
+  return !patternTypeInfo(type).turbulenceInside;
 }
 
 // The pattern-space point, plus dturbulence·turbulence (per axis) when `displace` and the
