@@ -36,6 +36,7 @@ enum class PatternType {
   dents,
   ripples,
   waves,
+  planar,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -88,6 +89,8 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "circular waves from ten sources around the origin"},
     {PatternType::waves, "waves", "waves", false, WaveShape::ramp, false,
      "as ripples, each source with a frequency of its own"},
+    {PatternType::planar, "planar", "planar", true, WaveShape::ramp, false,
+     "1 on the plane y = 0, falling linearly to 0 at |y| = 1, 0 beyond"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 

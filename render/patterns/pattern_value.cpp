@@ -127,6 +127,12 @@ double wrinkles(const Vec3& p, int generator) {
   return value / 2.0;
 }
 
+// 1 − |y| within the band |y| <= 1, 0 outside it (POV-Ray clips |y| to [0, 1]).
+double planar(const Vec3& p) {
+  const double r = std::fabs(p.y);
+  return r > 1.0 ? 0.0 : 1.0 - r;
+}
+
 double dents(const Vec3& p, int generator) {
   const double n = noise(p, generator);
   return n * n * n;
@@ -171,6 +177,8 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
       return ripplesValue(p, spec.frequency, spec.phase);
     case PatternType::waves:
       return wavesValue(p, spec.frequency, spec.phase);
+    case PatternType::planar:
+      return planar(p);
   }
   return 0.0;
 }
