@@ -12,12 +12,13 @@ namespace lucent {
 
 namespace {
 
-// The names of the pattern table (scenegraph/pattern.h): every colour pattern, or every
-// pattern (a normal takes the slope of any colour pattern and the normal-only ones).
+// The names of the pattern table (scenegraph/pattern.h): every colour pattern, then (for a
+// normal, which takes the slope of any colour pattern) those only a normal takes.
 std::vector<std::pair<std::string_view, PatternType>> patternNames(bool colourOnly) {
   std::vector<std::pair<std::string_view, PatternType>> names;
-  for (const PatternTypeInfo& t : kPatternTypes)
-    if (t.colour || !colourOnly) names.emplace_back(t.name, t.type);
+  for (bool colour : {true, false})
+    for (const PatternTypeInfo& t : kPatternTypes)
+      if (t.colour == colour && (colour || !colourOnly)) names.emplace_back(t.name, t.type);
   return names;
 }
 

@@ -42,6 +42,10 @@ inline std::map<std::string, NormalSpec> normalCases() {
       {"slope_rotated", bumpy(placed(spec(T::granite), then(inverseRotate(Vec3(20, 30, 40)),
                                                             inverseScale(Vec3(1, 0.5, 2)))),
                               0.6)},
+      {"planar", bumpy(spec(T::planar), 0.8)},
+      {"planar_rotated",
+       bumpy(placed(spec(T::planar), then(inverseRotate(Vec3(0, 0, 40)), inverseScale(Vec3(1.5)))),
+             0.6)},
   };
 }
 

@@ -165,6 +165,10 @@ inline std::map<std::string, PatternSpec> patternCases() {
       {"gradient_rotate", placed(axis(spec(T::gradient), x), inverseRotate(Vec3(0, 0, 30)))},
       {"marble_scaled_turbulence",
        placed(turbulent(spec(T::marble), Vec3(0.5)), inverseScale(Vec3(2, 0.5, 1)))},
+      {"planar", spec(T::planar)},
+      {"planar_sine", tuned(waved(spec(T::planar), WaveShape::sine), 2, 0)},
+      {"planar_turbulence",
+       placed(turbulent(spec(T::planar), Vec3(0.4)), inverseRotate(Vec3(0, 0, 30)))},
   };
 }
 

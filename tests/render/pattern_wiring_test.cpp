@@ -174,3 +174,41 @@ TEST_CASE("a bumpy sphere casts the same shadow as a smooth one", "[render][patt
     CHECK(traceOne(a, down).r == traceOne(b, down).r);
   }
 }
+
+TEST_CASE("planar is 1 − |y| in its band and its normal a ridge along y = 0", "[render][pattern]") {
+  // POV-Ray 3.7's values (docs/povray-semantics.md, planar): a wall facing -z lit by its
+  // ambient alone shows 1 − |y|, 0 beyond |y| = 1; scaled by 2 the band is twice as wide.
+  auto wall = [](const std::string& pattern) {
+    return parse(R"XML(<render ambient="1"/><plane normal="0 0 -1" offset="0">
+      <material ambient="1">)XML" +
+                 pattern + R"XML(</material></plane>)XML");
+  };
+  auto grey = [](const Scene& scene, double y) {
+    World world(scene);
+    return traceOne(world, Ray(Vec3(0.3, y, -1), Vec3(0, 0, 1))).r;
+  };
+  auto plain = wall(R"X(<pattern type="planar"/>)X");
+  auto wide = wall(R"X(<pattern type="planar" transform="scale(2)"/>)X");
+  for (double y : {1.1, 0.9, 0.5, 0.1, -0.1, -0.7, -1.1}) {
+    INFO("y = " << y);
+    CHECK(grey(*plain, y) == Approx(std::abs(y) > 1 ? 0.0 : 1 - std::abs(y)).margin(1e-6));
+    CHECK(grey(*wide, y) == Approx(1 - std::abs(y) / 2).margin(1e-6));
+  }
+  // normal { planar 3 } under a parallel light from (0, 1, -1): POV-Ray renders 0.9191 above
+  // the plane y = 0, 0.3939 below and 0.7071 (unperturbed) beyond the band: the normal
+  // leans by 2·depth/15 towards ±y (the slope of the four-sample gradient).
+  auto ridge = parse(R"XML(<render ambient="0"/><plane normal="0 0 -1" offset="0">
+      <material diffuse="1"><normal type="planar" depth="3"/></material></plane>
+      <light type="directional" direction="0 -1 1"/>)XML");
+  World world(*ridge);
+  auto lit = [&](double y) { return traceOne(world, Ray(Vec3(0.3, y, -1), Vec3(0, 0, 1))).r; };
+  const double up = (0.4 + 1) / (std::sqrt(2.0) * std::sqrt(1.16));
+  const double down = (1 - 0.4) / (std::sqrt(2.0) * std::sqrt(1.16));
+  for (double y : {0.3, 0.5, 0.9}) CHECK(lit(y) == Approx(up).margin(1e-5));
+  for (double y : {-0.3, -0.5, -0.9}) CHECK(lit(y) == Approx(down).margin(1e-5));
+  CHECK(lit(1.5) == Approx(std::sqrt(0.5)).margin(1e-6));
+  CHECK(lit(-2.0) == Approx(std::sqrt(0.5)).margin(1e-6));
+  PovExport e = exportPov(*ridge, {});
+  REQUIRE(e.ok());
+  CHECK_THAT(e.text, Catch::Contains("planar 3"));
+}

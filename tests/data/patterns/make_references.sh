@@ -127,6 +127,9 @@ pattern_cases=(
   "bozo_transform|8|bozo scale 0.37 translate <1, 2, 3>"
   "gradient_rotate|8|gradient x rotate <0, 0, 30>"
   "marble_scaled_turbulence|8|marble turbulence 0.5 scale <2, 0.5, 1>"
+  "planar|2|planar"
+  "planar_sine|2|planar frequency 2 sine_wave"
+  "planar_turbulence|2|planar turbulence 0.4 rotate <0, 0, 30>"
 )
 color_cases=(
   "map_bozo|8|bozo color_map { [0.2 rgb <1, 0, 0>] [0.5 rgb <0, 1, 0.5>] [0.9 rgb <0.1, 0.2, 0.9>] }"
@@ -208,6 +211,8 @@ normal_cases=(
   "radial|radial 0.4 frequency 6"
   "spotted|spotted 0.5 noise_generator 3"
   "slope_rotated|granite 0.6 rotate <20, 30, 40> scale <1, 0.5, 2>"
+  "planar|planar 0.8"
+  "planar_rotated|planar 0.6 rotate <0, 0, 40> scale 1.5"
 )
 echo "case,i,j,r,g,b" >"$work/normals.csv"
 for c in "${normal_cases[@]}"; do
