@@ -1,11 +1,12 @@
 // <material> (contract, "<material>"): all attributes optional, colours default to 0,
-// shininess 64, ior 1. One texture child at most: <checker color1 color2 scale> or
-// <image src scale>; with a texture, diffuse defaults to 1 so the texture shows as it is.
+// shininess 64, ior 1. One texture child at most (texture_parser.h); with a texture,
+// diffuse defaults to 1 so the texture shows as it is.
 // base="id" starts from another material and overrides what is written; default="true"
 // makes a named material the one of shapes that have none.
 #include "element_parsers.h"
 #include "pattern_parser.h"
 #include "povray_names.h"
+#include "texture_parser.h"
 
 #include <algorithm>
 #include <functional>
@@ -18,65 +19,11 @@ const std::vector<std::string_view> kMaterialAttributes{
     "id",         "emissive",     "ambient",  "diffuse", "specular",   "shininess",
     "reflective", "transmissive", "ior",      "fresnel", "absorption", "phong",
     "phong-size", "brilliance",   "metallic", "base",    "default"};
-const std::vector<std::string_view> kTextureElements{"checker", "image", "pattern", "hexagon",
-                                                     "brick"};
-const std::vector<std::string_view> kMaterialChildren{"checker", "image",  "pattern", "hexagon",
-                                                      "brick",   "normal", "bump-map"};
-
-Texture parseImage(ElementReader& t);
-Texture parseChecker(ElementReader& t);
-
-Texture parseTexture(ElementReader& t) {
-  const std::string name = t.name();
-  if (name == "checker") return parseChecker(t);
-  if (name == "image") return parseImage(t);
-  if (name == "pattern") return parsePatternTexture(t);
-  if (name == "hexagon") return parseHexagonTexture(t);
-  return parseBrickTexture(t);
-}
-
-Texture parseChecker(ElementReader& t) {
-  t.checkAttributes({"color1", "color2", "scale"});
-  CheckerTexture c;
-  c.color1 = t.color("color1", c.color1);
-  c.color2 = t.color("color2", c.color2);
-  c.scale = t.number("scale", c.scale, NumberRule::positive());
-  t.forEachChild([&](pugi::xml_node n) {
-    ElementReader(t.ctx(), t.file(), n)
-        .error("<checker> takes no child elements, got <" + std::string(n.name()) + ">");
-  });
-  return c;
-}
-
-Texture parseImage(ElementReader& t) {
-  t.checkAttributes({"src", "scale"});
-  ImageTexture img;
-  img.loc = t.loc();
-  if (!t.has("src")) {
-    t.error("<image> needs a 'src' attribute (the image file)");
-  } else if (auto src = t.text("src")) {
-    FileAccess::Resolved f = t.ctx().files.resolve(*src, t.file().folder());
-    if (f.path.empty()) t.attrError("src", f.error);
-    else img.path = f.path.string();
-  }
-  if (auto s = t.text("scale")) {
-    auto list = parseNumberList(*s);
-    if (!list) {
-      t.attrError("scale", list.error);
-    } else if (list->size() != 2 && list->size() != 1) {
-      t.attrError("scale", "expected 2 numbers (u v) or 1, got " + std::to_string(list->size()));
-    } else {
-      Vec2 v = list->size() == 1 ? Vec2((*list)[0]) : Vec2((*list)[0], (*list)[1]);
-      if (v.x == 0.0 || v.y == 0.0)
-        t.attrError("scale", "the scale must not be zero, got '" + *s + "'");
-      else img.scale = v;
-    }
-  }
-  t.forEachChild([&](pugi::xml_node n) {
-    ElementReader(t.ctx(), t.file(), n)
-        .error("<image> takes no child elements, got <" + std::string(n.name()) + ">");
-  });
-  return img;
+// The texture elements (the table of texture kinds), then the normal perturbations.
+std::vector<std::string_view> materialChildren() {
+  std::vector<std::string_view> names = textureElements();
+  names.insert(names.end(), {"normal", "bump-map"});
+  return names;
 }
 
 // Finds the material a base= names (reading it first when it comes later in the file).
@@ -147,12 +94,12 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
       else m.bumpMap = parseBumpMap(t);
       return;
     }
-    if (std::find(kTextureElements.begin(), kTextureElements.end(), name) ==
-        kTextureElements.end()) {
+    const std::vector<std::string_view> textures = textureElements();
+    if (std::find(textures.begin(), textures.end(), name) == textures.end()) {
       std::string pov = povrayElementHint("material", name);
-      t.error("<material> may hold a texture (" + elementList(kTextureElements) +
+      t.error("<material> may hold a texture (" + elementList(textures) +
               ") and a <normal> or <bump-map>, not <" + std::string(name) + ">" +
-              (pov.empty() ? didYouMean(name, kMaterialChildren) : pov));
+              (pov.empty() ? didYouMean(name, materialChildren()) : pov));
       return;
     }
     if (textureLoc) {

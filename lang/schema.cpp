@@ -5,6 +5,7 @@
 #include "scenegraph/light.h"
 #include "scenegraph/pattern.h"
 #include "scenegraph/shape_registry.h"
+#include "scenegraph/texture_spec.h"
 
 #include <fmt/format.h>
 
@@ -157,6 +158,18 @@ std::string patternTypesXsd(bool colour) {
   return out;
 }
 
+// The texture kinds a <material> takes as its colour child, from the texture table.
+std::string textureElementsXsd() {
+  std::string out;
+  for (const TextureKindInfo& k : textureKinds())
+    out += fmt::format(
+        "      <xs:element name=\"{0}\" type=\"{0}Type\">\n"
+        "        <xs:annotation><xs:documentation>{1}</xs:documentation></xs:annotation>\n"
+        "      </xs:element>\n",
+        k.element, escaped(k.doc));
+  return out;
+}
+
 std::string lightAttributesXsd() {
   std::string out;
   for (const LightAttribute& a : lightAttributes()) out += attributeXsd(a.info, 4);
@@ -187,6 +200,7 @@ std::string schemaText() {
   replaceOnce(text, "@LIGHT_ATTRIBUTES@", lightAttributesXsd());
   replaceOnce(text, "@COLOUR_PATTERNS@", patternTypesXsd(true));
   replaceOnce(text, "@NORMAL_PATTERNS@", patternTypesXsd(false));
+  replaceOnce(text, "@TEXTURE_ELEMENTS@", textureElementsXsd());
   return text;
 }
 

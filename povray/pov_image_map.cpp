@@ -100,7 +100,7 @@ void writeImagePigment(const ImageTexture& image, double filter, double transmit
   }
 
   std::string absolute = std::filesystem::absolute(image.path).lexically_normal().string();
-  std::string map = fmt::format("image_map {{ {} {}", format, povString(absolute));
+  std::string map = fmt::format("{} {{ {} {}", ImageTexture::kind.pov, format, povString(absolute));
   if (!facts.floating) map += facts.srgb ? " gamma srgb" : " gamma 1.0";
   if (mapping.kind == ImageMapping::Spherical) map += " map_type 1";
   map += " interpolate 2";

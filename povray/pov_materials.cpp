@@ -1,5 +1,6 @@
 #include "pov_materials.h"
 #include "pov_patterns.h"
+#include "scenegraph/overloaded.h"
 #include "scenegraph/shape_registry.h"
 
 #include <fmt/core.h>
@@ -286,31 +287,40 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, con
                                 const SourceLoc* loc, PovWriter& out, PovIssues* issues) const {
   const Material& m = materials_[index];
   const PovSurface& s = surface(index);
-  const auto* checker = std::get_if<CheckerTexture>(&m.texture);
-  const auto* image = std::get_if<ImageTexture>(&m.texture);
-
-  if (s.useTexture && checker) {
-    // Cells of edge `scale`; the cell [0, scale)^3 has the first colour, as in Lucent.
-    out.open("pigment");
-    out.line("checker");
-    out.line(povRgbft(s.pigmentScale * v3(checker->color1), s.filter, s.transmit) + ",");
-    out.line(povRgbft(s.pigmentScale * v3(checker->color2), s.filter, s.transmit));
-    if (checker->scale != 1.0) out.line("scale " + povNumber(checker->scale));
-    out.close();
-  } else if (s.useTexture && image && mapping) {
-    writeImagePigment(*image, s.filter, s.transmit, *mapping, shapeName, *loc, materialLabel(m),
-                      out, *issues);
-  } else if (const auto* pattern = std::get_if<PatternTexture>(&m.texture);
-             s.useTexture && pattern) {
-    writePatternPigment(*pattern, s.pigmentScale, s.filter, s.transmit, out);
-  } else if (const auto* hexagon = std::get_if<HexagonTexture>(&m.texture);
-             s.useTexture && hexagon) {
-    writeHexagonPigment(*hexagon, s.pigmentScale, s.filter, s.transmit, out);
-  } else if (const auto* brick = std::get_if<BrickTexture>(&m.texture); s.useTexture && brick) {
-    writeBrickPigment(*brick, s.pigmentScale, s.filter, s.transmit, out);
-  } else {
+  // The pigment of each kind of texture (std::visit needs every kind); a material whose
+  // texture POV-Ray cannot show (useTexture false, an image without a mapping) gets its
+  // plain colour.
+  auto plain = [&] {
     out.line("pigment { " + povRgbft(s.pigmentScale, s.filter, s.transmit) + " }");
-  }
+  };
+  auto pigment = Overloaded{
+      [&](std::monostate) { plain(); },
+      [&](const CheckerTexture& checker) {
+        // Cells of edge `scale`; the cell [0, scale)^3 has the first colour, as in Lucent.
+        out.open("pigment");
+        out.line(std::string(CheckerTexture::kind.pov));
+        out.line(povRgbft(s.pigmentScale * v3(checker.color1), s.filter, s.transmit) + ",");
+        out.line(povRgbft(s.pigmentScale * v3(checker.color2), s.filter, s.transmit));
+        if (checker.scale != 1.0) out.line("scale " + povNumber(checker.scale));
+        out.close();
+      },
+      [&](const ImageTexture& image) {
+        if (!mapping) return plain();
+        writeImagePigment(image, s.filter, s.transmit, *mapping, shapeName, *loc, materialLabel(m),
+                          out, *issues);
+      },
+      [&](const PatternTexture& pattern) {
+        writePatternPigment(pattern, s.pigmentScale, s.filter, s.transmit, out);
+      },
+      [&](const HexagonTexture& hexagon) {
+        writeHexagonPigment(hexagon, s.pigmentScale, s.filter, s.transmit, out);
+      },
+      [&](const BrickTexture& brick) {
+        writeBrickPigment(brick, s.pigmentScale, s.filter, s.transmit, out);
+      },
+  };
+  if (s.useTexture) std::visit(pigment, m.texture);
+  else plain();
   if (m.normal) writeNormal(*m.normal, out);
   if (m.bumpMap && mapping)
     writeBumpMapNormal(*m.bumpMap, *mapping, shapeName, *loc, materialLabel(m), out, *issues);

@@ -81,7 +81,7 @@ void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filt
 void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filter, double transmit,
                          PovWriter& out) {
   out.open("pigment");
-  out.line("hexagon");
+  out.line(std::string(HexagonTexture::kind.pov));
   for (int i = 0; i < 3; ++i)
     out.line(colour(t.spec.colors[i], scale, filter, transmit) + (i < 2 ? "," : ""));
   writePlacement(t.placement, out);
@@ -91,7 +91,7 @@ void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filt
 void writeBrickPigment(const BrickTexture& t, const Vec3& scale, double filter, double transmit,
                        PovWriter& out) {
   out.open("pigment");
-  out.line("brick");
+  out.line(std::string(BrickTexture::kind.pov));
   out.line(colour(t.spec.color1, scale, filter, transmit) + ",");
   out.line(colour(t.spec.color2, scale, filter, transmit));
   out.line("brick_size " + povVector(t.spec.size) + " mortar " + povNumber(t.spec.mortar));

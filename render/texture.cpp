@@ -123,27 +123,43 @@ void checkImageTextures(const std::vector<Material>& materials) {
   }
 }
 
-Color TextureSet::eval(uint32_t index, const Material& material, const SurfaceInfo& surface,
-                       const Instance& leaf) const {
-  if (const auto* checker = std::get_if<CheckerTexture>(&material.texture)) {
+namespace {
+
+// The colour of each kind of texture at a surface point: std::visit needs every kind.
+struct TextureColour {
+  const std::shared_ptr<const ImageMap>& map;
+  const SurfaceInfo& surface;
+  const Instance& leaf;
+
+  Color operator()(std::monostate) const { return Color(1.0f); }
+  Color operator()(const CheckerTexture& checker) const {
     // The world error bound carried back into object space (|M^-1| applied to it).
     const Mat4& m = leaf.transform().objectFromWorld();
     Vec3 err(0.0);
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) err[r] += std::abs(m[c][r]) * surface.pError[c];
-    return checkerColor(*checker, surface.pObject, err);
+    return checkerColor(checker, surface.pObject, err);
   }
-  if (const auto* image = std::get_if<ImageTexture>(&material.texture)) {
+  Color operator()(const ImageTexture& image) const {
     // A shape without (u,v) reads the image at (0,0): one flat colour.
-    return maps_[index]->lookup(surface.hasUV ? surface.uv : Vec2(0.0), image->scale);
+    return map->lookup(surface.hasUV ? surface.uv : Vec2(0.0), image.scale);
   }
-  if (const auto* pattern = std::get_if<PatternTexture>(&material.texture))
-    return lookupColorMap(pattern->map, patternValue(pattern->pattern, surface.pObject));
-  if (const auto* hexagon = std::get_if<HexagonTexture>(&material.texture))
-    return hexagonColor(hexagon->spec, warpPoint(hexagon->placement, surface.pObject));
-  if (const auto* brick = std::get_if<BrickTexture>(&material.texture))
-    return brickColor(brick->spec, warpPoint(brick->placement, surface.pObject));
-  return Color(1.0f);
+  Color operator()(const PatternTexture& pattern) const {
+    return lookupColorMap(pattern.map, patternValue(pattern.pattern, surface.pObject));
+  }
+  Color operator()(const HexagonTexture& hexagon) const {
+    return hexagonColor(hexagon.spec, warpPoint(hexagon.placement, surface.pObject));
+  }
+  Color operator()(const BrickTexture& brick) const {
+    return brickColor(brick.spec, warpPoint(brick.placement, surface.pObject));
+  }
+};
+
+}  // namespace
+
+Color TextureSet::eval(uint32_t index, const Material& material, const SurfaceInfo& surface,
+                       const Instance& leaf) const {
+  return std::visit(TextureColour{maps_[index], surface, leaf}, material.texture);
 }
 
 }  // namespace lucent

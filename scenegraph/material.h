@@ -1,8 +1,10 @@
-// Materials of the Trace shading model (the contract's <material>) and their textures.
+// Materials of the Trace shading model (the contract's <material>); their textures are in
+// texture_spec.h.
 #pragma once
 
 #include "pattern.h"
 #include "source_loc.h"
+#include "texture_spec.h"
 
 #include "primitives/math.h"
 
@@ -13,39 +15,6 @@
 
 namespace lucent {
 
-// <checker color1 color2 scale>: a solid 3-D checker in the shape's object space;
-// the cube [0, scale)^3 has color1.
-struct CheckerTexture {
-  Color color1{1.0f};
-  Color color2{0.0f};
-  double scale = 1.0;
-};
-
-// <image src scale>: an image looked up with the shape's (u,v). The pixels are loaded by
-// the renderer; the scene keeps the resolved path.
-struct ImageTexture {
-  std::string path;  // resolved, absolute or relative to the working directory
-  Vec2 scale{1.0, 1.0};
-  SourceLoc loc;
-};
-
-// <pattern type>: a procedural pattern's value turned into a colour by its colour map (an
-// empty map: the value is the grey level).
-struct PatternTexture {
-  PatternSpec pattern;
-  ColorMap map;
-};
-
-// <hexagon> and <brick>: block patterns with colours of their own.
-struct HexagonTexture {
-  HexagonSpec spec;
-  PatternPlacement placement;
-};
-struct BrickTexture {
-  BrickSpec spec;
-  PatternPlacement placement;
-};
-
 // <bump-map src depth>: POV-Ray's bump_map read at the shape's (u,v): the shading normal
 // bent by the image's grey levels (render/bump_map.h). The renderer loads the pixels.
 struct BumpMapSpec {
@@ -53,9 +22,6 @@ struct BumpMapSpec {
   double depth = 0.5;  // POV-Ray's bump_size
   SourceLoc loc;
 };
-
-using Texture = std::variant<std::monostate, CheckerTexture, ImageTexture, PatternTexture,
-                             HexagonTexture, BrickTexture>;
 
 struct Material {
   std::string id;  // empty for inline materials
