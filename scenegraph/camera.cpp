@@ -110,6 +110,16 @@ void writeFisheye(const Camera& camera, PovCameraOut& out) {
   out.line("angle " + out.number(camera.fov));
 }
 
+// POV-Ray's longitude turns about up whatever the sign of `right`, and its latitude about
+// right: with `right -x` alone the image would come out turned by 180 degrees. A reversed
+// sky turns POV-Ray's up (and with `right -x`, its right) over, which puts +right at 3/4 of
+// the width and up at the top, as the renderer does.
+void writeSpherical(const Camera& camera, PovCameraOut& out) {
+  out.line("angle " + out.number(camera.hAngle) + ", " + out.number(camera.vAngle));
+  out.line("right -x");
+  out.line("up y");
+}
+
 const NumberRule kFovBelow180 =
     NumberRule::between(0.0, 180.0, "an angle between 0 and 180", true, true);
 
@@ -172,6 +182,14 @@ std::optional<CameraTypeInfo> row(CameraType t) {
       r.doc =
           "Pixel k (row-major) looks along the k-th of width×height Fibonacci-sphere "
           "directions.";
+      return r;
+    case CameraType::Spherical:
+      r.name = "spherical";
+      r.doc =
+          "Latitude-longitude (equirectangular) image, POV-Ray's spherical camera: h-angle "
+          "degrees of longitude across, v-angle of latitude down.";
+      r.noFov = "their 'h-angle' and 'v-angle' frame the image";
+      r.pov = {"spherical", "spherical", writeSpherical, true};
       return r;
   }
   return std::nullopt;
@@ -343,11 +361,13 @@ const std::vector<CameraAttribute>& cameraAttributes() {
       readByLanguage("transform", AttrType::Text, "transform", "",
                      "Transform applied to the camera after position/look-at/up. Default: none."),
       // Each type's range (CameraTypeInfo::fov); the schema's is the widest.
-      schemaType(entry("fov", AttrType::Number, fmt::format("{}", Camera{}.fov), {}, readFov,
-                       "Field of view in degrees along fov-axis. Pinhole and thin-lens: below "
-                       "180; fisheye: up to 360; panini: below 360 and limited by distance. Not "
-                       "used by orthographic (width), octahedral, cubemap, fibonacci."),
-                 "fieldOfView"),
+      schemaType(
+          entry("fov", AttrType::Number, fmt::format("{}", Camera{}.fov), {}, readFov,
+                "Field of view in degrees along fov-axis. Pinhole and thin-lens: below "
+                "180; fisheye: up to 360; panini: below 360 and limited by distance. Not "
+                "used by orthographic (width), octahedral, cubemap, fibonacci, spherical (h-angle, "
+                "v-angle)."),
+          "fieldOfView"),
       [] {
         CameraAttribute a = choice("fov-axis", &Camera::fovAxis, kFovAxes, "fovAxis", {},
                                    "Image axis the fov spans: horizontal | vertical | diagonal.");
@@ -393,6 +413,27 @@ const std::vector<CameraAttribute>& cameraAttributes() {
              "lenslet: world units between lens centres. Default 0.1."),
       choice("layout", &Camera::layout, {"cross", "strip"}, "cubemapLayout", {T::Cubemap},
              "cubemap: cross (4×3, default) | strip (6×1)."),
+      schemaType(number("h-angle", &Camera::hAngle,
+                        NumberRule::between(0.0, 360.0, "an angle above 0 and at most 360", true),
+                        {T::Spherical},
+                        "spherical: degrees of longitude across the image, centred on the view "
+                        "direction: the left edge at -h-angle/2, the right edge at +h-angle/2, "
+                        "right at +90; above 0, at most 360. Default 360."),
+                 "fieldOfView"),
+      // After h-angle, whose half is its default.
+      [] {
+        const NumberRule rule =
+            NumberRule::between(0.0, 180.0, "an angle above 0 and at most 180", true);
+        CameraAttribute a = number("v-angle", &Camera::vAngle, rule, {T::Spherical},
+                                   "spherical: degrees of latitude down the image, centred on "
+                                   "the view direction: the top edge at +v-angle/2 (towards up), "
+                                   "the bottom edge at -v-angle/2; above 0, at most 180. "
+                                   "Default: half of h-angle (180).");
+        a.read = [rule](Camera& c, AttributeInput& in) {
+          c.vAngle = in.number("v-angle", 0.5 * c.hAngle, rule);
+        };
+        return a;
+      }(),
   };
   return table;
 }

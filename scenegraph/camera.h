@@ -28,7 +28,8 @@ enum class CameraType {
   Lenslet,
   Octahedral,
   Cubemap,
-  Fibonacci
+  Fibonacci,
+  Spherical
 };
 enum class FovAxis { Horizontal, Vertical, Diagonal };
 enum class FisheyeMapping { Equidistant, Equisolid };
@@ -64,6 +65,10 @@ struct Camera {
   double pitch = 0.1;
   // cubemap
   CubemapLayout layout = CubemapLayout::Cross;
+  // spherical: degrees of longitude across the image and of latitude down it (the parser
+  // makes vAngle hAngle / 2 unless it is given, as POV-Ray's `angle H` does)
+  double hAngle = 360.0;
+  double vAngle = 180.0;
 };
 
 // The exporter's side of writing one camera's POV-Ray block (povray/pov_camera.cpp
