@@ -2,6 +2,7 @@
 
 #include "schema_template.h"  // kSchemaTemplate, made by CMake from schema_template.xsd
 
+#include "scenegraph/camera.h"
 #include "scenegraph/light.h"
 #include "scenegraph/pattern.h"
 #include "scenegraph/shape_registry.h"
@@ -134,6 +135,24 @@ std::string shapeTypesXsd() {
   return out;
 }
 
+// The camera types as the enumeration of cameraTypeLiteral, each with its line of
+// documentation.
+std::string cameraTypesXsd() {
+  std::string out;
+  for (const CameraTypeInfo& t : cameraTypes())
+    out += fmt::format(
+        "      <xs:enumeration value=\"{}\"><xs:annotation><xs:documentation>{}</xs:documentation>"
+        "</xs:annotation></xs:enumeration>\n",
+        t.name, escaped(t.doc));
+  return out;
+}
+
+std::string cameraAttributesXsd() {
+  std::string out;
+  for (const CameraAttribute& a : cameraAttributes()) out += attributeXsd(a.info, 4);
+  return out;
+}
+
 // The light types as the enumeration of lightTypeLiteral, each with its line of documentation.
 std::string lightTypesXsd() {
   std::string out;
@@ -196,6 +215,8 @@ std::string schemaText() {
   replaceOnce(text, "@SHAPE_XPATH@", shapeXpath());
   replaceOnce(text, "@SHAPE_ELEMENTS@", shapeElements());
   replaceOnce(text, "@SHAPE_TYPES@", shapeTypesXsd());
+  replaceOnce(text, "@CAMERA_TYPES@", cameraTypesXsd());
+  replaceOnce(text, "@CAMERA_ATTRIBUTES@", cameraAttributesXsd());
   replaceOnce(text, "@LIGHT_TYPES@", lightTypesXsd());
   replaceOnce(text, "@LIGHT_ATTRIBUTES@", lightAttributesXsd());
   replaceOnce(text, "@COLOUR_PATTERNS@", patternTypesXsd(true));

@@ -1,5 +1,6 @@
-// The camera block: pinhole -> perspective, orthographic, fisheye (equidistant); other
-// camera types have no POV-Ray equivalent and are errors.
+// The camera block, written through the camera table (scenegraph/camera.h): each type's row
+// gives POV-Ray's keyword and the lines of its parameters; a type without a POV-Ray twin is
+// an error that lists those that have one.
 #pragma once
 
 #include "pov_writer.h"
@@ -20,13 +21,10 @@ struct PovCameraFrame {
 };
 PovCameraFrame povCameraFrame(const Camera& camera);
 
-// The full horizontal field of view (degrees) of a pinhole camera on a width x height
-// image, whatever its fov-axis (POV-Ray's `angle` spans the `right` vector).
-double horizontalFovDegrees(const Camera& camera, int width, int height);
-
-// Writes `camera { ... }`. POV-Ray is left-handed; our world is right-handed with +y up, so
-// `right -x*W/H` (negative handedness) makes look_at compute right = forward × sky, the
-// renderer's frame, with every world coordinate unchanged.
+// Writes `camera { ... }`: the row's keyword and lines, then location, sky and look_at.
+// POV-Ray is left-handed; our world is right-handed with +y up, so the rows write
+// `right -x*...` (negative handedness), which makes look_at compute right = forward × sky,
+// the renderer's frame, with every world coordinate unchanged.
 void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& out,
                  PovIssues& issues);
 

@@ -12,7 +12,43 @@
 
 #include <fmt/core.h>
 
+#include <cmath>
+
 namespace lucent {
+
+namespace {
+
+// The spherical camera, POV-Ray 3.7's `spherical`: a latitude-longitude (equirectangular)
+// image. XML:
+//   <camera type="spherical" h-angle="360" v-angle="180"/>
+// Film x spans longitudes -h-angle/2 to +h-angle/2 from the left edge to the right, film y
+// latitudes +v-angle/2 to -v-angle/2 from the top edge to the bottom; the image centre looks
+// forward. The direction at longitude lon and latitude lat is
+//   cos(lat) (cos(lon) forward + sin(lon) right) + sin(lat) up,
+// POV-Ray's rotation of the view direction about right by -lat, then about up by lon: with
+// the default 360 x 180, +right is at 3/4 of the width and up along the top row. The aspect
+// ratio plays no part (a square image stretches longitude). Every pixel has a ray.
+class SphericalProjection final : public Projection {
+ public:
+  SphericalProjection(const CameraFrame& frame, const Camera& camera, int width, int height)
+      : Projection(frame, camera, width, height),
+        lonPerPixel_(radians(camera.hAngle) / width),
+        latPerPixel_(radians(camera.vAngle) / height) {}
+
+  bool generateRay(const Vec2& film, const Vec2&, Ray& ray) const override {
+    const double lon = (film.x - 0.5 * width_) * lonPerPixel_;
+    const double lat = (0.5 * height_ - film.y) * latPerPixel_;
+    const double c = std::cos(lat);
+    const Vec3 local(c * std::sin(lon), std::sin(lat), c * std::cos(lon));
+    ray = primaryRay(frame_.origin, glm::normalize(frame_.toWorld(local)));
+    return true;
+  }
+
+ private:
+  double lonPerPixel_, latPerPixel_;  // radians
+};
+
+}  // namespace
 
 // The one table from camera type to ray generator (style: no self-registration).
 std::unique_ptr<Projection> makeProjection(const Camera& camera, int width, int height) {
@@ -38,6 +74,8 @@ std::unique_ptr<Projection> makeProjection(const Camera& camera, int width, int 
       return std::make_unique<CubemapProjection>(frame, camera, width, height);
     case CameraType::Fibonacci:
       return std::make_unique<FibonacciProjection>(frame, camera, width, height);
+    case CameraType::Spherical:
+      return std::make_unique<SphericalProjection>(frame, camera, width, height);
   }
   throw std::logic_error(fmt::format("{}: camera type {} has no projection", camera.loc.str(),
                                      static_cast<int>(camera.type)));

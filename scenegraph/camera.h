@@ -1,14 +1,24 @@
-// Camera descriptions of the contract's <camera>; render/ turns them into ray generators.
+// Camera descriptions of the contract's <camera>, and the table of camera types and <camera>
+// attributes (camera.cpp) that the parser, the schema, `lucent check` and the POV-Ray
+// exporter read; render/ turns a Camera into a ray generator (render/projection.h).
 #pragma once
 
+#include "attribute_info.h"
 #include "source_loc.h"
 
 #include "primitives/math.h"
 
+#include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace lucent {
 
+// A new type: its row and attributes in camera.cpp (the rows are an exhaustive switch, so a
+// type without its row does not compile) and its projection in render/projection.cpp (an
+// exhaustive switch too); docs/architecture.md, "The camera table".
 enum class CameraType {
   Pinhole,
   ThinLens,
@@ -18,7 +28,8 @@ enum class CameraType {
   Lenslet,
   Octahedral,
   Cubemap,
-  Fibonacci
+  Fibonacci,
+  Spherical
 };
 enum class FovAxis { Horizontal, Vertical, Diagonal };
 enum class FisheyeMapping { Equidistant, Equisolid };
@@ -54,8 +65,78 @@ struct Camera {
   double pitch = 0.1;
   // cubemap
   CubemapLayout layout = CubemapLayout::Cross;
+  // spherical: degrees of longitude across the image and of latitude down it (the parser
+  // makes vAngle hAngle / 2 unless it is given, as POV-Ray's `angle H` does)
+  double hAngle = 360.0;
+  double vAngle = 180.0;
 };
 
-const char* cameraTypeName(CameraType t);
+// The exporter's side of writing one camera's POV-Ray block (povray/pov_camera.cpp
+// implements it): the image the camera frames, POV-Ray's number syntax, and where a row's
+// writer puts its lines or says why the camera cannot be written.
+class PovCameraOut {
+ public:
+  virtual ~PovCameraOut() = default;
+  virtual int width() const = 0;  // pixels
+  virtual int height() const = 0;
+  virtual Color background() const = 0;
+  virtual std::string number(double v) const = 0;
+  // One line of the block, after the type's keyword and before the frame.
+  virtual void line(std::string_view text) = 0;
+  // An export error at the camera (then no block is written) or a warning.
+  virtual void error(const std::string& message) = 0;
+  virtual void warning(const std::string& message) = 0;
+};
+
+// How a camera type is written for POV-Ray 3.7. The exporter writes `camera {`, the
+// keyword, the writer's lines, the frame (location, sky, look_at after the camera's
+// transform) and `}`; a type whose keyword is "" has no POV-Ray twin (an export error).
+struct PovCamera {
+  std::string_view keyword;  // "perspective"
+  std::string_view listed;   // how the export error lists it among those that can be written
+  std::function<void(const Camera&, PovCameraOut&)> write;
+  // The frame's sky written as -up: for a POV-Ray camera that turns its rays about up
+  // whatever the sign of `right`, so that `right -x` alone cannot make it right-handed.
+  bool reversedSky;
+};
+
+struct CameraTypeInfo {
+  CameraType type;
+  std::string_view name;  // type="..."
+  std::string_view doc;   // one line, for the schema
+  // fov's range where a field of view frames the image. Without one, fov and fov-axis have
+  // no effect and draw a warning, which ends with noFov (what frames the image) if given.
+  std::optional<NumberRule> fov;
+  std::string_view noFov;
+  // Checks between the type's attributes once every attribute is read (a panini's fov
+  // against its distance); may be empty.
+  std::function<void(const Camera&, AttributeInput&)> check;
+  PovCamera pov;
+};
+// One row per type, in CameraType's order.
+const std::vector<CameraTypeInfo>& cameraTypes();
+const CameraTypeInfo& cameraTypeInfo(CameraType type);
+const char* cameraTypeName(CameraType type);
+
+// An attribute of <camera>, the types that take it (every type when empty), and how it is
+// read into the camera, whose type is already set.
+struct CameraAttribute {
+  AttributeInfo info;
+  std::vector<CameraType> types;
+  // Null for the attributes the scene language reads itself: type (first, as it decides
+  // the others), name (unique among the scene's cameras) and transform (its syntax).
+  std::function<void(Camera&, AttributeInput&)> read;
+  bool takenBy(CameraType t) const;
+};
+// Every attribute <camera> takes, in the schema's order, which is the order they are read.
+const std::vector<CameraAttribute>& cameraAttributes();
+
+// The checks between attributes every camera needs (a frame: look-at away from the
+// position, up not along the view), then its type's own, once all are read.
+void checkCamera(const Camera& camera, AttributeInput& in);
+
+// The full horizontal field of view (degrees) of a pinhole camera on a width x height
+// image, whatever its fov-axis (POV-Ray's `angle` spans the `right` vector).
+double horizontalFovDegrees(const Camera& camera, int width, int height);
 
 }  // namespace lucent

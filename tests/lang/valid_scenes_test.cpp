@@ -131,7 +131,7 @@ TEST_CASE("lang: the contract's example scene parses into its graph", "[lang][va
 TEST_CASE("lang: every camera type keeps its own attributes and the common defaults",
           "[lang][valid]") {
   auto s = load("cameras.xml");
-  REQUIRE(s->cameras.size() == 9);
+  REQUIRE(s->cameras.size() == 11);
   const Camera& main = *s->findCamera("main");
   CHECK(main.type == CameraType::Pinhole);
   CHECK(main.fov == 50.0);
@@ -173,6 +173,14 @@ TEST_CASE("lang: every camera type keeps its own attributes and the common defau
   CHECK(fib.position == Vec3(0.0));
   CHECK(fib.lookAt == Vec3(0, 0, -1));
   CHECK(fib.transform == rows({1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1}));
+  // v-angle is half of h-angle unless given.
+  const Camera& pano = *s->findCamera("pano");
+  CHECK(pano.type == CameraType::Spherical);
+  CHECK(pano.hAngle == 200.0);
+  CHECK(pano.vAngle == 100.0);
+  const Camera& band = *s->findCamera("band");
+  CHECK(band.hAngle == 360.0);
+  CHECK(band.vAngle == 60.0);
   CHECK(s->findCamera("") == &s->cameras[0]);
 }
 

@@ -73,6 +73,35 @@ TEST_CASE("orthographic and fisheye cameras keep explicit right and up", "[povra
   CHECK(full.has("  fisheye\n  right -x*0.8\n  up y*0.6\n  angle 150\n"));
 }
 
+TEST_CASE("a spherical camera is POV-Ray's spherical with both angles and the sky reversed",
+          "[povray][camera]") {
+  // POV-Ray turns the longitude about up whatever the sign of right, and the latitude about
+  // right: `right -x` with the sky reversed puts +right at 3/4 of the width and up at the
+  // top, as the renderer does (checked against POV-Ray 3.7 by gallery/camera-spherical).
+  Exported e = exportScene(R"XML(<render width="400" height="200"/>
+      <camera type="spherical" position="0 1 5" look-at="0 1 0" h-angle="300"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.messages().empty());
+  CHECK(
+      e.has("camera {\n"
+            "  spherical\n"
+            "  angle 300, 150\n"
+            "  right -x\n"
+            "  up y\n"
+            "  location <0, 1, 5>\n"
+            "  sky <0, -1, 0>\n"
+            "  look_at <0, 1, 0>\n"
+            "}\n"));
+
+  // The sky is the renderer's up after the camera's transform, reversed.
+  Exported turned = exportScene(R"XML(<camera type="spherical" v-angle="90" up="0 1 0"
+      transform="rotate-z(90)"/>)XML");
+  REQUIRE(turned.pov.ok());
+  CHECK(
+      turned.has("  angle 360, 90\n  right -x\n  up y\n  location <0, 0, 0>\n"
+                 "  sky <1, 0, 0>\n  look_at <0, 0, -1>\n"));
+}
+
 TEST_CASE("cameras POV-Ray cannot express are errors naming the element and location",
           "[povray][camera]") {
   Exported lens =
@@ -82,7 +111,7 @@ TEST_CASE("cameras POV-Ray cannot express are errors naming the element and loca
   REQUIRE(lens.pov.issues.size() == 1);
   CHECK(lens.pov.issues[0].str() ==
         "test.xml:2:1: error: <camera type=\"thin-lens\">: POV-Ray has no equivalent camera "
-        "(pinhole, orthographic and equidistant fisheye can be exported)");
+        "(pinhole, orthographic, equidistant fisheye and spherical can be exported)");
 
   Exported equisolid = exportScene(R"XML(<camera type="fisheye" mapping="equisolid"/>)XML");
   REQUIRE(equisolid.pov.issues.size() == 1);
@@ -144,7 +173,7 @@ TEST_CASE("every camera type without a POV-Ray twin is refused by name, with no 
     CHECK_FALSE(e.pov.ok());
     CHECK(e.pov.text.empty());
     CHECK(e.messages() == "test.xml:2:1: error: <camera type=\"" + type +
-                              "\">: POV-Ray has no equivalent camera (pinhole, orthographic and "
-                              "equidistant fisheye can be exported)\n");
+                              "\">: POV-Ray has no equivalent camera (pinhole, orthographic, "
+                              "equidistant fisheye and spherical can be exported)\n");
   }
 }

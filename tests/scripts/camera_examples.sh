@@ -30,11 +30,12 @@ for f in "$src"/examples/cameras/*.xml; do
   grep -q "images/cameras/$name.png" "$src/docs/cameras.md" || fail "docs/cameras.md does not show $name.png"
 done
 # One example per camera type of the contract.
-for type in pinhole thin-lens orthographic fisheye panini lenslet octahedral cubemap fibonacci; do
+for type in pinhole thin-lens orthographic fisheye panini lenslet octahedral cubemap fibonacci \
+  spherical; do
   if [ "$type" = pinhole ]; then pattern='<camera position'; else pattern="type=\"$type\""; fi
   grep -l -q "$pattern" "$src"/examples/cameras/*.xml || fail "no example uses a $type camera"
 done
-[ "$count" -ge 9 ] || fail "only $count camera examples"
+[ "$count" -ge 10 ] || fail "only $count camera examples"
 
 # Sizes and angles a camera cannot frame are invalid scenes (exit 2) located at the camera,
 # and an existing output is left as it was.
