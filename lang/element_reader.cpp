@@ -141,9 +141,9 @@ long long ElementReader::integer(const char* attr, long long def, long long min,
     return def;
   }
   if (*n < min || *n > max) {
-    std::string expected = max >= (1LL << 40) ? "a whole number >= " + std::to_string(min)
-                                              : "a whole number from " + std::to_string(min) +
-                                                    " to " + std::to_string(max);
+    std::string expected = max >= kNoIntegerLimit ? "a whole number >= " + std::to_string(min)
+                                                  : "a whole number from " + std::to_string(min) +
+                                                        " to " + std::to_string(max);
     attrError(attr, "expected " + expected + ", got " + quote(*t));
     return def;
   }

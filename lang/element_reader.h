@@ -51,7 +51,8 @@ class ElementReader {
   double number(const char* attr, double def, const NumberRule& rule = NumberRule::any());
   std::optional<double> optionalNumber(const char* attr,
                                        const NumberRule& rule = NumberRule::any());
-  long long integer(const char* attr, long long def, long long min, long long max = 1LL << 40);
+  long long integer(const char* attr, long long def, long long min,
+                    long long max = kNoIntegerLimit);
   Vec3 vector(const char* attr, const Vec3& def);
   // A direction: not zero, returned normalised.
   Vec3 direction(const char* attr, const Vec3& def);

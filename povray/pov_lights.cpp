@@ -6,15 +6,6 @@
 
 namespace lucent {
 
-namespace {
-
-// POV-Ray averages an area light's shadow samples by recursive 4-corner subdivision: the
-// weights are uniform (as Lucent's plain average) only for 2, 4, 8, ... samples per axis;
-// 3 gives ¼ ½ ¼, 5 gives 1 2 2 2 1 / 8 (checked by rendering with povray 3.7.0.10).
-bool povAveragesUniformly(int n) { return n >= 2 && (n & (n - 1)) == 0; }
-
-}  // namespace
-
 PovFade povFade(const Vec3& abc) {
   const double a = abc.x, b = abc.y, c = abc.z;
   PovFade f;
@@ -53,24 +44,37 @@ PovFade povFade(const Vec3& abc) {
 
 namespace {
 
+// What a light's row writes through (scenegraph/light.h): lines of the open light_source,
+// warnings at the light.
+class LightOut final : public PovLightOut {
+ public:
+  LightOut(const Light& light, PovWriter& out, PovIssues& issues)
+      : light_(light), out_(out), issues_(issues) {}
+  void line(std::string_view text) override { out_.line(text); }
+  std::string number(double v) const override { return povNumber(v); }
+  std::string vector(const Vec3& v) const override { return povVector(v); }
+  void warning(const std::string& message) override { issues_.warning(light_.loc, message); }
+
+ private:
+  const Light& light_;
+  PovWriter& out_;
+  PovIssues& issues_;
+};
+
 // POV-Ray's parallel light: L = normalize(position − point_at) everywhere.
-void writeParallel(const Light& light, PovWriter& out) {
+void writeParallel(const Light& light, PovWriter& out, PovLightOut& row) {
   Vec3 dir = glm::normalize(light.direction);
-  out.open("light_source");
   out.line(povVector(-dir * kParallelLightDistance));
   out.line("color " + povRgb(light.radiance()));
-  out.line(lightTypeInfo(LightType::Directional).pov);
+  lightTypeInfo(light.type).writePov(light, row);
   out.line("point_at <0, 0, 0>");
-  if (!light.shadows) out.line("shadowless");
-  out.close();
 }
 
-// A light at a position: its fade, then its cone and its area.
-void writePositioned(const Light& light, const std::string& type, PovWriter& out,
-                     PovIssues& issues) {
+// A light at a position: its fade, then its type's keyword and modifiers.
+void writePositioned(const Light& light, const std::string& type, PovWriter& out, PovIssues& issues,
+                     PovLightOut& row) {
   PovFade fade = povFade(light.attenuation);
   Color c = light.radiance() * static_cast<float>(fade.scale);
-  out.open("light_source");
   out.line(povVector(light.position));
   out.line("color " + povRgb(c));
   if (fade.fade) {
@@ -85,61 +89,26 @@ void writePositioned(const Light& light, const std::string& type, PovWriter& out
                                  type, light.attenuation.x, light.attenuation.y,
                                  light.attenuation.z, povNumber(fade.exactBeyond)));
   }
-  if (light.hasCone()) {
-    // The contract's spot is POV-Ray's spotlight with tightness 0: full light inside
-    // `radius`, smoothstep to 0 at `falloff` (both half-angles in degrees). A spot-shaped
-    // area light is POV-Ray's area_light with spotlight, whose cone is also seen from
-    // the centre for every sample.
-    Vec3 axis = glm::normalize(light.direction);
-    out.line(lightTypeInfo(LightType::Spot).pov);
-    out.line("point_at " + povVector(light.position + axis));
-    out.line("radius " + povNumber(std::min(light.inner, light.angle)));
-    out.line("falloff " + povNumber(light.angle));
-    out.line("tightness 0");
-    if (light.angle > 90.0)
-      issues.warning(light.loc, fmt::format("spot light: angle {} exceeds 90 degrees; "
-                                            "POV-Ray's spotlight gives no light behind it",
-                                            light.angle));
-  }
-  if (light.type == LightType::Area) {
-    out.line(fmt::format("{} {}, {}, {}, {}", lightTypeInfo(LightType::Area).pov,
-                         povVector(light.u), povVector(light.v), light.samplesU, light.samplesV));
-    // Lucent's adaptive light is POV-Ray's: the same corners, test and quadrant averages.
-    if (light.adaptive) out.line(fmt::format("adaptive {}", *light.adaptive));
-    if (light.jitter) {
-      out.line("jitter");
-      issues.warning(light.loc,
-                     "area light: jitter is random in POV-Ray and a fixed hash in "
-                     "Lucent; the noise differs");
-    }
-    // Without `adaptive` POV-Ray subdivides fully (its default level is 100), with its
-    // recursive weights; Lucent then averages plainly.
-    if (!light.adaptive &&
-        (!povAveragesUniformly(light.samplesU) || !povAveragesUniformly(light.samplesV)))
-      issues.warning(light.loc,
-                     fmt::format("area light: POV-Ray weights a {}x{} sample grid unevenly "
-                                 "(edge samples count less); it matches Lucent's plain "
-                                 "average only for 2, 4, 8, ... samples per side",
-                                 light.samplesU, light.samplesV));
-  }
-  if (!light.shadows) out.line("shadowless");
-  out.close();
+  lightTypeInfo(light.type).writePov(light, row);
 }
 
 }  // namespace
 
 void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues& issues) {
-  const std::string type(lightTypeInfo(light.type).name);
-  switch (light.type) {
-    case LightType::Directional:
-      writeParallel(light, out);
+  const LightTypeInfo& info = lightTypeInfo(light.type);
+  const std::string type(info.name);
+  LightOut row(light, out, issues);
+  out.open("light_source");
+  switch (info.povPlacement) {
+    case PovLightPlacement::Parallel:
+      writeParallel(light, out, row);
       break;
-    case LightType::Point:
-    case LightType::Spot:
-    case LightType::Area:
-      writePositioned(light, type, out, issues);
+    case PovLightPlacement::Positioned:
+      writePositioned(light, type, out, issues, row);
       break;
   }
+  if (!light.shadows) out.line("shadowless");
+  out.close();
   if (!light.shadows && anySpecular)
     issues.warning(light.loc, fmt::format("{} light with shadows=\"false\": POV-Ray's shadowless "
                                           "lights give no specular highlights",

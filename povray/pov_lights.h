@@ -1,6 +1,6 @@
-// light_source blocks: point, directional (parallel), spot (spotlight, tightness 0) and
-// area (area_light, with spotlight when spot-shaped) lights, with the contract's distance
-// attenuation mapped onto fade.
+// light_source blocks, from the light table (scenegraph/light.h): each light placed as its
+// type's row says (at its position, the contract's distance attenuation mapped onto fade;
+// or parallel, from far away), then the keyword and modifiers its row writes.
 #pragma once
 
 #include "pov_writer.h"

@@ -27,6 +27,7 @@ LightIncidence parallelIncidence(const Light& light) {
   in.toLight = -glm::normalize(light.direction);
   in.distance = kInf;
   in.radiance = light.radiance();
+  in.parallel = true;
   return in;
 }
 

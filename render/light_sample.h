@@ -1,5 +1,6 @@
 // What a light offers a surface point before shadows: the direction towards it, its
-// distance, and the light colour after distance attenuation and the spot cone.
+// distance, and the light colour after distance attenuation and the light's shape (a
+// spot's cone).
 #pragma once
 
 #include "scenegraph/light.h"
@@ -10,8 +11,11 @@ namespace lucent {
 
 struct LightIncidence {
   Vec3 toLight{0.0, 1.0, 0.0};  // unit, from the point towards the light (an area light's centre)
-  double distance = kInf;       // to the light (centre); infinite for a directional light
+  double distance = kInf;       // to the light along toLight; infinite for a directional light
   Color radiance{0.0f};         // I_L · A_dist · spot factor
+  // The light's rays are parallel: its shadow ray goes along toLight for `distance` (to
+  // infinity for a directional light), not to the light's sample points.
+  bool parallel = false;
 };
 
 // A_dist = min(1, 1 / (a + b·r + c·r²)); 1 when the denominator is not positive (a light

@@ -13,6 +13,7 @@
 #include "csg/inverted.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace lucent {
 
@@ -241,8 +242,11 @@ Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightI
     ++stats.shadow;
     return blockedByOpaque(ray, lastBlocker, stats) ? Color(0.0f) : Color(1.0f);
   };
-  if (light.type == LightType::Directional)
-    return shadowRay(spawnRay(s, in.toLight, settings_.epsilon));
+  if (in.parallel) {
+    // Along the light's rays: to infinity, or as far as the light lies (its plane).
+    if (std::isinf(in.distance)) return shadowRay(spawnRay(s, in.toLight, settings_.epsilon));
+    return shadowRay(spawnRayTo(s, s.p + in.toLight * in.distance, settings_.epsilon));
+  }
   const ShadowRays rays(s, settings_.epsilon);
   const std::vector<Vec3>& fixed = fixedTargets_[lightIndex];
   auto sampleRay = [&](int k) {

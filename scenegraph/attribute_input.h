@@ -1,5 +1,6 @@
-// What a shape's entry in the registry (shape_type.h) reads its attributes through. The
-// scene language implements it over one XML element (lang/shape_parser.cpp): every getter
+// What the tables' readers read attributes through: a shape's entry in the registry
+// (shape_type.h), the camera table (camera.h) and the light table (light.h). The scene
+// language implements it over one XML element (lang/element_input.h): every getter
 // substitutes parameters, parses, checks the range and reports a located error itself, and
 // returns the default when the attribute is absent or wrong, so parsing goes on.
 #pragma once
@@ -49,15 +50,22 @@ struct FunctionInput {
   std::vector<std::pair<std::string, double>> constants;
 };
 
+// An integer attribute's `max` at or above this: no upper bound ("a whole number >= min").
+constexpr long long kNoIntegerLimit = 1LL << 40;
+
 class AttributeInput {
  public:
   virtual ~AttributeInput() = default;
 
   virtual bool has(const char* attr) const = 0;
   virtual double number(const char* attr, double def, const NumberRule& rule) = 0;
+  // A whole number from min to max (kNoIntegerLimit: no upper bound).
+  virtual long long integer(const char* attr, long long def, long long min, long long max) = 0;
   virtual Vec3 vector(const char* attr, const Vec3& def) = 0;
   // Not zero; returned normalised.
   virtual Vec3 direction(const char* attr, const Vec3& def) = 0;
+  // Three numbers, one for grey, #rrggbb or a CSS name; no negative component.
+  virtual Color color(const char* attr, const Color& def) = 0;
   virtual bool boolean(const char* attr, bool def) = 0;
   // The index of the value in `names`; `def` when absent or not one of them (reported).
   virtual size_t choice(const char* attr, size_t def,

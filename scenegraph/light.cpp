@@ -1,20 +1,84 @@
 #include "light.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace lucent {
 
+namespace {
+
+// POV-Ray averages an area light's shadow samples by recursive 4-corner subdivision: the
+// weights are uniform (as Lucent's plain average) only for 2, 4, 8, ... samples per axis;
+// 3 gives ¼ ½ ¼, 5 gives 1 2 2 2 1 / 8 (checked by rendering with povray 3.7.0.10).
+bool povAveragesUniformly(int n) { return n >= 2 && (n & (n - 1)) == 0; }
+
+// The contract's spot is POV-Ray's spotlight with tightness 0: full light inside `radius`,
+// smoothstep to 0 at `falloff` (both half-angles in degrees). A spot-shaped area light is
+// POV-Ray's area_light with spotlight, whose cone is also seen from the centre for every
+// sample.
+void writePovCone(const Light& l, PovLightOut& out) {
+  const Vec3 axis = glm::normalize(l.direction);
+  out.line(lightTypeInfo(LightType::Spot).pov);
+  out.line("point_at " + out.vector(l.position + axis));
+  out.line("radius " + out.number(std::min(l.inner, l.angle)));
+  out.line("falloff " + out.number(l.angle));
+  out.line("tightness 0");
+  if (l.angle > 90.0)
+    out.warning(fmt::format(
+        "spot light: angle {} exceeds 90 degrees; POV-Ray's spotlight gives no light behind it",
+        l.angle));
+}
+
+void writePovArea(const Light& l, PovLightOut& out) {
+  if (l.hasCone()) writePovCone(l, out);
+  out.line(fmt::format("{} {}, {}, {}, {}", lightTypeInfo(LightType::Area).pov, out.vector(l.u),
+                       out.vector(l.v), l.samplesU, l.samplesV));
+  // Lucent's adaptive light is POV-Ray's: the same corners, test and quadrant averages.
+  if (l.adaptive) out.line(fmt::format("adaptive {}", *l.adaptive));
+  if (l.jitter) {
+    out.line("jitter");
+    out.warning(
+        "area light: jitter is random in POV-Ray and a fixed hash in Lucent; the noise "
+        "differs");
+  }
+  // Without `adaptive` POV-Ray subdivides fully (its default level is 100), with its
+  // recursive weights; Lucent then averages plainly.
+  if (!l.adaptive && (!povAveragesUniformly(l.samplesU) || !povAveragesUniformly(l.samplesV)))
+    out.warning(
+        fmt::format("area light: POV-Ray weights a {}x{} sample grid unevenly (edge "
+                    "samples count less); it matches Lucent's plain average only for "
+                    "2, 4, 8, ... samples per side",
+                    l.samplesU, l.samplesV));
+}
+
+// An area light: any spot attribute makes it spot-shaped; u and v must span a rectangle.
+void finishArea(Light& l, AttributeInput& in) {
+  l.cone = in.has("direction") || in.has("look-at") || in.has("angle") || in.has("inner");
+  if (!(glm::length(glm::cross(l.u, l.v)) > 0.0))
+    in.error(
+        "<light type=\"area\">: 'u' and 'v' must be non-zero and not parallel (they span the "
+        "rectangle)");
+}
+
+}  // namespace
+
 const std::vector<LightTypeInfo>& lightTypes() {
+  using P = PovLightPlacement;
   static const std::vector<LightTypeInfo> table{
-      {LightType::Point, "point", "", "A point light at position."},
+      {LightType::Point, "point", "", "A point light at position.", P::Positioned,
+       [](const Light&, PovLightOut&) {}},
       {LightType::Directional, "directional", "parallel",
-       "Parallel light travelling along direction."},
+       "Parallel light travelling along direction.", P::Parallel,
+       [](const Light&, PovLightOut& out) { out.line(lightTypeInfo(LightType::Directional).pov); }},
       {LightType::Spot, "spot", "spotlight",
-       "A point light limited to a cone: direction or look-at, angle, inner."},
+       "A point light limited to a cone: direction or look-at, angle, inner.", P::Positioned,
+       writePovCone},
       {LightType::Area, "area", "area_light",
-       "A rectangle u × v centred on position, sampled on a samples grid for soft shadows."},
+       "A rectangle u × v centred on position, sampled on a samples grid for soft shadows.",
+       P::Positioned, writePovArea, finishArea},
   };
   return table;
 }
@@ -50,12 +114,85 @@ std::vector<std::string_view> typeNames() {
   return names;
 }
 
+// The readers of the plain attributes: the value, or the light's own when the attribute is
+// absent or wrong (reported by the input).
+LightReader readVector(const char* name, Vec3 Light::*m) {
+  return [name, m](Light& l, AttributeInput& in) { l.*m = in.vector(name, l.*m); };
+}
+LightReader readNumber(const char* name, double Light::*m, NumberRule rule) {
+  return [name, m, rule](Light& l, AttributeInput& in) { l.*m = in.number(name, l.*m, rule); };
+}
+LightReader readBoolean(const char* name, bool Light::*m) {
+  return [name, m](Light& l, AttributeInput& in) { l.*m = in.boolean(name, l.*m); };
+}
+
+// "a b c" of min(1, 1/(a + b·r + c·r²)): none negative, not all zero.
+void readAttenuation(Light& l, AttributeInput& in) {
+  const Vec3 v = in.vector("attenuation", l.attenuation);
+  if (v.x < 0.0 || v.y < 0.0 || v.z < 0.0 || (v.x == 0.0 && v.y == 0.0 && v.z == 0.0))
+    in.attrError("attenuation", "expected 3 numbers a b c >= 0, not all zero, got '" +
+                                    in.text("attenuation").value_or("") + "'");
+  else l.attenuation = v;
+}
+
+// A point on the axis, instead of direction (read just before it): the direction from the
+// position (read before both).
+void readLookAt(Light& l, AttributeInput& in) {
+  if (!in.has("look-at")) return;
+  if (in.has("direction")) {
+    in.attrError("look-at", "give either 'direction' or 'look-at', not both");
+    return;
+  }
+  const Vec3 d = in.vector("look-at", l.position + l.direction) - l.position;
+  const double len = glm::length(d);
+  if (!(len > 0.0)) in.attrError("look-at", "'look-at' must differ from 'position'");
+  else l.direction = d / len;
+}
+
+// The inner half-angle: by default the angle (read before it), never beyond it.
+void readInner(Light& l, AttributeInput& in) {
+  l.inner = in.number("inner", l.angle, NumberRule::between(0.0, 90.0, "an angle from 0 to 90"));
+  if (l.inner > l.angle)
+    in.attrError("inner",
+                 fmt::format("'inner' ({}) must not exceed 'angle' ({})", l.inner, l.angle));
+}
+
+// "nu nv", or one number for both: each from 2 to 1024.
+void readSamples(Light& l, AttributeInput& in) {
+  const auto list = in.integers("samples");
+  if (!list) return;
+  if (list->size() != 2 && list->size() != 1) {
+    in.attrError("samples",
+                 "expected 2 whole numbers (nu nv), got " + std::to_string(list->size()));
+    return;
+  }
+  const long long nu = (*list)[0], nv = list->size() == 2 ? (*list)[1] : nu;
+  if (nu < 2 || nv < 2 || nu > 1024 || nv > 1024) {
+    in.attrError("samples",
+                 "each count must be from 2 to 1024 (the grid includes the edges), got '" +
+                     in.text("samples").value_or("") + "'");
+    return;
+  }
+  l.samplesU = static_cast<int>(nu);
+  l.samplesV = static_cast<int>(nv);
+}
+
+// Levels of forced subdivision; a 1024-point axis is fully split within 10, so larger
+// values are all alike and are clamped to fit an int.
+void readAdaptive(Light& l, AttributeInput& in) {
+  if (!in.has("adaptive")) return;
+  const long long n = in.integer("adaptive", -1, 0, kNoIntegerLimit);
+  if (n >= 0) l.adaptive = static_cast<int>(std::min(n, 1LL << 20));
+}
+
 }  // namespace
 
 const std::vector<LightAttribute>& lightAttributes() {
   using T = LightType;
   const std::vector<T> positioned{T::Point, T::Spot, T::Area}, cone{T::Spot, T::Area},
       area{T::Area};
+  const NumberRule spotAngle =
+      NumberRule::between(0.0, 90.0, "an angle above 0 and at most 90", true);
   static const std::vector<LightAttribute> table{
       {[] {
          AttributeInfo a = attribute("type", AttrType::Choice, "lightType", "point", "");
@@ -65,49 +202,53 @@ const std::vector<LightAttribute>& lightAttributes() {
          a.doc += ".";
          return a;
        }(),
-       {}},
+       {},
+       nullptr},
       {attribute("position", AttrType::Vector, {}, "",
                  "point, spot, area: the light's position (area: the centre of the rectangle). "
                  "Default 0 0 0."),
-       positioned},
+       positioned, readVector("position", &Light::position)},
       {attribute("color", AttrType::Vector, "color", "1",
                  "Light colour. The light's I_L is color × intensity."),
-       {}},
+       {},
+       [](Light& l, AttributeInput& in) { l.color = in.color("color", l.color); }},
       {attribute("intensity", AttrType::Number, "nonNegativeNumber", "1", "Multiplier of color."),
-       {}},
+       {},
+       readNumber("intensity", &Light::intensity, NumberRule::nonNegative())},
       {attribute("attenuation", AttrType::Vector, "nonNegativeVector3", "",
                  "point, spot, area: \"a b c\" (>= 0, not all 0), distance factor min(1, 1/(a + "
                  "b·r + c·r²)). Default 1 0 0 (none)."),
-       positioned},
+       positioned, readAttenuation},
       {attribute("direction", AttrType::Direction, {}, "",
                  "directional: the direction towards which light travels. spot and spot-shaped "
                  "area: the cone's axis (or give look-at). Default 0 -1 0."),
-       {T::Directional, T::Spot, T::Area}},
+       {T::Directional, T::Spot, T::Area},
+       [](Light& l, AttributeInput& in) { l.direction = in.direction("direction", l.direction); }},
       {attribute("look-at", AttrType::Vector, {}, "",
                  "spot and spot-shaped area: a point on the cone's axis (instead of direction)."),
-       cone},
+       cone, readLookAt},
       {attribute("angle", AttrType::Number, "spotAngle", "",
                  "spot and spot-shaped area (seen from its centre): outer half-angle in degrees, "
                  "above 0 and at most 90; no light beyond it. Default 30."),
-       cone},
+       cone, readNumber("angle", &Light::angle, spotAngle)},
       {attribute("inner", AttrType::Number, "spotAngle", "",
                  "spot and spot-shaped area: half-angle of full intensity in degrees, at most "
                  "angle. Default = angle. Between inner and angle the factor is the smoothstep "
                  "(3−2u)u² of u = (cos θ − cos angle)/(cos inner − cos angle)."),
-       cone},
+       cone, readInner},
       {attribute("u", AttrType::Vector, {}, "",
                  "area: first edge vector of the rectangle centred on position. Default 1 0 0."),
-       area},
+       area, readVector("u", &Light::u)},
       {attribute("v", AttrType::Vector, {}, "",
                  "area: second edge vector of the rectangle centred on position. Default 0 0 1."),
-       area},
+       area, readVector("v", &Light::v)},
       {attribute("samples", AttrType::IntegerList, "sampleGrid", "",
                  "area: \"nu nv\" (or one number for both), the shadow sample grid, each 2 to "
                  "1024; the grid includes the rectangle's edges. Default 4 4."),
-       area},
+       area, readSamples},
       {attribute("jitter", AttrType::Boolean, {}, "",
                  "area: jitter the sample positions within their grid cells. Default false."),
-       area},
+       area, readBoolean("jitter", &Light::jitter)},
       {attribute("adaptive", AttrType::Number, "wholeNumber", "",
                  "area: POV-Ray's adaptive N. Trace the grid's 4 corners and split a rectangle "
                  "of samples into quadrants where its neighbouring corners differ (by more than "
@@ -115,19 +256,22 @@ const std::vector<LightAttribute>& lightAttributes() {
                  "levels deep, down to the full grid; the shadow is the recursive mean of the "
                  "quadrants (POV-Ray's weights). Absent: every sample is traced and the plain "
                  "average taken."),
-       area},
+       area, readAdaptive},
       {attribute("shadows", AttrType::Boolean, {}, "true",
                  "Does the light cast shadows? Shadow rays go straight and are filtered by "
                  "transparent surfaces (transmissive colour, absorption)."),
-       {}},
+       {},
+       readBoolean("shadows", &Light::shadows)},
       {attribute("id", AttrType::Text, "name", "",
                  "A name for <use ref=\"id\"/>, which places the light again in the use's frame. "
                  "Optional; unique among nodes."),
-       {}},
+       {},
+       nullptr},
       {attribute("transform", AttrType::Text, "transform", "",
                  "The light's own transform, applied before its parent's: it moves position and "
                  "look-at as points, direction, u and v as vectors. Default: identity."),
-       {}},
+       {},
+       nullptr},
   };
   return table;
 }

@@ -1,37 +1,91 @@
-// Light sources of the contract's <light>, and the table of light types and attributes that
-// the parser's checks, the schema, `lucent check` and the POV-Ray exporter read (light.cpp).
+// Light sources of the contract's <light>, and their table (light.cpp): one row per type
+// (its name, its documentation, how POV-Ray writes it, the checks between its attributes)
+// and every attribute of <light> with the reader that stores it into a Light. The parser
+// (lang/light_parser.cpp), the schema, `lucent check` and the POV-Ray exporter
+// (povray/pov_lights.cpp) read the table and name no type.
 #pragma once
 
 #include "attribute_info.h"
+#include "attribute_input.h"
 #include "source_loc.h"
 
 #include "primitives/math.h"
 
+#include <functional>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace lucent {
 
-// A new type: a row in lightTypes() and its attributes in lightAttributes() (light.cpp),
-// its light in render/light_sample.cpp and its POV-Ray text in povray/pov_lights.cpp; both
-// switch over every type, so a type without them does not compile (docs/architecture.md).
+// A new type: the enumerator and its parameters in Light (here); its row in lightTypes()
+// and its attributes with their readers in lightAttributes() (light.cpp); its light in
+// render/light_sample.cpp, whose lightIncidence switches over every type, so a type
+// without it does not compile (docs/architecture.md).
 enum class LightType { Point, Directional, Spot, Area };
 
+struct Light;
+
+// The exporter's side of writing one light (povray/pov_lights.cpp implements it): a type's
+// row writes its POV-Ray keyword and modifiers through it.
+class PovLightOut {
+ public:
+  virtual ~PovLightOut() = default;
+  virtual void line(std::string_view text) = 0;
+  virtual std::string number(double v) const = 0;       // POV-Ray's number syntax
+  virtual std::string vector(const Vec3& v) const = 0;  // <x, y, z>
+  // Where POV-Ray's light will differ from Lucent's: a warning at the light.
+  virtual void warning(const std::string& message) = 0;
+};
+
+// Where POV-Ray's light_source of a type stands; the exporter switches over it.
+enum class PovLightPlacement {
+  Positioned,  // at position, its colour faded with the distance (the attenuation)
+  Parallel,    // far along −direction, aimed at the origin; no fade
+};
+
+// Reads attributes into a light through the parser's input (an attribute's reader, or a
+// type's checks between attributes).
+using LightReader = std::function<void(Light&, AttributeInput&)>;
+// Writes a type's POV-Ray keyword and modifiers (point_at, radius, ...).
+using LightPovWriter = std::function<void(const Light&, PovLightOut&)>;
+
 struct LightTypeInfo {
+  // How POV-Ray writes the type is required: a row cannot be made without it.
+  LightTypeInfo(LightType type, std::string_view name, std::string_view pov, std::string_view doc,
+                PovLightPlacement povPlacement, LightPovWriter writePov, LightReader finish = {})
+      : type(type),
+        name(name),
+        pov(pov),
+        doc(doc),
+        povPlacement(povPlacement),
+        writePov(std::move(writePov)),
+        finish(std::move(finish)) {}
+
   LightType type;
   std::string_view name;  // type="..."
-  std::string_view pov;   // POV-Ray's light_source modifier ("" for a point light)
+  std::string_view pov;   // POV-Ray's light_source keyword ("" for a point light)
   std::string_view doc;   // one line, for the schema
+  PovLightPlacement povPlacement;
+  // The lines after the location, the colour and the fade: the keyword and its modifiers.
+  LightPovWriter writePov;
+  // After the attributes are read: the checks between them; may be empty.
+  LightReader finish;
 };
 // One row per type, in LightType's order.
 const std::vector<LightTypeInfo>& lightTypes();
 const LightTypeInfo& lightTypeInfo(LightType type);
 
-// An attribute of <light>, and the types that take it (every type when empty).
+// An attribute of <light>, the types that take it (every type when empty) and how it is
+// read into a Light: null for the attributes the parser reads for every element (type,
+// id, transform). The parser calls the readers in the table's order, so a reader may use
+// the attributes above it (look-at the position, inner the angle).
 struct LightAttribute {
   AttributeInfo info;
   std::vector<LightType> types;
+  LightReader read;
   bool takenBy(LightType t) const;
 };
 // Every attribute <light> takes, in the schema's order.

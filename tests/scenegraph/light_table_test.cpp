@@ -1,6 +1,6 @@
 // The table of light types and <light> attributes (scenegraph/light.cpp) and what is derived
-// from it: the parser's names and attribute check, the schema, `lucent check`'s counts and
-// the POV-Ray exporter's keywords.
+// from it: the parser's names, attribute check and readers, the schema, `lucent check`'s
+// counts and the POV-Ray exporter's keywords.
 #include "../povray/pov_test_support.h"
 #include "../support/scene_text.h"
 #include "lang/schema.h"
@@ -53,6 +53,16 @@ TEST_CASE("light table: a row per type in LightType's order, names unique", "[li
     CHECK(attributes.insert(a.info.name).second);
     CHECK_FALSE(a.info.doc.empty());
   }
+}
+
+TEST_CASE("light table: every attribute but type, id and transform carries its reader",
+          "[lights][table]") {
+  for (const LightAttribute& a : lightAttributes()) {
+    INFO(a.info.name);
+    const bool generic = a.info.name == "type" || a.info.name == "id" || a.info.name == "transform";
+    CHECK(static_cast<bool>(a.read) == !generic);
+  }
+  for (const LightTypeInfo& t : lightTypes()) CHECK(static_cast<bool>(t.writePov));
 }
 
 TEST_CASE("light table: each type takes its attributes and names the owners of the others",
