@@ -189,6 +189,18 @@ std::string textureElementsXsd() {
   return out;
 }
 
+// "point (default), directional, spot or area": the types in the table's order, the
+// default marked, for the <light> element's documentation.
+std::string lightTypeNames() {
+  const std::vector<LightTypeInfo>& types = lightTypes();
+  std::string out;
+  for (size_t i = 0; i < types.size(); ++i) {
+    out += (i == 0 ? "" : (i + 1 == types.size() ? " or " : ", ")) + std::string(types[i].name);
+    if (types[i].type == Light{}.type) out += " (default)";
+  }
+  return out;
+}
+
 std::string lightAttributesXsd() {
   std::string out;
   for (const LightAttribute& a : lightAttributes()) out += attributeXsd(a.info, 4);
@@ -218,6 +230,7 @@ std::string schemaText() {
   replaceOnce(text, "@CAMERA_TYPES@", cameraTypesXsd());
   replaceOnce(text, "@CAMERA_ATTRIBUTES@", cameraAttributesXsd());
   replaceOnce(text, "@LIGHT_TYPES@", lightTypesXsd());
+  replaceOnce(text, "@LIGHT_TYPE_NAMES@", lightTypeNames());
   replaceOnce(text, "@LIGHT_ATTRIBUTES@", lightAttributesXsd());
   replaceOnce(text, "@COLOUR_PATTERNS@", patternTypesXsd(true));
   replaceOnce(text, "@NORMAL_PATTERNS@", patternTypesXsd(false));
