@@ -1,6 +1,7 @@
 #include "light_sample.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace lucent {
 
@@ -45,6 +46,32 @@ LightIncidence positionedIncidence(const Light& light, const Vec3& p) {
   return in;
 }
 
+// POV-Ray's cylinder light: parallel light along the axis, from the plane through the
+// position across it. With k the distance along the axis and ρ the distance from it, the
+// factor is (1 − ρ/falloff)^tightness, times beyond radius the smoothstep (3 − 2u)u² of
+// u = (falloff − ρ)/(falloff − radius), times the attenuation at k; 0 behind the plane
+// (k <= 0) and from falloff on. The shadow ray goes back to the plane.
+LightIncidence cylindricalIncidence(const Light& light, const Vec3& p) {
+  LightIncidence in;
+  const Vec3 axis = glm::normalize(light.direction);
+  const Vec3 fromLight = p - light.position;
+  const double k = glm::dot(fromLight, axis);
+  in.toLight = -axis;
+  in.distance = k;
+  in.parallel = true;
+  if (!(k > 0.0)) return in;
+  const double rho = glm::length(fromLight - k * axis);
+  if (!(rho < light.falloff)) return in;
+  double factor = std::pow(1.0 - rho / light.falloff, light.tightness);
+  if (light.radius > 0.0 && rho > light.radius) {
+    const double u = (light.falloff - rho) / (light.falloff - light.radius);
+    factor *= (3.0 - 2.0 * u) * u * u;
+  }
+  factor *= distanceAttenuation(light.attenuation, k);
+  in.radiance = light.radiance() * static_cast<float>(factor);
+  return in;
+}
+
 }  // namespace
 
 LightIncidence lightIncidence(const Light& light, const Vec3& p) {
@@ -55,6 +82,8 @@ LightIncidence lightIncidence(const Light& light, const Vec3& p) {
     case LightType::Spot:
     case LightType::Area:
       return positionedIncidence(light, p);
+    case LightType::Cylindrical:
+      return cylindricalIncidence(light, p);
   }
   return {};  // not reached: the switch names every type
 }

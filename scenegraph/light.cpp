@@ -54,6 +54,29 @@ void writePovArea(const Light& l, PovLightOut& out) {
                     l.samplesU, l.samplesV));
 }
 
+// POV-Ray's cylinder light is parallel (implied by `cylinder`), aimed by point_at; its
+// radius, falloff and tightness are distances and an exponent, as Lucent's.
+void writePovCylinder(const Light& l, PovLightOut& out) {
+  out.line(lightTypeInfo(LightType::Cylindrical).pov);
+  out.line("point_at " + out.vector(l.position + glm::normalize(l.direction)));
+  out.line("radius " + out.number(l.radius));
+  out.line("falloff " + out.number(l.falloff));
+  out.line("tightness " + out.number(l.tightness));
+}
+
+// A cylindrical light's full beam lies within its edge. Not compared once a value was
+// wrong: it would be compared as its default.
+void finishCylindrical(Light& l, AttributeInput& in) {
+  if (in.failed() || l.radius <= l.falloff) return;
+  if (in.has("radius"))
+    in.attrError("radius", fmt::format("'radius' ({}) must not exceed 'falloff' ({}{})", l.radius,
+                                       l.falloff, in.has("falloff") ? "" : ", its default"));
+  else
+    in.attrError("falloff", fmt::format("'falloff' ({}) must not be less than 'radius' ({}, its "
+                                        "default)",
+                                        l.falloff, l.radius));
+}
+
 // An area light: any spot attribute makes it spot-shaped; u and v must span a rectangle.
 void finishArea(Light& l, AttributeInput& in) {
   l.cone = in.has("direction") || in.has("look-at") || in.has("angle") || in.has("inner");
@@ -79,6 +102,10 @@ const std::vector<LightTypeInfo>& lightTypes() {
       {LightType::Area, "area", "area_light",
        "A rectangle u × v centred on position, sampled on a samples grid for soft shadows.",
        P::Positioned, writePovArea, finishArea},
+      {LightType::Cylindrical, "cylindrical", "cylinder",
+       "Parallel light along direction within a cylinder about the axis through position: full "
+       "within radius, none from falloff on, nothing behind position.",
+       P::Positioned, writePovCylinder, finishCylindrical},
   };
   return table;
 }
@@ -189,8 +216,9 @@ void readAdaptive(Light& l, AttributeInput& in) {
 
 const std::vector<LightAttribute>& lightAttributes() {
   using T = LightType;
-  const std::vector<T> positioned{T::Point, T::Spot, T::Area}, cone{T::Spot, T::Area},
-      area{T::Area};
+  const std::vector<T> positioned{T::Point, T::Spot, T::Area, T::Cylindrical},
+      aimed{T::Spot, T::Area, T::Cylindrical}, cone{T::Spot, T::Area}, area{T::Area},
+      cylindrical{T::Cylindrical};
   const NumberRule spotAngle =
       NumberRule::between(0.0, 90.0, "an angle above 0 and at most 90", true);
   static const std::vector<LightAttribute> table{
@@ -205,7 +233,8 @@ const std::vector<LightAttribute>& lightAttributes() {
        {},
        nullptr},
       {attribute("position", AttrType::Vector, {}, "",
-                 "point, spot, area: the light's position (area: the centre of the rectangle). "
+                 "point, spot, area, cylindrical: the light's position (area: the centre of the "
+                 "rectangle; cylindrical: a point on the beam's axis, where the beam starts). "
                  "Default 0 0 0."),
        positioned, readVector("position", &Light::position)},
       {attribute("color", AttrType::Vector, "color", "1",
@@ -216,17 +245,20 @@ const std::vector<LightAttribute>& lightAttributes() {
        {},
        readNumber("intensity", &Light::intensity, NumberRule::nonNegative())},
       {attribute("attenuation", AttrType::Vector, "nonNegativeVector3", "",
-                 "point, spot, area: \"a b c\" (>= 0, not all 0), distance factor min(1, 1/(a + "
-                 "b·r + c·r²)). Default 1 0 0 (none)."),
+                 "point, spot, area, cylindrical: \"a b c\" (>= 0, not all 0), distance factor "
+                 "min(1, 1/(a + b·r + c·r²)); cylindrical: r is the distance along the axis. "
+                 "Default 1 0 0 (none)."),
        positioned, readAttenuation},
       {attribute("direction", AttrType::Direction, {}, "",
                  "directional: the direction towards which light travels. spot and spot-shaped "
-                 "area: the cone's axis (or give look-at). Default 0 -1 0."),
-       {T::Directional, T::Spot, T::Area},
+                 "area: the cone's axis; cylindrical: the beam's (or give look-at). Default 0 "
+                 "-1 0."),
+       {T::Directional, T::Spot, T::Area, T::Cylindrical},
        [](Light& l, AttributeInput& in) { l.direction = in.direction("direction", l.direction); }},
       {attribute("look-at", AttrType::Vector, {}, "",
-                 "spot and spot-shaped area: a point on the cone's axis (instead of direction)."),
-       cone, readLookAt},
+                 "spot and spot-shaped area, cylindrical: a point on the axis (instead of "
+                 "direction)."),
+       aimed, readLookAt},
       {attribute("angle", AttrType::Number, "spotAngle", "",
                  "spot and spot-shaped area (seen from its centre): outer half-angle in degrees, "
                  "above 0 and at most 90; no light beyond it. Default 30."),
@@ -236,6 +268,20 @@ const std::vector<LightAttribute>& lightAttributes() {
                  "angle. Default = angle. Between inner and angle the factor is the smoothstep "
                  "(3−2u)u² of u = (cos θ − cos angle)/(cos inner − cos angle)."),
        cone, readInner},
+      {attribute("radius", AttrType::Number, "nonNegativeNumber", "",
+                 "cylindrical: the distance from the axis within which the light is full, at most "
+                 "falloff. Between radius and falloff the factor is the smoothstep (3−2u)u² of u = "
+                 "(falloff − ρ)/(falloff − radius), ρ the distance from the axis. Not changed by "
+                 "transforms. Default 0.75."),
+       cylindrical, readNumber("radius", &Light::radius, NumberRule::nonNegative())},
+      {attribute("falloff", AttrType::Number, "positiveNumber", "",
+                 "cylindrical: the distance from the axis from which there is no light. Not "
+                 "changed by transforms. Default 1."),
+       cylindrical, readNumber("falloff", &Light::falloff, NumberRule::positive())},
+      {attribute("tightness", AttrType::Number, "nonNegativeNumber", "",
+                 "cylindrical: the beam is also multiplied by (1 − ρ/falloff)^tightness, as "
+                 "POV-Ray's tightness. Default 0 (no effect)."),
+       cylindrical, readNumber("tightness", &Light::tightness, NumberRule::nonNegative())},
       {attribute("u", AttrType::Vector, {}, "",
                  "area: first edge vector of the rectangle centred on position. Default 1 0 0."),
        area, readVector("u", &Light::u)},

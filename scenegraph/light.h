@@ -24,7 +24,7 @@ namespace lucent {
 // and its attributes with their readers in lightAttributes() (light.cpp); its light in
 // render/light_sample.cpp, whose lightIncidence switches over every type, so a type
 // without it does not compile (docs/architecture.md).
-enum class LightType { Point, Directional, Spot, Area };
+enum class LightType { Point, Directional, Spot, Area, Cylindrical };
 
 struct Light;
 
@@ -96,7 +96,8 @@ struct Light {
   SourceLoc loc;
 
   Vec3 position{0.0};
-  Vec3 direction{0.0, -1.0, 0.0};  // unit; directional: where light travels; spot: the axis
+  // Unit. Directional: where light travels; spot, cylindrical: the axis.
+  Vec3 direction{0.0, -1.0, 0.0};
   Color color{1.0f};
   double intensity = 1.0;           // I_L = color * intensity
   Vec3 attenuation{1.0, 0.0, 0.0};  // a b c of min(1, 1/(a + b r + c r^2))
@@ -120,6 +121,13 @@ struct Light {
   // at least N forced levels, combining by recursive quadrant averages. Absent: every grid
   // point is traced and the plain average taken.
   std::optional<int> adaptive;
+
+  // Cylindrical, as POV-Ray's cylinder light: distances from the axis (not changed by
+  // transforms), full light within radius, none from falloff on; tightness is the exponent
+  // of (1 − distance/falloff).
+  double radius = 0.75;
+  double falloff = 1.0;
+  double tightness = 0.0;
 
   Color radiance() const { return color * static_cast<float>(intensity); }
 };
