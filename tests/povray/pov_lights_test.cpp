@@ -1,5 +1,5 @@
 // Lights in POV-Ray: colours with intensity, attenuation as fade (exact numbers), parallel,
-// spotlight and area lights, and the warnings where POV-Ray differs.
+// spotlight, cylinder and area lights, and the warnings where POV-Ray differs.
 #include "pov_test_support.h"
 
 #include "povray/pov_lights.h"
@@ -103,6 +103,43 @@ TEST_CASE("a spot light is a spotlight with tightness 0", "[povray][lights]") {
       R"XML(<light type="spot" position="0 5 0" direction="0 -1 0" angle="40" inner="25"/>)XML");
   REQUIRE(e.pov.ok());
   CHECK(e.has("  spotlight\n  point_at <0, 4, 0>\n  radius 25\n  falloff 40\n  tightness 0\n"));
+}
+
+TEST_CASE("a cylindrical light is POV-Ray's cylinder with its radius, falloff and tightness",
+          "[povray][lights]") {
+  Exported e = exportScene(
+      R"XML(<light type="cylindrical" position="0 5 0" look-at="0 0 0" radius="0.5" falloff="2" tightness="1.5" color="0.5"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.pov.issues.empty());
+  CHECK(
+      e.has("light_source {\n  <0, 5, 0>\n  color rgb <0.5, 0.5, 0.5>\n  cylinder\n"
+            "  point_at <0, 4, 0>\n  radius 0.5\n  falloff 2\n  tightness 1.5\n}\n"));
+
+  // The defaults are written too, though they are POV-Ray's own.
+  Exported plain = exportScene(R"XML(<light type="cylindrical" direction="1 0 0"/>)XML");
+  CHECK(
+      plain.has("  cylinder\n  point_at <1, 0, 0>\n  radius 0.75\n  falloff 1\n"
+                "  tightness 0\n"));
+  CHECK_FALSE(plain.has("parallel"));  // implied by cylinder
+}
+
+TEST_CASE("a cylindrical light's attenuation is POV-Ray's fade, its beam not scaled",
+          "[povray][lights]") {
+  // POV-Ray fades a cylinder light with the distance along its axis, as Lucent attenuates it.
+  Exported e = exportScene(
+      R"XML(<light type="cylindrical" position="0 4 0" attenuation="1 0 0.25" shadows="false"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.pov.issues.empty());
+  CHECK(e.has("  color rgb <0.5, 0.5, 0.5>\n  fade_distance 2\n  fade_power 2\n  cylinder\n"));
+  CHECK(e.has("  tightness 0\n  shadowless\n}\n"));
+
+  // Placed in the world; radius and falloff stay distances, as POV-Ray never scales them.
+  Exported placed = exportScene(R"XML(<group transform="scale(2) translate(1 0 0)">
+      <light type="cylindrical" position="0 3 0" radius="0.2" falloff="0.4"/></group>)XML");
+  REQUIRE(placed.pov.ok());
+  CHECK(
+      placed.has("  <1, 6, 0>\n  color rgb <1, 1, 1>\n  cylinder\n  point_at <1, 5, 0>\n"
+                 "  radius 0.2\n  falloff 0.4\n"));
 }
 
 TEST_CASE("area lights keep their grid, uneven POV-Ray weights are warned about",
