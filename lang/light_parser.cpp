@@ -8,6 +8,7 @@
 #include "element_input.h"
 #include "element_parsers.h"
 #include "expansion.h"
+#include "povray_names.h"
 
 namespace lucent {
 
@@ -55,8 +56,10 @@ std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file,
     std::string list = owners[0];
     for (size_t i = 1; i < owners.size(); ++i)
       list += (i + 1 == owners.size() ? " and " : ", ") + owners[i];
+    // POV-Ray's word may be another attribute here (a spotlight's radius is 'inner').
     return "belongs to " + list + " lights; this light is " +
-           std::string(lightTypeInfo(light.type).name) + " (set type=\"" + owners[0] + "\")";
+           std::string(lightTypeInfo(light.type).name) + " (set type=\"" + owners[0] + "\")" +
+           povrayAttributeHint("light", attr);
   });
 
   registerNodeId(r, *node);

@@ -131,12 +131,15 @@ TEST_CASE("lang: every bad attribute of a cylindrical light has a located messag
   CHECK(errors("<light type=\"cylindrical\" samples=\"4 4\"/>") ==
         "cylinder.xml:2:29: error: <light> attribute 'samples': belongs to area lights; this "
         "light is cylindrical (set type=\"area\")\n");
+  // A spot's radius is POV-Ray's spotlight word: the message says Lucent's too.
   CHECK(errors("<light type=\"spot\" radius=\"0.5\"/>") ==
         "cylinder.xml:2:22: error: <light> attribute 'radius': belongs to cylindrical lights; "
-        "this light is spot (set type=\"cylindrical\")\n");
+        "this light is spot (set type=\"cylindrical\") (POV-Ray's 'radius' is 'inner' for a "
+        "spot light in Lucent)\n");
   CHECK(errors("<light type=\"directional\" falloff=\"2\"/>") ==
         "cylinder.xml:2:29: error: <light> attribute 'falloff': belongs to cylindrical lights; "
-        "this light is directional (set type=\"cylindrical\")\n");
+        "this light is directional (set type=\"cylindrical\") (POV-Ray's 'falloff' is 'angle' "
+        "for a spot light in Lucent)\n");
   CHECK(errors("<light type=\"cylindrical\" look_at=\"0 0 0\"/>")
             .find("cylinder.xml:2:29: error: <light>: unknown attribute 'look_at'") == 0);
 }
