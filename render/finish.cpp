@@ -1,5 +1,7 @@
 #include "finish.h"
 
+#include "optics.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -20,8 +22,10 @@ Color metallicTint(const Color& surface, double cosAngle) {
 
 }  // namespace
 
-Color surfaceResponse(const Material& m, const Color& kd, const Vec3& n, const Vec3& v,
+Color surfaceResponse(const Material& m, const Color& kd, const ShadingPoint& at,
                       const Vec3& toLight) {
+  const Vec3& n = at.n;
+  const Vec3& v = at.v;
   const double nDotL = glm::dot(n, toLight);
   // pow is skipped at the default brilliance: the common case stays one multiply.
   const double diffuse = m.brilliance == 1.0 ? nDotL : std::pow(nDotL, m.brilliance);
@@ -46,6 +50,29 @@ Color surfaceResponse(const Material& m, const Color& kd, const Vec3& n, const V
     }
   }
   return sum;
+}
+
+SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool solid, double n1,
+                            double n2) {
+  SecondaryRays rays;
+  Color kr = m.reflective, kt = m.transmissive;
+  if (m.fresnel && (maxComponent(kr) > 0.0f || maxComponent(kt) > 0.0f)) {
+    const float f = static_cast<float>(fresnelDielectric(glm::dot(at.v, at.n), n1, n2));
+    kr *= f;
+    kt *= 1.0f - f;
+  }
+  rays.mirror = kr;
+  if (maxComponent(kt) > 0.0f) {
+    if (!solid || n1 == n2) {
+      rays.straight = true;
+      rays.transmitted = kt;
+    } else if (refract(-at.v, at.n, n1 / n2, rays.refracted)) {
+      rays.transmitted = kt;
+    } else {
+      rays.mirror += kt;  // total internal reflection: the k_t share joins the mirror ray
+    }
+  }
+  return rays;
 }
 
 }  // namespace lucent

@@ -1,5 +1,6 @@
-// What a shape's entry in the registry (shape_type.h) reads its attributes through. The
-// scene language implements it over one XML element (lang/shape_parser.cpp): every getter
+// What a shape's entry in the registry (shape_type.h) and a row of the finish table
+// (finish_terms.h) read their attributes through. The scene language implements it over one
+// XML element (lang/element_input.h): every getter
 // substitutes parameters, parses, checks the range and reports a located error itself, and
 // returns the default when the attribute is absent or wrong, so parsing goes on.
 #pragma once
@@ -59,6 +60,9 @@ class AttributeInput {
   // Not zero; returned normalised.
   virtual Vec3 direction(const char* attr, const Vec3& def) = 0;
   virtual bool boolean(const char* attr, bool def) = 0;
+  // A colour (the scene language's forms), components >= 0. `scalar`, when given, is set to
+  // whether it was written as one number, and only when the attribute is read.
+  virtual Color color(const char* attr, const Color& def, bool* scalar) = 0;
   // The index of the value in `names`; `def` when absent or not one of them (reported).
   virtual size_t choice(const char* attr, size_t def,
                         const std::vector<std::string_view>& names) = 0;
