@@ -127,6 +127,36 @@ const std::vector<FinishTerm>& finishTerms() {
              // It tints highlights only: without one, POV-Ray has nothing to tint either.
              if (m.metallic && m.hasHighlight()) out.line("metallic");
            }),
+      term(
+          [] {
+            Attribute a = number("irid", &Material::irid,
+                                 NumberRule::between(0.0, 1.0, "a number from 0 to 1"),
+                                 "POV-Ray's irid, thin-film interference: the light from each "
+                                 "light and the reflected light are multiplied, per channel, "
+                                 "by 1 + irid·cos(2π·t·(|N·L| + |N·V|)/λ), t the film's "
+                                 "thickness (irid-thickness, varied by irid-turbulence), L "
+                                 "the light's direction (the reflected ray's for reflection) "
+                                 "and λ POV-Ray's default irid_wavelength 0.70 0.52 0.48 "
+                                 "(red, green, blue). 0 to 1; 0: none.");
+            a.info.schemaType = "unitInterval";
+            return a;
+          }(),
+          "finish { irid { amount thickness t turbulence u } }", {},
+          [](const Material& m, PovFinishOut& out) {
+            // POV-Ray's irid_wavelength is left at its default, the wavelengths Lucent uses.
+            if (m.irid > 0.0)
+              out.line("irid { " + out.number(m.irid) + " thickness " +
+                       out.number(m.iridThickness) + " turbulence " + out.number(m.iridTurbulence) +
+                       " }");
+          }),
+      term(number("irid-thickness", &Material::iridThickness, NumberRule::nonNegative(),
+                  "irid: the film's thickness t, >= 0; at 0 the factor is 1 + irid everywhere."),
+           "finish { irid { thickness } }, written by irid's row", {{"thickness"}}),
+      term(number("irid-turbulence", &Material::iridTurbulence, NumberRule::nonNegative(),
+                  "irid: the thickness varies over the surface as t·(1 + irid-turbulence·(2τ − "
+                  "1)), τ POV-Ray's turbulence (5 octaves, omega 0.5, lambda 2, noise "
+                  "generator 2) at the world-space point, >= 0."),
+           "finish { irid { turbulence } }, written by irid's row"),
   };
   return table;
 }

@@ -190,3 +190,17 @@ TEST_CASE("a coloured phong is written as its mean with a warning", "[povray][ma
   CHECK(e.has("    phong 0.6\n"));
   REQUIRE(e.pov.issues.size() == 1);
 }
+
+TEST_CASE("irid is POV-Ray's irid block, written only when its amount is above 0",
+          "[povray][materials][finish][irid]") {
+  Exported e = exportMaterial(
+      R"XML(diffuse="0.5" irid="0.35" irid-thickness="0.4" irid-turbulence="0.7")XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.pov.issues.empty());
+  CHECK(e.has("    brilliance 1\n    irid { 0.35 thickness 0.4 turbulence 0.7 }\n  }\n"));
+
+  // Thickness and turbulence alone change nothing, in Lucent as in POV-Ray.
+  Exported off = exportMaterial(R"XML(diffuse="0.5" irid-thickness="0.4")XML");
+  REQUIRE(off.pov.ok());
+  CHECK_FALSE(off.has("irid"));
+}

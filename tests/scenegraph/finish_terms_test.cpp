@@ -81,7 +81,7 @@ class RecordingFinish final : public PovFinishOut {
 // A value of the attribute's type the parser accepts.
 std::string sampleValue(const AttributeInfo& a) {
   if (a.type == AttrType::Boolean) return "true";
-  if (a.type == AttrType::Number) return "2.5";
+  if (a.type == AttrType::Number) return "0.5";  // within every range
   return "0.25 0.5 0.75";
 }
 
@@ -162,6 +162,7 @@ TEST_CASE("finish table: a row that writes POV-Ray lines writes its own keywords
   m.specular = Color(0.4f);
   m.phong = Color(0.3f);
   m.metallic = true;
+  m.irid = 0.3;
   size_t writers = 0;
   for (const FinishTerm& t : finishTerms()) {
     if (!t.writePov) continue;
