@@ -1,6 +1,6 @@
 // The scene language's AttributeInput (scenegraph/attribute_input.h): one XML element read
 // through its ElementReader, so that the tables of scenegraph/ (the shape registry's
-// fields, the camera and light tables' readers) read attributes without knowing of XML.
+// fields, the camera, light and finish tables' readers) read attributes without knowing of XML.
 #pragma once
 
 #include "element_reader.h"
@@ -29,7 +29,10 @@ class ElementInput final : public AttributeInput {
   }
   Vec3 vector(const char* attr, const Vec3& def) override { return r_.vector(attr, def); }
   Vec3 direction(const char* attr, const Vec3& def) override { return r_.direction(attr, def); }
-  Color color(const char* attr, const Color& def) override { return r_.color(attr, def); }
+  using AttributeInput::color;
+  Color color(const char* attr, const Color& def, bool* scalar) override {
+    return r_.color(attr, def, scalar);
+  }
   bool boolean(const char* attr, bool def) override { return r_.boolean(attr, def); }
   size_t choice(const char* attr, size_t def, const std::vector<std::string_view>& names) override;
   std::optional<std::string> text(const char* attr) override { return r_.text(attr); }

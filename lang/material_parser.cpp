@@ -1,12 +1,16 @@
 // <material> (contract, "<material>"): all attributes optional, colours default to 0,
-// shininess 64, ior 1. One texture child at most (texture_parser.h); with a texture,
-// diffuse defaults to 1 so the texture shows as it is.
-// base="id" starts from another material and overrides what is written; default="true"
+// shininess 64, ior 1. The finish and interior terms are read through their rows of the
+// finish table (scenegraph/finish_terms.h); this file keeps the rest. One texture child at
+// most (texture_parser.h); with a texture, diffuse defaults to 1 so the texture shows as it
+// is. base="id" starts from another material and overrides what is written; default="true"
 // makes a named material the one of shapes that have none.
+#include "element_input.h"
 #include "element_parsers.h"
 #include "pattern_parser.h"
 #include "povray_names.h"
 #include "texture_parser.h"
+
+#include "scenegraph/finish_terms.h"
 
 #include <algorithm>
 #include <functional>
@@ -15,10 +19,14 @@ namespace lucent {
 
 namespace {
 
-const std::vector<std::string_view> kMaterialAttributes{
-    "id",         "emissive",     "ambient",  "diffuse", "specular",   "shininess",
-    "reflective", "transmissive", "ior",      "fresnel", "absorption", "phong",
-    "phong-size", "brilliance",   "metallic", "base",    "default"};
+// id, the finish table's terms (scenegraph/finish_terms.h), base and default.
+std::vector<std::string_view> materialAttributes() {
+  std::vector<std::string_view> names{"id"};
+  for (const FinishTerm& t : finishTerms()) names.push_back(t.info.name);
+  names.push_back("base");
+  names.push_back("default");
+  return names;
+}
 // The texture elements (the table of texture kinds), then the normal perturbations.
 std::vector<std::string_view> materialChildren() {
   std::vector<std::string_view> names = textureElements();
@@ -30,7 +38,8 @@ std::vector<std::string_view> materialChildren() {
 using BaseResolver = std::function<std::optional<uint32_t>(ElementReader&)>;
 
 std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const BaseResolver& baseOf) {
-  r.checkAttributes(kMaterialAttributes);
+  static const std::vector<std::string_view> attributes = materialAttributes();
+  r.checkAttributes(attributes);
   ParseContext& ctx = r.ctx();
   Material m;
   bool wroteDiffuse = false;
@@ -57,21 +66,10 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
   if (!topLevel && r.has("default"))
     r.attrError("default", "only a top-level <material> with an id can be the default material");
 
-  m.emissive = r.color("emissive", m.emissive);
-  m.ambient = r.color("ambient", m.ambient, &m.ambientIsScalar);
-  m.diffuse = r.color("diffuse", m.diffuse);
+  // The finish and interior terms, each by its row of the finish table.
+  ElementInput in(r);
+  for (const FinishTerm& t : finishTerms()) t.read(m, in);
   wroteDiffuse = wroteDiffuse || r.has("diffuse");
-  m.specular = r.color("specular", m.specular);
-  m.shininess = r.number("shininess", m.shininess, NumberRule::nonNegative());
-  m.reflective = r.color("reflective", m.reflective);
-  m.transmissive = r.color("transmissive", m.transmissive);
-  m.ior = r.number("ior", m.ior, NumberRule::positive());
-  m.fresnel = r.boolean("fresnel", m.fresnel);
-  m.absorption = r.color("absorption", m.absorption);
-  m.phong = r.color("phong", m.phong);
-  m.phongSize = r.number("phong-size", m.phongSize, NumberRule::positive());
-  m.brilliance = r.number("brilliance", m.brilliance, NumberRule::nonNegative());
-  m.metallic = r.boolean("metallic", m.metallic);
 
   // A texture (or normal) of its own replaces the base's.
   std::optional<SourceLoc> textureLoc, normalLoc;

@@ -2,6 +2,8 @@
 
 #include "element_parsers.h"
 
+#include "scenegraph/finish_terms.h"
+
 #include <vector>
 
 namespace lucent {
@@ -16,7 +18,8 @@ struct PovWord {
 
 constexpr std::string_view kOnShape = "";  // any element without an entry of its own
 
-// POV-Ray's own spellings (its keywords use '_', Lucent's attributes '-').
+// POV-Ray's own spellings (its keywords use '_', Lucent's attributes '-'). Those of the
+// material's finish and interior terms are the finish table's (scenegraph/finish_terms.h).
 const std::vector<PovWord> kAttributes{
     {"camera", "location", "'position'"},
     {"camera", "look_at", "'look-at'"},
@@ -36,9 +39,6 @@ const std::vector<PovWord> kAttributes{
     {"light", "spotlight", "type=\"spot\""},
     {"light", "parallel", "type=\"directional\""},
     {"light", "area_light", "type=\"area\""},
-    {"material", "color", "'diffuse'"},
-    {"material", "colour", "'diffuse'"},
-    {"material", "rgb", "'diffuse'"},
     {"material", "pigment",
      "'diffuse' (a colour) or a <checker>, <image>, <pattern>, <hexagon> or <brick> child"},
     {"material", "finish",
@@ -46,12 +46,6 @@ const std::vector<PovWord> kAttributes{
      "'reflective'"},
     {"material", "normal", "a <normal type depth> or <bump-map src depth> child"},
     {"material", "bump_map", "a <bump-map src depth> child"},
-    {"material", "phong_size", "'phong-size'"},
-    {"material", "roughness", "'shininess' (1/roughness)"},
-    {"material", "reflection", "'reflective'"},
-    {"material", "filter", "'transmissive'"},
-    {"material", "transmit", "'transmissive'"},
-    {"material", "emission", "'emissive'"},
     {"material", "interior", "the material's 'ior' and 'absorption'"},
     {"fog", "fog_type", "type=\"ground\" (fog_type 2) or the default constant fog (fog_type 1)"},
     {"fog", "fog_offset", "'offset'"},
@@ -131,6 +125,12 @@ std::string lookup(const std::vector<PovWord>& table, std::string_view where,
 }  // namespace
 
 std::string povrayAttributeHint(std::string_view element, std::string_view attribute) {
+  if (element == "material")
+    for (const FinishTerm& t : finishTerms())
+      for (const PovHint& h : t.povHints)
+        if (h.word == attribute)
+          return hint(attribute,
+                      "'" + t.info.name + "'" + (h.note.empty() ? "" : " " + std::string(h.note)));
   return lookup(kAttributes, element, attribute);
 }
 

@@ -3,6 +3,7 @@
 #include "schema_template.h"  // kSchemaTemplate, made by CMake from schema_template.xsd
 
 #include "scenegraph/camera.h"
+#include "scenegraph/finish_terms.h"
 #include "scenegraph/light.h"
 #include "scenegraph/pattern.h"
 #include "scenegraph/shape_registry.h"
@@ -63,9 +64,12 @@ std::string attributeXsd(const AttributeInfo& a, int indent = 8) {
   if (!type.empty()) head += fmt::format(" type=\"{}\"", type);
   if (a.required) head += " use=\"required\"";
   else if (!a.defaultText.empty()) head += fmt::format(" default=\"{}\"", escaped(a.defaultText));
+  // The default ends the documentation, unless the documentation says it already (where it
+  // reads better before a remark: "Default 1. Glass 1.5, ...").
   std::string doc = a.doc;
-  if (!a.required && !a.defaultText.empty())
-    doc += (doc.empty() ? "" : " ") + ("Default " + a.defaultText + ".");
+  const std::string defaultSentence = "Default " + a.defaultText + ".";
+  if (!a.required && !a.defaultText.empty() && doc.find(defaultSentence) == std::string::npos)
+    doc += (doc.empty() ? "" : " ") + defaultSentence;
   std::string out = head + ">\n";
   out += fmt::format("{}  <xs:annotation><xs:documentation>{}</xs:documentation></xs:annotation>\n",
                      pad, escaped(doc));
@@ -207,6 +211,14 @@ std::string lightAttributesXsd() {
   return out;
 }
 
+// The finish table's terms, the attributes of materialAttributes (id, base and default are
+// the template's).
+std::string materialAttributesXsd() {
+  std::string out;
+  for (const FinishTerm& t : finishTerms()) out += attributeXsd(t.info, 4);
+  return out;
+}
+
 std::string shapeXpath() {
   std::string out;
   for (const ShapeType& t : shapeTypes()) out += ".//" + t.element + " | ";
@@ -235,6 +247,7 @@ std::string schemaText() {
   replaceOnce(text, "@COLOUR_PATTERNS@", patternTypesXsd(true));
   replaceOnce(text, "@NORMAL_PATTERNS@", patternTypesXsd(false));
   replaceOnce(text, "@TEXTURE_ELEMENTS@", textureElementsXsd());
+  replaceOnce(text, "@MATERIAL_ATTRIBUTES@", materialAttributesXsd());
   return text;
 }
 

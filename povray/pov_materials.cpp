@@ -1,5 +1,6 @@
 #include "pov_materials.h"
 #include "pov_patterns.h"
+#include "scenegraph/finish_terms.h"
 #include "scenegraph/overloaded.h"
 #include "scenegraph/shape_registry.h"
 
@@ -31,6 +32,17 @@ Vec3 divide(const Vec3& term, const Vec3& divisor, bool& bad) {
 
 // A number computed from float colours, as short as its float value.
 std::string floatText(double v) { return fmt::format("{}", static_cast<float>(v)); }
+
+// A finish table row's lines, into the texture's finish block.
+class FinishLines final : public PovFinishOut {
+ public:
+  explicit FinishLines(PovWriter& out) : out_(out) {}
+  void line(std::string_view text) override { out_.line(text); }
+  std::string number(double v) const override { return povNumber(v); }
+
+ private:
+  PovWriter& out_;
+};
 
 std::string colourText(const Color& c) {
   if (c.r == c.g && c.g == c.b) return fmt::format("{}", c.r);
@@ -146,10 +158,9 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
                                         name, colourText(m.phong), floatText(s.phong)));
     }
   }
-  s.phongSize = m.phongSize;
-  s.brilliance = m.brilliance;
+  // `metallic` itself is its row's (scenegraph/finish_terms.cpp); what it cannot carry over is
+  // said here, where the pigment is known.
   if (m.metallic && m.hasHighlight()) {
-    s.metallic = true;
     if (filterOnly || isZero(kd))
       issues.warning(m.loc, fmt::format("{}: metallic without a diffuse colour: POV-Ray tints "
                                         "the highlights by its pigment, which here is not k_d",
@@ -159,10 +170,6 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
                                         "tints the highlights by the image alone",
                                         name, colourText(m.diffuse)));
   }
-  // n_s = 0 means (N·H)^0 = 1: an exponent of 1e-9 differs from it by less than float
-  // resolution for any N·H above 1e-30.
-  s.roughness = m.shininess > 0.0 ? 1.0 / m.shininess : 1e9;
-
   // Reflection.
   s.reflection = kr;
   const bool transmits = !isZero(kt);
@@ -329,18 +336,18 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, con
   out.line("ambient " + povRgb(s.ambient));
   out.line("emission " + povRgb(s.emission));
   out.line("diffuse " + povFloat(s.diffuse));
-  out.line("brilliance " + povNumber(s.brilliance));
   out.line("phong " + povFloat(s.phong));
-  if (s.phong > 0.0) out.line("phong_size " + povNumber(s.phongSize));
   out.line("specular " + povFloat(s.specular));
-  out.line("roughness " + povNumber(s.roughness));
-  if (s.metallic) out.line("metallic");
   if (s.fresnel) {
     out.line("reflection { rgb <0, 0, 0>, " + povRgb(s.reflection) + " fresnel on }");
   } else {
     out.line("reflection { " + povRgb(s.reflection) + " }");
   }
   if (s.conserveEnergy) out.line("conserve_energy");
+  // The terms POV-Ray has as they are, each written by its row of the finish table.
+  FinishLines finishLines(out);
+  for (const FinishTerm& t : finishTerms())
+    if (t.writePov) t.writePov(m, finishLines);
   out.close();
 }
 

@@ -22,7 +22,9 @@
 
 namespace lucent {
 
-// The numbers of one material's POV-Ray texture and interior.
+// The numbers of one material's POV-Ray texture and interior that are converted together;
+// the finish terms POV-Ray has as they are (brilliance, phong_size, roughness, metallic)
+// are written by their rows of the finish table (scenegraph/finish_terms.h).
 struct PovSurface {
   // Pigment = pigmentScale ⊙ texture colour (checker colours premultiplied; an image map
   // needs pigmentScale = 1), with `filter` and `transmit` on every pigment colour.
@@ -36,12 +38,8 @@ struct PovSurface {
   Vec3 emission{0.0};  // colour, multiplied by the pigment
   double diffuse = 0.0;
   double specular = 0.0;
-  double roughness = 1.0 / 64.0;
-  double brilliance = 1.0;
   double phong = 0.0;
-  double phongSize = 40.0;
-  bool metallic = false;  // the pigment then carries the whole diffuse colour
-  Vec3 reflection{0.0};   // the maximum (fresnel) or constant reflection
+  Vec3 reflection{0.0};  // the maximum (fresnel) or constant reflection
   bool fresnel = false;
   bool conserveEnergy = false;
 

@@ -1,5 +1,8 @@
 #include "finish.h"
 
+#include "optics.h"
+#include "patterns/turbulence.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,10 +21,42 @@ Color metallicTint(const Color& surface, double cosAngle) {
   return Color(1.0f) + share * (surface - Color(1.0f));
 }
 
+// POV-Ray's irid (Trace::ComputeIridColour in its sources): thin-film interference.
+
+// POV-Ray 3.7's default irid_wavelength (its scene data's; the 3.7 documentation's table of
+// defaults says 0.25 0.18 0.14, which is not what it uses). Lucent has no global setting.
+const Color kIridWavelength(0.70f, 0.52f, 0.48f);
+
+// The film's thickness at p: its noise is POV-Ray's turbulence at the world-space point with
+// fixed octaves, omega and lambda and the scene's noise generator (3.7's default, 2; Lucent
+// exports no other).
+double iridThickness(const Material& m, const Vec3& p) {
+  if (m.iridTurbulence == 0.0) return m.iridThickness;
+  PatternPlacement noise;
+  noise.octaves = 5;
+  noise.omega = 0.5;
+  noise.lambda = 2.0;
+  const double tau = turbulence(p, noise, 2);
+  return m.iridThickness * (1.0 + m.iridTurbulence * (2.0 * tau - 1.0));
+}
+
+// The factor per channel for light arriving along a direction whose cosine with the normal
+// is cosLight.
+Color iridFactor(const Material& m, const ShadingPoint& at, double cosLight) {
+  const double phase =
+      2.0 * M_PI * iridThickness(m, at.p) * (std::abs(cosLight) + std::abs(glm::dot(at.n, at.v)));
+  auto channel = [&](float wavelength) {
+    return static_cast<float>(1.0 + m.irid * std::cos(phase / wavelength));
+  };
+  return Color(channel(kIridWavelength.r), channel(kIridWavelength.g), channel(kIridWavelength.b));
+}
+
 }  // namespace
 
-Color surfaceResponse(const Material& m, const Color& kd, const Vec3& n, const Vec3& v,
+Color surfaceResponse(const Material& m, const Color& kd, const ShadingPoint& at,
                       const Vec3& toLight) {
+  const Vec3& n = at.n;
+  const Vec3& v = at.v;
   const double nDotL = glm::dot(n, toLight);
   // pow is skipped at the default brilliance: the common case stays one multiply.
   const double diffuse = m.brilliance == 1.0 ? nDotL : std::pow(nDotL, m.brilliance);
@@ -45,7 +80,38 @@ Color surfaceResponse(const Material& m, const Color& kd, const Vec3& n, const V
       sum += kp;
     }
   }
+  // irid multiplies the diffuse and both highlights of this light, as POV-Ray's does.
+  if (m.irid > 0.0) sum *= iridFactor(m, at, nDotL);
   return sum;
+}
+
+SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool solid, double n1,
+                            double n2) {
+  SecondaryRays rays;
+  Color kr = m.reflective, kt = m.transmissive;
+  if (m.fresnel && (maxComponent(kr) > 0.0f || maxComponent(kt) > 0.0f)) {
+    const float f = static_cast<float>(fresnelDielectric(glm::dot(at.v, at.n), n1, n2));
+    kr *= f;
+    kt *= 1.0f - f;
+  }
+  rays.mirror = kr;
+  if (maxComponent(kt) > 0.0f) {
+    if (!solid || n1 == n2) {
+      rays.straight = true;
+      rays.transmitted = kt;
+    } else if (refract(-at.v, at.n, n1 / n2, rays.refracted)) {
+      rays.transmitted = kt;
+    } else {
+      rays.mirror += kt;  // total internal reflection: the k_t share joins the mirror ray
+    }
+  }
+  // irid multiplies the light the mirror ray brings back (totally reflected light too, as
+  // POV-Ray's reflection does), with the mirror direction as L: |N·L| = |N·V|. Being part
+  // of the ray's weight here, it also counts in the min-weight cut-off, which POV-Ray's
+  // adc_bailout does not; the two differ only for rays that close to the cut-off.
+  if (m.irid > 0.0 && maxComponent(rays.mirror) > 0.0f)
+    rays.mirror *= iridFactor(m, at, glm::dot(at.n, at.v));
+  return rays;
 }
 
 }  // namespace lucent

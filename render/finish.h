@@ -1,17 +1,44 @@
-// The light a surface sends towards the viewer from one light: diffuse with brilliance,
-// the Blinn-Phong `specular` highlight, the Phong `phong` highlight and `metallic`
-// (the contract's <material> and "Finish"), per unit of the light's radiance.
+// What a surface does with light (the contract's <material> and "Finish"): the light it
+// sends towards the viewer from one light (diffuse with brilliance, the Blinn-Phong
+// `specular` highlight, the Phong `phong` highlight and `metallic`), and the weights of the
+// rays it sends on (mirror and transmitted, `fresnel`, total internal reflection). The
+// finish's terms are declared in scenegraph/finish_terms.h; their shading is here.
 #pragma once
 
 #include "scenegraph/material.h"
 
 namespace lucent {
 
-// n: the shading normal facing the viewer; v: towards the viewer; toLight: towards the
-// light; all unit vectors, with n·toLight > 0 (a light behind the surface gives nothing,
-// the caller skips it). kd: the diffuse colour times the texture.
-Color surfaceResponse(const Material& m, const Color& kd, const Vec3& n, const Vec3& v,
+// Where a surface is shaded: the world-space point, the shading normal facing the viewer
+// and the direction towards the viewer (unit vectors).
+struct ShadingPoint {
+  Vec3 p{0.0};
+  Vec3 n{0.0, 1.0, 0.0};
+  Vec3 v{0.0, 0.0, 1.0};
+};
+
+// Per unit of the light's radiance. toLight: the unit direction towards the light, with
+// n·toLight > 0 (a light behind the surface gives nothing, the caller skips it). kd: the
+// diffuse colour times the texture.
+Color surfaceResponse(const Material& m, const Color& kd, const ShadingPoint& at,
                       const Vec3& toLight);
+
+// The rays a surface sends on and their weights.
+struct SecondaryRays {
+  // The mirror ray's: k_r (times the Fresnel reflectance with `fresnel`), plus the
+  // transmitted share under total internal reflection.
+  Color mirror{0.0f};
+  // The transmitted ray's: k_t (times 1 − F with `fresnel`); 0 when totally reflected.
+  Color transmitted{0.0f};
+  // The transmitted ray goes on unbent: a surface without an inside (a thin sheet), or
+  // the same index on both sides.
+  bool straight = false;
+  Vec3 refracted{0.0};  // its direction when it bends
+};
+// n1: the index on the viewer's side, n2: beyond (both 1 for an opaque material that needs
+// no Fresnel split); solid: whether the surface has an inside.
+SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool solid, double n1,
+                            double n2);
 
 // POV-Ray's empirical metallic reflectivity for the angle whose cosine is `cosAngle`:
 // a highlight's colour is 1 + (1 − F)·(C − 1) for the surface colour C ([DB 9/94] in its

@@ -131,6 +131,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     if (glm::dot(n, v) <= 0.0) n = ng;
     if (m.normal) n = perturbedShadingNormal(*m.normal, leaf.transform(), s, n, v);
     if (m.bumpMap) n = bumpedShadingNormal(*textures_.bumpMap(leaf.tag()), *m.bumpMap, s, n, v);
+    const ShadingPoint at{s.p, n, v};
 
     // Local terms: k_e + k_a·I_La (·k_t inside an object) + direct light.
     Color local = m.emissive;
@@ -147,11 +148,10 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     }
 
     // The interface: indices on both sides and the media beyond it.
-    Color kr = m.reflective, kt = m.transmissive;
-    const bool transmits = anyPositive(kt);
+    const bool transmits = anyPositive(m.transmissive);
     double n1 = 1.0, n2 = 1.0;
     MediaStack beyond = media;
-    if (transmits || (m.fresnel && anyPositive(kr))) {
+    if (transmits || (m.fresnel && anyPositive(m.reflective))) {
       if (!solid || front) {
         n1 = media.ior();
         n2 = m.ior;
@@ -161,50 +161,34 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
         beyond.remove(&m);
         n2 = beyond.ior();
       }
-      if (m.fresnel) {
-        float f = static_cast<float>(fresnelDielectric(glm::dot(v, n), n1, n2));
-        kr *= f;
-        kt *= 1.0f - f;
-      }
     }
+    const SecondaryRays rays = secondaryRays(m, at, solid, n1, n2);
 
     Color result = local;
-    Color mirror = kr;
-    bool straight = false;
-    if (anyPositive(kt)) {
-      // A surface without an inside is a thin sheet: light passes it without bending.
-      if (!solid || n1 == n2) {
-        straight = true;
-      } else {
-        Vec3 bent;
-        if (refract(-v, n, n1 / n2, bent)) {
-          Color w = weight * kt;
-          if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
-            ++stats.refracted;
-            result +=
-                kt * trace(spawnRay(s, bent, settings_.epsilon), depth + 1, w, beyond, seed, stats);
-          }
-        } else {
-          mirror += kt;  // total internal reflection: the k_t share joins the mirror ray
-        }
+    if (anyPositive(rays.transmitted) && !rays.straight) {
+      Color w = weight * rays.transmitted;
+      if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
+        ++stats.refracted;
+        result += rays.transmitted * trace(spawnRay(s, rays.refracted, settings_.epsilon),
+                                           depth + 1, w, beyond, seed, stats);
       }
     }
-    if (anyPositive(mirror)) {
-      Color w = weight * mirror;
+    if (anyPositive(rays.mirror)) {
+      Color w = weight * rays.mirror;
       if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
         ++stats.reflected;
-        result += mirror * trace(spawnRay(s, reflect(-v, n), settings_.epsilon), depth + 1, w,
-                                 media, seed, stats);
+        result += rays.mirror * trace(spawnRay(s, reflect(-v, n), settings_.epsilon), depth + 1, w,
+                                      media, seed, stats);
       }
     }
     sum += throughput * result;
 
-    if (!straight) return sum;
-    Color w = weight * kt;
+    if (!rays.straight) return sum;
+    Color w = weight * rays.transmitted;
     if (maxComponent(w) < settings_.minWeight) return sum;
     ++stats.refracted;
     weight = w;
-    throughput *= kt;
+    throughput *= rays.transmitted;
     ray = spawnRay(s, ray.d, settings_.epsilon);
     if (solid) media = beyond;
   }
@@ -219,7 +203,7 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
     const LightIncidence in = lightIncidence(light, s.p);
     if (!anyPositive(in.radiance)) continue;
     if (glm::dot(n, in.toLight) <= 0.0) continue;  // light behind: no diffuse, no highlight
-    const Color brdf = surfaceResponse(m, kd, n, v, in.toLight);
+    const Color brdf = surfaceResponse(m, kd, ShadingPoint{s.p, n, v}, in.toLight);
     if (!anyPositive(brdf)) continue;
     Color shadow(1.0f);
     if (light.shadows) {

@@ -1,6 +1,7 @@
 // What the tables' readers read attributes through: a shape's entry in the registry
-// (shape_type.h), the camera table (camera.h) and the light table (light.h). The scene
-// language implements it over one XML element (lang/element_input.h): every getter
+// (shape_type.h), the camera table (camera.h), the light table (light.h) and the finish
+// table (finish_terms.h). The scene language implements it over one
+// XML element (lang/element_input.h): every getter
 // substitutes parameters, parses, checks the range and reports a located error itself, and
 // returns the default when the attribute is absent or wrong, so parsing goes on.
 #pragma once
@@ -64,9 +65,12 @@ class AttributeInput {
   virtual Vec3 vector(const char* attr, const Vec3& def) = 0;
   // Not zero; returned normalised.
   virtual Vec3 direction(const char* attr, const Vec3& def) = 0;
-  // Three numbers, one for grey, #rrggbb or a CSS name; no negative component.
-  virtual Color color(const char* attr, const Color& def) = 0;
   virtual bool boolean(const char* attr, bool def) = 0;
+  // Three numbers, one for grey, #rrggbb or a CSS name; no negative component. `scalar`,
+  // when given, is set to whether it was written as one number, and only when the attribute
+  // is read.
+  virtual Color color(const char* attr, const Color& def, bool* scalar) = 0;
+  Color color(const char* attr, const Color& def) { return color(attr, def, nullptr); }
   // The index of the value in `names`; `def` when absent or not one of them (reported).
   virtual size_t choice(const char* attr, size_t def,
                         const std::vector<std::string_view>& names) = 0;

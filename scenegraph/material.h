@@ -42,6 +42,12 @@ struct Material {
   double ior = 1.0;          // eta
   bool fresnel = false;
   Color absorption{0.0f};  // Beer–Lambert coefficient per world unit
+  // POV-Ray's irid, thin-film interference: the light from each light and the mirror ray's
+  // are multiplied by 1 + irid·cos(φ/λ) per channel, φ = 2π·t·(|N·L| + |N·V|), t the film's
+  // thickness varied by noise with the turbulence (render/finish.cpp).
+  double irid = 0.0;  // the amount, 0 to 1; 0: none
+  double iridThickness = 0.0;
+  double iridTurbulence = 0.0;
 
   Texture texture;
   // <normal>: the shading normal perturbed by a pattern's slope (geometry unchanged).

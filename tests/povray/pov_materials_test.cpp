@@ -32,11 +32,11 @@ TEST_CASE("an opaque material with a coloured diffuse puts it in the pigment",
             "    ambient rgb <0.2, 0.25, 0.2>\n"
             "    emission rgb <0, 0, 0>\n"
             "    diffuse 1\n"
-            "    brilliance 1\n"
             "    phong 0\n"
             "    specular 0.5\n"
-            "    roughness 0.02\n"
             "    reflection { rgb <0.2, 0.2, 0.2> }\n"
+            "    roughness 0.02\n"
+            "    brilliance 1\n"
             "  }\n"
             "}\n"));
   CHECK(e.has("sphere {  // <sphere> test.xml:4:1\n  <0, 0, 0>, 1\n  texture { M1_m }\n}\n"));
@@ -166,7 +166,8 @@ TEST_CASE("phong, phong-size, brilliance and metallic are POV-Ray's finish keywo
   Exported e = exportMaterial(R"XML(diffuse="0.6" phong="0.7" phong-size="15" brilliance="3")XML");
   REQUIRE(e.pov.ok());
   CHECK(e.pov.issues.empty());
-  CHECK(e.has("    diffuse 0.6\n    brilliance 3\n    phong 0.7\n    phong_size 15\n"));
+  CHECK(e.has("    diffuse 0.6\n    phong 0.7\n"));
+  CHECK(e.has("    roughness 0.015625\n    phong_size 15\n    brilliance 3\n  }\n"));
   CHECK_FALSE(e.has("metallic"));
 
   // metallic tints by the pigment: a grey diffuse moves into the pigment (diffuse 1) so
@@ -188,4 +189,18 @@ TEST_CASE("a coloured phong is written as its mean with a warning", "[povray][ma
   REQUIRE(e.pov.ok());
   CHECK(e.has("    phong 0.6\n"));
   REQUIRE(e.pov.issues.size() == 1);
+}
+
+TEST_CASE("irid is POV-Ray's irid block, written only when its amount is above 0",
+          "[povray][materials][finish][irid]") {
+  Exported e = exportMaterial(
+      R"XML(diffuse="0.5" irid="0.35" irid-thickness="0.4" irid-turbulence="0.7")XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.pov.issues.empty());
+  CHECK(e.has("    brilliance 1\n    irid { 0.35 thickness 0.4 turbulence 0.7 }\n  }\n"));
+
+  // Thickness and turbulence alone change nothing, in Lucent as in POV-Ray.
+  Exported off = exportMaterial(R"XML(diffuse="0.5" irid-thickness="0.4")XML");
+  REQUIRE(off.pov.ok());
+  CHECK_FALSE(off.has("irid"));
 }

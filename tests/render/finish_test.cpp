@@ -153,8 +153,8 @@ TEST_CASE("metallic without a highlight changes nothing, and the defaults give p
   Material metal = plain;
   metal.metallic = true;
   const Vec3 n(0, 0, 1), v(0, 0, 1), l = glm::normalize(Vec3(0.3, 0.2, 1));
-  const Color a = surfaceResponse(plain, plain.diffuse, n, v, l);
-  const Color b = surfaceResponse(metal, metal.diffuse, n, v, l);
+  const Color a = surfaceResponse(plain, plain.diffuse, ShadingPoint{Vec3(0), n, v}, l);
+  const Color b = surfaceResponse(metal, metal.diffuse, ShadingPoint{Vec3(0), n, v}, l);
   CHECK(a == b);
   CHECK(a.r == Approx(0.5 * l.z).epsilon(1e-6));
 }

@@ -1,0 +1,164 @@
+#include "finish_terms.h"
+
+#include <fmt/format.h>
+
+namespace lucent {
+
+namespace {
+
+using Read = std::function<void(Material&, AttributeInput&)>;
+using WritePov = std::function<void(const Material&, PovFinishOut&)>;
+
+// A term's attribute and its reader; the default a number or boolean attribute shows in the
+// schema is Material's own default member value, so it is written once. A colour shows
+// none there (its doc says it): an absent colour keeps the base material's.
+struct Attribute {
+  AttributeInfo info;
+  Read read;
+};
+
+AttributeInfo info(const char* name, AttrType type, std::string defaultText, std::string doc) {
+  AttributeInfo a;
+  a.name = name;
+  a.type = type;
+  a.defaultText = std::move(defaultText);
+  a.doc = std::move(doc);
+  return a;
+}
+
+Attribute color(const char* name, Color Material::*m, std::string doc) {
+  AttributeInfo a = info(name, AttrType::Vector, "", std::move(doc));
+  a.schemaType = "color";
+  return {a, [name, m](Material& s, AttributeInput& in) { s.*m = in.color(name, s.*m, nullptr); }};
+}
+
+Attribute number(const char* name, double Material::*m, NumberRule rule, std::string doc) {
+  AttributeInfo a = info(name, AttrType::Number, fmt::format("{}", Material{}.*m), std::move(doc));
+  a.rule = rule;
+  return {a,
+          [name, m, rule](Material& s, AttributeInput& in) { s.*m = in.number(name, s.*m, rule); }};
+}
+
+Attribute boolean(const char* name, bool Material::*m, std::string doc) {
+  AttributeInfo a = info(name, AttrType::Boolean, Material{}.*m ? "true" : "false", std::move(doc));
+  return {a, [name, m](Material& s, AttributeInput& in) { s.*m = in.boolean(name, s.*m); }};
+}
+
+FinishTerm term(Attribute a, std::string_view pov, std::vector<PovHint> hints = {},
+                WritePov write = nullptr) {
+  return {std::move(a.info), std::move(a.read), pov, std::move(hints), std::move(write)};
+}
+
+}  // namespace
+
+const std::vector<FinishTerm>& finishTerms() {
+  static const std::vector<FinishTerm> table{
+      term(color("emissive", &Material::emissive,
+                 "k_e, emitted colour (added as is; does not light other objects). Default 0."),
+           "finish { emission }, divided by the pigment", {{"emission"}}),
+      term(
+          [] {
+            Attribute a = color("ambient", &Material::ambient,
+                                "k_a, ambient reflectance, times the global ambient (render "
+                                "ambient). Default 0. A single number is also multiplied by the "
+                                "texture colour.");
+            // Whether it was one number decides whether the texture multiplies it.
+            a.read = [](Material& m, AttributeInput& in) {
+              m.ambient = in.color("ambient", m.ambient, &m.ambientIsScalar);
+            };
+            return a;
+          }(),
+          "finish { ambient }, divided by the pigment"),
+      term(color("diffuse", &Material::diffuse,
+                 "k_d, Lambertian reflectance. Default 0, or 1 when the material has a texture "
+                 "(the texture colour multiplies it)."),
+           "the pigment's colour and finish { diffuse }", {{"color"}, {"colour"}, {"rgb"}}),
+      term(color("specular", &Material::specular,
+                 "k_s, Blinn-Phong highlight colour: k_s (N·H)^shininess. Default 0."),
+           "finish { specular } (one number: the mean of a colour)"),
+      term(number("shininess", &Material::shininess, NumberRule::nonNegative(),
+                  "n_s, Blinn-Phong exponent."),
+           "finish { roughness }, 1/shininess", {{"roughness", "(1/roughness)"}},
+           [](const Material& m, PovFinishOut& out) {
+             // n_s = 0 means (N·H)^0 = 1: an exponent of 1e-9 differs from it by less than
+             // float resolution for any N·H above 1e-30.
+             out.line("roughness " + out.number(m.shininess > 0.0 ? 1.0 / m.shininess : 1e9));
+           }),
+      term(color("reflective", &Material::reflective, "k_r, mirror reflection colour. Default 0."),
+           "finish { reflection }", {{"reflection"}}),
+      term(color("transmissive", &Material::transmissive,
+                 "k_t, transmission colour (refraction with ior; also filters shadow rays). "
+                 "Default 0."),
+           "the pigment's filter or transmit", {{"filter"}, {"transmit"}}),
+      term(number("ior", &Material::ior, NumberRule::positive(),
+                  "η, index of refraction (> 0). Default 1. Glass 1.5, water 1.33, diamond "
+                  "2.42."),
+           "interior { ior }"),
+      term(boolean("fresnel", &Material::fresnel,
+                   "true: k_r becomes k_r·F and k_t becomes k_t·(1−F), F the unpolarised "
+                   "dielectric Fresnel reflectance for ior."),
+           "finish { reflection { 0, k_r fresnel on } conserve_energy }"),
+      term(color("absorption", &Material::absorption,
+                 "Beer–Lambert absorption coefficient per world unit inside the object: light "
+                 "travelling d inside is multiplied by exp(−absorption·d). Default 0."),
+           "interior { fade_power 1001 fade_distance fade_color }"),
+      term(color("phong", &Material::phong,
+                 "k_p, Phong highlight colour: k_p (R·L)^phong-size with R the mirror "
+                 "direction of the view, as POV-Ray's phong. Default 0."),
+           "finish { phong } (one number: the mean of a colour)"),
+      term(number("phong-size", &Material::phongSize, NumberRule::positive(),
+                  "Phong exponent (> 0), as POV-Ray's phong_size."),
+           "finish { phong_size }", {{"phong_size"}},
+           [](const Material& m, PovFinishOut& out) {
+             if (maxComponent(m.phong) > 0.0f) out.line("phong_size " + out.number(m.phongSize));
+           }),
+      term(number("brilliance", &Material::brilliance, NumberRule::nonNegative(),
+                  "The diffuse term becomes k_d (N·L)^brilliance, as POV-Ray's brilliance."),
+           "finish { brilliance }", {},
+           [](const Material& m, PovFinishOut& out) {
+             out.line("brilliance " + out.number(m.brilliance));
+           }),
+      term(boolean("metallic", &Material::metallic,
+                   "true: the specular and phong highlights take the surface's diffuse colour "
+                   "(times the texture), fading to the light's colour at grazing light as "
+                   "POV-Ray's metallic."),
+           "finish { metallic }", {},
+           [](const Material& m, PovFinishOut& out) {
+             // It tints highlights only: without one, POV-Ray has nothing to tint either.
+             if (m.metallic && m.hasHighlight()) out.line("metallic");
+           }),
+      term(
+          [] {
+            Attribute a = number("irid", &Material::irid,
+                                 NumberRule::between(0.0, 1.0, "a number from 0 to 1"),
+                                 "POV-Ray's irid, thin-film interference: the light from each "
+                                 "light and the reflected light are multiplied, per channel, "
+                                 "by 1 + irid·cos(2π·t·(|N·L| + |N·V|)/λ), t the film's "
+                                 "thickness (irid-thickness, varied by irid-turbulence), L "
+                                 "the light's direction (the reflected ray's for reflection) "
+                                 "and λ POV-Ray's default irid_wavelength 0.70 0.52 0.48 "
+                                 "(red, green, blue). 0 to 1; 0: none.");
+            a.info.schemaType = "unitInterval";
+            return a;
+          }(),
+          "finish { irid { amount thickness t turbulence u } }", {},
+          [](const Material& m, PovFinishOut& out) {
+            // POV-Ray's irid_wavelength is left at its default, the wavelengths Lucent uses.
+            if (m.irid > 0.0)
+              out.line("irid { " + out.number(m.irid) + " thickness " +
+                       out.number(m.iridThickness) + " turbulence " + out.number(m.iridTurbulence) +
+                       " }");
+          }),
+      term(number("irid-thickness", &Material::iridThickness, NumberRule::nonNegative(),
+                  "irid: the film's thickness t, >= 0; at 0 the factor is 1 + irid everywhere."),
+           "finish { irid { thickness } }, written by irid's row", {{"thickness"}}),
+      term(number("irid-turbulence", &Material::iridTurbulence, NumberRule::nonNegative(),
+                  "irid: the thickness varies over the surface as t·(1 + irid-turbulence·(2τ − "
+                  "1)), τ POV-Ray's turbulence (5 octaves, omega 0.5, lambda 2, noise "
+                  "generator 2) at the world-space point, >= 0."),
+           "finish { irid { turbulence } }, written by irid's row"),
+  };
+  return table;
+}
+
+}  // namespace lucent
