@@ -23,11 +23,11 @@
 #include "load_scene.h"
 #include "tile_executor.h"
 
+#include "app/image_output.h"
+#include "app/progress_bar.h"
 #include "memory/system_memory.h"
 #include "meshes/mesh_file_cache.h"
-#include "render/image_io.h"
 #include "render/image_map_cache.h"
-#include "render/progress_bar.h"
 #include "render/renderer.h"
 #include "render/tile_render.h"
 #include "scenegraph/gradient_report.h"
@@ -147,7 +147,7 @@ void writeTileCosts(const std::string& path, const std::vector<std::pair<PixelRe
 }
 
 // Renders the loaded scene (frame `frame`) tile by tile and writes it to `output`, keeping
-// a checkpoint as it goes (render/checkpoint.h) and taking the tiles a resumed checkpoint
+// a checkpoint as it goes (app/checkpoint.h) and taking the tiles a resumed checkpoint
 // holds. The scene is freed before the image is written. `cancelled` in the result:
 // nothing was written (the checkpoint holds the finished tiles).
 RenderResult renderToFile(LoadedScene loaded, const std::string& output, RenderRun& run,
