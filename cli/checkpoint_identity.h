@@ -1,11 +1,11 @@
-// What a checkpoint must match to be resumed (render/checkpoint.h): the run's options that
+// What a checkpoint must match to be resumed (app/checkpoint.h): the run's options that
 // decide which pixels are rendered and how, and each frame's scene, settings and files.
 #pragma once
 
 #include "commands.h"
 #include "load_scene.h"
 
-#include "render/checkpoint.h"
+#include "app/checkpoint.h"
 #include "render/pixel_rect.h"
 
 #include <optional>

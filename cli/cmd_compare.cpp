@@ -91,9 +91,8 @@ std::vector<std::string> checkHandWritten(const std::string& path, const std::st
   return notes;
 }
 
-}  // namespace
-
-int runCompare(const CompareOptions& options, const CommonOptions& common) {
+// The scene request of compare's options, checked.
+SceneRequest compareRequest(const CompareOptions& options) {
   SceneRequest request;
   request.scene = options.scene;
   request.width = options.width;
@@ -105,31 +104,24 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
   request.samples = options.samples;
   checkOverrides(request);
   request.samples.reset();
-  std::optional<std::string> povray = findPovray();
-  if (!povray) throw IoFailure(povrayInstallHint());
-  if (!options.povFile.empty() && !fs::is_regular_file(options.povFile))
-    throw IoFailure(fmt::format("--pov {}: no such file", options.povFile));
+  return request;
+}
 
-  LoadedScene loaded = loadOneFrame(request, common, options.frame);
-  Scene& scene = *loaded.scene;
-  const Camera* camera = loaded.camera;
-  RenderSettings& settings = scene.render;
-  // One sample per pixel unless asked: both renderers then trace the pixel centres, the only
-  // sampling they share exactly. Or corner sampling, which is POV-Ray's method 2 exactly,
-  // unless -s asks for samples.
+// One sample per pixel unless asked: both renderers then trace the pixel centres, the only
+// sampling they share exactly. Or corner sampling, which is POV-Ray's method 2 exactly,
+// unless -s asks for samples. Returns whether corner sampling is kept.
+bool chooseSampling(RenderSettings& settings, const CompareOptions& options) {
   const bool corners = settings.adaptiveMode == AdaptiveMode::Corners && !options.samples;
   if (!corners) {
     settings.samples = options.samples.value_or(1);
     settings.adaptive = 0.0;
     settings.adaptiveMode = AdaptiveMode::Centres;
   }
+  return corners;
+}
 
-  const fs::path dir(options.outputDir);
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
-    throw IoFailure(fmt::format("cannot create the folder '{}'", dir.string()));
-
+// The report's settings and file names, before anything is rendered.
+CompareReport startReport(const CompareOptions& options, const RenderSettings& settings) {
   CompareReport report;
   report.scene = options.scene;
   report.width = settings.width;
@@ -149,61 +141,73 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
         "{} samples per pixel: Lucent uses Halton offsets, POV-Ray an antialiasing grid; "
         "expect differences at edges",
         settings.samples));
+  return report;
+}
 
-  // The POV-Ray scene: exported next to the results, or the user's own.
-  fs::path povScene;
-  std::string fileGamma = "1.0";
-  if (options.povFile.empty()) {
-    PovExport exported = exportPov(scene, PovExportOptions{options.camera});
-    for (const PovIssue& issue : exported.issues) {
-      fmt::print(stderr, "{}\n", issue.str());
-      report.warnings.push_back(issue.str());
-    }
-    if (!exported.ok()) {
-      fmt::print(stderr, "{}: cannot be exported to POV-Ray; nothing compared\n", options.scene);
-      return kInvalidScene;
-    }
-    povScene = fs::absolute(dir / "scene.pov");
-    writeText(povScene, exported.text);
-  } else {
-    povScene = fs::absolute(options.povFile);
-    report.handWritten = true;
-    std::ifstream in(options.povFile);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const PovAssumedGamma gamma = findAssumedGamma(text);
-    if (gamma.kind == PovAssumedGamma::Kind::Unreadable)
-      throw IoFailure(
-          fmt::format("--pov {}: {}: POV-Ray's output depends on its working gamma, "
-                      "which compare must know to read the image back; write "
-                      "`assumed_gamma` with a number (or srgb) in global_settings",
-                      options.povFile, gamma.problem));
-    fileGamma = gamma.fileGamma();
-    for (const std::string& note : checkHandWritten(options.povFile, text, gamma)) {
-      fmt::print(stderr, "lucent: warning: {}\n", note);
-      report.warnings.push_back(note);
-    }
+// The POV-Ray scene compared with.
+struct PovScene {
+  fs::path path;
+  std::string fileGamma = "1.0";  // the working gamma its images are read back with
+};
+
+// The scene exported beside the results; none when it cannot be exported (said why).
+std::optional<PovScene> exportedScene(const Scene& scene, const CompareOptions& options,
+                                      const fs::path& dir, CompareReport& report) {
+  PovExport exported = exportPov(scene, PovExportOptions{options.camera});
+  for (const PovIssue& issue : exported.issues) {
+    fmt::print(stderr, "{}\n", issue.str());
+    report.warnings.push_back(issue.str());
   }
-  report.povScene = povScene.string();
+  if (!exported.ok()) {
+    fmt::print(stderr, "{}: cannot be exported to POV-Ray; nothing compared\n", options.scene);
+    return std::nullopt;
+  }
+  PovScene pov{fs::absolute(dir / "scene.pov")};
+  writeText(pov.path, exported.text);
+  return pov;
+}
 
-  // Lucent, through the render library; --threads bounds the BVH builds too.
-  std::optional<tbb::global_control> threadLimit;
-  if (options.threads.value_or(0) > 0)
-    threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
-                        static_cast<size_t>(*options.threads));
+// --pov FILE: the user's own scene, its working gamma read from it.
+PovScene handWrittenScene(const CompareOptions& options, CompareReport& report) {
+  PovScene pov{fs::absolute(options.povFile)};
+  report.handWritten = true;
+  std::ifstream in(options.povFile);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const PovAssumedGamma gamma = findAssumedGamma(text);
+  if (gamma.kind == PovAssumedGamma::Kind::Unreadable)
+    throw IoFailure(
+        fmt::format("--pov {}: {}: POV-Ray's output depends on its working gamma, "
+                    "which compare must know to read the image back; write "
+                    "`assumed_gamma` with a number (or srgb) in global_settings",
+                    options.povFile, gamma.problem));
+  pov.fileGamma = gamma.fileGamma();
+  for (const std::string& note : checkHandWritten(options.povFile, text, gamma)) {
+    fmt::print(stderr, "lucent: warning: {}\n", note);
+    report.warnings.push_back(note);
+  }
+  return pov;
+}
+
+// Lucent, through the render library. Writes its 16-bit linear image into `dir`.
+void renderLucent(const Scene& scene, const Camera& camera, const CompareOptions& options,
+                  const fs::path& dir, CompareReport& report) {
   World world(scene);
-  Renderer renderer(world, *camera);
+  Renderer renderer(world, camera);
   RenderControl control;
   control.threads = options.threads.value_or(0);
   RenderResult lucent = renderer.render(control);
   report.lucentRender = "render library (Renderer::render)";
   report.lucentSeconds = lucent.seconds;
-  const fs::path lucentLinear = dir / report.lucentLinear;
-  writeLinear16Png(toRgb(lucent.image), lucentLinear.string());
+  writeLinear16Png(toRgb(lucent.image), (dir / report.lucentLinear).string());
+}
 
-  // POV-Ray, in the folder of its scene so that relative file names resolve as its
-  // author meant.
+// POV-Ray, in the folder of its scene so that relative file names resolve as its author
+// meant. Returns the image it wrote.
+fs::path renderPovray(const std::string& povray, const PovScene& pov,
+                      const RenderSettings& settings, bool corners, const CompareOptions& options,
+                      const fs::path& dir, CompareReport& report) {
   PovrayRender job;
-  job.input = povScene.string();
+  job.input = pov.path.string();
   job.output = fs::absolute(dir / report.povrayLinear).string();
   job.width = settings.width;
   job.height = settings.height;
@@ -212,25 +216,28 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
   job.cornerThreshold = settings.adaptive;
   job.cornerDepth = settings.adaptiveDepth;
   job.threads = options.threads.value_or(0);
-  job.fileGamma = fileGamma;
+  job.fileGamma = pov.fileGamma;
   std::vector<std::string> args = povrayArguments(job);
-  report.povrayCommand = commandLine(*povray, args);
+  report.povrayCommand = commandLine(povray, args);
   const fs::path log = fs::absolute(dir / report.povrayLog);
+  std::error_code ec;
   fs::remove(log, ec);
   fs::remove(job.output, ec);
-  ProcessResult run = runProcess(*povray, args, povScene.parent_path().string(), log.string());
+  ProcessResult run = runProcess(povray, args, pov.path.parent_path().string(), log.string());
   report.povraySeconds = run.seconds;
-  if (!run.started || run.exitStatus != 0 || !fs::exists(job.output)) {
+  if (!run.started || run.exitStatus != 0 || !fs::exists(job.output))
     throw IoFailure(
         fmt::format("POV-Ray failed (exit status {}) on '{}'; its last messages "
                     "({}):\n{}",
-                    run.exitStatus, povScene.string(), log.string(), logTail(log, 12)));
-  }
+                    run.exitStatus, pov.path.string(), log.string(), logTail(log, 12)));
+  return job.output;
+}
 
-  // Both decoded the same way: 16-bit linear code values, then sRGB-encoded for the
-  // metrics and the pictures.
-  RgbImage lucentImage = srgbEncoded(readLinear16Png(lucentLinear.string()));
-  RgbImage povImage = srgbEncoded(readLinear16Png(job.output));
+// Both images decoded the same way: 16-bit linear code values, then sRGB-encoded for the
+// metrics and the pictures; the metrics, pictures and reports into `dir`.
+void writeComparison(const fs::path& dir, const fs::path& povrayLinear, CompareReport& report) {
+  RgbImage lucentImage = srgbEncoded(readLinear16Png((dir / report.lucentLinear).string()));
+  RgbImage povImage = srgbEncoded(readLinear16Png(povrayLinear.string()));
   if (povImage.width != lucentImage.width || povImage.height != lucentImage.height)
     throw IoFailure(fmt::format("POV-Ray wrote a {}x{} image, Lucent {}x{}", povImage.width,
                                 povImage.height, lucentImage.width, lucentImage.height));
@@ -241,7 +248,9 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
                   (dir / report.heatMap).string());
   writeText(dir / "report.json", reportJson(report));
   writeText(dir / "report.html", reportHtml(report));
+}
 
+void printMetrics(const CompareReport& report, const fs::path& dir) {
   const ImageMetrics& m = report.metrics;
   fmt::print("psnr:       {}\n",
              std::isfinite(m.psnr) ? fmt::format("{:.2f} dB", m.psnr) : "inf (identical)");
@@ -252,6 +261,44 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
   fmt::print("time:       lucent {:.3f} s, povray {:.3f} s\n", report.lucentSeconds,
              report.povraySeconds);
   fmt::print("report:     {}\n", (dir / "report.html").string());
+}
+
+}  // namespace
+
+int runCompare(const CompareOptions& options, const CommonOptions& common) {
+  const SceneRequest request = compareRequest(options);
+  std::optional<std::string> povray = findPovray();
+  if (!povray) throw IoFailure(povrayInstallHint());
+  if (!options.povFile.empty() && !fs::is_regular_file(options.povFile))
+    throw IoFailure(fmt::format("--pov {}: no such file", options.povFile));
+
+  LoadedScene loaded = loadOneFrame(request, common, options.frame);
+  const Scene& scene = *loaded.scene;
+  RenderSettings& settings = loaded.scene->render;
+  const bool corners = chooseSampling(settings, options);
+
+  const fs::path dir(options.outputDir);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw IoFailure(fmt::format("cannot create the folder '{}'", dir.string()));
+
+  CompareReport report = startReport(options, settings);
+  std::optional<PovScene> pov = options.povFile.empty() ? exportedScene(scene, options, dir, report)
+                                                        : handWrittenScene(options, report);
+  if (!pov) return kInvalidScene;
+  report.povScene = pov->path.string();
+
+  // --threads bounds every parallel step, the BVH builds too.
+  std::optional<tbb::global_control> threadLimit;
+  if (options.threads.value_or(0) > 0)
+    threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
+                        static_cast<size_t>(*options.threads));
+  renderLucent(scene, *loaded.camera, options, dir, report);
+  const fs::path povrayLinear =
+      renderPovray(*povray, *pov, settings, corners, options, dir, report);
+  writeComparison(dir, povrayLinear, report);
+  printMetrics(report, dir);
   return kOk;
 }
 

@@ -21,7 +21,7 @@
 #include "primitives/text_outline.h"
 #include "primitives/transform.h"
 #include "render/camera_frame.h"
-#include "render/image_io.h"
+#include "render/image_read.h"
 #include "render/renderer.h"
 #include "render/texture.h"
 #include "scenegraph/located_error.h"

@@ -103,7 +103,7 @@ std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
   {
 #if defined(LUCENT_ASAN)
     // OpenImageIO 2.4's PNG reader leaks one string on a damaged or truncated file (libpng
-    // longjmps past its destructor: render/image_io.cpp, writeImageFile), and damaged files
+    // longjmps past its destructor: app/image_output.cpp, writeImageFile), and damaged files
     // are what the bad-input corpus feeds here: LeakSanitizer ignores what reading allocates.
     __lsan::ScopedDisabler ignoreLibraryLeak;
 #endif

@@ -11,12 +11,15 @@
 #include "load_scene.h"
 #include "tile_executor.h"
 
+#include <atomic>
 #include <filesystem>
 #include <optional>
 #include <set>
 #include <thread>
 
 namespace lucent::mpi {
+
+class FrameTiles;
 
 class TileDispatch : public cli::LoadObserver {
  public:
@@ -41,6 +44,12 @@ class TileDispatch : public cli::LoadObserver {
 
  private:
   void sendAll(int tag, const std::vector<char>& bytes);
+  // Completes the workers' load of `frame` (kLoaded, every file its parse read); they are
+  // then busy with it.
+  void sendLoaded(const cli::LoadedScene& loaded, int frame);
+  // Hands the frame's tiles to the workers as they ask, until each has none left.
+  void serveWorkers(FrameTiles& tiles, const std::vector<PixelRect>& rects, int frame,
+                    const std::atomic<bool>* cancel);
   std::filesystem::path scene_;      // canonical, of the frame being loaded
   std::optional<int> loadingFrame_;  // sent kFrame, not yet kLoaded or kNoMore
   std::thread::id mainThread_ = std::this_thread::get_id();

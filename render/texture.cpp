@@ -5,8 +5,8 @@
 #include "patterns/pattern_point.h"
 #include "patterns/pattern_value.h"
 
-#include "image_io.h"
 #include "image_map_cache.h"
+#include "image_read.h"
 
 #include "images/image_plugin.h"
 

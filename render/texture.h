@@ -4,7 +4,7 @@
 #include "scenegraph/located_error.h"
 #include "scenegraph/material.h"
 
-#include "image_io.h"
+#include "image_read.h"
 
 #include "primitives/hit.h"
 #include "primitives/instance.h"

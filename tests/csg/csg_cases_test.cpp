@@ -5,9 +5,9 @@
 #include "../render/scene_builder.h"
 
 #include "../support/scene_text.h"
+#include "app/image_output.h"
 #include "csg/csg_node.h"
 #include "lang/parser.h"
-#include "render/image_io.h"
 
 #include <catch2/catch.hpp>
 

@@ -3,10 +3,10 @@
 // and colour space, and carry the same chunks; and the built-in read-back check refuses
 // what is not complete.
 #include "../temp_dir.h"
+#include "app/image_output.h"
 #include "images/builtin/builtin_images.h"
 #include "images/image_plugin.h"
 #include "lang/parser.h"
-#include "render/image_io.h"
 #include "render/renderer.h"
 #include "scenegraph/world.h"
 

@@ -3,9 +3,9 @@
 // and wired into the tracer without touching hits or shadows.
 #include "scene_builder.h"
 
+#include "app/image_output.h"
 #include "lang/parser.h"
 #include "render/bump_map.h"
-#include "render/image_io.h"
 #include "render/image_map_cache.h"
 #include "render/texture.h"
 

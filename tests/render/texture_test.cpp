@@ -1,7 +1,7 @@
 // Checker cells, the boundary rule, and image textures looked up by (u,v).
 #include "scene_builder.h"
 
-#include "render/image_io.h"
+#include "app/image_output.h"
 #include "render/renderer.h"
 #include "render/texture.h"
 

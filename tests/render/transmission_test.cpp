@@ -2,7 +2,7 @@
 // recursion limits, traced through real scenes.
 #include "scene_builder.h"
 
-#include "render/image_io.h"
+#include "app/image_output.h"
 
 #include <catch2/catch.hpp>
 

@@ -16,7 +16,7 @@ fi
 copy() {
   rm -rf "$work/tree"; mkdir -p "$work/tree/docs"
   cp "$src/docs/architecture.md" "$work/tree/docs/"
-  for lib in memory primitives meshes csg scenegraph images povray lang render cli mpi; do
+  for lib in memory primitives meshes csg scenegraph images povray lang render app cli mpi; do
     cp -r "$src/$lib" "$work/tree/"
   done
 }

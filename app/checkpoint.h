@@ -12,8 +12,8 @@
 // The header is written to a temporary file and renamed into place.
 #pragma once
 
-#include "image.h"
-#include "pixel_rect.h"
+#include "render/image.h"
+#include "render/pixel_rect.h"
 
 #include <cstdio>
 #include <map>

@@ -1,7 +1,7 @@
 // A one-line progress display on a terminal: percentage, rays per second and time left.
 #pragma once
 
-#include "renderer.h"
+#include "render/render_control.h"
 
 #include <condition_variable>
 #include <cstdio>

@@ -1,7 +1,7 @@
 // Image files: the values each format stores, held to references independent of Lucent's
 // encoder (the sRGB formula written out here, a PPM read byte by byte, EXR's exact floats),
 // and failures that leave old files intact.
-#include "render/image_io.h"
+#include "app/image_output.h"
 #include "../temp_dir.h"
 
 #include <catch2/catch.hpp>

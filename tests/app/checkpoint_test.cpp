@@ -1,7 +1,7 @@
 // The checkpoint file: what is written reads back the same; a record cut short or damaged is
 // dropped with what follows it, never the records before; what differs between two
 // identities is said key by key.
-#include "render/checkpoint.h"
+#include "app/checkpoint.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,20 +1,16 @@
-// Image files, the format chosen by the file's extension: PNG and PPM are written by the
-// built-in part of the image layer (images/builtin/), everything else is read and written
-// through OpenImageIO (the plugin of images/image_plugin.h, loaded on first use).
+// The output image, the format chosen by the file's extension: PNG and PPM are written by
+// the built-in part of the image layer (images/builtin/), everything else through
+// OpenImageIO (the plugin of images/image_plugin.h, loaded on first use). A file is only ever
+// replaced by a complete one.
 #pragma once
 
-#include "image.h"
+#include "render/image.h"
+#include "render/image_read.h"
 
 #include <optional>
-#include <stdexcept>
 #include <string>
 
 namespace lucent {
-
-// A file that cannot be written or read; the message names the file and the reason.
-struct ImageIOError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // What each format stores:
 //   png, jpg, ppm  8-bit sRGB-encoded, srgbByte() (POV-Ray's exact encoding), clamped
@@ -45,18 +41,5 @@ void checkImageOutputPath(const std::string& path);
 enum class ImageWriter { Automatic, Plugin };
 void writeImageFile(const Image& image, const std::string& path,
                     ImageWriter writer = ImageWriter::Automatic);
-
-// How readImageFile() returns integer-encoded pixels.
-enum class PixelDecoding {
-  Linear,   // decoded from sRGB to linear RGB (float formats are returned as stored)
-  AsStored  // the stored code values scaled to [0,1] (v/255, v/65535), no colour decoding
-};
-
-// Opens the file and reads its header only, throwing ImageIOError for everything
-// readImageFile() would refuse from the header (not an image, no pixels, too large).
-void checkImageFile(const std::string& path);
-
-// Reads the first three channels (a grey image is repeated into all three).
-Image readImageFile(const std::string& path, PixelDecoding decoding = PixelDecoding::Linear);
 
 }  // namespace lucent

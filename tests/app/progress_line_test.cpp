@@ -1,5 +1,5 @@
 // The progress line: alone, or naming the frame with an ETA for the whole run.
-#include "render/progress_bar.h"
+#include "app/progress_bar.h"
 
 #include <catch2/catch.hpp>
 

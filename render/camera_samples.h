@@ -1,0 +1,39 @@
+// The camera's samples: the ray through a position of the film (and of the lens), traced
+// into the scene. Every sampler (pixel_sampler.h) takes its colours from here, and a
+// sample's colour depends only on where it is and its index, never on the thread or the
+// tile that asks: that is why images are bit-identical for any thread count.
+#pragma once
+
+#include "media_stack.h"
+#include "projection.h"
+#include "ray_stats.h"
+#include "tracer.h"
+
+namespace lucent {
+
+class CameraSamples {
+ public:
+  // `samples`: how many a pixel takes (at least 1); `background`: a sample whose film
+  // position the projection maps to no ray.
+  CameraSamples(const Projection& projection, const Tracer& tracer, Color background, int samples);
+
+  int samples() const { return samples_; }
+
+  // Sample k of `count` in pixel (x, y): the Halton sub-pixel offset and the lens position
+  // of sampling.h.
+  Color sample(int x, int y, int k, int count, RayStats& stats) const;
+  // Pixel (x, y): the average of its samples() samples.
+  Color pixel(int x, int y, RayStats& stats) const;
+  // The sample at film position (fx, fy) / step (corner sampling: a point of its lattice),
+  // through the lens centre.
+  Color latticeSample(int fx, int fy, int step, RayStats& stats) const;
+
+ private:
+  const Projection& projection_;
+  const Tracer& tracer_;
+  const MediaStack cameraMedia_;  // the solids the camera stands in
+  const Color background_;
+  const int samples_;
+};
+
+}  // namespace lucent

@@ -1,0 +1,32 @@
+// Reading image files (image textures, bump and height maps): every format through
+// OpenImageIO (the plugin of images/image_plugin.h, loaded on first use), refusing from the
+// header alone what cannot be read. Writing the output image is the application's
+// (app/image_output.h).
+#pragma once
+
+#include "image.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace lucent {
+
+// A file that cannot be written or read; the message names the file and the reason.
+struct ImageIOError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// How readImageFile() returns integer-encoded pixels.
+enum class PixelDecoding {
+  Linear,   // decoded from sRGB to linear RGB (float formats are returned as stored)
+  AsStored  // the stored code values scaled to [0,1] (v/255, v/65535), no colour decoding
+};
+
+// Opens the file and reads its header only, throwing ImageIOError for everything
+// readImageFile() would refuse from the header (not an image, no pixels, too large).
+void checkImageFile(const std::string& path);
+
+// Reads the first three channels (a grey image is repeated into all three).
+Image readImageFile(const std::string& path, PixelDecoding decoding = PixelDecoding::Linear);
+
+}  // namespace lucent
