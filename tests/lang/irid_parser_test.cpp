@@ -18,7 +18,7 @@ const Material& material(const Scene& s, const std::string& id) {
 
 }  // namespace
 
-TEST_CASE("irid: amount, thickness and turbulence are read; all default to 0",
+TEST_CASE("irid: amount, thickness and turbulence are read, and all default to 0",
           "[lang][finish][irid]") {
   auto s = parseClean(
       "<material id=\"film\" diffuse=\"0.5\" irid=\"0.35\" irid-thickness=\"0.4\" "
