@@ -38,6 +38,104 @@ bool checkCommandName(int argc, char** argv) {
   return false;
 }
 
+// Every command's options as parsed, and the subcommand CLI11 matched.
+struct Commands {
+  std::vector<std::string> defines, allowPaths;  // -D and --allow-path, of any command
+  RenderOptions render;
+  CheckOptions check;
+  ExportPovOptions exportPov;
+  CompareOptions compare;
+  std::string schemaOutput;
+  CLI::App *renderCmd = nullptr, *checkCmd = nullptr, *exportCmd = nullptr, *compareCmd = nullptr,
+           *schemaCmd = nullptr;
+};
+
+void addRender(CLI::App& app, Commands& c) {
+  c.renderCmd = app.add_subcommand("render", "Render a scene to an image");
+  setHelp(c.renderCmd);
+  addRenderOptions(c.renderCmd, c.render);
+  addCommonOptions(c.renderCmd, c.defines, c.allowPaths);
+}
+
+void addCheck(CLI::App& app, Commands& c) {
+  CheckOptions& check = c.check;
+  CLI::App* cmd = c.checkCmd =
+      app.add_subcommand("check", "Parse and validate a scene; print a summary");
+  setHelp(cmd);
+  cmd->add_option("scene", check.scene, "Scene file (.xml)")->required();
+  cmd->add_option("-w,--width", check.width, "Validate for this image width (as render -w)");
+  cmd->add_option("-h,--height", check.height, "Validate for this image height (as render -h)");
+  cmd->add_option("-s,--samples", check.samples, "Samples per pixel (as render -s)");
+  cmd->add_option("--max-depth", check.maxDepth, "Maximum recursion depth (as render)");
+  cmd->add_option("--camera", check.camera, "Validate the camera with this name");
+  addCommonOptions(cmd, c.defines, c.allowPaths);
+}
+
+void addExportPov(CLI::App& app, Commands& c) {
+  ExportPovOptions& exportPov = c.exportPov;
+  CLI::App* cmd = c.exportCmd =
+      app.add_subcommand("export-pov", "Write the scene as an equivalent POV-Ray 3.7 scene");
+  setHelp(cmd);
+  cmd->add_option("scene", exportPov.scene, "Scene file (.xml)")->required();
+  cmd->add_option("-o,--output", exportPov.output, "POV-Ray scene to write (.pov)")->required();
+  cmd->add_option("-w,--width", exportPov.width, "Image width the camera is set up for");
+  cmd->add_option("-h,--height", exportPov.height, "Image height the camera is set up for");
+  cmd->add_option("--max-depth", exportPov.maxDepth, "Maximum recursion depth");
+  cmd->add_option("--camera", exportPov.camera, "Export the camera with this name");
+  cmd->add_option("--frame", exportPov.frame, "Export this frame of an animation (default 1)");
+  addCommonOptions(cmd, c.defines, c.allowPaths);
+}
+
+void addCompare(CLI::App& app, Commands& c) {
+  CompareOptions& compare = c.compare;
+  CLI::App* cmd = c.compareCmd = app.add_subcommand(
+      "compare", "Render with Lucent and POV-Ray; write both images, a heat map and a report");
+  setHelp(cmd);
+  cmd->add_option("scene", compare.scene, "Scene file (.xml)")->required();
+  cmd->add_option("-o,--output", compare.outputDir, "Folder for the images and reports")
+      ->required();
+  cmd->add_option("--pov", compare.povFile,
+                  "Compare against this hand-written POV-Ray scene instead of the export");
+  cmd->add_option("-w,--width", compare.width, "Image width in pixels");
+  cmd->add_option("-h,--height", compare.height, "Image height in pixels");
+  cmd->add_option("-s,--samples", compare.samples,
+                  "Samples per pixel (default 1: pixel centres in both renderers)");
+  cmd->add_option("-t,--threads", compare.threads, "Threads for both renderers");
+  cmd->add_option("--max-depth", compare.maxDepth, "Maximum recursion depth");
+  cmd->add_option("--camera", compare.camera, "Render through the camera with this name");
+  cmd->add_option("--frame", compare.frame, "Compare this frame of an animation (default 1)");
+  addCommonOptions(cmd, c.defines, c.allowPaths);
+}
+
+void addSchema(CLI::App& app, Commands& c) {
+  c.schemaCmd =
+      app.add_subcommand("schema", "Print the scene language's XML Schema (docs/lucent.xsd)");
+  setHelp(c.schemaCmd);
+  c.schemaCmd->add_option("-o,--output", c.schemaOutput, "Write it to this file instead");
+}
+
+// Runs the command parsed; its exit status.
+int runCommand(const CLI::App& app, Commands& c) {
+  try {
+    for (const CLI::App* cmd : app.get_subcommands())
+      if (std::vector<std::string> extras = cmd->remaining(); !extras.empty())
+        throw UsageError(
+            unexpectedArguments(cmd, extras) +
+            fmt::format("\nRun 'lucent {} --help' for more information.", cmd->get_name()));
+    CommonOptions common;
+    takeCommonOptions(c.defines, c.allowPaths, common);
+
+    if (*c.renderCmd) return runRender(c.render, common);
+    if (*c.checkCmd) return runCheck(c.check, common);
+    if (*c.exportCmd) return runExportPov(c.exportPov, common);
+    if (*c.compareCmd) return runCompare(c.compare, common);
+    if (*c.schemaCmd) return runSchema(c.schemaOutput);
+    return kUsage;
+  } catch (...) {
+    return reportFailure(std::current_exception());
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -45,68 +143,12 @@ int main(int argc, char** argv) {
   setHelp(&app);
   app.require_subcommand(1);
   app.set_version_flag("--version", "lucent 0.1");
-
-  CommonOptions common;
-  std::vector<std::string> defines, allowPaths;
-
-  RenderOptions render;
-  CLI::App* renderCmd = app.add_subcommand("render", "Render a scene to an image");
-  setHelp(renderCmd);
-  addRenderOptions(renderCmd, render);
-  addCommonOptions(renderCmd, defines, allowPaths);
-
-  CheckOptions check;
-  CLI::App* checkCmd = app.add_subcommand("check", "Parse and validate a scene; print a summary");
-  setHelp(checkCmd);
-  checkCmd->add_option("scene", check.scene, "Scene file (.xml)")->required();
-  checkCmd->add_option("-w,--width", check.width, "Validate for this image width (as render -w)");
-  checkCmd->add_option("-h,--height", check.height,
-                       "Validate for this image height (as render -h)");
-  checkCmd->add_option("-s,--samples", check.samples, "Samples per pixel (as render -s)");
-  checkCmd->add_option("--max-depth", check.maxDepth, "Maximum recursion depth (as render)");
-  checkCmd->add_option("--camera", check.camera, "Validate the camera with this name");
-  addCommonOptions(checkCmd, defines, allowPaths);
-
-  ExportPovOptions exportPov;
-  CLI::App* exportCmd =
-      app.add_subcommand("export-pov", "Write the scene as an equivalent POV-Ray 3.7 scene");
-  setHelp(exportCmd);
-  exportCmd->add_option("scene", exportPov.scene, "Scene file (.xml)")->required();
-  exportCmd->add_option("-o,--output", exportPov.output, "POV-Ray scene to write (.pov)")
-      ->required();
-  exportCmd->add_option("-w,--width", exportPov.width, "Image width the camera is set up for");
-  exportCmd->add_option("-h,--height", exportPov.height, "Image height the camera is set up for");
-  exportCmd->add_option("--max-depth", exportPov.maxDepth, "Maximum recursion depth");
-  exportCmd->add_option("--camera", exportPov.camera, "Export the camera with this name");
-  exportCmd->add_option("--frame", exportPov.frame,
-                        "Export this frame of an animation (default 1)");
-  addCommonOptions(exportCmd, defines, allowPaths);
-
-  CompareOptions compare;
-  CLI::App* compareCmd = app.add_subcommand(
-      "compare", "Render with Lucent and POV-Ray; write both images, a heat map and a report");
-  setHelp(compareCmd);
-  compareCmd->add_option("scene", compare.scene, "Scene file (.xml)")->required();
-  compareCmd->add_option("-o,--output", compare.outputDir, "Folder for the images and reports")
-      ->required();
-  compareCmd->add_option("--pov", compare.povFile,
-                         "Compare against this hand-written POV-Ray scene instead of the export");
-  compareCmd->add_option("-w,--width", compare.width, "Image width in pixels");
-  compareCmd->add_option("-h,--height", compare.height, "Image height in pixels");
-  compareCmd->add_option("-s,--samples", compare.samples,
-                         "Samples per pixel (default 1: pixel centres in both renderers)");
-  compareCmd->add_option("-t,--threads", compare.threads, "Threads for both renderers");
-  compareCmd->add_option("--max-depth", compare.maxDepth, "Maximum recursion depth");
-  compareCmd->add_option("--camera", compare.camera, "Render through the camera with this name");
-  compareCmd->add_option("--frame", compare.frame,
-                         "Compare this frame of an animation (default 1)");
-  addCommonOptions(compareCmd, defines, allowPaths);
-
-  std::string schemaOutput;
-  CLI::App* schemaCmd =
-      app.add_subcommand("schema", "Print the scene language's XML Schema (docs/lucent.xsd)");
-  setHelp(schemaCmd);
-  schemaCmd->add_option("-o,--output", schemaOutput, "Write it to this file instead");
+  Commands commands;
+  addRender(app, commands);
+  addCheck(app, commands);
+  addExportPov(app, commands);
+  addCompare(app, commands);
+  addSchema(app, commands);
 
   if (!checkCommandName(argc, argv)) return kUsage;
   try {
@@ -116,22 +158,5 @@ int main(int argc, char** argv) {
     int status = app.exit(e);
     return status == 0 ? kOk : kUsage;
   }
-
-  try {
-    for (const CLI::App* cmd : app.get_subcommands())
-      if (std::vector<std::string> extras = cmd->remaining(); !extras.empty())
-        throw UsageError(
-            unexpectedArguments(cmd, extras) +
-            fmt::format("\nRun 'lucent {} --help' for more information.", cmd->get_name()));
-    takeCommonOptions(defines, allowPaths, common);
-
-    if (*renderCmd) return runRender(render, common);
-    if (*checkCmd) return runCheck(check, common);
-    if (*exportCmd) return runExportPov(exportPov, common);
-    if (*compareCmd) return runCompare(compare, common);
-    if (*schemaCmd) return runSchema(schemaOutput);
-    return kUsage;
-  } catch (...) {
-    return reportFailure(std::current_exception());
-  }
+  return runCommand(app, commands);
 }

@@ -36,6 +36,8 @@ expect_failure render/tracer.cpp '#include "lang/parser.h"' 'render/ may not inc
 expect_failure primitives/sphere.h '#include "scenegraph/scene.h"' 'primitives/ may not include scenegraph/'
 expect_failure csg/csg_node.h '#include "../render/tracer.h"' 'csg/ may not include render/'
 expect_failure images/image_plugin.h '#include "povray/pov_export.h"' 'images/ may not include povray/'
+expect_failure render/renderer.cpp '#include "app/checkpoint.h"' 'render/ may not include app/'
+expect_failure app/render_job.h '#include "cli/render_run.h"' 'app/ may not include cli/'
 
 # Allowed includes, some across several layers, pass.
 copy
