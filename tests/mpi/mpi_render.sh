@@ -12,6 +12,12 @@ source "$(dirname "${BASH_SOURCE[0]}")/../scripts/lib/script_test.sh"
 mpi=${3:?usage: bash mpi_render.sh <lucent> <source-dir> <lucent-mpi>}
 command -v mpirun >/dev/null || skip "mpirun (openmpi-bin) is not installed"
 command -v oiiotool >/dev/null || skip "oiiotool (openimageio-tools) is not installed"
+# The workers' copies go into a folder of this run's own (a worker makes its folder in
+# TMPDIR, and mpirun passes the environment to the ranks it starts here), so that runs side
+# by side (two clones, two builds on one machine) neither see nor remove each other's.
+workers="$tmp/workers"
+mkdir -p "$workers"
+export TMPDIR=$workers
 # Open MPI's own allocations are not ours to report (a sanitizer build).
 export ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0
 run_mpi() {  # run_mpi N ARGS...: lucent-mpi on N ranks
@@ -78,7 +84,7 @@ for mode in "${modes[@]}"; do
       fail "$mode, $n ranks $opts: ray counts $(grep '^rays:' "$tmp/stdout"), single process $(grep '^rays:' "$tmp/one.stats")"
   done
 done
-[ -z "$(ls /tmp | grep '^lucent-mpi-')" ] || fail "a worker left its folder: $(ls -d /tmp/lucent-mpi-*)"
+[ -z "$(ls "$workers" | grep '^lucent-mpi-')" ] || fail "a worker left its folder: $(ls "$workers")"
 
 # A region, with adaptive supersampling looking across its edges, in float EXR.
 scene "samples=\"16\" adaptive=\"0.05\""
@@ -198,7 +204,7 @@ expect 0 "resume after a killed rank" -- "$lucent" render "$tmp/scene/slow.xml" 
 grep -q "resuming '$tmp/slow.png': [1-9][0-9]* of 300 tiles from the checkpoint" "$tmp/stderr" ||
   fail "resume after a killed rank: $(cat "$tmp/stderr")"
 cmp -s "$tmp/slow.png" "$tmp/slow-one.png" || fail "the image resumed after a killed rank differs"
-rm -rf /tmp/lucent-mpi-*  # the killed worker's copies (SIGKILL leaves no time to remove them)
+rm -rf "$workers"/lucent-mpi-*  # the killed worker's copies (SIGKILL leaves no time to remove them)
 
 # Bad input: said once (by rank 0), with the exit statuses of lucent render.
 printf '<scene version="1">\n  <sphere radius="-1"/>\n</scene>\n' >"$tmp/scene/bad.xml"
