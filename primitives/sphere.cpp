@@ -1,6 +1,5 @@
 #include "sphere.h"
 
-#include "quadratic.h"
 #include "span.h"
 
 #include <stdexcept>
@@ -15,13 +14,16 @@ Sphere::Sphere(const Vec3& center, double radius) : center_(center), radius_(rad
 AABB Sphere::bounds() const { return {center_ - Vec3(radius_), center_ + Vec3(radius_)}; }
 
 bool Sphere::span(const Ray& ray, Span& out) const {
-  // Precision-improved quadratic (Ray Tracing Gems ch. 7), see quadratic.h.
-  return solveDistanceQuadratic(ray.o - center_, ray.d, radius_ * radius_, out.tIn, out.tOut);
+  return sphereRoots(center_, radius_ * radius_, ray, out.tIn, out.tOut);
 }
 
 bool Sphere::intersect(const Ray& ray, Hit& hit) const {
-  Span s;
-  return span(ray, s) && intersectSpan(s, ray, this, hit);
+  double t;
+  if (!sphereHitDistance(center_, radius_ * radius_, ray, t)) return false;
+  hit = Hit();
+  hit.t = t;
+  hit.shape = this;
+  return true;
 }
 
 void Sphere::crossings(const Ray& ray, CrossingList& out) const {

@@ -7,10 +7,31 @@
 // image's top row lands on the north pole, as in pbrt and POV-Ray's spherical map.
 #pragma once
 
+#include "quadratic.h"
 #include "shape.h"
 #include "span.h"
 
 namespace lucent {
+
+// The one ray test of a sphere, shared by Sphere and by the world-space spheres an
+// Aggregate keeps in its leaves (aggregate.h), so both find the same hits to the last bit.
+// The roots tIn <= tOut of |o + t·d − center|² = r2 along the whole line, by the
+// precision-improved quadratic (Ray Tracing Gems ch. 7, quadratic.h); false when the line
+// misses.
+inline bool sphereRoots(const Vec3& center, double r2, const Ray& ray, double& tIn, double& tOut) {
+  return solveDistanceQuadratic(ray.o - center, ray.d, r2, tIn, tOut);
+}
+
+// The closest hit's distance: the nearer root strictly inside (ray.tmin, ray.tmax), else
+// the farther (intersectSpan's rule); false when neither is.
+inline bool sphereHitDistance(const Vec3& center, double r2, const Ray& ray, double& t) {
+  double tIn, tOut;
+  if (!sphereRoots(center, r2, ray, tIn, tOut)) return false;
+  if (ray.tmin < tIn && tIn < ray.tmax) t = tIn;
+  else if (ray.tmin < tOut && tOut < ray.tmax) t = tOut;
+  else return false;
+  return true;
+}
 
 class Sphere final : public Shape {
  public:

@@ -6,7 +6,6 @@
 #include "csg/csg_node.h"
 #include "csg/inverted.h"
 #include "primitives/offset.h"
-#include "primitives/quadratic.h"
 #include "primitives/sphere.h"
 #include "primitives/sphere_image.h"
 #include "primitives/test_counts.h"
@@ -318,16 +317,6 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   for (const Shape* o : all_.leafObjects) skip_.push_back(flags(o));
 }
 
-namespace {
-
-// The roots of the sphere's quadratic, exactly as Sphere::intersect computes them (for a
-// sphere under the identity the same numbers, so the same hits to the last bit).
-inline bool sphereRoots(const Vec3& center, double r2, const Ray& ray, double& t0, double& t1) {
-  return solveDistanceQuadratic(ray.o - center, ray.d, r2, t0, t1);
-}
-
-}  // namespace
-
 bool World::intersect(const Ray& ray, Hit& hit) const { return all_.intersect(ray, hit); }
 
 bool World::intersectTransmissive(const Ray& ray, Hit& hit) const {
@@ -358,12 +347,10 @@ bool World::Objects::intersect(const Ray& ray, Hit& hit) const {
       return true;
     }
     ++threadTestCounts[slotOf<SphereSpec>()];
-    double t0, t1;
-    if (!sphereRoots(Vec3(leaf.cx, leaf.cy, leaf.cz), leaf.r2, rr, t0, t1)) return false;
-    // The nearer root inside (tmin, tmax), else the farther (intersectSpan's rule).
-    if (rr.tmin < t0 && t0 < rr.tmax) rr.tmax = t0;
-    else if (rr.tmin < t1 && t1 < rr.tmax) rr.tmax = t1;
-    else return false;
+    // Sphere::intersect's test: for a sphere under the identity the same hit to the bit.
+    double t;
+    if (!sphereHitDistance(Vec3(leaf.cx, leaf.cy, leaf.cz), leaf.r2, rr, t)) return false;
+    rr.tmax = t;
     sphereSlot = i;
     sphereT = rr.tmax;
     return true;
@@ -394,9 +381,8 @@ bool World::Objects::slotOccluded(uint32_t slot, const Ray& ray) const {
   const Leaf& leaf = leaves[slot];
   if (leaf.r2 < 0.0) return leafObjects[slot]->occluded(ray);
   ++threadTestCounts[slotOf<SphereSpec>()];
-  double t0, t1;
-  return sphereRoots(Vec3(leaf.cx, leaf.cy, leaf.cz), leaf.r2, ray, t0, t1) &&
-         ((ray.tmin < t0 && t0 < ray.tmax) || (ray.tmin < t1 && t1 < ray.tmax));
+  double t;
+  return sphereHitDistance(Vec3(leaf.cx, leaf.cy, leaf.cz), leaf.r2, ray, t);
 }
 
 bool World::occluded(const Ray& ray) const { return occluder(ray) != kNoObject; }
