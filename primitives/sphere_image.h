@@ -1,7 +1,7 @@
 // A sphere carried into world space whole: what a similarity transform (uniform scale,
 // rotation, mirror, translation) makes of a sphere is again a sphere. The world's
 // top-level BVH keeps such spheres inline in world space, so a ray test needs neither a
-// virtual call nor a matrix product nor a pointer to follow (scenegraph/world.cpp).
+// virtual call nor a matrix product nor a pointer to follow (aggregate.h).
 #pragma once
 
 #include "transform.h"

@@ -5,22 +5,14 @@
 
 #include "csg/csg_node.h"
 #include "csg/inverted.h"
-#include "primitives/offset.h"
-#include "primitives/sphere.h"
-#include "primitives/sphere_image.h"
-#include "primitives/test_counts.h"
 
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
-#include <unordered_set>
 
 namespace lucent {
 
 namespace {
-
-// SAH cost of testing a sphere kept in the BVH's leaves, relative to a node visit.
-constexpr double kInlineSphereCost = 0.2;
 
 // The walk of a shadow ray through the objects that may transmit tests each in turn, when
 // they are at most this many, instead of traversing their BVH: they are few (glass
@@ -211,224 +203,22 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   Builder b{make, hasUses(scene), {}, instances_};
   std::vector<char> casts;
   b.add(*scene.root, Transform(), 0, true, false, objects_, casts);
-  // The objects that cast no shadow (shadows="false").
-  std::unordered_set<const Shape*> shadowless;
-  for (size_t i = 0; i < objects_.size(); ++i)
-    if (!casts[i]) shadowless.insert(objects_[i].get());
 
-  std::vector<Shape*> bounded;
-  for (const auto& o : objects_) {
-    AABB box = o->bounds();
-    if (box.isBounded() || box.empty())
-      bounded.push_back(o.get());  // an empty box is left out by the BVH itself
-    else all_.direct.push_back(o.get());
+  // Each object's mask: whether it may transmit light (a leaf with a transmissive
+  // material, and it casts shadows), whether it casts none (shadows="false").
+  std::vector<Aggregate::Object> items;
+  items.reserve(objects_.size());
+  for (size_t i = 0; i < objects_.size(); ++i) {
+    const bool transmits = casts[i] && transmitsLight(*objects_[i], scene_.materials);
+    items.push_back(
+        {objects_[i].get(), static_cast<Aggregate::Mask>((transmits ? kTransmits : 0) |
+                                                         (casts[i] ? 0 : kShadowless))});
   }
-  if (bounded.size() == 1 && !bounded[0]->bounds().empty()) {
-    // A lone object (one mesh, say) culls rays itself: a tree above it would only add
-    // a box test and a traversal per ray.
-    all_.direct.push_back(bounded[0]);
-    bounded.clear();
-  }
-
-  // Spheres under a similarity transform become world-space spheres. A field of a
-  // million spheres then costs one 32-byte read per leaf test instead of following
-  // the BVH's slot to the Instance, and the Instance to its Sphere, each a separate
-  // allocation that misses the cache (docs/performance-history.md). The Instance stays the
-  // hit's shape: surface() and the material work as before.
-  std::vector<Leaf> leafOf(bounded.size(), Leaf{0.0, 0.0, 0.0, -1.0});
-  std::vector<AABB> boxes(bounded.size());
-  for (size_t i = 0; i < bounded.size(); ++i) {
-    boxes[i] = bounded[i]->bounds();
-    auto* inst = dynamic_cast<Instance*>(bounded[i]);
-    const auto* sphere = inst ? dynamic_cast<const Sphere*>(&inst->shape()) : nullptr;
-    if (!sphere) continue;
-    auto image = sphereImage(inst->transform(), sphere->center(), sphere->radius());
-    if (!image) continue;
-    leafOf[i] =
-        Leaf{image->center.x, image->center.y, image->center.z, image->radius * image->radius};
-    if (image->error > 0.0) {
-      // Secondary rays leaving this sphere are tested against the world copy: their
-      // origins must clear it too. Its box: the copy's, widened by the same bound and
-      // rounded outward (tighter than the box of the transformed object box when rotated).
-      inst->widenSurfaceError(image->error);
-      Vec3 reach(image->radius + image->error);
-      Vec3 lo = image->center - reach, hi = image->center + reach;
-      for (int a = 0; a < 3; ++a) {
-        lo[a] = nextDown(lo[a]);
-        hi[a] = nextUp(hi[a]);
-      }
-      boxes[i] = AABB{lo, hi};
-    }
-    ++inlineSpheres_;
-  }
-
-  // The SAH weighs a leaf by the cost of testing its items: an inline sphere costs a
-  // fraction of a node's box test (kInlineSphereCost), so that a million spheres make
-  // larger leaves and fewer nodes to fetch (the value is measured in
-  // docs/performance-history.md, "Figures behind comments in the code"). Other objects
-  // keep the default cost 1; a mixed world takes the mean.
-  auto fill = [&](Objects& set, const std::vector<uint32_t>& items) {
-    size_t spheres = 0;
-    for (uint32_t i : items) spheres += leafOf[i].r2 >= 0.0;
-    Bvh::Options options;
-    if (!items.empty())
-      options.itemCost =
-          float((kInlineSphereCost * double(spheres) + double(items.size() - spheres)) /
-                double(items.size()));
-    set.bvh = Bvh(
-        items.size(), [&](uint32_t k) { return boxes[items[k]]; }, options);
-    // Keep the leaves in leaf order: the traversal then hands out positions in leaves.
-    std::vector<uint32_t> order = set.bvh.takeOrder();
-    set.leaves.reserve(order.size());
-    set.leafObjects.reserve(order.size());
-    for (uint32_t k : order) {
-      set.leaves.push_back(leafOf[items[k]]);
-      set.leafObjects.push_back(bounded[items[k]]);
-    }
-  };
-  std::vector<uint32_t> every(bounded.size());
-  for (uint32_t i = 0; i < every.size(); ++i) every[i] = i;
-  fill(all_, every);
-
-  // The objects that may transmit and cast shadows, each tested as all_ tests it (one by
-  // one, or in a tree as the same kind of leaf), so that a walk through them finds the
-  // same hits.
-  auto castsNone = [&](const Shape* o) { return shadowless.count(o) != 0; };
-  auto mayTransmit = [&](const Shape* o) {
-    return !castsNone(o) && transmitsLight(*o, scene_.materials);
-  };
-  std::vector<uint32_t> clear;
-  for (uint32_t i = 0; i < bounded.size(); ++i)
-    if (mayTransmit(bounded[i])) clear.push_back(i);
-  for (const Shape* o : all_.direct)
-    if (mayTransmit(o)) transmissive_.direct.push_back(o);
-  anyShadowless_ = !shadowless.empty();
-  if (clear.empty() && transmissive_.direct.empty() && !anyShadowless_) return;
-  if (!clear.empty() || !transmissive_.direct.empty()) {
-    fill(transmissive_, clear);
-    transmissive_.linearSearch = kLinearTransmissive;
-  }
-  auto flags = [&](const Shape* o) {
-    return static_cast<uint8_t>((mayTransmit(o) ? kTransmits : 0) |
-                                (castsNone(o) ? kShadowless : 0));
-  };
-  skip_.reserve(all_.direct.size() + all_.leafObjects.size());
-  for (const Shape* o : all_.direct) skip_.push_back(flags(o));
-  for (const Shape* o : all_.leafObjects) skip_.push_back(flags(o));
-}
-
-bool World::intersect(const Ray& ray, Hit& hit) const { return all_.intersect(ray, hit); }
-
-bool World::intersectTransmissive(const Ray& ray, Hit& hit) const {
-  return transmissive_.intersect(ray, hit);
-}
-
-bool World::Objects::intersect(const Ray& ray, Hit& hit) const {
-  Ray r = ray;
-  bool found = false;
-  for (const Shape* o : direct) {
-    if (o->intersect(r, hit)) {
-      r.tmax = hit.t;
-      found = true;
-    }
-  }
-  // The BVH search starts with tmax already at the nearest direct hit, if any. A sphere
-  // hit records only t and its slot; its Instance is looked up once, for the winner
-  // (leafObjects is another array: reading it for every closer hit missed the cache).
-  const uint32_t kNoSlot = ~0u;
-  uint32_t sphereSlot = kNoSlot;
-  double sphereT = 0.0;
-  auto hitSlot = [&](uint32_t i, Ray& rr) {
-    const Leaf& leaf = leaves[i];
-    if (leaf.r2 < 0.0) {
-      if (!leafObjects[i]->intersect(rr, hit)) return false;
-      rr.tmax = hit.t;
-      sphereSlot = kNoSlot;
-      return true;
-    }
-    ++threadTestCounts[slotOf<SphereSpec>()];
-    // Sphere::intersect's test: for a sphere under the identity the same hit to the bit.
-    double t;
-    if (!sphereHitDistance(Vec3(leaf.cx, leaf.cy, leaf.cz), leaf.r2, rr, t)) return false;
-    rr.tmax = t;
-    sphereSlot = i;
-    sphereT = rr.tmax;
-    return true;
-  };
-  bool inTree = false;
-  if (leaves.size() <= linearSearch) {
-    for (uint32_t i = 0; i < leaves.size(); ++i) inTree = hitSlot(i, r) || inTree;
-  } else {
-    inTree = bvh.closest(r, hitSlot,
-                         [this](uint32_t first, uint32_t count) { prefetchLeaves(first, count); });
-  }
-  if (sphereSlot != kNoSlot) {
-    hit = Hit();
-    hit.t = sphereT;
-    hit.shape = leafObjects[sphereSlot];
-  }
-  return found || inTree;
-}
-
-void World::Objects::prefetchLeaves(uint32_t first, uint32_t count) const {
-  const char* p = reinterpret_cast<const char*>(leaves.data() + first);
-  const char* end = reinterpret_cast<const char*>(leaves.data() + first + count);
-  // From the cache line holding the first record (the records are 32 bytes, aligned).
-  for (p -= reinterpret_cast<uintptr_t>(p) & 63; p < end; p += 64) __builtin_prefetch(p);
-}
-
-bool World::Objects::slotOccluded(uint32_t slot, const Ray& ray) const {
-  const Leaf& leaf = leaves[slot];
-  if (leaf.r2 < 0.0) return leafObjects[slot]->occluded(ray);
-  ++threadTestCounts[slotOf<SphereSpec>()];
-  double t;
-  return sphereHitDistance(Vec3(leaf.cx, leaf.cy, leaf.cz), leaf.r2, ray, t);
-}
-
-bool World::occluded(const Ray& ray) const { return occluder(ray) != kNoObject; }
-
-World::ObjectId World::occluder(const Ray& ray, ObjectId first) const {
-  if (!anyShadowless_) return findOccluder<0>(ray, first);
-  return findOccluder<kShadowless>(ray, first);
-}
-
-World::ObjectId World::opaqueOccluder(const Ray& ray, ObjectId first) const {
-  if (skip_.empty()) return findOccluder<0>(ray, first);
-  return findOccluder<kTransmits | kShadowless>(ray, first);
-}
-
-template <uint8_t kSkip>
-World::ObjectId World::findOccluder(const Ray& ray, ObjectId first) const {
-  const std::integral_constant<uint8_t, kSkip> skipped;
-  const auto& direct = all_.direct;
-  const auto directCount = static_cast<ObjectId>(direct.size());
-  if (first != kNoObject && !skips(first, skipped) &&
-      (first < directCount ? direct[first]->occluded(ray)
-                           : all_.slotOccluded(first - directCount, ray)))
-    return first;
-  // The BVH before the unbounded objects (an any-hit search may take them in any
-  // order): a floor plane is tested by every shadow ray and blocks few, and this order
-  // made such scenes markedly faster, which was measured, not explained
-  // (docs/performance-history.md, "Shadow rays").
-  ObjectId found = kNoObject;
-  auto blocks = [&](uint32_t slot, const Ray& r) {
-    const ObjectId id = directCount + slot;
-    // `first` missed already
-    if (id == first || skips(id, skipped) || !all_.slotOccluded(slot, r)) return false;
-    found = id;
-    return true;
-  };
-  all_.bvh.any(ray, blocks,
-               [this](uint32_t first, uint32_t count) { all_.prefetchLeaves(first, count); });
-  if (found != kNoObject) return found;
-  for (ObjectId k = 0; k < directCount; ++k)
-    if (k != first && !skips(k, skipped) && direct[k]->occluded(ray)) return k;
-  return kNoObject;
-}
-
-const Shape* World::object(ObjectId id) const {
-  if (id == kNoObject) return nullptr;
-  return id < all_.direct.size() ? all_.direct[id] : all_.leafObjects[id - all_.direct.size()];
+  Aggregate::Options options;
+  options.selected = kTransmits;
+  options.linearSelected = kLinearTransmissive;
+  options.sphereTestSlot = slotOf<SphereSpec>();
+  aggregate_ = Aggregate(items, options);
 }
 
 }  // namespace lucent
