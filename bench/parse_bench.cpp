@@ -96,6 +96,6 @@ int main() {
   World world(*r.scene);
   auto t3 = Clock::now();
   fmt::print("world (shapes, transforms, BVH): {:.3f} s for {} instances\n", seconds(t2, t3),
-             world.instances().size());
+             world.leaves().size());
   return 0;
 }

@@ -38,6 +38,7 @@ Aggregate::Aggregate(const std::vector<Object>& objects, const Options& options)
   // hit's shape: surface() and the material work as before. (The casts run here, once.)
   std::vector<Leaf> leafOf(bounded.size(), Leaf{0.0, 0.0, 0.0, -1.0});
   std::vector<AABB> boxes(bounded.size());
+  std::vector<uint32_t> tagOf(bounded.size(), 0);
   for (size_t i = 0; i < bounded.size(); ++i) {
     Shape* object = objects[bounded[i]].shape;
     boxes[i] = object->bounds();
@@ -48,6 +49,7 @@ Aggregate::Aggregate(const std::vector<Object>& objects, const Options& options)
     if (!image) continue;
     leafOf[i] =
         Leaf{image->center.x, image->center.y, image->center.z, image->radius * image->radius};
+    tagOf[i] = inst->tag();
     if (image->error > 0.0) {
       // Secondary rays leaving this sphere are tested against the world copy: their
       // origins must clear it too. Its box: the copy's, widened by the same bound and
@@ -86,9 +88,11 @@ Aggregate::Aggregate(const std::vector<Object>& objects, const Options& options)
     std::vector<uint32_t> slotInput;
     set.leaves.reserve(order.size());
     set.leafObjects.reserve(order.size());
+    set.sphereTags.reserve(order.size());
     for (uint32_t k : order) {
       set.leaves.push_back(leafOf[items[k]]);
       set.leafObjects.push_back(objects[bounded[items[k]]].shape);
+      set.sphereTags.push_back(tagOf[items[k]]);
       slotInput.push_back(bounded[items[k]]);
     }
     return slotInput;
@@ -160,6 +164,7 @@ bool Aggregate::Search::closest(const Ray& ray, Hit& hit) const {
     hit = Hit();
     hit.t = sphereT;
     hit.shape = leafObjects[sphereSlot];
+    hit.tag = sphereTags[sphereSlot];
   }
   return found || inTree;
 }

@@ -86,6 +86,7 @@ class Aggregate {
   struct Search {
     std::vector<Leaf, CacheLineAllocator<Leaf>> leaves;
     std::vector<const Shape*> leafObjects;  // the same slots: the sphere's Instance, or the object
+    std::vector<uint32_t> sphereTags;       // the same slots: the sphere's Instance's tag, or 0
     std::vector<const Shape*> direct;       // never in the BVH
     Bvh bvh;
     // closest() tests the BVH's objects one by one when they are at most this many.

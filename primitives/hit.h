@@ -17,6 +17,7 @@ struct Hit {
   uint32_t part = 0;             // shape-specific: face, cap or side, triangle index, ...
   double b1 = 0.0, b2 = 0.0;     // shape-specific: barycentrics, local coordinates, ...
   bool flip = false;             // set by CSG: a subtracted surface, its normal faces out
+  uint32_t tag = 0;              // the tag of the Instance hit (Instance::tag), set by it
 
   bool found() const { return shape != nullptr; }
 };

@@ -57,6 +57,7 @@ bool Instance::intersect(const Ray& ray, Hit& hit) const {
   ++threadTestCounts[testSlot_];
   if (!shape_->intersect(toObject(ray), hit)) return false;
   hit.shape = this;
+  hit.tag = tag_;
   return true;
 }
 
@@ -69,7 +70,10 @@ void Instance::crossings(const Ray& ray, CrossingList& out) const {
   ++threadTestCounts[testSlot_];
   size_t first = out.items.size();
   shape_->crossings(toObject(ray), out);
-  for (size_t i = first; i < out.items.size(); ++i) out.items[i].hit.shape = this;
+  for (size_t i = first; i < out.items.size(); ++i) {
+    out.items[i].hit.shape = this;
+    out.items[i].hit.tag = tag_;
+  }
 }
 
 bool Instance::inside(const Vec3& p) const {

@@ -13,7 +13,9 @@ namespace lucent {
 // Rays are carried into object space (never the shape into world space); hit distances
 // stay in world units because the direction is not renormalised; normals come back with
 // the inverse-transpose. Many instances may share one shape (a mesh used many times).
-// The tag is the scene's business (the material index); primitives never read it.
+// The tag is the scene's business (scenegraph/'s index of the leaf); primitives never read
+// it, but hand it on in every hit (Hit::tag), so the scene finds what it knows of the leaf
+// without a cast.
 class Instance final : public Shape {
  public:
   // `testSlot`: what --stats counts a test of this instance as (test_counts.h).

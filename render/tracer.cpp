@@ -9,9 +9,6 @@
 #include "sky_color.h"
 #include "spawn.h"
 
-#include "csg/csg_node.h"
-#include "csg/inverted.h"
-
 #include <algorithm>
 #include <cmath>
 
@@ -31,13 +28,12 @@ double boxVolume(const AABB& b) {
 
 Tracer::Tracer(const World& world, ImageMapCache* textures)
     : world_(world),
-      scene_(world.scene()),
       settings_(world.scene().render),
       lights_(world.scene().lights),
       sky_(world.scene().sky),
       fog_(world.scene().fog),
       textures_(world.scene().materials, textures) {
-  for (const Material& m : scene_.materials) {
+  for (const Material& m : world.scene().materials) {
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
     anyAbsorbing_ = anyAbsorbing_ || (m.isAbsorbing() && m.isTransmissive());
   }
@@ -50,25 +46,11 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
   }
 }
 
-const Material* Tracer::materialOf(const Shape& object) const {
-  // A CSG node's medium is its first leaf's material (its surfaces normally share it).
-  const Shape* s = &object;
-  for (;;) {
-    if (const auto* csg = dynamic_cast<const CsgNode*>(s)) s = csg->children().front().get();
-    else if (const auto* inv = dynamic_cast<const Inverted*>(s)) s = &inv->solid();
-    else break;
-  }
-  const auto* leaf = dynamic_cast<const Instance*>(s);
-  return leaf ? &scene_.materials[leaf->tag()] : nullptr;
-}
-
 MediaStack Tracer::mediaAt(const Vec3& p) const {
   std::vector<std::pair<double, const Material*>> containing;
-  for (const auto& object : world_.objects()) {
-    if (!object->isSolid() || !object->inside(p)) continue;
-    if (const Material* m = materialOf(*object))
-      containing.push_back({boxVolume(object->bounds()), m});
-  }
+  for (const WorldObject& object : world_.objects())
+    if (object.medium && object.shape->inside(p))
+      containing.push_back({boxVolume(object.shape->bounds()), object.medium});
   std::stable_sort(containing.begin(), containing.end(),
                    [](const auto& a, const auto& b) { return a.first > b.first; });
   MediaStack media;
@@ -91,7 +73,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
   Color sum(0.0f);
   Color throughput(1.0f);  // k_t and absorption of the straight continuations so far
   for (;;) {
-    Hit hit;
+    WorldHit hit;
     ++stats.queries;
     if (!world_.intersect(ray, hit)) {
       Color background = sky_ ? skyColor(*sky_, ray.d) : settings_.background;
@@ -102,17 +84,17 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
       return sum + throughput * background;
     }
 
-    const auto& leaf = *static_cast<const Instance*>(hit.shape);
-    const Material& m = world_.material(hit);
-    const SurfaceInfo s = leaf.surface(ray, hit);
-    const bool solid = leaf.isSolid();
+    const WorldLeaf& leaf = *hit.leaf;
+    const Material& m = *leaf.material;
+    const SurfaceInfo s = hit.surface(ray);
+    const bool solid = leaf.medium != nullptr;  // the leaf bounds a medium (its material)
     const bool front = glm::dot(ray.d, s.ng) < 0.0;
     const bool leaving = solid && !front;  // the ray was inside this solid
 
     // Fog over the stretch just travelled, if it ran outside every solid (render/fog.h).
     if (fog_ && !leaving && media.empty()) {
       const double speed = glm::length(ray.d);
-      const FogEffect fog = fogAlong(*fog_, ray.o, ray.d / speed, hit.t * speed);
+      const FogEffect fog = fogAlong(*fog_, ray.o, ray.d / speed, hit.t() * speed);
       sum += throughput * fog.add;
       throughput *= fog.keep;
     }
@@ -121,7 +103,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     // innermost medium the ray is known to be in.
     const Material* segment = leaving ? &m : media.top();
     if (segment && segment->isAbsorbing())
-      throughput *= beerLambert(segment->absorption, hit.t * glm::length(ray.d));
+      throughput *= beerLambert(segment->absorption, hit.t() * glm::length(ray.d));
 
     // Normals facing the viewer. The shading normal follows the geometric one's side; if
     // interpolation still leaves it facing away, the geometric normal is used instead.
@@ -129,14 +111,15 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     const Vec3 ng = front ? s.ng : -s.ng;
     Vec3 n = front ? s.ns : -s.ns;
     if (glm::dot(n, v) <= 0.0) n = ng;
-    if (m.normal) n = perturbedShadingNormal(*m.normal, leaf.transform(), s, n, v);
-    if (m.bumpMap) n = bumpedShadingNormal(*textures_.bumpMap(leaf.tag()), *m.bumpMap, s, n, v);
+    if (m.normal) n = perturbedShadingNormal(*m.normal, leaf.instance->transform(), s, n, v);
+    if (m.bumpMap)
+      n = bumpedShadingNormal(*textures_.bumpMap(leaf.materialIndex), *m.bumpMap, s, n, v);
     const ShadingPoint at{s.p, n, v};
 
     // Local terms: k_e + k_a·I_La (·k_t inside an object) + direct light.
     Color local = m.emissive;
     Color texture(1.0f);
-    if (m.hasTexture()) texture = textures_.eval(leaf.tag(), m, s, leaf);
+    if (m.hasTexture()) texture = textures_.eval(leaf.materialIndex, m, s, *leaf.instance);
     const Color kd = m.diffuse * texture;
     Color ambient =
         (m.hasTexture() && m.ambientIsScalar ? m.ambient * texture : m.ambient) * settings_.ambient;
@@ -290,29 +273,29 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
   const double speed = glm::length(ray.d);  // world distance per unit of t
   double tPrevious = ray.tmin;
   for (;;) {
-    Hit hit;
+    WorldHit hit;
     ++stats.queries;
     if (!world_.intersectTransmissive(ray, hit)) break;
-    const Material& m = world_.material(hit);
-    if (!m.isTransmissive()) return Color(0.0f);
-    t *= m.transmissive;
+    const WorldLeaf& leaf = *hit.leaf;
+    if (!leaf.transmissive) return Color(0.0f);
+    t *= leaf.material->transmissive;
     if (anyAbsorbing_) {
-      const auto& leaf = *static_cast<const Instance*>(hit.shape);
+      // A solid's medium is its material.
       bool leaving = false;
-      if (leaf.isSolid()) leaving = glm::dot(ray.d, leaf.surface(ray, hit).ng) > 0.0;
-      const Material* segment = leaving ? &m : media.top();
+      if (leaf.medium) leaving = glm::dot(ray.d, hit.surface(ray).ng) > 0.0;
+      const Material* segment = leaving ? leaf.medium : media.top();
       if (segment && segment->isAbsorbing())
-        t *= beerLambert(segment->absorption, (hit.t - tPrevious) * speed);
-      if (leaf.isSolid()) {
-        if (leaving) media.remove(&m);
-        else media.push(&m);
+        t *= beerLambert(segment->absorption, (hit.t() - tPrevious) * speed);
+      if (leaf.medium) {
+        if (leaving) media.remove(leaf.medium);
+        else media.push(leaf.medium);
       }
     }
     if (!anyPositive(t)) return Color(0.0f);
     // The same ray searched again beyond this hit: t is strictly increasing, and the
     // hit just found is excluded because the search interval is open.
-    tPrevious = hit.t;
-    ray.tmin = hit.t;
+    tPrevious = hit.t();
+    ray.tmin = hit.t();
   }
   if (anyAbsorbing_) {
     if (const Material* medium = media.top(); medium && medium->isAbsorbing())

@@ -11,7 +11,6 @@
 #include "texture.h"
 
 #include "primitives/hit.h"
-#include "primitives/instance.h"
 #include "scenegraph/world.h"
 
 #include <cstdint>
@@ -38,8 +37,9 @@ class Tracer {
   // The colour seen along a camera ray (depth 1, weight 1) that starts in `media`.
   Color traceCamera(const Ray& ray, const MediaStack& media, PathSeed& seed, RayStats& stats) const;
 
-  // The media containing point p (a camera's starting media): the top-level solids whose
-  // inside() holds p, the largest bounding box outermost (an infinite plane is outermost).
+  // The media containing point p (a camera's starting media): the media of the top-level
+  // solids whose inside() holds p (WorldObject::medium), the largest bounding box outermost
+  // (an infinite plane is outermost).
   MediaStack mediaAt(const Vec3& p) const;
 
   // Fraction of light that passes along the shadow ray (t in (ray.tmin, ray.tmax)),
@@ -72,10 +72,8 @@ class Tracer {
                      RayStats& stats) const;
   // Whether an opaque object blocks the ray (one any-hit query; updates lastBlocker).
   bool blockedByOpaque(const Ray& ray, World::ObjectId& lastBlocker, RayStats& stats) const;
-  const Material* materialOf(const Shape& object) const;
 
   const World& world_;
-  const Scene& scene_;
   const RenderSettings settings_;    // a copy: the scene may change after the renderer is built
   const std::vector<Light> lights_;  // a copy, as the settings
   const std::optional<Sky> sky_;     // a copy, as the settings

@@ -1,44 +1,53 @@
-// The world a renderer traces: every leaf placed with its world transform and material,
-// CSG nodes composed of such leaves, built once from a scene graph.
+// The world a renderer traces, built once from a scene graph: the scene side (the graph
+// flattened into objects and leaves that know their materials, flatten.h) joined to the
+// geometry side (the masked aggregate that searches them, primitives/aggregate.h). The
+// tracer asks it every ray query and gets back typed hits: no cast on the ray path.
 #pragma once
 
+#include "flatten.h"
 #include "scene.h"
 
 #include "primitives/aggregate.h"
-#include "primitives/instance.h"
-#include "primitives/shape.h"
+#include "primitives/hit.h"
 
-#include <cstdint>
-#include <functional>
-#include <memory>
+#include <cstddef>
 #include <vector>
 
 namespace lucent {
 
-// Builds the shape of one geometry node (makeShape; tests pass their own).
-using ShapeMaker = std::function<std::shared_ptr<const Shape>(const ShapeSpec&)>;
+// A hit as the tracer sees it: the leaf's Hit (its distance and payload) and the leaf,
+// with the material, medium and transmissive flag the world worked out when it was built.
+struct WorldHit {
+  Hit hit;
+  const WorldLeaf* leaf = nullptr;
 
-// Throws, without building any shape, the LocatedError that building the world would:
-// a transform down to some node that is singular or beyond double range (nested scales).
-// `lucent check` calls it so that it refuses what `lucent render` refuses.
-void checkWorld(const Scene& scene);
+  double t() const { return hit.t; }
+  // The geometry at the hit, for the ray it was found with.
+  SurfaceInfo surface(const Ray& ray) const { return leaf->instance->surface(ray, hit); }
+};
 
 class World {
  public:
-  // Composes transforms down to the leaves (world matrix, inverse and normal matrix
-  // computed once per instance), resolves inherited materials and shares the shape of a
-  // node used many times: a mesh used through many <use> is stored and built once.
-  // The top-level objects go into an Aggregate (primitives/aggregate.h), which answers
-  // the ray queries. The scene must outlive the world. Throws LocatedError (checkWorld's).
+  // Flattens the scene (flattenScene, through makeShape or the given maker) and puts the
+  // top-level objects into an Aggregate. The scene must outlive the world, its materials
+  // kept in place. Throws LocatedError (checkWorld's).
   explicit World(const Scene& scene);
   World(const Scene& scene, const ShapeMaker& makeShape);
 
   const Scene& scene() const { return scene_; }
-  const std::vector<std::unique_ptr<Shape>>& objects() const { return objects_; }
-  // Every leaf instance, including those inside CSG nodes, in scene order.
-  const std::vector<const Instance*>& instances() const { return instances_; }
+  // The top-level objects, in scene order.
+  const std::vector<WorldObject>& objects() const { return objects_; }
+  // Every leaf, those inside CSG nodes too, in scene order.
+  const std::vector<WorldLeaf>& leaves() const { return leaves_; }
+  // The leaf a hit names (Hit::tag).
+  const WorldLeaf& leaf(const Hit& hit) const { return leaves_[hit.tag]; }
+  const Material& material(const Hit& hit) const { return *leaf(hit).material; }
 
+  // The closest hit: the geometry alone, or typed.
   bool intersect(const Ray& ray, Hit& hit) const { return aggregate_.closest(ray, hit); }
+  bool intersect(const Ray& ray, WorldHit& hit) const {
+    return typed(aggregate_.closest(ray, hit.hit), hit);
+  }
   // Whether an object that casts shadows crosses the ray (objects of shadows="false"
   // nodes are not asked, here and in every shadow query below).
   bool occluded(const Ray& ray) const { return occluder(ray) != kNoObject; }
@@ -70,6 +79,9 @@ class World {
   bool intersectTransmissive(const Ray& ray, Hit& hit) const {
     return aggregate_.closestSelected(ray, hit);
   }
+  bool intersectTransmissive(const Ray& ray, WorldHit& hit) const {
+    return typed(aggregate_.closestSelected(ray, hit.hit), hit);
+  }
   // How many top-level objects may transmit light.
   size_t transmissiveObjectCount() const { return aggregate_.selectedCount(); }
 
@@ -79,19 +91,19 @@ class World {
   const std::vector<const Shape*>& directObjects() const { return aggregate_.directObjects(); }
   size_t inlineSphereCount() const { return aggregate_.inlineSphereCount(); }
 
-  // The material of a hit's leaf (hit.shape is always an Instance).
-  const Material& material(const Hit& hit) const {
-    return scene_.materials[static_cast<const Instance*>(hit.shape)->tag()];
-  }
-
  private:
   // The meaning of the aggregate's mask bits: the object may transmit light (and casts
   // shadows); it casts no shadow (shadows="false").
   static constexpr Aggregate::Mask kTransmits = 1, kShadowless = 2;
 
+  bool typed(bool found, WorldHit& hit) const {
+    if (found) hit.leaf = &leaves_[hit.hit.tag];
+    return found;
+  }
+
   const Scene& scene_;
-  std::vector<std::unique_ptr<Shape>> objects_;  // top level: instances and CSG nodes
-  std::vector<const Instance*> instances_;
+  std::vector<WorldObject> objects_;
+  std::vector<WorldLeaf> leaves_;
   Aggregate aggregate_;
 };
 

@@ -91,7 +91,7 @@ int strictlyBefore(const std::string& geometry, const std::vector<Ray>& rays,
       "premise.xml");
   REQUIRE(parsed.scene);
   World world(*parsed.scene);
-  const auto& csg = dynamic_cast<const CsgNode&>(*world.objects().at(0));
+  const auto& csg = dynamic_cast<const CsgNode&>(*world.objects().at(0).shape);
   int count = 0;
   for (const Ray& ray : rays) {
     if (region(topPoint(ray)) < 0.05) continue;
@@ -223,7 +223,7 @@ TEST_CASE("coincident crossings bound the result with the first agreeing child",
                                         "pocket.xml");
   REQUIRE(parsed.scene);
   World world(*parsed.scene);
-  const Shape& csg = *world.objects().at(0);
+  const Shape& csg = *world.objects().at(0).shape;
   const auto& kids = dynamic_cast<const CsgNode&>(csg).children();
   CrossingList list;
   Ray down(Vec3(0.1, 5, 0.2), Vec3(0, -1, 0));

@@ -114,7 +114,7 @@ TEST_CASE("inverse: alone, the same surface with the normal turned, and inverse 
   }
   CHECK(hits > 50);
   // Inside is outside.
-  const Shape& solid = *wi.objects().front();
+  const Shape& solid = *wi.objects().front().shape;
   CHECK_FALSE(solid.inside(Vec3(0.6, 0.3, 0)));
   CHECK(solid.inside(Vec3(5, 0, 0)));
   CrossingList list;

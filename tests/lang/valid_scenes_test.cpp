@@ -392,9 +392,9 @@ TEST_CASE("lang: defs and use: targets, forward references, chains, world placem
   CHECK(child(root, 6).target == &child(root, 5));  // a use of a use
 
   World world(*s);
-  const auto& inst = world.instances();
-  REQUIRE(inst.size() == 7);
-  auto origin = [&](size_t i) { return inst[i]->transform().pointToWorld(Vec3(0.0)); };
+  const auto& leaves = world.leaves();
+  REQUIRE(leaves.size() == 7);
+  auto origin = [&](size_t i) { return leaves[i].instance->transform().pointToWorld(Vec3(0.0)); };
   CHECK(origin(0) == Vec3(0, 0, 0));  // ball
   CHECK(origin(1) == Vec3(5, 1, 0));  // column: its own translate, then the use's
   CHECK(origin(2) == Vec3(0, 0, 3));  // ball again
@@ -402,9 +402,10 @@ TEST_CASE("lang: defs and use: targets, forward references, chains, world placem
   CHECK(origin(4) == Vec3(0, 0, 0));  // later itself
   CHECK(origin(5) == Vec3(0, 1, 0));  // again
   CHECK(origin(6) == Vec3(0, 2, 0));  // again, scaled by 2 after its translate
-  CHECK(inst[6]->transform().worldFromObject() ==
+  CHECK(leaves[6].instance->transform().worldFromObject() ==
         rows({2, 0, 0, 0, 0, 2, 0, 2, 0, 0, 2, 0, 0, 0, 0, 1}));
-  CHECK(&inst[1]->shape() == &inst[5]->shape());  // one shape for every use of a node
+  // one shape for every use of a node
+  CHECK(&leaves[1].instance->shape() == &leaves[5].instance->shape());
 }
 
 TEST_CASE("lang: base= chains copy and override, default= replaces the default material",
@@ -470,7 +471,10 @@ TEST_CASE("lang: materials are inherited from the nearest group, CSG node or use
 
   World world(*s);
   std::vector<uint32_t> tags;
-  for (const Instance* i : world.instances()) tags.push_back(i->tag());
+  for (const WorldLeaf& leaf : world.leaves()) {
+    tags.push_back(leaf.materialIndex);
+    CHECK(leaf.material == &s->materials[leaf.materialIndex]);
+  }
   CHECK(tags == std::vector<uint32_t>{0,  // bare sphere: the default
                                       brass, glass, 4,
                                       brass,         // group: sphere, box, cylinder, torus
@@ -490,7 +494,8 @@ TEST_CASE("lang: world transforms and normal matrices match hand-computed matric
         rows({1, 0, 0, 3, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}));
 
   World world(*s);
-  const auto& inst = world.instances();
+  std::vector<const Instance*> inst;
+  for (const WorldLeaf& leaf : world.leaves()) inst.push_back(leaf.instance);
   REQUIRE(inst.size() == 8);
   auto world_ = [&](size_t i) { return inst[i]->transform().worldFromObject(); };
   auto normal = [&](size_t i) { return inst[i]->transform().normalToWorld(); };
@@ -571,7 +576,7 @@ TEST_CASE("lang: CSG: nested operations over groups, unions, uses and planes", "
   CHECK_FALSE(
       child(*s->root, 1).isSolid());  // a union of a disc and a triangle (allowed outside CSG)
   World world(*s);
-  CHECK(world.instances().size() == 11);
+  CHECK(world.leaves().size() == 11);
 }
 
 TEST_CASE("lang: warnings do not refuse a scene", "[lang][valid]") {

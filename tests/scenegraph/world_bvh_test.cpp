@@ -82,9 +82,9 @@ TEST_CASE("a shape used many times through <use> is built once and shared", "[bv
   CountingMaker maker;
   World world(scene, maker);
   CHECK(*maker.calls == 1);
-  REQUIRE(world.instances().size() == 2000);
-  for (const Instance* inst : world.instances())
-    REQUIRE(&inst->shape() == &world.instances()[0]->shape());
+  REQUIRE(world.leaves().size() == 2000);
+  for (const WorldLeaf& leaf : world.leaves())
+    REQUIRE(&leaf.instance->shape() == &world.leaves()[0].instance->shape());
   requireSameAsBruteForce(world, randomRays(rng, 20000, 10.0));
 }
 

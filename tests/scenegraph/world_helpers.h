@@ -25,7 +25,7 @@ inline Hit bruteForce(const World& world, const Ray& ray) {
   Ray r = ray;
   for (const auto& o : world.objects()) {
     Hit h;
-    if (o->intersect(r, h)) {
+    if (o.shape->intersect(r, h)) {
       r.tmax = h.t;
       best = h;
     }

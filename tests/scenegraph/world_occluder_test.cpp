@@ -101,7 +101,7 @@ TEST_CASE("occluder answers as occluded whichever object it tests first",
   const World::ObjectId ids = idCount(world);
   REQUIRE(ids == world.objects().size());
   std::set<const Shape*> objects;
-  for (const auto& o : world.objects()) objects.insert(o.get());
+  for (const auto& o : world.objects()) objects.insert(o.shape.get());
   std::uniform_int_distribution<World::ObjectId> anyId(0, ids - 1);
 
   size_t blocked = 0, checked = 0;
@@ -144,7 +144,7 @@ TEST_CASE("occluder blocks exactly when some object's own test does", "[bvh][wor
   size_t blocked = 0;
   for (const Ray& ray : segments(rng, 20000)) {
     bool want = false;
-    for (const auto& o : world.objects()) want = want || o->occluded(ray);
+    for (const auto& o : world.objects()) want = want || o.shape->occluded(ray);
     const World::ObjectId found = world.occluder(ray, anyId(rng));
     REQUIRE((found != World::kNoObject) == want);
     if (want) {
@@ -156,14 +156,6 @@ TEST_CASE("occluder blocks exactly when some object's own test does", "[bvh][wor
 }
 
 namespace {
-
-// Whether a leaf of the object has a transmissive material (as World decides it).
-bool mayTransmit(const Shape& o, const std::vector<Material>& materials) {
-  if (const auto* inst = dynamic_cast<const Instance*>(&o))
-    return materials[inst->tag()].isTransmissive();
-  // The mixed scene's CSG nodes take their material from the node, so every leaf has it.
-  return false;
-}
 
 // mixedScene with every third top-level object made of glass (CSG nodes included: the
 // node's material is inherited by its leaves).
@@ -185,21 +177,23 @@ TEST_CASE("opaqueOccluder blocks exactly when an opaque object's own test does",
   std::mt19937_64 rng(43);
   Scene scene = glassyScene(rng, false);
   World world(scene);
-  // The CSG nodes hold glass when the node does: count the objects that may transmit.
+  // One object per child of the root, in order; every third is glass (the CSG nodes hold
+  // glass when the node does, their leaves inheriting it).
+  REQUIRE(world.objects().size() == scene.root->children.size());
+  auto isGlass = [](size_t i) { return i % 3 == 0; };
   size_t glassObjects = 0;
-  for (size_t i = 0; i < scene.root->children.size(); ++i) glassObjects += i % 3 == 0;
+  for (size_t i = 0; i < world.objects().size(); ++i) {
+    REQUIRE(world.objects()[i].transmits == isGlass(i));
+    glassObjects += isGlass(i);
+  }
   REQUIRE(world.transmissiveObjectCount() == glassObjects);
   std::uniform_int_distribution<World::ObjectId> anyId(0, idCount(world) - 1);
   size_t blockedByGlassOnly = 0, blocked = 0;
   for (const Ray& ray : segments(rng, 20000)) {
     bool opaque = false, glass = false;
     for (size_t i = 0; i < world.objects().size(); ++i) {
-      const Shape& o = *world.objects()[i];
-      bool isGlass = false;
-      if (const auto* csg = dynamic_cast<const CsgNode*>(&o))
-        isGlass = mayTransmit(*csg->children().front(), scene.materials);
-      else isGlass = mayTransmit(o, scene.materials);
-      (isGlass ? glass : opaque) = (isGlass ? glass : opaque) || o.occluded(ray);
+      const bool blocks = world.objects()[i].shape->occluded(ray);
+      (isGlass(i) ? glass : opaque) = (isGlass(i) ? glass : opaque) || blocks;
     }
     const World::ObjectId found = world.opaqueOccluder(ray, anyId(rng));
     REQUIRE((found != World::kNoObject) == opaque);

@@ -230,7 +230,8 @@ TEST_CASE("spheres under non-uniform scales stay Instances, beside spheres kept 
   for (const Ray& ray : rays) {
     Hit want = bruteForce(world, ray), got;
     if (!world.intersect(ray, got) || !want.found()) continue;
-    const auto* inst = static_cast<const Instance*>(got.shape);
+    const Instance* inst = world.leaf(got).instance;
+    REQUIRE(got.shape == inst);
     if (inst->transform().isIdentity()) continue;
     Mat3 l(inst->transform().worldFromObject());
     if (std::abs(glm::length(l[0]) - glm::length(l[1])) < 1e-6) continue;  // a similarity
@@ -255,7 +256,7 @@ struct Leaving {
 Leaving leaveSpheres(const World& world, std::mt19937_64& rng, int count) {
   Leaving out;
   for (int tries = 0; out.primaries < count && tries < 20 * count; ++tries) {
-    const Instance* target = world.instances()[size_t(tries) % world.instances().size()];
+    const Instance* target = world.leaves()[size_t(tries) % world.leaves().size()].instance;
     AABB box = target->bounds();
     Vec3 aim =
         box.center() +
@@ -264,7 +265,8 @@ Leaving leaveSpheres(const World& world, std::mt19937_64& rng, int count) {
     Ray primary(o, (aim - o) * uniform(rng, 0.25, 4.0));
     Hit h;
     if (!world.intersect(primary, h)) continue;
-    const auto& leaf = *static_cast<const Instance*>(h.shape);
+    const Instance& leaf = *world.leaf(h).instance;
+    REQUIRE(h.shape == &leaf);
     SurfaceInfo si = leaf.surface(primary, h);
     if (std::abs(glm::dot(glm::normalize(primary.d), si.ng)) < 0.05) continue;
     ++out.primaries;

@@ -1,0 +1,224 @@
+#include "flatten.h"
+
+#include "located_error.h"
+
+#include "csg/csg_node.h"
+#include "csg/inverted.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace lucent {
+
+namespace {
+
+bool finiteTransform(const Transform& t) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(t.worldFromObject()[c][r]) || !std::isfinite(t.objectFromWorld()[c][r]))
+        return false;
+  return true;
+}
+
+CsgOp csgOpOf(NodeKind k) {
+  switch (k) {
+    case NodeKind::Union:
+      return CsgOp::Union;
+    case NodeKind::Merge:
+      return CsgOp::Merge;
+    case NodeKind::Intersection:
+      return CsgOp::Intersection;
+    default:
+      return CsgOp::Difference;
+  }
+}
+
+// The node's world transform below `parentWorld`; throws what building the world refuses.
+Transform nodeWorld(const Node& node, const Transform& parentWorld) {
+  // Most nodes of a large scene have no transform of their own: no inverse to compute.
+  if (node.parentFromNode == Mat4(1.0)) return parentWorld;
+  auto local = Transform::fromMatrix(node.parentFromNode);
+  if (!local) throw LocatedError(node.loc, "singular transform");
+  Transform world = local->followedBy(parentWorld);
+  // Each transform is finite, but nested ones multiply (twenty groups of scale(1e30)).
+  if (!finiteTransform(world))
+    throw LocatedError(node.loc, "the transforms down to this node multiply beyond double range");
+  return world;
+}
+
+// Walks the graph as Builder does, computing transforms only.
+void checkNode(const Node& node, const Transform& parentWorld) {
+  Transform world = nodeWorld(node, parentWorld);
+  if (node.kind == NodeKind::Use) return checkNode(*node.target, world);
+  for (const auto& c : node.children) checkNode(*c, world);
+}
+
+// Does any node lead to another through <use> (so that one node may be reached twice)?
+bool hasUses(const Scene& scene) {
+  std::vector<const Node*> stack{scene.root.get()};
+  while (!stack.empty()) {
+    const Node* n = stack.back();
+    stack.pop_back();
+    if (n->kind == NodeKind::Use) return true;
+    for (const auto& c : n->children) stack.push_back(c.get());
+  }
+  return false;
+}
+
+// An object being built, with what its leaves say of it.
+struct Part {
+  std::unique_ptr<Shape> shape;
+  uint32_t firstLeaf = 0;  // its first leaf in scene order: a solid's medium is its material
+  bool casts = true;       // it casts shadows
+  bool transmits = false;  // one of its leaves has a transmissive material
+};
+
+// The parts as one object: the operation `op` of their shapes (all of them non-empty).
+Part compose(CsgOp op, std::vector<Part> parts, bool casts) {
+  Part whole;
+  whole.firstLeaf = parts.front().firstLeaf;
+  whole.casts = casts;
+  std::vector<std::unique_ptr<Shape>> shapes;
+  for (Part& p : parts) {
+    whole.transmits = whole.transmits || p.transmits;
+    shapes.push_back(std::move(p.shape));
+  }
+  whole.shape = std::make_unique<CsgNode>(op, std::move(shapes));
+  return whole;
+}
+
+struct Builder {
+  const Scene& scene;
+  const ShapeMaker& makeShape;
+  // A shape reached through several <use>s is built once; without <use>s every shape is
+  // reached once, and the map (a hash per node of a million) is skipped.
+  bool share;
+  std::unordered_map<const Node*, std::shared_ptr<const Shape>> shapes;
+  std::vector<WorldLeaf>& leaves;
+
+  // Adds the node's objects to `out`.
+  // `inSolid`: the node is (inside) an operand of a merge, intersection or difference,
+  // whose shadow is the whole operation's: the flags of its parts are not consulted.
+  void add(const Node& node, const Transform& parentWorld, uint32_t inherited, bool castsAbove,
+           bool inSolid, std::vector<Part>& out) {
+    if (node.inverse) addInverted(node, parentWorld, inherited, castsAbove, inSolid, out);
+    else addPlain(node, parentWorld, inherited, castsAbove, inSolid, out);
+  }
+
+  // A leaf: its Instance, tagged with its index in `leaves`.
+  Part addLeaf(const Node& node, const Transform& world, uint32_t material, bool casts) {
+    std::shared_ptr<const Shape> shape;
+    if (share) {
+      auto& shared = shapes[&node];
+      if (!shared) shared = makeShape(*node.shape);
+      shape = shared;
+    } else {
+      shape = makeShape(*node.shape);
+    }
+    const auto index = static_cast<uint32_t>(leaves.size());
+    auto inst = std::make_unique<Instance>(std::move(shape), world, index, node.shape->index());
+    WorldLeaf leaf;
+    leaf.instance = inst.get();
+    leaf.materialIndex = material;
+    leaf.material = &scene.materials[material];
+    leaf.medium = inst->isSolid() ? leaf.material : nullptr;
+    leaf.transmissive = leaf.material->isTransmissive();
+    leaves.push_back(leaf);
+    return Part{std::move(inst), index, casts, leaf.transmissive};
+  }
+
+  // The node's objects as written, its own inverse aside.
+  void addPlain(const Node& node, const Transform& parentWorld, uint32_t inherited, bool castsAbove,
+                bool inSolid, std::vector<Part>& out) {
+    Transform world = nodeWorld(node, parentWorld);
+    uint32_t material = node.material.value_or(inherited);
+    const bool castsShadow = inSolid || (castsAbove && node.shadows);
+
+    switch (node.kind) {
+      case NodeKind::Shape:
+        out.push_back(addLeaf(node, world, material, castsShadow));
+        break;
+      case NodeKind::Group:
+        for (const auto& c : node.children) add(*c, world, material, castsShadow, inSolid, out);
+        break;
+      case NodeKind::Use:
+        // The referenced node's own transform applies first, then the <use>'s.
+        add(*node.target, world, material, castsShadow, inSolid, out);
+        break;
+      case NodeKind::Light:
+        break;  // placed by placeLights, not built
+      case NodeKind::Union: {
+        std::vector<Part> children;
+        for (const auto& c : node.children)
+          add(*c, world, material, castsShadow, inSolid, children);
+        if (children.empty()) break;
+        const bool mixed = std::any_of(children.begin(), children.end(), [&](const Part& c) {
+          return c.casts != children.front().casts;
+        });
+        if (!mixed) {
+          const bool casts = children.front().casts;
+          out.push_back(compose(CsgOp::Union, std::move(children), casts));
+          break;
+        }
+        // Some children cast shadows and some do not: two unions, which together show and
+        // hold the same as one (POV-Ray splits every union into its children).
+        for (bool flag : {true, false}) {
+          std::vector<Part> part;
+          for (Part& c : children)
+            if (c.casts == flag) part.push_back(std::move(c));
+          out.push_back(compose(CsgOp::Union, std::move(part), flag));
+        }
+        break;
+      }
+      case NodeKind::Merge:
+      case NodeKind::Intersection:
+      case NodeKind::Difference: {
+        std::vector<Part> children;
+        for (const auto& c : node.children) add(*c, world, material, true, true, children);
+        if (children.empty()) break;
+        out.push_back(compose(csgOpOf(node.kind), std::move(children), castsShadow));
+        break;
+      }
+    }
+  }
+
+  // inverse="true": the node's objects as one solid (a union of them when there are
+  // several, unsplit by shadow flags: the inverse of a union is not the union of the
+  // inverses), inside out. It casts shadows as the node says.
+  void addInverted(const Node& node, const Transform& parentWorld, uint32_t inherited,
+                   bool castsAbove, bool inSolid, std::vector<Part>& out) {
+    std::vector<Part> parts;
+    addPlain(node, parentWorld, inherited, castsAbove, inSolid, parts);
+    if (parts.empty()) return;
+    const bool casts = inSolid || (castsAbove && node.shadows);
+    Part solid = parts.size() == 1 ? std::move(parts.front())
+                                   : compose(CsgOp::Union, std::move(parts), casts);
+    solid.casts = casts;
+    solid.shape = std::make_unique<Inverted>(std::move(solid.shape));
+    out.push_back(std::move(solid));
+  }
+};
+
+}  // namespace
+
+void checkWorld(const Scene& scene) { checkNode(*scene.root, Transform()); }
+
+FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape) {
+  FlatScene flat;
+  Builder b{scene, makeShape, hasUses(scene), {}, flat.leaves};
+  std::vector<Part> parts;
+  b.add(*scene.root, Transform(), 0, true, false, parts);
+  flat.objects.reserve(parts.size());
+  for (Part& p : parts) {
+    WorldObject o;
+    o.medium = p.shape->isSolid() ? flat.leaves[p.firstLeaf].material : nullptr;
+    o.castsShadow = p.casts;
+    o.transmits = p.transmits;
+    o.shape = std::move(p.shape);
+    flat.objects.push_back(std::move(o));
+  }
+  return flat;
+}
+
+}  // namespace lucent

@@ -1,0 +1,62 @@
+// The scene side of a world: the scene graph flattened into the objects a tracer meets,
+// each leaf placed with its world transform and material, CSG nodes composed of such
+// leaves, and what the tracer asks of them (material, medium, whether they transmit light)
+// worked out here, once, rather than on the ray path. The geometry side, the search over
+// these objects, is primitives/aggregate.h.
+#pragma once
+
+#include "scene.h"
+
+#include "primitives/instance.h"
+#include "primitives/shape.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace lucent {
+
+// Builds the shape of one geometry node (makeShape; tests pass their own).
+using ShapeMaker = std::function<std::shared_ptr<const Shape>(const ShapeSpec&)>;
+
+// A leaf: a shape node placed in the world. A hit on it carries this (WorldHit).
+struct WorldLeaf {
+  const Instance* instance = nullptr;  // its tag is the leaf's index in FlatScene::leaves
+  uint32_t materialIndex = 0;          // into Scene::materials (textures are per material)
+  const Material* material = nullptr;
+  // The medium the leaf encloses: its material when it is a solid; null for a surface
+  // without an inside, which light crosses as a thin sheet.
+  const Material* medium = nullptr;
+  bool transmissive = false;  // material->isTransmissive()
+};
+
+// A top-level object: a leaf's Instance, a CSG node of leaves, or either inside out.
+struct WorldObject {
+  std::unique_ptr<Shape> shape;
+  // The medium inside a solid: its first leaf's material (the surfaces of a CSG solid
+  // normally share it); null for an object that is not a solid.
+  const Material* medium = nullptr;
+  bool castsShadow = true;  // false: built from shadows="false" nodes
+  bool transmits = false;   // one of its leaves has a transmissive material
+};
+
+struct FlatScene {
+  std::vector<WorldObject> objects;
+  std::vector<WorldLeaf> leaves;  // every leaf, those inside CSG nodes too, in scene order
+};
+
+// Composes transforms down to the leaves (world matrix, inverse and normal matrix
+// computed once per instance), resolves inherited materials and shares the shape of a
+// node used many times: a mesh used through many <use> is stored and built once. A union
+// whose children differ in casting shadows becomes two (POV-Ray splits every union into
+// its children). Throws LocatedError (checkWorld's). The leaves point into
+// scene.materials, which must keep its elements where they are while they are used.
+FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape);
+
+// Throws, without building any shape, the LocatedError that flattening would: a
+// transform down to some node that is singular or beyond double range (nested scales).
+// `lucent check` calls it so that it refuses what `lucent render` refuses.
+void checkWorld(const Scene& scene);
+
+}  // namespace lucent
