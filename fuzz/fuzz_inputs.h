@@ -104,8 +104,8 @@ inline Outcome sceneParser(const uint8_t* data, size_t size, const std::string& 
     World world(scene);
     for (const Camera& camera : scene.cameras) {
       Renderer renderer(world, camera);
-      RayStats stats;
-      renderer.renderPixel(scene.render.width / 2, scene.render.height / 2, stats);
+      TraceContext context;
+      renderer.renderPixel(scene.render.width / 2, scene.render.height / 2, context);
     }
   } catch (const std::exception& e) {
     if (refusedInOrder(e)) return refused();

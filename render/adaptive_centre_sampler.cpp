@@ -76,7 +76,7 @@ class CentreRefinement {
       }
   }
   // Traces samples r.taken .. upTo-1 of pixel (x, y) into r.
-  void addSamples(int x, int y, int upTo, PixelRefinement& r, RayStats& stats) const;
+  void addSamples(int x, int y, int upTo, PixelRefinement& r, TraceContext& context) const;
 
   const CameraSamples& camera_;
   const PixelRect rect_, whole_, area_;
@@ -88,8 +88,8 @@ class CentreRefinement {
 };
 
 void CentreRefinement::traceCentres(PixelPasses& passes) {
-  passes.forEachPixel(area_, [&](int x, int y, RayStats& stats) {
-    centres_[at(x, y)] = camera_.sample(x, y, 0, 1, stats);
+  passes.forEachPixel(area_, [&](int x, int y, TraceContext& context) {
+    centres_[at(x, y)] = camera_.sample(x, y, 0, 1, context);
   });
 }
 
@@ -111,10 +111,10 @@ void CentreRefinement::markEdges() {
 }
 
 void CentreRefinement::addSamples(int x, int y, int upTo, PixelRefinement& r,
-                                  RayStats& stats) const {
+                                  TraceContext& context) const {
   const int count = camera_.samples();
   for (; r.taken < upTo; ++r.taken) {
-    const Color c = camera_.sample(x, y, r.taken, count, stats);
+    const Color c = camera_.sample(x, y, r.taken, count, context);
     r.sum += c;  // summed in k order, so a pixel that takes all samples equals the fixed sampler's
     r.lowest = glm::min(r.lowest, c);
     r.highest = glm::max(r.highest, c);
@@ -128,9 +128,9 @@ void CentreRefinement::refine(PixelPasses& passes, int stage, int k) {
   const int reach = margin_ - k;
   passes.forEachPixel(
       area_,
-      [&](int x, int y, RayStats& stats) {
+      [&](int x, int y, TraceContext& context) {
         if (active_[at(x, y)] && reaches(x, y, reach))
-          addSamples(x, y, stage, refine_[at(x, y)], stats);
+          addSamples(x, y, stage, refine_[at(x, y)], context);
       },
       k == 1);
 }

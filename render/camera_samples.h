@@ -6,7 +6,7 @@
 
 #include "media_stack.h"
 #include "projection.h"
-#include "ray_stats.h"
+#include "trace_context.h"
 #include "tracer.h"
 
 namespace lucent {
@@ -21,12 +21,12 @@ class CameraSamples {
 
   // Sample k of `count` in pixel (x, y): the Halton sub-pixel offset and the lens position
   // of sampling.h.
-  Color sample(int x, int y, int k, int count, RayStats& stats) const;
+  Color sample(int x, int y, int k, int count, TraceContext& context) const;
   // Pixel (x, y): the average of its samples() samples.
-  Color pixel(int x, int y, RayStats& stats) const;
+  Color pixel(int x, int y, TraceContext& context) const;
   // The sample at film position (fx, fy) / step (corner sampling: a point of its lattice),
   // through the lens centre.
-  Color latticeSample(int fx, int fy, int step, RayStats& stats) const;
+  Color latticeSample(int fx, int fy, int step, TraceContext& context) const;
 
  private:
   const Projection& projection_;

@@ -7,10 +7,10 @@ namespace lucent {
 
 void CornerSampler::traceCorners(const PixelRect& rect, PixelPasses& passes, int step,
                                  Image& corners, Image& encoded) const {
-  passes.forEachPixel(rect, [&](int x, int y, RayStats& stats) {
+  passes.forEachPixel(rect, [&](int x, int y, TraceContext& context) {
     auto trace = [&](int i, int j) {
       Color& c = corners.at(i - rect.x0, j - rect.y0);
-      c = camera_.latticeSample(i * step, j * step, step, stats);
+      c = camera_.latticeSample(i * step, j * step, step, context);
       encoded.at(i - rect.x0, j - rect.y0) = encodeForCornerTest(c);
     };
     trace(x, y);
@@ -25,16 +25,16 @@ void CornerSampler::render(const PixelRect& rect, PixelPasses& passes, Image& ou
   Image corners(rect.width() + 1, rect.height() + 1), encoded(rect.width() + 1, rect.height() + 1);
   traceCorners(rect, passes, step, corners, encoded);
   if (passes.cancelled()) return;
-  const LatticeTrace trace = [&](int fx, int fy, RayStats& stats) {
-    return camera_.latticeSample(fx, fy, step, stats);
+  const LatticeTrace trace = [&](int fx, int fy, TraceContext& context) {
+    return camera_.latticeSample(fx, fy, step, context);
   };
   passes.forEachTile(
       rect,
       [&](int x0, int x1) {
         return CornerTile(corners, encoded, rect.x0, rect.y0, threshold_, depth_, x0, x1);
       },
-      [&](CornerTile& tile, int x, int y, RayStats& stats) {
-        out.at(x - rect.x0, y - rect.y0) = tile.pixel(x, y, trace, stats);
+      [&](CornerTile& tile, int x, int y, TraceContext& context) {
+        out.at(x - rect.x0, y - rect.y0) = tile.pixel(x, y, trace, context);
       },
       true);
 }

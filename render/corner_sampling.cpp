@@ -42,7 +42,7 @@ CornerTile::CornerTile(const Image& corners, const Image& encodedCorners, int or
 void CornerTile::fill(int a, int b) {
   if (have(a, b)) return;
   Sample& s = at(a, b);
-  s.color = (*trace_)(baseX_ + a, baseY_ + b, *stats_);
+  s.color = (*trace_)(baseX_ + a, baseY_ + b, *context_);
   s.encoded = encodeForCornerTest(s.color);
   s.pixel = pixelNumber_;
 }
@@ -73,9 +73,9 @@ Color CornerTile::subdivide(int a, int b, int size, int level) {
   return (s00.color + s02.color + s20.color + s22.color) / 4.0f;
 }
 
-Color CornerTile::pixel(int x, int y, const LatticeTrace& trace, RayStats& stats) {
+Color CornerTile::pixel(int x, int y, const LatticeTrace& trace, TraceContext& context) {
   trace_ = &trace;
-  stats_ = &stats;
+  context_ = &context;
   const int n = step_;
   const size_t column = static_cast<size_t>(x - x0_);
   ++pixelNumber_;

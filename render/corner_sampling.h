@@ -8,7 +8,7 @@
 #pragma once
 
 #include "image.h"
-#include "ray_stats.h"
+#include "trace_context.h"
 
 #include <cstdint>
 #include <functional>
@@ -24,7 +24,7 @@ Color encodeForCornerTest(const Color& c);
 bool encodedDiffer(const Color& a, const Color& b, float threshold);
 
 // The colour at lattice point (fx, fy): film position (fx, fy) / step.
-using LatticeTrace = std::function<Color(int fx, int fy, RayStats& stats)>;
+using LatticeTrace = std::function<Color(int fx, int fy, TraceContext& context)>;
 
 // One tile's subdivision: the pixels of columns [x0, x1), visited row by row, left to right
 // (each hands its right and bottom edges on to the next). Holds the edge buffers, so a tile
@@ -40,7 +40,7 @@ class CornerTile {
 
   // Pixel (x, y), which must follow the previous one in the visiting order (a new row may
   // start anywhere inside the tile, so that a cancelled row leaves nothing stale).
-  Color pixel(int x, int y, const LatticeTrace& trace, RayStats& stats);
+  Color pixel(int x, int y, const LatticeTrace& trace, TraceContext& context);
 
  private:
   struct Sample {
@@ -69,7 +69,7 @@ class CornerTile {
   int lastX_ = -2, lastY_ = -2;
   int baseX_ = 0, baseY_ = 0;  // the current pixel's top-left lattice point
   const LatticeTrace* trace_ = nullptr;
-  RayStats* stats_ = nullptr;
+  TraceContext* context_ = nullptr;
 };
 
 }  // namespace lucent

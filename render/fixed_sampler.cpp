@@ -5,8 +5,8 @@
 namespace lucent {
 
 void FixedSampler::render(const PixelRect& rect, PixelPasses& passes, Image& out) const {
-  passes.forEachPixel(rect, [&](int x, int y, RayStats& stats) {
-    out.at(x - rect.x0, y - rect.y0) = camera_.pixel(x, y, stats);
+  passes.forEachPixel(rect, [&](int x, int y, TraceContext& context) {
+    out.at(x - rect.x0, y - rect.y0) = camera_.pixel(x, y, context);
   });
 }
 

@@ -1,8 +1,7 @@
-// Ray counts by kind, for `lucent render --stats`. Each tile counts into its own copy and
-// the copies are summed, so counting never makes threads wait for each other.
+// Ray counts by kind, for `lucent render --stats`. Each tile counts into its own copy (in
+// its thread's TraceContext, trace_context.h) and the copies are summed, so counting never
+// makes threads wait for each other.
 #pragma once
-
-#include "shadow_cache.h"
 
 #include "primitives/test_counts.h"
 
@@ -19,10 +18,6 @@ struct RayStats {
   uint64_t queries = 0;          // searches of the world (closest hit or any hit)
   uint64_t shadowCacheHits = 0;  // shadow rays blocked by their light's cached last blocker
   TestCounts tests;              // intersection tests by kind of shape
-
-  // Not a count: the tile's shadow cache rides with its counts, the one object every
-  // trace call of a tile already carries. operator+= leaves it alone.
-  ShadowCache shadowCache;
 
   uint64_t rays() const { return primary + shadow + reflected + refracted; }
 

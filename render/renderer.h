@@ -56,10 +56,10 @@ class Renderer {
   static int adaptiveMargin(const RenderSettings& settings) { return samplingMargin(settings); }
 
   // Pixel (x, y): the average of its `samples` camera samples.
-  Color renderPixel(int x, int y, RayStats& stats) const { return camera_.pixel(x, y, stats); }
+  Color renderPixel(int x, int y, TraceContext& context) const { return camera_.pixel(x, y, context); }
   // One camera sample k of `count` in pixel (x, y).
-  Color renderSample(int x, int y, int k, int count, RayStats& stats) const {
-    return camera_.sample(x, y, k, count, stats);
+  Color renderSample(int x, int y, int k, int count, TraceContext& context) const {
+    return camera_.sample(x, y, k, count, context);
   }
 
   const Projection& projection() const { return *projection_; }

@@ -16,9 +16,9 @@ namespace lucent {
 // A fresh owner id for a tracer: never 0, never handed out twice in a process.
 uint64_t newShadowCacheOwner();
 
-// One slot per light. It travels with the per-tile RayStats, so each tile starts empty
-// (ray and test counts then do not depend on which thread rendered which tile) and
-// threads never share it.
+// One slot per light. It lives in a thread's TraceContext (trace_context.h), emptied at
+// the start of every tile (ray and test counts then do not depend on which thread
+// rendered which tile); threads never share it.
 class ShadowCache {
  public:
   // Light `light`'s slot for the tracer `owner` (of a scene with `lights` lights):
@@ -31,6 +31,11 @@ class ShadowCache {
       blockers_.assign(lights, World::kNoObject);
     }
     return blockers_[light];
+  }
+  // Forgets every blocker.
+  void clear() {
+    owner_ = 0;
+    blockers_.clear();
   }
 
  private:

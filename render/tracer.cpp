@@ -59,9 +59,9 @@ MediaStack Tracer::mediaAt(const Vec3& p) const {
 }
 
 Color Tracer::traceCamera(const Ray& ray, const MediaStack& media, PathSeed& seed,
-                          RayStats& stats) const {
-  ++stats.primary;
-  return trace(ray, 1, Color(1.0f), media, seed, stats);
+                          TraceContext& context) const {
+  ++context.stats.primary;
+  return trace(ray, 1, Color(1.0f), media, seed, context);
 }
 
 // One loop iteration per surface along a straight line: a transmitted ray that does not
@@ -69,7 +69,8 @@ Color Tracer::traceCamera(const Ray& ray, const MediaStack& media, PathSeed& see
 // loop at its parent's depth instead of recursing, so a ray through a thousand clear
 // triangles needs no deep stack. Reflected and bent rays recurse with depth + 1.
 Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed& seed,
-                    RayStats& stats) const {
+                    TraceContext& context) const {
+  RayStats& stats = context.stats;
   Color sum(0.0f);
   Color throughput(1.0f);  // k_t and absorption of the straight continuations so far
   for (;;) {
@@ -126,7 +127,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     if (leaving) ambient *= m.transmissive;
     local += ambient;
     if (!lights_.empty() && (anyPositive(kd) || m.hasHighlight())) {
-      local += directLight(s, n, v, kd, m, media, seed, stats);
+      local += directLight(s, n, v, kd, m, media, seed, context);
       ++seed.event;
     }
 
@@ -153,7 +154,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
       if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
         ++stats.refracted;
         result += rays.transmitted * trace(spawnRay(s, rays.refracted, settings_.epsilon),
-                                           depth + 1, w, beyond, seed, stats);
+                                           depth + 1, w, beyond, seed, context);
       }
     }
     if (anyPositive(rays.mirror)) {
@@ -161,7 +162,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
       if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
         ++stats.reflected;
         result += rays.mirror * trace(spawnRay(s, reflect(-v, n), settings_.epsilon), depth + 1, w,
-                                      media, seed, stats);
+                                      media, seed, context);
       }
     }
     sum += throughput * result;
@@ -179,7 +180,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
 
 Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
                           const Material& m, const MediaStack& media, PathSeed& seed,
-                          RayStats& stats) const {
+                          TraceContext& context) const {
   Color sum(0.0f);
   for (size_t i = 0; i < lights_.size(); ++i) {
     const Light& light = lights_[i];
@@ -190,7 +191,7 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
     if (!anyPositive(brdf)) continue;
     Color shadow(1.0f);
     if (light.shadows) {
-      shadow = shadowFactor(light, static_cast<uint32_t>(i), in, s, media, seed, stats);
+      shadow = shadowFactor(light, static_cast<uint32_t>(i), in, s, media, seed, context);
       if (!anyPositive(shadow)) continue;
     }
     sum += shadow * in.radiance * brdf;
@@ -200,9 +201,10 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
 
 Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightIncidence& in,
                            const SurfaceInfo& s, const MediaStack& media, const PathSeed& seed,
-                           RayStats& stats) const {
+                           TraceContext& context) const {
+  RayStats& stats = context.stats;
   // The object that blocked this light's last shadow ray is asked first.
-  World::ObjectId& lastBlocker = stats.shadowCache.slot(cacheOwner_, lightIndex, lights_.size());
+  World::ObjectId& lastBlocker = context.shadowCache.slot(cacheOwner_, lightIndex, lights_.size());
   auto shadowRay = [&](const Ray& ray) {
     if (anyTransmissive_) return transmittance(ray, media, lastBlocker, stats);
     // An opaque scene: one any-hit query, nothing to copy.
@@ -231,11 +233,9 @@ Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightI
     return shadowRay(rays.to(target));
   };
   if (light.type == LightType::Area && light.adaptive) {
-    // Its grid-point memo is reused from one estimate to the next (no allocation per point).
-    thread_local AdaptiveAreaSampler sampler;
     const int nu = std::max(light.samplesU, 2), nv = std::max(light.samplesV, 2);
-    return sampler.average(nu, nv, *light.adaptive, in.radiance,
-                           [&](int a, int b) { return sampleRay(b * nu + a); });
+    return context.areaSampler.average(nu, nv, *light.adaptive, in.radiance,
+                                       [&](int a, int b) { return sampleRay(b * nu + a); });
   }
   const int count = shadowSampleCount(light);
   // One sample (a point or spot light): no average to take. The average's division, done

@@ -9,6 +9,7 @@
 #include "ray_stats.h"
 #include "shadow_cache.h"
 #include "texture.h"
+#include "trace_context.h"
 
 #include "primitives/hit.h"
 #include "scenegraph/world.h"
@@ -34,8 +35,10 @@ class Tracer {
   // outlive the tracer.
   explicit Tracer(const World& world, ImageMapCache* textures = nullptr);
 
-  // The colour seen along a camera ray (depth 1, weight 1) that starts in `media`.
-  Color traceCamera(const Ray& ray, const MediaStack& media, PathSeed& seed, RayStats& stats) const;
+  // The colour seen along a camera ray (depth 1, weight 1) that starts in `media`, with
+  // the calling thread's context (its counts, shadow cache and scratch).
+  Color traceCamera(const Ray& ray, const MediaStack& media, PathSeed& seed,
+                    TraceContext& context) const;
 
   // The media containing point p (a camera's starting media): the media of the top-level
   // solids whose inside() holds p (WorldObject::medium), the largest bounding box outermost
@@ -47,7 +50,7 @@ class Tracer {
   // transparent one, times exp(−absorption·d) for each stretch inside an absorbing solid.
   // It uses no shadow cache.
   Color transmittance(Ray ray, MediaStack media, RayStats& stats) const;
-  // transmittance() with this light's slot of the tile's shadow cache (POV-Ray's): the
+  // transmittance() with a light's slot of a shadow cache (POV-Ray's): the
   // opaque object that blocked the light's last shadow ray is tested first, and the new
   // blocker stored there. The opaque objects are asked first, by one any-hit query
   // (World::opaqueOccluder); only a ray that none blocks walks the surfaces of the
@@ -60,16 +63,17 @@ class Tracer {
 
  private:
   Color trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed& seed,
-              RayStats& stats) const;
+              TraceContext& context) const;
   // Σ over lights of A_shadow·A_dist·I_L·[k_d (N·L) + k_s (N·H)^n_s].
   Color directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
                     const Material& m, const MediaStack& media, PathSeed& seed,
-                    RayStats& stats) const;
+                    TraceContext& context) const;
   // A_shadow of one light at s: the transmittance averaged over the light's samples
-  // (an adaptive area light: AdaptiveAreaSampler's estimate of it).
+  // (an adaptive area light: the context's AdaptiveAreaSampler's estimate of it), with
+  // the light's slot of the context's shadow cache.
   Color shadowFactor(const Light& light, uint32_t lightIndex, const LightIncidence& in,
                      const SurfaceInfo& s, const MediaStack& media, const PathSeed& seed,
-                     RayStats& stats) const;
+                     TraceContext& context) const;
   // Whether an opaque object blocks the ray (one any-hit query; updates lastBlocker).
   bool blockedByOpaque(const Ray& ray, World::ObjectId& lastBlocker, RayStats& stats) const;
 

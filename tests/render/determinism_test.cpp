@@ -69,7 +69,7 @@ TEST_CASE("adaptive supersampling refines only pixels that differ from a neighbo
   Image centres(w, h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      RayStats s;
+      TraceContext s;
       centres.at(x, y) = adaptive.renderSample(x, y, 0, 1, s);
     }
   int centreOnly = 0, stopped = 0, allSamples = 0;
@@ -95,7 +95,7 @@ TEST_CASE("adaptive supersampling refines only pixels that differ from a neighbo
       Color sum(0.0f), lo = centres.at(x, y), hi = lo;
       bool matched = false;
       for (int k = 0; k < 16 && !matched; ++k) {
-        RayStats s;
+        TraceContext s;
         Color c = adaptive.renderSample(x, y, k, 16, s);
         sum += c;
         lo = glm::min(lo, c);
@@ -113,7 +113,7 @@ TEST_CASE("adaptive supersampling refines only pixels that differ from a neighbo
                 continue;
               Color nlo = centres.at(nx, ny), nhi = nlo;
               for (int j = 0; j < n; ++j) {
-                RayStats s2;
+                TraceContext s2;
                 Color c2 = adaptive.renderSample(nx, ny, j, 16, s2);
                 nlo = glm::min(nlo, c2);
                 nhi = glm::max(nhi, c2);

@@ -67,9 +67,9 @@ inline Mat4 translation(const Vec3& t) { return glm::translate(Mat4(1.0), t); }
 inline Color traceOne(const World& world, const Ray& ray, RayStats* statsOut = nullptr) {
   Tracer tracer(world);
   PathSeed seed;
-  RayStats stats;
-  Color c = tracer.traceCamera(ray, tracer.mediaAt(ray.o), seed, stats);
-  if (statsOut) *statsOut = stats;
+  TraceContext context;
+  Color c = tracer.traceCamera(ray, tracer.mediaAt(ray.o), seed, context);
+  if (statsOut) *statsOut = context.stats;
   return c;
 }
 

@@ -219,8 +219,8 @@ TEST_CASE("a thin-lens pixel converges to the analytic blur of an edge with samp
     scene.render.samples = samples;
     World w(scene);
     Renderer renderer(w, cam);
-    RayStats stats;
-    return std::abs(double(renderer.renderPixel(2, 1, stats).r) - reference);
+    TraceContext context;
+    return std::abs(double(renderer.renderPixel(2, 1, context).r) - reference);
   };
   double e16 = pixelError(16), e256 = pixelError(256), e4096 = pixelError(4096);
   CAPTURE(reference, e16, e256, e4096);

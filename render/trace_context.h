@@ -1,0 +1,48 @@
+// What one thread carries while it traces, handed down every call of the tracer: the ray
+// counts, the shadow cache and the adaptive area sampler's working memory. The render loop
+// makes one per worker thread, so threads share none of it and nothing of it hides in
+// thread_local state. (The intersection-test counters and the shapes' scratch buffers stay
+// per thread below the Shape interface, primitives/test_counts.h: a context there would be
+// an argument of every shape's every test.)
+#pragma once
+
+#include "adaptive_area.h"
+#include "ray_stats.h"
+#include "shadow_cache.h"
+
+#include "primitives/test_counts.h"
+
+namespace lucent {
+
+class TraceContext {
+ public:
+  // The counts of the work under way (a tile), which the tracer adds to.
+  RayStats stats;
+  // The object that blocked each light's last shadow ray (POV-Ray's shadow cache).
+  ShadowCache shadowCache;
+  // Reused from one adaptive area light's estimate to the next (no allocation per point).
+  AdaptiveAreaSampler areaSampler;
+
+  // Begins a tile: no counts yet, and an empty shadow cache, so that what a tile counts
+  // (rays, tests, cache hits) never depends on which tiles its thread traced before.
+  void startTile() {
+    stats = RayStats();
+    shadowCache.clear();
+    testsAtStart_ = threadTestCounts;
+  }
+  // Ends the tile, which ran on this thread from startTile() on: adds the thread's
+  // intersection tests since then to its counts, and the counts to total(). Returns them.
+  const RayStats& finishTile() {
+    stats.tests = threadTestCounts - testsAtStart_;
+    total_ += stats;
+    return stats;
+  }
+  // The counts of every tile finished with this context.
+  const RayStats& total() const { return total_; }
+
+ private:
+  TestCounts testsAtStart_;
+  RayStats total_;
+};
+
+}  // namespace lucent
