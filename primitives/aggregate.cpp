@@ -122,7 +122,7 @@ Aggregate::Aggregate(const std::vector<Object>& objects, const Options& options)
 }
 
 bool Aggregate::Search::closest(const Ray& ray, Hit& hit) const {
-  Ray r = ray;
+  Ray r = copyByMembers(ray);
   bool found = false;
   for (const Shape* o : direct) {
     if (o->intersect(r, hit)) {
@@ -169,57 +169,12 @@ bool Aggregate::Search::closest(const Ray& ray, Hit& hit) const {
   return found || inTree;
 }
 
-void Aggregate::Search::prefetchLeaves(uint32_t first, uint32_t count) const {
-  const char* p = reinterpret_cast<const char*>(leaves.data() + first);
-  const char* end = reinterpret_cast<const char*>(leaves.data() + first + count);
-  // From the cache line holding the first record (the records are 32 bytes, aligned).
-  for (p -= reinterpret_cast<uintptr_t>(p) & 63; p < end; p += 64) __builtin_prefetch(p);
-}
-
 bool Aggregate::Search::slotOccluded(uint32_t slot, const Ray& ray) const {
   const Leaf& leaf = leaves[slot];
   if (leaf.r2 < 0.0) return leafObjects[slot]->occluded(ray);
   ++threadTestCounts[sphereTestSlot];
   double t;
   return sphereHitDistance(Vec3(leaf.cx, leaf.cy, leaf.cz), leaf.r2, ray, t);
-}
-
-Aggregate::ObjectId Aggregate::anyHit(const Ray& ray, Mask skip, ObjectId first) const {
-  skip &= anyMask_;
-  if (skip == 0) return findAnyHit<false>(ray, 0, first);
-  return findAnyHit<true>(ray, skip, first);
-}
-
-template <bool kMasked>
-Aggregate::ObjectId Aggregate::findAnyHit(const Ray& ray, Mask skip, ObjectId first) const {
-  auto skips = [&](ObjectId id) {
-    if constexpr (kMasked) return (masks_[id] & skip) != 0;
-    else return false;
-  };
-  const auto& direct = all_.direct;
-  const auto directCount = static_cast<ObjectId>(direct.size());
-  if (first != kNoObject && !skips(first) &&
-      (first < directCount ? direct[first]->occluded(ray)
-                           : all_.slotOccluded(first - directCount, ray)))
-    return first;
-  // The BVH before the unbounded objects (an any-hit search may take them in any
-  // order): a floor plane is tested by every shadow ray and blocks few, and this order
-  // made such scenes markedly faster, which was measured, not explained
-  // (docs/performance-history.md, "Shadow rays").
-  ObjectId found = kNoObject;
-  auto blocks = [&](uint32_t slot, const Ray& r) {
-    const ObjectId id = directCount + slot;
-    // `first` missed already
-    if (id == first || skips(id) || !all_.slotOccluded(slot, r)) return false;
-    found = id;
-    return true;
-  };
-  all_.bvh.any(ray, blocks,
-               [this](uint32_t first, uint32_t count) { all_.prefetchLeaves(first, count); });
-  if (found != kNoObject) return found;
-  for (ObjectId k = 0; k < directCount; ++k)
-    if (k != first && !skips(k) && direct[k]->occluded(ray)) return k;
-  return kNoObject;
 }
 
 const Shape* Aggregate::object(ObjectId id) const {

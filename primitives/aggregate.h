@@ -53,14 +53,21 @@ class Aggregate {
   // the last bit.
   bool closestSelected(const Ray& ray, Hit& hit) const { return selected_.closest(ray, hit); }
 
-  // An object that the ray hits, leaving out the objects whose mask has a bit of `skip`;
+  // An object that the ray hits, leaving out the objects whose mask has a bit of kSkip;
   // kNoObject if none. `first`, kNoObject or an id an earlier call on this aggregate
   // returned, is tested before all others, by the same test the full search makes (a
   // shadow cache passes the object that blocked the previous ray towards the same light,
   // as POV-Ray does). Then the BVH, then the unbounded objects. The order of an any-hit
   // search changes how soon the answer is found, never what it is: whether the answer is
-  // kNoObject does not depend on `first`.
-  ObjectId anyHit(const Ray& ray, Mask skip, ObjectId first = kNoObject) const;
+  // kNoObject does not depend on `first`. (The mask is a template argument, and the
+  // search is defined below, in the header: each query a caller makes is compiled with
+  // its mask as a constant, as the world's shadow queries were before the aggregate was
+  // split out of it; a shadow ray's any-hit search is most of a render's work.)
+  template <Mask kSkip = 0>
+  ObjectId anyHit(const Ray& ray, ObjectId first = kNoObject) const;
+  // Whether some object's mask has a bit of `bits` (if none has, anyHit<0>() answers as
+  // anyHit<bits>(), without reading the masks).
+  bool anyMasked(Mask bits) const { return (anyMask_ & bits) != 0; }
 
   // The object an id names, nullptr for kNoObject.
   const Shape* object(ObjectId id) const;
@@ -97,12 +104,20 @@ class Aggregate {
     // Any hit of the object in BVH leaf slot `slot`: the one test every search makes of it.
     bool slotOccluded(uint32_t slot, const Ray& ray) const;
     // Asks for the cache lines of leaves[first, first + count) (Bvh::candidates).
-    void prefetchLeaves(uint32_t first, uint32_t count) const;
+    void prefetchLeaves(uint32_t first, uint32_t count) const {
+      const char* p = reinterpret_cast<const char*>(leaves.data() + first);
+      const char* end = reinterpret_cast<const char*>(leaves.data() + first + count);
+      // From the cache line holding the first record (the records are 32 bytes, aligned).
+      for (p -= reinterpret_cast<uintptr_t>(p) & 63; p < end; p += 64) __builtin_prefetch(p);
+    }
   };
 
-  // anyHit(), leaving out the objects with a bit of `skip` when kMasked.
-  template <bool kMasked>
-  ObjectId findAnyHit(const Ray& ray, Mask skip, ObjectId first) const;
+  // Whether anyHit<kSkip>() leaves the object out.
+  template <Mask kSkip>
+  bool leftOut(ObjectId id) const {
+    if constexpr (kSkip == 0) return false;
+    else return (masks_[id] & kSkip) != 0;
+  }
 
   Search all_;
   Search selected_;  // the objects of all_ that are selected, tested as all_ tests them
@@ -111,5 +126,33 @@ class Aggregate {
   Mask anyMask_ = 0;  // the union of every mask
   size_t inlineSpheres_ = 0;
 };
+
+template <Aggregate::Mask kSkip>
+Aggregate::ObjectId Aggregate::anyHit(const Ray& ray, ObjectId first) const {
+  const auto& direct = all_.direct;
+  const auto directCount = static_cast<ObjectId>(direct.size());
+  if (first != kNoObject && !leftOut<kSkip>(first) &&
+      (first < directCount ? direct[first]->occluded(ray)
+                           : all_.slotOccluded(first - directCount, ray)))
+    return first;
+  // The BVH before the unbounded objects (an any-hit search may take them in any
+  // order): a floor plane is tested by every shadow ray and blocks few, and this order
+  // made such scenes markedly faster, which was measured, not explained
+  // (docs/performance-history.md, "Shadow rays").
+  ObjectId found = kNoObject;
+  auto blocks = [&](uint32_t slot, const Ray& r) {
+    const ObjectId id = directCount + slot;
+    // `first` missed already
+    if (id == first || leftOut<kSkip>(id) || !all_.slotOccluded(slot, r)) return false;
+    found = id;
+    return true;
+  };
+  all_.bvh.any(ray, blocks,
+               [this](uint32_t first, uint32_t count) { all_.prefetchLeaves(first, count); });
+  if (found != kNoObject) return found;
+  for (ObjectId k = 0; k < directCount; ++k)
+    if (k != first && !leftOut<kSkip>(k) && direct[k]->occluded(ray)) return k;
+  return kNoObject;
+}
 
 }  // namespace lucent

@@ -347,7 +347,7 @@ class Bvh {
   // Returns whether any call returned true. prefetch as for candidates().
   template <class HitItem, class Prefetch = NoPrefetch>
   bool closest(const Ray& ray, HitItem&& hitItem, Prefetch&& prefetch = Prefetch()) const {
-    Ray r = ray;
+    Ray r = copyByMembers(ray);
     bool found = false;
     candidates(
         r, r.tmax,

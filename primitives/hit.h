@@ -15,9 +15,11 @@ struct Hit {
   double t = kInf;
   const Shape* shape = nullptr;  // the leaf that was hit: its surface() gives the geometry
   uint32_t part = 0;             // shape-specific: face, cap or side, triangle index, ...
-  double b1 = 0.0, b2 = 0.0;     // shape-specific: barycentrics, local coordinates, ...
-  bool flip = false;             // set by CSG: a subtracted surface, its normal faces out
-  uint32_t tag = 0;              // the tag of the Instance hit (Instance::tag), set by it
+  // The tag of the Instance hit (Instance::tag), set by it. Beside `part`, in what was
+  // padding: a Hit is no larger, and a new one zeroes both in one store.
+  uint32_t tag = 0;
+  double b1 = 0.0, b2 = 0.0;  // shape-specific: barycentrics, local coordinates, ...
+  bool flip = false;          // set by CSG: a subtracted surface, its normal faces out
 
   bool found() const { return shape != nullptr; }
 };

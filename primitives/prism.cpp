@@ -390,17 +390,25 @@ bool Prism::intersect(const Ray& ray, Hit& hit) const {
 void Prism::crossings(const Ray& ray, CrossingList& out) const {
   thread_local std::vector<Span> sp;
   spans(ray, sp);
+  auto hitAt = [this](double t, uint32_t part, double s) {
+    Hit h;
+    h.t = t;
+    h.shape = this;
+    h.part = part;
+    h.b1 = s;
+    return h;
+  };
   for (const Span& s : sp) {
     if (open_) {
       if (s.t0 >= ray.tmin && s.t0 <= ray.tmax)
-        out.items.push_back({{s.t0, this, s.part0, s.s0}, true});
+        out.items.push_back({hitAt(s.t0, s.part0, s.s0), true});
       continue;
     }
     if (s.t0 < ray.tmin && ray.tmin <= s.t1) out.startsInside = true;
     if (s.t0 >= ray.tmin && s.t0 <= ray.tmax)
-      out.items.push_back({{s.t0, this, s.part0, s.s0}, true});
+      out.items.push_back({hitAt(s.t0, s.part0, s.s0), true});
     if (s.t1 >= ray.tmin && s.t1 <= ray.tmax)
-      out.items.push_back({{s.t1, this, s.part1, s.s1}, false});
+      out.items.push_back({hitAt(s.t1, s.part1, s.s1), false});
   }
 }
 

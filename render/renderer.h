@@ -56,7 +56,9 @@ class Renderer {
   static int adaptiveMargin(const RenderSettings& settings) { return samplingMargin(settings); }
 
   // Pixel (x, y): the average of its `samples` camera samples.
-  Color renderPixel(int x, int y, TraceContext& context) const { return camera_.pixel(x, y, context); }
+  Color renderPixel(int x, int y, TraceContext& context) const {
+    return camera_.pixel(x, y, context);
+  }
   // One camera sample k of `count` in pixel (x, y).
   Color renderSample(int x, int y, int k, int count, TraceContext& context) const {
     return camera_.sample(x, y, k, count, context);

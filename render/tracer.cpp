@@ -76,95 +76,22 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
   for (;;) {
     WorldHit hit;
     ++stats.queries;
-    if (!world_.intersect(ray, hit)) {
-      Color background = sky_ ? skyColor(*sky_, ray.d) : settings_.background;
-      if (const Material* medium = media.top(); medium && medium->isAbsorbing())
-        background *= beerLambert(medium->absorption, kInf);
-      if (fog_ && media.empty())
-        background = fogAlong(*fog_, ray.o, glm::normalize(ray.d), kInf).apply(background);
-      return sum + throughput * background;
-    }
+    if (!world_.intersect(ray, hit)) return sum + throughput * escaped(ray, media);
 
-    const WorldLeaf& leaf = *hit.leaf;
+    const WorldLeaf& leaf = hit.leaf();
     const Material& m = *leaf.material;
     const SurfaceInfo s = hit.surface(ray);
     const bool solid = leaf.medium != nullptr;  // the leaf bounds a medium (its material)
     const bool front = glm::dot(ray.d, s.ng) < 0.0;
     const bool leaving = solid && !front;  // the ray was inside this solid
+    travelled(ray, hit.t(), leaving ? &m : nullptr, media, sum, throughput);
 
-    // Fog over the stretch just travelled, if it ran outside every solid (render/fog.h).
-    if (fog_ && !leaving && media.empty()) {
-      const double speed = glm::length(ray.d);
-      const FogEffect fog = fogAlong(*fog_, ray.o, ray.d / speed, hit.t() * speed);
-      sum += throughput * fog.add;
-      throughput *= fog.keep;
-    }
-
-    // The stretch just travelled lies inside the solid being left, or else in the
-    // innermost medium the ray is known to be in.
-    const Material* segment = leaving ? &m : media.top();
-    if (segment && segment->isAbsorbing())
-      throughput *= beerLambert(segment->absorption, hit.t() * glm::length(ray.d));
-
-    // Normals facing the viewer. The shading normal follows the geometric one's side; if
-    // interpolation still leaves it facing away, the geometric normal is used instead.
     const Vec3 v = -glm::normalize(ray.d);
-    const Vec3 ng = front ? s.ng : -s.ng;
-    Vec3 n = front ? s.ns : -s.ns;
-    if (glm::dot(n, v) <= 0.0) n = ng;
-    if (m.normal) n = perturbedShadingNormal(*m.normal, leaf.instance->transform(), s, n, v);
-    if (m.bumpMap)
-      n = bumpedShadingNormal(*textures_.bumpMap(leaf.materialIndex), *m.bumpMap, s, n, v);
-    const ShadingPoint at{s.p, n, v};
-
-    // Local terms: k_e + k_a·I_La (·k_t inside an object) + direct light.
-    Color local = m.emissive;
-    Color texture(1.0f);
-    if (m.hasTexture()) texture = textures_.eval(leaf.materialIndex, m, s, *leaf.instance);
-    const Color kd = m.diffuse * texture;
-    Color ambient =
-        (m.hasTexture() && m.ambientIsScalar ? m.ambient * texture : m.ambient) * settings_.ambient;
-    if (leaving) ambient *= m.transmissive;
-    local += ambient;
-    if (!lights_.empty() && (anyPositive(kd) || m.hasHighlight())) {
-      local += directLight(s, n, v, kd, m, media, seed, context);
-      ++seed.event;
-    }
-
-    // The interface: indices on both sides and the media beyond it.
-    const bool transmits = anyPositive(m.transmissive);
-    double n1 = 1.0, n2 = 1.0;
-    MediaStack beyond = media;
-    if (transmits || (m.fresnel && anyPositive(m.reflective))) {
-      if (!solid || front) {
-        n1 = media.ior();
-        n2 = m.ior;
-        if (solid) beyond.push(&m);
-      } else {
-        n1 = m.ior;
-        beyond.remove(&m);
-        n2 = beyond.ior();
-      }
-    }
-    const SecondaryRays rays = secondaryRays(m, at, solid, n1, n2);
-
-    Color result = local;
-    if (anyPositive(rays.transmitted) && !rays.straight) {
-      Color w = weight * rays.transmitted;
-      if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
-        ++stats.refracted;
-        result += rays.transmitted * trace(spawnRay(s, rays.refracted, settings_.epsilon),
-                                           depth + 1, w, beyond, seed, context);
-      }
-    }
-    if (anyPositive(rays.mirror)) {
-      Color w = weight * rays.mirror;
-      if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
-        ++stats.reflected;
-        result += rays.mirror * trace(spawnRay(s, reflect(-v, n), settings_.epsilon), depth + 1, w,
-                                      media, seed, context);
-      }
-    }
+    const Vec3 n = shadingNormal(leaf, s, front, v);
+    Color result = localLight(leaf, s, n, v, leaving, media, seed, context);
+    const Interface side = interfaceAt(m, solid, front, media);
+    const SecondaryRays rays = secondaryRays(m, ShadingPoint{s.p, n, v}, solid, side.n1, side.n2);
+    result = withBranches(result, s, n, v, rays, depth, weight, media, side.beyond, seed, context);
     sum += throughput * result;
 
     if (!rays.straight) return sum;
@@ -174,8 +101,108 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     weight = w;
     throughput *= rays.transmitted;
     ray = spawnRay(s, ray.d, settings_.epsilon);
-    if (solid) media = beyond;
+    if (solid) media = side.beyond;
   }
+}
+
+Color Tracer::escaped(const Ray& ray, const MediaStack& media) const {
+  Color background = sky_ ? skyColor(*sky_, ray.d) : settings_.background;
+  if (const Material* medium = media.top(); medium && medium->isAbsorbing())
+    background *= beerLambert(medium->absorption, kInf);
+  if (fog_ && media.empty())
+    background = fogAlong(*fog_, ray.o, glm::normalize(ray.d), kInf).apply(background);
+  return background;
+}
+
+void Tracer::travelled(const Ray& ray, double t, const Material* leaving, const MediaStack& media,
+                       Color& sum, Color& throughput) const {
+  // Fog over the stretch, if it ran outside every solid (render/fog.h).
+  if (fog_ && !leaving && media.empty()) {
+    const double speed = glm::length(ray.d);
+    const FogEffect fog = fogAlong(*fog_, ray.o, ray.d / speed, t * speed);
+    sum += throughput * fog.add;
+    throughput *= fog.keep;
+  }
+  // The stretch lies inside the solid being left, or else in the innermost medium the
+  // ray is known to be in.
+  const Material* segment = leaving ? leaving : media.top();
+  if (segment && segment->isAbsorbing())
+    throughput *= beerLambert(segment->absorption, t * glm::length(ray.d));
+}
+
+// The shading normal follows the geometric one's side; if interpolation still leaves it
+// facing away, the geometric normal is used instead. Then the material's normal pattern
+// and bump map.
+Vec3 Tracer::shadingNormal(const WorldLeaf& leaf, const SurfaceInfo& s, bool front,
+                           const Vec3& v) const {
+  const Material& m = *leaf.material;
+  const Vec3 ng = front ? s.ng : -s.ng;
+  Vec3 n = front ? s.ns : -s.ns;
+  if (glm::dot(n, v) <= 0.0) n = ng;
+  if (m.normal) n = perturbedShadingNormal(*m.normal, leaf.instance->transform(), s, n, v);
+  if (m.bumpMap)
+    n = bumpedShadingNormal(*textures_.bumpMap(leaf.materialIndex), *m.bumpMap, s, n, v);
+  return n;
+}
+
+// k_e + k_a·I_La (·k_t inside an object) + direct light.
+Color Tracer::localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3& n, const Vec3& v,
+                         bool leaving, const MediaStack& media, PathSeed& seed,
+                         TraceContext& context) const {
+  const Material& m = *leaf.material;
+  Color local = m.emissive;
+  Color texture(1.0f);
+  if (m.hasTexture()) texture = textures_.eval(leaf.materialIndex, m, s, *leaf.instance);
+  const Color kd = m.diffuse * texture;
+  Color ambient =
+      (m.hasTexture() && m.ambientIsScalar ? m.ambient * texture : m.ambient) * settings_.ambient;
+  if (leaving) ambient *= m.transmissive;
+  local += ambient;
+  if (!lights_.empty() && (anyPositive(kd) || m.hasHighlight())) {
+    local += directLight(s, n, v, kd, m, media, seed, context);
+    ++seed.event;
+  }
+  return local;
+}
+
+Tracer::Interface Tracer::interfaceAt(const Material& m, bool solid, bool front,
+                                      const MediaStack& media) const {
+  Interface side{1.0, 1.0, media};
+  // Only a material that transmits or splits by Fresnel needs the indices.
+  if (!anyPositive(m.transmissive) && !(m.fresnel && anyPositive(m.reflective))) return side;
+  if (!solid || front) {
+    side.n1 = media.ior();
+    side.n2 = m.ior;
+    if (solid) side.beyond.push(&m);
+  } else {
+    side.n1 = m.ior;
+    side.beyond.remove(&m);
+    side.n2 = side.beyond.ior();
+  }
+  return side;
+}
+
+Color Tracer::withBranches(Color result, const SurfaceInfo& s, const Vec3& n, const Vec3& v,
+                           const SecondaryRays& rays, int depth, const Color& weight,
+                           const MediaStack& media, const MediaStack& beyond, PathSeed& seed,
+                           TraceContext& context) const {
+  if (anyPositive(rays.transmitted) && !rays.straight) {
+    Color w = weight * rays.transmitted;
+    if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
+      ++context.stats.refracted;
+      result += rays.transmitted * trace(spawnRay(s, rays.refracted, settings_.epsilon), depth + 1,
+                                         w, beyond, seed, context);
+    }
+  }
+  if (anyPositive(rays.mirror)) {
+    Color w = weight * rays.mirror;
+    if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
+      ++context.stats.reflected;
+      result += rays.mirror * trace(spawnRay(s, reflect(-v, n), settings_.epsilon), depth + 1, w,
+                                    media, seed, context);
+    }
+  }
+  return result;
 }
 
 Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
@@ -276,7 +303,7 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
     WorldHit hit;
     ++stats.queries;
     if (!world_.intersectTransmissive(ray, hit)) break;
-    const WorldLeaf& leaf = *hit.leaf;
+    const WorldLeaf& leaf = hit.leaf();
     if (!leaf.transmissive) return Color(0.0f);
     t *= leaf.material->transmissive;
     if (anyAbsorbing_) {

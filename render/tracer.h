@@ -4,6 +4,7 @@
 // plus recursion limits (max-depth, min-weight), nested media and Beer–Lambert absorption.
 #pragma once
 
+#include "finish.h"
 #include "light_sample.h"
 #include "media_stack.h"
 #include "ray_stats.h"
@@ -64,6 +65,34 @@ class Tracer {
  private:
   Color trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed& seed,
               TraceContext& context) const;
+
+  // The parts of one step of trace(), in the order it takes them.
+  // The colour of a ray that hits nothing: the sky or background, through the medium the
+  // ray is in (absorbed over an infinite stretch) and the fog.
+  Color escaped(const Ray& ray, const MediaStack& media) const;
+  // The stretch of `ray` up to t: fog (added to sum, kept in throughput) and absorption
+  // (kept in throughput). `leaving`: the solid the ray was inside, if it is leaving one.
+  void travelled(const Ray& ray, double t, const Material* leaving, const MediaStack& media,
+                 Color& sum, Color& throughput) const;
+  // The normal shading uses at surface s of `leaf`, facing the viewer (direction v).
+  Vec3 shadingNormal(const WorldLeaf& leaf, const SurfaceInfo& s, bool front, const Vec3& v) const;
+  // The surface's own light: emission, ambient and the lights' direct light.
+  Color localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3& n, const Vec3& v,
+                   bool leaving, const MediaStack& media, PathSeed& seed,
+                   TraceContext& context) const;
+  // The indices of refraction on the viewer's side and beyond a surface, and the media
+  // beyond it (both indices 1 for a material that neither transmits nor splits by Fresnel).
+  struct Interface {
+    double n1 = 1.0, n2 = 1.0;
+    MediaStack beyond;
+  };
+  Interface interfaceAt(const Material& m, bool solid, bool front, const MediaStack& media) const;
+  // `result` plus the bent transmitted ray and the mirror ray, each traced one level
+  // deeper when its weight and the depth allow.
+  Color withBranches(Color result, const SurfaceInfo& s, const Vec3& n, const Vec3& v,
+                     const SecondaryRays& rays, int depth, const Color& weight,
+                     const MediaStack& media, const MediaStack& beyond, PathSeed& seed,
+                     TraceContext& context) const;
   // Σ over lights of A_shadow·A_dist·I_L·[k_d (N·L) + k_s (N·H)^n_s].
   Color directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
                     const Material& m, const MediaStack& media, PathSeed& seed,

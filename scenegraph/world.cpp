@@ -33,6 +33,40 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   options.linearSelected = kLinearTransmissive;
   options.sphereTestSlot = slotOf<SphereSpec>();
   aggregate_ = Aggregate(items, options);
+  occluderSkips_ = aggregate_.anyMasked(kShadowless);
+  opaqueSkips_ = aggregate_.anyMasked(kTransmits | kShadowless);
+}
+
+// The queries of the ray path are calls here rather than inline in the tracer: with one
+// call more between the tracer writing a ray and the search copying it whole, the copy
+// no longer stalls on the ray's stores (a profile of the showcase put 5 % of its time
+// there when they were inline; docs/performance-history.md, "The world split by job").
+bool World::intersect(const Ray& ray, Hit& hit) const { return aggregate_.closest(ray, hit); }
+
+bool World::intersect(const Ray& ray, WorldHit& hit) const {
+  hit.leaves_ = leaves_.data();
+  return aggregate_.closest(ray, hit.hit);
+}
+
+bool World::intersectTransmissive(const Ray& ray, Hit& hit) const {
+  return aggregate_.closestSelected(ray, hit);
+}
+
+bool World::intersectTransmissive(const Ray& ray, WorldHit& hit) const {
+  hit.leaves_ = leaves_.data();
+  return aggregate_.closestSelected(ray, hit.hit);
+}
+
+// The world's any-hit searches, each compiled here with its mask (Aggregate::anyHit);
+// whether the mask leaves anything out was decided when the world was built.
+World::ObjectId World::occluder(const Ray& ray, ObjectId first) const {
+  if (!occluderSkips_) return aggregate_.anyHit<0>(ray, first);
+  return aggregate_.anyHit<kShadowless>(ray, first);
+}
+
+World::ObjectId World::opaqueOccluder(const Ray& ray, ObjectId first) const {
+  if (!opaqueSkips_) return aggregate_.anyHit<0>(ray, first);
+  return aggregate_.anyHit<kTransmits | kShadowless>(ray, first);
 }
 
 }  // namespace lucent

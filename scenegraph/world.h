@@ -17,13 +17,21 @@ namespace lucent {
 
 // A hit as the tracer sees it: the leaf's Hit (its distance and payload) and the leaf,
 // with the material, medium and transmissive flag the world worked out when it was built.
-struct WorldHit {
+class WorldHit {
+ public:
   Hit hit;
-  const WorldLeaf* leaf = nullptr;
 
+  // The leaf hit (the one Hit::tag names). Only after a query that found a hit.
+  const WorldLeaf& leaf() const { return leaves_[hit.tag]; }
   double t() const { return hit.t; }
   // The geometry at the hit, for the ray it was found with.
-  SurfaceInfo surface(const Ray& ray) const { return leaf->instance->surface(ray, hit); }
+  SurfaceInfo surface(const Ray& ray) const { return leaf().instance->surface(ray, hit); }
+
+ private:
+  friend class World;
+  // The world's leaves, set by the query: the leaf is looked up when asked, so that the
+  // query itself is only the aggregate's search (a call that does no work after it).
+  const WorldLeaf* leaves_ = nullptr;
 };
 
 class World {
@@ -44,10 +52,8 @@ class World {
   const Material& material(const Hit& hit) const { return *leaf(hit).material; }
 
   // The closest hit: the geometry alone, or typed.
-  bool intersect(const Ray& ray, Hit& hit) const { return aggregate_.closest(ray, hit); }
-  bool intersect(const Ray& ray, WorldHit& hit) const {
-    return typed(aggregate_.closest(ray, hit.hit), hit);
-  }
+  bool intersect(const Ray& ray, Hit& hit) const;
+  bool intersect(const Ray& ray, WorldHit& hit) const;
   // Whether an object that casts shadows crosses the ray (objects of shadows="false"
   // nodes are not asked, here and in every shadow query below).
   bool occluded(const Ray& ray) const { return occluder(ray) != kNoObject; }
@@ -60,9 +66,7 @@ class World {
   // before all others (Aggregate::anyHit): a shadow cache passes the object that blocked
   // the previous ray towards the same light. occluder(ray, first) != kNoObject equals
   // occluded(ray) for every `first`.
-  ObjectId occluder(const Ray& ray, ObjectId first = kNoObject) const {
-    return aggregate_.anyHit(ray, kShadowless, first);
-  }
+  ObjectId occluder(const Ray& ray, ObjectId first = kNoObject) const;
   // The object an id names (an Instance or a CSG node), nullptr for kNoObject.
   const Shape* object(ObjectId id) const { return aggregate_.object(id); }
 
@@ -73,15 +77,9 @@ class World {
   // crosses. intersectTransmissive() is intersect() over the objects that may transmit
   // only, with the same tests and so the same hits to the last bit: a shadow ray that no
   // opaque object blocks walks these alone.
-  ObjectId opaqueOccluder(const Ray& ray, ObjectId first = kNoObject) const {
-    return aggregate_.anyHit(ray, kTransmits | kShadowless, first);
-  }
-  bool intersectTransmissive(const Ray& ray, Hit& hit) const {
-    return aggregate_.closestSelected(ray, hit);
-  }
-  bool intersectTransmissive(const Ray& ray, WorldHit& hit) const {
-    return typed(aggregate_.closestSelected(ray, hit.hit), hit);
-  }
+  ObjectId opaqueOccluder(const Ray& ray, ObjectId first = kNoObject) const;
+  bool intersectTransmissive(const Ray& ray, Hit& hit) const;
+  bool intersectTransmissive(const Ray& ray, WorldHit& hit) const;
   // How many top-level objects may transmit light.
   size_t transmissiveObjectCount() const { return aggregate_.selectedCount(); }
 
@@ -96,15 +94,12 @@ class World {
   // shadows); it casts no shadow (shadows="false").
   static constexpr Aggregate::Mask kTransmits = 1, kShadowless = 2;
 
-  bool typed(bool found, WorldHit& hit) const {
-    if (found) hit.leaf = &leaves_[hit.hit.tag];
-    return found;
-  }
-
   const Scene& scene_;
   std::vector<WorldObject> objects_;
   std::vector<WorldLeaf> leaves_;
   Aggregate aggregate_;
+  // Whether occluder() and opaqueOccluder() have objects to leave out.
+  bool occluderSkips_ = false, opaqueSkips_ = false;
 };
 
 }  // namespace lucent

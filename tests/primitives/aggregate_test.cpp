@@ -82,6 +82,21 @@ Hit bruteForce(const std::vector<Aggregate::Object>& objects, const Ray& ray, Ta
   return best;
 }
 
+// anyHit with the mask as the template argument it is.
+Aggregate::ObjectId anyHit(const Aggregate& a, const Ray& ray, Aggregate::Mask skip,
+                           Aggregate::ObjectId first) {
+  switch (skip) {
+    case 0:
+      return a.anyHit<0>(ray, first);
+    case 1:
+      return a.anyHit<1>(ray, first);
+    case 2:
+      return a.anyHit<2>(ray, first);
+    default:
+      return a.anyHit<3>(ray, first);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("Aggregate: closest hits over every object and over the selected ones, as brute force",
@@ -133,7 +148,7 @@ TEST_CASE("Aggregate: anyHit leaves out the masked objects and tests any first o
       for (const Aggregate::Object& o : objects.list)
         want = want || ((o.mask & skip) == 0 && o.shape->occluded(ray));
       for (Aggregate::ObjectId first : {Aggregate::kNoObject, anyId(rng)}) {
-        const Aggregate::ObjectId found = aggregate.anyHit(ray, skip, first);
+        const Aggregate::ObjectId found = anyHit(aggregate, ray, skip, first);
         REQUIRE((found != Aggregate::kNoObject) == want);
         if (!want) continue;
         const Shape* blocker = aggregate.object(found);
@@ -147,6 +162,15 @@ TEST_CASE("Aggregate: anyHit leaves out the masked objects and tests any first o
     }
   }
   CHECK(aggregate.object(Aggregate::kNoObject) == nullptr);
+  CHECK(aggregate.anyMasked(1));
+  CHECK(aggregate.anyMasked(3));
+  CHECK_FALSE(aggregate.anyMasked(4));
+  // A mask no object has leaves nothing out.
+  for (Ray ray : randomRays(rng, 2000, 10.0)) {
+    ray.tmax = uniform(rng, 0.01, 1.5);
+    REQUIRE((aggregate.anyHit<4>(ray) != Aggregate::kNoObject) ==
+            (aggregate.anyHit<0>(ray) != Aggregate::kNoObject));
+  }
   // Each mask leaves out objects that would otherwise block some rays.
   CHECK(blocked[0] > blocked[1]);
   CHECK(blocked[0] > blocked[2]);

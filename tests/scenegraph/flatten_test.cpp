@@ -132,12 +132,12 @@ TEST_CASE("World: a typed hit names the leaf the geometry hit", "[world][flatten
     ++hits;
     REQUIRE(typed.hit.shape == plain.shape);
     REQUIRE(typed.t() == plain.t);
-    REQUIRE(typed.leaf == &world.leaf(plain));
-    REQUIRE(typed.leaf->instance == plain.shape);
+    REQUIRE(&typed.leaf() == &world.leaf(plain));
+    REQUIRE(typed.leaf().instance == plain.shape);
     WorldHit glass;
     if (world.intersectTransmissive(ray, glass)) {
       ++clear;
-      REQUIRE(glass.leaf->instance == glass.hit.shape);
+      REQUIRE(glass.leaf().instance == glass.hit.shape);
     }
   }
   CHECK(hits > 2000);
