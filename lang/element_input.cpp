@@ -15,26 +15,31 @@ size_t ElementInput::choice(const char* attr, size_t def,
   return r_.choice(attr, def, table);
 }
 
-std::optional<std::vector<double>> ElementInput::numbers(const char* attr) {
-  auto t = r_.text(attr);
+namespace {
+
+// The list in attribute `attr`, read by `parse` (parseNumberList, parseIntegerList); a
+// located error if it is not one.
+template <class Parse>
+auto readList(ElementReader& r, const char* attr, Parse parse)
+    -> std::optional<std::decay_t<decltype(*parse(std::string()))>> {
+  auto t = r.text(attr);
   if (!t) return std::nullopt;
-  auto list = parseNumberList(*t);
+  auto list = parse(*t);
   if (!list) {
-    r_.attrError(attr, list.error);
+    r.attrError(attr, list.error);
     return std::nullopt;
   }
   return *list;
 }
 
+}  // namespace
+
+std::optional<std::vector<double>> ElementInput::numbers(const char* attr) {
+  return readList(r_, attr, [](const std::string& t) { return parseNumberList(t); });
+}
+
 std::optional<std::vector<long long>> ElementInput::integers(const char* attr) {
-  auto t = r_.text(attr);
-  if (!t) return std::nullopt;
-  auto list = parseIntegerList(*t);
-  if (!list) {
-    r_.attrError(attr, list.error);
-    return std::nullopt;
-  }
-  return *list;
+  return readList(r_, attr, [](const std::string& t) { return parseIntegerList(t); });
 }
 
 std::optional<FunctionInput> ElementInput::function(const char* attr,
