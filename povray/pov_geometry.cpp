@@ -14,19 +14,6 @@ namespace lucent {
 
 namespace {
 
-const char* csgKeyword(NodeKind k) {
-  switch (k) {
-    case NodeKind::Union:
-      return "union";
-    case NodeKind::Merge:
-      return "merge";
-    case NodeKind::Intersection:
-      return "intersection";
-    default:
-      return "difference";
-  }
-}
-
 // A direction unlikely to run along a mesh's edges or faces, for POV-Ray's inside test of
 // closed meshes (a ray parity count).
 const Vec3 kInsideVector(0.2672612419124244, 0.5345224838248488, 0.8017837257372732);
@@ -127,7 +114,8 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
       }
       warnCoincidentSurfaces(node, issues_);
       const bool inv = takeInverse();
-      out.open(csgKeyword(node.kind), "<" + node.element + "> " + node.loc.str());
+      // POV-Ray's CSG keywords are Lucent's element names.
+      out.open(nodeKindName(node.kind), "<" + node.element + "> " + node.loc.str());
       const bool markHere = solid && shadowless_ && !inWrittenSolid_;
       if (solid) inWrittenSolid_ = true;
       // A union keeps every operand's surfaces, each its own object to POV-Ray as to
