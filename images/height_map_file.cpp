@@ -1,8 +1,7 @@
 // Reading a height field's image (height_map_file.h says what POV-Ray does and why).
 #include "height_map_file.h"
 
-#include "images/address_sanitizer.h"
-#include "images/image_plugin.h"
+#include "images/image_reading.h"
 
 #include <fmt/format.h>
 
@@ -12,10 +11,6 @@
 #include <cstdint>
 #include <fstream>
 #include <vector>
-
-#if defined(LUCENT_ASAN)
-#include <sanitizer/lsan_interface.h>
-#endif
 
 namespace lucent {
 
@@ -99,16 +94,7 @@ std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
   const PngFacts pngFacts = refusePaletteFiles(path);
   refuseBadPnmMaximum(path);
   std::string error;
-  std::unique_ptr<ImageReader> in;
-  {
-#if defined(LUCENT_ASAN)
-    // OpenImageIO 2.4's PNG reader leaks one string on a damaged or truncated file (libpng
-    // longjmps past its destructor: app/image_output.cpp, writeImageFile), and damaged files
-    // are what the bad-input corpus feeds here: LeakSanitizer ignores what reading allocates.
-    __lsan::ScopedDisabler ignoreLibraryLeak;
-#endif
-    in = imagePlugin().openFile(path, error);
-  }
+  std::unique_ptr<ImageReader> in = openImageReader(path, error);
   if (!in) throw HeightMapError(error.empty() ? std::string("not an image") : error);
   const ImageHeader& h = in->header();
   if (h.width <= 0 || h.height <= 0 || h.channels <= 0)
@@ -125,12 +111,7 @@ std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
     throw HeightMapError(
         "only 8- or 16-bit integer images are read as heights (not floating point)");
   std::vector<float> px(static_cast<size_t>(h.width) * h.height * h.channels);
-  {
-#if defined(LUCENT_ASAN)
-    __lsan::ScopedDisabler ignoreLibraryLeak;  // as above, for damaged pixel data
-#endif
-    error = in->readPixels(px.data());
-  }
+  error = readImagePixels(*in, px.data());
   if (!error.empty()) throw HeightMapError(error);
 
   auto map = std::make_shared<HeightMap>();

@@ -1,7 +1,6 @@
 #include "image_read.h"
 
-#include "images/address_sanitizer.h"
-#include "images/image_plugin.h"
+#include "images/image_reading.h"
 #include "memory/system_memory.h"
 #include "scenegraph/render_limits.h"
 
@@ -11,10 +10,6 @@
 #include <memory>
 #include <vector>
 
-#if defined(LUCENT_ASAN)
-#include <sanitizer/lsan_interface.h>
-#endif
-
 namespace lucent {
 
 namespace {
@@ -22,15 +17,7 @@ namespace {
 // Opens the file and refuses, from its header alone, what reading it would refuse.
 std::unique_ptr<ImageReader> openCheckedImage(const std::string& path) {
   std::string error;
-  std::unique_ptr<ImageReader> in;
-  {
-#if defined(LUCENT_ASAN)
-    // A damaged PNG texture makes OpenImageIO 2.4 leak the same string as a truncated
-    // output does (app/image_output.cpp): LeakSanitizer ignores what opening allocates.
-    __lsan::ScopedDisabler ignoreLibraryLeak;
-#endif
-    in = imagePlugin().openFile(path, error);
-  }
+  std::unique_ptr<ImageReader> in = openImageReader(path, error);
   if (!in) throw ImageIOError(fmt::format("cannot read '{}': {}", path, error));
   const ImageHeader& spec = in->header();
   const int channels = spec.channels;
@@ -64,12 +51,7 @@ Image readImageFile(const std::string& path, PixelDecoding decoding) {
   const int channels = spec.channels;
   std::string error;
   std::vector<float> data(static_cast<size_t>(spec.width) * spec.height * channels);
-  {
-#if defined(LUCENT_ASAN)
-    __lsan::ScopedDisabler ignoreLibraryLeak;  // as in openCheckedImage, for damaged pixel data
-#endif
-    error = in->readPixels(data.data());
-  }
+  error = readImagePixels(*in, data.data());
   if (!error.empty()) throw ImageIOError(fmt::format("cannot read '{}': {}", path, error));
 
   // Integer files are sRGB-encoded unless they say otherwise.
