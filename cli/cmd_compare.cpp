@@ -204,8 +204,8 @@ void renderLucent(const Scene& scene, const Camera& camera, const CompareOptions
 // POV-Ray, in the folder of its scene so that relative file names resolve as its author
 // meant. Returns the image it wrote.
 fs::path renderPovray(const std::string& povray, const PovScene& pov,
-                      const RenderSettings& settings, bool corners, const CompareOptions& options,
-                      const fs::path& dir, CompareReport& report) {
+                      const RenderSettings& settings, double clock, bool corners,
+                      const CompareOptions& options, const fs::path& dir, CompareReport& report) {
   PovrayRender job;
   job.input = pov.path.string();
   job.output = fs::absolute(dir / report.povrayLinear).string();
@@ -217,6 +217,7 @@ fs::path renderPovray(const std::string& povray, const PovScene& pov,
   job.cornerDepth = settings.adaptiveDepth;
   job.threads = options.threads.value_or(0);
   job.fileGamma = pov.fileGamma;
+  job.clock = clock;
   std::vector<std::string> args = povrayArguments(job);
   report.povrayCommand = commandLine(povray, args);
   const fs::path log = fs::absolute(dir / report.povrayLog);
@@ -296,7 +297,7 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
                         static_cast<size_t>(*options.threads));
   renderLucent(scene, *loaded.camera, options, dir, report);
   const fs::path povrayLinear =
-      renderPovray(*povray, *pov, settings, corners, options, dir, report);
+      renderPovray(*povray, *pov, settings, scene.clock, corners, options, dir, report);
   writeComparison(dir, povrayLinear, report);
   printMetrics(report, dir);
   return kOk;

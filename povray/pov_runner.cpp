@@ -72,6 +72,8 @@ std::vector<std::string> povrayArguments(const PovrayRender& r) {
     args.insert(args.end(), {"+A0.0", "-J", "+AM1", fmt::format("+R{}", grid)});
   }
   if (r.threads > 0) args.push_back(fmt::format("+WT{}", r.threads));
+  // The shortest text that reads back as the same double.
+  if (r.clock != 0.0) args.push_back(fmt::format("+K{}", r.clock));
   return args;
 }
 

@@ -27,10 +27,13 @@ struct PovrayRender {
   // File_Gamma: 1.0 writes linear values; a scene with another assumed_gamma needs that
   // gamma here to write its working values (pov_gamma.h).
   std::string fileGamma = "1.0";
+  // POV-Ray's clock (+K): the clock of the frame compared, for a hand-written scene that
+  // reads `clock`. Left out of the command when 0 (POV-Ray's own default).
+  double clock = 0.0;
 };
 
 // povray +I.. +O.. +W +H -D -V -GS -GR +FN16 File_Gamma=G -A (or +A0.0 -J +AM1 +Rn, or for
-// corners +AM2 +At -J +Rd):
+// corners +AM2 +At -J +Rd), then +WTn and +Kc when asked:
 // no preview window (Debian's povray.ini turns it on), warnings and errors kept, statistics
 // and progress dropped, 16-bit PNG holding linear values (G = 1.0, the default).
 std::vector<std::string> povrayArguments(const PovrayRender& render);

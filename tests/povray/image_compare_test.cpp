@@ -113,6 +113,13 @@ TEST_CASE("povray runs without display, 16-bit linear, and without antialiasing 
   std::vector<std::string> args = povrayArguments(r);
   CHECK(std::vector<std::string>(args.end() - 5, args.end()) ==
         std::vector<std::string>{"+A0.0", "-J", "+AM1", "+R3", "+WT2"});
+  // The clock of the frame compared, in its shortest exact text; none at POV-Ray's 0.
+  r.clock = 0.1;
+  CHECK(povrayArguments(r).back() == "+K0.1");
+  r.clock = 2.0 / 3.0;
+  CHECK(std::stod(povrayArguments(r).back().substr(2)) == 2.0 / 3.0);
+  r.clock = 0.0;
+  CHECK(povrayArguments(r).back() == "+WT2");
 }
 
 TEST_CASE("corner sampling runs POV-Ray's method 2 without jitter, at the same threshold and depth",
