@@ -1,5 +1,6 @@
 // <lathe points="x y ..." spline="linear"/>: a curve in the (x, y) half-plane turned about
 // the y axis, POV-Ray's lathe with the same points (primitives/lathe.h).
+#include "profile_points.h"
 #include "scenegraph/shape_type.h"
 
 #include "primitives/lathe.h"
@@ -45,17 +46,9 @@ ShapeEntry<LatheSpec> shapeEntry<LatheSpec>() {
   e.finish = [](LatheSpec& s, AttributeInput& in) {
     s.spline = static_cast<LatheSpline>(in.choice("spline", 0, kSplineNames));
     if (in.failed()) return;
-    if (!in.has("points")) {
-      in.error("<lathe> needs the attribute 'points' (x y pairs)");
-      return;
-    }
-    auto v = in.numbers("points");
+    auto v = readProfilePairs(in, "lathe");
     if (!v) return;
-    if (v->size() % 2 != 0) {
-      in.attrError("points", fmt::format("needs x y pairs, but has {} numbers", v->size()));
-      return;
-    }
-    const size_t n = v->size() / 2;
+    const size_t n = v->size();
     const size_t want = static_cast<size_t>(Lathe::minPoints(s.spline));
     const char* name = kSplineNames[static_cast<size_t>(s.spline)].data();
     if (n < want) {
@@ -69,15 +62,8 @@ ShapeEntry<LatheSpec> shapeEntry<LatheSpec>() {
     }
     bool extent = false;
     for (size_t i = 0; i < n; ++i) {
-      const Vec2 p((*v)[2 * i], (*v)[2 * i + 1]);
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
-        in.attrError("points", "must be finite numbers");
-        return;
-      }
-      if (p.x < 0.0) {
-        in.attrError("points", fmt::format("point {} has x = {}: x must be >= 0", i + 1, p.x));
-        return;
-      }
+      const Vec2 p = (*v)[i];
+      if (!profilePointValid(in, p, i)) return;
       if (i > 0 && p != s.points.back()) extent = true;
       s.points.push_back(p);
     }

@@ -2,6 +2,7 @@
 // its points checked by POV-Ray's rules: at least 4, x >= 0, the heights of the second to
 // the next-to-last point increasing, each control point's height apart from its
 // neighbour's neighbour's (the slopes divide by those differences).
+#include "profile_points.h"
 #include "scenegraph/shape_type.h"
 
 #include "primitives/sor.h"
@@ -18,17 +19,9 @@ namespace {
 constexpr double kPovEpsilon = 1e-10;
 
 void readSor(SorSpec& s, AttributeInput& in) {
-  if (!in.has("points")) {
-    in.error("<sor> needs the attribute 'points' (x y pairs)");
-    return;
-  }
-  auto v = in.numbers("points");
+  auto v = readProfilePairs(in, "sor");
   if (!v) return;
-  if (v->size() % 2 != 0) {
-    in.attrError("points", fmt::format("needs x y pairs, but has {} numbers", v->size()));
-    return;
-  }
-  const size_t n = v->size() / 2;
+  const size_t n = v->size();
   if (n < 4) {
     in.attrError(
         "points",
@@ -37,15 +30,8 @@ void readSor(SorSpec& s, AttributeInput& in) {
   }
   s.points.clear();
   for (size_t i = 0; i < n; ++i) {
-    const Vec2 p((*v)[2 * i], (*v)[2 * i + 1]);
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
-      in.attrError("points", "must be finite numbers");
-      return;
-    }
-    if (p.x < 0.0) {
-      in.attrError("points", fmt::format("point {} has x = {}: x must be >= 0", i + 1, p.x));
-      return;
-    }
+    const Vec2 p = (*v)[i];
+    if (!profilePointValid(in, p, i)) return;
     s.points.push_back(p);
   }
   const auto& P = s.points;
