@@ -1,4 +1,5 @@
 #include "lenslet.h"
+#include "pinhole.h"
 
 #include <fmt/core.h>
 
@@ -27,25 +28,10 @@ LensletProjection::LensletProjection(const CameraFrame& frame, const Camera& cam
         fmt::format("a lenslet camera needs 0 < fov < 180 degrees (got {})", camera.fov));
   cellWidth_ = static_cast<double>(width) / nx_;
   cellHeight_ = static_cast<double>(height) / ny_;
-  // Each cell is framed like a pinhole image of the cell's size (square pixels), as
-  // imagePlaneHalfExtents() frames a whole image, but with fractional cell sizes.
-  const double half = std::tan(radians(camera.fov) * 0.5);
-  switch (camera.fovAxis) {
-    case FovAxis::Horizontal:
-      halfWidth_ = half;
-      halfHeight_ = half * cellHeight_ / cellWidth_;
-      break;
-    case FovAxis::Vertical:
-      halfHeight_ = half;
-      halfWidth_ = half * cellWidth_ / cellHeight_;
-      break;
-    case FovAxis::Diagonal: {
-      double diagonal = std::hypot(cellWidth_, cellHeight_);
-      halfWidth_ = half * cellWidth_ / diagonal;
-      halfHeight_ = half * cellHeight_ / diagonal;
-      break;
-    }
-  }
+  // Each cell is framed like a pinhole image of the cell's size (square pixels), with
+  // fractional cell sizes.
+  imagePlaneHalfExtents(camera.fov, camera.fovAxis, cellWidth_, cellHeight_, halfWidth_,
+                        halfHeight_);
 }
 
 Vec3 LensletProjection::lensCentre(int i, int j) const {

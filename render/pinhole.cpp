@@ -4,10 +4,10 @@
 
 namespace lucent {
 
-void imagePlaneHalfExtents(double fovDegrees, FovAxis axis, int width, int height,
+void imagePlaneHalfExtents(double fovDegrees, FovAxis axis, double width, double height,
                            double& halfWidth, double& halfHeight) {
   double half = std::tan(radians(fovDegrees) * 0.5);
-  double w = width, h = height;
+  const double w = width, h = height;
   switch (axis) {
     case FovAxis::Horizontal:
       halfWidth = half;

@@ -22,8 +22,9 @@ class PinholeProjection final : public Projection {
 };
 
 // Half extents at distance 1 of an image of width x height whose `fov` (degrees) spans
-// the given axis. Shared by the projections that have a rectilinear image plane.
-void imagePlaneHalfExtents(double fovDegrees, FovAxis axis, int width, int height,
+// the given axis. Shared by the projections that have a rectilinear image plane (a
+// lenslet camera's cells, of fractional sizes, too).
+void imagePlaneHalfExtents(double fovDegrees, FovAxis axis, double width, double height,
                            double& halfWidth, double& halfHeight);
 
 }  // namespace lucent
