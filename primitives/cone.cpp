@@ -1,6 +1,5 @@
 #include "cone.h"
 
-#include "open_or_solid.h"
 #include "quadratic.h"
 
 #include <algorithm>
@@ -154,20 +153,6 @@ int Cone::sideRoots(const Ray& l, SurfaceRoot roots[2]) const {
     if (0.0 <= z && z <= height_) roots[n++] = {q.tShift + ss[i], 0, 0.0, 0.0};
   }
   return n;
-}
-
-bool Cone::intersect(const Ray& ray, Hit& hit) const {
-  return intersectOpenOrSolid(
-      open_, frame_.rayToLocal(ray),
-      [this](const Ray& l, SurfaceRoot* r) { return sideRoots(l, r); },
-      [this](const Ray& l, Span& s) { return solidSpan(l, s); }, ray, this, hit);
-}
-
-void Cone::crossings(const Ray& ray, CrossingList& out) const {
-  crossingsOpenOrSolid(
-      open_, frame_.rayToLocal(ray),
-      [this](const Ray& l, SurfaceRoot* r) { return sideRoots(l, r); },
-      [this](const Ray& l, Span& s) { return solidSpan(l, s); }, ray, this, out);
 }
 
 bool Cone::inside(const Vec3& p) const {

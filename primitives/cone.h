@@ -10,25 +10,23 @@
 #pragma once
 
 #include "axis_frame.h"
-#include "shape.h"
+#include "open_or_solid.h"
 #include "span.h"
 
 namespace lucent {
 
-class Cone final : public Shape {
+class Cone final : public OpenOrSolidShape<Cone> {
  public:
   // Throws std::invalid_argument when base == cap, a radius is negative or both are 0.
   Cone(const Vec3& base, double baseRadius, const Vec3& cap, double capRadius, bool open);
 
   const char* kind() const override { return "cone"; }
   AABB bounds() const override;
-  bool isSolid() const override { return !open_; }
-  bool intersect(const Ray& ray, Hit& hit) const override;
-  void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
 
  private:
+  friend class OpenOrSolidShape<Cone>;  // intersect() and crossings()
   // The side's quadratic along the line, in a parameter s shifted by tShift (t = tShift + s);
   // false when the line misses the cone's bounding sphere.
   struct Quadratic {

@@ -1,6 +1,5 @@
 #include "cylinder.h"
 
-#include "open_or_solid.h"
 #include "quadratic.h"
 
 #include <stdexcept>
@@ -77,20 +76,6 @@ int Cylinder::sideRoots(const Ray& l, SurfaceRoot roots[2]) const {
     if (0.0 <= z && z <= height_) roots[n++] = {t, 0, 0.0, 0.0};
   }
   return n;
-}
-
-bool Cylinder::intersect(const Ray& ray, Hit& hit) const {
-  return intersectOpenOrSolid(
-      open_, frame_.rayToLocal(ray),
-      [this](const Ray& l, SurfaceRoot* r) { return sideRoots(l, r); },
-      [this](const Ray& l, Span& s) { return solidSpan(l, s); }, ray, this, hit);
-}
-
-void Cylinder::crossings(const Ray& ray, CrossingList& out) const {
-  crossingsOpenOrSolid(
-      open_, frame_.rayToLocal(ray),
-      [this](const Ray& l, SurfaceRoot* r) { return sideRoots(l, r); },
-      [this](const Ray& l, Span& s) { return solidSpan(l, s); }, ray, this, out);
 }
 
 bool Cylinder::inside(const Vec3& p) const {

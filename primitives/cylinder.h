@@ -8,25 +8,23 @@
 #pragma once
 
 #include "axis_frame.h"
-#include "shape.h"
+#include "open_or_solid.h"
 #include "span.h"
 
 namespace lucent {
 
-class Cylinder final : public Shape {
+class Cylinder final : public OpenOrSolidShape<Cylinder> {
  public:
   // Throws std::invalid_argument when base == cap or the radius is not positive.
   Cylinder(const Vec3& base, const Vec3& cap, double radius, bool open);
 
   const char* kind() const override { return "cylinder"; }
   AABB bounds() const override;
-  bool isSolid() const override { return !open_; }
-  bool intersect(const Ray& ray, Hit& hit) const override;
-  void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
 
  private:
+  friend class OpenOrSolidShape<Cylinder>;                      // intersect() and crossings()
   bool solidSpan(const Ray& local, Span& out) const;            // closed cylinder
   int sideRoots(const Ray& local, SurfaceRoot roots[2]) const;  // open cylinder
 

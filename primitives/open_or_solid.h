@@ -1,36 +1,49 @@
-// The closest hit and the crossings of a shape that is either an open surface (at most two
-// roots, `sideRoots`) or a convex solid (one span, `solidSpan`), both found on the ray
-// carried into the shape's frame (`local`): what the cylinder and the cone share.
+// The Shape base of a shape that is either an open surface (at most two roots,
+// `sideRoots`) or a convex solid (one span, `solidSpan`), both found on the ray carried into
+// the shape's frame: what the cylinder and the cone share. Self gives this base (its
+// friend) `open_`, `frame_` (an AxisFrame) and
+//   int sideRoots(const Ray& local, SurfaceRoot roots[2]) const;  // the open surface
+//   bool solidSpan(const Ray& local, Span& out) const;            // the solid
 #pragma once
 
+#include "shape.h"
 #include "span.h"
 
 namespace lucent {
 
-template <class SideRoots, class SolidSpan>
-bool intersectOpenOrSolid(bool open, const Ray& local, SideRoots sideRoots, SolidSpan solidSpan,
-                          const Ray& ray, const Shape* shape, Hit& hit) {
-  if (open) {
-    SurfaceRoot roots[2];
-    int n = sideRoots(local, roots);
-    return intersectRoots(roots, n, ray, shape, hit);
-  }
-  Span s;
-  return solidSpan(local, s) && intersectSpan(s, ray, shape, hit);
-}
+template <class Self>
+class OpenOrSolidShape : public Shape {
+ public:
+  bool isSolid() const override { return !self().open_; }
 
-template <class SideRoots, class SolidSpan>
-void crossingsOpenOrSolid(bool open, const Ray& local, SideRoots sideRoots, SolidSpan solidSpan,
-                          const Ray& ray, const Shape* shape, CrossingList& out) {
-  if (open) {
-    SurfaceRoot roots[2];
-    int n = sideRoots(local, roots);
-    crossingsOfRoots(roots, n, ray, shape, out);
-    return;
+  bool intersect(const Ray& ray, Hit& hit) const override {
+    const Self& s = self();
+    const Ray local = s.frame_.rayToLocal(ray);
+    if (s.open_) {
+      SurfaceRoot roots[2];
+      const int n = s.sideRoots(local, roots);
+      return intersectRoots(roots, n, ray, this, hit);
+    }
+    Span span;
+    return s.solidSpan(local, span) && intersectSpan(span, ray, this, hit);
   }
-  Span s;
-  if (!solidSpan(local, s)) s = Span();
-  crossingsOfSpan(s, ray, shape, out);
-}
+
+  void crossings(const Ray& ray, CrossingList& out) const override {
+    const Self& s = self();
+    const Ray local = s.frame_.rayToLocal(ray);
+    if (s.open_) {
+      SurfaceRoot roots[2];
+      const int n = s.sideRoots(local, roots);
+      crossingsOfRoots(roots, n, ray, this, out);
+      return;
+    }
+    Span span;
+    if (!s.solidSpan(local, span)) span = Span();
+    crossingsOfSpan(span, ray, this, out);
+  }
+
+ private:
+  const Self& self() const { return static_cast<const Self&>(*this); }
+};
 
 }  // namespace lucent
