@@ -1,0 +1,257 @@
+#include "pov_camera.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lucent::sdl {
+
+namespace {
+
+// POV-Ray's own camera angle when none is written (its camera's constructor), which only
+// the fisheye uses without an `angle`.
+constexpr double kDefaultAngle = 90.0;
+
+double degreesOf(double radiansValue) { return radiansValue * 180.0 / kPi; }
+
+bool nearlyEqual(double a, double b, double tolerance = 1e-9) {
+  return std::abs(a - b) <= tolerance * std::max(std::abs(a), std::abs(b));
+}
+
+}  // namespace
+
+PovCameraVectors povCameraVectors(const PovCamera& c) {
+  PovCameraVectors v{c.location, c.direction, c.right, c.up};
+  const bool framed = c.type == PovCameraType::Perspective || c.type == PovCameraType::Orthographic;
+  // angle: |direction| from |right|, so that the angle spans `right`.
+  if (c.angle && framed && *c.angle > 0.0 && *c.angle < 180.0)
+    v.direction = glm::normalize(v.direction) *
+                  (glm::length(v.right) / std::tan(radians(*c.angle) * 0.5) / 2.0);
+  // look_at: the vectors turned towards the point, each keeping its length; right keeps
+  // the handedness it had with up and direction (a `right -x` camera stays mirrored).
+  if (c.lookAt) {
+    const double directionLength = glm::length(v.direction), upLength = glm::length(v.up),
+                 rightLength = glm::length(v.right);
+    const double handedness = glm::dot(glm::cross(v.up, v.direction), v.right);
+    const Vec3 d = glm::normalize(*c.lookAt - v.location);
+    Vec3 r = glm::cross(c.sky, d);
+    // A sky along the view leaves right as it was (POV-Ray's own escape).
+    if (std::abs(r.x) < 1e-10 && std::abs(r.y) < 1e-10 && std::abs(r.z) < 1e-10) r = v.right;
+    r = glm::normalize(r);
+    v.up = glm::cross(d, r) * upLength;
+    v.direction = d * directionLength;
+    v.right = r * (handedness > 0.0 ? rightLength : -rightLength);
+  }
+  // An orthographic camera without up and right (or with angle) frames what a perspective
+  // one would at the look_at distance (the default look_at <0,0,1> when none is written).
+  if (c.type == PovCameraType::Orthographic && ((!c.upGiven && !c.rightGiven) || c.angle)) {
+    const double k1 = glm::length(c.lookAt.value_or(Vec3(0.0, 0.0, 1.0)) - v.location);
+    const double k2 = glm::length(v.direction);
+    if (k1 > 1e-10 && k2 > 1e-10) {
+      v.right *= k1 / k2;
+      v.up *= k1 / k2;
+    }
+  }
+  v.location = c.transform.point(v.location);
+  v.direction = c.transform.vector(v.direction);
+  v.right = c.transform.vector(v.right);
+  v.up = c.transform.vector(v.up);
+  return v;
+}
+
+bool povPrimaryRay(const PovCamera& c, const PovCameraVectors& v, int i, int j, int width,
+                   int height, Vec3& origin, Vec3& direction) {
+  const double x = i + 0.5, y = j + 0.5;
+  origin = v.location;
+  switch (c.type) {
+    case PovCameraType::Perspective: {
+      const double x0 = x / width - 0.5, y0 = 0.5 - y / height;
+      direction = glm::normalize(v.direction + x0 * v.right + y0 * v.up);
+      return true;
+    }
+    case PovCameraType::Orthographic: {
+      const double x0 = x / width - 0.5, y0 = 0.5 - y / height;
+      origin = v.location + x0 * v.right + y0 * v.up;
+      direction = glm::normalize(v.direction);
+      return true;
+    }
+    case PovCameraType::Fisheye: {
+      const double x0 = 2.0 * (x / width - 0.5) * glm::length(v.right);
+      const double y0 = 2.0 * (0.5 - y / height) * glm::length(v.up);
+      const double rad = std::sqrt(x0 * x0 + y0 * y0);
+      if (rad > 1.0) return false;
+      const double phi = rad == 0.0 ? 0.0 : std::atan2(y0, x0);
+      const double theta = rad * radians(c.angle.value_or(kDefaultAngle)) * 0.5;
+      direction = glm::normalize(std::cos(phi) * std::sin(theta) * glm::normalize(v.right) +
+                                 std::sin(phi) * std::sin(theta) * glm::normalize(v.up) +
+                                 std::cos(theta) * glm::normalize(v.direction));
+      return true;
+    }
+    case PovCameraType::Spherical: {
+      const double h = c.angle.value_or(360.0), vAngle = c.verticalAngle.value_or(h * 0.5);
+      const double lon = (x / width - 0.5) * radians(h), lat = (0.5 - y / height) * radians(vAngle);
+      // The view direction turned about right by -lat, then about up by lon (the
+      // right-hand rule of the numbers, as POV-Ray's axis rotation).
+      auto turn = [](const Vec3& p, const Vec3& axis, double a) {
+        const Vec3 k = glm::normalize(axis);
+        return p * std::cos(a) + glm::cross(k, p) * std::sin(a) +
+               k * glm::dot(k, p) * (1.0 - std::cos(a));
+      };
+      direction = glm::normalize(turn(turn(glm::normalize(v.direction), v.right, -lat), v.up, lon));
+      return true;
+    }
+    case PovCameraType::UltraWideAngle:
+    case PovCameraType::Omnimax:
+    case PovCameraType::Panoramic:
+    case PovCameraType::Cylinder:
+      break;
+  }
+  return false;
+}
+
+namespace {
+
+const char* povTypeName(PovCameraType t) {
+  switch (t) {
+    case PovCameraType::Perspective:
+      return "perspective";
+    case PovCameraType::Orthographic:
+      return "orthographic";
+    case PovCameraType::Fisheye:
+      return "fisheye";
+    case PovCameraType::UltraWideAngle:
+      return "ultra_wide_angle";
+    case PovCameraType::Omnimax:
+      return "omnimax";
+    case PovCameraType::Panoramic:
+      return "panoramic";
+    case PovCameraType::Cylinder:
+      return "cylinder";
+    case PovCameraType::Spherical:
+      return "spherical";
+  }
+  return "?";
+}
+
+// The frame in Lucent's space: position, the unit view direction and up. Lucent builds an
+// orthonormal, right-handed frame from them (right = forward x up); what of POV-Ray's
+// vectors that cannot hold is said.
+void placeFrame(const PovCameraVectors& v, Camera& camera, std::vector<std::string>& notes) {
+  const Vec3 location = lucentFromPov(v.location), direction = lucentFromPov(v.direction),
+             up = lucentFromPov(v.up), right = lucentFromPov(v.right);
+  camera.position = location;
+  camera.lookAt = location + glm::normalize(direction);
+  camera.up = up;
+  const Vec3 d = glm::normalize(direction), u = glm::normalize(up), r = glm::normalize(right);
+  if (std::abs(glm::dot(d, u)) > 1e-9 || std::abs(glm::dot(d, r)) > 1e-9 ||
+      std::abs(glm::dot(u, r)) > 1e-9)
+    notes.push_back(
+        "the camera's direction, up and right are not perpendicular (POV-Ray: \"Camera vectors "
+        "are not perpendicular\"); Lucent's camera frame is orthogonal: the image is skewed "
+        "differently");
+  if (glm::dot(glm::cross(d, u), r) < 0.0)
+    notes.push_back(
+        "the camera's right is on the other side of up and direction than POV-Ray's usual "
+        "left-handed frame (a `right -x` camera): Lucent has no mirrored camera, and renders "
+        "POV-Ray's image mirrored (a spherical camera: upside down)");
+}
+
+// Square pixels: POV-Ray's image plane is |right| x |up|, Lucent's width x height.
+void checkPixels(const PovCameraVectors& v, int width, int height,
+                 std::vector<std::string>& notes) {
+  const double povAspect = glm::length(v.right) / glm::length(v.up);
+  const double imageAspect = static_cast<double>(width) / height;
+  if (!nearlyEqual(povAspect, imageAspect, 1e-6))
+    notes.push_back(fmt::format(
+        "POV-Ray's pixels are not square: |right|/|up| = {:.6g} on a {}x{} image ({:.6g}), "
+        "so POV-Ray's image spans {:+.3g} % of the height more than square pixels would; "
+        "Lucent's pixels are square (the horizontal field of view is POV-Ray's)",
+        povAspect, width, height, imageAspect, 100.0 * (imageAspect / povAspect - 1.0)));
+}
+
+}  // namespace
+
+CameraImport importCamera(const PovCamera& pov, int width, int height) {
+  CameraImport out;
+  Camera& camera = out.camera;
+  camera.loc = pov.loc;
+  const bool framed =
+      pov.type == PovCameraType::Perspective || pov.type == PovCameraType::Orthographic;
+  if (framed && pov.angle && *pov.angle >= 180.0) {
+    out.error = fmt::format("camera angle {} must be below 180 degrees", *pov.angle);
+    return out;
+  }
+  const PovCameraVectors v = povCameraVectors(pov);
+  switch (pov.type) {
+    case PovCameraType::Perspective:
+      camera.type = CameraType::Pinhole;
+      camera.fovAxis = FovAxis::Horizontal;
+      camera.fov =
+          degreesOf(2.0 * std::atan(0.5 * glm::length(v.right) / glm::length(v.direction)));
+      placeFrame(v, camera, out.differences);
+      checkPixels(v, width, height, out.differences);
+      return out;
+    case PovCameraType::Orthographic:
+      camera.type = CameraType::Orthographic;
+      camera.width = glm::length(v.right);
+      placeFrame(v, camera, out.differences);
+      checkPixels(v, width, height, out.differences);
+      return out;
+    case PovCameraType::Fisheye: {
+      // POV-Ray's image circle has radius width/(2|right|) pixels across and
+      // height/(2|up|) up; the angle spans its diameter, equidistantly. Lucent's circle
+      // spans the width, the height or the diagonal: the one that is POV-Ray's circle when
+      // there is one, else the width with the angle scaled to keep POV-Ray's scale.
+      camera.type = CameraType::Fisheye;
+      camera.mapping = FisheyeMapping::Equidistant;
+      const double angle = pov.angle.value_or(kDefaultAngle);
+      const double radius = 0.5 * width / glm::length(v.right);  // pixels
+      const double w = width, h = height, diagonal = std::hypot(w, h);
+      if (nearlyEqual(radius, 0.5 * h, 1e-6)) {
+        camera.fovAxis = FovAxis::Vertical;
+        camera.fov = angle * 0.5 * h / radius;
+      } else if (nearlyEqual(radius, 0.5 * diagonal, 1e-6)) {
+        camera.fovAxis = FovAxis::Diagonal;
+        camera.fov = angle * 0.5 * diagonal / radius;
+      } else {
+        camera.fovAxis = FovAxis::Horizontal;
+        camera.fov = angle * 0.5 * w / radius;
+        if (!nearlyEqual(radius, 0.5 * w, 1e-6))
+          out.differences.push_back(fmt::format(
+              "fisheye: POV-Ray's image circle ({:.6g} pixels in radius) is neither the "
+              "image's width, height nor diagonal: POV-Ray leaves the pixels outside it black, "
+              "Lucent traces them up to the image's width",
+              radius));
+      }
+      if (!(camera.fov <= 360.0)) {
+        out.error = fmt::format(
+            "fisheye: the image spans {:.6g} degrees across, beyond the 360 Lucent's fisheye "
+            "camera can show",
+            camera.fov);
+        return out;
+      }
+      placeFrame(v, camera, out.differences);
+      checkPixels(v, width, height, out.differences);
+      return out;
+    }
+    case PovCameraType::Spherical:
+      camera.type = CameraType::Spherical;
+      camera.hAngle = pov.angle.value_or(360.0);
+      camera.vAngle = pov.verticalAngle.value_or(camera.hAngle * 0.5);
+      placeFrame(v, camera, out.differences);
+      return out;
+    case PovCameraType::UltraWideAngle:
+    case PovCameraType::Omnimax:
+    case PovCameraType::Panoramic:
+    case PovCameraType::Cylinder:
+      break;
+  }
+  out.error = fmt::format(
+      "'{}' is not supported by Lucent (its cameras: perspective, orthographic, fisheye and "
+      "spherical)",
+      povTypeName(pov.type));
+  return out;
+}
+
+}  // namespace lucent::sdl
