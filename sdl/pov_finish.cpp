@@ -1,0 +1,125 @@
+#include "pov_finish.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lucent::sdl {
+
+namespace {
+
+Color withFilter(const Color& c, float f, float t) { return c * f + Color(t); }
+
+// The reflection colour Lucent's constant k_r (or, with fresnel, its k_r·F) stands for.
+Color importReflection(const PovFinish& finish, const PovPigment& pigment, bool transmits,
+                       Material& m, std::vector<std::string>& notes) {
+  const PovReflection& r = finish.reflection;
+  if (maxComponent(r.max) <= 0.0f && maxComponent(r.min) <= 0.0f) return Color(0.0f);
+  Color kr = r.max;
+  if (r.fresnel) {
+    // POV-Ray: F·MAX + (1 − F)·MIN. Lucent's fresnel: k_r·F (and k_t·(1 − F)).
+    m.fresnel = true;
+    if (maxComponent(r.min) > 0.0f)
+      notes.push_back(
+          "reflection { MIN, MAX fresnel } with MIN above 0: Lucent's fresnel reflects "
+          "k_r·F, with no floor (imported as MIN 0)");
+    if (transmits && !(finish.conserveEnergy && r.max == Color(1.0f)))
+      notes.push_back(
+          "reflection with fresnel on a transparent surface: Lucent's fresnel also takes F "
+          "from the transmitted light, POV-Ray only with conserve_energy and reflection "
+          "MAX 1 (then both transmit k_t·(1 − F))");
+  } else if (r.min != r.max) {
+    // (1 − c)^falloff·MAX + (1 − (1 − c)^falloff)·MIN: MIN facing the viewer.
+    kr = r.min;
+    notes.push_back(fmt::format(
+        "reflection {{ MIN, MAX falloff {} }}: POV-Ray's reflection grows from MIN facing the "
+        "viewer to MAX at grazing angles, Lucent's is constant (imported as MIN)",
+        r.falloff));
+  }
+  if (r.metallic > 0.0) {
+    // POV-Ray tints by 1 + m·(1 − F)·(P − 1), F ~ 0 facing the viewer, 1 at grazing.
+    kr *= Color(1.0f) + static_cast<float>(r.metallic) * (pigment.color - Color(1.0f));
+    notes.push_back(
+        "reflection { metallic }: POV-Ray's tint by the pigment fades to none at grazing "
+        "angles; Lucent's reflection keeps the tint it has facing the viewer");
+  }
+  if (r.exponent != 1.0)
+    notes.push_back(fmt::format(
+        "reflection exponent {}: POV-Ray raises the reflected colour to 1/exponent, Lucent "
+        "reflects it linearly (imported as exponent 1)",
+        r.exponent));
+  return kr;
+}
+
+void importFade(const PovInterior& in, Material& m, std::vector<std::string>& notes) {
+  if (!(in.fadeDistance > 0.0)) return;
+  if (in.fadePower >= 1000.0) {
+    // exp(−(1 − fade_color)·d/fade_distance): Beer–Lambert, as Lucent's absorption.
+    m.absorption = (Color(1.0f) - in.fadeColor) / static_cast<float>(in.fadeDistance);
+    m.absorption = glm::max(m.absorption, Color(0.0f));
+  } else {
+    notes.push_back(fmt::format(
+        "interior fade_power {}: POV-Ray's fade_color + (1 − fade_color)/(1 + (d/"
+        "fade_distance)^fade_power) has no Lucent equivalent below fade_power 1000 (Lucent's "
+        "absorption is exponential); imported without fading",
+        in.fadePower));
+  }
+}
+
+}  // namespace
+
+MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish,
+                              const PovInterior& interior) {
+  MaterialImport out;
+  Material& m = out.material;
+  std::vector<std::string>& notes = out.differences;
+  const Color& p = pigment.color;
+  // POV-Ray 3.7: every local term is scaled by the opacity, what shows through is
+  // pigment·filter + transmit, per channel.
+  const float opacity = std::max(0.0f, 1.0f - pigment.filter - pigment.transmit);
+  m.diffuse = p * static_cast<float>(finish.diffuse) * opacity;
+  m.ambient = p * finish.ambient * opacity;
+  m.ambientIsScalar = false;  // the pigment is already in it
+  m.emissive = p * finish.emission * opacity;
+  m.brilliance = finish.brilliance;
+  // Highlights take the light's colour only: neither pigment nor opacity.
+  m.phong = Color(static_cast<float>(finish.phong));
+  m.phongSize = finish.phongSize;
+  m.specular = Color(static_cast<float>(finish.specular));
+  m.shininess = finish.roughness > 0.0 ? 1.0 / finish.roughness : 1e9;
+  m.transmissive = withFilter(p, pigment.filter, pigment.transmit);
+  m.ior = interior.ior;
+  m.irid = finish.irid;
+  m.iridThickness = finish.iridThickness;
+  m.iridTurbulence = finish.iridTurbulence;
+  const bool transmits = m.isTransmissive();
+
+  m.reflective = importReflection(finish, pigment, transmits, m, notes);
+  // conserve_energy: what is transmitted is what is not reflected, per channel.
+  if (finish.conserveEnergy && transmits && !m.fresnel)
+    m.transmissive *= glm::max(Color(1.0f) - m.reflective, Color(0.0f));
+
+  if (finish.metallic > 0.0 && m.hasHighlight()) {
+    m.metallic = true;
+    if (finish.metallic != 1.0 || finish.diffuse * opacity != 1.0)
+      notes.push_back(fmt::format(
+          "metallic {}: POV-Ray tints highlights by 1 + m·(1 − F)·(pigment − 1), Lucent's "
+          "metallic by its diffuse colour (pigment × diffuse {} × opacity) with m = 1",
+          finish.metallic, finish.diffuse));
+  }
+  importFade(interior, m, notes);
+
+  if (transmits && maxComponent(m.ambient) > 0.0f)
+    notes.push_back(
+        "ambient on a transparent surface: seen from inside the object Lucent multiplies "
+        "it by the transmission, POV-Ray does not");
+  if (transmits && interior.ior != 1.0 &&
+      std::min({m.transmissive.r, m.transmissive.g, m.transmissive.b}) < 1.0f)
+    notes.push_back(
+        "total internal reflection: POV-Ray continues the mirror ray with weight 1, Lucent "
+        "with the transmission's (equal when it is 1)");
+  return out;
+}
+
+}  // namespace lucent::sdl

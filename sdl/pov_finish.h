@@ -1,0 +1,75 @@
+// POV-Ray's pigment (a colour), finish and interior, and the Lucent material they make
+// (docs/povray-import.md, "Finish and pigment").
+#pragma once
+
+#include "scenegraph/material.h"
+
+#include <string>
+#include <vector>
+
+namespace lucent::sdl {
+
+// `pigment { rgbft <r, g, b, f, t> }`: a colour only, for now. POV-Ray's default pigment,
+// an object's when nothing gives it one, is black.
+struct PovPigment {
+  Color color{0.0f};
+  float filter = 0.0f;
+  float transmit = 0.0f;
+};
+
+// `reflection { MIN, MAX fresnel falloff exponent metallic }`, or `reflection C` alone
+// (min = max = C).
+struct PovReflection {
+  Color min{0.0f};
+  Color max{0.0f};
+  bool fresnel = false;
+  double falloff = 1.0;
+  double exponent = 1.0;
+  double metallic = 0.0;
+};
+
+// `finish { ... }` with POV-Ray 3.7's defaults (its Create_Finish): what an object without
+// a finish gets, and what a finish block starts from unless `#default` changed it.
+struct PovFinish {
+  Color ambient{0.1f};
+  Color emission{0.0f};
+  double diffuse = 0.6;
+  double brilliance = 1.0;
+  double phong = 0.0;
+  double phongSize = 40.0;
+  double specular = 0.0;
+  double roughness = 0.05;  // the specular exponent is 1/roughness
+  double metallic = 0.0;    // `metallic` alone is 1
+  PovReflection reflection;
+  bool conserveEnergy = false;
+  double irid = 0.0;
+  double iridThickness = 0.0;
+  double iridTurbulence = 0.0;
+};
+
+// `interior { ior fade_distance fade_power fade_color }` (every object has one: ior 1).
+struct PovInterior {
+  double ior = 1.0;
+  double fadeDistance = 0.0;
+  double fadePower = 0.0;
+  Color fadeColor{0.0f};
+};
+
+// `#default { pigment {...} finish {...} }`: what a texture starts from. A scene reader
+// copies `finish` into each new finish block before reading its keywords (the keywords
+// written change it), and gives an object without texture both.
+struct PovDefaults {
+  PovPigment pigment;
+  PovFinish finish;
+};
+
+struct MaterialImport {
+  Material material;
+  std::vector<std::string> differences;  // where Lucent's material differs from POV-Ray's
+};
+// The material of a one-layer texture: POV-Ray multiplies the pigment's colour by the
+// finish and by the opacity 1 - filter - transmit; transmits pigment·filter + transmit.
+MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish,
+                              const PovInterior& interior);
+
+}  // namespace lucent::sdl

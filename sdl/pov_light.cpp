@@ -1,0 +1,176 @@
+#include "pov_light.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lucent::sdl {
+
+namespace {
+
+bool fades(const PovLight& l) { return l.fadeDistance > 0.0 && l.fadePower > 0.0; }
+
+double spotRadius(const PovLight& l) { return l.radius.value_or(30.0); }
+double spotFalloff(const PovLight& l) { return l.falloff.value_or(45.0); }
+
+// POV-Ray's recursive corner averaging weighs an area light's grid evenly only for 2, 4,
+// 8, ... samples a side (3 gives 1/4 1/2 1/4; scenegraph/light.cpp tells the exporter the
+// same).
+bool averagesUniformly(int n) { return n >= 2 && (n & (n - 1)) == 0; }
+
+}  // namespace
+
+double povLightFade(const PovLight& l, double d) {
+  if (!fades(l)) return 1.0;
+  return 2.0 / (1.0 + std::pow(d / l.fadeDistance, l.fadePower));
+}
+
+double povSpotFactor(const PovLight& l, double cosTheta) {
+  if (cosTheta <= 0.0) return 0.0;
+  double factor = l.tightness == 0.0 ? 1.0 : std::pow(cosTheta, l.tightness);
+  const double cosRadius = std::cos(radians(spotRadius(l)));
+  const double cosFalloff = std::cos(radians(spotFalloff(l)));
+  if (cosTheta < cosRadius) {
+    if (cosTheta <= cosFalloff) return 0.0;
+    const double u = (cosTheta - cosFalloff) / (cosRadius - cosFalloff);
+    factor *= (3.0 - 2.0 * u) * u * u;
+  }
+  return factor;
+}
+
+LightImport importLight(const PovLight& pov) {
+  LightImport out;
+  Light& l = out.light;
+  std::vector<std::string>& notes = out.differences;
+  l.loc = pov.loc;
+  l.color = pov.color;
+  const Vec3 location = pov.transform.point(pov.location);
+  const Vec3 pointAt = pov.transform.point(pov.pointAt);
+  l.position = lucentFromPov(location);
+  const Vec3 axis = pointAt - location;
+  if (glm::length(axis) > 0.0) l.direction = glm::normalize(lucentFromPov(axis));
+
+  switch (pov.kind) {
+    case PovLightKind::Point:
+      l.type = pov.parallel ? LightType::Directional : LightType::Point;
+      break;
+    case PovLightKind::Spotlight:
+      l.type = LightType::Spot;
+      l.angle = spotFalloff(pov);
+      l.inner = std::min(spotRadius(pov), l.angle);
+      if (pov.tightness != 0.0)
+        notes.push_back(fmt::format(
+            "spotlight: tightness {} (POV-Ray multiplies the light by cos^tightness of the "
+            "angle from the axis) has no Lucent equivalent; Lucent's spot is tightness 0",
+            pov.tightness));
+      if (l.angle > 90.0)
+        notes.push_back(fmt::format(
+            "spotlight: falloff {} exceeds 90 degrees; POV-Ray gives no light behind the "
+            "spotlight, Lucent does up to the falloff",
+            l.angle));
+      if (pov.parallel)
+        notes.push_back(
+            "spotlight: `parallel` has no Lucent equivalent for a spotlight; its rays leave "
+            "from its location");
+      break;
+    case PovLightKind::Cylinder:
+      l.type = LightType::Cylindrical;
+      l.radius = pov.radius.value_or(0.75);
+      l.falloff = std::max(pov.falloff.value_or(1.0), l.radius);
+      l.tightness = pov.tightness;
+      break;
+  }
+  if (pov.parallel && pov.kind == PovLightKind::Point)
+    notes.push_back(
+        "parallel light: POV-Ray's shadow rays stop at the plane through its location, "
+        "Lucent's directional light's reach infinity (objects behind that plane cast "
+        "shadows in Lucent only)");
+
+  if (pov.area) {
+    const PovAreaLight& a = *pov.area;
+    if (pov.kind == PovLightKind::Cylinder || pov.parallel) {
+      notes.push_back(
+          "area_light on a parallel or cylinder light: Lucent lights it from "
+          "one point (no soft shadows)");
+    } else if (a.size1 <= 1 && a.size2 <= 1) {
+      // POV-Ray's grid of one point is its centre: a point light.
+    } else {
+      l.cone = l.type == LightType::Spot;
+      l.type = LightType::Area;
+      Vec3 u = lucentFromPov(pov.transform.vector(a.axis1));
+      Vec3 v = lucentFromPov(pov.transform.vector(a.axis2));
+      int nu = a.size1, nv = a.size2;
+      // A line of lights (one sample across an axis): Lucent's grid has at least two rows,
+      // so the second axis shrinks to a width no shadow can tell from zero.
+      auto collapse = [](Vec3& axis, int& n, const Vec3& other) {
+        if (n > 1) return;
+        Vec3 across = glm::cross(other, Vec3(1.0, 0.0, 0.0));
+        if (glm::length(across) < 1e-6 * glm::length(other))
+          across = glm::cross(other, Vec3(0.0, 1.0, 0.0));
+        axis = glm::normalize(across) * (1e-9 * glm::length(other));
+        n = 2;
+      };
+      collapse(u, nu, v);
+      collapse(v, nv, u);
+      l.u = u;
+      l.v = v;
+      l.samplesU = std::min(nu, 1024);
+      l.samplesV = std::min(nv, 1024);
+      l.adaptive = a.adaptive;
+      l.jitter = a.jitter;
+      if (a.jitter)
+        notes.push_back(
+            "area_light: jitter is random in POV-Ray and a fixed hash in Lucent; the noise "
+            "differs");
+      if (a.circular)
+        notes.push_back(
+            "area_light: `circular` (a round grid) has no Lucent equivalent; the "
+            "grid stays rectangular");
+      if (a.orient)
+        notes.push_back(
+            "area_light: `orient` (the grid turned to face each lit point) has no "
+            "Lucent equivalent");
+      if (!a.adaptive && (!averagesUniformly(l.samplesU) || !averagesUniformly(l.samplesV)))
+        notes.push_back(fmt::format(
+            "area_light: POV-Ray weights a {}x{} grid unevenly (edge samples count less); "
+            "Lucent's plain average equals it only for 2, 4, 8, ... samples per side",
+            a.size1, a.size2));
+    }
+  }
+
+  if (pov.shadowless) {
+    l.shadows = false;
+    notes.push_back(
+        "shadowless: POV-Ray's shadowless light adds no phong or specular highlight, "
+        "Lucent's light without shadows does (equal on surfaces without highlights)");
+  }
+
+  // POV-Ray: 2 / (1 + (d/fd)^fp). Lucent: min(1, 1/(a + b d + c d^2)), which is it for
+  // fp = 1 (a = 1/2, b = 1/(2 fd)) and fp = 2 (a = 1/2, c = 1/(2 fd^2)) wherever POV-Ray's
+  // factor is at most 1, that is beyond fade_distance.
+  if (fades(pov)) {
+    const double fd = pov.fadeDistance, fp = pov.fadePower;
+    if (fp == 1.0) {
+      l.attenuation = Vec3(0.5, 0.5 / fd, 0.0);
+    } else {
+      l.attenuation = Vec3(0.5, 0.0, 0.5 / (fd * fd));
+      if (fp != 2.0)
+        notes.push_back(
+            fmt::format("fade_power {}: Lucent's attenuation has powers 1 and 2 only; imported as "
+                        "fade_power 2",
+                        fp));
+    }
+    notes.push_back(fmt::format(
+        "fade_distance {}: within that distance of the light POV-Ray's fade brightens it up "
+        "to twice its colour, Lucent's attenuation stops at its colour",
+        fd));
+  }
+  if (pov.looksLike)
+    notes.push_back(
+        "looks_like: ignored (Lucent's lights have no visible shape; the object "
+        "can be written on its own)");
+  return out;
+}
+
+}  // namespace lucent::sdl

@@ -1,0 +1,96 @@
+#include "pov_settings.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace lucent::sdl {
+
+std::vector<std::string> applyGlobalSettings(const PovGlobalSettings& g,
+                                             const PovBackground& background,
+                                             RenderSettings& render) {
+  std::vector<std::string> notes;
+  // POV-Ray's primary ray is level 1 and a ray past max_trace_level is black: Lucent's
+  // max-depth counts the same way (the exporter writes it one to one).
+  render.maxDepth = g.maxTraceLevel;
+  render.minWeight = g.adcBailout;
+  render.ambient = g.ambientLight;
+  render.background = background.color;
+  if (g.assumedGamma && std::abs(*g.assumedGamma - 1.0) > 1e-9)
+    notes.push_back(fmt::format(
+        "assumed_gamma {}: POV-Ray then lights and blends colours in that gamma's space; "
+        "Lucent computes in linear light (assumed_gamma 1.0), so the image's tones differ",
+        *g.assumedGamma));
+  return notes;
+}
+
+SkyImport importSkySphere(const PovSkySphere& pov) {
+  SkyImport out;
+  if (pov.pigments.empty()) {
+    out.error = "sky_sphere: a sky_sphere needs a pigment";
+    return out;
+  }
+  if (pov.pigments.size() > 1)
+    out.differences.push_back(fmt::format(
+        "sky_sphere: {} pigments are layered in POV-Ray (the upper ones' filter and transmit "
+        "show the lower); Lucent's sky has one: the first is imported",
+        pov.pigments.size()));
+  const PovSkyGradient& g = pov.pigments.front();
+  Sky sky;
+  sky.loc = pov.loc;
+  sky.pattern.pattern.type = PatternType::gradient;
+  // The gradient's axis and the transforms carried into Lucent's space, so that the
+  // pattern of a Lucent direction S·d is POV-Ray's of d.
+  sky.pattern.pattern.axis = lucentFromPov(g.axis);
+  sky.pattern.map.entries = g.colorMap;
+  // The pigment's transforms, then the sky_sphere's: both move the pattern over the
+  // directions (POV-Ray evaluates the sky at the unit direction taken as a point).
+  const PovTransform worldFromSky = g.transform.then(pov.transform);
+  sky.skyFromWorld = glm::inverse(worldFromSky.lucentMatrix());
+  out.sky = sky;
+  return out;
+}
+
+FogImport importFog(const PovFog& pov) {
+  FogImport out;
+  if (pov.type != 1 && pov.type != 2) {
+    out.error =
+        fmt::format("fog_type {}: POV-Ray's fog types are 1 (constant) and 2 (ground)", pov.type);
+    return out;
+  }
+  if (!(pov.distance > 0.0)) {
+    out.error = "fog: the distance must be above 0";
+    return out;
+  }
+  Fog f;
+  f.loc = pov.loc;
+  f.type = pov.type == 2 ? FogType::Ground : FogType::Constant;
+  f.color = pov.color;
+  f.filter = pov.filter;
+  f.transmit = pov.transmit;
+  f.distance = pov.distance;
+  if (f.type == FogType::Ground) {
+    if (!(pov.altitude > 0.0)) {
+      out.error = "fog: a ground fog (fog_type 2) needs fog_alt above 0";
+      return out;
+    }
+    f.offset = pov.offset;
+    f.altitude = pov.altitude;
+    const Vec3 up = lucentFromPov(pov.transform.vector(pov.up));
+    if (!(glm::length(up) > 0.0)) {
+      out.error = "fog: its up vector is zero";
+      return out;
+    }
+    f.up = glm::normalize(up);
+    if (!pov.transform.isIdentity())
+      out.differences.push_back(
+          "fog: POV-Ray measures a transformed ground fog's height in the fog's own space; "
+          "Lucent keeps the offset along the transformed up direction");
+  }
+  if (pov.turbulence)
+    out.differences.push_back("fog: turbulence has no Lucent equivalent; the fog is smooth");
+  out.fog = f;
+  return out;
+}
+
+}  // namespace lucent::sdl

@@ -1,0 +1,79 @@
+// POV-Ray's scene-wide blocks: global_settings, background, sky_sphere and fog, and the
+// Lucent scene settings they make (docs/povray-import.md, "Scene settings").
+#pragma once
+
+#include "pov_space.h"
+
+#include "scenegraph/fog.h"
+#include "scenegraph/render_settings.h"
+#include "scenegraph/sky.h"
+#include "scenegraph/source_loc.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lucent::sdl {
+
+// `global_settings { ... }` with POV-Ray 3.7's defaults.
+struct PovGlobalSettings {
+  std::optional<double> assumedGamma;  // none written: 1.0 under #version 3.7
+  int maxTraceLevel = 5;
+  double adcBailout = 1.0 / 255.0;
+  Color ambientLight{1.0f};
+};
+
+// `background { colour }` (default black; its filter and transmit do not show).
+struct PovBackground {
+  Color color{0.0f};
+};
+
+// One `pigment { gradient <axis> color_map { [at colour] ... } }` of a sky_sphere: the
+// kind of sky Lucent's <sky> holds (a pattern of the ray's direction).
+struct PovSkyGradient {
+  Vec3 axis{0.0, 1.0, 0.0};
+  std::vector<ColorMapEntry> colorMap;  // empty: POV-Ray's grey map
+  PovTransform transform;               // the pigment's own transforms
+};
+struct PovSkySphere {
+  std::vector<PovSkyGradient> pigments;  // POV-Ray layers several; Lucent takes one
+  PovTransform transform;                // the sky_sphere's own transforms
+  SourceLoc loc;
+};
+
+// `fog { ... }`: fog_type 1 (constant) or 2 (ground), with POV-Ray's defaults.
+struct PovFog {
+  int type = 1;
+  SourceLoc loc;
+  double distance = 0.0;  // POV-Ray needs one above 0
+  Color color{0.0f};
+  float filter = 0.0f;
+  float transmit = 0.0f;
+  double offset = 0.0;    // fog_offset
+  double altitude = 0.0;  // fog_alt
+  Vec3 up{0.0, 1.0, 0.0};
+  bool turbulence = false;  // `turbulence` was written (Lucent's fog has none)
+  PovTransform transform;
+};
+
+// global_settings and background into the render settings (size and sampling are the
+// command line's). Returns what differs from POV-Ray's meaning.
+std::vector<std::string> applyGlobalSettings(const PovGlobalSettings& g,
+                                             const PovBackground& background,
+                                             RenderSettings& render);
+
+struct SkyImport {
+  std::optional<Sky> sky;
+  std::vector<std::string> differences;
+  std::string error;  // set when the sky cannot be imported at all
+};
+SkyImport importSkySphere(const PovSkySphere& sky);
+
+struct FogImport {
+  std::optional<Fog> fog;
+  std::vector<std::string> differences;
+  std::string error;
+};
+FogImport importFog(const PovFog& fog);
+
+}  // namespace lucent::sdl

@@ -1,0 +1,147 @@
+// POV-Ray's pigment, finish and interior (sdl/pov_finish.h): the finish multiplies the
+// pigment, the opacity 1 - filter - transmit scales the local terms, and what differs from
+// Lucent's own rules is said.
+#include "sdl/pov_finish.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+using namespace lucent;
+using namespace lucent::sdl;
+
+namespace {
+
+bool mentions(const std::vector<std::string>& notes, const std::string& word) {
+  return std::any_of(notes.begin(), notes.end(),
+                     [&](const std::string& n) { return n.find(word) != std::string::npos; });
+}
+
+void requireColor(const Color& got, const Color& want) {
+  INFO("<" << got.r << ", " << got.g << ", " << got.b << "> vs <" << want.r << ", " << want.g
+           << ", " << want.b << ">");
+  CHECK(glm::length(Vec3(got - want)) < 1e-6);
+}
+
+}  // namespace
+
+TEST_CASE("POV-Ray's default finish: ambient 0.1 and diffuse 0.6 times the pigment",
+          "[sdl][finish]") {
+  PovPigment pigment;
+  pigment.color = Color(1.0f, 0.5f, 0.2f);
+  const MaterialImport m = importMaterial(pigment, PovFinish{}, PovInterior{});
+  requireColor(m.material.diffuse, Color(0.6f, 0.3f, 0.12f));
+  requireColor(m.material.ambient, Color(0.1f, 0.05f, 0.02f));
+  CHECK(!m.material.ambientIsScalar);
+  CHECK(m.material.shininess == Approx(20.0));  // roughness 0.05
+  CHECK(maxComponent(m.material.phong) == 0.0f);
+  CHECK(maxComponent(m.material.specular) == 0.0f);
+  CHECK(!m.material.isTransmissive());
+  CHECK(m.differences.empty());
+  // An object without texture: black pigment, so only highlights could show.
+  const MaterialImport none = importMaterial(PovPigment{}, PovFinish{}, PovInterior{});
+  requireColor(none.material.diffuse, Color(0.0f));
+}
+
+TEST_CASE("filter and transmit: the opacity scales the local terms, not the highlights",
+          "[sdl][finish]") {
+  PovPigment pigment;
+  pigment.color = Color(0.8f, 0.6f, 0.4f);
+  pigment.filter = 0.5f;
+  pigment.transmit = 0.2f;
+  PovFinish finish;
+  finish.ambient = Color(0.2f);
+  finish.emission = Color(0.5f);
+  finish.diffuse = 0.7;
+  finish.phong = 0.9;
+  finish.phongSize = 80.0;
+  finish.specular = 0.4;
+  finish.roughness = 0.01;
+  PovInterior interior;
+  interior.ior = 1.5;
+  const MaterialImport m = importMaterial(pigment, finish, interior);
+  const float opacity = 0.3f;
+  requireColor(m.material.diffuse, pigment.color * 0.7f * opacity);
+  requireColor(m.material.ambient, pigment.color * 0.2f * opacity);
+  requireColor(m.material.emissive, pigment.color * 0.5f * opacity);
+  requireColor(m.material.transmissive, pigment.color * 0.5f + Color(0.2f));
+  requireColor(m.material.phong, Color(0.9f));
+  requireColor(m.material.specular, Color(0.4f));
+  CHECK(m.material.phongSize == 80.0);
+  CHECK(m.material.shininess == Approx(100.0));
+  CHECK(m.material.ior == 1.5);
+  // Where Lucent's own rules differ, for this material: ambient seen from inside, and the
+  // weight of total internal reflection (the transmission is below 1).
+  CHECK(mentions(m.differences, "from inside"));
+  CHECK(mentions(m.differences, "total internal reflection"));
+  CHECK(m.differences.size() == 2);
+}
+
+TEST_CASE("reflection: constant, fresnel, falloff, metallic and conserve_energy", "[sdl][finish]") {
+  PovPigment glass;
+  glass.color = Color(1.0f);
+  glass.filter = 1.0f;
+  PovInterior interior;
+  interior.ior = 1.5;
+  PovFinish finish;
+  finish.ambient = Color(0.0f);
+  finish.diffuse = 0.0;
+
+  // Constant reflection with conserve_energy: transmission times 1 - reflection.
+  finish.reflection.min = finish.reflection.max = Color(0.25f);
+  finish.conserveEnergy = true;
+  MaterialImport m = importMaterial(glass, finish, interior);
+  requireColor(m.material.reflective, Color(0.25f));
+  requireColor(m.material.transmissive, Color(0.75f));
+  CHECK(!m.material.fresnel);
+
+  // reflection { 0, 1 fresnel } conserve_energy: Lucent's fresnel exactly.
+  finish.reflection.min = Color(0.0f);
+  finish.reflection.max = Color(1.0f);
+  finish.reflection.fresnel = true;
+  m = importMaterial(glass, finish, interior);
+  CHECK(m.material.fresnel);
+  requireColor(m.material.reflective, Color(1.0f));
+  requireColor(m.material.transmissive, Color(1.0f));
+  CHECK(m.differences.empty());
+  // Without conserve_energy POV-Ray does not take F from the transmitted light: said.
+  finish.conserveEnergy = false;
+  CHECK(mentions(importMaterial(glass, finish, interior).differences, "conserve_energy"));
+
+  // A falloff between two values: the value facing the viewer, said.
+  finish.reflection = PovReflection{};
+  finish.reflection.min = Color(0.1f);
+  finish.reflection.max = Color(0.8f);
+  m = importMaterial(PovPigment{}, finish, interior);
+  requireColor(m.material.reflective, Color(0.1f));
+  CHECK(mentions(m.differences, "falloff"));
+
+  // metallic reflection, facing the viewer: tinted by the pigment.
+  PovPigment gold;
+  gold.color = Color(1.0f, 0.8f, 0.3f);
+  finish.reflection = PovReflection{};
+  finish.reflection.min = finish.reflection.max = Color(0.5f);
+  finish.reflection.metallic = 1.0;
+  m = importMaterial(gold, finish, interior);
+  requireColor(m.material.reflective, Color(0.5f, 0.4f, 0.15f));
+  CHECK(mentions(m.differences, "metallic"));
+}
+
+TEST_CASE("interior fade: exponential above fade_power 1000 is Lucent's absorption",
+          "[sdl][finish]") {
+  PovPigment clear;
+  clear.color = Color(1.0f);
+  clear.transmit = 1.0f;
+  PovInterior interior;
+  interior.ior = 1.33;
+  interior.fadeDistance = 2.0;
+  interior.fadePower = 1001.0;
+  interior.fadeColor = Color(0.5f, 0.8f, 1.0f);
+  MaterialImport m = importMaterial(clear, PovFinish{}, interior);
+  // exp(−(1 − fade_color)·d/fade_distance) = exp(−absorption·d)
+  requireColor(m.material.absorption, Color(0.25f, 0.1f, 0.0f));
+  interior.fadePower = 2.0;
+  m = importMaterial(clear, PovFinish{}, interior);
+  requireColor(m.material.absorption, Color(0.0f));
+  CHECK(mentions(m.differences, "fade_power 2"));
+}

@@ -1,0 +1,150 @@
+// POV-Ray's light_source (sdl/pov_light.h): POV-Ray's spotlight and fade formulas against
+// the light Lucent renders from the import, the area light's axes, and what is said.
+#include "sdl/pov_light.h"
+#include "render/light_sample.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+using namespace lucent;
+using namespace lucent::sdl;
+
+namespace {
+
+bool mentions(const std::vector<std::string>& notes, const std::string& word) {
+  return std::any_of(notes.begin(), notes.end(),
+                     [&](const std::string& n) { return n.find(word) != std::string::npos; });
+}
+
+}  // namespace
+
+TEST_CASE("a spotlight lights as POV-Ray's at every angle from its axis", "[sdl][light]") {
+  PovLight pov;
+  pov.kind = PovLightKind::Spotlight;
+  pov.location = Vec3(1.0, 4.0, -2.0);
+  pov.pointAt = Vec3(0.0, 0.0, 1.0);
+  pov.radius = 12.0;
+  pov.falloff = 25.0;
+  pov.color = Color(0.9f, 0.8f, 0.7f);
+  const LightImport imported = importLight(pov);
+  CHECK(imported.differences.empty());
+  const Light& light = imported.light;
+  CHECK(light.type == LightType::Spot);
+  CHECK(light.inner == 12.0);
+  CHECK(light.angle == 25.0);
+  // Points at 0 to 30 degrees from the axis, 5 units from the light (POV-Ray's space).
+  const Vec3 axis = glm::normalize(pov.pointAt - pov.location);
+  const Vec3 side = glm::normalize(glm::cross(axis, Vec3(0.0, 1.0, 0.0)));
+  for (double deg = 0.0; deg <= 30.0; deg += 1.5) {
+    const double a = radians(deg);
+    const Vec3 p = pov.location + 5.0 * (std::cos(a) * axis + std::sin(a) * side);
+    const LightIncidence in = lightIncidence(light, lucentFromPov(p));
+    const double expected = povSpotFactor(pov, std::cos(a));
+    INFO(deg << " degrees: POV-Ray " << expected);
+    CHECK(in.radiance.g == Approx(0.8 * expected).margin(1e-6));
+  }
+  // The defaults: radius 30, falloff 45; tightness is said.
+  PovLight plain;
+  plain.kind = PovLightKind::Spotlight;
+  plain.tightness = 10.0;
+  const LightImport d = importLight(plain);
+  CHECK(d.light.inner == 30.0);
+  CHECK(d.light.angle == 45.0);
+  CHECK(mentions(d.differences, "tightness 10"));
+  CHECK(povSpotFactor(plain, std::cos(radians(20.0))) ==
+        Approx(std::pow(std::cos(radians(20.0)), 10.0)));
+}
+
+TEST_CASE("fade_distance and fade_power: POV-Ray's 2/(1 + (d/fd)^fp) beyond fd", "[sdl][light]") {
+  for (double power : {1.0, 2.0}) {
+    PovLight pov;
+    pov.location = Vec3(0.0, 0.0, 3.0);
+    pov.fadeDistance = 2.5;
+    pov.fadePower = power;
+    const LightImport imported = importLight(pov);
+    CHECK(povLightFade(pov, 0.0) == 2.0);
+    CHECK(povLightFade(pov, 2.5) == Approx(1.0));
+    // Within fd POV-Ray brightens the light; Lucent's attenuation stops at 1: said.
+    CHECK(mentions(imported.differences, "twice its colour"));
+    for (double d : {2.5, 3.0, 5.0, 11.0, 40.0}) {
+      const LightIncidence in =
+          lightIncidence(imported.light, lucentFromPov(pov.location + Vec3(0.0, d, 0.0)));
+      INFO("power " << power << ", distance " << d);
+      CHECK(in.radiance.r == Approx(povLightFade(pov, d)).epsilon(1e-6));
+    }
+  }
+  PovLight third;
+  third.fadeDistance = 1.0;
+  third.fadePower = 3.0;
+  CHECK(mentions(importLight(third).differences, "fade_power 3"));
+  // fade_distance without fade_power: no fading in POV-Ray, none imported.
+  PovLight half;
+  half.fadeDistance = 1.0;
+  CHECK(povLightFade(half, 10.0) == 1.0);
+  CHECK(importLight(half).light.attenuation == Vec3(1.0, 0.0, 0.0));
+  CHECK(importLight(half).differences.empty());
+}
+
+TEST_CASE("area lights keep their axes (mirrored, transformed) and grid", "[sdl][light]") {
+  PovLight pov;
+  pov.location = Vec3(2.0, 5.0, -3.0);
+  pov.area = PovAreaLight{Vec3(2.0, 0.0, 0.0), Vec3(0.0, 0.0, 1.0), 4, 8, 1, false, false, false};
+  pov.transform.rotate(Vec3(0.0, 90.0, 0.0));
+  const LightImport imported = importLight(pov);
+  CHECK(imported.differences.empty());
+  const Light& l = imported.light;
+  CHECK(l.type == LightType::Area);
+  CHECK(l.samplesU == 4);
+  CHECK(l.samplesV == 8);
+  CHECK(l.adaptive == 1);
+  // rotate y*90 takes x to -z and z to x in POV-Ray's space; then z is negated.
+  CHECK(glm::length(l.u - Vec3(0.0, 0.0, 2.0)) < 1e-12);
+  CHECK(glm::length(l.v - Vec3(1.0, 0.0, 0.0)) < 1e-12);
+  CHECK(glm::length(l.position - lucentFromPov(pov.transform.point(pov.location))) < 1e-12);
+
+  // 5 x 5 without adaptive: POV-Ray's edge samples weigh less; said.
+  pov.area->size1 = 5;
+  pov.area->size2 = 5;
+  pov.area->adaptive.reset();
+  pov.area->circular = true;
+  const LightImport uneven = importLight(pov);
+  CHECK(mentions(uneven.differences, "unevenly"));
+  CHECK(mentions(uneven.differences, "circular"));
+
+  // A line of lights (one sample across): two coincident rows.
+  pov.area->size2 = 1;
+  const LightImport line = importLight(pov);
+  CHECK(line.light.samplesV == 2);
+  CHECK(glm::length(line.light.v) < 1e-8);
+  CHECK(glm::length(glm::cross(line.light.u, line.light.v)) > 0.0);
+}
+
+TEST_CASE("parallel, shadowless, cylinder and looks_like lights", "[sdl][light]") {
+  PovLight parallel;
+  parallel.location = Vec3(0.0, 10.0, -10.0);
+  parallel.pointAt = Vec3(0.0, 0.0, 0.0);
+  parallel.parallel = true;
+  const LightImport p = importLight(parallel);
+  CHECK(p.light.type == LightType::Directional);
+  CHECK(glm::length(p.light.direction - glm::normalize(Vec3(0.0, -10.0, -10.0))) < 1e-12);
+  CHECK(mentions(p.differences, "plane through its location"));
+
+  PovLight cylinder;
+  cylinder.kind = PovLightKind::Cylinder;
+  cylinder.tightness = 2.0;
+  const LightImport c = importLight(cylinder);
+  CHECK(c.light.type == LightType::Cylindrical);
+  CHECK(c.light.radius == 0.75);
+  CHECK(c.light.falloff == 1.0);
+  CHECK(c.light.tightness == 2.0);
+  CHECK(c.differences.empty());
+
+  PovLight quiet;
+  quiet.shadowless = true;
+  quiet.looksLike = true;
+  const LightImport q = importLight(quiet);
+  CHECK(!q.light.shadows);
+  CHECK(mentions(q.differences, "no phong or specular"));
+  CHECK(mentions(q.differences, "looks_like"));
+}
