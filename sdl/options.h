@@ -21,7 +21,8 @@ namespace lucent::sdl {
 class Output {
  public:
   virtual ~Output() = default;
-  // #debug's text as written (POV-Ray prints it as it is, no line end added).
+  // #debug's text as written, no line end added (console_text.h prints it in POV-Ray's
+  // lines).
   virtual void debug(const std::string& text) = 0;
   virtual void warning(const SourceLoc& loc, const std::string& message) = 0;
 };

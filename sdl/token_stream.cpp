@@ -2,6 +2,8 @@
 // identifiers looked up in the symbol tables, and the errors with their context.
 #include "token_stream.h"
 
+#include "console_text.h"
+
 #include "lang/file_access.h"
 #include "lang/source_file.h"
 
@@ -15,10 +17,13 @@ namespace {
 // #debug and warnings on the standard error stream when the caller gave no Output.
 class ConsoleOutput : public Output {
  public:
-  void debug(const std::string& text) override { std::cerr << text << std::flush; }
+  void debug(const std::string& text) override { std::cerr << printer_.add(text) << std::flush; }
   void warning(const SourceLoc& loc, const std::string& message) override {
     std::cerr << loc.str() << ": warning: " << message << "\n";
   }
+
+ private:
+  DebugPrinter printer_;  // as POV-Ray prints it
 };
 
 // Deep enough for any scene, shallow enough for the C++ stack.

@@ -1,9 +1,12 @@
 // Lucent's language core against POV-Ray itself: each script of tests/data/sdl prints
-// values with #debug; NAME.out is what POV-Ray 3.7 printed (tests/data/sdl/record.sh
+// values with #debug; NAME.out is what POV-Ray 3.7 printed (its debug stream, whose lines
+// it cuts at 160 and then 80 characters: sdl/console_text.h) (tests/data/sdl/record.sh
 // records them again), and Lucent must print the same, byte for byte.
 #include <catch2/catch.hpp>
 
 #include "sdl_test_support.h"
+
+#include "sdl/console_text.h"
 
 #include <fstream>
 #include <sstream>
@@ -33,7 +36,7 @@ std::string lucentOutput(const std::string& name) {
     REQUIRE(t.kind == TokenKind::Keyword);
     items.read(t, in);
   }
-  return out.debugText;
+  return povPrinted(out.debugText);  // in lines as POV-Ray prints them
 }
 
 void compareWithPovRay(const std::string& name) {
@@ -82,4 +85,8 @@ TEST_CASE("sdl vs POV-Ray: include files and their #local identifiers", "[sdl][p
 
 TEST_CASE("sdl vs POV-Ray: the standard includes and their macros", "[sdl][povray]") {
   compareWithPovRay("includes");
+}
+
+TEST_CASE("sdl vs POV-Ray: #debug text in lines cut as POV-Ray cuts them", "[sdl][povray]") {
+  compareWithPovRay("wrap");
 }

@@ -2,7 +2,7 @@
 # Records POV-Ray's #debug output of each script here as NAME.out, the reference the tests
 # (tests/sdl/differential_test.cpp) compare Lucent's output with. Run it again after
 # changing a script: bash tests/data/sdl/record.sh
-# (POV-Ray wraps its messages at 80 columns: keep every #debug line shorter.)
+# (POV-Ray cuts long #debug lines: the tests cut Lucent's output the same way.)
 set -eu
 cd "$(dirname "${BASH_SOURCE[0]}")"
 for pov in *.pov; do
