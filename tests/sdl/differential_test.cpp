@@ -87,6 +87,10 @@ TEST_CASE("sdl vs POV-Ray: the standard includes and their macros", "[sdl][povra
   compareWithPovRay("includes");
 }
 
+TEST_CASE("sdl vs POV-Ray: corner cases of conversions, references and colours", "[sdl][povray]") {
+  compareWithPovRay("edges");
+}
+
 TEST_CASE("sdl vs POV-Ray: #debug text in lines cut as POV-Ray cuts them", "[sdl][povray]") {
   compareWithPovRay("wrap");
 }
