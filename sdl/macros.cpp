@@ -1,0 +1,163 @@
+// Macros and include files: both continue reading elsewhere (the macro's body, the
+// included file) with a new symbol table for their #local identifiers, and come back.
+#include "token_stream.h"
+
+#include "lang/file_access.h"
+
+namespace lucent::sdl {
+
+namespace {
+
+// POV-Ray 3.7 refuses a macro's 56th parameter.
+constexpr size_t kMaxParameters = 55;
+
+}  // namespace
+
+// `#macro Name(A, B, ...)`: the body is skipped now (directives.cpp) and read at each call.
+void TokenStream::macroDefinition() {
+  const bool prevOk = okToDeclare_;
+  okToDeclare_ = false;
+  getToken();
+  if (cur_.kind != TokenKind::Undeclared && cur_.kind != TokenKind::MacroName)
+    error(cur_, "expected the name of the macro, found " + cur_.describe());
+  auto m = std::make_shared<Macro>();
+  m->name = std::string(cur_.text());
+  m->loc = cur_.loc();
+  if (cur_.kind == TokenKind::MacroName) tables_[0].erase(m->name);
+  getToken();
+  if (!cur_.is("(")) error(cur_, "expected '(' after the macro's name, found " + cur_.describe());
+  for (;;) {
+    getToken();
+    if (cur_.is(")")) break;
+    if (cur_.kind != TokenKind::Undeclared && cur_.kind != TokenKind::Identifier &&
+        cur_.kind != TokenKind::MacroName)
+      error(cur_, "expected a parameter name or ')', found " + cur_.describe());
+    if (cur_.macro && cur_.macro->name == m->name)
+      error(cur_, "cannot call a macro while declaring its parameters");
+    m->params.emplace_back(cur_.text());
+    if (m->params.size() > kMaxParameters)
+      error(cur_, "too many parameters (POV-Ray takes at most 55)");
+    parseComma();
+  }
+  okToDeclare_ = prevOk;
+  m->file = levels_.back().file;
+  m->bodyStart = levels_.back().pos;
+  auto s = std::make_shared<Symbol>();
+  s->kind = Symbol::Kind::Macro;
+  s->macro = m;
+  tables_[0][m->name] = s;  // macros are always global
+  pendingMacro_ = m;
+}
+
+void TokenStream::invokeMacro(std::shared_ptr<Macro> m, SourceLoc callLoc) {
+  if (static_cast<int>(tables_.size()) > options_.limits.macroDepth)
+    error(callLoc, "macro calls and include files nested more than " +
+                       std::to_string(options_.limits.macroDepth) +
+                       " deep (the limit of POV-Ray and Lucent; endless recursion?)");
+  getToken();
+  if (!cur_.is("("))
+    error(cur_, "expected '(' after macro '" + m->name + "', found " + cur_.describe());
+  // Every argument is read before the macro's table exists, so that a recursive call sees
+  // the caller's identifiers.
+  std::vector<std::shared_ptr<Symbol>> args;
+  for (size_t i = 0; i < m->params.size(); ++i) {
+    auto s = std::make_shared<Symbol>();
+    Ref byRef;
+    if (!rvalue(s->value, &byRef, true, false)) {
+      getToken();
+      error(cur_, "macro '" + m->name + "' expects " + std::to_string(m->params.size()) +
+                      " parameter" + (m->params.size() == 1 ? "" : "s") + " but only " +
+                      std::to_string(i) + (i == 1 ? " was" : " were") + " given");
+    }
+    if (byRef.valid()) {
+      s->kind = Symbol::Kind::Parameter;
+      s->target = byRef;
+    }
+    args.push_back(s);
+    parseComma();
+  }
+  getToken();
+  if (!cur_.is(")"))
+    error(cur_, "macro '" + m->name + "' takes " + std::to_string(m->params.size()) + " parameter" +
+                    (m->params.size() == 1 ? "" : "s") + ": expected ')', found " +
+                    cur_.describe());
+  if (static_cast<int>(conds_.size()) >= options_.limits.conditionDepth)
+    error(callLoc, "too many nested conditionals or macros (the limit is " +
+                       std::to_string(options_.limits.conditionDepth) + ")");
+  CondEntry c;
+  c.type = Cond::InvokingMacro;
+  c.loc = callLoc;
+  c.directive = "macro call";
+  c.macro = m;
+  c.returnFile = levels_.back().file;
+  c.returnPos = levels_.back().pos;
+  conds_.push_back(std::move(c));
+  tables_.emplace_back();
+  for (size_t i = 0; i < args.size(); ++i) tables_.back()[m->params[i]] = args[i];
+  notes_.push_back({callLoc, "in macro '" + m->name + "' called here"});
+  levels_.back() = Level{m->file, m->bodyStart};
+}
+
+void TokenStream::returnFromMacro() {
+  const CondEntry& c = conds_.back();
+  levels_.back() = Level{c.returnFile, c.returnPos};
+  tables_.pop_back();
+  notes_.pop_back();
+}
+
+void TokenStream::openInclude(const SourceLoc& at) {
+  std::string name;
+  stringExpression(name, true, true);
+  if (static_cast<int>(levels_.size()) > options_.limits.includeDepth)
+    error(at, "include files nested more than " + std::to_string(options_.limits.includeDepth) +
+                  " deep");
+  if (static_cast<int>(tables_.size()) > options_.limits.macroDepth)
+    error(at, "macro calls and include files nested more than " +
+                  std::to_string(options_.limits.macroDepth) + " deep");
+  std::string display;
+  std::filesystem::path found = findInclude(name, at, display);
+  SourceFile* f = load(found, display);
+  levels_.push_back(Level{f, 0});
+  tables_.emplace_back();
+  notes_.push_back({at, "in the file included here"});
+}
+
+// POV-Ray's search: the scene's folder, then the library folders; a name without an
+// extension is also tried with ".inc".
+std::filesystem::path TokenStream::findInclude(const std::string& name, const SourceLoc& at,
+                                               std::string& display) const {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> folders{sceneFolder_};
+  for (const auto& f : options_.includeFolders) folders.push_back(f);
+  std::vector<std::string> names{name};
+  if (fs::path(name).extension().empty()) names.push_back(name + ".inc");
+  for (size_t i = 0; i < folders.size(); ++i) {
+    for (const std::string& n : names) {
+      fs::path p = fs::path(n).is_absolute() ? fs::path(n) : folders[i] / n;
+      std::error_code ec;
+      if (!fs::is_regular_file(p, ec)) continue;
+      display = fs::path(n).is_absolute() ? n
+                : i == 0                  ? (sceneDisplayFolder_ / n).string()
+                                          : (folders[i] / n).string();
+      if (i == 0 && options_.access) {
+        FileAccess::Resolved r = options_.access->resolve(n, sceneFolder_);
+        if (!r.error.empty()) error(at, r.error);
+        return r.path;
+      }
+      fs::path c = canonicalPath(p), root = canonicalPath(folders[i]);
+      auto rel = c.lexically_relative(root);
+      if (!fs::path(n).is_absolute() && (rel.empty() || *rel.begin() == ".."))
+        error(at, "'" + name + "' leads outside the folder " + root.string());
+      if (fs::path(n).is_absolute() && options_.access) {
+        FileAccess::Resolved r = options_.access->resolve(n, sceneFolder_);
+        if (!r.error.empty()) error(at, r.error);
+      }
+      return c;
+    }
+  }
+  std::string searched;
+  for (const auto& f : folders) searched += (searched.empty() ? "" : ", ") + f.string();
+  error(at, "cannot open include file '" + name + "' (searched " + searched + ")");
+}
+
+}  // namespace lucent::sdl

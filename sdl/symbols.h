@@ -1,0 +1,50 @@
+// Identifiers and where their values live. POV-Ray keeps a stack of symbol tables: the
+// global one, then one per include file being read and one per macro call; a name is
+// looked up from the newest table to the oldest. A macro parameter given a lone identifier
+// refers to that identifier's value (by reference); anything else is a copy.
+#pragma once
+
+#include "source.h"
+#include "value.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace lucent::sdl {
+
+struct Macro {
+  std::string name;
+  std::vector<std::string> params;
+  SourceFile* file = nullptr;
+  size_t bodyStart = 0;       // the first token of the body
+  size_t endHash = SIZE_MAX;  // the '#' of its #end
+  SourceLoc loc;
+};
+
+struct Symbol;
+
+// Where a value lives: an identifier's symbol, or an element of an array.
+struct Ref {
+  std::shared_ptr<Symbol> symbol;
+  std::shared_ptr<ArrayValue> array;
+  size_t index = 0;
+
+  bool valid() const { return symbol || array; }
+  // The value; nullptr for an array element not yet given one.
+  const Value* get() const;
+  void set(Value v) const;
+};
+
+struct Symbol {
+  enum class Kind { Value, Parameter, Macro } kind = Kind::Value;
+  Value value;
+  Ref target;                    // Parameter: the argument's place
+  std::shared_ptr<Macro> macro;  // Macro
+};
+
+using SymbolTable = std::unordered_map<std::string, std::shared_ptr<Symbol>>;
+
+}  // namespace lucent::sdl
