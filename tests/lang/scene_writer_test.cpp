@@ -107,6 +107,15 @@ TEST_CASE("scene writer: a spot light's inner angle is its own, not the angle it
   CHECK(contains(text, "angle=\"40\" inner=\"12\""));
 }
 
+TEST_CASE("scene writer: a spherical camera's v-angle is its own, not half of h-angle",
+          "[lang][scene-writer]") {
+  const std::string text =
+      writeSceneXml(*parseClean("<sphere/>", "writer.xml",
+                                "<camera type=\"spherical\" h-angle=\"200\" v-angle=\"60\"/>"),
+                    WriteOptions{});
+  CHECK(contains(text, "h-angle=\"200\" v-angle=\"60\""));
+}
+
 TEST_CASE("scene writer: a written scene reads back to the same text", "[lang][scene-writer]") {
   const std::string first = written(
       "<render width=\"64\" height=\"48\" background=\"0.1 0.2 0.3\"/>"
