@@ -9,7 +9,6 @@
 
 #include "scenegraph/attribute_input.h"
 
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,9 +22,6 @@ class AttributeProbe : public AttributeInput {
   std::vector<std::pair<std::string, std::string>> values;
   // The attributes whose values the probe could not learn.
   std::vector<std::string> unwritable;
-
-  // Only these attributes exist for the reader (has() and the getters); empty: all.
-  std::set<std::string> only;
 
   bool has(const char* attr) const override;
   double number(const char* attr, double def, const NumberRule& rule) override;

@@ -18,21 +18,27 @@ const char* waveName(WaveShape w) {
   return names[static_cast<int>(w)];
 }
 
-// The attributes every pattern element shares (lang/pattern_parser.cpp): its placement and
-// the value's modifiers, written only where they differ from the defaults.
+// Where a pattern element sits and how turbulence displaces it (lang/pattern_parser.cpp's
+// placement attributes), written where they differ from the defaults.
+void addPlacement(const PatternPlacement& p, Attributes& a) {
+  const PatternPlacement d;
+  if (p.patternFromObject != Mat4(1.0))
+    a.emplace_back("transform", xmlMatrix(glm::inverse(p.patternFromObject)));
+  if (p.turbulence != Vec3(0.0)) a.emplace_back("turbulence", xmlVector(p.turbulence));
+  if (p.octaves != d.octaves) a.emplace_back("octaves", std::to_string(p.octaves));
+  if (p.omega != d.omega) a.emplace_back("omega", xmlNumber(p.omega));
+  if (p.lambda != d.lambda) a.emplace_back("lambda", xmlNumber(p.lambda));
+}
+
+// The attributes of <pattern> and <normal>: the type by the pattern table's name, the
+// placement and the value's modifiers, written only where they differ from the defaults.
 Attributes patternAttributes(const PatternSpec& s, const SourceLoc& loc) {
   const PatternSpec d;
   if (s.crackle.metric != d.crackle.metric || s.crackle.form != d.crackle.form ||
       s.crackle.offset != d.crackle.offset || s.crackle.solid != d.crackle.solid)
     cannotWrite(loc, "crackle's metric, form, offset and solid have no attributes yet");
   Attributes a{{"type", std::string(patternTypeInfo(s.type).name)}};
-  const PatternPlacement& p = s.placement;
-  if (p.patternFromObject != Mat4(1.0))
-    a.emplace_back("transform", xmlMatrix(glm::inverse(p.patternFromObject)));
-  if (p.turbulence != Vec3(0.0)) a.emplace_back("turbulence", xmlVector(p.turbulence));
-  if (p.octaves != d.placement.octaves) a.emplace_back("octaves", std::to_string(p.octaves));
-  if (p.omega != d.placement.omega) a.emplace_back("omega", xmlNumber(p.omega));
-  if (p.lambda != d.placement.lambda) a.emplace_back("lambda", xmlNumber(p.lambda));
+  addPlacement(s.placement, a);
   if (s.axis != d.axis) a.emplace_back("axis", xmlVector(s.axis));
   if (s.arms != d.arms) a.emplace_back("arms", std::to_string(s.arms));
   if (s.frequency != d.frequency) a.emplace_back("frequency", xmlNumber(s.frequency));
@@ -64,7 +70,22 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
                    true);
         } else if constexpr (std::is_same_v<T, PatternTexture>) {
           writePatternTexture(t, loc, out);
+        } else if constexpr (std::is_same_v<T, HexagonTexture>) {
+          Attributes a{{"color1", xmlColor(t.spec.colors[0])},
+                       {"color2", xmlColor(t.spec.colors[1])},
+                       {"color3", xmlColor(t.spec.colors[2])}};
+          addPlacement(t.placement, a);
+          out.open(std::string(T::kind.element), a, true);
+        } else if constexpr (std::is_same_v<T, BrickTexture>) {
+          Attributes a{{"color1", xmlColor(t.spec.color1)},
+                       {"color2", xmlColor(t.spec.color2)},
+                       {"mortar", xmlNumber(t.spec.mortar)},
+                       {"size", xmlVector(t.spec.size)}};
+          addPlacement(t.placement, a);
+          out.open(std::string(T::kind.element), a, true);
         } else {
+          // A kind added to Texture without its writer here is an error at the material
+          // until it has one, never a material written without its texture.
           cannotWrite(loc,
                       "a <" + std::string(T::kind.element) + "> texture cannot be written yet");
         }

@@ -7,7 +7,7 @@
 # result of a normalisation or an inversion, which done again may move the last bit.
 #
 # The scenes in NOT_YET hold a construct the writer cannot write yet (an attribute read as a
-# list, a file, a function or child elements, an inline mesh, a brick texture): each must
+# list, a file, a function or child elements, an inline mesh): each must
 # exit with status 2 and an error at the construct's file:line:col, and write no file. A scene
 # that converts while listed there fails the test too, so the list only ever shrinks.
 # Also: an output in a missing folder or over a folder (status 3), and a failed conversion
@@ -17,7 +17,7 @@ set -u
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
 
 NOT_YET="primitives textures blob bump-map csg-mesh height-field isosurface lathe mesh-inline
-  mesh-smooth-silhouette patterns-blocks poly prism sor text triangles"
+  mesh-smooth-silhouette poly prism sor text triangles"
 NOT_YET=" $(echo $NOT_YET) "
 
 # The scenes are converted beside themselves (in a copy), so that the files they name
