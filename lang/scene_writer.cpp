@@ -213,7 +213,11 @@ class SceneWriter {
   void countMaterials() {
     count(*scene_.root);
     count(*scene_.lightRoot);
-    for (const auto& d : scene_.defs) count(*d);
+    // A <defs> child keeps its id whether or not a <use> names it (the language asks for one).
+    for (const auto& d : scene_.defs) {
+      count(*d);
+      targets_.insert(d.get());
+    }
   }
 
   // <material id=... default=...>...</material> with its children, or inline without id.

@@ -99,6 +99,20 @@ TEST_CASE("scene writer: repeats and expressions are written expanded, transform
   CHECK_FALSE(contains(text, "repeat"));
 }
 
+TEST_CASE("scene writer: <defs> keep their ids, <use> names them, ids nothing names are dropped",
+          "[lang][scene-writer]") {
+  const std::string text = written(
+      "<defs><sphere id=\"ball\" radius=\"0.5\"/><box id=\"unused\"/></defs>"
+      "<use ref=\"ball\" transform=\"translate(0 1 0)\"/>"
+      "<repeat var=\"i\" count=\"2\"><group id=\"g${i}\"><sphere/></group></repeat>");
+  CHECK(contains(text, "<sphere id=\"ball\" center=\"0 0 0\" radius=\"0.5\"/>"));
+  CHECK(contains(text, "<box id=\"unused\""));
+  CHECK(contains(text, "<use ref=\"ball\" transform=\"matrix(1 0 0 0 0 1 0 1 0 0 1 0)\"/>"));
+  CHECK_FALSE(contains(text, "id=\"g0\""));
+  auto reread = parseSceneString(text, "writer.xml");
+  CHECK(reread.scene);
+}
+
 TEST_CASE("scene writer: a spot light's inner angle is its own, not the angle it defaults to",
           "[lang][scene-writer]") {
   const std::string text = written(
