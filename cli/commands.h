@@ -84,6 +84,13 @@ struct ExportPovOptions {
 };
 int runExportPov(const ExportPovOptions& options, const CommonOptions& common);
 
+struct ConvertOptions {
+  std::string scene;
+  std::string output;
+  std::optional<int> frame;  // of an animated scene; none: frame 1
+};
+int runConvert(const ConvertOptions& options, const CommonOptions& common);
+
 struct CompareOptions {
   std::string scene;
   std::string outputDir;

@@ -1,4 +1,4 @@
-// lucent: render, check, export-pov and compare scene files.
+// lucent: render, check, export-pov, convert and compare scene files.
 #include "command_line.h"
 #include "commands.h"
 
@@ -15,7 +15,8 @@ using namespace lucent::cli;
 
 namespace {
 
-const std::vector<std::string_view> kCommands{"render", "check", "export-pov", "compare", "schema"};
+const std::vector<std::string_view> kCommands{"render",  "check",   "export-pov",
+                                              "convert", "compare", "schema"};
 
 // The first argument names the command; a misspelled one gets a hint (CLI11 alone would
 // only say that a command is required).
@@ -44,10 +45,11 @@ struct Commands {
   RenderOptions render;
   CheckOptions check;
   ExportPovOptions exportPov;
+  ConvertOptions convert;
   CompareOptions compare;
   std::string schemaOutput;
   CLI::App *renderCmd = nullptr, *checkCmd = nullptr, *exportCmd = nullptr, *compareCmd = nullptr,
-           *schemaCmd = nullptr;
+           *convertCmd = nullptr, *schemaCmd = nullptr;
 };
 
 void addRender(CLI::App& app, Commands& c) {
@@ -83,6 +85,17 @@ void addExportPov(CLI::App& app, Commands& c) {
   cmd->add_option("--max-depth", exportPov.maxDepth, "Maximum recursion depth");
   cmd->add_option("--camera", exportPov.camera, "Export the camera with this name");
   cmd->add_option("--frame", exportPov.frame, "Export this frame of an animation (default 1)");
+  addCommonOptions(cmd, c.defines, c.allowPaths);
+}
+
+void addConvert(CLI::App& app, Commands& c) {
+  ConvertOptions& convert = c.convert;
+  CLI::App* cmd = c.convertCmd =
+      app.add_subcommand("convert", "Write the scene as read as an equivalent Lucent XML scene");
+  setHelp(cmd);
+  cmd->add_option("scene", convert.scene, "Scene file")->required();
+  cmd->add_option("-o,--output", convert.output, "XML scene to write (.xml)")->required();
+  cmd->add_option("--frame", convert.frame, "Convert this frame of an animation (default 1)");
   addCommonOptions(cmd, c.defines, c.allowPaths);
 }
 
@@ -128,6 +141,7 @@ int runCommand(const CLI::App& app, Commands& c) {
     if (*c.renderCmd) return runRender(c.render, common);
     if (*c.checkCmd) return runCheck(c.check, common);
     if (*c.exportCmd) return runExportPov(c.exportPov, common);
+    if (*c.convertCmd) return runConvert(c.convert, common);
     if (*c.compareCmd) return runCompare(c.compare, common);
     if (*c.schemaCmd) return runSchema(c.schemaOutput);
     return kUsage;
@@ -147,6 +161,7 @@ int main(int argc, char** argv) {
   addRender(app, commands);
   addCheck(app, commands);
   addExportPov(app, commands);
+  addConvert(app, commands);
   addCompare(app, commands);
   addSchema(app, commands);
 

@@ -430,7 +430,9 @@ const std::vector<CameraAttribute>& cameraAttributes() {
                                    "the bottom edge at -v-angle/2; above 0, at most 180. "
                                    "Default: half of h-angle (180).");
         a.read = [rule](Camera& c, AttributeInput& in) {
-          c.vAngle = in.number("v-angle", 0.5 * c.hAngle, rule);
+          // The camera's own value is the default handed to the input, as every reader of
+          // the table does, so that the scene writer reads it back (lang/attribute_probe.h).
+          c.vAngle = in.has("v-angle") ? in.number("v-angle", c.vAngle, rule) : 0.5 * c.hAngle;
         };
         return a;
       }(),

@@ -178,7 +178,11 @@ void readLookAt(Light& l, AttributeInput& in) {
 
 // The inner half-angle: by default the angle (read before it), never beyond it.
 void readInner(Light& l, AttributeInput& in) {
-  l.inner = in.number("inner", l.angle, NumberRule::between(0.0, 90.0, "an angle from 0 to 90"));
+  // The light's own value is the default handed to the input, as every reader of the table
+  // does, so that the scene writer reads it back through the same call (lang/attribute_probe.h).
+  l.inner = in.has("inner") ? in.number("inner", l.inner,
+                                        NumberRule::between(0.0, 90.0, "an angle from 0 to 90"))
+                            : l.angle;
   if (l.inner > l.angle)
     in.attrError("inner",
                  fmt::format("'inner' ({}) must not exceed 'angle' ({})", l.inner, l.angle));

@@ -1,0 +1,342 @@
+// The scene writer: settings, cameras, lights, fog, sky, materials and the node tree. The
+// attributes of shapes, cameras and lights come from their tables through AttributeProbe;
+// a value a table's reader cannot hand back is an error at the construct.
+#include "scene_writer.h"
+
+#include "attribute_probe.h"
+#include "scene_writer_out.h"
+#include "xml_numbers.h"
+
+#include "scenegraph/shape_type.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <set>
+
+namespace lucent {
+
+void XmlOut::source(const SourceLoc& loc) {
+  if (loc.file.empty()) return;
+  text += std::string(2 * depth, ' ') + "<!-- from " + xmlEscape(loc.str()) + " -->\n";
+}
+
+void XmlOut::open(const std::string& name, const Attributes& attributes, bool empty) {
+  text += std::string(2 * depth, ' ') + "<" + name;
+  for (const auto& [key, value] : attributes) text += " " + key + "=\"" + xmlEscape(value) + "\"";
+  text += empty ? "/>\n" : ">\n";
+  if (!empty) ++depth;
+}
+
+void XmlOut::close(const std::string& name) {
+  --depth;
+  text += std::string(2 * depth, ' ') + "</" + name + ">\n";
+}
+
+void cannotWrite(const SourceLoc& loc, const std::string& what) {
+  throw LocatedError(loc, "cannot convert: " + what);
+}
+
+std::string fileReference(const std::string& resolvedPath, const std::string& folder) {
+  namespace fs = std::filesystem;
+  const fs::path base = fs::absolute(folder.empty() ? fs::path(".") : fs::path(folder));
+  return fs::absolute(resolvedPath).lexically_normal().lexically_relative(base).generic_string();
+}
+
+namespace {
+
+// The values a table's reader reads back from `value`, minus those equal to the same
+// reader's on `plain` (the defaults), unless `all`.
+template <class T, class Read>
+Attributes probed(const T& value, const T& plain, Read read, const SourceLoc& loc,
+                  const std::string& element, bool all) {
+  AttributeProbe got, byDefault;
+  T copy = value, defaults = plain;
+  read(copy, got);
+  read(defaults, byDefault);
+  if (!got.unwritable.empty())
+    cannotWrite(loc, "the <" + element + "> attribute '" + got.unwritable.front() +
+                         "' cannot be written yet");
+  Attributes a;
+  for (const auto& [name, text] : got.values) {
+    const std::string* d = byDefault.find(name);
+    if (all || !d || *d != text) a.emplace_back(name, text);
+  }
+  return a;
+}
+
+class SceneWriter {
+ public:
+  SceneWriter(const Scene& scene, const WriteOptions& options) : scene_(scene), opt_(options) {}
+
+  std::string write() {
+    out_.text = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    out_.text += "<!-- Written by lucent convert from " + xmlEscape(scene_.file) +
+                 (scene_.animation.present ? ", frame " + std::to_string(scene_.frame) : "") +
+                 " -->\n<scene version=\"1\">\n";
+    writeSettings();
+    for (const Camera& c : scene_.cameras) writeCamera(c);
+    writeFog();
+    writeSky();
+    countMaterials();
+    writeSharedMaterials();
+    for (const auto& n : scene_.lightRoot->children) writeNode(*n);
+    for (const auto& n : scene_.root->children) writeNode(*n);
+    if (!scene_.defs.empty()) {
+      out_.open("defs", {}, false);
+      for (const auto& n : scene_.defs) writeNode(*n);
+      out_.close("defs");
+    }
+    out_.text += "</scene>\n";
+    return out_.text;
+  }
+
+ private:
+  const Scene& scene_;
+  WriteOptions opt_;
+  XmlOut out_;
+  std::map<uint32_t, int> uses_;           // material index: nodes that name it
+  std::map<uint32_t, std::string> named_;  // shared materials: their written id
+  // The nodes a <use> names: only they keep their id (the copies a <repeat> made of an
+  // element with an id all carry it, and the language wants each id once).
+  std::set<const Node*> targets_;
+
+  void writeSettings() {
+    const Animation& an = scene_.animation;
+    if (an.present) {
+      out_.text += "  <!-- every frame of this file is frame " + std::to_string(scene_.frame) +
+                   " of the scene it was converted from (clock " + xmlNumber(scene_.clock) +
+                   ") -->\n";
+      out_.open("animation",
+                {{"frames", std::to_string(an.frames)},
+                 {"clock-from", xmlNumber(an.clockFrom)},
+                 {"clock-to", xmlNumber(an.clockTo)},
+                 {"cyclic", an.cyclic ? "true" : "false"}},
+                true);
+    }
+    const RenderSettings& r = scene_.render;
+    Attributes a{{"width", std::to_string(r.width)},        {"height", std::to_string(r.height)},
+                 {"samples", std::to_string(r.samples)},    {"adaptive", xmlNumber(r.adaptive)},
+                 {"max-depth", std::to_string(r.maxDepth)}, {"min-weight", xmlNumber(r.minWeight)},
+                 {"background", xmlColor(r.background)},    {"ambient", xmlColor(r.ambient)}};
+    if (r.adaptive > 0.0) {
+      a.emplace_back("adaptive-mode",
+                     r.adaptiveMode == AdaptiveMode::Corners ? "corners" : "centers");
+      if (r.adaptiveMode == AdaptiveMode::Corners)
+        a.emplace_back("adaptive-depth", std::to_string(r.adaptiveDepth));
+    }
+    if (r.epsilon) a.emplace_back("epsilon", xmlNumber(*r.epsilon));
+    out_.source(r.loc);
+    out_.open("render", a, true);
+  }
+
+  void writeCamera(const Camera& c) {
+    Camera plain;
+    plain.type = c.type;
+    Attributes a{{"type", cameraTypeName(c.type)}};
+    if (!c.name.empty()) a.emplace_back("name", c.name);
+    if (c.transform != Mat4(1.0)) a.emplace_back("transform", xmlMatrix(c.transform));
+    for (const CameraAttribute& attr : cameraAttributes()) {
+      if (!attr.read || !attr.takenBy(c.type)) continue;
+      if (attr.info.name == "lenses") {  // a list the probe cannot read back
+        if (c.lensesX != plain.lensesX || c.lensesY != plain.lensesY)
+          a.emplace_back("lenses", std::to_string(c.lensesX) + " " + std::to_string(c.lensesY));
+        continue;
+      }
+      for (auto& kv : probed(c, plain, attr.read, c.loc, "camera", false)) a.push_back(kv);
+    }
+    out_.source(c.loc);
+    out_.open("camera", a, true);
+  }
+
+  Attributes lightAttributesOf(const Light& l) {
+    Light plain;
+    plain.type = l.type;
+    Attributes a{{"type", std::string(lightTypeInfo(l.type).name)}};
+    for (const LightAttribute& attr : lightAttributes()) {
+      if (!attr.read || !attr.takenBy(l.type)) continue;
+      const std::string& name = attr.info.name;
+      // What the table's readers compute rather than store: the grid of samples (a list),
+      // adaptive (absent or a level), an area light's cone (present when any of its
+      // attributes is), look-at (written as the direction).
+      if (name == "look-at") continue;
+      if (name == "samples") {
+        a.emplace_back("samples", std::to_string(l.samplesU) + " " + std::to_string(l.samplesV));
+        continue;
+      }
+      if (name == "adaptive") {
+        if (l.adaptive) a.emplace_back("adaptive", std::to_string(*l.adaptive));
+        continue;
+      }
+      const bool coneAttribute =
+          name == "direction" || name == "angle" || name == "inner" || name == "cone";
+      if (l.type == LightType::Area && coneAttribute && !l.cone) continue;
+      for (auto& kv : probed(l, plain, attr.read, l.loc, "light", coneAttribute)) a.push_back(kv);
+    }
+    return a;
+  }
+
+  void writeFog() {
+    if (!scene_.fog) return;
+    const Fog& f = *scene_.fog;
+    Attributes a{{"type", f.type == FogType::Ground ? "ground" : "constant"},
+                 {"color", xmlColor(f.color)},
+                 {"distance", xmlNumber(f.distance)},
+                 {"filter", xmlNumber(f.filter)},
+                 {"transmit", xmlNumber(f.transmit)}};
+    if (f.type == FogType::Ground) {
+      a.emplace_back("offset", xmlNumber(f.offset));
+      a.emplace_back("altitude", xmlNumber(f.altitude));
+      a.emplace_back("up", xmlVector(f.up));
+    }
+    out_.source(f.loc);
+    out_.open("fog", a, true);
+  }
+
+  void writeSky() {
+    if (!scene_.sky) return;
+    const Sky& s = *scene_.sky;
+    Attributes a;
+    if (s.skyFromWorld != Mat4(1.0))
+      a.emplace_back("transform", xmlMatrix(glm::inverse(s.skyFromWorld)));
+    out_.source(s.loc);
+    out_.open("sky", a, false);
+    writePatternTexture(s.pattern, s.loc, out_);
+    out_.close("sky");
+  }
+
+  void count(const Node& n) {
+    if (n.material) ++uses_[*n.material];
+    if (n.kind == NodeKind::Use && n.target) targets_.insert(n.target);
+    for (const auto& c : n.children) count(*c);
+  }
+  void countMaterials() {
+    count(*scene_.root);
+    count(*scene_.lightRoot);
+    // A <defs> child keeps its id whether or not a <use> names it (the language asks for one).
+    for (const auto& d : scene_.defs) {
+      count(*d);
+      targets_.insert(d.get());
+    }
+  }
+
+  // <material id=... default=...>...</material> with its children, or inline without id.
+  std::string materialText(const Material& m, const std::string& id, bool isDefault, int depth) {
+    Attributes a;
+    if (!id.empty()) a.emplace_back("id", id);
+    if (isDefault) a.emplace_back("default", "true");
+    for (auto& kv : materialAttributes(m)) a.push_back(kv);
+    XmlOut children;
+    children.depth = depth + 1;
+    writeMaterialChildren(m, children, opt_.folder);
+    XmlOut text;
+    text.depth = depth;
+    text.source(m.loc);
+    text.open("material", a, children.text.empty());
+    if (children.text.empty()) return text.text;
+    text.text += children.text;
+    text.close("material");
+    return text.text;
+  }
+
+  void writeMaterial(const Material& m, const std::string& id, bool isDefault = false) {
+    out_.text += materialText(m, id, isDefault, out_.depth);
+  }
+
+  // Materials named by more than one node are written once with an id; so is the default
+  // material (index 0) when the scene made one of its own (default="true").
+  void writeSharedMaterials() {
+    const Material& builtIn = Material::defaultMaterial();
+    const Material& first = scene_.materials.front();
+    if (materialText(first, "", false, 0) != materialText(builtIn, "", false, 0) ||
+        first.id != builtIn.id) {
+      named_[0] = first.id.empty() || first.id == builtIn.id ? "default-material" : first.id;
+      writeMaterial(first, named_[0], true);
+    }
+    for (const auto& [index, n] : uses_) {
+      if (n < 2 || index == 0) continue;
+      const Material& m = scene_.materials.at(index);
+      const bool ownId = !m.id.empty() && m.id != builtIn.id;
+      named_[index] = ownId ? m.id : "material-" + std::to_string(index);
+      writeMaterial(m, named_[index]);
+    }
+  }
+
+  Attributes shapeAttributes(const Node& n) {
+    return std::visit(
+        [&](const auto& spec) {
+          using S = std::decay_t<decltype(spec)>;
+          const ShapeEntry<S> entry = shapeEntry<S>();
+          Attributes a;
+          if constexpr (std::is_same_v<S, MeshSpec>) {
+            if (spec.src.empty()) cannotWrite(n.loc, "an inline <mesh> cannot be written yet");
+            // src as written, relative to the file that wrote it.
+            const auto from = std::filesystem::path(n.loc.file).parent_path() / spec.src;
+            a.emplace_back("src", fileReference(from.string(), opt_.folder));
+            static const char* smooth[] = {"auto", "true", "false"};
+            a.emplace_back("smooth", smooth[static_cast<int>(spec.smooth)]);
+            return a;
+          }
+          for (const Field<S>& f : entry.fields) {
+            if (!f.read)
+              cannotWrite(n.loc, "the <" + std::string(entry.element) + "> attribute '" +
+                                     f.info.name + "' cannot be written yet");
+            for (auto& kv : probed(spec, spec, f.read, n.loc, entry.element, true)) a.push_back(kv);
+          }
+          // What an entry's finish() reads itself (child elements, attributes read together)
+          // the fields above do not give back.
+          if (entry.finish) {
+            AttributeProbe rest;
+            S copy = spec;
+            entry.finish(copy, rest);
+            for (const auto& kv : rest.values)
+              if (std::none_of(a.begin(), a.end(),
+                               [&](const auto& w) { return w.first == kv.first; }))
+                rest.unwritable.push_back(kv.first);
+            if (!rest.unwritable.empty())
+              cannotWrite(n.loc, "the <" + std::string(entry.element) + "> attribute or child '" +
+                                     rest.unwritable.front() + "' cannot be written yet");
+          }
+          return a;
+        },
+        *n.shape);
+  }
+
+  void writeNode(const Node& n) {
+    Attributes a;
+    if (!n.id.empty() && targets_.count(&n)) a.emplace_back("id", n.id);
+    std::string element = n.element;
+    if (n.kind == NodeKind::Shape) {
+      for (auto& kv : shapeAttributes(n)) a.push_back(kv);
+    } else if (n.kind == NodeKind::Use) {
+      if (!n.target || n.target->id.empty())
+        cannotWrite(n.loc, "a <use> whose target has no id cannot be written");
+      a.emplace_back("ref", n.target->id);
+    } else if (n.kind == NodeKind::Light) {
+      element = "light";
+      for (auto& kv : lightAttributesOf(*n.light)) a.push_back(kv);
+    } else {
+      element = nodeKindName(n.kind);
+    }
+    if (n.parentFromNode != Mat4(1.0)) a.emplace_back("transform", xmlMatrix(n.parentFromNode));
+    if (!n.shadows) a.emplace_back("shadows", "false");
+    if (n.inverse) a.emplace_back("inverse", "true");
+    const bool inlineMaterial = n.material && !named_.count(*n.material);
+    if (n.material && !inlineMaterial) a.emplace_back("material", named_.at(*n.material));
+    out_.source(n.loc);
+    const bool empty = !inlineMaterial && n.children.empty();
+    out_.open(element, a, empty);
+    if (empty) return;
+    if (inlineMaterial) writeMaterial(scene_.materials.at(*n.material), "");
+    for (const auto& c : n.children) writeNode(*c);
+    out_.close(element);
+  }
+};
+
+}  // namespace
+
+std::string writeSceneXml(const Scene& scene, const WriteOptions& options) {
+  return SceneWriter(scene, options).write();
+}
+
+}  // namespace lucent

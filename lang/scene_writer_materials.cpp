@@ -1,0 +1,143 @@
+// The scene writer's materials, textures and patterns: the finish terms through the finish
+// table, each texture kind by its element name from the kinds' table, patterns by the
+// pattern table's names.
+#include "attribute_probe.h"
+#include "scene_writer_out.h"
+#include "xml_numbers.h"
+
+#include "scenegraph/finish_terms.h"
+
+#include <variant>
+
+namespace lucent {
+
+namespace {
+
+const char* waveName(WaveShape w) {
+  static const char* names[] = {"ramp", "sine", "triangle", "scallop", "cubic", "poly"};
+  return names[static_cast<int>(w)];
+}
+
+// Where a pattern element sits and how turbulence displaces it (lang/pattern_parser.cpp's
+// placement attributes), written where they differ from the defaults.
+void addPlacement(const PatternPlacement& p, Attributes& a) {
+  const PatternPlacement d;
+  if (p.patternFromObject != Mat4(1.0))
+    a.emplace_back("transform", xmlMatrix(glm::inverse(p.patternFromObject)));
+  if (p.turbulence != Vec3(0.0)) a.emplace_back("turbulence", xmlVector(p.turbulence));
+  if (p.octaves != d.octaves) a.emplace_back("octaves", std::to_string(p.octaves));
+  if (p.omega != d.omega) a.emplace_back("omega", xmlNumber(p.omega));
+  if (p.lambda != d.lambda) a.emplace_back("lambda", xmlNumber(p.lambda));
+}
+
+// The attributes of <pattern> and <normal>: the type by the pattern table's name, the
+// placement and the value's modifiers, written only where they differ from the defaults.
+Attributes patternAttributes(const PatternSpec& s, const SourceLoc& loc) {
+  const PatternSpec d;
+  if (s.crackle.metric != d.crackle.metric || s.crackle.form != d.crackle.form ||
+      s.crackle.offset != d.crackle.offset || s.crackle.solid != d.crackle.solid)
+    cannotWrite(loc, "crackle's metric, form, offset and solid have no attributes yet");
+  Attributes a{{"type", std::string(patternTypeInfo(s.type).name)}};
+  addPlacement(s.placement, a);
+  if (s.axis != d.axis) a.emplace_back("axis", xmlVector(s.axis));
+  if (s.arms != d.arms) a.emplace_back("arms", std::to_string(s.arms));
+  if (s.frequency != d.frequency) a.emplace_back("frequency", xmlNumber(s.frequency));
+  if (s.phase != d.phase) a.emplace_back("phase", xmlNumber(s.phase));
+  if (s.wave) a.emplace_back("wave", waveName(*s.wave));
+  if (s.exponent != d.exponent) a.emplace_back("exponent", xmlNumber(s.exponent));
+  if (s.noiseGenerator != d.noiseGenerator)
+    a.emplace_back("noise-generator", std::to_string(s.noiseGenerator));
+  return a;
+}
+
+void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
+                  const std::string& folder) {
+  std::visit(
+      [&](const auto& t) {
+        using T = std::decay_t<decltype(t)>;
+        if constexpr (std::is_same_v<T, std::monostate>) {
+          return;
+        } else if constexpr (std::is_same_v<T, CheckerTexture>) {
+          out.open(std::string(T::kind.element),
+                   {{"color1", xmlColor(t.color1)},
+                    {"color2", xmlColor(t.color2)},
+                    {"scale", xmlNumber(t.scale)}},
+                   true);
+        } else if constexpr (std::is_same_v<T, ImageTexture>) {
+          out.open(std::string(T::kind.element),
+                   {{"src", fileReference(t.path, folder)},
+                    {"scale", xmlNumber(t.scale.x) + " " + xmlNumber(t.scale.y)}},
+                   true);
+        } else if constexpr (std::is_same_v<T, PatternTexture>) {
+          writePatternTexture(t, loc, out);
+        } else if constexpr (std::is_same_v<T, HexagonTexture>) {
+          Attributes a{{"color1", xmlColor(t.spec.colors[0])},
+                       {"color2", xmlColor(t.spec.colors[1])},
+                       {"color3", xmlColor(t.spec.colors[2])}};
+          addPlacement(t.placement, a);
+          out.open(std::string(T::kind.element), a, true);
+        } else if constexpr (std::is_same_v<T, BrickTexture>) {
+          Attributes a{{"color1", xmlColor(t.spec.color1)},
+                       {"color2", xmlColor(t.spec.color2)},
+                       {"mortar", xmlNumber(t.spec.mortar)},
+                       {"size", xmlVector(t.spec.size)}};
+          addPlacement(t.placement, a);
+          out.open(std::string(T::kind.element), a, true);
+        } else {
+          // A kind added to Texture without its writer here is an error at the material
+          // until it has one, never a material written without its texture.
+          cannotWrite(loc,
+                      "a <" + std::string(T::kind.element) + "> texture cannot be written yet");
+        }
+      },
+      texture);
+}
+
+}  // namespace
+
+void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out) {
+  const Attributes a = patternAttributes(t.pattern, loc);
+  if (t.map.entries.empty()) return out.open("pattern", a, true);
+  out.open("pattern", a, false);
+  out.open("color-map", {}, false);
+  for (const ColorMapEntry& e : t.map.entries)
+    out.open("entry", {{"at", xmlNumber(e.at)}, {"color", xmlColor(e.color)}}, true);
+  out.close("color-map");
+  out.close("pattern");
+}
+
+Attributes materialAttributes(const Material& m) {
+  Attributes a;
+  const Material defaults;
+  for (const FinishTerm& term : finishTerms()) {
+    // Each term's value, and the default's: only what differs is written.
+    AttributeProbe value, byDefault;
+    Material copy = m, plain = defaults;
+    term.read(copy, value);
+    term.read(plain, byDefault);
+    if (!value.unwritable.empty())
+      cannotWrite(m.loc, "the <material> attribute '" + value.unwritable.front() +
+                             "' cannot be written yet");
+    for (const auto& [name, text] : value.values) {
+      const std::string* d = byDefault.find(name);
+      if (!d || *d != text) a.emplace_back(name, text);
+    }
+  }
+  return a;
+}
+
+void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& folder) {
+  writeTexture(m.texture, m.loc, out, folder);
+  if (m.normal) {
+    Attributes a = patternAttributes(m.normal->pattern, m.loc);
+    a.emplace_back("depth", xmlNumber(m.normal->depth));
+    out.open("normal", a, true);
+  }
+  if (m.bumpMap)
+    out.open(
+        "bump-map",
+        {{"src", fileReference(m.bumpMap->path, folder)}, {"depth", xmlNumber(m.bumpMap->depth)}},
+        true);
+}
+
+}  // namespace lucent
