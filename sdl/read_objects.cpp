@@ -43,6 +43,14 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
   PovObject o;
   o.keyword = std::string(t.text());
   o.loc = t.loc();
+  // Objects within objects recurse on the C++ stack: bounded, as the core bounds expressions.
+  if (objectDepth_ >= kMaxObjectDepth)
+    in.error(t, "objects nested more than " + std::to_string(kMaxObjectDepth) + " deep");
+  struct Depth {
+    int& d;
+    explicit Depth(int& depth) : d(++depth) {}
+    ~Depth() { --d; }
+  } depth(objectDepth_);
   if (o.keyword == "light_source") {
     o.kind = NodeKind::Light;
     o.light = readLight(o.loc, in);

@@ -155,6 +155,8 @@ class SceneReader : public ItemReader {
   SourceLoc globalLoc_;
   PovBackground background_;
   std::set<std::string> warned_;  // each warning said once per place
+  int objectDepth_ = 0;           // objects being read within each other
+  static constexpr int kMaxObjectDepth = 1000;
 };
 
 // What loading a POV-Ray scene gives: the scene, or null with the errors; warnings go to

@@ -331,3 +331,22 @@ sky_sphere { pigment { gradient y color_map { [0 rgb 1] [1 color rgb <0, 0, 1>] 
   checkVec(s.sky->pattern.pattern.axis, want.pattern.pattern.axis);
   checkMat(s.sky->skyFromWorld, want.skyFromWorld);
 }
+
+TEST_CASE(
+    "scene reader: an unsupported feature in a macro names the call, and nesting is "
+    "bounded",
+    "[sdl][scene][errors]") {
+  const auto errors = errorsOf(
+      "#macro Glow()\n  sphere { 0, 1 interior { media { } } }\n#end\n"
+      "Glow()\nGlow()\n");
+  REQUIRE(errors.size() == 2);
+  CHECK(errors[0] ==
+        "test.pov:2:28: error: 'media' is not supported by Lucent (participating media; the "
+        "nearest Lucent feature is <fog>)\ntest.pov:4:1: note: in macro 'Glow' called here");
+  CHECK(errors[1].find("test.pov:5:1: note: in macro 'Glow' called here") != std::string::npos);
+  std::string deep;
+  for (int i = 0; i < 1001; ++i) deep += "union { ";
+  const auto nested = errorsOf(deep);
+  REQUIRE(nested.size() == 1);
+  CHECK(nested[0] == "test.pov:1:8001: error: objects nested more than 1000 deep");
+}
