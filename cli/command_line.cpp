@@ -83,6 +83,13 @@ void addCommonOptions(CLI::App* app, std::vector<std::string>& defines,
   app->allow_extras();
 }
 
+void addFormatOption(CLI::App* app, std::string& format) {
+  app->add_option("--format", format,
+                  "The scene's language: pov (POV-Ray 3.7) or xml (default: the extension "
+                  "decides; .pov and .inc are POV-Ray's)")
+      ->check(CLI::IsMember({"pov", "xml"}));
+}
+
 // Arguments the command does not take, as CLI11 words it. An unknown option comes first,
 // alone (what follows it may be its value) and with a hint if it is a misspelling.
 std::string unexpectedArguments(const CLI::App* app, const std::vector<std::string>& extras) {

@@ -36,6 +36,8 @@ std::optional<std::string> overrideProblem(const std::string& name,
 struct CommonOptions {
   std::map<std::string, std::string> defines;  // -D name=value
   std::vector<std::string> allowPaths;         // --allow-path DIR[:DIR...]
+  // --format pov|xml: the scene's language; empty: its extension decides (load_pov_scene.h).
+  std::string format;
 };
 
 struct RenderOptions {

@@ -1,6 +1,7 @@
 #include "load_scene.h"
 
 #include "exit_status.h"
+#include "load_pov_scene.h"
 
 #include "lang/parser.h"
 #include "render/scene_check.h"
@@ -61,7 +62,9 @@ LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) 
     if (request.heldMessages) request.heldMessages->push_back(line);
     else fmt::print(stderr, "{}\n", line);
   };
-  ParseResult parsed = parseSceneFile(request.scene, options);
+  ParseResult parsed = isPovScene(request.scene, common.format)
+                           ? parsePovScene(request, common)
+                           : parseSceneFile(request.scene, options);
   for (const Diagnostic& d : parsed.diagnostics.all()) {
     if (request.quiet && d.severity != Severity::Error) continue;
     std::string line = d.str();

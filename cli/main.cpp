@@ -42,6 +42,7 @@ bool checkCommandName(int argc, char** argv) {
 // Every command's options as parsed, and the subcommand CLI11 matched.
 struct Commands {
   std::vector<std::string> defines, allowPaths;  // -D and --allow-path, of any command
+  std::string format;                            // --format, of render and check
   RenderOptions render;
   CheckOptions check;
   ExportPovOptions exportPov;
@@ -57,6 +58,7 @@ void addRender(CLI::App& app, Commands& c) {
   setHelp(c.renderCmd);
   addRenderOptions(c.renderCmd, c.render);
   addCommonOptions(c.renderCmd, c.defines, c.allowPaths);
+  addFormatOption(c.renderCmd, c.format);
 }
 
 void addCheck(CLI::App& app, Commands& c) {
@@ -71,6 +73,7 @@ void addCheck(CLI::App& app, Commands& c) {
   cmd->add_option("--max-depth", check.maxDepth, "Maximum recursion depth (as render)");
   cmd->add_option("--camera", check.camera, "Validate the camera with this name");
   addCommonOptions(cmd, c.defines, c.allowPaths);
+  addFormatOption(cmd, c.format);
 }
 
 void addExportPov(CLI::App& app, Commands& c) {
@@ -137,6 +140,7 @@ int runCommand(const CLI::App& app, Commands& c) {
             fmt::format("\nRun 'lucent {} --help' for more information.", cmd->get_name()));
     CommonOptions common;
     takeCommonOptions(c.defines, c.allowPaths, common);
+    common.format = c.format;
 
     if (*c.renderCmd) return runRender(c.render, common);
     if (*c.checkCmd) return runCheck(c.check, common);

@@ -1,0 +1,119 @@
+// What surrounds the objects: fog and sky_sphere (a gradient pigment with a colour map).
+#include "read_support.h"
+#include "scene_reader.h"
+
+namespace lucent::sdl {
+
+namespace {
+
+// `color_map { [at colour] ... }` (the '{' read); entries in the order written.
+std::vector<ColorMapEntry> readColorMap(TokenStream& in) {
+  std::vector<ColorMapEntry> map;
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) return map;
+    if (!t.is("[")) in.error(t, "'[' or '}' expected in color_map, not " + t.describe());
+    ColorMapEntry e;
+    e.at = in.parseFloat();
+    in.parseComma();
+    if (in.peek().kind == TokenKind::Number)
+      in.error(in.peek(), "color_map entries of two values ([a b colour colour]) are not read yet");
+    e.color = readColour(in).rgb;
+    in.expect("]");
+    map.push_back(e);
+  }
+}
+
+}  // namespace
+
+void SceneReader::readFog(const SourceLoc& loc, TokenStream& in) {
+  PovFog fog;
+  fog.loc = loc;
+  in.expect("{");
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) break;
+    if (readTransform(t, in, fog.transform)) continue;
+    const std::string_view w = t.kind == TokenKind::Keyword ? t.text() : "";
+    if (w == "fog_type") {
+      fog.type = static_cast<int>(in.parseFloat());
+    } else if (w == "distance") {
+      fog.distance = in.parseFloat();
+    } else if (w == "fog_offset") {
+      fog.offset = in.parseFloat();
+    } else if (w == "fog_alt") {
+      fog.altitude = in.parseFloat();
+    } else if (w == "up") {
+      fog.up = toVec3(in.parseVector());
+    } else if (w == "turbulence") {
+      fog.turbulence = true;
+      in.parseVector();
+    } else if (w == "omega" || w == "lambda" || w == "octaves" || w == "turb_depth") {
+      in.parseFloat();  // turbulence's parameters: the turbulence itself is not imported
+    } else if (w == "color" || w == "colour" ||
+               (t.kind == TokenKind::Keyword && isColourKey(t.kw)) || startsNumber(t)) {
+      in.unget();
+      const PovColour c = readColour(in);
+      fog.color = c.rgb;
+      fog.filter = c.filter;
+      fog.transmit = c.transmit;
+    } else {
+      unreadInBlock(t, in);
+      return;
+    }
+  }
+  const FogImport imported = importFog(fog);
+  if (!imported.error.empty()) {
+    keepError(in, loc, imported.error);
+    return;
+  }
+  for (const std::string& d : imported.differences) warn(in, loc, d);
+  if (scene_.fog)
+    warn(in, loc, "POV-Ray layers several fogs; Lucent has one: the last is imported");
+  scene_.fog = imported.fog;
+}
+
+void SceneReader::readSkySphere(const SourceLoc& loc, TokenStream& in) {
+  PovSkySphere sky;
+  sky.loc = loc;
+  in.expect("{");
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) break;
+    if (readTransform(t, in, sky.transform)) continue;
+    if (!isWord(t, "pigment")) {
+      unreadInBlock(t, in);
+      return;
+    }
+    PovSkyGradient g;
+    in.expect("{");
+    bool gradient = false;
+    for (;;) {
+      const Token k = in.next();
+      if (k.is("}")) break;
+      if (readTransform(k, in, g.transform)) continue;
+      if (isWord(k, "gradient")) {
+        gradient = true;
+        g.axis = toVec3(in.parseVector());
+      } else if (isWord(k, "color_map") || isWord(k, "colour_map")) {
+        in.expect("{");
+        g.colorMap = readColorMap(in);
+      } else {
+        unreadInBlock(k, in);
+        return;
+      }
+    }
+    if (!gradient)
+      keepError(in, t.loc(), "a sky_sphere's pigment other than a gradient is not read yet");
+    sky.pigments.push_back(g);
+  }
+  const SkyImport imported = importSkySphere(sky);
+  if (!imported.error.empty()) {
+    keepError(in, loc, imported.error);
+    return;
+  }
+  for (const std::string& d : imported.differences) warn(in, loc, d);
+  scene_.sky = imported.sky;
+}
+
+}  // namespace lucent::sdl

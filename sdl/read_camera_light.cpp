@@ -1,0 +1,204 @@
+// The camera, light sources, global_settings and background.
+#include "read_support.h"
+#include "scene_reader.h"
+
+namespace lucent::sdl {
+
+namespace {
+
+// `area_light <axis1>, <axis2>, n1, n2` and its modifiers, which POV-Ray accepts before or
+// after it (they count only with one).
+void readAreaLight(const Token& t, TokenStream& in, PovLight& l) {
+  if (!l.area) {
+    l.area = PovAreaLight{};
+    l.area->size1 = l.area->size2 = 1;  // a point light until area_light gives a grid
+  }
+  PovAreaLight& a = *l.area;
+  if (isWord(t, "area_light")) {
+    a.axis1 = toVec3(in.parseVector());
+    in.parseComma();
+    a.axis2 = toVec3(in.parseVector());
+    in.parseComma();
+    a.size1 = static_cast<int>(in.parseFloat());
+    in.parseComma();
+    a.size2 = static_cast<int>(in.parseFloat());
+    if (a.size1 < 1 || a.size2 < 1) in.error(t, "an area light needs at least 1 light a side");
+  } else if (isWord(t, "adaptive")) {
+    a.adaptive = static_cast<int>(in.parseFloat());
+  } else if (isWord(t, "jitter")) {
+    a.jitter = optionalBool(in);
+  } else if (isWord(t, "circular")) {
+    a.circular = optionalBool(in);
+  } else {
+    a.orient = optionalBool(in);
+  }
+}
+
+}  // namespace
+
+PovCamera SceneReader::readCamera(TokenStream& in) {
+  PovCamera c;
+  in.expect("{");
+  if (const auto* item = dynamic_cast<const CameraItem*>(itemOf(in.peek()))) {
+    in.next();
+    c = item->camera;
+  }
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) return c;
+    if (readTransform(t, in, c.transform)) continue;
+    const std::string_view w = t.kind == TokenKind::Keyword ? t.text() : "";
+    if (w == "perspective") c.type = PovCameraType::Perspective;
+    else if (w == "orthographic") c.type = PovCameraType::Orthographic;
+    else if (w == "fisheye") c.type = PovCameraType::Fisheye;
+    else if (w == "ultra_wide_angle") c.type = PovCameraType::UltraWideAngle;
+    else if (w == "omnimax") c.type = PovCameraType::Omnimax;
+    else if (w == "panoramic") c.type = PovCameraType::Panoramic;
+    else if (w == "spherical") c.type = PovCameraType::Spherical;
+    else if (w == "cylinder") {
+      c.type = PovCameraType::Cylinder;
+      c.cylinderType = static_cast<int>(in.parseFloat());
+    } else if (w == "location") {
+      c.location = toVec3(in.parseVector());
+    } else if (w == "direction") {
+      c.direction = toVec3(in.parseVector());
+    } else if (w == "right") {
+      c.right = toVec3(in.parseVector());
+      c.rightGiven = true;
+    } else if (w == "up") {
+      c.up = toVec3(in.parseVector());
+      c.upGiven = true;
+    } else if (w == "sky") {
+      c.sky = toVec3(in.parseVector());
+    } else if (w == "look_at") {
+      c.lookAt = toVec3(in.parseVector());
+    } else if (w == "angle") {
+      c.angle = in.parseFloat();
+      if (startsNumber(in.peek()) || in.peek().is(",")) {
+        in.parseComma();
+        c.verticalAngle = in.parseFloat();
+      }
+    } else if (w == "aperture" || w == "blur_samples" || w == "focal_point" || w == "confidence" ||
+               w == "variance") {
+      // Focal blur: read and left out, said (docs/povray-import.md, "Camera").
+      if (w == "focal_point") {
+        in.parseVector();
+      } else {
+        in.parseFloat();
+        if (w == "blur_samples" && (startsNumber(in.peek()) || in.peek().is(","))) {
+          in.parseComma();
+          in.parseFloat();
+        }
+      }
+      warn(in, t.loc(), "focal blur ('" + std::string(w) + "') is not imported");
+    } else {
+      unreadInBlock(t, in);
+      return c;
+    }
+  }
+}
+
+PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
+  PovLight l;
+  l.loc = loc;
+  in.expect("{");
+  if (const auto* item = dynamic_cast<const ObjectItem*>(itemOf(in.peek()));
+      item && item->object.light) {
+    in.next();
+    l = *item->object.light;
+    l.transform = l.transform.then(item->object.transform);
+    l.loc = loc;
+  } else {
+    l.location = toVec3(in.parseVector());
+    in.parseComma();
+    l.color = readColour(in).rgb;
+  }
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) return l;
+    if (readTransform(t, in, l.transform)) continue;
+    const std::string_view w = t.kind == TokenKind::Keyword ? t.text() : "";
+    if (w == "color" || w == "colour" || (t.kind == TokenKind::Keyword && isColourKey(t.kw))) {
+      in.unget();
+      l.color = readColour(in).rgb;
+    } else if (w == "spotlight") {
+      l.kind = PovLightKind::Spotlight;
+    } else if (w == "cylinder") {
+      l.kind = PovLightKind::Cylinder;
+    } else if (w == "parallel") {
+      l.parallel = true;
+    } else if (w == "point_at") {
+      l.pointAt = toVec3(in.parseVector());
+    } else if (w == "radius") {
+      l.radius = in.parseFloat();
+    } else if (w == "falloff") {
+      l.falloff = in.parseFloat();
+    } else if (w == "tightness") {
+      l.tightness = in.parseFloat();
+    } else if (w == "area_light" || w == "adaptive" || w == "jitter" || w == "circular" ||
+               w == "orient") {
+      readAreaLight(t, in, l);
+    } else if (w == "shadowless") {
+      l.shadowless = true;
+    } else if (w == "fade_distance") {
+      l.fadeDistance = in.parseFloat();
+    } else if (w == "fade_power") {
+      l.fadePower = in.parseFloat();
+    } else if (w == "media_interaction" || w == "media_attenuation") {
+      optionalBool(in);  // only media would see it, and media are refused
+    } else if (w == "looks_like") {
+      l.looksLike = true;
+      in.expect("{");
+      const Token o = in.next();
+      if (isObjectKeyword(o)) readObject(o, in);
+      else if (!dynamic_cast<const ObjectItem*>(itemOf(o)))
+        in.error(o, "an object expected in looks_like, not " + o.describe());
+      PovObject ignored;
+      readObjectModifiers(ignored, in);
+    } else {
+      unreadInBlock(t, in);
+      return l;
+    }
+  }
+}
+
+void SceneReader::readGlobalSettings(TokenStream& in) {
+  in.expect("{");
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) return;
+    const std::string_view w = t.kind == TokenKind::Keyword ? t.text() : "";
+    if (w == "assumed_gamma") {
+      global_.assumedGamma = in.parseFloat();
+      in.setAssumedGamma(*global_.assumedGamma);
+    } else if (w == "max_trace_level") {
+      global_.maxTraceLevel = static_cast<int>(in.parseFloat());
+    } else if (w == "adc_bailout") {
+      global_.adcBailout = in.parseFloat();
+    } else if (w == "ambient_light") {
+      global_.ambientLight = readColour(in).rgb;
+    } else if (w == "max_intersections" || w == "number_of_waves" || w == "noise_generator" ||
+               w == "mm_per_unit") {
+      in.parseFloat();  // no effect on Lucent's image
+    } else if (w == "hf_gray_16") {
+      optionalBool(in);
+    } else if (w == "irid_wavelength") {
+      readColour(in);
+      warn(in, t.loc(), "irid_wavelength is not imported (Lucent's irid uses POV-Ray's default)");
+    } else if (w == "charset") {
+      in.next();  // ascii, utf8 or sys: the core reads strings as bytes either way
+    } else if (t.kind == TokenKind::Keyword) {
+      unsupported(t, in, true);
+    } else {
+      in.error(t, "unexpected " + t.describe() + " in global_settings");
+    }
+  }
+}
+
+void SceneReader::readBackground(TokenStream& in) {
+  in.expect("{");
+  background_.color = readColour(in).rgb;
+  in.expect("}");
+}
+
+}  // namespace lucent::sdl

@@ -1,0 +1,274 @@
+// Objects: the simple shapes, CSG, `object { Identifier ... }`, light sources as objects,
+// and the object modifiers (transforms, texture, interior, flags).
+#include "read_support.h"
+#include "scene_reader.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lucent::sdl {
+
+namespace {
+
+constexpr std::string_view kShapes[] = {"sphere", "box",   "plane", "cylinder",
+                                        "cone",   "torus", "disc",  "triangle"};
+
+NodeKind csgKind(std::string_view word) {
+  if (word == "union") return NodeKind::Union;
+  if (word == "merge") return NodeKind::Merge;
+  if (word == "intersection") return NodeKind::Intersection;
+  if (word == "difference") return NodeKind::Difference;
+  return NodeKind::Group;
+}
+
+Vec3 point(TokenStream& in) { return lucentFromPov(toVec3(in.parseVector())); }
+
+// A direction made unit, or an error at `at` when it has no length.
+Vec3 unitDirection(TokenStream& in, const Token& at, const Vec3& v, const char* what) {
+  const double len = glm::length(v);
+  if (!(len > 0.0)) in.error(at, std::string("the ") + what + " has no length");
+  return v / len;
+}
+
+}  // namespace
+
+bool SceneReader::isObjectKeyword(const Token& t) const {
+  if (t.kind != TokenKind::Keyword) return false;
+  const std::string_view w = t.text();
+  return std::find(std::begin(kShapes), std::end(kShapes), w) != std::end(kShapes) ||
+         csgKind(w) != NodeKind::Group || w == "object" || w == "light_source";
+}
+
+PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
+  PovObject o;
+  o.keyword = std::string(t.text());
+  o.loc = t.loc();
+  // Objects within objects recurse on the C++ stack: bounded, as the core bounds expressions.
+  if (objectDepth_ >= kMaxObjectDepth)
+    in.error(t, "objects nested more than " + std::to_string(kMaxObjectDepth) + " deep");
+  struct Depth {
+    int& d;
+    explicit Depth(int& depth) : d(++depth) {}
+    ~Depth() { --d; }
+  } depth(objectDepth_);
+  if (o.keyword == "light_source") {
+    o.kind = NodeKind::Light;
+    o.light = readLight(o.loc, in);
+    return o;
+  }
+  in.expect("{");
+  if (o.keyword == "object") {
+    const Token first = in.next();
+    const auto* item = dynamic_cast<const ObjectItem*>(itemOf(first));
+    if (item) {
+      o = item->object;
+    } else if (isObjectKeyword(first)) {
+      o = readObject(first, in);
+    } else {
+      in.error(first, "an object identifier or an object expected after 'object {', not " +
+                          first.describe());
+    }
+  } else if (csgKind(o.keyword) != NodeKind::Group) {
+    o.kind = csgKind(o.keyword);
+    while (isObjectKeyword(in.peek())) {
+      const Token child = in.next();
+      o.children.push_back(readObject(child, in));
+    }
+  } else {
+    readShape(o, in);
+  }
+  readObjectModifiers(o, in);
+  return o;
+}
+
+// The shape's own parameters, as POV-Ray writes them, into Lucent's space.
+void SceneReader::readShape(PovObject& o, TokenStream& in) {
+  const Token at = in.current();
+  const std::string& w = o.keyword;
+  if (w == "sphere") {
+    SphereSpec s;
+    s.center = point(in);
+    in.parseComma();
+    s.radius = in.parseFloat();
+    o.shape = s;
+  } else if (w == "box") {
+    const Vec3 a = point(in);
+    in.parseComma();
+    const Vec3 b = point(in);
+    o.shape = BoxSpec{glm::min(a, b), glm::max(a, b)};
+  } else if (w == "plane") {
+    // POV-Ray makes the normal unit and divides the distance by its length.
+    const Vec3 n = toVec3(in.parseVector());
+    in.parseComma();
+    const double d = in.parseFloat();
+    const double len = glm::length(n);
+    if (!(len > 0.0)) in.error(at, "the plane's normal has no length");
+    o.shape = PlaneSpec{lucentFromPov(n / len), d / len};
+  } else if (w == "cylinder") {
+    CylinderSpec s;
+    s.base = point(in);
+    in.parseComma();
+    s.cap = point(in);
+    in.parseComma();
+    s.radius = in.parseFloat();
+    o.shape = s;
+  } else if (w == "cone") {
+    ConeSpec s;
+    s.base = point(in);
+    in.parseComma();
+    s.baseRadius = in.parseFloat();
+    in.parseComma();
+    s.cap = point(in);
+    in.parseComma();
+    s.capRadius = in.parseFloat();
+    o.shape = s;
+  } else if (w == "torus") {
+    TorusSpec s;
+    s.major = in.parseFloat();
+    in.parseComma();
+    s.minor = in.parseFloat();
+    o.shape = s;  // in the xz-plane about y: the same in both spaces
+  } else if (w == "disc") {
+    DiscSpec s;
+    s.center = point(in);
+    in.parseComma();
+    s.normal = unitDirection(in, at, point(in), "disc's normal");
+    in.parseComma();
+    s.radius = in.parseFloat();
+    if (in.allow(",")) s.innerRadius = in.parseFloat();
+    o.shape = s;
+  } else if (w == "triangle") {
+    TriangleSpec s;
+    s.a = point(in);
+    in.parseComma();
+    s.b = point(in);
+    in.parseComma();
+    s.c = point(in);
+    o.shape = s;
+  }
+}
+
+void SceneReader::readObjectModifiers(PovObject& o, TokenStream& in) {
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) return;
+    if (readObjectModifier(t, o, in)) continue;
+    if (t.kind != TokenKind::Keyword)
+      in.error(t, "unexpected " + t.describe() + " in " + o.keyword);
+    unsupported(t, in, true);
+  }
+}
+
+bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& in) {
+  if (readTransform(t, in, o.transform)) return true;
+  if (t.kind != TokenKind::Keyword) return false;
+  const std::string_view w = t.text();
+  if (w == "pigment" || w == "finish" || w == "texture") {
+    if (!o.texture) {
+      o.texture = defaultTexture();
+      o.textureLoc = t.loc();
+    }
+    if (w == "pigment") o.texture->pigment = readPigment(in, defaults_.pigment);
+    else if (w == "finish") o.texture->finish = readFinish(in, defaults_.finish);
+    else *o.texture = readTexture(in, defaultTexture());
+  } else if (w == "interior") {
+    o.interior = readInterior(in, o.interior ? *o.interior : PovInterior{});
+  } else if (w == "material") {
+    const PovMaterial m = readMaterial(in);
+    if (m.texture) {
+      o.texture = m.texture;
+      o.textureLoc = t.loc();
+    }
+    if (m.interior) o.interior = m.interior;
+  } else if (w == "no_shadow") {
+    o.noShadow = true;
+  } else if (w == "hollow") {
+    optionalBool(in);  // Lucent has no media for hollow to matter to
+  } else if (w == "inverse") {
+    o.inverse = !o.inverse;
+  } else if (w == "sturm") {
+    optionalBool(in);  // Lucent's root finding needs no choice
+  } else if (w == "open") {
+    const bool open = optionalBool(in);
+    if (o.shape && std::holds_alternative<CylinderSpec>(*o.shape))
+      std::get<CylinderSpec>(*o.shape).open = open;
+    else if (o.shape && std::holds_alternative<ConeSpec>(*o.shape))
+      std::get<ConeSpec>(*o.shape).open = open;
+    else in.error(t, "'open' is for a cylinder or a cone, not " + o.keyword);
+  } else if (w == "bounded_by") {
+    // Only a speed-up in POV-Ray (Lucent bounds its objects itself): skipped.
+    in.expect("{");
+    int depth = 1;
+    while (depth > 0) {
+      const Token& b = in.next();
+      if (b.kind == TokenKind::End) in.error(b, "the bounded_by block is not closed");
+      if (b.is("{")) ++depth;
+      if (b.is("}")) --depth;
+    }
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// translate, rotate, scale, matrix and transform: `m` then the one written.
+bool SceneReader::readTransform(const Token& t, TokenStream& in, PovTransform& m) {
+  if (t.kind != TokenKind::Keyword) return false;
+  const std::string_view w = t.text();
+  if (w == "translate") {
+    m.translate(toVec3(in.parseVector()));
+  } else if (w == "rotate") {
+    m.rotate(toVec3(in.parseVector()));
+  } else if (w == "scale") {
+    Vec3 s = toVec3(in.parseVector());
+    for (int i = 0; i < 3; ++i)
+      if (s[i] == 0.0) {
+        // POV-Ray's own rule: a zero factor is replaced by 1, with a warning.
+        warn(in, t.loc(), "scale by 0 is taken as 1 (as POV-Ray does)");
+        s[i] = 1.0;
+      }
+    m.scale(s);
+  } else if (w == "matrix") {
+    in.expect("<");
+    std::array<double, 12> e{};
+    for (int i = 0; i < 12; ++i) {
+      if (i > 0) in.parseComma();
+      e[static_cast<size_t>(i)] = in.parseFloat();
+    }
+    in.expect(">");
+    m = m.then(PovTransform::matrix(e));
+  } else if (w == "transform") {
+    if (in.allow("{")) {
+      m = m.then(readTransformBlock(in));
+    } else {
+      const Token id = in.next();
+      const auto* item = dynamic_cast<const TransformItem*>(itemOf(id));
+      if (!item) in.error(id, "a transform identifier or '{' expected, not " + id.describe());
+      m = m.then(item->transform);
+    }
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// The inside of `transform { ... }` (the '{' read): transforms and identifiers in order,
+// and `inverse`, which inverts the whole.
+PovTransform SceneReader::readTransformBlock(TokenStream& in) {
+  PovTransform m;
+  bool inverse = false;
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) break;
+    if (const auto* item = dynamic_cast<const TransformItem*>(itemOf(t))) {
+      m = m.then(item->transform);
+    } else if (isWord(t, "inverse")) {
+      inverse = !inverse;
+    } else if (!readTransform(t, in, m)) {
+      in.error(t, "unexpected " + t.describe() + " in a transform");
+    }
+  }
+  return inverse ? m.inverse() : m;
+}
+
+}  // namespace lucent::sdl

@@ -1,0 +1,64 @@
+// Small helpers the scene reader's files share: naming keywords, reading POV-Ray's values
+// into the scene graph's types.
+#pragma once
+
+#include "token_stream.h"
+
+#include "primitives/math.h"
+
+#include <array>
+#include <string_view>
+
+namespace lucent::sdl {
+
+// A reserved word the core leaves to the scene reader ("sphere", "finish"...).
+inline bool isWord(const Token& t, std::string_view word) {
+  return t.kind == TokenKind::Keyword && t.text() == word;
+}
+
+inline Vec3 toVec3(const std::array<double, 3>& v) { return Vec3(v[0], v[1], v[2]); }
+
+// Whether `t` starts a float, vector or colour expression (POV-Ray's optional arguments).
+inline bool startsNumber(const Token& t) {
+  switch (t.kind) {
+    case TokenKind::Number:
+      return true;
+    case TokenKind::Punct:
+      return t.is("(") || t.is("<") || t.is("+") || t.is("-") || t.is("!");
+    case TokenKind::Keyword:
+      return isFloatFunction(t.kw) || isVectorFunction(t.kw) || isColourKey(t.kw) ||
+             t.kw == Kw::k_u || t.kw == Kw::k_v || t.kw == Kw::k_color || t.kw == Kw::k_colour;
+    case TokenKind::Identifier: {
+      const Value* v = t.value();
+      return v && v->isNumeric();
+    }
+    default:
+      return false;
+  }
+}
+
+// The item an identifier token names, or null.
+inline const Item* itemOf(const Token& t) {
+  if (t.kind != TokenKind::Identifier) return nullptr;
+  const Value* v = t.value();
+  return v && v->type == ValueType::Item ? v->item.get() : nullptr;
+}
+
+// An optional boolean after a flag keyword (`hollow`, `hollow off`): true when absent.
+inline bool optionalBool(TokenStream& in) {
+  if (!startsNumber(in.peek())) return true;
+  return in.parseFloat() != 0.0;
+}
+
+struct PovColour {
+  Color rgb{0.0f};
+  float filter = 0.0f;
+  float transmit = 0.0f;
+};
+inline PovColour readColour(TokenStream& in) {
+  const std::array<double, 5> c = in.parseColour();
+  return {Color(static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])),
+          static_cast<float>(c[3]), static_cast<float>(c[4])};
+}
+
+}  // namespace lucent::sdl

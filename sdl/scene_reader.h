@@ -1,0 +1,176 @@
+// The scene reader: POV-Ray's scene items (objects, textures, the camera, lights, settings)
+// read from the language core's token stream into the pov_* structs, and mapped with them
+// onto a Lucent scene (docs/povray-import.md, "The scene reader").
+//
+// An object is read into a PovObject (its shape already in Lucent's space, its transforms
+// and texture still POV-Ray's) so that `#declare`d objects can be modified by
+// `object { X ... }` as POV-Ray modifies them; it becomes scene-graph nodes when placed in
+// the scene. The read_*.cpp files hold the blocks, each named after what it reads.
+#pragma once
+
+#include "item_reader.h"
+#include "options.h"
+#include "pov_camera.h"
+#include "pov_finish.h"
+#include "pov_light.h"
+#include "pov_settings.h"
+#include "pov_space.h"
+#include "token_stream.h"
+
+#include "lang/diagnostics.h"
+#include "scenegraph/scene.h"
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace lucent::sdl {
+
+// A texture of one layer: its pigment and finish.
+struct PovTexture {
+  PovPigment pigment;
+  PovFinish finish;
+};
+
+// One object as POV-Ray holds it: a shape, a CSG operation of others, or a light source.
+struct PovObject {
+  std::string keyword;  // "sphere", "union", "light_source"...
+  SourceLoc loc;
+  NodeKind kind = NodeKind::Shape;
+  std::optional<ShapeSpec> shape;  // in Lucent's space (z negated)
+  std::optional<PovLight> light;   // kind == Light
+  std::vector<PovObject> children;
+  PovTransform transform;  // the object's transforms, in POV-Ray's space
+  std::optional<PovTexture> texture;
+  SourceLoc textureLoc;
+  std::optional<PovInterior> interior;
+  bool noShadow = false;
+  bool inverse = false;
+};
+
+// The items the reader makes, for #declare and for identifiers in blocks.
+struct ObjectItem : Item {
+  PovObject object;
+  std::string_view kind() const override { return object.keyword; }
+};
+struct CameraItem : Item {
+  PovCamera camera;
+  std::string_view kind() const override { return "camera"; }
+};
+struct PigmentItem : Item {
+  PovPigment pigment;
+  std::string_view kind() const override { return "pigment"; }
+};
+struct FinishItem : Item {
+  PovFinish finish;
+  std::string_view kind() const override { return "finish"; }
+};
+struct TextureItem : Item {
+  PovTexture texture;
+  std::string_view kind() const override { return "texture"; }
+};
+struct InteriorItem : Item {
+  PovInterior interior;
+  std::string_view kind() const override { return "interior"; }
+};
+// `material { texture { } interior { } }`: what it gives an object.
+struct PovMaterial {
+  std::optional<PovTexture> texture;
+  std::optional<PovInterior> interior;
+};
+struct MaterialItem : Item {
+  PovMaterial material;
+  std::string_view kind() const override { return "material"; }
+};
+struct TransformItem : Item {
+  PovTransform transform;
+  std::string_view kind() const override { return "transform"; }
+};
+
+class SceneReader : public ItemReader {
+ public:
+  SceneReader(Scene& scene, Diagnostics& diagnostics, const Options& options)
+      : scene_(scene), diags_(diagnostics), options_(options) {}
+
+  ItemPtr read(const Token& t, TokenStream& in) override;
+
+  // Reads the scene's top level to its end, placing each object, light and setting.
+  void readScene(TokenStream& in);
+  // The camera (POV-Ray's default when the scene has none), the settings and the lights
+  // placed: the scene complete.
+  void finishScene(TokenStream& in);
+
+ private:
+  // scene_reader.cpp: the top level, and what cannot be read
+  void readDefault(TokenStream& in);
+  void place(const PovObject& object, TokenStream& in);
+  std::unique_ptr<Node> toNode(const PovObject& o, const PovTexture* texture,
+                               const PovInterior* interior, bool topLevel, TokenStream& in);
+  // A keyword Lucent cannot render, or one the reader does not read yet: an error kept
+  // (reading goes on), and the block that follows it skipped.
+  void unsupported(const Token& t, TokenStream& in, bool skipBlock);
+  // The same inside a block: its error kept, and the block skipped to its closing brace.
+  void unreadInBlock(const Token& t, TokenStream& in);
+  void keepError(TokenStream& in, const SourceLoc& at, const std::string& message);
+  void warn(TokenStream& in, const SourceLoc& at, const std::string& message);
+
+  // read_objects.cpp
+  bool isObjectKeyword(const Token& t) const;
+  PovObject readObject(const Token& t, TokenStream& in);
+  void readShape(PovObject& o, TokenStream& in);
+  void readObjectModifiers(PovObject& o, TokenStream& in);
+  bool readObjectModifier(const Token& t, PovObject& o, TokenStream& in);
+  bool readTransform(const Token& t, TokenStream& in, PovTransform& m);
+  PovTransform readTransformBlock(TokenStream& in);
+
+  // read_textures.cpp
+  PovPigment readPigment(TokenStream& in, const PovPigment& start);
+  PovFinish readFinish(TokenStream& in, const PovFinish& start);
+  PovTexture readTexture(TokenStream& in, const PovTexture& start);
+  PovInterior readInterior(TokenStream& in, const PovInterior& start);
+  PovMaterial readMaterial(TokenStream& in);
+  void readReflection(TokenStream& in, PovReflection& r);
+
+  // read_camera_light.cpp
+  PovCamera readCamera(TokenStream& in);
+  PovLight readLight(const SourceLoc& loc, TokenStream& in);
+  void readGlobalSettings(TokenStream& in);
+  void readBackground(TokenStream& in);
+
+  // read_atmosphere.cpp
+  void readFog(const SourceLoc& loc, TokenStream& in);
+  void readSkySphere(const SourceLoc& loc, TokenStream& in);
+
+  PovTexture defaultTexture() const { return {defaults_.pigment, defaults_.finish}; }
+
+  Scene& scene_;
+  Diagnostics& diags_;
+  const Options& options_;
+  PovDefaults defaults_;
+  std::optional<PovCamera> camera_;  // the last camera read (POV-Ray renders with it)
+  PovGlobalSettings global_;
+  SourceLoc globalLoc_;
+  PovBackground background_;
+  std::set<std::string> warned_;  // each warning said once per place
+  int objectDepth_ = 0;           // objects being read within each other
+  static constexpr int kMaxObjectDepth = 1000;
+};
+
+// What loading a POV-Ray scene gives: the scene, or null with the errors; warnings go to
+// Options::output as the core's do.
+struct SceneLoad {
+  std::unique_ptr<Scene> scene;
+  Diagnostics diagnostics;
+};
+
+// Reads the POV-Ray scene at `path` (its image size from options.imageWidth and
+// imageHeight, which the camera's framing depends on).
+SceneLoad loadScene(const std::filesystem::path& path, const Options& options);
+// The same for `text`, named `name`, lying in `folder` (for tests).
+SceneLoad loadSceneText(const std::string& name, const std::string& text,
+                        const std::filesystem::path& folder, const Options& options);
+
+}  // namespace lucent::sdl

@@ -1,0 +1,352 @@
+// The scene reader: POV-Ray scenes read from their text into Lucent scenes, checked field by
+// field against the pov_* mappings, and the unsupported features listed, every one.
+#include <catch2/catch.hpp>
+
+#include "sdl_test_support.h"
+
+#include "sdl/scene_reader.h"
+
+#include <variant>
+
+using namespace lucent;
+using namespace lucent::sdl;
+
+namespace {
+
+struct Read {
+  SceneLoad load;
+  CollectedOutput out;
+};
+
+std::unique_ptr<Read> readScene(const std::string& text) {
+  auto r = std::make_unique<Read>();
+  Options options;
+  options.imageWidth = 160;
+  options.imageHeight = 120;
+  options.output = &r->out;
+  r->load = loadSceneText("test.pov", text, sdltest::dataFolder(), options);
+  for (const Diagnostic& d : r->load.diagnostics.all()) UNSCOPED_INFO(d.str());
+  return r;
+}
+
+std::vector<std::string> errorsOf(const std::string& text) {
+  auto r = readScene(text);
+  CHECK(!r->load.scene);
+  std::vector<std::string> errors;
+  for (const Diagnostic& d : r->load.diagnostics.all()) errors.push_back(d.str());
+  return errors;
+}
+
+const Node& topNode(const Scene& scene, size_t i) {
+  REQUIRE(scene.root->children.size() > i);
+  return *scene.root->children[i];
+}
+
+const Material& materialOf(const Scene& scene, const Node& n) {
+  REQUIRE(n.material);
+  return scene.materials.at(*n.material);
+}
+
+void checkColor(const Color& got, const Color& want) {
+  for (int c = 0; c < 3; ++c) CHECK(got[c] == Approx(want[c]).margin(1e-6));
+}
+
+void checkVec(const Vec3& got, const Vec3& want) {
+  for (int c = 0; c < 3; ++c) CHECK(got[c] == Approx(want[c]).margin(1e-12));
+}
+
+void checkMat(const Mat4& got, const Mat4& want) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) CHECK(got[i][j] == Approx(want[i][j]).margin(1e-12));
+}
+
+}  // namespace
+
+TEST_CASE("scene reader: the simple shapes, in Lucent's space", "[sdl][scene]") {
+  auto r = readScene(R"(
+sphere { <1, 2, 3>, 0.5 }
+box { <1, 2, 3>, <-1, 0, -2> }
+plane { <0, 2, 0>, 3 }
+cylinder { <0, 0, 1>, <0, 2, 1>, 0.25 open }
+cone { <0, 0, 0>, 1, <0, 0, 2>, 0.5 }
+torus { 2, 0.5 }
+disc { <0, 1, 2>, <0, 0, 3>, 2, 1 }
+triangle { <0, 0, 1>, <1, 0, 1>, <0, 1, 2> }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  REQUIRE(s.root->children.size() == 8);
+  const auto& sphere = std::get<SphereSpec>(*topNode(s, 0).shape);
+  checkVec(sphere.center, Vec3(1, 2, -3));
+  CHECK(sphere.radius == 0.5);
+  const auto& box = std::get<BoxSpec>(*topNode(s, 1).shape);
+  checkVec(box.min, Vec3(-1, 0, -3));
+  checkVec(box.max, Vec3(1, 2, 2));
+  const auto& plane = std::get<PlaneSpec>(*topNode(s, 2).shape);
+  checkVec(plane.normal, Vec3(0, 1, 0));
+  CHECK(plane.offset == 1.5);  // POV-Ray divides the distance by the normal's length
+  const auto& cylinder = std::get<CylinderSpec>(*topNode(s, 3).shape);
+  checkVec(cylinder.base, Vec3(0, 0, -1));
+  checkVec(cylinder.cap, Vec3(0, 2, -1));
+  CHECK(cylinder.radius == 0.25);
+  CHECK(cylinder.open);
+  const auto& cone = std::get<ConeSpec>(*topNode(s, 4).shape);
+  checkVec(cone.cap, Vec3(0, 0, -2));
+  CHECK(cone.baseRadius == 1.0);
+  CHECK(cone.capRadius == 0.5);
+  CHECK(!cone.open);
+  const auto& torus = std::get<TorusSpec>(*topNode(s, 5).shape);
+  CHECK(torus.major == 2.0);
+  CHECK(torus.minor == 0.5);
+  const auto& disc = std::get<DiscSpec>(*topNode(s, 6).shape);
+  checkVec(disc.center, Vec3(0, 1, -2));
+  checkVec(disc.normal, Vec3(0, 0, -1));
+  CHECK(disc.radius == 2.0);
+  CHECK(disc.innerRadius == 1.0);
+  const auto& triangle = std::get<TriangleSpec>(*topNode(s, 7).shape);
+  checkVec(triangle.c, Vec3(0, 1, -2));
+}
+
+TEST_CASE("scene reader: an object's transforms, in order, as S·M·S", "[sdl][scene]") {
+  auto r = readScene(R"(
+#declare T = transform { rotate y*30 translate <1, 0, 0> }
+sphere { 0, 1 scale <1, 2, 3> rotate <10, 20, 30> translate <4, 5, 6>
+         matrix <1, 0, 0, 0.5, 1, 0, 0, 0, 1, 0, 0, 0> transform T transform { T inverse } }
+)");
+  REQUIRE(r->load.scene);
+  PovTransform t = PovTransform::scaling(Vec3(1, 2, 3));
+  t.rotate(Vec3(10, 20, 30)).translate(Vec3(4, 5, 6));
+  t = t.then(PovTransform::matrix({1, 0, 0, 0.5, 1, 0, 0, 0, 1, 0, 0, 0}));
+  PovTransform T = PovTransform::rotation(Vec3(0, 30, 0));
+  T.translate(Vec3(1, 0, 0));
+  t = t.then(T).then(T.inverse());
+  checkMat(topNode(*r->load.scene, 0).parentFromNode, t.lucentMatrix());
+}
+
+TEST_CASE("scene reader: pigment, finish and interior make POV-Ray's material", "[sdl][scene]") {
+  auto r = readScene(R"(
+#include "colors.inc"
+sphere { 0, 1 pigment { color rgbf <0.9, 0.3, 0.2, 0.25> }
+         finish { ambient 0.2 diffuse 0.7 phong 0.5 phong_size 20 reflection { 0.1, 0.4 fresnel } }
+         interior { ior 1.5 } }
+sphere { 0, 1 texture { pigment { Red } finish { specular 0.3 roughness 0.01 } } }
+sphere { 0, 1 }
+#declare M = material { texture { pigment { rgb <0, 0, 1> } } interior { ior 1.3 } }
+sphere { 0, 1 material { M } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  checkColor(materialOf(s, topNode(s, 3)).diffuse, Color(0.0f, 0.0f, 0.6f));
+  CHECK(materialOf(s, topNode(s, 3)).ior == Approx(1.3));
+  PovPigment p;
+  p.color = Color(0.9f, 0.3f, 0.2f);
+  p.filter = 0.25f;
+  PovFinish f;
+  f.ambient = Color(0.2f);
+  f.diffuse = 0.7;
+  f.phong = 0.5;
+  f.phongSize = 20;
+  f.reflection.min = Color(0.1f);
+  f.reflection.max = Color(0.4f);
+  f.reflection.fresnel = true;
+  PovInterior i;
+  i.ior = 1.5;
+  const Material want = importMaterial(p, f, i).material;
+  const Material& got = materialOf(s, topNode(s, 0));
+  checkColor(got.diffuse, want.diffuse);
+  checkColor(got.ambient, want.ambient);
+  checkColor(got.phong, want.phong);
+  checkColor(got.transmissive, want.transmissive);
+  checkColor(got.reflective, want.reflective);
+  CHECK(got.fresnel);
+  CHECK(got.ior == 1.5);
+  CHECK(got.phongSize == 20);
+
+  const Material& red = materialOf(s, topNode(s, 1));
+  checkColor(red.diffuse, Color(0.6f, 0.0f, 0.0f));  // colors.inc's Red times diffuse 0.6
+  checkColor(red.specular, Color(0.3f));
+  CHECK(red.shininess == Approx(100.0));
+  // No texture at all: POV-Ray's default, black.
+  checkColor(materialOf(s, topNode(s, 2)).diffuse, Color(0.0f));
+}
+
+TEST_CASE("scene reader: #default finish and pigment apply to what follows", "[sdl][scene]") {
+  auto r = readScene(R"(
+sphere { 0, 1 pigment { rgb 1 } }
+#default { finish { ambient 0 diffuse 0.9 } pigment { rgb <0, 0, 1> } }
+sphere { 0, 1 pigment { rgb 1 } }
+sphere { 0, 1 pigment { rgb 1 } finish { phong 1 } }
+sphere { 0, 1 }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  checkColor(materialOf(s, topNode(s, 0)).diffuse, Color(0.6f));
+  checkColor(materialOf(s, topNode(s, 1)).diffuse, Color(0.9f));
+  checkColor(materialOf(s, topNode(s, 1)).ambient, Color(0.0f));
+  // A finish block starts from the default finish.
+  checkColor(materialOf(s, topNode(s, 2)).diffuse, Color(0.9f));
+  checkColor(materialOf(s, topNode(s, 2)).phong, Color(1.0f));
+  checkColor(materialOf(s, topNode(s, 3)).diffuse, Color(0.0f, 0.0f, 0.9f));
+}
+
+TEST_CASE("scene reader: CSG operands inherit the operation's texture", "[sdl][scene]") {
+  auto r = readScene(R"(
+#declare Ball = sphere { 0, 1 pigment { rgb <1, 0, 0> } }
+difference {
+  box { -1, 1 }
+  object { Ball translate x no_shadow }
+  pigment { rgb <0, 1, 0> }
+  inverse
+}
+union { sphere { 0, 1 } merge { sphere { 0, 1 } sphere { x, 1 } } translate y }
+intersection { sphere { 0, 1 } plane { y, 0 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const Node& d = topNode(s, 0);
+  CHECK(d.kind == NodeKind::Difference);
+  CHECK(d.inverse);
+  checkColor(materialOf(s, d).diffuse, Color(0.0f, 0.6f, 0.0f));
+  REQUIRE(d.children.size() == 2);
+  CHECK(!d.children[0]->material);  // inherits the difference's
+  checkColor(materialOf(s, *d.children[1]).diffuse, Color(0.6f, 0.0f, 0.0f));
+  CHECK(!d.children[1]->shadows);
+  checkMat(d.children[1]->parentFromNode, PovTransform::translation(Vec3(1, 0, 0)).lucentMatrix());
+  const Node& u = topNode(s, 1);
+  CHECK(u.kind == NodeKind::Union);
+  REQUIRE(u.children.size() == 2);
+  CHECK(u.children[1]->kind == NodeKind::Merge);
+  CHECK(u.children[1]->children.size() == 2);
+  CHECK(topNode(s, 2).kind == NodeKind::Intersection);
+}
+
+TEST_CASE("scene reader: camera, lights and settings", "[sdl][scene]") {
+  auto r = readScene(R"(
+global_settings { assumed_gamma 1.0 max_trace_level 7 adc_bailout 0.01 ambient_light rgb 0.5 }
+background { color rgb <0.1, 0.2, 0.3> }
+camera { location <0, 1, -4> right x*4/3 look_at <0, 0.5, 0> }
+light_source { <2, 4, -3> color rgb <1, 0.9, 0.8> }
+light_source { <0, 5, 0>, 1 spotlight point_at <0, 0, 1> radius 10 falloff 20 shadowless }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  CHECK(s.render.maxDepth == 7);
+  CHECK(s.render.minWeight == Approx(0.01));
+  checkColor(s.render.ambient, Color(0.5f));
+  checkColor(s.render.background, Color(0.1f, 0.2f, 0.3f));
+  CHECK(s.render.width == 160);
+  CHECK(s.render.height == 120);
+
+  sdl::PovCamera c;
+  c.location = Vec3(0, 1, -4);
+  c.right = Vec3(4.0 / 3.0, 0, 0);
+  c.rightGiven = true;
+  c.lookAt = Vec3(0, 0.5, 0);
+  const Camera want = importCamera(c, 160, 120).camera;
+  REQUIRE(s.cameras.size() == 1);
+  checkVec(s.cameras[0].position, want.position);
+  checkVec(s.cameras[0].lookAt, want.lookAt);
+  CHECK(s.cameras[0].fov == Approx(want.fov));
+  CHECK(s.cameras[0].loc.line == 4);
+
+  REQUIRE(s.lights.size() == 2);
+  checkVec(s.lights[0].position, Vec3(2, 4, 3));
+  checkColor(s.lights[0].color, Color(1.0f, 0.9f, 0.8f));
+  CHECK(s.lights[1].type == LightType::Spot);
+  CHECK(s.lights[1].angle == Approx(20.0));
+  CHECK(s.lights[1].inner == Approx(10.0));
+  CHECK(!s.lights[1].shadows);
+  checkVec(s.lights[1].direction, glm::normalize(Vec3(0, -5, -1)));
+}
+
+TEST_CASE("scene reader: without a camera, POV-Ray's default, said", "[sdl][scene]") {
+  auto r = readScene("sphere { z*3, 1 }\n");
+  REQUIRE(r->load.scene);
+  const Camera want = importCamera(sdl::PovCamera{}, 160, 120).camera;
+  checkVec(r->load.scene->cameras.at(0).position, want.position);
+  CHECK(r->load.scene->cameras.at(0).fov == Approx(want.fov));
+  // POV-Ray's default right <1.33,0,0> on a 4:3 image: the pixels' shape is said.
+  bool said = false;
+  for (const std::string& w : r->out.warnings)
+    said = said ||
+           (w.rfind("test.pov: warning:", 0) == 0 && w.find("not square") != std::string::npos);
+  CHECK(said);
+}
+
+TEST_CASE("scene reader: every unsupported feature is listed at its place",
+          "[sdl][scene][errors]") {
+  const auto errors = errorsOf(R"(global_settings { radiosity { count 100 } }
+sphere { 0, 1 hollow interior { media { emission 1 } } }
+sphere { 0, 1 photons { target } no_image }
+rainbow { angle 42 }
+)");
+  REQUIRE(errors.size() == 5);
+  CHECK(errors[0] ==
+        "test.pov:1:19: error: 'radiosity' is not supported by Lucent (global illumination; "
+        "ambient_light stands in for it)");
+  CHECK(errors[1] ==
+        "test.pov:2:33: error: 'media' is not supported by Lucent (participating media; the "
+        "nearest Lucent feature is <fog>)");
+  CHECK(errors[2] ==
+        "test.pov:3:15: error: 'photons' is not supported by Lucent (photon mapping of caustics)");
+  CHECK(errors[3] ==
+        "test.pov:3:34: error: 'no_image' is not supported by Lucent (objects hidden from the "
+        "camera)");
+  CHECK(errors[4] == "test.pov:4:1: error: 'rainbow' is not supported by Lucent (rainbows)");
+}
+
+TEST_CASE("scene reader: what is not read yet, and syntax errors, at their place",
+          "[sdl][scene][errors]") {
+  const auto errors = errorsOf(
+      "sphere { 0, 1 pigment { checker rgb 1 rgb 0 } }\n"
+      "lathe { linear_spline 2, <0, 0>, <1, 1> }\n");
+  REQUIRE(errors.size() == 2);
+  CHECK(errors[0] == "test.pov:1:25: error: 'checker' is not read yet by Lucent's POV-Ray reader");
+  CHECK(errors[1] == "test.pov:2:1: error: 'lathe' is not read yet by Lucent's POV-Ray reader");
+  const auto syntax = errorsOf("sphere { 0, 1 pigment { rgb 1 } 3 }\n");
+  REQUIRE(syntax.size() == 1);
+  CHECK(syntax[0] == "test.pov:1:33: error: unexpected float constant in sphere");
+}
+
+TEST_CASE("scene reader: fog and sky_sphere", "[sdl][scene]") {
+  auto r = readScene(R"(
+fog { distance 10 color rgbt <0.5, 0.6, 0.7, 0.2> }
+sky_sphere { pigment { gradient y color_map { [0 rgb 1] [1 color rgb <0, 0, 1>] } } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  REQUIRE(s.fog);
+  CHECK(s.fog->type == FogType::Constant);
+  CHECK(s.fog->distance == 10.0);
+  checkColor(s.fog->color, Color(0.5f, 0.6f, 0.7f));
+  CHECK(s.fog->transmit == Approx(0.2f));
+  PovSkySphere sky;
+  PovSkyGradient g;
+  g.colorMap = {{0.0, Color(1.0f)}, {1.0, Color(0.0f, 0.0f, 1.0f)}};
+  sky.pigments = {g};
+  const Sky want = *importSkySphere(sky).sky;
+  REQUIRE(s.sky);
+  REQUIRE(s.sky->pattern.map.entries.size() == 2);
+  checkColor(s.sky->pattern.map.entries[1].color, want.pattern.map.entries[1].color);
+  checkVec(s.sky->pattern.pattern.axis, want.pattern.pattern.axis);
+  checkMat(s.sky->skyFromWorld, want.skyFromWorld);
+}
+
+TEST_CASE(
+    "scene reader: an unsupported feature in a macro names the call, and nesting is "
+    "bounded",
+    "[sdl][scene][errors]") {
+  const auto errors = errorsOf(
+      "#macro Glow()\n  sphere { 0, 1 interior { media { } } }\n#end\n"
+      "Glow()\nGlow()\n");
+  REQUIRE(errors.size() == 2);
+  CHECK(errors[0] ==
+        "test.pov:2:28: error: 'media' is not supported by Lucent (participating media; the "
+        "nearest Lucent feature is <fog>)\ntest.pov:4:1: note: in macro 'Glow' called here");
+  CHECK(errors[1].find("test.pov:5:1: note: in macro 'Glow' called here") != std::string::npos);
+  std::string deep;
+  for (int i = 0; i < 1001; ++i) deep += "union { ";
+  const auto nested = errorsOf(deep);
+  REQUIRE(nested.size() == 1);
+  CHECK(nested[0] == "test.pov:1:8001: error: objects nested more than 1000 deep");
+}
