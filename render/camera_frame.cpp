@@ -25,6 +25,7 @@ CameraFrame makeCameraFrame(const Camera& camera) {
     throw LocatedError(camera.loc, "camera up is parallel to the viewing direction");
   f.right = right / rightLength;
   f.up = glm::cross(f.right, f.forward);
+  if (camera.mirror) f.right = -f.right;  // the image mirrored left to right
   return f;
 }
 

@@ -11,7 +11,9 @@ OrthographicProjection::OrthographicProjection(const CameraFrame& frame, const C
     throw LocatedError(
         camera.loc, fmt::format("an orthographic camera needs a width > 0 (got {})", camera.width));
   halfWidth_ = 0.5 * camera.width;
-  halfHeight_ = halfWidth_ * static_cast<double>(height) / width;
+  double w = 0.0, h = 0.0;
+  frameProportions(camera, width, height, w, h);
+  halfHeight_ = halfWidth_ * h / w;
 }
 
 bool OrthographicProjection::generateRay(const Vec2& film, const Vec2&, Ray& ray) const {

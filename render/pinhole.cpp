@@ -33,7 +33,9 @@ PinholeProjection::PinholeProjection(const CameraFrame& frame, const Camera& cam
     throw LocatedError(
         camera.loc,
         fmt::format("a pinhole camera needs 0 < fov < 180 degrees (got {})", camera.fov));
-  imagePlaneHalfExtents(camera.fov, camera.fovAxis, width, height, halfWidth_, halfHeight_);
+  double w = 0.0, h = 0.0;
+  frameProportions(camera, width, height, w, h);
+  imagePlaneHalfExtents(camera.fov, camera.fovAxis, w, h, halfWidth_, halfHeight_);
 }
 
 bool PinholeProjection::generateRay(const Vec2& film, const Vec2&, Ray& ray) const {

@@ -31,7 +31,9 @@ ThinLensProjection::ThinLensProjection(const CameraFrame& frame, const Camera& c
     throw LocatedError(
         camera.loc,
         "a thin-lens camera needs focal-length > 0, f-stop > 0 and focus-distance >= 0");
-  imagePlaneHalfExtents(camera.fov, camera.fovAxis, width, height, halfWidth_, halfHeight_);
+  double w = 0.0, h = 0.0;
+  frameProportions(camera, width, height, w, h);
+  imagePlaneHalfExtents(camera.fov, camera.fovAxis, w, h, halfWidth_, halfHeight_);
   // Aperture diameter = focal length / f-number (the definition of the f-number); an
   // infinite f-stop closes the lens to a pinhole.
   apertureRadius_ = 0.5 * camera.focalLength / camera.fStop;

@@ -55,12 +55,21 @@ void checkPaniniFov(const Camera& cam, AttributeInput& in) {
 // `right -x*...` (negative handedness) makes look_at compute right = forward × sky, the
 // renderer's frame, with every world coordinate unchanged.
 
+// `right -x` is Lucent's usual frame; a mirrored camera's right is +x.
+std::string rightSign(const Camera& camera) { return camera.mirror ? "right " : "right -"; }
+
+// The frame's width / height: the camera's frame-aspect, or the image's.
+std::string aspectText(const Camera& camera, const PovCameraOut& out) {
+  return camera.frameAspect > 0.0 ? out.number(camera.frameAspect)
+                                  : ratio(out.width(), out.height());
+}
+
 void writePinhole(const Camera& camera, PovCameraOut& out) {
   if (!(camera.fov > 0.0 && camera.fov < 180.0)) {
     out.error(fmt::format("pinhole camera: fov {} is outside (0, 180)", camera.fov));
     return;
   }
-  out.line("right -x*" + ratio(out.width(), out.height()));
+  out.line(rightSign(camera) + "x*" + aspectText(camera, out));
   out.line("up y");
   out.line("angle " + out.number(horizontalFovDegrees(camera, out.width(), out.height())));
 }
@@ -68,8 +77,11 @@ void writePinhole(const Camera& camera, PovCameraOut& out) {
 // `width` world units across; the height follows the aspect ratio. Both vectors are given
 // so POV-Ray does not rescale them by the look-at distance.
 void writeOrthographic(const Camera& camera, PovCameraOut& out) {
-  out.line("right -x*" + out.number(camera.width));
-  out.line(fmt::format("up y*{}*{}", out.number(camera.width), ratio(out.height(), out.width())));
+  out.line(rightSign(camera) + "x*" + out.number(camera.width));
+  out.line(
+      camera.frameAspect > 0.0
+          ? fmt::format("up y*{}/{}", out.number(camera.width), out.number(camera.frameAspect))
+          : fmt::format("up y*{}*{}", out.number(camera.width), ratio(out.height(), out.width())));
 }
 
 void writeFisheye(const Camera& camera, PovCameraOut& out) {
@@ -105,7 +117,7 @@ void writeFisheye(const Camera& camera, PovCameraOut& out) {
       break;
     }
   }
-  out.line("right -x*" + right);
+  out.line(rightSign(camera) + "x*" + right);
   out.line("up y*" + up);
   out.line("angle " + out.number(camera.fov));
 }
@@ -115,6 +127,10 @@ void writeFisheye(const Camera& camera, PovCameraOut& out) {
 // sky turns POV-Ray's up (and with `right -x`, its right) over, which puts +right at 3/4 of
 // the width and up at the top, as the renderer does.
 void writeSpherical(const Camera& camera, PovCameraOut& out) {
+  if (camera.mirror) {
+    out.error("a mirrored spherical camera: POV-Ray's spherical camera cannot be mirrored");
+    return;
+  }
   out.line("angle " + out.number(camera.hAngle) + ", " + out.number(camera.vAngle));
   out.line("right -x");
   out.line("up y");
@@ -384,6 +400,16 @@ const std::vector<CameraAttribute>& cameraAttributes() {
         a.info.rule = kFarRule;
         return a;
       }(),
+      number("frame-aspect", &Camera::frameAspect, NumberRule::nonNegative(),
+             {T::Pinhole, T::ThinLens, T::Orthographic},
+             "pinhole, thin-lens, orthographic: the width / height of what the image shows, "
+             "kept when the image size changes (POV-Ray's |right| / |up|; pixels are not "
+             "square when it differs from the image's). Default (or 0): the image's own."),
+      entry(
+          "mirror", AttrType::Boolean, "false", {},
+          [](Camera& c, AttributeInput& in) { c.mirror = in.boolean("mirror", c.mirror); },
+          "true: the image mirrored left to right (POV-Ray's `right` on the other side of up "
+          "and direction). Default false."),
       number("focal-length", &Camera::focalLength, NumberRule::positive(), {T::ThinLens},
              "thin-lens: lens focal length in metres (world units); aperture diameter = "
              "focal-length / f-stop. Default 0.05."),
@@ -457,7 +483,8 @@ double horizontalFovDegrees(const Camera& camera, int width, int height) {
   if (camera.fovAxis == FovAxis::Horizontal) return camera.fov;  // as written, no round trip
   // Half extents of the image plane at distance 1, as render/pinhole.cpp computes them.
   double half = std::tan(radians(camera.fov) * 0.5);
-  double w = width, h = height;
+  double w = 0.0, h = 0.0;
+  frameProportions(camera, width, height, w, h);
   double halfWidth = half;
   if (camera.fovAxis == FovAxis::Vertical) halfWidth = half * w / h;
   if (camera.fovAxis == FovAxis::Diagonal) halfWidth = half * w / std::hypot(w, h);

@@ -48,6 +48,13 @@ struct Camera {
   FovAxis fovAxis = FovAxis::Horizontal;
   double near = 0.0;
   double far = kInf;
+  // The width / height of what the image shows (pinhole, thin-lens, orthographic); 0: the
+  // image's own, square pixels. POV-Ray's |right| / |up|, which keeps its frame when the
+  // image size changes.
+  double frameAspect = 0.0;
+  // The image mirrored left to right (POV-Ray's `right` on the other side: `right -x` in
+  // its left-handed space).
+  bool mirror = false;
 
   // thin-lens
   double focalLength = 0.05;  // metres (world units)
@@ -134,6 +141,19 @@ const std::vector<CameraAttribute>& cameraAttributes();
 // The checks between attributes every camera needs (a frame: look-at away from the
 // position, up not along the view), then its type's own, once all are read.
 void checkCamera(const Camera& camera, AttributeInput& in);
+
+// The frame a camera shows on a width x height image, as a width and a height in
+// proportion: frameAspect x 1, or the image's own width x height (kept as integers, so that
+// a camera without frame-aspect computes exactly what it always has).
+inline void frameProportions(const Camera& camera, int width, int height, double& w, double& h) {
+  if (camera.frameAspect > 0.0) {
+    w = camera.frameAspect;
+    h = 1.0;
+  } else {
+    w = width;
+    h = height;
+  }
+}
 
 // The full horizontal field of view (degrees) of a pinhole camera on a width x height
 // image, whatever its fov-axis (POV-Ray's `angle` spans the `right` vector).

@@ -150,14 +150,26 @@ void placeFrame(const PovCameraVectors& v, Camera& camera, std::vector<std::stri
         "the camera's direction, up and right are not perpendicular (POV-Ray: \"Camera vectors "
         "are not perpendicular\"); Lucent's camera frame is orthogonal: the image is skewed "
         "differently");
-  if (glm::dot(glm::cross(d, u), r) < 0.0)
-    notes.push_back(
-        "the camera's right is on the other side of up and direction than POV-Ray's usual "
-        "left-handed frame (a `right -x` camera): Lucent has no mirrored camera, and renders "
-        "POV-Ray's image mirrored (a spherical camera: upside down)");
+  // Lucent's frame has right = forward x up; POV-Ray's usual left-handed camera is that
+  // frame once z is negated, and a `right -x` camera is its mirror image.
+  if (glm::dot(glm::cross(d, u), r) < 0.0) {
+    if (camera.type == CameraType::Spherical)
+      notes.push_back(
+          "the camera's right is on the other side of up and direction than POV-Ray's usual "
+          "left-handed frame (a `right -x` camera): Lucent's spherical camera renders "
+          "POV-Ray's image upside down");
+    else camera.mirror = true;
+  }
 }
 
-// Square pixels: POV-Ray's image plane is |right| x |up|, Lucent's width x height.
+// POV-Ray's image plane is |right| x |up| whatever the image's size: Lucent's frame-aspect
+// (pinhole and orthographic), which leaves the pixels square only when it is the image's.
+void setFrameAspect(const PovCameraVectors& v, Camera& camera) {
+  camera.frameAspect = glm::length(v.right) / glm::length(v.up);
+}
+
+// Square pixels, for the fisheye: its image circle spans the image's width, height or
+// diagonal in Lucent.
 void checkPixels(const PovCameraVectors& v, int width, int height,
                  std::vector<std::string>& notes) {
   const double povAspect = glm::length(v.right) / glm::length(v.up);
@@ -182,7 +194,22 @@ CameraImport importCamera(const PovCamera& pov, int width, int height) {
     out.error = fmt::format("camera angle {} must be below 180 degrees", *pov.angle);
     return out;
   }
+  if (pov.lookAt && !(glm::length(*pov.lookAt - pov.location) > 0.0)) {
+    out.error = "the camera's look_at is its location: it looks nowhere";
+    return out;
+  }
+  for (const auto& [vector, name] : {std::pair{pov.direction, "direction"},
+                                     std::pair{pov.right, "right"}, std::pair{pov.up, "up"}})
+    if (!(glm::length(vector) > 0.0)) {
+      out.error = fmt::format("the camera's {} vector has no length", name);
+      return out;
+    }
   const PovCameraVectors v = povCameraVectors(pov);
+  for (const Vec3& w : {v.location, v.direction, v.right, v.up})
+    if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z)) {
+      out.error = "the camera's vectors cannot be worked out (the sky along the view?)";
+      return out;
+    }
   switch (pov.type) {
     case PovCameraType::Perspective:
       camera.type = CameraType::Pinhole;
@@ -190,13 +217,13 @@ CameraImport importCamera(const PovCamera& pov, int width, int height) {
       camera.fov =
           degreesOf(2.0 * std::atan(0.5 * glm::length(v.right) / glm::length(v.direction)));
       placeFrame(v, camera, out.differences);
-      checkPixels(v, width, height, out.differences);
+      setFrameAspect(v, camera);
       return out;
     case PovCameraType::Orthographic:
       camera.type = CameraType::Orthographic;
       camera.width = glm::length(v.right);
       placeFrame(v, camera, out.differences);
-      checkPixels(v, width, height, out.differences);
+      setFrameAspect(v, camera);
       return out;
     case PovCameraType::Fisheye: {
       // POV-Ray's image circle has radius width/(2|right|) pixels across and

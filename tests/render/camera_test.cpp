@@ -135,3 +135,59 @@ TEST_CASE("sub-pixel offsets: centre for one sample, Halton (2,3) from index 1",
   CHECK(pixelSampleOffset(3, 4).y == Approx(4.0 / 9.0).epsilon(1e-15));
   CHECK(radicalInverse(2, 6) == 0.375);  // 110b -> 0.011b
 }
+
+TEST_CASE("frame-aspect sets the frame's shape whatever the image's: pixels need not be square",
+          "[render][camera]") {
+  Camera cam;
+  cam.fov = 90.0;  // the horizontal half extent is 1 at distance 1
+  SECTION("pinhole: the top edge is at 1/frame-aspect, on any image") {
+    cam.frameAspect = 2.0;
+    for (auto [w, h] : {std::pair{64, 48}, std::pair{30, 90}}) {
+      auto p = makeProjection(cam, w, h);
+      const Ray top = rayThrough(*p, w / 2.0, 0.0);
+      CHECK(top.d.y / -top.d.z == Approx(0.5).epsilon(1e-14));
+      const Ray right = rayThrough(*p, w, h / 2.0);
+      CHECK(right.d.x / -right.d.z == Approx(1.0).epsilon(1e-14));
+    }
+  }
+  SECTION("orthographic: width across, width/frame-aspect down") {
+    cam.type = CameraType::Orthographic;
+    cam.width = 3.0;
+    cam.frameAspect = 1.5;
+    auto p = makeProjection(cam, 50, 50);
+    CHECK(rayThrough(*p, 25.0, 0.0).o.y == Approx(1.0).epsilon(1e-14));
+    CHECK(rayThrough(*p, 50.0, 25.0).o.x == Approx(1.5).epsilon(1e-14));
+  }
+  SECTION("thin-lens: the same frame as the pinhole") {
+    cam.type = CameraType::ThinLens;
+    cam.frameAspect = 4.0;
+    cam.fStop = 1e9;  // a pinhole's aperture
+    auto p = makeProjection(cam, 40, 40);
+    const Ray top = rayThrough(*p, 20.0, 0.0);
+    CHECK(top.d.y / -top.d.z == Approx(0.25).epsilon(1e-9));
+  }
+  SECTION("0, the default, is the image's own aspect") {
+    auto p = makeProjection(cam, 80, 40);
+    const Ray top = rayThrough(*p, 40.0, 0.0);
+    CHECK(top.d.y / -top.d.z == Approx(0.5).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("mirror flips the image left to right and nothing else", "[render][camera]") {
+  Camera cam;
+  cam.fov = 60.0;
+  Camera mirrored = cam;
+  mirrored.mirror = true;
+  const CameraFrame f = makeCameraFrame(mirrored);
+  CHECK(f.right == Vec3(-1, 0, 0));
+  CHECK(f.up == Vec3(0, 1, 0));
+  auto plain = makeProjection(cam, 64, 48);
+  auto flipped = makeProjection(mirrored, 64, 48);
+  for (double x : {0.5, 10.5, 40.25})
+    for (double y : {0.5, 30.5}) {
+      const Ray a = rayThrough(*plain, x, y), b = rayThrough(*flipped, 64.0 - x, y);
+      CHECK(b.d.x == Approx(a.d.x).margin(1e-15));
+      CHECK(b.d.y == Approx(a.d.y).margin(1e-15));
+      CHECK(b.d.z == Approx(a.d.z).margin(1e-15));
+    }
+}

@@ -30,6 +30,7 @@ std::string sampleValue(const CameraAttribute& a) {
   if (name == "far") return "100";
   if (name == "lenses") return "2 3";
   if (!a.info.choices.empty()) return std::string(a.info.choices.back());
+  if (a.info.type == AttrType::Boolean) return "true";
   return "0.5";
 }
 

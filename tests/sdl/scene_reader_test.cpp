@@ -259,18 +259,16 @@ light_source { <0, 5, 0>, 1 spotlight point_at <0, 0, 1> radius 10 falloff 20 sh
   checkVec(s.lights[1].direction, glm::normalize(Vec3(0, -5, -1)));
 }
 
-TEST_CASE("scene reader: without a camera, POV-Ray's default, said", "[sdl][scene]") {
+TEST_CASE("scene reader: without a camera, POV-Ray's default", "[sdl][scene]") {
   auto r = readScene("sphere { z*3, 1 }\n");
   REQUIRE(r->load.scene);
   const Camera want = importCamera(sdl::PovCamera{}, 160, 120).camera;
   checkVec(r->load.scene->cameras.at(0).position, want.position);
   CHECK(r->load.scene->cameras.at(0).fov == Approx(want.fov));
-  // POV-Ray's default right <1.33,0,0> on a 4:3 image: the pixels' shape is said.
-  bool said = false;
-  for (const std::string& w : r->out.warnings)
-    said = said ||
-           (w.rfind("test.pov: warning:", 0) == 0 && w.find("not square") != std::string::npos);
-  CHECK(said);
+  // POV-Ray's default right <1.33,0,0> on a 4:3 image: its frame, not the image's.
+  CHECK(r->load.scene->cameras.at(0).frameAspect == Approx(1.33));
+  CHECK_FALSE(r->load.scene->cameras.at(0).mirror);
+  CHECK(r->out.warnings.empty());
 }
 
 TEST_CASE("scene reader: every unsupported feature is listed at its place",
