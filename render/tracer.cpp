@@ -156,7 +156,7 @@ Color Tracer::localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3
   const Color kd = m.diffuse * texture;
   Color ambient =
       (m.hasTexture() && m.ambientIsScalar ? m.ambient * texture : m.ambient) * settings_.ambient;
-  if (leaving) ambient *= m.transmissive;
+  if (leaving && !m.innerAmbient) ambient *= m.transmissive;
   local += ambient;
   if (!lights_.empty() && (anyPositive(kd) || m.hasHighlight())) {
     local += directLight(s, n, v, kd, m, media, seed, context);

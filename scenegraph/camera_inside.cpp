@@ -74,7 +74,7 @@ bool containsPlain(const Node& node, const Transform& parentWorld, const Vec3& p
 
 struct Surfaces {
   bool transmissive = false;  // some surface has a transmissive material
-  bool ambient = false;       // some surface has a non-zero ambient colour
+  bool ambient = false;       // some surface has an ambient colour it loses from inside
 };
 
 // What the materials of the shapes under the node (their own or inherited) have.
@@ -85,7 +85,8 @@ void collect(const Scene& scene, const Node& node, uint32_t inherited, Surfaces&
       if (material < scene.materials.size()) {
         const Material& m = scene.materials[material];
         out.transmissive |= m.isTransmissive();
-        out.ambient |= maxComponent(m.ambient) > 0.0f;
+        // inner-ambient keeps the term from inside: nothing to lose.
+        out.ambient |= maxComponent(m.ambient) > 0.0f && !m.innerAmbient;
       }
       return;
     case NodeKind::Use:

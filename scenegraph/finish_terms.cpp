@@ -127,6 +127,13 @@ const std::vector<FinishTerm>& finishTerms() {
              // It tints highlights only: without one, POV-Ray has nothing to tint either.
              if (m.metallic && m.hasHighlight()) out.line("metallic");
            }),
+      term(boolean("inner-ambient", &Material::innerAmbient,
+                   "true: the ambient term also where the surface is seen from inside its "
+                   "solid, as POV-Ray lights every surface. Default false: seen from inside, "
+                   "the ambient is multiplied by transmissive (an opaque solid's inner side "
+                   "gets none, so that a camera inside a backdrop does not see it glow)."),
+           // No POV-Ray line: POV-Ray's own rule is true (povray/ says where false differs).
+           "POV-Ray's rule (it has no keyword: every surface gets its ambient)"),
       term(
           [] {
             Attribute a = number("irid", &Material::irid,

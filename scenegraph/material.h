@@ -35,8 +35,11 @@ struct Material {
   double shininess = 64.0;      // n_s
   Color phong{0.0f};            // k_p: POV-Ray's Phong highlight k_p·(R·L)^phongSize
   double phongSize = 40.0;
-  double brilliance = 1.0;   // the diffuse term is k_d·(N·L)^brilliance
-  bool metallic = false;     // highlights take the surface colour (POV-Ray's metallic)
+  double brilliance = 1.0;  // the diffuse term is k_d·(N·L)^brilliance
+  bool metallic = false;    // highlights take the surface colour (POV-Ray's metallic)
+  // The ambient term also where the surface is seen from inside its solid (POV-Ray's rule);
+  // false: from inside, it is multiplied by transmissive (none inside an opaque solid).
+  bool innerAmbient = false;
   Color reflective{0.0f};    // k_r
   Color transmissive{0.0f};  // k_t
   double ior = 1.0;          // eta

@@ -81,6 +81,7 @@ MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish
   m.diffuse = p * static_cast<float>(finish.diffuse) * opacity;
   m.ambient = p * finish.ambient * opacity;
   m.ambientIsScalar = false;  // the pigment is already in it
+  m.innerAmbient = true;      // POV-Ray lights the inner side of a surface with ambient too
   m.emissive = p * finish.emission * opacity;
   m.brilliance = finish.brilliance;
   // Highlights take the light's colour only: neither pigment nor opacity.

@@ -157,6 +157,31 @@ TEST_CASE("inside an object the ambient term is multiplied by k_t", "[render][sh
   CHECK(outside.r == Approx(0.5 + 0.4 * (0.5 * 0.4 + 0.4 * 0.3)).epsilon(1e-6));
 }
 
+TEST_CASE("inner-ambient keeps the whole ambient term on the inner side, as POV-Ray",
+          "[render][shading]") {
+  Scene scene;
+  scene.render.ambient = Color(1.0f);
+  scene.render.background = Color(0.3f, 0.6f, 0.9f);
+  Material wall;  // opaque: without inner-ambient its inner side would be black
+  wall.ambient = Color(0.25f, 0.5f, 0.75f);
+  wall.innerAmbient = true;
+  Material glass;
+  glass.ambient = Color(0.5f);
+  glass.transmissive = Color(0.4f);
+  glass.ior = 1.0;
+  glass.innerAmbient = true;
+  addShape(scene, SphereSpec{Vec3(0), 2.0}, addMaterial(scene, wall));
+  addShape(scene, SphereSpec{Vec3(10, 0, 0), 2.0}, addMaterial(scene, glass));
+  World world(scene);
+  const Color inWall = traceOne(world, Ray(Vec3(0), Vec3(0, 0, -1)));
+  CHECK(inWall.r == Approx(0.25).epsilon(1e-6));
+  CHECK(inWall.b == Approx(0.75).epsilon(1e-6));
+  // Inside the glass: the full ambient plus what shows through.
+  const Color inGlass = traceOne(world, Ray(Vec3(10, 0, 0), Vec3(0, 0, -1)));
+  CHECK(inGlass.r == Approx(0.5 + 0.4 * 0.3).epsilon(1e-6));
+  CHECK(inGlass.b == Approx(0.5 + 0.4 * 0.9).epsilon(1e-6));
+}
+
 TEST_CASE("emissive and ambient with a texture: k_a = ambient * T only for a single-number ambient",
           "[render][shading]") {
   Scene scene;
