@@ -1,6 +1,6 @@
 // lucent compare SCENE -o DIR: renders the scene with Lucent (through the render library)
-// and with POV-Ray (the exported scene, or --pov FILE) at the same size, sampling, depth and
-// bail-out, both as 16-bit linear PNGs, and writes into DIR:
+// and with POV-Ray (the exported scene, --pov FILE, or a POV-Ray scene itself) at the same size,
+// sampling, depth and bail-out, both as 16-bit linear PNGs, and writes into DIR:
 //   lucent.png, povray.png            8-bit sRGB renders to look at
 //   lucent-linear16.png, povray-linear16.png   what the metrics read
 //   diff.png                          heat map of the largest channel difference
@@ -16,6 +16,7 @@
 #include "commands.h"
 
 #include "frame_loading.h"
+#include "load_pov_scene.h"
 #include "load_scene.h"
 
 #include "povray/compare_report.h"
@@ -188,6 +189,55 @@ PovScene handWrittenScene(const CompareOptions& options, CompareReport& report) 
   return pov;
 }
 
+// `compare SCENE.pov`: POV-Ray renders the scene file itself, given what Lucent's import
+// was given (-D as Declare=, the library folders as +L, the INI file's animation with only
+// the compared frame rendered), its working gamma read from the file as for --pov.
+PovScene sceneItself(const CompareOptions& options, const CommonOptions& common, const Scene& scene,
+                     PovrayRender& job) {
+  PovScene pov{fs::absolute(options.scene)};
+  std::ifstream in(options.scene);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const PovAssumedGamma gamma = findAssumedGamma(text);
+  if (gamma.kind != PovAssumedGamma::Kind::Unreadable) pov.fileGamma = gamma.fileGamma();
+  for (const auto& [name, value] : common.defines)
+    if (name != "clock" && name != "frame") job.extra.push_back("Declare=" + name + "=" + value);
+  const sdl::PovIni ini = readIniOption(common);
+  for (const std::string& dir : common.povLibrary)
+    job.extra.push_back("+L" + fs::absolute(dir).string());
+  for (const fs::path& dir : ini.library) job.extra.push_back("+L" + fs::absolute(dir).string());
+  for (const auto& [name, value] : ini.declared)
+    if (!common.defines.count(name)) job.extra.push_back(fmt::format("Declare={}={}", name, value));
+  const Animation& a = scene.animation;
+  if (a.present && !common.defines.count("clock")) {
+    const int first = ini.initialFrame.value_or(1);
+    const int frame = first + scene.frame - 1;
+    job.extra.insert(
+        job.extra.end(),
+        {fmt::format("+KFI{}", first), fmt::format("+KFF{}", first + a.frames - 1),
+         fmt::format("+KI{}", a.clockFrom), fmt::format("+KF{}", a.clockTo),
+         a.cyclic ? "+KC" : "-KC", fmt::format("+SF{}", frame), fmt::format("+EF{}", frame)});
+    job.clock = 0.0;  // POV-Ray works it out from the frame, as Lucent did
+  }
+  return pov;
+}
+
+// POV-Ray names the image of an animation's frame with the frame's number before the
+// extension: the newest image of that name in the folder.
+fs::path writtenImage(const fs::path& output) {
+  if (fs::exists(output)) return output;
+  const std::string stem = output.stem().string();
+  fs::path found;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(output.parent_path(), ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(stem, 0) != 0 || entry.path().extension() != output.extension()) continue;
+    const std::string digits = entry.path().stem().string().substr(stem.size());
+    if (!digits.empty() && digits.find_first_not_of("0123456789") == std::string::npos)
+      found = entry.path();
+  }
+  return found;
+}
+
 // Lucent, through the render library. Writes its 16-bit linear image into `dir`.
 void renderLucent(const Scene& scene, const Camera& camera, const CompareOptions& options,
                   const fs::path& dir, CompareReport& report) {
@@ -204,9 +254,8 @@ void renderLucent(const Scene& scene, const Camera& camera, const CompareOptions
 // POV-Ray, in the folder of its scene so that relative file names resolve as its author
 // meant. Returns the image it wrote.
 fs::path renderPovray(const std::string& povray, const PovScene& pov,
-                      const RenderSettings& settings, double clock, bool corners,
+                      const RenderSettings& settings, PovrayRender job, bool corners,
                       const CompareOptions& options, const fs::path& dir, CompareReport& report) {
-  PovrayRender job;
   job.input = pov.path.string();
   job.output = fs::absolute(dir / report.povrayLinear).string();
   job.width = settings.width;
@@ -217,7 +266,6 @@ fs::path renderPovray(const std::string& povray, const PovScene& pov,
   job.cornerDepth = settings.adaptiveDepth;
   job.threads = options.threads.value_or(0);
   job.fileGamma = pov.fileGamma;
-  job.clock = clock;
   std::vector<std::string> args = povrayArguments(job);
   report.povrayCommand = commandLine(povray, args);
   const fs::path log = fs::absolute(dir / report.povrayLog);
@@ -226,12 +274,13 @@ fs::path renderPovray(const std::string& povray, const PovScene& pov,
   fs::remove(job.output, ec);
   ProcessResult run = runProcess(povray, args, pov.path.parent_path().string(), log.string());
   report.povraySeconds = run.seconds;
-  if (!run.started || run.exitStatus != 0 || !fs::exists(job.output))
+  const fs::path written = writtenImage(job.output);
+  if (!run.started || run.exitStatus != 0 || written.empty())
     throw IoFailure(
         fmt::format("POV-Ray failed (exit status {}) on '{}'; its last messages "
                     "({}):\n{}",
                     run.exitStatus, pov.path.string(), log.string(), logTail(log, 12)));
-  return job.output;
+  return written;
 }
 
 // Both images decoded the same way: 16-bit linear code values, then sRGB-encoded for the
@@ -285,8 +334,14 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
     throw IoFailure(fmt::format("cannot create the folder '{}'", dir.string()));
 
   CompareReport report = startReport(options, settings);
-  std::optional<PovScene> pov = options.povFile.empty() ? exportedScene(scene, options, dir, report)
-                                                        : handWrittenScene(options, report);
+  PovrayRender job;
+  job.clock = scene.clock;
+  std::optional<PovScene> pov;
+  if (!options.povFile.empty()) pov = handWrittenScene(options, report);
+  else if (isPovScene(options.scene, common.format)) {
+    pov = sceneItself(options, common, scene, job);
+    report.handWritten = true;  // not an export: the POV-Ray scene as written
+  } else pov = exportedScene(scene, options, dir, report);
   if (!pov) return kInvalidScene;
   report.povScene = pov->path.string();
 
@@ -297,7 +352,7 @@ int runCompare(const CompareOptions& options, const CommonOptions& common) {
                         static_cast<size_t>(*options.threads));
   renderLucent(scene, *loaded.camera, options, dir, report);
   const fs::path povrayLinear =
-      renderPovray(*povray, *pov, settings, scene.clock, corners, options, dir, report);
+      renderPovray(*povray, *pov, settings, job, corners, options, dir, report);
   writeComparison(dir, povrayLinear, report);
   printMetrics(report, dir);
   return kOk;

@@ -83,11 +83,30 @@ void addCommonOptions(CLI::App* app, std::vector<std::string>& defines,
   app->allow_extras();
 }
 
-void addFormatOption(CLI::App* app, std::string& format) {
-  app->add_option("--format", format,
+void addPovOptions(CLI::App* app, CommonOptions& common) {
+  app->add_option("--format", common.format,
                   "The scene's language: pov (POV-Ray 3.7) or xml (default: the extension "
                   "decides; .pov and .inc are POV-Ray's)")
       ->check(CLI::IsMember({"pov", "xml"}));
+  app->add_option("--pov-library", common.povLibrary,
+                  "POV-Ray scenes: a folder #include searches after the scene's own, before "
+                  "the standard includes (as POV-Ray's +L; repeatable)")
+      ->type_name("DIR")
+      ->check(CLI::ExistingDirectory)
+      ->allow_extra_args(false);
+  app->add_option("--pov-ini", common.povIni,
+                  "POV-Ray scenes: take the image size, Declare=, Library_Path and the "
+                  "animation's frames and clock from this POV-Ray INI file (FILE[SECTION])")
+      ->type_name("FILE");
+  app->add_option("--allow-write", common.allowWrite,
+                  "POV-Ray scenes: let #fopen write files in this folder (repeatable; "
+                  "without it writing is refused)")
+      ->type_name("DIR")
+      ->check(CLI::ExistingDirectory)
+      ->allow_extra_args(false);
+  app->add_flag("--skip-unsupported", common.skipUnsupported,
+                "POV-Ray scenes: leave out what Lucent cannot render (said once per kind, "
+                "with the count of places) instead of refusing the scene");
 }
 
 // Arguments the command does not take, as CLI11 words it. An unknown option comes first,
@@ -112,7 +131,7 @@ void takeCommonOptions(const std::vector<std::string>& defines,
 }
 
 void addRenderOptions(CLI::App* app, RenderOptions& render) {
-  app->add_option("scene", render.scene, "Scene file (.xml)")->required();
+  app->add_option("scene", render.scene, "Scene file (.xml, or .pov: POV-Ray 3.7)")->required();
   app->add_option("-o,--output", render.output,
                   "Output image; the format follows the extension (png exr tif jpg hdr "
                   "ppm). Default: SCENE.png beside the scene");

@@ -18,8 +18,10 @@ void setHelp(CLI::App* app);
 // takeCommonOptions checks them.
 void addCommonOptions(CLI::App* app, std::vector<std::string>& defines,
                       std::vector<std::string>& allowPaths);
-// --format pov|xml, for the commands that read POV-Ray scenes (load_pov_scene.h).
-void addFormatOption(CLI::App* app, std::string& format);
+// --format pov|xml, --pov-library DIR (repeatable), --pov-ini FILE[SECTION] and
+// --skip-unsupported, for the commands that read POV-Ray scenes (load_pov_scene.h): written
+// into `common` as parsed.
+void addPovOptions(CLI::App* app, CommonOptions& common);
 // Throws UsageError for a malformed or repeated -D.
 void takeCommonOptions(const std::vector<std::string>& defines,
                        const std::vector<std::string>& allowPaths, CommonOptions& common);

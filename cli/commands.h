@@ -38,6 +38,12 @@ struct CommonOptions {
   std::vector<std::string> allowPaths;         // --allow-path DIR[:DIR...]
   // --format pov|xml: the scene's language; empty: its extension decides (load_pov_scene.h).
   std::string format;
+  // POV-Ray scenes only (docs/povray-import.md, "Commands"): --pov-library folders searched
+  // by #include before the standard ones, --pov-ini FILE[SECTION], --skip-unsupported.
+  std::vector<std::string> povLibrary;
+  std::string povIni;
+  bool skipUnsupported = false;
+  std::vector<std::string> allowWrite;  // --allow-write DIR: where #fopen may write
 };
 
 struct RenderOptions {

@@ -42,7 +42,7 @@ bool checkCommandName(int argc, char** argv) {
 // Every command's options as parsed, and the subcommand CLI11 matched.
 struct Commands {
   std::vector<std::string> defines, allowPaths;  // -D and --allow-path, of any command
-  std::string format;                            // --format, of render and check
+  CommonOptions pov;  // --format and the POV-Ray options, of the commands that read scenes
   RenderOptions render;
   CheckOptions check;
   ExportPovOptions exportPov;
@@ -58,7 +58,7 @@ void addRender(CLI::App& app, Commands& c) {
   setHelp(c.renderCmd);
   addRenderOptions(c.renderCmd, c.render);
   addCommonOptions(c.renderCmd, c.defines, c.allowPaths);
-  addFormatOption(c.renderCmd, c.format);
+  addPovOptions(c.renderCmd, c.pov);
 }
 
 void addCheck(CLI::App& app, Commands& c) {
@@ -66,14 +66,14 @@ void addCheck(CLI::App& app, Commands& c) {
   CLI::App* cmd = c.checkCmd =
       app.add_subcommand("check", "Parse and validate a scene; print a summary");
   setHelp(cmd);
-  cmd->add_option("scene", check.scene, "Scene file (.xml)")->required();
+  cmd->add_option("scene", check.scene, "Scene file (.xml, or .pov: POV-Ray 3.7)")->required();
   cmd->add_option("-w,--width", check.width, "Validate for this image width (as render -w)");
   cmd->add_option("-h,--height", check.height, "Validate for this image height (as render -h)");
   cmd->add_option("-s,--samples", check.samples, "Samples per pixel (as render -s)");
   cmd->add_option("--max-depth", check.maxDepth, "Maximum recursion depth (as render)");
   cmd->add_option("--camera", check.camera, "Validate the camera with this name");
   addCommonOptions(cmd, c.defines, c.allowPaths);
-  addFormatOption(cmd, c.format);
+  addPovOptions(cmd, c.pov);
 }
 
 void addExportPov(CLI::App& app, Commands& c) {
@@ -100,6 +100,7 @@ void addConvert(CLI::App& app, Commands& c) {
   cmd->add_option("-o,--output", convert.output, "XML scene to write (.xml)")->required();
   cmd->add_option("--frame", convert.frame, "Convert this frame of an animation (default 1)");
   addCommonOptions(cmd, c.defines, c.allowPaths);
+  addPovOptions(cmd, c.pov);
 }
 
 void addCompare(CLI::App& app, Commands& c) {
@@ -107,7 +108,7 @@ void addCompare(CLI::App& app, Commands& c) {
   CLI::App* cmd = c.compareCmd = app.add_subcommand(
       "compare", "Render with Lucent and POV-Ray; write both images, a heat map and a report");
   setHelp(cmd);
-  cmd->add_option("scene", compare.scene, "Scene file (.xml)")->required();
+  cmd->add_option("scene", compare.scene, "Scene file (.xml, or .pov: POV-Ray 3.7)")->required();
   cmd->add_option("-o,--output", compare.outputDir, "Folder for the images and reports")
       ->required();
   cmd->add_option("--pov", compare.povFile,
@@ -121,6 +122,7 @@ void addCompare(CLI::App& app, Commands& c) {
   cmd->add_option("--camera", compare.camera, "Render through the camera with this name");
   cmd->add_option("--frame", compare.frame, "Compare this frame of an animation (default 1)");
   addCommonOptions(cmd, c.defines, c.allowPaths);
+  addPovOptions(cmd, c.pov);
 }
 
 void addSchema(CLI::App& app, Commands& c) {
@@ -140,7 +142,11 @@ int runCommand(const CLI::App& app, Commands& c) {
             fmt::format("\nRun 'lucent {} --help' for more information.", cmd->get_name()));
     CommonOptions common;
     takeCommonOptions(c.defines, c.allowPaths, common);
-    common.format = c.format;
+    common.format = c.pov.format;
+    common.povLibrary = c.pov.povLibrary;
+    common.povIni = c.pov.povIni;
+    common.skipUnsupported = c.pov.skipUnsupported;
+    common.allowWrite = c.pov.allowWrite;
 
     if (*c.renderCmd) return runRender(c.render, common);
     if (*c.checkCmd) return runCheck(c.check, common);

@@ -74,6 +74,7 @@ std::vector<std::string> povrayArguments(const PovrayRender& r) {
   if (r.threads > 0) args.push_back(fmt::format("+WT{}", r.threads));
   // The shortest text that reads back as the same double.
   if (r.clock != 0.0) args.push_back(fmt::format("+K{}", r.clock));
+  args.insert(args.end(), r.extra.begin(), r.extra.end());
   return args;
 }
 

@@ -30,6 +30,9 @@ struct PovrayRender {
   // POV-Ray's clock (+K): the clock of the frame compared, for a hand-written scene that
   // reads `clock`. Left out of the command when 0 (POV-Ray's own default).
   double clock = 0.0;
+  // Further options, in order, after all of the above (a POV-Ray scene compared as it is:
+  // its Declare=, +L folders and animation frames).
+  std::vector<std::string> extra;
 };
 
 // povray +I.. +O.. +W +H -D -V -GS -GR +FN16 File_Gamma=G -A (or +A0.0 -J +AM1 +Rn, or for

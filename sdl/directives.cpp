@@ -155,11 +155,17 @@ void TokenStream::directiveKeyword(bool& again) {
       messageDirective(kw);
       return;
     case Kw::k_fopen:
+      fopenDirective();
+      return;
     case Kw::k_fclose:
+      fcloseDirective();
+      return;
     case Kw::k_read:
+      readDirective();
+      return;
     case Kw::k_write:
-      error(at, "'#" + std::string(cur_.text()) +
-                    "' (file input and output) is not evaluated yet by Lucent's POV-Ray reader");
+      writeDirective();
+      return;
     default:
       unget_ = true;  // #default and the rest: handed on to the scene reader
       return;

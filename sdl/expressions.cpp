@@ -32,7 +32,7 @@ void fill(double* e, int terms, double v) {
 
 }  // namespace
 
-bool TokenStream::startsExpression(const Token& t) const {
+bool startsExpression(const Token& t) {
   switch (t.kind) {
     case TokenKind::Number:
       return true;

@@ -47,6 +47,7 @@ struct Limits {
   int conditionDepth = 200;        // #if, #while... and macro calls open at once (POV-Ray: 200)
   size_t stringLength = 1 << 24;   // characters in one string value
   size_t arrayElements = 1 << 22;  // elements of one array
+  size_t fileBytes = 1 << 26;      // bytes of a file #read reads, and #write writes in all
 };
 
 struct Options {
@@ -66,6 +67,14 @@ struct Options {
   int imageWidth = 320, imageHeight = 240;
   // Declared before the scene is read, as POV-Ray's Declare=NAME=VALUE.
   std::map<std::string, double> declared;
+
+  // The folders #fopen may write into (--allow-write); none: writing is refused, as
+  // POV-Ray's I/O restrictions refuse it outside permitted paths.
+  std::vector<std::filesystem::path> writeFolders;
+
+  // Features Lucent cannot render are left out, each kind said once with the count of its
+  // places, instead of being errors (--skip-unsupported).
+  bool skipUnsupported = false;
 
   Limits limits;
   Output* output = nullptr;  // nullptr: #debug and warnings go to stderr

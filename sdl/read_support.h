@@ -18,24 +18,9 @@ inline bool isWord(const Token& t, std::string_view word) {
 
 inline Vec3 toVec3(const std::array<double, 3>& v) { return Vec3(v[0], v[1], v[2]); }
 
-// Whether `t` starts a float, vector or colour expression (POV-Ray's optional arguments).
-inline bool startsNumber(const Token& t) {
-  switch (t.kind) {
-    case TokenKind::Number:
-      return true;
-    case TokenKind::Punct:
-      return t.is("(") || t.is("<") || t.is("+") || t.is("-") || t.is("!");
-    case TokenKind::Keyword:
-      return isFloatFunction(t.kw) || isVectorFunction(t.kw) || isColourKey(t.kw) ||
-             t.kw == Kw::k_u || t.kw == Kw::k_v || t.kw == Kw::k_color || t.kw == Kw::k_colour;
-    case TokenKind::Identifier: {
-      const Value* v = t.value();
-      return v && v->isNumeric();
-    }
-    default:
-      return false;
-  }
-}
+// Whether `t` starts a float, vector or colour expression (POV-Ray's optional arguments):
+// the language core's own test.
+inline bool startsNumber(const Token& t) { return startsExpression(t); }
 
 // The item an identifier token names, or null.
 inline const Item* itemOf(const Token& t) {

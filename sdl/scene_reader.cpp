@@ -62,7 +62,13 @@ void SceneReader::unsupported(const Token& t, TokenStream& in, bool skipBlock) {
   const SourceLoc at = t.loc();
   const auto& features = unsupportedFeatures();
   const auto it = features.find(word);
-  if (it != features.end())
+  if (options_.skipUnsupported) {
+    Skipped& s = skipped_[word];
+    if (s.count++ == 0) {
+      s.first = at;
+      s.why = it != features.end() ? std::string(it->second) : "not read yet";
+    }
+  } else if (it != features.end())
     keepError(in, at,
               "'" + word + "' is not supported by Lucent (" + std::string(it->second) + ")");
   else keepError(in, at, "'" + word + "' is not read yet by Lucent's POV-Ray reader");
@@ -225,6 +231,9 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const PovTexture* 
 }
 
 void SceneReader::finishScene(TokenStream& in) {
+  for (const auto& [word, s] : skipped_)
+    in.warning(s.first, "'" + word + "' left out (" + s.why + "): " + std::to_string(s.count) +
+                            (s.count == 1 ? " place" : " places") + ", the first here");
   const int width = options_.imageWidth, height = options_.imageHeight;
   scene_.render.width = width;
   scene_.render.height = height;

@@ -21,6 +21,7 @@
 #include "scenegraph/scene.h"
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -155,7 +156,14 @@ class SceneReader : public ItemReader {
   SourceLoc globalLoc_;
   PovBackground background_;
   std::set<std::string> warned_;  // each warning said once per place
-  int objectDepth_ = 0;           // objects being read within each other
+  // --skip-unsupported: each kind of feature left out, with its count and first place.
+  struct Skipped {
+    int count = 0;
+    SourceLoc first;
+    std::string why;
+  };
+  std::map<std::string, Skipped> skipped_;
+  int objectDepth_ = 0;  // objects being read within each other
   static constexpr int kMaxObjectDepth = 1000;
 };
 

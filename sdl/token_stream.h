@@ -68,6 +68,10 @@ struct Token {
   std::string describe() const;
 };
 
+// Whether `t` starts a float, vector or colour expression (POV-Ray's optional arguments:
+// `hollow [on|off]`, a step after #for's bounds).
+bool startsExpression(const Token& t);
+
 class TokenStream {
  public:
   explicit TokenStream(Options options, ItemReader* items = nullptr);
@@ -199,6 +203,14 @@ class TokenStream {
   double condParam();
   void condParam2(double& a, double& b);
 
+  // file_io.cpp: #fopen, #fclose, #read and #write
+  void fopenDirective();
+  void fcloseDirective();
+  void readDirective();
+  void writeDirective();
+  Token fileIdentifier(const char* directive);
+  void declareAs(const Token& target, Value v, const SourceLoc& at);
+
   // macros.cpp: macros and includes
   void macroDefinition();
   void invokeMacro(std::shared_ptr<Macro> m, SourceLoc callLoc);
@@ -236,7 +248,6 @@ class TokenStream {
   void vectorParam2(std::array<double, 3>& a, std::array<double, 3>& b);
   std::array<double, 5> colour(bool expectFilterTransmit);
   bool colourKey(Kw kw, std::array<double, 5>& c, bool started);
-  bool startsExpression(const Token& t) const;
 
   // builtins.cpp
   double floatFunction(Kw kw);
@@ -284,6 +295,7 @@ class TokenStream {
   SourceLoc directiveLoc_;  // the '#' of the directive being done
   int nesting_ = 0;         // expressions, strings and arrays within each other
   std::vector<std::uint32_t> random_;
+  std::uint64_t bytesWritten_ = 0;  // by #write, all files together
 };
 
 }  // namespace lucent::sdl

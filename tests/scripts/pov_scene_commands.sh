@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `lucent check` and `lucent render` read POV-Ray scenes: the extension decides, --format
 # overrides; every unsupported feature is an error at its place (exit 2); the image is
-# POV-Ray's default size unless -w/-h.
+# POV-Ray's default size unless -w/-h; --skip-unsupported, --pov-library, --pov-ini; a
+# mirrored, non-square camera; `compare SCENE.pov` against POV-Ray on the scene itself.
 # Usage: bash pov_scene_commands.sh <path-to-lucent> <source-dir>
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
@@ -37,6 +38,74 @@ grep -qF "media.pov:1:33: error: 'media' is not supported by Lucent" check.err |
   fail "check media.pov: no media error in: $(cat check.err)"
 grep -qF "media.pov:2:15: error: 'photons' is not supported by Lucent" check.err ||
   fail "check media.pov: no photons error in: $(cat check.err)"
+
+# --skip-unsupported: the rest is rendered, each kind said once with its count of places.
+"$lucent" render --skip-unsupported media.pov -w 20 -h 15 -o media.png -q 2>skip.err ||
+  fail "render --skip-unsupported media.pov exited with $?: $(cat skip.err)"
+[ -s media.png ] || fail "render --skip-unsupported wrote no image"
+grep -qF "media.pov:1:33: warning: 'media' left out (participating media" skip.err ||
+  fail "--skip-unsupported: media not said in: $(cat skip.err)"
+grep -qF "'photons' left out (photon mapping of caustics): 1 place" skip.err ||
+  fail "--skip-unsupported: photons not counted in: $(cat skip.err)"
+[ "$(grep -c "left out" skip.err)" -eq 2 ] || fail "--skip-unsupported: not one line per kind: $(cat skip.err)"
+
+# --pov-library: #include searches the folder; --pov-ini: the INI file's size, Declare= and
+# animation (frame 3 of 5 has clock 0.5: the sphere's colour says which clock was used).
+mkdir -p lib
+echo '#declare Tint = rgb <1, 0, 0>;' >lib/tint.inc
+cat >anim.pov <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+#include "tint.inc"
+camera { location <0, 0, -3> look_at 0 }
+background { rgb <clock, frame_number / 10, Size> }
+POV
+"$lucent" check anim.pov >/dev/null 2>lib.err && fail "anim.pov found tint.inc without --pov-library"
+grep -qF "tint.inc" lib.err || fail "anim.pov: the missing include is not named: $(cat lib.err)"
+cat >anim.ini <<'INI'
+Width=8
+Height=6
+Initial_Frame=1
+Final_Frame=5
+Initial_Clock=0
+Final_Clock=1
+Declare=Size=0.25
+Antialias=On
+INI
+"$lucent" render anim.pov --pov-library lib --pov-ini anim.ini --frames 3 -o anim.ppm -q 2>anim.err ||
+  fail "render --pov-ini anim.ini exited with $?: $(cat anim.err)"
+frame=anim0003.ppm
+[ -s "$frame" ] || fail "render --pov-ini: frame 3 not written as $frame: $(ls)"
+# An 8x6 binary PPM: the header, then the first pixel's bytes (linear 0.5, 0.3, 0.25 as sRGB).
+pixel=$(tail -c $((8 * 6 * 3)) "$frame" | head -c 3 | od -An -tu1 | tr -s ' ')
+[ "$pixel" = " 188 149 137" ] || fail "render --pov-ini frame 3: first pixel '$pixel', not 188 149 137 (clock 0.5, frame_number 3, Size 0.25)"
+"$lucent" check anim.pov --pov-library lib --pov-ini missing.ini >/dev/null 2>ini.err
+[ $? -eq 1 ] || fail "check --pov-ini missing.ini: not a usage error"
+grep -qF "missing.ini: error: cannot read the INI file" ini.err || fail "--pov-ini missing.ini: $(cat ini.err)"
+
+# A POV-Ray camera with `right -x` and non-square pixels (|right|/|up| is not the image's).
+cat >mirror.pov <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { orthographic location <0, 0, -5> right -2*x up 2*y look_at 0 }
+light_source { <0, 0, -10> color rgb 1 }
+sphere { <0.5, 0, 0>, 0.3 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }
+POV
+"$lucent" convert mirror.pov -o mirror.xml 2>conv.err || fail "convert mirror.pov: $(cat conv.err)"
+grep -q 'mirror="true"' mirror.xml || fail "convert mirror.pov: no mirror in $(grep camera mirror.xml)"
+grep -q 'frame-aspect="1"' mirror.xml || fail "convert mirror.pov: no frame-aspect in $(grep camera mirror.xml)"
+
+# compare SCENE.pov runs POV-Ray on the scene itself.
+if command -v povray >/dev/null; then
+  "$lucent" compare ball.pov -w 40 -h 30 -o cmp >cmp.out 2>cmp.err ||
+    fail "compare ball.pov exited with $?: $(cat cmp.err)"
+  # At least 40 dB (inf when identical).
+  psnrAtLeast40() { grep -Eq "^psnr: +(inf|[4-9][0-9]\.|[1-9][0-9][0-9]+\.)" "$1"; }
+  psnrAtLeast40 cmp.out || fail "compare ball.pov: $(cat cmp.out)"
+  grep -q '"pov_scene_hand_written": true' cmp/report.json || fail "compare ball.pov: not the scene itself"
+  "$lucent" compare mirror.pov -w 40 -h 20 -o cmpm >cmpm.out 2>&1 || fail "compare mirror.pov: $(cat cmpm.out)"
+  psnrAtLeast40 cmpm.out || fail "compare mirror.pov: $(cat cmpm.out)"
+fi
 
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)" >&2; exit 1; }
 echo "pov_scene_commands: all checks passed"
