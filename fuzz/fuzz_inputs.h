@@ -26,6 +26,7 @@
 #include "render/texture.h"
 #include "scenegraph/located_error.h"
 #include "scenegraph/world.h"
+#include "sdl/scene_reader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -76,24 +77,9 @@ inline bool refusedInOrder(const std::exception& e) {
   return locatedMessage(e.what());
 }
 
-// The scene is parsed as if it were a file in examples/, so its includes and meshes can
-// reach real files (examples/parts, examples/meshes) and nothing outside that folder.
-inline Outcome sceneParser(const uint8_t* data, size_t size, const std::string& virtualPath) {
-  std::string xml(reinterpret_cast<const char*>(data), size);
-  ParseResult parsed = parseSceneString(xml, virtualPath);
-  // The parser turns an escaped exception into an "internal error" diagnostic rather than
-  // crash; for the fuzzer that is still a bug to find. Only a message that starts so: a
-  // scene's own text can contain the words (tests/fuzz/crashes/scene_parser/).
-  for (const Diagnostic& d : parsed.diagnostics.all())
-    if (d.message.rfind("internal error while reading the scene", 0) == 0) return finding(d.str());
-  if (!parsed.scene) {
-    if (!parsed.diagnostics.hasErrors()) return finding("no scene and no error");
-    return refused();
-  }
-  Scene& scene = *parsed.scene;
-  // A valid scene is also built and one pixel traced, as `lucent render` would; the fuzzer
-  // hunts crashes, not settings that are merely slow (a million samples, a thousand
-  // reflections between mirrors), so those are kept small.
+// A valid scene built and one pixel traced through each camera, as `lucent render` would,
+// with the settings that only make a render slow kept small.
+inline Outcome builtAndTraced(Scene& scene) {
   scene.render.samples = std::min(scene.render.samples, 2);
   scene.render.maxDepth = std::min(scene.render.maxDepth, 8);
   for (Light& light : scene.lights) {
@@ -112,6 +98,51 @@ inline Outcome sceneParser(const uint8_t* data, size_t size, const std::string& 
     return finding(std::string("an exception escaped that is not a located refusal: ") + e.what());
   }
   return accepted();
+}
+
+// The scene is parsed as if it were a file in examples/, so its includes and meshes can
+// reach real files (examples/parts, examples/meshes) and nothing outside that folder.
+inline Outcome sceneParser(const uint8_t* data, size_t size, const std::string& virtualPath) {
+  std::string xml(reinterpret_cast<const char*>(data), size);
+  ParseResult parsed = parseSceneString(xml, virtualPath);
+  // The parser turns an escaped exception into an "internal error" diagnostic rather than
+  // crash; for the fuzzer that is still a bug to find. Only a message that starts so: a
+  // scene's own text can contain the words (tests/fuzz/crashes/scene_parser/).
+  for (const Diagnostic& d : parsed.diagnostics.all())
+    if (d.message.rfind("internal error while reading the scene", 0) == 0) return finding(d.str());
+  if (!parsed.scene) {
+    if (!parsed.diagnostics.hasErrors()) return finding("no scene and no error");
+    return refused();
+  }
+  return builtAndTraced(*parsed.scene);
+}
+
+// The POV-Ray importer (sdl/): the text read as a scene file lying in tests/data/sdl/samples
+// (whose includes it may read, with the standard include folder), evaluated within limits
+// small enough for a fuzzer's pace, then built and traced as above. Every error must be
+// located; an "internal error" diagnostic is an exception that escaped, a finding.
+inline Outcome povImporter(const uint8_t* data, size_t size, const std::string& folder) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  sdl::CollectedOutput out;
+  sdl::Options options;
+  options.output = &out;
+  options.imageWidth = 32;
+  options.imageHeight = 24;
+  options.limits.tokens = 2'000'000;
+  options.limits.loopIterations = 20'000;
+  options.limits.stringLength = 1 << 16;
+  options.limits.arrayElements = 1 << 16;
+  sdl::SceneLoad load = sdl::loadSceneText("fuzz.pov", text, folder, options);
+  for (const Diagnostic& d : load.diagnostics.all()) {
+    if (d.message.rfind("internal error while reading the scene", 0) == 0) return finding(d.str());
+    if (d.severity == Severity::Error && d.loc.file.empty())
+      return finding("an error without a place: " + d.message);
+  }
+  if (!load.scene) {
+    if (!load.diagnostics.hasErrors()) return finding("no scene and no error");
+    return refused();
+  }
+  return builtAndTraced(*load.scene);
 }
 
 // The result keeps its promises: an accepted transform is finite and invertible (the scene

@@ -74,6 +74,15 @@ TEST_CASE("fuzz regressions: scene parser inputs are refused or built cleanly", 
   CHECK(n > 0);
 }
 
+TEST_CASE("fuzz regressions: POV-Ray scenes are imported and built cleanly, or refused located",
+          "[fuzz][sdl]") {
+  const size_t n = replayAll("pov_importer", [](const uint8_t* d, size_t n) {
+    return lucent::fuzz::povImporter(d, n,
+                                     std::string(lucentSourceDir()) + "/tests/data/sdl/samples");
+  });
+  CHECK(n >= 9);
+}
+
 TEST_CASE("fuzz regressions: transform syntax inputs keep their outcome", "[fuzz]") {
   const size_t n = replayAll("transform_syntax", [](const uint8_t* d, size_t n) {
     return lucent::fuzz::transformSyntax(d, n);

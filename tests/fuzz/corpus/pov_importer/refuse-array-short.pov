@@ -1,0 +1,1 @@
+#declare A = array[3] { 1, 2 };

@@ -1,0 +1,2 @@
+#macro R(N) R(N + 1) #end
+R(0)
