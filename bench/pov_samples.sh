@@ -1,0 +1,212 @@
+#!/usr/bin/env bash
+# POV-Ray's own sample scenes as a measurement of the POV-Ray importer: every .pov file of
+# Debian's povray-examples (scripts/install-bench-deps installs it) through `lucent check`,
+# and each one that imports through `lucent render` and `lucent compare` (POV-Ray on the
+# same file), at 320x240, one sample, one thread, with the scene's .ini file where it has
+# one (an animation at its middle frame). Writes docs/pov-samples.md: a row per scene
+# (imported, refused with the first unsupported feature and its place, crashed, hung), its
+# PSNR against POV-Ray, the CPU ratio, and a summary. Scenes below 35 dB take their reason
+# from bench/pov_samples_notes.txt ("path/of/scene.pov: why"). Not a CI test.
+#
+#   bash bench/pov_samples.sh [--lucent PATH] [--examples DIR] [--out FILE] [--only REGEX]
+set -uo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+
+lucent=build/cli/lucent
+examples=/usr/share/doc/povray/examples
+out=docs/pov-samples.md
+only=.
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --lucent) lucent=$2; shift 2 ;;
+    --examples) examples=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    --only) only=$2; shift 2 ;;
+    *) echo "usage: $0 [--lucent PATH] [--examples DIR] [--out FILE] [--only REGEX]" >&2; exit 2 ;;
+  esac
+done
+lucent=$(realpath -m "$lucent")
+out=$(realpath -m "$out")
+notes=$root/bench/pov_samples_notes.txt
+[ -x "$lucent" ] || { echo "no lucent at $lucent (build it first)" >&2; exit 2; }
+[ -d "$examples" ] || { echo "no $examples: run scripts/install-bench-deps (povray-examples)" >&2; exit 2; }
+command -v povray >/dev/null || { echo "povray is not installed (scripts/install-deps)" >&2; exit 2; }
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+rows=$work/rows.tsv  # scene, outcome, detail, psnr, lucent cpu, povray s, ratio, import s, parse s
+: >"$rows"
+
+# The .ini file of a scene: one in its folder whose Input_File_Name names it, else one of
+# the same name.
+iniOf() {
+  local pov=$1 dir name ini
+  dir=$(dirname "$pov")
+  name=$(basename "$pov")
+  for ini in "$dir"/*.ini; do
+    [ -f "$ini" ] || continue
+    if grep -qiE "^[[:space:]]*Input_File_Name[[:space:]]*=[[:space:]]*\"?$name\"?[[:space:]]*(;.*)?$" "$ini"; then
+      echo "$ini"
+      return
+    fi
+  done
+  [ -f "${pov%.pov}.ini" ] && echo "${pov%.pov}.ini"
+}
+
+# An .ini file's Initial_Frame (1 when it has none).
+iniFirst() {
+  local first
+  first=$(grep -iE '^[[:space:]]*Initial_Frame[[:space:]]*=' "$1" 2>/dev/null | tail -1 | sed 's/.*=[[:space:]]*//; s/[[:space:];].*//')
+  echo "${first:-1}"
+}
+
+# The middle frame (1-based, as --frame counts) of an .ini file's animation; 1 without one.
+middleFrame() {
+  local ini=$1 first last
+  first=$(grep -iE '^[[:space:]]*Initial_Frame[[:space:]]*=' "$ini" | tail -1 | sed 's/.*=[[:space:]]*//; s/[[:space:];].*//')
+  last=$(grep -iE '^[[:space:]]*Final_Frame[[:space:]]*=' "$ini" | tail -1 | sed 's/.*=[[:space:]]*//; s/[[:space:];].*//')
+  first=${first:-1}
+  last=${last:-$first}
+  echo $(((last - first) / 2 + 1))
+}
+
+# CPU seconds (user + system) of a command, into the variable cpu; its status returned.
+TIMEFORMAT='%3U %3S'
+timed() {
+  local t status
+  { t=$( { time "$@" >/dev/null 2>>"$work/err"; } 2>&1 ); } 
+  status=$?
+  cpu=$(echo "$t" | tail -1 | awk '{printf "%.3f", $1 + $2}')
+  return $status
+}
+
+count=0
+while IFS= read -r pov; do
+  rel=${pov#"$examples"/}
+  [[ "$rel" =~ $only ]] || continue
+  count=$((count + 1))
+  dir=$(dirname "$pov")
+  name=$(basename "$pov")
+  ini=$(iniOf "$pov")
+  args=(-w 320 -h 240)
+  frameArgs=()
+  checkFrame=()
+  if [ -n "$ini" ]; then
+    args+=(--pov-ini "$ini")
+    frame=$(middleFrame "$ini")
+    [ "$frame" -gt 1 ] && frameArgs=(--frame "$frame") && checkFrame=(-D "frame=$frame")
+  fi
+  cd "$dir"
+  timeout 120 "$lucent" check "${args[@]}" "$name" >/dev/null 2>"$work/check.err"
+  status=$?
+  if [ $status -eq 124 ]; then
+    printf '%s\thung\tcheck did not end in 120 s\t\t\t\t\n' "$rel" >>"$rows"
+  elif [ $status -ge 128 ] || { [ $status -ne 0 ] && [ $status -ne 2 ] && [ $status -ne 1 ]; }; then
+    printf '%s\tcrashed\tcheck exit status %s\t\t\t\t\n' "$rel" "$status" >>"$rows"
+  elif [ $status -ne 0 ]; then
+    first=$(grep -m1 ': error: ' "$work/check.err" | sed "s#^$examples/##; s#^/usr/share/povray-3.7/include/##")
+    printf '%s\trefused\t%s\t\t\t\t\n' "$rel" "${first:-exit status $status}" >>"$rows"
+  else
+    : >"$work/err"
+    timed timeout 600 "$lucent" render "${args[@]}" "${frameArgs[@]/--frame/--frames}" -s 1 -t 1 -q \
+      -o "$work/lucent.png" "$name"
+    status=$?
+    lucentCpu=$cpu
+    if [ $status -ne 0 ]; then
+      printf '%s\t%s\trender exit status %s\t\t\t\t\n' "$rel" \
+        "$([ $status -eq 124 ] && echo hung || echo crashed)" "$status" >>"$rows"
+    else
+      rm -rf "$work/cmp"
+      timeout 1200 "$lucent" compare "${args[@]}" "${frameArgs[@]}" -t 1 -o "$work/cmp" "$name" \
+        >/dev/null 2>"$work/cmp.err"
+      status=$?
+      if [ $status -ne 0 ] || [ ! -f "$work/cmp/report.json" ]; then
+        why=$(grep -m1 -iE 'error|failed' "$work/cmp.err" | cut -c1-120)
+        printf '%s\timported\tcompare failed: %s\t\t%s\t\t\n' "$rel" "${why:-exit $status}" "$lucentCpu" >>"$rows"
+      else
+        psnr=$(sed -n 's/^ *"psnr_db": \(.*\),$/\1/p' "$work/cmp/report.json")
+        if [ "$psnr" = null ]; then psnr=inf; else psnr=$(printf '%.2f' "$psnr"); fi
+        povSeconds=$(sed -n 's/^ *"povray_seconds": \(.*\),$/\1/p' "$work/cmp/report.json")
+        ratio=$(awk -v p="$povSeconds" -v l="$lucentCpu" 'BEGIN{ if (l > 0) printf "%.2f", p / l; }')
+        note=""
+        [ -f "$notes" ] && note=$(grep -F "$rel:" "$notes" | head -1 | sed "s#^$rel: *##")
+        # Importing against POV-Ray's parse: the least of three runs of each (lucent check's
+        # CPU seconds; POV-Ray's own "Parse Time" of the same frame at 8x8, no output).
+        importS="" parseS=""
+        for run in 1 2 3; do
+          timed "$lucent" check "${args[@]}" "${checkFrame[@]}" "$name"
+          [ -z "$importS" ] || awk -v a="$cpu" -v b="$importS" 'BEGIN{exit !(a < b)}' && importS=$cpu
+          povArgs=(+I"$name" +W8 +H8 -D -F +GS -V)
+          [ -n "$ini" ] && povArgs=("$ini" "${povArgs[@]}")
+          [ ${#frameArgs[@]} -gt 0 ] && povArgs+=(+SF"$(( $(iniFirst "$ini") + frame - 1 ))" +EF"$(( $(iniFirst "$ini") + frame - 1 ))")
+          p=$(povray "${povArgs[@]}" 2>&1 | sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' | tail -1)
+          [ -n "$p" ] && { [ -z "$parseS" ] || awk -v a="$p" -v b="$parseS" 'BEGIN{exit !(a < b)}'; } && parseS=$p
+        done
+        printf '%s\timported\t%s\t%s\t%s\t%.3f\t%s\t%s\t%s\n' "$rel" "$note" "$psnr" "$lucentCpu" \
+          "$povSeconds" "$ratio" "$importS" "$parseS" >>"$rows"
+      fi
+    fi
+  fi
+  cd "$root"
+  echo "$rel: $(tail -1 "$rows" | cut -f2,4,7)" >&2
+done < <(find "$examples" -name '*.pov' | sort)
+
+# The page.
+{
+  echo "# POV-Ray's sample scenes through Lucent's importer"
+  echo
+  echo "Written by \`bash bench/pov_samples.sh\` ($(date -u +%Y-%m-%d), $count scenes of"
+  echo "Debian's \`povray-examples\`, $(povray --version 2>&1 | grep -m1 -o 'POV-Ray [0-9.]*')): each scene through"
+  echo "\`lucent check\`, and each one that imports through \`lucent render\` and \`lucent compare\`"
+  echo "(POV-Ray 3.7 on the same file) at 320x240, one sample, one thread, with its \`.ini\`"
+  echo "file where it has one (an animation at its middle frame). PSNR is compare's (sRGB"
+  echo "values); the CPU ratio is POV-Ray's seconds (one thread, parse and render, as compare"
+  echo "timed it) over Lucent's CPU seconds for \`lucent render\` (import, render, PNG)."
+  echo
+  echo "## Summary"
+  echo
+  echo "| outcome | scenes |"
+  echo "| --- | --- |"
+  for o in imported refused crashed hung; do
+    echo "| $o | $(awk -F'\t' -v o="$o" '$2 == o' "$rows" | wc -l) |"
+  done
+  echo
+  echo "PSNR of the imported scenes:"
+  echo
+  awk -F'\t' '$2 == "imported" && $4 != "" {
+      if ($4 == "inf" || $4 + 0 >= 50) a++; else if ($4 + 0 >= 40) b++;
+      else if ($4 + 0 >= 35) c++; else d++; total++ }
+    END { printf "| PSNR | scenes |\n| --- | --- |\n| identical or 50 dB and above | %d |\n", a;
+      printf "| 40 to 50 dB | %d |\n| 35 to 40 dB | %d |\n| below 35 dB | %d |\n", b, c, d;
+      if (total) printf "\nAt 35 dB or more: %d of %d (%.0f %%).\n", a + b + c, total, 100 * (a + b + c) / total }' "$rows"
+  echo
+  ratios=$(awk -F'\t' '$2 == "imported" && $7 != "" { print $7 }' "$rows" | sort -g)
+  n=$(echo "$ratios" | grep -c . || true)
+  if [ "$n" -gt 0 ]; then
+    median=$(echo "$ratios" | awk -v n="$n" 'NR == int((n + 1) / 2) { print }')
+    echo "Median CPU ratio (POV-Ray / Lucent) over $n compared scenes: **${median}x**."
+  fi
+  echo
+  awk -F'\t' '$2 == "imported" && $8 != "" && $9 != "" { n++; if ($8 + 0 < $9 + 0) f++ }
+    END { if (n) printf "Importing (lucent check: read, evaluate, build the scene, CPU seconds) against POV-Ray'"'"'s own parse of the same scene (its Parse Time), the least of three runs each: Lucent faster for %d of %d scenes.\n\n", f, n }' "$rows"
+  echo "Refusals by feature (the first unsupported feature of each refused scene):"
+  echo
+  echo "| feature | scenes |"
+  echo "| --- | --- |"
+  awk -F'\t' '$2 == "refused" { d = $3; if (match(d, /\x27[^\x27]*\x27/)) f = substr(d, RSTART, RLENGTH);
+      else { sub(/^[^ ]* error: /, "", d); f = substr(d, 1, 60) } n[f]++ }
+    END { for (f in n) printf "| %s | %d |\n", f, n[f] }' "$rows" | sort -t'|' -k3 -rn
+  echo
+  echo "Imported scenes below 35 dB, and why (bench/pov_samples_notes.txt):"
+  echo
+  awk -F'\t' '$2 == "imported" && $4 != "" && $4 != "inf" && $4 + 0 < 35 {
+      printf "- %s (%.1f dB): %s\n", $1, $4, ($3 == "" ? "**no reason written yet**" : $3) }' "$rows"
+  echo
+  echo "## Every scene"
+  echo
+  echo "| scene | outcome | PSNR (dB) | Lucent CPU (s) | POV-Ray (s) | ratio | import (s) | POV-Ray parse (s) | detail |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+  awk -F'\t' '{ d = $3; gsub(/\|/, "\\|", d); printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, $4, $5, $6, $7, $8, $9, d }' "$rows"
+} >"$out"
+echo "wrote $out" >&2
