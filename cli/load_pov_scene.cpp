@@ -1,6 +1,7 @@
 #include "load_pov_scene.h"
 
 #include "lang/file_access.h"
+#include "sdl/console_text.h"
 #include "sdl/pov_ini.h"
 #include "sdl/scene_reader.h"
 
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <iostream>
 
 namespace lucent::cli {
 
@@ -81,6 +83,21 @@ void setMoment(const sdl::PovIni& ini, const Animation& animation, int frame,
                                       : ini.clock.value_or(0.0);
 }
 
+// #debug printed at once, as POV-Ray prints it; warnings kept as the load's diagnostics, so
+// that the command prints them as it prints an XML scene's (once over an animation's
+// frames, not at all on the workers of a distributed render).
+class LoadOutput : public sdl::Output {
+ public:
+  void debug(const std::string& text) override { std::cerr << printer_.add(text) << std::flush; }
+  void warning(const SourceLoc& loc, const std::string& message) override {
+    warnings.warning(loc, message);
+  }
+  Diagnostics warnings;
+
+ private:
+  sdl::DebugPrinter printer_;
+};
+
 }  // namespace
 
 sdl::PovIni readIniOption(const CommonOptions& common) {
@@ -130,6 +147,8 @@ ParseResult parsePovScene(const SceneRequest& request, const CommonOptions& comm
   result.frame = frame.value_or(request.frame);
   setMoment(ini, result.animation, result.frame, clock, options);
   result.clock = options.clock;
+  LoadOutput output;
+  options.output = &output;
   sdl::SceneLoad load = sdl::loadScene(request.scene, options);
   result.scene = std::move(load.scene);
   if (result.scene) {
@@ -137,7 +156,11 @@ ParseResult parsePovScene(const SceneRequest& request, const CommonOptions& comm
     result.scene->frame = result.frame;
     result.scene->clock = result.clock;
   }
-  result.diagnostics = std::move(load.diagnostics);
+  result.diagnostics = std::move(output.warnings);
+  for (const Diagnostic& d : load.diagnostics.all()) {
+    if (d.severity == Severity::Error) result.diagnostics.error(d.loc, d.message);
+    else result.diagnostics.warning(d.loc, d.message);
+  }
   result.sources.push_back(canonicalPath(request.scene));
   for (const fs::path& f : access.granted())
     if (std::find(result.sources.begin(), result.sources.end(), f) == result.sources.end())

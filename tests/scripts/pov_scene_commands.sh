@@ -79,6 +79,12 @@ frame=anim0003.ppm
 # An 8x6 binary PPM: the header, then the first pixel's bytes (linear 0.5, 0.3, 0.25 as sRGB).
 pixel=$(tail -c $((8 * 6 * 3)) "$frame" | head -c 3 | od -An -tu1 | tr -s ' ')
 [ "$pixel" = " 188 149 137" ] || fail "render --pov-ini frame 3: first pixel '$pixel', not 188 149 137 (clock 0.5, frame_number 3, Size 0.25)"
+# A warning of every frame is printed once, as for an XML animation.
+echo 'sphere { 0, 1 scale <1, 0, 1> pigment { Tint } }' >>anim.pov
+"$lucent" render anim.pov --pov-library lib --pov-ini anim.ini --frames 1..3 -o warn.ppm -q 2>warn.err ||
+  fail "render 3 frames exited with $?: $(cat warn.err)"
+[ "$(grep -c "scale by 0 is taken as 1" warn.err)" -eq 1 ] ||
+  fail "the warning of 3 frames is not printed once: $(cat warn.err)"
 "$lucent" check anim.pov --pov-library lib --pov-ini missing.ini >/dev/null 2>ini.err
 [ $? -eq 1 ] || fail "check --pov-ini missing.ini: not a usage error"
 grep -qF "missing.ini: error: cannot read the INI file" ini.err || fail "--pov-ini missing.ini: $(cat ini.err)"
