@@ -30,7 +30,7 @@ inline bool startsNumber(const Token& t) {
              t.kw == Kw::k_u || t.kw == Kw::k_v || t.kw == Kw::k_color || t.kw == Kw::k_colour;
     case TokenKind::Identifier: {
       const Value* v = t.value();
-      return v && v->isNumeric();
+      return v && (v->isNumeric() || v->type == ValueType::Function);
     }
     default:
       return false;

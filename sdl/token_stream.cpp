@@ -270,6 +270,8 @@ bool TokenStream::readWord(const RawToken& r, SourceFile* f) {
     if (v && v->type == ValueType::Array && rawPeek().kind == RawKind::Punct &&
         rawPeek().text == "[")
       resolveArrayElement(t);
+    if (v && v->type == ValueType::Function)
+      t.call = rawPeek().kind == RawKind::Punct && rawPeek().text == "(";
     cur_ = t;
     return true;
   }
