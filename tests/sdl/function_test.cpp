@@ -67,6 +67,10 @@ TEST_CASE("sdl function: declared, called with numbers, with POV-Ray's parameter
   // 2*M(F, 3) is 2*F(3) + 1, as in POV-Ray).
   CHECK(numberAfter("#declare F = function(a) { a*a }\n#macro M(G, w) G(w) + 1 #end\n"
                     "#declare R = 2*M(F, 3);") == 19.0);
+  // Given to a macro as its argument, and declared with #local.
+  CHECK(numberAfter("#macro M(G) G(3, 0, 0) #end\n#declare R = M(function { x*2 });") == 6.0);
+  CHECK(numberAfter("#macro M() #local L = function { x + 1 } L(1, 0, 0) #end\n"
+                    "#declare R = M();") == 2.0);
   // Copied by #declare.
   CHECK(numberAfter("#declare F = function(a) { a + 1 }\n#declare G = F;\n#declare R = G(1);") ==
         2.0);
