@@ -92,6 +92,9 @@ struct FnNode {
   std::shared_ptr<const FunctionValue> callee;  // Call
   int member = -1;  // Call of a vector function: the component taken (`.x`, `.red`...)
   SourceLoc loc;    // where it is written (for calls: the function's name)
+  // The longest chain of nodes and of calls within calls from here down (the tree may share
+  // a node, as pow(a, 4) = (a*a)*(a*a) does, so this is kept, not walked).
+  int depth = 1;
 };
 
 struct FunctionValue {

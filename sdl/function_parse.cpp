@@ -38,11 +38,20 @@ constexpr MathWord kMathWords[] = {
     {Kw::k_mod, FnMath::Mod},         {Kw::k_div, FnMath::Div},
 };
 
+// The deepest chain below `n`'s arguments and callee, plus `n` itself.
+int depthOf(const FnNode& n) {
+  int d = 0;
+  for (const FnNodePtr& a : n.args) d = std::max(d, a->depth);
+  if (n.callee) d += n.callee->depth;
+  return d + 1;
+}
+
 FnNodePtr node(FnOp op, std::vector<FnNodePtr> args, const SourceLoc& loc) {
   auto n = std::make_shared<FnNode>();
   n->op = op;
   n->args = std::move(args);
   n->loc = loc;
+  n->depth = depthOf(*n);
   return n;
 }
 
@@ -54,15 +63,6 @@ FnNodePtr constant(double v, const SourceLoc& loc) {
 }
 
 bool isConstant(const FnNodePtr& n) { return n->op == FnOp::Constant; }
-
-// The deepest chain of nodes and of calls within calls below `n` (what evaluating it or
-// writing it out recurses through).
-int depthOf(const FnNode& n) {
-  int d = 0;
-  for (const FnNodePtr& a : n.args) d = std::max(d, depthOf(*a));
-  if (n.callee) d += n.callee->depth;
-  return d + 1;
-}
 
 // A binary operation, folded when both sides are numbers (as POV-Ray folds them).
 FnNodePtr binary(FnOp op, FnNodePtr l, FnNodePtr r, const SourceLoc& loc) {
@@ -230,7 +230,7 @@ std::shared_ptr<const FunctionValue> TokenStream::parseFunction(bool declaration
   if (!cur_.is("}"))
     error(cur_, "expected an operator or the '}' closing the function opened at " +
                     open.loc().str() + ", found " + cur_.describe());
-  f->depth = depthOf(*f->body);
+  f->depth = f->body->depth;
   if (f->depth > kMaxFunctionDepth)
     error(f->loc, "this function's operations and calls are nested more than " +
                       std::to_string(kMaxFunctionDepth) +
@@ -532,6 +532,7 @@ FnNodePtr TokenStream::fnUserCall(FnScope& s) {
   n->args = std::move(args);
   n->callee = callee;
   n->loc = at.loc();
+  n->depth = depthOf(*n);
   getToken();
   if (cur_.is(".")) {
     getToken();

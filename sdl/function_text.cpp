@@ -39,7 +39,13 @@ class TextWriter {
   }
 
  private:
+  // Every level is held to the bound, so a tree that shares nodes (pow(pow(a, 8), 8)...)
+  // cannot grow a text without end before it is refused.
   std::string write(const FnNode& n, const std::vector<std::string>& args) {
+    return checked(writeNode(n, args), n.loc);
+  }
+
+  std::string writeNode(const FnNode& n, const std::vector<std::string>& args) {
     auto a = [&](size_t i) { return write(*n.args[i], args); };
     auto binary = [&](const char* op) { return paren(a(0) + " " + op + " " + a(1)); };
     switch (n.op) {

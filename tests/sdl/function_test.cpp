@@ -71,6 +71,9 @@ TEST_CASE("sdl function: declared, called with numbers, with POV-Ray's parameter
   CHECK(numberAfter("#macro M(G) G(3, 0, 0) #end\n#declare R = M(function { x*2 });") == 6.0);
   CHECK(numberAfter("#macro M() #local L = function { x + 1 } L(1, 0, 0) #end\n"
                     "#declare R = M();") == 2.0);
+  // Kept in an array, and called from it.
+  CHECK(numberAfter("#declare A = array[2] { function { x }, function { y } }\n"
+                    "#declare R = A[1](1, 2, 3) + 10*A[0](1, 2, 3);") == 12.0);
   // Copied by #declare.
   CHECK(numberAfter("#declare F = function(a) { a + 1 }\n#declare G = F;\n#declare R = G(1);") ==
         2.0);
@@ -227,6 +230,17 @@ TEST_CASE("sdl function: nesting and evaluation are bounded", "[sdl][function]")
             "(x, y, z) + F" + std::to_string(i - 1) + "(x, y, z) }\n";
   text += "#declare R = F40(1, 2, 3);\n";
   CHECK(sdltest::errorOf(text).find("takes more than 10000000 steps") != std::string::npos);
+  // pow(a, 8) is a's square squared twice, a shared node: eight of them within each other
+  // would evaluate `x` 8^8 times and write it out as many times; both are refused at once.
+  const std::string powers =
+      "#declare F = function { pow(pow(pow(pow(pow(pow(pow(pow(x, 8), 8), 8), 8), 8), 8), 8), 8) "
+      "}\n";
+  CHECK(sdltest::errorOf(powers + "#declare R = F(1, 2, 3);\n").find("takes more than") !=
+        std::string::npos);
+  const Value f = valueAfter(powers, "F");
+  REQUIRE(f.type == ValueType::Function);
+  CHECK_THROWS_WITH(functionText(*f.function, {"x", "y", "z"}),
+                    Catch::Contains("longer than 1000000 characters"));
   // A chain of calls deeper than the bound is refused where it is declared.
   std::string deep = "#declare F0 = function { x }\n";
   for (int i = 1; i <= 600; ++i)
