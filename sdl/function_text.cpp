@@ -9,6 +9,7 @@
 
 #include "lang/expression.h"
 
+#include <cctype>
 #include <cmath>
 
 namespace lucent::sdl {
@@ -151,15 +152,32 @@ class TextWriter {
     }
   }
 
-  // `text` with $0..$9 replaced by the arguments.
+  // `text` with $0..$9, and the words X, Y, Z, X2, Y2, Z2, P0..P9, replaced by the
+  // arguments (internal_functions.h).
   static std::string substitute(const char* text, const std::vector<std::string>& args) {
     std::string out;
-    for (const char* c = text; *c; ++c) {
+    for (const char* c = text; *c;) {
       if (*c == '$' && c[1] >= '0' && c[1] <= '9') {
         out += args[static_cast<size_t>(c[1] - '0')];
-        ++c;
+        c += 2;
+        continue;
+      }
+      if (!std::isalpha(static_cast<unsigned char>(*c))) {
+        out += *c++;
+        continue;
+      }
+      const char* end = c;
+      while (std::isalnum(static_cast<unsigned char>(*end)) || *end == '_') ++end;
+      const std::string word(c, end);
+      c = end;
+      if (word.size() <= 2 && (word[0] == 'X' || word[0] == 'Y' || word[0] == 'Z')) {
+        const std::string& a = args[static_cast<size_t>(word[0] - 'X')];
+        out += word.size() == 1 ? a : "(" + a + "*" + a + ")";
+      } else if (word.size() == 2 && word[0] == 'P' &&
+                 std::isdigit(static_cast<unsigned char>(word[1]))) {
+        out += args[static_cast<size_t>(3 + word[1] - '0')];
       } else {
-        out += *c;
+        out += word;
       }
     }
     return out;

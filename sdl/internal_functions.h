@@ -15,7 +15,9 @@ struct InternalFunction {
   int params;        // x, y, z and its own
   // The closed form; null when Lucent does not evaluate it (then `refusal` says why).
   double (*evaluate)(const double* p);
-  // The same formula as Lucent expression text, $0..$9 standing for the parameters.
+  // The same formula as Lucent expression text, $0..$9 standing for the parameters (or,
+  // for the clamped polynomials, the words X, Y, Z, X2, Y2, Z2 for the point and its
+  // squares, P0, P1... for the function's own parameters).
   const char* text;
 };
 

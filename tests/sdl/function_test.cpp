@@ -134,6 +134,7 @@ TEST_CASE("sdl function: each internal formula's Lucent text gives its C++ value
   const double points[][3] = {{0.3, -0.2, 0.7}, {1.1, 0.4, -0.6}, {-0.05, 0.9, 0.25}};
   const char* params[] = {"0.7", "0.45", "0.6", "0.35", "0.8", "0.55", "0.3"};
   const double values[] = {0.7, 0.45, 0.6, 0.35, 0.8, 0.55, 0.3};
+  // (Each formula at these points with these parameters, C++ against text.)
   int checked = 0;
   for (int n = 0; internalFunction(n); ++n) {
     const InternalFunction* in = internalFunction(n);
@@ -168,7 +169,7 @@ TEST_CASE("sdl function: each internal formula's Lucent text gives its C++ value
     }
     ++checked;
   }
-  CHECK(checked == 13);
+  CHECK(checked == 39);
 }
 
 TEST_CASE("sdl function: an isosurface's text inlines user functions", "[sdl][function]") {
