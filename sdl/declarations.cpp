@@ -4,6 +4,8 @@
 // or the macro call's), or makes one there.
 #include "token_stream.h"
 
+#include <utility>
+
 namespace lucent::sdl {
 
 void TokenStream::declare(bool local, const SourceLoc& at) {
@@ -37,6 +39,7 @@ void TokenStream::declare(bool local, const SourceLoc& at) {
   expect("=");
   okToDeclare_ = true;
   Value v;
+  declaring_ = name;
   if (!rvalue(v, nullptr, false, true)) {
     getToken();
     error(cur_,
@@ -79,13 +82,19 @@ void TokenStream::assignElement(ArrayValue& a, size_t index, Value v, const Sour
 bool TokenStream::rvalue(Value& out, Ref* byRef, bool parameter, bool semicolonAfter) {
   Nesting nesting(*this);
   const bool prevOk = okToDeclare_;
+  // The name being declared belongs to this right-hand side only (not to an array's elements).
+  const std::string declaring = std::exchange(declaring_, std::string());
   getToken();
   const Token t = cur_;
   bool found = true;
   const Value* tv = t.kind == TokenKind::Identifier ? t.value() : nullptr;
-  if (tv && !tv->isNumeric()) {
+  if (tv && !tv->isNumeric() && !(tv->type == ValueType::Function && t.call)) {
     if (parameter && byRef) *byRef = t.ref;
     else out = copyValue(*tv);
+  } else if (t.kind == TokenKind::Keyword && t.text() == "function") {
+    out = Value{};
+    out.type = ValueType::Function;
+    out.function = parseFunction(true, parameter ? std::string() : declaring);
   } else if (t.kind == TokenKind::Undeclared) {
     error(t, parameter ? "cannot pass undeclared identifier '" + std::string(t.text()) +
                              "' as a macro parameter"

@@ -43,7 +43,7 @@ bool startsExpression(const Token& t) {
              t.kw == Kw::k_u || t.kw == Kw::k_v || t.kw == Kw::k_color || t.kw == Kw::k_colour;
     case TokenKind::Identifier: {
       const Value* v = t.value();
-      return v && v->isNumeric();
+      return v && (v->isNumeric() || v->type == ValueType::Function);
     }
     default:
       return false;
@@ -118,6 +118,10 @@ void TokenStream::factorValue(Express& e, int& terms) {
 
 void TokenStream::identifierFactor(Express& e, int& terms) {
   const Value* v = cur_.value();
+  if (v && v->type == ValueType::Function) {
+    fill(e.v, terms, functionCall());
+    return;
+  }
   if (!v || !v->isNumeric()) {
     if (v && v->type == ValueType::Item) notEvaluated(cur_);
     error(cur_, "expected a numeric expression, found " + cur_.describe());

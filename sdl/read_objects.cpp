@@ -10,8 +10,8 @@ namespace lucent::sdl {
 
 namespace {
 
-constexpr std::string_view kShapes[] = {"sphere", "box",   "plane", "cylinder",
-                                        "cone",   "torus", "disc",  "triangle"};
+constexpr std::string_view kShapes[] = {"sphere", "box",  "plane",    "cylinder",  "cone",
+                                        "torus",  "disc", "triangle", "isosurface"};
 
 NodeKind csgKind(std::string_view word) {
   if (word == "union") return NodeKind::Union;
@@ -137,6 +137,8 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
     s.radius = in.parseFloat();
     if (in.allow(",")) s.innerRadius = in.parseFloat();
     o.shape = s;
+  } else if (w == "isosurface") {
+    readIsosurface(o, in);
   } else if (w == "triangle") {
     TriangleSpec s;
     s.a = point(in);
@@ -194,6 +196,8 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
       std::get<CylinderSpec>(*o.shape).open = open;
     else if (o.shape && std::holds_alternative<ConeSpec>(*o.shape))
       std::get<ConeSpec>(*o.shape).open = open;
+    else if (o.shape && std::holds_alternative<IsosurfaceSpec>(*o.shape))
+      std::get<IsosurfaceSpec>(*o.shape).open = open;
     else in.error(t, "'open' is for a cylinder or a cone, not " + o.keyword);
   } else if (w == "bounded_by") {
     // Only a speed-up in POV-Ray (Lucent bounds its objects itself): skipped.

@@ -122,6 +122,7 @@ class SceneReader : public ItemReader {
   bool isObjectKeyword(const Token& t) const;
   PovObject readObject(const Token& t, TokenStream& in);
   void readShape(PovObject& o, TokenStream& in);
+  void readIsosurface(PovObject& o, TokenStream& in);  // read_isosurface.cpp
   void readObjectModifiers(PovObject& o, TokenStream& in);
   bool readObjectModifier(const Token& t, PovObject& o, TokenStream& in);
   bool readTransform(const Token& t, TokenStream& in, PovTransform& m);

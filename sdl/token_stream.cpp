@@ -270,6 +270,9 @@ bool TokenStream::readWord(const RawToken& r, SourceFile* f) {
     if (v && v->type == ValueType::Array && rawPeek().kind == RawKind::Punct &&
         rawPeek().text == "[")
       resolveArrayElement(t);
+    const Value* named = t.ref.get();  // the element, for an array's
+    if (named && named->type == ValueType::Function)
+      t.call = rawPeek().kind == RawKind::Punct && rawPeek().text == "(";
     cur_ = t;
     return true;
   }

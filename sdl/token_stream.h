@@ -9,6 +9,7 @@
 // the facts; the code here is Lucent's own.
 #pragma once
 
+#include "function.h"
 #include "item_reader.h"
 #include "keywords.h"
 #include "options.h"
@@ -57,6 +58,7 @@ struct Token {
   Ref ref;               // Identifier
   int table = -1;        // Identifier, MacroName: the symbol table that holds it
   bool element = false;  // Identifier: an array element named by subscripts
+  bool call = false;     // Identifier of a function followed by '(': a call, not the function
   std::shared_ptr<Macro> macro;
 
   std::string_view text() const { return raw ? std::string_view(raw->text) : ""; }
@@ -98,8 +100,13 @@ class TokenStream {
   // A colour: `rgb <...>`, `color red 1 green 0.5`, a colour identifier, an expression of
   // 3 to 5 components...; red, green, blue, filter, transmit.
   std::array<double, 5> parseColour();
-  std::string parseString();            // a string expression
-  Value parseExpression();              // a float, vector or colour expression, any size
+  std::string parseString();  // a string expression
+  Value parseExpression();    // a float, vector or colour expression, any size
+  // `function [(params)] { body }`, the keyword `function` just read: a declaration's
+  // (`declaration`: parameters, `internal(N)`, pigment, pattern, transform and spline
+  // functions allowed; `name` is the identifier being declared, "" for none) or an
+  // isosurface's (x, y, z only). Located errors inside the body.
+  std::shared_ptr<const FunctionValue> parseFunction(bool declaration, const std::string& name);
   void expect(std::string_view punct);  // a punctuation token, or an error naming it
   bool allow(std::string_view punct);   // reads it if it comes next
   void parseComma();                    // POV-Ray's optional comma
@@ -249,6 +256,22 @@ class TokenStream {
   std::array<double, 5> colour(bool expectFilterTransmit);
   bool colourKey(Kw kw, std::array<double, 5>& c, bool started);
 
+  // function_parse.cpp: the function language, and calls of functions in expressions
+  struct FnScope;
+  FnNodePtr fnOr(FnScope& s);
+  FnNodePtr fnAnd(FnScope& s);
+  FnNodePtr fnCompare(FnScope& s);
+  FnNodePtr fnSum(FnScope& s);
+  FnNodePtr fnProduct(FnScope& s);
+  FnNodePtr fnUnary(FnScope& s);
+  FnNodePtr fnPrimary(FnScope& s);
+  FnNodePtr fnName(FnScope& s);
+  FnNodePtr fnBuiltin(FnScope& s);
+  FnNodePtr fnUserCall(FnScope& s);
+  std::vector<FnNodePtr> fnArguments(FnScope& s);
+  void fnSkipBlock();
+  double functionCall();
+
   // builtins.cpp
   double floatFunction(Kw kw);
   double minMaxFunction(Kw kw);
@@ -294,6 +317,7 @@ class TokenStream {
   std::uint64_t tokens_ = 0;
   SourceLoc directiveLoc_;  // the '#' of the directive being done
   int nesting_ = 0;         // expressions, strings and arrays within each other
+  std::string declaring_;   // the identifier a #declare or #local is giving a value
   std::vector<std::uint32_t> random_;
   std::uint64_t bytesWritten_ = 0;  // by #write, all files together
 };

@@ -62,6 +62,8 @@ std::string typeName(const Value& v) {
       return "array identifier";
     case ValueType::Item:
       return std::string(v.item ? v.item->kind() : "item") + " identifier";
+    case ValueType::Function:
+      return "function identifier";
   }
   return "identifier";
 }

@@ -1,7 +1,7 @@
 // The values of POV-Ray's language: a float, a vector of 2, 3 or 4 components, a colour
-// (5 components: red, green, blue, filter, transmit), a string, an array, or an item made
-// by the scene reader (item_reader.h). POV-Ray gives a value the type of the expression
-// that made it: `<1,2>` is a 2-vector, `rgb 1` and `<1,2,3,4,5>` are colours.
+// (5 components: red, green, blue, filter, transmit), a string, an array, an item made
+// by the scene reader (item_reader.h), or a function (function.h). POV-Ray gives a value the type
+// of the expression that made it: `<1,2>` is a 2-vector, `rgb 1` and `<1,2,3,4,5>` are colours.
 #pragma once
 
 #include "item_reader.h"
@@ -14,9 +14,10 @@
 
 namespace lucent::sdl {
 
-enum class ValueType { Float, Uv, Vector, Vector4, Colour, String, Array, Item };
+enum class ValueType { Float, Uv, Vector, Vector4, Colour, String, Array, Item, Function };
 
 struct ArrayValue;
+struct FunctionValue;  // function.h
 
 struct Value {
   ValueType type = ValueType::Float;
@@ -24,6 +25,7 @@ struct Value {
   std::shared_ptr<const std::string> str;
   std::shared_ptr<ArrayValue> array;
   ItemPtr item;
+  std::shared_ptr<const FunctionValue> function;  // Function: a `function { }`
 
   static Value number(double f);
   // A value of `terms` components (1 a float, 2 uv, 3 vector, 4, 5 a colour, whose

@@ -94,3 +94,8 @@ TEST_CASE("sdl vs POV-Ray: corner cases of conversions, references and colours",
 TEST_CASE("sdl vs POV-Ray: #debug text in lines cut as POV-Ray cuts them", "[sdl][povray]") {
   compareWithPovRay("wrap");
 }
+
+TEST_CASE("sdl vs POV-Ray: user-defined functions and functions.inc's closed forms",
+          "[sdl][povray][function]") {
+  compareWithPovRay("functions");
+}

@@ -46,3 +46,8 @@ TEST_CASE("scene reader image: a macro's objects in a loop, a spotlight and a sk
           "[sdl][scene][image][povray]") {
   requireSameImageAsPovray("macro_ring.pov", 160, 120);
 }
+
+TEST_CASE("scene reader image: isosurfaces of user functions and functions.inc's closed forms",
+          "[sdl][scene][image][povray]") {
+  requireSameImageAsPovray("isosurface_functions.pov", 160, 120);
+}

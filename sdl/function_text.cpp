@@ -1,0 +1,202 @@
+// A function's tree written as a Lucent expression (function.h, functionText), for an
+// isosurface: every operand is an atom or parenthesised, so that Lucent's own precedence
+// (where `^` binds above unary minus) cannot regroup it; user functions are inlined with
+// their arguments' texts; the internal functions Lucent evaluates are written out by their
+// formulas (internal_functions.h).
+#include "function.h"
+
+#include "internal_functions.h"
+
+#include "lang/expression.h"
+
+#include <cctype>
+#include <cmath>
+
+namespace lucent::sdl {
+
+namespace {
+
+constexpr double kPi = 3.1415926535897932384626;
+
+std::string paren(const std::string& s) { return "(" + s + ")"; }
+
+class TextWriter {
+ public:
+  std::string call(const FunctionValue& f, const std::vector<std::string>& args,
+                   const SourceLoc& at) {
+    switch (f.kind) {
+      case FunctionValue::Kind::Unsupported:
+        throw FunctionError(
+            at, f.describe() + " is " + f.what + ", which Lucent's isosurface cannot use");
+      case FunctionValue::Kind::Internal: {
+        const InternalFunction* in = internalFunction(f.internal);
+        if (!in || !in->text) throw FunctionError(at, internalRefusal(f.internal));
+        return checked(substitute(in->text, args), at);
+      }
+      case FunctionValue::Kind::Expression:
+        break;
+    }
+    return write(*f.body, args);
+  }
+
+ private:
+  // Every level is held to the bound, so a tree that shares nodes (pow(pow(a, 8), 8)...)
+  // cannot grow a text without end before it is refused.
+  std::string write(const FnNode& n, const std::vector<std::string>& args) {
+    return checked(writeNode(n, args), n.loc);
+  }
+
+  std::string writeNode(const FnNode& n, const std::vector<std::string>& args) {
+    auto a = [&](size_t i) { return write(*n.args[i], args); };
+    auto binary = [&](const char* op) { return paren(a(0) + " " + op + " " + a(1)); };
+    switch (n.op) {
+      case FnOp::Constant: {
+        if (!std::isfinite(n.value))
+          throw FunctionError(n.loc, "the function holds a number that is not finite");
+        const std::string s = formatNumber(n.value);
+        return s[0] == '-' ? paren(s) : s;
+      }
+      case FnOp::Param:
+        return n.index < 0 ? std::string("0") : args[static_cast<size_t>(n.index)];
+      case FnOp::Local:
+      case FnOp::Sum:
+      case FnOp::Prod:
+        throw FunctionError(n.loc, "sum() and prod() cannot be written as a Lucent expression");
+      case FnOp::Neg:
+        return paren("-" + a(0));
+      case FnOp::Add:
+        return binary("+");
+      case FnOp::Sub:
+        return binary("-");
+      case FnOp::Mul:
+        return binary("*");
+      case FnOp::Div:
+        return binary("/");
+      case FnOp::Eq:
+        return binary("==");
+      case FnOp::Ne:
+        return binary("!=");
+      case FnOp::Lt:
+        return binary("<");
+      case FnOp::Le:
+        return binary("<=");
+      case FnOp::Gt:
+        return binary(">");
+      case FnOp::Ge:
+        return binary(">=");
+      case FnOp::And:
+        return binary("&&");
+      case FnOp::Or:
+        return binary("||");
+      case FnOp::Math:
+        return checked(math(static_cast<FnMath>(n.index), a(0), n.args.size() > 1 ? a(1) : ""),
+                       n.loc);
+      case FnOp::Min:
+      case FnOp::Max: {
+        std::string s = n.op == FnOp::Min ? "min(" : "max(";
+        for (size_t i = 0; i < n.args.size(); ++i) s += (i ? ", " : "") + a(i);
+        return checked(s + ")", n.loc);
+      }
+      case FnOp::Select: {
+        const std::string c = a(0);
+        if (n.args.size() == 3) return paren(c + " < 0 ? " + a(1) + " : " + a(2));
+        return checked(
+            paren(c + " < 0 ? " + a(1) + " : " + paren(c + " == 0 ? " + a(2) + " : " + a(3))),
+            n.loc);
+      }
+      case FnOp::Call: {
+        if (n.member >= 0)
+          throw FunctionError(n.loc, n.callee->describe() + " is " + n.callee->what +
+                                         ", which Lucent's isosurface cannot use");
+        std::vector<std::string> inner(n.args.size());
+        for (size_t i = 0; i < n.args.size(); ++i) inner[i] = a(i);
+        return checked(paren(call(*n.callee, inner, n.loc)), n.loc);
+      }
+    }
+    return "0";
+  }
+
+  // POV-Ray's functions in Lucent's: the same name where Lucent has it, else a formula
+  // (equal to rounding for the hyperbolic ones; exact for mod, int, div, radians, degrees).
+  static std::string math(FnMath m, const std::string& x, const std::string& y) {
+    switch (m) {
+      case FnMath::Sinh:
+        return paren("(exp(" + x + ") - exp(-" + x + "))/2");
+      case FnMath::Cosh:
+        return paren("(exp(" + x + ") + exp(-" + x + "))/2");
+      case FnMath::Tanh:
+        return paren("1 - 2/(exp(2*" + x + ") + 1)");
+      case FnMath::Asinh:
+        return "ln(" + x + " + sqrt(" + x + "*" + x + " + 1))";
+      case FnMath::Acosh:
+        return "ln(" + x + " + sqrt(" + x + "*" + x + " - 1))";
+      case FnMath::Atanh:
+        return paren("0.5*ln((1 + " + x + ")/(1 - " + x + "))");
+      case FnMath::Radians:
+        return paren(x + "*" + formatNumber(kPi / 180.0));
+      case FnMath::Degrees:
+        return paren(x + "*" + formatNumber(180.0 / kPi));
+      case FnMath::Int:
+        return "trunc(" + x + ")";
+      case FnMath::Div:
+        return "trunc(" + x + "/" + y + ")";
+      case FnMath::Mod:  // C's fmod: the sign of x, from Lucent's floored % of magnitudes
+        return paren("sign(" + x + ")*(abs(" + x + ") % abs(" + y + "))");
+      case FnMath::Log:
+        return "log10(" + x + ")";
+      case FnMath::Atan2:
+      case FnMath::Pow:
+        return std::string(fnMathName(m)) + "(" + x + ", " + y + ")";
+      default:
+        return std::string(fnMathName(m)) + "(" + x + ")";
+    }
+  }
+
+  // `text` with $0..$9, and the words X, Y, Z, X2, Y2, Z2, P0..P9, replaced by the
+  // arguments (internal_functions.h).
+  static std::string substitute(const char* text, const std::vector<std::string>& args) {
+    std::string out;
+    for (const char* c = text; *c;) {
+      if (*c == '$' && c[1] >= '0' && c[1] <= '9') {
+        out += args[static_cast<size_t>(c[1] - '0')];
+        c += 2;
+        continue;
+      }
+      if (!std::isalpha(static_cast<unsigned char>(*c))) {
+        out += *c++;
+        continue;
+      }
+      const char* end = c;
+      while (std::isalnum(static_cast<unsigned char>(*end)) || *end == '_') ++end;
+      const std::string word(c, end);
+      c = end;
+      if (word.size() <= 2 && (word[0] == 'X' || word[0] == 'Y' || word[0] == 'Z')) {
+        const std::string& a = args[static_cast<size_t>(word[0] - 'X')];
+        out += word.size() == 1 ? a : "(" + a + "*" + a + ")";
+      } else if (word.size() == 2 && word[0] == 'P' &&
+                 std::isdigit(static_cast<unsigned char>(word[1]))) {
+        out += args[static_cast<size_t>(3 + word[1] - '0')];
+      } else {
+        out += word;
+      }
+    }
+    return out;
+  }
+
+  static std::string checked(std::string s, const SourceLoc& at) {
+    if (s.size() > kMaxFunctionTextLength)
+      throw FunctionError(at, "the function written out as an expression is longer than " +
+                                  std::to_string(kMaxFunctionTextLength) +
+                                  " characters (see docs/povray-import.md)");
+    return s;
+  }
+};
+
+}  // namespace
+
+std::string functionText(const FunctionValue& f, const std::vector<std::string>& args) {
+  TextWriter w;
+  return w.call(f, args, f.loc);
+}
+
+}  // namespace lucent::sdl

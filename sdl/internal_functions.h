@@ -1,0 +1,30 @@
+// POV-Ray's internal functions, `internal(N)` as functions.inc declares them
+// (`#declare f_sphere = function { internal(61) }`): each one's name and number of
+// parameters (x, y, z and its own), and, for the closed forms Lucent evaluates, the formula
+// twice: as C++ for a call in an expression and as Lucent expression text for an isosurface
+// (the tests hold the two to the same values). The formulas are those of POV-Ray 3.7's
+// fnintern.cpp, read for the facts.
+#pragma once
+
+#include <string>
+
+namespace lucent::sdl {
+
+struct InternalFunction {
+  const char* name;  // as functions.inc declares it
+  int params;        // x, y, z and its own
+  // The closed form; null when Lucent does not evaluate it (then `refusal` says why).
+  double (*evaluate)(const double* p);
+  // The same formula as Lucent expression text, $0..$9 standing for the parameters (or,
+  // for the clamped polynomials, the words X, Y, Z, X2, Y2, Z2 for the point and its
+  // squares, P0, P1... for the function's own parameters).
+  const char* text;
+};
+
+// The internal function N, or null when POV-Ray 3.7 has none.
+const InternalFunction* internalFunction(int n);
+
+// Why internal function N cannot be evaluated (it has no closed form here).
+std::string internalRefusal(int n);
+
+}  // namespace lucent::sdl
