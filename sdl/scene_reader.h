@@ -29,6 +29,8 @@
 
 namespace lucent::sdl {
 
+struct MeshBuild;  // read_shapes.cpp
+
 // A texture of one layer: its pigment and finish.
 struct PovTexture {
   PovPigment pigment;
@@ -125,6 +127,20 @@ class SceneReader : public ItemReader {
   bool readObjectModifier(const Token& t, PovObject& o, TokenStream& in);
   bool readTransform(const Token& t, TokenStream& in, PovTransform& m);
   PovTransform readTransformBlock(TokenStream& in);
+
+  // read_shapes.cpp: the shapes' parameters (readShape), each one's block
+  void refuseShape(const SourceLoc& at, TokenStream& in, const std::string& message);
+  void readQuadric(PovObject& o, TokenStream& in);
+  void readPoly(PovObject& o, TokenStream& in);
+  void readBlob(PovObject& o, TokenStream& in);
+  void readLatheOrSor(PovObject& o, TokenStream& in);
+  void readPrism(PovObject& o, TokenStream& in);
+  void readText(PovObject& o, TokenStream& in);
+  void readHeightField(PovObject& o, TokenStream& in);
+  void readMesh(PovObject& o, TokenStream& in);
+  void readMesh2(PovObject& o, TokenStream& in);
+  bool readMeshTriangleExtras(TokenStream& in, std::optional<std::array<Vec2, 3>>& uv);
+  void finishMeshShape(PovObject& o, TokenStream& in, const MeshBuild& b, bool insideVector);
 
   // read_textures.cpp
   PovPigment readPigment(TokenStream& in, const PovPigment& start);
