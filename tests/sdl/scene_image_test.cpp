@@ -46,3 +46,17 @@ TEST_CASE("scene reader image: a macro's objects in a loop, a spotlight and a sk
           "[sdl][scene][image][povray]") {
   requireSameImageAsPovray("macro_ring.pov", 160, 120);
 }
+
+TEST_CASE("scene reader image: quadrics of shapes_old.inc, a quadric and a quartic",
+          "[sdl][scene][image][povray]") {
+  requireSameImageAsPovray("quadrics_and_polys.pov", 160, 120);
+}
+
+TEST_CASE("scene reader image: a lathe, a sor, prisms and a blob", "[sdl][scene][image][povray]") {
+  requireSameImageAsPovray("lathe_sor_prism_blob.pov", 160, 120);
+}
+
+TEST_CASE("scene reader image: a text, a superellipsoid, a mesh and a mesh2",
+          "[sdl][scene][image][povray]") {
+  requireSameImageAsPovray("text_and_mesh.pov", 160, 120);
+}
