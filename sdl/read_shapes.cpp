@@ -28,10 +28,11 @@ namespace {
 constexpr double kPovEpsilon = 1e-10;
 
 constexpr std::string_view kShapes[] = {
-    "sphere",     "box",          "plane",   "cylinder", "cone",  "torus",
-    "disc",       "triangle",     "quadric", "poly",     "cubic", "quartic",
-    "polynomial", "blob",         "lathe",   "sor",      "prism", "superellipsoid",
-    "text",       "height_field", "mesh",    "mesh2"};
+    "sphere",       "box",   "plane",    "cylinder",        "cone",
+    "torus",        "disc",  "triangle", "smooth_triangle", "quadric",
+    "poly",         "cubic", "quartic",  "polynomial",      "blob",
+    "lathe",        "sor",   "prism",    "superellipsoid",  "text",
+    "height_field", "mesh",  "mesh2"};
 
 // POV-Ray's shapes Lucent has no equivalent of, with the nearest Lucent feature.
 const std::map<std::string_view, std::string_view>& unsupportedShapes() {
@@ -204,6 +205,23 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
     s.b = point(in);
     in.parseComma();
     s.c = point(in);
+    o.shape = s;
+  } else if (w == "smooth_triangle") {
+    // POV-Ray makes the normals unit; a zero one makes the triangle degenerate (not drawn).
+    TriangleSpec s;
+    std::array<Vec3, 3> n{};
+    Vec3* corner[3] = {&s.a, &s.b, &s.c};
+    for (size_t k = 0; k < 3; ++k) {
+      if (k > 0) in.parseComma();
+      *corner[k] = point(in);
+      in.parseComma();
+      const SourceLoc normalAt = in.peek().loc();
+      n[k] = point(in);
+      const double len = glm::length(n[k]);
+      if (!(len > 0.0)) in.error(normalAt, "the smooth_triangle's normal has no length");
+      n[k] /= len;
+    }
+    s.normals = n;
     o.shape = s;
   } else if (w == "quadric") {
     readQuadric(o, in);

@@ -292,6 +292,20 @@ mesh2 {
   CHECK(said);
 }
 
+TEST_CASE("scene shapes: smooth_triangle, its normals unit and z negated", "[sdl][scene][shapes]") {
+  auto r = readScene(
+      "smooth_triangle { <0, 0, 1>, <0, 0, -2>, <1, 0, 1>, <0, 3, 0>, <0, 1, 2>, "
+      "<1, 0, 0> }");
+  REQUIRE(r->load.scene);
+  const auto& t = shapeOf<TriangleSpec>(*r->load.scene, 0);
+  checkVec(t.a, Vec3(0, 0, -1));
+  checkVec(t.c, Vec3(0, 1, -2));
+  REQUIRE(t.normals);
+  checkVec((*t.normals)[0], Vec3(0, 0, 1));
+  checkVec((*t.normals)[1], Vec3(0, 1, 0));
+  checkVec((*t.normals)[2], Vec3(1, 0, 0));
+}
+
 TEST_CASE("scene shapes: declared and placed, and in CSG", "[sdl][scene][shapes]") {
   auto r = readScene(R"(
 #declare B = blob { sphere { 0, 1, 1 } }
@@ -403,6 +417,8 @@ TEST_CASE("scene shapes: bad input, located", "[sdl][scene][shapes][errors]") {
        "test.pov:1:29: error: the water level must be from 0 to below 1, not 1"},
       {"mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0, 1, 3> } }",
        "test.pov:1:1: error: the mesh2's vertex index 3 is outside its 3 vectors"},
+      {"smooth_triangle { 0, y, x, 0, z, y }",
+       "test.pov:1:28: error: the smooth_triangle's normal has no length"},
       {"mesh { triangle { 0, x, 2*x } }",
        "test.pov:1:1: error: the mesh has no triangle (of some area)"},
   };
