@@ -75,7 +75,7 @@ void SceneReader::readObjectModifiers(PovObject& o, TokenStream& in) {
     if (readObjectModifier(t, o, in)) continue;
     if (t.kind != TokenKind::Keyword)
       in.error(t, "unexpected " + t.describe() + " in " + o.keyword);
-    unsupported(t, in, true);
+    unsupported(t, in, true, &o);
   }
 }
 

@@ -123,11 +123,21 @@ bool isShapeKeyword(std::string_view word) {
          unsupportedShapes().count(word) > 0;
 }
 
-// Keeps the error at `at` and skips the rest of the shape's block, leaving its closing brace
-// to be read: the object is left without a shape (the scene is not made), and reading goes
-// on, so that every such place is listed.
-void SceneReader::refuseShape(const SourceLoc& at, TokenStream& in, const std::string& message) {
-  keepError(in, at, message);
+// What Lucent cannot render in a shape: an error at `at` kept now, or, while a #declare is
+// read, kept with the object and said when the object is placed in the scene (a library
+// such as shapesq.inc declares shapes a scene may never use).
+void SceneReader::refuse(PovObject& o, const SourceLoc& at, TokenStream& in,
+                         const std::string& message) {
+  if (declaring_ > 0) o.refusals.push_back({at, message});
+  else keepError(in, at, message);
+}
+
+// refuse(), then the rest of the shape's block skipped, its closing brace left to be read:
+// the object has no shape (the scene is not made), and reading goes on, so that every such
+// place is listed.
+void SceneReader::refuseShape(PovObject& o, const SourceLoc& at, TokenStream& in,
+                              const std::string& message) {
+  refuse(o, at, in, message);
   int depth = 1;
   for (;;) {
     const Token& t = in.next();
@@ -144,7 +154,7 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
   const std::string& w = o.keyword;
   const auto refused = unsupportedShapes().find(w);
   if (refused != unsupportedShapes().end()) {
-    refuseShape(o.loc, in,
+    refuseShape(o, o.loc, in,
                 "'" + w + "' is not supported by Lucent (" + std::string(refused->second) + ")");
   } else if (w == "sphere") {
     SphereSpec s;
@@ -238,7 +248,7 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
     // Poles on z in both: z → −z maps the shape onto itself.
     if (!(en.x >= Superellipsoid::kMinExponent && en.x <= Superellipsoid::kMaxExponent &&
           en.y >= Superellipsoid::kMinExponent && en.y <= Superellipsoid::kMaxExponent))
-      refuseShape(o.loc, in,
+      refuseShape(o, o.loc, in,
                   "'superellipsoid' exponents outside 0.01 to 10 are not supported by Lucent (here "
                   "<" +
                       attributeText(en.x) + ", " + attributeText(en.y) +
@@ -283,7 +293,7 @@ void SceneReader::readPoly(PovObject& o, TokenStream& in) {
     if (!(f >= 2.0 && f < 36.0)) in.error(loc, "the order of a " + w + " must be from 2 to 35");
     order = static_cast<int>(f);
     if (order > 4) {
-      refuseShape(o.loc, in,
+      refuseShape(o, o.loc, in,
                   "'" + w + "' of order " + std::to_string(order) +
                       " is not supported by Lucent (its poly takes orders 2 to 4; the nearest "
                       "Lucent shape is <isosurface>)");
@@ -377,9 +387,9 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
         if (readTransform(mod, in, m)) continue;
         if (isWord(mod, "texture") || isWord(mod, "pigment") || isWord(mod, "finish") ||
             isWord(mod, "normal")) {
-          keepError(in, mod.loc(),
-                    "a texture on a blob component is not supported by Lucent (its blob has one "
-                    "material; give the texture to the whole blob)");
+          refuse(o, mod.loc(), in,
+                 "a texture on a blob component is not supported by Lucent (its blob has one "
+                 "material; give the texture to the whole blob)");
           refused = true;
           if (in.peek().is("{")) {
             in.next();
@@ -396,9 +406,9 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
       }
       double scale = 1.0;
       if (!similarity(m.povMatrix(), scale)) {
-        keepError(in, t.loc(),
-                  "a blob component scaled unevenly or sheared is not supported by Lucent (its "
-                  "components are spheres and round cylinders; scale the whole blob instead)");
+        refuse(o, t.loc(), in,
+               "a blob component scaled unevenly or sheared is not supported by Lucent (its "
+               "components are spheres and round cylinders; scale the whole blob instead)");
         refused = true;
         continue;
       }
@@ -414,7 +424,7 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
   if (refused) return;
   if (s.components.empty()) in.error(o.loc, "the blob has no component");
   if (!(s.threshold > 0.0))
-    refuseShape(o.loc, in,
+    refuseShape(o, o.loc, in,
                 "a blob threshold of " + attributeText(s.threshold) +
                     " is not supported by Lucent (it takes a threshold above 0: at or below 0 all "
                     "of space away from the components would be inside)");
@@ -457,7 +467,7 @@ void SceneReader::readLatheOrSor(PovObject& o, TokenStream& in) {
     try {
       Lathe check(spline, points);
     } catch (const std::invalid_argument& e) {
-      refuseShape(o.loc, in,
+      refuseShape(o, o.loc, in,
                   std::string("this lathe is not supported by Lucent (") + e.what() +
                       "; POV-Ray allows x < 0 at some control points)");
       return;
@@ -484,7 +494,8 @@ void SceneReader::readLatheOrSor(PovObject& o, TokenStream& in) {
   try {
     Sor check(points, open);
   } catch (const std::invalid_argument& e) {
-    refuseShape(o.loc, in, std::string("this sor is not supported by Lucent (") + e.what() + ")");
+    refuseShape(o, o.loc, in,
+                std::string("this sor is not supported by Lucent (") + e.what() + ")");
     return;
   }
   o.shape = SorSpec{points, open};
@@ -608,7 +619,7 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
   const Token type = in.next();
   const auto known = type.kind == TokenKind::Keyword ? kTypes.find(type.text()) : kTypes.end();
   if (known != kTypes.end() && known->second.empty()) {
-    refuseShape(type.loc(), in,
+    refuseShape(o, type.loc(), in,
                 "a height field from '" + std::string(type.text()) +
                     "' is not supported by Lucent (it reads png, pgm, ppm, tga, jpeg and tiff "
                     "images as height fields)");
@@ -703,7 +714,8 @@ Vec3 meshNormal(TokenStream& in, const Vec3& n, const SourceLoc& at, bool& warne
 }  // namespace
 
 // Reads a triangle's `uv_vectors` and refuses its texture; false when a texture was refused.
-bool SceneReader::readMeshTriangleExtras(TokenStream& in, std::optional<std::array<Vec2, 3>>& uv) {
+bool SceneReader::readMeshTriangleExtras(PovObject& o, TokenStream& in,
+                                         std::optional<std::array<Vec2, 3>>& uv) {
   bool ok = true;
   for (;;) {
     const Token t = in.next();
@@ -716,9 +728,9 @@ bool SceneReader::readMeshTriangleExtras(TokenStream& in, std::optional<std::arr
       }
       uv = v;
     } else if (isWord(t, "texture") || isWord(t, "texture_list")) {
-      keepError(in, t.loc(),
-                "a texture on a mesh triangle is not supported by Lucent (its mesh has one "
-                "material; give the texture to the whole mesh)");
+      refuse(o, t.loc(), in,
+             "a texture on a mesh triangle is not supported by Lucent (its mesh has one "
+             "material; give the texture to the whole mesh)");
       ok = false;
       if (in.peek().is("{")) {
         in.next();
@@ -754,7 +766,7 @@ void SceneReader::readMesh(PovObject& o, TokenStream& in) {
         }
       }
       std::optional<std::array<Vec2, 3>> uv;
-      ok = readMeshTriangleExtras(in, uv) && ok;
+      ok = readMeshTriangleExtras(o, in, uv) && ok;
       if (degenerate(p)) continue;
       b.corners.push_back(p);
       // A smooth triangle with three equal normals is flat in POV-Ray.
@@ -816,7 +828,7 @@ void SceneReader::readMesh2(PovObject& o, TokenStream& in) {
     } else if (isWord(t, "uv_indices")) {
       list("uv_indices", indices(uvFaces));
     } else if (isWord(t, "texture_list")) {
-      refuseShape(t.loc(), in,
+      refuseShape(o, t.loc(), in,
                   "a texture_list (textures per mesh triangle) is not supported by Lucent (its "
                   "mesh has one material; give the texture to the whole mesh)");
       return;

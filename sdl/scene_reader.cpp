@@ -57,15 +57,17 @@ void SceneReader::warn(TokenStream& in, const SourceLoc& at, const std::string& 
   if (warned_.insert(at.str() + message).second) in.warning(at, message);
 }
 
-void SceneReader::unsupported(const Token& t, TokenStream& in, bool skipBlock) {
+void SceneReader::unsupported(const Token& t, TokenStream& in, bool skipBlock, PovObject* object) {
   const std::string word(t.text());
   const SourceLoc at = t.loc();
   const auto& features = unsupportedFeatures();
   const auto it = features.find(word);
-  if (it != features.end())
-    keepError(in, at,
-              "'" + word + "' is not supported by Lucent (" + std::string(it->second) + ")");
-  else keepError(in, at, "'" + word + "' is not read yet by Lucent's POV-Ray reader");
+  const std::string message =
+      it != features.end()
+          ? "'" + word + "' is not supported by Lucent (" + std::string(it->second) + ")"
+          : "'" + word + "' is not read yet by Lucent's POV-Ray reader";
+  if (object) refuse(*object, at, in, message);
+  else keepError(in, at, message);
   if (skipBlock && in.peek().is("{")) {
     in.next();
     skipToClose(in, 1);
@@ -82,7 +84,14 @@ ItemPtr SceneReader::read(const Token& t, TokenStream& in) {
   const Token first = t;
   if (isObjectKeyword(first)) {
     auto item = std::make_shared<ObjectItem>();
-    item->object = readObject(first, in);
+    ++declaring_;
+    try {
+      item->object = readObject(first, in);
+    } catch (...) {
+      --declaring_;
+      throw;
+    }
+    --declaring_;
     return item;
   }
   if (isWord(first, "camera")) {
@@ -202,6 +211,8 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const PovTexture* 
     n->light = std::make_unique<Light>(imported.light);
     return n;
   }
+  for (const auto& [at, message] : o.refusals)  // a declared object's, now in the scene
+    if (refused_.insert(at.str() + message).second) diags_.error(at, message);
   n->parentFromNode = o.transform.lucentMatrix();
   n->shape = o.shape;
   n->shadows = !o.noShadow;

@@ -325,7 +325,7 @@ TEST_CASE("scene shapes: what Lucent has no shape for, refused at the keyword, e
   const auto errors = errorsOf(R"(julia_fractal { <-0.08, 0.7, 0, 0> quaternion sqr }
 union { parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
         sphere { 0, 1 } }
-#declare P = bicubic_patch { type 1 }
+#declare P = bicubic_patch { type 1 } object { P }
 sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 0, 0>, 1 }
 ovus { 1, 0.5 }
 polygon { 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }
@@ -353,6 +353,32 @@ height_field { gif "x.gif" }
   CHECK(errors[8] ==
         "test.pov:10:16: error: a height field from 'gif' is not supported by Lucent (it reads "
         "png, pgm, ppm, tga, jpeg and tiff images as height fields)");
+}
+
+TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where it is placed",
+          "[sdl][scene][shapes][errors]") {
+  // shapesq.inc declares polys of orders 5 to 8 among its quartics, and a clipped helix: a
+  // scene that uses only the quartics is read.
+  auto r = readScene(R"(#include "shapesq.inc"
+object { Monkey_Saddle }
+#declare J = julia_fractal { <-0.08, 0.7, 0, 0> }
+#declare Blobs = union { blob { sphere { 0, 1, 1 scale <1, 2, 1> } } sphere { 0, 1 } }
+)");
+  REQUIRE(r->load.scene);
+  CHECK(shapeOf<PolySpec>(*r->load.scene, 0).order == 4);  // a quartic
+  // Placed (twice), each refusal is said once, at its keyword.
+  const auto errors = errorsOf(R"(#declare J = julia_fractal { <-0.08, 0.7, 0, 0> }
+#declare Blobs = union { blob { sphere { 0, 1, 1 scale <1, 2, 1> } } sphere { 0, 1 } }
+#declare Clipped = sphere { 0, 1 clipped_by { plane { y, 0 } } }
+object { J }
+object { Clipped }
+object { Blobs translate x }
+object { Blobs }
+)");
+  REQUIRE(errors.size() == 3);
+  CHECK(errors[0].find("test.pov:1:14: error: 'julia_fractal' is not supported by Lucent") == 0);
+  CHECK(errors[1].find("test.pov:3:34: error: 'clipped_by' is not supported by Lucent") == 0);
+  CHECK(errors[2].find("test.pov:2:33: error: a blob component scaled unevenly") == 0);
 }
 
 TEST_CASE("scene shapes: blob components and mesh triangles Lucent cannot hold",
