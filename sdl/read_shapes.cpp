@@ -39,7 +39,7 @@ const std::map<std::string_view, std::string_view>& unsupportedShapes() {
   static const std::map<std::string_view, std::string_view> shapes = {
       {"julia_fractal", "4-D quaternion fractals; the nearest Lucent shape is <isosurface>"},
       {"parametric", "parametric surfaces; the nearest Lucent shape is <isosurface>"},
-      {"sphere_sweep", "swept spheres; the nearest Lucent shapes are <blob> cylinder components"},
+      {"sphere_sweep", "swept spheres; a linear one is a <union> of <sphere> and <cone> elements"},
       {"bicubic_patch", "Bézier patches; the nearest Lucent shape is <mesh>"},
       {"ovus", "the ovus; the nearest Lucent shapes are <lathe> and <sor>"},
       {"lemon", "the lemon; the nearest Lucent shapes are <lathe> and <sor>"},
