@@ -4,6 +4,8 @@
 
 #include "lang/file_access.h"
 
+#include <algorithm>
+
 namespace lucent::sdl {
 
 namespace {
@@ -122,15 +124,33 @@ void TokenStream::openInclude(const SourceLoc& at) {
   notes_.push_back({at, "in the file included here"});
 }
 
+std::filesystem::path TokenStream::findDataFile(const std::string& name, const SourceLoc& at,
+                                                const std::vector<std::string>& extensions) const {
+  std::string display;
+  return findInclude(name, at, display, false, &extensions);
+}
+
 // POV-Ray's search: the scene's folder, then the library folders; a name without an
-// extension is also tried with ".inc".
+// extension is also tried with ".inc" (`tryInc`, for #include). A data file's name is tried
+// with each of its type's `extensions` added, after the name as written if it already ends
+// in one of them, before it otherwise (POV-Ray's FindFile).
 std::filesystem::path TokenStream::findInclude(const std::string& name, const SourceLoc& at,
-                                               std::string& display) const {
+                                               std::string& display, bool tryInc,
+                                               const std::vector<std::string>* extensions) const {
   namespace fs = std::filesystem;
   std::vector<fs::path> folders{sceneFolder_};
   for (const auto& f : options_.includeFolders) folders.push_back(f);
   std::vector<std::string> names{name};
-  if (fs::path(name).extension().empty()) names.push_back(name + ".inc");
+  if (tryInc && fs::path(name).extension().empty()) names.push_back(name + ".inc");
+  if (extensions) {
+    const std::string ext = fs::path(name).extension().string();
+    const bool exactFirst =
+        !ext.empty() && std::find(extensions->begin(), extensions->end(), ext) != extensions->end();
+    names.clear();
+    if (exactFirst) names.push_back(name);
+    for (const std::string& e : *extensions) names.push_back(name + e);
+    if (!exactFirst) names.push_back(name);
+  }
   for (size_t i = 0; i < folders.size(); ++i) {
     for (const std::string& n : names) {
       fs::path p = fs::path(n).is_absolute() ? fs::path(n) : folders[i] / n;
@@ -145,7 +165,10 @@ std::filesystem::path TokenStream::findInclude(const std::string& name, const So
         return r.path;
       }
       fs::path c = canonicalPath(p), root = canonicalPath(folders[i]);
-      auto rel = c.lexically_relative(root);
+      // An include must lie inside the folder; a data file (a font, an image) may be a link
+      // the folder holds (Debian links POV-Ray's fonts there), but its name must not leave it.
+      auto rel = tryInc ? c.lexically_relative(root)
+                        : p.lexically_normal().lexically_relative(folders[i].lexically_normal());
       if (!fs::path(n).is_absolute() && (rel.empty() || *rel.begin() == ".."))
         error(at, "'" + name + "' leads outside the folder " + root.string());
       if (fs::path(n).is_absolute() && options_.access) {
@@ -157,7 +180,8 @@ std::filesystem::path TokenStream::findInclude(const std::string& name, const So
   }
   std::string searched;
   for (const auto& f : folders) searched += (searched.empty() ? "" : ", ") + f.string();
-  error(at, "cannot open include file '" + name + "' (searched " + searched + ")");
+  error(at, std::string(tryInc ? "cannot open include file '" : "cannot find the file '") + name +
+                "' (searched " + searched + ")");
 }
 
 }  // namespace lucent::sdl

@@ -10,9 +10,6 @@ namespace lucent::sdl {
 
 namespace {
 
-constexpr std::string_view kShapes[] = {"sphere", "box",  "plane",    "cylinder",  "cone",
-                                        "torus",  "disc", "triangle", "isosurface"};
-
 NodeKind csgKind(std::string_view word) {
   if (word == "union") return NodeKind::Union;
   if (word == "merge") return NodeKind::Merge;
@@ -21,22 +18,12 @@ NodeKind csgKind(std::string_view word) {
   return NodeKind::Group;
 }
 
-Vec3 point(TokenStream& in) { return lucentFromPov(toVec3(in.parseVector())); }
-
-// A direction made unit, or an error at `at` when it has no length.
-Vec3 unitDirection(TokenStream& in, const Token& at, const Vec3& v, const char* what) {
-  const double len = glm::length(v);
-  if (!(len > 0.0)) in.error(at, std::string("the ") + what + " has no length");
-  return v / len;
-}
-
 }  // namespace
 
 bool SceneReader::isObjectKeyword(const Token& t) const {
   if (t.kind != TokenKind::Keyword) return false;
   const std::string_view w = t.text();
-  return std::find(std::begin(kShapes), std::end(kShapes), w) != std::end(kShapes) ||
-         csgKind(w) != NodeKind::Group || w == "object" || w == "light_source";
+  return isShapeKeyword(w) || csgKind(w) != NodeKind::Group || w == "object" || w == "light_source";
 }
 
 PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
@@ -81,75 +68,6 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
   return o;
 }
 
-// The shape's own parameters, as POV-Ray writes them, into Lucent's space.
-void SceneReader::readShape(PovObject& o, TokenStream& in) {
-  const Token at = in.current();
-  const std::string& w = o.keyword;
-  if (w == "sphere") {
-    SphereSpec s;
-    s.center = point(in);
-    in.parseComma();
-    s.radius = in.parseFloat();
-    o.shape = s;
-  } else if (w == "box") {
-    const Vec3 a = point(in);
-    in.parseComma();
-    const Vec3 b = point(in);
-    o.shape = BoxSpec{glm::min(a, b), glm::max(a, b)};
-  } else if (w == "plane") {
-    // POV-Ray makes the normal unit and divides the distance by its length.
-    const Vec3 n = toVec3(in.parseVector());
-    in.parseComma();
-    const double d = in.parseFloat();
-    const double len = glm::length(n);
-    if (!(len > 0.0)) in.error(at, "the plane's normal has no length");
-    o.shape = PlaneSpec{lucentFromPov(n / len), d / len};
-  } else if (w == "cylinder") {
-    CylinderSpec s;
-    s.base = point(in);
-    in.parseComma();
-    s.cap = point(in);
-    in.parseComma();
-    s.radius = in.parseFloat();
-    o.shape = s;
-  } else if (w == "cone") {
-    ConeSpec s;
-    s.base = point(in);
-    in.parseComma();
-    s.baseRadius = in.parseFloat();
-    in.parseComma();
-    s.cap = point(in);
-    in.parseComma();
-    s.capRadius = in.parseFloat();
-    o.shape = s;
-  } else if (w == "torus") {
-    TorusSpec s;
-    s.major = in.parseFloat();
-    in.parseComma();
-    s.minor = in.parseFloat();
-    o.shape = s;  // in the xz-plane about y: the same in both spaces
-  } else if (w == "disc") {
-    DiscSpec s;
-    s.center = point(in);
-    in.parseComma();
-    s.normal = unitDirection(in, at, point(in), "disc's normal");
-    in.parseComma();
-    s.radius = in.parseFloat();
-    if (in.allow(",")) s.innerRadius = in.parseFloat();
-    o.shape = s;
-  } else if (w == "isosurface") {
-    readIsosurface(o, in);
-  } else if (w == "triangle") {
-    TriangleSpec s;
-    s.a = point(in);
-    in.parseComma();
-    s.b = point(in);
-    in.parseComma();
-    s.c = point(in);
-    o.shape = s;
-  }
-}
-
 void SceneReader::readObjectModifiers(PovObject& o, TokenStream& in) {
   for (;;) {
     const Token t = in.next();
@@ -157,7 +75,7 @@ void SceneReader::readObjectModifiers(PovObject& o, TokenStream& in) {
     if (readObjectModifier(t, o, in)) continue;
     if (t.kind != TokenKind::Keyword)
       in.error(t, "unexpected " + t.describe() + " in " + o.keyword);
-    unsupported(t, in, true);
+    unsupported(t, in, true, &o);
   }
 }
 
@@ -188,8 +106,8 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
     optionalBool(in);  // Lucent has no media for hollow to matter to
   } else if (w == "inverse") {
     o.inverse = !o.inverse;
-  } else if (w == "sturm") {
-    optionalBool(in);  // Lucent's root finding needs no choice
+  } else if (w == "sturm" || w == "hierarchy") {
+    optionalBool(in);  // Lucent's root finding and bounding need no choice
   } else if (w == "open") {
     const bool open = optionalBool(in);
     if (o.shape && std::holds_alternative<CylinderSpec>(*o.shape))
@@ -198,7 +116,11 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
       std::get<ConeSpec>(*o.shape).open = open;
     else if (o.shape && std::holds_alternative<IsosurfaceSpec>(*o.shape))
       std::get<IsosurfaceSpec>(*o.shape).open = open;
-    else in.error(t, "'open' is for a cylinder or a cone, not " + o.keyword);
+    else if (o.shape && std::holds_alternative<SorSpec>(*o.shape))
+      std::get<SorSpec>(*o.shape).open = open;
+    else if (o.shape && std::holds_alternative<PrismSpec>(*o.shape))
+      std::get<PrismSpec>(*o.shape).open = open;
+    else in.error(t, "'open' is for a cylinder, cone, sor, prism or isosurface, not " + o.keyword);
   } else if (w == "bounded_by") {
     // Only a speed-up in POV-Ray (Lucent bounds its objects itself): skipped.
     in.expect("{");

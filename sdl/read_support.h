@@ -16,6 +16,9 @@ inline bool isWord(const Token& t, std::string_view word) {
   return t.kind == TokenKind::Keyword && t.text() == word;
 }
 
+// A shape's keyword, those Lucent refuses included (read_shapes.cpp).
+bool isShapeKeyword(std::string_view word);
+
 inline Vec3 toVec3(const std::array<double, 3>& v) { return Vec3(v[0], v[1], v[2]); }
 
 // Whether `t` starts a float, vector or colour expression (POV-Ray's optional arguments):

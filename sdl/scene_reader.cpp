@@ -57,21 +57,37 @@ void SceneReader::warn(TokenStream& in, const SourceLoc& at, const std::string& 
   if (warned_.insert(at.str() + message).second) in.warning(at, message);
 }
 
-void SceneReader::unsupported(const Token& t, TokenStream& in, bool skipBlock) {
+void SceneReader::refusal(TokenStream& in, const SourceLoc& at, const std::string& message,
+                          bool here) {
+  if (options_.skipUnsupported) {
+    // Counted by the feature's name, the first quoted word of the message.
+    const size_t open = message.find('\'');
+    const size_t close = open == std::string::npos ? open : message.find('\'', open + 1);
+    const std::string key =
+        close == std::string::npos ? message : message.substr(open, close - open + 1);
+    Skipped& s = skipped_[key];
+    if (s.count++ == 0) {
+      s.first = at;
+      s.message = message;
+    }
+  } else if (here) {
+    keepError(in, at, message);
+  } else {
+    diags_.error(at, message);
+  }
+}
+
+void SceneReader::unsupported(const Token& t, TokenStream& in, bool skipBlock, PovObject* object) {
   const std::string word(t.text());
   const SourceLoc at = t.loc();
   const auto& features = unsupportedFeatures();
   const auto it = features.find(word);
-  if (options_.skipUnsupported) {
-    Skipped& s = skipped_[word];
-    if (s.count++ == 0) {
-      s.first = at;
-      s.why = it != features.end() ? std::string(it->second) : "not read yet";
-    }
-  } else if (it != features.end())
-    keepError(in, at,
-              "'" + word + "' is not supported by Lucent (" + std::string(it->second) + ")");
-  else keepError(in, at, "'" + word + "' is not read yet by Lucent's POV-Ray reader");
+  const std::string message =
+      it != features.end()
+          ? "'" + word + "' is not supported by Lucent (" + std::string(it->second) + ")"
+          : "'" + word + "' is not read yet by Lucent's POV-Ray reader";
+  if (object) refuse(*object, at, in, message);
+  else refusal(in, at, message, true);
   if (skipBlock && in.peek().is("{")) {
     in.next();
     skipToClose(in, 1);
@@ -88,7 +104,14 @@ ItemPtr SceneReader::read(const Token& t, TokenStream& in) {
   const Token first = t;
   if (isObjectKeyword(first)) {
     auto item = std::make_shared<ObjectItem>();
-    item->object = readObject(first, in);
+    ++declaring_;
+    try {
+      item->object = readObject(first, in);
+    } catch (...) {
+      --declaring_;
+      throw;
+    }
+    --declaring_;
     return item;
   }
   if (isWord(first, "camera")) {
@@ -184,6 +207,7 @@ void SceneReader::place(const PovObject& object, TokenStream& in) {
   const PovTexture tex = defaultTexture();
   const PovInterior interior;
   std::unique_ptr<Node> node = toNode(object, &tex, &interior, true, in);
+  if (!node) return;  // left out (--skip-unsupported)
   if (node->kind == NodeKind::Light) scene_.lightRoot->children.push_back(std::move(node));
   else scene_.root->children.push_back(std::move(node));
 }
@@ -208,6 +232,10 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const PovTexture* 
     n->light = std::make_unique<Light>(imported.light);
     return n;
   }
+  for (const auto& [at, message] : o.refusals)  // a declared object's, now in the scene
+    if (refused_.insert(at.str() + message).second) refusal(in, at, message, false);
+  // Left out (--skip-unsupported): a shape Lucent has not.
+  if (o.kind == NodeKind::Shape && !o.shape && options_.skipUnsupported) return nullptr;
   n->parentFromNode = o.transform.lucentMatrix();
   n->shape = o.shape;
   n->shadows = !o.noShadow;
@@ -226,14 +254,16 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const PovTexture* 
     n->material = static_cast<uint32_t>(scene_.materials.size() - 1);
   }
   for (const PovObject& c : o.children)
-    n->children.push_back(toNode(c, texture, interior, false, in));
+    if (auto child = toNode(c, texture, interior, false, in))
+      n->children.push_back(std::move(child));
   return n;
 }
 
 void SceneReader::finishScene(TokenStream& in) {
-  for (const auto& [word, s] : skipped_)
-    in.warning(s.first, "'" + word + "' left out (" + s.why + "): " + std::to_string(s.count) +
-                            (s.count == 1 ? " place" : " places") + ", the first here");
+  for (const auto& [key, s] : skipped_)
+    in.warning(s.first, "left out (--skip-unsupported): " + s.message + "; " +
+                            std::to_string(s.count) + (s.count == 1 ? " place" : " places") +
+                            ", the first here");
   const int width = options_.imageWidth, height = options_.imageHeight;
   scene_.render.width = width;
   scene_.render.height = height;

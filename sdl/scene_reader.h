@@ -30,6 +30,8 @@
 
 namespace lucent::sdl {
 
+struct MeshBuild;  // read_shapes.cpp
+
 // A texture of one layer: its pigment and finish.
 struct PovTexture {
   PovPigment pigment;
@@ -50,6 +52,8 @@ struct PovObject {
   std::optional<PovInterior> interior;
   bool noShadow = false;
   bool inverse = false;
+  // What Lucent cannot render in a #declare'd object, said when it is placed (read_shapes.cpp).
+  std::vector<std::pair<SourceLoc, std::string>> refusals;
 };
 
 // The items the reader makes, for #declare and for identifiers in blocks.
@@ -111,11 +115,16 @@ class SceneReader : public ItemReader {
   std::unique_ptr<Node> toNode(const PovObject& o, const PovTexture* texture,
                                const PovInterior* interior, bool topLevel, TokenStream& in);
   // A keyword Lucent cannot render, or one the reader does not read yet: an error kept
-  // (reading goes on), and the block that follows it skipped.
-  void unsupported(const Token& t, TokenStream& in, bool skipBlock);
+  // (reading goes on), and the block that follows it skipped. In an object read for a
+  // #declare (`object`), the error is kept with the object and said where it is placed.
+  void unsupported(const Token& t, TokenStream& in, bool skipBlock, PovObject* object = nullptr);
   // The same inside a block: its error kept, and the block skipped to its closing brace.
   void unreadInBlock(const Token& t, TokenStream& in);
   void keepError(TokenStream& in, const SourceLoc& at, const std::string& message);
+  // What Lucent cannot render, said at `at`: an error (kept now with the include and macro
+  // chain that led `here`, or plainly for a declared object placed elsewhere), or with
+  // --skip-unsupported counted by kind and left out.
+  void refusal(TokenStream& in, const SourceLoc& at, const std::string& message, bool here);
   void warn(TokenStream& in, const SourceLoc& at, const std::string& message);
 
   // read_objects.cpp
@@ -127,6 +136,22 @@ class SceneReader : public ItemReader {
   bool readObjectModifier(const Token& t, PovObject& o, TokenStream& in);
   bool readTransform(const Token& t, TokenStream& in, PovTransform& m);
   PovTransform readTransformBlock(TokenStream& in);
+
+  // read_shapes.cpp: the shapes' parameters (readShape), each one's block
+  void refuse(PovObject& o, const SourceLoc& at, TokenStream& in, const std::string& message);
+  void refuseShape(PovObject& o, const SourceLoc& at, TokenStream& in, const std::string& message);
+  void readQuadric(PovObject& o, TokenStream& in);
+  void readPoly(PovObject& o, TokenStream& in);
+  void readBlob(PovObject& o, TokenStream& in);
+  void readLatheOrSor(PovObject& o, TokenStream& in);
+  void readPrism(PovObject& o, TokenStream& in);
+  void readText(PovObject& o, TokenStream& in);
+  void readHeightField(PovObject& o, TokenStream& in);
+  void readMesh(PovObject& o, TokenStream& in);
+  void readMesh2(PovObject& o, TokenStream& in);
+  bool readMeshTriangleExtras(PovObject& o, TokenStream& in,
+                              std::optional<std::array<Vec2, 3>>& uv);
+  void finishMeshShape(PovObject& o, TokenStream& in, const MeshBuild& b, bool insideVector);
 
   // read_textures.cpp
   PovPigment readPigment(TokenStream& in, const PovPigment& start);
@@ -156,15 +181,17 @@ class SceneReader : public ItemReader {
   PovGlobalSettings global_;
   SourceLoc globalLoc_;
   PovBackground background_;
-  std::set<std::string> warned_;  // each warning said once per place
+  std::set<std::string> warned_;   // each warning said once per place
+  int objectDepth_ = 0;            // objects being read within each other
+  int declaring_ = 0;              // objects being read for a #declare
+  std::set<std::string> refused_;  // the refusals of placed objects said, each once
   // --skip-unsupported: each kind of feature left out, with its count and first place.
   struct Skipped {
     int count = 0;
     SourceLoc first;
-    std::string why;
+    std::string message;
   };
   std::map<std::string, Skipped> skipped_;
-  int objectDepth_ = 0;  // objects being read within each other
   static constexpr int kMaxObjectDepth = 1000;
 };
 

@@ -110,6 +110,11 @@ class TokenStream {
   void expect(std::string_view punct);  // a punctuation token, or an error naming it
   bool allow(std::string_view punct);   // reads it if it comes next
   void parseComma();                    // POV-Ray's optional comma
+  // A file a shape reads (a font, a height field's image), searched as #include searches
+  // (the scene's folder, then the library folders) and under the same access rules, also
+  // with its type's `extensions` added (".ttf", ".TTF"); an error at `at` when not found.
+  std::filesystem::path findDataFile(const std::string& name, const SourceLoc& at,
+                                     const std::vector<std::string>& extensions) const;
 
   [[noreturn]] void error(const Token& at, const std::string& message) const;
   [[noreturn]] void error(const SourceLoc& at, const std::string& message) const;
@@ -224,7 +229,8 @@ class TokenStream {
   void returnFromMacro();
   void openInclude(const SourceLoc& at);
   std::filesystem::path findInclude(const std::string& name, const SourceLoc& at,
-                                    std::string& display) const;
+                                    std::string& display, bool tryInc = true,
+                                    const std::vector<std::string>* extensions = nullptr) const;
   void noticeSkip();
 
   // declarations.cpp

@@ -43,9 +43,9 @@ grep -qF "media.pov:2:15: error: 'photons' is not supported by Lucent" check.err
 "$lucent" render --skip-unsupported media.pov -w 20 -h 15 -o media.png -q 2>skip.err ||
   fail "render --skip-unsupported media.pov exited with $?: $(cat skip.err)"
 [ -s media.png ] || fail "render --skip-unsupported wrote no image"
-grep -qF "media.pov:1:33: warning: 'media' left out (participating media" skip.err ||
+grep -qF "media.pov:1:33: warning: left out (--skip-unsupported): 'media' is not supported by Lucent (participating media" skip.err ||
   fail "--skip-unsupported: media not said in: $(cat skip.err)"
-grep -qF "'photons' left out (photon mapping of caustics): 1 place" skip.err ||
+grep -qF "'photons' is not supported by Lucent (photon mapping of caustics); 1 place" skip.err ||
   fail "--skip-unsupported: photons not counted in: $(cat skip.err)"
 [ "$(grep -c "left out" skip.err)" -eq 2 ] || fail "--skip-unsupported: not one line per kind: $(cat skip.err)"
 

@@ -30,6 +30,41 @@ void requireSameImageAsPovray(const std::string& name, int width, int height) {
   requireSameImage(*load.scene, fileText(path));
 }
 
+// The same, with POV-Ray rendering the scene file where it lies, as a user would: for a
+// scene that reads a file beside it (a height field's image).
+void requireSameImageAsPovrayInPlace(const std::string& name, int width, int height) {
+  const std::filesystem::path path = sdltest::dataFolder() / "scenes" / name;
+  sdl::CollectedOutput out;
+  sdl::Options options;
+  options.imageWidth = width;
+  options.imageHeight = height;
+  options.output = &out;
+  sdl::SceneLoad load = sdl::loadScene(path, options);
+  for (const Diagnostic& d : load.diagnostics.all()) UNSCOPED_INFO(d.str());
+  REQUIRE(load.scene);
+  const auto povray = findPovray();
+  REQUIRE(povray);
+  TempDir dir("sdl-image");
+  PovrayRender job;
+  job.input = path.string();
+  job.output = dir.file("povray.png");
+  job.width = width;
+  job.height = height;
+  job.threads = 1;
+  const std::string log = dir.file("log.txt");
+  ProcessResult run = runProcess(*povray, povrayArguments(job), path.parent_path().string(), log);
+  INFO(fileText(log));
+  REQUIRE(run.exitStatus == 0);
+  const RgbImage lucent = srgbEncoded(renderWithLucent(*load.scene));
+  const RgbImage pov = srgbEncoded(readLinear16Png(job.output));
+  const ImageMetrics m = compareImages(lucent, pov, 2.0 / 255.0);
+  INFO("PSNR " << m.psnr << " dB, SSIM " << m.ssim << ", " << 100.0 * m.shareOver
+               << " % of pixels off by more than 2/255");
+  CHECK(m.psnr >= 40.0);
+  CHECK(m.ssim >= 0.99);
+  CHECK(m.shareOver <= 0.01);
+}
+
 }  // namespace
 
 TEST_CASE("scene reader image: a sphere on a plane as POV-Ray users write it",
@@ -50,4 +85,23 @@ TEST_CASE("scene reader image: a macro's objects in a loop, a spotlight and a sk
 TEST_CASE("scene reader image: isosurfaces of user functions and functions.inc's closed forms",
           "[sdl][scene][image][povray]") {
   requireSameImageAsPovray("isosurface_functions.pov", 160, 120);
+}
+
+TEST_CASE("scene reader image: quadrics of shapes_old.inc, a quadric and a quartic",
+          "[sdl][scene][image][povray]") {
+  requireSameImageAsPovray("quadrics_and_polys.pov", 160, 120);
+}
+
+TEST_CASE("scene reader image: a lathe, a sor, prisms and a blob", "[sdl][scene][image][povray]") {
+  requireSameImageAsPovray("lathe_sor_prism_blob.pov", 160, 120);
+}
+
+TEST_CASE("scene reader image: a text, a superellipsoid, a mesh and a mesh2",
+          "[sdl][scene][image][povray]") {
+  requireSameImageAsPovray("text_and_mesh.pov", 160, 120);
+}
+
+TEST_CASE("scene reader image: height fields, their image's rows where POV-Ray puts them",
+          "[sdl][scene][image][povray]") {
+  requireSameImageAsPovrayInPlace("height_field.pov", 160, 120);
 }

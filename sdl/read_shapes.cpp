@@ -1,0 +1,905 @@
+// The shapes: each POV-Ray 3.7 shape's parameters read as POV-Ray reads them (its parser,
+// source/parser/parser.cpp, taken as facts), carried into Lucent's space (z negated:
+// pov_space.h), and the shapes Lucent has no equivalent of refused at their keyword.
+// docs/povray-import.md ("The scene reader") lists each shape's mapping.
+#include "read_support.h"
+#include "scene_reader.h"
+
+#include "images/height_map_file.h"
+#include "meshes/mesh_repair.h"
+#include "primitives/blob.h"
+#include "primitives/lathe.h"
+#include "primitives/poly.h"
+#include "primitives/sor.h"
+#include "primitives/superellipsoid.h"
+#include "scenegraph/shape_type.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace lucent::sdl {
+
+namespace {
+
+// POV-Ray's EPSILON, its tolerance for degenerate input.
+constexpr double kPovEpsilon = 1e-10;
+
+constexpr std::string_view kShapes[] = {
+    "sphere",       "box",   "plane",    "cylinder",        "cone",
+    "torus",        "disc",  "triangle", "smooth_triangle", "quadric",
+    "poly",         "cubic", "quartic",  "polynomial",      "blob",
+    "lathe",        "sor",   "prism",    "superellipsoid",  "text",
+    "height_field", "mesh",  "mesh2",    "isosurface"};
+
+// POV-Ray's shapes Lucent has no equivalent of, with the nearest Lucent feature.
+const std::map<std::string_view, std::string_view>& unsupportedShapes() {
+  static const std::map<std::string_view, std::string_view> shapes = {
+      {"julia_fractal", "4-D quaternion fractals; the nearest Lucent shape is <isosurface>"},
+      {"parametric", "parametric surfaces; the nearest Lucent shape is <isosurface>"},
+      {"sphere_sweep", "swept spheres; a linear one is a <union> of <sphere> and <cone> elements"},
+      {"bicubic_patch", "Bézier patches; the nearest Lucent shape is <mesh>"},
+      {"ovus", "the ovus; the nearest Lucent shapes are <lathe> and <sor>"},
+      {"lemon", "the lemon; the nearest Lucent shapes are <lathe> and <sor>"},
+      {"polygon", "flat polygons; the nearest Lucent shapes are <mesh> and a thin <prism>"},
+  };
+  return shapes;
+}
+
+Vec3 point(TokenStream& in) { return lucentFromPov(toVec3(in.parseVector())); }
+
+// A direction made unit, or an error at `at` when it has no length.
+Vec3 unitDirection(TokenStream& in, const Token& at, const Vec3& v, const char* what) {
+  const double len = glm::length(v);
+  if (!(len > 0.0)) in.error(at, std::string("the ") + what + " has no length");
+  return v / len;
+}
+
+// POV-Ray's 2-D vector (Parse_UV_Vect): `<u, v>`, or a float f as <f, f>.
+Vec2 parseUv(TokenStream& in) {
+  const SourceLoc at = in.peek().loc();
+  const Value v = in.parseExpression();
+  if (v.terms() == 1) return Vec2(v.v[0]);
+  if (v.terms() != 2)
+    in.error(at, "a 2-D vector <u, v> expected, not one of " + std::to_string(v.terms()) +
+                     " components");
+  return Vec2(v.v[0], v.v[1]);
+}
+
+// A count POV-Ray reads as a float and truncates (`(int)Parse_Float()`), bounded so that a
+// wild number is an error, not an allocation.
+int parseCount(TokenStream& in, const char* what, int most = 1 << 24) {
+  const Token& at = in.peek();
+  const SourceLoc loc = at.loc();
+  const double f = in.parseFloat();
+  if (!(f >= 0.0) || f > most)
+    in.error(loc, std::string("the ") + what + " must be from 0 to " + std::to_string(most));
+  return static_cast<int>(f);
+}
+
+// Reads a flag keyword that follows the shape's parameters (POV-Ray's AllowToken).
+bool allowWord(TokenStream& in, std::string_view word) {
+  if (!isWord(in.peek(), word)) return false;
+  in.next();
+  return true;
+}
+
+// The powers (i, j, k) of x, y, z of each of poly's coefficients of `order`, in POV-Ray's
+// order: i descending, then j, then k.
+std::vector<std::array<int, 3>> polyTerms(int order) {
+  std::vector<std::array<int, 3>> terms;
+  for (int i = order; i >= 0; --i)
+    for (int j = order - i; j >= 0; --j)
+      for (int k = order - i - j; k >= 0; --k) terms.push_back({i, j, k});
+  return terms;
+}
+
+// z → −z changes the sign of each term with an odd power of z.
+void mirrorPoly(PolySpec& s) {
+  const auto terms = polyTerms(s.order);
+  for (size_t n = 0; n < terms.size(); ++n)
+    if (terms[n][2] % 2 != 0) s.coefficients[n] = -s.coefficients[n];
+}
+
+// Whether the linear part of `m` is a rotation or mirror times a uniform scale; its scale.
+bool similarity(const Mat4& m, double& scale) {
+  const Vec3 c[3] = {Vec3(m[0]), Vec3(m[1]), Vec3(m[2])};
+  scale = glm::length(c[0]);
+  const double tol = 1e-9 * std::max(1.0, scale * scale);
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(glm::dot(c[i], c[i]) - scale * scale) > tol) return false;
+    for (int j = i + 1; j < 3; ++j)
+      if (std::abs(glm::dot(c[i], c[j])) > tol) return false;
+  }
+  return scale > 0.0;
+}
+
+}  // namespace
+
+bool isShapeKeyword(std::string_view word) {
+  return std::find(std::begin(kShapes), std::end(kShapes), word) != std::end(kShapes) ||
+         unsupportedShapes().count(word) > 0;
+}
+
+// What Lucent cannot render in a shape: an error at `at` kept now, or, while a #declare is
+// read, kept with the object and said when the object is placed in the scene (a library
+// such as shapesq.inc declares shapes a scene may never use).
+void SceneReader::refuse(PovObject& o, const SourceLoc& at, TokenStream& in,
+                         const std::string& message) {
+  if (declaring_ > 0) o.refusals.push_back({at, message});
+  else refusal(in, at, message, true);
+}
+
+// refuse(), then the rest of the shape's block skipped, its closing brace left to be read:
+// the object has no shape (the scene is not made), and reading goes on, so that every such
+// place is listed.
+void SceneReader::refuseShape(PovObject& o, const SourceLoc& at, TokenStream& in,
+                              const std::string& message) {
+  refuse(o, at, in, message);
+  int depth = 1;
+  for (;;) {
+    const Token& t = in.next();
+    if (t.kind == TokenKind::End) in.error(t, "the block is not closed ('}' expected)");
+    if (t.is("{")) ++depth;
+    if (t.is("}") && --depth == 0) break;
+  }
+  in.unget();
+}
+
+// The shape's own parameters, as POV-Ray writes them, into Lucent's space.
+void SceneReader::readShape(PovObject& o, TokenStream& in) {
+  const Token at = in.current();
+  const std::string& w = o.keyword;
+  const auto refused = unsupportedShapes().find(w);
+  if (refused != unsupportedShapes().end()) {
+    refuseShape(o, o.loc, in,
+                "'" + w + "' is not supported by Lucent (" + std::string(refused->second) + ")");
+  } else if (w == "sphere") {
+    SphereSpec s;
+    s.center = point(in);
+    in.parseComma();
+    s.radius = in.parseFloat();
+    o.shape = s;
+  } else if (w == "box") {
+    const Vec3 a = point(in);
+    in.parseComma();
+    const Vec3 b = point(in);
+    o.shape = BoxSpec{glm::min(a, b), glm::max(a, b)};
+  } else if (w == "plane") {
+    // POV-Ray makes the normal unit and divides the distance by its length.
+    const Vec3 n = toVec3(in.parseVector());
+    in.parseComma();
+    const double d = in.parseFloat();
+    const double len = glm::length(n);
+    if (!(len > 0.0)) in.error(at, "the plane's normal has no length");
+    o.shape = PlaneSpec{lucentFromPov(n / len), d / len};
+  } else if (w == "cylinder") {
+    CylinderSpec s;
+    s.base = point(in);
+    in.parseComma();
+    s.cap = point(in);
+    in.parseComma();
+    s.radius = in.parseFloat();
+    o.shape = s;
+  } else if (w == "cone") {
+    ConeSpec s;
+    s.base = point(in);
+    in.parseComma();
+    s.baseRadius = in.parseFloat();
+    in.parseComma();
+    s.cap = point(in);
+    in.parseComma();
+    s.capRadius = in.parseFloat();
+    o.shape = s;
+  } else if (w == "torus") {
+    TorusSpec s;
+    s.major = in.parseFloat();
+    in.parseComma();
+    s.minor = in.parseFloat();
+    o.shape = s;  // in the xz-plane about y: the same in both spaces
+  } else if (w == "disc") {
+    DiscSpec s;
+    s.center = point(in);
+    in.parseComma();
+    s.normal = unitDirection(in, at, point(in), "disc's normal");
+    in.parseComma();
+    s.radius = in.parseFloat();
+    if (in.allow(",")) s.innerRadius = in.parseFloat();
+    o.shape = s;
+  } else if (w == "triangle") {
+    TriangleSpec s;
+    s.a = point(in);
+    in.parseComma();
+    s.b = point(in);
+    in.parseComma();
+    s.c = point(in);
+    o.shape = s;
+  } else if (w == "smooth_triangle") {
+    // POV-Ray makes the normals unit; a zero one makes the triangle degenerate (not drawn).
+    TriangleSpec s;
+    std::array<Vec3, 3> n{};
+    Vec3* corner[3] = {&s.a, &s.b, &s.c};
+    for (size_t k = 0; k < 3; ++k) {
+      if (k > 0) in.parseComma();
+      *corner[k] = point(in);
+      in.parseComma();
+      const SourceLoc normalAt = in.peek().loc();
+      n[k] = point(in);
+      const double len = glm::length(n[k]);
+      if (!(len > 0.0)) in.error(normalAt, "the smooth_triangle's normal has no length");
+      n[k] /= len;
+    }
+    s.normals = n;
+    o.shape = s;
+  } else if (w == "isosurface") {
+    readIsosurface(o, in);
+  } else if (w == "quadric") {
+    readQuadric(o, in);
+  } else if (w == "poly" || w == "cubic" || w == "quartic" || w == "polynomial") {
+    readPoly(o, in);
+  } else if (w == "blob") {
+    readBlob(o, in);
+  } else if (w == "lathe" || w == "sor") {
+    readLatheOrSor(o, in);
+  } else if (w == "prism") {
+    readPrism(o, in);
+  } else if (w == "superellipsoid") {
+    const Vec2 en = parseUv(in);
+    // Poles on z in both: z → −z maps the shape onto itself.
+    if (!(en.x >= Superellipsoid::kMinExponent && en.x <= Superellipsoid::kMaxExponent &&
+          en.y >= Superellipsoid::kMinExponent && en.y <= Superellipsoid::kMaxExponent))
+      refuseShape(o, o.loc, in,
+                  "'superellipsoid' exponents outside 0.01 to 10 are not supported by Lucent (here "
+                  "<" +
+                      attributeText(en.x) + ", " + attributeText(en.y) +
+                      ">; Lucent's root isolation is tested from nearly a box to a sharp star)");
+    else o.shape = SuperellipsoidSpec{en.x, en.y};
+  } else if (w == "text") {
+    readText(o, in);
+  } else if (w == "height_field") {
+    readHeightField(o, in);
+  } else if (w == "mesh") {
+    readMesh(o, in);
+  } else if (w == "mesh2") {
+    readMesh2(o, in);
+  }
+}
+
+// quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }: A x² + B y² + C z² + D xy + E xz + F yz
+// + G x + H y + I z + J. Under z → −z the terms odd in z (xz, yz, z) change sign.
+void SceneReader::readQuadric(PovObject& o, TokenStream& in) {
+  const Vec3 a = toVec3(in.parseVector());
+  in.parseComma();
+  const Vec3 b = toVec3(in.parseVector());
+  in.parseComma();
+  const Vec3 c = toVec3(in.parseVector());
+  in.parseComma();
+  const double d = in.parseFloat();
+  QuadricSpec q{a, Vec3(b.x, -b.y, -b.z), Vec3(c.x, c.y, -c.z), d};
+  if (q.a == Vec3(0.0) && q.b == Vec3(0.0) && q.c == Vec3(0.0))
+    in.error(o.loc, "the quadric's coefficients are all 0 but the constant: it has no surface");
+  o.shape = q;
+}
+
+// poly { ORDER, <c...> }, cubic { <20 c> }, quartic { <35 c> }, and POV-Ray 3.7's
+// polynomial { ORDER, xyz(i, j, k): c ... }. POV-Ray takes orders 2 to 35; Lucent's poly 2 to 4.
+void SceneReader::readPoly(PovObject& o, TokenStream& in) {
+  const std::string& w = o.keyword;
+  int order = w == "cubic" ? 3 : w == "quartic" ? 4 : 0;
+  if (order == 0) {
+    const SourceLoc loc = in.peek().loc();
+    const double f = in.parseFloat();
+    in.parseComma();
+    if (!(f >= 2.0 && f < 36.0)) in.error(loc, "the order of a " + w + " must be from 2 to 35");
+    order = static_cast<int>(f);
+    if (order > 4) {
+      refuseShape(o, o.loc, in,
+                  "'" + w + "' of order " + std::to_string(order) +
+                      " is not supported by Lucent (its poly takes orders 2 to 4; the nearest "
+                      "Lucent shape is <isosurface>)");
+      return;
+    }
+  }
+  PolySpec s;
+  s.order = order;
+  const auto terms = polyTerms(order);
+  s.coefficients.assign(terms.size(), 0.0);
+  if (w == "polynomial") {
+    while (isWord(in.peek(), "xyz")) {
+      const Token xyz = in.next();
+      in.expect("(");
+      std::array<int, 3> p{};
+      for (int i = 0; i < 3; ++i) {
+        if (i > 0) in.parseComma();
+        p[static_cast<size_t>(i)] = static_cast<int>(in.parseFloat());
+      }
+      in.expect(")");
+      in.expect(":");
+      const double value = in.parseFloat();
+      in.parseComma();
+      const auto it = std::find(terms.begin(), terms.end(), p);
+      if (it == terms.end())
+        in.error(xyz, "xyz(" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " +
+                          std::to_string(p[2]) + ") is not a term of a polynomial of order " +
+                          std::to_string(order));
+      s.coefficients[static_cast<size_t>(it - terms.begin())] = value;
+    }
+  } else {
+    in.expect("<");
+    for (size_t i = 0; i < terms.size(); ++i) {
+      if (i > 0) in.parseComma();
+      s.coefficients[i] = in.parseFloat();
+    }
+    in.expect(">");
+  }
+  bool surface = false;
+  for (size_t i = 0; i + 1 < s.coefficients.size(); ++i) surface |= s.coefficients[i] != 0.0;
+  if (!surface)
+    in.error(o.loc, "every coefficient of the " + w + " but the constant is 0: it has no surface");
+  mirrorPoly(s);
+  o.shape = std::move(s);
+}
+
+// blob { threshold T  sphere { C, R, [strength] S }  cylinder { B, A, R, [strength] S }
+// component S, R, C }: the components in any order, then the blob's modifiers. A
+// component's translate, rotate, uniform scale and matrix are carried into its centre, ends
+// and radius (the field moves with them exactly); what makes a component an ellipsoid or a
+// sheared cylinder, and a component's own texture, Lucent's blob cannot hold.
+void SceneReader::readBlob(PovObject& o, TokenStream& in) {
+  BlobSpec s;
+  s.threshold = 1.0;
+  bool refused = false;
+  for (;;) {
+    const Token t = in.next();
+    if (isWord(t, "threshold")) {
+      s.threshold = in.parseFloat();
+    } else if (isWord(t, "component")) {
+      BlobComponent c;
+      c.strength = in.parseFloat();
+      in.parseComma();
+      c.radius = std::abs(in.parseFloat());  // POV-Ray keeps its square
+      in.parseComma();
+      c.a = toVec3(in.parseVector());
+      if (!(c.radius > 0.0)) in.error(t, "the blob component's radius is 0");
+      c.a = lucentFromPov(c.a);
+      s.components.push_back(c);
+    } else if (isWord(t, "sphere") || isWord(t, "cylinder")) {
+      BlobComponent c;
+      c.kind = isWord(t, "sphere") ? BlobComponent::Sphere : BlobComponent::Cylinder;
+      in.expect("{");
+      c.a = toVec3(in.parseVector());
+      in.parseComma();
+      if (c.kind == BlobComponent::Cylinder) {
+        c.b = toVec3(in.parseVector());
+        in.parseComma();
+      }
+      c.radius = std::abs(in.parseFloat());
+      in.parseComma();
+      allowWord(in, "strength");
+      c.strength = in.parseFloat();
+      if (!(c.radius > 0.0)) in.error(t, "the blob component's radius is 0");
+      if (c.kind == BlobComponent::Cylinder && glm::length(c.b - c.a) < kPovEpsilon)
+        in.error(t, "the blob's cylinder component has no length (its ends are the same point)");
+      PovTransform m;
+      for (;;) {
+        const Token mod = in.next();
+        if (mod.is("}")) break;
+        if (readTransform(mod, in, m)) continue;
+        if (isWord(mod, "texture") || isWord(mod, "pigment") || isWord(mod, "finish") ||
+            isWord(mod, "normal")) {
+          refuse(o, mod.loc(), in,
+                 "a texture on a blob component is not supported by Lucent (its blob has one "
+                 "material; give the texture to the whole blob)");
+          refused = true;
+          if (in.peek().is("{")) {
+            in.next();
+            for (int depth = 1; depth > 0;) {
+              const Token& b = in.next();
+              if (b.kind == TokenKind::End) in.error(b, "the block is not closed ('}' expected)");
+              if (b.is("{")) ++depth;
+              if (b.is("}")) --depth;
+            }
+          }
+          continue;
+        }
+        in.error(mod, "unexpected " + mod.describe() + " in a blob component");
+      }
+      double scale = 1.0;
+      if (!similarity(m.povMatrix(), scale)) {
+        refuse(o, t.loc(), in,
+               "a blob component scaled unevenly or sheared is not supported by Lucent (its "
+               "components are spheres and round cylinders; scale the whole blob instead)");
+        refused = true;
+        continue;
+      }
+      c.a = lucentFromPov(m.point(c.a));
+      c.b = lucentFromPov(m.point(c.b));
+      c.radius *= scale;
+      s.components.push_back(c);
+    } else {
+      in.unget();
+      break;
+    }
+  }
+  if (refused) return;
+  if (s.components.empty()) in.error(o.loc, "the blob has no component");
+  if (!(s.threshold > 0.0))
+    refuseShape(o, o.loc, in,
+                "a blob threshold of " + attributeText(s.threshold) +
+                    " is not supported by Lucent (it takes a threshold above 0: at or below 0 all "
+                    "of space away from the components would be inside)");
+  else o.shape = std::move(s);
+}
+
+// lathe { [SPLINE] N, <x, y>... } and sor { N, <x, y>... [open] }: curves turned about the
+// y axis, the same in both spaces. Lucent's own rules (every point's x >= 0, a lathe of
+// some extent, a sor's slopes defined) are said at the shape, after POV-Ray's.
+void SceneReader::readLatheOrSor(PovObject& o, TokenStream& in) {
+  const bool lathe = o.keyword == "lathe";
+  LatheSpline spline = LatheSpline::Linear;
+  while (lathe) {
+    if (allowWord(in, "linear_spline")) spline = LatheSpline::Linear;
+    else if (allowWord(in, "quadratic_spline")) spline = LatheSpline::Quadratic;
+    else if (allowWord(in, "cubic_spline")) spline = LatheSpline::Cubic;
+    else if (allowWord(in, "bezier_spline")) spline = LatheSpline::Bezier;
+    else break;
+  }
+  const SourceLoc countLoc = in.peek().loc();
+  const int n = parseCount(in, "number of points");
+  if (lathe) {
+    const char* rule = spline == LatheSpline::Linear ? "a linear lathe needs 2 points or more"
+                       : spline == LatheSpline::Quadratic
+                           ? "a quadratic lathe needs 3 points or more"
+                       : spline == LatheSpline::Cubic ? "a cubic lathe needs 4 points or more"
+                                                      : "a bezier lathe needs 4 points a segment";
+    if (n < Lathe::minPoints(spline) || (spline == LatheSpline::Bezier && n % 4 != 0))
+      in.error(countLoc, std::string(rule) + ", not " + std::to_string(n));
+  } else if (n < 4) {
+    in.error(countLoc, "a sor needs 4 points or more, not " + std::to_string(n));
+  }
+  in.parseComma();
+  std::vector<Vec2> points;
+  for (int i = 0; i < n; ++i) {
+    points.push_back(parseUv(in));
+    in.parseComma();  // POV-Ray allows a trailing comma
+  }
+  if (lathe) {
+    try {
+      Lathe check(spline, points);
+    } catch (const std::invalid_argument& e) {
+      refuseShape(o, o.loc, in,
+                  std::string("this lathe is not supported by Lucent (") + e.what() +
+                      "; POV-Ray allows x < 0 at some control points)");
+      return;
+    }
+    // Where the curve starts and ends: Lucent closes an open curve by discs to the axis.
+    const size_t last = points.size() - 1;
+    const Vec2 first =
+        points[spline == LatheSpline::Quadratic || spline == LatheSpline::Cubic ? 1 : 0];
+    const Vec2 end = points[spline == LatheSpline::Cubic ? last - 1 : last];
+    if (first != end && (first.x != 0.0 || end.x != 0.0))
+      warn(in, o.loc,
+           "the lathe's curve does not end on the axis or where it starts: Lucent closes it "
+           "with discs to the axis, POV-Ray leaves it open");
+    o.shape = LatheSpec{spline, points};
+    return;
+  }
+  for (int i = 0; i < n; ++i)
+    if (points[static_cast<size_t>(i)].x < 0.0 ||
+        (i > 1 && i < n - 1 &&
+         points[static_cast<size_t>(i)].y <= points[static_cast<size_t>(i - 1)].y))
+      in.error(o.loc, "point " + std::to_string(i + 1) +
+                          " of the sor is incorrect (x < 0, or not above the point before)");
+  const bool open = allowWord(in, "open");
+  try {
+    Sor check(points, open);
+  } catch (const std::invalid_argument& e) {
+    refuseShape(o, o.loc, in,
+                std::string("this sor is not supported by Lucent (") + e.what() + ")");
+    return;
+  }
+  o.shape = SorSpec{points, open};
+}
+
+// prism { [linear_sweep|conic_sweep] [SPLINE] H1, H2, N, <x, z>... [open] }: the points are
+// x z in POV-Ray's space, (x, −z) in Lucent's.
+void SceneReader::readPrism(PovObject& o, TokenStream& in) {
+  PrismSpec s;
+  for (;;) {
+    if (allowWord(in, "linear_spline")) s.spline = PrismSpline::Linear;
+    else if (allowWord(in, "quadratic_spline")) s.spline = PrismSpline::Quadratic;
+    else if (allowWord(in, "cubic_spline")) s.spline = PrismSpline::Cubic;
+    else if (allowWord(in, "bezier_spline")) s.spline = PrismSpline::Bezier;
+    else if (allowWord(in, "linear_sweep")) s.conic = false;
+    else if (allowWord(in, "conic_sweep")) s.conic = true;
+    else break;
+  }
+  s.height1 = in.parseFloat();
+  in.parseComma();
+  s.height2 = in.parseFloat();
+  in.parseComma();
+  if (s.height1 > s.height2) std::swap(s.height1, s.height2);
+  const SourceLoc countLoc = in.peek().loc();
+  const int n = parseCount(in, "number of points");
+  const int least = s.spline == PrismSpline::Linear      ? 3
+                    : s.spline == PrismSpline::Quadratic ? 5
+                    : s.spline == PrismSpline::Cubic     ? 6
+                                                         : 4;
+  if (n < least || (s.spline == PrismSpline::Bezier && n % 4 != 0))
+    in.error(countLoc, s.spline == PrismSpline::Bezier
+                           ? "a bezier prism needs 4 points a segment, not " + std::to_string(n)
+                           : "this prism needs " + std::to_string(least) + " points or more, not " +
+                                 std::to_string(n));
+  in.parseComma();
+  for (int i = 0; i < n; ++i) {
+    const Vec2 p = parseUv(in);
+    s.points.emplace_back(p.x, -p.y);
+    in.parseComma();
+  }
+  s.open = allowWord(in, "open");
+  const PrismOutline outline = prismOutline(s.points, s.spline);
+  if (!outline.error.empty()) in.error(o.loc, "the prism's points: " + outline.error);
+  if (outline.closedLast)
+    warn(in, o.loc,
+         "the prism's last polygon is not closed (its first point is not repeated); "
+         "closed it, as POV-Ray does");
+  if (s.height1 == s.height2) in.error(o.loc, "the prism's two heights are equal: it is flat");
+  o.shape = std::move(s);
+}
+
+// text { ttf "font" "string" THICKNESS, OFFSET }: the font searched as #include files are.
+// Lucent's text lies from z = 0 to thickness, POV-Ray's too: after z → −z it lies from
+// −thickness to 0, so the shape is first moved by the thickness along POV-Ray's z.
+void SceneReader::readText(PovObject& o, TokenStream& in) {
+  const Token kind = in.next();
+  TextSpec s;
+  SourceLoc fontLoc = in.peek().loc();
+  if (isWord(kind, "internal")) {
+    // POV-Ray's built-in fonts are its own font files, which its include folder holds.
+    const double n = in.parseFloat();
+    s.font = n == 1   ? "timrom.ttf"
+             : n == 2 ? "cyrvetic.ttf"
+             : n == 3 ? "crystal.ttf"
+                      : "povlogo.ttf";
+  } else if (isWord(kind, "ttf")) {
+    s.font = in.parseString();
+  } else {
+    in.error(kind, "'ttf' or 'internal' expected, not " + kind.describe());
+  }
+  in.parseComma();
+  const SourceLoc stringLoc = in.peek().loc();
+  s.string = in.parseString();
+  in.parseComma();
+  const SourceLoc thicknessLoc = in.peek().loc();
+  s.thickness = in.parseFloat();
+  in.parseComma();
+  const Vec3 offset = toVec3(in.parseVector());
+  s.offset = Vec2(offset.x, offset.y);
+  if (!(s.thickness > 0.0))
+    in.error(thicknessLoc,
+             "the text's thickness must be above 0 in Lucent, not " + attributeText(s.thickness));
+  s.fontPath = in.findDataFile(s.font, fontLoc, {".ttf", ".TTF"}).string();
+  auto outline = std::make_shared<TextOutline>(textOutline(s.fontPath, s.string, s.offset));
+  if (!outline->error.empty()) {
+    if (outline->error.find("UTF-8") != std::string::npos) in.error(stringLoc, outline->error);
+    in.error(fontLoc, "cannot read the font '" + s.font + "': " + outline->error);
+  }
+  std::string missing;
+  for (const PlacedGlyph& g : outline->glyphs)
+    if (g.glyphIndex == 0 && missing.size() < 40)
+      missing += fmt::format(" U+{:04X}", static_cast<unsigned>(g.codepoint));
+  if (!missing.empty())
+    warn(in, stringLoc, "the font has no glyph for" + missing + "; its missing-glyph box is shown");
+  s.outline = std::move(outline);
+  o.transform.translate(Vec3(0.0, 0.0, s.thickness));
+  o.shape = std::move(s);
+}
+
+// height_field { TYPE "file" [smooth] [water_level W] }: the types whose files Lucent reads
+// as POV-Ray does (images/height_map_file.h). The field spans x and z from 0 to 1, the
+// image's top row at z = 1 in POV-Ray's space; Lucent's has it at z = 1 in its own, so the
+// shape is first mirrored in z (S·M·S of the mirror is the mirror: z = 1 lands at −1).
+void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
+  // The types, and the extensions POV-Ray tries for each; none: one Lucent does not read.
+  static const std::map<std::string_view, std::vector<std::string>> kTypes = {
+      {"png", {".png", ".PNG"}},
+      {"pgm", {".pgm", ".PGM"}},
+      {"ppm", {".ppm", ".PPM"}},
+      {"tga", {".tga", ".TGA"}},
+      {"jpeg", {".jpg", ".JPG", ".jpeg", ".JPEG"}},
+      {"tiff", {".tif", ".TIF", ".tiff", ".TIFF"}},
+      {"gif", {}},
+      {"iff", {}},
+      {"pot", {}},
+      {"sys", {}},
+      {"bmp", {}},
+      {"exr", {}},
+      {"hdr", {}},
+      {"function", {}}};
+  const Token type = in.next();
+  const auto known = type.kind == TokenKind::Keyword ? kTypes.find(type.text()) : kTypes.end();
+  if (known != kTypes.end() && known->second.empty()) {
+    refuseShape(o, type.loc(), in,
+                "a height field from '" + std::string(type.text()) +
+                    "' is not supported by Lucent (it reads png, pgm, ppm, tga, jpeg and tiff "
+                    "images as height fields)");
+    return;
+  }
+  if (known == kTypes.end()) in.unget();  // a file name alone: its extension says the type
+  const SourceLoc fileLoc = in.peek().loc();
+  HeightFieldSpec s;
+  s.src = in.parseString();
+  s.path = in.findDataFile(s.src, fileLoc,
+                           known != kTypes.end() ? known->second : std::vector<std::string>{})
+               .string();
+  try {
+    s.map = readHeightMapFile(s.path);
+  } catch (const std::exception& e) {
+    in.error(fileLoc, "cannot read the height field's image '" + s.src + "': " + e.what());
+  }
+  for (;;) {
+    if (allowWord(in, "smooth")) {
+      s.smooth = true;
+    } else if (isWord(in.peek(), "water_level")) {
+      const SourceLoc loc = in.next().loc();
+      s.waterLevel = in.parseFloat();
+      if (!(s.waterLevel >= 0.0 && s.waterLevel < 1.0))
+        in.error(loc,
+                 "the water level must be from 0 to below 1, not " + attributeText(s.waterLevel));
+    } else {
+      break;
+    }
+  }
+  const uint16_t top = *std::max_element(s.map->values.begin(), s.map->values.end());
+  if (!(top / 65536.0 > s.waterLevel))
+    in.error(fileLoc, "nothing of the height field lies above the water level " +
+                          attributeText(s.waterLevel));
+  warn(in, o.loc,
+       "Lucent's height field is closed by walls and a floor at the water level, POV-Ray's has "
+       "none (seen from below or beside, they differ)");
+  o.transform.scale(Vec3(1.0, 1.0, -1.0));
+  o.shape = std::move(s);
+}
+
+// The triangles of a mesh or mesh2 as read: three corners each, with their normals when
+// any triangle has them, and their uvs when every triangle has them.
+struct MeshBuild {
+  std::vector<std::array<Vec3, 3>> corners;
+  std::vector<std::optional<std::array<Vec3, 3>>> normals;
+  std::vector<std::optional<std::array<Vec2, 3>>> uvs;
+};
+
+namespace {
+
+// Each triangle keeps its own three positions (a corner's normal belongs to the triangle);
+// the mesh repair pairs their edges by position.
+std::shared_ptr<const MeshData> meshData(const MeshBuild& b) {
+  auto d = std::make_shared<MeshData>();
+  bool anyNormals = false, allUvs = !b.uvs.empty();
+  for (const auto& n : b.normals) anyNormals |= n.has_value();
+  for (const auto& uv : b.uvs) allUvs &= uv.has_value();
+  for (size_t t = 0; t < b.corners.size(); ++t) {
+    const auto& p = b.corners[t];
+    const uint32_t first = static_cast<uint32_t>(d->positions.size());
+    // POV-Ray's flat triangle in a smooth mesh keeps its face normal.
+    const Vec3 face = glm::cross(p[1] - p[0], p[2] - p[0]);
+    for (int k = 0; k < 3; ++k) {
+      d->positions.push_back(lucentFromPov(p[static_cast<size_t>(k)]));
+      if (anyNormals) {
+        const Vec3 n = b.normals[t] ? (*b.normals[t])[static_cast<size_t>(k)] : face;
+        d->normals.push_back(glm::normalize(lucentFromPov(n)));
+      }
+      if (allUvs) d->uvs.push_back((*b.uvs[t])[static_cast<size_t>(k)]);
+    }
+    d->triangles.push_back({first, first + 1, first + 2});
+  }
+  finishMesh(*d);
+  return d;
+}
+
+// POV-Ray drops a triangle whose corners are (nearly) on one line.
+bool degenerate(const std::array<Vec3, 3>& p) {
+  return glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) < kPovEpsilon;
+}
+
+// A vertex normal of a smooth triangle: POV-Ray takes <1, 0, 0> for a zero one, with a
+// warning.
+Vec3 meshNormal(TokenStream& in, const Vec3& n, const SourceLoc& at, bool& warned) {
+  if (glm::length(n) > 0.0) return n;
+  if (!warned) in.warning(at, "a mesh normal of length 0 is taken as <1, 0, 0>, as POV-Ray does");
+  warned = true;
+  return Vec3(1.0, 0.0, 0.0);
+}
+
+}  // namespace
+
+// Reads a triangle's `uv_vectors` and refuses its texture; false when a texture was refused.
+bool SceneReader::readMeshTriangleExtras(PovObject& o, TokenStream& in,
+                                         std::optional<std::array<Vec2, 3>>& uv) {
+  bool ok = true;
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) return ok;
+    if (isWord(t, "uv_vectors")) {
+      std::array<Vec2, 3> v{};
+      for (int k = 0; k < 3; ++k) {
+        if (k > 0) in.parseComma();
+        v[static_cast<size_t>(k)] = parseUv(in);
+      }
+      uv = v;
+    } else if (isWord(t, "texture") || isWord(t, "texture_list")) {
+      refuse(o, t.loc(), in,
+             "a texture on a mesh triangle is not supported by Lucent (its mesh has one "
+             "material; give the texture to the whole mesh)");
+      ok = false;
+      if (in.peek().is("{")) {
+        in.next();
+        for (int depth = 1; depth > 0;) {
+          const Token& b = in.next();
+          if (b.kind == TokenKind::End) in.error(b, "the block is not closed ('}' expected)");
+          if (b.is("{")) ++depth;
+          if (b.is("}")) --depth;
+        }
+      }
+    } else {
+      in.error(t, "unexpected " + t.describe() + " in a mesh triangle");
+    }
+  }
+}
+
+// mesh { triangle { A, B, C } smooth_triangle { A, NA, B, NB, C, NC } [inside_vector V] }
+void SceneReader::readMesh(PovObject& o, TokenStream& in) {
+  MeshBuild b;
+  bool ok = true, insideVector = false, warned = false;
+  for (;;) {
+    const Token t = in.next();
+    const bool smooth = isWord(t, "smooth_triangle");
+    if (isWord(t, "triangle") || smooth) {
+      in.expect("{");
+      std::array<Vec3, 3> p{}, n{};
+      for (int k = 0; k < 3; ++k) {
+        if (k > 0) in.parseComma();
+        p[static_cast<size_t>(k)] = toVec3(in.parseVector());
+        if (smooth) {
+          in.parseComma();
+          n[static_cast<size_t>(k)] = meshNormal(in, toVec3(in.parseVector()), t.loc(), warned);
+        }
+      }
+      std::optional<std::array<Vec2, 3>> uv;
+      ok = readMeshTriangleExtras(o, in, uv) && ok;
+      if (degenerate(p)) continue;
+      b.corners.push_back(p);
+      // A smooth triangle with three equal normals is flat in POV-Ray.
+      const bool flat = !smooth || (glm::length(n[0] - n[1]) < kPovEpsilon &&
+                                    glm::length(n[0] - n[2]) < kPovEpsilon);
+      b.normals.push_back(flat ? std::nullopt : std::optional<std::array<Vec3, 3>>(n));
+      b.uvs.push_back(uv);
+    } else if (isWord(t, "inside_vector")) {
+      in.parseVector();
+      insideVector = true;
+    } else {
+      in.unget();
+      break;
+    }
+  }
+  if (!ok) return;
+  finishMeshShape(o, in, b, insideVector);
+}
+
+// mesh2 { vertex_vectors { N, V... } [normal_vectors { N, V... }] [uv_vectors { N, UV... }]
+// face_indices { N, <a, b, c>... } [normal_indices { N, <a, b, c>... }] [uv_indices {...}]
+// [inside_vector V] }. Without normal_indices, face_indices index the normals too.
+void SceneReader::readMesh2(PovObject& o, TokenStream& in) {
+  std::vector<Vec3> vertices, normals;
+  std::vector<Vec2> uvVectors;
+  std::vector<std::array<long, 3>> faces, normalFaces, uvFaces;
+  bool insideVector = false;
+  // `NAME { N, item... }`: N items read by `item`.
+  auto list = [&](const char* name, auto&& item) {
+    in.expect("{");
+    const int n = parseCount(in, (std::string("number of ") + name).c_str());
+    for (int i = 0; i < n; ++i) {
+      in.parseComma();
+      item();
+    }
+    in.parseComma();
+    in.expect("}");
+  };
+  auto indices = [&](std::vector<std::array<long, 3>>& out) {
+    return [&in, &out] {
+      const Vec3 v = toVec3(in.parseVector());
+      out.push_back({static_cast<long>(v.x), static_cast<long>(v.y), static_cast<long>(v.z)});
+    };
+  };
+  for (;;) {
+    const Token t = in.next();
+    if (isWord(t, "vertex_vectors")) {
+      list("vertex_vectors", [&] { vertices.push_back(toVec3(in.parseVector())); });
+    } else if (isWord(t, "normal_vectors")) {
+      bool warned = false;
+      list("normal_vectors",
+           [&] { normals.push_back(meshNormal(in, toVec3(in.parseVector()), t.loc(), warned)); });
+    } else if (isWord(t, "uv_vectors")) {
+      list("uv_vectors", [&] { uvVectors.push_back(parseUv(in)); });
+    } else if (isWord(t, "face_indices")) {
+      list("face_indices", indices(faces));
+    } else if (isWord(t, "normal_indices")) {
+      list("normal_indices", indices(normalFaces));
+    } else if (isWord(t, "uv_indices")) {
+      list("uv_indices", indices(uvFaces));
+    } else if (isWord(t, "texture_list")) {
+      refuseShape(o, t.loc(), in,
+                  "a texture_list (textures per mesh triangle) is not supported by Lucent (its "
+                  "mesh has one material; give the texture to the whole mesh)");
+      return;
+    } else if (isWord(t, "inside_vector")) {
+      in.parseVector();
+      insideVector = true;
+    } else {
+      in.unget();
+      break;
+    }
+  }
+  if (vertices.empty() || faces.empty())
+    in.error(o.loc, "the mesh2 needs vertex_vectors and face_indices");
+  const std::vector<std::array<long, 3>>& nf = normalFaces.empty() ? faces : normalFaces;
+  if (!normals.empty() && nf.size() != faces.size())
+    in.error(o.loc, "the mesh2 has " + std::to_string(nf.size()) + " normal_indices for " +
+                        std::to_string(faces.size()) + " faces");
+  auto index = [&](long i, size_t count, const char* what) {
+    if (i < 0 || static_cast<size_t>(i) >= count)
+      in.error(o.loc, "the mesh2's " + std::string(what) + " index " + std::to_string(i) +
+                          " is outside its " + std::to_string(count) + " vectors");
+    return static_cast<size_t>(i);
+  };
+  MeshBuild b;
+  for (size_t f = 0; f < faces.size(); ++f) {
+    std::array<Vec3, 3> p{};
+    for (size_t k = 0; k < 3; ++k) p[k] = vertices[index(faces[f][k], vertices.size(), "vertex")];
+    if (degenerate(p)) continue;
+    b.corners.push_back(p);
+    std::optional<std::array<Vec3, 3>> n;
+    if (!normals.empty()) {
+      std::array<Vec3, 3> v{};
+      for (size_t k = 0; k < 3; ++k) v[k] = normals[index(nf[f][k], normals.size(), "normal")];
+      if (glm::length(v[0] - v[1]) >= kPovEpsilon || glm::length(v[0] - v[2]) >= kPovEpsilon) n = v;
+    }
+    b.normals.push_back(n);
+    std::optional<std::array<Vec2, 3>> uv;
+    const std::vector<std::array<long, 3>>& uf = uvFaces.empty() ? faces : uvFaces;
+    if (!uvVectors.empty() && f < uf.size()) {
+      std::array<Vec2, 3> v{};
+      for (size_t k = 0; k < 3; ++k) v[k] = uvVectors[index(uf[f][k], uvVectors.size(), "uv")];
+      uv = v;
+    }
+    b.uvs.push_back(uv);
+  }
+  finishMeshShape(o, in, b, insideVector);
+}
+
+// The mesh's data made and repaired; POV-Ray's solidity (inside_vector) compared with
+// Lucent's (a closed, consistently oriented mesh is a solid).
+void SceneReader::finishMeshShape(PovObject& o, TokenStream& in, const MeshBuild& b,
+                                  bool insideVector) {
+  if (b.corners.empty()) in.error(o.loc, "the " + o.keyword + " has no triangle (of some area)");
+  MeshSpec s;
+  try {
+    s.data = meshData(b);
+  } catch (const std::exception& e) {
+    in.error(o.loc, "the " + o.keyword + "'s triangles: " + e.what());
+  }
+  if (s.data->closed && !insideVector)
+    warn(in, o.loc,
+         "the " + o.keyword +
+             " is closed, so Lucent takes it as a solid; POV-Ray's has no inside without "
+             "inside_vector (it differs inside CSG and refractive objects)");
+  else if (!s.data->closed && insideVector)
+    warn(in, o.loc,
+         "the " + o.keyword +
+             " has an inside_vector but is not closed: Lucent takes it as a surface, not a solid");
+  o.shape = std::move(s);
+}
+
+}  // namespace lucent::sdl
