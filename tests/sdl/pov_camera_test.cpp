@@ -87,10 +87,13 @@ TEST_CASE("angle sets |direction| from |right|, look_at turns the vectors keepin
   CHECK(glm::dot(glm::cross(v.up, v.direction), v.right) > 0.0);
   CHECK(glm::dot(v.right, v.up) == Approx(0.0).margin(1e-12));
   CHECK(glm::dot(v.right, v.direction) == Approx(0.0).margin(1e-12));
-  // Written with up 2 for a 4:3 right: POV-Ray's pixels are twice as tall as wide.
+  // Written with up 2 for a 4:3 right: POV-Ray's pixels are twice as tall as wide, which
+  // the camera's frame-aspect keeps: POV-Ray's rays.
   const CameraImport imported = importCamera(pov, 160, 120);
-  REQUIRE(imported.differences.size() == 1);
+  CHECK(imported.differences.empty());
   CHECK(imported.camera.fov == Approx(60.0).epsilon(1e-12));
+  CHECK(imported.camera.frameAspect == Approx(2.0 / 3.0).epsilon(1e-15));
+  requirePovRays(pov, 160, 120);
 
   // With right/up matching the image, every ray is POV-Ray's.
   pov.up = Vec3(0.0, 1.0, 0.0);
