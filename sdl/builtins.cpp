@@ -278,8 +278,10 @@ double TokenStream::floatValue(Kw kw) {
       const int cb = i < b.size() ? static_cast<unsigned char>(b[i]) : 0;
       return ca - cb;
     }
+    case Kw::k_inside:
+      return insideFunction();
     default:
-      notEvaluated(at);  // inside(), and sum() and prod() (of functions only)
+      notEvaluated(at);  // sum() and prod() (of functions only)
   }
 }
 
@@ -390,8 +392,13 @@ std::array<double, 3> TokenStream::vectorFunction(Kw kw) {
       expect(")");
       return axisRotate(p, axis, angle);
     }
+    case Kw::k_trace:
+      return traceFunction();
+    case Kw::k_min_extent:
+    case Kw::k_max_extent:
+      return extentFunction(kw);
     default:
-      notEvaluated(at);  // vturbulence, trace, min_extent, max_extent
+      notEvaluated(at);  // vturbulence
   }
 }
 

@@ -3,6 +3,7 @@
 // and the core asks the reader for one where a right-hand side is not an expression.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string_view>
 
@@ -18,9 +19,31 @@ struct Item {
 };
 using ItemPtr = std::shared_ptr<const Item>;
 
+// An object's geometry as the scene reader builds it (Lucent's own shapes), for trace(),
+// inside(), min_extent() and max_extent(); every point and direction in POV-Ray's space.
+class ObjectGeometry {
+ public:
+  using Vec = std::array<double, 3>;
+  virtual ~ObjectGeometry() = default;
+  // The first surface the ray from `origin` along `direction` meets: its point and its
+  // unit normal; false when it meets none.
+  virtual bool trace(const Vec& origin, const Vec& direction, Vec& point, Vec& normal) const = 0;
+  virtual bool inside(const Vec& point) const = 0;
+  // The corners of the box that bounds the object.
+  virtual void extent(Vec& lo, Vec& hi) const = 0;
+};
+
 class ItemReader {
  public:
   virtual ~ItemReader() = default;
+  // The geometry of an object item; null when `item` is not an object this reader can
+  // build. Throws SdlError (at `at`) for an object it cannot build.
+  virtual std::shared_ptr<const ObjectGeometry> geometry(const std::shared_ptr<const Item>& item,
+                                                         TokenStream& in) {
+    (void)item;
+    (void)in;
+    return nullptr;
+  }
   // The item that starts with keyword `t` (already read: "sphere", "texture", ...), read to
   // its closing brace from `in`; nullptr if `t` starts no item (then it is an expression).
   // `t` may be the stream's current token, which changes as `in` is read: take what is

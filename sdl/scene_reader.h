@@ -101,6 +101,8 @@ class SceneReader : public ItemReader {
       : scene_(scene), diags_(diagnostics), options_(options) {}
 
   ItemPtr read(const Token& t, TokenStream& in) override;
+  // object_geometry.cpp: an object item built for trace(), inside() and the extents.
+  std::shared_ptr<const ObjectGeometry> geometry(const ItemPtr& item, TokenStream& in) override;
 
   // Reads the scene's top level to its end, placing each object, light and setting.
   void readScene(TokenStream& in);
@@ -192,6 +194,9 @@ class SceneReader : public ItemReader {
     std::string message;
   };
   std::map<std::string, Skipped> skipped_;
+  // The objects built for trace() and the like, each with its item (few in a scene: a
+  // search of this list is fast enough).
+  std::vector<std::pair<ItemPtr, std::shared_ptr<const ObjectGeometry>>> built_;
   static constexpr int kMaxObjectDepth = 1000;
 };
 

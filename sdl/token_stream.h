@@ -215,6 +215,12 @@ class TokenStream {
   double condParam();
   void condParam2(double& a, double& b);
 
+  // object_functions.cpp: trace(), inside(), min_extent() and max_extent()
+  std::shared_ptr<const ObjectGeometry> objectArgument(const Token& function);
+  std::array<double, 3> traceFunction();
+  double insideFunction();
+  std::array<double, 3> extentFunction(Kw kw);
+
   // file_io.cpp: #fopen, #fclose, #read and #write
   void fopenDirective();
   void fcloseDirective();

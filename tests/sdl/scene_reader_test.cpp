@@ -4,8 +4,11 @@
 
 #include "sdl_test_support.h"
 
+#include "sdl/console_text.h"
 #include "sdl/scene_reader.h"
 
+#include <fstream>
+#include <sstream>
 #include <variant>
 
 using namespace lucent;
@@ -350,4 +353,26 @@ TEST_CASE(
   const auto nested = errorsOf(deep);
   REQUIRE(nested.size() == 1);
   CHECK(nested[0] == "test.pov:1:8001: error: objects nested more than 1000 deep");
+}
+
+TEST_CASE("scene reader: trace(), inside(), min_extent() and max_extent() as POV-Ray gives them",
+          "[sdl][scene][povray]") {
+  // tests/data/sdl/scenes/object_functions.pov prints rays traced at spheres, boxes, CSG and
+  // a torus (hits, normals, misses), inside() of points and the extents; the .out beside it
+  // is POV-Ray's own output, which Lucent's geometry must reproduce to the printed digits.
+  const std::filesystem::path dir = sdltest::dataFolder() / "scenes";
+  CollectedOutput out;
+  Options options;
+  options.output = &out;
+  const SceneLoad load = loadScene(dir / "object_functions.pov", options);
+  for (const Diagnostic& d : load.diagnostics.all()) UNSCOPED_INFO(d.str());
+  REQUIRE(load.scene);
+  std::ifstream in(dir / "object_functions.out");
+  std::ostringstream expected;
+  expected << in.rdbuf();
+  CHECK(povPrinted(out.debugText) == expected.str());
+  // An identifier that is no object is refused at the argument.
+  CHECK(errorsOf("#declare A = 1; #declare P = trace(A, 0, x);\n").at(0) ==
+        "test.pov:1:36: error: trace() needs an object identifier first, not float identifier "
+        "'A'");
 }
