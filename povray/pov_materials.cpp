@@ -308,7 +308,9 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, con
         out.line(std::string(CheckerTexture::kind.pov));
         out.line(povRgbft(s.pigmentScale * v3(checker.color1), s.filter, s.transmit) + ",");
         out.line(povRgbft(s.pigmentScale * v3(checker.color2), s.filter, s.transmit));
+        // The cells scale in pattern space, which the placement then carries onto the shape.
         if (checker.scale != 1.0) out.line("scale " + povNumber(checker.scale));
+        writePlacement(checker.placement, out);
         out.close();
       },
       [&](const ImageTexture& image) {
