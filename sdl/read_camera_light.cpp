@@ -177,8 +177,11 @@ void SceneReader::readGlobalSettings(TokenStream& in) {
       global_.adcBailout = in.parseFloat();
     } else if (w == "ambient_light") {
       global_.ambientLight = readColour(in).rgb;
-    } else if (w == "max_intersections" || w == "number_of_waves" || w == "noise_generator" ||
-               w == "mm_per_unit") {
+    } else if (w == "noise_generator") {
+      const double g = in.parseFloat();
+      if (g < 1 || g > 3) in.error(t, "noise_generator must be 1, 2 or 3");
+      global_.noiseGenerator = static_cast<int>(g);
+    } else if (w == "max_intersections" || w == "number_of_waves" || w == "mm_per_unit") {
       in.parseFloat();  // no effect on Lucent's image
     } else if (w == "hf_gray_16") {
       optionalBool(in);

@@ -59,7 +59,7 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
   in.expect("{");
   if (o.keyword == "object") {
     const Token first = in.next();
-    const auto* item = dynamic_cast<const ObjectItem*>(itemOf(first));
+    const auto* item = use<ObjectItem>(first, in);
     if (item) {
       o = item->object;
     } else if (isObjectKeyword(first)) {
@@ -163,20 +163,48 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
   if (readTransform(t, in, o.transform)) return true;
   if (t.kind != TokenKind::Keyword) return false;
   const std::string_view w = t.text();
-  if (w == "pigment" || w == "finish" || w == "texture") {
+  // What is written now follows only the transforms written after it: carried back by
+  // the inverse of the object's transforms so far (PovObject::texture).
+  const PovTransform backToObject = o.transform.inverse();
+  if (w == "pigment" || w == "normal" || w == "finish" || w == "texture") {
+    if (w == "texture" && o.textureBlocks++ > 0) {
+      // A second texture { } is a layer over the first.
+      keepError(in, t.loc(), kLayeredTextures);
+      in.expect("{");
+      int depth = 1;
+      while (depth > 0) {
+        const Token& b = in.next();
+        if (b.kind == TokenKind::End) in.error(b, "the texture block is not closed");
+        if (b.is("{")) ++depth;
+        if (b.is("}")) --depth;
+      }
+      return true;
+    }
     if (!o.texture) {
       o.texture = defaultTexture();
+      o.texture->transform(backToObject);
       o.textureLoc = t.loc();
     }
-    if (w == "pigment") o.texture->pigment = readPigment(in, defaults_.pigment);
-    else if (w == "finish") o.texture->finish = readFinish(in, defaults_.finish);
-    else *o.texture = readTexture(in, defaultTexture());
+    if (w == "pigment") {
+      o.texture->pigment = readPigment(in, defaults_.pigment);
+      o.texture->pigment.transform = o.texture->pigment.transform.then(backToObject);
+    } else if (w == "normal") {
+      o.texture->normal = readNormal(in, nullptr);
+      o.texture->normal->transform = o.texture->normal->transform.then(backToObject);
+    } else if (w == "finish") {
+      o.texture->finish = readFinish(in, defaults_.finish);
+    } else {
+      *o.texture = readTexture(in, defaultTexture());
+      o.texture->transform(backToObject);
+      o.textureLoc = t.loc();
+    }
   } else if (w == "interior") {
     o.interior = readInterior(in, o.interior ? *o.interior : PovInterior{});
   } else if (w == "material") {
     const PovMaterial m = readMaterial(in);
     if (m.texture) {
       o.texture = m.texture;
+      o.texture->transform(backToObject);
       o.textureLoc = t.loc();
     }
     if (m.interior) o.interior = m.interior;

@@ -37,6 +37,13 @@ inline bool startsNumber(const Token& t) {
   }
 }
 
+// Whether `t` starts a colour (`color`, `rgb`..., or an expression).
+inline bool isColourStart(const Token& t) {
+  if (t.kind == TokenKind::Keyword)
+    return t.kw == Kw::k_color || t.kw == Kw::k_colour || isColourKey(t.kw);
+  return startsNumber(t);
+}
+
 // The item an identifier token names, or null.
 inline const Item* itemOf(const Token& t) {
   if (t.kind != TokenKind::Identifier) return nullptr;

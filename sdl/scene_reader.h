@@ -15,6 +15,7 @@
 #include "pov_light.h"
 #include "pov_settings.h"
 #include "pov_space.h"
+#include "read_support.h"
 #include "token_stream.h"
 
 #include "lang/diagnostics.h"
@@ -29,10 +30,18 @@
 
 namespace lucent::sdl {
 
-// A texture of one layer: its pigment and finish.
+// A texture of one layer: its pigment, normal and finish.
 struct PovTexture {
   PovPigment pigment;
+  std::optional<PovNormal> normal;
   PovFinish finish;
+
+  bool patterned() const { return pigment.patterned() || normal.has_value(); }
+  // `texture { ... translate ... }`: moves what the texture holds.
+  void transform(const PovTransform& m) {
+    pigment.transform = pigment.transform.then(m);
+    if (normal) normal->transform = normal->transform.then(m);
+  }
 };
 
 // One object as POV-Ray holds it: a shape, a CSG operation of others, or a light source.
@@ -44,35 +53,44 @@ struct PovObject {
   std::optional<PovLight> light;   // kind == Light
   std::vector<PovObject> children;
   PovTransform transform;  // the object's transforms, in POV-Ray's space
+  // Its texture, whose transforms lead from pattern space to this object's own space
+  // (before `transform`): a texture written among the transforms is carried back by the
+  // inverse of those written before it, so it follows only the later ones, as in POV-Ray.
   std::optional<PovTexture> texture;
   SourceLoc textureLoc;
+  int textureBlocks = 0;  // `texture { }` blocks written: a second is a layer
   std::optional<PovInterior> interior;
   bool noShadow = false;
   bool inverse = false;
 };
 
-// The items the reader makes, for #declare and for identifiers in blocks.
-struct ObjectItem : Item {
+// The items the reader makes, for #declare and for identifiers in blocks. Each keeps the
+// errors of the features Lucent cannot render that its declaration holds: they are
+// reported where the item is used in the scene, not where an include declares it.
+struct SceneItem : Item {
+  std::vector<Diagnostic> refused;
+};
+struct ObjectItem : SceneItem {
   PovObject object;
   std::string_view kind() const override { return object.keyword; }
 };
-struct CameraItem : Item {
+struct CameraItem : SceneItem {
   PovCamera camera;
   std::string_view kind() const override { return "camera"; }
 };
-struct PigmentItem : Item {
+struct PigmentItem : SceneItem {
   PovPigment pigment;
   std::string_view kind() const override { return "pigment"; }
 };
-struct FinishItem : Item {
+struct FinishItem : SceneItem {
   PovFinish finish;
   std::string_view kind() const override { return "finish"; }
 };
-struct TextureItem : Item {
+struct TextureItem : SceneItem {
   PovTexture texture;
   std::string_view kind() const override { return "texture"; }
 };
-struct InteriorItem : Item {
+struct InteriorItem : SceneItem {
   PovInterior interior;
   std::string_view kind() const override { return "interior"; }
 };
@@ -81,14 +99,26 @@ struct PovMaterial {
   std::optional<PovTexture> texture;
   std::optional<PovInterior> interior;
 };
-struct MaterialItem : Item {
+struct MaterialItem : SceneItem {
   PovMaterial material;
   std::string_view kind() const override { return "material"; }
 };
-struct TransformItem : Item {
+struct NormalItem : SceneItem {
+  PovNormal normal;
+  std::string_view kind() const override { return "normal"; }
+};
+struct ColorMapItem : SceneItem {
+  std::vector<PovColorMapEntry> map;
+  SourceLoc loc;
+  std::string_view kind() const override { return "color_map"; }
+};
+struct TransformItem : SceneItem {
   PovTransform transform;
   std::string_view kind() const override { return "transform"; }
 };
+
+// The refusal of a second texture { } (a layer), where it is.
+extern const char* const kLayeredTextures;
 
 class SceneReader : public ItemReader {
  public:
@@ -104,11 +134,37 @@ class SceneReader : public ItemReader {
   void finishScene(TokenStream& in);
 
  private:
+  // What an object's nodes inherit from its parent: the texture and interior, the matrix
+  // (POV-Ray's space) from the parent's object space to the space the texture was placed
+  // in, and the material the parent's node has, with the matrix it was placed by.
+  struct Inherited {
+    const PovTexture* texture = nullptr;
+    const PovInterior* interior = nullptr;
+    Mat4 textureFromParent{1.0};
+    std::optional<uint32_t> material;
+    Mat4 materialTextureFromNode{1.0};
+  };
+
   // scene_reader.cpp: the top level, and what cannot be read
+  std::shared_ptr<SceneItem> readItem(const Token& t, TokenStream& in);
   void readDefault(TokenStream& in);
   void place(const PovObject& object, TokenStream& in);
-  std::unique_ptr<Node> toNode(const PovObject& o, const PovTexture* texture,
-                               const PovInterior* interior, bool topLevel, TokenStream& in);
+  std::unique_ptr<Node> toNode(const PovObject& o, const Inherited& inherited, bool topLevel,
+                               TokenStream& in);
+  uint32_t addMaterial(const PovTexture& texture, const PovInterior& interior,
+                       const Mat4& textureFromNode, const SourceLoc& at, TokenStream& in);
+  // The item an identifier names if it is a T; the errors its declaration kept are
+  // reported (or, inside another declaration, kept by that one).
+  template <class T>
+  const T* use(const Token& t, TokenStream& in) {
+    const auto* item = dynamic_cast<const T*>(itemOf(t));
+    if (item) reportRefused(*item, t.loc(), in);
+    return item;
+  }
+  void reportRefused(const SceneItem& item, const SourceLoc& usedAt, TokenStream& in);
+  // A feature Lucent lacks, named in a block: its error kept, the block skipped to its
+  // closing brace.
+  void refuseInBlock(const Token& t, TokenStream& in, const std::string& why);
   // A keyword Lucent cannot render, or one the reader does not read yet: an error kept
   // (reading goes on), and the block that follows it skipped.
   void unsupported(const Token& t, TokenStream& in, bool skipBlock);
@@ -127,6 +183,7 @@ class SceneReader : public ItemReader {
   PovTransform readTransformBlock(TokenStream& in);
 
   // read_textures.cpp
+  PovNormal readNormal(TokenStream& in, const PovNormal* start);
   PovPigment readPigment(TokenStream& in, const PovPigment& start);
   PovFinish readFinish(TokenStream& in, const PovFinish& start);
   PovTexture readTexture(TokenStream& in, const PovTexture& start);
@@ -144,7 +201,15 @@ class SceneReader : public ItemReader {
   void readFog(const SourceLoc& loc, TokenStream& in);
   void readSkySphere(const SourceLoc& loc, TokenStream& in);
 
-  PovTexture defaultTexture() const { return {defaults_.pigment, defaults_.finish}; }
+  // read_patterns.cpp: patterns, their colours and modifiers
+  bool readPatternKeyword(const Token& t, TokenStream& in, PovPigment& p);
+  bool readPatternModifier(const Token& t, TokenStream& in, PatternSpec* spec,
+                           PatternPlacement* placement);
+  std::vector<PovColorMapEntry> readColorMap(TokenStream& in, SourceLoc& loc);
+  void resolvePigmentColours(PovPigment& p, TokenStream& in);
+  bool refusePattern(const Token& t, TokenStream& in);
+
+  PovTexture defaultTexture() const { return {defaults_.pigment, std::nullopt, defaults_.finish}; }
 
   Scene& scene_;
   Diagnostics& diags_;
@@ -156,6 +221,11 @@ class SceneReader : public ItemReader {
   PovBackground background_;
   std::set<std::string> warned_;  // each warning said once per place
   int objectDepth_ = 0;           // objects being read within each other
+  // The errors kept by the declarations being read (innermost last): a feature Lucent
+  // cannot render is an error only where the declared item is used.
+  std::vector<std::vector<Diagnostic>> declaring_;
+  std::set<std::string> refusalsReported_;    // each declared refusal reported once
+  std::shared_ptr<TextureItem> lastTexture_;  // the texture declared just now, if any
   static constexpr int kMaxObjectDepth = 1000;
 };
 

@@ -46,3 +46,13 @@ TEST_CASE("scene reader image: a macro's objects in a loop, a spotlight and a sk
           "[sdl][scene][image][povray]") {
   requireSameImageAsPovray("macro_ring.pov", 160, 120);
 }
+
+TEST_CASE("scene reader image: textures placed among transforms, block patterns and maps",
+          "[sdl][scene][image][povray][texture]") {
+  requireSameImageAsPovray("textures_placed.pov", 160, 120);
+}
+
+TEST_CASE("scene reader image: noise patterns with turbulence and colour maps, normals",
+          "[sdl][scene][image][povray][texture]") {
+  requireSameImageAsPovray("noise_patterns.pov", 160, 120);
+}

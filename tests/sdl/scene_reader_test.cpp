@@ -298,10 +298,10 @@ rainbow { angle 42 }
 TEST_CASE("scene reader: what is not read yet, and syntax errors, at their place",
           "[sdl][scene][errors]") {
   const auto errors = errorsOf(
-      "sphere { 0, 1 pigment { checker rgb 1 rgb 0 } }\n"
+      "sphere { 0, 1 pigment { checker rgb 1 rgb 0 } finish { albedo } }\n"
       "lathe { linear_spline 2, <0, 0>, <1, 1> }\n");
   REQUIRE(errors.size() == 2);
-  CHECK(errors[0] == "test.pov:1:25: error: 'checker' is not read yet by Lucent's POV-Ray reader");
+  CHECK(errors[0] == "test.pov:1:56: error: 'albedo' is not read yet by Lucent's POV-Ray reader");
   CHECK(errors[1] == "test.pov:2:1: error: 'lathe' is not read yet by Lucent's POV-Ray reader");
   const auto syntax = errorsOf("sphere { 0, 1 pigment { rgb 1 } 3 }\n");
   REQUIRE(syntax.size() == 1);
