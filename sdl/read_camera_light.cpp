@@ -39,7 +39,7 @@ void readAreaLight(const Token& t, TokenStream& in, PovLight& l) {
 PovCamera SceneReader::readCamera(TokenStream& in) {
   PovCamera c;
   in.expect("{");
-  if (const auto* item = dynamic_cast<const CameraItem*>(itemOf(in.peek()))) {
+  if (const auto* item = use<CameraItem>(in.peek(), in)) {
     in.next();
     c = item->camera;
   }
@@ -102,8 +102,7 @@ PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
   PovLight l;
   l.loc = loc;
   in.expect("{");
-  if (const auto* item = dynamic_cast<const ObjectItem*>(itemOf(in.peek()));
-      item && item->object.light) {
+  if (const auto* item = use<ObjectItem>(in.peek(), in); item && item->object.light) {
     in.next();
     l = *item->object.light;
     l.transform = l.transform.then(item->object.transform);

@@ -62,6 +62,9 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
     const auto* item = use<ObjectItem>(first, in);
     if (item) {
       o = item->object;
+    } else if (const auto* refused = use<RefusedItem>(first, in)) {
+      // Its refusal is reported (use): the scene will not render, reading goes on.
+      (void)refused;
     } else if (isObjectKeyword(first)) {
       o = readObject(first, in);
     } else {

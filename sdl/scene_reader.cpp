@@ -126,17 +126,17 @@ void SceneReader::unsupported(const Token& t, TokenStream& in, bool skipBlock) {
 }
 
 void SceneReader::unreadInBlock(const Token& t, TokenStream& in) {
+  // A declared item whose declaration was refused: the refusal, where it is used.
+  if (const auto* item = dynamic_cast<const SceneItem*>(itemOf(t));
+      item && !item->refused.empty()) {
+    reportRefused(*item, t.loc(), in);
+    skipToClose(in, 1);
+    return;
+  }
   if (t.kind != TokenKind::Keyword) in.error(t, "unexpected " + t.describe() + " in this block");
   unsupported(t, in, false);
   skipToClose(in, 1);
 }
-
-// A declaration of something Lucent lacks (`#declare M = pigment_map {...}`): its error
-// waits for a use, as any refusal inside a declaration.
-struct RefusedItem : SceneItem {
-  std::string word;
-  std::string_view kind() const override { return word; }
-};
 
 ItemPtr SceneReader::read(const Token& t, TokenStream& in) {
   // The errors of what Lucent cannot render, kept by the item instead of reported.
@@ -213,6 +213,14 @@ std::shared_ptr<SceneItem> SceneReader::readItem(const Token& t, TokenStream& in
     auto item = std::make_shared<TransformItem>();
     in.expect("{");
     item->transform = readTransformBlock(in);
+    return item;
+  }
+  // Any other block (`#declare Q = quadric {...}`, a shape the reader does not read yet):
+  // refused, where the declaration is used.
+  if (first.kind == TokenKind::Keyword && in.peek().is("{")) {
+    auto item = std::make_shared<RefusedItem>();
+    item->word = std::string(first.text());
+    unsupported(first, in, true);
     return item;
   }
   return nullptr;

@@ -112,6 +112,12 @@ struct ColorMapItem : SceneItem {
   SourceLoc loc;
   std::string_view kind() const override { return "color_map"; }
 };
+// A declaration of something Lucent lacks or the reader does not read yet
+// (`#declare M = pigment_map {...}`): its error waits for a use.
+struct RefusedItem : SceneItem {
+  std::string word;
+  std::string_view kind() const override { return word; }
+};
 struct TransformItem : SceneItem {
   PovTransform transform;
   std::string_view kind() const override { return "transform"; }

@@ -253,12 +253,16 @@ TEST_CASE(
       "#declare T = texture { pigment { P_Cells } }\n"
       "sphere { 0, 1 texture { T } }\n"
       "sphere { 0, 1 pigment { P_Cells } }\n"
-      "sphere { 0, 1 texture { T_Layered } }\n");
-  REQUIRE(errors.size() == 2);
+      "sphere { 0, 1 texture { T_Layered } }\n"
+      "object { J_Unread }\n");
+  REQUIRE(errors.size() == 3);
   CHECK(errors[0].rfind("refusals.inc:3:30: error: 'cells' is not supported by Lucent", 0) == 0);
   CHECK(errors[0].find("\ntest.pov:3:25: note: the declaration is used here") != std::string::npos);
   CHECK(errors[1].rfind("refusals.inc:5:3: error: layered textures are not supported", 0) == 0);
   CHECK(errors[1].find("\ntest.pov:5:25: note: the declaration is used here") != std::string::npos);
+  // A block the reader does not read yet, declared: the same.
+  CHECK(errors[2].rfind("refusals.inc:7:21: error: 'julia_fractal' is not read yet", 0) == 0);
+  CHECK(errors[2].find("\ntest.pov:6:10: note: the declaration is used here") != std::string::npos);
 }
 
 TEST_CASE("scene reader textures: the standard material includes read to their end",
