@@ -36,15 +36,30 @@ struct PovPigment {
   // empty: the pattern's default map.
   std::vector<PovColorMapEntry> map;
   SourceLoc mapLoc;
+  bool warped = false;  // its turbulence is a `warp { turbulence }`
 
   bool patterned() const { return !std::holds_alternative<std::monostate>(pattern); }
 };
 
 // `normal { PATTERN amount modifiers }`: Lucent's normal pattern and, as a pigment's, its
 // transforms from pattern space to the space of the object it was written on.
+// The pattern of a pigment's texture, and where it is placed (null: none).
+inline PatternSpec* specOf(Texture& t) {
+  auto* p = std::get_if<PatternTexture>(&t);
+  return p ? &p->pattern : nullptr;
+}
+inline PatternPlacement* placementOf(Texture& t) {
+  if (auto* p = std::get_if<PatternTexture>(&t)) return &p->pattern.placement;
+  if (auto* c = std::get_if<CheckerTexture>(&t)) return &c->placement;
+  if (auto* h = std::get_if<HexagonTexture>(&t)) return &h->placement;
+  if (auto* b = std::get_if<BrickTexture>(&t)) return &b->placement;
+  return nullptr;
+}
+
 struct PovNormal {
   NormalSpec spec;
   PovTransform transform;
+  bool warped = false;  // its turbulence is a `warp { turbulence }`
 };
 
 // `reflection { MIN, MAX fresnel falloff exponent metallic }`, or `reflection C` alone

@@ -73,6 +73,11 @@ void SceneReader::readSkySphere(const SourceLoc& loc, TokenStream& in) {
       if (isWord(k, "gradient")) {
         gradient = true;
         g.axis = toVec3(in.parseVector());
+      } else if (isColourStart(k)) {
+        // A solid colour: the same colour along any gradient (a one-entry map).
+        in.unget();
+        gradient = true;
+        g.colorMap = {{0.0, readColour(in).rgb}};
       } else if (isWord(k, "color_map") || isWord(k, "colour_map")) {
         SourceLoc mapLoc = k.loc();
         g.colorMap.clear();

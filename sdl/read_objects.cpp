@@ -170,8 +170,8 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
   // the inverse of the object's transforms so far (PovObject::texture).
   const PovTransform backToObject = o.transform.inverse();
   if (w == "pigment" || w == "normal" || w == "finish" || w == "texture") {
-    if (w == "texture" && o.textureBlocks++ > 0) {
-      // A second texture { } is a layer over the first.
+    if (w == "texture" && o.texture) {
+      // A texture { } on an object that has one (from any block) is a layer over it.
       keepError(in, t.loc(), kLayeredTextures);
       in.expect("{");
       int depth = 1;
@@ -188,14 +188,22 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
       o.texture->transform(backToObject);
       o.textureLoc = t.loc();
     }
+    // A block continues the object's own pigment, normal or finish, as POV-Ray's does
+    // (the default texture's when the object had none): moved back to the object's
+    // current space to be read on, then carried back again.
+    const PovTransform here = o.transform;
     if (w == "pigment") {
-      o.texture->pigment = readPigment(in, defaults_.pigment);
+      PovPigment start = o.texture->pigment;
+      start.transform = start.transform.then(here);
+      o.texture->pigment = readPigment(in, start);
       o.texture->pigment.transform = o.texture->pigment.transform.then(backToObject);
     } else if (w == "normal") {
-      o.texture->normal = readNormal(in, nullptr);
+      std::optional<PovNormal> start = o.texture->normal;
+      if (start) start->transform = start->transform.then(here);
+      o.texture->normal = readNormal(in, start ? &*start : nullptr);
       o.texture->normal->transform = o.texture->normal->transform.then(backToObject);
     } else if (w == "finish") {
-      o.texture->finish = readFinish(in, defaults_.finish);
+      o.texture->finish = readFinish(in, o.texture->finish);
     } else {
       *o.texture = readTexture(in, defaultTexture());
       o.texture->transform(backToObject);

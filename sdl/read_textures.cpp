@@ -4,6 +4,8 @@
 #include "read_support.h"
 #include "scene_reader.h"
 
+#include <algorithm>
+
 namespace lucent::sdl {
 
 PovPigment SceneReader::readPigment(TokenStream& in, const PovPigment& start) {
@@ -27,7 +29,9 @@ PovPigment SceneReader::readPigment(TokenStream& in, const PovPigment& start) {
       p.transmit = c.transmit;
       p.pattern = std::monostate{};
       p.map.clear();
-    } else if (!readTransform(t, in, p.transform) && !readPatternKeyword(t, in, p)) {
+    } else if (!readTransform(t, in, p.transform) &&
+               !readWarp(t, in, placementOf(p.pattern), specOf(p.pattern), p.transform, p.warped) &&
+               !readPatternKeyword(t, in, p)) {
       if (!refusePattern(t, in)) unreadInBlock(t, in);
       return p;
     }
@@ -69,6 +73,8 @@ PovNormal SceneReader::readNormal(TokenStream& in, const PovNormal* start) {
         warn(in, t.loc(),
              "accuracy is not imported (Lucent's normals take POV-Ray's default 0.02)");
     } else if (!readTransform(t, in, n.transform) &&
+               !readWarp(t, in, &n.spec.pattern.placement, &n.spec.pattern, n.transform,
+                         n.warped) &&
                !readPatternModifier(t, in, &n.spec.pattern, &n.spec.pattern.placement)) {
       if (!refusePattern(t, in)) unreadInBlock(t, in);
       return n;
@@ -172,15 +178,50 @@ PovTexture SceneReader::readTexture(TokenStream& in, const PovTexture& start) {
     const Token t = in.next();
     if (t.is("}")) return tex;
     PovTransform m;  // a transform moves the pigment and normal written before it
-    if (isWord(t, "pigment")) tex.pigment = readPigment(in, defaults_.pigment);
-    else if (isWord(t, "normal")) tex.normal = readNormal(in, nullptr);
-    else if (isWord(t, "finish")) tex.finish = readFinish(in, defaults_.finish);
+    // Each block continues the texture's own (POV-Ray's Parse_Texture).
+    if (isWord(t, "pigment")) tex.pigment = readPigment(in, tex.pigment);
+    else if (isWord(t, "normal")) tex.normal = readNormal(in, tex.normal ? &*tex.normal : nullptr);
+    else if (isWord(t, "finish")) tex.finish = readFinish(in, tex.finish);
     else if (readTransform(t, in, m)) tex.transform(m);
+    else if (readOldNormal(t, in, tex)) continue;
     else {
+      if (isTexturePattern(t)) {
+        refuseInBlock(t, in,
+                      "a pattern of textures (texture_map, or a block pattern of textures); "
+                      "Lucent has one texture per material");
+        return tex;
+      }
       unreadInBlock(t, in);
       return tex;
     }
   }
+}
+
+// POV-Ray 1's normals written in the texture: `bumps 0.5`, `dents`, `ripples`, `waves`,
+// `wrinkles` with their amount.
+bool SceneReader::readOldNormal(const Token& t, TokenStream& in, PovTexture& tex) {
+  static constexpr std::string_view kOld[] = {"bumps", "dents", "ripples", "waves", "wrinkles"};
+  if (t.kind != TokenKind::Keyword ||
+      std::find(std::begin(kOld), std::end(kOld), t.text()) == std::end(kOld) ||
+      !startsNumber(in.peek()))
+    return false;
+  PovNormal n;
+  for (const PatternTypeInfo& info : kPatternTypes)
+    if (info.pov == t.text()) n.spec.pattern.type = info.type;
+  n.spec.pattern.noiseGenerator = 0;  // the scene's global_settings noise_generator
+  n.spec.depth = in.parseFloat();
+  tex.normal = n;
+  return true;
+}
+
+// A pattern keyword written directly in a texture: a texture_map's or a block pattern's
+// of textures.
+bool SceneReader::isTexturePattern(const Token& t) const {
+  if (t.kind != TokenKind::Keyword) return false;
+  const std::string_view w = t.text();
+  for (const PatternTypeInfo& info : kPatternTypes)
+    if (info.pov == w) return true;
+  return w == "checker" || w == "hexagon" || w == "brick" || w == "tiles" || isLackingPattern(t);
 }
 
 PovInterior SceneReader::readInterior(TokenStream& in, const PovInterior& start) {

@@ -32,7 +32,6 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"pigment_map", "maps of pigments; Lucent's colour maps hold colours"},
       {"normal_map", "maps of normals; Lucent's <normal> takes one pattern"},
       {"slope_map", "slope maps of normals; Lucent's <normal> takes the pattern's own slope"},
-      {"warp", "warps; the nearest Lucent feature is a pattern's turbulence"},
       {"average", "averaged pigments or normals"},
       {"image_pattern", "image patterns"},
       {"uv_mapping", "uv_mapping of patterns; Lucent's <image> is read at the shape's (u,v)"},
@@ -300,20 +299,6 @@ void SceneReader::place(const PovObject& object, TokenStream& in) {
 }
 
 namespace {
-
-// The placement a pattern of this texture kind carries, if any.
-PatternPlacement* placementOf(Texture& t) {
-  return std::visit(
-      [](auto& k) -> PatternPlacement* {
-        using T = std::decay_t<decltype(k)>;
-        if constexpr (std::is_same_v<T, PatternTexture>) return &k.pattern.placement;
-        else if constexpr (std::is_same_v<T, CheckerTexture> || std::is_same_v<T, HexagonTexture> ||
-                           std::is_same_v<T, BrickTexture>)
-          return &k.placement;
-        else return nullptr;
-      },
-      t);
-}
 
 // Lucent's object space is POV-Ray's with z negated (pov_space.h): S.
 Mat4 negateZ() {

@@ -58,7 +58,6 @@ struct PovObject {
   // inverse of those written before it, so it follows only the later ones, as in POV-Ray.
   std::optional<PovTexture> texture;
   SourceLoc textureLoc;
-  int textureBlocks = 0;  // `texture { }` blocks written: a second is a layer
   std::optional<PovInterior> interior;
   bool noShadow = false;
   bool inverse = false;
@@ -214,6 +213,11 @@ class SceneReader : public ItemReader {
   std::vector<PovColorMapEntry> readColorMap(TokenStream& in, SourceLoc& loc);
   void resolvePigmentColours(PovPigment& p, TokenStream& in);
   bool refusePattern(const Token& t, TokenStream& in);
+  bool readOldNormal(const Token& t, TokenStream& in, PovTexture& tex);
+  bool isTexturePattern(const Token& t) const;
+  static bool isLackingPattern(const Token& t);
+  bool readWarp(const Token& t, TokenStream& in, PatternPlacement* placement,
+                const PatternSpec* spec, const PovTransform& before, bool& warped);
 
   PovTexture defaultTexture() const { return {defaults_.pigment, std::nullopt, defaults_.finish}; }
 

@@ -176,6 +176,7 @@ union {
 }
 #declare D = sphere { 0, 1 translate x pigment { spotted translate y } }
 object { D scale 2 }
+sphere { 0, 1 pigment { bozo } translate x pigment { scale 2 } }
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
@@ -206,6 +207,41 @@ object { D scale 2 }
   const auto& spotted = std::get<PatternTexture>(materialOf(s, top(s, 2)).texture);
   checkMat(spotted.pattern.placement.patternFromObject,
            glm::inverse(translation(Vec3(0, 1, 0))) * translation(Vec3(1, 0, 0)) * kS);
+
+  // A pigment block continues the pigment the object has: bozo, moved by translate x,
+  // then scaled by 2 in the object's space.
+  const auto& continued = std::get<PatternTexture>(materialOf(s, top(s, 3)).texture);
+  CHECK(continued.pattern.type == PatternType::bozo);
+  checkMat(
+      continued.pattern.placement.patternFromObject,
+      glm::inverse(translation(Vec3(1, 0, 0))) * scaling(0.5) * translation(Vec3(1, 0, 0)) * kS);
+}
+
+TEST_CASE("scene reader textures: a turbulence warp before any transform is the placement's",
+          "[sdl][scene][texture]") {
+  auto r = readScene(
+      "sphere { 0, 1 pigment { crackle warp { turbulence 0.6 octaves 4 lambda 3 } scale 2 } }\n");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const auto& t = std::get<PatternTexture>(materialOf(s, top(s, 0)).texture);
+  CHECK(t.pattern.placement.turbulence == Vec3(0.6));
+  CHECK(t.pattern.placement.octaves == 4);
+  CHECK(t.pattern.placement.lambda == 3.0);
+  checkMat(t.pattern.placement.patternFromObject, scaling(0.5) * kS);
+  const auto errors = errorsOf(
+      "sphere { 0, 1 pigment { bozo scale 2 warp { turbulence 0.5 } } }\n"
+      "sphere { 0, 1 pigment { bozo warp { repeat x } } }\n"
+      "sphere { 0, 1 pigment { bozo warp { turbulence 0.5 } turbulence 0.2 } }\n");
+  REQUIRE(errors.size() == 3);
+  CHECK(errors[0] ==
+        "test.pov:1:38: error: 'warp { turbulence }' after a transform of the pattern is not "
+        "supported by Lucent (a pattern's turbulence applies after all its transforms)");
+  CHECK(errors[1] ==
+        "test.pov:2:37: error: 'warp { repeat }' is not supported by Lucent (warps; the nearest "
+        "Lucent feature is a pattern's turbulence)");
+  CHECK(errors[2] ==
+        "test.pov:3:54: error: 'turbulence' with a turbulence warp is not supported by Lucent "
+        "(a pattern has one turbulence)");
 }
 
 TEST_CASE("scene reader textures: what Lucent cannot render is refused at its keyword",
@@ -216,8 +252,9 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
       "sphere { 0, 1 pigment { bozo pigment_map { [0 rgb 1] } } }\n"
       "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }\n"
       "sphere { 0, 1 pigment { image_map { png \"x.png\" } } }\n"
-      "sphere { 0, 1 normal { checker } }\n");
-  REQUIRE(errors.size() == 6);
+      "sphere { 0, 1 normal { checker } }\n"
+      "sphere { 0, 1 texture { gradient y texture_map { [0 T1] [1 T2] } } }\n");
+  REQUIRE(errors.size() == 7);
   CHECK(errors[0] ==
         "test.pov:1:30: error: colour maps with filter or transmit are not supported by Lucent "
         "(its colour maps hold colours; a pattern pigment may have one transmit for all its "
@@ -235,6 +272,9 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
   CHECK(errors[5] ==
         "test.pov:6:24: error: 'checker' is not supported by Lucent (as a normal pattern; "
         "Lucent's checker is a pigment)");
+  CHECK(errors[6] ==
+        "test.pov:7:25: error: 'gradient' is not supported by Lucent (a pattern of textures "
+        "(texture_map, or a block pattern of textures); Lucent has one texture per material)");
 }
 
 TEST_CASE(
@@ -286,4 +326,45 @@ TEST_CASE("scene reader textures: the standard material includes read to their e
   REQUIRE(wood.map.entries.size() >= 4);
   CHECK(wood.map.entries[1].at == Approx(0.1));
   checkColor(wood.map.entries[1].color, Color(0.88f, 0.60f, 0.40f));
+}
+
+TEST_CASE("scene reader textures: a sky_sphere of one colour, and of a declared old-style map",
+          "[sdl][scene][texture]") {
+  auto r = readScene("sky_sphere { pigment { rgb <0.2, 0.3, 0.4> } }\n");
+  REQUIRE(r->load.scene);
+  REQUIRE(r->load.scene->sky);
+  const auto& entries = r->load.scene->sky->pattern.map.entries;
+  REQUIRE(entries.size() == 1);
+  checkColor(entries[0].color, Color(0.2f, 0.3f, 0.4f));
+  auto m = readScene(
+      "#declare M = color_map { [0, 0.5 color rgb 1 color rgb <0, 0, 1>] }\n"
+      "sky_sphere { pigment { gradient y color_map { M } } }\n");
+  REQUIRE(m->load.scene);
+  REQUIRE(m->load.scene->sky);
+  const auto& two = m->load.scene->sky->pattern.map.entries;
+  REQUIRE(two.size() == 2);
+  CHECK(two[1].at == 0.5);
+  checkColor(two[1].color, Color(0, 0, 1));
+}
+
+TEST_CASE("scene reader textures: POV-Ray 1's normals in a texture, and blocks that continue",
+          "[sdl][scene][texture]") {
+  auto r = readScene(
+      "sphere { 0, 1 texture { pigment { rgb 1 } wrinkles 0.3 scale 2 } }\n"
+      "sphere { 0, 1 texture { pigment { bozo } finish { phong 1 } pigment { scale 4 } "
+      "finish { diffuse 0.4 } } }\n");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const Material& m = materialOf(s, top(s, 0));
+  REQUIRE(m.normal);
+  CHECK(m.normal->pattern.type == PatternType::wrinkles);
+  CHECK(m.normal->depth == 0.3);
+  checkMat(m.normal->pattern.placement.patternFromObject, scaling(0.5) * kS);
+  // The second pigment and finish continue the first ones.
+  const Material& c = materialOf(s, top(s, 1));
+  const auto& bozo = std::get<PatternTexture>(c.texture);
+  CHECK(bozo.pattern.type == PatternType::bozo);
+  checkMat(bozo.pattern.placement.patternFromObject, scaling(0.25) * kS);
+  checkColor(c.phong, Color(1.0f));
+  checkColor(c.diffuse, Color(0.4f));
 }
