@@ -281,7 +281,7 @@ bool SceneReader::readTransform(const Token& t, TokenStream& in, PovTransform& m
       m = m.then(readTransformBlock(in));
     } else {
       const Token id = in.next();
-      const auto* item = dynamic_cast<const TransformItem*>(itemOf(id));
+      const auto* item = use<TransformItem>(id, in);
       if (!item) in.error(id, "a transform identifier or '{' expected, not " + id.describe());
       m = m.then(item->transform);
     }
@@ -299,7 +299,7 @@ PovTransform SceneReader::readTransformBlock(TokenStream& in) {
   for (;;) {
     const Token t = in.next();
     if (t.is("}")) break;
-    if (const auto* item = dynamic_cast<const TransformItem*>(itemOf(t))) {
+    if (const auto* item = use<TransformItem>(t, in)) {
       m = m.then(item->transform);
     } else if (isWord(t, "inverse")) {
       inverse = !inverse;
