@@ -44,6 +44,10 @@ void noChildren(ElementReader& r) {
   });
 }
 
+}  // namespace
+
+const std::vector<std::string_view>& placementAttributes() { return kPlacementAttributes; }
+
 // transform (the pattern on the object, as a node's transform places it in its parent) and
 // turbulence: one number for all three axes or three numbers.
 PatternPlacement parsePlacement(ElementReader& r) {
@@ -70,6 +74,8 @@ PatternPlacement parsePlacement(ElementReader& r) {
   p.lambda = r.number("lambda", p.lambda, NumberRule::positive());
   return p;
 }
+
+namespace {
 
 void parseValueAttributes(ElementReader& r, PatternSpec& s) {
   s.placement = parsePlacement(r);

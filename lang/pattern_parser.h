@@ -13,6 +13,10 @@ Texture parsePatternTexture(ElementReader& r);
 Texture parseHexagonTexture(ElementReader& r);
 Texture parseBrickTexture(ElementReader& r);
 NormalSpec parseNormal(ElementReader& r);
+// The placement attributes every pattern element takes (transform, turbulence, octaves,
+// omega, lambda), and their names.
+PatternPlacement parsePlacement(ElementReader& r);
+const std::vector<std::string_view>& placementAttributes();
 // <bump-map src depth>: src is resolved by the file-access rules, as <image>'s.
 BumpMapSpec parseBumpMap(ElementReader& r);
 

@@ -58,11 +58,11 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
         if constexpr (std::is_same_v<T, std::monostate>) {
           return;
         } else if constexpr (std::is_same_v<T, CheckerTexture>) {
-          out.open(std::string(T::kind.element),
-                   {{"color1", xmlColor(t.color1)},
-                    {"color2", xmlColor(t.color2)},
-                    {"scale", xmlNumber(t.scale)}},
-                   true);
+          Attributes a{{"color1", xmlColor(t.color1)},
+                       {"color2", xmlColor(t.color2)},
+                       {"scale", xmlNumber(t.scale)}};
+          addPlacement(t.placement, a);
+          out.open(std::string(T::kind.element), a, true);
         } else if constexpr (std::is_same_v<T, ImageTexture>) {
           out.open(std::string(T::kind.element),
                    {{"src", fileReference(t.path, folder)},

@@ -10,8 +10,11 @@ namespace lucent {
 namespace {
 
 Texture readTexture(ElementReader& t, const CheckerTexture*) {
-  t.checkAttributes({"color1", "color2", "scale"});
+  std::vector<std::string_view> attributes{"color1", "color2", "scale"};
+  attributes.insert(attributes.end(), placementAttributes().begin(), placementAttributes().end());
+  t.checkAttributes(attributes);
   CheckerTexture c;
+  c.placement = parsePlacement(t);
   c.color1 = t.color("color1", c.color1);
   c.color2 = t.color("color2", c.color2);
   c.scale = t.number("scale", c.scale, NumberRule::positive());

@@ -308,7 +308,22 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, con
         out.line(std::string(CheckerTexture::kind.pov));
         out.line(povRgbft(s.pigmentScale * v3(checker.color1), s.filter, s.transmit) + ",");
         out.line(povRgbft(s.pigmentScale * v3(checker.color2), s.filter, s.transmit));
-        if (checker.scale != 1.0) out.line("scale " + povNumber(checker.scale));
+        // The cells scale in pattern space, which the placement then carries onto the shape.
+        const PatternPlacement& p = checker.placement;
+        if (checker.scale != 1.0 && p.turbulence != Vec3(0.0)) {
+          // Lucent turbulates before the cells' scale; POV-Ray's classic turbulence would
+          // come after it. A warp between them keeps Lucent's order (POV-Ray applies the
+          // transforms and warps written last first).
+          out.line("scale " + povNumber(checker.scale));
+          out.line("warp { turbulence " + povVector(p.turbulence) + " octaves " +
+                   std::to_string(p.octaves) + " omega " + povNumber(p.omega) + " lambda " +
+                   povNumber(p.lambda) + " }");
+          if (p.patternFromObject != Mat4(1.0))
+            out.line(povMatrix(glm::inverse(p.patternFromObject)));
+        } else {
+          if (checker.scale != 1.0) out.line("scale " + povNumber(checker.scale));
+          writePlacement(p, out);
+        }
         out.close();
       },
       [&](const ImageTexture& image) {

@@ -33,6 +33,8 @@ std::string patternKeyword(const PatternSpec& s) {
   return k;
 }
 
+}  // namespace
+
 void writePlacement(const PatternPlacement& p, PovWriter& out) {
   if (p.turbulence != Vec3(0.0)) {
     out.line("turbulence " + povVector(p.turbulence));
@@ -41,6 +43,8 @@ void writePlacement(const PatternPlacement& p, PovWriter& out) {
   }
   if (p.patternFromObject != Mat4(1.0)) out.line(povMatrix(glm::inverse(p.patternFromObject)));
 }
+
+namespace {
 
 void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
   if (s.frequency != 1.0) out.line("frequency " + povNumber(s.frequency));

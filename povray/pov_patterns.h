@@ -21,5 +21,7 @@ void writeBrickPigment(const BrickTexture& t, const Vec3& scale, double filter, 
                        PovWriter& out);
 // `normal { PATTERN depth ... }`.
 void writeNormal(const NormalSpec& n, PovWriter& out);
+// A pattern's turbulence and transform (after the pattern's own modifiers).
+void writePlacement(const PatternPlacement& p, PovWriter& out);
 
 }  // namespace lucent

@@ -138,7 +138,16 @@ struct TextureColour {
     Vec3 err(0.0);
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) err[r] += std::abs(m[c][r]) * surface.pError[c];
-    return checkerColor(checker, surface.pObject, err);
+    const PatternPlacement& place = checker.placement;
+    if (place.patternFromObject == Mat4(1.0) && place.turbulence == Vec3(0.0))
+      return checkerColor(checker, surface.pObject, err);
+    // Placed: the point and its error bound carried into pattern space (turbulence moves
+    // the point by a smooth displacement, which leaves the bound as it is).
+    const Mat4& p = place.patternFromObject;
+    Vec3 patternErr(0.0);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) patternErr[r] += std::abs(p[c][r]) * err[c];
+    return checkerColor(checker, warpPoint(place, surface.pObject), patternErr);
   }
   Color operator()(const ImageTexture& image) const {
     // A shape without (u,v) reads the image at (0,0): one flat colour.

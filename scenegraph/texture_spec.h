@@ -22,16 +22,18 @@ struct TextureKindInfo {
   std::string_view doc;      // one line, for the schema
 };
 
-// <checker color1 color2 scale>: a solid 3-D checker in the shape's object space;
-// the cube [0, scale)^3 has color1.
+// <checker color1 color2 scale transform turbulence...>: a solid 3-D checker in pattern
+// space (the shape's object space carried by the placement, as <pattern>'s); the cube
+// [0, scale)^3 of pattern space has color1.
 struct CheckerTexture {
   static constexpr TextureKindInfo kind{
       "checker", "checker",
-      "A solid 3-D checker of cubes of edge scale in the object space of the shape; the cube "
-      "[0, scale)³ has color1 (as POV-Ray's checker)."};
+      "A solid 3-D checker of cubes of edge scale in the object space of the shape (placed by "
+      "transform, as a pattern); the cube [0, scale)³ has color1 (as POV-Ray's checker)."};
   Color color1{1.0f};
   Color color2{0.0f};
   double scale = 1.0;
+  PatternPlacement placement;
 };
 
 // <image src scale>: an image looked up with the shape's (u,v). The pixels are loaded by

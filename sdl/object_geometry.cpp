@@ -70,7 +70,10 @@ std::shared_ptr<const ObjectGeometry> SceneReader::geometry(const ItemPtr& item,
   reader.defaults_ = defaults_;
   const PovTexture texture = defaultTexture();
   const PovInterior interior;
-  std::unique_ptr<Node> node = reader.toNode(object->object, &texture, &interior, true, in);
+  Inherited top;
+  top.texture = &texture;
+  top.interior = &interior;
+  std::unique_ptr<Node> node = reader.toNode(object->object, top, true, in);
   if (node) scene->root->children.push_back(std::move(node));
   if (diagnostics.hasErrors()) {
     const Diagnostic& d = diagnostics.all().front();

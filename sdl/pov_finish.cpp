@@ -37,7 +37,11 @@ Color importReflection(const PovFinish& finish, const PovPigment& pigment, bool 
         "viewer to MAX at grazing angles, Lucent's is constant (imported as MIN)",
         r.falloff));
   }
-  if (r.metallic > 0.0) {
+  if (r.metallic > 0.0 && pigment.patterned()) {
+    notes.push_back(
+        "reflection { metallic } with a pattern pigment: Lucent's reflection is one colour, "
+        "not tinted by the pattern (imported untinted)");
+  } else if (r.metallic > 0.0) {
     // POV-Ray tints by 1 + m·(1 − F)·(P − 1), F ~ 0 facing the viewer, 1 at grazing.
     kr *= Color(1.0f) + static_cast<float>(r.metallic) * (pigment.color - Color(1.0f));
     notes.push_back(
@@ -74,15 +78,24 @@ MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish
   MaterialImport out;
   Material& m = out.material;
   std::vector<std::string>& notes = out.differences;
-  const Color& p = pigment.color;
+  // A pattern pigment is Lucent's texture, which multiplies diffuse and ambient where it
+  // is evaluated (its filter is 0 and its transmit one for all colours: the reader
+  // refuses other colour maps).
+  const bool patterned = pigment.patterned();
+  const Color p = patterned ? Color(1.0f) : pigment.color;
+  m.texture = pigment.pattern;
   // POV-Ray 3.7: every local term is scaled by the opacity, what shows through is
   // pigment·filter + transmit, per channel.
   const float opacity = std::max(0.0f, 1.0f - pigment.filter - pigment.transmit);
   m.diffuse = p * static_cast<float>(finish.diffuse) * opacity;
   m.ambient = p * finish.ambient * opacity;
-  m.ambientIsScalar = false;  // the pigment is already in it
-  m.innerAmbient = true;      // POV-Ray lights the inner side of a surface with ambient too
+  m.ambientIsScalar = patterned;  // multiplied by the texture, or the pigment already in it
+  m.innerAmbient = true;          // POV-Ray lights the inner side of a surface with ambient too
   m.emissive = p * finish.emission * opacity;
+  if (patterned && maxComponent(finish.emission) > 0.0f)
+    notes.push_back(
+        "emission with a pattern pigment: POV-Ray multiplies the emission by the pattern's "
+        "colour, Lucent's emission is one colour (imported as the emission alone)");
   m.brilliance = finish.brilliance;
   // Highlights take the light's colour only: neither pigment nor opacity.
   m.phong = Color(static_cast<float>(finish.phong));

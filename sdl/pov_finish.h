@@ -2,6 +2,8 @@
 // (docs/povray-import.md, "Finish and pigment").
 #pragma once
 
+#include "pov_space.h"
+
 #include "scenegraph/material.h"
 
 #include <string>
@@ -9,12 +11,55 @@
 
 namespace lucent::sdl {
 
-// `pigment { rgbft <r, g, b, f, t> }`: a colour only, for now. POV-Ray's default pigment,
-// an object's when nothing gives it one, is black.
-struct PovPigment {
+// A colour map's entry as written, with its filter and transmit (Lucent's colour maps
+// hold colours: a pattern pigment takes them only when every entry has the same).
+struct PovColorMapEntry {
+  double at = 0.0;
   Color color{0.0f};
   float filter = 0.0f;
   float transmit = 0.0f;
+};
+
+// `pigment { rgbft <r, g, b, f, t> }` or `pigment { PATTERN color_map {...} modifiers }`.
+// POV-Ray's default pigment, an object's when nothing gives it one, is black.
+struct PovPigment {
+  Color color{0.0f};  // a solid colour's
+  float filter = 0.0f;
+  float transmit = 0.0f;
+  // A pattern: Lucent's texture, whose placement's patternFromObject is set when the
+  // object that wears it becomes nodes (docs/povray-import.md, "Texture transforms").
+  Texture pattern;
+  // The pigment's transforms in POV-Ray's space, from pattern space to the space of the
+  // object it was written on (sdl/scene_reader.h, PovObject).
+  PovTransform transform;
+  // The colours as written: the colour map, or a block pattern's colours at 0, 1, 2;
+  // empty: the pattern's default map.
+  std::vector<PovColorMapEntry> map;
+  SourceLoc mapLoc;
+  bool warped = false;  // its turbulence is a `warp { turbulence }`
+
+  bool patterned() const { return !std::holds_alternative<std::monostate>(pattern); }
+};
+
+// `normal { PATTERN amount modifiers }`: Lucent's normal pattern and, as a pigment's, its
+// transforms from pattern space to the space of the object it was written on.
+// The pattern of a pigment's texture, and where it is placed (null: none).
+inline PatternSpec* specOf(Texture& t) {
+  auto* p = std::get_if<PatternTexture>(&t);
+  return p ? &p->pattern : nullptr;
+}
+inline PatternPlacement* placementOf(Texture& t) {
+  if (auto* p = std::get_if<PatternTexture>(&t)) return &p->pattern.placement;
+  if (auto* c = std::get_if<CheckerTexture>(&t)) return &c->placement;
+  if (auto* h = std::get_if<HexagonTexture>(&t)) return &h->placement;
+  if (auto* b = std::get_if<BrickTexture>(&t)) return &b->placement;
+  return nullptr;
+}
+
+struct PovNormal {
+  NormalSpec spec;
+  PovTransform transform;
+  bool warped = false;  // its turbulence is a `warp { turbulence }`
 };
 
 // `reflection { MIN, MAX fresnel falloff exponent metallic }`, or `reflection C` alone

@@ -21,6 +21,9 @@ struct PovGlobalSettings {
   int maxTraceLevel = 5;
   double adcBailout = 1.0 / 255.0;
   Color ambientLight{1.0f};
+  // The noise of the patterns that do not choose theirs (POV-Ray 3.7's default, range
+  // corrected); the importer marks those patterns with 0 until the scene is read.
+  int noiseGenerator = 2;
 };
 
 // `background { colour }` (default black; its filter and transmit do not show).

@@ -4,28 +4,6 @@
 
 namespace lucent::sdl {
 
-namespace {
-
-// `color_map { [at colour] ... }` (the '{' read); entries in the order written.
-std::vector<ColorMapEntry> readColorMap(TokenStream& in) {
-  std::vector<ColorMapEntry> map;
-  for (;;) {
-    const Token t = in.next();
-    if (t.is("}")) return map;
-    if (!t.is("[")) in.error(t, "'[' or '}' expected in color_map, not " + t.describe());
-    ColorMapEntry e;
-    e.at = in.parseFloat();
-    in.parseComma();
-    if (in.peek().kind == TokenKind::Number)
-      in.error(in.peek(), "color_map entries of two values ([a b colour colour]) are not read yet");
-    e.color = readColour(in).rgb;
-    in.expect("]");
-    map.push_back(e);
-  }
-}
-
-}  // namespace
-
 void SceneReader::readFog(const SourceLoc& loc, TokenStream& in) {
   PovFog fog;
   fog.loc = loc;
@@ -95,9 +73,16 @@ void SceneReader::readSkySphere(const SourceLoc& loc, TokenStream& in) {
       if (isWord(k, "gradient")) {
         gradient = true;
         g.axis = toVec3(in.parseVector());
+      } else if (isColourStart(k)) {
+        // A solid colour: the same colour along any gradient (a one-entry map).
+        in.unget();
+        gradient = true;
+        g.colorMap = {{0.0, readColour(in).rgb}};
       } else if (isWord(k, "color_map") || isWord(k, "colour_map")) {
-        in.expect("{");
-        g.colorMap = readColorMap(in);
+        SourceLoc mapLoc = k.loc();
+        g.colorMap.clear();
+        for (const PovColorMapEntry& e : readColorMap(in, mapLoc))
+          g.colorMap.push_back({e.at, e.color});
       } else {
         unreadInBlock(k, in);
         return;

@@ -39,7 +39,7 @@ void readAreaLight(const Token& t, TokenStream& in, PovLight& l) {
 PovCamera SceneReader::readCamera(TokenStream& in) {
   PovCamera c;
   in.expect("{");
-  if (const auto* item = dynamic_cast<const CameraItem*>(itemOf(in.peek()))) {
+  if (const auto* item = use<CameraItem>(in.peek(), in)) {
     in.next();
     c = item->camera;
   }
@@ -102,8 +102,7 @@ PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
   PovLight l;
   l.loc = loc;
   in.expect("{");
-  if (const auto* item = dynamic_cast<const ObjectItem*>(itemOf(in.peek()));
-      item && item->object.light) {
+  if (const auto* item = use<ObjectItem>(in.peek(), in); item && item->object.light) {
     in.next();
     l = *item->object.light;
     l.transform = l.transform.then(item->object.transform);
@@ -177,8 +176,11 @@ void SceneReader::readGlobalSettings(TokenStream& in) {
       global_.adcBailout = in.parseFloat();
     } else if (w == "ambient_light") {
       global_.ambientLight = readColour(in).rgb;
-    } else if (w == "max_intersections" || w == "number_of_waves" || w == "noise_generator" ||
-               w == "mm_per_unit") {
+    } else if (w == "noise_generator") {
+      const double g = in.parseFloat();
+      if (g < 1 || g > 3) in.error(t, "noise_generator must be 1, 2 or 3");
+      global_.noiseGenerator = static_cast<int>(g);
+    } else if (w == "max_intersections" || w == "number_of_waves" || w == "mm_per_unit") {
       in.parseFloat();  // no effect on Lucent's image
     } else if (w == "hf_gray_16") {
       optionalBool(in);

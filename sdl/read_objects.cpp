@@ -46,9 +46,12 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
   in.expect("{");
   if (o.keyword == "object") {
     const Token first = in.next();
-    const auto* item = dynamic_cast<const ObjectItem*>(itemOf(first));
+    const auto* item = use<ObjectItem>(first, in);
     if (item) {
       o = item->object;
+    } else if (const auto* refused = use<RefusedItem>(first, in)) {
+      // Its refusal is reported (use): the scene will not render, reading goes on.
+      (void)refused;
     } else if (isObjectKeyword(first)) {
       o = readObject(first, in);
     } else {
@@ -83,20 +86,56 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
   if (readTransform(t, in, o.transform)) return true;
   if (t.kind != TokenKind::Keyword) return false;
   const std::string_view w = t.text();
-  if (w == "pigment" || w == "finish" || w == "texture") {
+  // What is written now follows only the transforms written after it: carried back by
+  // the inverse of the object's transforms so far (PovObject::texture).
+  const PovTransform backToObject = o.transform.inverse();
+  if (w == "pigment" || w == "normal" || w == "finish" || w == "texture") {
+    if (w == "texture" && o.texture) {
+      // A texture { } on an object that has one (from any block) is a layer over it.
+      keepError(in, t.loc(), kLayeredTextures);
+      in.expect("{");
+      int depth = 1;
+      while (depth > 0) {
+        const Token& b = in.next();
+        if (b.kind == TokenKind::End) in.error(b, "the texture block is not closed");
+        if (b.is("{")) ++depth;
+        if (b.is("}")) --depth;
+      }
+      return true;
+    }
     if (!o.texture) {
       o.texture = defaultTexture();
+      o.texture->transform(backToObject);
       o.textureLoc = t.loc();
     }
-    if (w == "pigment") o.texture->pigment = readPigment(in, defaults_.pigment);
-    else if (w == "finish") o.texture->finish = readFinish(in, defaults_.finish);
-    else *o.texture = readTexture(in, defaultTexture());
+    // A block continues the object's own pigment, normal or finish, as POV-Ray's does
+    // (the default texture's when the object had none): moved back to the object's
+    // current space to be read on, then carried back again.
+    const PovTransform here = o.transform;
+    if (w == "pigment") {
+      PovPigment start = o.texture->pigment;
+      start.transform = start.transform.then(here);
+      o.texture->pigment = readPigment(in, start);
+      o.texture->pigment.transform = o.texture->pigment.transform.then(backToObject);
+    } else if (w == "normal") {
+      std::optional<PovNormal> start = o.texture->normal;
+      if (start) start->transform = start->transform.then(here);
+      o.texture->normal = readNormal(in, start ? &*start : nullptr);
+      o.texture->normal->transform = o.texture->normal->transform.then(backToObject);
+    } else if (w == "finish") {
+      o.texture->finish = readFinish(in, o.texture->finish);
+    } else {
+      *o.texture = readTexture(in, defaultTexture());
+      o.texture->transform(backToObject);
+      o.textureLoc = t.loc();
+    }
   } else if (w == "interior") {
     o.interior = readInterior(in, o.interior ? *o.interior : PovInterior{});
   } else if (w == "material") {
     const PovMaterial m = readMaterial(in);
     if (m.texture) {
       o.texture = m.texture;
+      o.texture->transform(backToObject);
       o.textureLoc = t.loc();
     }
     if (m.interior) o.interior = m.interior;
@@ -168,7 +207,7 @@ bool SceneReader::readTransform(const Token& t, TokenStream& in, PovTransform& m
       m = m.then(readTransformBlock(in));
     } else {
       const Token id = in.next();
-      const auto* item = dynamic_cast<const TransformItem*>(itemOf(id));
+      const auto* item = use<TransformItem>(id, in);
       if (!item) in.error(id, "a transform identifier or '{' expected, not " + id.describe());
       m = m.then(item->transform);
     }
@@ -186,7 +225,7 @@ PovTransform SceneReader::readTransformBlock(TokenStream& in) {
   for (;;) {
     const Token t = in.next();
     if (t.is("}")) break;
-    if (const auto* item = dynamic_cast<const TransformItem*>(itemOf(t))) {
+    if (const auto* item = use<TransformItem>(t, in)) {
       m = m.then(item->transform);
     } else if (isWord(t, "inverse")) {
       inverse = !inverse;

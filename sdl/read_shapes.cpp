@@ -124,12 +124,12 @@ bool isShapeKeyword(std::string_view word) {
 }
 
 // What Lucent cannot render in a shape: an error at `at` kept now, or, while a #declare is
-// read, kept with the object and said when the object is placed in the scene (a library
-// such as shapesq.inc declares shapes a scene may never use).
+// read, kept with the declared item and said where the item is used (a library such as
+// shapesq.inc declares shapes a scene may never use): SceneReader::refusal.
 void SceneReader::refuse(PovObject& o, const SourceLoc& at, TokenStream& in,
                          const std::string& message) {
-  if (declaring_ > 0) o.refusals.push_back({at, message});
-  else refusal(in, at, message, true);
+  (void)o;
+  refusal(in, at, message, true);
 }
 
 // refuse(), then the rest of the shape's block skipped, its closing brace left to be read:

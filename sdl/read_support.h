@@ -25,6 +25,13 @@ inline Vec3 toVec3(const std::array<double, 3>& v) { return Vec3(v[0], v[1], v[2
 // the language core's own test.
 inline bool startsNumber(const Token& t) { return startsExpression(t); }
 
+// Whether `t` starts a colour (`color`, `rgb`..., or an expression).
+inline bool isColourStart(const Token& t) {
+  if (t.kind == TokenKind::Keyword)
+    return t.kw == Kw::k_color || t.kw == Kw::k_colour || isColourKey(t.kw);
+  return startsNumber(t);
+}
+
 // The item an identifier token names, or null.
 inline const Item* itemOf(const Token& t) {
   if (t.kind != TokenKind::Identifier) return nullptr;

@@ -1,40 +1,83 @@
-// Textures: pigment (a colour, for now), finish, texture and interior blocks, each starting
-// from what POV-Ray starts it from (the #default, or an identifier written first).
+// Textures: pigment, normal, finish, texture and interior blocks, each starting from what
+// POV-Ray starts it from (the #default, or an identifier written first). The patterns,
+// their colours and modifiers are read by read_patterns.cpp.
 #include "read_support.h"
 #include "scene_reader.h"
 
+#include <algorithm>
+
 namespace lucent::sdl {
-
-namespace {
-
-bool isColourStart(const Token& t) {
-  if (t.kind == TokenKind::Keyword)
-    return t.kw == Kw::k_color || t.kw == Kw::k_colour || isColourKey(t.kw);
-  return startsNumber(t);
-}
-
-}  // namespace
 
 PovPigment SceneReader::readPigment(TokenStream& in, const PovPigment& start) {
   PovPigment p = start;
   in.expect("{");
-  if (const auto* item = dynamic_cast<const PigmentItem*>(itemOf(in.peek()))) {
+  if (const auto* item = use<PigmentItem>(in.peek(), in)) {
     in.next();
     p = item->pigment;
   }
-  PovTransform ignored;  // a colour looks the same however it is moved
   for (;;) {
     const Token t = in.next();
-    if (t.is("}")) return p;
+    if (t.is("}")) {
+      resolvePigmentColours(p, in);
+      return p;
+    }
     if (isColourStart(t)) {
       in.unget();
       const PovColour c = readColour(in);
       p.color = c.rgb;
       p.filter = c.filter;
       p.transmit = c.transmit;
-    } else if (!readTransform(t, in, ignored)) {
-      unreadInBlock(t, in);
+      p.pattern = std::monostate{};
+      p.map.clear();
+    } else if (!readTransform(t, in, p.transform) &&
+               !readWarp(t, in, placementOf(p.pattern), specOf(p.pattern), p.transform, p.warped) &&
+               !readPatternKeyword(t, in, p)) {
+      if (!refusePattern(t, in)) unreadInBlock(t, in);
       return p;
+    }
+  }
+}
+
+// `normal { [Identifier] PATTERN [amount] modifiers bump_size F }`.
+PovNormal SceneReader::readNormal(TokenStream& in, const PovNormal* start) {
+  PovNormal n;
+  if (start) n = *start;
+  in.expect("{");
+  if (const auto* item = use<NormalItem>(in.peek(), in)) {
+    in.next();
+    n = item->normal;
+  }
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) return n;
+    const PatternTypeInfo* type = nullptr;
+    if (t.kind == TokenKind::Keyword)
+      for (const PatternTypeInfo& info : kPatternTypes)
+        if (info.pov == t.text()) type = &info;
+    if (type) {
+      PatternSpec s;
+      s.type = type->type;
+      s.placement = n.spec.pattern.placement;
+      s.noiseGenerator = 0;  // the scene's global_settings noise_generator (finishScene)
+      if (s.type == PatternType::gradient) s.axis = toVec3(in.parseVector());
+      if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
+        s.arms = static_cast<int>(in.parseFloat());
+      n.spec.pattern = s;
+      // POV-Ray: an optional comma, then the optional amount (its bump_size).
+      if (in.allow(",") || startsNumber(in.peek())) n.spec.depth = in.parseFloat();
+    } else if (isWord(t, "bump_size")) {
+      n.spec.depth = in.parseFloat();
+    } else if (isWord(t, "accuracy")) {
+      const double accuracy = in.parseFloat();
+      if (accuracy != 0.02)
+        warn(in, t.loc(),
+             "accuracy is not imported (Lucent's normals take POV-Ray's default 0.02)");
+    } else if (!readTransform(t, in, n.transform) &&
+               !readWarp(t, in, &n.spec.pattern.placement, &n.spec.pattern, n.transform,
+                         n.warped) &&
+               !readPatternModifier(t, in, &n.spec.pattern, &n.spec.pattern.placement)) {
+      if (!refusePattern(t, in)) unreadInBlock(t, in);
+      return n;
     }
   }
 }
@@ -42,7 +85,7 @@ PovPigment SceneReader::readPigment(TokenStream& in, const PovPigment& start) {
 PovFinish SceneReader::readFinish(TokenStream& in, const PovFinish& start) {
   PovFinish f = start;
   in.expect("{");
-  if (const auto* item = dynamic_cast<const FinishItem*>(itemOf(in.peek()))) {
+  if (const auto* item = use<FinishItem>(in.peek(), in)) {
     in.next();
     f = item->finish;
   }
@@ -127,27 +170,64 @@ void SceneReader::readReflection(TokenStream& in, PovReflection& r) {
 PovTexture SceneReader::readTexture(TokenStream& in, const PovTexture& start) {
   PovTexture tex = start;
   in.expect("{");
-  if (const auto* item = dynamic_cast<const TextureItem*>(itemOf(in.peek()))) {
+  if (const auto* item = use<TextureItem>(in.peek(), in)) {
     in.next();
     tex = item->texture;
   }
-  PovTransform ignored;  // a solid colour looks the same however it is moved
   for (;;) {
     const Token t = in.next();
     if (t.is("}")) return tex;
-    if (isWord(t, "pigment")) tex.pigment = readPigment(in, defaults_.pigment);
-    else if (isWord(t, "finish")) tex.finish = readFinish(in, defaults_.finish);
-    else if (!readTransform(t, in, ignored)) {
+    PovTransform m;  // a transform moves the pigment and normal written before it
+    // Each block continues the texture's own (POV-Ray's Parse_Texture).
+    if (isWord(t, "pigment")) tex.pigment = readPigment(in, tex.pigment);
+    else if (isWord(t, "normal")) tex.normal = readNormal(in, tex.normal ? &*tex.normal : nullptr);
+    else if (isWord(t, "finish")) tex.finish = readFinish(in, tex.finish);
+    else if (readTransform(t, in, m)) tex.transform(m);
+    else if (readOldNormal(t, in, tex)) continue;
+    else {
+      if (isTexturePattern(t)) {
+        refuseInBlock(t, in,
+                      "a pattern of textures (texture_map, or a block pattern of textures); "
+                      "Lucent has one texture per material");
+        return tex;
+      }
       unreadInBlock(t, in);
       return tex;
     }
   }
 }
 
+// POV-Ray 1's normals written in the texture: `bumps 0.5`, `dents`, `ripples`, `waves`,
+// `wrinkles` with their amount.
+bool SceneReader::readOldNormal(const Token& t, TokenStream& in, PovTexture& tex) {
+  static constexpr std::string_view kOld[] = {"bumps", "dents", "ripples", "waves", "wrinkles"};
+  if (t.kind != TokenKind::Keyword ||
+      std::find(std::begin(kOld), std::end(kOld), t.text()) == std::end(kOld) ||
+      !startsNumber(in.peek()))
+    return false;
+  PovNormal n;
+  for (const PatternTypeInfo& info : kPatternTypes)
+    if (info.pov == t.text()) n.spec.pattern.type = info.type;
+  n.spec.pattern.noiseGenerator = 0;  // the scene's global_settings noise_generator
+  n.spec.depth = in.parseFloat();
+  tex.normal = n;
+  return true;
+}
+
+// A pattern keyword written directly in a texture: a texture_map's or a block pattern's
+// of textures.
+bool SceneReader::isTexturePattern(const Token& t) const {
+  if (t.kind != TokenKind::Keyword) return false;
+  const std::string_view w = t.text();
+  for (const PatternTypeInfo& info : kPatternTypes)
+    if (info.pov == w) return true;
+  return w == "checker" || w == "hexagon" || w == "brick" || w == "tiles" || isLackingPattern(t);
+}
+
 PovInterior SceneReader::readInterior(TokenStream& in, const PovInterior& start) {
   PovInterior i = start;
   in.expect("{");
-  if (const auto* item = dynamic_cast<const InteriorItem*>(itemOf(in.peek()))) {
+  if (const auto* item = use<InteriorItem>(in.peek(), in)) {
     in.next();
     i = item->interior;
   }
@@ -165,23 +245,31 @@ PovInterior SceneReader::readInterior(TokenStream& in, const PovInterior& start)
   }
 }
 
-// `material { [Identifier] texture { } interior { } }`; its transforms move a texture that
-// is a solid colour for now, so they change nothing.
+// `material { [Identifier] texture { } interior { } }`; its transforms move its texture.
 PovMaterial SceneReader::readMaterial(TokenStream& in) {
   PovMaterial m;
   in.expect("{");
-  if (const auto* item = dynamic_cast<const MaterialItem*>(itemOf(in.peek()))) {
+  if (const auto* item = use<MaterialItem>(in.peek(), in)) {
     in.next();
     m = item->material;
   }
-  PovTransform ignored;
+  int textures = 0;
   for (;;) {
     const Token t = in.next();
     if (t.is("}")) return m;
-    if (isWord(t, "texture")) m.texture = readTexture(in, defaultTexture());
-    else if (isWord(t, "interior"))
+    PovTransform move;
+    if (isWord(t, "texture")) {
+      if (textures++ > 0) {
+        keepError(in, t.loc(), kLayeredTextures);
+        readTexture(in, defaultTexture());
+      } else {
+        m.texture = readTexture(in, defaultTexture());
+      }
+    } else if (isWord(t, "interior")) {
       m.interior = readInterior(in, m.interior ? *m.interior : PovInterior{});
-    else if (!readTransform(t, in, ignored)) {
+    } else if (readTransform(t, in, move)) {
+      if (m.texture) m.texture->transform(move);
+    } else {
       unreadInBlock(t, in);
       return m;
     }

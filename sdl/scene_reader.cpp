@@ -27,10 +27,30 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"no_image", "objects hidden from the camera"},
       {"no_reflection", "objects hidden from reflections"},
       {"double_illuminate", "surfaces lit from both sides"},
-      {"material_map", "material maps"},
+      {"material_map", "material maps; Lucent has one material per object"},
+      {"texture_map", "maps of textures; Lucent has one texture layer per material"},
+      {"pigment_map", "maps of pigments; Lucent's colour maps hold colours"},
+      {"normal_map", "maps of normals; Lucent's <normal> takes one pattern"},
+      {"slope_map", "slope maps of normals; Lucent's <normal> takes the pattern's own slope"},
+      {"average", "averaged pigments or normals"},
+      {"image_pattern", "image patterns"},
+      {"uv_mapping", "uv_mapping of patterns; Lucent's <image> is read at the shape's (u,v)"},
+      {"bump_map",
+       "bump maps projected by map_type; Lucent's <bump-map> is read at the shape's (u,v)"},
+      {"image_map",
+       "image maps projected by map_type (POV-Ray's default is planar); Lucent's <image> is "
+       "read at the shape's (u,v)"},
   };
   return features;
 }
+
+}  // namespace
+
+const char* const kLayeredTextures =
+    "layered textures are not supported by Lucent (one texture per material; a second "
+    "texture { } is a layer over the first)";
+
+namespace {
 
 // Skips tokens to the brace that closes the block `depth` levels out.
 void skipToClose(TokenStream& in, int depth) {
@@ -49,17 +69,53 @@ void SceneReader::keepError(TokenStream& in, const SourceLoc& at, const std::str
   try {
     in.error(at, message);
   } catch (const SdlError& e) {
-    diags_.error(e.loc(), e.message());
+    // Inside a declaration the error waits for the item's use (reportRefused).
+    if (!declaring_.empty()) declaring_.back().push_back({Severity::Error, e.loc(), e.message()});
+    else diags_.error(e.loc(), e.message());
   }
 }
 
+void SceneReader::reportRefused(const SceneItem& item, const SourceLoc& usedAt, TokenStream& in) {
+  for (const Diagnostic& d : item.refused) {
+    if (d.severity == Severity::Warning && declaring_.empty()) {
+      warn(in, d.loc, d.message);
+      continue;
+    }
+    if (!declaring_.empty()) {
+      declaring_.back().push_back(d);  // reported when the declaration using it is used
+      continue;
+    }
+    if (!refusalsReported_.insert(d.loc.str() + d.message).second) continue;
+    if (options_.skipUnsupported) {
+      refusal(in, d.loc, d.message, false);  // counted where the declaration is used
+      continue;
+    }
+    try {
+      in.error(usedAt, "");
+    } catch (const SdlError& e) {
+      // The use, with the macro and include chain that led to it, as notes.
+      std::string used = e.message();
+      std::string note = usedAt.str() + ": note: the declaration is used here";
+      diags_.error(d.loc, d.message + "\n" + note + used);
+    }
+  }
+}
+
+void SceneReader::refuseInBlock(const Token& t, TokenStream& in, const std::string& why) {
+  keepError(in, t.loc(),
+            "'" + std::string(t.text()) + "' is not supported by Lucent (" + why + ")");
+  skipToClose(in, 1);
+}
+
 void SceneReader::warn(TokenStream& in, const SourceLoc& at, const std::string& message) {
-  if (warned_.insert(at.str() + message).second) in.warning(at, message);
+  // Inside a declaration the warning waits for the item's use, as errors do.
+  if (!declaring_.empty()) declaring_.back().push_back({Severity::Warning, at, message});
+  else if (warned_.insert(at.str() + message).second) in.warning(at, message);
 }
 
 void SceneReader::refusal(TokenStream& in, const SourceLoc& at, const std::string& message,
                           bool here) {
-  if (options_.skipUnsupported) {
+  if (options_.skipUnsupported && declaring_.empty()) {
     // Counted by the feature's name, the first quoted word of the message.
     const size_t open = message.find('\'');
     const size_t close = open == std::string::npos ? open : message.find('\'', open + 1);
@@ -95,23 +151,42 @@ void SceneReader::unsupported(const Token& t, TokenStream& in, bool skipBlock, P
 }
 
 void SceneReader::unreadInBlock(const Token& t, TokenStream& in) {
+  // A declared item whose declaration was refused: the refusal, where it is used.
+  if (const auto* item = dynamic_cast<const SceneItem*>(itemOf(t));
+      item && !item->refused.empty()) {
+    reportRefused(*item, t.loc(), in);
+    skipToClose(in, 1);
+    return;
+  }
   if (t.kind != TokenKind::Keyword) in.error(t, "unexpected " + t.describe() + " in this block");
   unsupported(t, in, false);
   skipToClose(in, 1);
 }
 
 ItemPtr SceneReader::read(const Token& t, TokenStream& in) {
+  // The errors of what Lucent cannot render, kept by the item instead of reported.
+  struct Declaring {
+    std::vector<std::vector<Diagnostic>>& stack;
+    explicit Declaring(std::vector<std::vector<Diagnostic>>& s) : stack(s) { stack.emplace_back(); }
+    ~Declaring() { stack.pop_back(); }
+  } declaring(declaring_);
+  std::shared_ptr<SceneItem> item = readItem(t, in);
+  if (item) item->refused = std::move(declaring_.back());
+  return item;
+}
+
+std::shared_ptr<SceneItem> SceneReader::readItem(const Token& t, TokenStream& in) {
   const Token first = t;
+  const auto& features = unsupportedFeatures();
+  if (first.kind == TokenKind::Keyword && features.count(first.text())) {
+    auto item = std::make_shared<RefusedItem>();
+    item->word = std::string(first.text());
+    unsupported(first, in, true);
+    return item;
+  }
   if (isObjectKeyword(first)) {
     auto item = std::make_shared<ObjectItem>();
-    ++declaring_;
-    try {
-      item->object = readObject(first, in);
-    } catch (...) {
-      --declaring_;
-      throw;
-    }
-    --declaring_;
+    item->object = readObject(first, in);
     return item;
   }
   if (isWord(first, "camera")) {
@@ -133,6 +208,20 @@ ItemPtr SceneReader::read(const Token& t, TokenStream& in) {
   if (isWord(first, "texture")) {
     auto item = std::make_shared<TextureItem>();
     item->texture = readTexture(in, defaultTexture());
+    // `#declare T = texture {...} texture {...}`: the layers come after the declaration
+    // (looking ahead here would run the directives that follow), read by readScene.
+    lastTexture_ = item;
+    return item;
+  }
+  if (isWord(first, "normal")) {
+    auto item = std::make_shared<NormalItem>();
+    item->normal = readNormal(in, nullptr);
+    return item;
+  }
+  if (isWord(first, "color_map") || isWord(first, "colour_map")) {
+    auto item = std::make_shared<ColorMapItem>();
+    item->loc = first.loc();
+    item->map = readColorMap(in, item->loc);
     return item;
   }
   if (isWord(first, "interior")) {
@@ -151,6 +240,14 @@ ItemPtr SceneReader::read(const Token& t, TokenStream& in) {
     item->transform = readTransformBlock(in);
     return item;
   }
+  // Any other block (`#declare Q = quadric {...}`, a shape the reader does not read yet):
+  // refused, where the declaration is used.
+  if (first.kind == TokenKind::Keyword && in.peek().is("{")) {
+    auto item = std::make_shared<RefusedItem>();
+    item->word = std::string(first.text());
+    unsupported(first, in, true);
+    return item;
+  }
   return nullptr;
 }
 
@@ -158,6 +255,18 @@ void SceneReader::readScene(TokenStream& in) {
   for (;;) {
     const Token t = in.next();
     if (t.kind == TokenKind::End) return;
+    if (!isWord(t, "texture")) lastTexture_.reset();
+    if (isWord(t, "texture") && lastTexture_) {
+      // A layer of the texture just declared: its error kept by that declaration.
+      try {
+        in.error(t, kLayeredTextures);
+      } catch (const SdlError& e) {
+        lastTexture_->refused.push_back({Severity::Error, e.loc(), e.message()});
+      }
+      in.expect("{");
+      skipToClose(in, 1);
+      continue;
+    }
     if (t.kind == TokenKind::Keyword && t.kw == Kw::k_default) {
       readDefault(in);
     } else if (isWord(t, "camera")) {
@@ -204,20 +313,57 @@ void SceneReader::readDefault(TokenStream& in) {
 }
 
 void SceneReader::place(const PovObject& object, TokenStream& in) {
+  // The default texture is placed in the scene's space: its transforms are its own.
   const PovTexture tex = defaultTexture();
   const PovInterior interior;
-  std::unique_ptr<Node> node = toNode(object, &tex, &interior, true, in);
+  Inherited top;
+  top.texture = &tex;
+  top.interior = &interior;
+  std::unique_ptr<Node> node = toNode(object, top, true, in);
   if (!node) return;  // left out (--skip-unsupported)
   if (node->kind == NodeKind::Light) scene_.lightRoot->children.push_back(std::move(node));
   else scene_.root->children.push_back(std::move(node));
 }
 
+namespace {
+
+// Lucent's object space is POV-Ray's with z negated (pov_space.h): S.
+Mat4 negateZ() {
+  Mat4 s(1.0);
+  s[2][2] = -1.0;
+  return s;
+}
+
+}  // namespace
+
+// The material of `texture` on a node: a pattern's point is the node's object point (in
+// Lucent's space) taken to POV-Ray's (S), to the space the texture was placed in
+// (textureFromNode) and into pattern space (the inverse of the pattern's transforms).
+uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& interior,
+                                  const Mat4& textureFromNode, const SourceLoc& at,
+                                  TokenStream& in) {
+  MaterialImport imported = importMaterial(texture.pigment, texture.finish, interior);
+  for (const std::string& d : imported.differences) warn(in, at, d);
+  Material& m = imported.material;
+  m.loc = at;
+  const Mat4 objectToTexture = textureFromNode * negateZ();
+  if (PatternPlacement* p = placementOf(m.texture))
+    p->patternFromObject = glm::inverse(texture.pigment.transform.povMatrix()) * objectToTexture;
+  if (texture.normal) {
+    m.normal = texture.normal->spec;
+    m.normal->pattern.placement.patternFromObject =
+        glm::inverse(texture.normal->transform.povMatrix()) * objectToTexture;
+  }
+  scene_.materials.push_back(m);
+  return static_cast<uint32_t>(scene_.materials.size() - 1);
+}
+
 // An object's nodes. POV-Ray gives an object without a texture its parent's (a CSG's
-// texture goes to the operands that have none), and a top-level one the default texture:
-// `texture` and `interior` are what the object inherits.
-std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const PovTexture* texture,
-                                          const PovInterior* interior, bool topLevel,
-                                          TokenStream& in) {
+// texture goes to the operands that have none), and a top-level one the default texture.
+// A patterned texture is placed where it was written: every shape under it whose object
+// space lies differently in the texture's space gets a material of its own.
+std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& inherited,
+                                          bool topLevel, TokenStream& in) {
   auto n = std::make_unique<Node>();
   n->kind = o.kind;
   n->element = o.keyword;
@@ -232,30 +378,35 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const PovTexture* 
     n->light = std::make_unique<Light>(imported.light);
     return n;
   }
-  for (const auto& [at, message] : o.refusals)  // a declared object's, now in the scene
-    if (refused_.insert(at.str() + message).second) refusal(in, at, message, false);
   // Left out (--skip-unsupported): a shape Lucent has not.
   if (o.kind == NodeKind::Shape && !o.shape && options_.skipUnsupported) return nullptr;
   n->parentFromNode = o.transform.lucentMatrix();
   n->shape = o.shape;
   n->shadows = !o.noShadow;
   n->inverse = o.inverse;
+  Inherited here = inherited;
   const bool own = o.texture || o.interior;
-  if (o.texture) texture = &*o.texture;
-  if (o.interior) interior = &*o.interior;
-  // A top-level object and one with its own texture or interior get a material; an
-  // operand without either inherits its parent's node material.
-  if (own || topLevel) {
-    MaterialImport imported = importMaterial(texture->pigment, texture->finish, *interior);
+  if (o.texture) here.texture = &*o.texture;
+  if (o.interior) here.interior = &*o.interior;
+  // The texture's space: this object's own (before its transforms) when it wrote the
+  // texture (whose transforms lead there, PovObject::texture), else the parent's, which
+  // this object's transforms lead to.
+  const Mat4 textureFromNode =
+      o.texture ? Mat4(1.0) : inherited.textureFromParent * o.transform.povMatrix();
+  const bool placed = here.texture->patterned();
+  const bool moved = placed && o.shape && textureFromNode != inherited.materialTextureFromNode;
+  // A top-level object and one with its own texture or interior get a material, and a
+  // shape under a pattern placed differently from its parent's material; the others
+  // inherit their parent's node material.
+  if (own || topLevel || moved || !inherited.material) {
     const SourceLoc at = o.texture ? o.textureLoc : o.loc;
-    for (const std::string& d : imported.differences) warn(in, at, d);
-    imported.material.loc = at;
-    scene_.materials.push_back(imported.material);
-    n->material = static_cast<uint32_t>(scene_.materials.size() - 1);
+    n->material = addMaterial(*here.texture, *here.interior, textureFromNode, at, in);
+    here.material = n->material;
+    here.materialTextureFromNode = textureFromNode;
   }
+  here.textureFromParent = textureFromNode;
   for (const PovObject& c : o.children)
-    if (auto child = toNode(c, texture, interior, false, in))
-      n->children.push_back(std::move(child));
+    if (auto child = toNode(c, here, false, in)) n->children.push_back(std::move(child));
   return n;
 }
 
@@ -264,6 +415,14 @@ void SceneReader::finishScene(TokenStream& in) {
     in.warning(s.first, "left out (--skip-unsupported): " + s.message + "; " +
                             std::to_string(s.count) + (s.count == 1 ? " place" : " places") +
                             ", the first here");
+  // The patterns that did not choose a noise generator take global_settings' one.
+  auto noise = [&](PatternSpec& s) {
+    if (s.noiseGenerator == 0) s.noiseGenerator = global_.noiseGenerator;
+  };
+  for (Material& m : scene_.materials) {
+    if (auto* p = std::get_if<PatternTexture>(&m.texture)) noise(p->pattern);
+    if (m.normal) noise(m.normal->pattern);
+  }
   const int width = options_.imageWidth, height = options_.imageHeight;
   scene_.render.width = width;
   scene_.render.height = height;

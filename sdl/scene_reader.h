@@ -15,6 +15,7 @@
 #include "pov_light.h"
 #include "pov_settings.h"
 #include "pov_space.h"
+#include "read_support.h"
 #include "token_stream.h"
 
 #include "lang/diagnostics.h"
@@ -32,10 +33,18 @@ namespace lucent::sdl {
 
 struct MeshBuild;  // read_shapes.cpp
 
-// A texture of one layer: its pigment and finish.
+// A texture of one layer: its pigment, normal and finish.
 struct PovTexture {
   PovPigment pigment;
+  std::optional<PovNormal> normal;
   PovFinish finish;
+
+  bool patterned() const { return pigment.patterned() || normal.has_value(); }
+  // `texture { ... translate ... }`: moves what the texture holds.
+  void transform(const PovTransform& m) {
+    pigment.transform = pigment.transform.then(m);
+    if (normal) normal->transform = normal->transform.then(m);
+  }
 };
 
 // One object as POV-Ray holds it: a shape, a CSG operation of others, or a light source.
@@ -47,37 +56,43 @@ struct PovObject {
   std::optional<PovLight> light;   // kind == Light
   std::vector<PovObject> children;
   PovTransform transform;  // the object's transforms, in POV-Ray's space
+  // Its texture, whose transforms lead from pattern space to this object's own space
+  // (before `transform`): a texture written among the transforms is carried back by the
+  // inverse of those written before it, so it follows only the later ones, as in POV-Ray.
   std::optional<PovTexture> texture;
   SourceLoc textureLoc;
   std::optional<PovInterior> interior;
   bool noShadow = false;
   bool inverse = false;
-  // What Lucent cannot render in a #declare'd object, said when it is placed (read_shapes.cpp).
-  std::vector<std::pair<SourceLoc, std::string>> refusals;
 };
 
-// The items the reader makes, for #declare and for identifiers in blocks.
-struct ObjectItem : Item {
+// The items the reader makes, for #declare and for identifiers in blocks. Each keeps the
+// errors of the features Lucent cannot render that its declaration holds: they are
+// reported where the item is used in the scene, not where an include declares it.
+struct SceneItem : Item {
+  std::vector<Diagnostic> refused;
+};
+struct ObjectItem : SceneItem {
   PovObject object;
   std::string_view kind() const override { return object.keyword; }
 };
-struct CameraItem : Item {
+struct CameraItem : SceneItem {
   PovCamera camera;
   std::string_view kind() const override { return "camera"; }
 };
-struct PigmentItem : Item {
+struct PigmentItem : SceneItem {
   PovPigment pigment;
   std::string_view kind() const override { return "pigment"; }
 };
-struct FinishItem : Item {
+struct FinishItem : SceneItem {
   PovFinish finish;
   std::string_view kind() const override { return "finish"; }
 };
-struct TextureItem : Item {
+struct TextureItem : SceneItem {
   PovTexture texture;
   std::string_view kind() const override { return "texture"; }
 };
-struct InteriorItem : Item {
+struct InteriorItem : SceneItem {
   PovInterior interior;
   std::string_view kind() const override { return "interior"; }
 };
@@ -86,14 +101,32 @@ struct PovMaterial {
   std::optional<PovTexture> texture;
   std::optional<PovInterior> interior;
 };
-struct MaterialItem : Item {
+struct MaterialItem : SceneItem {
   PovMaterial material;
   std::string_view kind() const override { return "material"; }
 };
-struct TransformItem : Item {
+struct NormalItem : SceneItem {
+  PovNormal normal;
+  std::string_view kind() const override { return "normal"; }
+};
+struct ColorMapItem : SceneItem {
+  std::vector<PovColorMapEntry> map;
+  SourceLoc loc;
+  std::string_view kind() const override { return "color_map"; }
+};
+// A declaration of something Lucent lacks or the reader does not read yet
+// (`#declare M = pigment_map {...}`): its error waits for a use.
+struct RefusedItem : SceneItem {
+  std::string word;
+  std::string_view kind() const override { return word; }
+};
+struct TransformItem : SceneItem {
   PovTransform transform;
   std::string_view kind() const override { return "transform"; }
 };
+
+// The refusal of a second texture { } (a layer), where it is.
+extern const char* const kLayeredTextures;
 
 class SceneReader : public ItemReader {
  public:
@@ -111,11 +144,37 @@ class SceneReader : public ItemReader {
   void finishScene(TokenStream& in);
 
  private:
+  // What an object's nodes inherit from its parent: the texture and interior, the matrix
+  // (POV-Ray's space) from the parent's object space to the space the texture was placed
+  // in, and the material the parent's node has, with the matrix it was placed by.
+  struct Inherited {
+    const PovTexture* texture = nullptr;
+    const PovInterior* interior = nullptr;
+    Mat4 textureFromParent{1.0};
+    std::optional<uint32_t> material;
+    Mat4 materialTextureFromNode{1.0};
+  };
+
   // scene_reader.cpp: the top level, and what cannot be read
+  std::shared_ptr<SceneItem> readItem(const Token& t, TokenStream& in);
   void readDefault(TokenStream& in);
   void place(const PovObject& object, TokenStream& in);
-  std::unique_ptr<Node> toNode(const PovObject& o, const PovTexture* texture,
-                               const PovInterior* interior, bool topLevel, TokenStream& in);
+  std::unique_ptr<Node> toNode(const PovObject& o, const Inherited& inherited, bool topLevel,
+                               TokenStream& in);
+  uint32_t addMaterial(const PovTexture& texture, const PovInterior& interior,
+                       const Mat4& textureFromNode, const SourceLoc& at, TokenStream& in);
+  // The item an identifier names if it is a T; the errors its declaration kept are
+  // reported (or, inside another declaration, kept by that one).
+  template <class T>
+  const T* use(const Token& t, TokenStream& in) {
+    const auto* item = dynamic_cast<const T*>(itemOf(t));
+    if (item) reportRefused(*item, t.loc(), in);
+    return item;
+  }
+  void reportRefused(const SceneItem& item, const SourceLoc& usedAt, TokenStream& in);
+  // A feature Lucent lacks, named in a block: its error kept, the block skipped to its
+  // closing brace.
+  void refuseInBlock(const Token& t, TokenStream& in, const std::string& why);
   // A keyword Lucent cannot render, or one the reader does not read yet: an error kept
   // (reading goes on), and the block that follows it skipped. In an object read for a
   // #declare (`object`), the error is kept with the object and said where it is placed.
@@ -123,9 +182,9 @@ class SceneReader : public ItemReader {
   // The same inside a block: its error kept, and the block skipped to its closing brace.
   void unreadInBlock(const Token& t, TokenStream& in);
   void keepError(TokenStream& in, const SourceLoc& at, const std::string& message);
-  // What Lucent cannot render, said at `at`: an error (kept now with the include and macro
-  // chain that led `here`, or plainly for a declared object placed elsewhere), or with
-  // --skip-unsupported counted by kind and left out.
+  // What Lucent cannot render, said at `at`: an error (kept with the include and macro
+  // chain that led `here`, or plainly; inside a declaration kept by the item until it is
+  // used), or with --skip-unsupported counted by kind and left out.
   void refusal(TokenStream& in, const SourceLoc& at, const std::string& message, bool here);
   void warn(TokenStream& in, const SourceLoc& at, const std::string& message);
 
@@ -156,6 +215,7 @@ class SceneReader : public ItemReader {
   void finishMeshShape(PovObject& o, TokenStream& in, const MeshBuild& b, bool insideVector);
 
   // read_textures.cpp
+  PovNormal readNormal(TokenStream& in, const PovNormal* start);
   PovPigment readPigment(TokenStream& in, const PovPigment& start);
   PovFinish readFinish(TokenStream& in, const PovFinish& start);
   PovTexture readTexture(TokenStream& in, const PovTexture& start);
@@ -173,7 +233,20 @@ class SceneReader : public ItemReader {
   void readFog(const SourceLoc& loc, TokenStream& in);
   void readSkySphere(const SourceLoc& loc, TokenStream& in);
 
-  PovTexture defaultTexture() const { return {defaults_.pigment, defaults_.finish}; }
+  // read_patterns.cpp: patterns, their colours and modifiers
+  bool readPatternKeyword(const Token& t, TokenStream& in, PovPigment& p);
+  bool readPatternModifier(const Token& t, TokenStream& in, PatternSpec* spec,
+                           PatternPlacement* placement);
+  std::vector<PovColorMapEntry> readColorMap(TokenStream& in, SourceLoc& loc);
+  void resolvePigmentColours(PovPigment& p, TokenStream& in);
+  bool refusePattern(const Token& t, TokenStream& in);
+  bool readOldNormal(const Token& t, TokenStream& in, PovTexture& tex);
+  bool isTexturePattern(const Token& t) const;
+  static bool isLackingPattern(const Token& t);
+  bool readWarp(const Token& t, TokenStream& in, PatternPlacement* placement,
+                const PatternSpec* spec, const PovTransform& before, bool& warped);
+
+  PovTexture defaultTexture() const { return {defaults_.pigment, std::nullopt, defaults_.finish}; }
 
   Scene& scene_;
   Diagnostics& diags_;
@@ -183,10 +256,13 @@ class SceneReader : public ItemReader {
   PovGlobalSettings global_;
   SourceLoc globalLoc_;
   PovBackground background_;
-  std::set<std::string> warned_;   // each warning said once per place
-  int objectDepth_ = 0;            // objects being read within each other
-  int declaring_ = 0;              // objects being read for a #declare
-  std::set<std::string> refused_;  // the refusals of placed objects said, each once
+  std::set<std::string> warned_;  // each warning said once per place
+  int objectDepth_ = 0;           // objects being read within each other
+  // The errors kept by the declarations being read (innermost last): a feature Lucent
+  // cannot render is an error only where the declared item is used.
+  std::vector<std::vector<Diagnostic>> declaring_;
+  std::set<std::string> refusalsReported_;    // each declared refusal reported once
+  std::shared_ptr<TextureItem> lastTexture_;  // the texture declared just now, if any
   // --skip-unsupported: each kind of feature left out, with its count and first place.
   struct Skipped {
     int count = 0;

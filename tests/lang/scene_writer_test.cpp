@@ -160,3 +160,22 @@ TEST_CASE("scene writer: what it cannot write yet is an error at the element",
           "cannot convert: the <blob> attribute or child '<component>' cannot be written yet");
   }
 }
+
+TEST_CASE("scene writer: a checker's placement is written and reads back", "[lang][scene-writer]") {
+  const std::string first = written(
+      "<plane><material><checker color1=\"1\" color2=\"0\" scale=\"0.5\" "
+      "transform=\"translate(1, 2, 3)\" turbulence=\"0.25\" octaves=\"3\"/></material></plane>");
+  CHECK(contains(first, "turbulence=\"0.25 0.25 0.25\" octaves=\"3\""));
+  auto reread = parseSceneString(first, "writer.xml");
+  REQUIRE(reread.scene);
+  const CheckerTexture* checker = nullptr;
+  for (const Material& m : reread.scene->materials)
+    if (const auto* c = std::get_if<CheckerTexture>(&m.texture)) checker = c;
+  REQUIRE(checker);
+  const CheckerTexture& c = *checker;
+  CHECK(c.scale == 0.5);
+  CHECK(c.placement.patternFromObject[3] == Vec4(-1, -2, -3, 1));
+  CHECK(c.placement.turbulence == Vec3(0.25));
+  CHECK(c.placement.octaves == 3);
+  CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+}

@@ -123,6 +123,25 @@ TEST_CASE("a checker texture premultiplies the diffuse colour and keeps its scal
   CHECK(e.has("    ambient rgb <0.4, 0.2, 0.2>\n"));
 }
 
+TEST_CASE("a checker's placement follows its scale in POV-Ray's pigment", "[povray][materials]") {
+  Exported e = exportScene(R"XML(<material id="c">
+        <checker color1="1" color2="0" scale="0.25" transform="translate(1, 2, 3)"/>
+      </material>
+      <plane material="c"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.has("    scale 0.25\n    matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  1, 2, 3>\n  }\n"));
+  // With turbulence, Lucent's order (transform, turbulence, then the cells' scale) is a
+  // warp written between the scale and the matrix.
+  Exported t = exportScene(R"XML(<material id="c">
+        <checker color1="1" color2="0" scale="0.25" turbulence="0.5" transform="translate(1, 2, 3)"/>
+      </material>
+      <plane material="c"/>)XML");
+  REQUIRE(t.pov.ok());
+  CHECK(
+      t.has("    scale 0.25\n    warp { turbulence <0.5, 0.5, 0.5> octaves 6 omega 0.5 lambda 2 }\n"
+            "    matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  1, 2, 3>\n  }\n"));
+}
+
 TEST_CASE("materials POV-Ray cannot express are errors naming the material",
           "[povray][materials]") {
   Exported full = exportMaterial(R"XML(diffuse="0.5" transmissive="1")XML");

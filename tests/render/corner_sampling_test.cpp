@@ -128,7 +128,7 @@ TEST_CASE("corner sampling gives the same image bit for bit with 1 and 2 threads
   scene.cameras.push_back(lookingFrom(Vec3(0, 2, 6), Vec3(0, 0.5, 0), 50));
   Material floor;
   floor.diffuse = Color(1.0f);
-  floor.texture = CheckerTexture{Color(1.0f), Color(0.1f), 0.5};
+  floor.texture = CheckerTexture{Color(1.0f), Color(0.1f), 0.5, {}};
   floor.ambient = Color(0.1f);
   addShape(scene, PlaneSpec{Vec3(0, 1, 0), 0.0}, addMaterial(scene, floor));
   Material red;

@@ -103,7 +103,7 @@ inline void buildBusyScene(Scene& scene) {
   scene.cameras.push_back(lookingFrom(Vec3(0, 2, 6), Vec3(0, 0.5, 0), 50));
   Material floor;
   floor.diffuse = Color(1.0f);
-  floor.texture = CheckerTexture{Color(1.0f), Color(0.2f), 1.0};
+  floor.texture = CheckerTexture{Color(1.0f), Color(0.2f), 1.0, {}};
   floor.ambient = Color(0.1f);
   addShape(scene, PlaneSpec{Vec3(0, 1, 0), 0.0}, addMaterial(scene, floor));
   Material glass;

@@ -18,7 +18,7 @@ using namespace lucent::test;
 namespace {
 const Color kOne(1.0f, 0.0f, 0.0f), kTwo(0.0f, 0.0f, 1.0f);
 Color cell(const Vec3& p, double scale = 1.0) {
-  return checkerColor(CheckerTexture{kOne, kTwo, scale}, p, Vec3(0.0));
+  return checkerColor(CheckerTexture{kOne, kTwo, scale, {}}, p, Vec3(0.0));
 }
 }  // namespace
 
@@ -44,8 +44,8 @@ TEST_CASE("checker: a point on a cell boundary shows the cell on the positive si
   CHECK(cell(Vec3(0.05, 0.3, 0.05), 0.1) == kTwo);         // cell (0, 3, 0): odd
   CHECK(cell(Vec3(0.05, 0.3 - 1e-6, 0.05), 0.1) == kOne);  // really below: cell (0, 2, 0)
   // A point within its own rounding error of a boundary counts as on it.
-  CHECK(checkerColor(CheckerTexture{kOne, kTwo, 1.0}, Vec3(0.5, -1e-7, 0.5), Vec3(0, 1e-7, 0)) ==
-        kOne);
+  CHECK(checkerColor(CheckerTexture{kOne, kTwo, 1.0, {}}, Vec3(0.5, -1e-7, 0.5),
+                     Vec3(0, 1e-7, 0)) == kOne);
   // Far from the origin the tolerance grows with the coordinates' magnitude.
   CHECK(cell(Vec3(1e6 + 0.5, -1e-10, 0.5)) == cell(Vec3(1e6 + 0.5, 0.0, 0.5)));
 }
@@ -57,7 +57,7 @@ TEST_CASE("checker: far from the origin a point near a boundary keeps its own ce
   // 1e-11. The tolerance is rounding, not a share of the coordinate.
   const Vec3 err(1e-11);
   auto at = [&](double x) {
-    return checkerColor(CheckerTexture{kOne, kTwo, 0.4}, Vec3(x, 0.0, 0.2), err);
+    return checkerColor(CheckerTexture{kOne, kTwo, 0.4, {}}, Vec3(x, 0.0, 0.2), err);
   };
   CHECK(at(100000.3999788) == at(100000.2));
   CHECK(at(100000.4000212) == at(100000.6));
@@ -69,7 +69,7 @@ TEST_CASE("checker is evaluated in the object space of the shape", "[render][tex
   scene.render.ambient = Color(1.0f);
   Material m;
   m.ambient = Color(1.0f);
-  m.texture = CheckerTexture{kOne, kTwo, 1.0};
+  m.texture = CheckerTexture{kOne, kTwo, 1.0, {}};
   uint32_t mat = addMaterial(scene, m);
   // The floor y = 0.3 of a plane moved up by 0.3: its object space has y = 0, the cell above.
   addShape(scene, PlaneSpec{Vec3(0, 1, 0), 0.0}, mat, translation(Vec3(0.5, 0.3, 0)));
@@ -89,7 +89,7 @@ TEST_CASE("a box top on a cell boundary shows the cell above it in every pixel",
   scene.render.ambient = Color(1.0f);
   Material m;
   m.ambient = Color(1.0f);
-  m.texture = CheckerTexture{Color(1.0f, 0.0f, 0.0f), Color(0.0f, 1.0f, 0.0f), 0.1};
+  m.texture = CheckerTexture{Color(1.0f, 0.0f, 0.0f), Color(0.0f, 1.0f, 0.0f), 0.1, {}};
   addShape(scene, BoxSpec{Vec3(-50, -1, -50), Vec3(50, 0.3, 50)}, addMaterial(scene, m));
   scene.cameras.push_back(lookingFrom(Vec3(0.013, 1.3, 10), Vec3(0, 0.3, 0), 40));
   World world(scene);

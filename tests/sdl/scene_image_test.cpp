@@ -105,3 +105,13 @@ TEST_CASE("scene reader image: height fields, their image's rows where POV-Ray p
           "[sdl][scene][image][povray]") {
   requireSameImageAsPovrayInPlace("height_field.pov", 160, 120);
 }
+
+TEST_CASE("scene reader image: textures placed among transforms, block patterns and maps",
+          "[sdl][scene][image][povray][texture]") {
+  requireSameImageAsPovray("textures_placed.pov", 160, 120);
+}
+
+TEST_CASE("scene reader image: noise patterns with turbulence and colour maps, normals",
+          "[sdl][scene][image][povray][texture]") {
+  requireSameImageAsPovray("noise_patterns.pov", 160, 120);
+}

@@ -87,7 +87,7 @@ void depthScene(Scene& scene) {
   red.diffuse = Color(1.0f, 0.2f, 0.1f);
   Material checker;
   checker.diffuse = Color(1.0f);
-  checker.texture = CheckerTexture{Color(1.0f), Color(0.1f), 0.5};
+  checker.texture = CheckerTexture{Color(1.0f), Color(0.1f), 0.5, {}};
   addShape(scene, SphereSpec{Vec3(-0.8, 0.5, 1.0), 0.5}, addMaterial(scene, red));
   addShape(scene, PlaneSpec{Vec3(0, 1, 0), 0.0}, addMaterial(scene, checker));
 }

@@ -1,0 +1,386 @@
+// Pattern pigments and their modifiers: the patterns of Lucent's table (scenegraph/pattern.h)
+// with their colour maps, the block patterns checker, hexagon and brick with their colours,
+// and the modifiers a pattern takes in a pigment or a normal, with POV-Ray 3.7's defaults
+// (its default colour maps, pattern.cpp; its block patterns' colours).
+#include "read_support.h"
+#include "scene_reader.h"
+
+#include <algorithm>
+#include <string>
+
+namespace lucent::sdl {
+
+namespace {
+
+// POV-Ray's default colour map of a pattern pigment written without one; the patterns
+// without a row here take black to white, which is Lucent's empty map.
+std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
+  auto rgb = [](double at, float r, float g, float b) {
+    return PovColorMapEntry{at, Color(r, g, b), 0.0f, 0.0f};
+  };
+  switch (type) {
+    case PatternType::agate:
+      return {rgb(0.0, 1.0f, 1.0f, 1.0f), rgb(0.5, 0.95f, 0.75f, 0.5f), rgb(0.5, 0.9f, 0.7f, 0.5f),
+              rgb(0.6, 0.9f, 0.7f, 0.4f), rgb(0.6, 1.0f, 0.7f, 0.4f),   rgb(1.0, 0.6f, 0.3f, 0.0f)};
+    case PatternType::bozo:
+      return {rgb(0.4, 1.0f, 1.0f, 1.0f), rgb(0.4, 0.0f, 1.0f, 0.0f), rgb(0.6, 0.0f, 1.0f, 0.0f),
+              rgb(0.6, 0.0f, 0.0f, 1.0f), rgb(0.8, 0.0f, 0.0f, 1.0f), rgb(0.8, 1.0f, 0.0f, 0.0f)};
+    case PatternType::marble:
+      return {rgb(0.0, 0.9f, 0.8f, 0.8f), rgb(0.9, 0.9f, 0.08f, 0.08f), rgb(0.9, 0.0f, 0.0f, 0.0f)};
+    case PatternType::radial:
+      return {rgb(0.0, 0.0f, 1.0f, 1.0f), rgb(0.333, 1.0f, 1.0f, 0.0f),
+              rgb(0.666, 1.0f, 0.0f, 1.0f), rgb(1.0, 0.0f, 1.0f, 1.0f)};
+    case PatternType::wood:
+      return {rgb(0.6, 0.666f, 0.312f, 0.2f), rgb(0.6, 0.4f, 0.1333f, 0.066f)};
+    default:
+      return {};
+  }
+}
+
+// POV-Ray's patterns Lucent does not have (as pigments or normals).
+constexpr std::string_view kPatternsLucentLacks[] = {
+    "aoi",      "boxed",           "cells",      "cubic",        "cylindrical", "density_file",
+    "facets",   "function",        "julia",      "magnet",       "mandel",      "object",
+    "pavement", "pigment_pattern", "potential",  "quilted",      "slope",       "spherical",
+    "square",   "tiling",          "triangular", "image_pattern"};
+
+const PatternTypeInfo* patternType(const Token& t) {
+  if (t.kind != TokenKind::Keyword) return nullptr;
+  for (const PatternTypeInfo& info : kPatternTypes)
+    if (info.pov == t.text()) return &info;
+  return nullptr;
+}
+
+PovColorMapEntry entryOf(double at, const PovColour& c) {
+  return {at, c.rgb, c.filter, c.transmit};
+}
+
+std::string lucentPatternNames() {
+  std::string names;
+  for (const PatternTypeInfo& info : kPatternTypes) {
+    if (!info.colour) continue;
+    names += (names.empty() ? "" : ", ") + std::string(info.pov);
+  }
+  return names + ", checker, hexagon, brick";
+}
+
+}  // namespace
+
+// A pattern keyword, or a modifier of the pattern a pigment has; false if `t` is neither.
+bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment& p) {
+  if (const PatternTypeInfo* info = patternType(t); info && info->colour) {
+    PatternTexture tex;
+    if (const PatternPlacement* was = placementOf(p.pattern)) tex.pattern.placement = *was;
+    tex.pattern.type = info->type;
+    tex.pattern.noiseGenerator = 0;  // the scene's global_settings noise_generator
+    // The axis and the arms as POV-Ray writes them: the pattern is evaluated in POV-Ray's
+    // space (SceneReader::addMaterial).
+    if (info->type == PatternType::gradient) tex.pattern.axis = toVec3(in.parseVector());
+    if (info->type == PatternType::spiral1 || info->type == PatternType::spiral2)
+      tex.pattern.arms = static_cast<int>(in.parseFloat());
+    p.pattern = tex;
+    p.map.clear();
+    return true;
+  }
+  const std::string_view w = t.kind == TokenKind::Keyword ? t.text() : "";
+  if (w == "checker" || w == "hexagon" || w == "brick") {
+    // POV-Ray's colours for those not written (pattern.cpp's default maps).
+    const PatternPlacement was =
+        placementOf(p.pattern) ? *placementOf(p.pattern) : PatternPlacement{};
+    p.map.clear();
+    if (w == "checker") {
+      CheckerTexture c;
+      c.placement = was;
+      p.pattern = c;
+      p.map = {{0, Color(0.0f, 0.0f, 1.0f)}, {1, Color(0.0f, 1.0f, 0.0f)}};
+    } else if (w == "hexagon") {
+      HexagonTexture h;
+      h.placement = was;
+      for (int i = 0; i < 3; ++i) p.map.push_back({double(i), h.spec.colors[i]});
+      p.pattern = h;
+    } else {
+      BrickTexture b;
+      b.placement = was;
+      p.map = {{0, b.spec.color1}, {1, b.spec.color2}};
+      p.pattern = b;
+    }
+    p.mapLoc = t.loc();
+    for (size_t i = 0; i < p.map.size(); ++i) {
+      const Token& next = in.peek();
+      if (isWord(next, "pigment") || isWord(next, "texture") || isWord(next, "normal")) {
+        const Token list = in.next();
+        refuseInBlock(list, in,
+                      "lists of " + std::string(list.text()) + "s in block patterns; " +
+                          std::string(w) + " takes colours in Lucent");
+        return true;
+      }
+      if (!isColourStart(next)) break;
+      p.map[i] = entryOf(double(i), readColour(in));
+      in.allow(",");
+    }
+    return true;
+  }
+  if (w == "color_map" || w == "colour_map") {
+    SourceLoc loc = t.loc();
+    p.map = readColorMap(in, loc);
+    p.mapLoc = loc;
+    return true;
+  }
+  if (w == "quick_color" || w == "quick_colour") {
+    readColour(in);  // POV-Ray's colour for quick previews: no effect on the image
+    return true;
+  }
+  if (w == "brick_size" || w == "mortar") {
+    auto* brick = std::get_if<BrickTexture>(&p.pattern);
+    if (!brick) in.error(t, "'" + std::string(w) + "' is for a brick pattern");
+    if (w == "brick_size") {
+      const Vec3 size = toVec3(in.parseVector());
+      if (!(size.x > 0 && size.y > 0 && size.z > 0))
+        in.error(t, "the brick's size must be positive in x, y and z");
+      brick->spec.size = size;
+    } else {
+      brick->spec.mortar = in.parseFloat();
+    }
+    return true;
+  }
+  return readPatternModifier(t, in, specOf(p.pattern), placementOf(p.pattern));
+}
+
+// The modifiers of a pattern (null `spec`: a block pattern, which takes none of the value's;
+// null `placement`: a solid colour, which modifiers leave as it is).
+bool SceneReader::readPatternModifier(const Token& t, TokenStream& in, PatternSpec* spec,
+                                      PatternPlacement* placement) {
+  if (t.kind != TokenKind::Keyword) return false;
+  const std::string_view w = t.text();
+  PatternSpec ignoredSpec;
+  PatternPlacement ignoredPlacement;
+  PatternSpec& s = spec ? *spec : ignoredSpec;
+  PatternPlacement& place = placement ? *placement : ignoredPlacement;
+  if (w == "turbulence") {
+    place.turbulence = toVec3(in.parseVector());
+  } else if (w == "octaves") {
+    // POV-Ray clamps them to 1..10.
+    place.octaves = std::clamp(static_cast<int>(in.parseFloat()), 1, 10);
+  } else if (w == "omega") {
+    place.omega = in.parseFloat();
+  } else if (w == "lambda") {
+    place.lambda = in.parseFloat();
+  } else if (w == "frequency") {
+    s.frequency = in.parseFloat();
+  } else if (w == "phase") {
+    s.phase = in.parseFloat();
+  } else if (w == "ramp_wave") {
+    s.wave = WaveShape::ramp;
+  } else if (w == "sine_wave") {
+    s.wave = WaveShape::sine;
+  } else if (w == "triangle_wave") {
+    s.wave = WaveShape::triangle;
+  } else if (w == "scallop_wave") {
+    s.wave = WaveShape::scallop;
+  } else if (w == "cubic_wave") {
+    s.wave = WaveShape::cubic;
+  } else if (w == "poly_wave") {
+    s.wave = WaveShape::poly;
+    if (startsNumber(in.peek())) s.exponent = in.parseFloat();
+  } else if (w == "noise_generator") {
+    const double g = in.parseFloat();
+    if (g < 1 || g > 3) in.error(t, "noise_generator must be 1, 2 or 3");
+    s.noiseGenerator = static_cast<int>(g);
+  } else if (w == "form") {
+    s.crackle.form = toVec3(in.parseVector());
+  } else if (w == "metric") {
+    s.crackle.metric = in.parseVector()[0];  // a vector for old scenes: its x counts
+  } else if (w == "offset") {
+    s.crackle.offset = in.parseFloat();
+  } else if (w == "solid") {
+    s.crackle.solid = true;
+  } else if (w == "agate_turb") {
+    const double turb = in.parseFloat();
+    if (turb != 1.0)
+      keepError(in, t.loc(),
+                "'agate_turb' other than 1 is not supported by Lucent (its agate has POV-Ray's "
+                "default agate_turb 1)");
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// `color_map { [Identifier] [at colour] ... }`, the '{' next; old maps' `[a, b color C1
+// color C2]` give two entries. `loc` becomes the declared map's when it names one.
+std::vector<PovColorMapEntry> SceneReader::readColorMap(TokenStream& in, SourceLoc& loc) {
+  std::vector<PovColorMapEntry> map;
+  in.expect("{");
+  if (const auto* item = use<ColorMapItem>(in.peek(), in)) {
+    in.next();
+    in.expect("}");
+    loc = item->loc;
+    return item->map;
+  }
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) break;
+    if (isWord(t, "blend_mode") || isWord(t, "blend_gamma")) {
+      keepError(in, t.loc(),
+                "'" + std::string(t.text()) +
+                    "' is not supported by Lucent (its colour maps blend linearly)");
+      in.parseFloat();
+      continue;
+    }
+    if (!t.is("[")) in.error(t, "'[' or '}' expected in a colour map, not " + t.describe());
+    const double at = in.parseFloat();
+    in.allow(",");
+    const Token& next = in.peek();
+    const Value* v = next.kind == TokenKind::Identifier ? next.value() : nullptr;
+    if (next.kind == TokenKind::Number || (v && v->type == ValueType::Float)) {
+      const double second = in.parseFloat();
+      map.push_back(entryOf(at, readColour(in)));
+      map.push_back(entryOf(second, readColour(in)));
+    } else {
+      map.push_back(entryOf(at, readColour(in)));
+    }
+    in.expect("]");
+  }
+  if (map.empty()) in.error(loc, "a colour map needs at least one colour");
+  // POV-Ray drops an entry equal to the one before it (old maps repeat their ends).
+  auto same = [](const PovColorMapEntry& a, const PovColorMapEntry& b) {
+    return a.at == b.at && a.color == b.color && a.filter == b.filter && a.transmit == b.transmit;
+  };
+  map.erase(std::unique(map.begin(), map.end(), same), map.end());
+  return map;
+}
+
+// The colours of a pattern pigment, from its map as written (or POV-Ray's default map):
+// Lucent's colour maps hold colours, so a filter or transmit is taken only when every
+// entry has the same, and then it is the pigment's.
+void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& in) {
+  if (!p.patterned()) return;
+  const PatternSpec* spec = specOf(p.pattern);
+  const std::vector<PovColorMapEntry> map =
+      p.map.empty() && spec ? defaultColourMap(spec->type) : p.map;
+  p.filter = p.transmit = 0.0f;
+  if (!map.empty()) {
+    const PovColorMapEntry& first = map.front();
+    const bool uniform = std::all_of(map.begin(), map.end(), [&](const PovColorMapEntry& e) {
+      return e.filter == first.filter && e.transmit == first.transmit;
+    });
+    if (!uniform || first.filter != 0.0f) {
+      keepError(in, p.mapLoc,
+                "colour maps with filter or transmit are not supported by Lucent (its colour "
+                "maps hold colours; a pattern pigment may have one transmit for all its "
+                "colours, and no filter)");
+    } else {
+      p.transmit = first.transmit;
+    }
+    for (size_t i = 1; i < map.size(); ++i)
+      if (map[i].at < map[i - 1].at) {
+        keepError(in, p.mapLoc, "the colour map's entries must be in ascending order");
+        break;
+      }
+  }
+  auto colour = [&](size_t i) { return map.at(i).color; };
+  if (auto* t = std::get_if<PatternTexture>(&p.pattern)) {
+    t->map.entries.clear();
+    for (const PovColorMapEntry& e : map) t->map.entries.push_back({e.at, e.color});
+  } else if (auto* c = std::get_if<CheckerTexture>(&p.pattern)) {
+    c->color1 = colour(0);
+    c->color2 = colour(1);
+  } else if (auto* h = std::get_if<HexagonTexture>(&p.pattern)) {
+    for (int i = 0; i < 3; ++i) h->spec.colors[i] = colour(static_cast<size_t>(i));
+  } else if (auto* b = std::get_if<BrickTexture>(&p.pattern)) {
+    b->spec.color1 = colour(0);
+    b->spec.color2 = colour(1);
+  }
+}
+
+// `warp { turbulence V [octaves N] [omega F] [lambda F] }`. POV-Ray's turbulence warp
+// displaces the point as the classic turbulence does; its warp list applies the transforms
+// written after the warp first, then the warp. That is Lucent's placement (every
+// transform, then the turbulence) when no transform precedes the warp, the pattern has
+// no other turbulence, and it lets turbulence displace its point (wood's and marble's
+// classic turbulence works inside them). Other warps are refused, their block skipped.
+bool SceneReader::readWarp(const Token& t, TokenStream& in, PatternPlacement* placement,
+                           const PatternSpec* spec, const PovTransform& before, bool& warped) {
+  if (!isWord(t, "warp")) {
+    // The classic turbulence after a turbulence warp would apply after it: two of them.
+    if (warped && (isWord(t, "turbulence") || isWord(t, "octaves") || isWord(t, "omega") ||
+                   isWord(t, "lambda")))
+      keepError(in, t.loc(),
+                "'" + std::string(t.text()) +
+                    "' with a turbulence warp is not supported by Lucent (a pattern has one "
+                    "turbulence)");
+    return false;
+  }
+  in.expect("{");
+  const Token kind = in.next();
+  if (!isWord(kind, "turbulence")) {
+    keepError(in, kind.loc(),
+              "'warp { " + std::string(kind.text()) +
+                  " }' is not supported by Lucent (warps; the nearest Lucent feature is a "
+                  "pattern's turbulence)");
+    int depth = 1;
+    while (depth > 0) {
+      const Token& b = in.next();
+      if (b.kind == TokenKind::End) in.error(b, "the warp block is not closed");
+      if (b.is("{")) ++depth;
+      if (b.is("}")) --depth;
+    }
+    return true;
+  }
+  PatternPlacement warp;
+  warp.turbulence = toVec3(in.parseVector());
+  for (;;) {
+    const Token k = in.next();
+    if (k.is("}")) break;
+    if (isWord(k, "octaves")) warp.octaves = std::clamp(static_cast<int>(in.parseFloat()), 1, 10);
+    else if (isWord(k, "omega")) warp.omega = in.parseFloat();
+    else if (isWord(k, "lambda")) warp.lambda = in.parseFloat();
+    else in.error(k, "unexpected " + k.describe() + " in a turbulence warp");
+  }
+  std::string why;
+  if (!placement) why = "on a solid colour";
+  else if (!before.isIdentity()) why = "after a transform of the pattern";
+  else if (warped || placement->turbulence != Vec3(0.0)) why = "with another turbulence";
+  else if (spec && patternTypeInfo(spec->type).turbulenceInside)
+    why = std::string("on ") + std::string(patternTypeInfo(spec->type).pov) +
+          " (its turbulence works inside the pattern in Lucent)";
+  if (!why.empty()) {
+    keepError(in, t.loc(),
+              "'warp { turbulence }' " + why +
+                  " is not supported by Lucent (a pattern's turbulence applies after all its "
+                  "transforms)");
+    return true;
+  }
+  placement->turbulence = warp.turbulence;
+  placement->octaves = warp.octaves;
+  placement->omega = warp.omega;
+  placement->lambda = warp.lambda;
+  warped = true;
+  return true;
+}
+
+bool SceneReader::isLackingPattern(const Token& t) {
+  return t.kind == TokenKind::Keyword &&
+         std::find(std::begin(kPatternsLucentLacks), std::end(kPatternsLucentLacks), t.text()) !=
+             std::end(kPatternsLucentLacks);
+}
+
+// A pattern Lucent lacks, named in a pigment or a normal: refused, the block skipped.
+bool SceneReader::refusePattern(const Token& t, TokenStream& in) {
+  if (t.kind != TokenKind::Keyword) return false;
+  const std::string_view w = t.text();
+  if (w == "checker" || w == "hexagon" || w == "brick") {
+    refuseInBlock(t, in, "as a normal pattern; Lucent's " + std::string(w) + " is a pigment");
+    return true;
+  }
+  if (const PatternTypeInfo* info = patternType(t); info && !info->colour) {
+    refuseInBlock(t, in,
+                  "as a colour pattern; Lucent's " + std::string(w) + " is a normal pattern");
+    return true;
+  }
+  if (!isLackingPattern(t)) return false;
+  refuseInBlock(t, in, "a pattern Lucent does not have; its patterns are " + lucentPatternNames());
+  return true;
+}
+
+}  // namespace lucent::sdl

@@ -1,0 +1,371 @@
+// The scene reader's textures: pattern pigments with their colour maps, block patterns,
+// normals, declared colour maps and normals, and where a pattern lies on its shape
+// (texture transforms in POV-Ray's order), checked field by field; and what is refused,
+// where, including refusals inside declarations that are reported only when used.
+#include <catch2/catch.hpp>
+
+#include "sdl_test_support.h"
+
+#include "sdl/scene_reader.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <variant>
+
+using namespace lucent;
+using namespace lucent::sdl;
+
+namespace {
+
+struct Read {
+  SceneLoad load;
+  CollectedOutput out;
+};
+
+std::unique_ptr<Read> readScene(const std::string& text) {
+  auto r = std::make_unique<Read>();
+  Options options;
+  options.imageWidth = 160;
+  options.imageHeight = 120;
+  options.output = &r->out;
+  r->load = loadSceneText("test.pov", text, sdltest::dataFolder(), options);
+  for (const Diagnostic& d : r->load.diagnostics.all()) UNSCOPED_INFO(d.str());
+  return r;
+}
+
+std::vector<std::string> errorsOf(const std::string& text) {
+  auto r = readScene(text);
+  CHECK(!r->load.scene);
+  std::vector<std::string> errors;
+  for (const Diagnostic& d : r->load.diagnostics.all()) errors.push_back(d.str());
+  return errors;
+}
+
+const Material& materialOf(const Scene& scene, const Node& n) {
+  REQUIRE(n.material);
+  return scene.materials.at(*n.material);
+}
+
+const Node& top(const Scene& scene, size_t i) {
+  REQUIRE(scene.root->children.size() > i);
+  return *scene.root->children[i];
+}
+
+void checkColor(const Color& got, const Color& want) {
+  for (int c = 0; c < 3; ++c) CHECK(got[c] == Approx(want[c]).margin(1e-6));
+}
+
+void checkMat(const Mat4& got, const Mat4& want) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) CHECK(got[i][j] == Approx(want[i][j]).margin(1e-12));
+}
+
+// Lucent's space is POV-Ray's with z negated: a pattern's point is S·p in POV-Ray's.
+const Mat4 kS = glm::scale(Mat4(1.0), Vec3(1, 1, -1));
+
+Mat4 scaling(double s) { return glm::scale(Mat4(1.0), Vec3(s)); }
+Mat4 translation(const Vec3& v) { return glm::translate(Mat4(1.0), v); }
+
+}  // namespace
+
+TEST_CASE("scene reader textures: a pattern pigment's colour map, entry by entry",
+          "[sdl][scene][texture]") {
+  auto r = readScene(R"(
+sphere { 0, 1 pigment { bozo frequency 2 phase 0.25 sine_wave turbulence <0.5, 0.25, 0>
+    octaves 3 omega 0.4 lambda 3 noise_generator 1
+    color_map { [0 rgb 1] [0.5, 0.8 color rgb <1, 0, 0> color rgb <0, 0, 1>] [1 color red 1] } }
+  finish { ambient 0.2 diffuse 0.5 } }
+global_settings { noise_generator 3 }
+sphere { 0, 1 pigment { granite } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const Material& m = materialOf(s, top(s, 0));
+  const auto& t = std::get<PatternTexture>(m.texture);
+  CHECK(t.pattern.type == PatternType::bozo);
+  CHECK(t.pattern.frequency == 2.0);
+  CHECK(t.pattern.phase == 0.25);
+  CHECK(t.pattern.wave == WaveShape::sine);
+  CHECK(t.pattern.noiseGenerator == 1);
+  CHECK(t.pattern.placement.turbulence == Vec3(0.5, 0.25, 0));
+  CHECK(t.pattern.placement.octaves == 3);
+  CHECK(t.pattern.placement.omega == 0.4);
+  CHECK(t.pattern.placement.lambda == 3.0);
+  REQUIRE(t.map.entries.size() == 4);
+  CHECK(t.map.entries[0].at == 0.0);
+  checkColor(t.map.entries[0].color, Color(1.0f));
+  CHECK(t.map.entries[1].at == 0.5);
+  checkColor(t.map.entries[1].color, Color(1, 0, 0));
+  CHECK(t.map.entries[2].at == 0.8);
+  checkColor(t.map.entries[2].color, Color(0, 0, 1));
+  CHECK(t.map.entries[3].at == 1.0);
+  checkColor(t.map.entries[3].color, Color(1, 0, 0));
+  // The texture multiplies diffuse and ambient, each the finish's number.
+  checkColor(m.diffuse, Color(0.5f));
+  checkColor(m.ambient, Color(0.2f));
+  CHECK(m.ambientIsScalar);
+  // A pattern that chooses no noise takes global_settings' one; granite's default map
+  // is POV-Ray's black to white (Lucent's empty map).
+  const auto& granite = std::get<PatternTexture>(materialOf(s, top(s, 1)).texture);
+  CHECK(granite.pattern.noiseGenerator == 3);
+  CHECK(granite.map.entries.empty());
+}
+
+TEST_CASE("scene reader textures: declared colour maps and normals, POV-Ray's default maps",
+          "[sdl][scene][texture]") {
+  auto r = readScene(R"(
+#declare M = colour_map { [0.2 rgbt <1, 1, 0, 0.5>] [0.9 rgbt <0, 0, 1, 0.5>] }
+#declare N = normal { bumps 0.4 scale 0.1 }
+sphere { 0, 1 pigment { marble turbulence 0.5 color_map { M } } normal { N } }
+sphere { 0, 1 pigment { wood } normal { ripples bump_size 0.7 } }
+sphere { 0, 1 pigment { checker } }
+sphere { 0, 1 pigment { hexagon rgb 1, rgb 0.5 } }
+sphere { 0, 1 pigment { brick color rgb <1, 1, 1>, color rgb 0 brick_size <1, 2, 3> mortar 0.1 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const Material& m = materialOf(s, top(s, 0));
+  const auto& marble = std::get<PatternTexture>(m.texture);
+  CHECK(marble.pattern.type == PatternType::marble);
+  REQUIRE(marble.map.entries.size() == 2);
+  CHECK(marble.map.entries[0].at == Approx(0.2));
+  checkColor(marble.map.entries[1].color, Color(0, 0, 1));
+  // One transmit for all the map's colours: the pigment's.
+  checkColor(m.transmissive, Color(0.5f));
+  checkColor(m.diffuse, Color(0.6f * 0.5f));
+  REQUIRE(m.normal);
+  CHECK(m.normal->pattern.type == PatternType::bumps);
+  CHECK(m.normal->depth == 0.4);
+  checkMat(m.normal->pattern.placement.patternFromObject, scaling(10.0) * kS);
+
+  const Material& wood = materialOf(s, top(s, 1));
+  const auto& woodMap = std::get<PatternTexture>(wood.texture).map.entries;
+  REQUIRE(woodMap.size() == 2);  // POV-Ray's default wood map
+  CHECK(woodMap[0].at == Approx(0.6));
+  checkColor(woodMap[0].color, Color(0.666f, 0.312f, 0.2f));
+  checkColor(woodMap[1].color, Color(0.4f, 0.1333f, 0.066f));
+  REQUIRE(wood.normal);
+  CHECK(wood.normal->pattern.type == PatternType::ripples);
+  CHECK(wood.normal->depth == 0.7);
+
+  const auto& checker = std::get<CheckerTexture>(materialOf(s, top(s, 2)).texture);
+  checkColor(checker.color1, Color(0, 0, 1));  // POV-Ray's default blue and green
+  checkColor(checker.color2, Color(0, 1, 0));
+  const auto& hexagon = std::get<HexagonTexture>(materialOf(s, top(s, 3)).texture);
+  checkColor(hexagon.spec.colors[0], Color(1.0f));
+  checkColor(hexagon.spec.colors[1], Color(0.5f));
+  checkColor(hexagon.spec.colors[2], Color(1, 0, 0));  // the third not written: POV-Ray's
+  const auto& brick = std::get<BrickTexture>(materialOf(s, top(s, 4)).texture);
+  checkColor(brick.spec.color1, Color(1.0f));
+  checkColor(brick.spec.color2, Color(0.0f));
+  CHECK(brick.spec.size == Vec3(1, 2, 3));
+  CHECK(brick.spec.mortar == 0.1);
+}
+
+TEST_CASE("scene reader textures: a texture follows only the transforms written after it",
+          "[sdl][scene][texture]") {
+  auto r = readScene(R"(
+sphere { 0, 1 scale 2 pigment { checker rgb 1, rgb 0 scale 0.5 } rotate y*90 translate x }
+union {
+  sphere { 0, 1 translate x }
+  sphere { 0, 1 scale 3 pigment { bozo } }
+  sphere { 0, 1 }
+  translate y*2
+  texture { pigment { agate } translate z }
+  scale 4
+}
+#declare D = sphere { 0, 1 translate x pigment { spotted translate y } }
+object { D scale 2 }
+sphere { 0, 1 pigment { bozo } translate x pigment { scale 2 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  // inverse(Ttex)·B·S: B the sphere's scale 2 before the pigment, Ttex its scale 0.5.
+  const auto& checker = std::get<CheckerTexture>(materialOf(s, top(s, 0)).texture);
+  checkMat(checker.placement.patternFromObject, scaling(4.0) * kS);
+  CHECK(checker.scale == 1.0);
+
+  // The union's texture, written after its translate: B = translate y*2; each operand's
+  // own transform leads to the union's space, the second operand keeps its own pigment.
+  const Node& u = top(s, 1);
+  REQUIRE(u.children.size() == 3);
+  const Mat4 unionTexture = glm::inverse(translation(Vec3(0, 0, 1))) * translation(Vec3(0, 2, 0));
+  const auto& first = std::get<PatternTexture>(materialOf(s, *u.children[0]).texture);
+  CHECK(first.pattern.type == PatternType::agate);
+  checkMat(first.pattern.placement.patternFromObject,
+           unionTexture * translation(Vec3(1, 0, 0)) * kS);
+  const auto& second = std::get<PatternTexture>(materialOf(s, *u.children[1]).texture);
+  CHECK(second.pattern.type == PatternType::bozo);
+  // Written after the operand's scale 3: not scaled by it.
+  checkMat(second.pattern.placement.patternFromObject, scaling(3.0) * kS);
+  // An operand with no transform of its own shares the union's material.
+  CHECK(!u.children[2]->material);
+  checkMat(std::get<PatternTexture>(materialOf(s, u).texture).pattern.placement.patternFromObject,
+           unionTexture * kS);
+
+  // A declared object's texture follows the transforms object { } adds.
+  const auto& spotted = std::get<PatternTexture>(materialOf(s, top(s, 2)).texture);
+  checkMat(spotted.pattern.placement.patternFromObject,
+           glm::inverse(translation(Vec3(0, 1, 0))) * translation(Vec3(1, 0, 0)) * kS);
+
+  // A pigment block continues the pigment the object has: bozo, moved by translate x,
+  // then scaled by 2 in the object's space.
+  const auto& continued = std::get<PatternTexture>(materialOf(s, top(s, 3)).texture);
+  CHECK(continued.pattern.type == PatternType::bozo);
+  checkMat(
+      continued.pattern.placement.patternFromObject,
+      glm::inverse(translation(Vec3(1, 0, 0))) * scaling(0.5) * translation(Vec3(1, 0, 0)) * kS);
+}
+
+TEST_CASE("scene reader textures: a turbulence warp before any transform is the placement's",
+          "[sdl][scene][texture]") {
+  auto r = readScene(
+      "sphere { 0, 1 pigment { crackle warp { turbulence 0.6 octaves 4 lambda 3 } scale 2 } }\n");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const auto& t = std::get<PatternTexture>(materialOf(s, top(s, 0)).texture);
+  CHECK(t.pattern.placement.turbulence == Vec3(0.6));
+  CHECK(t.pattern.placement.octaves == 4);
+  CHECK(t.pattern.placement.lambda == 3.0);
+  checkMat(t.pattern.placement.patternFromObject, scaling(0.5) * kS);
+  const auto errors = errorsOf(
+      "sphere { 0, 1 pigment { bozo scale 2 warp { turbulence 0.5 } } }\n"
+      "sphere { 0, 1 pigment { bozo warp { repeat x } } }\n"
+      "sphere { 0, 1 pigment { bozo warp { turbulence 0.5 } turbulence 0.2 } }\n");
+  REQUIRE(errors.size() == 3);
+  CHECK(errors[0] ==
+        "test.pov:1:38: error: 'warp { turbulence }' after a transform of the pattern is not "
+        "supported by Lucent (a pattern's turbulence applies after all its transforms)");
+  CHECK(errors[1] ==
+        "test.pov:2:37: error: 'warp { repeat }' is not supported by Lucent (warps; the nearest "
+        "Lucent feature is a pattern's turbulence)");
+  CHECK(errors[2] ==
+        "test.pov:3:54: error: 'turbulence' with a turbulence warp is not supported by Lucent "
+        "(a pattern has one turbulence)");
+}
+
+TEST_CASE("scene reader textures: what Lucent cannot render is refused at its keyword",
+          "[sdl][scene][texture][errors]") {
+  const auto errors = errorsOf(
+      "sphere { 0, 1 pigment { bozo color_map { [0 rgbf 1] [1 rgb 0] } } }\n"
+      "sphere { 0, 1 pigment { cells } }\n"
+      "sphere { 0, 1 pigment { bozo pigment_map { [0 rgb 1] } } }\n"
+      "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }\n"
+      "sphere { 0, 1 pigment { image_map { png \"x.png\" } } }\n"
+      "sphere { 0, 1 normal { checker } }\n"
+      "sphere { 0, 1 texture { gradient y texture_map { [0 T1] [1 T2] } } }\n");
+  REQUIRE(errors.size() == 7);
+  CHECK(errors[0] ==
+        "test.pov:1:30: error: colour maps with filter or transmit are not supported by Lucent "
+        "(its colour maps hold colours; a pattern pigment may have one transmit for all its "
+        "colours, and no filter)");
+  CHECK(errors[1].rfind("test.pov:2:25: error: 'cells' is not supported by Lucent (a pattern "
+                        "Lucent does not have; its patterns are gradient, onion",
+                        0) == 0);
+  CHECK(errors[2] ==
+        "test.pov:3:30: error: 'pigment_map' is not supported by Lucent (maps of pigments; "
+        "Lucent's colour maps hold colours)");
+  CHECK(errors[3] ==
+        "test.pov:4:45: error: layered textures are not supported by Lucent (one texture per "
+        "material; a second texture { } is a layer over the first)");
+  CHECK(errors[4].rfind("test.pov:5:25: error: 'image_map' is not supported by Lucent", 0) == 0);
+  CHECK(errors[5] ==
+        "test.pov:6:24: error: 'checker' is not supported by Lucent (as a normal pattern; "
+        "Lucent's checker is a pigment)");
+  CHECK(errors[6] ==
+        "test.pov:7:25: error: 'gradient' is not supported by Lucent (a pattern of textures "
+        "(texture_map, or a block pattern of textures); Lucent has one texture per material)");
+}
+
+TEST_CASE(
+    "scene reader textures: a refusal inside a declaration is an error only where it "
+    "is used, located in the include",
+    "[sdl][scene][texture][errors]") {
+  // Declared and never used: no error.
+  auto unused = readScene(
+      "#include \"refusals.inc\"\n"
+      "sphere { 0, 1 pigment { rgb 1 } }\n");
+  CHECK(unused->load.scene);
+  // Used, directly and through another declaration: the error at the feature in the
+  // include, with where the scene uses it; reported once.
+  const auto errors = errorsOf(
+      "#include \"refusals.inc\"\n"
+      "#declare T = texture { pigment { P_Cells } }\n"
+      "sphere { 0, 1 texture { T } }\n"
+      "sphere { 0, 1 pigment { P_Cells } }\n"
+      "sphere { 0, 1 texture { T_Layered } }\n"
+      "object { J_Unread }\n");
+  REQUIRE(errors.size() == 3);
+  CHECK(errors[0].rfind("refusals.inc:3:30: error: 'cells' is not supported by Lucent", 0) == 0);
+  CHECK(errors[0].find("\ntest.pov:3:25: note: the declaration is used here") != std::string::npos);
+  CHECK(errors[1].rfind("refusals.inc:5:3: error: layered textures are not supported", 0) == 0);
+  CHECK(errors[1].find("\ntest.pov:5:25: note: the declaration is used here") != std::string::npos);
+  // A block the reader does not read yet, declared: the same.
+  CHECK(errors[2].rfind("refusals.inc:7:21: error: 'julia_fractal' is not supported by Lucent",
+                        0) == 0);
+  CHECK(errors[2].find("\ntest.pov:6:10: note: the declaration is used here") != std::string::npos);
+}
+
+TEST_CASE("scene reader textures: the standard material includes read to their end",
+          "[sdl][scene][texture][include]") {
+  auto r = readScene(
+      "#include \"colors.inc\"\n#include \"textures.inc\"\n#include \"woods.inc\"\n"
+      "#include \"woodmaps.inc\"\n#include \"stones.inc\"\n#include \"glass.inc\"\n"
+      "#include \"metals.inc\"\n#include \"golds.inc\"\n"
+      "sphere { 0, 1 pigment { Jade } }\n"
+      "sphere { 0, 1 pigment { P_WoodGrain1A color_map { M_Wood1A } } }\n"
+      "sphere { 0, 1 pigment { wood color_map { M_Wood1A } } }\n");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  REQUIRE(s.root->children.size() == 3);
+  CHECK(std::get<PatternTexture>(materialOf(s, top(s, 0)).texture).pattern.type ==
+        PatternType::marble);
+  // woods.inc's grain, through woodmaps.inc's old-style map: two entries per bracket.
+  const auto& wood = std::get<PatternTexture>(materialOf(s, top(s, 1)).texture);
+  CHECK(wood.pattern.type == PatternType::wood);
+  CHECK(wood.pattern.placement.octaves == 3);
+  REQUIRE(wood.map.entries.size() >= 4);
+  CHECK(wood.map.entries[1].at == Approx(0.1));
+  checkColor(wood.map.entries[1].color, Color(0.88f, 0.60f, 0.40f));
+}
+
+TEST_CASE("scene reader textures: a sky_sphere of one colour, and of a declared old-style map",
+          "[sdl][scene][texture]") {
+  auto r = readScene("sky_sphere { pigment { rgb <0.2, 0.3, 0.4> } }\n");
+  REQUIRE(r->load.scene);
+  REQUIRE(r->load.scene->sky);
+  const auto& entries = r->load.scene->sky->pattern.map.entries;
+  REQUIRE(entries.size() == 1);
+  checkColor(entries[0].color, Color(0.2f, 0.3f, 0.4f));
+  auto m = readScene(
+      "#declare M = color_map { [0, 0.5 color rgb 1 color rgb <0, 0, 1>] }\n"
+      "sky_sphere { pigment { gradient y color_map { M } } }\n");
+  REQUIRE(m->load.scene);
+  REQUIRE(m->load.scene->sky);
+  const auto& two = m->load.scene->sky->pattern.map.entries;
+  REQUIRE(two.size() == 2);
+  CHECK(two[1].at == 0.5);
+  checkColor(two[1].color, Color(0, 0, 1));
+}
+
+TEST_CASE("scene reader textures: POV-Ray 1's normals in a texture, and blocks that continue",
+          "[sdl][scene][texture]") {
+  auto r = readScene(
+      "sphere { 0, 1 texture { pigment { rgb 1 } wrinkles 0.3 scale 2 } }\n"
+      "sphere { 0, 1 texture { pigment { bozo } finish { phong 1 } pigment { scale 4 } "
+      "finish { diffuse 0.4 } } }\n");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const Material& m = materialOf(s, top(s, 0));
+  REQUIRE(m.normal);
+  CHECK(m.normal->pattern.type == PatternType::wrinkles);
+  CHECK(m.normal->depth == 0.3);
+  checkMat(m.normal->pattern.placement.patternFromObject, scaling(0.5) * kS);
+  // The second pigment and finish continue the first ones.
+  const Material& c = materialOf(s, top(s, 1));
+  const auto& bozo = std::get<PatternTexture>(c.texture);
+  CHECK(bozo.pattern.type == PatternType::bozo);
+  checkMat(bozo.pattern.placement.patternFromObject, scaling(0.25) * kS);
+  checkColor(c.phong, Color(1.0f));
+  checkColor(c.diffuse, Color(0.4f));
+}
