@@ -62,6 +62,16 @@ std::shared_ptr<const ObjectGeometry> SceneReader::geometry(const ItemPtr& item,
   if (!object || object->object.kind == NodeKind::Light) return nullptr;
   for (const auto& [built, geometry] : built_)
     if (built == item) return geometry;
+  // A declared object that keeps refusals: said here, where it is used, and the call
+  // refused unless they are left out (--skip-unsupported).
+  const SourceLoc usedAt = in.current().loc();
+  if (!object->refused.empty()) {
+    const size_t errorsBefore = diags_.errorCount();
+    reportRefused(*object, usedAt, in);
+    if (diags_.errorCount() > errorsBefore)
+      in.error(usedAt, "the object cannot be built by Lucent (what it holds that Lucent cannot "
+                       "render is listed)");
+  }
   // Its nodes as place() makes them, in a scene of their own.
   auto scene = std::make_unique<Scene>();
   scene->file = scene_.file;
@@ -84,6 +94,8 @@ std::shared_ptr<const ObjectGeometry> SceneReader::geometry(const ItemPtr& item,
     geometry = std::make_shared<BuiltObject>(std::move(scene));
   } catch (const LocatedError& e) {
     in.error(e.loc(), e.message());
+  } catch (const std::exception& e) {
+    in.error(usedAt, std::string("the object cannot be built: ") + e.what());
   }
   // Kept with the item itself, so that the item's address is never another's.
   built_.emplace_back(item, geometry);

@@ -107,11 +107,28 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
     p.mapLoc = t.loc();
     for (size_t i = 0; i < p.map.size(); ++i) {
       const Token& next = in.peek();
-      if (isWord(next, "pigment") || isWord(next, "texture") || isWord(next, "normal")) {
+      auto isListEntry = [](const Token& k) {
+        return isWord(k, "pigment") || isWord(k, "texture") || isWord(k, "normal");
+      };
+      if (isListEntry(next)) {
         const Token list = in.next();
-        refuseInBlock(list, in,
-                      "lists of " + std::string(list.text()) + "s in block patterns; " +
-                          std::string(w) + " takes colours in Lucent");
+        keepError(in, list.loc(),
+                  "'" + std::string(list.text()) + "' is not supported by Lucent (lists of " +
+                      std::string(list.text()) + "s in block patterns; " + std::string(w) +
+                      " takes colours in Lucent)");
+        // The list's entries skipped, each a block; the pigment's own '}' is left to it.
+        for (;;) {
+          in.expect("{");
+          for (int depth = 1; depth > 0;) {
+            const Token& k = in.next();
+            if (k.kind == TokenKind::End) in.error(k, "the block is not closed ('}' expected)");
+            if (k.is("{")) ++depth;
+            if (k.is("}")) --depth;
+          }
+          in.allow(",");
+          if (!isListEntry(in.peek())) break;
+          in.next();
+        }
         return true;
       }
       if (!isColourStart(next)) break;

@@ -374,3 +374,17 @@ TEST_CASE("scene reader: trace(), inside(), min_extent() and max_extent() as POV
         "test.pov:1:36: error: trace() needs an object identifier first, not float identifier "
         "'A'");
 }
+
+TEST_CASE("scene reader: a checker of pigments is one refusal, and reading goes on after it",
+          "[sdl][scene][errors]") {
+  // The list's blocks are skipped, not the pigment's own closing brace (which once made the
+  // rest of the scene an error of the plane: advanced/cliche/cliche.pov).
+  const auto errors = errorsOf(
+      "plane { y, 0 texture { pigment { checker pigment { rgb 1 }, pigment { rgb 0 } scale 2 }\n"
+      "  finish { ambient 0.1 } } }\n"
+      "sphere { 0, 1 }\n");
+  REQUIRE(errors.size() == 1);
+  CHECK(errors[0].rfind("test.pov:1:42: error: 'pigment' is not supported by Lucent (lists of "
+                        "pigments in block patterns",
+                        0) == 0);
+}
