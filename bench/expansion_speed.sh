@@ -3,7 +3,8 @@
 # positions and random radii, against the same scene written out literally (the same
 # numbers, written by this script). Each is loaded, expanded, built into a world and
 # rendered at 32×24 by one process on one core (taskset -c 0, -t 1); prints wall and CPU
-# time and peak memory of each, and the ratios. The aims: the repeat scene of 10^6 spheres
+# time and peak memory of each, and the ratios; and the same spheres made by POV-Ray #for
+# loops read by the POV-Ray importer, against the repeats. The aims: the repeat scene of 10^6 spheres
 # in under 2 s, and its peak memory within 1.5× of the literal one's.
 #   bash bench/expansion_speed.sh [--lucent PATH] [--n 1000] [--runs 3] [--tsv FILE]
 # --tsv writes "scene<TAB>wall s<TAB>CPU s<TAB>peak MB" for each (bench/run.sh reads it).
@@ -63,6 +64,21 @@ out.append('</scene>')
 print('\n'.join(out))
 PY
 
+# The POV-Ray twin: two nested #for loops, radii from POV-Ray's rand() (other numbers than
+# random()'s, the same work), read by Lucent's POV-Ray importer.
+cat > "$work/loops.pov" <<POV
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 50, -120> look_at 0 }
+light_source { <100, 200, -100> color rgb 1 }
+#declare R = seed(1);
+#for (I, 0, $n - 1)
+  #for (J, 0, $n - 1)
+    sphere { <I*0.2-100, 0, J*0.2-100>, 0.05+0.04*rand(R) }
+  #end
+#end
+POV
+
 measure() {  # scene -> "wall cpu peakKB" (best of $runs by wall time)
   local best=""
   for _ in $(seq "$runs"); do
@@ -77,12 +93,13 @@ measure() {  # scene -> "wall cpu peakKB" (best of $runs by wall time)
 }
 rep=$(measure "$work/repeat.xml")
 lit=$(measure "$work/literal.xml")
+pov=$(measure "$work/loops.pov")
 cmp -s <("$lucent" check "$work/repeat.xml" | grep '^nodes') <("$lucent" check "$work/literal.xml" | grep '^nodes') \
   || { echo "expansion_speed: the two scenes differ in their node counts" >&2; exit 1; }
 spheres=$((n * n))
 echo "| scene ($spheres spheres, one core) | wall s | CPU s | peak MB |"
 echo "| --- | --- | --- | --- |"
-for pair in "repeats:$rep" "literal:$lit"; do
+for pair in "repeats:$rep" "literal:$lit" "POV-Ray #for loops:$pov"; do
   name=${pair%%:*}; set -- ${pair#*:}
   awk -v n="$name" -v w="$1" -v u="$2" -v s="$3" -v m="$4" 'BEGIN{printf "| %s | %.2f | %.2f | %.0f |\n", n, w, u+s, m/1024}'
 done
@@ -97,3 +114,6 @@ set -- $rep; rw=$1; rm=$4
 set -- $lit; lw=$1; lm=$4
 awk -v rw="$rw" -v lw="$lw" -v rm="$rm" -v lm="$lm" \
   'BEGIN{printf "\nrepeats / literal: time %.2f×, peak memory %.2f×\n", rw/lw, rm/lm}'
+set -- $pov; pw=$1; pm=$4
+awk -v rw="$rw" -v pw="$pw" -v rm="$rm" -v pm="$pm" \
+  'BEGIN{printf "POV-Ray loops / repeats: time %.2f×, peak memory %.2f×\n", pw/rw, pm/rm}'

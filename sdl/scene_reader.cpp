@@ -293,6 +293,7 @@ void SceneReader::readScene(TokenStream& in) {
 
 // `#default { texture { } pigment { } finish { } }`: what later textures start from.
 void SceneReader::readDefault(TokenStream& in) {
+  defaultMaterial_.reset();  // objects from here on take the new defaults
   in.expect("{");
   for (;;) {
     const Token t = in.next();
@@ -398,9 +399,16 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   // A top-level object and one with its own texture or interior get a material, and a
   // shape under a pattern placed differently from its parent's material; the others
   // inherit their parent's node material.
-  if (own || topLevel || moved || !inherited.material) {
+  if (topLevel && !own && !placed && defaultMaterial_) {
+    // An object of the default texture, unpatterned: the material made for the first such
+    // object while this #default holds (a loop of a million spheres makes one, not a million).
+    n->material = *defaultMaterial_;
+    here.material = n->material;
+    here.materialTextureFromNode = textureFromNode;
+  } else if (own || topLevel || moved || !inherited.material) {
     const SourceLoc at = o.texture ? o.textureLoc : o.loc;
     n->material = addMaterial(*here.texture, *here.interior, textureFromNode, at, in);
+    if (topLevel && !own && !placed) defaultMaterial_ = n->material;
     here.material = n->material;
     here.materialTextureFromNode = textureFromNode;
   }

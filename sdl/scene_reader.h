@@ -270,6 +270,8 @@ class SceneReader : public ItemReader {
     std::string message;
   };
   std::map<std::string, Skipped> skipped_;
+  // The material of the objects that take the default texture (unpatterned) as it is now.
+  std::optional<uint32_t> defaultMaterial_;
   // The objects built for trace() and the like, each with its item (few in a scene: a
   // search of this list is fast enough).
   std::vector<std::pair<ItemPtr, std::shared_ptr<const ObjectGeometry>>> built_;
