@@ -69,8 +69,9 @@ std::shared_ptr<const ObjectGeometry> SceneReader::geometry(const ItemPtr& item,
     const size_t errorsBefore = diags_.errorCount();
     reportRefused(*object, usedAt, in);
     if (diags_.errorCount() > errorsBefore)
-      in.error(usedAt, "the object cannot be built by Lucent (what it holds that Lucent cannot "
-                       "render is listed)");
+      in.error(usedAt,
+               "the object cannot be built by Lucent (what it holds that Lucent cannot "
+               "render is listed)");
   }
   // Its nodes as place() makes them, in a scene of their own.
   auto scene = std::make_unique<Scene>();

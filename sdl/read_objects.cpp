@@ -112,6 +112,7 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
     // (the default texture's when the object had none): moved back to the object's
     // current space to be read on, then carried back again.
     const PovTransform here = o.transform;
+    if (w != "texture") o.texture->name.clear();  // a declared texture, changed
     if (w == "pigment") {
       PovPigment start = o.texture->pigment;
       start.transform = start.transform.then(here);

@@ -171,13 +171,14 @@ PovTexture SceneReader::readTexture(TokenStream& in, const PovTexture& start) {
   PovTexture tex = start;
   in.expect("{");
   if (const auto* item = use<TextureItem>(in.peek(), in)) {
-    in.next();
     tex = item->texture;
+    tex.name = std::string(in.next().text());
   }
   for (;;) {
     const Token t = in.next();
     if (t.is("}")) return tex;
-    PovTransform m;  // a transform moves the pigment and normal written before it
+    tex.name.clear();  // changed: no longer the declared texture itself
+    PovTransform m;    // a transform moves the pigment and normal written before it
     // Each block continues the texture's own (POV-Ray's Parse_Texture).
     if (isWord(t, "pigment")) tex.pigment = readPigment(in, tex.pigment);
     else if (isWord(t, "normal")) tex.normal = readNormal(in, tex.normal ? &*tex.normal : nullptr);
@@ -250,13 +251,15 @@ PovMaterial SceneReader::readMaterial(TokenStream& in) {
   PovMaterial m;
   in.expect("{");
   if (const auto* item = use<MaterialItem>(in.peek(), in)) {
-    in.next();
     m = item->material;
+    const std::string name(in.next().text());
+    if (m.texture) m.texture->name = name;
   }
   int textures = 0;
   for (;;) {
     const Token t = in.next();
     if (t.is("}")) return m;
+    if (m.texture) m.texture->name.clear();
     PovTransform move;
     if (isWord(t, "texture")) {
       if (textures++ > 0) {

@@ -4,6 +4,8 @@
 
 #include "scenegraph/light_placement.h"
 
+#include <fmt/format.h>
+
 #include <functional>
 #include <map>
 
@@ -343,6 +345,15 @@ Mat4 negateZ() {
 uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& interior,
                                   const Mat4& textureFromNode, const SourceLoc& at,
                                   TokenStream& in) {
+  // A declared texture used as it is, unpatterned: one material, named after it, for
+  // every object that uses it with the same interior (convert writes it once, by name).
+  std::string key;
+  if (!texture.name.empty() && !texture.patterned()) {
+    key = texture.name + fmt::format("|{}|{}|{}|{} {} {}", interior.ior, interior.fadeDistance,
+                                     interior.fadePower, interior.fadeColor.r, interior.fadeColor.g,
+                                     interior.fadeColor.b);
+    if (const auto it = namedMaterials_.find(key); it != namedMaterials_.end()) return it->second;
+  }
   MaterialImport imported = importMaterial(texture.pigment, texture.finish, interior);
   for (const std::string& d : imported.differences) warn(in, at, d);
   Material& m = imported.material;
@@ -355,8 +366,17 @@ uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& 
     m.normal->pattern.placement.patternFromObject =
         glm::inverse(texture.normal->transform.povMatrix()) * objectToTexture;
   }
+  const auto index = static_cast<uint32_t>(scene_.materials.size());
+  if (!key.empty()) {
+    // Named after the texture; a second interior with the same texture takes a suffix.
+    size_t same = 0;
+    for (const auto& [k, i] : namedMaterials_)
+      if (k.rfind(texture.name + "|", 0) == 0) ++same;
+    m.id = same == 0 ? texture.name : texture.name + "-" + std::to_string(same + 1);
+    namedMaterials_[key] = index;
+  }
   scene_.materials.push_back(m);
-  return static_cast<uint32_t>(scene_.materials.size() - 1);
+  return index;
 }
 
 // An object's nodes. POV-Ray gives an object without a texture its parent's (a CSG's

@@ -38,6 +38,9 @@ struct PovTexture {
   PovPigment pigment;
   std::optional<PovNormal> normal;
   PovFinish finish;
+  // The declared texture (or material) it is, as written and unchanged: `texture { T }`;
+  // empty once anything changes it. The objects that share it share one named material.
+  std::string name;
 
   bool patterned() const { return pigment.patterned() || normal.has_value(); }
   // `texture { ... translate ... }`: moves what the texture holds.
@@ -246,7 +249,9 @@ class SceneReader : public ItemReader {
   bool readWarp(const Token& t, TokenStream& in, PatternPlacement* placement,
                 const PatternSpec* spec, const PovTransform& before, bool& warped);
 
-  PovTexture defaultTexture() const { return {defaults_.pigment, std::nullopt, defaults_.finish}; }
+  PovTexture defaultTexture() const {
+    return {defaults_.pigment, std::nullopt, defaults_.finish, {}};
+  }
 
   Scene& scene_;
   Diagnostics& diags_;
@@ -272,6 +277,8 @@ class SceneReader : public ItemReader {
   std::map<std::string, Skipped> skipped_;
   // The material of the objects that take the default texture (unpatterned) as it is now.
   std::optional<uint32_t> defaultMaterial_;
+  // The materials of declared textures (unpatterned), by name and interior.
+  std::map<std::string, uint32_t> namedMaterials_;
   // The objects built for trace() and the like, each with its item (few in a scene: a
   // search of this list is fast enough).
   std::vector<std::pair<ItemPtr, std::shared_ptr<const ObjectGeometry>>> built_;

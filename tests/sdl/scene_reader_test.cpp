@@ -388,3 +388,35 @@ TEST_CASE("scene reader: a checker of pigments is one refusal, and reading goes 
                         "pigments in block patterns",
                         0) == 0);
 }
+
+TEST_CASE("scene reader: shared materials for the default texture and for declared textures",
+          "[sdl][scene]") {
+  auto r = readScene(R"(
+#declare T_Red = texture { pigment { rgb <1, 0, 0> } finish { phong 1 } }
+#declare M = material { texture { pigment { rgb 0.5 } } interior { ior 1.5 } }
+sphere { 0, 1 }
+sphere { x, 1 }
+sphere { 0, 1 texture { T_Red } }
+sphere { x*2, 1 texture { T_Red } }
+sphere { x*4, 1 texture { T_Red } finish { ambient 0.5 } }
+box { -1, 1 material { M } }
+box { 2, 3 material { M } interior { ior 1.2 } }
+#default { finish { ambient 0.3 } }
+sphere { y, 1 }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  std::vector<uint32_t> m;
+  for (const auto& n : s.root->children) m.push_back(n->material.value_or(99));
+  REQUIRE(m.size() == 8);
+  CHECK(m[0] == m[1]);  // the default texture: one material
+  CHECK(m[2] == m[3]);  // T_Red as it is: one material, named after it
+  CHECK(s.materials.at(m[2]).id == "T_Red");
+  CHECK(m[4] != m[2]);  // T_Red with its finish changed: its own, unnamed
+  CHECK(s.materials.at(m[4]).id.empty());
+  CHECK(s.materials.at(m[5]).id == "M");
+  CHECK(m[6] != m[5]);  // M with another interior
+  CHECK(s.materials.at(m[6]).ior == Approx(1.2));
+  CHECK(m[7] != m[0]);  // after a #default: the new default's material
+  CHECK(s.materials.at(m[7]).ambient.r == Approx(0.0f).margin(1e-7));  // black pigment
+}
