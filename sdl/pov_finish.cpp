@@ -86,7 +86,9 @@ MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish
   m.texture = pigment.pattern;
   // POV-Ray 3.7: every local term is scaled by the opacity, what shows through is
   // pigment·filter + transmit, per channel.
-  const float opacity = std::max(0.0f, 1.0f - pigment.filter - pigment.transmit);
+  // Not clamped: with filter + transmit above 1 the local terms go negative, as in POV-Ray
+  // (a transmit of 100 makes a contrast amplifier: advanced/bwstripe.pov).
+  const float opacity = 1.0f - pigment.filter - pigment.transmit;
   m.diffuse = p * static_cast<float>(finish.diffuse) * opacity;
   m.ambient = p * finish.ambient * opacity;
   m.ambientIsScalar = patterned;  // multiplied by the texture, or the pigment already in it
