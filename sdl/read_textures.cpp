@@ -172,7 +172,9 @@ PovTexture SceneReader::readTexture(TokenStream& in, const PovTexture& start) {
   in.expect("{");
   if (const auto* item = use<TextureItem>(in.peek(), in)) {
     tex = item->texture;
-    tex.name = std::string(in.next().text());
+    // Named after a plain identifier only: an array element's text is the array's name.
+    const Token& id = in.next();
+    tex.name = id.element ? std::string() : std::string(id.text());
   }
   for (;;) {
     const Token t = in.next();
@@ -252,8 +254,8 @@ PovMaterial SceneReader::readMaterial(TokenStream& in) {
   in.expect("{");
   if (const auto* item = use<MaterialItem>(in.peek(), in)) {
     m = item->material;
-    const std::string name(in.next().text());
-    if (m.texture) m.texture->name = name;
+    const Token& id = in.next();
+    if (m.texture) m.texture->name = id.element ? std::string() : std::string(id.text());
   }
   int textures = 0;
   for (;;) {

@@ -403,12 +403,19 @@ box { -1, 1 material { M } }
 box { 2, 3 material { M } interior { ior 1.2 } }
 #default { finish { ambient 0.3 } }
 sphere { y, 1 }
+#declare A = array[2] { texture { pigment { rgb x } }, texture { pigment { rgb y } } }
+sphere { 0, 1 texture { A[0] } }
+sphere { 0, 1 texture { A[1] } }
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
   std::vector<uint32_t> m;
   for (const auto& n : s.root->children) m.push_back(n->material.value_or(99));
-  REQUIRE(m.size() == 8);
+  REQUIRE(m.size() == 10);
+  // Array elements are not named (the token's text is the array's): each its own material
+  // (incdemo/finish.pov's nine textures of an array once came out as the first).
+  CHECK(m[8] != m[9]);
+  CHECK(s.materials.at(m[9]).diffuse.g > 0.5f);
   CHECK(m[0] == m[1]);  // the default texture: one material
   CHECK(m[2] == m[3]);  // T_Red as it is: one material, named after it
   CHECK(s.materials.at(m[2]).id == "T_Red");
