@@ -340,9 +340,10 @@ height_field { gif "x.gif" }
   CHECK(errors[1] ==
         "test.pov:2:9: error: 'parametric' is not supported by Lucent (parametric surfaces; the "
         "nearest Lucent shape is <isosurface>)");
+  // A declared object's refusal is said where it is used, with that place as a note.
   CHECK(errors[2] ==
         "test.pov:4:14: error: 'bicubic_patch' is not supported by Lucent (Bézier patches; the "
-        "nearest Lucent shape is <mesh>)");
+        "nearest Lucent shape is <mesh>)\ntest.pov:4:48: note: the declaration is used here");
   CHECK(errors[3].find("test.pov:5:1: error: 'sphere_sweep' is not supported by Lucent") == 0);
   CHECK(errors[4].find("test.pov:6:1: error: 'ovus' is not supported by Lucent") == 0);
   CHECK(errors[5].find("test.pov:7:1: error: 'polygon' is not supported by Lucent") == 0);
