@@ -262,40 +262,51 @@ class SceneWriter {
     }
   }
 
-  Attributes shapeAttributes(const Node& n) {
+  // The shape's attributes, from its fields through the probe and, for what the entry's
+  // finish() reads itself, from ownShapeText; its children (blob components, an
+  // isosurface's parameters) into `children`.
+  Attributes shapeAttributes(const Node& n, std::vector<OwnShapeChild>& children) {
+    const std::optional<OwnShapeText> own = ownShapeText(*n.shape, n.loc, opt_.folder);
+    if (own) children = own->children;
     return std::visit(
         [&](const auto& spec) {
           using S = std::decay_t<decltype(spec)>;
           const ShapeEntry<S> entry = shapeEntry<S>();
+          auto written = [](const Attributes& a, const std::string& name) {
+            return std::any_of(a.begin(), a.end(), [&](const auto& w) { return w.first == name; });
+          };
           Attributes a;
-          if constexpr (std::is_same_v<S, MeshSpec>) {
-            if (spec.src.empty()) cannotWrite(n.loc, "an inline <mesh> cannot be written yet");
-            // src as written, relative to the file that wrote it.
-            const auto from = std::filesystem::path(n.loc.file).parent_path() / spec.src;
-            a.emplace_back("src", fileReference(from.string(), opt_.folder));
-            static const char* smooth[] = {"auto", "true", "false"};
-            a.emplace_back("smooth", smooth[static_cast<int>(spec.smooth)]);
-            return a;
-          }
           for (const Field<S>& f : entry.fields) {
-            if (!f.read)
+            if (f.read) {
+              for (auto& kv : probed(spec, spec, f.read, n.loc, entry.element, true))
+                a.push_back(kv);
+              continue;
+            }
+            if (!own)
               cannotWrite(n.loc, "the <" + std::string(entry.element) + "> attribute '" +
                                      f.info.name + "' cannot be written yet");
-            for (auto& kv : probed(spec, spec, f.read, n.loc, entry.element, true)) a.push_back(kv);
+            // Optional attributes the parameters do not hold (a mesh's normals) are absent.
+            for (const auto& kv : own->attributes)
+              if (kv.first == f.info.name) a.push_back(kv);
           }
+          if (own)
+            for (const auto& kv : own->attributes)
+              if (!written(a, kv.first)) a.push_back(kv);
           // What an entry's finish() reads itself (child elements, attributes read together)
-          // the fields above do not give back.
+          // must be among what was written.
           if (entry.finish) {
             AttributeProbe rest;
             S copy = spec;
             entry.finish(copy, rest);
             for (const auto& kv : rest.values)
-              if (std::none_of(a.begin(), a.end(),
-                               [&](const auto& w) { return w.first == kv.first; }))
-                rest.unwritable.push_back(kv.first);
-            if (!rest.unwritable.empty())
-              cannotWrite(n.loc, "the <" + std::string(entry.element) + "> attribute or child '" +
-                                     rest.unwritable.front() + "' cannot be written yet");
+              if (!written(a, kv.first)) rest.unwritable.push_back(kv.first);
+            for (const std::string& name : rest.unwritable) {
+              const bool child = own && std::find(own->handled.begin(), own->handled.end(), name) !=
+                                            own->handled.end();
+              if (!child && !written(a, name))
+                cannotWrite(n.loc, "the <" + std::string(entry.element) + "> attribute or child '" +
+                                       name + "' cannot be written yet");
+            }
           }
           return a;
         },
@@ -306,8 +317,9 @@ class SceneWriter {
     Attributes a;
     if (!n.id.empty() && targets_.count(&n)) a.emplace_back("id", n.id);
     std::string element = n.element;
+    std::vector<OwnShapeChild> shapeChildren;
     if (n.kind == NodeKind::Shape) {
-      for (auto& kv : shapeAttributes(n)) a.push_back(kv);
+      for (auto& kv : shapeAttributes(n, shapeChildren)) a.push_back(kv);
     } else if (n.kind == NodeKind::Use) {
       if (!n.target || n.target->id.empty())
         cannotWrite(n.loc, "a <use> whose target has no id cannot be written");
@@ -324,10 +336,15 @@ class SceneWriter {
     const bool inlineMaterial = n.material && !named_.count(*n.material);
     if (n.material && !inlineMaterial) a.emplace_back("material", named_.at(*n.material));
     out_.source(n.loc);
-    const bool empty = !inlineMaterial && n.children.empty();
+    const bool empty = !inlineMaterial && n.children.empty() && shapeChildren.empty();
     out_.open(element, a, empty);
     if (empty) return;
+    // A shape's parameters first: a local <param> is visible in the whole element.
+    for (const OwnShapeChild& c : shapeChildren)
+      if (c.element == "param") out_.open(c.element, c.attributes, true);
     if (inlineMaterial) writeMaterial(scene_.materials.at(*n.material), "");
+    for (const OwnShapeChild& c : shapeChildren)
+      if (c.element != "param") out_.open(c.element, c.attributes, true);
     for (const auto& c : n.children) writeNode(*c);
     out_.close(element);
   }

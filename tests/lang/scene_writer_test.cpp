@@ -1,11 +1,10 @@
 // The scene writer (lang/scene_writer.h): numbers in their shortest exact form, a few
-// elements as written, a written scene read back to the same text, and what it cannot write
-// yet reported at the construct.
+// elements as written, and a written scene read back to the same text (the shapes:
+// scene_writer_shapes_test.cpp).
 #include "../support/scene_text.h"
 
 #include "lang/scene_writer.h"
 #include "lang/xml_numbers.h"
-#include "scenegraph/located_error.h"
 
 #include <catch2/catch.hpp>
 
@@ -143,22 +142,6 @@ TEST_CASE("scene writer: a written scene reads back to the same text", "[lang][s
   REQUIRE(reread.scene);
   CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
   CHECK(contains(first, "<light type=\"area\" position=\"0 5 0\" samples=\"3 2\"/>"));
-}
-
-TEST_CASE("scene writer: what it cannot write yet is an error at the element",
-          "[lang][scene-writer]") {
-  auto scene = parseClean(
-      "\n<blob threshold=\"0.5\"><component type=\"sphere\" center=\"0 0 0\" radius=\"1\" "
-      "strength=\"1\"/></blob>",
-      "writer.xml");
-  try {
-    writeSceneXml(*scene, WriteOptions{});
-    FAIL("no error");
-  } catch (const LocatedError& e) {
-    CHECK(e.loc().line == 2);
-    CHECK(e.message() ==
-          "cannot convert: the <blob> attribute or child '<component>' cannot be written yet");
-  }
 }
 
 TEST_CASE("scene writer: a checker's placement is written and reads back", "[lang][scene-writer]") {
