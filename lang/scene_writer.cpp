@@ -7,9 +7,11 @@
 #include "scene_writer_out.h"
 #include "xml_numbers.h"
 
+#include "primitives/value_limits.h"
 #include "scenegraph/shape_type.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -35,6 +37,18 @@ void XmlOut::close(const std::string& name) {
 
 void cannotWrite(const SourceLoc& loc, const std::string& what) {
   throw LocatedError(loc, "cannot convert: " + what);
+}
+
+std::string transformText(const Mat4& m, const SourceLoc& loc) {
+  // A rotation's rounding can leave such entries (sin(180°) times another rotation's); the
+  // language refuses nonzero numbers below kMinMagnitude, and 0 would not be the same matrix.
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r)
+      if (m[c][r] != 0.0 && std::abs(m[c][r]) < kMinMagnitude)
+        cannotWrite(loc, "the transform's entry " + xmlNumber(m[c][r]) +
+                             " is below the smallest magnitude the scene language reads (" +
+                             xmlNumber(kMinMagnitude) + ")");
+  return xmlMatrix(m);
 }
 
 std::string fileReference(const std::string& resolvedPath, const std::string& folder) {
@@ -135,7 +149,7 @@ class SceneWriter {
     plain.type = c.type;
     Attributes a{{"type", cameraTypeName(c.type)}};
     if (!c.name.empty()) a.emplace_back("name", c.name);
-    if (c.transform != Mat4(1.0)) a.emplace_back("transform", xmlMatrix(c.transform));
+    if (c.transform != Mat4(1.0)) a.emplace_back("transform", transformText(c.transform, c.loc));
     for (const CameraAttribute& attr : cameraAttributes()) {
       if (!attr.read || !attr.takenBy(c.type)) continue;
       if (attr.info.name == "lenses") {  // a list the probe cannot read back
@@ -198,7 +212,7 @@ class SceneWriter {
     const Sky& s = *scene_.sky;
     Attributes a;
     if (s.skyFromWorld != Mat4(1.0))
-      a.emplace_back("transform", xmlMatrix(glm::inverse(s.skyFromWorld)));
+      a.emplace_back("transform", transformText(glm::inverse(s.skyFromWorld), s.loc));
     out_.source(s.loc);
     out_.open("sky", a, false);
     writePatternTexture(s.pattern, s.loc, out_);
@@ -330,7 +344,8 @@ class SceneWriter {
     } else {
       element = nodeKindName(n.kind);
     }
-    if (n.parentFromNode != Mat4(1.0)) a.emplace_back("transform", xmlMatrix(n.parentFromNode));
+    if (n.parentFromNode != Mat4(1.0))
+      a.emplace_back("transform", transformText(n.parentFromNode, n.loc));
     if (!n.shadows) a.emplace_back("shadows", "false");
     if (n.inverse) a.emplace_back("inverse", "true");
     const bool inlineMaterial = n.material && !named_.count(*n.material);

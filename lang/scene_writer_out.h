@@ -29,6 +29,10 @@ class XmlOut {
 // What the writer cannot write: an error at the construct.
 [[noreturn]] void cannotWrite(const SourceLoc& loc, const std::string& what);
 
+// matrix(...) for a transform, or an error at `loc` when an entry is a nonzero number too
+// small for the language to read (primitives/value_limits.h).
+std::string transformText(const Mat4& m, const SourceLoc& loc);
+
 // A file reference as the written scene reads it: relative to the output's folder.
 std::string fileReference(const std::string& resolvedPath, const std::string& folder);
 

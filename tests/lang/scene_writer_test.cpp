@@ -5,6 +5,7 @@
 
 #include "lang/scene_writer.h"
 #include "lang/xml_numbers.h"
+#include "scenegraph/located_error.h"
 
 #include <catch2/catch.hpp>
 
@@ -161,4 +162,20 @@ TEST_CASE("scene writer: a checker's placement is written and reads back", "[lan
   CHECK(c.placement.turbulence == Vec3(0.25));
   CHECK(c.placement.octaves == 3);
   CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+}
+
+TEST_CASE("scene writer: a transform entry too small for the language is an error at the node",
+          "[lang][scene-writer]") {
+  // As two rotations' rounding leaves in an imported POV-Ray scene (sin 180° · sin 90°).
+  auto scene = parseClean("\n<sphere/>", "writer.xml");
+  scene->root->children.front()->parentFromNode[1][0] = -4.5e-32;
+  try {
+    writeSceneXml(*scene, WriteOptions{});
+    FAIL("no error");
+  } catch (const LocatedError& e) {
+    CHECK(e.loc().line == 2);
+    CHECK(e.message() ==
+          "cannot convert: the transform's entry -4.5e-32 is below the smallest magnitude the "
+          "scene language reads (1e-30)");
+  }
 }
