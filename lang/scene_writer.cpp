@@ -8,6 +8,7 @@
 #include "xml_numbers.h"
 
 #include "primitives/value_limits.h"
+#include "scenegraph/shape_registry.h"
 #include "scenegraph/shape_type.h"
 
 #include <algorithm>
@@ -315,9 +316,9 @@ class SceneWriter {
             for (const auto& kv : rest.values)
               if (!written(a, kv.first)) rest.unwritable.push_back(kv.first);
             for (const std::string& name : rest.unwritable) {
-              const bool child = own && std::find(own->handled.begin(), own->handled.end(), name) !=
-                                            own->handled.end();
-              if (!child && !written(a, name))
+              const bool handled = own && std::find(own->handled.begin(), own->handled.end(),
+                                                    name) != own->handled.end();
+              if (!handled && !written(a, name))
                 cannotWrite(n.loc, "the <" + std::string(entry.element) + "> attribute or child '" +
                                        name + "' cannot be written yet");
             }
@@ -333,6 +334,9 @@ class SceneWriter {
     std::string element = n.element;
     std::vector<OwnShapeChild> shapeChildren;
     if (n.kind == NodeKind::Shape) {
+      // The registry's element, not the name the node was read as (a POV-Ray quartic is a
+      // <poly>).
+      element = shapeElementName(*n.shape);
       for (auto& kv : shapeAttributes(n, shapeChildren)) a.push_back(kv);
     } else if (n.kind == NodeKind::Use) {
       if (!n.target || n.target->id.empty())
