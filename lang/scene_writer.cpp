@@ -1,6 +1,7 @@
 // The scene writer: settings, cameras, lights, fog, sky, materials and the node tree. The
-// attributes of shapes, cameras and lights come from their tables through AttributeProbe;
-// a value a table's reader cannot hand back is an error at the construct.
+// attributes of shapes, cameras and lights come from their tables through AttributeProbe,
+// what a shape's entry reads itself from scene_writer_shapes.cpp; a value neither can hand
+// back is an error at the construct.
 #include "scene_writer.h"
 
 #include "attribute_probe.h"
