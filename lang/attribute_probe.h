@@ -4,7 +4,8 @@
 // (`s.*m = in.number(name, s.*m, rule)`), so an input that answers every getter with its
 // default learns, per attribute, the object's value. What a reader asks through a getter
 // that has no default to give back (lists, files, functions, child elements) is recorded as
-// not writable: the writer reports it instead of guessing.
+// not writable: the writer writes it from the parameters itself (a shape's lists, files,
+// function and children: scene_writer_shapes.cpp) or reports it, instead of guessing.
 #pragma once
 
 #include "scenegraph/attribute_input.h"

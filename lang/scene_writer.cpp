@@ -1,15 +1,19 @@
 // The scene writer: settings, cameras, lights, fog, sky, materials and the node tree. The
-// attributes of shapes, cameras and lights come from their tables through AttributeProbe;
-// a value a table's reader cannot hand back is an error at the construct.
+// attributes of shapes, cameras and lights come from their tables through AttributeProbe,
+// what a shape's entry reads itself from scene_writer_shapes.cpp; a value neither can hand
+// back is an error at the construct.
 #include "scene_writer.h"
 
 #include "attribute_probe.h"
 #include "scene_writer_out.h"
 #include "xml_numbers.h"
 
+#include "primitives/value_limits.h"
+#include "scenegraph/shape_registry.h"
 #include "scenegraph/shape_type.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -35,6 +39,18 @@ void XmlOut::close(const std::string& name) {
 
 void cannotWrite(const SourceLoc& loc, const std::string& what) {
   throw LocatedError(loc, "cannot convert: " + what);
+}
+
+std::string transformText(const Mat4& m, const SourceLoc& loc) {
+  // A rotation's rounding can leave such entries (sin(180°) times another rotation's); the
+  // language refuses nonzero numbers below kMinMagnitude, and 0 would not be the same matrix.
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r)
+      if (m[c][r] != 0.0 && std::abs(m[c][r]) < kMinMagnitude)
+        cannotWrite(loc, "the transform's entry " + xmlNumber(m[c][r]) +
+                             " is below the smallest magnitude the scene language reads (" +
+                             xmlNumber(kMinMagnitude) + ")");
+  return xmlMatrix(m);
 }
 
 std::string fileReference(const std::string& resolvedPath, const std::string& folder) {
@@ -135,7 +151,7 @@ class SceneWriter {
     plain.type = c.type;
     Attributes a{{"type", cameraTypeName(c.type)}};
     if (!c.name.empty()) a.emplace_back("name", c.name);
-    if (c.transform != Mat4(1.0)) a.emplace_back("transform", xmlMatrix(c.transform));
+    if (c.transform != Mat4(1.0)) a.emplace_back("transform", transformText(c.transform, c.loc));
     for (const CameraAttribute& attr : cameraAttributes()) {
       if (!attr.read || !attr.takenBy(c.type)) continue;
       if (attr.info.name == "lenses") {  // a list the probe cannot read back
@@ -198,7 +214,7 @@ class SceneWriter {
     const Sky& s = *scene_.sky;
     Attributes a;
     if (s.skyFromWorld != Mat4(1.0))
-      a.emplace_back("transform", xmlMatrix(glm::inverse(s.skyFromWorld)));
+      a.emplace_back("transform", transformText(glm::inverse(s.skyFromWorld), s.loc));
     out_.source(s.loc);
     out_.open("sky", a, false);
     writePatternTexture(s.pattern, s.loc, out_);
@@ -262,40 +278,51 @@ class SceneWriter {
     }
   }
 
-  Attributes shapeAttributes(const Node& n) {
+  // The shape's attributes, from its fields through the probe and, for what the entry's
+  // finish() reads itself, from ownShapeText; its children (blob components, an
+  // isosurface's parameters) into `children`.
+  Attributes shapeAttributes(const Node& n, std::vector<OwnShapeChild>& children) {
+    const std::optional<OwnShapeText> own = ownShapeText(*n.shape, n.loc, opt_.folder);
+    if (own) children = own->children;
     return std::visit(
         [&](const auto& spec) {
           using S = std::decay_t<decltype(spec)>;
           const ShapeEntry<S> entry = shapeEntry<S>();
+          auto written = [](const Attributes& a, const std::string& name) {
+            return std::any_of(a.begin(), a.end(), [&](const auto& w) { return w.first == name; });
+          };
           Attributes a;
-          if constexpr (std::is_same_v<S, MeshSpec>) {
-            if (spec.src.empty()) cannotWrite(n.loc, "an inline <mesh> cannot be written yet");
-            // src as written, relative to the file that wrote it.
-            const auto from = std::filesystem::path(n.loc.file).parent_path() / spec.src;
-            a.emplace_back("src", fileReference(from.string(), opt_.folder));
-            static const char* smooth[] = {"auto", "true", "false"};
-            a.emplace_back("smooth", smooth[static_cast<int>(spec.smooth)]);
-            return a;
-          }
           for (const Field<S>& f : entry.fields) {
-            if (!f.read)
+            if (f.read) {
+              for (auto& kv : probed(spec, spec, f.read, n.loc, entry.element, true))
+                a.push_back(kv);
+              continue;
+            }
+            if (!own)
               cannotWrite(n.loc, "the <" + std::string(entry.element) + "> attribute '" +
                                      f.info.name + "' cannot be written yet");
-            for (auto& kv : probed(spec, spec, f.read, n.loc, entry.element, true)) a.push_back(kv);
+            // Optional attributes the parameters do not hold (a mesh's normals) are absent.
+            for (const auto& kv : own->attributes)
+              if (kv.first == f.info.name) a.push_back(kv);
           }
+          if (own)
+            for (const auto& kv : own->attributes)
+              if (!written(a, kv.first)) a.push_back(kv);
           // What an entry's finish() reads itself (child elements, attributes read together)
-          // the fields above do not give back.
+          // must be among what was written.
           if (entry.finish) {
             AttributeProbe rest;
             S copy = spec;
             entry.finish(copy, rest);
             for (const auto& kv : rest.values)
-              if (std::none_of(a.begin(), a.end(),
-                               [&](const auto& w) { return w.first == kv.first; }))
-                rest.unwritable.push_back(kv.first);
-            if (!rest.unwritable.empty())
-              cannotWrite(n.loc, "the <" + std::string(entry.element) + "> attribute or child '" +
-                                     rest.unwritable.front() + "' cannot be written yet");
+              if (!written(a, kv.first)) rest.unwritable.push_back(kv.first);
+            for (const std::string& name : rest.unwritable) {
+              const bool handled = own && std::find(own->handled.begin(), own->handled.end(),
+                                                    name) != own->handled.end();
+              if (!handled && !written(a, name))
+                cannotWrite(n.loc, "the <" + std::string(entry.element) + "> attribute or child '" +
+                                       name + "' cannot be written yet");
+            }
           }
           return a;
         },
@@ -306,8 +333,12 @@ class SceneWriter {
     Attributes a;
     if (!n.id.empty() && targets_.count(&n)) a.emplace_back("id", n.id);
     std::string element = n.element;
+    std::vector<OwnShapeChild> shapeChildren;
     if (n.kind == NodeKind::Shape) {
-      for (auto& kv : shapeAttributes(n)) a.push_back(kv);
+      // The registry's element, not the name the node was read as (a POV-Ray quartic is a
+      // <poly>).
+      element = shapeElementName(*n.shape);
+      for (auto& kv : shapeAttributes(n, shapeChildren)) a.push_back(kv);
     } else if (n.kind == NodeKind::Use) {
       if (!n.target || n.target->id.empty())
         cannotWrite(n.loc, "a <use> whose target has no id cannot be written");
@@ -318,16 +349,22 @@ class SceneWriter {
     } else {
       element = nodeKindName(n.kind);
     }
-    if (n.parentFromNode != Mat4(1.0)) a.emplace_back("transform", xmlMatrix(n.parentFromNode));
+    if (n.parentFromNode != Mat4(1.0))
+      a.emplace_back("transform", transformText(n.parentFromNode, n.loc));
     if (!n.shadows) a.emplace_back("shadows", "false");
     if (n.inverse) a.emplace_back("inverse", "true");
     const bool inlineMaterial = n.material && !named_.count(*n.material);
     if (n.material && !inlineMaterial) a.emplace_back("material", named_.at(*n.material));
     out_.source(n.loc);
-    const bool empty = !inlineMaterial && n.children.empty();
+    const bool empty = !inlineMaterial && n.children.empty() && shapeChildren.empty();
     out_.open(element, a, empty);
     if (empty) return;
+    // A shape's parameters first: a local <param> is visible in the whole element.
+    for (const OwnShapeChild& c : shapeChildren)
+      if (c.element == "param") out_.open(c.element, c.attributes, true);
     if (inlineMaterial) writeMaterial(scene_.materials.at(*n.material), "");
+    for (const OwnShapeChild& c : shapeChildren)
+      if (c.element != "param") out_.open(c.element, c.attributes, true);
     for (const auto& c : n.children) writeNode(*c);
     out_.close(element);
   }

@@ -5,6 +5,7 @@
 #include "scenegraph/located_error.h"
 #include "scenegraph/scene.h"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +29,10 @@ class XmlOut {
 // What the writer cannot write: an error at the construct.
 [[noreturn]] void cannotWrite(const SourceLoc& loc, const std::string& what);
 
+// matrix(...) for a transform, or an error at `loc` when an entry is a nonzero number too
+// small for the language to read (primitives/value_limits.h).
+std::string transformText(const Mat4& m, const SourceLoc& loc);
+
 // A file reference as the written scene reads it: relative to the output's folder.
 std::string fileReference(const std::string& resolvedPath, const std::string& folder);
 
@@ -37,5 +42,22 @@ std::string fileReference(const std::string& resolvedPath, const std::string& fo
 Attributes materialAttributes(const Material& m);
 void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& folder);
 void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out);
+
+// What a shape entry's finish() reads that the probe cannot learn (scene_writer_shapes.cpp):
+// attributes (lists, texts, files, a function, choices) and child elements (a blob's
+// <component>s, an isosurface's <param>s); handled: what the entry reads that is
+// written as children or left out on purpose, as the probe names it ("<component>", a text's
+// default "font"). nullopt for the shapes the probe learns whole.
+struct OwnShapeChild {
+  std::string element;
+  Attributes attributes;
+};
+struct OwnShapeText {
+  Attributes attributes;
+  std::vector<OwnShapeChild> children;
+  std::vector<std::string> handled;
+};
+std::optional<OwnShapeText> ownShapeText(const ShapeSpec& spec, const SourceLoc& loc,
+                                         const std::string& folder);
 
 }  // namespace lucent

@@ -51,6 +51,16 @@ std::string xmlEscape(const std::string& text) {
       case '"':
         out += "&quot;";
         break;
+      // A reader turns these into spaces in an attribute unless written as references.
+      case '\t':
+        out += "&#9;";
+        break;
+      case '\n':
+        out += "&#10;";
+        break;
+      case '\r':
+        out += "&#13;";
+        break;
       default:
         out += c;
     }

@@ -15,7 +15,8 @@ std::string xmlColor(const Color& c);  // "r g b", each a float's shortest form
 // The matrix as the transform syntax's matrix(...) with its 12 numbers (rows of 4), or ""
 // for the identity.
 std::string xmlMatrix(const Mat4& m);
-// Text for an attribute value between double quotes: & < > " escaped.
+// Text for an attribute value between double quotes: & < > " escaped, and tab, newline and
+// carriage return as character references (which XML would otherwise read as spaces).
 std::string xmlEscape(const std::string& text);
 
 }  // namespace lucent

@@ -6,18 +6,17 @@
 # normalised and a pattern's or sky's transform as its inverse, so the value written is the
 # result of a normalisation or an inversion, which done again may move the last bit.
 #
-# The scenes in NOT_YET hold a construct the writer cannot write yet (an attribute read as a
-# list, a file, a function or child elements, an inline mesh): each must
-# exit with status 2 and an error at the construct's file:line:col, and write no file. A scene
-# that converts while listed there fails the test too, so the list only ever shrinks.
+# The scenes in NOT_YET hold a construct the writer cannot write yet (none now: every shape
+# is written, with its lists, files, function and child elements): each must exit with
+# status 2 and an error at the construct's file:line:col, and write no file. A scene that
+# converts while listed there fails the test too, so the list only ever shrinks.
 # Also: an output in a missing folder or over a folder (status 3), and a failed conversion
-# leaving an existing output as it was.
+# (an invalid scene) leaving an existing output as it was.
 # Usage: bash convert_round_trip.sh <path-to-lucent> <source-dir>
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
 
-NOT_YET="primitives textures blob bump-map csg-mesh height-field isosurface lathe mesh-inline
-  mesh-smooth-silhouette poly prism sor text triangles"
+NOT_YET=""
 NOT_YET=" $(echo $NOT_YET) "
 
 # The scenes are converted beside themselves (in a copy), so that the files they name
@@ -56,7 +55,7 @@ for scene in "$tmp"/examples/*.xml "$tmp"/examples/gallery/*.xml; do
     fail "$name: the twice converted scene renders differently"
   converted=$((converted + 1))
 done
-[ "$converted" -ge 60 ] || fail "only $converted scenes converted"
+[ "$converted" -ge 81 ] || fail "only $converted scenes converted"
 
 # Outputs that cannot be written: status 3, nothing read or written.
 "$lucent" convert "$src/examples/gallery/aa-corners.xml" -o "$tmp/no/such/folder/out.xml" \
@@ -72,22 +71,20 @@ status=$?
 grep -q "'$tmp/adir' is a folder, not an .xml file" "$tmp/dir.err" ||
   fail "output is a folder: unexpected message: $(cat "$tmp/dir.err")"
 
-# A construct not written yet: status 2 at its element, and an existing output kept whole.
-cat > "$tmp/blob.xml" <<'XML'
+# An invalid scene: status 2 at its error, and an existing output kept whole.
+cat > "$tmp/bad.xml" <<'XML'
 <scene version="1">
   <camera position="0 0 5" look-at="0 0 0"/>
-  <blob threshold="0.5">
-    <component type="sphere" center="0 0 0" radius="1" strength="1"/>
-  </blob>
+  <sphere radius="-1"/>
 </scene>
 XML
 echo "previous content" >"$tmp/kept.xml"
-"$lucent" convert "$tmp/blob.xml" -o "$tmp/kept.xml" 2>"$tmp/blob.err"
+"$lucent" convert "$tmp/bad.xml" -o "$tmp/kept.xml" 2>"$tmp/bad.err"
 status=$?
-[ "$status" -eq 2 ] || fail "blob: exit status $status, expected 2"
-grep -q "^$tmp/blob.xml:3:3: error: cannot convert: the <blob> attribute or child '<component>' cannot be written yet$" \
-  "$tmp/blob.err" || fail "blob: unexpected message: $(cat "$tmp/blob.err")"
-[ "$(cat "$tmp/kept.xml")" = "previous content" ] || fail "blob: the existing output was changed"
+[ "$status" -eq 2 ] || fail "invalid scene: exit status $status, expected 2"
+grep -q "^$tmp/bad.xml:3:19: error: <sphere> attribute 'radius': expected a positive number" \
+  "$tmp/bad.err" || fail "invalid scene: unexpected message: $(cat "$tmp/bad.err")"
+[ "$(cat "$tmp/kept.xml")" = "previous content" ] || fail "invalid scene: the existing output was changed"
 
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)" >&2; exit 1; }
 echo "convert_round_trip: $converted scenes converted and rendered byte-identical"

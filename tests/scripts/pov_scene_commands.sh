@@ -2,7 +2,8 @@
 # `lucent check` and `lucent render` read POV-Ray scenes: the extension decides, --format
 # overrides; every unsupported feature is an error at its place (exit 2); the image is
 # POV-Ray's default size unless -w/-h; --skip-unsupported, --pov-library, --pov-ini; a
-# mirrored, non-square camera; `compare SCENE.pov` against POV-Ray on the scene itself.
+# mirrored, non-square camera; `convert` of the shapes the XML writes with lists, children
+# and functions (a quartic as <poly>), rendered to the same bytes; `compare SCENE.pov` against POV-Ray on the scene itself.
 # Usage: bash pov_scene_commands.sh <path-to-lucent> <source-dir>
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
@@ -100,6 +101,37 @@ POV
 "$lucent" convert mirror.pov -o mirror.xml 2>conv.err || fail "convert mirror.pov: $(cat conv.err)"
 grep -q 'mirror="true"' mirror.xml || fail "convert mirror.pov: no mirror in $(grep camera mirror.xml)"
 grep -q 'frame-aspect="1"' mirror.xml || fail "convert mirror.pov: no frame-aspect in $(grep camera mirror.xml)"
+
+# The shapes whose parameters are lists, children or a function convert to a scene that
+# renders to the same bytes; a quartic is written as the <poly> it is.
+cat >shapes.pov <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 2, -6> look_at <0, 0.5, 0> }
+light_source { <-3, 5, -4> color rgb 1 }
+#declare K = 0.1;
+quartic { <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0,
+  0, 0, 0, 1, 0, 0, 0, -0.5> sturm
+  pigment { rgb 1 } translate <-2, 0.5, 0> }
+lathe { cubic_spline 6, <0, 0>, <0.5, 0>, <0.6, 0.5>, <0.3, 1>, <0.4, 1.4>, <0, 1.5>
+  pigment { rgb <1, 0.5, 0.2> } translate <-1, 0, 1> }
+sor { 5, <0, -0.5>, <0.6, 0>, <0.9, 0.4>, <0.4, 1>, <0.5, 1.4> open pigment { rgb 0.7 } }
+prism { conic_sweep linear_spline 0.2, 1, 5, <-0.5, -0.5>, <0.5, -0.5>, <0.5, 0.5>,
+  <-0.5, 0.5>, <-0.5, -0.5> pigment { rgb <0.2, 0.6, 1> } translate <1, 0, 0> }
+blob { threshold 0.5 sphere { <0, 0, 0>, 0.8, 1 } cylinder { <0, 0, 0>, <0, 1, 0>, 0.3, 1 }
+  pigment { rgb <0.4, 1, 0.4> } translate <2, 0, 0> }
+isosurface { function { sqrt(x*x + y*y + z*z) - 0.5 + K*sin(10*x) }
+  contained_by { sphere { 0, 0.8 } } max_gradient 2 pigment { rgb 1 } translate <0, 2, 0> }
+mesh { triangle { <-3, 0, 2>, <3, 0, 2>, <3, 0, 4> } triangle { <-3, 0, 2>, <3, 0, 4>, <-3, 0, 4> }
+  pigment { rgb 0.5 } }
+POV
+"$lucent" convert shapes.pov -o shapes.xml 2>conv.err || fail "convert shapes.pov: $(cat conv.err)"
+grep -q '<poly order="4"' shapes.xml || fail "convert shapes.pov: no <poly> in $(grep -c . shapes.xml) lines"
+"$lucent" render shapes.pov -w 40 -h 30 -q -o shapes.pov.ppm 2>shapes.err ||
+  fail "render shapes.pov: $(cat shapes.err)"
+"$lucent" render shapes.xml -w 40 -h 30 -q -o shapes.xml.ppm 2>shapes.err ||
+  fail "render shapes.xml: $(cat shapes.err)"
+cmp -s shapes.pov.ppm shapes.xml.ppm || fail "convert shapes.pov: the XML renders differently"
 
 # compare SCENE.pov runs POV-Ray on the scene itself.
 if command -v povray >/dev/null; then

@@ -1,0 +1,175 @@
+// The shape attributes and children the table's probe cannot learn (scene_writer.cpp): what
+// an entry's finish() reads as a list, a text, a file, a function or child elements, or
+// through a choice whose default is not the parameters' value. Each is written from the
+// parameters in the syntax docs/scene-language.md gives the element, so that reading the
+// file again makes the same parameters.
+#include "attribute_probe.h"
+#include "scene_writer_out.h"
+#include "xml_numbers.h"
+
+#include "scenegraph/shape_type.h"
+
+#include <filesystem>
+
+namespace lucent {
+
+namespace {
+
+// A text value as an attribute: '$' starts a parameter reference, "$$" is a literal '$'.
+std::string literal(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '$' ? std::string("$$") : std::string(1, c);
+  return out;
+}
+
+template <class List>
+std::string numberList(const List& list) {
+  std::string out;
+  for (double v : list) out += (out.empty() ? "" : " ") + xmlNumber(v);
+  return out;
+}
+
+std::string pairList(const std::vector<Vec2>& points) {
+  std::string out;
+  for (const Vec2& p : points)
+    out += (out.empty() ? "" : " ") + xmlNumber(p.x) + " " + xmlNumber(p.y);
+  return out;
+}
+
+const char* const kSplines[] = {"linear", "quadratic", "cubic", "bezier"};
+
+// The shapes the probe learns whole: no attributes of their own here.
+template <class S>
+std::optional<OwnShapeText> own(const S&, const SourceLoc&, const std::string&) {
+  return std::nullopt;
+}
+
+std::optional<OwnShapeText> own(const TriangleSpec& s, const SourceLoc&, const std::string&) {
+  OwnShapeText t;
+  if (s.normals) {
+    const char* names[] = {"na", "nb", "nc"};
+    for (int i = 0; i < 3; ++i) t.attributes.emplace_back(names[i], xmlVector((*s.normals)[i]));
+  } else {
+    t.handled = {"na", "nb", "nc"};  // a flat triangle has none
+  }
+  return t;
+}
+
+std::optional<OwnShapeText> own(const MeshSpec& s, const SourceLoc& loc,
+                                const std::string& folder) {
+  OwnShapeText t;
+  static const char* smooth[] = {"auto", "true", "false"};
+  if (!s.src.empty()) {
+    // src as written, relative to the file that wrote it.
+    const auto from = std::filesystem::path(loc.file).parent_path() / s.src;
+    t.attributes.emplace_back("src", literal(fileReference(from.string(), folder)));
+  } else {
+    // Inline: the lists as loading left them (triangulated, oriented), which read again
+    // make the same data.
+    if (!s.data) cannotWrite(loc, "a <mesh> without data cannot be written");
+    const MeshData& d = *s.data;
+    std::string positions, indices, normals, uvs;
+    for (const Vec3& p : d.positions) positions += (positions.empty() ? "" : " ") + xmlVector(p);
+    for (const auto& tri : d.triangles)
+      for (uint32_t i : tri) indices += (indices.empty() ? "" : " ") + std::to_string(i);
+    for (const Vec3& n : d.normals) normals += (normals.empty() ? "" : " ") + xmlVector(n);
+    t.attributes.emplace_back("positions", positions);
+    t.attributes.emplace_back("indices", indices);
+    if (!d.normals.empty()) t.attributes.emplace_back("normals", normals);
+    if (!d.uvs.empty()) t.attributes.emplace_back("uvs", pairList(d.uvs));
+  }
+  t.attributes.emplace_back("smooth", smooth[static_cast<int>(s.smooth)]);
+  return t;
+}
+
+std::optional<OwnShapeText> own(const PolySpec& s, const SourceLoc&, const std::string&) {
+  OwnShapeText t;
+  t.attributes = {{"order", std::to_string(s.order)}, {"coefficients", numberList(s.coefficients)}};
+  return t;
+}
+
+std::optional<OwnShapeText> own(const PrismSpec& s, const SourceLoc&, const std::string&) {
+  OwnShapeText t;
+  t.attributes = {{"points", pairList(s.points)},
+                  {"spline", kSplines[static_cast<int>(s.spline)]},
+                  {"sweep", s.conic ? "conic" : "linear"}};
+  return t;
+}
+
+std::optional<OwnShapeText> own(const LatheSpec& s, const SourceLoc&, const std::string&) {
+  OwnShapeText t;
+  t.attributes = {{"points", pairList(s.points)}, {"spline", kSplines[static_cast<int>(s.spline)]}};
+  return t;
+}
+
+std::optional<OwnShapeText> own(const SorSpec& s, const SourceLoc&, const std::string&) {
+  OwnShapeText t;
+  t.attributes = {{"points", pairList(s.points)}};
+  return t;
+}
+
+std::optional<OwnShapeText> own(const BlobSpec& s, const SourceLoc&, const std::string&) {
+  OwnShapeText t;
+  for (const BlobComponent& c : s.components) {
+    Attributes a;
+    if (c.kind == BlobComponent::Sphere) {
+      a = {{"type", "sphere"}, {"center", xmlVector(c.a)}};
+    } else {
+      a = {{"type", "cylinder"}, {"base", xmlVector(c.a)}, {"cap", xmlVector(c.b)}};
+    }
+    a.emplace_back("radius", xmlNumber(c.radius));
+    a.emplace_back("strength", xmlNumber(c.strength));
+    t.children.push_back({"component", std::move(a)});
+  }
+  t.handled.push_back("<component>");
+  return t;
+}
+
+// The function as read, its names other than x, y and z as local <param>s of the shape
+// (the language's way of giving them), each the number it stood for.
+std::optional<OwnShapeText> own(const IsosurfaceSpec& s, const SourceLoc&, const std::string&) {
+  OwnShapeText t;
+  for (const auto& [name, value] : s.constants)
+    t.children.push_back({"param", {{"name", name}, {"value", xmlNumber(value)}}});
+  t.attributes.emplace_back("function", literal(s.function));
+  const IsosurfaceContainer& c = s.container;
+  if (c.kind == IsosurfaceContainer::Sphere) {
+    t.attributes.emplace_back("container", "sphere");
+    t.attributes.emplace_back("center", xmlVector(c.center));
+    t.attributes.emplace_back("radius", xmlNumber(c.radius));
+    t.handled = {"min", "max"};  // a box container's, refused beside a sphere
+  } else {
+    t.attributes.emplace_back("container", "box");
+    t.attributes.emplace_back("min", xmlVector(c.min));
+    t.attributes.emplace_back("max", xmlVector(c.max));
+    t.handled = {"center", "radius"};  // a sphere container's
+  }
+  return t;
+}
+
+std::optional<OwnShapeText> own(const TextSpec& s, const SourceLoc&, const std::string& folder) {
+  OwnShapeText t;
+  t.attributes.emplace_back("string", literal(s.string));
+  // The default font is no file of the scene's: left out, so that it stays the default.
+  if (!s.font.empty())
+    t.attributes.emplace_back("font", literal(fileReference(s.fontPath, folder)));
+  t.handled.push_back("font");
+  t.attributes.emplace_back("offset", xmlNumber(s.offset.x) + " " + xmlNumber(s.offset.y));
+  return t;
+}
+
+std::optional<OwnShapeText> own(const HeightFieldSpec& s, const SourceLoc&,
+                                const std::string& folder) {
+  OwnShapeText t;
+  t.attributes.emplace_back("src", literal(fileReference(s.path, folder)));
+  return t;
+}
+
+}  // namespace
+
+std::optional<OwnShapeText> ownShapeText(const ShapeSpec& spec, const SourceLoc& loc,
+                                         const std::string& folder) {
+  return std::visit([&](const auto& s) { return own(s, loc, folder); }, spec);
+}
+
+}  // namespace lucent
