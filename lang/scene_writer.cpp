@@ -42,15 +42,29 @@ void cannotWrite(const SourceLoc& loc, const std::string& what) {
 }
 
 std::string transformText(const Mat4& m, const SourceLoc& loc) {
-  // A rotation's rounding can leave such entries (sin(180°) times another rotation's); the
-  // language refuses nonzero numbers below kMinMagnitude, and 0 would not be the same matrix.
+  // A rotation's rounding can leave such entries (sin(180°) times another rotation's:
+  // -4.5e-32 beside entries near 1). The language refuses nonzero numbers below
+  // kMinMagnitude; an entry that small beside the matrix's largest (below 1e-16 of it,
+  // under the rounding of every product it enters) is written as 0, which changes no
+  // computed bit that matters. A matrix whose entries are all that small (a scale of 1e-35)
+  // is refused: 0 would make it singular.
+  double largest = 0.0;
   for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 3; ++r)
-      if (m[c][r] != 0.0 && std::abs(m[c][r]) < kMinMagnitude)
-        cannotWrite(loc, "the transform's entry " + xmlNumber(m[c][r]) +
-                             " is below the smallest magnitude the scene language reads (" +
-                             xmlNumber(kMinMagnitude) + ")");
-  return xmlMatrix(m);
+    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(m[c][r]));
+  Mat4 written = m;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r) {
+      const double v = m[c][r];
+      if (v == 0.0 || std::abs(v) >= kMinMagnitude) continue;
+      if (std::abs(v) < 1e-16 * largest) {
+        written[c][r] = 0.0;
+        continue;
+      }
+      cannotWrite(loc, "the transform's entry " + xmlNumber(v) +
+                           " is below the smallest magnitude the scene language reads (" +
+                           xmlNumber(kMinMagnitude) + ")");
+    }
+  return xmlMatrix(written);
 }
 
 std::string fileReference(const std::string& resolvedPath, const std::string& folder) {

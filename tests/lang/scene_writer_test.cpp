@@ -164,18 +164,29 @@ TEST_CASE("scene writer: a checker's placement is written and reads back", "[lan
   CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
 }
 
-TEST_CASE("scene writer: a transform entry too small for the language is an error at the node",
+TEST_CASE("scene writer: a rounding residue in a transform is written as 0, a tiny scale refused",
           "[lang][scene-writer]") {
-  // As two rotations' rounding leaves in an imported POV-Ray scene (sin 180° · sin 90°).
+  // As two rotations' rounding leaves in an imported POV-Ray scene (sin 180° · sin 90°):
+  // beside entries near 1, -4.5e-32 is written as 0 (the language reads nothing that small).
   auto scene = parseClean("\n<sphere/>", "writer.xml");
   scene->root->children.front()->parentFromNode[1][0] = -4.5e-32;
+  const std::string xml = writeSceneXml(*scene, WriteOptions{});
+  INFO(xml);
+  CHECK(xml.find("e-32") == std::string::npos);
+  auto reread = parseSceneString(xml, "writer.xml");
+  REQUIRE(reread.scene);
+  CHECK(reread.scene->root->children.front()->parentFromNode == Mat4(1.0));
+  // A matrix of such entries alone (a scale of 1e-35) cannot be: 0 would be singular.
+  Mat4 tiny(1e-35);
+  tiny[3][3] = 1.0;
+  scene->root->children.front()->parentFromNode = tiny;
   try {
     writeSceneXml(*scene, WriteOptions{});
     FAIL("no error");
   } catch (const LocatedError& e) {
     CHECK(e.loc().line == 2);
     CHECK(e.message() ==
-          "cannot convert: the transform's entry -4.5e-32 is below the smallest magnitude the "
+          "cannot convert: the transform's entry 1e-35 is below the smallest magnitude the "
           "scene language reads (1e-30)");
   }
 }
