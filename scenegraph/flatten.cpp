@@ -106,15 +106,26 @@ struct Builder {
     else addPlain(node, parentWorld, inherited, castsAbove, inSolid, out);
   }
 
+  // The node's shape. A shape's own constructor refuses degenerate parameters (a cylinder
+  // whose cap is its base) with std::invalid_argument; the parsers refuse them first, but a
+  // scene made otherwise (the POV-Ray importer) is refused here, at the node.
+  std::shared_ptr<const Shape> made(const Node& node) {
+    try {
+      return makeShape(*node.shape);
+    } catch (const std::invalid_argument& e) {
+      throw LocatedError(node.loc, e.what());
+    }
+  }
+
   // A leaf: its Instance, tagged with its index in `leaves`.
   Part addLeaf(const Node& node, const Transform& world, uint32_t material, bool casts) {
     std::shared_ptr<const Shape> shape;
     if (share) {
       auto& shared = shapes[&node];
-      if (!shared) shared = makeShape(*node.shape);
+      if (!shared) shared = made(node);
       shape = shared;
     } else {
-      shape = makeShape(*node.shape);
+      shape = made(node);
     }
     const auto index = static_cast<uint32_t>(leaves.size());
     auto inst = std::make_unique<Instance>(std::move(shape), world, index, node.shape->index());

@@ -63,6 +63,16 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
     while (isObjectKeyword(in.peek())) {
       const Token child = in.next();
       o.children.push_back(readObject(child, in));
+      // Objects built of declared objects grow without reading deeper (a loop that puts the
+      // last union in the next): their depth and size are bounded as they are composed.
+      const PovObject& c = o.children.back();
+      o.depth = std::max(o.depth, c.depth + 1);
+      o.nodes += c.nodes;
+      if (o.depth > kMaxObjectDepth)
+        in.error(child, "objects nested more than " + std::to_string(kMaxObjectDepth) + " deep");
+      if (o.nodes > kMaxObjectNodes)
+        in.error(child, "an object of more than " + std::to_string(kMaxObjectNodes) +
+                            " objects (the limit of one object's size)");
     }
   } else {
     readShape(o, in);

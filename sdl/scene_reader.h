@@ -67,6 +67,8 @@ struct PovObject {
   std::optional<PovInterior> interior;
   bool noShadow = false;
   bool inverse = false;
+  int depth = 1;       // levels of objects, this one included
+  uint64_t nodes = 1;  // objects within, this one included
 };
 
 // The items the reader makes, for #declare and for identifiers in blocks. Each keeps the
@@ -282,7 +284,12 @@ class SceneReader : public ItemReader {
   // The objects built for trace() and the like, each with its item (few in a scene: a
   // search of this list is fast enough).
   std::vector<std::pair<ItemPtr, std::shared_ptr<const ObjectGeometry>>> built_;
-  static constexpr int kMaxObjectDepth = 1000;
+  // Each level takes several frames of the C++ stack (more under the sanitizers, which the
+  // fuzzer found overflowing at 1000 through #declare inside skipped blocks); POV-Ray's own
+  // macro depth is 100.
+  static constexpr int kMaxObjectDepth = 256;
+  // Shapes, CSG and lights within one object (a scene may hold many such objects).
+  static constexpr uint64_t kMaxObjectNodes = 10'000'000;
 };
 
 // What loading a POV-Ray scene gives: the scene, or null with the errors; warnings go to

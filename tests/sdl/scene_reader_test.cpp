@@ -347,10 +347,10 @@ TEST_CASE(
         "nearest Lucent feature is <fog>)\ntest.pov:4:1: note: in macro 'Glow' called here");
   CHECK(errors[1].find("test.pov:5:1: note: in macro 'Glow' called here") != std::string::npos);
   std::string deep;
-  for (int i = 0; i < 1001; ++i) deep += "union { ";
+  for (int i = 0; i < 257; ++i) deep += "union { ";
   const auto nested = errorsOf(deep);
   REQUIRE(nested.size() == 1);
-  CHECK(nested[0] == "test.pov:1:8001: error: objects nested more than 1000 deep");
+  CHECK(nested[0] == "test.pov:1:2049: error: objects nested more than 256 deep");
 }
 
 TEST_CASE("scene reader: trace(), inside(), min_extent() and max_extent() as POV-Ray gives them",
