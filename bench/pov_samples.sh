@@ -136,7 +136,7 @@ while IFS= read -r pov; do
         # output), neither with its process's start.
         importS="" parseS=""
         for run in 1 2 3; do
-          cpu=$("$lucent" check "${args[@]}" "${checkFrame[@]}" "$name" 2>/dev/null |
+          cpu=$("$lucent" check --stats "${args[@]}" "${checkFrame[@]}" "$name" 2>/dev/null |
             sed -n 's/^read in: \([0-9.]*\) s.*/\1/p')
           [ -n "$cpu" ] && { [ -z "$importS" ] || awk -v a="$cpu" -v b="$importS" 'BEGIN{exit !(a < b)}'; } && importS=$cpu
           povArgs=(+I"$name" +W8 +H8 -D -F +GS -V)

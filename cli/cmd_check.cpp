@@ -52,8 +52,9 @@ int runCheck(const CheckOptions& options, const CommonOptions& common) {
   const Animation animation = loaded.scene->animation;
   const bool oneMoment = picksOneMoment(common);
   std::string summary = sceneSummary(*loaded.scene);
-  summary += fmt::format("read in: {:.4f} s of CPU time{}\n", readSeconds,
-                         animation.present ? " (the first frame)" : "");
+  if (options.stats)
+    summary += fmt::format("read in: {:.4f} s of CPU time{}\n", readSeconds,
+                           animation.present ? " (the first frame)" : "");
   if (animation.present) summary += animationSummary(*loaded.scene, oneMoment);
   if (animation.present && !oneMoment) {
     loaded = {};  // one frame in memory at a time

@@ -78,6 +78,7 @@ struct CheckOptions {
   std::string scene;
   std::optional<int> width, height, samples, maxDepth;
   std::string camera;
+  bool stats = false;  // --stats: the CPU time of reading the scene, after the summary
 };
 int runCheck(const CheckOptions& options, const CommonOptions& common);
 // The XML Schema of the scene language, to stdout or to `output`.

@@ -72,6 +72,9 @@ void addCheck(CLI::App& app, Commands& c) {
   cmd->add_option("-s,--samples", check.samples, "Samples per pixel (as render -s)");
   cmd->add_option("--max-depth", check.maxDepth, "Maximum recursion depth (as render)");
   cmd->add_option("--camera", check.camera, "Validate the camera with this name");
+  cmd->add_flag("--stats", check.stats,
+                "Also print the CPU time of reading the scene (parsing or evaluating it, "
+                "building and checking it)");
   addCommonOptions(cmd, c.defines, c.allowPaths);
   addPovOptions(cmd, c.pov);
 }
