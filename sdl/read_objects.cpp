@@ -104,13 +104,7 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
       // A texture { } on an object that has one (from any block) is a layer over it.
       keepError(in, t.loc(), kLayeredTextures);
       in.expect("{");
-      int depth = 1;
-      while (depth > 0) {
-        const Token& b = in.next();
-        if (b.kind == TokenKind::End) in.error(b, "the texture block is not closed");
-        if (b.is("{")) ++depth;
-        if (b.is("}")) --depth;
-      }
+      skipToClose(in, 1);
       return true;
     }
     if (!o.texture) {
@@ -174,13 +168,7 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
   } else if (w == "bounded_by") {
     // Only a speed-up in POV-Ray (Lucent bounds its objects itself): skipped.
     in.expect("{");
-    int depth = 1;
-    while (depth > 0) {
-      const Token& b = in.next();
-      if (b.kind == TokenKind::End) in.error(b, "the bounded_by block is not closed");
-      if (b.is("{")) ++depth;
-      if (b.is("}")) --depth;
-    }
+    skipToClose(in, 1);
   } else {
     return false;
   }

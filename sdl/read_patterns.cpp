@@ -119,12 +119,7 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
         // The list's entries skipped, each a block; the pigment's own '}' is left to it.
         for (;;) {
           in.expect("{");
-          for (int depth = 1; depth > 0;) {
-            const Token& k = in.next();
-            if (k.kind == TokenKind::End) in.error(k, "the block is not closed ('}' expected)");
-            if (k.is("{")) ++depth;
-            if (k.is("}")) --depth;
-          }
+          skipToClose(in, 1);
           in.allow(",");
           if (!isListEntry(in.peek())) break;
           in.next();
@@ -335,13 +330,7 @@ bool SceneReader::readWarp(const Token& t, TokenStream& in, PatternPlacement* pl
               "'warp { " + std::string(kind.text()) +
                   " }' is not supported by Lucent (warps; the nearest Lucent feature is a "
                   "pattern's turbulence)");
-    int depth = 1;
-    while (depth > 0) {
-      const Token& b = in.next();
-      if (b.kind == TokenKind::End) in.error(b, "the warp block is not closed");
-      if (b.is("{")) ++depth;
-      if (b.is("}")) --depth;
-    }
+    skipToClose(in, 1);
     return true;
   }
   PatternPlacement warp;

@@ -393,15 +393,7 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
                  "a texture on a blob component is not supported by Lucent (its blob has one "
                  "material; give the texture to the whole blob)");
           refused = true;
-          if (in.peek().is("{")) {
-            in.next();
-            for (int depth = 1; depth > 0;) {
-              const Token& b = in.next();
-              if (b.kind == TokenKind::End) in.error(b, "the block is not closed ('}' expected)");
-              if (b.is("{")) ++depth;
-              if (b.is("}")) --depth;
-            }
-          }
+          skipBlock(in);
           continue;
         }
         in.error(mod, "unexpected " + mod.describe() + " in a blob component");
@@ -734,15 +726,7 @@ bool SceneReader::readMeshTriangleExtras(PovObject& o, TokenStream& in,
              "a texture on a mesh triangle is not supported by Lucent (its mesh has one "
              "material; give the texture to the whole mesh)");
       ok = false;
-      if (in.peek().is("{")) {
-        in.next();
-        for (int depth = 1; depth > 0;) {
-          const Token& b = in.next();
-          if (b.kind == TokenKind::End) in.error(b, "the block is not closed ('}' expected)");
-          if (b.is("{")) ++depth;
-          if (b.is("}")) --depth;
-        }
-      }
+      skipBlock(in);
     } else {
       in.error(t, "unexpected " + t.describe() + " in a mesh triangle");
     }

@@ -32,6 +32,24 @@ inline bool isColourStart(const Token& t) {
   return startsNumber(t);
 }
 
+// Reads the tokens up to the brace that closes the block `depth` levels out (the opening
+// braces already read), nested blocks included.
+inline void skipToClose(TokenStream& in, int depth) {
+  while (depth > 0) {
+    const Token& t = in.next();
+    if (t.kind == TokenKind::End) in.error(t, "the block is not closed ('}' expected)");
+    if (t.is("{")) ++depth;
+    if (t.is("}")) --depth;
+  }
+}
+
+// A `{ ... }` block that comes next, read whole; nothing when none comes.
+inline void skipBlock(TokenStream& in) {
+  if (!in.peek().is("{")) return;
+  in.next();
+  skipToClose(in, 1);
+}
+
 // The item an identifier token names, or null.
 inline const Item* itemOf(const Token& t) {
   if (t.kind != TokenKind::Identifier) return nullptr;

@@ -52,19 +52,7 @@ const char* const kLayeredTextures =
     "layered textures are not supported by Lucent (one texture per material; a second "
     "texture { } is a layer over the first)";
 
-namespace {
-
-// Skips tokens to the brace that closes the block `depth` levels out.
-void skipToClose(TokenStream& in, int depth) {
-  while (depth > 0) {
-    const Token& t = in.next();
-    if (t.kind == TokenKind::End) in.error(t, "the block is not closed ('}' expected)");
-    if (t.is("{")) ++depth;
-    if (t.is("}")) --depth;
-  }
-}
-
-}  // namespace
+namespace {}  // namespace
 
 void SceneReader::keepError(TokenStream& in, const SourceLoc& at, const std::string& message) {
   // The core adds the macro and include chain that led here as notes.

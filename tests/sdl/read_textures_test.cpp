@@ -4,6 +4,7 @@
 // where, including refusals inside declarations that are reported only when used.
 #include <catch2/catch.hpp>
 
+#include "scene_read_support.h"
 #include "sdl_test_support.h"
 
 #include "sdl/scene_reader.h"
@@ -17,29 +18,8 @@ using namespace lucent::sdl;
 
 namespace {
 
-struct Read {
-  SceneLoad load;
-  CollectedOutput out;
-};
-
-std::unique_ptr<Read> readScene(const std::string& text) {
-  auto r = std::make_unique<Read>();
-  Options options;
-  options.imageWidth = 160;
-  options.imageHeight = 120;
-  options.output = &r->out;
-  r->load = loadSceneText("test.pov", text, sdltest::dataFolder(), options);
-  for (const Diagnostic& d : r->load.diagnostics.all()) UNSCOPED_INFO(d.str());
-  return r;
-}
-
-std::vector<std::string> errorsOf(const std::string& text) {
-  auto r = readScene(text);
-  CHECK(!r->load.scene);
-  std::vector<std::string> errors;
-  for (const Diagnostic& d : r->load.diagnostics.all()) errors.push_back(d.str());
-  return errors;
-}
+using sdltest::errorsOf;
+using sdltest::readScene;
 
 const Material& materialOf(const Scene& scene, const Node& n) {
   REQUIRE(n.material);

@@ -2,6 +2,7 @@
 // field against the pov_* mappings, and the unsupported features listed, every one.
 #include <catch2/catch.hpp>
 
+#include "scene_read_support.h"
 #include "sdl_test_support.h"
 
 #include "sdl/console_text.h"
@@ -16,29 +17,8 @@ using namespace lucent::sdl;
 
 namespace {
 
-struct Read {
-  SceneLoad load;
-  CollectedOutput out;
-};
-
-std::unique_ptr<Read> readScene(const std::string& text) {
-  auto r = std::make_unique<Read>();
-  Options options;
-  options.imageWidth = 160;
-  options.imageHeight = 120;
-  options.output = &r->out;
-  r->load = loadSceneText("test.pov", text, sdltest::dataFolder(), options);
-  for (const Diagnostic& d : r->load.diagnostics.all()) UNSCOPED_INFO(d.str());
-  return r;
-}
-
-std::vector<std::string> errorsOf(const std::string& text) {
-  auto r = readScene(text);
-  CHECK(!r->load.scene);
-  std::vector<std::string> errors;
-  for (const Diagnostic& d : r->load.diagnostics.all()) errors.push_back(d.str());
-  return errors;
-}
+using sdltest::errorsOf;
+using sdltest::readScene;
 
 const Node& topNode(const Scene& scene, size_t i) {
   REQUIRE(scene.root->children.size() > i);
@@ -54,14 +34,8 @@ void checkColor(const Color& got, const Color& want) {
   for (int c = 0; c < 3; ++c) CHECK(got[c] == Approx(want[c]).margin(1e-6));
 }
 
-void checkVec(const Vec3& got, const Vec3& want) {
-  for (int c = 0; c < 3; ++c) CHECK(got[c] == Approx(want[c]).margin(1e-12));
-}
-
-void checkMat(const Mat4& got, const Mat4& want) {
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) CHECK(got[i][j] == Approx(want[i][j]).margin(1e-12));
-}
+using sdltest::checkMat;
+using sdltest::checkVec;
 
 }  // namespace
 
