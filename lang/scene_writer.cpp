@@ -168,6 +168,12 @@ class SceneWriter {
     if (c.transform != Mat4(1.0)) a.emplace_back("transform", transformText(c.transform, c.loc));
     for (const CameraAttribute& attr : cameraAttributes()) {
       if (!attr.read || !attr.takenBy(c.type)) continue;
+      if (attr.info.name == "image-plane") {  // a list the probe cannot read back
+        if (c.imagePlane)
+          a.emplace_back("image-plane",
+                         xmlVector(c.imagePlane->right) + " " + xmlVector(c.imagePlane->up));
+        continue;
+      }
       if (attr.info.name == "lenses") {  // a list the probe cannot read back
         if (c.lensesX != plain.lensesX || c.lensesY != plain.lensesY)
           a.emplace_back("lenses", std::to_string(c.lensesX) + " " + std::to_string(c.lensesY));

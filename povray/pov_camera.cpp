@@ -63,6 +63,26 @@ std::string exportableTypes() {
   return list;
 }
 
+// A camera whose image-plane is not a rectangle: POV-Ray's direction, right and up as
+// world vectors, without look_at (which would make them perpendicular). POV-Ray's rays,
+// direction + x·right + y·up (orthographic: from location + x·right + y·up), are the
+// renderer's: its frame is forward, right = forward × sky (mirrored if asked), up =
+// right × forward.
+void writeImagePlane(const Camera& camera, const PovCameraFrame& frame, PovWriter& out) {
+  const Vec3 forward = glm::normalize(frame.lookAt - frame.location);
+  Vec3 right = glm::normalize(glm::cross(forward, frame.sky));
+  const Vec3 up = glm::cross(right, forward);
+  if (camera.mirror) right = -right;
+  const auto world = [&](const Vec3& v) { return v.x * right + v.y * up + v.z * forward; };
+  out.open("camera");
+  out.line(cameraTypeInfo(camera.type).pov.keyword);
+  out.line("location " + povVector(frame.location));
+  out.line("direction " + povVector(forward));
+  out.line("right " + povVector(world(camera.imagePlane->right)));
+  out.line("up " + povVector(world(camera.imagePlane->up)));
+  out.close();
+}
+
 }  // namespace
 
 void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& out,
@@ -84,6 +104,10 @@ void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& 
     issues.error(camera.loc, fmt::format("<camera type=\"{}\">: POV-Ray has no equivalent "
                                          "camera ({} can be exported)",
                                          type.name, exportableTypes()));
+    return;
+  }
+  if (camera.imagePlane) {
+    writeImagePlane(camera, frame, out);
     return;
   }
   CameraLines lines(camera, render, issues);

@@ -36,13 +36,18 @@ PinholeProjection::PinholeProjection(const CameraFrame& frame, const Camera& cam
   double w = 0.0, h = 0.0;
   frameProportions(camera, width, height, w, h);
   imagePlaneHalfExtents(camera.fov, camera.fovAxis, w, h, halfWidth_, halfHeight_);
+  if (camera.imagePlane) {
+    halfRight_ = 0.5 * camera.imagePlane->right;
+    halfUp_ = 0.5 * camera.imagePlane->up;
+  }
 }
 
 bool PinholeProjection::generateRay(const Vec2& film, const Vec2&, Ray& ray) const {
   // Screen coordinates in [-1, 1], +y up (film y grows downwards: row 0 is the top).
   double sx = 2.0 * film.x / width_ - 1.0;
   double sy = 1.0 - 2.0 * film.y / height_;
-  Vec3 local(sx * halfWidth_, sy * halfHeight_, 1.0);
+  const Vec3 local = halfRight_ ? Vec3(0.0, 0.0, 1.0) + sx * *halfRight_ + sy * *halfUp_
+                                : Vec3(sx * halfWidth_, sy * halfHeight_, 1.0);
   ray = primaryRay(frame_.origin, glm::normalize(frame_.toWorld(local)));
   return true;
 }

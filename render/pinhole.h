@@ -3,11 +3,14 @@
 
 #include "projection.h"
 
+#include <optional>
+
 namespace lucent {
 
 // The image plane sits at distance 1 along the view direction; `fov` spans its full width
 // (fov-axis horizontal, the default), height (vertical) or diagonal. The other extents
-// follow from the image's aspect ratio, so pixels are square.
+// follow from the image's aspect ratio, so pixels are square. A camera's image-plane gives
+// the plane's half extents as vectors instead, for a frame that is not a rectangle.
 class PinholeProjection final : public Projection {
  public:
   PinholeProjection(const CameraFrame& frame, const Camera& camera, int width, int height);
@@ -19,6 +22,7 @@ class PinholeProjection final : public Projection {
 
  private:
   double halfWidth_, halfHeight_;
+  std::optional<Vec3> halfRight_, halfUp_;  // image-plane / 2, camera space
 };
 
 // Half extents at distance 1 of an image of width x height whose `fov` (degrees) spans

@@ -319,6 +319,35 @@ void readLenses(Camera& c, AttributeInput& in) {
   }
 }
 
+// Six numbers: the image's right and up vectors in camera space. They replace what frames
+// the image otherwise, and must span a plane the view direction crosses.
+void readImagePlane(Camera& c, AttributeInput& in) {
+  auto list = in.numbers("image-plane");
+  if (!list) return;
+  if (list->size() != 6) {
+    in.attrError("image-plane",
+                 "expected 6 numbers (right x y z, up x y z), got " + std::to_string(list->size()));
+    return;
+  }
+  for (const char* other : {"fov", "fov-axis", "frame-aspect", "width"})
+    if (in.has(other)) {
+      in.attrError("image-plane",
+                   std::string("'image-plane' replaces '") + other + "': give one of them");
+      return;
+    }
+  const std::vector<double>& v = *list;
+  const Camera::ImagePlane plane{Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5])};
+  // (right × up)·forward: zero when the vectors are parallel or the plane holds the view.
+  const double crossing = glm::cross(plane.right, plane.up).z;
+  if (!(std::abs(crossing) > 1e-12 * glm::length(plane.right) * glm::length(plane.up))) {
+    in.attrError("image-plane",
+                 "right and up must be non-zero, not parallel, and span a plane the view "
+                 "direction (0 0 1) crosses");
+    return;
+  }
+  c.imagePlane = plane;
+}
+
 std::vector<std::string_view> typeNames() {
   std::vector<std::string_view> names;
   for (const CameraTypeInfo& t : cameraTypes()) names.push_back(t.name);
@@ -431,6 +460,13 @@ const std::vector<CameraAttribute>& cameraAttributes() {
                         NumberRule::between(0.0, 1.0, "a number from 0 to 1"), {T::Panini},
                         "panini: vertical compression in 0..1. Default 0."),
                  "unitInterval"),
+      entry("image-plane", AttrType::NumberList, "", {T::Pinhole, T::Orthographic}, readImagePlane,
+            "pinhole, orthographic: \"rx ry rz ux uy uz\", the image's full width (right) and "
+            "height (up) as camera-space vectors (x right, y up, z forward): the ray through "
+            "image point (s, t), each -1/2 to 1/2, goes along (0 0 1) + s*right + t*up "
+            "(orthographic: from position + s*right + t*up along the view). A frame that need "
+            "not be a rectangle (POV-Ray's right, up and direction when not perpendicular); "
+            "replaces fov, fov-axis, frame-aspect and width."),
       schemaType(entry("lenses", AttrType::IntegerList, "", {T::Lenslet}, readLenses,
                        "lenslet: \"nx ny\", the grid of lenslets (one pinhole sub-image each), "
                        "each 1 to 4096. Default 4 4."),

@@ -55,6 +55,16 @@ struct Camera {
   // The image mirrored left to right (POV-Ray's `right` on the other side: `right -x` in
   // its left-handed space).
   bool mirror = false;
+  // Pinhole and orthographic: the image's full width and height as vectors in camera space
+  // (x right, y up, z forward at distance 1), for a frame that need not be a rectangle
+  // (POV-Ray's right, up and direction when they are not perpendicular). The ray through
+  // the image point (s, t), each from -1/2 to 1/2 (left to right, bottom to top), goes along
+  // (0, 0, 1) + s·right + t·up (pinhole), or from position + s·right + t·up along forward
+  // (orthographic). It replaces fov, fov-axis, frame-aspect and width.
+  struct ImagePlane {
+    Vec3 right, up;
+  };
+  std::optional<ImagePlane> imagePlane;
 
   // thin-lens
   double focalLength = 0.05;  // metres (world units)

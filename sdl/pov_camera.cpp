@@ -134,18 +134,47 @@ const char* povTypeName(PovCameraType t) {
   return "?";
 }
 
+bool perpendicular(const Vec3& d, const Vec3& u, const Vec3& r) {
+  return std::abs(glm::dot(d, u)) <= 1e-9 && std::abs(glm::dot(d, r)) <= 1e-9 &&
+         std::abs(glm::dot(u, r)) <= 1e-9;
+}
+
+// Direction, up and right that are not perpendicular, for the types whose rays are
+// direction + x·right + y·up (perspective; orthographic from location + x·right + y·up):
+// the camera's image-plane, POV-Ray's right and up in the orthonormal frame Lucent builds
+// from the direction and up (right = forward x up), over |direction| for perspective.
+void skewedPlane(const PovCameraVectors& v, Camera& camera) {
+  const Vec3 d = lucentFromPov(v.direction), u = lucentFromPov(v.up), r = lucentFromPov(v.right);
+  const Vec3 forward = glm::normalize(d);
+  const Vec3 right = glm::normalize(glm::cross(forward, u));
+  const Vec3 up = glm::cross(right, forward);
+  const double scale = camera.type == CameraType::Pinhole ? 1.0 / glm::length(d) : 1.0;
+  const auto local = [&](const Vec3& w) {
+    return scale * Vec3(glm::dot(w, right), glm::dot(w, up), glm::dot(w, forward));
+  };
+  camera.imagePlane = Camera::ImagePlane{local(r), local(u)};
+  // What the plane replaces goes back to its default (a scene written out gives only it).
+  const Camera plain;
+  camera.mirror = false;  // the sign of right is in the plane's vector
+  camera.frameAspect = plain.frameAspect;
+  camera.fov = plain.fov;
+  camera.fovAxis = plain.fovAxis;
+  camera.width = plain.width;
+}
+
 // The frame in Lucent's space: position, the unit view direction and up. Lucent builds an
 // orthonormal, right-handed frame from them (right = forward x up); what of POV-Ray's
-// vectors that cannot hold is said.
-void placeFrame(const PovCameraVectors& v, Camera& camera, std::vector<std::string>& notes) {
+// vectors that cannot hold is said (vectors that are not perpendicular make a skewed
+// image, which only `skewable` types reproduce, by skewedPlane).
+void placeFrame(const PovCameraVectors& v, Camera& camera, std::vector<std::string>& notes,
+                bool skewable = false) {
   const Vec3 location = lucentFromPov(v.location), direction = lucentFromPov(v.direction),
              up = lucentFromPov(v.up), right = lucentFromPov(v.right);
   camera.position = location;
   camera.lookAt = location + glm::normalize(direction);
   camera.up = up;
   const Vec3 d = glm::normalize(direction), u = glm::normalize(up), r = glm::normalize(right);
-  if (std::abs(glm::dot(d, u)) > 1e-9 || std::abs(glm::dot(d, r)) > 1e-9 ||
-      std::abs(glm::dot(u, r)) > 1e-9)
+  if (!perpendicular(d, u, r) && !skewable)
     notes.push_back(
         "the camera's direction, up and right are not perpendicular (POV-Ray: \"Camera vectors "
         "are not perpendicular\"); Lucent's camera frame is orthogonal: the image is skewed "
@@ -216,14 +245,20 @@ CameraImport importCamera(const PovCamera& pov, int width, int height) {
       camera.fovAxis = FovAxis::Horizontal;
       camera.fov =
           degreesOf(2.0 * std::atan(0.5 * glm::length(v.right) / glm::length(v.direction)));
-      placeFrame(v, camera, out.differences);
+      placeFrame(v, camera, out.differences, true);
       setFrameAspect(v, camera);
+      if (!perpendicular(glm::normalize(v.direction), glm::normalize(v.up),
+                         glm::normalize(v.right)))
+        skewedPlane(v, camera);
       return out;
     case PovCameraType::Orthographic:
       camera.type = CameraType::Orthographic;
       camera.width = glm::length(v.right);
-      placeFrame(v, camera, out.differences);
+      placeFrame(v, camera, out.differences, true);
       setFrameAspect(v, camera);
+      if (!perpendicular(glm::normalize(v.direction), glm::normalize(v.up),
+                         glm::normalize(v.right)))
+        skewedPlane(v, camera);
       return out;
     case PovCameraType::Fisheye: {
       // POV-Ray's image circle has radius width/(2|right|) pixels across and

@@ -191,3 +191,30 @@ TEST_CASE("mirror flips the image left to right and nothing else", "[render][cam
       CHECK(b.d.z == Approx(a.d.z).margin(1e-15));
     }
 }
+
+TEST_CASE("image-plane: the ray through (s, t) goes along forward + s·right + t·up",
+          "[render][camera]") {
+  // The default frame: camera space x right = world +x, y up = +y, z forward = -z.
+  Camera cam;
+  cam.imagePlane = Camera::ImagePlane{Vec3(2.0, 0.5, 0.0), Vec3(0.0, 1.0, -0.25)};
+  SECTION("pinhole: corners and centre, on any image") {
+    for (auto [w, h] : {std::pair{64, 48}, std::pair{30, 90}}) {
+      auto p = makeProjection(cam, w, h);
+      // The top-right corner: s = t = 1/2.
+      const Vec3 corner = glm::normalize(Vec3(1.0, 0.25 + 0.5, -(1.0 - 0.125)));
+      const Ray r = rayThrough(*p, w, 0.0);
+      CHECK(glm::length(r.d - corner) < 1e-14);
+      const Ray c = rayThrough(*p, w / 2.0, h / 2.0);
+      CHECK(glm::length(c.d - Vec3(0.0, 0.0, -1.0)) < 1e-15);
+    }
+  }
+  SECTION("orthographic: origins on the parallelogram, every ray along the view") {
+    cam.type = CameraType::Orthographic;
+    cam.position = Vec3(1.0, 2.0, 3.0);
+    cam.lookAt = Vec3(1.0, 2.0, 2.0);
+    auto p = makeProjection(cam, 50, 50);
+    const Ray r = rayThrough(*p, 0.0, 50.0);  // the bottom-left corner: s = t = -1/2
+    CHECK(glm::length(r.o - (Vec3(1.0, 2.0, 3.0) + Vec3(-1.0, -0.75, -0.125))) < 1e-14);
+    CHECK(r.d == Vec3(0.0, 0.0, -1.0));
+  }
+}

@@ -29,6 +29,7 @@ std::string sampleValue(const CameraAttribute& a) {
   if (name == "fov") return "50";
   if (name == "far") return "100";
   if (name == "lenses") return "2 3";
+  if (name == "image-plane") return "1.3 0 0.1  0 1 0";
   if (!a.info.choices.empty()) return std::string(a.info.choices.back());
   if (a.info.type == AttrType::Boolean) return "true";
   return "0.5";

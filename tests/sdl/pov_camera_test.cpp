@@ -182,6 +182,48 @@ TEST_CASE("a camera type Lucent lacks is refused by name", "[sdl][camera]") {
         "fisheye and spherical)");
 }
 
+TEST_CASE("direction, up and right that are not perpendicular skew the image as POV-Ray's do",
+          "[sdl][camera]") {
+  // objects/quartic/witch.pov's camera: the direction leans up, right and up stay on the axes.
+  sdl::PovCamera pov;
+  pov.location = Vec3(0.0, 0.0, -3.0);
+  pov.direction = Vec3(0.0, 0.1, 1.5);
+  pov.right = Vec3(4.0 / 3.0, 0.0, 0.0);
+  pov.rightGiven = true;
+  CameraImport imported = importCamera(pov, 160, 120);
+  CHECK(imported.differences.empty());
+  REQUIRE(imported.camera.imagePlane);
+  // Right is along the frame's own right; up has a part along the view (up·direction over
+  // |direction|², as the plane is at distance 1).
+  CHECK(imported.camera.imagePlane->right.y == Approx(0.0).margin(1e-15));
+  CHECK(imported.camera.imagePlane->up.z == Approx(0.1 / (0.01 + 2.25)).epsilon(1e-14));
+  requirePovRays(pov, 160, 120);
+  requirePovRays(pov, 90, 200);
+
+  // camera/shear.pov's kind: a matrix shears right into up; and a `right -x` camera.
+  pov.direction = Vec3(0.0, 0.0, 1.0);
+  pov.transform = pov.transform.then(
+      sdl::PovTransform::matrix({1.0, 0.0, 0.0, 0.3, 1.0, 0.2, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0}));
+  requirePovRays(pov, 160, 120);
+  pov.right = Vec3(-4.0 / 3.0, 0.0, 0.0);
+  requirePovRays(pov, 160, 120);
+
+  // Orthographic: origins on a parallelogram, all along the direction.
+  pov.type = PovCameraType::Orthographic;
+  pov.up = Vec3(0.0, 3.0, 0.5);
+  pov.upGiven = true;
+  imported = importCamera(pov, 160, 120);
+  CHECK(imported.differences.empty());
+  REQUIRE(imported.camera.imagePlane);
+  requirePovRays(pov, 160, 120);
+
+  // A fisheye cannot skew: said.
+  pov.type = PovCameraType::Fisheye;
+  imported = importCamera(pov, 160, 120);
+  REQUIRE(!imported.differences.empty());
+  CHECK(imported.differences[0].find("not perpendicular") != std::string::npos);
+}
+
 TEST_CASE("round trip: a Lucent camera exported to POV-Ray and read back traces its rays",
           "[sdl][camera][povray]") {
   // The exporter's camera block for a Lucent camera (world coordinates unchanged,
@@ -237,5 +279,48 @@ TEST_CASE("round trip: a Lucent camera exported to POV-Ray and read back traces 
     REQUIRE(povPrimaryRay(pov, v, i, 60, 160, 120, origin, direction));
     const Ray ray = lucentRay(imported.camera, i, 60, 160, 120);
     requireSameVector(ray.d, lucentFromPov(direction), 1e-9);
+  }
+}
+
+TEST_CASE("round trip: an image-plane camera exports as POV-Ray's own vectors",
+          "[sdl][camera][povray]") {
+  for (const char* type : {"pinhole", "orthographic"}) {
+    INFO(type);
+    ParseResult parsed = parseSceneString(
+        std::string(R"XML(<scene version="1"><render width="160" height="120"/>
+          <camera type=")XML") +
+            type + R"XML(" position="1 2 6" look-at="0 0.5 0" image-plane="1.2 0.3 0.1  0 0.9 -0.2"
+                  mirror="true" transform="rotate(20, 0 1 0)"/>
+          <sphere radius="1"/></scene>)XML",
+        "test.xml");
+    REQUIRE(parsed.scene);
+    const Camera& original = parsed.scene->cameras.front();
+    REQUIRE(original.imagePlane);
+    const PovExport exported = exportPov(*parsed.scene);
+    REQUIRE(exported.ok());
+    INFO(exported.text);
+    CHECK(exported.text.find("look_at") == std::string::npos);
+    const std::string v3 = "<([-0-9.e]+), ([-0-9.e]+), ([-0-9.e]+)>";
+    auto vec = [&](const std::string& key) {
+      std::smatch m;
+      REQUIRE(std::regex_search(exported.text, m, std::regex(key + " " + v3)));
+      return Vec3(std::stod(m[1]), std::stod(m[2]), std::stod(m[3]));
+    };
+    sdl::PovCamera pov;
+    if (std::string(type) == "orthographic") pov.type = PovCameraType::Orthographic;
+    pov.location = vec("location");
+    pov.direction = vec("direction");
+    pov.right = vec("right");
+    pov.up = vec("up");
+    pov.rightGiven = pov.upGiven = true;
+    const PovCameraVectors v = povCameraVectors(pov);
+    for (int j = 0; j < 120; j += 11)
+      for (int i = 0; i < 160; i += 13) {
+        Vec3 origin, direction;
+        REQUIRE(povPrimaryRay(pov, v, i, j, 160, 120, origin, direction));
+        const Ray ray = lucentRay(original, i, j, 160, 120);
+        requireSameVector(origin, ray.o, 1e-9);
+        requireSameVector(direction, ray.d, 1e-9);
+      }
   }
 }
