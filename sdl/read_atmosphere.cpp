@@ -84,7 +84,8 @@ void SceneReader::readSkySphere(const SourceLoc& loc, TokenStream& in) {
         for (const PovColorMapEntry& e : readColorMap(in, mapLoc))
           g.colorMap.push_back({e.at, e.color});
       } else {
-        unreadInBlock(k, in);
+        unreadInBlock(k, in);  // said, and read to the pigment's '}'
+        skipToClose(in, 1);    // and the sky_sphere's
         return;
       }
     }

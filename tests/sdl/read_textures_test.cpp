@@ -328,6 +328,16 @@ TEST_CASE("scene reader textures: a sky_sphere of one colour, and of a declared 
   checkColor(two[1].color, Color(0, 0, 1));
 }
 
+TEST_CASE("scene reader textures: a sky_sphere pattern Lucent's sky lacks is one error, at it",
+          "[sdl][scene][texture]") {
+  // The refusal reads to the sky_sphere's end: what follows is read as usual.
+  const std::vector<std::string> errors = errorsOf(
+      "sky_sphere { pigment { planar poly_wave 2 color_map { [0 rgb 1] [1 rgb 0] } } }\n"
+      "sphere { 0, 1 pigment { rgb 1 } }\n");
+  REQUIRE(errors.size() == 1);
+  CHECK(errors[0].find("test.pov:1:24: error: 'planar'") == 0);
+}
+
 TEST_CASE("scene reader textures: POV-Ray 1's normals in a texture, and blocks that continue",
           "[sdl][scene][texture]") {
   auto r = readScene(
