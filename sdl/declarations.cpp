@@ -88,13 +88,18 @@ bool TokenStream::rvalue(Value& out, Ref* byRef, bool parameter, bool semicolonA
   const Token t = cur_;
   bool found = true;
   const Value* tv = t.kind == TokenKind::Identifier ? t.value() : nullptr;
-  if (tv && !tv->isNumeric() && !(tv->type == ValueType::Function && t.call)) {
+  if (tv && !tv->isNumeric() &&
+      !((tv->type == ValueType::Function || tv->type == ValueType::Spline) && t.call)) {
     if (parameter && byRef) *byRef = t.ref;
     else out = copyValue(*tv);
   } else if (t.kind == TokenKind::Keyword && t.text() == "function") {
     out = Value{};
     out.type = ValueType::Function;
     out.function = parseFunction(true, parameter ? std::string() : declaring);
+  } else if (t.kind == TokenKind::Keyword && t.text() == "spline") {
+    out = Value{};
+    out.type = ValueType::Spline;
+    out.spline = splineBlock();
   } else if (t.kind == TokenKind::Undeclared) {
     error(t, parameter ? "cannot pass undeclared identifier '" + std::string(t.text()) +
                              "' as a macro parameter"

@@ -43,7 +43,8 @@ bool startsExpression(const Token& t) {
              t.kw == Kw::k_u || t.kw == Kw::k_v || t.kw == Kw::k_color || t.kw == Kw::k_colour;
     case TokenKind::Identifier: {
       const Value* v = t.value();
-      return v && (v->isNumeric() || v->type == ValueType::Function);
+      return v && (v->isNumeric() || v->type == ValueType::Function ||
+                   (v->type == ValueType::Spline && t.call));
     }
     default:
       return false;
@@ -118,6 +119,14 @@ void TokenStream::factorValue(Express& e, int& terms) {
 
 void TokenStream::identifierFactor(Express& e, int& terms) {
   const Value* v = cur_.value();
+  if (v && v->type == ValueType::Spline) {
+    splineCall(e, terms, *v->spline, true);
+    return;
+  }
+  if (v && v->type == ValueType::Function && v->function->kind == FunctionValue::Kind::Spline) {
+    splineCall(e, terms, *v->function->spline, false);
+    return;
+  }
   if (v && v->type == ValueType::Function) {
     fill(e.v, terms, functionCall());
     return;

@@ -2,6 +2,7 @@
 #include "function.h"
 
 #include "internal_functions.h"
+#include "spline.h"
 
 #include <climits>
 #include <cmath>
@@ -17,6 +18,12 @@ constexpr double kPi = 3.1415926535897932384626;  // POV-Ray's M_PI
 double toInt(double x) {
   if (!(x > -2147483649.0 && x < 2147483648.0)) return INT_MIN;
   return static_cast<int>(x);
+}
+
+// `.x` ... `.transmit` (0 to 4) or `.gray` (5) of a spline function's value.
+double splineMember(const std::array<double, 5>& v, int member) {
+  if (member == 5) return 0.297 * v[0] + 0.589 * v[1] + 0.114 * v[2];  // POV-Ray's grey
+  return v[static_cast<size_t>(member)];
 }
 
 struct Frame {
@@ -36,6 +43,8 @@ class Evaluator {
         if (!in || !in->evaluate) throw FunctionError(at, internalRefusal(f.internal));
         return in->evaluate(args);
       }
+      case FunctionValue::Kind::Spline:
+        return f.spline->at(args[0])[0];
       case FunctionValue::Kind::Expression:
         break;
     }
@@ -119,6 +128,8 @@ class Evaluator {
       case FnOp::Call: {
         std::vector<double> args(n.args.size());
         for (size_t i = 0; i < n.args.size(); ++i) args[i] = a(i);
+        if (n.callee->kind == FunctionValue::Kind::Spline && n.member >= 0)
+          return splineMember(n.callee->spline->at(args[0]), n.member);
         return call(*n.callee, args.data(), n.loc);
       }
     }

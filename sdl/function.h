@@ -20,6 +20,7 @@
 namespace lucent::sdl {
 
 struct FunctionValue;
+struct Spline;  // spline.h
 
 enum class FnOp {
   Constant,
@@ -101,7 +102,8 @@ struct FunctionValue {
   enum class Kind {
     Expression,   // a body in the function language
     Internal,     // `internal(N)`: one of POV-Ray's built-in functions (internal_functions.h)
-    Unsupported,  // a pigment, pattern, transform or spline function: refused where called
+    Unsupported,  // a pigment, pattern or transform function: refused where called
+    Spline,       // `function { spline { } }`: one parameter, a vector value (`spline`)
   };
   Kind kind = Kind::Expression;
   std::string name;  // the identifier it was declared as ("" when anonymous)
@@ -109,9 +111,10 @@ struct FunctionValue {
   std::vector<std::string> params;
   FnNodePtr body;  // Expression
   int internal = -1;
-  std::string what;  // Unsupported: "a pigment function"...
-  int locals = 0;    // slots of sum() and prod() variables
-  int depth = 1;     // the longest chain of nodes and calls within calls (bounded)
+  std::string what;                      // Unsupported: "a pigment function"...
+  std::shared_ptr<const Spline> spline;  // Spline
+  int locals = 0;                        // slots of sum() and prod() variables
+  int depth = 1;  // the longest chain of nodes and calls within calls (bounded)
 
   int arity() const { return static_cast<int>(params.size()); }
   // "'f'" or "the function" (anonymous), for messages.

@@ -208,10 +208,16 @@ std::shared_ptr<const FunctionValue> TokenStream::parseFunction(bool declaration
       (word == "pigment" || word == "pattern" || word == "transform" || word == "spline")) {
     if (paramList)
       error(cur_, "a " + std::string(word) + " function takes no parameter list (POV-Ray's rule)");
+    if (word == "spline") {
+      f->kind = FunctionValue::Kind::Spline;
+      f->spline = splineBlock();
+      f->params = {"t"};
+      expect("}");
+      return f;
+    }
     f->kind = FunctionValue::Kind::Unsupported;
     f->what = "a " + std::string(word) + " function";
-    f->params =
-        word == "spline" ? std::vector<std::string>{"t"} : std::vector<std::string>{"x", "y", "z"};
+    f->params = {"x", "y", "z"};
     fnSkipBlock();
     expect("}");
     return f;
@@ -542,12 +548,17 @@ FnNodePtr TokenStream::fnUserCall(FnScope& s) {
             "expected x, y, z, t, u, v, red, green, blue, gray, filter or transmit after "
             "'.', found " +
                 cur_.describe());
-    if (callee->kind != FunctionValue::Kind::Unsupported)
+    if (callee->kind != FunctionValue::Kind::Unsupported &&
+        callee->kind != FunctionValue::Kind::Spline)
       error(cur_, "'." + std::string(cur_.text()) + "' of '" + name +
                       "', which gives a float, not a vector");
     n->member = member;
   } else {
     unget_ = true;
+    if (callee->kind == FunctionValue::Kind::Spline)
+      error(at, "'" + name +
+                    "' is a spline function: it gives a vector, so a function takes one of its "
+                    "components ('.x', '.red'...)");
     if (callee->kind == FunctionValue::Kind::Unsupported && callee->what != "a pattern function")
       error(at, "'" + name + "' is " + callee->what +
                     ": it gives a vector, so a function takes one of its components "

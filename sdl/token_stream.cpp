@@ -271,7 +271,7 @@ bool TokenStream::readWord(const RawToken& r, SourceFile* f) {
         rawPeek().text == "[")
       resolveArrayElement(t);
     const Value* named = t.ref.get();  // the element, for an array's
-    if (named && named->type == ValueType::Function)
+    if (named && (named->type == ValueType::Function || named->type == ValueType::Spline))
       t.call = rawPeek().kind == RawKind::Punct && rawPeek().text == "(";
     cur_ = t;
     return true;

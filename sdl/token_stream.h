@@ -14,6 +14,7 @@
 #include "keywords.h"
 #include "options.h"
 #include "source.h"
+#include "spline.h"
 #include "symbols.h"
 #include "value.h"
 
@@ -283,6 +284,10 @@ class TokenStream {
   std::vector<FnNodePtr> fnArguments(FnScope& s);
   void fnSkipBlock();
   double functionCall();
+
+  // spline_parse.cpp: `spline { }` (the keyword just read) and S(T [, KIND]) in expressions
+  std::shared_ptr<const Spline> splineBlock();
+  void splineCall(Express& e, int& terms, const Spline& s, bool kindArgument);
 
   // builtins.cpp
   double floatFunction(Kw kw);

@@ -64,6 +64,8 @@ std::string typeName(const Value& v) {
       return std::string(v.item ? v.item->kind() : "item") + " identifier";
     case ValueType::Function:
       return "function identifier";
+    case ValueType::Spline:
+      return "spline identifier";
   }
   return "identifier";
 }

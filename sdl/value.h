@@ -1,7 +1,8 @@
 // The values of POV-Ray's language: a float, a vector of 2, 3 or 4 components, a colour
 // (5 components: red, green, blue, filter, transmit), a string, an array, an item made
-// by the scene reader (item_reader.h), or a function (function.h). POV-Ray gives a value the type
-// of the expression that made it: `<1,2>` is a 2-vector, `rgb 1` and `<1,2,3,4,5>` are colours.
+// by the scene reader (item_reader.h), a function (function.h) or a spline (spline.h). POV-Ray
+// gives a value the type of the expression that made it: `<1,2>` is a 2-vector, `rgb 1` and
+// `<1,2,3,4,5>` are colours.
 #pragma once
 
 #include "item_reader.h"
@@ -14,10 +15,11 @@
 
 namespace lucent::sdl {
 
-enum class ValueType { Float, Uv, Vector, Vector4, Colour, String, Array, Item, Function };
+enum class ValueType { Float, Uv, Vector, Vector4, Colour, String, Array, Item, Function, Spline };
 
 struct ArrayValue;
 struct FunctionValue;  // function.h
+struct Spline;         // spline.h
 
 struct Value {
   ValueType type = ValueType::Float;
@@ -26,6 +28,7 @@ struct Value {
   std::shared_ptr<ArrayValue> array;
   ItemPtr item;
   std::shared_ptr<const FunctionValue> function;  // Function: a `function { }`
+  std::shared_ptr<const Spline> spline;           // Spline: a `spline { }`
 
   static Value number(double f);
   // A value of `terms` components (1 a float, 2 uv, 3 vector, 4, 5 a colour, whose

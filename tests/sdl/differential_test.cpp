@@ -99,3 +99,8 @@ TEST_CASE("sdl vs POV-Ray: user-defined functions and functions.inc's closed for
           "[sdl][povray][function]") {
   compareWithPovRay("functions");
 }
+
+TEST_CASE("sdl vs POV-Ray: splines of every kind, calls, copies and spline functions",
+          "[sdl][povray][spline]") {
+  compareWithPovRay("splines");
+}
