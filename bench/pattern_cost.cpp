@@ -1,9 +1,9 @@
 // The cost of one evaluation of each procedural pattern (render/patterns/): patternValue,
 // perturbNormal and the colour lookups, timed over a fixed set of points on one thread.
 // The figures go to docs/patterns-noise.md; nothing asserts on them.
+#include "primitives/noise.h"
 #include "render/patterns/block_pattern.h"
 #include "render/patterns/color_map.h"
-#include "render/patterns/noise.h"
 #include "render/patterns/normal_perturbation.h"
 #include "render/patterns/pattern_value.h"
 

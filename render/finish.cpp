@@ -1,7 +1,7 @@
 #include "finish.h"
 
 #include "optics.h"
-#include "patterns/turbulence.h"
+#include "scenegraph/turbulence.h"
 
 #include <algorithm>
 #include <cmath>

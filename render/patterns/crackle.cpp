@@ -1,6 +1,6 @@
 #include "crackle.h"
 
-#include "noise.h"
+#include "primitives/noise.h"
 
 #include <algorithm>
 #include <array>

@@ -1,8 +1,8 @@
 #include "normal_perturbation.h"
 
-#include "noise.h"
 #include "pattern_point.h"
 #include "pattern_value.h"
+#include "primitives/noise.h"
 #include "wave_sources.h"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "pattern_point.h"
 
-#include "turbulence.h"
+#include "scenegraph/turbulence.h"
 
 namespace lucent {
 

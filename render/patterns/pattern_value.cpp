@@ -1,9 +1,9 @@
 #include "pattern_value.h"
 
 #include "crackle.h"
-#include "noise.h"
 #include "pattern_point.h"
-#include "turbulence.h"
+#include "primitives/noise.h"
+#include "scenegraph/turbulence.h"
 #include "wave.h"
 #include "wave_sources.h"
 

@@ -1,6 +1,6 @@
 #include "wave_sources.h"
 
-#include "noise.h"
+#include "primitives/noise.h"
 #include "wave.h"
 
 #include <cmath>

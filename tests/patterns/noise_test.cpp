@@ -1,7 +1,7 @@
 // Lucent's noise against POV-Ray 3.7's own (f_noise_generator; tests/data/patterns).
 #include "reference_csv.h"
 
-#include "render/patterns/noise.h"
+#include "primitives/noise.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
 #include "turbulence.h"
 
-#include "noise.h"
+#include "primitives/noise.h"
 
 #include <algorithm>
 
