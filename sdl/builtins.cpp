@@ -6,6 +6,8 @@
 
 #include "random.h"
 
+#include "scenegraph/turbulence.h"
+
 #include <algorithm>
 #include <chrono>
 #include <climits>
@@ -397,9 +399,30 @@ std::array<double, 3> TokenStream::vectorFunction(Kw kw) {
     case Kw::k_min_extent:
     case Kw::k_max_extent:
       return extentFunction(kw);
+    case Kw::k_vturbulence:
+      return vturbulenceFunction();
     default:
-      notEvaluated(at);  // vturbulence
+      notEvaluated(at);
   }
+}
+
+// vturbulence(Lambda, Omega, Octaves, P): POV-Ray's DTurbulence at P, the octaves truncated
+// to a whole number and kept in 1..10 as POV-Ray keeps them (dturbulence does both).
+std::array<double, 3> TokenStream::vturbulenceFunction() {
+  expect("(");
+  PatternPlacement turbulence;
+  turbulence.lambda = parseFloat();
+  parseComma();
+  turbulence.omega = parseFloat();
+  parseComma();
+  const double octaves = parseFloat();
+  turbulence.octaves = octaves >= 10.0 ? 10 : octaves >= 1.0 ? static_cast<int>(octaves) : 1;
+  parseComma();
+  const std::array<double, 3> p = parseVector();
+  parseComma();
+  expect(")");
+  const Vec3 d = dturbulence(Vec3(p[0], p[1], p[2]), turbulence);
+  return {d.x, d.y, d.z};
 }
 
 }  // namespace lucent::sdl

@@ -298,6 +298,7 @@ class TokenStream {
   double randomFunction(Kw kw);
   double floatValue(Kw kw);
   std::array<double, 3> vectorFunction(Kw kw);
+  std::array<double, 3> vturbulenceFunction();
   [[noreturn]] void notEvaluated(const Token& t) const;
 
   // strings.cpp
