@@ -46,7 +46,7 @@ const std::vector<PovWord> kAttributes{
      "'reflective'"},
     {"material", "normal", "a <normal type depth> or <bump-map src depth> child"},
     {"material", "bump_map", "a <bump-map src depth> child"},
-    {"material", "interior", "the material's 'ior' and 'absorption'"},
+    {"material", "interior", "the material's 'ior', 'absorption' and 'fade-distance'"},
     {"fog", "fog_type", "type=\"ground\" (fog_type 2) or the default constant fog (fog_type 1)"},
     {"fog", "fog_offset", "'offset'"},
     {"fog", "fog_alt", "'altitude'"},
@@ -90,7 +90,7 @@ const std::vector<PovWord> kElements{
     {"material", "finish",
      "the material's own attributes: 'ambient', 'diffuse', 'specular', 'phong', 'brilliance', "
      "'reflective'"},
-    {"material", "interior", "the material's 'ior' and 'absorption'"},
+    {"material", "interior", "the material's 'ior', 'absorption' and 'fade-distance'"},
     {"pattern", "color_map", "<color-map>"},
     {"pattern", "colour_map", "<color-map>"},
     {"color-map", "entry", "<entry at color>"},

@@ -238,7 +238,7 @@ void PovGeometry::writeShapeHead(const Node& node, const Mat4& m, uint32_t mater
     // A top-level plane holding the camera is turned inside out (the same surface) unless
     // the camera is meant to be in its medium: POV-Ray would start camera rays inside it.
     const Material& mat = scene_.materials[material];
-    bool medium = (mat.isTransmissive() && mat.ior != 1.0) || mat.isAbsorbing();
+    bool medium = (mat.isTransmissive() && mat.ior != 1.0) || mat.attenuates();
     if (topLevel && !medium && cameraInsidePlane(*p, m, camera_)) {
       spec = PlaneSpec{-p->normal, -p->offset};
       where += " (turned so the camera is outside)";

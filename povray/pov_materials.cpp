@@ -30,6 +30,18 @@ Vec3 divide(const Vec3& term, const Vec3& divisor, bool& bad) {
   return r;
 }
 
+// The number d with kd = d·colour (the diffuse colour as POV-Ray's pigment `colour` times
+// its diffuse), to float precision; none when kd is not such a multiple.
+std::optional<double> diffuseOver(const Vec3& kd, const Vec3& colour) {
+  double d = -1.0;
+  for (int i = 0; i < 3; ++i)
+    if (colour[i] > 0.0 && d < 0.0) d = kd[i] / colour[i];
+  if (d < 0.0) return isZero(kd) ? std::optional<double>(0.0) : std::nullopt;
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(kd[i] - d * colour[i]) > 1e-6 * std::max(1.0, kd[i])) return std::nullopt;
+  return d;
+}
+
 // A number computed from float colours, as short as its float value.
 std::string floatText(double v) { return fmt::format("{}", static_cast<float>(v)); }
 
@@ -99,10 +111,22 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
   double d = 0.0;
   if (!filterOnly) {
     s.useTexture = hasTexture;
-    // POV-Ray's metallic tints highlights by the pigment: it must then carry the whole
-    // diffuse colour, as it does for a coloured k_d.
-    const bool metallicPigment = m.metallic && m.hasHighlight() && !isImage && !isZero(kd);
-    if (isGrey(kd) && !metallicPigment) {
+    // POV-Ray's metallic tints highlights (and reflection { metallic } the reflection) by
+    // the pigment: it must then be the metallic colour, or carry the whole diffuse colour
+    // as it does for a coloured k_d.
+    const bool tints = (m.metallic && m.hasHighlight()) || m.reflectMetallic > 0.0;
+    const bool metallicPigment = tints && !isImage && !isZero(kd);
+    const std::optional<double> byColour =
+        tints && m.metallicColor && !isImage ? diffuseOver(kd, v3(*m.metallicColor)) : std::nullopt;
+    if (tints && m.metallicColor && !isImage && !byColour)
+      issues.warning(m.loc, fmt::format("{}: diffuse {} is not a multiple of metallic-color {}: "
+                                        "POV-Ray's pigment carries both, the diffuse colour is "
+                                        "kept",
+                                        name, colourText(m.diffuse), colourText(*m.metallicColor)));
+    if (byColour) {
+      s.pigmentScale = v3(*m.metallicColor);
+      d = *byColour;
+    } else if (isGrey(kd) && !metallicPigment) {
       d = kd.x;
     } else if (isImage) {
       d = mean(kd);
@@ -189,15 +213,19 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
     s.interior = true;
     s.ior = m.ior;
   }
-  if (transmits && m.ior != 1.0 && !(kt.x == 1.0 && kt.y == 1.0 && kt.z == 1.0) && !s.fresnel)
+  // Lucent's weight there is k_r + k_t (full-tir: 1, POV-Ray's).
+  const Vec3 tirWeight = kr + kt;
+  if (transmits && m.ior != 1.0 && !m.fullTir && !s.fresnel &&
+      !(tirWeight.x == 1.0 && tirWeight.y == 1.0 && tirWeight.z == 1.0))
     issues.warning(m.loc, fmt::format("{}: under total internal reflection POV-Ray reflects "
-                                      "with weight 1, Lucent with transmissive {}",
-                                      name, colourText(m.transmissive)));
+                                      "with weight 1, Lucent with reflective + transmissive {} "
+                                      "(full-tir=\"true\" is POV-Ray's rule)",
+                                      name, colourText(m.reflective + m.transmissive)));
   if (transmits && !isZero(ka))
     issues.warning(m.loc, fmt::format("{}: inside the object Lucent scales the ambient term by "
                                       "transmissive; POV-Ray does not",
                                       name));
-  if (transmits && m.isAbsorbing() && !isZero(kr))
+  if (transmits && m.attenuates() && !isZero(kr))
     issues.warning(m.loc, fmt::format("{}: POV-Ray does not attenuate light reflected inside "
                                       "an absorbing object (its fade applies to transmitted "
                                       "light only); Lucent does",
@@ -205,17 +233,28 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
   // Found by the gallery (examples/gallery/absorption.xml): POV-Ray applies the interior
   // fade to the light passing out, not to the local terms at a hit inside the object, so a
   // highlight seen on the inside of the far wall keeps its full strength.
-  if (transmits && m.isAbsorbing() && !isZero(ks))
+  if (transmits && m.attenuates() && !isZero(ks))
     issues.warning(m.loc, fmt::format("{}: POV-Ray does not attenuate the highlights seen on "
                                       "the inside of an absorbing object; Lucent does",
                                       name));
-  if (transmits && m.isAbsorbing()) {
+  if (transmits && m.hasFade()) {
+    // POV-Ray's fade itself.
+    s.fade = true;
+    s.fadeDistance = m.fadeDistance;
+    s.fadePower = m.fadePower;
+    s.fadeColor = v3(m.fadeColor);
+    if (m.isAbsorbing())
+      issues.warning(m.loc, fmt::format("{}: absorption and a fade: POV-Ray's interior has one "
+                                        "fade (the fade is written, the absorption left out)",
+                                        name));
+  } else if (transmits && m.isAbsorbing()) {
     // exp(−(1 − fade_color)·d/fade_distance) = exp(−absorption·d) with fade_distance 1/max.
     Vec3 ab = v3(m.absorption);
     s.fade = true;
     s.fadeDistance = 1.0 / maxComponent(ab);
     s.fadeColor = Vec3(1.0) - ab * s.fadeDistance;
   }
+  s.reflectMetallic = m.reflectMetallic;
   return s;
 }
 
@@ -353,10 +392,13 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, con
   out.line("diffuse " + povFloat(s.diffuse));
   out.line("phong " + povFloat(s.phong));
   out.line("specular " + povFloat(s.specular));
+  const std::string metallic =
+      s.reflectMetallic > 0.0 ? " metallic " + povNumber(s.reflectMetallic) : "";
   if (s.fresnel) {
-    out.line("reflection { rgb <0, 0, 0>, " + povRgb(s.reflection) + " fresnel on }");
+    out.line("reflection { rgb <0, 0, 0>, " + povRgb(s.reflection) + " fresnel on" + metallic +
+             " }");
   } else {
-    out.line("reflection { " + povRgb(s.reflection) + " }");
+    out.line("reflection { " + povRgb(s.reflection) + metallic + " }");
   }
   if (s.conserveEnergy) out.line("conserve_energy");
   // The terms POV-Ray has as they are, each written by its row of the finish table.
@@ -369,8 +411,8 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, con
 void PovMaterials::writeInterior(const PovSurface& s, PovWriter& out) const {
   out.line("ior " + povNumber(s.ior));
   if (s.fade) {
-    // fade_power >= 1000 selects POV-Ray's exponential fade.
-    out.line("fade_power 1001");
+    // fade_power >= 1000 selects POV-Ray's exponential fade (absorption's).
+    out.line("fade_power " + povNumber(s.fadePower));
     out.line("fade_distance " + povNumber(s.fadeDistance));
     out.line("fade_color " + povRgb(s.fadeColor));
   }

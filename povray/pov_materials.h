@@ -42,12 +42,14 @@ struct PovSurface {
   Vec3 reflection{0.0};  // the maximum (fresnel) or constant reflection
   bool fresnel = false;
   bool conserveEnergy = false;
+  double reflectMetallic = 0.0;  // reflection { metallic amount }
 
   // interior
   bool interior = false;
   double ior = 1.0;
-  bool fade = false;  // Beer–Lambert absorption as fade_power 1001
+  bool fade = false;  // the fade, or Beer–Lambert absorption as fade_power 1001
   double fadeDistance = 1.0;
+  double fadePower = 1001.0;
   Vec3 fadeColor{1.0};
 };
 

@@ -16,9 +16,11 @@ double metallicReflectivity(double cosAngle) {
 
 namespace {
 
-Color metallicTint(const Color& surface, double cosAngle) {
-  const float share = static_cast<float>(1.0 - metallicReflectivity(cosAngle));
-  return Color(1.0f) + share * (surface - Color(1.0f));
+// 1 + amount·(1 − F)·(C − 1); at amount 1 (the default) the same operations as without it.
+Color metallicTint(const Color& surface, double amount, double cosAngle) {
+  const double share = 1.0 - metallicReflectivity(cosAngle);
+  const float scaled = static_cast<float>(amount == 1.0 ? share : amount * share);
+  return Color(1.0f) + scaled * (surface - Color(1.0f));
 }
 
 // POV-Ray's irid (Trace::ComputeIridColour in its sources): thin-film interference.
@@ -55,6 +57,11 @@ Color iridFactor(const Material& m, const ShadingPoint& at, double cosLight) {
 
 Color surfaceResponse(const Material& m, const Color& kd, const ShadingPoint& at,
                       const Vec3& toLight) {
+  return surfaceResponse(m, kd, kd, at, toLight);
+}
+
+Color surfaceResponse(const Material& m, const Color& kd, const Color& metal,
+                      const ShadingPoint& at, const Vec3& toLight) {
   const Vec3& n = at.n;
   const Vec3& v = at.v;
   const double nDotL = glm::dot(n, toLight);
@@ -67,7 +74,7 @@ Color surfaceResponse(const Material& m, const Color& kd, const ShadingPoint& at
     if (nDotH > 0.0) {
       Color ks = m.specular * static_cast<float>(std::pow(nDotH, m.shininess));
       // POV-Ray takes the metallic angle between the half vector and the light.
-      if (m.metallic) ks *= metallicTint(kd, glm::dot(h, toLight));
+      if (m.metallic) ks *= metallicTint(metal, m.metallicAmount, glm::dot(h, toLight));
       sum += ks;
     }
   }
@@ -76,7 +83,7 @@ Color surfaceResponse(const Material& m, const Color& kd, const ShadingPoint& at
     // POV-Ray drops a sharp highlight's far tail (below 0.0008 for sizes from 60 up).
     if (rDotL > 0.0 && (m.phongSize < 60.0 || rDotL > 0.0008)) {
       Color kp = m.phong * static_cast<float>(std::pow(rDotL, m.phongSize));
-      if (m.metallic) kp *= metallicTint(kd, nDotL);
+      if (m.metallic) kp *= metallicTint(metal, m.metallicAmount, nDotL);
       sum += kp;
     }
   }
@@ -86,7 +93,7 @@ Color surfaceResponse(const Material& m, const Color& kd, const ShadingPoint& at
 }
 
 SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool solid, double n1,
-                            double n2) {
+                            double n2, const Color& metal) {
   SecondaryRays rays;
   Color kr = m.reflective, kt = m.transmissive;
   if (m.fresnel && (maxComponent(kr) > 0.0f || maxComponent(kt) > 0.0f)) {
@@ -94,13 +101,22 @@ SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool soli
     kr *= f;
     kt *= 1.0f - f;
   }
+  // POV-Ray's reflection { metallic }: tinted by the metallic colour facing the viewer,
+  // untinted at grazing angles.
+  if (m.reflectMetallic > 0.0 && maxComponent(kr) > 0.0f)
+    kr *= metallicTint(metal, m.reflectMetallic, glm::dot(at.n, at.v));
   rays.mirror = kr;
-  if (maxComponent(kt) > 0.0f) {
+  // With fullTir the split above does not decide whether a ray is totally reflected:
+  // POV-Ray reflects it whole wherever the surface transmits at all.
+  const Color& transmits = m.fullTir ? m.transmissive : kt;
+  if (maxComponent(transmits) > 0.0f) {
     if (!solid || n1 == n2) {
       rays.straight = true;
       rays.transmitted = kt;
     } else if (refract(-at.v, at.n, n1 / n2, rays.refracted)) {
       rays.transmitted = kt;
+    } else if (m.fullTir) {
+      rays.mirror = Color(1.0f);  // POV-Ray's: the whole ray, in place of the k_r reflection
     } else {
       rays.mirror += kt;  // total internal reflection: the k_t share joins the mirror ray
     }

@@ -22,11 +22,21 @@ struct ShadingPoint {
 // diffuse colour times the texture.
 Color surfaceResponse(const Material& m, const Color& kd, const ShadingPoint& at,
                       const Vec3& toLight);
+// The same with `metal`, the colour `metallic` tints by: the metallic colour times the
+// texture, or kd when the material has none (metallicBase).
+Color surfaceResponse(const Material& m, const Color& kd, const Color& metal,
+                      const ShadingPoint& at, const Vec3& toLight);
+
+// The colour `metallic` and reflect-metallic tint by, given the texture's colour at the hit.
+inline Color metallicBase(const Material& m, const Color& texture) {
+  return m.metallicColor ? *m.metallicColor * texture : m.diffuse * texture;
+}
 
 // The rays a surface sends on and their weights.
 struct SecondaryRays {
-  // The mirror ray's: k_r (times the Fresnel reflectance with `fresnel`), plus the
-  // transmitted share under total internal reflection.
+  // The mirror ray's: k_r (times the Fresnel reflectance with `fresnel`, and the metallic
+  // tint with reflect-metallic), plus the transmitted share under total internal
+  // reflection (or 1 there, with full-tir).
   Color mirror{0.0f};
   // The transmitted ray's: k_t (times 1 − F with `fresnel`); 0 when totally reflected.
   Color transmitted{0.0f};
@@ -36,9 +46,10 @@ struct SecondaryRays {
   Vec3 refracted{0.0};  // its direction when it bends
 };
 // n1: the index on the viewer's side, n2: beyond (both 1 for an opaque material that needs
-// no Fresnel split); solid: whether the surface has an inside.
+// no Fresnel split); solid: whether the surface has an inside. metal: metallicBase at the
+// hit, needed only with reflect-metallic.
 SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool solid, double n1,
-                            double n2);
+                            double n2, const Color& metal = Color(1.0f));
 
 // POV-Ray's empirical metallic reflectivity for the angle whose cosine is `cosAngle`:
 // a highlight's colour is 1 + (1 − F)·(C − 1) for the surface colour C ([DB 9/94] in its

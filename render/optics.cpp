@@ -1,6 +1,7 @@
 #include "optics.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace lucent {
 
@@ -21,6 +22,21 @@ double fresnelDielectric(double cosIncident, double n1, double n2) {
   double rs = (n1 * cosI - n2 * cosT) / (n1 * cosI + n2 * cosT);
   double rp = (n2 * cosI - n1 * cosT) / (n2 * cosI + n1 * cosT);
   return 0.5 * (rs * rs + rp * rp);
+}
+
+Color interiorFade(const Color& fadeColor, double fadeDistance, double fadePower, double distance,
+                   bool shadowRay) {
+  if (shadowRay && fadePower <= 0.0) return Color(1.0f);
+  const double depth = distance / fadeDistance;
+  auto channel = [&](float c) {
+    if (fadePower >= 1000.0) {
+      if (c >= 1.0f) return 1.0f;  // also avoids 0·inf
+      return static_cast<float>(std::exp(-(1.0 - c) * depth));
+    }
+    // pow(d, 0) is 1 even for d = 0 or an infinite d: a constant (1 + c)/2, as POV-Ray's.
+    return static_cast<float>(c + (1.0 - c) / (1.0 + std::pow(depth, fadePower)));
+  };
+  return Color(channel(fadeColor.r), channel(fadeColor.g), channel(fadeColor.b));
 }
 
 }  // namespace lucent

@@ -1,5 +1,5 @@
 // The optics of a smooth surface: mirror reflection, Snell refraction, the exact Fresnel
-// reflectance of a dielectric, and Beer–Lambert absorption.
+// reflectance of a dielectric, Beer–Lambert absorption and POV-Ray's interior fade.
 #pragma once
 
 #include "primitives/math.h"
@@ -29,5 +29,12 @@ inline Color beerLambert(const Color& absorption, double distance) {
   };
   return Color(channel(absorption.r), channel(absorption.g), channel(absorption.b));
 }
+
+// POV-Ray's interior fade over `distance` (infinite for a ray that never leaves), per
+// channel: fadeColor + (1 − fadeColor)/(1 + (distance/fadeDistance)^fadePower), and from
+// fadePower 1000 up POV-Ray's exponential exp(−(1 − fadeColor)·distance/fadeDistance).
+// fadeDistance > 0. A shadow ray is not faded at fadePower 0, as POV-Ray's shadow rays.
+Color interiorFade(const Color& fadeColor, double fadeDistance, double fadePower, double distance,
+                   bool shadowRay);
 
 }  // namespace lucent

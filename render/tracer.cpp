@@ -18,6 +18,14 @@ namespace {
 
 bool anyPositive(const Color& c) { return maxComponent(c) > 0.0f; }
 
+// What light keeps over `distance` inside m: its absorption and its fade (render/optics.h).
+Color interiorAttenuation(const Material& m, double distance, bool shadowRay) {
+  Color keep = m.isAbsorbing() ? beerLambert(m.absorption, distance) : Color(1.0f);
+  if (m.hasFade())
+    keep *= interiorFade(m.fadeColor, m.fadeDistance, m.fadePower, distance, shadowRay);
+  return keep;
+}
+
 double boxVolume(const AABB& b) {
   if (!b.isBounded()) return kInf;
   Vec3 e = b.extent();
@@ -35,7 +43,7 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
       textures_(world.scene().materials, textures) {
   for (const Material& m : world.scene().materials) {
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
-    anyAbsorbing_ = anyAbsorbing_ || (m.isAbsorbing() && m.isTransmissive());
+    anyAbsorbing_ = anyAbsorbing_ || (m.attenuates() && m.isTransmissive());
   }
   for (const Light& light : lights_) {
     std::vector<Vec3> targets;
@@ -90,7 +98,8 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     const Vec3 n = shadingNormal(leaf, s, front, v);
     Color result = localLight(leaf, s, n, v, leaving, media, seed, context);
     const Interface side = interfaceAt(m, solid, front, media);
-    const SecondaryRays rays = secondaryRays(m, ShadingPoint{s.p, n, v}, solid, side.n1, side.n2);
+    const SecondaryRays rays =
+        secondaryRays(m, ShadingPoint{s.p, n, v}, solid, side.n1, side.n2, reflectionTint(leaf, s));
     result = withBranches(result, s, n, v, rays, depth, weight, media, side.beyond, seed, context);
     sum += throughput * result;
 
@@ -107,8 +116,8 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
 
 Color Tracer::escaped(const Ray& ray, const MediaStack& media) const {
   Color background = sky_ ? skyColor(*sky_, ray.d) : settings_.background;
-  if (const Material* medium = media.top(); medium && medium->isAbsorbing())
-    background *= beerLambert(medium->absorption, kInf);
+  if (const Material* medium = media.top(); medium && medium->attenuates())
+    background *= interiorAttenuation(*medium, kInf, false);
   if (fog_ && media.empty())
     background = fogAlong(*fog_, ray.o, glm::normalize(ray.d), kInf).apply(background);
   return background;
@@ -126,8 +135,8 @@ void Tracer::travelled(const Ray& ray, double t, const Material* leaving, const 
   // The stretch lies inside the solid being left, or else in the innermost medium the
   // ray is known to be in.
   const Material* segment = leaving ? leaving : media.top();
-  if (segment && segment->isAbsorbing())
-    throughput *= beerLambert(segment->absorption, t * glm::length(ray.d));
+  if (segment && segment->attenuates())
+    throughput *= interiorAttenuation(*segment, t * glm::length(ray.d), false);
 }
 
 // The shading normal follows the geometric one's side; if interpolation still leaves it
@@ -145,6 +154,15 @@ Vec3 Tracer::shadingNormal(const WorldLeaf& leaf, const SurfaceInfo& s, bool fro
   return n;
 }
 
+// What reflect-metallic tints the mirror ray by (render/finish.h); only looked up for it.
+Color Tracer::reflectionTint(const WorldLeaf& leaf, const SurfaceInfo& s) const {
+  const Material& m = *leaf.material;
+  if (!(m.reflectMetallic > 0.0)) return Color(1.0f);
+  Color texture(1.0f);
+  if (m.hasTexture()) texture = textures_.eval(leaf.materialIndex, m, s, *leaf.instance);
+  return metallicBase(m, texture);
+}
+
 // k_e + k_a·I_La (·k_t inside an object) + direct light.
 Color Tracer::localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3& n, const Vec3& v,
                          bool leaving, const MediaStack& media, PathSeed& seed,
@@ -159,7 +177,8 @@ Color Tracer::localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3
   if (leaving && !m.innerAmbient) ambient *= m.transmissive;
   local += ambient;
   if (!lights_.empty() && (anyPositive(kd) || m.hasHighlight())) {
-    local += directLight(s, n, v, kd, m, media, seed, context);
+    const Color metal = m.metallic ? metallicBase(m, texture) : kd;
+    local += directLight(s, n, v, kd, metal, m, media, seed, context);
     ++seed.event;
   }
   return local;
@@ -206,15 +225,15 @@ Color Tracer::withBranches(Color result, const SurfaceInfo& s, const Vec3& n, co
 }
 
 Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
-                          const Material& m, const MediaStack& media, PathSeed& seed,
-                          TraceContext& context) const {
+                          const Color& metal, const Material& m, const MediaStack& media,
+                          PathSeed& seed, TraceContext& context) const {
   Color sum(0.0f);
   for (size_t i = 0; i < lights_.size(); ++i) {
     const Light& light = lights_[i];
     const LightIncidence in = lightIncidence(light, s.p);
     if (!anyPositive(in.radiance)) continue;
     if (glm::dot(n, in.toLight) <= 0.0) continue;  // light behind: no diffuse, no highlight
-    const Color brdf = surfaceResponse(m, kd, ShadingPoint{s.p, n, v}, in.toLight);
+    const Color brdf = surfaceResponse(m, kd, metal, ShadingPoint{s.p, n, v}, in.toLight);
     if (!anyPositive(brdf)) continue;
     Color shadow(1.0f);
     if (light.shadows) {
@@ -311,8 +330,8 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
       bool leaving = false;
       if (leaf.medium) leaving = glm::dot(ray.d, hit.surface(ray).ng) > 0.0;
       const Material* segment = leaving ? leaf.medium : media.top();
-      if (segment && segment->isAbsorbing())
-        t *= beerLambert(segment->absorption, (hit.t() - tPrevious) * speed);
+      if (segment && segment->attenuates())
+        t *= interiorAttenuation(*segment, (hit.t() - tPrevious) * speed, true);
       if (leaf.medium) {
         if (leaving) media.remove(leaf.medium);
         else media.push(leaf.medium);
@@ -325,8 +344,8 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
     ray.tmin = hit.t();
   }
   if (anyAbsorbing_) {
-    if (const Material* medium = media.top(); medium && medium->isAbsorbing())
-      t *= beerLambert(medium->absorption, (ray.tmax - tPrevious) * speed);
+    if (const Material* medium = media.top(); medium && medium->attenuates())
+      t *= interiorAttenuation(*medium, (ray.tmax - tPrevious) * speed, true);
   }
   return t;
 }

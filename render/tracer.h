@@ -76,6 +76,8 @@ class Tracer {
                  Color& sum, Color& throughput) const;
   // The normal shading uses at surface s of `leaf`, facing the viewer (direction v).
   Vec3 shadingNormal(const WorldLeaf& leaf, const SurfaceInfo& s, bool front, const Vec3& v) const;
+  // The colour reflect-metallic tints the mirror ray by at s (1 without it).
+  Color reflectionTint(const WorldLeaf& leaf, const SurfaceInfo& s) const;
   // The surface's own light: emission, ambient and the lights' direct light.
   Color localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3& n, const Vec3& v,
                    bool leaving, const MediaStack& media, PathSeed& seed,
@@ -95,7 +97,7 @@ class Tracer {
                      TraceContext& context) const;
   // Σ over lights of A_shadow·A_dist·I_L·[k_d (N·L) + k_s (N·H)^n_s].
   Color directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
-                    const Material& m, const MediaStack& media, PathSeed& seed,
+                    const Color& metal, const Material& m, const MediaStack& media, PathSeed& seed,
                     TraceContext& context) const;
   // A_shadow of one light at s: the transmittance averaged over the light's samples
   // (an adaptive area light: the context's AdaptiveAreaSampler's estimate of it), with

@@ -98,10 +98,29 @@ const std::vector<FinishTerm>& finishTerms() {
                    "true: k_r becomes k_r·F and k_t becomes k_t·(1−F), F the unpolarised "
                    "dielectric Fresnel reflectance for ior."),
            "finish { reflection { 0, k_r fresnel on } conserve_energy }"),
+      term(boolean("full-tir", &Material::fullTir,
+                   "true: under total internal reflection the mirror ray has weight 1 (in "
+                   "place of k_r's reflection), as POV-Ray's; false: k_t is added to "
+                   "the mirror ray's k_r."),
+           // No POV-Ray line: POV-Ray's own rule is true (povray/ says where false differs).
+           "POV-Ray's rule (it has no keyword: a totally reflected ray keeps its weight)"),
       term(color("absorption", &Material::absorption,
                  "Beer–Lambert absorption coefficient per world unit inside the object: light "
                  "travelling d inside is multiplied by exp(−absorption·d). Default 0."),
            "interior { fade_power 1001 fade_distance fade_color }"),
+      term(number("fade-distance", &Material::fadeDistance, NumberRule::nonNegative(),
+                  "POV-Ray's interior fade: light travelling d inside the object is multiplied "
+                  "by fade-color + (1 − fade-color)/(1 + (d/fade-distance)^fade-power) per "
+                  "channel (from fade-power 1000 up by exp(−(1 − fade-color)·d/fade-distance)). "
+                  ">= 0; 0: no fade."),
+           "interior { fade_distance }", {{"fade_distance"}}),
+      term(number("fade-power", &Material::fadePower, NumberRule::nonNegative(),
+                  "The fade's power, >= 0: 1 linear, 2 quadratic; 0 a constant (1 + "
+                  "fade-color)/2 that shadow rays do not take; 1000 or more: exponential."),
+           "interior { fade_power }", {{"fade_power"}}),
+      term(color("fade-color", &Material::fadeColor,
+                 "The colour the fade tends to far inside the object. Default 0."),
+           "interior { fade_color }", {{"fade_color"}, {"fade_colour"}}),
       term(color("phong", &Material::phong,
                  "k_p, Phong highlight colour: k_p (R·L)^phong-size with R the mirror "
                  "direction of the view, as POV-Ray's phong. Default 0."),
@@ -125,8 +144,38 @@ const std::vector<FinishTerm>& finishTerms() {
            "finish { metallic }", {},
            [](const Material& m, PovFinishOut& out) {
              // It tints highlights only: without one, POV-Ray has nothing to tint either.
-             if (m.metallic && m.hasHighlight()) out.line("metallic");
+             if (m.metallic && m.hasHighlight())
+               out.line(m.metallicAmount == 1.0 ? "metallic"
+                                                : "metallic " + out.number(m.metallicAmount));
            }),
+      term(number("metallic-amount", &Material::metallicAmount, NumberRule::nonNegative(),
+                  "metallic: how much of the tint the highlights take, >= 0 (POV-Ray's "
+                  "metallic amount): the tint is 1 + amount·(1 − F)·(C − 1)."),
+           "finish { metallic amount }, written by metallic's row"),
+      term(
+          [] {
+            Attribute a{info("metallic-color", AttrType::Vector, "",
+                             "metallic and reflect-metallic: the colour C they tint by, times "
+                             "the texture (POV-Ray's pigment). Absent: the diffuse colour "
+                             "times the texture."),
+                        nullptr};
+            a.info.schemaType = "color";
+            // Unset is not a colour: the writer's probe compares an impossible value, so
+            // that only a colour that was set is written (and any colour that was).
+            a.read = [](Material& m, AttributeInput& in) {
+              if (in.has("metallic-color"))
+                m.metallicColor =
+                    in.color("metallic-color", m.metallicColor.value_or(Color(-1.0f)));
+            };
+            return a;
+          }(),
+          "the pigment a metallic finish tints by"),
+      term(number("reflect-metallic", &Material::reflectMetallic, NumberRule::nonNegative(),
+                  "POV-Ray's reflection { metallic amount }: the mirror ray's weight is "
+                  "multiplied by 1 + amount·(1 − F)·(C − 1), F metallic's reflectivity at the "
+                  "angle between N and the viewer and C the metallic colour: tinted facing the "
+                  "viewer, untinted at grazing angles. >= 0; 0: none."),
+           "finish { reflection { metallic amount } }", {{"reflect_metallic"}}),
       term(boolean("inner-ambient", &Material::innerAmbient,
                    "true: the ambient term also where the surface is seen from inside its "
                    "solid, as POV-Ray lights every surface. Default false: seen from inside, "

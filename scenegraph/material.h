@@ -37,6 +37,14 @@ struct Material {
   double phongSize = 40.0;
   double brilliance = 1.0;  // the diffuse term is k_d·(N·L)^brilliance
   bool metallic = false;    // highlights take the surface colour (POV-Ray's metallic)
+  // The metallic tint is 1 + amount·(1 − F)·(C − 1): C the metallic colour times the
+  // texture, or without one the diffuse colour times the texture (render/finish.cpp).
+  double metallicAmount = 1.0;
+  // POV-Ray tints by its pigment, which is not k_d when its diffuse is not 1. Unset: k_d.
+  std::optional<Color> metallicColor;
+  // POV-Ray's reflection { metallic }: the mirror ray's weight is tinted by the metallic
+  // colour, 1 + amount·(1 − F(N·V))·(C − 1), fading out at grazing angles. 0: none.
+  double reflectMetallic = 0.0;
   // The ambient term also where the surface is seen from inside its solid (POV-Ray's rule);
   // false: from inside, it is multiplied by transmissive (none inside an opaque solid).
   bool innerAmbient = false;
@@ -45,6 +53,14 @@ struct Material {
   double ior = 1.0;          // eta
   bool fresnel = false;
   Color absorption{0.0f};  // Beer–Lambert coefficient per world unit
+  // POV-Ray's interior fade: light travelling d inside is multiplied by
+  // fadeColor + (1 − fadeColor)/(1 + (d/fadeDistance)^fadePower) (render/optics.h).
+  double fadeDistance = 0.0;  // 0: no fade
+  double fadePower = 2.0;
+  Color fadeColor{0.0f};
+  // Total internal reflection: false adds k_t to the mirror ray's weight k_r; true gives
+  // the mirror ray weight 1, as POV-Ray's (which then skips its own reflection there).
+  bool fullTir = false;
   // POV-Ray's irid, thin-film interference: the light from each light and the mirror ray's
   // are multiplied by 1 + irid·cos(φ/λ) per channel, φ = 2π·t·(|N·L| + |N·V|), t the film's
   // thickness varied by noise with the turbulence (render/finish.cpp).
@@ -62,6 +78,9 @@ struct Material {
   bool isTransmissive() const { return maxComponent(transmissive) > 0.0f; }
   bool isReflective() const { return maxComponent(reflective) > 0.0f; }
   bool isAbsorbing() const { return maxComponent(absorption) > 0.0f; }
+  bool hasFade() const { return fadeDistance > 0.0; }
+  // Light inside it loses something with the distance: absorption or fade.
+  bool attenuates() const { return isAbsorbing() || hasFade(); }
   bool hasHighlight() const { return maxComponent(specular) > 0.0f || maxComponent(phong) > 0.0f; }
 
   // What a shape with no material at all gets: diffuse 0.8 and nothing else.

@@ -12,8 +12,8 @@ namespace {
 Color withFilter(const Color& c, float f, float t) { return c * f + Color(t); }
 
 // The reflection colour Lucent's constant k_r (or, with fresnel, its k_r·F) stands for.
-Color importReflection(const PovFinish& finish, const PovPigment& pigment, bool transmits,
-                       Material& m, std::vector<std::string>& notes) {
+Color importReflection(const PovFinish& finish, bool transmits, Material& m,
+                       std::vector<std::string>& notes) {
   const PovReflection& r = finish.reflection;
   if (maxComponent(r.max) <= 0.0f && maxComponent(r.min) <= 0.0f) return Color(0.0f);
   Color kr = r.max;
@@ -37,17 +37,9 @@ Color importReflection(const PovFinish& finish, const PovPigment& pigment, bool 
         "viewer to MAX at grazing angles, Lucent's is constant (imported as MIN)",
         r.falloff));
   }
-  if (r.metallic > 0.0 && pigment.patterned()) {
-    notes.push_back(
-        "reflection { metallic } with a pattern pigment: Lucent's reflection is one colour, "
-        "not tinted by the pattern (imported untinted)");
-  } else if (r.metallic > 0.0) {
-    // POV-Ray tints by 1 + m·(1 − F)·(P − 1), F ~ 0 facing the viewer, 1 at grazing.
-    kr *= Color(1.0f) + static_cast<float>(r.metallic) * (pigment.color - Color(1.0f));
-    notes.push_back(
-        "reflection { metallic }: POV-Ray's tint by the pigment fades to none at grazing "
-        "angles; Lucent's reflection keeps the tint it has facing the viewer");
-  }
+  // reflection { metallic }: reflect-metallic, tinting by the metallic colour (the pigment,
+  // set by importMaterial).
+  m.reflectMetallic = r.metallic;
   if (r.exponent != 1.0)
     notes.push_back(fmt::format(
         "reflection exponent {}: POV-Ray raises the reflected colour to 1/exponent, Lucent "
@@ -56,18 +48,17 @@ Color importReflection(const PovFinish& finish, const PovPigment& pigment, bool 
   return kr;
 }
 
-void importFade(const PovInterior& in, Material& m, std::vector<std::string>& notes) {
+void importFade(const PovInterior& in, Material& m) {
   if (!(in.fadeDistance > 0.0)) return;
   if (in.fadePower >= 1000.0) {
     // exp(−(1 − fade_color)·d/fade_distance): Beer–Lambert, as Lucent's absorption.
     m.absorption = (Color(1.0f) - in.fadeColor) / static_cast<float>(in.fadeDistance);
     m.absorption = glm::max(m.absorption, Color(0.0f));
   } else {
-    notes.push_back(fmt::format(
-        "interior fade_power {}: POV-Ray's fade_color + (1 − fade_color)/(1 + (d/"
-        "fade_distance)^fade_power) has no Lucent equivalent below fade_power 1000 (Lucent's "
-        "absorption is exponential); imported without fading",
-        in.fadePower));
+    // fade_color + (1 − fade_color)/(1 + (d/fade_distance)^fade_power): Lucent's fade.
+    m.fadeDistance = in.fadeDistance;
+    m.fadePower = in.fadePower;
+    m.fadeColor = in.fadeColor;
   }
 }
 
@@ -111,30 +102,27 @@ MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish
   m.iridTurbulence = finish.iridTurbulence;
   const bool transmits = m.isTransmissive();
 
-  m.reflective = importReflection(finish, pigment, transmits, m, notes);
+  m.reflective = importReflection(finish, transmits, m, notes);
   // conserve_energy: what is transmitted is what is not reflected, per channel.
   if (finish.conserveEnergy && transmits && !m.fresnel)
     m.transmissive *= glm::max(Color(1.0f) - m.reflective, Color(0.0f));
 
   if (finish.metallic > 0.0 && m.hasHighlight()) {
     m.metallic = true;
-    if (finish.metallic != 1.0 || finish.diffuse * opacity != 1.0)
-      notes.push_back(fmt::format(
-          "metallic {}: POV-Ray tints highlights by 1 + m·(1 − F)·(pigment − 1), Lucent's "
-          "metallic by its diffuse colour (pigment × diffuse {} × opacity) with m = 1",
-          finish.metallic, finish.diffuse));
+    m.metallicAmount = finish.metallic;
   }
-  importFade(interior, m, notes);
+  // POV-Ray's metallic tints by the pigment (the pattern's colour where it has one), not
+  // by k_d = pigment·diffuse·opacity.
+  if (m.metallic || m.reflectMetallic > 0.0) m.metallicColor = p;
+  importFade(interior, m);
 
   if (transmits && maxComponent(m.ambient) > 0.0f)
     notes.push_back(
         "ambient on a transparent surface: seen from inside the object Lucent multiplies "
         "it by the transmission, POV-Ray does not");
-  if (transmits && interior.ior != 1.0 &&
-      std::min({m.transmissive.r, m.transmissive.g, m.transmissive.b}) < 1.0f)
-    notes.push_back(
-        "total internal reflection: POV-Ray continues the mirror ray with weight 1, Lucent "
-        "with the transmission's (equal when it is 1)");
+  // Under total internal reflection POV-Ray continues the mirror ray with weight 1 (only a
+  // surface that transmits can reflect totally).
+  m.fullTir = transmits;
   return out;
 }
 

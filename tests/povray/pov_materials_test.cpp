@@ -173,11 +173,45 @@ TEST_CASE("approximations are warnings naming the material", "[povray][materials
         "light reflected inside an absorbing object (its fade applies to "
         "transmitted light only); Lucent does\n");
 
-  Exported tir = exportMaterial(R"XML(transmissive="0.8" ior="1.5")XML");
+  // Lucent's weight under total internal reflection is k_r + k_t.
+  Exported tir = exportMaterial(R"XML(transmissive="0.7" reflective="0.1" ior="1.5")XML");
   CHECK(tir.messages() ==
         "test.xml:3:1: warning: material 'm': under total internal "
-        "reflection POV-Ray reflects with weight 1, Lucent with transmissive "
-        "0.8\n");
+        "reflection POV-Ray reflects with weight 1, Lucent with reflective + transmissive "
+        "0.8 (full-tir=\"true\" is POV-Ray's rule)\n");
+  // full-tir is POV-Ray's rule; so is a k_r + k_t of 1.
+  CHECK(exportMaterial(R"XML(transmissive="0.7" reflective="0.1" ior="1.5" full-tir="true")XML")
+            .messages()
+            .empty());
+  CHECK(
+      exportMaterial(R"XML(transmissive="0.7" reflective="0.3" ior="1.5")XML").messages().empty());
+}
+
+TEST_CASE("the fade is POV-Ray's interior fade, its power as written", "[povray][materials]") {
+  Exported e = exportMaterial(
+      R"XML(transmissive="1" ior="1.5" fade-distance="0.8" fade-power="2" fade-color="0.9 0.3 0.1")XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.pov.issues.empty());
+  CHECK(
+      e.has("#declare IM1_m = interior {\n  ior 1.5\n  fade_power 2\n  fade_distance 0.8\n"
+            "  fade_color rgb <0.9, 0.3, 0.1>\n}\n"));
+}
+
+TEST_CASE("metallic-amount, metallic-color and reflect-metallic: POV-Ray's pigment and keywords",
+          "[povray][materials][finish]") {
+  // The pigment is the metallic colour, its diffuse the factor to k_d.
+  Exported e = exportMaterial(
+      R"XML(diffuse="0.45 0.3 0.1" phong="0.9" metallic="true" metallic-amount="0.5" metallic-color="0.9 0.6 0.2" reflective="0.5" reflect-metallic="0.25")XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.pov.issues.empty());
+  CHECK(e.has("  pigment { rgbft <0.9, 0.6, 0.2, 0, 0> }\n"));
+  CHECK(e.has("    diffuse 0.5\n"));
+  CHECK(e.has("    reflection { rgb <0.5, 0.5, 0.5> metallic 0.25 }\n"));
+  CHECK(e.has("    metallic 0.5\n"));
+  // A diffuse that is no multiple of it cannot be carried by the same pigment: said.
+  Exported off = exportMaterial(
+      R"XML(diffuse="0.45 0.3 0.3" phong="0.9" metallic="true" metallic-color="0.9 0.6 0.2")XML");
+  CHECK(off.messages().find("is not a multiple of metallic-color") != std::string::npos);
 }
 
 TEST_CASE("phong, phong-size, brilliance and metallic are POV-Ray's finish keywords",

@@ -70,11 +70,12 @@ TEST_CASE("filter and transmit: the opacity scales the local terms, not the high
   CHECK(m.material.phongSize == 80.0);
   CHECK(m.material.shininess == Approx(100.0));
   CHECK(m.material.ior == 1.5);
-  // Where Lucent's own rules differ, for this material: ambient seen from inside, and the
-  // weight of total internal reflection (the transmission is below 1).
+  // POV-Ray's weight of total internal reflection, selected on a transparent material.
+  CHECK(m.material.fullTir);
+  CHECK_FALSE(importMaterial(PovPigment{}, finish, interior).material.fullTir);
+  // Where Lucent's own rules differ, for this material: ambient seen from inside.
   CHECK(mentions(m.differences, "from inside"));
-  CHECK(mentions(m.differences, "total internal reflection"));
-  CHECK(m.differences.size() == 2);
+  CHECK(m.differences.size() == 1);
 }
 
 TEST_CASE("reflection: constant, fresnel, falloff, metallic and conserve_energy", "[sdl][finish]") {
@@ -116,15 +117,44 @@ TEST_CASE("reflection: constant, fresnel, falloff, metallic and conserve_energy"
   requireColor(m.material.reflective, Color(0.1f));
   CHECK(mentions(m.differences, "falloff"));
 
-  // metallic reflection, facing the viewer: tinted by the pigment.
+  // metallic reflection: reflect-metallic, tinting by the pigment as metallic-color.
   PovPigment gold;
   gold.color = Color(1.0f, 0.8f, 0.3f);
   finish.reflection = PovReflection{};
   finish.reflection.min = finish.reflection.max = Color(0.5f);
-  finish.reflection.metallic = 1.0;
+  finish.reflection.metallic = 0.75;
   m = importMaterial(gold, finish, interior);
-  requireColor(m.material.reflective, Color(0.5f, 0.4f, 0.15f));
-  CHECK(mentions(m.differences, "metallic"));
+  requireColor(m.material.reflective, Color(0.5f));
+  CHECK(m.material.reflectMetallic == 0.75);
+  REQUIRE(m.material.metallicColor);
+  requireColor(*m.material.metallicColor, gold.color);
+  CHECK(m.differences.empty());
+}
+
+TEST_CASE("metallic: its amount, and the pigment as the colour it tints by", "[sdl][finish]") {
+  PovPigment pigment;
+  pigment.color = Color(0.9f, 0.7f, 0.2f);
+  PovFinish finish;
+  finish.diffuse = 0.4;
+  finish.phong = 1.0;
+  finish.metallic = 0.6;
+  const MaterialImport m = importMaterial(pigment, finish, PovInterior{});
+  CHECK(m.material.metallic);
+  CHECK(m.material.metallicAmount == 0.6);
+  // Not k_d = pigment × 0.4: POV-Ray's pigment.
+  REQUIRE(m.material.metallicColor);
+  requireColor(*m.material.metallicColor, pigment.color);
+  requireColor(m.material.diffuse, pigment.color * 0.4f);
+  CHECK(m.differences.empty());
+  // A pattern pigment tints by the pattern: metallic-color 1 times the texture.
+  PovPigment pattern;
+  pattern.pattern = CheckerTexture{};
+  const MaterialImport p = importMaterial(pattern, finish, PovInterior{});
+  REQUIRE(p.material.metallicColor);
+  requireColor(*p.material.metallicColor, Color(1.0f));
+  // Without metallic (or a highlight to tint) no colour is set.
+  finish.phong = 0.0;
+  CHECK_FALSE(importMaterial(pigment, finish, PovInterior{}).material.metallicColor);
 }
 
 TEST_CASE("interior fade: exponential above fade_power 1000 is Lucent's absorption",
@@ -140,8 +170,18 @@ TEST_CASE("interior fade: exponential above fade_power 1000 is Lucent's absorpti
   MaterialImport m = importMaterial(clear, PovFinish{}, interior);
   // exp(−(1 − fade_color)·d/fade_distance) = exp(−absorption·d)
   requireColor(m.material.absorption, Color(0.25f, 0.1f, 0.0f));
+  CHECK_FALSE(m.material.hasFade());
+  // Below 1000: POV-Ray's fade itself.
   interior.fadePower = 2.0;
   m = importMaterial(clear, PovFinish{}, interior);
   requireColor(m.material.absorption, Color(0.0f));
-  CHECK(mentions(m.differences, "fade_power 2"));
+  CHECK(m.material.fadeDistance == 2.0);
+  CHECK(m.material.fadePower == 2.0);
+  requireColor(m.material.fadeColor, interior.fadeColor);
+  CHECK(m.differences.empty());
+  // fade_power 0 too (a constant in POV-Ray); no fade_distance: no fade.
+  interior.fadePower = 0.0;
+  CHECK(importMaterial(clear, PovFinish{}, interior).material.fadePower == 0.0);
+  interior.fadeDistance = 0.0;
+  CHECK_FALSE(importMaterial(clear, PovFinish{}, interior).material.hasFade());
 }
