@@ -3,6 +3,7 @@
 // printf's default of 6 decimals), and %g when the text would not fit in 255 characters.
 #include "token_stream.h"
 
+#include <algorithm>
 #include <cctype>
 #include <climits>
 #include <cmath>
@@ -206,9 +207,17 @@ std::string TokenStream::strFunction() {
   parseComma();
   const int precision = toInt(parseFloat());
   expect(")");
+  // POV-Ray's buffer holds 254 characters: a longer %f text is written again as %g, and a
+  // longer %g text is "<invalid>". A width or a precision above 300 makes %f that long
+  // anyway, so it is not written out (a precision of 10^8 would take seconds); %g shows
+  // no more than a double's 767 significant digits, so a higher precision changes nothing.
+  constexpr int kSure = 300, kDoubleDigits = 800;
+  const bool tooLong = std::abs(static_cast<long long>(length)) > kSure || precision > kSure;
   std::string f = numberFormat(length, precision);
-  std::string s = format(f, v);
-  if (s.size() >= 255) {  // POV-Ray's buffer: then %g, or nothing sensible
+  std::string s = tooLong ? std::string(255, ' ') : format(f, v);
+  if (s.size() >= 255) {
+    if (std::abs(static_cast<long long>(length)) > kSure) return "<invalid>";
+    f = numberFormat(length, std::min(precision, kDoubleDigits));
     f.back() = 'g';
     s = format(f, v);
     if (s.size() >= 255) s = "<invalid>";
@@ -218,6 +227,7 @@ std::string TokenStream::strFunction() {
 
 // vstr(n, V, separator, L, P): the first n (2 to 5) components of V, each as str() has it.
 std::string TokenStream::vstrFunction() {
+  const Token at = cur_;
   expect("(");
   int n = toInt(parseFloat());
   parseComma();
@@ -232,9 +242,22 @@ std::string TokenStream::vstrFunction() {
   parseComma();
   const int precision = toInt(parseFloat());
   expect(")");
+  // POV-Ray writes each component into a buffer of 768 characters, and overruns it with a
+  // longer one: refused instead, before a width or precision of millions is written out.
+  constexpr int kBuffer = 767;
+  if (std::abs(static_cast<long long>(length)) > kBuffer || precision > kBuffer)
+    error(at, "vstr(): a component's text would be longer than POV-Ray's " +
+                  std::to_string(kBuffer) + " characters (width " + std::to_string(length) +
+                  ", precision " + std::to_string(precision) + ")");
   const std::string f = numberFormat(length, precision);
-  std::string s = format(f, e.v[0]);
-  for (int i = 1; i < n; ++i) s += sep + format(f, e.v[i]);
+  std::string s;
+  for (int i = 0; i < n; ++i) {
+    const std::string c = format(f, e.v[i]);
+    if (c.size() > static_cast<size_t>(kBuffer))
+      error(at, "vstr(): a component's text is longer than POV-Ray's " + std::to_string(kBuffer) +
+                    " characters");
+    s += (i == 0 ? "" : sep) + c;
+  }
   return s;
 }
 

@@ -101,3 +101,13 @@ TEST_CASE("sdl bad input: evaluateText refuses the first scene item where it is"
           "language, not yet the scene items)");
   }
 }
+
+TEST_CASE("sdl bad input: vstr() wider than POV-Ray's buffer is refused before it is written",
+          "[sdl][errors]") {
+  CHECK(errorOf("#declare S = vstr(3, <1, 2, 3>, \",\", 0, 100000000);") ==
+        "test.pov:1:14: error: vstr(): a component's text would be longer than POV-Ray's 767 "
+        "characters (width 0, precision 100000000)");
+  CHECK(errorOf("#declare S = vstr(2, <1e300, 2>, \",\", 0, 700);") ==
+        "test.pov:1:14: error: vstr(): a component's text is longer than POV-Ray's 767 "
+        "characters");
+}

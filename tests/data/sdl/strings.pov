@@ -20,3 +20,9 @@
 #declare T = concat(T, T);
 #debug concat(S, " ", T, "\n")
 #debug concat(substr("abc", 1, 0), "|", substr("abc", 3, 1), "\n")
+// str() past POV-Ray's 254-character buffer: %g instead, or <invalid>; a precision of
+// 10^8 must not take seconds.
+#debug concat("[", str(9, 0, 66666666), "]\n")
+#debug concat("[", str(-2.5, 0, 400), "]\n")
+#debug concat("[", str(1/3, 0, 280), "]\n")
+#debug concat("[", str(7, 400, 2), "]\n")
