@@ -9,6 +9,10 @@
 # from bench/pov_samples_notes.txt ("path/of/scene.pov: why"). Not a CI test.
 #
 #   bash bench/pov_samples.sh [--lucent PATH] [--examples DIR] [--out FILE] [--only REGEX]
+#                             [--update]
+# --update measures only the scenes --only selects and keeps every other row of the page
+# already in --out (the summary is computed again over all of them): after a change that
+# concerns a few scenes, without the hour of the whole run.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -17,13 +21,15 @@ lucent=build/cli/lucent
 examples=/usr/share/doc/povray/examples
 out=docs/pov-samples.md
 only=.
+update=0
 while [ $# -gt 0 ]; do
   case "$1" in
+    --update) update=1; shift ;;
     --lucent) lucent=$2; shift 2 ;;
     --examples) examples=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --only) only=$2; shift 2 ;;
-    *) echo "usage: $0 [--lucent PATH] [--examples DIR] [--out FILE] [--only REGEX]" >&2; exit 2 ;;
+    *) echo "usage: $0 [--lucent PATH] [--examples DIR] [--out FILE] [--only REGEX] [--update]" >&2; exit 2 ;;
   esac
 done
 lucent=$(realpath -m "$lucent")
@@ -37,6 +43,19 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 rows=$work/rows.tsv  # scene, outcome, detail, psnr, lucent cpu, povray s, ratio, import s, parse s
 : >"$rows"
+# --update: the rows of the page already written, except those measured again.
+if [ $update = 1 ]; then
+  [ -f "$out" ] || { echo "--update: no $out to update" >&2; exit 2; }
+  # A kept scene's reason for being below 35 dB is read again from the notes.
+  sed -n '/^## Every scene/,$p' "$out" | grep '^| ' | tail -n +3 |
+    awk -v only="$only" 'FNR == NR { i = index($0, ": "); if (i > 1 && $0 !~ /^#/) note[substr($0, 1, i - 1)] = substr($0, i + 2); next }
+    {
+      line = $0; gsub(/\\\|/, "\001", line); n = split(line, f, "|");
+      for (i = 2; i < n; i++) { gsub(/^ +| +$/, "", f[i]); gsub("\001", "|", f[i]) }
+      if (f[2] ~ only) next;
+      if (f[3] == "imported" && f[4] != "") f[10] = note[f[2]];
+      printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", f[2], f[3], f[10], f[4], f[5], f[6], f[7], f[8], f[9] }' "$notes" - >"$rows"
+fi
 
 # The .ini file of a scene: one in its folder whose Input_File_Name names it, else one of
 # the same name.
@@ -153,6 +172,10 @@ while IFS= read -r pov; do
   cd "$root"
   echo "$rel: $(tail -1 "$rows" | cut -f2,4,7)" >&2
 done < <(find "$examples" -name '*.pov' | sort)
+if [ $update = 1 ]; then  # the kept rows and the new ones, in the order of the scenes
+  sort -t"$(printf '\t')" -k1,1 "$rows" -o "$rows"
+  count=$(wc -l <"$rows")
+fi
 
 # The page.
 {
