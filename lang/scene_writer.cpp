@@ -41,29 +41,37 @@ void cannotWrite(const SourceLoc& loc, const std::string& what) {
   throw LocatedError(loc, "cannot convert: " + what);
 }
 
-std::string transformText(const Mat4& m, const SourceLoc& loc) {
-  // A rotation's rounding can leave such entries (sin(180°) times another rotation's:
-  // -4.5e-32 beside entries near 1). The language refuses nonzero numbers below
-  // kMinMagnitude; an entry that small beside the matrix's largest (below 1e-16 of it,
-  // under the rounding of every product it enters) is written as 0, which changes no
-  // computed bit that matters. A matrix whose entries are all that small (a scale of 1e-35)
-  // is refused: 0 would make it singular.
+namespace {
+
+// A rotation's rounding can leave such entries (sin(180°) times another rotation's:
+// -4.5e-32 beside entries near 1). The language refuses nonzero numbers below
+// kMinMagnitude; an entry that small beside the largest of its kind (below 1e-16 of it,
+// under the rounding of every product it enters) is written as 0, which changes no computed
+// bit that matters. Entries that are all that small (a scale of 1e-35) are refused: 0 would
+// make them degenerate. `what` names them in the message ("the transform's entry").
+void dropResidues(std::vector<double*> values, const SourceLoc& loc, const std::string& what) {
   double largest = 0.0;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(m[c][r]));
-  Mat4 written = m;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 3; ++r) {
-      const double v = m[c][r];
-      if (v == 0.0 || std::abs(v) >= kMinMagnitude) continue;
-      if (std::abs(v) < 1e-16 * largest) {
-        written[c][r] = 0.0;
-        continue;
-      }
-      cannotWrite(loc, "the transform's entry " + xmlNumber(v) +
-                           " is below the smallest magnitude the scene language reads (" +
-                           xmlNumber(kMinMagnitude) + ")");
+  for (const double* v : values) largest = std::max(largest, std::abs(*v));
+  for (double* v : values) {
+    if (*v == 0.0 || std::abs(*v) >= kMinMagnitude) continue;
+    if (std::abs(*v) < 1e-16 * largest) {
+      *v = 0.0;
+      continue;
     }
+    cannotWrite(loc, what + " " + xmlNumber(*v) +
+                         " is below the smallest magnitude the scene language reads (" +
+                         xmlNumber(kMinMagnitude) + ")");
+  }
+}
+
+}  // namespace
+
+std::string transformText(const Mat4& m, const SourceLoc& loc) {
+  Mat4 written = m;
+  std::vector<double*> entries;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r) entries.push_back(&written[c][r]);
+  dropResidues(entries, loc, "the transform's entry");
   return xmlMatrix(written);
 }
 
@@ -169,9 +177,12 @@ class SceneWriter {
     for (const CameraAttribute& attr : cameraAttributes()) {
       if (!attr.read || !attr.takenBy(c.type)) continue;
       if (attr.info.name == "image-plane") {  // a list the probe cannot read back
-        if (c.imagePlane)
-          a.emplace_back("image-plane",
-                         xmlVector(c.imagePlane->right) + " " + xmlVector(c.imagePlane->up));
+        if (c.imagePlane) {
+          Camera::ImagePlane p = *c.imagePlane;
+          dropResidues({&p.right.x, &p.right.y, &p.right.z, &p.up.x, &p.up.y, &p.up.z}, c.loc,
+                       "the camera's image-plane component");
+          a.emplace_back("image-plane", xmlVector(p.right) + " " + xmlVector(p.up));
+        }
         continue;
       }
       if (attr.info.name == "lenses") {  // a list the probe cannot read back

@@ -108,7 +108,9 @@ void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& 
 
 Attributes materialAttributes(const Material& m) {
   Attributes a;
-  const Material defaults;
+  // What the parser gives an attribute left out: diffuse is 1 under a texture.
+  Material defaults;
+  if (m.hasTexture()) defaults.diffuse = Color(1.0f);
   for (const FinishTerm& term : finishTerms()) {
     // Each term's value, and the default's: only what differs is written.
     AttributeProbe value, byDefault;

@@ -87,6 +87,16 @@ TEST_CASE("scene writer: materials shared by several nodes get an id, others are
   CHECK(contains(text, "<!-- from writer.xml:1:"));
 }
 
+TEST_CASE("scene writer: a textured material's diffuse 0 is written (its default is 1)",
+          "[lang][scene-writer]") {
+  const std::string text = written(
+      "<sphere center=\"0 0 -5\"><material ambient=\"1\" diffuse=\"0\"><checker color1=\"1 0 0\" "
+      "color2=\"0 0 1\"/></material></sphere>"
+      "<box><material diffuse=\"1\"><checker color1=\"1 0 0\" color2=\"0 0 1\"/></material></box>");
+  CHECK(contains(text, "<material ambient=\"1\" diffuse=\"0 0 0\">"));
+  CHECK(contains(text, "<material>"));
+}
+
 TEST_CASE("scene writer: repeats and expressions are written expanded, transforms as matrices",
           "[lang][scene-writer]") {
   const std::string text = written(
