@@ -31,7 +31,7 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
       settings_(world.scene().render),
       lights_(world.scene().lights),
       sky_(world.scene().sky),
-      fog_(world.scene().fog),
+      fogs_(world.scene().fogs),
       textures_(world.scene().materials, textures) {
   for (const Material& m : world.scene().materials) {
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
@@ -109,17 +109,18 @@ Color Tracer::escaped(const Ray& ray, const MediaStack& media) const {
   Color background = sky_ ? skyColor(*sky_, ray.d) : settings_.background;
   if (const Material* medium = media.top(); medium && medium->isAbsorbing())
     background *= beerLambert(medium->absorption, kInf);
-  if (fog_ && media.empty())
-    background = fogAlong(*fog_, ray.o, glm::normalize(ray.d), kInf).apply(background);
+  if (!fogs_.empty() && media.allHollow())
+    background = fogsAlong(fogs_, ray.o, glm::normalize(ray.d), kInf).apply(background);
   return background;
 }
 
 void Tracer::travelled(const Ray& ray, double t, const Material* leaving, const MediaStack& media,
                        Color& sum, Color& throughput) const {
-  // Fog over the stretch, if it ran outside every solid (render/fog.h).
-  if (fog_ && !leaving && media.empty()) {
+  // Fog over the stretch, if it ran outside every solid or inside hollow ones only
+  // (render/fog.h).
+  if (!fogs_.empty() && media.allHollow() && (!leaving || leaving->hollow)) {
     const double speed = glm::length(ray.d);
-    const FogEffect fog = fogAlong(*fog_, ray.o, ray.d / speed, t * speed);
+    const FogEffect fog = fogsAlong(fogs_, ray.o, ray.d / speed, t * speed);
     sum += throughput * fog.add;
     throughput *= fog.keep;
   }

@@ -110,7 +110,7 @@ class Tracer {
   const RenderSettings settings_;    // a copy: the scene may change after the renderer is built
   const std::vector<Light> lights_;  // a copy, as the settings
   const std::optional<Sky> sky_;     // a copy, as the settings
-  const std::optional<Fog> fog_;     // a copy; none: no per-ray cost but this test
+  const std::vector<Fog> fogs_;      // a copy; none: no per-ray cost but this test
   // Each light's shadow-ray targets when they are fixed (lightSamplePoint without
   // jitter), computed once: the loop over an area light's 64 samples then only reads
   // them. Empty for a jittered area light, whose targets differ per point.

@@ -102,6 +102,12 @@ const std::vector<FinishTerm>& finishTerms() {
                  "Beer–Lambert absorption coefficient per world unit inside the object: light "
                  "travelling d inside is multiplied by exp(−absorption·d). Default 0."),
            "interior { fade_power 1001 fade_distance fade_color }"),
+      term(boolean("hollow", &Material::hollow,
+                   "true: the scene's fogs go on inside the solid, as inside POV-Ray's hollow "
+                   "objects. Default false: a ray inside a solid is not fogged (POV-Ray's "
+                   "objects are not hollow by default)."),
+           // Written on the objects (povray/pov_materials.cpp: writeInteriorFor).
+           "the object's hollow"),
       term(color("phong", &Material::phong,
                  "k_p, Phong highlight colour: k_p (R·L)^phong-size with R the mirror "
                  "direction of the view, as POV-Ray's phong. Default 0."),

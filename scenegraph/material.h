@@ -45,6 +45,9 @@ struct Material {
   double ior = 1.0;          // eta
   bool fresnel = false;
   Color absorption{0.0f};  // Beer–Lambert coefficient per world unit
+  // POV-Ray's `hollow`: the fog goes on inside the solid (a ray inside a solid that is not
+  // hollow is not fogged, render/fog.h).
+  bool hollow = false;
   // POV-Ray's irid, thin-film interference: the light from each light and the mirror ray's
   // are multiplied by 1 + irid·cos(φ/λ) per channel, φ = 2π·t·(|N·L| + |N·V|), t the film's
   // thickness varied by noise with the turbulence (render/finish.cpp).
