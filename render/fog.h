@@ -7,7 +7,8 @@
 // shares kept multiply, the fog colours (1 − a)·F add. The tracer applies them to every
 // stretch of a camera, reflected or transmitted ray that runs outside all solids or only
 // inside hollow ones (POV-Ray's objects are not hollow by default: no fog inside them);
-// shadow rays are not fogged (POV-Ray's lights default to media_attenuation off).
+// shadow rays are fogged (kept shares only) for lights with media-attenuation, POV-Ray's
+// media_attenuation on (off by default).
 #pragma once
 
 #include "scenegraph/fog.h"

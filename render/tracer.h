@@ -103,6 +103,10 @@ class Tracer {
   Color shadowFactor(const Light& light, uint32_t lightIndex, const LightIncidence& in,
                      const SurfaceInfo& s, const MediaStack& media, const PathSeed& seed,
                      TraceContext& context) const;
+  // What the fogs keep of a light along a shadow ray that starts in `media` (its light
+  // has media-attenuation): the product over its stretches outside solids or inside
+  // hollow ones only.
+  Color fogKeptAlongShadowRay(Ray ray, MediaStack media, RayStats& stats) const;
   // Whether an opaque object blocks the ray (one any-hit query; updates lastBlocker).
   bool blockedByOpaque(const Ray& ray, World::ObjectId& lastBlocker, RayStats& stats) const;
 

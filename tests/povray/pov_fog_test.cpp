@@ -45,3 +45,9 @@ TEST_CASE("an object of a hollow material is hollow in POV-Ray", "[povray][fog]"
   CHECK(e.has("hollow"));
   CHECK_FALSE(exportScene(R"XML(<sphere><material diffuse="1"/></sphere>)XML").has("hollow"));
 }
+
+TEST_CASE("a light with media-attenuation has media_attenuation on", "[povray][fog]") {
+  CHECK(exportScene(R"XML(<light position="0 5 0" media-attenuation="true"/>)XML")
+            .has("  media_attenuation on\n"));
+  CHECK_FALSE(exportScene(R"XML(<light position="0 5 0"/>)XML").has("media_attenuation"));
+}

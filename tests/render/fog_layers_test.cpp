@@ -167,3 +167,30 @@ TEST_CASE("hollow solids: the fog goes on inside them", "[render][fog]") {
     checkColor(traceOne(world, Ray(Vec3(0.0), Vec3(0, 0, -1))), mixed(std::exp(-2.0 / 5.0), kWall));
   }
 }
+
+TEST_CASE("media-attenuation: the fogs dim a light along its shadow rays, by their kept share",
+          "[render][fog]") {
+  // A light 8 above a white floor, looked at from 3 above it: the floor is lit by
+  // k_d·I·(N·L) times what the fog keeps over the 8 up to the light.
+  for (bool attenuated : {false, true}) {
+    Scene scene;
+    Fog fog = constantFog(10.0);
+    fog.filter = 0.5f;
+    scene.fogs = {fog};
+    Material floor;
+    floor.diffuse = Color(1.0f);
+    addShape(scene, PlaneSpec{Vec3(0, 1, 0), 0.0}, addMaterial(scene, floor));
+    Light light;
+    light.position = Vec3(0, 8, 0);
+    light.mediaAttenuation = attenuated;
+    scene.lights = {light};
+    World world(scene);
+    const float eye = static_cast<float>(std::exp(-3.0 / 10.0));
+    const float lit = attenuated ? static_cast<float>(std::exp(-8.0 / 10.0)) : 1.0f;
+    const Color tint = 0.5f + 0.5f * kFog;
+    const Color onFloor = attenuated ? lit * tint : Color(1.0f);
+    INFO("media-attenuation " << attenuated);
+    checkColor(traceOne(world, Ray(Vec3(0, 3, 0), Vec3(0, -1, 0))),
+               (1.0f - eye) * kFog + eye * tint * onFloor);
+  }
+}

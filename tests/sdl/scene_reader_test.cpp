@@ -452,3 +452,17 @@ sphere { 0, 1 texture { A[1] } }
   CHECK(m[7] != m[0]);  // after a #default: the new default's material
   CHECK(s.materials.at(m[7]).ambient.r == Approx(0.0f).margin(1e-7));  // black pigment
 }
+
+TEST_CASE("scene reader: a light's media_attenuation is its media-attenuation", "[sdl][scene]") {
+  auto r = readScene(R"(
+light_source { <0, 10, 0> rgb 1 media_attenuation on }
+light_source { <0, 10, 0> rgb 1 media_attenuation off media_interaction off }
+light_source { <0, 10, 0> rgb 1 }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  REQUIRE(s.lights.size() == 3);
+  CHECK(s.lights[0].mediaAttenuation);
+  CHECK_FALSE(s.lights[1].mediaAttenuation);
+  CHECK_FALSE(s.lights[2].mediaAttenuation);
+}
