@@ -44,7 +44,8 @@ TEST_CASE("lang: <fog> is constant fog by default, ground fog takes offset, alti
   CHECK(s->fogs[0].up == Vec3(0, 1, 0));
 }
 
-TEST_CASE("lang: several <fog>s all stay, in order; turbulence and its parameters", "[lang][fog]") {
+TEST_CASE("lang: several <fog>s all stay, in order, with turbulence and its parameters",
+          "[lang][fog]") {
   auto s = parse(
       "<fog color=\"1\" distance=\"3\"/>"
       "<fog type=\"ground\" color=\"0 0 1\" distance=\"2\" turbulence=\"0.2\"/>"

@@ -27,7 +27,7 @@ TEST_CASE("a scene without fog exports none", "[povray][fog]") {
   CHECK_FALSE(e.has("fog"));
 }
 
-TEST_CASE("every fog is exported, with its turbulence; a mirroring transform folds into it",
+TEST_CASE("every fog is exported, with its turbulence, and a mirroring transform folds into it",
           "[povray][fog]") {
   Exported e = exportScene(
       R"XML(<fog color="1" distance="3"/>

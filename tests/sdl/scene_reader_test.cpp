@@ -338,7 +338,7 @@ fog { distance 9 color rgb 1 }
   CHECK_FALSE(s.fogs[2].turbulence);
 }
 
-TEST_CASE("scene reader: hollow is the material's; CSG operands without their own take it",
+TEST_CASE("scene reader: hollow is the material's and CSG operands without their own take it",
           "[sdl][scene]") {
   auto r = readScene(R"(
 plane { y, 0 pigment { rgb 1 } hollow }
