@@ -18,7 +18,7 @@ void parseCamera(ElementReader& r);
 // lights too, through it). Null if too deep or over the expansion limit (reported).
 std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file,
                                      pugi::xml_node element, int depth);
-// fog_parser.cpp: the scene's <fog> (at most one).
+// fog_parser.cpp: a <fog> (any number; all apply).
 void parseFog(ElementReader& r);
 
 // material_parser.cpp. A top-level <material id> is registered under its id; an inline one

@@ -1,33 +1,68 @@
-// <fog> (docs/scene-language.md, "<fog>"): at most one, at the top level. Constant fog
-// (the default) or ground fog (type="ground": offset, altitude, up), as POV-Ray's fog with
-// fog_type 1 or 2; filter and transmit are those of POV-Ray's rgbft fog colour.
+// <fog> (docs/scene-language.md, "<fog>"): any number, at the top level, all applied.
+// Constant fog (the default) or ground fog (type="ground": offset, altitude, up), as
+// POV-Ray's fog with fog_type 1 or 2; filter and transmit are those of POV-Ray's rgbft fog
+// colour; `turbulence` and its parameters are POV-Ray's fog turbulence.
 #include "element_parsers.h"
+
+#include "values.h"
 
 namespace lucent {
 
 namespace {
 
 const std::vector<std::string_view> kGroundOnly{"offset", "altitude", "up"};
+const std::vector<std::string_view> kTurbulenceOnly{"octaves",    "omega",     "lambda",
+                                                    "turb-depth", "transform", "noise-generator"};
+
+// turbulence: one number for all three axes or three numbers, >= 0 (POV-Ray's vector; a
+// mirrored noise is the transform's).
+std::optional<Vec3> parseStrength(ElementReader& r) {
+  const std::string text = *r.text("turbulence");
+  auto list = parseNumberList(text);
+  if (!list) {
+    r.attrError("turbulence", list.error);
+  } else if (list->size() != 1 && list->size() != 3) {
+    r.attrError("turbulence",
+                "expected 1 number or 3 (x y z), got " + std::to_string(list->size()));
+  } else {
+    const Vec3 v = list->size() == 1 ? Vec3((*list)[0]) : Vec3((*list)[0], (*list)[1], (*list)[2]);
+    if (v.x >= 0 && v.y >= 0 && v.z >= 0) return v;
+    r.attrError("turbulence", "expected numbers >= 0, got '" + text + "'");
+  }
+  return std::nullopt;
+}
+
+FogTurbulence parseTurbulence(ElementReader& r) {
+  FogTurbulence t;
+  if (auto s = parseStrength(r)) t.strength = *s;
+  t.octaves = static_cast<int>(r.integer("octaves", t.octaves, 1, 10));
+  t.omega = r.number("omega", t.omega);
+  t.lambda = r.number("lambda", t.lambda);
+  t.depth = r.number("turb-depth", t.depth);
+  t.noiseGenerator = static_cast<int>(r.integer("noise-generator", t.noiseGenerator, 1, 3));
+  t.noiseFromWorld = glm::inverse(r.transform("transform"));
+  return t;
+}
 
 }  // namespace
 
 void parseFog(ElementReader& r) {
   ParseContext& ctx = r.ctx();
-  if (ctx.scene.fog) {
-    r.error("<fog> is given twice (first at " + ctx.scene.fog->loc.str() +
-            "); a scene has at most one fog");
-    return;
-  }
   Fog fog;
   fog.loc = r.loc();
   fog.type = r.choice("type", FogType::Constant,
                       {{"constant", FogType::Constant}, {"ground", FogType::Ground}});
-  std::vector<std::string_view> allowed{"type", "color", "distance", "filter", "transmit"};
+  std::vector<std::string_view> allowed{"type",   "color",    "distance",
+                                        "filter", "transmit", "turbulence"};
   if (fog.type == FogType::Ground)
     allowed.insert(allowed.end(), kGroundOnly.begin(), kGroundOnly.end());
+  const bool turbulent = r.has("turbulence");
+  if (turbulent) allowed.insert(allowed.end(), kTurbulenceOnly.begin(), kTurbulenceOnly.end());
   r.checkAttributes(allowed, [&](std::string_view attr) -> std::string {
     for (std::string_view a : kGroundOnly)
       if (a == attr) return "belongs to ground fog; this fog is constant (set type=\"ground\")";
+    for (std::string_view a : kTurbulenceOnly)
+      if (a == attr) return "belongs to the fog's turbulence; this fog has none (set 'turbulence')";
     return {};
   });
   if (!r.has("color")) r.error("<fog> needs 'color', the fog's colour");
@@ -45,11 +80,12 @@ void parseFog(ElementReader& r) {
     fog.altitude = r.number("altitude", fog.altitude, NumberRule::positive());
     fog.up = r.direction("up", fog.up);
   }
+  if (turbulent) fog.turbulence = parseTurbulence(r);
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader(ctx, r.file(), n)
         .error("<fog> takes no child elements, got <" + std::string(n.name()) + ">");
   });
-  ctx.scene.fog = fog;
+  ctx.scene.fogs.push_back(fog);
 }
 
 }  // namespace lucent

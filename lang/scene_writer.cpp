@@ -224,20 +224,31 @@ class SceneWriter {
   }
 
   void writeFog() {
-    if (!scene_.fog) return;
-    const Fog& f = *scene_.fog;
-    Attributes a{{"type", f.type == FogType::Ground ? "ground" : "constant"},
-                 {"color", xmlColor(f.color)},
-                 {"distance", xmlNumber(f.distance)},
-                 {"filter", xmlNumber(f.filter)},
-                 {"transmit", xmlNumber(f.transmit)}};
-    if (f.type == FogType::Ground) {
-      a.emplace_back("offset", xmlNumber(f.offset));
-      a.emplace_back("altitude", xmlNumber(f.altitude));
-      a.emplace_back("up", xmlVector(f.up));
+    for (const Fog& f : scene_.fogs) {
+      Attributes a{{"type", f.type == FogType::Ground ? "ground" : "constant"},
+                   {"color", xmlColor(f.color)},
+                   {"distance", xmlNumber(f.distance)},
+                   {"filter", xmlNumber(f.filter)},
+                   {"transmit", xmlNumber(f.transmit)}};
+      if (f.type == FogType::Ground) {
+        a.emplace_back("offset", xmlNumber(f.offset));
+        a.emplace_back("altitude", xmlNumber(f.altitude));
+        a.emplace_back("up", xmlVector(f.up));
+      }
+      if (f.turbulence) {
+        const FogTurbulence& t = *f.turbulence;
+        a.emplace_back("turbulence", xmlVector(t.strength));
+        a.emplace_back("octaves", std::to_string(t.octaves));
+        a.emplace_back("omega", xmlNumber(t.omega));
+        a.emplace_back("lambda", xmlNumber(t.lambda));
+        a.emplace_back("turb-depth", xmlNumber(t.depth));
+        a.emplace_back("noise-generator", std::to_string(t.noiseGenerator));
+        if (t.noiseFromWorld != Mat4(1.0))
+          a.emplace_back("transform", xmlMatrix(glm::inverse(t.noiseFromWorld)));
+      }
+      out_.source(f.loc);
+      out_.open("fog", a, true);
     }
-    out_.source(f.loc);
-    out_.open("fog", a, true);
   }
 
   void writeSky() {

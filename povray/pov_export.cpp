@@ -94,7 +94,7 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   out.line("#version 3.7;");
   out.blank();
   writeSettings(r, out, issues);
-  if (scene.fog) writeFog(*scene.fog, out);
+  for (const Fog& fog : scene.fogs) writeFog(fog, out, issues);
   out.blank();
   writeCamera(*camera, r, out, issues);
   out.blank();

@@ -108,6 +108,7 @@ void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues&
       break;
   }
   if (!light.shadows) out.line("shadowless");
+  if (light.mediaAttenuation) out.line("media_attenuation on");
   out.close();
   if (!light.shadows && anySpecular)
     issues.warning(light.loc, fmt::format("{} light with shadows=\"false\": POV-Ray's shadowless "

@@ -314,6 +314,8 @@ void PovMaterials::writeFor(uint32_t index, const ShapeSpec& shape, const Source
 
 void PovMaterials::writeInteriorFor(uint32_t index, PovWriter& out) const {
   if (surface(index).interior) out.line("interior { I" + names_[index] + " }");
+  // POV-Ray's hollow is the object's, promoted to its interior.
+  if (materials_[index].hollow) out.line("hollow");
 }
 
 void PovMaterials::writeFor(uint32_t index, const ImageMapping& mapping, const char* shapeName,

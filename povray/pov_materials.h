@@ -75,7 +75,8 @@ class PovMaterials {
   void writeFor(uint32_t material, const ImageMapping& mapping, const char* shapeName,
                 const SourceLoc& loc, PovWriter& out, PovIssues& issues,
                 bool interior = true) const;
-  // The interior alone, for a CSG object whose operands share it.
+  // The interior alone (and `hollow` for a hollow material), for a CSG object whose
+  // operands share it.
   void writeInteriorFor(uint32_t material, PovWriter& out) const;
   // Does the material show an image map (whose mapping depends on the shape)?
   bool usesImageMap(uint32_t material) const;

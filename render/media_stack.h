@@ -21,6 +21,13 @@ class MediaStack {
   // The medium the ray is in, or null for the scene's outside (index 1, no absorption).
   const Material* top() const { return size_ > 0 ? items_[size_ - 1] : nullptr; }
   double ior() const { return size_ > 0 ? items_[size_ - 1]->ior : 1.0; }
+  // Whether every medium the ray is in is hollow (true outside all): then fog applies, as
+  // POV-Ray's "hollow ray".
+  bool allHollow() const {
+    for (int i = 0; i < size_; ++i)
+      if (!items_[i]->hollow) return false;
+    return true;
+  }
 
   void push(const Material* m) {
     if (size_ < kCapacity) items_[size_++] = m;

@@ -39,7 +39,7 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
       settings_(world.scene().render),
       lights_(world.scene().lights),
       sky_(world.scene().sky),
-      fog_(world.scene().fog),
+      fogs_(world.scene().fogs),
       textures_(world.scene().materials, textures) {
   for (const Material& m : world.scene().materials) {
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
@@ -118,17 +118,18 @@ Color Tracer::escaped(const Ray& ray, const MediaStack& media) const {
   Color background = sky_ ? skyColor(*sky_, ray.d) : settings_.background;
   if (const Material* medium = media.top(); medium && medium->attenuates())
     background *= interiorAttenuation(*medium, kInf, false);
-  if (fog_ && media.empty())
-    background = fogAlong(*fog_, ray.o, glm::normalize(ray.d), kInf).apply(background);
+  if (!fogs_.empty() && media.allHollow())
+    background = fogsAlong(fogs_, ray.o, glm::normalize(ray.d), kInf).apply(background);
   return background;
 }
 
 void Tracer::travelled(const Ray& ray, double t, const Material* leaving, const MediaStack& media,
                        Color& sum, Color& throughput) const {
-  // Fog over the stretch, if it ran outside every solid (render/fog.h).
-  if (fog_ && !leaving && media.empty()) {
+  // Fog over the stretch, if it ran outside every solid or inside hollow ones only
+  // (render/fog.h).
+  if (!fogs_.empty() && media.allHollow() && (!leaving || leaving->hollow)) {
     const double speed = glm::length(ray.d);
-    const FogEffect fog = fogAlong(*fog_, ray.o, ray.d / speed, t * speed);
+    const FogEffect fog = fogsAlong(fogs_, ray.o, ray.d / speed, t * speed);
     sum += throughput * fog.add;
     throughput *= fog.keep;
   }
@@ -251,11 +252,18 @@ Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightI
   RayStats& stats = context.stats;
   // The object that blocked this light's last shadow ray is asked first.
   World::ObjectId& lastBlocker = context.shadowCache.slot(cacheOwner_, lightIndex, lights_.size());
+  const bool fogged = light.mediaAttenuation && !fogs_.empty();
   auto shadowRay = [&](const Ray& ray) {
-    if (anyTransmissive_) return transmittance(ray, media, lastBlocker, stats);
-    // An opaque scene: one any-hit query, nothing to copy.
-    ++stats.shadow;
-    return blockedByOpaque(ray, lastBlocker, stats) ? Color(0.0f) : Color(1.0f);
+    Color passed;
+    if (anyTransmissive_) {
+      passed = transmittance(ray, media, lastBlocker, stats);
+    } else {
+      // An opaque scene: one any-hit query, nothing to copy.
+      ++stats.shadow;
+      passed = blockedByOpaque(ray, lastBlocker, stats) ? Color(0.0f) : Color(1.0f);
+    }
+    if (fogged && anyPositive(passed)) passed *= fogKeptAlongShadowRay(ray, media, stats);
+    return passed;
   };
   if (in.parallel) {
     // Along the light's rays: to infinity, or as far as the light lies (its plane).
@@ -306,6 +314,39 @@ bool Tracer::blockedByOpaque(const Ray& ray, World::ObjectId& lastBlocker, RaySt
 Color Tracer::transmittance(Ray ray, MediaStack media, RayStats& stats) const {
   World::ObjectId none = World::kNoObject;
   return transmittance(ray, std::move(media), none, stats);
+}
+
+// POV-Ray's media_attenuation: each stretch between the transparent surfaces the shadow ray
+// crosses is dimmed by the fogs if it runs outside all solids or inside hollow ones only,
+// as a camera ray's stretch; fog adds no colour to light.
+Color Tracer::fogKeptAlongShadowRay(Ray ray, MediaStack media, RayStats& stats) const {
+  const double speed = glm::length(ray.d);
+  const Vec3 dir = ray.d / speed;
+  Color kept(1.0f);
+  auto stretch = [&](double from, double to, const Material* leaving) {
+    if (!media.allHollow() || (leaving && !leaving->hollow)) return;
+    const double length = std::isinf(to) ? kInf : (to - from) * speed;
+    kept *= fogsAlong(fogs_, ray.o + ray.d * from, dir, length).keep;
+  };
+  double from = ray.tmin;
+  if (anyTransmissive_) {
+    for (;;) {
+      WorldHit hit;
+      ++stats.queries;
+      if (!world_.intersectTransmissive(ray, hit)) break;
+      const WorldLeaf& leaf = hit.leaf();
+      const bool leaving = leaf.medium && glm::dot(ray.d, hit.surface(ray).ng) > 0.0;
+      stretch(from, hit.t(), leaving ? leaf.medium : nullptr);
+      if (leaf.medium) {
+        if (leaving) media.remove(leaf.medium);
+        else media.push(leaf.medium);
+      }
+      from = hit.t();
+      ray.tmin = hit.t();
+    }
+  }
+  stretch(from, ray.tmax, nullptr);
+  return kept;
 }
 
 Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBlocker,

@@ -105,6 +105,10 @@ class Tracer {
   Color shadowFactor(const Light& light, uint32_t lightIndex, const LightIncidence& in,
                      const SurfaceInfo& s, const MediaStack& media, const PathSeed& seed,
                      TraceContext& context) const;
+  // What the fogs keep of a light along a shadow ray that starts in `media` (its light
+  // has media-attenuation): the product over its stretches outside solids or inside
+  // hollow ones only.
+  Color fogKeptAlongShadowRay(Ray ray, MediaStack media, RayStats& stats) const;
   // Whether an opaque object blocks the ray (one any-hit query; updates lastBlocker).
   bool blockedByOpaque(const Ray& ray, World::ObjectId& lastBlocker, RayStats& stats) const;
 
@@ -112,7 +116,7 @@ class Tracer {
   const RenderSettings settings_;    // a copy: the scene may change after the renderer is built
   const std::vector<Light> lights_;  // a copy, as the settings
   const std::optional<Sky> sky_;     // a copy, as the settings
-  const std::optional<Fog> fog_;     // a copy; none: no per-ray cost but this test
+  const std::vector<Fog> fogs_;      // a copy; none: no per-ray cost but this test
   // Each light's shadow-ray targets when they are fixed (lightSamplePoint without
   // jitter), computed once: the loop over an area light's 64 samples then only reads
   // them. Empty for a jittered area light, whose targets differ per point.

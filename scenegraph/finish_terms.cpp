@@ -121,6 +121,12 @@ const std::vector<FinishTerm>& finishTerms() {
       term(color("fade-color", &Material::fadeColor,
                  "The colour the fade tends to far inside the object. Default 0."),
            "interior { fade_color }", {{"fade_color"}, {"fade_colour"}}),
+      term(boolean("hollow", &Material::hollow,
+                   "true: the scene's fogs go on inside the solid, as inside POV-Ray's hollow "
+                   "objects. Default false: a ray inside a solid is not fogged (POV-Ray's "
+                   "objects are not hollow by default)."),
+           // Written on the objects (povray/pov_materials.cpp: writeInteriorFor).
+           "the object's hollow"),
       term(color("phong", &Material::phong,
                  "k_p, Phong highlight colour: k_p (R·L)^phong-size with R the mirror "
                  "direction of the view, as POV-Ray's phong. Default 0."),

@@ -312,6 +312,12 @@ const std::vector<LightAttribute>& lightAttributes() {
                  "transparent surfaces (transmissive colour, absorption)."),
        {},
        readBoolean("shadows", &Light::shadows)},
+      {attribute("media-attenuation", AttrType::Boolean, {}, "false",
+                 "true: the scene's fogs dim the light along its shadow rays (the stretches "
+                 "outside solids or inside hollow ones only), by the share each fog keeps, as "
+                 "POV-Ray's media_attenuation on. Default false: fog does not dim lights."),
+       {},
+       readBoolean("media-attenuation", &Light::mediaAttenuation)},
       {attribute("id", AttrType::Text, "name", "",
                  "A name for <use ref=\"id\"/>, which places the light again in the use's frame. "
                  "Optional; unique among nodes."),

@@ -102,6 +102,8 @@ struct Light {
   double intensity = 1.0;           // I_L = color * intensity
   Vec3 attenuation{1.0, 0.0, 0.0};  // a b c of min(1, 1/(a + b r + c r^2))
   bool shadows = true;
+  // POV-Ray's media_attenuation: the scene's fogs dim the light along its shadow rays.
+  bool mediaAttenuation = false;
 
   // Spot: outer and inner half-angles in degrees.
   double angle = 30.0;

@@ -61,6 +61,9 @@ struct Material {
   // Total internal reflection: false adds k_t to the mirror ray's weight k_r; true gives
   // the mirror ray weight 1, as POV-Ray's (which then skips its own reflection there).
   bool fullTir = false;
+  // POV-Ray's `hollow`: the fog goes on inside the solid (a ray inside a solid that is not
+  // hollow is not fogged, render/fog.h).
+  bool hollow = false;
   // POV-Ray's irid, thin-film interference: the light from each light and the mirror ray's
   // are multiplied by 1 + irid·cos(φ/λ) per channel, φ = 2π·t·(|N·L| + |N·V|), t the film's
   // thickness varied by noise with the turbulence (render/finish.cpp).

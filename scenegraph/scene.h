@@ -38,7 +38,7 @@ struct Scene {
   RenderSettings render;
   std::vector<Camera> cameras;  // at least one
   std::vector<Light> lights;    // in world space: what the renderer and the exporter read
-  std::optional<Fog> fog;       // <fog>, at most one
+  std::vector<Fog> fogs;        // <fog>s, in scene order; all apply
   // Index 0 is the default material (diffuse 0.8) for shapes with none at all.
   std::vector<Material> materials{Material::defaultMaterial()};
   // The top-level geometry: a group with identity transform. <defs> are not under it.

@@ -139,6 +139,7 @@ LightImport importLight(const PovLight& pov) {
     }
   }
 
+  l.mediaAttenuation = pov.mediaAttenuation;
   if (pov.shadowless) {
     l.shadows = false;
     notes.push_back(

@@ -42,7 +42,8 @@ struct PovLight {
   double tightness = 0.0;
   std::optional<PovAreaLight> area;
   bool shadowless = false;
-  double fadeDistance = 0.0;  // both needed (> 0) for any fading
+  bool mediaAttenuation = false;  // media_attenuation: the fogs dim the light
+  double fadeDistance = 0.0;      // both needed (> 0) for any fading
   double fadePower = 0.0;
   bool looksLike = false;  // `looks_like { ... }` was written (Lucent ignores it)
   PovTransform transform;  // translate, rotate, ... inside the block

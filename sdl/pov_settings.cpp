@@ -87,8 +87,24 @@ FogImport importFog(const PovFog& pov) {
           "fog: POV-Ray measures a transformed ground fog's height in the fog's own space; "
           "Lucent keeps the offset along the transformed up direction");
   }
-  if (pov.turbulence)
-    out.differences.push_back("fog: turbulence has no Lucent equivalent; the fog is smooth");
+  if (pov.turbulent) {
+    // POV-Ray's noise point is the turbulence vector times POV-Ray's world point: in
+    // Lucent's space (z negated) the noise sits mirrored, and so do negative components.
+    FogTurbulence t;
+    Mat4 noiseFromWorld(1.0);
+    for (int axis = 0; axis < 3; ++axis) {
+      t.strength[axis] = std::fabs(pov.turbulence[axis]);
+      noiseFromWorld[axis][axis] =
+          (pov.turbulence[axis] < 0.0 ? -1.0 : 1.0) * (axis == 2 ? -1.0 : 1.0);
+    }
+    t.noiseFromWorld = noiseFromWorld;
+    t.octaves = pov.octaves;
+    t.omega = pov.omega;
+    t.lambda = pov.lambda;
+    t.depth = pov.turbDepth;
+    // t.noiseGenerator: global_settings' noise_generator, set when the scene is read.
+    f.turbulence = t;
+  }
   out.fog = f;
   return out;
 }

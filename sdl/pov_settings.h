@@ -44,7 +44,8 @@ struct PovSkySphere {
   SourceLoc loc;
 };
 
-// `fog { ... }`: fog_type 1 (constant) or 2 (ground), with POV-Ray's defaults.
+// `fog { ... }`: fog_type 1 (constant) or 2 (ground), with POV-Ray's defaults. A scene
+// layers every fog it has.
 struct PovFog {
   int type = 1;
   SourceLoc loc;
@@ -55,7 +56,14 @@ struct PovFog {
   double offset = 0.0;    // fog_offset
   double altitude = 0.0;  // fog_alt
   Vec3 up{0.0, 1.0, 0.0};
-  bool turbulence = false;  // `turbulence` was written (Lucent's fog has none)
+  // POV-Ray's fog turbulence: it exists once any of turbulence, octaves, omega or lambda
+  // is written (the vector then defaults to 0), with these defaults.
+  bool turbulent = false;
+  Vec3 turbulence{0.0};
+  int octaves = 6;  // clamped to 1..10 as POV-Ray's parser does
+  double omega = 0.5;
+  double lambda = 2.0;
+  double turbDepth = 0.5;  // turb_depth: used only when turbulent
   PovTransform transform;
 };
 

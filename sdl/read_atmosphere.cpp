@@ -2,6 +2,8 @@
 #include "read_support.h"
 #include "scene_reader.h"
 
+#include <algorithm>
+
 namespace lucent::sdl {
 
 void SceneReader::readFog(const SourceLoc& loc, TokenStream& in) {
@@ -24,10 +26,19 @@ void SceneReader::readFog(const SourceLoc& loc, TokenStream& in) {
     } else if (w == "up") {
       fog.up = toVec3(in.parseVector());
     } else if (w == "turbulence") {
-      fog.turbulence = true;
-      in.parseVector();
-    } else if (w == "omega" || w == "lambda" || w == "octaves" || w == "turb_depth") {
-      in.parseFloat();  // turbulence's parameters: the turbulence itself is not imported
+      fog.turbulent = true;
+      fog.turbulence = toVec3(in.parseVector());
+    } else if (w == "octaves") {
+      fog.turbulent = true;
+      fog.octaves = std::clamp(static_cast<int>(in.parseFloat()), 1, 10);
+    } else if (w == "omega") {
+      fog.turbulent = true;
+      fog.omega = in.parseFloat();
+    } else if (w == "lambda") {
+      fog.turbulent = true;
+      fog.lambda = in.parseFloat();
+    } else if (w == "turb_depth") {
+      fog.turbDepth = in.parseFloat();
     } else if (w == "color" || w == "colour" ||
                (t.kind == TokenKind::Keyword && isColourKey(t.kw)) || startsNumber(t)) {
       in.unget();
@@ -46,9 +57,7 @@ void SceneReader::readFog(const SourceLoc& loc, TokenStream& in) {
     return;
   }
   for (const std::string& d : imported.differences) warn(in, loc, d);
-  if (scene_.fog)
-    warn(in, loc, "POV-Ray layers several fogs; Lucent has one: the last is imported");
-  scene_.fog = imported.fog;
+  scene_.fogs.push_back(*imported.fog);
 }
 
 void SceneReader::readSkySphere(const SourceLoc& loc, TokenStream& in) {

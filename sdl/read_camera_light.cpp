@@ -143,7 +143,9 @@ PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
       l.fadeDistance = in.parseFloat();
     } else if (w == "fade_power") {
       l.fadePower = in.parseFloat();
-    } else if (w == "media_interaction" || w == "media_attenuation") {
+    } else if (w == "media_attenuation") {
+      l.mediaAttenuation = optionalBool(in);  // fog dims the light along shadow rays
+    } else if (w == "media_interaction") {
       optionalBool(in);  // only media would see it, and media are refused
     } else if (w == "looks_like") {
       l.looksLike = true;

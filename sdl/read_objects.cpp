@@ -147,7 +147,7 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
   } else if (w == "no_shadow") {
     o.noShadow = true;
   } else if (w == "hollow") {
-    optionalBool(in);  // Lucent has no media for hollow to matter to
+    o.hollow = optionalBool(in);  // the material's hollow (fog goes on inside)
   } else if (w == "inverse") {
     o.inverse = !o.inverse;
   } else if (w == "sturm" || w == "hierarchy") {

@@ -331,21 +331,22 @@ Mat4 negateZ() {
 // Lucent's space) taken to POV-Ray's (S), to the space the texture was placed in
 // (textureFromNode) and into pattern space (the inverse of the pattern's transforms).
 uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& interior,
-                                  const Mat4& textureFromNode, const SourceLoc& at,
+                                  bool hollow, const Mat4& textureFromNode, const SourceLoc& at,
                                   TokenStream& in) {
   // A declared texture used as it is, unpatterned: one material, named after it, for
   // every object that uses it with the same interior (convert writes it once, by name).
   std::string key;
   if (!texture.name.empty() && !texture.patterned()) {
-    key = texture.name + fmt::format("|{}|{}|{}|{} {} {}", interior.ior, interior.fadeDistance,
+    key = texture.name + fmt::format("|{}|{}|{}|{} {} {}|{}", interior.ior, interior.fadeDistance,
                                      interior.fadePower, interior.fadeColor.r, interior.fadeColor.g,
-                                     interior.fadeColor.b);
+                                     interior.fadeColor.b, hollow);
     if (const auto it = namedMaterials_.find(key); it != namedMaterials_.end()) return it->second;
   }
   MaterialImport imported = importMaterial(texture.pigment, texture.finish, interior);
   for (const std::string& d : imported.differences) warn(in, at, d);
   Material& m = imported.material;
   m.loc = at;
+  m.hollow = hollow;
   const Mat4 objectToTexture = textureFromNode * negateZ();
   if (PatternPlacement* p = placementOf(m.texture))
     p->patternFromObject = glm::inverse(texture.pigment.transform.povMatrix()) * objectToTexture;
@@ -394,7 +395,9 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   n->shadows = !o.noShadow;
   n->inverse = o.inverse;
   Inherited here = inherited;
-  const bool own = o.texture || o.interior;
+  here.hollow = o.hollow.value_or(inherited.hollow);
+  // A hollow flag that differs from the parent's material's needs a material of its own.
+  const bool own = o.texture || o.interior || here.hollow != inherited.hollow;
   if (o.texture) here.texture = &*o.texture;
   if (o.interior) here.interior = &*o.interior;
   // The texture's space: this object's own (before its transforms) when it wrote the
@@ -415,7 +418,7 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     here.materialTextureFromNode = textureFromNode;
   } else if (own || topLevel || moved || !inherited.material) {
     const SourceLoc at = o.texture ? o.textureLoc : o.loc;
-    n->material = addMaterial(*here.texture, *here.interior, textureFromNode, at, in);
+    n->material = addMaterial(*here.texture, *here.interior, here.hollow, textureFromNode, at, in);
     if (topLevel && !own && !placed) defaultMaterial_ = n->material;
     here.material = n->material;
     here.materialTextureFromNode = textureFromNode;
@@ -439,6 +442,9 @@ void SceneReader::finishScene(TokenStream& in) {
     if (auto* p = std::get_if<PatternTexture>(&m.texture)) noise(p->pattern);
     if (m.normal) noise(m.normal->pattern);
   }
+  // POV-Ray's fog turbulence always takes global_settings' noise generator.
+  for (Fog& f : scene_.fogs)
+    if (f.turbulence) f.turbulence->noiseGenerator = global_.noiseGenerator;
   const int width = options_.imageWidth, height = options_.imageHeight;
   scene_.render.width = width;
   scene_.render.height = height;

@@ -67,6 +67,9 @@ struct PovObject {
   std::optional<PovInterior> interior;
   bool noShadow = false;
   bool inverse = false;
+  // `hollow [on|off]` when written; unwritten, the object takes its CSG parent's (POV-Ray
+  // sets the flag of the operands that did not set theirs), else not hollow.
+  std::optional<bool> hollow;
   int depth = 1;       // levels of objects, this one included
   uint64_t nodes = 1;  // objects within, this one included
 };
@@ -158,6 +161,7 @@ class SceneReader : public ItemReader {
     Mat4 textureFromParent{1.0};
     std::optional<uint32_t> material;
     Mat4 materialTextureFromNode{1.0};
+    bool hollow = false;  // the parent's hollow flag, which an operand without one takes
   };
 
   // scene_reader.cpp: the top level, and what cannot be read
@@ -166,7 +170,8 @@ class SceneReader : public ItemReader {
   void place(const PovObject& object, TokenStream& in);
   std::unique_ptr<Node> toNode(const PovObject& o, const Inherited& inherited, bool topLevel,
                                TokenStream& in);
-  uint32_t addMaterial(const PovTexture& texture, const PovInterior& interior,
+  // `hollow`: the object's flag, which POV-Ray promotes to its interior (the material's).
+  uint32_t addMaterial(const PovTexture& texture, const PovInterior& interior, bool hollow,
                        const Mat4& textureFromNode, const SourceLoc& at, TokenStream& in);
   // The item an identifier names if it is a T; the errors its declaration kept are
   // reported (or, inside another declaration, kept by that one).

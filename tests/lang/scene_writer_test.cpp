@@ -144,8 +144,13 @@ TEST_CASE("scene writer: a written scene reads back to the same text", "[lang][s
   const std::string first = written(
       "<render width=\"64\" height=\"48\" background=\"0.1 0.2 0.3\"/>"
       "<fog color=\"0.5\" distance=\"20\"/>"
+      "<fog type=\"ground\" color=\"0 0 1\" distance=\"2\" turbulence=\"0.2 0.3 0.4\" "
+      "octaves=\"5\" omega=\"0.35\" lambda=\"1.25\" turb-depth=\"0.6\" noise-generator=\"3\" "
+      "transform=\"scale(1 1 -1)\"/>"
+      "<material id=\"air\" transmissive=\"1\" hollow=\"true\"/>"
+      "<light position=\"1 2 3\" media-attenuation=\"true\"/>"
       "<light type=\"area\" position=\"0 5 0\" u=\"1 0 0\" v=\"0 0 1\" samples=\"3 2\"/>"
-      "<difference><box/><sphere radius=\"1.2\" inverse=\"true\"/></difference>"
+      "<difference><box material=\"air\"/><sphere radius=\"1.2\" inverse=\"true\"/></difference>"
       "<torus major=\"2\" minor=\"0.5\" shadows=\"false\"><material>"
       "<pattern type=\"marble\" turbulence=\"0.5\"><color-map><entry at=\"0\" color=\"1\"/>"
       "<entry at=\"1\" color=\"0 0 1\"/></color-map></pattern></material></torus>");
@@ -153,6 +158,9 @@ TEST_CASE("scene writer: a written scene reads back to the same text", "[lang][s
   REQUIRE(reread.scene);
   CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
   CHECK(contains(first, "<light type=\"area\" position=\"0 5 0\" samples=\"3 2\"/>"));
+  CHECK(contains(first, "turbulence=\"0.2 0.3 0.4\" octaves=\"5\" omega=\"0.35\""));
+  CHECK(contains(first, "hollow=\"true\""));
+  CHECK(contains(first, "media-attenuation=\"true\""));
 }
 
 TEST_CASE("scene writer: a checker's placement is written and reads back", "[lang][scene-writer]") {

@@ -62,7 +62,7 @@ double integrated(const Fog& f, const Vec3& o, const Vec3& d, double length, int
 
 TEST_CASE("fog: a surface at distance t keeps exp(-t/distance) of its colour", "[render][fog]") {
   Scene scene;
-  scene.fog = constantFog(5.0);
+  scene.fogs = {constantFog(5.0)};
   addWall(scene, -4.0);
   World world(scene);
   // Straight ahead the wall is 4 away; along (0.6, 0, -0.8) it is 5 away.
@@ -77,12 +77,12 @@ TEST_CASE(
     "[render][fog]") {
   Scene scene;
   scene.render.background = Color(0.2f, 0.4f, 0.9f);
-  scene.fog = constantFog(5.0);
+  scene.fogs = {constantFog(5.0)};
   {
     World world(scene);
     CHECK(traceOne(world, Ray(Vec3(0.0), Vec3(0, 0, -1))) == kFog);
   }
-  scene.fog->transmit = 0.3f;
+  scene.fogs[0].transmit = 0.3f;
   World world(scene);
   checkColor(traceOne(world, Ray(Vec3(0.0), Vec3(0, 0, -1))), mixed(0.3, scene.render.background));
 }
@@ -90,9 +90,9 @@ TEST_CASE(
 TEST_CASE("fog: transmit is the least share kept, filter tints it by the fog colour",
           "[render][fog]") {
   Scene scene;
-  scene.fog = constantFog(2.0);
-  scene.fog->filter = 0.5f;
-  scene.fog->transmit = 0.25f;
+  scene.fogs = {constantFog(2.0)};
+  scene.fogs[0].filter = 0.5f;
+  scene.fogs[0].transmit = 0.25f;
   addWall(scene, -4.0);
   World world(scene);
   // exp(-4/2) = 0.135 is below transmit: a = 0.25.
@@ -104,7 +104,7 @@ TEST_CASE("fog: transmit is the least share kept, filter tints it by the fog col
 TEST_CASE("fog: no fog inside a solid, fog along reflected rays", "[render][fog]") {
   SECTION("a clear slab 2 thick in front of a wall 6 away: 4 of fog") {
     Scene scene;
-    scene.fog = constantFog(5.0);
+    scene.fogs = {constantFog(5.0)};
     addWall(scene, -6.0);
     Material clear;
     clear.transmissive = Color(1.0f);
@@ -114,7 +114,7 @@ TEST_CASE("fog: no fog inside a solid, fog along reflected rays", "[render][fog]
   }
   SECTION("a mirror 2 ahead and a wall 3 behind: 2 + 5 of fog") {
     Scene scene;
-    scene.fog = constantFog(5.0);
+    scene.fogs = {constantFog(5.0)};
     Material mirror;
     mirror.reflective = Color(1.0f);
     addShape(scene, PlaneSpec{Vec3(0, 0, 1), -2.0}, addMaterial(scene, mirror));
@@ -133,7 +133,7 @@ TEST_CASE(
   fog.type = FogType::Ground;
   fog.offset = 0.5;
   fog.altitude = 0.8;
-  scene.fog = fog;
+  scene.fogs = {fog};
   addWall(scene, -4.0);
   World world(scene);
   for (double y : {-1.0, 0.5, 1.3, 2.9}) {

@@ -291,11 +291,11 @@ sky_sphere { pigment { gradient y color_map { [0 rgb 1] [1 color rgb <0, 0, 1>] 
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
-  REQUIRE(s.fog);
-  CHECK(s.fog->type == FogType::Constant);
-  CHECK(s.fog->distance == 10.0);
-  checkColor(s.fog->color, Color(0.5f, 0.6f, 0.7f));
-  CHECK(s.fog->transmit == Approx(0.2f));
+  REQUIRE(s.fogs.size() == 1);
+  CHECK(s.fogs[0].type == FogType::Constant);
+  CHECK(s.fogs[0].distance == 10.0);
+  checkColor(s.fogs[0].color, Color(0.5f, 0.6f, 0.7f));
+  CHECK(s.fogs[0].transmit == Approx(0.2f));
   PovSkySphere sky;
   PovSkyGradient g;
   g.colorMap = {{0.0, Color(1.0f)}, {1.0, Color(0.0f, 0.0f, 1.0f)}};
@@ -306,6 +306,57 @@ sky_sphere { pigment { gradient y color_map { [0 rgb 1] [1 color rgb <0, 0, 1>] 
   checkColor(s.sky->pattern.map.entries[1].color, want.pattern.map.entries[1].color);
   checkVec(s.sky->pattern.pattern.axis, want.pattern.pattern.axis);
   checkMat(s.sky->skyFromWorld, want.skyFromWorld);
+}
+
+TEST_CASE("scene reader: every fog, with its turbulence in POV-Ray's space", "[sdl][scene]") {
+  auto r = readScene(R"(
+global_settings { noise_generator 3 }
+fog { fog_type 2 distance 1.5 color rgb <0, 0, 1> fog_alt 0.35
+      turbulence <0.15, -0.2, 0.25> omega 0.35 lambda 1.25 octaves 12 turb_depth 0.7 }
+fog { distance 9 color rgb 1 octaves 3 }
+fog { distance 9 color rgb 1 }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  REQUIRE(s.fogs.size() == 3);
+  REQUIRE(s.fogs[0].turbulence);
+  const FogTurbulence& t = *s.fogs[0].turbulence;
+  CHECK(t.strength == Vec3(0.15, 0.2, 0.25));
+  // POV-Ray's point (x, y, z) is Lucent's (x, y, -z); a negative component mirrors too.
+  CHECK(t.noiseFromWorld[0][0] == 1.0);
+  CHECK(t.noiseFromWorld[1][1] == -1.0);
+  CHECK(t.noiseFromWorld[2][2] == -1.0);
+  CHECK(t.octaves == 10);  // clamped, as POV-Ray's parser does
+  CHECK(t.omega == 0.35);
+  CHECK(t.lambda == 1.25);
+  CHECK(t.depth == 0.7);
+  CHECK(t.noiseGenerator == 3);  // global_settings'
+  // octaves alone make POV-Ray's turbulence, of strength 0.
+  REQUIRE(s.fogs[1].turbulence);
+  CHECK(s.fogs[1].turbulence->strength == Vec3(0.0));
+  CHECK(s.fogs[1].turbulence->octaves == 3);
+  CHECK_FALSE(s.fogs[2].turbulence);
+}
+
+TEST_CASE("scene reader: hollow is the material's and CSG operands without their own take it",
+          "[sdl][scene]") {
+  auto r = readScene(R"(
+plane { y, 0 pigment { rgb 1 } hollow }
+sphere { 0, 1 pigment { rgb 1 } }
+union { sphere { 0, 1 } sphere { x, 1 hollow off } pigment { rgb 1 } hollow on }
+sphere { 0, 1 pigment { rgb 1 } hollow off }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  CHECK(materialOf(s, topNode(s, 0)).hollow);
+  CHECK_FALSE(materialOf(s, topNode(s, 1)).hollow);
+  const Node& u = topNode(s, 2);
+  CHECK(materialOf(s, u).hollow);
+  REQUIRE(u.children.size() == 2);
+  CHECK(!u.children[0]->material);  // the union's, hollow
+  REQUIRE(u.children[1]->material);
+  CHECK_FALSE(materialOf(s, *u.children[1]).hollow);
+  CHECK_FALSE(materialOf(s, topNode(s, 3)).hollow);
 }
 
 TEST_CASE(
@@ -400,4 +451,18 @@ sphere { 0, 1 texture { A[1] } }
   CHECK(s.materials.at(m[6]).ior == Approx(1.2));
   CHECK(m[7] != m[0]);  // after a #default: the new default's material
   CHECK(s.materials.at(m[7]).ambient.r == Approx(0.0f).margin(1e-7));  // black pigment
+}
+
+TEST_CASE("scene reader: a light's media_attenuation is its media-attenuation", "[sdl][scene]") {
+  auto r = readScene(R"(
+light_source { <0, 10, 0> rgb 1 media_attenuation on }
+light_source { <0, 10, 0> rgb 1 media_attenuation off media_interaction off }
+light_source { <0, 10, 0> rgb 1 }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  REQUIRE(s.lights.size() == 3);
+  CHECK(s.lights[0].mediaAttenuation);
+  CHECK_FALSE(s.lights[1].mediaAttenuation);
+  CHECK_FALSE(s.lights[2].mediaAttenuation);
 }
