@@ -185,13 +185,15 @@ Texture parseBrickTexture(ElementReader& r) {
 }
 
 NormalSpec parseNormal(ElementReader& r) {
-  r.checkAttributes(joined(joined(kValueAttributes, kPlacementAttributes), {"depth"}));
+  r.checkAttributes(
+      joined(joined(kValueAttributes, kPlacementAttributes), {"depth", "keep-facing-away"}));
   NormalSpec n;
   if (!r.has("type"))
     r.error("<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles or a colour pattern)");
   else n.pattern.type = r.choice("type", PatternType::bumps, patternNames(false));
   parseValueAttributes(r, n.pattern);
   n.depth = r.number("depth", n.depth);
+  n.keepFacingAway = r.boolean("keep-facing-away", n.keepFacingAway);
   noChildren(r);
   return n;
 }

@@ -133,6 +133,7 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
   if (m.normal) {
     Attributes a = patternAttributes(m.normal->pattern, m.loc);
     a.emplace_back("depth", xmlNumber(m.normal->depth));
+    if (m.normal->keepFacingAway) a.emplace_back("keep-facing-away", "true");
     out.open("normal", a, true);
   }
   if (m.bumpMap)

@@ -9,6 +9,17 @@ namespace lucent {
 // Mirror direction of d about the unit normal n: d − 2(d·n)n.
 inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - 2.0 * glm::dot(d, n) * n; }
 
+// POV-Ray's mirror direction about a bent shading normal n (raw: the unbent normal facing
+// the viewer; all unit vectors, d the incident direction). A mirror ray that would leave
+// below the surface (behind raw) is turned back: if n faces the viewer it is reflected once
+// more, about raw; if n faces away it is d reflected about raw instead. With n = raw this
+// is reflect(d, n).
+inline Vec3 reflectAboveSurface(const Vec3& d, const Vec3& n, const Vec3& raw) {
+  const Vec3 r = reflect(d, n);
+  if (glm::dot(r, raw) >= 0.0) return r;
+  return glm::dot(r, n) < 0.0 ? reflect(d, raw) : reflect(r, raw);
+}
+
 // Snell's law (Heckbert's form): d is the unit incident direction, n the unit normal on
 // the incident side (d·n ≤ 0), eta = n1/n2 (incident over transmitted index). Writes the
 // unit transmitted direction; returns false under total internal reflection.

@@ -13,7 +13,7 @@ Vec3 perturbedShadingNormal(const NormalSpec& normal, const Transform& worldFrom
       glm::normalize(glm::transpose(Mat3(worldFromObject.worldFromObject())) * n);
   const Vec3 bent = perturbNormal(normal, surface.pObject, objectNormal);
   const Vec3 world = worldFromObject.normalToWorld(bent);
-  return glm::dot(world, v) > 0.0 ? world : n;
+  return normal.keepFacingAway || glm::dot(world, v) > 0.0 ? world : n;
 }
 
 Vec3 bumpedShadingNormal(const ImageMap& map, const BumpMapSpec& bump, const SurfaceInfo& surface,

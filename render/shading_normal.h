@@ -15,7 +15,8 @@ namespace lucent {
 // n: the unit shading normal already facing the viewer (v, unit, towards the viewer).
 // Returns the perturbed unit normal in the world. A perturbed normal that would face away
 // from the viewer (a deep bump seen at a grazing angle) is not used: the surface keeps n
-// there, so no shading point ever looks at its own back.
+// there, so no shading point ever looks at its own back; unless normal.keepFacingAway
+// (POV-Ray's rule), which keeps it.
 Vec3 perturbedShadingNormal(const NormalSpec& normal, const Transform& worldFromObject,
                             const SurfaceInfo& surface, const Vec3& n, const Vec3& v);
 

@@ -95,12 +95,17 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     travelled(ray, hit.t(), leaving ? &m : nullptr, media, sum, throughput);
 
     const Vec3 v = -glm::normalize(ray.d);
-    const Vec3 n = shadingNormal(leaf, s, front, v);
+    Vec3 unbent;
+    const Vec3 n = shadingNormal(leaf, s, front, v, unbent);
     Color result = localLight(leaf, s, n, v, leaving, media, seed, context);
     const Interface side = interfaceAt(m, solid, front, media);
     const SecondaryRays rays =
         secondaryRays(m, ShadingPoint{s.p, n, v}, solid, side.n1, side.n2, reflectionTint(leaf, s));
-    result = withBranches(result, s, n, v, rays, depth, weight, media, side.beyond, seed, context);
+    // A bent normal may send the mirror ray below the surface: it is turned back (with
+    // n = unbent this is the plain mirror direction).
+    const Vec3 mirror = reflectAboveSurface(-v, n, unbent);
+    result =
+        withBranches(result, s, mirror, rays, depth, weight, media, side.beyond, seed, context);
     sum += throughput * result;
 
     if (!rays.straight) return sum;
@@ -143,12 +148,13 @@ void Tracer::travelled(const Ray& ray, double t, const Material* leaving, const 
 // The shading normal follows the geometric one's side; if interpolation still leaves it
 // facing away, the geometric normal is used instead. Then the material's normal pattern
 // and bump map.
-Vec3 Tracer::shadingNormal(const WorldLeaf& leaf, const SurfaceInfo& s, bool front,
-                           const Vec3& v) const {
+Vec3 Tracer::shadingNormal(const WorldLeaf& leaf, const SurfaceInfo& s, bool front, const Vec3& v,
+                           Vec3& unbent) const {
   const Material& m = *leaf.material;
   const Vec3 ng = front ? s.ng : -s.ng;
   Vec3 n = front ? s.ns : -s.ns;
   if (glm::dot(n, v) <= 0.0) n = ng;
+  unbent = n;
   if (m.normal) n = perturbedShadingNormal(*m.normal, leaf.instance->transform(), s, n, v);
   if (m.bumpMap)
     n = bumpedShadingNormal(*textures_.bumpMap(leaf.materialIndex), *m.bumpMap, s, n, v);
@@ -202,7 +208,7 @@ Tracer::Interface Tracer::interfaceAt(const Material& m, bool solid, bool front,
   return side;
 }
 
-Color Tracer::withBranches(Color result, const SurfaceInfo& s, const Vec3& n, const Vec3& v,
+Color Tracer::withBranches(Color result, const SurfaceInfo& s, const Vec3& mirror,
                            const SecondaryRays& rays, int depth, const Color& weight,
                            const MediaStack& media, const MediaStack& beyond, PathSeed& seed,
                            TraceContext& context) const {
@@ -218,8 +224,8 @@ Color Tracer::withBranches(Color result, const SurfaceInfo& s, const Vec3& n, co
     Color w = weight * rays.mirror;
     if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
       ++context.stats.reflected;
-      result += rays.mirror * trace(spawnRay(s, reflect(-v, n), settings_.epsilon), depth + 1, w,
-                                    media, seed, context);
+      result += rays.mirror *
+                trace(spawnRay(s, mirror, settings_.epsilon), depth + 1, w, media, seed, context);
     }
   }
   return result;

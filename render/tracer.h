@@ -75,7 +75,9 @@ class Tracer {
   void travelled(const Ray& ray, double t, const Material* leaving, const MediaStack& media,
                  Color& sum, Color& throughput) const;
   // The normal shading uses at surface s of `leaf`, facing the viewer (direction v).
-  Vec3 shadingNormal(const WorldLeaf& leaf, const SurfaceInfo& s, bool front, const Vec3& v) const;
+  // Also returns, in `unbent`, the normal before the material's <normal> or <bump-map>.
+  Vec3 shadingNormal(const WorldLeaf& leaf, const SurfaceInfo& s, bool front, const Vec3& v,
+                     Vec3& unbent) const;
   // The colour reflect-metallic tints the mirror ray by at s (1 without it).
   Color reflectionTint(const WorldLeaf& leaf, const SurfaceInfo& s) const;
   // The surface's own light: emission, ambient and the lights' direct light.
@@ -91,7 +93,8 @@ class Tracer {
   Interface interfaceAt(const Material& m, bool solid, bool front, const MediaStack& media) const;
   // `result` plus the bent transmitted ray and the mirror ray, each traced one level
   // deeper when its weight and the depth allow.
-  Color withBranches(Color result, const SurfaceInfo& s, const Vec3& n, const Vec3& v,
+  // `mirror`: the mirror ray's unit direction.
+  Color withBranches(Color result, const SurfaceInfo& s, const Vec3& mirror,
                      const SecondaryRays& rays, int depth, const Color& weight,
                      const MediaStack& media, const MediaStack& beyond, PathSeed& seed,
                      TraceContext& context) const;

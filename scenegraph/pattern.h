@@ -167,6 +167,9 @@ struct BrickSpec {
 struct NormalSpec {
   PatternSpec pattern;
   double depth = 0.5;
+  // Where the bent normal faces away from the viewer: false (Lucent's rule) shades with the
+  // unperturbed normal there; true keeps the bent one, as POV-Ray does.
+  bool keepFacingAway = false;
 };
 
 }  // namespace lucent

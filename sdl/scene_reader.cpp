@@ -352,6 +352,7 @@ uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& 
     p->patternFromObject = glm::inverse(texture.pigment.transform.povMatrix()) * objectToTexture;
   if (texture.normal) {
     m.normal = texture.normal->spec;
+    m.normal->keepFacingAway = true;  // POV-Ray keeps a bent normal that faces away
     m.normal->pattern.placement.patternFromObject =
         glm::inverse(texture.normal->transform.povMatrix()) * objectToTexture;
   }

@@ -208,3 +208,16 @@ TEST_CASE("scene writer: a rounding residue in a transform is written as 0, a ti
           "scene language reads (1e-30)");
   }
 }
+
+TEST_CASE("scene writer: a normal's keep-facing-away is written when true and reads back",
+          "[lang][scene-writer]") {
+  const std::string first = written(
+      "<sphere><material><normal type=\"granite\" depth=\"2.6\" keep-facing-away=\"true\"/>"
+      "</material></sphere><sphere center=\"3 0 0\"><material>"
+      "<normal type=\"gradient\" depth=\"1\"/></material></sphere>");
+  CHECK(contains(first, "<normal type=\"granite\" depth=\"2.6\" keep-facing-away=\"true\"/>"));
+  CHECK(contains(first, "<normal type=\"gradient\" depth=\"1\"/>"));
+  auto reread = parseSceneString(first, "writer.xml");
+  REQUIRE(reread.scene);
+  CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+}

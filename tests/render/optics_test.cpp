@@ -148,3 +148,25 @@ TEST_CASE("a spot-shaped area light's cone is seen from its centre, for every sa
   area.cone = false;
   CHECK(lightIncidence(area, Vec3(4.0 * std::tan(radians(21.0)), 0, 0)).radiance == Color(1.0f));
 }
+
+TEST_CASE("reflectAboveSurface turns mirror rays below the surface back as POV-Ray",
+          "[render][optics]") {
+  const Vec3 raw(0, 0, -1);  // the wall's own normal, facing the viewer
+  const Vec3 d(0, -0.8, 0.6);
+  // Above the surface already: the plain mirror direction, to the last bit.
+  const Vec3 tilted = glm::normalize(Vec3(0, -0.2, -1));
+  CHECK(reflectAboveSurface(d, tilted, raw) == reflect(d, tilted));
+  CHECK(reflectAboveSurface(d, raw, raw) == reflect(d, raw));
+  // The bent normal (0, -5, -12)/13 faces the viewer (d·n = -3.2/13) but sends d to
+  // (0, -0.8 - 32/169, 0.6 - 76.8/169), below the wall: reflected again about raw.
+  const Vec3 r1 = reflectAboveSurface(d, Vec3(0, -5, -12) / 13.0, raw);
+  CHECK(r1.x == Approx(0).margin(1e-12));
+  CHECK(r1.y == Approx(-0.8 - 32 / 169.0).epsilon(1e-12));
+  CHECK(r1.z == Approx(-(0.6 - 76.8 / 169.0)).epsilon(1e-12));
+  // The bent normal (0, -2, -1)/√5 faces away (d·n = 1/√5) and sends d to (0, 0, 1), behind
+  // both: d is reflected about raw instead, to (0, -0.8, -0.6).
+  const Vec3 r2 = reflectAboveSurface(d, glm::normalize(Vec3(0, -2, -1)), raw);
+  CHECK(r2.x == Approx(0).margin(1e-12));
+  CHECK(r2.y == Approx(-0.8).epsilon(1e-12));
+  CHECK(r2.z == Approx(-0.6).epsilon(1e-12));
+}

@@ -212,3 +212,47 @@ TEST_CASE("planar is 1 − |y| in its band and its normal a ridge along y = 0", 
   REQUIRE(e.ok());
   CHECK_THAT(e.text, Catch::Contains("planar 3"));
 }
+
+TEST_CASE("keep-facing-away keeps a bent normal that faces away from the viewer, as POV-Ray",
+          "[render][pattern]") {
+  // normal { planar 15 } on a wall facing -z leans the normal below y = 0 by 2·15/15 = 2
+  // towards -y: n = (0, -2, -1)/√5. Seen along (0, -0.8, 0.6) that normal faces away
+  // (n·v = -1/√5). Lit from (0, -1, -1): POV-Ray shades with n, N·L = 3/√10; Lucent's
+  // default shades with the wall's own normal there, N·L = 1/√2.
+  auto wall = [](const std::string& keep) {
+    return parse(R"XML(<render ambient="0"/><plane normal="0 0 -1" offset="0">
+      <material diffuse="1"><normal type="planar" depth="15")XML" +
+                 keep + R"XML(/></material></plane>
+      <light type="directional" direction="0 1 1"/>)XML");
+  };
+  auto lucentRule = wall(""), povrayRule = wall(" keep-facing-away=\"true\"");
+  const Vec3 d(0, -0.8, 0.6);
+  for (double y : {-0.3, -0.5, -0.7}) {
+    INFO("y = " << y);
+    const Ray ray(Vec3(0.3, y, 0) - 1.25 * d, d);
+    World lucent(*lucentRule), povray(*povrayRule);
+    CHECK(traceOne(lucent, ray).r == Approx(std::sqrt(0.5)).margin(1e-6));
+    CHECK(traceOne(povray, ray).r == Approx(3 / std::sqrt(10.0)).margin(1e-6));
+  }
+}
+
+TEST_CASE("a mirror ray that a bent normal sends below the surface is turned back, as POV-Ray",
+          "[render][pattern]") {
+  // normal { planar 3.125 } on a mirror wall facing -z leans the normal below y = 0 by
+  // 2·3.125/15 = 5/12 towards -y: n = (0, -5, -12)/13, which faces the viewer looking along
+  // d = (0, -0.8, 0.6) but mirrors d into the wall, to (0, -0.98935, 0.14556). POV-Ray
+  // reflects that once more about the wall's normal, to (0, -0.98935, -0.14556): back to
+  // the viewer's side, where an emissive plane at z = -2 is seen.
+  auto scene = parse(R"XML(<render ambient="0"/><plane normal="0 0 -1" offset="0">
+      <material reflective="1"><normal type="planar" depth="3.125"/></material></plane>
+      <plane normal="0 0 1" offset="-2"><material emissive="0.25 0.5 1"/></plane>)XML");
+  World world(*scene);
+  const Vec3 d(0, -0.8, 0.6);
+  for (double y : {-0.3, -0.5, -0.7}) {
+    INFO("y = " << y);
+    const Color seen = traceOne(world, Ray(Vec3(0.3, y, 0) - 1.25 * d, d));
+    CHECK(seen.r == Approx(0.25).margin(1e-6));
+    CHECK(seen.g == Approx(0.5).margin(1e-6));
+    CHECK(seen.b == Approx(1.0).margin(1e-6));
+  }
+}

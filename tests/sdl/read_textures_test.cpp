@@ -116,6 +116,7 @@ sphere { 0, 1 pigment { brick color rgb <1, 1, 1>, color rgb 0 brick_size <1, 2,
   REQUIRE(m.normal);
   CHECK(m.normal->pattern.type == PatternType::bumps);
   CHECK(m.normal->depth == 0.4);
+  CHECK(m.normal->keepFacingAway);  // POV-Ray's rule for bent normals facing away
   checkMat(m.normal->pattern.placement.patternFromObject, scaling(10.0) * kS);
 
   const Material& wood = materialOf(s, top(s, 1));
