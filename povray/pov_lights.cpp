@@ -73,6 +73,15 @@ void writeParallel(const Light& light, PovWriter& out, PovLightOut& row) {
 // A light at a position: its fade, then its type's keyword and modifiers.
 void writePositioned(const Light& light, const std::string& type, PovWriter& out, PovIssues& issues,
                      PovLightOut& row) {
+  if (light.fades()) {
+    // POV-Ray's own fade: written as it is.
+    out.line(povVector(light.position));
+    out.line("color " + povRgb(light.radiance()));
+    out.line("fade_distance " + povNumber(light.fadeDistance));
+    out.line("fade_power " + povNumber(light.fadePower));
+    lightTypeInfo(light.type).writePov(light, row);
+    return;
+  }
   PovFade fade = povFade(light.attenuation);
   Color c = light.radiance() * static_cast<float>(fade.scale);
   out.line(povVector(light.position));
@@ -110,10 +119,17 @@ void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues&
   if (!light.shadows) out.line("shadowless");
   if (light.mediaAttenuation) out.line("media_attenuation on");
   out.close();
-  if (!light.shadows && anySpecular)
-    issues.warning(light.loc, fmt::format("{} light with shadows=\"false\": POV-Ray's shadowless "
-                                          "lights give no specular highlights",
-                                          type));
+  // POV-Ray's shadowless light is the one without highlights: shadows and highlights go
+  // together there.
+  if (light.shadows != light.highlights && anySpecular)
+    issues.warning(light.loc,
+                   light.shadows
+                       ? fmt::format("{} light with highlights=\"false\": POV-Ray's lights with "
+                                     "shadows always give highlights",
+                                     type)
+                       : fmt::format("{} light with shadows=\"false\": POV-Ray's shadowless "
+                                     "lights give no specular highlights",
+                                     type));
 }
 
 }  // namespace lucent

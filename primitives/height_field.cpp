@@ -32,8 +32,9 @@ bool addFaceNormal(const HeightMap& m, int x0, int z0, int x1, int z1, int x2, i
 
 }  // namespace
 
-HeightField::HeightField(std::shared_ptr<const HeightMap> map, bool smooth, double waterLevel)
-    : map_(std::move(map)), smooth_(smooth), water_(waterLevel) {
+HeightField::HeightField(std::shared_ptr<const HeightMap> map, bool smooth, double waterLevel,
+                         bool open)
+    : map_(std::move(map)), smooth_(smooth), open_(open), water_(waterLevel) {
   if (!map_ || map_->width < 2 || map_->depth < 2 ||
       map_->values.size() != static_cast<size_t>(map_->width) * map_->depth)
     throw std::invalid_argument("HeightField: the grid must be at least 2 x 2 points");
@@ -122,6 +123,7 @@ double HeightField::height(double x, double z) const {
 }
 
 bool HeightField::inside(const Vec3& p) const {
+  if (open_) return false;  // a surface has no inside
   if (!(p.x >= 0.0 && p.x <= 1.0 && p.z >= 0.0 && p.z <= 1.0)) return false;
   if (p.y < floor_) return false;
   return p.y < height(p.x, p.z);
@@ -278,6 +280,7 @@ void HeightField::walk(const Ray& ray, Sink&& sink) const {
 bool HeightField::intersect(const Ray& ray, Hit& hit) const {
   bool found = false;
   walk(ray, [&](double t, uint32_t part, bool) {
+    if (open_ && part >= kWallX0) return false;  // no walls, no floor
     if (t <= ray.tmin) return false;
     if (t < ray.tmax) {
       hit.t = t;
@@ -293,8 +296,9 @@ bool HeightField::intersect(const Ray& ray, Hit& hit) const {
 void HeightField::crossings(const Ray& ray, CrossingList& out) const {
   bool inside = false;
   walk(ray, [&](double t, uint32_t part, bool entering) {
+    if (open_ && part >= kWallX0) return false;  // no walls, no floor
     if (t < ray.tmin) {
-      inside = entering;
+      inside = entering && !open_;
       return false;
     }
     if (t > ray.tmax) return true;
@@ -302,7 +306,7 @@ void HeightField::crossings(const Ray& ray, CrossingList& out) const {
     c.hit.t = t;
     c.hit.shape = this;
     c.hit.part = part;
-    c.entering = entering;
+    c.entering = entering || open_;  // a surface's crossings all enter
     out.items.push_back(c);
     return false;
   });

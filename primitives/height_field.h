@@ -13,7 +13,9 @@
 // level are gone (POV-Ray clips them by its bounding box, whose bottom is there) while the
 // surface at the water level stays, and crossings alternate. POV-Ray's height field has neither
 // walls nor floor (its inside goes on below the surface without end): the two agree wherever the
-// surface is seen from above and the edges lie at the water level.
+// surface is seen from above and the edges lie at the water level. `open` (POV-Ray's look):
+// the surface alone, without walls and floor, still cut at the floor; a surface then, not a
+// solid (no inside, as Lucent's other open shapes).
 //
 // Method: a 2-D grid walk over the cells (Amanatides & Woo 1987, "A fast voxel traversal
 // algorithm for ray tracing") that skips whole blocks of cells through a min/max mip
@@ -39,11 +41,12 @@ class HeightField final : public Shape {
  public:
   // Throws std::invalid_argument for a grid smaller than 2 x 2, a non-finite water level or
   // one at or above the highest point.
-  HeightField(std::shared_ptr<const HeightMap> map, bool smooth, double waterLevel);
+  HeightField(std::shared_ptr<const HeightMap> map, bool smooth, double waterLevel,
+              bool open = false);
 
   const char* kind() const override { return "height-field"; }
   AABB bounds() const override { return bounds_; }
-  bool isSolid() const override { return true; }
+  bool isSolid() const override { return !open_; }
   bool intersect(const Ray& ray, Hit& hit) const override;
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
@@ -80,6 +83,7 @@ class HeightField final : public Shape {
 
   std::shared_ptr<const HeightMap> map_;
   bool smooth_;
+  bool open_;  // the surface without walls and floor
   double water_;
   double floor_;  // the solid's bottom: just under the water level
   int cellsX_, cellsZ_;

@@ -58,7 +58,7 @@ int Lathe::minPoints(LatheSpline spline) {
   return 2;
 }
 
-Lathe::Lathe(LatheSpline spline, const std::vector<Vec2>& points) {
+Lathe::Lathe(LatheSpline spline, const std::vector<Vec2>& points, bool open) : open_(open) {
   const int n = static_cast<int>(points.size());
   if (n < minPoints(spline)) throw std::invalid_argument("lathe: too few points for the spline");
   if (spline == LatheSpline::Bezier && n % 4 != 0)
@@ -270,7 +270,8 @@ void Lathe::decideByInside(const Vec3& o, const Vec3& d, std::vector<LineRoot>& 
   bool before = false;
   size_t w = 0;
   for (size_t i = 0; i < roots.size(); ++i) {
-    const bool after = i + 1 < roots.size() && inside(o + 0.5 * (roots[i].t + roots[i + 1].t) * d);
+    const bool after =
+        i + 1 < roots.size() && solidInside(o + 0.5 * (roots[i].t + roots[i + 1].t) * d);
     if (after != before) roots[w++] = roots[i];
     before = after;
   }
@@ -335,10 +336,12 @@ namespace {
 thread_local std::vector<Lathe::LineRoot> scratch;
 }  // namespace
 
+bool Lathe::isDisc(const LineRoot& r) const { return (r.part & ~kEnteringBit) >= pieces_.size(); }
+
 bool Lathe::intersect(const Ray& ray, Hit& hit) const {
   lineRoots(ray, scratch);
   for (const LineRoot& r : scratch)
-    if (ray.tmin < r.t && r.t < ray.tmax) {
+    if (ray.tmin < r.t && r.t < ray.tmax && !(open_ && isDisc(r))) {
       hit.t = r.t;
       hit.shape = this;
       hit.part = r.part;
@@ -353,9 +356,11 @@ void Lathe::crossings(const Ray& ray, CrossingList& out) const {
   lineRoots(ray, scratch);
   bool in = false;
   for (const LineRoot& r : scratch) {
-    const bool entering = (r.part & kEnteringBit) != 0;
+    if (open_ && isDisc(r)) continue;
+    // An open lathe is a surface: its crossings all enter.
+    const bool entering = open_ || (r.part & kEnteringBit) != 0;
     if (r.t < ray.tmin) {
-      in = entering;
+      in = entering && !open_;
       continue;
     }
     if (r.t > ray.tmax) break;
@@ -369,7 +374,10 @@ void Lathe::crossings(const Ray& ray, CrossingList& out) const {
   out.startsInside = in;
 }
 
-bool Lathe::inside(const Vec3& q) const {
+// A surface (open) has no inside.
+bool Lathe::inside(const Vec3& q) const { return !open_ && solidInside(q); }
+
+bool Lathe::solidInside(const Vec3& q) const {
   if (!bounds_.contains(q)) return false;
   const double rho = std::sqrt(q.x * q.x + q.z * q.z);
   int count = 0;

@@ -8,7 +8,9 @@
 // group of four (a multiple of 4). The solid is POV-Ray's inside test: a point is inside
 // when a ray from it away from the axis crosses the curve an odd number of times. Where the
 // curve does not close, that parity changes across the disc from an open end to the axis, so
-// Lucent closes the solid with those discs (POV-Ray draws no surface there).
+// Lucent closes the solid with those discs (POV-Ray draws no surface there). `open` (POV-Ray's
+// look): without the discs; a surface then, not a solid (no inside, as Lucent's other open
+// shapes), its normals still facing out of the closed solid.
 //
 // Intersection: on a piece x(s), y(s) (cubics in s on [0, 1]), the ray o + t·d meets the
 // surface where d.y·(x² + z²) = d.y·x(s)², with t = (y(s) − o.y)/d.y; multiplied out,
@@ -36,11 +38,11 @@ class Lathe final : public Shape {
 
   // Throws std::invalid_argument for too few points (or a bezier count not a multiple of 4),
   // a non-finite coordinate, x < 0, or a curve of no extent.
-  Lathe(LatheSpline spline, const std::vector<Vec2>& points);
+  Lathe(LatheSpline spline, const std::vector<Vec2>& points, bool open = false);
 
   const char* kind() const override { return "lathe"; }
   AABB bounds() const override { return bounds_; }
-  bool isSolid() const override { return true; }
+  bool isSolid() const override { return !open_; }
   bool intersect(const Ray& ray, Hit& hit) const override;
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
@@ -83,7 +85,11 @@ class Lathe final : public Shape {
   std::vector<int> next_;  // the piece each one's end joins, or -1
   std::vector<Disc> discs_;
   AABB bounds_;
-  double scale_ = 1.0;  // the largest coordinate of the curve
+  double scale_ = 1.0;                   // the largest coordinate of the curve
+  bool open_ = false;                    // the discs are not drawn
+  bool isDisc(const LineRoot& r) const;  // one of the discs that close an open curve
+  // POV-Ray's parity test, which the roots' order follows whether or not the lathe is open.
+  bool solidInside(const Vec3& q) const;
 };
 
 }  // namespace lucent

@@ -61,14 +61,14 @@ Color surfaceResponse(const Material& m, const Color& kd, const ShadingPoint& at
 }
 
 Color surfaceResponse(const Material& m, const Color& kd, const Color& metal,
-                      const ShadingPoint& at, const Vec3& toLight) {
+                      const ShadingPoint& at, const Vec3& toLight, bool highlights) {
   const Vec3& n = at.n;
   const Vec3& v = at.v;
   const double nDotL = glm::dot(n, toLight);
   // pow is skipped at the default brilliance: the common case stays one multiply.
   const double diffuse = m.brilliance == 1.0 ? nDotL : std::pow(nDotL, m.brilliance);
   Color sum = kd * static_cast<float>(diffuse);
-  if (maxComponent(m.specular) > 0.0f) {
+  if (highlights && maxComponent(m.specular) > 0.0f) {
     const Vec3 h = glm::normalize(toLight + v);
     const double nDotH = glm::dot(n, h);
     if (nDotH > 0.0) {
@@ -78,7 +78,7 @@ Color surfaceResponse(const Material& m, const Color& kd, const Color& metal,
       sum += ks;
     }
   }
-  if (maxComponent(m.phong) > 0.0f) {
+  if (highlights && maxComponent(m.phong) > 0.0f) {
     const double rDotL = glm::dot(glm::reflect(-v, n), toLight);
     // POV-Ray drops a sharp highlight's far tail (below 0.0008 for sizes from 60 up).
     if (rDotL > 0.0 && (m.phongSize < 60.0 || rDotL > 0.0008)) {

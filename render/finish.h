@@ -23,9 +23,10 @@ struct ShadingPoint {
 Color surfaceResponse(const Material& m, const Color& kd, const ShadingPoint& at,
                       const Vec3& toLight);
 // The same with `metal`, the colour `metallic` tints by: the metallic colour times the
-// texture, or kd when the material has none (metallicBase).
+// texture, or kd when the material has none (metallicBase). highlights false: the diffuse
+// term alone (a light with highlights="false", as POV-Ray's shadowless light).
 Color surfaceResponse(const Material& m, const Color& kd, const Color& metal,
-                      const ShadingPoint& at, const Vec3& toLight);
+                      const ShadingPoint& at, const Vec3& toLight, bool highlights = true);
 
 // The colour `metallic` and reflect-metallic tint by, given the texture's colour at the hit.
 inline Color metallicBase(const Material& m, const Color& texture) {

@@ -11,13 +11,34 @@ double distanceAttenuation(const Vec3& abc, double r) {
   return std::min(1.0, 1.0 / denominator);
 }
 
-double spotFactor(const Light& light, double cosTheta) {
+double povFade(double distance, double fadeDistance, double fadePower) {
+  return 2.0 / (1.0 + std::pow(distance / fadeDistance, fadePower));
+}
+
+double lightDistanceFactor(const Light& light, double r) {
+  if (light.fades()) return povFade(r, light.fadeDistance, light.fadePower);
+  return distanceAttenuation(light.attenuation, r);
+}
+
+namespace {
+
+// The cone alone: 1 inside, 0 beyond, the smoothstep between.
+double coneFactor(const Light& light, double cosTheta) {
   double cosOuter = std::cos(radians(light.angle));
   double cosInner = std::cos(radians(std::min(light.inner, light.angle)));
   if (cosTheta >= cosInner) return cosTheta > cosOuter ? 1.0 : 0.0;
   if (cosTheta <= cosOuter) return 0.0;
   double u = (cosTheta - cosOuter) / (cosInner - cosOuter);
   return (3.0 - 2.0 * u) * u * u;
+}
+
+}  // namespace
+
+double spotFactor(const Light& light, double cosTheta) {
+  const double cone = coneFactor(light, cosTheta);
+  // Tightness 0 leaves the cone as it is (no pow: the common case stays exact and cheap).
+  if (light.tightness == 0.0 || !(cone > 0.0)) return cone;
+  return cone * std::pow(cosTheta, light.tightness);
 }
 
 namespace {
@@ -39,7 +60,7 @@ LightIncidence positionedIncidence(const Light& light, const Vec3& p) {
   Vec3 toLight = light.position - p;
   in.distance = glm::length(toLight);
   in.toLight = in.distance > 0.0 ? toLight / in.distance : Vec3(0.0, 1.0, 0.0);
-  double factor = distanceAttenuation(light.attenuation, in.distance);
+  double factor = lightDistanceFactor(light, in.distance);
   if (light.hasCone())  // a spot, or an area light's cone from its centre (POV-Ray's)
     factor *= spotFactor(light, glm::dot(-in.toLight, glm::normalize(light.direction)));
   in.radiance = light.radiance() * static_cast<float>(factor);
@@ -67,7 +88,7 @@ LightIncidence cylindricalIncidence(const Light& light, const Vec3& p) {
     const double u = (light.falloff - rho) / (light.falloff - light.radius);
     factor *= (3.0 - 2.0 * u) * u * u;
   }
-  factor *= distanceAttenuation(light.attenuation, k);
+  factor *= lightDistanceFactor(light, k);
   in.radiance = light.radiance() * static_cast<float>(factor);
   return in;
 }

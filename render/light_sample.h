@@ -22,9 +22,15 @@ struct LightIncidence {
 // with attenuation "0 0 0" does not fade).
 double distanceAttenuation(const Vec3& abc, double r);
 
-// POV-Ray's spotlight with tightness 0: 1 inside the `inner` cone, 0 beyond `angle`,
-// between them the smoothstep (3 − 2u)u² of u = (cos θ − cos angle)/(cos inner − cos angle).
-// cosTheta is the cosine between the spot axis and the direction from the light to the point.
+// POV-Ray's fade: 2 / (1 + (distance / fadeDistance)^fadePower).
+double povFade(double distance, double fadeDistance, double fadePower);
+// The light's factor at distance r: its fade when it has one, else its attenuation.
+double lightDistanceFactor(const Light& light, double r);
+
+// POV-Ray's spotlight: 1 inside the `inner` cone, 0 beyond `angle`, between them the
+// smoothstep (3 − 2u)u² of u = (cos θ − cos angle)/(cos inner − cos angle); all of it times
+// cos^tightness θ. cosTheta is the cosine between the spot axis and the direction from the
+// light to the point.
 double spotFactor(const Light& light, double cosTheta);
 
 // Direction, distance and unshadowed light at point p. Directional lights are not

@@ -240,7 +240,8 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
     const LightIncidence in = lightIncidence(light, s.p);
     if (!anyPositive(in.radiance)) continue;
     if (glm::dot(n, in.toLight) <= 0.0) continue;  // light behind: no diffuse, no highlight
-    const Color brdf = surfaceResponse(m, kd, metal, ShadingPoint{s.p, n, v}, in.toLight);
+    const Color brdf =
+        surfaceResponse(m, kd, metal, ShadingPoint{s.p, n, v}, in.toLight, light.highlights);
     if (!anyPositive(brdf)) continue;
     Color shadow(1.0f);
     if (light.shadows) {

@@ -15,17 +15,17 @@ namespace {
 // 3 gives ¼ ½ ¼, 5 gives 1 2 2 2 1 / 8 (checked by rendering with povray 3.7.0.10).
 bool povAveragesUniformly(int n) { return n >= 2 && (n & (n - 1)) == 0; }
 
-// The contract's spot is POV-Ray's spotlight with tightness 0: full light inside `radius`,
-// smoothstep to 0 at `falloff` (both half-angles in degrees). A spot-shaped area light is
-// POV-Ray's area_light with spotlight, whose cone is also seen from the centre for every
-// sample.
+// The contract's spot is POV-Ray's spotlight: full light inside `radius`, smoothstep to 0 at
+// `falloff` (both half-angles in degrees), times cos^tightness of the angle from the axis. A
+// spot-shaped area light is POV-Ray's area_light with spotlight, whose cone is also seen from the
+// centre for every sample.
 void writePovCone(const Light& l, PovLightOut& out) {
   const Vec3 axis = glm::normalize(l.direction);
   out.line(lightTypeInfo(LightType::Spot).pov);
   out.line("point_at " + out.vector(l.position + axis));
   out.line("radius " + out.number(std::min(l.inner, l.angle)));
   out.line("falloff " + out.number(l.angle));
-  out.line("tightness 0");
+  out.line("tightness " + out.number(l.tightness));
   if (l.angle > 90.0)
     out.warning(fmt::format(
         "spot light: angle {} exceeds 90 degrees; POV-Ray's spotlight gives no light behind it",
@@ -79,7 +79,8 @@ void finishCylindrical(Light& l, AttributeInput& in) {
 
 // An area light: any spot attribute makes it spot-shaped; u and v must span a rectangle.
 void finishArea(Light& l, AttributeInput& in) {
-  l.cone = in.has("direction") || in.has("look-at") || in.has("angle") || in.has("inner");
+  l.cone = in.has("direction") || in.has("look-at") || in.has("angle") || in.has("inner") ||
+           in.has("tightness");
   if (!(glm::length(glm::cross(l.u, l.v)) > 0.0))
     in.error(
         "<light type=\"area\">: 'u' and 'v' must be non-zero and not parallel (they span the "
@@ -160,6 +161,19 @@ void readAttenuation(Light& l, AttributeInput& in) {
     in.attrError("attenuation", "expected 3 numbers a b c >= 0, not all zero, got '" +
                                     in.text("attenuation").value_or("") + "'");
   else l.attenuation = v;
+}
+
+// POV-Ray's fade, instead of the attenuation: fade-distance (read just before) and
+// fade-power, either of them making the light fade, the other then at its default (1, 2).
+void readFadePower(Light& l, AttributeInput& in) {
+  const bool distance = in.has("fade-distance"), power = in.has("fade-power");
+  if (!distance && !power) return;
+  l.fadePower = in.number("fade-power", power ? l.fadePower : 2.0, NumberRule::positive());
+  if (!distance) l.fadeDistance = 1.0;
+  if (in.has("attenuation"))
+    in.attrError(distance ? "fade-distance" : "fade-power",
+                 "give either 'attenuation' or POV-Ray's fade ('fade-distance', 'fade-power'), "
+                 "not both");
 }
 
 // A point on the axis, instead of direction (read just before it): the direction from the
@@ -253,6 +267,20 @@ const std::vector<LightAttribute>& lightAttributes() {
                  "min(1, 1/(a + b·r + c·r²)); cylindrical: r is the distance along the axis. "
                  "Default 1 0 0 (none)."),
        positioned, readAttenuation},
+      {attribute("fade-distance", AttrType::Number, "positiveNumber", "",
+                 "point, spot, area, cylindrical: POV-Ray's fade_distance fd (above 0; 1 when "
+                 "only fade-power is given), instead of attenuation: the distance factor is "
+                 "2/(1 + (r/fd)^fp), which exceeds 1 within fd (up to twice the colour at the "
+                 "light); cylindrical: r is the distance along the axis. Default: no fade."),
+       positioned,
+       [](Light& l, AttributeInput& in) {
+         if (in.has("fade-distance"))
+           l.fadeDistance = in.number("fade-distance", l.fadeDistance, NumberRule::positive());
+       }},
+      {attribute("fade-power", AttrType::Number, "positiveNumber", "",
+                 "point, spot, area, cylindrical: POV-Ray's fade_power fp (above 0; 2 when only "
+                 "fade-distance is given). Default: no fade."),
+       positioned, readFadePower},
       {attribute("direction", AttrType::Direction, {}, "",
                  "directional: the direction towards which light travels. spot and spot-shaped "
                  "area: the cone's axis; cylindrical: the beam's (or give look-at). Default 0 "
@@ -283,9 +311,11 @@ const std::vector<LightAttribute>& lightAttributes() {
                  "changed by transforms. Default 1."),
        cylindrical, readNumber("falloff", &Light::falloff, NumberRule::positive())},
       {attribute("tightness", AttrType::Number, "nonNegativeNumber", "",
-                 "cylindrical: the beam is also multiplied by (1 − ρ/falloff)^tightness, as "
-                 "POV-Ray's tightness. Default 0 (no effect)."),
-       cylindrical, readNumber("tightness", &Light::tightness, NumberRule::nonNegative())},
+                 "spot and spot-shaped area: the light is also multiplied by cos^tightness θ, θ "
+                 "the angle from the axis, inside the inner cone too; cylindrical: by (1 − "
+                 "ρ/falloff)^tightness. As POV-Ray's tightness. Default 0 (no effect)."),
+       {T::Spot, T::Area, T::Cylindrical},
+       readNumber("tightness", &Light::tightness, NumberRule::nonNegative())},
       {attribute("u", AttrType::Vector, {}, "",
                  "area: first edge vector of the rectangle centred on position. Default 1 0 0."),
        area, readVector("u", &Light::u)},
@@ -318,6 +348,12 @@ const std::vector<LightAttribute>& lightAttributes() {
                  "POV-Ray's media_attenuation on. Default false: fog does not dim lights."),
        {},
        readBoolean("media-attenuation", &Light::mediaAttenuation)},
+      {attribute("highlights", AttrType::Boolean, {}, "true",
+                 "Does the light give phong and specular highlights? false: diffuse light only, as "
+                 "POV-Ray's shadowless light (set it with shadows=\"false\" for POV-Ray's "
+                 "shadowless)."),
+       {},
+       readBoolean("highlights", &Light::highlights)},
       {attribute("id", AttrType::Text, "name", "",
                  "A name for <use ref=\"id\"/>, which places the light again in the use's frame. "
                  "Optional; unique among nodes."),

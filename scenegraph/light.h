@@ -101,9 +101,17 @@ struct Light {
   Color color{1.0f};
   double intensity = 1.0;           // I_L = color * intensity
   Vec3 attenuation{1.0, 0.0, 0.0};  // a b c of min(1, 1/(a + b r + c r^2))
+  // POV-Ray's fade instead of the attenuation, when fadeDistance > 0 (then fadePower > 0
+  // too): 2 / (1 + (r / fadeDistance)^fadePower), up to twice the colour near the light.
+  double fadeDistance = 0.0;
+  double fadePower = 0.0;
+  bool fades() const { return fadeDistance > 0.0; }
   bool shadows = true;
   // POV-Ray's media_attenuation: the scene's fogs dim the light along its shadow rays.
   bool mediaAttenuation = false;
+  // false: the light adds no phong or specular highlight (diffuse only), as POV-Ray's
+  // shadowless light.
+  bool highlights = true;
 
   // Spot: outer and inner half-angles in degrees.
   double angle = 30.0;
@@ -125,10 +133,11 @@ struct Light {
   std::optional<int> adaptive;
 
   // Cylindrical, as POV-Ray's cylinder light: distances from the axis (not changed by
-  // transforms), full light within radius, none from falloff on; tightness is the exponent
-  // of (1 − distance/falloff).
+  // transforms), full light within radius, none from falloff on.
   double radius = 0.75;
   double falloff = 1.0;
+  // POV-Ray's tightness. Spot (and a spot-shaped area light): the exponent of cos θ, the
+  // cosine of the angle from the axis; cylindrical: of (1 − distance/falloff). 0: no effect.
   double tightness = 0.0;
 
   Color radiance() const { return color * static_cast<float>(intensity); }

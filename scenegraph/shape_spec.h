@@ -101,6 +101,7 @@ struct BlobSpec {
 struct LatheSpec {
   LatheSpline spline = LatheSpline::Linear;
   std::vector<Vec2> points;  // required: x >= 0, y
+  bool open = false;         // without the discs that close an open curve (POV-Ray's look)
 };
 // <isosurface function="..."/>: the function's text and the values of its parameters (for
 // the exporter), the compiled field, and the record of the gradients the render saw.
@@ -135,6 +136,7 @@ struct HeightFieldSpec {
   std::string path;  // resolved, for the POV-Ray file
   bool smooth = false;
   double waterLevel = 0.0;
+  bool open = false;                     // without walls and floor (POV-Ray's look)
   std::shared_ptr<const HeightMap> map;  // loaded
 };
 using ShapeSpec =

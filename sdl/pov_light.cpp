@@ -59,10 +59,11 @@ LightImport importLight(const PovLight& pov) {
       l.type = LightType::Spot;
       l.angle = spotFalloff(pov);
       l.inner = std::min(spotRadius(pov), l.angle);
-      if (pov.tightness != 0.0)
+      l.tightness = std::max(pov.tightness, 0.0);
+      if (pov.tightness < 0.0)
         notes.push_back(fmt::format(
-            "spotlight: tightness {} (POV-Ray multiplies the light by cos^tightness of the "
-            "angle from the axis) has no Lucent equivalent; Lucent's spot is tightness 0",
+            "spotlight: tightness {} below 0 (POV-Ray brightens the light away from the axis) "
+            "is imported as 0",
             pov.tightness));
       if (l.angle > 90.0)
         notes.push_back(fmt::format(
@@ -78,7 +79,10 @@ LightImport importLight(const PovLight& pov) {
       l.type = LightType::Cylindrical;
       l.radius = pov.radius.value_or(0.75);
       l.falloff = std::max(pov.falloff.value_or(1.0), l.radius);
-      l.tightness = pov.tightness;
+      l.tightness = std::max(pov.tightness, 0.0);
+      if (pov.tightness < 0.0)
+        notes.push_back(
+            fmt::format("cylinder: tightness {} below 0 is imported as 0", pov.tightness));
       break;
   }
   if (pov.parallel && pov.kind == PovLightKind::Point)
@@ -140,32 +144,16 @@ LightImport importLight(const PovLight& pov) {
   }
 
   l.mediaAttenuation = pov.mediaAttenuation;
+  // POV-Ray's shadowless light gives neither shadows nor highlights.
   if (pov.shadowless) {
     l.shadows = false;
-    notes.push_back(
-        "shadowless: POV-Ray's shadowless light adds no phong or specular highlight, "
-        "Lucent's light without shadows does (equal on surfaces without highlights)");
+    l.highlights = false;
   }
 
-  // POV-Ray: 2 / (1 + (d/fd)^fp). Lucent: min(1, 1/(a + b d + c d^2)), which is it for
-  // fp = 1 (a = 1/2, b = 1/(2 fd)) and fp = 2 (a = 1/2, c = 1/(2 fd^2)) wherever POV-Ray's
-  // factor is at most 1, that is beyond fade_distance.
+  // POV-Ray's fade, 2 / (1 + (d/fd)^fp): Lucent's light has it as it is.
   if (fades(pov)) {
-    const double fd = pov.fadeDistance, fp = pov.fadePower;
-    if (fp == 1.0) {
-      l.attenuation = Vec3(0.5, 0.5 / fd, 0.0);
-    } else {
-      l.attenuation = Vec3(0.5, 0.0, 0.5 / (fd * fd));
-      if (fp != 2.0)
-        notes.push_back(
-            fmt::format("fade_power {}: Lucent's attenuation has powers 1 and 2 only; imported as "
-                        "fade_power 2",
-                        fp));
-    }
-    notes.push_back(fmt::format(
-        "fade_distance {}: within that distance of the light POV-Ray's fade brightens it up "
-        "to twice its colour, Lucent's attenuation stops at its colour",
-        fd));
+    l.fadeDistance = pov.fadeDistance;
+    l.fadePower = pov.fadePower;
   }
   if (pov.looksLike)
     notes.push_back(

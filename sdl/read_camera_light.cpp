@@ -120,10 +120,14 @@ PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
     if (w == "color" || w == "colour" || (t.kind == TokenKind::Keyword && isColourKey(t.kw))) {
       in.unget();
       l.color = readColour(in).rgb;
-    } else if (w == "spotlight") {
-      l.kind = PovLightKind::Spotlight;
-    } else if (w == "cylinder") {
-      l.kind = PovLightKind::Cylinder;
+    } else if (w == "spotlight" || w == "cylinder") {
+      // POV-Ray's light has one type, which spotlight, cylinder and shadowless each set:
+      // the last one written wins, and spotlight and cylinder start from their defaults.
+      l.kind = w == "spotlight" ? PovLightKind::Spotlight : PovLightKind::Cylinder;
+      l.radius.reset();
+      l.falloff.reset();
+      l.tightness = 0.0;
+      l.shadowless = false;
     } else if (w == "parallel") {
       l.parallel = true;
     } else if (w == "point_at") {
@@ -138,7 +142,11 @@ PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
                w == "orient") {
       readAreaLight(t, in, l);
     } else if (w == "shadowless") {
+      // POV-Ray's shadowless light (its fill light) has no cone: a spotlight or cylinder
+      // written before it lights as a point light (or a parallel one: cylinder's parallel
+      // stays).
       l.shadowless = true;
+      l.kind = PovLightKind::Point;
     } else if (w == "fade_distance") {
       l.fadeDistance = in.parseFloat();
     } else if (w == "fade_power") {

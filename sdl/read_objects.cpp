@@ -18,6 +18,30 @@ NodeKind csgKind(std::string_view word) {
   return NodeKind::Group;
 }
 
+// POV-Ray's height fields and lathes have no walls, floor or discs (the importer sets
+// `open`), but an intersection, a difference or a merge asks their inside, which an open
+// Lucent shape has not: there they stay closed, as Lucent's solid. The messages of those
+// closed again, at each.
+void closeForCsg(PovObject& o, std::vector<std::pair<SourceLoc, std::string>>& closed) {
+  if (o.shape) {
+    if (auto* h = std::get_if<HeightFieldSpec>(&*o.shape); h && h->open) {
+      h->open = false;
+      closed.emplace_back(o.loc,
+                          "in an intersection, difference or merge Lucent's height field "
+                          "is a solid closed by walls and a floor at the water level; "
+                          "POV-Ray's has none (seen from below or beside, they differ)");
+    }
+    if (auto* l = std::get_if<LatheSpec>(&*o.shape); l && l->open) {
+      l->open = false;
+      closed.emplace_back(o.loc,
+                          "in an intersection, difference or merge Lucent's lathe is a "
+                          "solid, its curve closed with discs to the axis; POV-Ray "
+                          "leaves it open");
+    }
+  }
+  for (PovObject& c : o.children) closeForCsg(c, closed);
+}
+
 }  // namespace
 
 bool SceneReader::isObjectKeyword(const Token& t) const {
@@ -73,6 +97,11 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
       if (o.nodes > kMaxObjectNodes)
         in.error(child, "an object of more than " + std::to_string(kMaxObjectNodes) +
                             " objects (the limit of one object's size)");
+    }
+    if (o.kind != NodeKind::Union) {
+      std::vector<std::pair<SourceLoc, std::string>> closed;
+      for (PovObject& c : o.children) closeForCsg(c, closed);
+      for (const auto& [loc, message] : closed) warn(in, loc, message);
     }
   } else {
     readShape(o, in);

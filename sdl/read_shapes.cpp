@@ -466,16 +466,14 @@ void SceneReader::readLatheOrSor(PovObject& o, TokenStream& in) {
                       "; POV-Ray allows x < 0 at some control points)");
       return;
     }
-    // Where the curve starts and ends: Lucent closes an open curve by discs to the axis.
+    // Where the curve starts and ends: Lucent closes an open curve by discs to the axis
+    // unless the lathe is open, as POV-Ray's is (closed again within a CSG: closeForCsg).
     const size_t last = points.size() - 1;
     const Vec2 first =
         points[spline == LatheSpline::Quadratic || spline == LatheSpline::Cubic ? 1 : 0];
     const Vec2 end = points[spline == LatheSpline::Cubic ? last - 1 : last];
-    if (first != end && (first.x != 0.0 || end.x != 0.0))
-      warn(in, o.loc,
-           "the lathe's curve does not end on the axis or where it starts: Lucent closes it "
-           "with discs to the axis, POV-Ray leaves it open");
-    o.shape = LatheSpec{spline, points};
+    const bool open = first != end && (first.x != 0.0 || end.x != 0.0);
+    o.shape = LatheSpec{spline, points, open};
     return;
   }
   for (int i = 0; i < n; ++i)
@@ -648,9 +646,9 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
   if (!(top / 65536.0 > s.waterLevel))
     in.error(fileLoc, "nothing of the height field lies above the water level " +
                           attributeText(s.waterLevel));
-  warn(in, o.loc,
-       "Lucent's height field is closed by walls and a floor at the water level, POV-Ray's has "
-       "none (seen from below or beside, they differ)");
+  // POV-Ray's height field has neither walls nor a floor (closed again within a CSG:
+  // closeForCsg).
+  s.open = true;
   o.transform.scale(Vec3(1.0, 1.0, -1.0));
   o.shape = std::move(s);
 }

@@ -72,7 +72,7 @@ void readHeightField(HeightFieldSpec& s, AttributeInput& in) {
 
 std::shared_ptr<const Shape> buildHeightField(const HeightFieldSpec& s) {
   if (!s.map) throw std::invalid_argument("makeShape: <height-field> has no image");
-  return std::make_shared<HeightField>(s.map, s.smooth, s.waterLevel);
+  return std::make_shared<HeightField>(s.map, s.smooth, s.waterLevel, s.open);
 }
 
 void writeHeightField(const HeightFieldSpec& s, PovShapeOut& out) {
@@ -101,7 +101,7 @@ ShapeEntry<HeightFieldSpec> shapeEntry<HeightFieldSpec>() {
                                 writeHeightField);
   e.doc =
       "POV-Ray's height_field: an image's brightness as heights over x, z in [0, 1], closed by "
-      "walls and a floor at the water level (solid).";
+      "walls and a floor at the water level (solid; open: the surface alone, as POV-Ray's).";
   e.fields = {readByEntry<HeightFieldSpec>("src", AttrType::File)
                   .doc("A grey or colour PNG, PGM, PPM, TGA, JPEG or TIFF image, relative to the "
                        "scene file, read as POV-Ray reads it: grey values are heights; in an 8-bit "
@@ -111,8 +111,14 @@ ShapeEntry<HeightFieldSpec> shapeEntry<HeightFieldSpec>() {
                   .doc("Interpolate POV-Ray's vertex normals over each cell."),
               numberField("water-level", &HeightFieldSpec::waterLevel,
                           NumberRule::between(0.0, 1.0, "a number from 0 to 1", false, true))
-                  .doc("The height below which the field is removed (its floor).")};
+                  .doc("The height below which the field is removed (its floor)."),
+              booleanField("open", &HeightFieldSpec::open)
+                  .doc("Draw the surface alone, without the walls and the floor that close it, "
+                       "as POV-Ray's height_field (then a surface, not a solid).")};
   e.finish = readHeightField;
+  e.notSolid = [](const HeightFieldSpec& s) {
+    return s.open ? std::string("it is open") : std::string();
+  };
   e.triangles = [](const HeightFieldSpec& s) {
     return s.map ? 2LL * (s.map->width - 1) * (s.map->depth - 1) : 0LL;
   };
@@ -131,11 +137,14 @@ ShapeEntry<HeightFieldSpec> shapeEntry<HeightFieldSpec>() {
     smooth.smooth = true;
     HeightFieldSpec water = varied;
     water.waterLevel = 0.4;
+    HeightFieldSpec open = water;
+    open.open = true;
     return std::vector<std::pair<std::string, HeightFieldSpec>>{
         {"3 x 3 height field", ridge},
         {"5 x 4 height field", varied},
         {"smooth height field", smooth},
-        {"height field with a water level", water}};
+        {"height field with a water level", water},
+        {"open height field", open}};
   };
   return e;
 }

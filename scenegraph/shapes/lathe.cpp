@@ -21,7 +21,7 @@ template <>
 ShapeEntry<LatheSpec> shapeEntry<LatheSpec>() {
   ShapeEntry<LatheSpec> e(
       "lathe", "lathes",
-      [](const LatheSpec& s) { return std::make_shared<Lathe>(s.spline, s.points); },
+      [](const LatheSpec& s) { return std::make_shared<Lathe>(s.spline, s.points, s.open); },
       [](const LatheSpec& s, PovShapeOut& out) {
         out.open("lathe");
         out.line(kPovSpline[static_cast<int>(s.spline)]);
@@ -32,7 +32,9 @@ ShapeEntry<LatheSpec> shapeEntry<LatheSpec>() {
         // sturm: POV-Ray's exact root isolation for the spline pieces' polynomials.
         if (s.spline != LatheSpline::Linear) out.line("sturm");
       });
-  e.doc = "A curve of x y points (x >= 0) turned about the y axis (solid).";
+  e.doc =
+      "A curve of x y points (x >= 0) turned about the y axis (solid; open: without the discs "
+      "that close an open curve, as POV-Ray's).";
   Field<LatheSpec> points =
       readByEntry<LatheSpec>("points", AttrType::NumberList, "", {}, 2)
           .doc(
@@ -42,7 +44,11 @@ ShapeEntry<LatheSpec> shapeEntry<LatheSpec>() {
   e.fields = {std::move(points),
               readByEntry<LatheSpec>("spline", AttrType::Choice, "linear", kSplineNames)
                   .doc("linear (a polygon) | quadratic | cubic (Catmull-Rom) | bezier (groups of 4 "
-                       "points), as POV-Ray's.")};
+                       "points), as POV-Ray's."),
+              booleanField("open", &LatheSpec::open)
+                  .doc("Leave out the discs to the axis that close a curve ending off the axis "
+                       "and away from its start, as POV-Ray's lathe (then a surface, not a "
+                       "solid).")};
   e.finish = [](LatheSpec& s, AttributeInput& in) {
     s.spline = static_cast<LatheSpline>(in.choice("spline", 0, kSplineNames));
     if (in.failed()) return;
@@ -72,6 +78,9 @@ ShapeEntry<LatheSpec> shapeEntry<LatheSpec>() {
       return;
     }
   };
+  e.notSolid = [](const LatheSpec& s) {
+    return s.open ? std::string("it is open") : std::string();
+  };
   e.samples = [] {
     using V = std::vector<Vec2>;
     return std::vector<std::pair<std::string, LatheSpec>>{
@@ -79,6 +88,8 @@ ShapeEntry<LatheSpec> shapeEntry<LatheSpec>() {
         {"linear lathe ring",
          {LatheSpline::Linear, V{{0.5, -0.5}, {1, -0.5}, {1, 0.5}, {0.5, 0.5}, {0.5, -0.5}}}},
         {"open linear lathe cone", {LatheSpline::Linear, V{{0, 1}, {1, 0}}}},
+        {"linear lathe cup without its disc",
+         {LatheSpline::Linear, V{{0, 0}, {1, 0}, {1, 1}}, true}},
         {"quadratic lathe",
          {LatheSpline::Quadratic, V{{0, -1}, {0, -0.5}, {0.8, 0}, {0.5, 0.6}, {0, 1}}}},
         {"cubic lathe vase",

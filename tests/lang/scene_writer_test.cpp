@@ -131,6 +131,29 @@ TEST_CASE("scene writer: a spot light's inner angle is its own, not the angle it
   CHECK(contains(text, "angle=\"40\" inner=\"12\""));
 }
 
+TEST_CASE("scene writer: POV-Ray's light rules and open shapes are written and read back",
+          "[lang][scene-writer]") {
+  const std::string first = written(
+      "<light type=\"spot\" position=\"0 5 0\" angle=\"40\" tightness=\"12\" "
+      "fade-distance=\"3\" fade-power=\"1.5\" shadows=\"false\" highlights=\"false\"/>"
+      "<light type=\"area\" position=\"0 5 0\" tightness=\"2\"/>"
+      "<lathe points=\"0 0  1 0  1 1\" open=\"true\"/>");
+  CHECK(contains(first, "fade-distance=\"3\" fade-power=\"1.5\""));
+  CHECK(contains(first, "tightness=\"12\""));
+  CHECK(contains(first, "shadows=\"false\" highlights=\"false\""));
+  CHECK(contains(first, "open=\"true\""));
+  auto reread = parseSceneString(first, "writer.xml");
+  REQUIRE(reread.scene);
+  CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+  REQUIRE(reread.scene->lights.size() == 2);
+  CHECK(reread.scene->lights[1].cone);  // the area light's tightness keeps it spot-shaped
+  CHECK(reread.scene->lights[1].tightness == 2.0);
+  // A light without them writes none of them.
+  const std::string plain = written("<light position=\"0 5 0\"/><sphere/>");
+  CHECK_FALSE(contains(plain, "fade-"));
+  CHECK_FALSE(contains(plain, "highlights"));
+}
+
 TEST_CASE("scene writer: a spherical camera's v-angle is its own, not half of h-angle",
           "[lang][scene-writer]") {
   const std::string text =

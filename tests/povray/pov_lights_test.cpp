@@ -98,11 +98,46 @@ TEST_CASE("a directional light is a parallel light far behind the scene", "[povr
             "  point_at <0, 0, 0>\n}\n"));
 }
 
-TEST_CASE("a spot light is a spotlight with tightness 0", "[povray][lights]") {
+TEST_CASE("a spot light is a spotlight with its tightness", "[povray][lights]") {
   Exported e = exportScene(
       R"XML(<light type="spot" position="0 5 0" direction="0 -1 0" angle="40" inner="25"/>)XML");
   REQUIRE(e.pov.ok());
   CHECK(e.has("  spotlight\n  point_at <0, 4, 0>\n  radius 25\n  falloff 40\n  tightness 0\n"));
+  Exported tight = exportScene(
+      R"XML(<light type="spot" position="0 5 0" direction="0 -1 0" angle="40" tightness="12.5"/>)XML");
+  REQUIRE(tight.pov.ok());
+  CHECK(tight.pov.issues.empty());
+  CHECK(tight.has("  radius 40\n  falloff 40\n  tightness 12.5\n"));
+}
+
+TEST_CASE("POV-Ray's fade is written as it is, the colour unscaled", "[povray][lights]") {
+  Exported e = exportScene(
+      R"XML(<light position="0 5 0" color="0.5" fade-distance="3" fade-power="2.5"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.pov.issues.empty());
+  CHECK(
+      e.has("light_source {\n  <0, 5, 0>\n  color rgb <0.5, 0.5, 0.5>\n  fade_distance 3\n"
+            "  fade_power 2.5\n}\n"));
+}
+
+TEST_CASE("shadowless: POV-Ray's light without shadows has no highlights", "[povray][lights]") {
+  const std::string shiny =
+      R"XML(<sphere center="0 0 0" radius="1"><material specular="0.5"/></sphere>)XML";
+  // shadows and highlights off: POV-Ray's shadowless, exactly.
+  Exported both =
+      exportScene(R"XML(<light position="0 5 0" shadows="false" highlights="false"/>)XML" + shiny);
+  REQUIRE(both.pov.ok());
+  CHECK(both.pov.issues.empty());
+  CHECK(both.has("  color rgb <1, 1, 1>\n  shadowless\n}\n"));
+  // Either alone has no POV-Ray equivalent where a material has highlights.
+  Exported noShadows = exportScene(R"XML(<light position="0 5 0" shadows="false"/>)XML" + shiny);
+  CHECK(noShadows.messages().find("POV-Ray's shadowless lights give no specular highlights") !=
+        std::string::npos);
+  Exported noHighlights =
+      exportScene(R"XML(<light position="0 5 0" highlights="false"/>)XML" + shiny);
+  CHECK(noHighlights.messages().find("POV-Ray's lights with shadows always give highlights") !=
+        std::string::npos);
+  CHECK_FALSE(noHighlights.has("shadowless"));
 }
 
 TEST_CASE("a cylindrical light is POV-Ray's cylinder with its radius, falloff and tightness",

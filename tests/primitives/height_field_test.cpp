@@ -221,6 +221,34 @@ TEST_CASE("height field: a horizontal ray crosses walls and the ridge in order",
   CHECK(si.ng == Vec3(-1.0, 0.0, 0.0));
 }
 
+TEST_CASE("height field: an open field has neither walls nor floor, as POV-Ray's",
+          "[primitives][height-field]") {
+  HeightField hf(ridge(), false, 0.0, true);
+  CHECK_FALSE(hf.isSolid());
+  // Under the edges (y = 0.1): the closed field's walls at x = 0 and 1; the open one has
+  // nothing there, and above them the ridge's two sides, each entering.
+  Hit h;
+  CHECK_FALSE(hf.intersect(Ray(Vec3(-1.0, 0.1, 0.1), Vec3(1.0, 0.0, 0.0)), h));
+  CrossingList low;
+  hf.crossings(Ray(Vec3(-1.0, 0.1, 0.1), Vec3(1.0, 0.0, 0.0)), low);
+  CHECK(low.items.empty());
+  const double y = 0.3, h0 = 10000 / 65536.0, h1 = 40000 / 65536.0;
+  const double xIn = 0.5 * (y - h0) / (h1 - h0);
+  CrossingList cl;
+  hf.crossings(Ray(Vec3(-1.0, y, 0.1), Vec3(1.0, 0.0, 0.0)), cl);
+  REQUIRE(cl.items.size() == 2);
+  CHECK(cl.items[0].hit.t == Approx(1.0 + xIn).epsilon(1e-14));
+  CHECK(cl.items[1].hit.t == Approx(2.0 - xIn).epsilon(1e-14));
+  CHECK(cl.items[0].entering);
+  CHECK(cl.items[1].entering);
+  // From below: the underside of the surface, not the floor.
+  REQUIRE(hf.intersect(Ray(Vec3(0.5, -1.0, 0.5), Vec3(0.0, 1.0, 0.0)), h));
+  CHECK(h.t == Approx(1.0 + h1).epsilon(1e-14));
+  HeightField closed(ridge(), false, 0.0);
+  REQUIRE(closed.intersect(Ray(Vec3(0.5, -1.0, 0.5), Vec3(0.0, 1.0, 0.0)), h));
+  CHECK(h.part == HeightField::kFloor);
+}
+
 TEST_CASE("height field: inside is below the surface, above the water, within the square",
           "[primitives][height-field]") {
   HeightField hf(rough(), false, 0.2);

@@ -115,6 +115,33 @@ TEST_CASE("lathe: a cone from an open linear profile closes with its base disc",
   CHECK_THAT(cl.items[1].hit.t, WithinAbs(1.75, 1e-14));  // y = 1 − x on the side
 }
 
+TEST_CASE("lathe: an open lathe has no closing disc, as POV-Ray's", "[primitives][lathe]") {
+  // The cone of the test above, open: the ray up the axis side meets the slant alone.
+  const Lathe l(LatheSpline::Linear, {{0, 1}, {1, 0}}, true);
+  CHECK_FALSE(l.isSolid());
+  const Ray up(Vec3(0.25, -1, 0), Vec3(0, 1, 0));
+  Hit h;
+  REQUIRE(l.intersect(up, h));
+  CHECK_THAT(h.t, WithinAbs(1.75, 1e-14));
+  // Its normal is the closed cone's: outward, up and away from the axis.
+  const SurfaceInfo si = l.surface(up, h);
+  CHECK_THAT(si.ng.x, WithinAbs(std::sqrt(0.5), 1e-12));
+  CHECK_THAT(si.ng.y, WithinAbs(std::sqrt(0.5), 1e-12));
+  CrossingList cl;
+  l.crossings(up, cl);
+  REQUIRE(cl.items.size() == 1);  // a surface: every crossing enters
+  CHECK(cl.items[0].entering);
+  CHECK_FALSE(cl.startsInside);
+  // A cup without its lid (the curve from the axis out and up): seen from above, the ray
+  // down the middle meets the bottom, not a disc at the rim.
+  const Lathe cup(LatheSpline::Linear, {{0, 0}, {1, 0}, {1, 1}}, true);
+  REQUIRE(cup.intersect(Ray(Vec3(0.5, 3, 0), Vec3(0, -1, 0)), h));
+  CHECK_THAT(h.t, WithinAbs(3.0, 1e-14));
+  const Lathe lidded(LatheSpline::Linear, {{0, 0}, {1, 0}, {1, 1}});
+  REQUIRE(lidded.intersect(Ray(Vec3(0.5, 3, 0), Vec3(0, -1, 0)), h));
+  CHECK_THAT(h.t, WithinAbs(2.0, 1e-14));
+}
+
 TEST_CASE("lathe: a Bezier profile against its own curve", "[primitives][lathe]") {
   const Lathe l = bulb();
   // x(s) = 3.6·s·(1 − s), y(s) = 3s² − 2s³: at s = 0.5, x = 0.9, y = 0.5.

@@ -28,6 +28,7 @@ struct Finish {
   glm::dvec3 kd{0.6, 0.4, 0.2}, ks{0.0}, kp{0.0};
   double ns = 30.0, size = 40.0, brilliance = 1.0;
   bool metallic = false;
+  bool lightHighlights = true;  // the light's highlights attribute
 };
 
 // The expected colour of a sphere of radius R at the origin, seen from (0,0,5), lit by one
@@ -52,6 +53,7 @@ void checkSphere(const Finish& f, const Vec3& lightPos, int minLit) {
   m.metallic = f.metallic;
   addShape(scene, SphereSpec{Vec3(0), R}, addMaterial(scene, m));
   scene.lights.push_back(pointLight(lightPos));
+  scene.lights.back().highlights = f.lightHighlights;
   World world(scene);
   Renderer renderer(world, scene.cameras[0]);
   RenderResult result = renderer.render();
@@ -74,14 +76,14 @@ void checkSphere(const Finish& f, const Vec3& lightPos, int minLit) {
       if (nl > 0) {
         expected = f.kd * std::pow(nl, f.brilliance);
         const glm::dvec3 hv = glm::normalize(l + v);
-        if (glm::dot(n, hv) > 0) {
+        if (f.lightHighlights && glm::dot(n, hv) > 0) {
           glm::dvec3 s = f.ks * std::pow(glm::dot(n, hv), f.ns);
           if (f.metallic) s *= tint(f.kd, glm::dot(hv, l));
           expected += s;
         }
         const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;  // the view mirrored about n
         const double rl = glm::dot(r, l);
-        if (rl > 0 && (f.size < 60 || rl > 0.0008)) {
+        if (f.lightHighlights && rl > 0 && (f.size < 60 || rl > 0.0008)) {
           glm::dvec3 s = f.kp * std::pow(rl, f.size);
           if (f.metallic) s *= tint(f.kd, nl);
           expected += s;
@@ -111,6 +113,18 @@ TEST_CASE("phong: k_p (R.L)^size with R the mirrored view, per pixel", "[render]
   // A size of 60 or more drops the far tail below 0.0008, as POV-Ray does.
   f.size = 80;
   checkSphere(f, Vec3(-2, 1, 7), 600);
+}
+
+TEST_CASE("a light with highlights=\"false\" gives the diffuse term alone, per pixel",
+          "[render][finish]") {
+  // POV-Ray's shadowless light: neither the phong nor the specular highlight.
+  Finish f;
+  f.kd = glm::dvec3(0.9, 0.8, 0.7);
+  f.ks = glm::dvec3(0.8);
+  f.kp = glm::dvec3(0.9, 0.7, 0.5);
+  f.size = 25;
+  f.lightHighlights = false;
+  checkSphere(f, Vec3(3, 4, 6), 600);
 }
 
 TEST_CASE("brilliance: k_d (N.L)^brilliance, per pixel", "[render][finish]") {

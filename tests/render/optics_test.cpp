@@ -98,6 +98,37 @@ TEST_CASE("spot light: full inside inner, zero beyond angle, smoothstep between"
   CHECK(spotFactor(spot, std::cos(radians(30.1))) == 0.0);
 }
 
+TEST_CASE("spot light tightness: POV-Ray's cos^tightness times the cone", "[render][light]") {
+  Light spot;
+  spot.type = LightType::Spot;
+  spot.angle = 30.0;
+  spot.inner = 10.0;
+  spot.tightness = 4.0;
+  // Hand-computed: cos^4 5° = 0.984865 (inside inner); at 20°, u = 0.620186 of the
+  // smoothstep (0.676808) times cos^4 20° (0.779728) = 0.527726; none beyond the angle.
+  CHECK(spotFactor(spot, std::cos(radians(0.0))) == 1.0);
+  CHECK(spotFactor(spot, std::cos(radians(5.0))) == Approx(0.984865).epsilon(1e-6));
+  CHECK(spotFactor(spot, std::cos(radians(20.0))) == Approx(0.527726).epsilon(1e-6));
+  CHECK(spotFactor(spot, std::cos(radians(31.0))) == 0.0);
+}
+
+TEST_CASE("POV-Ray's fade 2/(1 + (r/fd)^fp) replaces the attenuation", "[render][light]") {
+  CHECK(povFade(0.0, 2.0, 3.0) == 2.0);
+  CHECK(povFade(1.0, 2.0, 3.0) == Approx(16.0 / 9.0));  // 2/(1 + 1/8)
+  CHECK(povFade(2.0, 2.0, 3.0) == 1.0);
+  CHECK(povFade(4.0, 2.0, 3.0) == Approx(2.0 / 9.0));  // 2/(1 + 8)
+  CHECK(povFade(8.0, 2.0, 0.5) == Approx(2.0 / 3.0));  // 2/(1 + 2)
+  Light l;
+  l.attenuation = Vec3(1.0, 0.0, 1.0);
+  CHECK(lightDistanceFactor(l, 1.0) == 0.5);  // the attenuation without a fade
+  l.attenuation = Vec3(1.0, 0.0, 0.0);
+  l.fadeDistance = 2.0;
+  l.fadePower = 3.0;
+  CHECK(lightDistanceFactor(l, 1.0) == Approx(16.0 / 9.0));
+  l.position = Vec3(0.0, 5.0, 0.0);
+  CHECK(lightIncidence(l, Vec3(0.0, 1.0, 0.0)).radiance.g == Approx(2.0 / 9.0));
+}
+
 TEST_CASE("area light samples form a grid that includes the rectangle's edges", "[render][light]") {
   Light area;
   area.type = LightType::Area;

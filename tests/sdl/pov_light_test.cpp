@@ -20,44 +20,57 @@ bool mentions(const std::vector<std::string>& notes, const std::string& word) {
 }  // namespace
 
 TEST_CASE("a spotlight lights as POV-Ray's at every angle from its axis", "[sdl][light]") {
-  PovLight pov;
-  pov.kind = PovLightKind::Spotlight;
-  pov.location = Vec3(1.0, 4.0, -2.0);
-  pov.pointAt = Vec3(0.0, 0.0, 1.0);
-  pov.radius = 12.0;
-  pov.falloff = 25.0;
-  pov.color = Color(0.9f, 0.8f, 0.7f);
-  const LightImport imported = importLight(pov);
-  CHECK(imported.differences.empty());
-  const Light& light = imported.light;
-  CHECK(light.type == LightType::Spot);
-  CHECK(light.inner == 12.0);
-  CHECK(light.angle == 25.0);
-  // Points at 0 to 30 degrees from the axis, 5 units from the light (POV-Ray's space).
-  const Vec3 axis = glm::normalize(pov.pointAt - pov.location);
-  const Vec3 side = glm::normalize(glm::cross(axis, Vec3(0.0, 1.0, 0.0)));
-  for (double deg = 0.0; deg <= 30.0; deg += 1.5) {
-    const double a = radians(deg);
-    const Vec3 p = pov.location + 5.0 * (std::cos(a) * axis + std::sin(a) * side);
-    const LightIncidence in = lightIncidence(light, lucentFromPov(p));
-    const double expected = povSpotFactor(pov, std::cos(a));
-    INFO(deg << " degrees: POV-Ray " << expected);
-    CHECK(in.radiance.g == Approx(0.8 * expected).margin(1e-6));
+  for (double tightness : {0.0, 7.5}) {
+    PovLight pov;
+    pov.kind = PovLightKind::Spotlight;
+    pov.location = Vec3(1.0, 4.0, -2.0);
+    pov.pointAt = Vec3(0.0, 0.0, 1.0);
+    pov.radius = 12.0;
+    pov.falloff = 25.0;
+    pov.tightness = tightness;
+    pov.color = Color(0.9f, 0.8f, 0.7f);
+    const LightImport imported = importLight(pov);
+    CHECK(imported.differences.empty());
+    const Light& light = imported.light;
+    CHECK(light.type == LightType::Spot);
+    CHECK(light.inner == 12.0);
+    CHECK(light.angle == 25.0);
+    CHECK(light.tightness == tightness);
+    // Points at 0 to 30 degrees from the axis, 5 units from the light (POV-Ray's space).
+    const Vec3 axis = glm::normalize(pov.pointAt - pov.location);
+    const Vec3 side = glm::normalize(glm::cross(axis, Vec3(0.0, 1.0, 0.0)));
+    for (double deg = 0.0; deg <= 30.0; deg += 1.5) {
+      const double a = radians(deg);
+      const Vec3 p = pov.location + 5.0 * (std::cos(a) * axis + std::sin(a) * side);
+      const LightIncidence in = lightIncidence(light, lucentFromPov(p));
+      const double expected = povSpotFactor(pov, std::cos(a));
+      INFO("tightness " << tightness << ", " << deg << " degrees: POV-Ray " << expected);
+      CHECK(in.radiance.g == Approx(0.8 * expected).margin(1e-6));
+    }
   }
-  // The defaults: radius 30, falloff 45; tightness is said.
+  // The defaults: radius 30, falloff 45; the tightness is the light's.
   PovLight plain;
   plain.kind = PovLightKind::Spotlight;
   plain.tightness = 10.0;
   const LightImport d = importLight(plain);
   CHECK(d.light.inner == 30.0);
   CHECK(d.light.angle == 45.0);
-  CHECK(mentions(d.differences, "tightness 10"));
-  CHECK(povSpotFactor(plain, std::cos(radians(20.0))) ==
-        Approx(std::pow(std::cos(radians(20.0)), 10.0)));
+  CHECK(d.light.tightness == 10.0);
+  CHECK(d.differences.empty());
+  // Inside the radius POV-Ray's factor is cos^10 θ alone (hand-computed: cos 20° = 0.939693,
+  // its square 0.883022, its 8th power 0.607976, its 10th 0.536856).
+  CHECK(povSpotFactor(plain, std::cos(radians(20.0))) == Approx(0.536856).epsilon(1e-5));
+  CHECK(spotFactor(d.light, std::cos(radians(20.0))) == Approx(0.536856).epsilon(1e-5));
+  // Below 0 POV-Ray brightens away from the axis; imported as 0, said.
+  plain.tightness = -2.0;
+  const LightImport negative = importLight(plain);
+  CHECK(negative.light.tightness == 0.0);
+  CHECK(mentions(negative.differences, "tightness -2"));
 }
 
-TEST_CASE("fade_distance and fade_power: POV-Ray's 2/(1 + (d/fd)^fp) beyond fd", "[sdl][light]") {
-  for (double power : {1.0, 2.0}) {
+TEST_CASE("fade_distance and fade_power: POV-Ray's 2/(1 + (d/fd)^fp) at every distance",
+          "[sdl][light]") {
+  for (double power : {1.0, 2.0, 3.0, 0.5}) {
     PovLight pov;
     pov.location = Vec3(0.0, 0.0, 3.0);
     pov.fadeDistance = 2.5;
@@ -65,24 +78,30 @@ TEST_CASE("fade_distance and fade_power: POV-Ray's 2/(1 + (d/fd)^fp) beyond fd",
     const LightImport imported = importLight(pov);
     CHECK(povLightFade(pov, 0.0) == 2.0);
     CHECK(povLightFade(pov, 2.5) == Approx(1.0));
-    // Within fd POV-Ray brightens the light; Lucent's attenuation stops at 1: said.
-    CHECK(mentions(imported.differences, "twice its colour"));
-    for (double d : {2.5, 3.0, 5.0, 11.0, 40.0}) {
+    CHECK(imported.differences.empty());
+    CHECK(imported.light.fadeDistance == 2.5);
+    CHECK(imported.light.fadePower == power);
+    // Within fd too, where POV-Ray's fade brightens the light up to twice its colour.
+    for (double d : {0.0, 1.0, 2.5, 3.0, 5.0, 11.0, 40.0}) {
       const LightIncidence in =
           lightIncidence(imported.light, lucentFromPov(pov.location + Vec3(0.0, d, 0.0)));
       INFO("power " << power << ", distance " << d);
       CHECK(in.radiance.r == Approx(povLightFade(pov, d)).epsilon(1e-6));
     }
   }
+  // fade_power 3 at 1 and 2 times fd = 2 (hand-computed): 2/(1 + 1/8) = 16/9, 2/(1 + 1) = 1.
   PovLight third;
-  third.fadeDistance = 1.0;
+  third.fadeDistance = 2.0;
   third.fadePower = 3.0;
-  CHECK(mentions(importLight(third).differences, "fade_power 3"));
+  const Light cubic = importLight(third).light;
+  CHECK(lightIncidence(cubic, Vec3(0.0, 1.0, 0.0)).radiance.r == Approx(16.0 / 9.0));
+  CHECK(lightIncidence(cubic, Vec3(0.0, 2.0, 0.0)).radiance.r == Approx(1.0));
   // fade_distance without fade_power: no fading in POV-Ray, none imported.
   PovLight half;
   half.fadeDistance = 1.0;
   CHECK(povLightFade(half, 10.0) == 1.0);
   CHECK(importLight(half).light.attenuation == Vec3(1.0, 0.0, 0.0));
+  CHECK(!importLight(half).light.fades());
   CHECK(importLight(half).differences.empty());
 }
 
@@ -145,6 +164,7 @@ TEST_CASE("parallel, shadowless, cylinder and looks_like lights", "[sdl][light]"
   quiet.looksLike = true;
   const LightImport q = importLight(quiet);
   CHECK(!q.light.shadows);
-  CHECK(mentions(q.differences, "no phong or specular"));
+  CHECK(!q.light.highlights);  // POV-Ray's shadowless light adds no highlight
+  CHECK(!mentions(q.differences, "shadowless"));
   CHECK(mentions(q.differences, "looks_like"));
 }

@@ -204,6 +204,7 @@ background { color rgb <0.1, 0.2, 0.3> }
 camera { location <0, 1, -4> right x*4/3 look_at <0, 0.5, 0> }
 light_source { <2, 4, -3> color rgb <1, 0.9, 0.8> }
 light_source { <0, 5, 0>, 1 spotlight point_at <0, 0, 1> radius 10 falloff 20 shadowless }
+light_source { <0, 5, 0>, 1 shadowless spotlight point_at <0, 0, 1> radius 10 falloff 20 }
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
@@ -226,14 +227,21 @@ light_source { <0, 5, 0>, 1 spotlight point_at <0, 0, 1> radius 10 falloff 20 sh
   CHECK(s.cameras[0].fov == Approx(want.fov));
   CHECK(s.cameras[0].loc.line == 4);
 
-  REQUIRE(s.lights.size() == 2);
+  REQUIRE(s.lights.size() == 3);
   checkVec(s.lights[0].position, Vec3(2, 4, 3));
   checkColor(s.lights[0].color, Color(1.0f, 0.9f, 0.8f));
-  CHECK(s.lights[1].type == LightType::Spot);
-  CHECK(s.lights[1].angle == Approx(20.0));
-  CHECK(s.lights[1].inner == Approx(10.0));
+  // POV-Ray's light has one type: shadowless after spotlight makes its fill light, a point
+  // light without shadows or highlights (checked with povray 3.7.0.10: no cone); spotlight
+  // after shadowless makes a spotlight with both.
+  CHECK(s.lights[1].type == LightType::Point);
   CHECK(!s.lights[1].shadows);
-  checkVec(s.lights[1].direction, glm::normalize(Vec3(0, -5, -1)));
+  CHECK(!s.lights[1].highlights);
+  CHECK(s.lights[2].type == LightType::Spot);
+  CHECK(s.lights[2].angle == Approx(20.0));
+  CHECK(s.lights[2].inner == Approx(10.0));
+  CHECK(s.lights[2].shadows);
+  CHECK(s.lights[2].highlights);
+  checkVec(s.lights[2].direction, glm::normalize(Vec3(0, -5, -1)));
 }
 
 TEST_CASE("scene reader: without a camera, POV-Ray's default", "[sdl][scene]") {

@@ -175,6 +175,34 @@ superellipsoid { <0.25, 2> }
   CHECK(said);
 }
 
+TEST_CASE("scene shapes: lathes are open where POV-Ray's are, closed within a CSG",
+          "[sdl][scene][shapes]") {
+  auto r = readScene(R"(lathe { 3, <0, 0>, <1, 0>, <1, 1> }
+lathe { 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> }
+lathe { 4, <0.5, 0>, <1, 0>, <1, 1>, <0.5, 0> }
+difference { lathe { 3, <0, 0>, <1, 0>, <1, 1> } sphere { 0, 0.5 } }
+union { lathe { 3, <0, 0>, <1, 0>, <1, 1> } sphere { 0, 0.5 } })");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  CHECK(shapeOf<LatheSpec>(s, 0).open);        // its end is off the axis: no disc
+  CHECK_FALSE(shapeOf<LatheSpec>(s, 1).open);  // from the axis to the axis
+  CHECK_FALSE(shapeOf<LatheSpec>(s, 2).open);  // back where it started
+  const auto childLathe = [&](size_t i) {
+    const Node& csg = topNode(s, i);
+    REQUIRE(!csg.children.empty());
+    REQUIRE(csg.children[0]->shape);
+    return std::get<LatheSpec>(*csg.children[0]->shape);
+  };
+  CHECK_FALSE(childLathe(3).open);  // a difference asks its inside: a solid
+  CHECK(childLathe(4).open);        // a union does not
+  size_t said = 0;
+  for (const std::string& w : r->out.warnings)
+    said += w.find(
+                "test.pov:4:14: warning: in an intersection, difference or merge Lucent's "
+                "lathe is a solid") == 0;
+  CHECK(said == 1);
+}
+
 TEST_CASE("scene shapes: text, its font found in POV-Ray's include folder",
           "[sdl][scene][shapes]") {
   auto r = readScene(R"(text { ttf "timrom.ttf" "Lu" 0.25, <0.1, 0, 0> })");
@@ -216,9 +244,20 @@ height_field { "hf.pgm" })");
   checkMat(topNode(*r->load.scene, 0).parentFromNode,
            PovTransform::scaling(Vec3(1, 1, -1)).lucentMatrix());
   CHECK(!shapeOf<HeightFieldSpec>(*r->load.scene, 1).smooth);
+  // POV-Ray's height field has neither walls nor a floor: open, nothing to say.
+  CHECK(h.open);
+  CHECK(shapeOf<HeightFieldSpec>(*r->load.scene, 1).open);
+  CHECK(r->out.warnings.empty());
+  // Within an intersection it stays a closed solid, said.
+  auto csg = readScene(R"(intersection { height_field { "hf.pgm" } box { 0, 0.5 } })");
+  REQUIRE(csg->load.scene);
+  const Node& n = topNode(*csg->load.scene, 0);
+  REQUIRE(n.children.size() == 2);
+  CHECK_FALSE(std::get<HeightFieldSpec>(*n.children[0]->shape).open);
   bool said = false;
-  for (const std::string& w : r->out.warnings)
-    said |= w.find("walls and a floor") != std::string::npos;
+  for (const std::string& w : csg->out.warnings)
+    said |=
+        w.find("Lucent's height field is a solid closed by walls and a floor") != std::string::npos;
   CHECK(said);
 }
 
