@@ -3,6 +3,7 @@
 // POV-Ray's fog with fog_type 1 or 2; filter and transmit are those of POV-Ray's rgbft fog
 // colour; `turbulence` and its parameters are POV-Ray's fog turbulence.
 #include "element_parsers.h"
+#include "pattern_parser.h"
 
 #include "values.h"
 
@@ -14,27 +15,10 @@ const std::vector<std::string_view> kGroundOnly{"offset", "altitude", "up"};
 const std::vector<std::string_view> kTurbulenceOnly{"octaves",    "omega",     "lambda",
                                                     "turb-depth", "transform", "noise-generator"};
 
-// turbulence: one number for all three axes or three numbers, >= 0 (POV-Ray's vector; a
-// mirrored noise is the transform's).
-std::optional<Vec3> parseStrength(ElementReader& r) {
-  const std::string text = *r.text("turbulence");
-  auto list = parseNumberList(text);
-  if (!list) {
-    r.attrError("turbulence", list.error);
-  } else if (list->size() != 1 && list->size() != 3) {
-    r.attrError("turbulence",
-                "expected 1 number or 3 (x y z), got " + std::to_string(list->size()));
-  } else {
-    const Vec3 v = list->size() == 1 ? Vec3((*list)[0]) : Vec3((*list)[0], (*list)[1], (*list)[2]);
-    if (v.x >= 0 && v.y >= 0 && v.z >= 0) return v;
-    r.attrError("turbulence", "expected numbers >= 0, got '" + text + "'");
-  }
-  return std::nullopt;
-}
-
 FogTurbulence parseTurbulence(ElementReader& r) {
   FogTurbulence t;
-  if (auto s = parseStrength(r)) t.strength = *s;
+  // A mirrored noise is the transform's, not the strength's.
+  if (auto s = parseTurbulenceStrength(r)) t.strength = *s;
   t.octaves = static_cast<int>(r.integer("octaves", t.octaves, 1, 10));
   t.omega = r.number("omega", t.omega);
   t.lambda = r.number("lambda", t.lambda);

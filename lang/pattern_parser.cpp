@@ -48,26 +48,29 @@ void noChildren(ElementReader& r) {
 
 const std::vector<std::string_view>& placementAttributes() { return kPlacementAttributes; }
 
+std::optional<Vec3> parseTurbulenceStrength(ElementReader& r) {
+  const std::optional<std::string> text = r.text("turbulence");
+  if (!text) return std::nullopt;
+  auto list = parseNumberList(*text);
+  if (!list) {
+    r.attrError("turbulence", list.error);
+  } else if (list->size() != 1 && list->size() != 3) {
+    r.attrError("turbulence",
+                "expected 1 number or 3 (x y z), got " + std::to_string(list->size()));
+  } else {
+    const Vec3 v = list->size() == 1 ? Vec3((*list)[0]) : Vec3((*list)[0], (*list)[1], (*list)[2]);
+    if (v.x >= 0 && v.y >= 0 && v.z >= 0) return v;
+    r.attrError("turbulence", "expected numbers >= 0, got '" + *text + "'");
+  }
+  return std::nullopt;
+}
+
 // transform (the pattern on the object, as a node's transform places it in its parent) and
-// turbulence: one number for all three axes or three numbers.
+// turbulence.
 PatternPlacement parsePlacement(ElementReader& r) {
   PatternPlacement p;
   p.patternFromObject = glm::inverse(r.transform("transform"));
-  if (auto t = r.text("turbulence")) {
-    auto list = parseNumberList(*t);
-    if (!list) {
-      r.attrError("turbulence", list.error);
-    } else if (list->size() != 1 && list->size() != 3) {
-      r.attrError("turbulence",
-                  "expected 1 number or 3 (x y z), got " + std::to_string(list->size()));
-    } else {
-      const Vec3 v =
-          list->size() == 1 ? Vec3((*list)[0]) : Vec3((*list)[0], (*list)[1], (*list)[2]);
-      if (v.x < 0 || v.y < 0 || v.z < 0)
-        r.attrError("turbulence", "expected numbers >= 0, got '" + *t + "'");
-      else p.turbulence = v;
-    }
-  }
+  if (auto v = parseTurbulenceStrength(r)) p.turbulence = *v;
   // POV-Ray clamps octaves to 1..10; Lucent refuses what it would change.
   p.octaves = static_cast<int>(r.integer("octaves", p.octaves, 1, 10));
   p.omega = r.number("omega", p.omega, NumberRule::positive());

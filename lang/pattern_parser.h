@@ -7,12 +7,17 @@
 
 #include "scenegraph/material.h"
 
+#include <optional>
+
 namespace lucent {
 
 Texture parsePatternTexture(ElementReader& r);
 Texture parseHexagonTexture(ElementReader& r);
 Texture parseBrickTexture(ElementReader& r);
 NormalSpec parseNormal(ElementReader& r);
+// turbulence="s" or "x y z", each >= 0 (POV-Ray's vector): the strength per axis, shared by
+// patterns and fog; nullopt when absent or wrong (reported).
+std::optional<Vec3> parseTurbulenceStrength(ElementReader& r);
 // The placement attributes every pattern element takes (transform, turbulence, octaves,
 // omega, lambda), and their names.
 PatternPlacement parsePlacement(ElementReader& r);
