@@ -408,12 +408,11 @@ void TokenStream::loopEnd(CondEntry& c) {
     }
     return;
   }
-  auto it = tables_.back().find(c.forName);
-  if (it == tables_.back().end() || it->second->kind != Symbol::Kind::Value ||
-      it->second->value.type != ValueType::Float)
+  std::shared_ptr<Symbol>* it = tables_.back().find(c.forName);
+  if (!it || (*it)->kind != Symbol::Kind::Value || (*it)->value.type != ValueType::Float)
     error(c.loc, "the #for loop variable '" + c.forName +
                      "' must remain defined and numerical during the loop");
-  double& v = it->second->value.v[0];
+  double& v = (*it)->value.v[0];
   v += c.forStep;
   if ((c.forStep > 0 && v > c.forEnd + kEpsilon) || (c.forStep < 0 && v < c.forEnd - kEpsilon)) {
     conds_.back().type = Cond::SkipTilEnd;
@@ -468,7 +467,7 @@ void TokenStream::undefDirective() {
   if (cur_.kind != TokenKind::Identifier && cur_.kind != TokenKind::MacroName)
     error(cur_, "expected an identifier after #undef, found " + cur_.describe());
   if (cur_.element) cur_.ref.array->elements[cur_.ref.index].reset();
-  else tables_[cur_.table].erase(std::string(cur_.text()));
+  else tables_[cur_.table].erase(cur_.text());
 }
 
 void TokenStream::versionDirective() {
@@ -514,11 +513,11 @@ bool TokenStream::ifdefParam() {
   const std::string name(cur_.text());
   bool result = false;
   for (auto t = tables_.rbegin(); t != tables_.rend(); ++t) {
-    auto it = t->find(name);
-    if (it == t->end()) continue;
+    std::shared_ptr<Symbol>* it = t->find(name);
+    if (!it) continue;
     result = true;
-    const Symbol& s = *it->second;
-    Ref r = s.kind == Symbol::Kind::Parameter ? s.target : Ref{it->second, nullptr, 0};
+    const Symbol& s = **it;
+    Ref r = s.kind == Symbol::Kind::Parameter ? s.target : Ref{*it, nullptr, 0};
     const Value* v = s.kind == Symbol::Kind::Macro ? nullptr : r.get();
     if (v && v->type == ValueType::Array && rawPeek().kind == RawKind::Punct &&
         rawPeek().text == "[") {

@@ -157,7 +157,7 @@ void TokenStream::declareAs(const Token& target, Value v, const SourceLoc& at) {
   if (target.kind == TokenKind::Undeclared) {
     auto s = std::make_shared<Symbol>();
     s->value = std::move(v);
-    tables_[0][std::string(target.text())] = s;
+    tables_[0][target.text()] = s;
   } else if (target.kind == TokenKind::Identifier) {
     store(target.ref, std::move(v), at);
   } else {
@@ -250,7 +250,7 @@ void TokenStream::fcloseDirective() {
   OpenFile* f = openFileOf(cur_);
   if (!f) error(cur_, "expected a file identifier after #fclose, found " + cur_.describe());
   if (f->writing) f->out.close();
-  tables_[cur_.table].erase(std::string(cur_.text()));
+  tables_[cur_.table].erase(cur_.text());
 }
 
 void TokenStream::readDirective() {
@@ -277,7 +277,7 @@ void TokenStream::readDirective() {
     declareAs(target, std::move(v), at);
   }
   // Nothing left but blanks and commas: POV-Ray closes the file and undefines it.
-  if (!data.more()) tables_[id.table].erase(std::string(id.text()));
+  if (!data.more()) tables_[id.table].erase(id.text());
   okToDeclare_ = true;
 }
 

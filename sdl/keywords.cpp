@@ -2,8 +2,9 @@
 // cannot name an identifier).
 #include "keywords.h"
 
+#include <array>
+#include <cstdint>
 #include <iterator>
-#include <unordered_map>
 #include <vector>
 
 namespace lucent::sdl {
@@ -517,11 +518,34 @@ constexpr std::string_view kWords[] = {
     "z",
 };
 
+// The words' index as an open-addressing hash table built by the compiler (FNV-1a, linear
+// probing, a quarter full), so that a lookup allocates nothing and nothing is built at
+// start.
+constexpr size_t kSlots = 2048;
+
+constexpr std::uint32_t hashWord(std::string_view w) {
+  std::uint32_t h = 2166136261u;
+  for (char c : w) h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
+  return h;
+}
+
+constexpr std::array<std::int16_t, kSlots> buildIndex() {
+  std::array<std::int16_t, kSlots> slots{};
+  for (auto& s : slots) s = -1;
+  for (size_t i = 0; i < std::size(kWords); ++i) {
+    size_t h = hashWord(kWords[i]) & (kSlots - 1);
+    while (slots[h] >= 0) h = (h + 1) & (kSlots - 1);
+    slots[h] = static_cast<std::int16_t>(i);
+  }
+  return slots;
+}
+
+constexpr std::array<std::int16_t, kSlots> kIndex = buildIndex();
+static_assert(std::size(kWords) * 4 <= kSlots, "the keyword table must stay a quarter full");
+
 struct Tables {
-  std::unordered_map<std::string_view, int> index;
   std::vector<Kw> kinds;
   Tables() : kinds(std::size(kWords), Kw::None) {
-    for (size_t i = 0; i < std::size(kWords); ++i) index.emplace(kWords[i], static_cast<int>(i));
 #define LUCENT_SDL_KIND(name) set(#name, Kw::k_##name);
     LUCENT_SDL_FLOAT_FUNCTIONS(LUCENT_SDL_KIND)
     LUCENT_SDL_VECTOR_FUNCTIONS(LUCENT_SDL_KIND)
@@ -531,7 +555,7 @@ struct Tables {
     LUCENT_SDL_OTHER_WORDS(LUCENT_SDL_KIND)
 #undef LUCENT_SDL_KIND
   }
-  void set(std::string_view name, Kw k) { kinds.at(index.at(name)) = k; }
+  void set(std::string_view name, Kw k) { kinds.at(static_cast<size_t>(keywordIndex(name))) = k; }
 };
 
 const Tables& tables() {
@@ -542,9 +566,9 @@ const Tables& tables() {
 }  // namespace
 
 int keywordIndex(std::string_view word) {
-  const auto& m = tables().index;
-  auto it = m.find(word);
-  return it == m.end() ? -1 : it->second;
+  for (size_t h = hashWord(word) & (kSlots - 1); kIndex[h] >= 0; h = (h + 1) & (kSlots - 1))
+    if (kWords[kIndex[h]] == word) return kIndex[h];
+  return -1;
 }
 
 std::string_view keywordName(int index) { return kWords[index]; }

@@ -2,13 +2,18 @@
 // nest; a number is digits with at most one '.', then optionally e/E, a sign and digits,
 // and a '.' not followed by a digit is the period of `V.x`; a string literal ends at the
 // first unescaped quote and may not hold a line break after a backslash.
+//
+// The lexer scans the text in place: a token's text is a view into it, and characters are
+// classed by a table (the C locale's classes, which POV-Ray's tokenizer uses).
 #include "source.h"
 
 #include "keywords.h"
 
-#include <cctype>
+#include <array>
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace lucent::sdl {
 
@@ -17,8 +22,21 @@ namespace {
 // POV-Ray 3.7 keeps a string literal in a buffer of 256 characters and refuses a longer one.
 constexpr size_t kMaxLiteralLength = 255;
 
-bool isWordStart(int c) { return std::isalpha(c) || c == '_'; }
-bool isWordChar(int c) { return std::isalnum(c) || c == '_'; }
+enum CharClass : unsigned char { kSpace = 1, kDigit = 2, kWordStart = 4, kWordChar = 8 };
+
+constexpr std::array<unsigned char, 256> makeClasses() {
+  std::array<unsigned char, 256> c{};
+  for (int ch : {' ', '\t', '\n', '\v', '\f', '\r', '\0', '\032'}) c[ch] = kSpace;
+  for (int ch = '0'; ch <= '9'; ++ch) c[ch] = kDigit | kWordChar;
+  for (int ch = 'a'; ch <= 'z'; ++ch) c[ch] = kWordStart | kWordChar;
+  for (int ch = 'A'; ch <= 'Z'; ++ch) c[ch] = kWordStart | kWordChar;
+  c['_'] = kWordStart | kWordChar;
+  return c;
+}
+
+constexpr std::array<unsigned char, 256> kClasses = makeClasses();
+
+bool is(int c, CharClass k) { return c >= 0 && (kClasses[static_cast<unsigned char>(c)] & k); }
 
 std::string hex2(int c) {
   char buf[8];
@@ -31,57 +49,64 @@ std::string hex2(int c) {
 SourceFile::SourceFile(std::string name, std::filesystem::path folder, std::string text)
     : name_(std::move(name)), folder_(std::move(folder)), text_(std::move(text)) {}
 
-const RawToken& SourceFile::at(size_t index) {
-  while (index >= tokens_.size() && !ended_) readNext();
-  if (index >= tokens_.size()) return tokens_.back();  // the End token
-  return tokens_[index];
+const RawToken& SourceFile::readUpTo(size_t index) {
+  while (index >= count_ && !ended_) readNext();
+  if (index >= count_) return at(count_ - 1);  // the End token
+  return at(index);
 }
 
-int SourceFile::get() {
-  if (pos_ >= text_.size()) return EOF;
-  int c = static_cast<unsigned char>(text_[pos_++]);
-  if (c == '\n') {
+RawToken& SourceFile::push() {
+  if ((count_ & (kChunk - 1)) == 0) chunks_.push_back(std::make_unique<RawToken[]>(kChunk));
+  RawToken& t = chunks_.back()[count_ & (kChunk - 1)];
+  ++count_;
+  return t;
+}
+
+void SourceFile::newLines(size_t from, size_t to) {
+  for (const char* p = text_.data() + from;
+       (p = static_cast<const char*>(std::memchr(p, '\n', text_.data() + to - p))) != nullptr;) {
     ++line_;
-    col_ = 1;
-  } else {
-    ++col_;
+    lineStart_ = static_cast<size_t>(++p - text_.data());
   }
-  return c;
-}
-
-int SourceFile::peek(size_t ahead) const {
-  size_t p = pos_ + ahead;
-  return p < text_.size() ? static_cast<unsigned char>(text_[p]) : EOF;
 }
 
 // After the opening "/*" at line:col. Comments nest, as in POV-Ray; an unclosed one is
 // reported where the outermost began.
 void SourceFile::blockComment(int line, int col) {
+  const size_t size = text_.size();
+  size_t p = pos_;
   for (long depth = 1; depth > 0;) {
-    int c = get();
-    if (c == EOF) throw LexError{line, col, "this '/*' comment has no closing '*/'"};
-    if (c == '*' && peek() == '/') {
-      get();
+    while (p < size && text_[p] != '*' && text_[p] != '/') ++p;
+    if (p >= size) throw LexError{line, col, "this '/*' comment has no closing '*/'"};
+    const char c = text_[p++];
+    if (c == '*' && p < size && text_[p] == '/') {
+      ++p;
       --depth;
-    } else if (c == '/' && peek() == '*') {
-      get();
+    } else if (c == '/' && p < size && text_[p] == '*') {
+      ++p;
       ++depth;
     }
   }
+  newLines(pos_, p);
+  pos_ = p;
 }
 
 void SourceFile::skipSpaceAndComments() {
-  for (;;) {
-    int c = peek();
-    if (c == EOF) return;
-    if (std::isspace(c) || c == '\0' || c == '\032') {
-      get();
-    } else if (c == '/' && peek(1) == '/') {
-      while (peek() != EOF && peek() != '\n') get();
-    } else if (c == '/' && peek(1) == '*') {
-      int l = line_, k = col_;
-      get();
-      get();
+  const size_t size = text_.size();
+  while (pos_ < size) {
+    const char c = text_[pos_];
+    if (is(c, kSpace)) {
+      if (c == '\n') {
+        ++line_;
+        lineStart_ = pos_ + 1;
+      }
+      ++pos_;
+    } else if (c == '/' && pos_ + 1 < size && text_[pos_ + 1] == '/') {
+      const void* end = std::memchr(text_.data() + pos_, '\n', size - pos_);
+      pos_ = end ? static_cast<size_t>(static_cast<const char*>(end) - text_.data()) : size;
+    } else if (c == '/' && pos_ + 1 < size && text_[pos_ + 1] == '*') {
+      const int l = line_, k = col();
+      pos_ += 2;
       blockComment(l, k);
     } else {
       return;
@@ -91,80 +116,95 @@ void SourceFile::skipSpaceAndComments() {
 
 void SourceFile::readNext() {
   skipSpaceAndComments();
-  RawToken t;
+  RawToken& t = push();
   t.line = line_;
-  t.col = col_;
-  int c = peek();
-  if (c == EOF) {
+  t.col = col();
+  const size_t size = text_.size();
+  if (pos_ >= size) {
+    t.kind = RawKind::End;
     ended_ = true;
-  } else if (std::isdigit(c) || (c == '.' && std::isdigit(peek(1)))) {
+    return;
+  }
+  const char c = text_[pos_];
+  if (is(c, kDigit) || (c == '.' && pos_ + 1 < size && is(text_[pos_ + 1], kDigit))) {
     readNumber(t);
-  } else if (isWordStart(c)) {
+  } else if (is(c, kWordStart)) {
     readWord(t);
   } else if (c == '"') {
-    get();
+    ++pos_;
     readString(t);
   } else {
-    readPunct(t, get());
+    readPunct(t);
   }
-  tokens_.push_back(std::move(t));
 }
 
 void SourceFile::readNumber(RawToken& t) {
   // Phases as POV-Ray reads a number: integer part, fraction, exponent sign, exponent.
-  std::string s;
-  int phase = std::isdigit(peek()) ? 1 : 2;
-  if (phase == 2) {
-    s = "0";
-    s += static_cast<char>(get());  // the '.'
+  const size_t size = text_.size(), start = pos_;
+  int phase = 1;
+  if (text_[pos_] == '.') {
+    phase = 2;
+    ++pos_;
   }
-  for (;;) {
-    int c = peek();
-    if (phase > 1 && c == '.') throw LexError{line_, col_, "unexpected second '.' in a number"};
-    bool take = false;
-    if (phase <= 2 && std::isdigit(c)) {
-      take = true;
-    } else if (phase == 1 && c == '.') {
-      take = true;
+  for (; pos_ < size; ++pos_) {
+    const char c = text_[pos_];
+    if (phase > 1 && c == '.') throw LexError{line_, col(), "unexpected second '.' in a number"};
+    if (phase <= 2 && is(c, kDigit)) continue;
+    if (phase == 1 && c == '.') {
       phase = 2;
     } else if (phase <= 2 && (c == 'e' || c == 'E')) {
-      take = true;
       phase = 3;
-    } else if (phase == 3 && (std::isdigit(c) || c == '+' || c == '-')) {
-      take = true;
+    } else if (phase == 3 && (is(c, kDigit) || c == '+' || c == '-')) {
       phase = 4;
-    } else if (phase == 4 && std::isdigit(c)) {
-      take = true;
+    } else if (!(phase == 4 && is(c, kDigit))) {
+      break;
     }
-    if (!take) break;
-    s += static_cast<char>(get());
   }
   t.kind = RawKind::Number;
-  t.text = s;
-  t.number = std::strtod(s.c_str(), nullptr);
+  t.text = std::string_view(text_).substr(start, pos_ - start);
+  const char* first = t.text.data();
+  const std::from_chars_result r = std::from_chars(first, first + t.text.size(), t.number);
+  // Beyond a double's range from_chars gives no value; strtod gives POV-Ray's (inf, 0).
+  if (r.ec != std::errc()) t.number = std::strtod(std::string(t.text).c_str(), nullptr);
 }
 
 void SourceFile::readWord(RawToken& t) {
-  while (isWordChar(peek())) t.text += static_cast<char>(get());
+  const size_t size = text_.size(), start = pos_;
+  while (pos_ < size && is(text_[pos_], kWordChar)) ++pos_;
   t.kind = RawKind::Word;
+  t.text = std::string_view(text_).substr(start, pos_ - start);
   t.keyword = keywordIndex(t.text);
 }
 
 void SourceFile::readString(RawToken& t) {
   t.kind = RawKind::String;
+  const size_t size = text_.size(), start = pos_;
+  bool escapedQuote = false;
   for (;;) {
-    int c = get();
-    if (c == EOF) throw LexError{t.line, t.col, "this string has no closing quote"};
+    if (pos_ >= size) throw LexError{t.line, t.col, "this string has no closing quote"};
+    const char c = text_[pos_++];
     if (c == '"') break;
-    if (c == '\\') {
-      int d = get();
+    if (c == '\n') {
+      ++line_;
+      lineStart_ = pos_;
+    } else if (c == '\\') {
+      if (pos_ >= size) throw LexError{t.line, t.col, "this string has no closing quote"};
+      const char d = text_[pos_++];
       if (d == '\n' || d == '\r')
         throw LexError{t.line, t.col, "this string is not closed before the end of its line"};
-      if (d == EOF) throw LexError{t.line, t.col, "this string has no closing quote"};
-      if (d != '"') t.text += '\\';
-      c = d;
+      escapedQuote = escapedQuote || d == '"';
     }
-    t.text += static_cast<char>(c);
+  }
+  t.text = std::string_view(text_).substr(start, pos_ - 1 - start);
+  if (escapedQuote) {  // `\"` is read as `"`: the text is a copy without those backslashes
+    std::string s;
+    for (size_t i = 0; i < t.text.size(); ++i) {
+      if (t.text[i] == '\\' && t.text[i + 1] == '"') ++i;
+      else if (t.text[i] == '\\') s += t.text[i++];
+      s += t.text[i];
+    }
+    unescaped_.push_back(std::move(s));
+    t.text = unescaped_.back();
   }
   if (t.text.size() > kMaxLiteralLength)
     throw LexError{t.line, t.col,
@@ -172,15 +212,16 @@ void SourceFile::readString(RawToken& t) {
                        " characters: POV-Ray 3.7 reads at most 255"};
 }
 
-void SourceFile::readPunct(RawToken& t, int c) {
+void SourceFile::readPunct(RawToken& t) {
   t.kind = RawKind::Punct;
-  t.text = std::string(1, static_cast<char>(c));
+  const size_t start = pos_;
+  const char c = text_[pos_++];
   switch (c) {
     case '!':
     case '<':
     case '>':
-      if (peek() == '=') t.text += static_cast<char>(get());
-      return;
+      if (pos_ < text_.size() && text_[pos_] == '=') ++pos_;
+      break;
     case '{':
     case '}':
     case '@':
@@ -208,10 +249,11 @@ void SourceFile::readPunct(RawToken& t, int c) {
     case '*':
     case '~':
     case '.':
-      return;
+      break;
     default:
       throw LexError{t.line, t.col, "illegal character in input file, value is " + hex2(c)};
   }
+  t.text = std::string_view(text_).substr(start, pos_ - start);
 }
 
 }  // namespace lucent::sdl

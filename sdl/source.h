@@ -10,21 +10,25 @@
 #include <cstddef>
 #include <deque>
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace lucent::sdl {
 
 enum class RawKind { Word, Number, String, Punct, End };
 
 struct RawToken {
-  RawKind kind = RawKind::End;
-  // Word: the word. String: the characters between the quotes, `\"` read as `"` and every
-  // other escape kept for later (a file name is read without them). Punct: the operator,
-  // one of { } @ & ` \ | : , - $ = != ! ^ <= < ( [ % + ? >= > ) ] ; ' / * ~ # .
-  std::string text;
+  // Word, Number, Punct: the characters as written, a view into the file's text. String: the
+  // characters between the quotes, `\"` read as `"` and every other escape kept for later
+  // (a file name is read without them). Punct is one of { } @ & ` \ | : , - $ = != ! ^ <= <
+  // ( [ % + ? >= > ) ] ; ' / * ~ # . The view lives as long as its SourceFile.
+  std::string_view text;
   double number = 0;
-  int keyword = -1;  // Word: its entry in keywords.h, or -1 for an identifier
   int line = 0, col = 0;
+  int keyword = -1;  // Word: its entry in keywords.h, or -1 for an identifier
+  RawKind kind = RawKind::End;
 };
 
 // The problem the lexer found, where (the token stream adds the file and its context).
@@ -43,27 +47,39 @@ class SourceFile {
 
   // The raw token at `index`, reading more of the file as needed; past the end of the file,
   // an End token. Throws LexError. The reference stays valid as more tokens are read.
-  const RawToken& at(size_t index);
+  const RawToken& at(size_t index) {
+    if (index < count_) return chunks_[index >> kChunkBits][index & (kChunk - 1)];
+    return readUpTo(index);
+  }
 
   SourceLoc loc(const RawToken& t) const { return {name_, t.line, t.col}; }
 
  private:
+  // Tokens are kept in chunks that never move, so references to them stay valid.
+  static constexpr size_t kChunkBits = 10;
+  static constexpr size_t kChunk = size_t{1} << kChunkBits;
+
+  const RawToken& readUpTo(size_t index);
   void readNext();
-  int get();
-  int peek(size_t ahead = 0) const;
+  RawToken& push();
   void skipSpaceAndComments();
   void blockComment(int line, int col);
+  void newLines(size_t from, size_t to);  // counts the line ends in text_[from, to)
   void readNumber(RawToken& t);
   void readWord(RawToken& t);
   void readString(RawToken& t);
-  void readPunct(RawToken& t, int c);
+  void readPunct(RawToken& t);
+  int col() const { return static_cast<int>(pos_ - lineStart_) + 1; }
 
   std::string name_;
   std::filesystem::path folder_;
   std::string text_;
-  std::deque<RawToken> tokens_;
+  std::vector<std::unique_ptr<RawToken[]>> chunks_;
+  size_t count_ = 0;
+  std::deque<std::string> unescaped_;  // string literals that held \" (views point here)
   size_t pos_ = 0;
-  int line_ = 1, col_ = 1;
+  size_t lineStart_ = 0;  // where line_ begins in text_: a column is counted from it
+  int line_ = 1;
   bool ended_ = false;
 };
 

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -45,6 +46,35 @@ struct Symbol {
   std::shared_ptr<Macro> macro;  // Macro
 };
 
-using SymbolTable = std::unordered_map<std::string, std::shared_ptr<Symbol>>;
+// One table of names. A name is looked up by a view (a token's text), with no copy made:
+// each entry owns its name, and the map's key is a view of it.
+class SymbolTable {
+ public:
+  // The symbol named `name`, or nullptr.
+  std::shared_ptr<Symbol>* find(std::string_view name) {
+    auto it = map_.find(name);
+    return it == map_.end() ? nullptr : &it->second->symbol;
+  }
+  const std::shared_ptr<Symbol>* find(std::string_view name) const {
+    auto it = map_.find(name);
+    return it == map_.end() ? nullptr : &it->second->symbol;
+  }
+  // The place of the symbol named `name`, made (empty) if there is none.
+  std::shared_ptr<Symbol>& operator[](std::string_view name) {
+    if (auto* s = find(name)) return *s;
+    auto e = std::make_unique<Entry>();
+    e->name = name;
+    const std::string_view key = e->name;
+    return map_.emplace(key, std::move(e)).first->second->symbol;
+  }
+  void erase(std::string_view name) { map_.erase(name); }
+
+ private:
+  struct Entry {
+    std::string name;
+    std::shared_ptr<Symbol> symbol;
+  };
+  std::unordered_map<std::string_view, std::unique_ptr<Entry>> map_;
+};
 
 }  // namespace lucent::sdl

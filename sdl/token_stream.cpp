@@ -250,9 +250,9 @@ bool TokenStream::readWord(const RawToken& r, SourceFile* f) {
     return true;
   }
   for (int i = static_cast<int>(tables_.size()) - 1; i >= 0; --i) {
-    auto it = tables_[i].find(r.text);
-    if (it == tables_[i].end()) continue;
-    const Symbol& s = *it->second;
+    std::shared_ptr<Symbol>* it = tables_[i].find(r.text);
+    if (!it) continue;
+    const Symbol& s = **it;
     if (s.kind == Symbol::Kind::Macro) {
       if (okToDeclare_) {
         invokeMacro(std::shared_ptr<Macro>(s.macro), f->loc(r));
@@ -265,7 +265,7 @@ bool TokenStream::readWord(const RawToken& r, SourceFile* f) {
     }
     Token t = makeToken(TokenKind::Identifier, r, f);
     t.table = i;
-    t.ref = s.kind == Symbol::Kind::Parameter ? s.target : Ref{it->second, nullptr, 0};
+    t.ref = s.kind == Symbol::Kind::Parameter ? s.target : Ref{*it, nullptr, 0};
     const Value* v = t.ref.get();
     if (v && v->type == ValueType::Array && rawPeek().kind == RawKind::Punct &&
         rawPeek().text == "[")
@@ -350,11 +350,11 @@ void TokenStream::parseComma() { allow(","); }
 
 const Value* TokenStream::lookup(const std::string& name) const {
   for (auto t = tables_.rbegin(); t != tables_.rend(); ++t) {
-    auto it = t->find(name);
-    if (it == t->end()) continue;
-    if (it->second->kind == Symbol::Kind::Parameter) return it->second->target.get();
-    if (it->second->kind == Symbol::Kind::Macro) return nullptr;
-    return &it->second->value;
+    const std::shared_ptr<Symbol>* it = t->find(name);
+    if (!it) continue;
+    if ((*it)->kind == Symbol::Kind::Parameter) return (*it)->target.get();
+    if ((*it)->kind == Symbol::Kind::Macro) return nullptr;
+    return &(*it)->value;
   }
   return nullptr;
 }

@@ -62,7 +62,7 @@ struct Token {
   bool call = false;     // Identifier of a function followed by '(': a call, not the function
   std::shared_ptr<Macro> macro;
 
-  std::string_view text() const { return raw ? std::string_view(raw->text) : ""; }
+  std::string_view text() const { return raw ? raw->text : ""; }
   double number() const { return raw ? raw->number : 0; }
   SourceLoc loc() const { return file && raw ? file->loc(*raw) : SourceLoc{}; }
   bool is(std::string_view punct) const { return kind == TokenKind::Punct && text() == punct; }

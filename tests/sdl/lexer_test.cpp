@@ -4,6 +4,8 @@
 #include "sdl/keywords.h"
 #include "sdl/source.h"
 
+#include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,13 +13,20 @@ using namespace lucent::sdl;
 
 namespace {
 
-std::vector<RawToken> lex(const std::string& text) {
-  SourceFile f("t.pov", ".", text);
-  std::vector<RawToken> out;
+// The tokens of `text`, with the file they view kept alive beside them.
+struct Lexed {
+  std::unique_ptr<SourceFile> file;
+  std::vector<RawToken> tokens;
+  size_t size() const { return tokens.size(); }
+  const RawToken& operator[](size_t i) const { return tokens.at(i); }
+};
+
+Lexed lex(const std::string& text) {
+  Lexed out{std::make_unique<SourceFile>("t.pov", ".", text), {}};
   for (size_t i = 0;; ++i) {
-    const RawToken& t = f.at(i);
+    const RawToken& t = out.file->at(i);
     if (t.kind == RawKind::End) break;
-    out.push_back(t);
+    out.tokens.push_back(t);
   }
   return out;
 }
@@ -96,4 +105,37 @@ TEST_CASE("sdl lexer: comments, block comments nest as in POV-Ray", "[sdl][lexer
   CHECK(lexError("x\n  /* open /* inner */ still open") ==
         "2:3: this '/*' comment has no closing '*/'");
   CHECK(lexError("a $ \x01") == "1:5: illegal character in input file, value is 01");
+}
+
+TEST_CASE("sdl lexer: numbers beyond a double's range read as strtod reads them", "[sdl][lexer]") {
+  auto t = lex("1e999 1e-400 .25e1");
+  REQUIRE(t.size() == 3);
+  CHECK(std::isinf(t[0].number));
+  CHECK(t[1].number == 0.0);
+  CHECK(t[2].number == 2.5);
+  CHECK(t[2].text == ".25e1");
+}
+
+TEST_CASE("sdl lexer: lines and columns after comments and strings that span lines",
+          "[sdl][lexer]") {
+  auto t = lex("a /* one\ntwo\n */ b \"x\ny\" c\n\t// note\n  d");
+  REQUIRE(t.size() == 5);
+  CHECK((t[1].line == 3 && t[1].col == 5));
+  CHECK((t[2].line == 3 && t[2].col == 7));
+  CHECK(t[2].text == "x\ny");
+  CHECK((t[3].text == "c" && t[3].line == 4 && t[3].col == 4));
+  CHECK((t[4].text == "d" && t[4].line == 6 && t[4].col == 3));
+}
+
+TEST_CASE("sdl lexer: tokens keep their place as the file is read further", "[sdl][lexer]") {
+  std::string text;
+  for (int i = 0; i < 5000; ++i) text += "w" + std::to_string(i) + " ";
+  SourceFile f("t.pov", ".", text);
+  const RawToken& first = f.at(0);
+  const RawToken& last = f.at(4999);
+  CHECK(first.text == "w0");  // still valid after 5000 tokens were read
+  CHECK(last.text == "w4999");
+  CHECK(last.col == static_cast<int>(text.size()) - 5);
+  CHECK(f.at(5000).kind == RawKind::End);
+  CHECK(f.at(7000).kind == RawKind::End);
 }
