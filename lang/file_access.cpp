@@ -1,6 +1,7 @@
 #include "file_access.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <system_error>
 
 namespace fs = std::filesystem;
@@ -8,6 +9,15 @@ namespace fs = std::filesystem;
 namespace lucent {
 
 fs::path canonicalPath(const fs::path& p) {
+  // An existing path: realpath(3) resolves it in one call (what weakly_canonical does, with
+  // far less work per component); the rest of the path is then as the code below makes it.
+  if (!p.empty()) {
+    if (char* real = ::realpath(p.c_str(), nullptr)) {
+      fs::path c(real);
+      std::free(real);
+      return c;
+    }
+  }
   std::error_code ec;
   fs::path abs = fs::absolute(p, ec);
   if (ec) abs = p;

@@ -1,13 +1,20 @@
 #include "source_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
-#include <fstream>
 #include <functional>
 
 namespace lucent {
 
-std::optional<std::string> readSceneText(const std::filesystem::path& path, std::string& text) {
+namespace {
+
+// Why `path` cannot be read, examined as std::filesystem examines it.
+std::string whyUnreadable(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
@@ -15,16 +22,36 @@ std::optional<std::string> readSceneText(const std::filesystem::path& path, std:
   if (status.type() == fs::file_type::directory) return "it is a folder, not a file";
   if (ec) return "it cannot be examined: " + ec.message();
   if (status.type() != fs::file_type::regular) return "it is not a regular file";
-  const std::uintmax_t size = fs::file_size(path, ec);
-  if (ec) return "its size cannot be read: " + ec.message();
+  return "the file cannot be read";
+}
+
+}  // namespace
+
+// One open, fstat and read (a scene reads many includes; streams and separate stat calls
+// cost more than the reading). O_NONBLOCK: a FIFO is refused, never waited on.
+std::optional<std::string> readSceneText(const std::filesystem::path& path, std::string& text) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return whyUnreadable(path);
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) return whyUnreadable(path);
+  if (S_ISDIR(st.st_mode)) return "it is a folder, not a file";
+  if (!S_ISREG(st.st_mode)) return "it is not a regular file";
+  const auto size = static_cast<std::uintmax_t>(st.st_size);
   if (size > kMaxSceneFileBytes)
     return "it is too large (" + std::to_string(size) + " bytes; the limit is " +
            std::to_string(kMaxSceneFileBytes) + " bytes)";
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "the file cannot be read";
   text.assign(static_cast<size_t>(size), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(size));
-  if (static_cast<std::uintmax_t>(in.gcount()) != size) return "the file cannot be read completely";
+  for (size_t done = 0; done < size;) {
+    const ssize_t n = ::read(fd, text.data() + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return "the file cannot be read";
+    if (n == 0) return "the file cannot be read completely";
+    done += static_cast<size_t>(n);
+  }
   return std::nullopt;
 }
 

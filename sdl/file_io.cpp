@@ -228,6 +228,7 @@ void TokenStream::fopenDirective() {
                     path.string() + ")");
     file->writing = true;
     file->display = path.string();
+    foundIncludes_.clear();  // a file written may be included next, found anew
     file->out.open(path, mode == "append" ? std::ios::binary | std::ios::app
                                           : std::ios::binary | std::ios::trunc);
     if (!file->out) error(at, "#fopen: cannot open '" + path.string() + "' for writing");

@@ -124,6 +124,14 @@ void TokenStream::openInclude(const SourceLoc& at) {
   notes_.push_back({at, "in the file included here"});
 }
 
+const std::filesystem::path& TokenStream::canonicalFolder(
+    const std::filesystem::path& folder) const {
+  auto it = canonicalFolders_.find(folder);
+  if (it == canonicalFolders_.end())
+    it = canonicalFolders_.emplace(folder, canonicalPath(folder)).first;
+  return it->second;
+}
+
 std::filesystem::path TokenStream::findDataFile(const std::string& name, const SourceLoc& at,
                                                 const std::vector<std::string>& extensions) const {
   std::string display;
@@ -138,6 +146,16 @@ std::filesystem::path TokenStream::findInclude(const std::string& name, const So
                                                std::string& display, bool tryInc,
                                                const std::vector<std::string>* extensions) const {
   namespace fs = std::filesystem;
+  // An include read again (shapes.inc and its kin include each other, guarded) is found
+  // where it was found before: the files do not move while a scene is read.
+  const bool cacheable = tryInc && !extensions;
+  if (cacheable) {
+    auto hit = foundIncludes_.find(name);
+    if (hit != foundIncludes_.end()) {
+      display = hit->second.display;
+      return hit->second.path;
+    }
+  }
   std::vector<fs::path> folders{sceneFolder_};
   for (const auto& f : options_.includeFolders) folders.push_back(f);
   std::vector<std::string> names{name};
@@ -164,7 +182,7 @@ std::filesystem::path TokenStream::findInclude(const std::string& name, const So
         if (!r.error.empty()) error(at, r.error);
         return r.path;
       }
-      fs::path c = canonicalPath(p), root = canonicalPath(folders[i]);
+      fs::path c = canonicalPath(p), root = canonicalFolder(folders[i]);
       // An include must lie inside the folder; a data file (a font, an image) may be a link
       // the folder holds (Debian links POV-Ray's fonts there), but its name must not leave it.
       auto rel = tryInc ? c.lexically_relative(root)
@@ -174,6 +192,8 @@ std::filesystem::path TokenStream::findInclude(const std::string& name, const So
       if (fs::path(n).is_absolute() && options_.access) {
         FileAccess::Resolved r = options_.access->resolve(n, sceneFolder_);
         if (!r.error.empty()) error(at, r.error);
+      } else if (cacheable) {
+        foundIncludes_[name] = FoundFile{c, display};
       }
       return c;
     }

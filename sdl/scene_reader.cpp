@@ -56,13 +56,10 @@ namespace {}  // namespace
 
 void SceneReader::keepError(TokenStream& in, const SourceLoc& at, const std::string& message) {
   // The core adds the macro and include chain that led here as notes.
-  try {
-    in.error(at, message);
-  } catch (const SdlError& e) {
-    // Inside a declaration the error waits for the item's use (reportRefused).
-    if (!declaring_.empty()) declaring_.back().push_back({Severity::Error, e.loc(), e.message()});
-    else diags_.error(e.loc(), e.message());
-  }
+  const SdlError e = in.errorAt(at, message);
+  // Inside a declaration the error waits for the item's use (reportRefused).
+  if (!declaring_.empty()) declaring_.back().push_back({Severity::Error, e.loc(), e.message()});
+  else diags_.error(e.loc(), e.message());
 }
 
 void SceneReader::reportRefused(const SceneItem& item, const SourceLoc& usedAt, TokenStream& in) {
@@ -80,14 +77,10 @@ void SceneReader::reportRefused(const SceneItem& item, const SourceLoc& usedAt, 
       refusal(in, d.loc, d.message, false);  // counted where the declaration is used
       continue;
     }
-    try {
-      in.error(usedAt, "");
-    } catch (const SdlError& e) {
-      // The use, with the macro and include chain that led to it, as notes.
-      std::string used = e.message();
-      std::string note = usedAt.str() + ": note: the declaration is used here";
-      diags_.error(d.loc, d.message + "\n" + note + used);
-    }
+    // The use, with the macro and include chain that led to it, as notes.
+    const std::string used = in.errorAt(usedAt, "").message();
+    const std::string note = usedAt.str() + ": note: the declaration is used here";
+    diags_.error(d.loc, d.message + "\n" + note + used);
   }
 }
 
@@ -248,11 +241,8 @@ void SceneReader::readScene(TokenStream& in) {
     if (!isWord(t, "texture")) lastTexture_.reset();
     if (isWord(t, "texture") && lastTexture_) {
       // A layer of the texture just declared: its error kept by that declaration.
-      try {
-        in.error(t, kLayeredTextures);
-      } catch (const SdlError& e) {
-        lastTexture_->refused.push_back({Severity::Error, e.loc(), e.message()});
-      }
+      const SdlError e = in.errorAt(t.loc(), kLayeredTextures);
+      lastTexture_->refused.push_back({Severity::Error, e.loc(), e.message()});
       in.expect("{");
       skipToClose(in, 1);
       continue;

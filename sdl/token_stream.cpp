@@ -137,8 +137,12 @@ std::string TokenStream::withNotes(const std::string& first) const {
   return m;
 }
 
+SdlError TokenStream::errorAt(const SourceLoc& at, const std::string& message) const {
+  return SdlError(at, withNotes(message));
+}
+
 void TokenStream::error(const SourceLoc& at, const std::string& message) const {
-  throw SdlError(at, withNotes(message));
+  throw errorAt(at, message);
 }
 
 void TokenStream::error(const Token& at, const std::string& message) const {

@@ -118,6 +118,9 @@ class TokenStream {
                                      const std::vector<std::string>& extensions) const;
 
   [[noreturn]] void error(const Token& at, const std::string& message) const;
+  // The error `error(at, message)` throws, made but not thrown: for an error kept for later
+  // (a refused declaration's), as a throw costs far more than the message.
+  SdlError errorAt(const SourceLoc& at, const std::string& message) const;
   [[noreturn]] void error(const SourceLoc& at, const std::string& message) const;
   void warning(const SourceLoc& at, const std::string& message);
 
@@ -239,6 +242,7 @@ class TokenStream {
                                     std::string& display, bool tryInc = true,
                                     const std::vector<std::string>* extensions = nullptr) const;
   void noticeSkip();
+  const std::filesystem::path& canonicalFolder(const std::filesystem::path& folder) const;
 
   // declarations.cpp
   void declare(bool local, const SourceLoc& at);
@@ -316,6 +320,14 @@ class TokenStream {
   Output* out_;
   std::vector<std::unique_ptr<SourceFile>> files_;
   std::map<std::filesystem::path, SourceFile*> byPath_;
+  struct FoundFile {
+    std::filesystem::path path;
+    std::string display;
+  };
+  // findInclude's answers and the canonical include folders, kept for the includes read
+  // again (the files and folders do not change while a scene is read).
+  mutable std::map<std::string, FoundFile> foundIncludes_;
+  mutable std::map<std::filesystem::path, std::filesystem::path> canonicalFolders_;
   std::filesystem::path sceneFolder_;         // canonical
   std::filesystem::path sceneDisplayFolder_;  // as given, for the names in messages
   std::shared_ptr<Macro> pendingMacro_;       // the macro a #macro directive defines
