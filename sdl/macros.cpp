@@ -146,15 +146,15 @@ std::filesystem::path TokenStream::findInclude(const std::string& name, const So
                                                std::string& display, bool tryInc,
                                                const std::vector<std::string>* extensions) const {
   namespace fs = std::filesystem;
-  // An include read again (shapes.inc and its kin include each other, guarded) is found
-  // where it was found before: the files do not move while a scene is read.
-  const bool cacheable = tryInc && !extensions;
-  if (cacheable) {
-    auto hit = foundIncludes_.find(name);
-    if (hit != foundIncludes_.end()) {
-      display = hit->second.display;
-      return hit->second.path;
-    }
+  // A file looked for again (shapes.inc and its kin include each other, guarded; a macro
+  // makes text in one font at each call) is found where it was found before: the files do
+  // not move while a scene is read.
+  std::string key = (tryInc ? "i\n" : "d\n") + name;
+  if (extensions)
+    for (const std::string& e : *extensions) key += "\n" + e;
+  if (auto hit = foundIncludes_.find(key); hit != foundIncludes_.end()) {
+    display = hit->second.display;
+    return hit->second.path;
   }
   std::vector<fs::path> folders{sceneFolder_};
   for (const auto& f : options_.includeFolders) folders.push_back(f);
@@ -192,8 +192,8 @@ std::filesystem::path TokenStream::findInclude(const std::string& name, const So
       if (fs::path(n).is_absolute() && options_.access) {
         FileAccess::Resolved r = options_.access->resolve(n, sceneFolder_);
         if (!r.error.empty()) error(at, r.error);
-      } else if (cacheable) {
-        foundIncludes_[name] = FoundFile{c, display};
+      } else {
+        foundIncludes_[key] = FoundFile{c, display};
       }
       return c;
     }

@@ -104,14 +104,22 @@ void SceneReader::readIsosurface(PovObject& o, TokenStream& in) {
     keepError(in, f->loc, m);
     return;
   }
-  NoNames names;
-  ExpressionError problem;
-  std::optional<FunctionText> compiled = compileFunction(text, {"x", "y", "z"}, names, problem);
-  if (!compiled)
-    in.error(f->loc, "the isosurface's function, written as '" + text +
-                         "', is not a Lucent expression: " + problem.message);
-  s.function = compiled->text;
-  s.field = makeExpressionField(*compiled);
+  // A macro that makes the same isosurface again gets the field compiled the first time:
+  // the text, whose names are x, y and z only, says all of it.
+  std::shared_ptr<const ScalarField>& field = isosurfaceFields_[text];
+  if (!field) {
+    NoNames names;
+    ExpressionError problem;
+    std::optional<FunctionText> compiled = compileFunction(text, {"x", "y", "z"}, names, problem);
+    if (!compiled) {
+      isosurfaceFields_.erase(text);
+      in.error(f->loc, "the isosurface's function, written as '" + text +
+                           "', is not a Lucent expression: " + problem.message);
+    }
+    field = makeExpressionField(*compiled);
+  }
+  s.function = text;
+  s.field = field;
   o.shape = s;
 }
 

@@ -571,7 +571,12 @@ void SceneReader::readText(PovObject& o, TokenStream& in) {
     in.error(thicknessLoc,
              "the text's thickness must be above 0 in Lucent, not " + attributeText(s.thickness));
   s.fontPath = in.findDataFile(s.font, fontLoc, {".ttf", ".TTF"}).string();
-  auto outline = std::make_shared<TextOutline>(textOutline(s.fontPath, s.string, s.offset));
+  // The same text in the same font (a macro's letters, made again at each call) is laid
+  // out once: an outline is never changed after it is made.
+  std::shared_ptr<TextOutline>& outline =
+      textOutlines_[fmt::format("{}\n{}\n{}\n{}", s.fontPath, s.string, s.offset.x, s.offset.y)];
+  if (!outline)
+    outline = std::make_shared<TextOutline>(textOutline(s.fontPath, s.string, s.offset));
   if (!outline->error.empty()) {
     if (outline->error.find("UTF-8") != std::string::npos) in.error(stringLoc, outline->error);
     in.error(fontLoc, "cannot read the font '" + s.font + "': " + outline->error);
@@ -582,7 +587,7 @@ void SceneReader::readText(PovObject& o, TokenStream& in) {
       missing += fmt::format(" U+{:04X}", static_cast<unsigned>(g.codepoint));
   if (!missing.empty())
     warn(in, stringLoc, "the font has no glyph for" + missing + "; its missing-glyph box is shown");
-  s.outline = std::move(outline);
+  s.outline = outline;
   o.transform.translate(Vec3(0.0, 0.0, s.thickness));
   o.shape = std::move(s);
 }

@@ -282,6 +282,10 @@ class SceneReader : public ItemReader {
     std::string message;
   };
   std::map<std::string, Skipped> skipped_;
+  // The isosurface fields compiled so far, by their function's text (read_isosurface.cpp).
+  std::map<std::string, std::shared_ptr<const ScalarField>> isosurfaceFields_;
+  // The text outlines laid out so far, by font, string and offset (read_shapes.cpp).
+  std::map<std::string, std::shared_ptr<TextOutline>> textOutlines_;
   // The material of the objects that take the default texture (unpatterned) as it is now.
   std::optional<uint32_t> defaultMaterial_;
   // The materials of declared textures (unpatterned), by name and interior.

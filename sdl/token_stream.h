@@ -324,8 +324,8 @@ class TokenStream {
     std::filesystem::path path;
     std::string display;
   };
-  // findInclude's answers and the canonical include folders, kept for the includes read
-  // again (the files and folders do not change while a scene is read).
+  // findInclude's answers (includes and data files) and the canonical folders, kept for the files
+  // looked for again (the files and folders do not change while a scene is read).
   mutable std::map<std::string, FoundFile> foundIncludes_;
   mutable std::map<std::filesystem::path, std::filesystem::path> canonicalFolders_;
   std::filesystem::path sceneFolder_;         // canonical
