@@ -1,6 +1,7 @@
 // Reading a height field's image (height_map_file.h says what POV-Ray does and why).
 #include "height_map_file.h"
 
+#include "images/builtin/builtin_images.h"
 #include "images/image_reading.h"
 
 #include <fmt/format.h>
@@ -88,15 +89,8 @@ float povPngGrey(long v, int max) {
   return float(static_cast<unsigned char>(grey * 255.0f)) / 255.0f;
 }
 
-}  // namespace
-
-std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
-  const PngFacts pngFacts = refusePaletteFiles(path);
-  refuseBadPnmMaximum(path);
-  std::string error;
-  std::unique_ptr<ImageReader> in = openImageReader(path, error);
-  if (!in) throw HeightMapError(error.empty() ? std::string("not an image") : error);
-  const ImageHeader& h = in->header();
+// The limits every height map's image is held to, once its header is known.
+void checkHeader(const ImageHeader& h) {
   if (h.width <= 0 || h.height <= 0 || h.channels <= 0)
     throw HeightMapError("the image has no pixels");
   if (h.width > kMaxHeightFieldSide || h.height > kMaxHeightFieldSide || h.channels > 4)
@@ -110,9 +104,57 @@ std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
   if (h.floating || !(h.eightBit || h.sixteenBit))
     throw HeightMapError(
         "only 8- or 16-bit integer images are read as heights (not floating point)");
-  std::vector<float> px(static_cast<size_t>(h.width) * h.height * h.channels);
-  error = readImagePixels(*in, px.data());
+}
+
+// An image's header and its values as floats of 0 to 1 (code / max), as the plugin gives.
+struct StoredImage {
+  ImageHeader header;
+  std::vector<float> values;
+};
+
+// A PNG through libpng (images/builtin): no OpenImageIO to load for the commonest height
+// map. Its values are the same code values OpenImageIO gives.
+StoredImage readPng(const std::string& path) {
+  PngPixels png;
+  std::string error = readPngHeader(path, png);
   if (!error.empty()) throw HeightMapError(error);
+  StoredImage out;
+  out.header.width = png.width;
+  out.header.height = png.height;
+  out.header.channels = png.channels;
+  out.header.eightBit = !png.sixteenBit;
+  out.header.sixteenBit = png.sixteenBit;
+  checkHeader(out.header);
+  error = readPngValues(path, png);
+  if (!error.empty()) throw HeightMapError(error);
+  const float top = png.sixteenBit ? 65535.0f : 255.0f;
+  out.values.resize(png.values.size());
+  for (size_t i = 0; i < png.values.size(); ++i) out.values[i] = float(png.values[i]) / top;
+  return out;
+}
+
+StoredImage readThroughPlugin(const std::string& path) {
+  std::string error;
+  std::unique_ptr<ImageReader> in = openImageReader(path, error);
+  if (!in) throw HeightMapError(error.empty() ? std::string("not an image") : error);
+  StoredImage out;
+  out.header = in->header();
+  checkHeader(out.header);
+  const ImageHeader& h = out.header;
+  out.values.resize(static_cast<size_t>(h.width) * h.height * h.channels);
+  error = readImagePixels(*in, out.values.data());
+  if (!error.empty()) throw HeightMapError(error);
+  return out;
+}
+
+}  // namespace
+
+std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
+  const PngFacts pngFacts = refusePaletteFiles(path);
+  refuseBadPnmMaximum(path);
+  const StoredImage image = pngFacts.png ? readPng(path) : readThroughPlugin(path);
+  const ImageHeader& h = image.header;
+  const std::vector<float>& px = image.values;
 
   auto map = std::make_shared<HeightMap>();
   map->width = h.width;

@@ -7,7 +7,9 @@
 
 #include "images/image_plugin.h"
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace lucent {
 
@@ -23,5 +25,23 @@ WriteFailure builtinWriteFile(const std::string& path, const ImageToWrite& image
 // Does the file decode completely as an image of this format and size? Every row is
 // decoded (PNG: every zlib block and checksum up to the end chunk).
 bool builtinReadsBackComplete(const std::string& path, const ImageToWrite& image);
+
+// A PNG's stored values, read without OpenImageIO (builtin_png_read.cpp): for readers that
+// take values as they are stored (height fields), with no colour conversion.
+struct PngPixels {
+  int width = 0, height = 0;
+  int channels = 0;                   // after widening: 1 grey, 2 grey and alpha, 3 RGB, 4 RGBA
+  bool sixteenBit = false;            // values of 0 to 65535; else 0 to 255
+  int storedDepth = 0;                // the file's bit depth (1, 2, 4, 8 or 16)
+  bool palette = false;               // a palette image: its values are not read here
+  std::vector<std::uint16_t> values;  // rows top first, width x channels values each
+};
+
+// Whether the file starts with PNG's signature.
+bool isPngFile(const std::string& path);
+// The header's facts into `out`: "" or the reason the file cannot be read.
+std::string readPngHeader(const std::string& path, PngPixels& out);
+// The values of a file whose header `pixels` holds (not a palette image): "" or the reason.
+std::string readPngValues(const std::string& path, PngPixels& pixels);
 
 }  // namespace lucent

@@ -51,6 +51,17 @@ TEST_CASE("height field images: every value is POV-Ray's height", "[images][heig
   CHECK(g8->at(121, 1) == 120 * 257);
 }
 
+TEST_CASE("height field images: a grey PNG with alpha gives its stored grey, as POV-Ray's",
+          "[images][height-field]") {
+  // tests/data/png_kinds/grey_alpha8.png: grey (23x + 5y) mod 256 under alpha 7x. POV-Ray
+  // 3.7's trace() down its middle row (image row 3) at x = 1..9 gave 38, 61, ..., 222
+  // times 257: the grey not multiplied by the alpha (which OpenImageIO's reading would be).
+  auto map =
+      readHeightMapFile(std::string(lucentSourceDir()) + "/tests/data/png_kinds/grey_alpha8.png");
+  REQUIRE((map->width == 11 && map->depth == 7));
+  for (int x = 1; x <= 9; ++x) CHECK(map->at(x, 3) == (x * 23 + 3 * 5) % 256 * 257);
+}
+
 TEST_CASE("height field images: the image's top row is at z = 1", "[images][height-field]") {
   // rgb8.png's rows are equal; g8.png's too: the flip shows in a 2 x 2 image of the tests'.
   auto map = readHeightMapFile(dataFile("flip.pgm"));

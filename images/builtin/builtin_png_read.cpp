@@ -1,0 +1,142 @@
+// Reading a PNG's stored values through libpng, for the readers that need no colour
+// management (height fields): grey of 1 to 16 bits, grey with alpha, RGB and RGBA of 8 or
+// 16 bits, interlaced or not. Bits below 8 are widened as libpng widens them (a 2-bit 3
+// becomes 255), which is what OpenImageIO's PNG reader gives too. Palette images are left
+// to the caller. libpng reports errors by longjmp, so the two functions that call it hold
+// no C++ object with a destructor: the header is read first, the buffer made by the
+// caller, and the pixels read in a second pass.
+#include "builtin_images.h"
+
+#include <png.h>
+
+#include <cerrno>
+#include <csetjmp>
+#include <cstdio>
+#include <cstring>
+
+namespace lucent {
+
+namespace {
+
+struct ReadSink {
+  char message[256];
+};
+
+[[noreturn]] void onReadError(png_structp png, png_const_charp message) {
+  auto* sink = static_cast<ReadSink*>(png_get_error_ptr(png));
+  std::snprintf(sink->message, sizeof sink->message, "%s", message ? message : "libpng error");
+  png_longjmp(png, 1);
+}
+
+void ignoreReadWarning(png_structp, png_const_charp) {}
+
+// libpng's own reader says only "Read Error"; this one says why.
+void readData(png_structp png, png_bytep data, size_t length) {
+  FILE* file = static_cast<FILE*>(png_get_io_ptr(png));
+  if (std::fread(data, 1, length, file) != length)
+    png_error(png,
+              std::feof(file) ? "the file ends before its image does" : "the file cannot be read");
+}
+
+// The transformations both passes set: stored values, 16 bits in the machine's order.
+void setTransforms(png_structp png, png_infop info) {
+  if (png_get_color_type(png, info) == PNG_COLOR_TYPE_GRAY && png_get_bit_depth(png, info) < 8)
+    png_set_expand_gray_1_2_4_to_8(png);
+  if (png_get_bit_depth(png, info) == 16) png_set_swap(png);
+}
+
+// Reads the header into `out` (values not yet). False with `sink` set on a damaged file.
+bool readHeader(FILE* file, PngPixels& out, ReadSink& sink) {
+  png_structp png =
+      png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, onReadError, ignoreReadWarning);
+  if (!png) return false;
+  png_infop info = png_create_info_struct(png);
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
+    return false;
+  }
+  png_set_read_fn(png, file, readData);
+  png_read_info(png, info);
+  out.width = static_cast<int>(png_get_image_width(png, info));
+  out.height = static_cast<int>(png_get_image_height(png, info));
+  out.palette = png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE;
+  out.storedDepth = png_get_bit_depth(png, info);
+  setTransforms(png, info);
+  png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  out.channels = png_get_channels(png, info);
+  out.sixteenBit = png_get_bit_depth(png, info) == 16;
+  png_destroy_read_struct(&png, &info, nullptr);
+  return true;
+}
+
+// Reads the values into `values` (rows of width x channels samples, each a byte or, for
+// 16 bits, two), every row and chunk up to IEND.
+bool readValues(FILE* file, const PngPixels& expect, unsigned char* values, ReadSink& sink) {
+  png_structp png =
+      png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, onReadError, ignoreReadWarning);
+  if (!png) return false;
+  png_infop info = png_create_info_struct(png);
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
+    return false;
+  }
+  png_set_read_fn(png, file, readData);
+  png_read_info(png, info);
+  setTransforms(png, info);
+  const int passes = png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  const size_t rowBytes =
+      static_cast<size_t>(expect.width) * expect.channels * (expect.sixteenBit ? 2 : 1);
+  if (png_get_rowbytes(png, info) != rowBytes) png_error(png, "the image changed while read");
+  for (int pass = 0; pass < passes; ++pass)
+    for (int y = 0; y < expect.height; ++y)
+      png_read_row(png, values + static_cast<size_t>(y) * rowBytes, nullptr);
+  png_read_end(png, nullptr);
+  png_destroy_read_struct(&png, &info, nullptr);
+  return true;
+}
+
+}  // namespace
+
+bool isPngFile(const std::string& path) {
+  FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) return false;
+  unsigned char b[8] = {};
+  const size_t n = std::fread(b, 1, sizeof b, file);
+  std::fclose(file);
+  return n == sizeof b && png_sig_cmp(b, 0, sizeof b) == 0;
+}
+
+std::string readPngHeader(const std::string& path, PngPixels& out) {
+  FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) return std::strerror(errno);
+  ReadSink sink{};
+  const bool ok = readHeader(file, out, sink);
+  std::fclose(file);
+  return ok ? std::string() : std::string("a damaged PNG: ") + sink.message;
+}
+
+std::string readPngValues(const std::string& path, PngPixels& pixels) {
+  const size_t samples = static_cast<size_t>(pixels.width) * pixels.height * pixels.channels;
+  std::vector<unsigned char> bytes(samples * (pixels.sixteenBit ? 2 : 1));
+  FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) return std::strerror(errno);
+  ReadSink sink{};
+  const bool ok = readValues(file, pixels, bytes.data(), sink);
+  std::fclose(file);
+  if (!ok) return std::string("a damaged PNG: ") + sink.message;
+  pixels.values.resize(samples);
+  for (size_t i = 0; i < samples; ++i) {
+    if (pixels.sixteenBit) {
+      std::uint16_t v;
+      std::memcpy(&v, &bytes[2 * i], 2);  // png_set_swap: the machine's order
+      pixels.values[i] = v;
+    } else {
+      pixels.values[i] = bytes[i];
+    }
+  }
+  return {};
+}
+
+}  // namespace lucent
