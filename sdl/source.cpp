@@ -14,6 +14,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <new>
+#include <type_traits>
 
 namespace lucent::sdl {
 
@@ -56,10 +58,12 @@ const RawToken& SourceFile::readUpTo(size_t index) {
 }
 
 RawToken& SourceFile::push() {
-  if ((count_ & (kChunk - 1)) == 0) chunks_.push_back(std::make_unique<RawToken[]>(kChunk));
-  RawToken& t = chunks_.back()[count_ & (kChunk - 1)];
+  static_assert(std::is_trivially_destructible_v<RawToken>, "chunks never destroy tokens");
+  if ((count_ & (kChunk - 1)) == 0)
+    chunks_.emplace_back(static_cast<RawToken*>(::operator new(sizeof(RawToken) * kChunk)));
+  RawToken* t = new (chunks_.back().get() + (count_ & (kChunk - 1))) RawToken;
   ++count_;
-  return t;
+  return *t;
 }
 
 void SourceFile::newLines(size_t from, size_t to) {

@@ -48,7 +48,7 @@ class SourceFile {
   // The raw token at `index`, reading more of the file as needed; past the end of the file,
   // an End token. Throws LexError. The reference stays valid as more tokens are read.
   const RawToken& at(size_t index) {
-    if (index < count_) return chunks_[index >> kChunkBits][index & (kChunk - 1)];
+    if (index < count_) return chunks_[index >> kChunkBits].get()[index & (kChunk - 1)];
     return readUpTo(index);
   }
 
@@ -74,7 +74,12 @@ class SourceFile {
   std::string name_;
   std::filesystem::path folder_;
   std::string text_;
-  std::vector<std::unique_ptr<RawToken[]>> chunks_;
+  // A chunk's memory is left untouched until its tokens are read (a small file touches only
+  // the pages its tokens need); RawToken has no destructor to run.
+  struct FreeChunk {
+    void operator()(RawToken* p) const { ::operator delete(p); }
+  };
+  std::vector<std::unique_ptr<RawToken, FreeChunk>> chunks_;
   size_t count_ = 0;
   std::deque<std::string> unescaped_;  // string literals that held \" (views point here)
   size_t pos_ = 0;
