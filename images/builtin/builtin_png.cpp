@@ -5,6 +5,7 @@
 // and, for both, an oFFs chunk of (0, 0) pixels and the tEXt "oiio:ColorSpace" naming the
 // colour space, which OpenImageIO reads back as that attribute.
 #include "builtin_parts.h"
+#include "png_errors.h"
 
 #include <png.h>
 
@@ -18,21 +19,6 @@ namespace lucent::builtin {
 
 namespace {
 
-// libpng reports an error through a callback that must not return: it longjmps back to
-// the setjmp of the function driving libpng (encode, decode). Those functions hold no C++
-// object with a destructor, so the jump skips nothing.
-struct ErrorSink {
-  char message[256];
-};
-
-[[noreturn]] void onError(png_structp png, png_const_charp message) {
-  auto* sink = static_cast<ErrorSink*>(png_get_error_ptr(png));
-  std::snprintf(sink->message, sizeof sink->message, "%s", message ? message : "libpng error");
-  png_longjmp(png, 1);
-}
-
-void ignoreWarning(png_structp, png_const_charp) {}
-
 int colorTypeFor(int channels) { return channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB; }
 
 int bitDepthFor(const ImageToWrite& image) { return image.type == StoredType::UInt16 ? 16 : 8; }
@@ -45,7 +31,8 @@ size_t rowBytes(const ImageToWrite& image) {
 constexpr bool kLittleEndian = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
 
 bool encode(FILE* file, const ImageToWrite& image, ErrorSink& sink) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, onError, ignoreWarning);
+  png_structp png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, onPngError, ignorePngWarning);
   if (!png) {
     std::snprintf(sink.message, sizeof sink.message, "libpng cannot start (out of memory)");
     return false;
@@ -90,7 +77,8 @@ bool encode(FILE* file, const ImageToWrite& image, ErrorSink& sink) {
 // Decodes every row into `row` (capacity bytes), then the chunks up to IEND.
 bool decode(FILE* file, const ImageToWrite& image, png_byte* row, size_t capacity) {
   ErrorSink sink;
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, onError, ignoreWarning);
+  png_structp png =
+      png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, onPngError, ignorePngWarning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
   if (!info) {

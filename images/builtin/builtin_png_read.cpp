@@ -4,8 +4,9 @@
 // becomes 255), which is what OpenImageIO's PNG reader gives too. Palette images are left
 // to the caller. libpng reports errors by longjmp, so the two functions that call it hold
 // no C++ object with a destructor: the header is read first, the buffer made by the
-// caller, and the pixels read in a second pass.
+// caller, and the pixels read in a second pass (png_errors.h).
 #include "builtin_images.h"
+#include "png_errors.h"
 
 #include <png.h>
 
@@ -18,17 +19,7 @@ namespace lucent {
 
 namespace {
 
-struct ReadSink {
-  char message[256];
-};
-
-[[noreturn]] void onReadError(png_structp png, png_const_charp message) {
-  auto* sink = static_cast<ReadSink*>(png_get_error_ptr(png));
-  std::snprintf(sink->message, sizeof sink->message, "%s", message ? message : "libpng error");
-  png_longjmp(png, 1);
-}
-
-void ignoreReadWarning(png_structp, png_const_charp) {}
+using builtin::ErrorSink;
 
 // libpng's own reader says only "Read Error"; this one says why.
 void readData(png_structp png, png_bytep data, size_t length) {
@@ -45,14 +36,25 @@ void setTransforms(png_structp png, png_infop info) {
   if (png_get_bit_depth(png, info) == 16) png_set_swap(png);
 }
 
-// Reads the header into `out` (values not yet). False with `sink` set on a damaged file.
-bool readHeader(FILE* file, PngPixels& out, ReadSink& sink) {
-  png_structp png =
-      png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, onReadError, ignoreReadWarning);
+// A read struct and its info reporting to `sink`; false (nothing to free) if libpng has no
+// memory for them.
+bool startReading(ErrorSink& sink, png_structp& png, png_infop& info) {
+  png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, builtin::onPngError,
+                               builtin::ignorePngWarning);
   if (!png) return false;
-  png_infop info = png_create_info_struct(png);
-  if (!info || setjmp(png_jmpbuf(png))) {
-    png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
+  info = png_create_info_struct(png);
+  if (info) return true;
+  png_destroy_read_struct(&png, nullptr, nullptr);
+  return false;
+}
+
+// Reads the header into `out` (values not yet). False with `sink` set on a damaged file.
+bool readHeader(FILE* file, PngPixels& out, ErrorSink& sink) {
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  if (!startReading(sink, png, info)) return false;
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
     return false;
   }
   png_set_read_fn(png, file, readData);
@@ -72,13 +74,12 @@ bool readHeader(FILE* file, PngPixels& out, ReadSink& sink) {
 
 // Reads the values into `values` (rows of width x channels samples, each a byte or, for
 // 16 bits, two), every row and chunk up to IEND.
-bool readValues(FILE* file, const PngPixels& expect, unsigned char* values, ReadSink& sink) {
-  png_structp png =
-      png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, onReadError, ignoreReadWarning);
-  if (!png) return false;
-  png_infop info = png_create_info_struct(png);
-  if (!info || setjmp(png_jmpbuf(png))) {
-    png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
+bool readValues(FILE* file, const PngPixels& expect, unsigned char* values, ErrorSink& sink) {
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  if (!startReading(sink, png, info)) return false;
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
     return false;
   }
   png_set_read_fn(png, file, readData);
@@ -111,7 +112,7 @@ bool isPngFile(const std::string& path) {
 std::string readPngHeader(const std::string& path, PngPixels& out) {
   FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) return std::strerror(errno);
-  ReadSink sink{};
+  ErrorSink sink{};
   const bool ok = readHeader(file, out, sink);
   std::fclose(file);
   return ok ? std::string() : std::string("a damaged PNG: ") + sink.message;
@@ -122,7 +123,7 @@ std::string readPngValues(const std::string& path, PngPixels& pixels) {
   std::vector<unsigned char> bytes(samples * (pixels.sixteenBit ? 2 : 1));
   FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) return std::strerror(errno);
-  ReadSink sink{};
+  ErrorSink sink{};
   const bool ok = readValues(file, pixels, bytes.data(), sink);
   std::fclose(file);
   if (!ok) return std::string("a damaged PNG: ") + sink.message;
