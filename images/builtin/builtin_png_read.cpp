@@ -2,9 +2,9 @@
 // management (height fields): grey of 1 to 16 bits, grey with alpha, RGB and RGBA of 8 or
 // 16 bits, interlaced or not. Bits below 8 are widened as libpng widens them (a 2-bit 3
 // becomes 255), which is what OpenImageIO's PNG reader gives too. Palette images are left
-// to the caller. libpng reports errors by longjmp, so the two functions that call it hold
-// no C++ object with a destructor: the header is read first, the buffer made by the
-// caller, and the pixels read in a second pass (png_errors.h).
+// to the caller. libpng reports errors by longjmp, so the function that drives it holds no
+// C++ object with a destructor: a first pass reads the header, the caller makes the
+// buffer, and a second pass reads the values (png_errors.h).
 #include "builtin_images.h"
 #include "png_errors.h"
 
@@ -48,8 +48,11 @@ bool startReading(ErrorSink& sink, png_structp& png, png_infop& info) {
   return false;
 }
 
-// Reads the header into `out` (values not yet). False with `sink` set on a damaged file.
-bool readHeader(FILE* file, PngPixels& out, ErrorSink& sink) {
+// One pass over the file. Without `values`: the header's facts into `pixels`. With them:
+// the values of the image `pixels` describes (rows of width x channels samples, a byte each
+// or, for 16 bits, two), every row and chunk up to IEND. False with `sink` set on a
+// damaged file.
+bool readPass(FILE* file, PngPixels& pixels, unsigned char* values, ErrorSink& sink) {
   png_structp png = nullptr;
   png_infop info = nullptr;
   if (!startReading(sink, png, info)) return false;
@@ -59,41 +62,27 @@ bool readHeader(FILE* file, PngPixels& out, ErrorSink& sink) {
   }
   png_set_read_fn(png, file, readData);
   png_read_info(png, info);
-  out.width = static_cast<int>(png_get_image_width(png, info));
-  out.height = static_cast<int>(png_get_image_height(png, info));
-  out.palette = png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE;
-  out.storedDepth = png_get_bit_depth(png, info);
-  setTransforms(png, info);
-  png_set_interlace_handling(png);
-  png_read_update_info(png, info);
-  out.channels = png_get_channels(png, info);
-  out.sixteenBit = png_get_bit_depth(png, info) == 16;
-  png_destroy_read_struct(&png, &info, nullptr);
-  return true;
-}
-
-// Reads the values into `values` (rows of width x channels samples, each a byte or, for
-// 16 bits, two), every row and chunk up to IEND.
-bool readValues(FILE* file, const PngPixels& expect, unsigned char* values, ErrorSink& sink) {
-  png_structp png = nullptr;
-  png_infop info = nullptr;
-  if (!startReading(sink, png, info)) return false;
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    return false;
+  if (!values) {
+    pixels.width = static_cast<int>(png_get_image_width(png, info));
+    pixels.height = static_cast<int>(png_get_image_height(png, info));
+    pixels.palette = png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE;
+    pixels.storedDepth = png_get_bit_depth(png, info);
   }
-  png_set_read_fn(png, file, readData);
-  png_read_info(png, info);
   setTransforms(png, info);
   const int passes = png_set_interlace_handling(png);
   png_read_update_info(png, info);
-  const size_t rowBytes =
-      static_cast<size_t>(expect.width) * expect.channels * (expect.sixteenBit ? 2 : 1);
-  if (png_get_rowbytes(png, info) != rowBytes) png_error(png, "the image changed while read");
-  for (int pass = 0; pass < passes; ++pass)
-    for (int y = 0; y < expect.height; ++y)
-      png_read_row(png, values + static_cast<size_t>(y) * rowBytes, nullptr);
-  png_read_end(png, nullptr);
+  if (!values) {
+    pixels.channels = png_get_channels(png, info);
+    pixels.sixteenBit = png_get_bit_depth(png, info) == 16;
+  } else {
+    const size_t rowBytes =
+        static_cast<size_t>(pixels.width) * pixels.channels * (pixels.sixteenBit ? 2 : 1);
+    if (png_get_rowbytes(png, info) != rowBytes) png_error(png, "the image changed while read");
+    for (int pass = 0; pass < passes; ++pass)
+      for (int y = 0; y < pixels.height; ++y)
+        png_read_row(png, values + static_cast<size_t>(y) * rowBytes, nullptr);
+    png_read_end(png, nullptr);
+  }
   png_destroy_read_struct(&png, &info, nullptr);
   return true;
 }
@@ -113,7 +102,7 @@ std::string readPngHeader(const std::string& path, PngPixels& out) {
   FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) return std::strerror(errno);
   ErrorSink sink{};
-  const bool ok = readHeader(file, out, sink);
+  const bool ok = readPass(file, out, nullptr, sink);
   std::fclose(file);
   return ok ? std::string() : std::string("a damaged PNG: ") + sink.message;
 }
@@ -124,7 +113,7 @@ std::string readPngValues(const std::string& path, PngPixels& pixels) {
   FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) return std::strerror(errno);
   ErrorSink sink{};
-  const bool ok = readValues(file, pixels, bytes.data(), sink);
+  const bool ok = readPass(file, pixels, bytes.data(), sink);
   std::fclose(file);
   if (!ok) return std::string("a damaged PNG: ") + sink.message;
   pixels.values.resize(samples);
