@@ -8,7 +8,7 @@ CylinderProjection::CylinderProjection(const CameraFrame& frame, const Camera& c
                                        int height)
     : Projection(frame, camera, width, height),
       type_(camera.cylinderType),
-      angle_(radians(camera.angle)),
+      angle_(radians(camera.sweep)),
       axisLength_(cylinderAxisLength(camera, width, height)) {}
 
 bool CylinderProjection::generateRay(const Vec2& film, const Vec2&, Ray& ray) const {

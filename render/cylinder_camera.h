@@ -1,7 +1,7 @@
 // The cylinder camera, POV-Ray 3.7's `cylinder 1` to `cylinder 4`. XML:
-//   <camera type="cylinder" cylinder-type="1" angle="90" axis-length="0"/>
+//   <camera type="cylinder" cylinder-type="1" sweep="90" axis-length="0"/>
 // With s from -1/2 (left edge) to 1/2 (right edge), t from -1/2 (bottom) to 1/2 (top),
-// a = angle in radians and L = cylinderAxisLength() (axis-length, or square pixels at the
+// a = sweep in radians and L = cylinderAxisLength() (axis-length, or square pixels at the
 // image centre):
 //   1: the axis along up through the position; x = s a: from the position along
 //      sin(x) right + t L up + cos(x) forward

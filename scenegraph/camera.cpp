@@ -154,7 +154,7 @@ void writeCylinder(const Camera& camera, PovCameraOut& out) {
   out.keywordArgument(std::to_string(camera.cylinderType));
   out.line(rightSign(camera) + "x" + (alongUp ? "" : "*" + length));
   out.line(alongUp ? "up y*" + length : "up y");
-  out.line("angle " + out.number(camera.angle));
+  out.line("angle " + out.number(camera.sweep));
 }
 
 // POV-Ray's panoramic uses right, up and direction as they are: direction keeps its
@@ -259,9 +259,9 @@ std::optional<CameraTypeInfo> row(CameraType t) {
     case CameraType::Cylinder:
       r.name = "cylinder";
       r.doc =
-          "POV-Ray's cylinder cameras 1-4 (cylinder-type): angle about the axis (up or "
+          "POV-Ray's cylinder cameras 1-4 (cylinder-type): sweep degrees about the axis (up or "
           "right), axis-length along it.";
-      r.noFov = "their 'angle' and 'axis-length' frame the image";
+      r.noFov = "their 'sweep' and 'axis-length' frame the image";
       r.pov = {"cylinder", "cylinder", writeCylinder, false};
       return r;
     case CameraType::Panoramic:
@@ -481,10 +481,10 @@ const std::vector<CameraAttribute>& cameraAttributes() {
       // Each type's range (CameraTypeInfo::fov); the schema's is the widest.
       schemaType(entry("fov", AttrType::Number, fmt::format("{}", Camera{}.fov), {}, readFov,
                        "Field of view in degrees along fov-axis. Pinhole and thin-lens: below "
-                       "180; fisheye, ultra-wide-angle: up to 360; cylinder: up to 360, about its "
-                       "axis; panini: below 360 and limited by distance. Not used by orthographic "
-                       "(width), octahedral, cubemap, fibonacci, spherical (h-angle, v-angle), "
-                       "panoramic, omnimax."),
+                       "180; fisheye, ultra-wide-angle: up to 360; panini: below 360 and "
+                       "limited by distance. Not used by orthographic (width), octahedral, "
+                       "cubemap, fibonacci, spherical (h-angle, v-angle), cylinder (sweep, "
+                       "axis-length), panoramic, omnimax."),
                  "fieldOfView"),
       [] {
         CameraAttribute a = choice("fov-axis", &Camera::fovAxis, kFovAxes, "fovAxis", {},
@@ -580,11 +580,11 @@ const std::vector<CameraAttribute>& cameraAttributes() {
                     static_cast<int>(in.integer("cylinder-type", c.cylinderType, 1, 4));
               },
               "cylinder: POV-Ray's cylinder camera type. 1: the axis along up through the "
-              "position, fov across the width; 2: the axis along right, fov down the height; "
+              "position, sweep across the width; 2: the axis along right, sweep down the height; "
               "3 and 4: as 1 and 2, with each ray starting on the axis level with its pixel "
               "(parallel along the axis). Default 1."),
           "cylinderCameraType"),
-      schemaType(number("angle", &Camera::angle, kFovTo360, {T::Cylinder},
+      schemaType(number("sweep", &Camera::sweep, kFovTo360, {T::Cylinder},
                         "cylinder: degrees about the axis across the image: across the width "
                         "for cylinder-type 1 and 3, down the height for 2 and 4; above 0, at "
                         "most 360. Default 90 (POV-Ray's)."),
@@ -640,7 +640,7 @@ void ultraWideAngles(const Camera& camera, int width, int height, double& across
 double cylinderAxisLength(const Camera& camera, int width, int height) {
   if (camera.axisLength > 0.0) return camera.axisLength;
   // The angle per pixel about the axis times the pixels along it (at distance 1).
-  const double angle = radians(camera.angle);
+  const double angle = radians(camera.sweep);
   const bool alongUp = camera.cylinderType == 1 || camera.cylinderType == 3;
   return alongUp ? angle * height / width : angle * width / height;
 }

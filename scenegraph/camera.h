@@ -95,7 +95,7 @@ struct Camera {
   // the axis: at distance 1 from it (1, 2) or in world units (3, 4); 0: square pixels at
   // the image centre.
   int cylinderType = 1;
-  double angle = 90.0;  // degrees about the axis
+  double sweep = 90.0;  // degrees about the axis
   double axisLength = 0.0;
   // panoramic: POV-Ray's |right| and |up| over |direction|.
   double rightLength = 1.0;

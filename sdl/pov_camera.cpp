@@ -381,12 +381,12 @@ CameraImport importCamera(const PovCamera& pov, int width, int height) {
     case PovCameraType::Cylinder: {
       camera.type = CameraType::Cylinder;
       camera.cylinderType = pov.cylinderType;
-      camera.angle = pov.angle.value_or(kDefaultAngle);
+      camera.sweep = pov.angle.value_or(kDefaultAngle);
       const bool alongUp = pov.cylinderType == 1 || pov.cylinderType == 3;
       camera.axisLength = glm::length(alongUp ? v.up : v.right);
-      if (!(camera.angle > 0.0 && camera.angle <= 360.0)) {
+      if (!(camera.sweep > 0.0 && camera.sweep <= 360.0)) {
         out.error = fmt::format(
-            "cylinder: angle {} is outside Lucent's range (above 0, at most 360)", camera.angle);
+            "cylinder: angle {} is outside Lucent's range (above 0, at most 360)", camera.sweep);
         return out;
       }
       placeFrame(v, camera, out.differences);
