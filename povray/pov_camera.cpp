@@ -35,6 +35,7 @@ class CameraLines final : public PovCameraOut {
   Color background() const override { return render_.background; }
   std::string number(double v) const override { return povNumber(v); }
   void line(std::string_view text) override { lines_.emplace_back(text); }
+  void keywordArgument(std::string_view text) override { argument_ = text; }
   void error(const std::string& message) override {
     issues_.error(camera_.loc, message);
     failed_ = true;
@@ -43,12 +44,14 @@ class CameraLines final : public PovCameraOut {
 
   bool failed() const { return failed_; }
   const std::vector<std::string>& lines() const { return lines_; }
+  const std::string& argument() const { return argument_; }
 
  private:
   const Camera& camera_;
   const RenderSettings& render_;
   PovIssues& issues_;
   std::vector<std::string> lines_;
+  std::string argument_;
   bool failed_ = false;
 };
 
@@ -114,7 +117,8 @@ void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& 
   type.pov.write(camera, lines);
   if (lines.failed()) return;
   out.open("camera");
-  out.line(type.pov.keyword);
+  out.line(std::string(type.pov.keyword) +
+           (lines.argument().empty() ? "" : " " + lines.argument()));
   for (const std::string& l : lines.lines()) out.line(l);
   out.line("location " + povVector(frame.location));
   out.line("sky " + povVector(type.pov.reversedSky ? -frame.sky : frame.sky));

@@ -1,14 +1,18 @@
 #include "projection.h"
 
 #include "cubemap.h"
+#include "cylinder_camera.h"
 #include "fibonacci.h"
 #include "fisheye.h"
 #include "lenslet.h"
 #include "octahedral.h"
+#include "omnimax.h"
 #include "orthographic.h"
 #include "panini.h"
+#include "panoramic.h"
 #include "pinhole.h"
 #include "thin_lens.h"
+#include "ultra_wide_angle.h"
 
 #include <fmt/core.h>
 
@@ -76,6 +80,14 @@ std::unique_ptr<Projection> makeProjection(const Camera& camera, int width, int 
       return std::make_unique<FibonacciProjection>(frame, camera, width, height);
     case CameraType::Spherical:
       return std::make_unique<SphericalProjection>(frame, camera, width, height);
+    case CameraType::UltraWideAngle:
+      return std::make_unique<UltraWideAngleProjection>(frame, camera, width, height);
+    case CameraType::Cylinder:
+      return std::make_unique<CylinderProjection>(frame, camera, width, height);
+    case CameraType::Panoramic:
+      return std::make_unique<PanoramicProjection>(frame, camera, width, height);
+    case CameraType::Omnimax:
+      return std::make_unique<OmnimaxProjection>(frame, camera, width, height);
   }
   throw std::logic_error(fmt::format("{}: camera type {} has no projection", camera.loc.str(),
                                      static_cast<int>(camera.type)));

@@ -136,12 +136,53 @@ void writeSpherical(const Camera& camera, PovCameraOut& out) {
   out.line("up y");
 }
 
+// POV-Ray's ultra_wide_angle: `angle` spans the width, and |up|/|right| scales it down the
+// height (its right, up and direction are normalised, so only that ratio counts).
+void writeUltraWideAngle(const Camera& camera, PovCameraOut& out) {
+  double across = 0.0, down = 0.0;
+  ultraWideAngles(camera, out.width(), out.height(), across, down);
+  out.line(rightSign(camera) + "x*" + out.number(across));
+  out.line("up y*" + out.number(down));
+  out.line("angle " + out.number(across));
+}
+
+// POV-Ray's `cylinder N`: `angle` is about the axis; the length of the vector along the
+// axis (up for 1 and 3, right for 2 and 4) is the image's extent along it.
+void writeCylinder(const Camera& camera, PovCameraOut& out) {
+  const std::string length = out.number(cylinderAxisLength(camera, out.width(), out.height()));
+  const bool alongUp = camera.cylinderType == 1 || camera.cylinderType == 3;
+  out.keywordArgument(std::to_string(camera.cylinderType));
+  out.line(rightSign(camera) + "x" + (alongUp ? "" : "*" + length));
+  out.line(alongUp ? "up y*" + length : "up y");
+  out.line("angle " + out.number(camera.sweep));
+}
+
+// POV-Ray's panoramic uses right, up and direction as they are: direction keeps its
+// default length 1 through look_at, right and up are written at their lengths.
+void writePanoramic(const Camera& camera, PovCameraOut& out) {
+  out.line(rightSign(camera) + "x*" + out.number(camera.rightLength));
+  out.line("up y*" + out.number(camera.upLength));
+}
+
+// POV-Ray's omnimax: |right|/|up| is the frame's aspect ratio.
+void writeOmnimax(const Camera& camera, PovCameraOut& out) {
+  if (maxComponent(out.background()) > 0.0f)
+    out.warning(
+        "omnimax camera: POV-Ray leaves the pixels outside the image circle black; Lucent "
+        "gives them the background");
+  out.line(rightSign(camera) + "x*" + aspectText(camera, out));
+  out.line("up y");
+}
+
 const NumberRule kFovBelow180 =
     NumberRule::between(0.0, 180.0, "an angle between 0 and 180", true, true);
 
 // The row of each type. The switch has no default, so a CameraType without its row does not
 // compile; past the last enumerator it gives nothing, which ends the table (cameraTypes()).
 // A row starts with no field of view, no checks and no POV-Ray twin.
+const NumberRule kFovTo360 =
+    NumberRule::between(0.0, 360.0, "an angle above 0 and at most 360", true);
+
 std::optional<CameraTypeInfo> row(CameraType t) {
   CameraTypeInfo r{t, "", "", std::nullopt, "", nullptr, {"", "", nullptr, false}};
   switch (t) {
@@ -206,6 +247,38 @@ std::optional<CameraTypeInfo> row(CameraType t) {
           "degrees of longitude across, v-angle of latitude down.";
       r.noFov = "their 'h-angle' and 'v-angle' frame the image";
       r.pov = {"spherical", "spherical", writeSpherical, true};
+      return r;
+    case CameraType::UltraWideAngle:
+      r.name = "ultra-wide-angle";
+      r.doc =
+          "POV-Ray's ultra_wide_angle: angles grow evenly across the image (fov along fov-axis, "
+          "in proportion to frame-aspect), up to 360.";
+      r.fov = kFovTo360;
+      r.pov = {"ultra_wide_angle", "ultra-wide-angle", writeUltraWideAngle, false};
+      return r;
+    case CameraType::Cylinder:
+      r.name = "cylinder";
+      r.doc =
+          "POV-Ray's cylinder cameras 1-4 (cylinder-type): sweep degrees about the axis (up or "
+          "right), axis-length along it.";
+      r.noFov = "their 'sweep' and 'axis-length' frame the image";
+      r.pov = {"cylinder", "cylinder", writeCylinder, false};
+      return r;
+    case CameraType::Panoramic:
+      r.name = "panoramic";
+      r.doc =
+          "POV-Ray's panoramic camera: 180 degrees across, tan(latitude) up (right-length, "
+          "up-length).";
+      r.noFov = "it shows 180 degrees across; 'right-length' and 'up-length' shape it";
+      r.pov = {"panoramic", "panoramic", writePanoramic, false};
+      return r;
+    case CameraType::Omnimax:
+      r.name = "omnimax";
+      r.doc =
+          "POV-Ray's omnimax camera: a fixed 180-degree dome lens, its circle on frame-aspect; "
+          "outside it: background.";
+      r.noFov = "its lens is fixed at about 180 degrees across its image circle";
+      r.pov = {"omnimax", "omnimax", writeOmnimax, false};
       return r;
   }
   return std::nullopt;
@@ -406,13 +479,13 @@ const std::vector<CameraAttribute>& cameraAttributes() {
       readByLanguage("transform", AttrType::Text, "transform", "",
                      "Transform applied to the camera after position/look-at/up. Default: none."),
       // Each type's range (CameraTypeInfo::fov); the schema's is the widest.
-      schemaType(
-          entry("fov", AttrType::Number, fmt::format("{}", Camera{}.fov), {}, readFov,
-                "Field of view in degrees along fov-axis. Pinhole and thin-lens: below "
-                "180; fisheye: up to 360; panini: below 360 and limited by distance. Not "
-                "used by orthographic (width), octahedral, cubemap, fibonacci, spherical (h-angle, "
-                "v-angle)."),
-          "fieldOfView"),
+      schemaType(entry("fov", AttrType::Number, fmt::format("{}", Camera{}.fov), {}, readFov,
+                       "Field of view in degrees along fov-axis. Pinhole and thin-lens: below "
+                       "180; fisheye, ultra-wide-angle: up to 360; panini: below 360 and "
+                       "limited by distance. Not used by orthographic (width), octahedral, "
+                       "cubemap, fibonacci, spherical (h-angle, v-angle), cylinder (sweep, "
+                       "axis-length), panoramic, omnimax."),
+                 "fieldOfView"),
       [] {
         CameraAttribute a = choice("fov-axis", &Camera::fovAxis, kFovAxes, "fovAxis", {},
                                    "Image axis the fov spans: horizontal | vertical | diagonal.");
@@ -430,10 +503,11 @@ const std::vector<CameraAttribute>& cameraAttributes() {
         return a;
       }(),
       number("frame-aspect", &Camera::frameAspect, NumberRule::nonNegative(),
-             {T::Pinhole, T::ThinLens, T::Orthographic},
-             "pinhole, thin-lens, orthographic: the width / height of what the image shows, "
-             "kept when the image size changes (POV-Ray's |right| / |up|; pixels are not "
-             "square when it differs from the image's). Default (or 0): the image's own."),
+             {T::Pinhole, T::ThinLens, T::Orthographic, T::UltraWideAngle, T::Omnimax},
+             "pinhole, thin-lens, orthographic, ultra-wide-angle, omnimax: the width / height "
+             "of what the image shows, kept when the image size changes (POV-Ray's |right| / "
+             "|up|; pixels are not square when it differs from the image's). Default (or 0): "
+             "the image's own."),
       entry(
           "mirror", AttrType::Boolean, "false", {},
           [](Camera& c, AttributeInput& in) { c.mirror = in.boolean("mirror", c.mirror); },
@@ -498,6 +572,33 @@ const std::vector<CameraAttribute>& cameraAttributes() {
         };
         return a;
       }(),
+      schemaType(
+          entry(
+              "cylinder-type", AttrType::Number, "", {T::Cylinder},
+              [](Camera& c, AttributeInput& in) {
+                c.cylinderType =
+                    static_cast<int>(in.integer("cylinder-type", c.cylinderType, 1, 4));
+              },
+              "cylinder: POV-Ray's cylinder camera type. 1: the axis along up through the "
+              "position, sweep across the width; 2: the axis along right, sweep down the height; "
+              "3 and 4: as 1 and 2, with each ray starting on the axis level with its pixel "
+              "(parallel along the axis). Default 1."),
+          "cylinderCameraType"),
+      schemaType(number("sweep", &Camera::sweep, kFovTo360, {T::Cylinder},
+                        "cylinder: degrees about the axis across the image: across the width "
+                        "for cylinder-type 1 and 3, down the height for 2 and 4; above 0, at "
+                        "most 360. Default 90 (POV-Ray's)."),
+                 "fieldOfView"),
+      number("axis-length", &Camera::axisLength, NumberRule::nonNegative(), {T::Cylinder},
+             "cylinder: the image's extent along the axis, at distance 1 from it (types 1 "
+             "and 2) or in world units (3 and 4); POV-Ray's |up| (1, 3) or |right| (2, 4). "
+             "Default (or 0): square pixels at the image centre."),
+      number("right-length", &Camera::rightLength, NumberRule::positive(), {T::Panoramic},
+             "panoramic: POV-Ray's |right| / |direction|: the ray at longitude lon (180 at "
+             "the left edge, 0 at the right) and latitude lat goes along cos(lon) "
+             "right-length right + tan(lat) up-length up + sin(lon) forward. Default 1."),
+      number("up-length", &Camera::upLength, NumberRule::positive(), {T::Panoramic},
+             "panoramic: POV-Ray's |up| / |direction| (see right-length). Default 1."),
   };
   return table;
 }
@@ -513,6 +614,35 @@ void checkCamera(const Camera& cam, AttributeInput& in) {
         "position)");
   }
   if (const auto& check = cameraTypeInfo(cam.type).check) check(cam, in);
+}
+
+void ultraWideAngles(const Camera& camera, int width, int height, double& across, double& down) {
+  double w = 0.0, h = 0.0;
+  frameProportions(camera, width, height, w, h);
+  // The angles make a flat map, w x h in proportion; fov spans its width, height or
+  // diagonal.
+  switch (camera.fovAxis) {
+    case FovAxis::Horizontal:
+      across = camera.fov;
+      down = camera.fov * h / w;
+      break;
+    case FovAxis::Vertical:
+      down = camera.fov;
+      across = camera.fov * w / h;
+      break;
+    case FovAxis::Diagonal:
+      across = camera.fov * w / std::hypot(w, h);
+      down = camera.fov * h / std::hypot(w, h);
+      break;
+  }
+}
+
+double cylinderAxisLength(const Camera& camera, int width, int height) {
+  if (camera.axisLength > 0.0) return camera.axisLength;
+  // The angle per pixel about the axis times the pixels along it (at distance 1).
+  const double angle = radians(camera.sweep);
+  const bool alongUp = camera.cylinderType == 1 || camera.cylinderType == 3;
+  return alongUp ? angle * height / width : angle * width / height;
 }
 
 double horizontalFovDegrees(const Camera& camera, int width, int height) {

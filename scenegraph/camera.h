@@ -29,7 +29,11 @@ enum class CameraType {
   Octahedral,
   Cubemap,
   Fibonacci,
-  Spherical
+  Spherical,
+  UltraWideAngle,
+  Cylinder,
+  Panoramic,
+  Omnimax
 };
 enum class FovAxis { Horizontal, Vertical, Diagonal };
 enum class FisheyeMapping { Equidistant, Equisolid };
@@ -86,6 +90,16 @@ struct Camera {
   // makes vAngle hAngle / 2 unless it is given, as POV-Ray's `angle H` does)
   double hAngle = 360.0;
   double vAngle = 180.0;
+  // cylinder: POV-Ray's types 1 to 4 (1, 3: the axis along up; 2, 4: along right; 3, 4:
+  // the rays start along the axis instead of at the position), and the image's extent along
+  // the axis: at distance 1 from it (1, 2) or in world units (3, 4); 0: square pixels at
+  // the image centre.
+  int cylinderType = 1;
+  double sweep = 90.0;  // degrees about the axis
+  double axisLength = 0.0;
+  // panoramic: POV-Ray's |right| and |up| over |direction|.
+  double rightLength = 1.0;
+  double upLength = 1.0;
 };
 
 // The exporter's side of writing one camera's POV-Ray block (povray/pov_camera.cpp
@@ -100,6 +114,8 @@ class PovCameraOut {
   virtual std::string number(double v) const = 0;
   // One line of the block, after the type's keyword and before the frame.
   virtual void line(std::string_view text) = 0;
+  // What follows the keyword on its line (a cylinder camera's type number).
+  virtual void keywordArgument(std::string_view text) = 0;
   // An export error at the camera (then no block is written) or a warning.
   virtual void error(const std::string& message) = 0;
   virtual void warning(const std::string& message) = 0;
@@ -164,6 +180,15 @@ inline void frameProportions(const Camera& camera, int width, int height, double
     h = height;
   }
 }
+
+// An ultra-wide-angle camera's angles (degrees) across the width and down the height of a
+// width x height image: fov along fov-axis (the diagonal: of the two angles' flat map), in
+// proportion to the frame.
+void ultraWideAngles(const Camera& camera, int width, int height, double& across, double& down);
+
+// A cylinder camera's extent along its axis on a width x height image: axis-length, or
+// where that is 0, the length that makes the pixels square at the image centre.
+double cylinderAxisLength(const Camera& camera, int width, int height);
 
 // The full horizontal field of view (degrees) of a pinhole camera on a width x height
 // image, whatever its fov-axis (POV-Ray's `angle` spans the `right` vector).

@@ -9,8 +9,8 @@ namespace lucent::sdl {
 
 namespace {
 
-// POV-Ray's own camera angle when none is written (its camera's constructor), which only
-// the fisheye uses without an `angle`.
+// POV-Ray's own camera angle when none is written (its camera's constructor), which the
+// fisheye, ultra_wide_angle and cylinder cameras use without an `angle`.
 constexpr double kDefaultAngle = 90.0;
 
 double degreesOf(double radiansValue) { return radiansValue * 180.0 / kPi; }
@@ -101,11 +101,70 @@ bool povPrimaryRay(const PovCamera& c, const PovCameraVectors& v, int i, int j, 
       direction = glm::normalize(turn(turn(glm::normalize(v.direction), v.right, -lat), v.up, lon));
       return true;
     }
-    case PovCameraType::UltraWideAngle:
-    case PovCameraType::Omnimax:
-    case PovCameraType::Panoramic:
-    case PovCameraType::Cylinder:
-      break;
+    case PovCameraType::UltraWideAngle: {
+      // Unit vectors; |up|/|right| scales the angle down the height.
+      const double a = radians(c.angle.value_or(kDefaultAngle));
+      const double x0 = (x / width - 0.5) * a;
+      const double y0 = (0.5 - y / height) * a * glm::length(v.up) / glm::length(v.right);
+      direction = glm::normalize(std::sin(x0) * glm::normalize(v.right) +
+                                 std::sin(y0) * glm::normalize(v.up) +
+                                 std::cos(x0) * std::cos(y0) * glm::normalize(v.direction));
+      return true;
+    }
+    case PovCameraType::Omnimax: {
+      const double aspect = glm::length(v.right) / glm::length(v.up);
+      double x0 = 2.0 * x / width - 1.0, y0 = 1.0 - 2.0 * y / height;
+      if (aspect > 1.283458) {
+        x0 *= aspect / 1.283458;
+        y0 = (y0 - 1.0) / 1.283458 + 1.0;
+      } else if (aspect > 1.0) {
+        y0 = (y0 - 1.0) / aspect + 1.0;
+      } else {
+        y0 /= aspect;
+      }
+      const double rad = std::sqrt(x0 * x0 + y0 * y0);
+      if (rad > 1.0) return false;
+      const double phi = rad == 0.0 ? 0.0 : std::atan2(y0, x0);
+      const double theta = 1.411269 * rad - 0.09439 * std::pow(rad, 3) + 0.25674 * std::pow(rad, 5);
+      if (std::sin(phi) * std::sin(theta) < std::tan(radians(135.0)) * std::cos(theta))
+        return false;
+      direction = glm::normalize(std::cos(phi) * std::sin(theta) * glm::normalize(v.right) +
+                                 std::sin(phi) * std::sin(theta) * glm::normalize(v.up) +
+                                 std::cos(theta) * glm::normalize(v.direction));
+      return true;
+    }
+    case PovCameraType::Panoramic: {
+      // The vectors as they are (not normalised).
+      const double lon = (1.0 - x / width) * kPi, lat = (0.5 - y / height) * kPi;
+      direction = glm::normalize(std::cos(lon) * v.right + std::tan(lat) * v.up +
+                                 std::sin(lon) * v.direction);
+      return true;
+    }
+    case PovCameraType::Cylinder: {
+      const double a = radians(c.angle.value_or(kDefaultAngle));
+      const double x0 = x / width - 0.5, y0 = 0.5 - y / height;
+      const Vec3 r = glm::normalize(v.right), u = glm::normalize(v.up),
+                 d = glm::normalize(v.direction);
+      const double upLength = glm::length(v.up), rightLength = glm::length(v.right);
+      switch (c.cylinderType) {
+        case 1:
+          direction = std::sin(x0 * a) * r + y0 * upLength * u + std::cos(x0 * a) * d;
+          break;
+        case 2:
+          direction = x0 * rightLength * r + std::sin(y0 * a) * u + std::cos(y0 * a) * d;
+          break;
+        case 3:
+          direction = std::sin(x0 * a) * r + std::cos(x0 * a) * d;
+          origin += y0 * upLength * u;
+          break;
+        default:
+          direction = std::sin(y0 * a) * u + std::cos(y0 * a) * d;
+          origin += x0 * rightLength * r;
+          break;
+      }
+      direction = glm::normalize(direction);
+      return true;
+    }
   }
   return false;
 }
@@ -303,16 +362,50 @@ CameraImport importCamera(const PovCamera& pov, int width, int height) {
       camera.vAngle = pov.verticalAngle.value_or(camera.hAngle * 0.5);
       placeFrame(v, camera, out.differences);
       return out;
-    case PovCameraType::UltraWideAngle:
-    case PovCameraType::Omnimax:
+    case PovCameraType::UltraWideAngle: {
+      // The angle spans the width; |up|/|right| scales it down the height: Lucent's fov
+      // and frame-aspect.
+      camera.type = CameraType::UltraWideAngle;
+      camera.fovAxis = FovAxis::Horizontal;
+      camera.fov = pov.angle.value_or(kDefaultAngle);
+      camera.frameAspect = glm::length(v.right) / glm::length(v.up);
+      if (!(camera.fov > 0.0 && camera.fov <= 360.0)) {
+        out.error = fmt::format(
+            "ultra_wide_angle: angle {} is outside Lucent's range (above 0, at most 360)",
+            camera.fov);
+        return out;
+      }
+      placeFrame(v, camera, out.differences);
+      return out;
+    }
+    case PovCameraType::Cylinder: {
+      camera.type = CameraType::Cylinder;
+      camera.cylinderType = pov.cylinderType;
+      camera.sweep = pov.angle.value_or(kDefaultAngle);
+      const bool alongUp = pov.cylinderType == 1 || pov.cylinderType == 3;
+      camera.axisLength = glm::length(alongUp ? v.up : v.right);
+      if (!(camera.sweep > 0.0 && camera.sweep <= 360.0)) {
+        out.error = fmt::format(
+            "cylinder: angle {} is outside Lucent's range (above 0, at most 360)", camera.sweep);
+        return out;
+      }
+      placeFrame(v, camera, out.differences);
+      return out;
+    }
     case PovCameraType::Panoramic:
-    case PovCameraType::Cylinder:
-      break;
+      // POV-Ray uses the three vectors at their lengths; only their ratios count.
+      camera.type = CameraType::Panoramic;
+      camera.rightLength = glm::length(v.right) / glm::length(v.direction);
+      camera.upLength = glm::length(v.up) / glm::length(v.direction);
+      placeFrame(v, camera, out.differences);
+      return out;
+    case PovCameraType::Omnimax:
+      camera.type = CameraType::Omnimax;
+      camera.frameAspect = glm::length(v.right) / glm::length(v.up);
+      placeFrame(v, camera, out.differences);
+      return out;
   }
-  out.error = fmt::format(
-      "'{}' is not supported by Lucent (its cameras: perspective, orthographic, fisheye and "
-      "spherical)",
-      povTypeName(pov.type));
+  out.error = fmt::format("'{}' is not supported by Lucent", povTypeName(pov.type));
   return out;
 }
 

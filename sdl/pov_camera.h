@@ -61,7 +61,7 @@ struct PovCameraVectors {
 PovCameraVectors povCameraVectors(const PovCamera& camera);
 
 // POV-Ray's primary ray through the centre of pixel (column i, row j from the top) of a
-// width x height image, in POV-Ray's space, for the types Lucent has. False where POV-Ray
+// width x height image, in POV-Ray's space. False where POV-Ray
 // traces no ray (outside a fisheye's circle).
 bool povPrimaryRay(const PovCamera& camera, const PovCameraVectors& v, int i, int j, int width,
                    int height, Vec3& origin, Vec3& direction);

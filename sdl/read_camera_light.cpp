@@ -2,6 +2,8 @@
 #include "read_support.h"
 #include "scene_reader.h"
 
+#include <fmt/format.h>
+
 namespace lucent::sdl {
 
 namespace {
@@ -57,7 +59,13 @@ PovCamera SceneReader::readCamera(TokenStream& in) {
     else if (w == "spherical") c.type = PovCameraType::Spherical;
     else if (w == "cylinder") {
       c.type = PovCameraType::Cylinder;
-      c.cylinderType = static_cast<int>(in.parseFloat());
+      const Token number = in.peek();
+      const double type = in.parseFloat();
+      // POV-Ray truncates the number and knows types 1 to 4.
+      if (!(type >= 1.0 && type < 5.0))
+        in.error(number,
+                 fmt::format("invalid cylinder camera type {}: the types are 1 to 4", type));
+      c.cylinderType = static_cast<int>(type);
     } else if (w == "location") {
       c.location = toVec3(in.parseVector());
     } else if (w == "direction") {

@@ -131,7 +131,7 @@ TEST_CASE("lang: the contract's example scene parses into its graph", "[lang][va
 TEST_CASE("lang: every camera type keeps its own attributes and the common defaults",
           "[lang][valid]") {
   auto s = load("cameras.xml");
-  REQUIRE(s->cameras.size() == 11);
+  REQUIRE(s->cameras.size() == 15);
   const Camera& main = *s->findCamera("main");
   CHECK(main.type == CameraType::Pinhole);
   CHECK(main.fov == 50.0);
@@ -181,6 +181,20 @@ TEST_CASE("lang: every camera type keeps its own attributes and the common defau
   const Camera& band = *s->findCamera("band");
   CHECK(band.hAngle == 360.0);
   CHECK(band.vAngle == 60.0);
+  const Camera& uwa = *s->findCamera("uwa");
+  CHECK(uwa.type == CameraType::UltraWideAngle);
+  CHECK(uwa.fov == 220.0);
+  CHECK(uwa.frameAspect == 1.5);
+  const Camera& cyl = *s->findCamera("cyl");
+  CHECK(cyl.type == CameraType::Cylinder);
+  CHECK(cyl.cylinderType == 3);
+  CHECK(cyl.sweep == 200.0);
+  CHECK(cyl.axisLength == 4.0);
+  const Camera& gg3 = *s->findCamera("gg3");
+  CHECK(gg3.type == CameraType::Panoramic);
+  CHECK(gg3.rightLength == 1.33);
+  CHECK(gg3.upLength == 0.75);
+  CHECK(s->findCamera("dome")->type == CameraType::Omnimax);
   CHECK(s->findCamera("") == &s->cameras[0]);
 }
 

@@ -173,13 +173,82 @@ TEST_CASE("fisheye and spherical cameras trace POV-Ray's rays", "[sdl][camera]")
   requirePovRays(sphere, 160, 80);
 }
 
-TEST_CASE("a camera type Lucent lacks is refused by name", "[sdl][camera]") {
+// Where POV-Ray traces no ray (outside the omnimax's circle), Lucent has none either.
+static void requireSameCoverage(const sdl::PovCamera& pov, int width, int height) {
+  const CameraImport imported = importCamera(pov, width, height);
+  REQUIRE(imported.error.empty());
+  const PovCameraVectors v = povCameraVectors(pov);
+  const auto projection = makeProjection(imported.camera, width, height);
+  int without = 0;
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      Vec3 origin, direction;
+      Ray ray;
+      const bool povHasRay = povPrimaryRay(pov, v, i, j, width, height, origin, direction);
+      CHECK(projection->generateRay(Vec2(i + 0.5, j + 0.5), Vec2(0.5), ray) == povHasRay);
+      without += povHasRay ? 0 : 1;
+    }
+  CHECK(without > 0);
+}
+
+TEST_CASE("ultra_wide_angle, cylinder 1-4, panoramic and omnimax import with POV-Ray's rays",
+          "[sdl][camera]") {
+  // The sample scenes' form: right x*image_width/image_height, look_at, POV-Ray's default
+  // angle 90 where none is written; then right -x, a scaled transform and odd lengths.
+  for (const PovCameraType type : {PovCameraType::UltraWideAngle, PovCameraType::Cylinder,
+                                   PovCameraType::Panoramic, PovCameraType::Omnimax})
+    for (int cylinder = 1; cylinder <= (type == PovCameraType::Cylinder ? 4 : 1); ++cylinder) {
+      INFO("type " << static_cast<int>(type) << " cylinder " << cylinder);
+      sdl::PovCamera pov;
+      pov.type = type;
+      pov.cylinderType = cylinder;
+      pov.location = Vec3(5.0, 3.0, 8.0);
+      pov.lookAt = Vec3(0.0, 4.0, 2.0);
+      pov.right = Vec3(320.0 / 240.0, 0.0, 0.0);
+      pov.rightGiven = true;
+      requirePovRays(pov, 320, 240);
+      CHECK(importCamera(pov, 320, 240).differences.empty());
+      pov.angle = 220.0;
+      requirePovRays(pov, 320, 240);
+      requirePovRays(pov, 100, 300);
+
+      pov.right = Vec3(-2.5, 0.0, 0.0);
+      pov.up = Vec3(0.0, 0.7, 0.0);
+      pov.direction = Vec3(0.0, 0.0, 1.6);
+      pov.sky = Vec3(0.2, 1.0, -0.1);
+      pov.transform =
+          PovTransform::scaling(Vec3(1.5)).then(PovTransform::rotation(Vec3(10.0, 30.0, 0.0)));
+      const CameraImport imported = importCamera(pov, 200, 100);
+      REQUIRE(imported.error.empty());
+      CHECK(imported.camera.mirror);
+      CHECK(imported.differences.empty());
+      requirePovRays(pov, 200, 100);
+    }
+}
+
+TEST_CASE("omnimax: POV-Ray's pixels without a ray are Lucent's, for narrow and wide frames",
+          "[sdl][camera]") {
   sdl::PovCamera pov;
-  pov.type = PovCameraType::Panoramic;
-  const CameraImport imported = importCamera(pov, 160, 120);
-  CHECK(imported.error ==
-        "'panoramic' is not supported by Lucent (its cameras: perspective, orthographic, "
-        "fisheye and spherical)");
+  pov.type = PovCameraType::Omnimax;
+  // |right|/|up| below 1, between 1 and 1.283458, and above.
+  for (const double right : {0.8, 1.0, 1.2, 1.33, 2.0}) {
+    INFO("right " << right);
+    pov.right = Vec3(right, 0.0, 0.0);
+    requireSameCoverage(pov, 64, 48);
+    requirePovRays(pov, 64, 48);
+  }
+}
+
+TEST_CASE("POV-Ray's cylinder camera types are 1 to 4, its angle below 360 in Lucent",
+          "[sdl][camera]") {
+  sdl::PovCamera pov;
+  pov.type = PovCameraType::Cylinder;
+  pov.angle = 400.0;
+  CHECK(importCamera(pov, 160, 120).error ==
+        "cylinder: angle 400 is outside Lucent's range (above 0, at most 360)");
+  pov.type = PovCameraType::UltraWideAngle;
+  CHECK(importCamera(pov, 160, 120).error ==
+        "ultra_wide_angle: angle 400 is outside Lucent's range (above 0, at most 360)");
 }
 
 TEST_CASE("direction, up and right that are not perpendicular skew the image as POV-Ray's do",

@@ -474,3 +474,24 @@ light_source { <0, 10, 0> rgb 1 }
   CHECK_FALSE(s.lights[1].mediaAttenuation);
   CHECK_FALSE(s.lights[2].mediaAttenuation);
 }
+
+TEST_CASE("scene reader: POV-Ray's cylinder camera types 1 to 4, and others refused at the number",
+          "[sdl][scene][errors]") {
+  auto r = readScene(
+      "camera { cylinder 3.7 angle 120 location <0, 1, -4> look_at <0, 1, 0> }\n"
+      "sphere { 0, 1 }\n");
+  REQUIRE(r->load.scene);
+  REQUIRE(r->load.scene->cameras.size() == 1);
+  const Camera& c = r->load.scene->cameras[0];
+  CHECK(c.type == CameraType::Cylinder);
+  CHECK(c.cylinderType == 3);  // POV-Ray truncates the number
+  CHECK(c.sweep == 120.0);
+  CHECK(c.axisLength == 1.0);  // |up|
+
+  for (const char* bad : {"0", "5", "-1", "0.5"}) {
+    const auto errors = errorsOf(std::string("camera {\n  cylinder ") + bad + " }\n");
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0] == std::string("test.pov:2:12: error: invalid cylinder camera type ") + bad +
+                           ": the types are 1 to 4");
+  }
+}
