@@ -1,5 +1,7 @@
 #include "scene_reader.h"
 
+#include "pov_bounds.h"
+
 #include "read_support.h"
 
 #include "scenegraph/light_placement.h"
@@ -24,7 +26,6 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"caustics", "faked caustics"},
       {"dispersion", "dispersion"},
       {"interior_texture", "a texture for the inside of a surface"},
-      {"clipped_by", "clipping; the nearest Lucent feature is <intersection>"},
       {"projected_through", "lights projected through objects"},
       {"no_image", "objects hidden from the camera"},
       {"no_reflection", "objects hidden from reflections"},
@@ -427,7 +428,53 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   here.textureFromParent = textureFromNode;
   for (const PovObject& c : o.children)
     if (auto child = toNode(c, here, false, in)) n->children.push_back(std::move(child));
+  for (const PovObject& c : o.clip)
+    if (auto child = toNode(c, here, false, in)) n->clip.push_back(std::move(child));
+  if (keepsBound(o, topLevel)) {
+    for (const PovObject& c : o.bound)
+      if (auto child = toNode(c, here, false, in)) n->bound.push_back(std::move(child));
+  } else if (topLevel && !o.bound.empty() && !o.boundIsClip) {
+    addBoxCut(o, here, *n, in);
+  }
   return n;
+}
+
+// A top-level object whose bounds POV-Ray drops keeps their box as its own when that is
+// smaller than its own box (by volume): rays that miss it miss the object. Only a box
+// that does not hold the object's changes the image, and only such a one is kept, as a
+// <bound> box in the node's frame.
+void SceneReader::addBoxCut(const PovObject& o, const Inherited& here, Node& n, TokenStream& in) {
+  AABB cut = AABB::everything();
+  for (const PovObject& c : o.bound) {
+    if (c.inverse) continue;  // POV-Ray leaves an inverse bound out of the box
+    if (auto b = toNode(c, here, false, in)) cut = AABB::meet(cut, nodeBox(*b, n.parentFromNode));
+  }
+  const AABB own = nodeBox(n, Mat4(1.0));
+  if (!cut.isBounded() || !(boxVolume(cut) < boxVolume(own))) return;
+  if (!own.empty() && glm::all(glm::lessThanEqual(cut.lo, own.lo)) &&
+      glm::all(glm::greaterThanEqual(cut.hi, own.hi)))
+    return;
+  auto box = std::make_unique<Node>();
+  box->kind = NodeKind::Shape;
+  box->element = "box";
+  box->loc = o.bound.front().loc;
+  box->shape = BoxSpec{cut.lo, cut.hi};
+  box->parentFromNode = glm::inverse(n.parentFromNode);
+  n.bound.push_back(std::move(box));
+}
+
+// Whether POV-Ray tests the rays against an object's bounded_by (Ray_In_Bound): always in
+// CSG; at the top level it drops the bounds of the shapes cheap to intersect, keeping
+// those of CSG, poly (cubic, quartic), text and a quadric (unless a clip gave the quadric
+// its own box). Bounds linked with the clip (clipped_by { bounded_by } and the reverse)
+// change nothing the clip does not: every point the clip keeps lies in them.
+bool SceneReader::keepsBound(const PovObject& o, bool topLevel) {
+  if (o.bound.empty() || o.boundIsClip) return false;
+  if (!topLevel || o.kind != NodeKind::Shape) return true;
+  if (!o.shape) return false;
+  if (std::holds_alternative<PolySpec>(*o.shape) || std::holds_alternative<TextSpec>(*o.shape))
+    return true;
+  return o.keyword == "quadric" && o.clip.empty();
 }
 
 void SceneReader::finishScene(TokenStream& in) {
