@@ -77,14 +77,20 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
     return;
   }
   if (!node.clip.empty() && (node.kind == NodeKind::Group || node.kind == NodeKind::Use)) {
-    // Several objects clipped as one: POV-Ray's union of them with the clip.
+    // Several objects clipped as one: POV-Ray's union of them with the clip (inverted as
+    // one when asked, its clip not: as Lucent inverts before it clips).
+    const bool inv = takeInverse() != node.inverse;
+    const bool outerShadowless = shadowless_;
+    if (!ignoreOwnShadows_ && !node.shadows) shadowless_ = true;
     out.open("union", "<" + node.element + "> " + node.loc.str() + " (clipped)");
     if (node.kind == NodeKind::Group)
       for (const auto& c : node.children) writeNode(*c, Mat4(1.0), material, false, out);
     else if (node.target) writeNode(*node.target, Mat4(1.0), material, false, out);
     writeSolids("clipped_by", node.clip, Mat4(1.0), material, out);
     if (!isIdentity(m)) out.line(povMatrix(m));
+    if (inv) out.line("inverse");
     out.close();
+    shadowless_ = outerShadowless;
     return;
   }
   // The flags of the enclosing writes, restored on return.

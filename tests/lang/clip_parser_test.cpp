@@ -103,6 +103,33 @@ TEST_CASE("clip: export-pov writes clipped_by before the object's matrix, bounde
   CHECK(has(e.text, "bounded_by {"));
 }
 
+TEST_CASE("clip: export-pov clips a group as a union of its objects, inverted before the clip",
+          "[lang][clip][povray]") {
+  auto scene = parseClean(R"XML(
+    <group inverse="true" shadows="false" transform="translate(0 1 0)">
+      <sphere radius="1"/>
+      <sphere radius="1" center="3 0 0"/>
+      <clip><plane normal="0 1 0" offset="0"/></clip>
+    </group>)XML",
+                          "clip.xml");
+  PovExport e = exportPov(*scene);
+  INFO(e.text);
+  REQUIRE(e.ok());
+  const size_t start = e.text.find("union {  // <group> clip.xml:2:5 (clipped)");
+  REQUIRE(start != std::string::npos);
+  const std::string block = e.text.substr(start);
+  const size_t clip = block.find("clipped_by {");
+  const size_t matrix = block.find("matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  0, 1, 0>");
+  const size_t inverse = block.find("\n  inverse\n");
+  REQUIRE(clip != std::string::npos);
+  REQUIRE(matrix != std::string::npos);
+  REQUIRE(inverse != std::string::npos);
+  CHECK(clip < matrix);
+  CHECK(matrix < inverse);
+  // The spheres keep the group's shadows="false".
+  CHECK(block.find("no_shadow") < clip);
+}
+
 TEST_CASE("clip: bad <clip> and <bound> contents are errors at their place", "[lang][clip]") {
   ParseResult r = parseBody(R"XML(
 <sphere radius="1"><clip/></sphere>
