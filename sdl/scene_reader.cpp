@@ -311,6 +311,7 @@ void SceneReader::place(const PovObject& object, TokenStream& in) {
   Inherited top;
   top.texture = &tex;
   top.interior = &interior;
+  top.framed = true;
   std::unique_ptr<Node> node = toNode(object, top, true, in);
   if (!node) return;  // left out (--skip-unsupported)
   if (node->kind == NodeKind::Light) scene_.lightRoot->children.push_back(std::move(node));
@@ -426,23 +427,26 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     here.materialTextureFromNode = textureFromNode;
   }
   here.textureFromParent = textureFromNode;
+  here.framed = inherited.framed && o.kind == NodeKind::Union && o.clip.empty() && o.bound.empty();
+  here.movedAfter = inherited.movedAfter || !o.transform.isIdentity();
   for (const PovObject& c : o.children)
     if (auto child = toNode(c, here, false, in)) n->children.push_back(std::move(child));
   for (const PovObject& c : o.clip)
     if (auto child = toNode(c, here, false, in)) n->clip.push_back(std::move(child));
-  if (keepsBound(o, topLevel)) {
+  if (keepsBound(o, inherited.framed)) {
     for (const PovObject& c : o.bound)
       if (auto child = toNode(c, here, false, in)) n->bound.push_back(std::move(child));
-  } else if (topLevel && !o.bound.empty() && !o.boundIsClip) {
+  } else if (inherited.framed && !inherited.movedAfter && !o.bound.empty() && !o.boundIsClip) {
     addBoxCut(o, here, *n, in);
   }
   return n;
 }
 
-// A top-level object whose bounds POV-Ray drops keeps their box as its own when that is
-// smaller than its own box (by volume): rays that miss it miss the object. Only a box
-// that does not hold the object's changes the image, and only such a one is kept, as a
-// <bound> box in the node's frame.
+// An object linked to the frame whose bounds POV-Ray drops keeps their box as its own when
+// that is smaller than its own box (by volume), unless an enclosing object moves it later
+// (POV-Ray then computes its box from its shape again): rays that miss the box miss the
+// object. Only a box that does not hold the object's changes the image, and only such a
+// one is kept, as a <bound> box in the node's frame.
 void SceneReader::addBoxCut(const PovObject& o, const Inherited& here, Node& n, TokenStream& in) {
   AABB cut = AABB::everything();
   for (const PovObject& c : o.bound) {
@@ -464,13 +468,14 @@ void SceneReader::addBoxCut(const PovObject& o, const Inherited& here, Node& n, 
 }
 
 // Whether POV-Ray tests the rays against an object's bounded_by (Ray_In_Bound): always in
-// CSG; at the top level it drops the bounds of the shapes cheap to intersect, keeping
-// those of CSG, poly (cubic, quartic), text and a quadric (unless a clip gave the quadric
-// its own box). Bounds linked with the clip (clipped_by { bounded_by } and the reverse)
-// change nothing the clip does not: every point the clip keeps lies in them.
-bool SceneReader::keepsBound(const PovObject& o, bool topLevel) {
+// CSG that it keeps whole; for an object it links to the frame (Inherited::framed) it
+// drops the bounds of the shapes cheap to intersect, keeping those of CSG, poly (cubic,
+// quartic), text and a quadric (unless a clip gave the quadric its own box). Bounds linked
+// with the clip (clipped_by { bounded_by } and the reverse) change nothing the clip does
+// not: every point the clip keeps lies in them.
+bool SceneReader::keepsBound(const PovObject& o, bool framed) {
   if (o.bound.empty() || o.boundIsClip) return false;
-  if (!topLevel || o.kind != NodeKind::Shape) return true;
+  if (!framed || o.kind != NodeKind::Shape) return true;
   if (!o.shape) return false;
   if (std::holds_alternative<PolySpec>(*o.shape) || std::holds_alternative<TextSpec>(*o.shape))
     return true;

@@ -168,6 +168,13 @@ class SceneReader : public ItemReader {
     std::optional<uint32_t> material;
     Mat4 materialTextureFromNode{1.0};
     bool hollow = false;  // the parent's hollow flag, which an operand without one takes
+    // POV-Ray links this object to the frame as an object of its own: a top-level object,
+    // or an operand of such a union without clip or bounds, which POV-Ray splits. Where
+    // an object is, its bounds may be dropped (keepsBound).
+    bool framed = false;
+    // An enclosing object transforms this one after its own modifiers, which makes POV-Ray
+    // recompute its box from its shape (addBoxCut).
+    bool movedAfter = false;
   };
 
   // scene_reader.cpp: the top level, and what cannot be read
@@ -176,7 +183,7 @@ class SceneReader : public ItemReader {
   void place(const PovObject& object, TokenStream& in);
   std::unique_ptr<Node> toNode(const PovObject& o, const Inherited& inherited, bool topLevel,
                                TokenStream& in);
-  static bool keepsBound(const PovObject& o, bool topLevel);
+  static bool keepsBound(const PovObject& o, bool framed);
   void addBoxCut(const PovObject& o, const Inherited& here, Node& n, TokenStream& in);
   // `hollow`: the object's flag, which POV-Ray promotes to its interior (the material's).
   uint32_t addMaterial(const PovTexture& texture, const PovInterior& interior, bool hollow,

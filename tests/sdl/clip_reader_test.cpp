@@ -1,7 +1,8 @@
 // clipped_by and bounded_by read by the scene reader (sdl/read_objects.cpp): the clip in the
 // object's frame, moved by the transforms written after it only; the two linked by
-// `clipped_by { bounded_by }` and the reverse; the bounds POV-Ray keeps (in CSG, and on a
-// top-level CSG, poly, text or quadric) and those it drops; bad input located.
+// `clipped_by { bounded_by }` and the reverse; the bounds POV-Ray keeps (in CSG it keeps
+// whole, and on a top-level CSG, poly, text or quadric), those it drops and the box it
+// keeps of them; bad input located.
 #include <catch2/catch.hpp>
 
 #include "scene_read_support.h"
@@ -63,11 +64,13 @@ TEST_CASE("clip reader: bounded_by is kept where POV-Ray tests rays against it",
 sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } }
 quartic { <1,0,0,0,0,0,0,0,0,-1, 0,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,1,0,0,0,0, 0,0,1,0,0>
   bounded_by { sphere { 0, 2 } } }
-union { sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } } sphere { x, 1 } }
+merge { sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } } sphere { x, 1 } }
 union { sphere { 0, 1 } sphere { x, 1 } bounded_by { box { -1, 1 } } }
 sphere { 0, 1 bounded_by { box { -1, 1 } } clipped_by { bounded_by } }
 sphere { 0, 1 clipped_by { box { -1, 1 } } bounded_by { clipped_by } }
 sphere { 0, 1 bounded_by { box { -2, 2 } } translate x }
+union { sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } } sphere { x, 1 } }
+union { sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } } sphere { x, 1 } translate y }
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
@@ -83,8 +86,9 @@ sphere { 0, 1 bounded_by { box { -2, 2 } } translate x }
   checkMat(sphere.parentFromNode * box.parentFromNode, Mat4(1.0));
   // A poly's are kept.
   CHECK(topNode(s, 1).bound.size() == 1);
-  // An operand's are kept, wherever it is.
-  CHECK(topNode(s, 2).children.at(0)->bound.size() == 1);
+  // An operand's are kept where POV-Ray keeps the operation whole.
+  REQUIRE(topNode(s, 2).children.at(0)->bound.size() == 1);
+  CHECK(topNode(s, 2).children.at(0)->bound[0]->element == "sphere");
   // A union's are kept.
   CHECK(topNode(s, 3).bound.size() == 1);
   // Linked with the clip: the clip alone (every point it keeps lies in the bounds).
@@ -94,6 +98,12 @@ sphere { 0, 1 bounded_by { box { -2, 2 } } translate x }
   CHECK(topNode(s, 5).bound.empty());
   // A box larger than the sphere's own: POV-Ray keeps the sphere's, nothing is cut.
   CHECK(topNode(s, 6).bound.empty());
+  // A union without clip or bounds is split into objects of their own: its operand's
+  // bounds are dropped as a top-level sphere's, their box kept.
+  REQUIRE(topNode(s, 7).children.at(0)->bound.size() == 1);
+  CHECK(topNode(s, 7).children.at(0)->bound[0]->element == "box");
+  // Unless the union moves it afterwards: POV-Ray computes the sphere's box again.
+  CHECK(topNode(s, 8).children.at(0)->bound.empty());
 }
 
 TEST_CASE("clip reader: bad clipped_by and bounded_by are errors at their place",
