@@ -211,7 +211,7 @@ bool CsgNode::intersect(const Ray& ray, Hit& hit) const {
   CrossingList& list = scratch->result;
   crossings(ray, list);
   for (const Crossing& c : list.items) {
-    if (c.hit.t > ray.tmin && c.hit.t < ray.tmax) {
+    if (!c.hidden && c.hit.t > ray.tmin && c.hit.t < ray.tmax) {
       hit = c.hit;
       return true;
     }

@@ -139,6 +139,32 @@ const std::vector<std::string_view>& nodeAttributes(std::string_view element) {
   return cache.emplace(key, std::move(allowed)).first->second;
 }
 
+// A <clip> or <bound>: no attributes, one or more solids (geometry elements, <repeat> and
+// <if> around them) in the frame of the node that holds it.
+void readSolids(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, int depth,
+                std::vector<std::unique_ptr<Node>>& out) {
+  ElementReader r(ctx, file, element);
+  r.checkAttributes({});
+  bool anyChild = false;  // a wrong child is its own error, not also an empty <clip>
+  forEachExpandedChild(r, depth + 1, [&](pugi::xml_node c) {
+    anyChild = true;
+    if (!isGeometryElement(c.name())) {
+      std::vector<std::string_view> names = geometryElementNames();
+      names.push_back("repeat");
+      names.push_back("if");
+      reportUnexpectedChild(r, c, names);
+      return;
+    }
+    if (auto child = parseGeometryNode(ctx, file, c, depth + 1)) out.push_back(std::move(child));
+  });
+  if (out.empty() && !anyChild && !r.failed())
+    r.error(r.tag() + " needs at least one solid" +
+            (element.name() == std::string_view("clip")
+                 ? ": the surface is kept only inside all of them (POV-Ray's clipped_by)"
+                 : ": the object is searched only along rays that meet all of them (POV-Ray's "
+                   "bounded_by)"));
+}
+
 }  // namespace
 
 // The shapes of the registry, then the groups, CSG operations and <use>.
@@ -180,11 +206,22 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
   node->shadows = r.boolean("shadows", true);
   node->inverse = r.boolean("inverse", false);
 
-  // Children: geometry (groups and CSG only) and at most one inline <material>.
-  pugi::xml_node inlineMaterial;
+  // Children: geometry (groups and CSG only), at most one inline <material>, one <clip>
+  // and one <bound>.
+  pugi::xml_node inlineMaterial, clip, bound;
   auto readChild = [&](pugi::xml_node c) {
     std::string_view cn = c.name();
-    if (cn == "material") {
+    if (cn == "clip" || cn == "bound") {
+      pugi::xml_node& seen = cn == "clip" ? clip : bound;
+      if (seen) {
+        ElementReader(ctx, file, c)
+            .error(r.tag() + " holds one <" + std::string(cn) + "> at most; the first is at " +
+                   file.loc(seen).str());
+        return;
+      }
+      seen = c;
+      readSolids(ctx, file, c, depth + 1, cn == "clip" ? node->clip : node->bound);
+    } else if (cn == "material") {
       if (inlineMaterial) {
         ElementReader(ctx, file, c)
             .error(r.tag() + " holds one <material> at most; the first is at " +
@@ -198,7 +235,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
     } else if (shapeType && shapeType->child(cn)) {
       // The shape's own child (a blob's <component>): its entry reads it in parseShape.
     } else {
-      std::vector<std::string_view> childNames{"material", "param"};
+      std::vector<std::string_view> childNames{"material", "param", "clip", "bound"};
       if (shapeType)
         for (const ChildElementInfo& ch : shapeType->children) childNames.push_back(ch.name);
       if (group) {
@@ -248,6 +285,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
     node->kind = NodeKind::Shape;
     node->shape = parseShape(r);
   }
+  if (!node->clip.empty() || !node->bound.empty()) ctx.clipped.push_back(node.get());
   if (r.failed()) ctx.broken.insert(node.get());
   // A <use> without a target cannot be resolved: treat it as broken from the start.
   if (isUse && (!r.has("ref") || r.failed())) ctx.broken.insert(node.get());

@@ -100,6 +100,8 @@ struct ParseContext {
   // Nodes whose own element had errors: later checks (CSG solids) skip them rather than
   // repeat the problem in other words.
   std::unordered_set<const Node*> broken;
+  // Nodes with a <clip> or <bound>: their solids are checked once references are known.
+  std::vector<const Node*> clipped;
 
   // Meshes read from files, by canonical path: a file used twice is read once (and once
   // for all the parses that share ParseOptions::meshCache).

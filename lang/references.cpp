@@ -21,7 +21,8 @@ std::string useLabel(const Node& n) {
   return n.target ? "<use ref=\"" + n.target->id + "\">" : "<use>";
 }
 
-// Everything a node leads to: its children, or the target of a <use>.
+// Everything a node leads to: its children, or the target of a <use>, and the solids of
+// its <clip> and <bound>.
 std::vector<const Node*> successors(const Node& n) {
   std::vector<const Node*> out;
   if (n.kind == NodeKind::Use) {
@@ -29,6 +30,8 @@ std::vector<const Node*> successors(const Node& n) {
   } else {
     for (const auto& c : n.children) out.push_back(c.get());
   }
+  for (const auto& c : n.clip) out.push_back(c.get());
+  for (const auto& c : n.bound) out.push_back(c.get());
   return out;
 }
 
@@ -147,6 +150,25 @@ void checkCsgOperands(ParseContext& ctx, const Node& csg) {
     std::string message = what + " cannot be an operand of <" + csg.element + "> (at " +
                           csg.loc.str() + "), which needs solids: ";
     if (leaf == child.get()) message += "it is not a solid (" + whyNotSolid(*leaf) + ")";
+    else
+      message += "it contains <" + leaf->element + "> at " + leaf->loc.str() +
+                 ", which is not a solid (" + whyNotSolid(*leaf) + ")";
+    ctx.diags.error(child->loc, message);
+  }
+}
+
+// What a <clip> or <bound> holds must have an inside: a clip keeps the points inside it.
+void checkClipSolids(ParseContext& ctx, const Node& owner,
+                     const std::vector<std::unique_ptr<Node>>& solids, const char* what) {
+  for (const auto& child : solids) {
+    if (ctx.broken.count(child.get())) continue;
+    const Node* leaf = findNonSolid(ctx, *child);
+    if (!leaf || ctx.broken.count(leaf)) continue;
+    std::string label =
+        child->kind == NodeKind::Use ? useLabel(*child) : "<" + child->element + ">";
+    std::string message = label + " in the <" + std::string(what) + "> of <" + owner.element +
+                          "> (at " + owner.loc.str() + ") must be a solid: ";
+    if (leaf == child.get()) message += "it is not one (" + whyNotSolid(*leaf) + ")";
     else
       message += "it contains <" + leaf->element + "> at " + leaf->loc.str() +
                  ", which is not a solid (" + whyNotSolid(*leaf) + ")";
@@ -322,6 +344,8 @@ void resolveReferences(ParseContext& ctx) {
       }
       if (isCsgOperation(*n)) csgNodes.push_back(n);
       for (const auto& c : n->children) stack.emplace_back(c.get(), depth + 1);
+      for (const auto& c : n->clip) stack.emplace_back(c.get(), depth + 1);
+      for (const auto& c : n->bound) stack.emplace_back(c.get(), depth + 1);
     }
   } else {
     // 2. No node contains itself, and nothing nests too deep through <use>.
@@ -354,6 +378,10 @@ void resolveReferences(ParseContext& ctx) {
     if (n->kind == NodeKind::Merge || n->kind == NodeKind::Intersection ||
         n->kind == NodeKind::Difference)
       checkCsgOperands(ctx, *n);
+  }
+  for (const Node* n : ctx.clipped) {
+    checkClipSolids(ctx, *n, n->clip, "clip");
+    checkClipSolids(ctx, *n, n->bound, "bound");
   }
 }
 

@@ -267,6 +267,8 @@ class SceneWriter {
     if (n.material) ++uses_[*n.material];
     if (n.kind == NodeKind::Use && n.target) targets_.insert(n.target);
     for (const auto& c : n.children) count(*c);
+    for (const auto& c : n.clip) count(*c);
+    for (const auto& c : n.bound) count(*c);
   }
   void countMaterials() {
     count(*scene_.root);
@@ -398,7 +400,8 @@ class SceneWriter {
     const bool inlineMaterial = n.material && !named_.count(*n.material);
     if (n.material && !inlineMaterial) a.emplace_back("material", named_.at(*n.material));
     out_.source(n.loc);
-    const bool empty = !inlineMaterial && n.children.empty() && shapeChildren.empty();
+    const bool empty = !inlineMaterial && n.children.empty() && shapeChildren.empty() &&
+                       n.clip.empty() && n.bound.empty();
     out_.open(element, a, empty);
     if (empty) return;
     // A shape's parameters first: a local <param> is visible in the whole element.
@@ -408,6 +411,16 @@ class SceneWriter {
     for (const OwnShapeChild& c : shapeChildren)
       if (c.element != "param") out_.open(c.element, c.attributes, true);
     for (const auto& c : n.children) writeNode(*c);
+    writeSolids("clip", n.clip);
+    writeSolids("bound", n.bound);
+    out_.close(element);
+  }
+
+  // A node's <clip> or <bound>, its solids in the node's frame.
+  void writeSolids(const char* element, const std::vector<std::unique_ptr<Node>>& solids) {
+    if (solids.empty()) return;
+    out_.open(element, {}, false);
+    for (const auto& c : solids) writeNode(*c);
     out_.close(element);
   }
 };

@@ -102,7 +102,9 @@ std::string shapeWithChildrenXsd(const ShapeType& t) {
       "  <xs:complexType name=\"{}Type\">\n"
       "    <xs:choice minOccurs=\"0\" maxOccurs=\"unbounded\">\n"
       "      <xs:group ref=\"localParam\"/>\n"
-      "      <xs:element name=\"material\" type=\"inlineMaterialType\"/>\n",
+      "      <xs:element name=\"material\" type=\"inlineMaterialType\"/>\n"
+      "      <xs:element name=\"clip\" type=\"solidsType\"/>\n"
+      "      <xs:element name=\"bound\" type=\"solidsType\"/>\n",
       t.element);
   for (const ChildElementInfo& c : t.children)
     out += fmt::format(

@@ -64,6 +64,35 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
                             bool topLevel, PovWriter& out) {
   const Mat4 m = fromContext * node.parentFromNode;
   const uint32_t material = node.material.value_or(inherited);
+  if (!node.bound.empty() && boundWritten_ != &node) {
+    // POV-Ray keeps the bounded_by of a union (it drops that of a plain shape, keeping only
+    // its box): a union of the one object holds Lucent's <bound> as it is.
+    out.open("union", "<" + node.element + "> " + node.loc.str() + " (bounded)");
+    const Node* outer = boundWritten_;
+    boundWritten_ = &node;
+    writeNode(node, fromContext, inherited, false, out);
+    boundWritten_ = outer;
+    writeSolids("bounded_by", node.bound, m, material, out);
+    out.close();
+    return;
+  }
+  if (!node.clip.empty() && (node.kind == NodeKind::Group || node.kind == NodeKind::Use)) {
+    // Several objects clipped as one: POV-Ray's union of them with the clip (inverted as
+    // one when asked, its clip not: as Lucent inverts before it clips).
+    const bool inv = takeInverse() != node.inverse;
+    const bool outerShadowless = shadowless_;
+    if (!ignoreOwnShadows_ && !node.shadows) shadowless_ = true;
+    out.open("union", "<" + node.element + "> " + node.loc.str() + " (clipped)");
+    if (node.kind == NodeKind::Group)
+      for (const auto& c : node.children) writeNode(*c, Mat4(1.0), material, false, out);
+    else if (node.target) writeNode(*node.target, Mat4(1.0), material, false, out);
+    writeSolids("clipped_by", node.clip, Mat4(1.0), material, out);
+    if (!isIdentity(m)) out.line(povMatrix(m));
+    if (inv) out.line("inverse");
+    out.close();
+    shadowless_ = outerShadowless;
+    return;
+  }
   // The flags of the enclosing writes, restored on return.
   const bool outerShadowless = shadowless_, outerIgnore = ignoreOwnShadows_,
              outerInSolid = inWrittenSolid_;
@@ -121,12 +150,13 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
       // A union keeps every operand's surfaces, each its own object to POV-Ray as to
       // Lucent: only the solid operations share one interior (see the header).
       const std::optional<uint32_t> outer = csgInterior_;
-      const bool share =
-          node.kind != NodeKind::Union && !csgInterior_ && materials_.surface(material).interior;
+      const bool share = node.kind != NodeKind::Union && !csgInterior_ && !inClipOrBound_ &&
+                         materials_.surface(material).interior;
       if (share) csgInterior_ = material;
       for (const auto& c : node.children) writeNode(*c, Mat4(1.0), material, false, out);
       if (share) materials_.writeInteriorFor(material, out);
       csgInterior_ = outer;
+      writeSolids("clipped_by", node.clip, Mat4(1.0), material, out);
       if (!isIdentity(m)) out.line(povMatrix(m));
       if (markHere) out.line("no_shadow");
       if (inv) out.line("inverse");
@@ -138,6 +168,27 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
   ignoreOwnShadows_ = outerIgnore;
   inWrittenSolid_ = outerInSolid;
   pendingInverse_ = false;  // an inverse its subtree did not use (no object) ends with it
+}
+
+void PovGeometry::writeSolids(const char* keyword, const std::vector<std::unique_ptr<Node>>& solids,
+                              const Mat4& m, uint32_t material, PovWriter& out) {
+  if (solids.empty()) return;
+  // Written as shapes of their own: the flags of the object around them are not theirs.
+  const bool shadowless = shadowless_, ignore = ignoreOwnShadows_, inSolid = inWrittenSolid_,
+             inverse = pendingInverse_, inClip = inClipOrBound_;
+  inClipOrBound_ = true;
+  shadowless_ = false;
+  ignoreOwnShadows_ = true;
+  inWrittenSolid_ = true;
+  pendingInverse_ = false;
+  out.open(keyword);
+  for (const auto& c : solids) writeNode(*c, m, material, false, out);
+  out.close();
+  shadowless_ = shadowless;
+  ignoreOwnShadows_ = ignore;
+  inWrittenSolid_ = inSolid;
+  pendingInverse_ = inverse;
+  inClipOrBound_ = inClip;
 }
 
 std::string PovGeometry::meshName(const MeshSpec& mesh, const Node& node) {
@@ -268,7 +319,7 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
   warnSmoothNormalRule(node, issues_);
   used_[material] = true;
   std::vector<ImageMapFace> faces;
-  if (materials_.usesImageMap(material))
+  if (!inClipOrBound_ && materials_.usesImageMap(material))
     faces = shapeTypeOf(*node.shape).povImageFaces(*node.shape);
   if (!faces.empty()) {
     // Each face has its own copy of the image: the solid as the intersection of its face
@@ -281,6 +332,7 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
       materials_.writeFor(material, face.mapping, node.element.c_str(), node.loc, out, issues_);
       out.close();
     }
+    writeSolids("clipped_by", node.clip, Mat4(1.0), material, out);
     if (!isIdentity(m)) out.line(povMatrix(m));
     if (shadowless_ && !inWrittenSolid_) out.line("no_shadow");
     if (inv) out.line("inverse");
@@ -288,7 +340,10 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
     return;
   }
   writeShapeHead(node, m, material, topLevel, inv, out);
-  materials_.writeFor(material, *node.shape, node.loc, out, issues_, csgInterior_ != material);
+  // POV-Ray refuses a texture in a clip or bound.
+  if (!inClipOrBound_)
+    materials_.writeFor(material, *node.shape, node.loc, out, issues_, csgInterior_ != material);
+  writeSolids("clipped_by", node.clip, Mat4(1.0), material, out);
   if (!isIdentity(m)) out.line(povMatrix(m));
   if (shadowless_ && !inWrittenSolid_) out.line("no_shadow");
   if (inv) out.line("inverse");

@@ -48,6 +48,9 @@ class PovGeometry {
   void writeShapeHead(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
                       bool& inverse, PovWriter& out);
   std::string meshName(const MeshSpec& mesh, const Node& node);
+  // A node's clipped_by or bounded_by block: its solids below `m`.
+  void writeSolids(const char* keyword, const std::vector<std::unique_ptr<Node>>& solids,
+                   const Mat4& m, uint32_t material, PovWriter& out);
   // Operands a CSG node gets once groups and <use> are flattened.
   int operandCount(const Node& node) const;
 
@@ -71,6 +74,9 @@ class PovGeometry {
   // inverse="true" still to be written: by the next object opened (a leaf or a CSG block),
   // so that a group or <use> of one operand passes it down; two inverses cancel.
   bool pendingInverse_ = false;
+  const Node* boundWritten_ = nullptr;
+  bool inClipOrBound_ = false;  // writing a clip's or bound's solids: no textures  // the node
+                                // whose bounded_by union is being written
   // Takes the pending inverse for the object being opened.
   bool takeInverse() {
     const bool inv = pendingInverse_;

@@ -10,6 +10,10 @@ namespace lucent {
 struct Crossing {
   Hit hit;        // distance, leaf and payload, as a closest-hit search would give them
   bool entering;  // true where the ray passes from outside to inside the solid
+  // A crossing that changes membership but shows no surface: where a clipped solid
+  // (csg/clipped.h) is cut by its clip, which POV-Ray does not draw. A search for the
+  // closest hit passes through it.
+  bool hidden = false;
 };
 
 struct CrossingList {

@@ -23,6 +23,13 @@ bool containsPlain(const Node& node, const Transform& parentWorld, const Vec3& p
 
 bool contains(const Node& node, const Transform& parentWorld, const Vec3& p) {
   const bool in = containsPlain(node, parentWorld, p);
+  if (!node.clip.empty()) {
+    // Inside a clipped solid is inside its clips too (POV-Ray's inside test).
+    auto world = worldOf(node, parentWorld);
+    if (!world) return false;
+    for (const auto& c : node.clip)
+      if (!contains(*c, *world, p)) return false;
+  }
   return node.inverse ? !in : in;
 }
 

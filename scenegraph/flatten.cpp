@@ -2,6 +2,8 @@
 
 #include "located_error.h"
 
+#include "csg/bounded.h"
+#include "csg/clipped.h"
 #include "csg/csg_node.h"
 #include "csg/inverted.h"
 
@@ -50,6 +52,8 @@ Transform nodeWorld(const Node& node, const Transform& parentWorld) {
 // Walks the graph as Builder does, computing transforms only.
 void checkNode(const Node& node, const Transform& parentWorld) {
   Transform world = nodeWorld(node, parentWorld);
+  for (const auto& c : node.clip) checkNode(*c, world);
+  for (const auto& c : node.bound) checkNode(*c, world);
   if (node.kind == NodeKind::Use) return checkNode(*node.target, world);
   for (const auto& c : node.children) checkNode(*c, world);
 }
@@ -100,10 +104,38 @@ struct Builder {
   // Adds the node's objects to `out`.
   // `inSolid`: the node is (inside) an operand of a merge, intersection or difference,
   // whose shadow is the whole operation's: the flags of its parts are not consulted.
+  // `invert`: inverted once more (a subtrahend of a difference written as an intersection).
   void add(const Node& node, const Transform& parentWorld, uint32_t inherited, bool castsAbove,
-           bool inSolid, std::vector<Part>& out) {
-    if (node.inverse) addInverted(node, parentWorld, inherited, castsAbove, inSolid, out);
+           bool inSolid, std::vector<Part>& out, bool invert = false) {
+    const size_t first = out.size();
+    if (node.inverse != invert) addInverted(node, parentWorld, inherited, castsAbove, inSolid, out);
     else addPlain(node, parentWorld, inherited, castsAbove, inSolid, out);
+    if (node.clip.empty() && node.bound.empty()) return;
+    // The clip tests points of the (possibly inverted) surface, as POV-Ray's, and the bound
+    // the ray before anything else; both are in the node's frame.
+    const Transform world = nodeWorld(node, parentWorld);
+    for (size_t i = first; i < out.size(); ++i) {
+      if (!node.clip.empty())
+        out[i].shape = std::make_unique<Clipped>(std::move(out[i].shape), solids(node.clip, world));
+      if (!node.bound.empty())
+        out[i].shape =
+            std::make_unique<Bounded>(std::move(out[i].shape), solids(node.bound, world));
+    }
+  }
+
+  // The solids of a <clip> or <bound>, each one shape (a union of its parts when it has
+  // several), placed below `world`. Their leaves are never hit, so no material matters.
+  std::vector<std::unique_ptr<Shape>> solids(const std::vector<std::unique_ptr<Node>>& nodes,
+                                             const Transform& world) {
+    std::vector<std::unique_ptr<Shape>> shapes;
+    for (const auto& n : nodes) {
+      std::vector<Part> parts;
+      add(*n, world, 0, true, true, parts);
+      if (parts.empty()) continue;
+      shapes.push_back(parts.size() == 1 ? std::move(parts.front().shape)
+                                         : compose(CsgOp::Union, std::move(parts), true).shape);
+    }
+    return shapes;
   }
 
   // The node's shape. A shape's own constructor refuses degenerate parameters (a cylinder
@@ -186,12 +218,28 @@ struct Builder {
       case NodeKind::Intersection:
       case NodeKind::Difference: {
         std::vector<Part> children;
+        if (node.kind == NodeKind::Difference && clippedSubtrahend(node)) {
+          // POV-Ray's difference is the intersection with the others inverted, and inverting
+          // a clipped object leaves its clip as it is: inside the subtrahend is then inside
+          // its clip and outside its shape. Written so, the same result.
+          for (size_t i = 0; i < node.children.size(); ++i)
+            add(*node.children[i], world, material, true, true, children, i > 0);
+          if (children.empty()) break;
+          out.push_back(compose(CsgOp::Intersection, std::move(children), castsShadow));
+          break;
+        }
         for (const auto& c : node.children) add(*c, world, material, true, true, children);
         if (children.empty()) break;
         out.push_back(compose(csgOpOf(node.kind), std::move(children), castsShadow));
         break;
       }
     }
+  }
+
+  static bool clippedSubtrahend(const Node& difference) {
+    if (difference.children.size() < 2) return false;
+    return std::any_of(difference.children.begin() + 1, difference.children.end(),
+                       [](const auto& c) { return !c->clip.empty(); });
   }
 
   // inverse="true": the node's objects as one solid (a union of them when there are

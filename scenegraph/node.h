@@ -35,6 +35,14 @@ struct Node {
   // csg/inverted.h around the node's geometry.
   bool inverse = false;
 
+  // <clip> (POV-Ray's clipped_by): solids in the node's own frame; the node's surface is
+  // kept only inside all of them, left open where they cut it (csg/clipped.h).
+  std::vector<std::unique_ptr<Node>> clip;
+  // <bound> (POV-Ray's bounded_by as POV-Ray applies it): solids in the node's own frame;
+  // the node is searched only along rays that meet all of them or start inside them
+  // (csg/bounded.h).
+  std::vector<std::unique_ptr<Node>> bound;
+
   std::optional<ShapeSpec> shape;               // kind == Shape
   std::vector<std::unique_ptr<Node>> children;  // groups and CSG operations
   const Node* target = nullptr;                 // kind == Use: the referenced node

@@ -194,14 +194,62 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
     else if (o.shape && std::holds_alternative<PrismSpec>(*o.shape))
       std::get<PrismSpec>(*o.shape).open = open;
     else in.error(t, "'open' is for a cylinder, cone, sor, prism or isosurface, not " + o.keyword);
-  } else if (w == "bounded_by") {
-    // Only a speed-up in POV-Ray (Lucent bounds its objects itself): skipped.
-    in.expect("{");
-    skipToClose(in, 1);
+  } else if (w == "clipped_by" || w == "bounded_by") {
+    readClipOrBound(t, o, in);
   } else {
     return false;
   }
   return true;
+}
+
+// clipped_by { objects transforms } or bounded_by { ... } (the keyword read): the objects,
+// moved by the transforms written after them, carried back into the object's own space
+// so that the object's later transforms move them with it (as POV-Ray transforms an
+// object's clip and bounds with it). clipped_by { bounded_by } takes the bounds as the
+// clip, bounded_by { clipped_by } the reverse, with POV-Ray's errors.
+void SceneReader::readClipOrBound(const Token& t, PovObject& o, TokenStream& in) {
+  const bool clip = isWord(t, "clipped_by");
+  std::vector<PovObject>& mine = clip ? o.clip : o.bound;
+  std::vector<PovObject>& other = clip ? o.bound : o.clip;
+  in.expect("{");
+  if (o.boundIsClip && !mine.empty())
+    in.error(t, std::string("cannot add ") + (clip ? "clips" : "bounds") +
+                    " after linking bounds and clips");
+  if (isWord(in.peek(), clip ? "bounded_by" : "clipped_by")) {
+    const Token link = in.next();
+    if (!mine.empty())
+      in.error(link, std::string("cannot link ") +
+                         (clip ? "bounds with previous clips" : "clips with previous bounds"));
+    mine = other;
+    o.boundIsClip = true;
+    in.expect("}");
+    return;
+  }
+  const PovTransform backToObject = o.transform.inverse();
+  std::vector<PovObject> objects;
+  while (isObjectKeyword(in.peek())) {
+    const Token first = in.next();
+    if (isWord(first, "light_source"))
+      in.error(first,
+               std::string("a light source cannot ") + (clip ? "clip" : "bound") + " an object");
+    objects.push_back(readObject(first, in));
+  }
+  if (objects.empty())
+    in.error(in.peek(),
+             std::string(t.text()) + " needs at least one object, not " + in.peek().describe());
+  PovTransform after;
+  for (;;) {
+    const Token n = in.next();
+    if (n.is("}")) break;
+    if (!readTransform(n, in, after))
+      in.error(n, "an object or a transform expected in " + std::string(t.text()) + ", not " +
+                      n.describe());
+  }
+  for (PovObject& c : objects) {
+    c.transform = c.transform.then(after).then(backToObject);
+    o.nodes += c.nodes;
+    mine.push_back(std::move(c));
+  }
 }
 
 // translate, rotate, scale, matrix and transform: `m` then the one written.

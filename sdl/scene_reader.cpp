@@ -1,5 +1,7 @@
 #include "scene_reader.h"
 
+#include "pov_bounds.h"
+
 #include "read_support.h"
 
 #include "scenegraph/light_placement.h"
@@ -24,7 +26,6 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"caustics", "faked caustics"},
       {"dispersion", "dispersion"},
       {"interior_texture", "a texture for the inside of a surface"},
-      {"clipped_by", "clipping; the nearest Lucent feature is <intersection>"},
       {"projected_through", "lights projected through objects"},
       {"no_image", "objects hidden from the camera"},
       {"no_reflection", "objects hidden from reflections"},
@@ -300,6 +301,7 @@ void SceneReader::place(const PovObject& object, TokenStream& in) {
   Inherited top;
   top.texture = &tex;
   top.interior = &interior;
+  top.framed = true;
   std::unique_ptr<Node> node = toNode(object, top, true, in);
   if (!node) return;  // left out (--skip-unsupported)
   if (node->kind == NodeKind::Light) scene_.lightRoot->children.push_back(std::move(node));
@@ -415,9 +417,59 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     here.materialTextureFromNode = textureFromNode;
   }
   here.textureFromParent = textureFromNode;
+  here.framed = inherited.framed && o.kind == NodeKind::Union && o.clip.empty() && o.bound.empty();
+  here.movedAfter = inherited.movedAfter || !o.transform.isIdentity();
   for (const PovObject& c : o.children)
     if (auto child = toNode(c, here, false, in)) n->children.push_back(std::move(child));
+  for (const PovObject& c : o.clip)
+    if (auto child = toNode(c, here, false, in)) n->clip.push_back(std::move(child));
+  if (keepsBound(o, inherited.framed)) {
+    for (const PovObject& c : o.bound)
+      if (auto child = toNode(c, here, false, in)) n->bound.push_back(std::move(child));
+  } else if (inherited.framed && !inherited.movedAfter && !o.bound.empty() && !o.boundIsClip) {
+    addBoxCut(o, here, *n, in);
+  }
   return n;
+}
+
+// An object linked to the frame whose bounds POV-Ray drops keeps their box as its own when
+// that is smaller than its own box (by volume), unless an enclosing object moves it later
+// (POV-Ray then computes its box from its shape again): rays that miss the box miss the
+// object. Only a box that does not hold the object's changes the image, and only such a
+// one is kept, as a <bound> box in the node's frame.
+void SceneReader::addBoxCut(const PovObject& o, const Inherited& here, Node& n, TokenStream& in) {
+  AABB cut = AABB::everything();
+  for (const PovObject& c : o.bound) {
+    if (c.inverse) continue;  // POV-Ray leaves an inverse bound out of the box
+    if (auto b = toNode(c, here, false, in)) cut = AABB::meet(cut, nodeBox(*b, n.parentFromNode));
+  }
+  const AABB own = nodeBox(n, Mat4(1.0));
+  if (!cut.isBounded() || !(boxVolume(cut) < boxVolume(own))) return;
+  if (!own.empty() && glm::all(glm::lessThanEqual(cut.lo, own.lo)) &&
+      glm::all(glm::greaterThanEqual(cut.hi, own.hi)))
+    return;
+  auto box = std::make_unique<Node>();
+  box->kind = NodeKind::Shape;
+  box->element = "box";
+  box->loc = o.bound.front().loc;
+  box->shape = BoxSpec{cut.lo, cut.hi};
+  box->parentFromNode = glm::inverse(n.parentFromNode);
+  n.bound.push_back(std::move(box));
+}
+
+// Whether POV-Ray tests the rays against an object's bounded_by (Ray_In_Bound): always in
+// CSG that it keeps whole; for an object it links to the frame (Inherited::framed) it
+// drops the bounds of the shapes cheap to intersect, keeping those of CSG, poly (cubic,
+// quartic), text and a quadric (unless a clip gave the quadric its own box). Bounds linked
+// with the clip (clipped_by { bounded_by } and the reverse) change nothing the clip does
+// not: every point the clip keeps lies in them.
+bool SceneReader::keepsBound(const PovObject& o, bool framed) {
+  if (o.bound.empty() || o.boundIsClip) return false;
+  if (!framed || o.kind != NodeKind::Shape) return true;
+  if (!o.shape) return false;
+  if (std::holds_alternative<PolySpec>(*o.shape) || std::holds_alternative<TextSpec>(*o.shape))
+    return true;
+  return o.keyword == "quadric" && o.clip.empty();
 }
 
 void SceneReader::finishScene(TokenStream& in) {

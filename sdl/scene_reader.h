@@ -70,6 +70,12 @@ struct PovObject {
   // `hollow [on|off]` when written; unwritten, the object takes its CSG parent's (POV-Ray
   // sets the flag of the operands that did not set theirs), else not hollow.
   std::optional<bool> hollow;
+  // clipped_by and bounded_by: objects in this object's own space (before `transform`,
+  // which moves them with it); boundIsClip when one was written as the other
+  // (clipped_by { bounded_by } or bounded_by { clipped_by }), POV-Ray's one list for both.
+  std::vector<PovObject> clip;
+  std::vector<PovObject> bound;
+  bool boundIsClip = false;
   int depth = 1;       // levels of objects, this one included
   uint64_t nodes = 1;  // objects within, this one included
 };
@@ -162,6 +168,13 @@ class SceneReader : public ItemReader {
     std::optional<uint32_t> material;
     Mat4 materialTextureFromNode{1.0};
     bool hollow = false;  // the parent's hollow flag, which an operand without one takes
+    // POV-Ray links this object to the frame as an object of its own: a top-level object,
+    // or an operand of such a union without clip or bounds, which POV-Ray splits. Where
+    // an object is, its bounds may be dropped (keepsBound).
+    bool framed = false;
+    // An enclosing object transforms this one after its own modifiers, which makes POV-Ray
+    // recompute its box from its shape (addBoxCut).
+    bool movedAfter = false;
   };
 
   // scene_reader.cpp: the top level, and what cannot be read
@@ -170,6 +183,8 @@ class SceneReader : public ItemReader {
   void place(const PovObject& object, TokenStream& in);
   std::unique_ptr<Node> toNode(const PovObject& o, const Inherited& inherited, bool topLevel,
                                TokenStream& in);
+  static bool keepsBound(const PovObject& o, bool framed);
+  void addBoxCut(const PovObject& o, const Inherited& here, Node& n, TokenStream& in);
   // `hollow`: the object's flag, which POV-Ray promotes to its interior (the material's).
   uint32_t addMaterial(const PovTexture& texture, const PovInterior& interior, bool hollow,
                        const Mat4& textureFromNode, const SourceLoc& at, TokenStream& in);
@@ -205,6 +220,7 @@ class SceneReader : public ItemReader {
   void readIsosurface(PovObject& o, TokenStream& in);  // read_isosurface.cpp
   void readObjectModifiers(PovObject& o, TokenStream& in);
   bool readObjectModifier(const Token& t, PovObject& o, TokenStream& in);
+  void readClipOrBound(const Token& t, PovObject& o, TokenStream& in);
   bool readTransform(const Token& t, TokenStream& in, PovTransform& m);
   PovTransform readTransformBlock(TokenStream& in);
 

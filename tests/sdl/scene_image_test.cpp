@@ -72,6 +72,11 @@ TEST_CASE("scene reader image: a sphere on a plane as POV-Ray users write it",
   requireSameImageAsPovray("sphere_on_plane.pov", 160, 120);
 }
 
+TEST_CASE("scene reader image: clipped_by and bounded_by as POV-Ray applies them",
+          "[sdl][scene][image][povray][clip]") {
+  requireSameImageAsPovray("clip_and_bound.pov", 160, 120);
+}
+
 TEST_CASE("scene reader image: CSG, declared objects, #default and a loop",
           "[sdl][scene][image][povray]") {
   requireSameImageAsPovray("csg_and_objects.pov", 160, 120);

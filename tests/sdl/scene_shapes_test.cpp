@@ -371,9 +371,11 @@ height_field { gif "x.gif" }
 
 TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where it is placed",
           "[sdl][scene][shapes][errors]") {
-  // shapesq.inc declares polys of orders 5 to 8 among its quartics, and a clipped helix: a
-  // scene that uses only the quartics is read.
-  auto r = readScene(R"(#include "shapesq.inc"
+  // shapesq.inc declares polys of orders 5 to 8 among its quartics: a scene that uses only
+  // the quartics is read. (Its helix is clipped by shapes.inc's Cylinder_Z, which it does
+  // not include: POV-Ray needs shapes.inc first, too.)
+  auto r = readScene(R"(#include "shapes.inc"
+#include "shapesq.inc"
 object { Monkey_Saddle }
 #declare J = julia_fractal { <-0.08, 0.7, 0, 0> }
 #declare Blobs = union { blob { sphere { 0, 1, 1 scale <1, 2, 1> } } sphere { 0, 1 } }
@@ -383,16 +385,13 @@ object { Monkey_Saddle }
   // Placed (twice), each refusal is said once, at its keyword.
   const auto errors = errorsOf(R"(#declare J = julia_fractal { <-0.08, 0.7, 0, 0> }
 #declare Blobs = union { blob { sphere { 0, 1, 1 scale <1, 2, 1> } } sphere { 0, 1 } }
-#declare Clipped = sphere { 0, 1 clipped_by { plane { y, 0 } } }
 object { J }
-object { Clipped }
 object { Blobs translate x }
 object { Blobs }
 )");
-  REQUIRE(errors.size() == 3);
+  REQUIRE(errors.size() == 2);
   CHECK(errors[0].find("test.pov:1:14: error: 'julia_fractal' is not supported by Lucent") == 0);
-  CHECK(errors[1].find("test.pov:3:34: error: 'clipped_by' is not supported by Lucent") == 0);
-  CHECK(errors[2].find("test.pov:2:33: error: a blob component scaled unevenly") == 0);
+  CHECK(errors[1].find("test.pov:2:33: error: a blob component scaled unevenly") == 0);
 }
 
 TEST_CASE("scene shapes: blob components and mesh triangles Lucent cannot hold",

@@ -1,0 +1,197 @@
+// <clip> (POV-Ray's clipped_by) and <bound> (POV-Ray's bounded_by as POV-Ray applies it)
+// through real scenes: hit distances and normals against exact values, the open shell a
+// ray sees into through the cut, the inside test of a clipped solid in CSG (POV-Ray's:
+// inside the shape and inside its clips), the clip moved by the node's transform, and the
+// bound's test of the whole ray.
+#include "../support/scene_text.h"
+#include "scenegraph/world.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace lucent;
+using namespace lucent::test;
+
+namespace {
+
+struct Seen {
+  bool found = false;
+  double t = 0;
+  Vec3 ng{0.0};
+};
+
+Seen look(const World& world, const Ray& ray) {
+  Seen s;
+  Hit h;
+  if (!world.intersect(ray, h)) return s;
+  s.found = true;
+  s.t = h.t;
+  s.ng = h.shape->surface(ray, h).ng;  // the leaf applies Hit::flip
+  return s;
+}
+
+void checkNormal(const Vec3& got, const Vec3& want) {
+  CHECK(got.x == Approx(want.x).margin(1e-9));
+  CHECK(got.y == Approx(want.y).margin(1e-9));
+  CHECK(got.z == Approx(want.z).margin(1e-9));
+}
+
+// The unit sphere with only its lower half kept (y < 0).
+const char* kLowerHalf = R"XML(
+  <sphere radius="1"><clip><plane normal="0 1 0" offset="0"/></clip></sphere>)XML";
+
+}  // namespace
+
+TEST_CASE("clip: the surface is kept only inside the clip, at the shape's own distances",
+          "[csg][clip]") {
+  auto scene = parseClean(kLowerHalf);
+  World world(*scene);
+  const double h = std::sqrt(0.75);
+  // y = -0.5 lies inside the clip: the sphere's own hit and outward normal.
+  Seen below = look(world, Ray(Vec3(0, -0.5, -5), Vec3(0, 0, 1)));
+  REQUIRE(below.found);
+  CHECK(below.t == Approx(5.0 - h).epsilon(1e-12));
+  checkNormal(below.ng, Vec3(0, -0.5, -h));
+  // y = 0.5 lies outside it: both crossings of the sphere are cut away.
+  CHECK_FALSE(look(world, Ray(Vec3(0, 0.5, -5), Vec3(0, 0, 1))).found);
+  // Shadow rays agree.
+  CHECK(world.occluded(Ray(Vec3(0, -0.5, -5), Vec3(0, 0, 1), 0.0, 10.0)));
+  CHECK_FALSE(world.occluded(Ray(Vec3(0, 0.5, -5), Vec3(0, 0, 1), 0.0, 10.0)));
+}
+
+TEST_CASE("clip: an open shell, a ray entering through the cut sees the inside surface",
+          "[csg][clip]") {
+  auto scene = parseClean(kLowerHalf);
+  World world(*scene);
+  // Straight down from above: the upper half is gone and the cut is not closed, so the
+  // first surface is the bottom of the bowl, its outward normal facing away from the ray.
+  Seen s = look(world, Ray(Vec3(0, 5, 0), Vec3(0, -1, 0)));
+  REQUIRE(s.found);
+  CHECK(s.t == Approx(6.0).epsilon(1e-12));
+  checkNormal(s.ng, Vec3(0, -1, 0));
+}
+
+TEST_CASE("clip: inside a clipped solid is inside its clips too, in CSG as in POV-Ray",
+          "[csg][clip]") {
+  // The clipped sphere intersected with a box that ends at z = 0.25.
+  auto scene = parseClean(R"XML(
+    <intersection>
+      <sphere radius="1"><clip><plane normal="0 1 0" offset="0"/></clip></sphere>
+      <box min="-2 -2 -2" max="2 2 0.25"/>
+    </intersection>)XML");
+  World world(*scene);
+  // At y = 0.5 the box's face z = 0.25 is inside the sphere but outside the clip: not part
+  // of the intersection (were the clip only a filter of surfaces, the face would show).
+  CHECK_FALSE(look(world, Ray(Vec3(0, 0.5, -5), Vec3(0, 0, 1))).found);
+  // At y = -0.5 the sphere's front, then from inside the box's face at t = 0.25.
+  Seen front = look(world, Ray(Vec3(0, -0.5, -5), Vec3(0, 0, 1)));
+  REQUIRE(front.found);
+  CHECK(front.t == Approx(5.0 - std::sqrt(0.75)).epsilon(1e-12));
+  Seen face = look(world, Ray(Vec3(0, -0.5, 0), Vec3(0, 0, 1)));
+  REQUIRE(face.found);
+  CHECK(face.t == Approx(0.25).epsilon(1e-12));
+  checkNormal(face.ng, Vec3(0, 0, 1));
+  // From above, through the cut: the clip's plane bounds the intersection but shows
+  // nothing; the bowl's bottom does.
+  Seen down = look(world, Ray(Vec3(0, 5, 0), Vec3(0, -1, 0)));
+  REQUIRE(down.found);
+  CHECK(down.t == Approx(6.0).epsilon(1e-12));
+  checkNormal(down.ng, Vec3(0, -1, 0));
+}
+
+TEST_CASE("clip: a clipped subtrahend keeps its clip, as POV-Ray's inverted object does",
+          "[csg][clip]") {
+  // POV-Ray's difference is the intersection with the later operands inverted, and an
+  // inverted clipped object is inside where it is inside its clip and outside its shape:
+  // a slab minus the sphere clipped to y < 0 is what of the slab lies below y = 0 and
+  // outside the sphere. Where the clip bounds it no surface is drawn.
+  auto scene = parseClean(R"XML(
+    <difference>
+      <box min="-2 -0.5 -2" max="2 0.5 2"/>
+      <sphere radius="1"><clip><plane normal="0 1 0" offset="0"/></clip></sphere>
+    </difference>)XML");
+  World world(*scene);
+  // Beside the sphere, straight down: the slab's top (outside the clip) is gone and the
+  // cut at y = 0 shows nothing: the first surface is the slab's bottom, seen from inside.
+  Seen side = look(world, Ray(Vec3(1.5, 5, 0), Vec3(0, -1, 0)));
+  REQUIRE(side.found);
+  CHECK(side.t == Approx(5.5).epsilon(1e-12));
+  checkNormal(side.ng, Vec3(0, -1, 0));
+  // From the side at y = -0.25: the slab's face x = -2, then the sphere's surface (its
+  // normal flipped to face out of the result) where the ray enters the hole.
+  Seen face = look(world, Ray(Vec3(-5, -0.25, 0), Vec3(1, 0, 0)));
+  REQUIRE(face.found);
+  CHECK(face.t == Approx(3.0).epsilon(1e-12));
+  Seen hole = look(world, Ray(Vec3(-1.5, -0.25, 0), Vec3(1, 0, 0)));
+  REQUIRE(hole.found);
+  const double x = std::sqrt(1.0 - 0.0625);
+  CHECK(hole.t == Approx(1.5 - x).epsilon(1e-12));
+  checkNormal(hole.ng, Vec3(x, 0.25, 0));
+  // Down the axis nothing is met: the sphere fills the slab's height below the clip.
+  CHECK_FALSE(look(world, Ray(Vec3(0, 5, 0), Vec3(0, -1, 0))).found);
+}
+
+TEST_CASE("clip: the node's transform moves its clip with it", "[csg][clip]") {
+  auto scene = parseClean(R"XML(
+    <sphere radius="1" transform="translate(0 2 0)">
+      <clip><plane normal="0 1 0" offset="0"/></clip>
+    </sphere>)XML");
+  World world(*scene);
+  // Kept where y < 2 in the world.
+  Seen s = look(world, Ray(Vec3(0, 1.5, -5), Vec3(0, 0, 1)));
+  REQUIRE(s.found);
+  CHECK(s.t == Approx(5.0 - std::sqrt(0.75)).epsilon(1e-12));
+  CHECK_FALSE(look(world, Ray(Vec3(0, 2.5, -5), Vec3(0, 0, 1))).found);
+}
+
+TEST_CASE("clip: several solids clip as their intersection", "[csg][clip]") {
+  auto scene = parseClean(R"XML(
+    <sphere radius="1">
+      <clip><plane normal="0 1 0" offset="0"/><plane normal="1 0 0" offset="0"/></clip>
+    </sphere>)XML");
+  World world(*scene);
+  CHECK(look(world, Ray(Vec3(-0.5, -0.5, -5), Vec3(0, 0, 1))).found);
+  CHECK_FALSE(look(world, Ray(Vec3(0.5, -0.5, -5), Vec3(0, 0, 1))).found);
+  CHECK_FALSE(look(world, Ray(Vec3(-0.5, 0.5, -5), Vec3(0, 0, 1))).found);
+}
+
+TEST_CASE("bound: the object is searched only along rays that meet the bound", "[csg][bound]") {
+  // The unit sphere bounded by a sphere of radius 0.5 inside it.
+  auto scene = parseClean(R"XML(
+    <sphere radius="1"><bound><sphere radius="0.5"/></bound></sphere>)XML");
+  World world(*scene);
+  // A ray that misses the bound misses the object, though it crosses the object.
+  CHECK_FALSE(look(world, Ray(Vec3(0, 0.8, -5), Vec3(0, 0, 1))).found);
+  CHECK_FALSE(world.occluded(Ray(Vec3(0, 0.8, -5), Vec3(0, 0, 1), 0.0, 10.0)));
+  // One that meets it sees the whole object, its surface outside the bound too: the
+  // bound is a test of the ray, not a cut of the surface.
+  const Vec3 o(0, 0.9, -5), d(0, -0.09, 1);
+  const double a = glm::dot(d, d), b = glm::dot(o, d), c = glm::dot(o, o) - 1.0;
+  const double t = (-b - std::sqrt(b * b - a * c)) / a;
+  REQUIRE(glm::length(o + t * d) > 0.99);  // the hit lies far outside the bound
+  Seen s = look(world, Ray(o, d));
+  REQUIRE(s.found);
+  CHECK(s.t == Approx(t).epsilon(1e-12));
+  // A ray that starts inside the bound is let through, whichever way it goes.
+  Seen out = look(world, Ray(Vec3(0, 0, 0), Vec3(0, 1, 0)));
+  REQUIRE(out.found);
+  CHECK(out.t == Approx(1.0).epsilon(1e-12));
+}
+
+TEST_CASE("bound: in CSG a bounded solid the ray is turned from still counts inside",
+          "[csg][bound]") {
+  // POV-Ray's inside test ignores bounds: the box's face inside the bounded sphere is part
+  // of the intersection even along a ray that misses the bound (the sphere's own surface
+  // is not reported there).
+  auto scene = parseClean(R"XML(
+    <intersection>
+      <sphere radius="1"><bound><sphere radius="0.5"/></bound></sphere>
+      <box min="-2 -2 -2" max="2 2 0.25"/>
+    </intersection>)XML");
+  World world(*scene);
+  Seen s = look(world, Ray(Vec3(0, 0.8, -5), Vec3(0, 0, 1)));
+  REQUIRE(s.found);
+  CHECK(s.t == Approx(5.25).epsilon(1e-12));
+  checkNormal(s.ng, Vec3(0, 0, 1));
+}
