@@ -259,7 +259,7 @@ class SceneWriter {
       a.emplace_back("transform", transformText(glm::inverse(s.skyFromWorld), s.loc));
     out_.source(s.loc);
     out_.open("sky", a, false);
-    writePatternTexture(s.pattern, s.loc, out_);
+    for (const Texture& layer : s.layers) writeTexture(layer, s.loc, out_, "");
     out_.close("sky");
   }
 

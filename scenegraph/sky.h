@@ -5,10 +5,16 @@
 #include "material.h"
 #include "source_loc.h"
 
+#include <vector>
+
 namespace lucent {
 
+// Its layers: colour textures (<pattern>, <checker>, <hexagon>, <brick>) evaluated at the
+// direction, the last written on top. Where a layer's colour has filter or transmit, the
+// layers below it (and under the first, the background colour) show through, as POV-Ray
+// 3.7 composes a sky_sphere's pigments (render/sky_color.h).
 struct Sky {
-  PatternTexture pattern;
+  std::vector<Texture> layers;
   // The inverse of the sky's transform, applied to the unit direction as to a point (as
   // POV-Ray's sky_sphere does, so a translation moves the pattern too).
   Mat4 skyFromWorld{1.0};

@@ -185,6 +185,11 @@ std::shared_ptr<SceneItem> SceneReader::readItem(const Token& t, TokenStream& in
     item->camera.loc = first.loc();
     return item;
   }
+  if (isWord(first, "sky_sphere")) {
+    auto item = std::make_shared<SkySphereItem>();
+    item->sky = readSkySphereBlock(first.loc(), in);
+    return item;
+  }
   if (isWord(first, "pigment")) {
     auto item = std::make_shared<PigmentItem>();
     item->pigment = readPigment(in, defaults_.pigment);
@@ -443,6 +448,9 @@ void SceneReader::finishScene(TokenStream& in) {
     if (auto* p = std::get_if<PatternTexture>(&m.texture)) noise(p->pattern);
     if (m.normal) noise(m.normal->pattern);
   }
+  if (scene_.sky)
+    for (Texture& layer : scene_.sky->layers)
+      if (auto* p = std::get_if<PatternTexture>(&layer)) noise(p->pattern);
   // POV-Ray's fog turbulence always takes global_settings' noise generator.
   for (Fog& f : scene_.fogs)
     if (f.turbulence) f.turbulence->noiseGenerator = global_.noiseGenerator;
