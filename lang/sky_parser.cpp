@@ -7,7 +7,7 @@
 namespace lucent {
 
 void parseSky(ElementReader& r) {
-  r.checkAttributes({"transform"});
+  r.checkAttributes({"transform", "layering"});
   Scene& scene = r.ctx().scene;
   if (scene.sky) {
     r.error("a scene has one <sky> at most; the first is at " + scene.sky->loc.str());
@@ -16,6 +16,8 @@ void parseSky(ElementReader& r) {
   Sky sky;
   sky.loc = r.loc();
   sky.skyFromWorld = glm::inverse(r.transform("transform"));
+  sky.layering = r.choice("layering", SkyLayering::pov37,
+                          {{"pov-3.7", SkyLayering::pov37}, {"pov-3.6", SkyLayering::pov36}});
   bool wrongChild = false;
   const std::vector<std::string_view> kinds = textureElements();
   r.forEachChild([&](pugi::xml_node n) {

@@ -104,6 +104,10 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
     // The pigment is evaluated at the ray direction carried through the inverse of the
     // sky's transform, as Lucent's <sky>.
     // Its layers in order: POV-Ray's sky_sphere also puts the last pigment on top.
+    if (scene.sky->layering == SkyLayering::pov36 && scene.sky->layers.size() > 1)
+      issues.warning(scene.sky->loc,
+                     "sky: layering=\"pov-3.6\" is POV-Ray's only for scenes of #version 3.6 "
+                     "and earlier; the exported scene is 3.7's, which layers by its own rule");
     out.open("sky_sphere");
     for (const Texture& layer : scene.sky->layers) {
       std::visit(

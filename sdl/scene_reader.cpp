@@ -448,9 +448,13 @@ void SceneReader::finishScene(TokenStream& in) {
     if (auto* p = std::get_if<PatternTexture>(&m.texture)) noise(p->pattern);
     if (m.normal) noise(m.normal->pattern);
   }
-  if (scene_.sky)
+  if (scene_.sky) {
     for (Texture& layer : scene_.sky->layers)
       if (auto* p = std::get_if<PatternTexture>(&layer)) noise(p->pattern);
+    // POV-Ray layers a sky_sphere's pigments by the language version it renders with (the
+    // last #version): below 3.7, by its older rule.
+    if (in.languageVersion() < 3.7) scene_.sky->layering = SkyLayering::pov36;
+  }
   // POV-Ray's fog turbulence always takes global_settings' noise generator.
   for (Fog& f : scene_.fogs)
     if (f.turbulence) f.turbulence->noiseGenerator = global_.noiseGenerator;

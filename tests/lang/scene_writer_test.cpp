@@ -248,7 +248,8 @@ TEST_CASE("scene writer: a normal's keep-facing-away is written when true and re
 TEST_CASE("scene writer: filter and transmit of colours and the sky's layers read back",
           "[lang][scene-writer]") {
   const std::string first = written(
-      "<sky><pattern type=\"gradient\"/><checker transmit1=\"0.5\" filter2=\"0.25\"/></sky>"
+      "<sky layering=\"pov-3.6\"><pattern type=\"gradient\"/>"
+      "<checker transmit1=\"0.5\" filter2=\"0.25\"/></sky>"
       "<sphere><material><pattern type=\"bozo\"><color-map>"
       "<entry at=\"0\" color=\"1\" filter=\"0.125\" transmit=\"0.5\"/>"
       "<entry at=\"1\" color=\"0\"/></color-map></pattern></material></sphere>"
@@ -258,6 +259,7 @@ TEST_CASE("scene writer: filter and transmit of colours and the sky's layers rea
   CHECK(contains(first, "<entry at=\"1\" color=\"0 0 0\"/>"));  // nothing written for 0
   CHECK(contains(first, "transmit1=\"0.5\" filter2=\"0.25\""));
   CHECK(contains(first, "filter3=\"1\""));
+  CHECK(contains(first, "<sky layering=\"pov-3.6\">"));
   CHECK(contains(first, "transmit1=\"2\""));
   auto reread = parseSceneString(first, "writer.xml");
   REQUIRE(reread.scene);

@@ -86,6 +86,21 @@ TEST_CASE("a sky's layers: the upper ones' filter and transmit show the lower an
     CHECK(got.g == Approx(0.0).margin(1e-6));  // the opaque bottom layer hides the background
     CHECK(got.b == Approx(0.25).margin(1e-6));
   }
+  // POV-Ray's rule for #version 3.6 scenes: the bottom layer is weighted by the top's
+  // filter plus transmit (0.75), untinted: 0.75·gradient + 0.25·blue.
+  auto legacy = parse(R"XML(<render background="0 1 0"/><sky layering="pov-3.6">
+      <pattern type="gradient"><color-map><entry at="0" color="0 0 0"/><entry at="1" color="1 0 0"/></color-map></pattern>
+      <pattern type="gradient"><color-map><entry at="0" color="0 0 1" filter="0.25" transmit="0.5"/></color-map></pattern>
+    </sky>)XML");
+  World world3(*legacy);
+  for (double y : {0.2, 0.6}) {
+    const Vec3 d = glm::normalize(Vec3(std::sqrt(1 - y * y), y, 0));
+    const Color got = traceOne(world3, Ray(Vec3(0), d));
+    INFO("y = " << y);
+    CHECK(got.r == Approx(0.75 * y).margin(1e-5));
+    CHECK(got.g == Approx(0.0).margin(1e-6));
+    CHECK(got.b == Approx(0.25).margin(1e-6));
+  }
   // One layer with transmit: the background shows through it.
   auto single = parse(R"XML(<render background="0 1 0"/><sky>
       <checker color1="1 1 1" color2="1 1 1" transmit1="0.5" transmit2="0.5"/></sky>)XML");

@@ -408,6 +408,12 @@ TEST_CASE("scene reader textures: a sky_sphere's pigments become its layers, in 
   const auto& checker = std::get<CheckerTexture>(sky.layers[2]);
   CHECK(checker.ft1 == FilterTransmit{0.5f, 0.0f});
   CHECK(checker.ft2 == FilterTransmit{0.0f, 0.25f});
+  CHECK(sky.layering == SkyLayering::pov37);
+  // A scene of #version 3.6 layers by POV-Ray's older rule.
+  auto old = readScene("#version 3.6;\nsky_sphere { pigment { rgbt <1, 1, 1, 0.5> } }\n");
+  REQUIRE(old->load.scene);
+  REQUIRE(old->load.scene->sky);
+  CHECK(old->load.scene->sky->layering == SkyLayering::pov36);
   // rotate x*90 of POV-Ray's space: its +y goes to +z, Lucent's -z; the sky's inverse brings
   // Lucent's -z back to +y.
   const Vec3 up = Vec3(sky.skyFromWorld * Vec4(0.0, 0.0, -1.0, 0.0));
