@@ -78,6 +78,15 @@ PatternPlacement parsePlacement(ElementReader& r) {
   return p;
 }
 
+// A colour's filter and transmit, from the attributes filterN and transmitN (N "" for a
+// colour map's entry, "1", "2"... for a pattern's colour list).
+FilterTransmit parseFilterTransmit(ElementReader& r, const std::string& n) {
+  FilterTransmit ft;
+  ft.filter = static_cast<float>(r.number(("filter" + n).c_str(), 0.0));
+  ft.transmit = static_cast<float>(r.number(("transmit" + n).c_str(), 0.0));
+  return ft;
+}
+
 namespace {
 
 void parseValueAttributes(ElementReader& r, PatternSpec& s) {
@@ -104,7 +113,7 @@ ColorMap parseColorMap(ElementReader& r) {
       e.error("<color-map> holds <entry at color/> elements, not <" + std::string(n.name()) + ">");
       return;
     }
-    e.checkAttributes({"at", "color"});
+    e.checkAttributes({"at", "color", "filter", "transmit"});
     if (!e.has("at") || !e.has("color")) {
       e.error("<entry> needs 'at' (a value from 0 to 1) and 'color'");
       return;
@@ -112,6 +121,7 @@ ColorMap parseColorMap(ElementReader& r) {
     ColorMapEntry entry;
     entry.at = e.number("at", 0.0, NumberRule::between(0.0, 1.0, "a number from 0 to 1"));
     entry.color = e.color("color", entry.color);
+    entry.ft = parseFilterTransmit(e, "");
     noChildren(e);
     if (!map.entries.empty() && entry.at < map.entries.back().at) {
       e.attrError("at",
@@ -162,22 +172,29 @@ Texture parsePatternTexture(ElementReader& r) {
 }
 
 Texture parseHexagonTexture(ElementReader& r) {
-  r.checkAttributes(joined({"color1", "color2", "color3"}, kPlacementAttributes));
+  r.checkAttributes(joined({"color1", "color2", "color3", "filter1", "filter2", "filter3",
+                            "transmit1", "transmit2", "transmit3"},
+                           kPlacementAttributes));
   HexagonTexture t;
   t.placement = parsePlacement(r);
   t.spec.colors[0] = r.color("color1", t.spec.colors[0]);
   t.spec.colors[1] = r.color("color2", t.spec.colors[1]);
   t.spec.colors[2] = r.color("color3", t.spec.colors[2]);
+  for (int i = 0; i < 3; ++i) t.spec.ft[i] = parseFilterTransmit(r, std::to_string(i + 1));
   noChildren(r);
   return t;
 }
 
 Texture parseBrickTexture(ElementReader& r) {
-  r.checkAttributes(joined({"color1", "color2", "mortar", "size"}, kPlacementAttributes));
+  r.checkAttributes(
+      joined({"color1", "color2", "filter1", "filter2", "transmit1", "transmit2", "mortar", "size"},
+             kPlacementAttributes));
   BrickTexture t;
   t.placement = parsePlacement(r);
   t.spec.color1 = r.color("color1", t.spec.color1);
   t.spec.color2 = r.color("color2", t.spec.color2);
+  t.spec.ft1 = parseFilterTransmit(r, "1");
+  t.spec.ft2 = parseFilterTransmit(r, "2");
   t.spec.mortar = r.number("mortar", t.spec.mortar, NumberRule::nonNegative());
   const Vec3 size = r.vector("size", t.spec.size);
   if (size.x <= 0 || size.y <= 0 || size.z <= 0)

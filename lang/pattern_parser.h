@@ -21,6 +21,10 @@ std::optional<Vec3> parseTurbulenceStrength(ElementReader& r);
 // The placement attributes every pattern element takes (transform, turbulence, octaves,
 // omega, lambda), and their names.
 PatternPlacement parsePlacement(ElementReader& r);
+// A colour's filter and transmit from the attributes "filter" + n and "transmit" + n (any
+// number each, default 0).
+FilterTransmit parseFilterTransmit(ElementReader& r, const std::string& n);
+
 const std::vector<std::string_view>& placementAttributes();
 // <bump-map src depth>: src is resolved by the file-access rules, as <image>'s.
 BumpMapSpec parseBumpMap(ElementReader& r);

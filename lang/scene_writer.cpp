@@ -257,9 +257,10 @@ class SceneWriter {
     Attributes a;
     if (s.skyFromWorld != Mat4(1.0))
       a.emplace_back("transform", transformText(glm::inverse(s.skyFromWorld), s.loc));
+    if (s.layering == SkyLayering::pov36) a.emplace_back("layering", "pov-3.6");
     out_.source(s.loc);
     out_.open("sky", a, false);
-    writePatternTexture(s.pattern, s.loc, out_);
+    for (const Texture& layer : s.layers) writeTexture(layer, s.loc, out_, "");
     out_.close("sky");
   }
 

@@ -50,6 +50,14 @@ Attributes patternAttributes(const PatternSpec& s, const SourceLoc& loc) {
   return a;
 }
 
+// filterN and transmitN, written only when not 0 (a scene without them reads as before).
+void addFilterTransmit(const FilterTransmit& ft, const std::string& n, Attributes& a) {
+  if (ft.filter != 0.0f) a.emplace_back("filter" + n, xmlNumber(ft.filter));
+  if (ft.transmit != 0.0f) a.emplace_back("transmit" + n, xmlNumber(ft.transmit));
+}
+
+}  // namespace
+
 void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
                   const std::string& folder) {
   std::visit(
@@ -61,6 +69,8 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
           Attributes a{{"color1", xmlColor(t.color1)},
                        {"color2", xmlColor(t.color2)},
                        {"scale", xmlNumber(t.scale)}};
+          addFilterTransmit(t.ft1, "1", a);
+          addFilterTransmit(t.ft2, "2", a);
           addPlacement(t.placement, a);
           out.open(std::string(T::kind.element), a, true);
         } else if constexpr (std::is_same_v<T, ImageTexture>) {
@@ -74,6 +84,7 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
           Attributes a{{"color1", xmlColor(t.spec.colors[0])},
                        {"color2", xmlColor(t.spec.colors[1])},
                        {"color3", xmlColor(t.spec.colors[2])}};
+          for (int i = 0; i < 3; ++i) addFilterTransmit(t.spec.ft[i], std::to_string(i + 1), a);
           addPlacement(t.placement, a);
           out.open(std::string(T::kind.element), a, true);
         } else if constexpr (std::is_same_v<T, BrickTexture>) {
@@ -81,6 +92,8 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
                        {"color2", xmlColor(t.spec.color2)},
                        {"mortar", xmlNumber(t.spec.mortar)},
                        {"size", xmlVector(t.spec.size)}};
+          addFilterTransmit(t.spec.ft1, "1", a);
+          addFilterTransmit(t.spec.ft2, "2", a);
           addPlacement(t.placement, a);
           out.open(std::string(T::kind.element), a, true);
         } else {
@@ -93,15 +106,16 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
       texture);
 }
 
-}  // namespace
-
 void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out) {
   const Attributes a = patternAttributes(t.pattern, loc);
   if (t.map.entries.empty()) return out.open("pattern", a, true);
   out.open("pattern", a, false);
   out.open("color-map", {}, false);
-  for (const ColorMapEntry& e : t.map.entries)
-    out.open("entry", {{"at", xmlNumber(e.at)}, {"color", xmlColor(e.color)}}, true);
+  for (const ColorMapEntry& e : t.map.entries) {
+    Attributes entry{{"at", xmlNumber(e.at)}, {"color", xmlColor(e.color)}};
+    addFilterTransmit(e.ft, "", entry);
+    out.open("entry", entry, true);
+  }
   out.close("color-map");
   out.close("pattern");
 }

@@ -42,6 +42,10 @@ std::string fileReference(const std::string& resolvedPath, const std::string& fo
 Attributes materialAttributes(const Material& m);
 void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& folder);
 void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out);
+// A texture element (<checker>, <image>, <pattern>...); file references relative to
+// `folder`.
+void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
+                  const std::string& folder);
 
 // What a shape entry's finish() reads that the probe cannot learn (scene_writer_shapes.cpp):
 // attributes (lists, texts, files, a function, choices) and child elements (a blob's

@@ -1,11 +1,13 @@
-// <sky transform>: one <pattern> child, evaluated on ray directions (scenegraph/sky.h).
+// <sky transform>: colour textures evaluated on ray directions, layered (scenegraph/sky.h).
 #include "element_parsers.h"
-#include "pattern_parser.h"
+#include "texture_parser.h"
+
+#include <algorithm>
 
 namespace lucent {
 
 void parseSky(ElementReader& r) {
-  r.checkAttributes({"transform"});
+  r.checkAttributes({"transform", "layering"});
   Scene& scene = r.ctx().scene;
   if (scene.sky) {
     r.error("a scene has one <sky> at most; the first is at " + scene.sky->loc.str());
@@ -14,23 +16,25 @@ void parseSky(ElementReader& r) {
   Sky sky;
   sky.loc = r.loc();
   sky.skyFromWorld = glm::inverse(r.transform("transform"));
-  bool found = false, wrongChild = false;
+  sky.layering = r.choice("layering", SkyLayering::pov37,
+                          {{"pov-3.7", SkyLayering::pov37}, {"pov-3.6", SkyLayering::pov36}});
+  bool wrongChild = false;
+  const std::vector<std::string_view> kinds = textureElements();
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader c(r.ctx(), r.file(), n);
-    if (std::string_view(n.name()) != "pattern") {
+    const std::string_view name = n.name();
+    // Every colour texture but <image>, which needs a surface's (u,v).
+    if (name == "image" || std::find(kinds.begin(), kinds.end(), name) == kinds.end()) {
       wrongChild = true;
-      c.error("<sky> holds one <pattern> (with its <color-map>), not <" + std::string(n.name()) +
-              ">");
+      c.error(
+          "<sky> holds <pattern>, <checker>, <hexagon> or <brick> layers (the last on top), "
+          "not <" +
+          std::string(name) + ">");
       return;
     }
-    if (found) {
-      c.error("<sky> holds one <pattern>");
-      return;
-    }
-    found = true;
-    sky.pattern = std::get<PatternTexture>(parsePatternTexture(c));
+    sky.layers.push_back(parseTexture(c));
   });
-  if (!found && !wrongChild && !r.failed()) {
+  if (sky.layers.empty() && !wrongChild && !r.failed()) {
     r.error("<sky> needs a <pattern> child, e.g. <pattern type=\"gradient\"> with a <color-map>");
     return;
   }

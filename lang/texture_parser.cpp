@@ -10,13 +10,16 @@ namespace lucent {
 namespace {
 
 Texture readTexture(ElementReader& t, const CheckerTexture*) {
-  std::vector<std::string_view> attributes{"color1", "color2", "scale"};
+  std::vector<std::string_view> attributes{"color1",    "color2",    "filter1", "filter2",
+                                           "transmit1", "transmit2", "scale"};
   attributes.insert(attributes.end(), placementAttributes().begin(), placementAttributes().end());
   t.checkAttributes(attributes);
   CheckerTexture c;
   c.placement = parsePlacement(t);
   c.color1 = t.color("color1", c.color1);
   c.color2 = t.color("color2", c.color2);
+  c.ft1 = parseFilterTransmit(t, "1");
+  c.ft2 = parseFilterTransmit(t, "2");
   c.scale = t.number("scale", c.scale, NumberRule::positive());
   t.forEachChild([&](pugi::xml_node n) {
     ElementReader(t.ctx(), t.file(), n)

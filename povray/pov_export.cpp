@@ -8,6 +8,8 @@
 #include "pov_patterns.h"
 #include "pov_runner.h"
 
+#include "scenegraph/overloaded.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -101,8 +103,22 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   if (scene.sky) {
     // The pigment is evaluated at the ray direction carried through the inverse of the
     // sky's transform, as Lucent's <sky>.
+    // Its layers in order: POV-Ray's sky_sphere also puts the last pigment on top.
+    if (scene.sky->layering == SkyLayering::pov36 && scene.sky->layers.size() > 1)
+      issues.warning(scene.sky->loc,
+                     "sky: layering=\"pov-3.6\" is POV-Ray's only for scenes of #version 3.6 "
+                     "and earlier; the exported scene is 3.7's, which layers by its own rule");
     out.open("sky_sphere");
-    writePatternPigment(scene.sky->pattern, Vec3(1.0), 0.0, 0.0, out);
+    for (const Texture& layer : scene.sky->layers) {
+      std::visit(
+          Overloaded{
+              [&](const PatternTexture& t) { writePatternPigment(t, Vec3(1.0), 0.0, 0.0, out); },
+              [&](const CheckerTexture& t) { writeCheckerPigment(t, Vec3(1.0), 0.0, 0.0, out); },
+              [&](const HexagonTexture& t) { writeHexagonPigment(t, Vec3(1.0), 0.0, 0.0, out); },
+              [&](const BrickTexture& t) { writeBrickPigment(t, Vec3(1.0), 0.0, 0.0, out); },
+              [](const auto&) {}},  // the parser takes no other layer
+          layer);
+    }
     const Mat4 worldFromSky = glm::inverse(scene.sky->skyFromWorld);
     if (worldFromSky != Mat4(1.0)) out.line(povMatrix(worldFromSky));
     out.close();

@@ -139,6 +139,15 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
     }
   }
   s.diffuse = a > 0.0 ? d / a : 0.0;
+  // A see-through texture: POV-Ray lets P·f + t through, P = pigmentScale·C, and scales the
+  // local terms by 1 - f - t of each colour plus the material's own; Lucent lets C·f + t
+  // through and scales k_t too (docs/scene-language.md, "Filter and transmit").
+  if (textureSeeThrough(m.texture) && (!isZero(kt) || s.pigmentScale != Vec3(1.0)))
+    issues.warning(m.loc, fmt::format("{}: a texture with filter or transmit on a material with "
+                                      "transmissive or a coloured diffuse: POV-Ray lets through "
+                                      "the pigment (diffuse colour included) and adds the "
+                                      "material's transmit to each colour's",
+                                      name));
 
   // Ambient and emission are multiplied by P·a in POV-Ray.
   if (!filterOnly) {
@@ -344,28 +353,7 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, con
   auto pigment = Overloaded{
       [&](std::monostate) { plain(); },
       [&](const CheckerTexture& checker) {
-        // Cells of edge `scale`; the cell [0, scale)^3 has the first colour, as in Lucent.
-        out.open("pigment");
-        out.line(std::string(CheckerTexture::kind.pov));
-        out.line(povRgbft(s.pigmentScale * v3(checker.color1), s.filter, s.transmit) + ",");
-        out.line(povRgbft(s.pigmentScale * v3(checker.color2), s.filter, s.transmit));
-        // The cells scale in pattern space, which the placement then carries onto the shape.
-        const PatternPlacement& p = checker.placement;
-        if (checker.scale != 1.0 && p.turbulence != Vec3(0.0)) {
-          // Lucent turbulates before the cells' scale; POV-Ray's classic turbulence would
-          // come after it. A warp between them keeps Lucent's order (POV-Ray applies the
-          // transforms and warps written last first).
-          out.line("scale " + povNumber(checker.scale));
-          out.line("warp { turbulence " + povVector(p.turbulence) + " octaves " +
-                   std::to_string(p.octaves) + " omega " + povNumber(p.omega) + " lambda " +
-                   povNumber(p.lambda) + " }");
-          if (p.patternFromObject != Mat4(1.0))
-            out.line(povMatrix(glm::inverse(p.patternFromObject)));
-        } else {
-          if (checker.scale != 1.0) out.line("scale " + povNumber(checker.scale));
-          writePlacement(p, out);
-        }
-        out.close();
+        writeCheckerPigment(checker, s.pigmentScale, s.filter, s.transmit, out);
       },
       [&](const ImageTexture& image) {
         if (!mapping) return plain();

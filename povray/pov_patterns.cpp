@@ -58,8 +58,10 @@ void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
   if (s.noiseGenerator != 2) out.line("noise_generator " + std::to_string(s.noiseGenerator));
 }
 
-std::string colour(const Color& c, const Vec3& scale, double filter, double transmit) {
-  return povRgbft(scale * Vec3(c.r, c.g, c.b), filter, transmit);
+// A colour of the pattern with its own filter and transmit added to the material's.
+std::string colour(const Color& c, const FilterTransmit& ft, const Vec3& scale, double filter,
+                   double transmit) {
+  return povRgbft(scale * Vec3(c.r, c.g, c.b), filter + ft.filter, transmit + ft.transmit);
 }
 
 }  // namespace
@@ -70,15 +72,40 @@ void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filt
   out.line(patternKeyword(t.pattern));
   out.open("color_map");
   if (t.map.entries.empty()) {
-    out.line("[0 " + colour(Color(0.0f), scale, filter, transmit) + "]");
-    out.line("[1 " + colour(Color(1.0f), scale, filter, transmit) + "]");
+    out.line("[0 " + colour(Color(0.0f), {}, scale, filter, transmit) + "]");
+    out.line("[1 " + colour(Color(1.0f), {}, scale, filter, transmit) + "]");
   } else {
     for (const ColorMapEntry& e : t.map.entries)
-      out.line("[" + povNumber(e.at) + " " + colour(e.color, scale, filter, transmit) + "]");
+      out.line("[" + povNumber(e.at) + " " + colour(e.color, e.ft, scale, filter, transmit) + "]");
   }
   out.close();
   writeValueModifiers(t.pattern, out);
   writePlacement(t.pattern.placement, out);
+  out.close();
+}
+
+void writeCheckerPigment(const CheckerTexture& checker, const Vec3& scale, double filter,
+                         double transmit, PovWriter& out) {
+  // Cells of edge `scale`; the cell [0, scale)^3 has the first colour, as in Lucent.
+  out.open("pigment");
+  out.line(std::string(CheckerTexture::kind.pov));
+  out.line(colour(checker.color1, checker.ft1, scale, filter, transmit) + ",");
+  out.line(colour(checker.color2, checker.ft2, scale, filter, transmit));
+  // The cells scale in pattern space, which the placement then carries onto the shape.
+  const PatternPlacement& p = checker.placement;
+  if (checker.scale != 1.0 && p.turbulence != Vec3(0.0)) {
+    // Lucent turbulates before the cells' scale; POV-Ray's classic turbulence would
+    // come after it. A warp between them keeps Lucent's order (POV-Ray applies the
+    // transforms and warps written last first).
+    out.line("scale " + povNumber(checker.scale));
+    out.line("warp { turbulence " + povVector(p.turbulence) + " octaves " +
+             std::to_string(p.octaves) + " omega " + povNumber(p.omega) + " lambda " +
+             povNumber(p.lambda) + " }");
+    if (p.patternFromObject != Mat4(1.0)) out.line(povMatrix(glm::inverse(p.patternFromObject)));
+  } else {
+    if (checker.scale != 1.0) out.line("scale " + povNumber(checker.scale));
+    writePlacement(p, out);
+  }
   out.close();
 }
 
@@ -87,7 +114,7 @@ void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filt
   out.open("pigment");
   out.line(std::string(HexagonTexture::kind.pov));
   for (int i = 0; i < 3; ++i)
-    out.line(colour(t.spec.colors[i], scale, filter, transmit) + (i < 2 ? "," : ""));
+    out.line(colour(t.spec.colors[i], t.spec.ft[i], scale, filter, transmit) + (i < 2 ? "," : ""));
   writePlacement(t.placement, out);
   out.close();
 }
@@ -96,8 +123,8 @@ void writeBrickPigment(const BrickTexture& t, const Vec3& scale, double filter, 
                        PovWriter& out) {
   out.open("pigment");
   out.line(std::string(BrickTexture::kind.pov));
-  out.line(colour(t.spec.color1, scale, filter, transmit) + ",");
-  out.line(colour(t.spec.color2, scale, filter, transmit));
+  out.line(colour(t.spec.color1, t.spec.ft1, scale, filter, transmit) + ",");
+  out.line(colour(t.spec.color2, t.spec.ft2, scale, filter, transmit));
   out.line("brick_size " + povVector(t.spec.size) + " mortar " + povNumber(t.spec.mortar));
   writePlacement(t.placement, out);
   out.close();

@@ -12,8 +12,10 @@
 namespace lucent {
 
 // `scale` multiplies every colour (the diffuse colour the pigment carries); filter and
-// transmit are written into each colour.
+// transmit are written into each colour, plus the colour's own (FilterTransmit).
 void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filter, double transmit,
+                         PovWriter& out);
+void writeCheckerPigment(const CheckerTexture& t, const Vec3& scale, double filter, double transmit,
                          PovWriter& out);
 void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filter, double transmit,
                          PovWriter& out);

@@ -15,10 +15,11 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <stdexcept>
 
 namespace lucent {
 
-Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec3& pError) {
+int checkerIndex(const CheckerTexture& checker, const Vec3& pObject, const Vec3& pError) {
   Vec3 q = pObject / checker.scale;
   Vec3 err = pError / checker.scale;
   // A surface lying on a cell boundary (a floor at y = 0) must fall on one side for every
@@ -32,7 +33,11 @@ Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec
     double nudge = std::max(64.0 * kMachineEps * magnitude, 4.0 * err[i]);
     sum += static_cast<long>(std::floor(q[i] + nudge));
   }
-  return (sum & 1) == 0 ? checker.color1 : checker.color2;
+  return static_cast<int>(sum & 1);
+}
+
+Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec3& pError) {
+  return checkerIndex(checker, pObject, pError) == 0 ? checker.color1 : checker.color2;
 }
 
 struct ImageMap::Impl {
@@ -125,6 +130,57 @@ void checkImageTextures(const std::vector<Material>& materials) {
 
 namespace {
 
+// The world error bound of the hit point carried back into object space (|M^-1| applied
+// to it).
+Vec3 objectError(const SurfaceInfo& surface, const Instance& leaf) {
+  const Mat4& m = leaf.transform().objectFromWorld();
+  Vec3 err(0.0);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) err[r] += std::abs(m[c][r]) * surface.pError[c];
+  return err;
+}
+
+// The checker's cell (0: color1's) at an object point with its error bound.
+int checkerCell(const CheckerTexture& checker, const Vec3& pObject, const Vec3& err) {
+  const PatternPlacement& place = checker.placement;
+  if (place.patternFromObject == Mat4(1.0) && place.turbulence == Vec3(0.0))
+    return checkerIndex(checker, pObject, err);
+  // Placed: the point and its error bound carried into pattern space (turbulence moves
+  // the point by a smooth displacement, which leaves the bound as it is).
+  const Mat4& p = place.patternFromObject;
+  Vec3 patternErr(0.0);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) patternErr[r] += std::abs(p[c][r]) * err[c];
+  return checkerIndex(checker, warpPoint(place, pObject), patternErr);
+}
+
+// The colour, filter and transmit of each kind of texture at an object point.
+struct PigmentAt {
+  const Vec3& p;
+  const Vec3& err;
+
+  PigmentColor operator()(std::monostate) const { return {}; }
+  PigmentColor operator()(const ImageTexture&) const {
+    throw std::logic_error("an image texture has no colour at a point without (u,v)");
+  }
+  PigmentColor operator()(const CheckerTexture& checker) const {
+    return checkerCell(checker, p, err) == 0 ? PigmentColor{checker.color1, checker.ft1}
+                                             : PigmentColor{checker.color2, checker.ft2};
+  }
+  PigmentColor operator()(const PatternTexture& pattern) const {
+    return lookupColorMapFT(pattern.map, patternValue(pattern.pattern, p));
+  }
+  PigmentColor operator()(const HexagonTexture& hexagon) const {
+    const int i = hexagonIndex(warpPoint(hexagon.placement, p));
+    return {hexagon.spec.colors[i], hexagon.spec.ft[i]};
+  }
+  PigmentColor operator()(const BrickTexture& brick) const {
+    const BrickSpec& b = brick.spec;
+    return brickIndex(b, warpPoint(brick.placement, p)) == 0 ? PigmentColor{b.color1, b.ft1}
+                                                             : PigmentColor{b.color2, b.ft2};
+  }
+};
+
 // The colour of each kind of texture at a surface point: std::visit needs every kind.
 struct TextureColour {
   const std::shared_ptr<const ImageMap>& map;
@@ -133,21 +189,8 @@ struct TextureColour {
 
   Color operator()(std::monostate) const { return Color(1.0f); }
   Color operator()(const CheckerTexture& checker) const {
-    // The world error bound carried back into object space (|M^-1| applied to it).
-    const Mat4& m = leaf.transform().objectFromWorld();
-    Vec3 err(0.0);
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) err[r] += std::abs(m[c][r]) * surface.pError[c];
-    const PatternPlacement& place = checker.placement;
-    if (place.patternFromObject == Mat4(1.0) && place.turbulence == Vec3(0.0))
-      return checkerColor(checker, surface.pObject, err);
-    // Placed: the point and its error bound carried into pattern space (turbulence moves
-    // the point by a smooth displacement, which leaves the bound as it is).
-    const Mat4& p = place.patternFromObject;
-    Vec3 patternErr(0.0);
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) patternErr[r] += std::abs(p[c][r]) * err[c];
-    return checkerColor(checker, warpPoint(place, surface.pObject), patternErr);
+    return checkerCell(checker, surface.pObject, objectError(surface, leaf)) == 0 ? checker.color1
+                                                                                  : checker.color2;
   }
   Color operator()(const ImageTexture& image) const {
     // A shape without (u,v) reads the image at (0,0): one flat colour.
@@ -165,6 +208,17 @@ struct TextureColour {
 };
 
 }  // namespace
+
+PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& pError) {
+  return std::visit(PigmentAt{pObject, pError}, texture);
+}
+
+PigmentColor TextureSet::evalPigment(uint32_t index, const Material& material,
+                                     const SurfaceInfo& surface, const Instance& leaf) const {
+  if (const auto* image = std::get_if<ImageTexture>(&material.texture))
+    return {maps_[index]->lookup(surface.hasUV ? surface.uv : Vec2(0.0), image->scale), {}};
+  return pigmentAt(material.texture, surface.pObject, objectError(surface, leaf));
+}
 
 Color TextureSet::eval(uint32_t index, const Material& material, const SurfaceInfo& surface,
                        const Instance& leaf) const {

@@ -23,6 +23,12 @@ namespace lucent {
 // object units) but by no less than 1e-9 of the point's magnitude, so a plane y = 0 whose
 // computed hit lies a hair below 0 still shows the cell above it.
 Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec3& pError);
+// The same cell as 0 (color1's) or 1 (color2's).
+int checkerIndex(const CheckerTexture& checker, const Vec3& pObject, const Vec3& pError);
+
+// The colour with its filter and transmit of a texture other than an image at an object
+// point (pError: its error bound, as checkerColor's). A point with no texture is white.
+PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& pError);
 
 // An image looked up bilinearly at (u, v), repeating outside [0,1]^2 (v = 0 is the
 // bottom row of the image, v = 1 the top, as in OpenGL and Mitsuba). 8-bit images and
@@ -66,6 +72,11 @@ class TextureSet {
   // The texture colour T of material `index` at the hit (1 for a material without one).
   Color eval(uint32_t index, const Material& material, const SurfaceInfo& surface,
              const Instance& leaf) const;
+
+  // The same with the colour's filter and transmit (an image's are 0): for the materials
+  // whose texture is see-through (textureSeeThrough), which alone pay for it.
+  PigmentColor evalPigment(uint32_t index, const Material& material, const SurfaceInfo& surface,
+                           const Instance& leaf) const;
 
   // The <bump-map> image of material `index` (stored values), null if it has none.
   const ImageMap* bumpMap(uint32_t index) const { return bumpMaps_[index].get(); }

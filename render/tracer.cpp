@@ -5,6 +5,7 @@
 #include "fog.h"
 #include "optics.h"
 #include "sampling.h"
+#include "see_through.h"
 #include "shading_normal.h"
 #include "sky_color.h"
 #include "spawn.h"
@@ -42,6 +43,7 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
       fogs_(world.scene().fogs),
       textures_(world.scene().materials, textures) {
   for (const Material& m : world.scene().materials) {
+    seeThrough_.push_back(textureSeeThrough(m.texture));
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
     anyAbsorbing_ = anyAbsorbing_ || (m.attenuates() && m.isTransmissive());
   }
@@ -86,19 +88,31 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     ++stats.queries;
     if (!world_.intersect(ray, hit)) return sum + throughput * escaped(ray, media);
 
-    const WorldLeaf& leaf = hit.leaf();
-    const Material& m = *leaf.material;
+    const WorldLeaf& hitLeaf = hit.leaf();
     const SurfaceInfo s = hit.surface(ray);
+    // A see-through texture: the material as it is at this point (render/see_through.h);
+    // every other material is shaded as it is, with no copy.
+    std::optional<Material> seen;
+    std::optional<WorldLeaf> seenLeaf;
+    if (seeThrough_[hitLeaf.materialIndex]) {
+      const Material& own = *hitLeaf.material;
+      seen.emplace(materialThrough(
+          own, textures_.evalPigment(hitLeaf.materialIndex, own, s, *hitLeaf.instance)));
+      seenLeaf.emplace(hitLeaf);
+      seenLeaf->material = &*seen;
+    }
+    const WorldLeaf& leaf = seenLeaf ? *seenLeaf : hitLeaf;
+    const Material& m = *leaf.material;
     const bool solid = leaf.medium != nullptr;  // the leaf bounds a medium (its material)
     const bool front = glm::dot(ray.d, s.ng) < 0.0;
     const bool leaving = solid && !front;  // the ray was inside this solid
-    travelled(ray, hit.t(), leaving ? &m : nullptr, media, sum, throughput);
+    travelled(ray, hit.t(), leaving ? hitLeaf.material : nullptr, media, sum, throughput);
 
     const Vec3 v = -glm::normalize(ray.d);
     Vec3 unbent;
     const Vec3 n = shadingNormal(leaf, s, front, v, unbent);
     Color result = localLight(leaf, s, n, v, leaving, media, seed, context);
-    const Interface side = interfaceAt(m, solid, front, media);
+    const Interface side = interfaceAt(*hitLeaf.material, m.transmissive, solid, front, media);
     const SecondaryRays rays =
         secondaryRays(m, ShadingPoint{s.p, n, v}, solid, side.n1, side.n2, reflectionTint(leaf, s));
     // A bent normal may send the mirror ray below the surface: it is turned back (with
@@ -120,7 +134,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
 }
 
 Color Tracer::escaped(const Ray& ray, const MediaStack& media) const {
-  Color background = sky_ ? skyColor(*sky_, ray.d) : settings_.background;
+  Color background = sky_ ? skyColor(*sky_, ray.d, settings_.background) : settings_.background;
   if (const Material* medium = media.top(); medium && medium->attenuates())
     background *= interiorAttenuation(*medium, kInf, false);
   if (!fogs_.empty() && media.allHollow())
@@ -191,11 +205,11 @@ Color Tracer::localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3
   return local;
 }
 
-Tracer::Interface Tracer::interfaceAt(const Material& m, bool solid, bool front,
-                                      const MediaStack& media) const {
+Tracer::Interface Tracer::interfaceAt(const Material& m, const Color& transmits, bool solid,
+                                      bool front, const MediaStack& media) const {
   Interface side{1.0, 1.0, media};
   // Only a material that transmits or splits by Fresnel needs the indices.
-  if (!anyPositive(m.transmissive) && !(m.fresnel && anyPositive(m.reflective))) return side;
+  if (!anyPositive(transmits) && !(m.fresnel && anyPositive(m.reflective))) return side;
   if (!solid || front) {
     side.n1 = media.ior();
     side.n2 = m.ior;
@@ -372,7 +386,13 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
     if (!world_.intersectTransmissive(ray, hit)) break;
     const WorldLeaf& leaf = hit.leaf();
     if (!leaf.transmissive) return Color(0.0f);
-    t *= leaf.material->transmissive;
+    if (seeThrough_[leaf.materialIndex]) {
+      const Material& own = *leaf.material;
+      t *= transmittedThrough(
+          own, textures_.evalPigment(leaf.materialIndex, own, hit.surface(ray), *leaf.instance));
+    } else {
+      t *= leaf.material->transmissive;
+    }
     if (anyAbsorbing_) {
       // A solid's medium is its material.
       bool leaving = false;

@@ -86,11 +86,13 @@ class Tracer {
                    TraceContext& context) const;
   // The indices of refraction on the viewer's side and beyond a surface, and the media
   // beyond it (both indices 1 for a material that neither transmits nor splits by Fresnel).
+  // `transmits`: what m lets through at this point (its k_t, or a see-through texture's).
   struct Interface {
     double n1 = 1.0, n2 = 1.0;
     MediaStack beyond;
   };
-  Interface interfaceAt(const Material& m, bool solid, bool front, const MediaStack& media) const;
+  Interface interfaceAt(const Material& m, const Color& transmits, bool solid, bool front,
+                        const MediaStack& media) const;
   // `result` plus the bent transmitted ray and the mirror ray, each traced one level
   // deeper when its weight and the depth allow.
   // `mirror`: the mirror ray's unit direction.
@@ -125,6 +127,7 @@ class Tracer {
   // them. Empty for a jittered area light, whose targets differ per point.
   std::vector<std::vector<Vec3>> fixedTargets_;
   TextureSet textures_;
+  std::vector<char> seeThrough_;  // per material: textureSeeThrough (evaluated per hit)
   bool anyTransmissive_ = false;  // else shadow rays ask only the any-hit question
   bool anyAbsorbing_ = false;     // else shadow rays need no media bookkeeping
   // What this tracer's entries in a ShadowCache carry (unique in the process). Copies

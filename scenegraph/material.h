@@ -78,7 +78,11 @@ struct Material {
   std::optional<BumpMapSpec> bumpMap;
 
   bool hasTexture() const { return !std::holds_alternative<std::monostate>(texture); }
-  bool isTransmissive() const { return maxComponent(transmissive) > 0.0f; }
+  // k_t above 0, or a texture colour with filter or transmit (which lets light through
+  // where the texture takes it).
+  bool isTransmissive() const {
+    return maxComponent(transmissive) > 0.0f || textureSeeThrough(texture);
+  }
   bool isReflective() const { return maxComponent(reflective) > 0.0f; }
   bool isAbsorbing() const { return maxComponent(absorption) > 0.0f; }
   bool hasFade() const { return fadeDistance > 0.0; }

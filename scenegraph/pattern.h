@@ -140,25 +140,59 @@ struct PatternSpec {
   WaveShape waveShape() const { return wave ? *wave : patternTypeInfo(type).wave; }
 };
 
-// A colour map: entries sorted by `at`, colours interpolated linearly between them and
-// constant beyond the ends. An empty map is POV-Ray's grey map [0 black][1 white].
+// POV-Ray's filter and transmit of a pattern's colour (the f and t of its rgbft): where
+// the texture takes such a colour the surface lets light through, tinted by the colour
+// (filter) or not (transmit), and its own light is scaled by 1 - filter - transmit
+// (docs/scene-language.md, "Filter and transmit"). Both 0: an opaque colour.
+struct FilterTransmit {
+  float filter = 0.0f;
+  float transmit = 0.0f;
+  bool any() const { return filter != 0.0f || transmit != 0.0f; }
+  bool operator==(const FilterTransmit& o) const {
+    return filter == o.filter && transmit == o.transmit;
+  }
+  bool operator!=(const FilterTransmit& o) const { return !(*this == o); }
+};
+
+// A texture's colour at a point with its filter and transmit (POV-Ray's RGBFT colour).
+struct PigmentColor {
+  Color rgb{1.0f};
+  FilterTransmit ft;
+};
+
+// A colour map: entries sorted by `at`, colours (and filter and transmit) interpolated
+// linearly between them and constant beyond the ends. An empty map is POV-Ray's grey map
+// [0 black][1 white].
 struct ColorMapEntry {
+  ColorMapEntry() = default;
+  ColorMapEntry(double at_, const Color& color_, const FilterTransmit& ft_ = {})
+      : at(at_), color(color_), ft(ft_) {}
   double at = 0.0;
   Color color{0.0f};
+  FilterTransmit ft;
 };
 struct ColorMap {
   std::vector<ColorMapEntry> entries;
+  // Some entry has a filter or a transmit: only then is the map looked up with them.
+  bool seeThrough() const {
+    for (const ColorMapEntry& e : entries)
+      if (e.ft.any()) return true;
+    return false;
+  }
 };
 
 // POV-Ray's hexagon: three colours on hexagons in the x-z plane (defaults as POV-Ray's).
 struct HexagonSpec {
   Color colors[3] = {Color(0.0f, 0.0f, 1.0f), Color(0.0f, 1.0f, 0.0f), Color(1.0f, 0.0f, 0.0f)};
+  FilterTransmit ft[3] = {};
+  bool seeThrough() const { return ft[0].any() || ft[1].any() || ft[2].any(); }
 };
 
 // POV-Ray's brick: color1 is the mortar, color2 the brick (defaults as POV-Ray's).
 struct BrickSpec {
   Color color1{0.5f, 0.5f, 0.5f};
   Color color2{0.6f, 0.15f, 0.15f};
+  FilterTransmit ft1{}, ft2{};
   double mortar = 0.5;
   Vec3 size{8.0, 3.0, 4.5};
 };

@@ -34,6 +34,7 @@ struct CheckerTexture {
   Color color2{0.0f};
   double scale = 1.0;
   PatternPlacement placement;
+  FilterTransmit ft1{}, ft2{};  // color1's and color2's
 };
 
 // <image src scale>: an image looked up with the shape's (u,v). The pixels are loaded by
@@ -77,6 +78,16 @@ struct BrickTexture {
 // (docs/architecture.md).
 using Texture = std::variant<std::monostate, CheckerTexture, ImageTexture, PatternTexture,
                              HexagonTexture, BrickTexture>;
+
+// Some colour of the texture has a filter or a transmit (the surface then lets light
+// through where it takes it).
+inline bool textureSeeThrough(const Texture& t) {
+  if (const auto* p = std::get_if<PatternTexture>(&t)) return p->map.seeThrough();
+  if (const auto* c = std::get_if<CheckerTexture>(&t)) return c->ft1.any() || c->ft2.any();
+  if (const auto* h = std::get_if<HexagonTexture>(&t)) return h->spec.seeThrough();
+  if (const auto* b = std::get_if<BrickTexture>(&t)) return b->spec.ft1.any() || b->spec.ft2.any();
+  return false;
+}
 
 // Every kind of texture, in Texture's order (monostate, no texture, left out).
 template <class... Kinds>

@@ -70,8 +70,9 @@ MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish
   Material& m = out.material;
   std::vector<std::string>& notes = out.differences;
   // A pattern pigment is Lucent's texture, which multiplies diffuse and ambient where it
-  // is evaluated (its filter is 0 and its transmit one for all colours: the reader
-  // refuses other colour maps).
+  // is evaluated. Its filter and transmit here are those every colour shares (a transmit,
+  // no filter); any other stays with each colour of the texture, which then scales the
+  // local terms and transmits point by point (render/see_through.h).
   const bool patterned = pigment.patterned();
   const Color p = patterned ? Color(1.0f) : pigment.color;
   m.texture = pigment.pattern;

@@ -11,8 +11,8 @@
 
 namespace lucent::sdl {
 
-// A colour map's entry as written, with its filter and transmit (Lucent's colour maps
-// hold colours: a pattern pigment takes them only when every entry has the same).
+// A colour map's entry as written, with its filter and transmit (kept per colour unless
+// every entry has the same transmit and no filter: then they are the pigment's).
 struct PovColorMapEntry {
   double at = 0.0;
   Color color{0.0f};

@@ -30,24 +30,28 @@ SkyImport importSkySphere(const PovSkySphere& pov) {
     out.error = "sky_sphere: a sky_sphere needs a pigment";
     return out;
   }
-  if (pov.pigments.size() > 1)
-    out.differences.push_back(fmt::format(
-        "sky_sphere: {} pigments are layered in POV-Ray (the upper ones' filter and transmit "
-        "show the lower); Lucent's sky has one: the first is imported",
-        pov.pigments.size()));
-  const PovSkyGradient& g = pov.pigments.front();
   Sky sky;
   sky.loc = pov.loc;
-  sky.pattern.pattern.type = PatternType::gradient;
-  // The gradient's axis and the transforms carried into Lucent's space, so that the
-  // pattern of a Lucent direction S·d is POV-Ray's of d.
-  sky.pattern.pattern.axis = lucentFromPov(g.axis);
-  sky.pattern.map.entries = g.colorMap;
-  // The pigment's transforms, then the sky_sphere's: both move the pattern over the
-  // directions (POV-Ray evaluates the sky at the unit direction taken as a point).
-  const PovTransform worldFromSky = g.transform.then(pov.transform);
-  sky.skyFromWorld = glm::inverse(worldFromSky.lucentMatrix());
-  out.sky = sky;
+  // The direction is carried through the inverse of the sky_sphere's transforms (in
+  // Lucent's space), then each layer's placement takes it to POV-Ray's space (S) and
+  // through the inverse of the pigment's own transforms: the point POV-Ray evaluates.
+  sky.skyFromWorld = glm::inverse(pov.transform.lucentMatrix());
+  Mat4 povFromLucent(1.0);
+  povFromLucent[2][2] = -1.0;
+  for (const PovPigment& p : pov.pigments) {
+    Texture layer = p.pattern;
+    if (!p.patterned()) {
+      // A plain colour: a one-entry map (the same colour at every value).
+      PatternTexture plain;
+      plain.pattern.type = PatternType::gradient;
+      plain.map.entries = {{0.0, p.color, {p.filter, p.transmit}}};
+      layer = plain;
+    }
+    if (PatternPlacement* place = placementOf(layer))
+      place->patternFromObject = glm::inverse(p.transform.povMatrix()) * povFromLucent;
+    sky.layers.push_back(std::move(layer));
+  }
+  out.sky = std::move(sky);
   return out;
 }
 

@@ -2,6 +2,7 @@
 // Lucent scene settings they make (docs/povray-import.md, "Scene settings").
 #pragma once
 
+#include "pov_finish.h"
 #include "pov_space.h"
 
 #include "scenegraph/fog.h"
@@ -31,16 +32,11 @@ struct PovBackground {
   Color color{0.0f};
 };
 
-// One `pigment { gradient <axis> color_map { [at colour] ... } }` of a sky_sphere: the
-// kind of sky Lucent's <sky> holds (a pattern of the ray's direction).
-struct PovSkyGradient {
-  Vec3 axis{0.0, 1.0, 0.0};
-  std::vector<ColorMapEntry> colorMap;  // empty: POV-Ray's grey map
-  PovTransform transform;               // the pigment's own transforms
-};
+// `sky_sphere { pigment {...} ... transforms }`: each pigment a layer of Lucent's <sky>,
+// the last on top, as POV-Ray layers them.
 struct PovSkySphere {
-  std::vector<PovSkyGradient> pigments;  // POV-Ray layers several; Lucent takes one
-  PovTransform transform;                // the sky_sphere's own transforms
+  std::vector<PovPigment> pigments;
+  PovTransform transform;  // the sky_sphere's own transforms
   SourceLoc loc;
 };
 

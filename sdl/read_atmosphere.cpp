@@ -1,4 +1,4 @@
-// What surrounds the objects: fog and sky_sphere (a gradient pigment with a colour map).
+// What surrounds the objects: fog and sky_sphere (its pigments, layered).
 #include "read_support.h"
 #include "scene_reader.h"
 
@@ -60,48 +60,31 @@ void SceneReader::readFog(const SourceLoc& loc, TokenStream& in) {
   scene_.fogs.push_back(*imported.fog);
 }
 
-void SceneReader::readSkySphere(const SourceLoc& loc, TokenStream& in) {
+PovSkySphere SceneReader::readSkySphereBlock(const SourceLoc& loc, TokenStream& in) {
   PovSkySphere sky;
-  sky.loc = loc;
   in.expect("{");
+  if (const auto* item = use<SkySphereItem>(in.peek(), in)) {
+    in.next();
+    sky = item->sky;  // its pigments and transforms; what follows adds to them
+  }
+  sky.loc = loc;
   for (;;) {
     const Token t = in.next();
     if (t.is("}")) break;
     if (readTransform(t, in, sky.transform)) continue;
-    if (!isWord(t, "pigment")) {
-      unreadInBlock(t, in);
-      return;
+    if (isWord(t, "pigment")) {
+      // POV-Ray's sky pigments start from its plain black pigment, not the #default.
+      sky.pigments.push_back(readPigment(in, PovPigment{}));
+      continue;
     }
-    PovSkyGradient g;
-    in.expect("{");
-    bool gradient = false;
-    for (;;) {
-      const Token k = in.next();
-      if (k.is("}")) break;
-      if (readTransform(k, in, g.transform)) continue;
-      if (isWord(k, "gradient")) {
-        gradient = true;
-        g.axis = toVec3(in.parseVector());
-      } else if (isColourStart(k)) {
-        // A solid colour: the same colour along any gradient (a one-entry map).
-        in.unget();
-        gradient = true;
-        g.colorMap = {{0.0, readColour(in).rgb}};
-      } else if (isWord(k, "color_map") || isWord(k, "colour_map")) {
-        SourceLoc mapLoc = k.loc();
-        g.colorMap.clear();
-        for (const PovColorMapEntry& e : readColorMap(in, mapLoc))
-          g.colorMap.push_back({e.at, e.color});
-      } else {
-        unreadInBlock(k, in);  // said, and read to the pigment's '}'
-        skipToClose(in, 1);    // and the sky_sphere's
-        return;
-      }
-    }
-    if (!gradient)
-      keepError(in, t.loc(), "a sky_sphere's pigment other than a gradient is not read yet");
-    sky.pigments.push_back(g);
+    unreadInBlock(t, in);
+    break;
   }
+  return sky;
+}
+
+void SceneReader::readSkySphere(const SourceLoc& loc, TokenStream& in) {
+  const PovSkySphere sky = readSkySphereBlock(loc, in);
   const SkyImport imported = importSkySphere(sky);
   if (!imported.error.empty()) {
     keepError(in, loc, imported.error);

@@ -262,27 +262,23 @@ std::vector<PovColorMapEntry> SceneReader::readColorMap(TokenStream& in, SourceL
   return map;
 }
 
-// The colours of a pattern pigment, from its map as written (or POV-Ray's default map):
-// Lucent's colour maps hold colours, so a filter or transmit is taken only when every
-// entry has the same, and then it is the pigment's.
+// The colours of a pattern pigment, from its map as written (or POV-Ray's default map),
+// with their filter and transmit. A map whose every entry has one transmit and no filter
+// keeps it as the pigment's (the material's constant transmission, which costs nothing
+// per hit); any other filter or transmit goes with each colour (a see-through texture).
 void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& in) {
   if (!p.patterned()) return;
   const PatternSpec* spec = specOf(p.pattern);
-  const std::vector<PovColorMapEntry> map =
-      p.map.empty() && spec ? defaultColourMap(spec->type) : p.map;
+  std::vector<PovColorMapEntry> map = p.map.empty() && spec ? defaultColourMap(spec->type) : p.map;
   p.filter = p.transmit = 0.0f;
   if (!map.empty()) {
     const PovColorMapEntry& first = map.front();
     const bool uniform = std::all_of(map.begin(), map.end(), [&](const PovColorMapEntry& e) {
       return e.filter == first.filter && e.transmit == first.transmit;
     });
-    if (!uniform || first.filter != 0.0f) {
-      keepError(in, p.mapLoc,
-                "colour maps with filter or transmit are not supported by Lucent (its colour "
-                "maps hold colours; a pattern pigment may have one transmit for all its "
-                "colours, and no filter)");
-    } else {
+    if (uniform && first.filter == 0.0f) {
       p.transmit = first.transmit;
+      for (PovColorMapEntry& e : map) e.transmit = 0.0f;
     }
     for (size_t i = 1; i < map.size(); ++i)
       if (map[i].at < map[i - 1].at) {
@@ -291,17 +287,26 @@ void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& in) {
       }
   }
   auto colour = [&](size_t i) { return map.at(i).color; };
+  auto ft = [&](size_t i) { return FilterTransmit{map.at(i).filter, map.at(i).transmit}; };
   if (auto* t = std::get_if<PatternTexture>(&p.pattern)) {
     t->map.entries.clear();
-    for (const PovColorMapEntry& e : map) t->map.entries.push_back({e.at, e.color});
+    for (const PovColorMapEntry& e : map)
+      t->map.entries.push_back({e.at, e.color, {e.filter, e.transmit}});
   } else if (auto* c = std::get_if<CheckerTexture>(&p.pattern)) {
     c->color1 = colour(0);
     c->color2 = colour(1);
+    c->ft1 = ft(0);
+    c->ft2 = ft(1);
   } else if (auto* h = std::get_if<HexagonTexture>(&p.pattern)) {
-    for (int i = 0; i < 3; ++i) h->spec.colors[i] = colour(static_cast<size_t>(i));
+    for (size_t i = 0; i < 3; ++i) {
+      h->spec.colors[i] = colour(i);
+      h->spec.ft[i] = ft(i);
+    }
   } else if (auto* b = std::get_if<BrickTexture>(&p.pattern)) {
     b->spec.color1 = colour(0);
     b->spec.color2 = colour(1);
+    b->spec.ft1 = ft(0);
+    b->spec.ft2 = ft(1);
   }
 }
 

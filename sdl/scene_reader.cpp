@@ -179,6 +179,11 @@ std::shared_ptr<SceneItem> SceneReader::readItem(const Token& t, TokenStream& in
     item->camera.loc = first.loc();
     return item;
   }
+  if (isWord(first, "sky_sphere")) {
+    auto item = std::make_shared<SkySphereItem>();
+    item->sky = readSkySphereBlock(first.loc(), in);
+    return item;
+  }
   if (isWord(first, "pigment")) {
     auto item = std::make_shared<PigmentItem>();
     item->pigment = readPigment(in, defaults_.pigment);
@@ -484,6 +489,13 @@ void SceneReader::finishScene(TokenStream& in) {
   for (Material& m : scene_.materials) {
     if (auto* p = std::get_if<PatternTexture>(&m.texture)) noise(p->pattern);
     if (m.normal) noise(m.normal->pattern);
+  }
+  if (scene_.sky) {
+    for (Texture& layer : scene_.sky->layers)
+      if (auto* p = std::get_if<PatternTexture>(&layer)) noise(p->pattern);
+    // POV-Ray layers a sky_sphere's pigments by the language version it renders with (the
+    // last #version): below 3.7, by its older rule.
+    if (in.languageVersion() < 3.7) scene_.sky->layering = SkyLayering::pov36;
   }
   // POV-Ray's fog turbulence always takes global_settings' noise generator.
   for (Fog& f : scene_.fogs)

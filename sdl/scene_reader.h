@@ -134,6 +134,11 @@ struct RefusedItem : SceneItem {
   std::string word;
   std::string_view kind() const override { return word; }
 };
+// `#declare S = sky_sphere {...}`, used as `sky_sphere { S ... }`.
+struct SkySphereItem : SceneItem {
+  PovSkySphere sky;
+  std::string_view kind() const override { return "sky_sphere"; }
+};
 struct TransformItem : SceneItem {
   PovTransform transform;
   std::string_view kind() const override { return "transform"; }
@@ -258,6 +263,8 @@ class SceneReader : public ItemReader {
   // read_atmosphere.cpp
   void readFog(const SourceLoc& loc, TokenStream& in);
   void readSkySphere(const SourceLoc& loc, TokenStream& in);
+  // `{ [Identifier] pigment {...}... transforms }` after `sky_sphere`.
+  PovSkySphere readSkySphereBlock(const SourceLoc& loc, TokenStream& in);
 
   // read_patterns.cpp: patterns, their colours and modifiers
   bool readPatternKeyword(const Token& t, TokenStream& in, PovPigment& p);

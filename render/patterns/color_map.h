@@ -14,6 +14,10 @@ namespace lucent {
 // [0 black][1 white]: the grey level of v, clamped.
 Color lookupColorMap(const ColorMap& map, double v);
 
+// The same lookup with the entries' filter and transmit, interpolated as the colour (as
+// POV-Ray blends all five channels of its colours).
+PigmentColor lookupColorMapFT(const ColorMap& map, double v);
+
 // lookupColorMap of patternValue(spec, objectPoint).
 Color patternColor(const PatternSpec& spec, const ColorMap& map, const Vec3& objectPoint);
 

@@ -244,3 +244,29 @@ TEST_CASE("scene writer: a normal's keep-facing-away is written when true and re
   REQUIRE(reread.scene);
   CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
 }
+
+TEST_CASE("scene writer: filter and transmit of colours and the sky's layers read back",
+          "[lang][scene-writer]") {
+  const std::string first = written(
+      "<sky layering=\"pov-3.6\"><pattern type=\"gradient\"/>"
+      "<checker transmit1=\"0.5\" filter2=\"0.25\"/></sky>"
+      "<sphere><material><pattern type=\"bozo\"><color-map>"
+      "<entry at=\"0\" color=\"1\" filter=\"0.125\" transmit=\"0.5\"/>"
+      "<entry at=\"1\" color=\"0\"/></color-map></pattern></material></sphere>"
+      "<box><material><hexagon filter3=\"1\"/></material></box>"
+      "<cylinder><material><brick transmit1=\"2\"/></material></cylinder>");
+  CHECK(contains(first, "<entry at=\"0\" color=\"1 1 1\" filter=\"0.125\" transmit=\"0.5\"/>"));
+  CHECK(contains(first, "<entry at=\"1\" color=\"0 0 0\"/>"));  // nothing written for 0
+  CHECK(contains(first, "transmit1=\"0.5\" filter2=\"0.25\""));
+  CHECK(contains(first, "filter3=\"1\""));
+  CHECK(contains(first, "<sky layering=\"pov-3.6\">"));
+  CHECK(contains(first, "transmit1=\"2\""));
+  auto reread = parseSceneString(first, "writer.xml");
+  REQUIRE(reread.scene);
+  REQUIRE(reread.scene->sky);
+  REQUIRE(reread.scene->sky->layers.size() == 2);
+  const auto& checker = std::get<CheckerTexture>(reread.scene->sky->layers[1]);
+  CHECK(checker.ft1 == FilterTransmit{0.0f, 0.5f});
+  CHECK(checker.ft2 == FilterTransmit{0.25f, 0.0f});
+  CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+}

@@ -62,8 +62,10 @@ TEST_CASE("pattern, colour-map, block, normal and sky evaluation allocate nothin
   HexagonSpec hexagon;
   BrickSpec brick;
   Sky sky;
-  sky.pattern.pattern.type = PatternType::gradient;
-  sky.pattern.map = map;
+  PatternTexture skyPattern;
+  skyPattern.pattern.type = PatternType::gradient;
+  skyPattern.map = map;
+  sky.layers = {skyPattern};
   // One evaluation of each first: tables built on first use (noise, crackle) are built once
   // per process, not per ray.
   auto evaluateAll = [&](const Vec3& p) {
@@ -76,7 +78,7 @@ TEST_CASE("pattern, colour-map, block, normal and sky evaluation allocate nothin
       sum += perturbNormal(n, p, Vec3(0, 1, 0)).x;
     }
     sum += hexagonColor(hexagon, p).r + brickColor(brick, p).r;
-    sum += skyColor(sky, glm::normalize(p + Vec3(0.1, 2.0, 0.0))).b;
+    sum += skyColor(sky, glm::normalize(p + Vec3(0.1, 2.0, 0.0)), Color(0.0f)).b;
     return sum;
   };
   double warm = evaluateAll(Vec3(0.3, 0.2, 0.1));

@@ -30,31 +30,47 @@ TEST_CASE("global_settings and background with POV-Ray's defaults", "[sdl][setti
   CHECK(notes[0].find("assumed_gamma 2.2") == 0);
 }
 
-TEST_CASE("a sky_sphere gradient keeps POV-Ray's value for every direction", "[sdl][settings]") {
+TEST_CASE("a sky_sphere's pigments keep POV-Ray's point for every direction, in order",
+          "[sdl][settings]") {
   PovSkySphere pov;
-  PovSkyGradient g;
-  g.axis = Vec3(0.0, 1.0, 1.0);
-  g.colorMap = {{0.0, Color(1.0f)}, {1.0, Color(0.0f, 0.0f, 1.0f)}};
+  PovPigment g;
+  PatternTexture gradient;
+  gradient.pattern.type = PatternType::gradient;
+  gradient.pattern.axis = Vec3(0.0, 1.0, 1.0);
+  gradient.map.entries = {{0.0, Color(1.0f)}, {1.0, Color(0.0f, 0.0f, 1.0f)}};
+  g.pattern = gradient;
   g.transform.rotate(Vec3(20.0, 0.0, 0.0));
   pov.pigments.push_back(g);
+  // (Built in place: GCC 12 takes a copied plain pigment's empty variant for uninitialised.)
+  PovPigment& plain = pov.pigments.emplace_back();
+  plain.color = Color(0.2f, 0.3f, 0.4f);
+  plain.filter = 0.25f;
+  plain.transmit = 0.5f;
   pov.transform.translate(Vec3(0.0, 0.25, 0.0));
   const SkyImport imported = importSkySphere(pov);
   REQUIRE(imported.sky);
   CHECK(imported.differences.empty());
   const Sky& sky = *imported.sky;
-  CHECK(sky.pattern.pattern.type == PatternType::gradient);
-  // The gradient's value at a direction d of POV-Ray's space is axis·(M⁻¹ d); at Lucent's
-  // S·d it must be the same.
+  REQUIRE(sky.layers.size() == 2);
+  const auto& first = std::get<PatternTexture>(sky.layers[0]);
+  CHECK(first.pattern.type == PatternType::gradient);
+  CHECK(first.pattern.axis == gradient.pattern.axis);  // as POV-Ray writes it
+  // POV-Ray evaluates the pigment at M⁻¹ d, d its direction, M the pigment's transforms
+  // then the sky_sphere's; Lucent's layer at its direction S·d must see that same point.
   const PovTransform m = g.transform.then(pov.transform);
   for (const Vec3& d : {Vec3(0.0, 1.0, 0.0), glm::normalize(Vec3(1.0, 0.3, -2.0)),
                         glm::normalize(Vec3(-0.5, -0.2, 0.7))}) {
-    const double pov = glm::dot(g.axis, m.inverse().point(d));
-    const double lucent =
-        glm::dot(sky.pattern.pattern.axis, Vec3(sky.skyFromWorld * Vec4(lucentFromPov(d), 1.0)));
-    CHECK(lucent == Approx(pov).epsilon(1e-12));
+    const Vec3 want = m.inverse().point(d);
+    const Vec3 got = Vec3(first.pattern.placement.patternFromObject * sky.skyFromWorld *
+                          Vec4(lucentFromPov(d), 1.0));
+    for (int k = 0; k < 3; ++k) CHECK(got[k] == Approx(want[k]).margin(1e-12));
   }
-  pov.pigments.push_back(g);
-  CHECK(importSkySphere(pov).differences.size() == 1);
+  // A plain pigment on top: one entry with its filter and transmit.
+  const auto& top = std::get<PatternTexture>(sky.layers[1]);
+  REQUIRE(top.map.entries.size() == 1);
+  CHECK(top.map.entries[0].color == Color(0.2f, 0.3f, 0.4f));
+  CHECK(top.map.entries[0].ft.filter == 0.25f);
+  CHECK(top.map.entries[0].ft.transmit == 0.5f);
   CHECK(importSkySphere(PovSkySphere{}).error == "sky_sphere: a sky_sphere needs a pigment");
 }
 

@@ -228,33 +228,28 @@ TEST_CASE("scene reader textures: a turbulence warp before any transform is the 
 TEST_CASE("scene reader textures: what Lucent cannot render is refused at its keyword",
           "[sdl][scene][texture][errors]") {
   const auto errors = errorsOf(
-      "sphere { 0, 1 pigment { bozo color_map { [0 rgbf 1] [1 rgb 0] } } }\n"
       "sphere { 0, 1 pigment { cells } }\n"
       "sphere { 0, 1 pigment { bozo pigment_map { [0 rgb 1] } } }\n"
       "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }\n"
       "sphere { 0, 1 pigment { image_map { png \"x.png\" } } }\n"
       "sphere { 0, 1 normal { checker } }\n"
       "sphere { 0, 1 texture { gradient y texture_map { [0 T1] [1 T2] } } }\n");
-  REQUIRE(errors.size() == 7);
-  CHECK(errors[0] ==
-        "test.pov:1:30: error: colour maps with filter or transmit are not supported by Lucent "
-        "(its colour maps hold colours; a pattern pigment may have one transmit for all its "
-        "colours, and no filter)");
-  CHECK(errors[1].rfind("test.pov:2:25: error: 'cells' is not supported by Lucent (a pattern "
+  REQUIRE(errors.size() == 6);
+  CHECK(errors[0].rfind("test.pov:1:25: error: 'cells' is not supported by Lucent (a pattern "
                         "Lucent does not have; its patterns are gradient, onion",
                         0) == 0);
-  CHECK(errors[2] ==
-        "test.pov:3:30: error: 'pigment_map' is not supported by Lucent (maps of pigments; "
+  CHECK(errors[1] ==
+        "test.pov:2:30: error: 'pigment_map' is not supported by Lucent (maps of pigments; "
         "Lucent's colour maps hold colours)");
-  CHECK(errors[3] ==
-        "test.pov:4:45: error: layered textures are not supported by Lucent (one texture per "
+  CHECK(errors[2] ==
+        "test.pov:3:45: error: layered textures are not supported by Lucent (one texture per "
         "material; a second texture { } is a layer over the first)");
-  CHECK(errors[4].rfind("test.pov:5:25: error: 'image_map' is not supported by Lucent", 0) == 0);
-  CHECK(errors[5] ==
-        "test.pov:6:24: error: 'checker' is not supported by Lucent (as a normal pattern; "
+  CHECK(errors[3].rfind("test.pov:4:25: error: 'image_map' is not supported by Lucent", 0) == 0);
+  CHECK(errors[4] ==
+        "test.pov:5:24: error: 'checker' is not supported by Lucent (as a normal pattern; "
         "Lucent's checker is a pigment)");
-  CHECK(errors[6] ==
-        "test.pov:7:25: error: 'gradient' is not supported by Lucent (a pattern of textures "
+  CHECK(errors[5] ==
+        "test.pov:6:25: error: 'gradient' is not supported by Lucent (a pattern of textures "
         "(texture_map, or a block pattern of textures); Lucent has one texture per material)");
 }
 
@@ -315,7 +310,7 @@ TEST_CASE("scene reader textures: a sky_sphere of one colour, and of a declared 
   auto r = readScene("sky_sphere { pigment { rgb <0.2, 0.3, 0.4> } }\n");
   REQUIRE(r->load.scene);
   REQUIRE(r->load.scene->sky);
-  const auto& entries = r->load.scene->sky->pattern.map.entries;
+  const auto& entries = std::get<PatternTexture>(r->load.scene->sky->layers.at(0)).map.entries;
   REQUIRE(entries.size() == 1);
   checkColor(entries[0].color, Color(0.2f, 0.3f, 0.4f));
   auto m = readScene(
@@ -323,20 +318,106 @@ TEST_CASE("scene reader textures: a sky_sphere of one colour, and of a declared 
       "sky_sphere { pigment { gradient y color_map { M } } }\n");
   REQUIRE(m->load.scene);
   REQUIRE(m->load.scene->sky);
-  const auto& two = m->load.scene->sky->pattern.map.entries;
+  const auto& two = std::get<PatternTexture>(m->load.scene->sky->layers.at(0)).map.entries;
   REQUIRE(two.size() == 2);
   CHECK(two[1].at == 0.5);
   checkColor(two[1].color, Color(0, 0, 1));
 }
 
-TEST_CASE("scene reader textures: a sky_sphere pattern Lucent's sky lacks is one error, at it",
+TEST_CASE("scene reader textures: a sky_sphere pattern Lucent lacks is one error, at it",
           "[sdl][scene][texture]") {
-  // The refusal reads to the sky_sphere's end: what follows is read as usual.
+  // The refusal reads to the pigment's end: what follows is read as usual.
   const std::vector<std::string> errors = errorsOf(
-      "sky_sphere { pigment { planar poly_wave 2 color_map { [0 rgb 1] [1 rgb 0] } } }\n"
+      "sky_sphere { pigment { cells color_map { [0 rgb 1] [1 rgb 0] } } }\n"
       "sphere { 0, 1 pigment { rgb 1 } }\n");
   REQUIRE(errors.size() == 1);
-  CHECK(errors[0].find("test.pov:1:24: error: 'planar'") == 0);
+  CHECK(errors[0].find("test.pov:1:24: error: 'cells'") == 0);
+}
+
+TEST_CASE(
+    "scene reader textures: colour maps and colour lists keep each colour's filter and "
+    "transmit",
+    "[sdl][scene][texture]") {
+  auto r = readScene(
+      "sphere { 0, 1 pigment { bozo color_map { [0 rgbf <1, 0, 0, 0.25>] [0.5 rgb 0.5]\n"
+      "  [1 rgbft <0, 0, 1, 0.5, 0.125>] } } }\n"
+      "sphere { 0, 1 pigment { checker rgbt <1, 1, 1, 0.75>, rgbf <0, 1, 0, 1> } }\n"
+      "sphere { 0, 1 pigment { hexagon rgb 1, rgbt <0, 0, 0, 1>, rgbf <1, 0, 0, 0.5> } }\n"
+      "sphere { 0, 1 pigment { brick rgbft <0.5, 0.5, 0.5, 0.1, 0.2>, rgb 1 } }\n"
+      "sphere { 0, 1 pigment { gradient y color_map { [0 rgbt <1, 1, 1, 0.5>] [1 rgbt 0.5] } } "
+      "}\n");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const auto& bozo = std::get<PatternTexture>(materialOf(s, top(s, 0)).texture);
+  REQUIRE(bozo.map.entries.size() == 3);
+  checkColor(bozo.map.entries[0].color, Color(1, 0, 0));
+  CHECK(bozo.map.entries[0].ft.filter == 0.25f);
+  CHECK(bozo.map.entries[0].ft.transmit == 0.0f);
+  CHECK(!bozo.map.entries[1].ft.any());
+  CHECK(bozo.map.entries[2].ft.filter == 0.5f);
+  CHECK(bozo.map.entries[2].ft.transmit == 0.125f);
+  // The material keeps no transmission of its own: the texture carries it, point by point.
+  const Material& bozoMaterial = materialOf(s, top(s, 0));
+  CHECK(bozoMaterial.transmissive == Color(0.0f));
+  CHECK(bozoMaterial.diffuse == Color(0.6f));
+  CHECK(bozoMaterial.isTransmissive());
+  CHECK(bozoMaterial.fullTir);
+
+  const auto& checker = std::get<CheckerTexture>(materialOf(s, top(s, 1)).texture);
+  CHECK(checker.ft1 == FilterTransmit{0.0f, 0.75f});
+  CHECK(checker.ft2 == FilterTransmit{1.0f, 0.0f});
+  checkColor(checker.color2, Color(0, 1, 0));
+  const auto& hexagon = std::get<HexagonTexture>(materialOf(s, top(s, 2)).texture);
+  CHECK(!hexagon.spec.ft[0].any());
+  CHECK(hexagon.spec.ft[1] == FilterTransmit{0.0f, 1.0f});
+  CHECK(hexagon.spec.ft[2] == FilterTransmit{0.5f, 0.0f});
+  const auto& brick = std::get<BrickTexture>(materialOf(s, top(s, 3)).texture);
+  CHECK(brick.spec.ft1 == FilterTransmit{0.1f, 0.2f});
+  CHECK(!brick.spec.ft2.any());
+
+  // One transmit for every colour and no filter: the material's, as before (no per-hit cost).
+  const Material& uniform = materialOf(s, top(s, 4));
+  CHECK(!textureSeeThrough(uniform.texture));
+  CHECK(uniform.transmissive == Color(0.5f));
+  CHECK(uniform.diffuse == Color(0.3f));
+}
+
+TEST_CASE("scene reader textures: a sky_sphere's pigments become its layers, in order",
+          "[sdl][scene][texture]") {
+  auto r = readScene(
+      "#declare S = sky_sphere { pigment { gradient y color_map { [0 rgb 1] [1 rgb <0, 0, 1>] } "
+      "}\n"
+      "  pigment { bozo color_map { [0 rgbt <1, 1, 1, 0>] [1 rgbt <1, 1, 1, 1>] } scale 0.5 }\n"
+      "}\n"
+      "sky_sphere { S pigment { checker rgbf <1, 0, 0, 0.5>, rgbt 0.25 } rotate x*90 }\n");
+  REQUIRE(r->load.scene);
+  REQUIRE(r->load.scene->sky);
+  const Sky& sky = *r->load.scene->sky;
+  REQUIRE(sky.layers.size() == 3);
+  CHECK(std::get<PatternTexture>(sky.layers[0]).pattern.type == PatternType::gradient);
+  const auto& clouds = std::get<PatternTexture>(sky.layers[1]);
+  CHECK(clouds.pattern.type == PatternType::bozo);
+  CHECK(clouds.pattern.noiseGenerator == 2);  // global_settings' default, set at the end
+  REQUIRE(clouds.map.entries.size() == 2);
+  CHECK(clouds.map.entries[1].ft.transmit == 1.0f);
+  // The pigment's scale 0.5, from Lucent's space (z negated) into pattern space.
+  Mat4 want(2.0);
+  want[3][3] = 1.0;
+  want[2][2] = -2.0;
+  sdltest::checkMat(clouds.pattern.placement.patternFromObject, want);
+  const auto& checker = std::get<CheckerTexture>(sky.layers[2]);
+  CHECK(checker.ft1 == FilterTransmit{0.5f, 0.0f});
+  CHECK(checker.ft2 == FilterTransmit{0.0f, 0.25f});
+  CHECK(sky.layering == SkyLayering::pov37);
+  // A scene of #version 3.6 layers by POV-Ray's older rule.
+  auto old = readScene("#version 3.6;\nsky_sphere { pigment { rgbt <1, 1, 1, 0.5> } }\n");
+  REQUIRE(old->load.scene);
+  REQUIRE(old->load.scene->sky);
+  CHECK(old->load.scene->sky->layering == SkyLayering::pov36);
+  // rotate x*90 of POV-Ray's space: its +y goes to +z, Lucent's -z; the sky's inverse brings
+  // Lucent's -z back to +y.
+  const Vec3 up = Vec3(sky.skyFromWorld * Vec4(0.0, 0.0, -1.0, 0.0));
+  sdltest::checkVec(up, Vec3(0.0, 1.0, 0.0));
 }
 
 TEST_CASE("scene reader textures: POV-Ray 1's normals in a texture, and blocks that continue",

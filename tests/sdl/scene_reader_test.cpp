@@ -304,16 +304,17 @@ sky_sphere { pigment { gradient y color_map { [0 rgb 1] [1 color rgb <0, 0, 1>] 
   CHECK(s.fogs[0].distance == 10.0);
   checkColor(s.fogs[0].color, Color(0.5f, 0.6f, 0.7f));
   CHECK(s.fogs[0].transmit == Approx(0.2f));
-  PovSkySphere sky;
-  PovSkyGradient g;
-  g.colorMap = {{0.0, Color(1.0f)}, {1.0, Color(0.0f, 0.0f, 1.0f)}};
-  sky.pigments = {g};
-  const Sky want = *importSkySphere(sky).sky;
   REQUIRE(s.sky);
-  REQUIRE(s.sky->pattern.map.entries.size() == 2);
-  checkColor(s.sky->pattern.map.entries[1].color, want.pattern.map.entries[1].color);
-  checkVec(s.sky->pattern.pattern.axis, want.pattern.pattern.axis);
-  checkMat(s.sky->skyFromWorld, want.skyFromWorld);
+  REQUIRE(s.sky->layers.size() == 1);
+  const auto& gradient = std::get<PatternTexture>(s.sky->layers[0]);
+  REQUIRE(gradient.map.entries.size() == 2);
+  checkColor(gradient.map.entries[1].color, Color(0.0f, 0.0f, 1.0f));
+  // The gradient as POV-Ray writes it, evaluated in POV-Ray's space (z negated).
+  checkVec(gradient.pattern.axis, Vec3(0.0, 1.0, 0.0));
+  Mat4 s1(1.0);
+  s1[2][2] = -1.0;
+  checkMat(gradient.pattern.placement.patternFromObject, s1);
+  checkMat(s.sky->skyFromWorld, Mat4(1.0));
 }
 
 TEST_CASE("scene reader: every fog, with its turbulence in POV-Ray's space", "[sdl][scene]") {
