@@ -2,6 +2,7 @@
 // and read again makes the same parameters, field by field, including the lists, files,
 // functions and child elements a shape's entry reads itself.
 #include "../support/scene_text.h"
+#include "../temp_dir.h"
 
 #include "lang/scene_writer.h"
 #include "primitives/text_outline.h"
@@ -20,10 +21,15 @@ namespace {
 namespace fs = std::filesystem;
 
 // A folder of its own holding the files the shapes name: a mesh, a height field's image and
-// a font; the scenes are read (and written) as if from a file in it.
+// a font; the scenes are read (and written) as if from a file in it. One folder per test
+// process, made once: ctest runs this file's cases in parallel processes, which must not
+// rewrite each other's files while they read them.
 fs::path shapeFolder() {
-  const fs::path dir = fs::temp_directory_path() / "lucent_scene_writer_shapes_test";
-  fs::create_directories(dir);
+  static const TempDir folder("scene-writer-shapes");
+  static bool made = false;
+  const fs::path dir = folder.path;
+  if (made) return dir;
+  made = true;
   std::ofstream(dir / "quad.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\n"
                                      "vt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n";
   std::ofstream pgm(dir / "ridge.pgm", std::ios::binary);
