@@ -4,6 +4,7 @@
 // inside the shape and inside its clips), the clip moved by the node's transform, and the
 // bound's test of the whole ray.
 #include "../support/scene_text.h"
+#include "first_hit.h"
 #include "scenegraph/world.h"
 
 #include <catch2/catch.hpp>
@@ -14,22 +15,6 @@ using namespace lucent;
 using namespace lucent::test;
 
 namespace {
-
-struct Seen {
-  bool found = false;
-  double t = 0;
-  Vec3 ng{0.0};
-};
-
-Seen look(const World& world, const Ray& ray) {
-  Seen s;
-  Hit h;
-  if (!world.intersect(ray, h)) return s;
-  s.found = true;
-  s.t = h.t;
-  s.ng = h.shape->surface(ray, h).ng;  // the leaf applies Hit::flip
-  return s;
-}
 
 void checkNormal(const Vec3& got, const Vec3& want) {
   CHECK(got.x == Approx(want.x).margin(1e-9));

@@ -5,6 +5,7 @@
 #include "../render/scene_builder.h"
 
 #include "../support/scene_text.h"
+#include "first_hit.h"
 #include "lang/parser.h"
 #include "povray/pov_export.h"
 
@@ -16,22 +17,6 @@ using namespace lucent::test;
 namespace {
 
 std::unique_ptr<Scene> parse(const std::string& body) { return parseValid(body, "inverse.xml"); }
-
-struct Seen {
-  bool found = false;
-  double t = 0;
-  Vec3 ng{0.0};
-};
-
-Seen look(const World& world, const Ray& ray) {
-  Seen s;
-  Hit h;
-  if (!world.intersect(ray, h)) return s;
-  s.found = true;
-  s.t = h.t;
-  s.ng = h.shape->surface(ray, h).ng;
-  return s;
-}
 
 // Rays from a ring of origins around the shapes towards points near the middle.
 std::vector<Ray> fan() {

@@ -30,20 +30,6 @@ bool has(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-// The text without its comment lines, which name the file and lines read.
-std::string withoutComments(const std::string& text) {
-  std::string out;
-  size_t at = 0;
-  while (at < text.size()) {
-    size_t end = text.find('\n', at);
-    if (end == std::string::npos) end = text.size();
-    const std::string line = text.substr(at, end - at);
-    if (line.find("<!--") == std::string::npos) out += line + "\n";
-    at = end + 1;
-  }
-  return out;
-}
-
 }  // namespace
 
 TEST_CASE("clip: <clip> and <bound> hold solids in the node's frame", "[lang][clip]") {

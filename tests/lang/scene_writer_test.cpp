@@ -23,20 +23,6 @@ std::string written(const std::string& body) {
   return writeSceneXml(*parseClean(body, "writer.xml"), WriteOptions{});
 }
 
-// The text without the comments, which name the lines of the file read.
-std::string withoutComments(const std::string& text) {
-  std::string out;
-  size_t at = 0;
-  while (at < text.size()) {
-    size_t end = text.find('\n', at);
-    if (end == std::string::npos) end = text.size();
-    const std::string line = text.substr(at, end - at);
-    if (line.find("<!--") == std::string::npos) out += line + "\n";
-    at = end + 1;
-  }
-  return out;
-}
-
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }

@@ -46,4 +46,19 @@ inline std::unique_ptr<Scene> parseClean(const std::string& body,
   return parseRequired(body, name, head, true);
 }
 
+// A written scene's text without its comment lines (lucent convert's comments name the file
+// and lines read, which differ between two writings of one scene).
+inline std::string withoutComments(const std::string& text) {
+  std::string out;
+  size_t at = 0;
+  while (at < text.size()) {
+    size_t end = text.find('\n', at);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(at, end - at);
+    if (line.find("<!--") == std::string::npos) out += line + "\n";
+    at = end + 1;
+  }
+  return out;
+}
+
 }  // namespace lucent::test
