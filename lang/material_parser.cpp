@@ -30,8 +30,94 @@ std::vector<std::string_view> materialAttributes() {
 // The texture elements (the table of texture kinds), then the normal perturbations.
 std::vector<std::string_view> materialChildren() {
   std::vector<std::string_view> names = textureElements();
-  names.insert(names.end(), {"normal", "bump-map"});
+  names.insert(names.end(), {"normal", "bump-map", "layer"});
   return names;
+}
+
+void readSurfaceChildren(ElementReader& r, Material& m, bool isMaterial);
+
+// <layer>: a layer of POV-Ray's layered texture over its material (docs/scene-language.md,
+// "Layers"): the surface terms of the finish table, a texture and a normal perturbation.
+std::vector<std::string_view> layerAttributes() {
+  std::vector<std::string_view> names;
+  for (const FinishTerm& t : finishTerms())
+    if (!t.ofInterior) names.push_back(t.info.name);
+  return names;
+}
+
+Material parseLayer(ElementReader& r) {
+  for (const FinishTerm& t : finishTerms())
+    if (t.ofInterior && r.has(t.info.name.c_str()))
+      r.attrError(t.info.name.c_str(), "'" + t.info.name +
+                                           "' is a term of the whole material (its interior), "
+                                           "not of one layer: write it on the <material>");
+  static const std::vector<std::string_view> attributes = [] {
+    std::vector<std::string_view> names = layerAttributes();
+    for (const FinishTerm& t : finishTerms())
+      if (t.ofInterior) names.push_back(t.info.name);  // reported above
+    return names;
+  }();
+  r.checkAttributes(attributes);
+  Material layer;
+  layer.loc = r.loc();
+  ElementInput in(r);
+  for (const FinishTerm& t : finishTerms())
+    if (!t.ofInterior) t.read(layer, in);
+  readSurfaceChildren(r, layer, false);
+  if (layer.hasTexture() && !r.has("diffuse")) layer.diffuse = Color(1.0f);
+  return layer;
+}
+
+// The children of a <material> (layers allowed) or a <layer>: one texture, one normal
+// perturbation, and for a material its <layer>s, each over the ones before.
+void readSurfaceChildren(ElementReader& r, Material& m, bool isMaterial) {
+  ParseContext& ctx = r.ctx();
+  const char* element = isMaterial ? "<material>" : "<layer>";
+  std::optional<SourceLoc> textureLoc, normalLoc;
+  bool ownLayers = false;
+  r.forEachChild([&](pugi::xml_node n) {
+    ElementReader t(ctx, r.file(), n);
+    std::string_view name = n.name();
+    if (name == "layer" && isMaterial) {
+      if (!ownLayers) m.layers.clear();  // the base's layers are replaced
+      ownLayers = true;
+      m.layers.push_back(parseLayer(t));
+      return;
+    }
+    if (name == "normal" || name == "bump-map") {
+      if (normalLoc) {
+        t.error(std::string(element) +
+                " holds one normal perturbation (<normal> or <bump-map>) at most; the first "
+                "is at " +
+                normalLoc->str());
+        return;
+      }
+      normalLoc = t.loc();
+      // Either replaces the base's normal perturbation, whichever kind that was.
+      m.normal.reset();
+      m.bumpMap.reset();
+      if (name == "normal") m.normal = parseNormal(t);
+      else m.bumpMap = parseBumpMap(t);
+      return;
+    }
+    const std::vector<std::string_view> textures = textureElements();
+    if (std::find(textures.begin(), textures.end(), name) == textures.end()) {
+      std::vector<std::string_view> children = materialChildren();
+      if (!isMaterial) children.pop_back();  // no <layer> in a <layer>
+      std::string pov = povrayElementHint("material", name);
+      t.error(std::string(element) + " may hold a texture (" + elementList(textures) +
+              "), a <normal> or <bump-map>" + (isMaterial ? " and <layer>s" : "") + ", not <" +
+              std::string(name) + ">" + (pov.empty() ? didYouMean(name, children) : pov));
+      return;
+    }
+    if (textureLoc) {
+      t.error(std::string(element) + " holds one texture at most; the first is at " +
+              textureLoc->str());
+      return;
+    }
+    textureLoc = t.loc();
+    m.texture = parseTexture(t);
+  });
 }
 
 // Finds the material a base= names (reading it first when it comes later in the file).
@@ -71,42 +157,9 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
   for (const FinishTerm& t : finishTerms()) t.read(m, in);
   wroteDiffuse = wroteDiffuse || r.has("diffuse");
 
-  // A texture (or normal) of its own replaces the base's.
-  std::optional<SourceLoc> textureLoc, normalLoc;
-  r.forEachChild([&](pugi::xml_node n) {
-    ElementReader t(ctx, r.file(), n);
-    std::string_view name = n.name();
-    if (name == "normal" || name == "bump-map") {
-      if (normalLoc) {
-        t.error(
-            "<material> holds one normal perturbation (<normal> or <bump-map>) at most; the first "
-            "is at " +
-            normalLoc->str());
-        return;
-      }
-      normalLoc = t.loc();
-      // Either replaces the base's normal perturbation, whichever kind that was.
-      m.normal.reset();
-      m.bumpMap.reset();
-      if (name == "normal") m.normal = parseNormal(t);
-      else m.bumpMap = parseBumpMap(t);
-      return;
-    }
-    const std::vector<std::string_view> textures = textureElements();
-    if (std::find(textures.begin(), textures.end(), name) == textures.end()) {
-      std::string pov = povrayElementHint("material", name);
-      t.error("<material> may hold a texture (" + elementList(textures) +
-              ") and a <normal> or <bump-map>, not <" + std::string(name) + ">" +
-              (pov.empty() ? didYouMean(name, materialChildren()) : pov));
-      return;
-    }
-    if (textureLoc) {
-      t.error("<material> holds one texture at most; the first is at " + textureLoc->str());
-      return;
-    }
-    textureLoc = t.loc();
-    m.texture = parseTexture(t);
-  });
+  // A texture (or normal) of its own replaces the base's; layers of its own replace the
+  // base's layers.
+  readSurfaceChildren(r, m, true);
   // The contract: with a texture and no diffuse, the texture shows as it is.
   if (m.hasTexture() && !wroteDiffuse) m.diffuse = Color(1.0f);
 

@@ -125,7 +125,7 @@ std::string lookup(const std::vector<PovWord>& table, std::string_view where,
 }  // namespace
 
 std::string povrayAttributeHint(std::string_view element, std::string_view attribute) {
-  if (element == "material")
+  if (element == "material" || element == "layer")
     for (const FinishTerm& t : finishTerms())
       for (const PovHint& h : t.povHints)
         if (h.word == attribute)

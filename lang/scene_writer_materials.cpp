@@ -120,15 +120,17 @@ void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& 
   out.close("pattern");
 }
 
-Attributes materialAttributes(const Material& m) {
+Attributes materialAttributes(const Material& m, bool layer) {
   Attributes a;
   // What the parser gives an attribute left out: diffuse is 1 under a texture.
   Material defaults;
   if (m.hasTexture()) defaults.diffuse = Color(1.0f);
   for (const FinishTerm& term : finishTerms()) {
+    if (layer && term.ofInterior) continue;  // the material's
     // Each term's value, and the default's: only what differs is written.
     AttributeProbe value, byDefault;
     Material copy = m, plain = defaults;
+    copy.layers.clear();  // not read by a term
     term.read(copy, value);
     term.read(plain, byDefault);
     if (!value.unwritable.empty())
@@ -155,6 +157,16 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
         "bump-map",
         {{"src", fileReference(m.bumpMap->path, folder)}, {"depth", xmlNumber(m.bumpMap->depth)}},
         true);
+  // The layers over it, bottom first, each with its own surface terms and children.
+  for (const Material& layer : m.layers) {
+    XmlOut children;
+    children.depth = out.depth + 1;
+    writeMaterialChildren(layer, children, folder);
+    out.open("layer", materialAttributes(layer, true), children.text.empty());
+    if (children.text.empty()) continue;
+    out.text += children.text;
+    out.close("layer");
+  }
 }
 
 }  // namespace lucent

@@ -39,7 +39,8 @@ std::string fileReference(const std::string& resolvedPath, const std::string& fo
 // The material's attributes and children (finish table, textures, normal, bump map), inside
 // an element the caller opened as <material ...>; returns the attributes, writes the
 // children into `out` through `children`.
-Attributes materialAttributes(const Material& m);
+// For a <layer> (`layer`): its surface terms only.
+Attributes materialAttributes(const Material& m, bool layer = false);
 void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& folder);
 void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out);
 // A texture element (<checker>, <image>, <pattern>...); file references relative to

@@ -221,6 +221,14 @@ std::string materialAttributesXsd() {
   return out;
 }
 
+// The surface terms, a <layer>'s attributes.
+std::string layerAttributesXsd() {
+  std::string out;
+  for (const FinishTerm& t : finishTerms())
+    if (!t.ofInterior) out += attributeXsd(t.info, 4);
+  return out;
+}
+
 std::string shapeXpath() {
   std::string out;
   for (const ShapeType& t : shapeTypes()) out += ".//" + t.element + " | ";
@@ -250,6 +258,7 @@ std::string schemaText() {
   replaceOnce(text, "@NORMAL_PATTERNS@", patternTypesXsd(false));
   replaceOnce(text, "@TEXTURE_ELEMENTS@", textureElementsXsd());
   replaceOnce(text, "@MATERIAL_ATTRIBUTES@", materialAttributesXsd());
+  replaceOnce(text, "@LAYER_ATTRIBUTES@", layerAttributesXsd());
   return text;
 }
 

@@ -230,7 +230,7 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
                                       "with weight 1, Lucent with reflective + transmissive {} "
                                       "(full-tir=\"true\" is POV-Ray's rule)",
                                       name, colourText(m.reflective + m.transmissive)));
-  if (transmits && !isZero(ka))
+  if (transmits && !isZero(ka) && !m.innerAmbient)
     issues.warning(m.loc, fmt::format("{}: inside the object Lucent scales the ambient term by "
                                       "transmissive; POV-Ray does not",
                                       name));
@@ -268,7 +268,10 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
 }
 
 PovMaterials::PovMaterials(const std::vector<Material>& materials, PovIssues& issues)
-    : materials_(materials), issues_(issues), surfaces_(materials.size()) {
+    : materials_(materials),
+      issues_(issues),
+      surfaces_(materials.size()),
+      layerSurfaces_(materials.size()) {
   for (size_t i = 0; i < materials.size(); ++i) {
     const Material& m = materials[i];
     std::string id = m.id == "(default)" ? "default" : m.id;
@@ -312,7 +315,10 @@ bool PovMaterials::usesImageMap(uint32_t index) const {
 }
 
 bool PovMaterials::dependsOnShape(uint32_t index) const {
-  return usesImageMap(index) || materials_[index].bumpMap.has_value();
+  if (usesImageMap(index) || materials_[index].bumpMap.has_value()) return true;
+  for (const Material& layer : materials_[index].layers)
+    if (std::holds_alternative<ImageTexture>(layer.texture) || layer.bumpMap) return true;
+  return false;
 }
 
 void PovMaterials::writeFor(uint32_t index, const ShapeSpec& shape, const SourceLoc& loc,
@@ -342,8 +348,30 @@ void PovMaterials::writeFor(uint32_t index, const ImageMapping& mapping, const c
 
 void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, const char* shapeName,
                                 const SourceLoc* loc, PovWriter& out, PovIssues* issues) const {
-  const Material& m = materials_[index];
-  const PovSurface& s = surface(index);
+  writeLayer(materials_[index], surface(index), mapping, shapeName, loc, out, issues);
+  // A layered material: each layer is a texture { } written after the one below it (the
+  // caller opened the first and closes the last).
+  const std::vector<PovSurface>& layers = layerSurfaces(index);
+  for (size_t k = 0; k < layers.size(); ++k) {
+    out.close();
+    out.open("texture");
+    writeLayer(materials_[index].layers[k], layers[k], mapping, shapeName, loc, out, issues);
+  }
+}
+
+const std::vector<PovSurface>& PovMaterials::layerSurfaces(uint32_t material) const {
+  std::optional<std::vector<PovSurface>>& layers = layerSurfaces_[material];
+  if (!layers) {
+    layers.emplace();
+    for (const Material& layer : materials_[material].layers)
+      layers->push_back(povSurface(layer, issues_));
+  }
+  return *layers;
+}
+
+void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const ImageMapping* mapping,
+                              const char* shapeName, const SourceLoc* loc, PovWriter& out,
+                              PovIssues* issues) const {
   // The pigment of each kind of texture (std::visit needs every kind); a material whose
   // texture POV-Ray cannot show (useTexture false, an image without a mapping) gets its
   // plain colour.

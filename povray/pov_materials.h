@@ -92,11 +92,18 @@ class PovMaterials {
   // With `mapping` null: the declaration (no image map).
   void writeTexture(uint32_t index, const ImageMapping* mapping, const char* shapeName,
                     const SourceLoc* loc, PovWriter& out, PovIssues* issues) const;
+  // One layer's pigment, normal and finish: a material's own or one of its <layer>s.
+  void writeLayer(const Material& m, const PovSurface& s, const ImageMapping* mapping,
+                  const char* shapeName, const SourceLoc* loc, PovWriter& out,
+                  PovIssues* issues) const;
+  // The POV-Ray numbers of a material's <layer>s, converted on first use.
+  const std::vector<PovSurface>& layerSurfaces(uint32_t material) const;
   void writeInterior(const PovSurface& s, PovWriter& out) const;
 
   const std::vector<Material>& materials_;
   PovIssues& issues_;
   mutable std::vector<std::optional<PovSurface>> surfaces_;  // converted on first use
+  mutable std::vector<std::optional<std::vector<PovSurface>>> layerSurfaces_;  // the same
   std::vector<std::string> names_;  // the texture identifier; interior: "I" + name
 };
 

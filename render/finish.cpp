@@ -117,8 +117,10 @@ SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool soli
       rays.transmitted = kt;
     } else if (m.fullTir) {
       rays.mirror = Color(1.0f);  // POV-Ray's: the whole ray, in place of the k_r reflection
+      rays.totallyReflected = true;
     } else {
       rays.mirror += kt;  // total internal reflection: the k_t share joins the mirror ray
+      rays.totallyReflected = true;
     }
   }
   // irid multiplies the light the mirror ray brings back (totally reflected light too, as
@@ -128,6 +130,18 @@ SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool soli
   if (m.irid > 0.0 && maxComponent(rays.mirror) > 0.0f)
     rays.mirror *= iridFactor(m, at, glm::dot(at.n, at.v));
   return rays;
+}
+
+Color mirrorWeight(const Material& m, const ShadingPoint& at, double n1, double n2,
+                   const Color& metal) {
+  Color kr = m.reflective;
+  if (!(maxComponent(kr) > 0.0f)) return kr;
+  // secondaryRays' steps for the mirror ray, with no transmitted share to take.
+  const double cosView = glm::dot(at.n, at.v);
+  if (m.fresnel) kr *= static_cast<float>(fresnelDielectric(cosView, n1, n2));
+  if (m.reflectMetallic > 0.0) kr *= metallicTint(metal, m.reflectMetallic, cosView);
+  if (m.irid > 0.0) kr *= iridFactor(m, at, cosView);
+  return kr;
 }
 
 }  // namespace lucent

@@ -44,6 +44,8 @@ struct SecondaryRays {
   // The transmitted ray goes on unbent: a surface without an inside (a thin sheet), or
   // the same index on both sides.
   bool straight = false;
+  // The surface transmits but the ray cannot leave: the mirror ray took its share.
+  bool totallyReflected = false;
   Vec3 refracted{0.0};  // its direction when it bends
 };
 // n1: the index on the viewer's side, n2: beyond (both 1 for an opaque material that needs
@@ -51,6 +53,11 @@ struct SecondaryRays {
 // hit, needed only with reflect-metallic.
 SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool solid, double n1,
                             double n2, const Color& metal = Color(1.0f));
+
+// The mirror ray's weight alone, as secondaryRays gives it where the surface transmits
+// nothing: a lower layer's reflection (render/layers.h).
+Color mirrorWeight(const Material& m, const ShadingPoint& at, double n1, double n2,
+                   const Color& metal = Color(1.0f));
 
 // POV-Ray's empirical metallic reflectivity for the angle whose cosine is `cosAngle`:
 // a highlight's colour is 1 + (1 − F)·(C − 1) for the surface colour C ([DB 9/94] in its

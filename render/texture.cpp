@@ -73,11 +73,11 @@ Color ImageMap::lookupPixel(double x, double y) const {
   return c;
 }
 
-TextureSet::TextureSet(const std::vector<Material>& materials, ImageMapCache* cache) {
-  maps_.resize(materials.size());
+TextureSet::TextureSet(const std::vector<const Material*>& surfaces, ImageMapCache* cache) {
+  maps_.resize(surfaces.size());
   std::map<std::string, std::shared_ptr<const ImageMap>> byPath;
-  for (size_t i = 0; i < materials.size(); ++i) {
-    const auto* image = std::get_if<ImageTexture>(&materials[i].texture);
+  for (size_t i = 0; i < surfaces.size(); ++i) {
+    const auto* image = std::get_if<ImageTexture>(&surfaces[i]->texture);
     if (!image) continue;
     auto& map = byPath[image->path];
     if (!map) {
@@ -89,10 +89,10 @@ TextureSet::TextureSet(const std::vector<Material>& materials, ImageMapCache* ca
     }
     maps_[i] = map;
   }
-  bumpMaps_.resize(materials.size());
+  bumpMaps_.resize(surfaces.size());
   std::map<std::string, std::shared_ptr<const ImageMap>> bumpsByPath;
-  for (size_t i = 0; i < materials.size(); ++i) {
-    const auto& bump = materials[i].bumpMap;
+  for (size_t i = 0; i < surfaces.size(); ++i) {
+    const auto& bump = surfaces[i]->bumpMap;
     if (!bump) continue;
     auto& map = bumpsByPath[bump->path];
     if (!map) {
@@ -107,10 +107,15 @@ TextureSet::TextureSet(const std::vector<Material>& materials, ImageMapCache* ca
   }
 }
 
-void checkImageTextures(const std::vector<Material>& materials) {
+void checkImageTextures(const std::vector<Material>& scene) {
+  std::vector<const Material*> materials;
+  for (const Material& m : scene) {
+    materials.push_back(&m);
+    for (const Material& layer : m.layers) materials.push_back(&layer);
+  }
   std::set<std::string> checked;
-  for (const Material& m : materials) {
-    const auto* image = std::get_if<ImageTexture>(&m.texture);
+  for (const Material* m : materials) {
+    const auto* image = std::get_if<ImageTexture>(&m->texture);
     if (!image || !checked.insert(image->path).second) continue;
     try {
       checkImageFile(image->path);
@@ -118,12 +123,12 @@ void checkImageTextures(const std::vector<Material>& materials) {
       throw LocatedError(image->loc, e.what(), LocatedError::Kind::Input);
     }
   }
-  for (const Material& m : materials) {
-    if (!m.bumpMap || !checked.insert(m.bumpMap->path).second) continue;
+  for (const Material* m : materials) {
+    if (!m->bumpMap || !checked.insert(m->bumpMap->path).second) continue;
     try {
-      checkImageFile(m.bumpMap->path);
+      checkImageFile(m->bumpMap->path);
     } catch (const ImageIOError& e) {
-      throw LocatedError(m.bumpMap->loc, e.what(), LocatedError::Kind::Input);
+      throw LocatedError(m->bumpMap->loc, e.what(), LocatedError::Kind::Input);
     }
   }
 }

@@ -55,21 +55,23 @@ class ImageMap {
   std::unique_ptr<Impl> impl_;
 };
 
-// Reads the header of every <image> texture's and <bump-map>'s file, as `lucent check` does: throws
+// Reads the header of every <image> texture's and <bump-map>'s file (of the materials and
+// their layers), as `lucent check` does: throws
 // what TextureSet would for a file that is not an image or too large (LocatedError, Kind::Input).
 void checkImageTextures(const std::vector<Material>& materials);
 
 class ImageMapCache;  // image_map_cache.h
 
-// The image maps of a scene's materials, each file loaded once, indexed by material.
+// The image maps of a scene's surfaces, each file loaded once, indexed by slot (a material,
+// or a layer of one: render/surface_slots.h).
 class TextureSet {
  public:
   // Loads every <image> texture and <bump-map>, or takes it from `cache` (which keeps it
   // for later sets); throws LocatedError (Kind::Input, at the element) for one that cannot
   // be read.
-  explicit TextureSet(const std::vector<Material>& materials, ImageMapCache* cache = nullptr);
+  explicit TextureSet(const std::vector<const Material*>& surfaces, ImageMapCache* cache = nullptr);
 
-  // The texture colour T of material `index` at the hit (1 for a material without one).
+  // The texture colour T of slot `index` at the hit (1 for a material without one).
   Color eval(uint32_t index, const Material& material, const SurfaceInfo& surface,
              const Instance& leaf) const;
 

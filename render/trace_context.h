@@ -10,9 +10,20 @@
 #include "ray_stats.h"
 #include "shadow_cache.h"
 
+#include "primitives/math.h"
 #include "primitives/test_counts.h"
 
+#include <vector>
+
 namespace lucent {
+
+// A lower layer's mirror ray waiting to be traced (Tracer::shadeLayers): its direction,
+// weight and the layer's shading normal.
+struct LayerMirror {
+  Vec3 direction{0.0};
+  Vec3 normal{0.0};
+  Color weight{0.0f};
+};
 
 class TraceContext {
  public:
@@ -22,6 +33,9 @@ class TraceContext {
   ShadowCache shadowCache;
   // Reused from one adaptive area light's estimate to the next (no allocation per point).
   AdaptiveAreaSampler areaSampler;
+  // A stack of lower layers' mirror rays: each call pushes its own above the entries of the
+  // calls it recursed from and pops them before it returns (no allocation per hit).
+  std::vector<LayerMirror> layerMirrors;
 
   // Begins a tile: no counts yet, and an empty shadow cache, so that what a tile counts
   // (rays, tests, cache hits) never depends on which tiles its thread traced before.

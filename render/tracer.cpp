@@ -41,9 +41,10 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
       lights_(world.scene().lights),
       sky_(world.scene().sky),
       fogs_(world.scene().fogs),
-      textures_(world.scene().materials, textures) {
+      slots_(world.scene().materials),
+      textures_(slots_.all(), textures) {
+  for (const Material* m : slots_.all()) seeThrough_.push_back(textureSeeThrough(m->texture));
   for (const Material& m : world.scene().materials) {
-    seeThrough_.push_back(textureSeeThrough(m.texture));
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
     anyAbsorbing_ = anyAbsorbing_ || (m.attenuates() && m.isTransmissive());
   }
@@ -90,38 +91,17 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
 
     const WorldLeaf& hitLeaf = hit.leaf();
     const SurfaceInfo s = hit.surface(ray);
-    // A see-through texture: the material as it is at this point (render/see_through.h);
-    // every other material is shaded as it is, with no copy.
-    std::optional<Material> seen;
-    std::optional<WorldLeaf> seenLeaf;
-    if (seeThrough_[hitLeaf.materialIndex]) {
-      const Material& own = *hitLeaf.material;
-      seen.emplace(materialThrough(
-          own, textures_.evalPigment(hitLeaf.materialIndex, own, s, *hitLeaf.instance)));
-      seenLeaf.emplace(hitLeaf);
-      seenLeaf->material = &*seen;
-    }
-    const WorldLeaf& leaf = seenLeaf ? *seenLeaf : hitLeaf;
-    const Material& m = *leaf.material;
-    const bool solid = leaf.medium != nullptr;  // the leaf bounds a medium (its material)
+    const bool solid = hitLeaf.medium != nullptr;  // the leaf bounds a medium (its material)
     const bool front = glm::dot(ray.d, s.ng) < 0.0;
-    const bool leaving = solid && !front;  // the ray was inside this solid
-    travelled(ray, hit.t(), leaving ? hitLeaf.material : nullptr, media, sum, throughput);
+    const Hit here{hitLeaf, s, -glm::normalize(ray.d), front, solid && !front};
+    travelled(ray, hit.t(), here.leaving ? hitLeaf.material : nullptr, media, sum, throughput);
 
-    const Vec3 v = -glm::normalize(ray.d);
-    Vec3 unbent;
-    const Vec3 n = shadingNormal(leaf, s, front, v, unbent);
-    Color result = localLight(leaf, s, n, v, leaving, media, seed, context);
-    const Interface side = interfaceAt(*hitLeaf.material, m.transmissive, solid, front, media);
-    const SecondaryRays rays =
-        secondaryRays(m, ShadingPoint{s.p, n, v}, solid, side.n1, side.n2, reflectionTint(leaf, s));
-    // A bent normal may send the mirror ray below the surface: it is turned back (with
-    // n = unbent this is the plain mirror direction).
-    const Vec3 mirror = reflectAboveSurface(-v, n, unbent);
-    result =
-        withBranches(result, s, mirror, rays, depth, weight, media, side.beyond, seed, context);
-    sum += throughput * result;
-
+    const SurfaceSlots::Layers layers = slots_.layersOf(hitLeaf.materialIndex);
+    const Shaded shaded = layers.count > 0
+                              ? shadeLayers(here, layers, depth, weight, media, seed, context)
+                              : shadeOne(here, depth, weight, media, seed, context);
+    sum += throughput * shaded.result;
+    const SecondaryRays& rays = shaded.rays;
     if (!rays.straight) return sum;
     Color w = weight * rays.transmitted;
     if (maxComponent(w) < settings_.minWeight) return sum;
@@ -129,8 +109,128 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     weight = w;
     throughput *= rays.transmitted;
     ray = spawnRay(s, ray.d, settings_.epsilon);
-    if (solid) media = side.beyond;
+    if (solid) media = shaded.beyond;
   }
+}
+
+Tracer::Shaded Tracer::shadeOne(const Hit& h, int depth, const Color& weight,
+                                const MediaStack& media, PathSeed& seed,
+                                TraceContext& context) const {
+  const WorldLeaf& hitLeaf = h.leaf;
+  const SurfaceInfo& s = h.s;
+  // A see-through texture: the material as it is at this point (render/see_through.h);
+  // every other material is shaded as it is, with no copy.
+  std::optional<Material> seen;
+  std::optional<WorldLeaf> seenLeaf;
+  if (seeThrough_[hitLeaf.materialIndex]) {
+    const Material& own = *hitLeaf.material;
+    seen.emplace(materialThrough(
+        own, textures_.evalPigment(hitLeaf.materialIndex, own, s, *hitLeaf.instance)));
+    seenLeaf.emplace(hitLeaf);
+    seenLeaf->material = &*seen;
+  }
+  const WorldLeaf& leaf = seenLeaf ? *seenLeaf : hitLeaf;
+  const Material& m = *leaf.material;
+  const bool solid = leaf.medium != nullptr;
+
+  Vec3 unbent;
+  const Vec3 n = shadingNormal(leaf, s, h.front, h.v, unbent);
+  Shaded out;
+  out.result = localLight(leaf, s, n, h.v, h.leaving, media, seed, context);
+  Interface side = interfaceAt(*hitLeaf.material, m.transmissive, solid, h.front, media);
+  out.rays =
+      secondaryRays(m, ShadingPoint{s.p, n, h.v}, solid, side.n1, side.n2, reflectionTint(leaf, s));
+  // A bent normal may send the mirror ray below the surface: it is turned back (with
+  // n = unbent this is the plain mirror direction).
+  const Vec3 mirror = reflectAboveSurface(-h.v, n, unbent);
+  out.result = withBranches(out.result, s, mirror, out.rays, depth, weight, media, side.beyond,
+                            seed, context);
+  out.beyond = std::move(side.beyond);
+  return out;
+}
+
+// POV-Ray 3.7's layered texture (its Trace::ComputeLightedTexture, as facts): from the top
+// layer down, each layer's emission, ambient, diffuse and highlights, scaled by its opacity
+// as a see-through texture's are, are multiplied by what the layers above let through;
+// each layer's mirror ray is added undimmed; what all the layers let through weighs the
+// ray refracted by the top layer's normal. Under total internal reflection the top layer's
+// mirror ray carries it, and the lower layers whose normal is the top one's add no other.
+Tracer::Shaded Tracer::shadeLayers(const Hit& h, SurfaceSlots::Layers layers, int depth,
+                                   const Color& weight, const MediaStack& media, PathSeed& seed,
+                                   TraceContext& context) const {
+  const SurfaceInfo& s = h.s;
+  const bool solid = h.leaf.medium != nullptr;
+  // The indices on both sides whether or not the surface transmits here: a lower layer's
+  // Fresnel reflection needs them.
+  Interface side = interfaceAt(*h.leaf.material, Color(1.0f), solid, h.front, media);
+  std::vector<LayerMirror>& lower = context.layerMirrors;
+  const size_t firstLower = lower.size();
+
+  Shaded out;
+  Color through(1.0f);  // what the layers above let through
+  std::optional<Material> top;
+  Vec3 topN(0.0), topUnbent(0.0);
+  Color topTint(1.0f);
+  for (uint32_t k = 0; k < layers.count; ++k) {
+    const uint32_t slot = layers.first + k;
+    const Material& own = *slots_.all()[slot];
+    WorldLeaf leaf = h.leaf;
+    leaf.materialIndex = slot;
+    std::optional<Material> seen;
+    if (seeThrough_[slot])
+      seen.emplace(materialThrough(own, textures_.evalPigment(slot, own, s, *leaf.instance)));
+    else if (k == 0) seen.emplace(own);  // the top layer is kept for its refraction below
+    leaf.material = seen ? &*seen : &own;
+    const Material& m = *leaf.material;
+
+    Vec3 unbent;
+    const Vec3 n = shadingNormal(leaf, s, h.front, h.v, unbent);
+    out.result += through * localLight(leaf, s, n, h.v, h.leaving, media, seed, context);
+    const Color tint = reflectionTint(leaf, s);
+    if (k == 0) {
+      topN = n;
+      topUnbent = unbent;
+      topTint = tint;
+    } else {
+      const Color w = mirrorWeight(m, ShadingPoint{s.p, n, h.v}, side.n1, side.n2, tint);
+      if (maxComponent(w) > 0.0f) lower.push_back({reflectAboveSurface(-h.v, n, unbent), n, w});
+    }
+    through *= m.transmissive;
+    if (k == 0) top = std::move(seen);
+    // Nothing shows through any more: the layers below cannot be seen.
+    if (!(maxComponent(glm::abs(through)) > 0.0f)) break;
+  }
+
+  // The top layer's mirror ray and the ray through all the layers.
+  top->transmissive = through;
+  out.rays = secondaryRays(*top, ShadingPoint{s.p, topN, h.v}, solid, side.n1, side.n2, topTint);
+  if (!(maxComponent(through) > 0.0f)) side.beyond = media;  // nothing crosses
+  out.result = withBranches(out.result, s, reflectAboveSurface(-h.v, topN, topUnbent), out.rays,
+                            depth, weight, media, side.beyond, seed, context);
+  for (size_t i = firstLower; i < lower.size(); ++i) {
+    const LayerMirror l = lower[i];  // a copy: the traces below push onto the same stack
+    if (out.rays.totallyReflected && l.normal == topN) continue;
+    SecondaryRays mirrorOnly;
+    mirrorOnly.mirror = l.weight;
+    out.result = withBranches(out.result, s, l.direction, mirrorOnly, depth, weight, media,
+                              side.beyond, seed, context);
+  }
+  lower.resize(firstLower);
+  out.beyond = std::move(side.beyond);
+  return out;
+}
+
+Color Tracer::layersLetThrough(const WorldLeaf& leaf, SurfaceSlots::Layers layers,
+                               const SurfaceInfo& s) const {
+  Color t(1.0f);
+  for (uint32_t k = 0; k < layers.count && maxComponent(glm::abs(t)) > 0.0f; ++k) {
+    const uint32_t slot = layers.first + k;
+    const Material& own = *slots_.all()[slot];
+    t *= seeThrough_[slot]
+             ? transmittedThrough(own, textures_.evalPigment(slot, own, s, *leaf.instance))
+             : own.transmissive;
+  }
+  return t;
 }
 
 Color Tracer::escaped(const Ray& ray, const MediaStack& media) const {
@@ -386,7 +486,9 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
     if (!world_.intersectTransmissive(ray, hit)) break;
     const WorldLeaf& leaf = hit.leaf();
     if (!leaf.transmissive) return Color(0.0f);
-    if (seeThrough_[leaf.materialIndex]) {
+    if (const SurfaceSlots::Layers layers = slots_.layersOf(leaf.materialIndex); layers.count > 0) {
+      t *= layersLetThrough(leaf, layers, hit.surface(ray));
+    } else if (seeThrough_[leaf.materialIndex]) {
       const Material& own = *leaf.material;
       t *= transmittedThrough(
           own, textures_.evalPigment(leaf.materialIndex, own, hit.surface(ray), *leaf.instance));

@@ -9,6 +9,7 @@
 #include "media_stack.h"
 #include "ray_stats.h"
 #include "shadow_cache.h"
+#include "surface_slots.h"
 #include "texture.h"
 #include "trace_context.h"
 
@@ -65,6 +66,33 @@ class Tracer {
  private:
   Color trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed& seed,
               TraceContext& context) const;
+
+  // One surface hit as trace() shades it: the colour it sends back along the ray
+  // (its own light and its branches), its secondary rays and the media beyond it.
+  struct Hit {
+    const WorldLeaf& leaf;
+    const SurfaceInfo& s;
+    Vec3 v;  // towards the viewer
+    bool front = true;
+    bool leaving = false;  // the ray was inside this solid
+  };
+  struct Shaded {
+    Color result{0.0f};
+    SecondaryRays rays;
+    MediaStack beyond;
+  };
+  // A material of one layer (see-through where its texture is).
+  Shaded shadeOne(const Hit& h, int depth, const Color& weight, const MediaStack& media,
+                  PathSeed& seed, TraceContext& context) const;
+  // A layered material, as POV-Ray composes its layers (render/surface_slots.h): each
+  // layer's own light dimmed by what the layers above let through, each layer's mirror
+  // ray added as it is, the light from behind through all of them along the top layer's
+  // refracted ray.
+  Shaded shadeLayers(const Hit& h, SurfaceSlots::Layers layers, int depth, const Color& weight,
+                     const MediaStack& media, PathSeed& seed, TraceContext& context) const;
+  // What a layered material lets through at a hit: the product of its layers'.
+  Color layersLetThrough(const WorldLeaf& leaf, SurfaceSlots::Layers layers,
+                         const SurfaceInfo& s) const;
 
   // The parts of one step of trace(), in the order it takes them.
   // The colour of a ray that hits nothing: the sky or background, through the medium the
@@ -126,8 +154,9 @@ class Tracer {
   // jitter), computed once: the loop over an area light's 64 samples then only reads
   // them. Empty for a jittered area light, whose targets differ per point.
   std::vector<std::vector<Vec3>> fixedTargets_;
-  TextureSet textures_;
-  std::vector<char> seeThrough_;  // per material: textureSeeThrough (evaluated per hit)
+  SurfaceSlots slots_;            // the materials and their layers, by slot
+  TextureSet textures_;           // by slot
+  std::vector<char> seeThrough_;  // per slot: textureSeeThrough (evaluated per hit)
   bool anyTransmissive_ = false;  // else shadow rays ask only the any-hit question
   bool anyAbsorbing_ = false;     // else shadow rays need no media bookkeeping
   // What this tracer's entries in a ShadowCache carry (unique in the process). Copies

@@ -49,10 +49,22 @@ FinishTerm term(Attribute a, std::string_view pov, std::vector<PovHint> hints = 
   return {std::move(a.info), std::move(a.read), pov, std::move(hints), std::move(write)};
 }
 
+// The terms of the whole material, which its <layer>s do not take: the interior (what
+// light meets inside the solid) and the rules for the ray that crosses the surface.
+std::vector<FinishTerm> markInterior(std::vector<FinishTerm> table) {
+  static constexpr std::string_view kInterior[] = {"ior",           "full-tir",     "absorption",
+                                                   "fade-distance", "fade-power",   "fade-color",
+                                                   "hollow",        "inner-ambient"};
+  for (FinishTerm& t : table)
+    for (std::string_view name : kInterior)
+      if (t.info.name == name) t.ofInterior = true;
+  return table;
+}
+
 }  // namespace
 
 const std::vector<FinishTerm>& finishTerms() {
-  static const std::vector<FinishTerm> table{
+  static const std::vector<FinishTerm> table = markInterior({
       term(color("emissive", &Material::emissive,
                  "k_e, emitted colour (added as is; does not light other objects). Default 0."),
            "finish { emission }, divided by the pigment", {{"emission"}}),
@@ -219,7 +231,7 @@ const std::vector<FinishTerm>& finishTerms() {
                   "1)), τ POV-Ray's turbulence (5 octaves, omega 0.5, lambda 2, noise "
                   "generator 2) at the world-space point, >= 0."),
            "finish { irid { turbulence } }, written by irid's row"),
-  };
+  });
   return table;
 }
 

@@ -46,6 +46,9 @@ struct FinishTerm {
   // converts it together with other terms (POV-Ray's pigment carries the diffuse colour,
   // its opacity scales the local terms: povray/pov_materials.h) or another row writes it.
   std::function<void(const Material&, PovFinishOut&)> writePov;
+  // A term of the whole material (its interior: ior, fade, absorption, hollow, full-tir,
+  // inner-ambient), which a <layer> does not take.
+  bool ofInterior = false;
 };
 
 // Every finish and interior attribute of <material>, in the schema's order, which is also

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 namespace lucent {
 
@@ -72,6 +73,11 @@ struct Material {
   double iridTurbulence = 0.0;
 
   Texture texture;
+  // <layer>s written over this material, bottom first (POV-Ray's layered texture: the
+  // last one is on top). Each holds the surface terms (emissive to irid, its texture and
+  // normal); the interior terms (ior, fade, absorption, hollow, full-tir, inner-ambient)
+  // are the material's. Empty for a material of one layer (render/layers.h).
+  std::vector<Material> layers;
   // <normal>: the shading normal perturbed by a pattern's slope (geometry unchanged).
   std::optional<NormalSpec> normal;
   // <bump-map>: the other normal perturbation (a material holds one of the two at most).
@@ -80,9 +86,14 @@ struct Material {
   bool hasTexture() const { return !std::holds_alternative<std::monostate>(texture); }
   // k_t above 0, or a texture colour with filter or transmit (which lets light through
   // where the texture takes it).
+  // A layered material lets light through only where every layer does.
   bool isTransmissive() const {
-    return maxComponent(transmissive) > 0.0f || textureSeeThrough(texture);
+    if (!(maxComponent(transmissive) > 0.0f || textureSeeThrough(texture))) return false;
+    for (const Material& layer : layers)
+      if (!layer.isTransmissive()) return false;
+    return true;
   }
+  bool layered() const { return !layers.empty(); }
   bool isReflective() const { return maxComponent(reflective) > 0.0f; }
   bool isAbsorbing() const { return maxComponent(absorption) > 0.0f; }
   bool hasFade() const { return fadeDistance > 0.0; }
