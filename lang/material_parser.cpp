@@ -48,9 +48,9 @@ std::vector<std::string_view> layerAttributes() {
 Material parseLayer(ElementReader& r) {
   for (const FinishTerm& t : finishTerms())
     if (t.ofInterior && r.has(t.info.name.c_str()))
-      r.attrError(t.info.name.c_str(), "'" + t.info.name +
-                                           "' is a term of the whole material (its interior), "
-                                           "not of one layer: write it on the <material>");
+      r.attrError(t.info.name.c_str(),
+                  "a term of the whole material (its interior), not of one layer: write it on "
+                  "the <material>");
   static const std::vector<std::string_view> attributes = [] {
     std::vector<std::string_view> names = layerAttributes();
     for (const FinishTerm& t : finishTerms())

@@ -55,7 +55,7 @@ SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool soli
                             double n2, const Color& metal = Color(1.0f));
 
 // The mirror ray's weight alone, as secondaryRays gives it where the surface transmits
-// nothing: a lower layer's reflection (render/layers.h).
+// nothing: a lower layer's reflection (render/surface_slots.h).
 Color mirrorWeight(const Material& m, const ShadingPoint& at, double n1, double n2,
                    const Color& metal = Color(1.0f));
 

@@ -76,7 +76,7 @@ struct Material {
   // <layer>s written over this material, bottom first (POV-Ray's layered texture: the
   // last one is on top). Each holds the surface terms (emissive to irid, its texture and
   // normal); the interior terms (ior, fade, absorption, hollow, full-tir, inner-ambient)
-  // are the material's. Empty for a material of one layer (render/layers.h).
+  // are the material's. Empty for a material of one layer (render/surface_slots.h).
   std::vector<Material> layers;
   // <normal>: the shading normal perturbed by a pattern's slope (geometry unchanged).
   std::optional<NormalSpec> normal;

@@ -117,10 +117,6 @@ MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish
   if (m.metallic || m.reflectMetallic > 0.0) m.metallicColor = p;
   importFade(interior, m);
 
-  if (transmits && maxComponent(m.ambient) > 0.0f)
-    notes.push_back(
-        "ambient on a transparent surface: seen from inside the object Lucent multiplies "
-        "it by the transmission, POV-Ray does not");
   // Under total internal reflection POV-Ray continues the mirror ray with weight 1 (only a
   // surface that transmits can reflect totally).
   m.fullTir = transmits;

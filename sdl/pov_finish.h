@@ -20,6 +20,10 @@ struct PovColorMapEntry {
   float transmit = 0.0f;
 };
 
+// A colour map as written, in the ascending order Lucent's maps keep, giving every value
+// the colour POV-Ray's search of the written order gives it (sdl/read_patterns.cpp).
+std::vector<PovColorMapEntry> ascendingMap(const std::vector<PovColorMapEntry>& map);
+
 // `pigment { rgbft <r, g, b, f, t> }` or `pigment { PATTERN color_map {...} modifiers }`.
 // POV-Ray's default pigment, an object's when nothing gives it one, is black.
 struct PovPigment {

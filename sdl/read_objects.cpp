@@ -131,9 +131,9 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
   if (w == "pigment" || w == "normal" || w == "finish" || w == "texture") {
     if (w == "texture" && o.texture) {
       // A texture { } on an object that has one (from any block) is a layer over it.
-      keepError(in, t.loc(), kLayeredTextures);
-      in.expect("{");
-      skipToClose(in, 1);
+      PovTexture top = readTexture(in, defaultTexture());
+      top.transform(backToObject);
+      o.texture = layered(std::move(*o.texture), std::move(top));
       return true;
     }
     if (!o.texture) {

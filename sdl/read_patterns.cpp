@@ -262,11 +262,49 @@ std::vector<PovColorMapEntry> SceneReader::readColorMap(TokenStream& in, SourceL
   return map;
 }
 
+// A colour map whose entries are not in ascending order (woods.inc's T_Wood32), as the
+// ascending map that gives every value the colour POV-Ray gives it. POV-Ray's search takes
+// the last entry at or above the last entry's value; below that, the first entry whose
+// value is at or above v and the one just before it in the list, blended linearly (its
+// BlendMap::Search). So entry i is reached for v in (the highest value before it, its own],
+// blended from entry i - 1 wherever that lies: a straight line, which two ascending
+// entries at the ends of that stretch hold exactly. An ascending map is returned as it is.
+std::vector<PovColorMapEntry> ascendingMap(const std::vector<PovColorMapEntry>& map) {
+  if (std::is_sorted(
+          map.begin(), map.end(),
+          [](const PovColorMapEntry& a, const PovColorMapEntry& b) { return a.at < b.at; }))
+    return map;
+  const double last = map.back().at;
+  auto blendAt = [](const PovColorMapEntry& a, const PovColorMapEntry& b, double v) {
+    const float w = static_cast<float>((v - a.at) / (b.at - a.at));
+    PovColorMapEntry e;
+    e.at = v;
+    e.color = a.color + (b.color - a.color) * w;
+    e.filter = a.filter + (b.filter - a.filter) * w;
+    e.transmit = a.transmit + (b.transmit - a.transmit) * w;
+    return e;
+  };
+  std::vector<PovColorMapEntry> out;
+  double highest = map.front().at;
+  out.push_back(map.front());  // up to its value (or the last entry's, if that is lower)
+  out.back().at = std::min(highest, last);
+  for (size_t i = 1; i < map.size(); ++i) {
+    const double from = highest, to = std::min(map[i].at, last);
+    if (map[i].at > highest && from < to) {
+      out.push_back(blendAt(map[i - 1], map[i], from));
+      out.push_back(to == map[i].at ? map[i] : blendAt(map[i - 1], map[i], to));
+    }
+    highest = std::max(highest, map[i].at);
+  }
+  out.push_back(map.back());  // from the last entry's value up
+  return out;
+}
+
 // The colours of a pattern pigment, from its map as written (or POV-Ray's default map),
 // with their filter and transmit. A map whose every entry has one transmit and no filter
 // keeps it as the pigment's (the material's constant transmission, which costs nothing
 // per hit); any other filter or transmit goes with each colour (a see-through texture).
-void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& in) {
+void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& /*in*/) {
   if (!p.patterned()) return;
   const PatternSpec* spec = specOf(p.pattern);
   std::vector<PovColorMapEntry> map = p.map.empty() && spec ? defaultColourMap(spec->type) : p.map;
@@ -280,11 +318,7 @@ void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& in) {
       p.transmit = first.transmit;
       for (PovColorMapEntry& e : map) e.transmit = 0.0f;
     }
-    for (size_t i = 1; i < map.size(); ++i)
-      if (map[i].at < map[i - 1].at) {
-        keepError(in, p.mapLoc, "the colour map's entries must be in ascending order");
-        break;
-      }
+    map = ascendingMap(map);
   }
   auto colour = [&](size_t i) { return map.at(i).color; };
   auto ft = [&](size_t i) { return FilterTransmit{map.at(i).filter, map.at(i).transmit}; };

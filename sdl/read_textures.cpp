@@ -264,12 +264,10 @@ PovMaterial SceneReader::readMaterial(TokenStream& in) {
     if (m.texture) m.texture->name.clear();
     PovTransform move;
     if (isWord(t, "texture")) {
-      if (textures++ > 0) {
-        keepError(in, t.loc(), kLayeredTextures);
-        readTexture(in, defaultTexture());
-      } else {
-        m.texture = readTexture(in, defaultTexture());
-      }
+      // A second texture is a layer over the first.
+      PovTexture read = readTexture(in, defaultTexture());
+      if (textures++ > 0 && m.texture) m.texture = layered(std::move(*m.texture), std::move(read));
+      else m.texture = std::move(read);
     } else if (isWord(t, "interior")) {
       m.interior = readInterior(in, m.interior ? *m.interior : PovInterior{});
     } else if (readTransform(t, in, move)) {

@@ -49,12 +49,6 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
 
 }  // namespace
 
-const char* const kLayeredTextures =
-    "layered textures are not supported by Lucent (one texture per material; a second "
-    "texture { } is a layer over the first)";
-
-namespace {}  // namespace
-
 void SceneReader::keepError(TokenStream& in, const SourceLoc& at, const std::string& message) {
   // The core adds the macro and include chain that led here as notes.
   const SdlError e = in.errorAt(at, message);
@@ -246,11 +240,13 @@ void SceneReader::readScene(TokenStream& in) {
     if (t.kind == TokenKind::End) return;
     if (!isWord(t, "texture")) lastTexture_.reset();
     if (isWord(t, "texture") && lastTexture_) {
-      // A layer of the texture just declared: its error kept by that declaration.
-      const SdlError e = in.errorAt(t.loc(), kLayeredTextures);
-      lastTexture_->refused.push_back({Severity::Error, e.loc(), e.message()});
-      in.expect("{");
-      skipToClose(in, 1);
+      // A layer of the texture just declared (`#declare T = texture { } texture { }`): its
+      // refusals are the declaration's, reported where it is used.
+      declaring_.emplace_back();
+      PovTexture top = readTexture(in, defaultTexture());
+      for (Diagnostic& d : declaring_.back()) lastTexture_->refused.push_back(std::move(d));
+      declaring_.pop_back();
+      lastTexture_->texture = layered(std::move(lastTexture_->texture), std::move(top));
       continue;
     }
     if (t.kind == TokenKind::Keyword && t.kw == Kw::k_default) {
@@ -339,20 +335,19 @@ uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& 
                                      interior.fadeColor.b, hollow);
     if (const auto it = namedMaterials_.find(key); it != namedMaterials_.end()) return it->second;
   }
-  MaterialImport imported = importMaterial(texture.pigment, texture.finish, interior);
-  for (const std::string& d : imported.differences) warn(in, at, d);
-  Material& m = imported.material;
+  // The bottom layer is the material itself, the others its <layer>s (bottom first).
+  std::vector<const PovTexture*> layers;
+  for (const PovTexture& layer : texture.below) layers.push_back(&layer);
+  layers.push_back(&texture);
+  const Mat4 objectToTexture = textureFromNode * negateZ();
+  Material m = importLayer(*layers.front(), interior, objectToTexture, at, in);
+  for (size_t k = 1; k < layers.size(); ++k)
+    m.layers.push_back(importLayer(*layers[k], interior, objectToTexture, at, in));
   m.loc = at;
   m.hollow = hollow;
-  const Mat4 objectToTexture = textureFromNode * negateZ();
-  if (PatternPlacement* p = placementOf(m.texture))
-    p->patternFromObject = glm::inverse(texture.pigment.transform.povMatrix()) * objectToTexture;
-  if (texture.normal) {
-    m.normal = texture.normal->spec;
-    m.normal->keepFacingAway = true;  // POV-Ray keeps a bent normal that faces away
-    m.normal->pattern.placement.patternFromObject =
-        glm::inverse(texture.normal->transform.povMatrix()) * objectToTexture;
-  }
+  // Under total internal reflection POV-Ray continues the mirror ray with weight 1 where
+  // the surface lets light through at all (every layer).
+  if (m.layered()) m.fullTir = m.isTransmissive();
   const auto index = static_cast<uint32_t>(scene_.materials.size());
   if (!key.empty()) {
     // Named after the texture; a second interior with the same texture takes a suffix.
@@ -364,6 +359,24 @@ uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& 
   }
   scene_.materials.push_back(m);
   return index;
+}
+
+// One layer of a texture as a Lucent material: its pigment, finish and normal, placed.
+Material SceneReader::importLayer(const PovTexture& layer, const PovInterior& interior,
+                                  const Mat4& objectToTexture, const SourceLoc& at,
+                                  TokenStream& in) {
+  MaterialImport imported = importMaterial(layer.pigment, layer.finish, interior);
+  for (const std::string& d : imported.differences) warn(in, at, d);
+  Material& m = imported.material;
+  if (PatternPlacement* p = placementOf(m.texture))
+    p->patternFromObject = glm::inverse(layer.pigment.transform.povMatrix()) * objectToTexture;
+  if (layer.normal) {
+    m.normal = layer.normal->spec;
+    m.normal->keepFacingAway = true;  // POV-Ray keeps a bent normal that faces away
+    m.normal->pattern.placement.patternFromObject =
+        glm::inverse(layer.normal->transform.povMatrix()) * objectToTexture;
+  }
+  return std::move(m);
 }
 
 // An object's nodes. POV-Ray gives an object without a texture its parent's (a CSG's
@@ -486,9 +499,13 @@ void SceneReader::finishScene(TokenStream& in) {
   auto noise = [&](PatternSpec& s) {
     if (s.noiseGenerator == 0) s.noiseGenerator = global_.noiseGenerator;
   };
-  for (Material& m : scene_.materials) {
+  auto materialNoise = [&](Material& m) {
     if (auto* p = std::get_if<PatternTexture>(&m.texture)) noise(p->pattern);
     if (m.normal) noise(m.normal->pattern);
+  };
+  for (Material& m : scene_.materials) {
+    materialNoise(m);
+    for (Material& layer : m.layers) materialNoise(layer);
   }
   if (scene_.sky) {
     for (Texture& layer : scene_.sky->layers)

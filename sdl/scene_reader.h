@@ -41,14 +41,36 @@ struct PovTexture {
   // The declared texture (or material) it is, as written and unchanged: `texture { T }`;
   // empty once anything changes it. The objects that share it share one named material.
   std::string name;
+  // A layered texture (`texture { A } texture { B }`): this is the top layer, the one a
+  // later pigment, normal or finish changes, as in POV-Ray; `below` holds the layers under
+  // it, bottom first.
+  std::vector<PovTexture> below;
 
-  bool patterned() const { return pigment.patterned() || normal.has_value(); }
-  // `texture { ... translate ... }`: moves what the texture holds.
+  bool patterned() const {
+    if (pigment.patterned() || normal.has_value()) return true;
+    for (const PovTexture& layer : below)
+      if (layer.patterned()) return true;
+    return false;
+  }
+  // `texture { ... translate ... }`: moves what the texture holds, every layer of it.
   void transform(const PovTransform& m) {
     pigment.transform = pigment.transform.then(m);
     if (normal) normal->transform = normal->transform.then(m);
+    for (PovTexture& layer : below) layer.transform(m);
   }
 };
+
+// `texture { under } texture { top }`: the layers of top (itself perhaps layered) over
+// those of under.
+inline PovTexture layered(PovTexture under, PovTexture top) {
+  std::vector<PovTexture> below = std::move(under.below);
+  under.below.clear();
+  below.push_back(std::move(under));
+  for (PovTexture& layer : top.below) below.push_back(std::move(layer));
+  top.below = std::move(below);
+  top.name.clear();  // no longer a declared texture as it is
+  return top;
+}
 
 // One object as POV-Ray holds it: a shape, a CSG operation of others, or a light source.
 struct PovObject {
@@ -145,7 +167,6 @@ struct TransformItem : SceneItem {
 };
 
 // The refusal of a second texture { } (a layer), where it is.
-extern const char* const kLayeredTextures;
 
 class SceneReader : public ItemReader {
  public:
@@ -191,6 +212,8 @@ class SceneReader : public ItemReader {
   static bool keepsBound(const PovObject& o, bool framed);
   void addBoxCut(const PovObject& o, const Inherited& here, Node& n, TokenStream& in);
   // `hollow`: the object's flag, which POV-Ray promotes to its interior (the material's).
+  Material importLayer(const PovTexture& layer, const PovInterior& interior,
+                       const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in);
   uint32_t addMaterial(const PovTexture& texture, const PovInterior& interior, bool hollow,
                        const Mat4& textureFromNode, const SourceLoc& at, TokenStream& in);
   // The item an identifier names if it is a T; the errors its declaration kept are
@@ -280,7 +303,7 @@ class SceneReader : public ItemReader {
                 const PatternSpec* spec, const PovTransform& before, bool& warped);
 
   PovTexture defaultTexture() const {
-    return {defaults_.pigment, std::nullopt, defaults_.finish, {}};
+    return {defaults_.pigment, std::nullopt, defaults_.finish, {}, {}};
   }
 
   Scene& scene_;

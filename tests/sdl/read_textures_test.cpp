@@ -198,6 +198,59 @@ sphere { 0, 1 pigment { bozo } translate x pigment { scale 2 } }
       glm::inverse(translation(Vec3(1, 0, 0))) * scaling(0.5) * translation(Vec3(1, 0, 0)) * kS);
 }
 
+TEST_CASE("scene reader textures: layered textures, each layer with its own terms and place",
+          "[sdl][scene][texture][layers]") {
+  auto r = readScene(R"(
+#declare T_Two = texture { pigment { rgb <1, 0.5, 0> } finish { ambient 0.2 phong 0.5 } }
+  texture { pigment { bozo color_map { [0 rgbt 1] [1 rgbf <0, 0, 1, 0.5>] } scale 2 } }
+sphere { 0, 1 texture { T_Two } }
+sphere { 0, 1 pigment { rgb 0.5 } texture { T_Two translate x } scale 3
+  texture { pigment { rgbt <1, 1, 1, 0.5> } finish { diffuse 0.8 } } pigment { rgbt 0.25 } }
+box { 0, 1 material { texture { pigment { rgb 1 } } texture { pigment { rgbf <1, 0, 0, 1> } }
+  interior { ior 1.5 } } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+
+  // A declared layered texture: the first texture is the material, the second its layer.
+  const Material& two = materialOf(s, top(s, 0));
+  REQUIRE(two.layers.size() == 1);
+  checkColor(two.diffuse, Color(0.6f, 0.3f, 0.0f));  // POV-Ray's diffuse 0.6 times the pigment
+  checkColor(two.ambient, Color(0.2f, 0.1f, 0.0f));
+  checkColor(two.phong, Color(0.5f));
+  const Material& bozo = two.layers[0];
+  const auto& pattern = std::get<PatternTexture>(bozo.texture);
+  CHECK(pattern.pattern.type == PatternType::bozo);
+  CHECK(pattern.pattern.noiseGenerator == 2);  // global_settings' default, as the material's
+  checkMat(pattern.pattern.placement.patternFromObject, scaling(0.5) * kS);
+  CHECK(pattern.map.entries.at(1).ft.filter == 0.5f);
+  CHECK(bozo.ambient == Color(0.1f));  // its own finish: POV-Ray's default
+  CHECK(bozo.phong == Color(0.0f));
+
+  // Layers over an object's pigment: the pigment's texture at the bottom, then the declared
+  // texture's two layers (moved by its translate, and like every layer by the object's
+  // scale written after them), then the last texture, whose pigment the last block changes.
+  const Material& stacked = materialOf(s, top(s, 1));
+  checkColor(stacked.diffuse, Color(0.3f));
+  REQUIRE(stacked.layers.size() == 3);
+  checkColor(stacked.layers[0].diffuse, Color(0.6f, 0.3f, 0.0f));
+  checkMat(std::get<PatternTexture>(stacked.layers[1].texture).pattern.placement.patternFromObject,
+           scaling(0.5) * glm::inverse(translation(Vec3(1, 0, 0))) * kS);
+  const Material& topLayer = stacked.layers[2];
+  checkColor(topLayer.diffuse, Color(0.8f * 0.25f * 0.75f));  // diffuse·pigment·opacity
+  checkColor(topLayer.transmissive, Color(0.25f));
+  // The whole lets light through where every layer does: the bottom layer does not.
+  CHECK(!stacked.isTransmissive());
+  CHECK(!stacked.fullTir);
+
+  // A material's two textures, and its interior on the whole material.
+  const Material& glass = materialOf(s, top(s, 2));
+  REQUIRE(glass.layers.size() == 1);
+  CHECK(glass.ior == 1.5);
+  checkColor(glass.transmissive, Color(0.0f));
+  checkColor(glass.layers[0].transmissive, Color(1.0f, 0.0f, 0.0f));
+}
+
 TEST_CASE("scene reader textures: a turbulence warp before any transform is the placement's",
           "[sdl][scene][texture]") {
   auto r = readScene(
@@ -230,7 +283,7 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
   const auto errors = errorsOf(
       "sphere { 0, 1 pigment { cells } }\n"
       "sphere { 0, 1 pigment { bozo pigment_map { [0 rgb 1] } } }\n"
-      "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }\n"
+      "sphere { 0, 1 interior_texture { pigment { rgb 1 } } }\n"
       "sphere { 0, 1 pigment { image_map { png \"x.png\" } } }\n"
       "sphere { 0, 1 normal { checker } }\n"
       "sphere { 0, 1 texture { gradient y texture_map { [0 T1] [1 T2] } } }\n");
@@ -242,8 +295,8 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
         "test.pov:2:30: error: 'pigment_map' is not supported by Lucent (maps of pigments; "
         "Lucent's colour maps hold colours)");
   CHECK(errors[2] ==
-        "test.pov:3:45: error: layered textures are not supported by Lucent (one texture per "
-        "material; a second texture { } is a layer over the first)");
+        "test.pov:3:15: error: 'interior_texture' is not supported by Lucent (a texture for the "
+        "inside of a surface)");
   CHECK(errors[3].rfind("test.pov:4:25: error: 'image_map' is not supported by Lucent", 0) == 0);
   CHECK(errors[4] ==
         "test.pov:5:24: error: 'checker' is not supported by Lucent (as a normal pattern; "
@@ -269,15 +322,15 @@ TEST_CASE(
       "#declare T = texture { pigment { P_Cells } }\n"
       "sphere { 0, 1 texture { T } }\n"
       "sphere { 0, 1 pigment { P_Cells } }\n"
-      "sphere { 0, 1 texture { T_Layered } }\n"
+      "sphere { 0, 1 texture { T_Uv } }\n"
       "object { J_Unread }\n");
   REQUIRE(errors.size() == 3);
   CHECK(errors[0].rfind("refusals.inc:3:30: error: 'cells' is not supported by Lucent", 0) == 0);
   CHECK(errors[0].find("\ntest.pov:3:25: note: the declaration is used here") != std::string::npos);
-  CHECK(errors[1].rfind("refusals.inc:5:3: error: layered textures are not supported", 0) == 0);
+  CHECK(errors[1].rfind("refusals.inc:4:27: error: 'uv_mapping' is not supported", 0) == 0);
   CHECK(errors[1].find("\ntest.pov:5:25: note: the declaration is used here") != std::string::npos);
   // A block the reader does not read yet, declared: the same.
-  CHECK(errors[2].rfind("refusals.inc:7:21: error: 'julia_fractal' is not supported by Lucent",
+  CHECK(errors[2].rfind("refusals.inc:6:21: error: 'julia_fractal' is not supported by Lucent",
                         0) == 0);
   CHECK(errors[2].find("\ntest.pov:6:10: note: the declaration is used here") != std::string::npos);
 }
