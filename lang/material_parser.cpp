@@ -30,11 +30,16 @@ std::vector<std::string_view> materialAttributes() {
 // The texture elements (the table of texture kinds), then the normal perturbations.
 std::vector<std::string_view> materialChildren() {
   std::vector<std::string_view> names = textureElements();
-  names.insert(names.end(), {"normal", "bump-map", "layer"});
+  names.insert(names.end(), {"normal", "bump-map", "layer", "material-map"});
   return names;
 }
 
-void readSurfaceChildren(ElementReader& r, Material& m, bool isMaterial);
+// Finds the material an attribute (base=, an entry's material=) names, reading it first when
+// it comes later in the file.
+using BaseResolver = std::function<std::optional<uint32_t>(ElementReader&, const char* attr)>;
+
+// `resolve` null: a <layer>'s children (no layers, no map).
+void readSurfaceChildren(ElementReader& r, Material& m, const BaseResolver* resolve);
 
 // <layer>: a layer of POV-Ray's layered texture over its material (docs/scene-language.md,
 // "Layers"): the surface terms of the finish table, a texture and a normal perturbation.
@@ -63,21 +68,96 @@ Material parseLayer(ElementReader& r) {
   ElementInput in(r);
   for (const FinishTerm& t : finishTerms())
     if (!t.ofInterior) t.read(layer, in);
-  readSurfaceChildren(r, layer, false);
+  readSurfaceChildren(r, layer, nullptr);
   if (layer.hasTexture() && !r.has("diffuse")) layer.diffuse = Color(1.0f);
   return layer;
 }
 
 // The children of a <material> (layers allowed) or a <layer>: one texture, one normal
 // perturbation, and for a material its <layer>s, each over the ones before.
-void readSurfaceChildren(ElementReader& r, Material& m, bool isMaterial) {
+// <material-map>: its pattern first (a <pattern> without colour map, or a <checker>,
+// <hexagon> or <brick>, whose colours are not used), then its <entry at material>s or
+// <entry at><material/></entry>s, in ascending order of `at`.
+void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve) {
+  r.checkAttributes({});
   ParseContext& ctx = r.ctx();
+  bool havePattern = false;
+  m.mapPattern = std::monostate{};
+  m.mapEntries.clear();
+  r.forEachChild([&](pugi::xml_node n) {
+    ElementReader t(ctx, r.file(), n);
+    std::string_view name = n.name();
+    const std::vector<std::string_view> textures = textureElements();
+    if (name != "entry") {
+      if (std::find(textures.begin(), textures.end(), name) == textures.end() || name == "image") {
+        t.error(
+            "<material-map> holds its pattern (<pattern>, <checker>, <hexagon> or <brick>) "
+            "and <entry>s, not <" +
+            std::string(name) + ">");
+        return;
+      }
+      if (havePattern) {
+        t.error("<material-map> has one pattern, its first child");
+        return;
+      }
+      havePattern = true;
+      m.mapPattern = parseTexture(t);
+      if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern); p && !p->map.entries.empty())
+        t.error("a <material-map>'s <pattern> has no <color-map>: its value picks the entries");
+      return;
+    }
+    if (!havePattern) {
+      t.error(
+          "a <material-map> starts with its pattern (<pattern>, <checker>, <hexagon> or "
+          "<brick>), before its <entry>s");
+      return;
+    }
+    t.checkAttributes({"at", "material"});
+    MaterialMapEntry entry;
+    if (!t.has("at")) t.error("<entry> needs the attribute 'at' (the pattern's value it sits at)");
+    entry.at = t.number("at", 0.0);
+    if (!m.mapEntries.empty() && entry.at < m.mapEntries.back().at)
+      t.attrError("at", "the entries of a <material-map> must be in ascending order of 'at'");
+    std::optional<uint32_t> index;
+    if (t.has("material")) index = resolve(t, "material");
+    bool inline_ = false;
+    t.forEachChild([&](pugi::xml_node c) {
+      ElementReader e(ctx, r.file(), c);
+      if (std::string_view(c.name()) != "material" || inline_ || t.has("material")) {
+        e.error("an <entry> holds one inline <material>, or names one with material=\"id\"");
+        return;
+      }
+      inline_ = true;
+      index = parseInlineMaterial(e);
+    });
+    if (!t.has("material") && !inline_)
+      t.error("an <entry> needs a material: material=\"id\" or an inline <material>");
+    if (index) entry.material = ctx.scene.materials[*index];
+    entry.material.id.clear();
+    m.mapEntries.push_back(std::move(entry));
+  });
+  if (!havePattern) r.error("a <material-map> needs its pattern and at least one <entry>");
+  else if (m.mapEntries.empty()) r.error("a <material-map> needs at least one <entry>");
+}
+
+void readSurfaceChildren(ElementReader& r, Material& m, const BaseResolver* resolve) {
+  ParseContext& ctx = r.ctx();
+  const bool isMaterial = resolve != nullptr;
   const char* element = isMaterial ? "<material>" : "<layer>";
-  std::optional<SourceLoc> textureLoc, normalLoc;
+  std::optional<SourceLoc> textureLoc, normalLoc, mapLoc;
   bool ownLayers = false;
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader t(ctx, r.file(), n);
     std::string_view name = n.name();
+    if (name == "material-map" && isMaterial) {
+      if (mapLoc) {
+        t.error("<material> holds one <material-map> at most; the first is at " + mapLoc->str());
+        return;
+      }
+      mapLoc = t.loc();
+      parseMaterialMap(t, m, *resolve);
+      return;
+    }
     if (name == "layer" && isMaterial) {
       if (!ownLayers) m.layers.clear();  // the base's layers are replaced
       ownLayers = true;
@@ -103,10 +183,11 @@ void readSurfaceChildren(ElementReader& r, Material& m, bool isMaterial) {
     const std::vector<std::string_view> textures = textureElements();
     if (std::find(textures.begin(), textures.end(), name) == textures.end()) {
       std::vector<std::string_view> children = materialChildren();
-      if (!isMaterial) children.pop_back();  // no <layer> in a <layer>
+      if (!isMaterial) children.resize(children.size() - 2);  // no <layer>, no map
       std::string pov = povrayElementHint("material", name);
       t.error(std::string(element) + " may hold a texture (" + elementList(textures) +
-              "), a <normal> or <bump-map>" + (isMaterial ? " and <layer>s" : "") + ", not <" +
+              "), a <normal> or <bump-map>" +
+              (isMaterial ? ", <layer>s and a <material-map>" : "") + ", not <" +
               std::string(name) + ">" + (pov.empty() ? didYouMean(name, children) : pov));
       return;
     }
@@ -118,10 +199,20 @@ void readSurfaceChildren(ElementReader& r, Material& m, bool isMaterial) {
     textureLoc = t.loc();
     m.texture = parseTexture(t);
   });
+  if (mapLoc && (textureLoc || normalLoc || ownLayers))
+    r.error(
+        "a <material> with a <material-map> has no texture, normal or <layer> of its own: "
+        "its entries are its surfaces");
+  if (mapLoc) {
+    m.texture = std::monostate{};
+    m.normal.reset();
+    m.bumpMap.reset();
+    m.layers.clear();
+  } else if (textureLoc || normalLoc || ownLayers) {
+    m.mapEntries.clear();  // the base's map is replaced by a surface of its own
+    m.mapPattern = std::monostate{};
+  }
 }
-
-// Finds the material a base= names (reading it first when it comes later in the file).
-using BaseResolver = std::function<std::optional<uint32_t>(ElementReader&)>;
 
 std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const BaseResolver& baseOf) {
   static const std::vector<std::string_view> attributes = materialAttributes();
@@ -130,7 +221,7 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
   Material m;
   bool wroteDiffuse = false;
   if (r.has("base")) {
-    if (std::optional<uint32_t> base = baseOf(r)) {
+    if (std::optional<uint32_t> base = baseOf(r, "base")) {
       m = ctx.scene.materials[*base];
       wroteDiffuse = ctx.materialsWithDiffuse.count(*base) > 0;
     }
@@ -159,7 +250,7 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
 
   // A texture (or normal) of its own replaces the base's; layers of its own replace the
   // base's layers.
-  readSurfaceChildren(r, m, true);
+  readSurfaceChildren(r, m, &baseOf);
   // The contract: with a texture and no diffuse, the texture shows as it is.
   if (m.hasTexture() && !wroteDiffuse) m.diffuse = Color(1.0f);
 
@@ -192,7 +283,8 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
 
 std::optional<uint32_t> parseInlineMaterial(ElementReader& r) {
   // Every named material is read by now.
-  return parseMaterial(r, false, [](ElementReader& e) { return lookupMaterial(e, "base"); });
+  return parseMaterial(r, false,
+                       [](ElementReader& e, const char* attr) { return lookupMaterial(e, attr); });
 }
 
 void parseNamedMaterials(ParseContext& ctx, const std::vector<TopLevelItem>& items) {
@@ -213,38 +305,39 @@ void parseNamedMaterials(ParseContext& ctx, const std::vector<TopLevelItem>& ite
     state[i] = State::reading;
     chain.push_back(i);
     ElementReader r(ctx, *materials[i]->file, materials[i]->element);
-    index[i] = parseMaterial(r, true, [&](ElementReader& e) -> std::optional<uint32_t> {
-      auto id = e.text("base");
-      if (!id) return std::nullopt;
-      auto it = byId.find(*id);
-      if (it == byId.end()) {
-        std::vector<std::string_view> names;
-        for (const auto& [name, k] : byId) names.push_back(name);
-        std::sort(names.begin(), names.end());  // a stable hint whatever the hash order
-        e.attrError("base", "no material has the id '" + *id + "'" + didYouMean(*id, names));
-        return std::nullopt;
-      }
-      const size_t b = it->second;
-      if (state[b] == State::reading) {
-        std::string cycle;
-        for (size_t k = std::find(chain.begin(), chain.end(), b) - chain.begin(); k < chain.size();
-             ++k)
-          cycle +=
-              "'" + std::string(materials[chain[k]]->element.attribute("id").value()) + "' -> ";
-        e.attrError("base",
-                    "materials are based on each other in a cycle: " + cycle + "'" + *id + "'");
-        return std::nullopt;
-      }
-      if (state[b] == State::unread) {
-        if (chain.size() >= static_cast<size_t>(kMaxElementDepth)) {
-          e.attrError("base", "base= chains are longer than " + std::to_string(kMaxElementDepth) +
-                                  " materials");
-          return std::nullopt;
-        }
-        read(b);
-      }
-      return index[b];
-    });
+    index[i] =
+        parseMaterial(r, true, [&](ElementReader& e, const char* attr) -> std::optional<uint32_t> {
+          auto id = e.text(attr);
+          if (!id) return std::nullopt;
+          auto it = byId.find(*id);
+          if (it == byId.end()) {
+            std::vector<std::string_view> names;
+            for (const auto& [name, k] : byId) names.push_back(name);
+            std::sort(names.begin(), names.end());  // a stable hint whatever the hash order
+            e.attrError(attr, "no material has the id '" + *id + "'" + didYouMean(*id, names));
+            return std::nullopt;
+          }
+          const size_t b = it->second;
+          if (state[b] == State::reading) {
+            std::string cycle;
+            for (size_t k = std::find(chain.begin(), chain.end(), b) - chain.begin();
+                 k < chain.size(); ++k)
+              cycle +=
+                  "'" + std::string(materials[chain[k]]->element.attribute("id").value()) + "' -> ";
+            e.attrError(attr,
+                        "materials are based on each other in a cycle: " + cycle + "'" + *id + "'");
+            return std::nullopt;
+          }
+          if (state[b] == State::unread) {
+            if (chain.size() >= static_cast<size_t>(kMaxElementDepth)) {
+              e.attrError(attr, "base= chains are longer than " + std::to_string(kMaxElementDepth) +
+                                    " materials");
+              return std::nullopt;
+            }
+            read(b);
+          }
+          return index[b];
+        });
     chain.pop_back();
     state[i] = State::read;
   };

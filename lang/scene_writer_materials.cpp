@@ -131,6 +131,7 @@ Attributes materialAttributes(const Material& m, bool layer) {
     AttributeProbe value, byDefault;
     Material copy = m, plain = defaults;
     copy.layers.clear();  // not read by a term
+    copy.mapEntries.clear();
     term.read(copy, value);
     term.read(plain, byDefault);
     if (!value.unwritable.empty())
@@ -145,6 +146,25 @@ Attributes materialAttributes(const Material& m, bool layer) {
 }
 
 void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& folder) {
+  if (m.mapped()) {
+    // The map's pattern, then each entry's surface as an inline material.
+    out.open("material-map", {}, false);
+    writeTexture(m.mapPattern, m.loc, out, folder);
+    for (const MaterialMapEntry& e : m.mapEntries) {
+      out.open("entry", {{"at", xmlNumber(e.at)}}, false);
+      XmlOut children;
+      children.depth = out.depth + 1;
+      writeMaterialChildren(e.material, children, folder);
+      out.open("material", materialAttributes(e.material, true), children.text.empty());
+      if (!children.text.empty()) {
+        out.text += children.text;
+        out.close("material");
+      }
+      out.close("entry");
+    }
+    out.close("material-map");
+    return;
+  }
   writeTexture(m.texture, m.loc, out, folder);
   if (m.normal) {
     Attributes a = patternAttributes(m.normal->pattern, m.loc);

@@ -1,6 +1,7 @@
 #include "pov_materials.h"
 #include "pov_patterns.h"
 #include "scenegraph/finish_terms.h"
+#include "scenegraph/map_blend.h"
 #include "scenegraph/overloaded.h"
 #include "scenegraph/shape_registry.h"
 
@@ -217,8 +218,9 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
                                         name, colourText(m.reflective)));
   }
 
-  // Interior: index of refraction and absorption.
-  if (transmits || s.fresnel) {
+  // Interior: index of refraction and absorption (a map's, where an entry transmits).
+  const bool entryTransmits = m.mapped() && m.isTransmissive();
+  if (transmits || s.fresnel || entryTransmits) {
     s.interior = true;
     s.ior = m.ior;
   }
@@ -246,7 +248,7 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
     issues.warning(m.loc, fmt::format("{}: POV-Ray does not attenuate the highlights seen on "
                                       "the inside of an absorbing object; Lucent does",
                                       name));
-  if (transmits && m.hasFade()) {
+  if ((transmits || entryTransmits) && m.hasFade()) {
     // POV-Ray's fade itself.
     s.fade = true;
     s.fadeDistance = m.fadeDistance;
@@ -256,7 +258,7 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
       issues.warning(m.loc, fmt::format("{}: absorption and a fade: POV-Ray's interior has one "
                                         "fade (the fade is written, the absorption left out)",
                                         name));
-  } else if (transmits && m.isAbsorbing()) {
+  } else if ((transmits || entryTransmits) && m.isAbsorbing()) {
     // exp(−(1 − fade_color)·d/fade_distance) = exp(−absorption·d) with fade_distance 1/max.
     Vec3 ab = v3(m.absorption);
     s.fade = true;
@@ -314,11 +316,23 @@ bool PovMaterials::usesImageMap(uint32_t index) const {
          surface(index).useTexture;
 }
 
-bool PovMaterials::dependsOnShape(uint32_t index) const {
-  if (usesImageMap(index) || materials_[index].bumpMap.has_value()) return true;
-  for (const Material& layer : materials_[index].layers)
-    if (std::holds_alternative<ImageTexture>(layer.texture) || layer.bumpMap) return true;
+namespace {
+
+// Does any surface of the material (its own, a layer, a map's entry) show an image or a
+// bump map?
+bool showsImage(const Material& m) {
+  if (std::holds_alternative<ImageTexture>(m.texture) || m.bumpMap) return true;
+  for (const Material& layer : m.layers)
+    if (showsImage(layer)) return true;
+  for (const MaterialMapEntry& e : m.mapEntries)
+    if (showsImage(e.material)) return true;
   return false;
+}
+
+}  // namespace
+
+bool PovMaterials::dependsOnShape(uint32_t index) const {
+  return usesImageMap(index) || showsImage(materials_[index]);
 }
 
 void PovMaterials::writeFor(uint32_t index, const ShapeSpec& shape, const SourceLoc& loc,
@@ -348,6 +362,10 @@ void PovMaterials::writeFor(uint32_t index, const ImageMapping& mapping, const c
 
 void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, const char* shapeName,
                                 const SourceLoc* loc, PovWriter& out, PovIssues* issues) const {
+  if (materials_[index].mapped()) {
+    writeMap(materials_[index], mapping, shapeName, loc, out, issues);
+    return;
+  }
   writeLayer(materials_[index], surface(index), mapping, shapeName, loc, out, issues);
   // A layered material: each layer is a texture { } written after the one below it (the
   // caller opened the first and closes the last).
@@ -356,6 +374,120 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, con
     out.close();
     out.open("texture");
     writeLayer(materials_[index].layers[k], layers[k], mapping, shapeName, loc, out, issues);
+  }
+}
+
+namespace {
+
+// The entry as POV-Ray must see it: POV-Ray evaluates an entry's patterns at the point the
+// map's pattern was evaluated at (in the map's pattern space), Lucent in the object's, so
+// each of the entry's placements is taken from the map's space: P_entry·P_map⁻¹.
+void intoMapSpace(Material& m, const Mat4& mapFromPattern) {
+  auto move = [&](PatternPlacement* p) {
+    if (p) p->patternFromObject = p->patternFromObject * mapFromPattern;
+  };
+  auto texture = [&](Texture& t) {
+    if (auto* p = std::get_if<PatternTexture>(&t)) move(&p->pattern.placement);
+    if (auto* c = std::get_if<CheckerTexture>(&t)) move(&c->placement);
+    if (auto* h = std::get_if<HexagonTexture>(&t)) move(&h->placement);
+    if (auto* b = std::get_if<BrickTexture>(&t)) move(&b->placement);
+  };
+  texture(m.texture);
+  if (m.normal) move(&m.normal->pattern.placement);
+  for (Material& layer : m.layers) intoMapSpace(layer, mapFromPattern);
+  texture(m.mapPattern);
+}
+
+const PatternPlacement* mapPlacement(const Texture& t) {
+  if (const auto* p = std::get_if<PatternTexture>(&t)) return &p->pattern.placement;
+  if (const auto* c = std::get_if<CheckerTexture>(&t)) return &c->placement;
+  if (const auto* h = std::get_if<HexagonTexture>(&t)) return &h->placement;
+  if (const auto* b = std::get_if<BrickTexture>(&t)) return &b->placement;
+  return nullptr;
+}
+
+}  // namespace
+
+// A material map: POV-Ray's texture_map of a pattern, or a block pattern's list of textures
+// (its cells 0, 1, 2 each showing the entry the map gives that value alone).
+void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, const char* shapeName,
+                            const SourceLoc* loc, PovWriter& out, PovIssues* issues) const {
+  PovIssues& report = issues ? *issues : issues_;
+  const PatternPlacement* place = mapPlacement(m.mapPattern);
+  const Mat4 mapFromPattern = place ? glm::inverse(place->patternFromObject) : Mat4(1.0);
+  // The entries as POV-Ray sees them, and the layered ones declared first: a texture_map
+  // entry is a texture's body, which cannot hold layers unless it names a declared texture.
+  std::vector<Material> entries;
+  std::vector<std::string> declared(m.mapEntries.size());
+  for (size_t k = 0; k < m.mapEntries.size(); ++k) {
+    entries.push_back(m.mapEntries[k].material);
+    intoMapSpace(entries.back(), mapFromPattern);
+    const Material& entry = entries.back();
+    if (entry.mapped() || !entry.layered()) continue;
+    declared[k] = fmt::format("LucentLayers{}", layeredEntries_++);
+    out.open("#declare " + declared[k] + " = texture");
+    writeLayer(entry, povSurface(entry, report), mapping, shapeName, loc, out, issues);
+    for (const Material& layer : entry.layers) {
+      out.close();
+      out.open("texture");
+      writeLayer(layer, povSurface(layer, report), mapping, shapeName, loc, out, issues);
+    }
+    out.close();
+  }
+  // An entry's texture body: a declared layered texture's name, a map, or one layer.
+  auto entryBody = [&](size_t k) {
+    const Material& entry = entries[k];
+    if (!declared[k].empty()) out.line(declared[k]);
+    else if (entry.mapped()) writeMap(entry, mapping, shapeName, loc, out, issues);
+    else writeLayer(entry, povSurface(entry, report), mapping, shapeName, loc, out, issues);
+  };
+  if (place && place->turbulence != Vec3(0.0))
+    report.warning(m.loc, materialLabel(m) +
+                              ": the map's turbulence moves its entries' patterns too in "
+                              "POV-Ray (it evaluates them at the map's turbulent point)");
+  if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern)) {
+    out.line(patternKeyword(p->pattern));
+    out.open("texture_map");
+    for (size_t k = 0; k < entries.size(); ++k) {
+      out.line("[" + povNumber(m.mapEntries[k].at));
+      entryBody(k);
+      out.line("]");
+    }
+    out.close();
+    writeValueModifiers(p->pattern, out);
+    writePlacement(p->pattern.placement, out);
+    return;
+  }
+  // A block pattern: each cell the entry its value picks (a blend there cannot be written).
+  int cells = 2;
+  if (std::holds_alternative<CheckerTexture>(m.mapPattern)) {
+    out.line("checker");
+  } else if (std::holds_alternative<HexagonTexture>(m.mapPattern)) {
+    out.line("hexagon");
+    cells = 3;
+  } else {
+    out.line("brick");
+  }
+  for (int cell = 0; cell < cells; ++cell) {
+    const MapBlend blend = mapBlend(m.mapEntries, cell);
+    if (blend.a != blend.b && blend.wb > 0.0f)
+      report.error(m.loc, materialLabel(m) + fmt::format(": the map blends two entries in cell "
+                                                         "{} of its block pattern, which POV-Ray's "
+                                                         "list of textures cannot",
+                                                         cell));
+    out.open("texture");
+    entryBody(blend.a);
+    out.close();
+  }
+  if (const auto* c = std::get_if<CheckerTexture>(&m.mapPattern)) {
+    if (c->scale != 1.0) out.line("scale " + povNumber(c->scale));
+    writePlacement(c->placement, out);
+  } else if (const auto* h = std::get_if<HexagonTexture>(&m.mapPattern)) {
+    writePlacement(h->placement, out);
+  } else {
+    const auto& b = std::get<BrickTexture>(m.mapPattern);
+    out.line("brick_size " + povVector(b.spec.size) + " mortar " + povNumber(b.spec.mortar));
+    writePlacement(b.placement, out);
   }
 }
 

@@ -96,6 +96,9 @@ class PovMaterials {
   void writeLayer(const Material& m, const PovSurface& s, const ImageMapping* mapping,
                   const char* shapeName, const SourceLoc* loc, PovWriter& out,
                   PovIssues* issues) const;
+  // A material map's pattern and its entries' textures, inside the texture block.
+  void writeMap(const Material& m, const ImageMapping* mapping, const char* shapeName,
+                const SourceLoc* loc, PovWriter& out, PovIssues* issues) const;
   // The POV-Ray numbers of a material's <layer>s, converted on first use.
   const std::vector<PovSurface>& layerSurfaces(uint32_t material) const;
   void writeInterior(const PovSurface& s, PovWriter& out) const;
@@ -104,6 +107,7 @@ class PovMaterials {
   PovIssues& issues_;
   mutable std::vector<std::optional<PovSurface>> surfaces_;  // converted on first use
   mutable std::vector<std::optional<std::vector<PovSurface>>> layerSurfaces_;  // the same
+  mutable int layeredEntries_ = 0;  // names the layered map entries declared so far
   std::vector<std::string> names_;  // the texture identifier; interior: "I" + name
 };
 

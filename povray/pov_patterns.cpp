@@ -22,6 +22,8 @@ const char* povWaveName(WaveShape w) {
   return "ramp_wave";
 }
 
+}  // namespace
+
 // The pattern keyword and what belongs to it (gradient's axis, the spirals' arms).
 std::string patternKeyword(const PatternSpec& s) {
   std::string k(patternTypeInfo(s.type).pov);
@@ -33,8 +35,6 @@ std::string patternKeyword(const PatternSpec& s) {
   return k;
 }
 
-}  // namespace
-
 void writePlacement(const PatternPlacement& p, PovWriter& out) {
   if (p.turbulence != Vec3(0.0)) {
     out.line("turbulence " + povVector(p.turbulence));
@@ -43,8 +43,6 @@ void writePlacement(const PatternPlacement& p, PovWriter& out) {
   }
   if (p.patternFromObject != Mat4(1.0)) out.line(povMatrix(glm::inverse(p.patternFromObject)));
 }
-
-namespace {
 
 void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
   if (s.frequency != 1.0) out.line("frequency " + povNumber(s.frequency));
@@ -57,6 +55,8 @@ void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
   // 2 is POV-Ray 3.7's global default (global_settings noise_generator).
   if (s.noiseGenerator != 2) out.line("noise_generator " + std::to_string(s.noiseGenerator));
 }
+
+namespace {
 
 // A colour of the pattern with its own filter and transmit added to the material's.
 std::string colour(const Color& c, const FilterTransmit& ft, const Vec3& scale, double filter,

@@ -23,6 +23,10 @@ void writeBrickPigment(const BrickTexture& t, const Vec3& scale, double filter, 
                        PovWriter& out);
 // `normal { PATTERN depth ... }`.
 void writeNormal(const NormalSpec& n, PovWriter& out);
+// The pattern keyword with its arguments ("gradient <0, 1, 0>"), and the value's modifiers
+// (frequency, phase, wave), for a pattern written without its colours (a texture_map's).
+std::string patternKeyword(const PatternSpec& s);
+void writeValueModifiers(const PatternSpec& s, PovWriter& out);
 // A pattern's turbulence and transform (after the pattern's own modifiers).
 void writePlacement(const PatternPlacement& p, PovWriter& out);
 

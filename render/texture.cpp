@@ -214,6 +214,18 @@ struct TextureColour {
 
 }  // namespace
 
+double mapValueAt(const Texture& pattern, const SurfaceInfo& surface, const Instance& leaf) {
+  const Vec3& p = surface.pObject;
+  if (const auto* t = std::get_if<PatternTexture>(&pattern)) return patternValue(t->pattern, p);
+  if (const auto* c = std::get_if<CheckerTexture>(&pattern))
+    return checkerCell(*c, p, objectError(surface, leaf));
+  if (const auto* h = std::get_if<HexagonTexture>(&pattern))
+    return hexagonIndex(warpPoint(h->placement, p));
+  if (const auto* b = std::get_if<BrickTexture>(&pattern))
+    return brickIndex(b->spec, warpPoint(b->placement, p));
+  return 0.0;
+}
+
 PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& pError) {
   return std::visit(PigmentAt{pObject, pError}, texture);
 }

@@ -5,6 +5,7 @@
 #include "fog.h"
 #include "optics.h"
 #include "sampling.h"
+#include "scenegraph/map_blend.h"
 #include "see_through.h"
 #include "shading_normal.h"
 #include "sky_color.h"
@@ -42,8 +43,10 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
       sky_(world.scene().sky),
       fogs_(world.scene().fogs),
       slots_(world.scene().materials),
-      textures_(slots_.all(), textures) {
-  for (const Material* m : slots_.all()) seeThrough_.push_back(textureSeeThrough(m->texture));
+      textures_(slots_.materials(), textures) {
+  for (uint32_t k = 0; k < slots_.size(); ++k)
+    seeThrough_.push_back(slots_[k].kind == SurfaceSlots::Kind::plain &&
+                          textureSeeThrough(slots_[k].material->texture));
   for (const Material& m : world.scene().materials) {
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
     anyAbsorbing_ = anyAbsorbing_ || (m.attenuates() && m.isTransmissive());
@@ -96,10 +99,8 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     const Hit here{hitLeaf, s, -glm::normalize(ray.d), front, solid && !front};
     travelled(ray, hit.t(), here.leaving ? hitLeaf.material : nullptr, media, sum, throughput);
 
-    const SurfaceSlots::Layers layers = slots_.layersOf(hitLeaf.materialIndex);
-    const Shaded shaded = layers.count > 0
-                              ? shadeLayers(here, layers, depth, weight, media, seed, context)
-                              : shadeOne(here, depth, weight, media, seed, context);
+    const Shaded shaded =
+        shadeSlot(hitLeaf.materialIndex, here, depth, weight, media, seed, context, true);
     sum += throughput * shaded.result;
     const SecondaryRays& rays = shaded.rays;
     if (!rays.straight) return sum;
@@ -113,19 +114,43 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
   }
 }
 
-Tracer::Shaded Tracer::shadeOne(const Hit& h, int depth, const Color& weight,
-                                const MediaStack& media, PathSeed& seed,
-                                TraceContext& context) const {
-  const WorldLeaf& hitLeaf = h.leaf;
+Tracer::Shaded Tracer::shadeSlot(uint32_t slot, const Hit& h, int depth, const Color& weight,
+                                 const MediaStack& media, PathSeed& seed, TraceContext& context,
+                                 bool mayContinue) const {
+  const SurfaceSlots::Slot& at = slots_[slot];
+  switch (at.kind) {
+    case SurfaceSlots::Kind::layers:
+      return shadeLayers(at, h, depth, weight, media, seed, context, mayContinue);
+    case SurfaceSlots::Kind::map:
+      return shadeMap(at, h, depth, weight, media, seed, context);
+    case SurfaceSlots::Kind::plain:
+      break;
+  }
+  return shadeOne(slot, h, depth, weight, media, seed, context, mayContinue);
+}
+
+WorldLeaf Tracer::leafOfSlot(const WorldLeaf& leaf, uint32_t slot) const {
+  WorldLeaf out = leaf;
+  out.material = slots_[slot].material;
+  out.materialIndex = slot;
+  return out;
+}
+
+Tracer::Shaded Tracer::shadeOne(uint32_t slot, const Hit& h, int depth, const Color& weight,
+                                const MediaStack& media, PathSeed& seed, TraceContext& context,
+                                bool mayContinue) const {
   const SurfaceInfo& s = h.s;
+  // A layer or an entry: the leaf as its surface (the hit's own material needs no copy).
+  std::optional<WorldLeaf> slotLeaf;
+  if (slot != h.leaf.materialIndex) slotLeaf.emplace(leafOfSlot(h.leaf, slot));
+  const WorldLeaf& hitLeaf = slotLeaf ? *slotLeaf : h.leaf;
   // A see-through texture: the material as it is at this point (render/see_through.h);
   // every other material is shaded as it is, with no copy.
   std::optional<Material> seen;
   std::optional<WorldLeaf> seenLeaf;
-  if (seeThrough_[hitLeaf.materialIndex]) {
+  if (seeThrough_[slot]) {
     const Material& own = *hitLeaf.material;
-    seen.emplace(materialThrough(
-        own, textures_.evalPigment(hitLeaf.materialIndex, own, s, *hitLeaf.instance)));
+    seen.emplace(materialThrough(own, textures_.evalPigment(slot, own, s, *hitLeaf.instance)));
     seenLeaf.emplace(hitLeaf);
     seenLeaf->material = &*seen;
   }
@@ -137,9 +162,14 @@ Tracer::Shaded Tracer::shadeOne(const Hit& h, int depth, const Color& weight,
   const Vec3 n = shadingNormal(leaf, s, h.front, h.v, unbent);
   Shaded out;
   out.result = localLight(leaf, s, n, h.v, h.leaving, media, seed, context);
-  Interface side = interfaceAt(*hitLeaf.material, m.transmissive, solid, h.front, media);
+  // The media are known by the hit's own material (the solid's medium).
+  Interface side = interfaceAt(*h.leaf.material, m.transmissive, solid, h.front, media);
   out.rays =
       secondaryRays(m, ShadingPoint{s.p, n, h.v}, solid, side.n1, side.n2, reflectionTint(leaf, s));
+  if (out.rays.straight && !mayContinue) {
+    out.rays.straight = false;  // traced below, as a bent ray is
+    out.rays.refracted = -h.v;
+  }
   // A bent normal may send the mirror ray below the surface: it is turned back (with
   // n = unbent this is the plain mirror direction).
   const Vec3 mirror = reflectAboveSurface(-h.v, n, unbent);
@@ -155,9 +185,9 @@ Tracer::Shaded Tracer::shadeOne(const Hit& h, int depth, const Color& weight,
 // each layer's mirror ray is added undimmed; what all the layers let through weighs the
 // ray refracted by the top layer's normal. Under total internal reflection the top layer's
 // mirror ray carries it, and the lower layers whose normal is the top one's add no other.
-Tracer::Shaded Tracer::shadeLayers(const Hit& h, SurfaceSlots::Layers layers, int depth,
+Tracer::Shaded Tracer::shadeLayers(const SurfaceSlots::Slot& layers, const Hit& h, int depth,
                                    const Color& weight, const MediaStack& media, PathSeed& seed,
-                                   TraceContext& context) const {
+                                   TraceContext& context, bool mayContinue) const {
   const SurfaceInfo& s = h.s;
   const bool solid = h.leaf.medium != nullptr;
   // The indices on both sides whether or not the surface transmits here: a lower layer's
@@ -173,9 +203,8 @@ Tracer::Shaded Tracer::shadeLayers(const Hit& h, SurfaceSlots::Layers layers, in
   Color topTint(1.0f);
   for (uint32_t k = 0; k < layers.count; ++k) {
     const uint32_t slot = layers.first + k;
-    const Material& own = *slots_.all()[slot];
-    WorldLeaf leaf = h.leaf;
-    leaf.materialIndex = slot;
+    const Material& own = *slots_[slot].material;
+    WorldLeaf leaf = leafOfSlot(h.leaf, slot);
     std::optional<Material> seen;
     if (seeThrough_[slot])
       seen.emplace(materialThrough(own, textures_.evalPigment(slot, own, s, *leaf.instance)));
@@ -205,6 +234,10 @@ Tracer::Shaded Tracer::shadeLayers(const Hit& h, SurfaceSlots::Layers layers, in
   top->transmissive = through;
   out.rays = secondaryRays(*top, ShadingPoint{s.p, topN, h.v}, solid, side.n1, side.n2, topTint);
   if (!(maxComponent(through) > 0.0f)) side.beyond = media;  // nothing crosses
+  if (out.rays.straight && !mayContinue) {
+    out.rays.straight = false;  // traced below, as a bent ray is
+    out.rays.refracted = -h.v;
+  }
   out.result = withBranches(out.result, s, reflectAboveSurface(-h.v, topN, topUnbent), out.rays,
                             depth, weight, media, side.beyond, seed, context);
   for (size_t i = firstLower; i < lower.size(); ++i) {
@@ -220,17 +253,47 @@ Tracer::Shaded Tracer::shadeLayers(const Hit& h, SurfaceSlots::Layers layers, in
   return out;
 }
 
-Color Tracer::layersLetThrough(const WorldLeaf& leaf, SurfaceSlots::Layers layers,
-                               const SurfaceInfo& s) const {
-  Color t(1.0f);
-  for (uint32_t k = 0; k < layers.count && maxComponent(glm::abs(t)) > 0.0f; ++k) {
-    const uint32_t slot = layers.first + k;
-    const Material& own = *slots_.all()[slot];
-    t *= seeThrough_[slot]
-             ? transmittedThrough(own, textures_.evalPigment(slot, own, s, *leaf.instance))
-             : own.transmissive;
+Tracer::Shaded Tracer::shadeMap(const SurfaceSlots::Slot& map, const Hit& h, int depth,
+                                const Color& weight, const MediaStack& media, PathSeed& seed,
+                                TraceContext& context) const {
+  const Material& m = *map.material;
+  const MapBlend b = mapBlend(m.mapEntries, mapValueAt(m.mapPattern, h.s, *h.leaf.instance));
+  Shaded out;
+  out.beyond = media;
+  out.result =
+      b.wa *
+      shadeSlot(map.first + b.a, h, depth, weight * b.wa, media, seed, context, false).result;
+  if (b.b != b.a && b.wb > 0.0f)
+    out.result +=
+        b.wb *
+        shadeSlot(map.first + b.b, h, depth, weight * b.wb, media, seed, context, false).result;
+  return out;
+}
+
+Color Tracer::letThrough(uint32_t slot, const WorldLeaf& leaf, const SurfaceInfo& s) const {
+  const SurfaceSlots::Slot& at = slots_[slot];
+  switch (at.kind) {
+    case SurfaceSlots::Kind::plain: {
+      const Material& own = *at.material;
+      return seeThrough_[slot]
+                 ? transmittedThrough(own, textures_.evalPigment(slot, own, s, *leaf.instance))
+                 : own.transmissive;
+    }
+    case SurfaceSlots::Kind::layers: {
+      Color t(1.0f);
+      for (uint32_t k = 0; k < at.count && maxComponent(glm::abs(t)) > 0.0f; ++k)
+        t *= letThrough(at.first + k, leaf, s);
+      return t;
+    }
+    case SurfaceSlots::Kind::map: {
+      const MapBlend b =
+          mapBlend(at.material->mapEntries, mapValueAt(at.material->mapPattern, s, *leaf.instance));
+      Color t = b.wa * letThrough(at.first + b.a, leaf, s);
+      if (b.b != b.a && b.wb > 0.0f) t += b.wb * letThrough(at.first + b.b, leaf, s);
+      return t;
+    }
   }
-  return t;
+  return Color(0.0f);
 }
 
 Color Tracer::escaped(const Ray& ray, const MediaStack& media) const {
@@ -486,15 +549,10 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
     if (!world_.intersectTransmissive(ray, hit)) break;
     const WorldLeaf& leaf = hit.leaf();
     if (!leaf.transmissive) return Color(0.0f);
-    if (const SurfaceSlots::Layers layers = slots_.layersOf(leaf.materialIndex); layers.count > 0) {
-      t *= layersLetThrough(leaf, layers, hit.surface(ray));
-    } else if (seeThrough_[leaf.materialIndex]) {
-      const Material& own = *leaf.material;
-      t *= transmittedThrough(
-          own, textures_.evalPigment(leaf.materialIndex, own, hit.surface(ray), *leaf.instance));
-    } else {
+    if (slots_[leaf.materialIndex].kind == SurfaceSlots::Kind::plain &&
+        !seeThrough_[leaf.materialIndex])
       t *= leaf.material->transmissive;
-    }
+    else t *= letThrough(leaf.materialIndex, leaf, hit.surface(ray));
     if (anyAbsorbing_) {
       // A solid's medium is its material.
       bool leaving = false;

@@ -81,18 +81,31 @@ class Tracer {
     SecondaryRays rays;
     MediaStack beyond;
   };
+  // The surface of slot `slot` (render/surface_slots.h) at the hit, by its kind.
+  // `mayContinue`: a transmitted ray that goes on unbent is left to trace()'s loop (in
+  // Shaded::rays); otherwise it is traced here, as a bent one is (a map's entries).
+  Shaded shadeSlot(uint32_t slot, const Hit& h, int depth, const Color& weight,
+                   const MediaStack& media, PathSeed& seed, TraceContext& context,
+                   bool mayContinue) const;
   // A material of one layer (see-through where its texture is).
-  Shaded shadeOne(const Hit& h, int depth, const Color& weight, const MediaStack& media,
-                  PathSeed& seed, TraceContext& context) const;
-  // A layered material, as POV-Ray composes its layers (render/surface_slots.h): each
-  // layer's own light dimmed by what the layers above let through, each layer's mirror
-  // ray added as it is, the light from behind through all of them along the top layer's
-  // refracted ray.
-  Shaded shadeLayers(const Hit& h, SurfaceSlots::Layers layers, int depth, const Color& weight,
-                     const MediaStack& media, PathSeed& seed, TraceContext& context) const;
-  // What a layered material lets through at a hit: the product of its layers'.
-  Color layersLetThrough(const WorldLeaf& leaf, SurfaceSlots::Layers layers,
-                         const SurfaceInfo& s) const;
+  Shaded shadeOne(uint32_t slot, const Hit& h, int depth, const Color& weight,
+                  const MediaStack& media, PathSeed& seed, TraceContext& context,
+                  bool mayContinue) const;
+  // A layered material, as POV-Ray composes its layers: each layer's own light dimmed by
+  // what the layers above let through, each layer's mirror ray added as it is, the light
+  // from behind through all of them along the top layer's refracted ray.
+  Shaded shadeLayers(const SurfaceSlots::Slot& layers, const Hit& h, int depth, const Color& weight,
+                     const MediaStack& media, PathSeed& seed, TraceContext& context,
+                     bool mayContinue) const;
+  // A material map: the one or two entries the pattern's value falls between, each shaded
+  // whole, their colours blended by weight (POV-Ray's texture_map).
+  Shaded shadeMap(const SurfaceSlots::Slot& map, const Hit& h, int depth, const Color& weight,
+                  const MediaStack& media, PathSeed& seed, TraceContext& context) const;
+  // What the surface of slot `slot` lets through at a hit (a shadow ray's share): k_t, or a
+  // see-through texture's, the product over layers, the blend over a map's entries.
+  Color letThrough(uint32_t slot, const WorldLeaf& leaf, const SurfaceInfo& s) const;
+  // `leaf` as the surface of slot `slot` (itself when the slot is its material's).
+  WorldLeaf leafOfSlot(const WorldLeaf& leaf, uint32_t slot) const;
 
   // The parts of one step of trace(), in the order it takes them.
   // The colour of a ray that hits nothing: the sky or background, through the medium the

@@ -24,6 +24,8 @@ struct BumpMapSpec {
   SourceLoc loc;
 };
 
+struct MaterialMapEntry;
+
 struct Material {
   std::string id;  // empty for inline materials
   SourceLoc loc;
@@ -78,6 +80,12 @@ struct Material {
   // normal); the interior terms (ior, fade, absorption, hollow, full-tir, inner-ambient)
   // are the material's. Empty for a material of one layer (render/surface_slots.h).
   std::vector<Material> layers;
+  // <material-map>: POV-Ray's texture_map and block patterns of textures. The pattern's value
+  // at the hit (a <pattern>'s, or the cell of a <checker>, <hexagon> or <brick>: 0, 1, 2)
+  // picks the entries and blends their shaded colours (render/surface_slots.h). A material
+  // with a map has no surface of its own: its entries are its surfaces.
+  Texture mapPattern;
+  std::vector<MaterialMapEntry> mapEntries;
   // <normal>: the shading normal perturbed by a pattern's slope (geometry unchanged).
   std::optional<NormalSpec> normal;
   // <bump-map>: the other normal perturbation (a material holds one of the two at most).
@@ -86,14 +94,11 @@ struct Material {
   bool hasTexture() const { return !std::holds_alternative<std::monostate>(texture); }
   // k_t above 0, or a texture colour with filter or transmit (which lets light through
   // where the texture takes it).
-  // A layered material lets light through only where every layer does.
-  bool isTransmissive() const {
-    if (!(maxComponent(transmissive) > 0.0f || textureSeeThrough(texture))) return false;
-    for (const Material& layer : layers)
-      if (!layer.isTransmissive()) return false;
-    return true;
-  }
+  // A layered material lets light through only where every layer does, a map where any of
+  // its entries does.
+  bool isTransmissive() const;
   bool layered() const { return !layers.empty(); }
+  bool mapped() const { return !mapEntries.empty(); }
   bool isReflective() const { return maxComponent(reflective) > 0.0f; }
   bool isAbsorbing() const { return maxComponent(absorption) > 0.0f; }
   bool hasFade() const { return fadeDistance > 0.0; }
@@ -109,5 +114,25 @@ struct Material {
     return m;
   }
 };
+
+// An entry of a <material-map>: the value it sits at and the surface it shows there (its
+// surface terms, texture, normal and layers, or a map of its own; its interior terms are
+// the mapped material's).
+struct MaterialMapEntry {
+  double at = 0.0;
+  Material material;
+};
+
+inline bool Material::isTransmissive() const {
+  if (mapped()) {
+    for (const MaterialMapEntry& e : mapEntries)
+      if (e.material.isTransmissive()) return true;
+    return false;
+  }
+  if (!(maxComponent(transmissive) > 0.0f || textureSeeThrough(texture))) return false;
+  for (const Material& layer : layers)
+    if (!layer.isTransmissive()) return false;
+  return true;
+}
 
 }  // namespace lucent
