@@ -133,7 +133,7 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
       // A texture { } on an object that has one (from any block) is a layer over it.
       PovTexture top = readTexture(in, defaultTexture());
       top.transform(backToObject);
-      o.texture = layered(std::move(*o.texture), std::move(top));
+      o.texture = layerOver(std::move(*o.texture), std::move(top), t.loc(), in);
       return true;
     }
     if (!o.texture) {

@@ -168,8 +168,13 @@ void SceneReader::readReflection(TokenStream& in, PovReflection& r) {
 }
 
 PovTexture SceneReader::readTexture(TokenStream& in, const PovTexture& start) {
-  PovTexture tex = start;
   in.expect("{");
+  return readTextureBody(in, start, "}");
+}
+
+PovTexture SceneReader::readTextureBody(TokenStream& in, const PovTexture& start,
+                                        std::string_view closing) {
+  PovTexture tex = start;
   if (const auto* item = use<TextureItem>(in.peek(), in)) {
     tex = item->texture;
     // Named after a plain identifier only: an array element's text is the array's name.
@@ -178,9 +183,16 @@ PovTexture SceneReader::readTexture(TokenStream& in, const PovTexture& start) {
   }
   for (;;) {
     const Token t = in.next();
-    if (t.is("}")) return tex;
+    if (t.is(closing)) return tex;
     tex.name.clear();  // changed: no longer the declared texture itself
     PovTransform m;    // a transform moves the pigment and normal written before it
+    // A map's pattern takes the modifiers written after it.
+    if (tex.mapped() && (readWarp(t, in, placementOf(tex.mapPattern.pattern),
+                                  specOf(tex.mapPattern.pattern), tex.mapPattern.transform,
+                                  tex.mapPattern.warped) ||
+                         readPatternModifier(t, in, specOf(tex.mapPattern.pattern),
+                                             placementOf(tex.mapPattern.pattern))))
+      continue;
     // Each block continues the texture's own (POV-Ray's Parse_Texture).
     if (isWord(t, "pigment")) tex.pigment = readPigment(in, tex.pigment);
     else if (isWord(t, "normal")) tex.normal = readNormal(in, tex.normal ? &*tex.normal : nullptr);
@@ -189,15 +201,90 @@ PovTexture SceneReader::readTexture(TokenStream& in, const PovTexture& start) {
     else if (readOldNormal(t, in, tex)) continue;
     else {
       if (isTexturePattern(t)) {
-        refuseInBlock(t, in,
-                      "a pattern of textures (texture_map, or a block pattern of textures); "
-                      "Lucent has one texture per material");
+        if (readTextureMap(t, in, tex)) continue;
         return tex;
       }
       unreadInBlock(t, in);
       return tex;
     }
   }
+}
+
+PovTexture SceneReader::layerOver(PovTexture under, PovTexture top, const SourceLoc& at,
+                                  TokenStream& in) {
+  if (under.mapped() || top.mapped())
+    keepError(in, at,
+              "a pattern of textures cannot be layered (POV-Ray: \"Cannot layer over a "
+              "patterned texture\")");
+  return layered(std::move(under), std::move(top));
+}
+
+// `PATTERN texture_map { [v T] ... }` (T a texture's body or a declared texture), or a block
+// pattern's list of textures: `checker texture { A } texture { B }` (hexagon: three).
+bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& tex) {
+  if (!tex.below.empty()) {
+    refuseInBlock(t, in,
+                  "a pattern of textures over a layered texture; Lucent's material maps are "
+                  "not layers");
+    return false;
+  }
+  PovPigment pattern;
+  pattern.transform = tex.mapPattern.transform;
+  const std::string_view w = t.text();
+  const bool block = w == "checker" || w == "hexagon" || w == "brick";
+  if (block && isWord(in.peek(), "texture")) {
+    if (w == "checker") pattern.pattern = CheckerTexture{};
+    else if (w == "hexagon") pattern.pattern = HexagonTexture{};
+    else pattern.pattern = BrickTexture{};
+    tex.mapEntries.clear();
+    for (int cell = 0; cell < (w == "hexagon" ? 3 : 2) && isWord(in.peek(), "texture"); ++cell) {
+      in.next();
+      tex.mapEntries.push_back({double(cell), readTexture(in, defaultTexture())});
+      in.allow(",");
+    }
+  } else if (block || !readPatternKeyword(t, in, pattern)) {
+    // A pattern Lucent lacks is refused as such; `tiles` and a block pattern without its
+    // list of textures as a pattern of textures.
+    if (block || !refusePattern(t, in))
+      refuseInBlock(t, in,
+                    "a pattern of textures that Lucent cannot read: it reads texture_map after a "
+                    "pattern, and the texture lists of checker, hexagon and brick");
+    return false;
+  } else {
+    // The pattern's own arguments are read; its modifiers and the map follow.
+    tex.mapEntries.clear();
+    for (;;) {
+      const Token k = in.next();
+      if (isWord(k, "texture_map")) {
+        in.expect("{");
+        for (;;) {
+          const Token open = in.next();
+          if (open.is("}")) break;
+          if (!open.is("[")) in.error(open, "'[' or '}' expected in a texture_map, not " +
+                                                open.describe());
+          const double at = in.parseFloat();
+          in.allow(",");
+          tex.mapEntries.push_back({at, readTextureBody(in, defaultTexture(), "]")});
+        }
+        if (tex.mapEntries.empty()) in.error(k, "a texture_map needs at least one entry");
+        break;
+      }
+      if (readWarp(k, in, placementOf(pattern.pattern), specOf(pattern.pattern),
+                   pattern.transform, pattern.warped) ||
+          readPatternModifier(k, in, specOf(pattern.pattern), placementOf(pattern.pattern)))
+        continue;
+      PovTransform m;
+      if (readTransform(k, in, m)) {
+        pattern.transform = pattern.transform.then(m);
+        continue;
+      }
+      in.error(k, "a texture_map expected after the pattern '" + std::string(w) + "', not " +
+                      k.describe());
+    }
+  }
+  tex.mapPattern = std::move(pattern);
+  tex.name.clear();
+  return true;
 }
 
 // POV-Ray 1's normals written in the texture: `bumps 0.5`, `dents`, `ripples`, `waves`,
@@ -266,7 +353,8 @@ PovMaterial SceneReader::readMaterial(TokenStream& in) {
     if (isWord(t, "texture")) {
       // A second texture is a layer over the first.
       PovTexture read = readTexture(in, defaultTexture());
-      if (textures++ > 0 && m.texture) m.texture = layered(std::move(*m.texture), std::move(read));
+      if (textures++ > 0 && m.texture)
+        m.texture = layerOver(std::move(*m.texture), std::move(read), t.loc(), in);
       else m.texture = std::move(read);
     } else if (isWord(t, "interior")) {
       m.interior = readInterior(in, m.interior ? *m.interior : PovInterior{});

@@ -244,9 +244,10 @@ void SceneReader::readScene(TokenStream& in) {
       // refusals are the declaration's, reported where it is used.
       declaring_.emplace_back();
       PovTexture top = readTexture(in, defaultTexture());
+      lastTexture_->texture = layerOver(std::move(lastTexture_->texture), std::move(top),
+                                        t.loc(), in);
       for (Diagnostic& d : declaring_.back()) lastTexture_->refused.push_back(std::move(d));
       declaring_.pop_back();
-      lastTexture_->texture = layered(std::move(lastTexture_->texture), std::move(top));
       continue;
     }
     if (t.kind == TokenKind::Keyword && t.kw == Kw::k_default) {
@@ -335,19 +336,10 @@ uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& 
                                      interior.fadeColor.b, hollow);
     if (const auto it = namedMaterials_.find(key); it != namedMaterials_.end()) return it->second;
   }
-  // The bottom layer is the material itself, the others its <layer>s (bottom first).
-  std::vector<const PovTexture*> layers;
-  for (const PovTexture& layer : texture.below) layers.push_back(&layer);
-  layers.push_back(&texture);
   const Mat4 objectToTexture = textureFromNode * negateZ();
-  Material m = importLayer(*layers.front(), interior, objectToTexture, at, in);
-  for (size_t k = 1; k < layers.size(); ++k)
-    m.layers.push_back(importLayer(*layers[k], interior, objectToTexture, at, in));
+  Material m = importTexture(texture, interior, objectToTexture, at, in);
   m.loc = at;
   m.hollow = hollow;
-  // Under total internal reflection POV-Ray continues the mirror ray with weight 1 where
-  // the surface lets light through at all (every layer).
-  if (m.layered()) m.fullTir = m.isTransmissive();
   const auto index = static_cast<uint32_t>(scene_.materials.size());
   if (!key.empty()) {
     // Named after the texture; a second interior with the same texture takes a suffix.
@@ -359,6 +351,46 @@ uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& 
   }
   scene_.materials.push_back(m);
   return index;
+}
+
+// A texture as a Lucent material: one layer, layers (the bottom one the material itself,
+// the others its <layer>s, bottom first) or a map, whose entries lie in its pattern space.
+Material SceneReader::importTexture(const PovTexture& texture, const PovInterior& interior,
+                                    const Mat4& objectToTexture, const SourceLoc& at,
+                                    TokenStream& in) {
+  if (texture.mapped()) {
+    // The interior terms of the whole, from a plain texture's import.
+    Material m = importMaterial(PovPigment{}, PovFinish{}, interior).material;
+    m.mapPattern = texture.mapPattern.pattern;
+    const Mat4 patternFromObject =
+        glm::inverse(texture.mapPattern.transform.povMatrix()) * objectToTexture;
+    if (PatternPlacement* p = placementOf(m.mapPattern)) p->patternFromObject = patternFromObject;
+    const PatternPlacement* place = placementOf(m.mapPattern);
+    if (place && place->turbulence != Vec3(0.0))
+      warn(in, at,
+           "a texture_map's turbulence: POV-Ray evaluates its entries at the turbulent point, "
+           "Lucent at the point the map's transform gives (the entries' patterns lie "
+           "differently)");
+    for (size_t k = 0; k < texture.mapEntries.size(); ++k) {
+      const PovTextureMapEntry& e = texture.mapEntries[k];
+      if (k > 0 && e.at < texture.mapEntries[k - 1].at)
+        keepError(in, at, "a texture_map's entries out of ascending order are not supported");
+      m.mapEntries.push_back(
+          {e.at, importTexture(e.texture, interior, patternFromObject, at, in)});
+    }
+    m.fullTir = m.isTransmissive();
+    return m;
+  }
+  std::vector<const PovTexture*> layers;
+  for (const PovTexture& layer : texture.below) layers.push_back(&layer);
+  layers.push_back(&texture);
+  Material m = importLayer(*layers.front(), interior, objectToTexture, at, in);
+  for (size_t k = 1; k < layers.size(); ++k)
+    m.layers.push_back(importLayer(*layers[k], interior, objectToTexture, at, in));
+  // Under total internal reflection POV-Ray continues the mirror ray with weight 1 where
+  // the surface lets light through at all (every layer).
+  if (m.layered()) m.fullTir = m.isTransmissive();
+  return m;
 }
 
 // One layer of a texture as a Lucent material: its pigment, finish and normal, placed.
@@ -499,14 +531,14 @@ void SceneReader::finishScene(TokenStream& in) {
   auto noise = [&](PatternSpec& s) {
     if (s.noiseGenerator == 0) s.noiseGenerator = global_.noiseGenerator;
   };
-  auto materialNoise = [&](Material& m) {
+  std::function<void(Material&)> materialNoise = [&](Material& m) {
     if (auto* p = std::get_if<PatternTexture>(&m.texture)) noise(p->pattern);
     if (m.normal) noise(m.normal->pattern);
-  };
-  for (Material& m : scene_.materials) {
-    materialNoise(m);
+    if (auto* p = std::get_if<PatternTexture>(&m.mapPattern)) noise(p->pattern);
     for (Material& layer : m.layers) materialNoise(layer);
-  }
+    for (MaterialMapEntry& e : m.mapEntries) materialNoise(e.material);
+  };
+  for (Material& m : scene_.materials) materialNoise(m);
   if (scene_.sky) {
     for (Texture& layer : scene_.sky->layers)
       if (auto* p = std::get_if<PatternTexture>(&layer)) noise(p->pattern);

@@ -33,7 +33,9 @@ namespace lucent::sdl {
 
 struct MeshBuild;  // read_shapes.cpp
 
-// A texture of one layer: its pigment, normal and finish.
+struct PovTextureMapEntry;
+
+// A texture of one layer: its pigment, normal and finish; or a map of textures.
 struct PovTexture {
   PovPigment pigment;
   std::optional<PovNormal> normal;
@@ -45,8 +47,16 @@ struct PovTexture {
   // later pigment, normal or finish changes, as in POV-Ray; `below` holds the layers under
   // it, bottom first.
   std::vector<PovTexture> below;
+  // A pattern of textures (`texture { gradient y texture_map { [0 A] [1 B] } }`, `checker
+  // texture { A } texture { B }`): the pattern with its transforms, and the entries, whose
+  // own transforms lead from the map's pattern space (POV-Ray evaluates an entry at the
+  // map's point). The pigment, normal and finish are then unused.
+  PovPigment mapPattern;
+  std::vector<PovTextureMapEntry> mapEntries;
 
+  bool mapped() const { return !mapEntries.empty(); }
   bool patterned() const {
+    if (mapped()) return true;
     if (pigment.patterned() || normal.has_value()) return true;
     for (const PovTexture& layer : below)
       if (layer.patterned()) return true;
@@ -57,7 +67,14 @@ struct PovTexture {
     pigment.transform = pigment.transform.then(m);
     if (normal) normal->transform = normal->transform.then(m);
     for (PovTexture& layer : below) layer.transform(m);
+    // A map's entries follow its pattern's space.
+    mapPattern.transform = mapPattern.transform.then(m);
   }
+};
+
+struct PovTextureMapEntry {
+  double at = 0.0;
+  PovTexture texture;
 };
 
 // `texture { under } texture { top }`: the layers of top (itself perhaps layered) over
@@ -273,6 +290,17 @@ class SceneReader : public ItemReader {
   PovPigment readPigment(TokenStream& in, const PovPigment& start);
   PovFinish readFinish(TokenStream& in, const PovFinish& start);
   PovTexture readTexture(TokenStream& in, const PovTexture& start);
+  // A texture's body up to `closing` ("}", or "]" in a texture_map), the opening read.
+  PovTexture readTextureBody(TokenStream& in, const PovTexture& start, std::string_view closing);
+  // `PATTERN modifiers texture_map { [v T] ... }` or `checker texture { } texture { }` in a
+  // texture, from its pattern keyword `t` on: the map, or nothing (an error was kept).
+  bool readTextureMap(const Token& t, TokenStream& in, PovTexture& tex);
+  // `layered(under, top)` where POV-Ray allows it: neither may be a pattern of textures
+  // (POV-Ray's "Cannot layer over a patterned texture"), an error kept at `at` otherwise.
+  PovTexture layerOver(PovTexture under, PovTexture top, const SourceLoc& at, TokenStream& in);
+  // A texture (one layer, layers or a map) as a Lucent material, placed.
+  Material importTexture(const PovTexture& texture, const PovInterior& interior,
+                         const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in);
   PovInterior readInterior(TokenStream& in, const PovInterior& start);
   PovMaterial readMaterial(TokenStream& in);
   void readReflection(TokenStream& in, PovReflection& r);
@@ -303,7 +331,7 @@ class SceneReader : public ItemReader {
                 const PatternSpec* spec, const PovTransform& before, bool& warped);
 
   PovTexture defaultTexture() const {
-    return {defaults_.pigment, std::nullopt, defaults_.finish, {}, {}};
+    return {defaults_.pigment, std::nullopt, defaults_.finish, {}, {}, {}, {}};
   }
 
   Scene& scene_;
