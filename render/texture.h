@@ -30,7 +30,7 @@ int checkerIndex(const CheckerTexture& checker, const Vec3& pObject, const Vec3&
 // point (pError: its error bound, as checkerColor's). A point with no texture is white.
 PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& pError);
 
-// The value a material map's pattern takes at a hit (render/map_blend.h): a <pattern>'s
+// The value a material map's pattern takes at a hit (scenegraph/map_blend.h): a <pattern>'s
 // value, or the cell of a <checker> (0, 1), <hexagon> (0, 1, 2) or <brick> (0 mortar,
 // 1 brick).
 double mapValueAt(const Texture& pattern, const SurfaceInfo& surface, const Instance& leaf);

@@ -187,11 +187,11 @@ PovTexture SceneReader::readTextureBody(TokenStream& in, const PovTexture& start
     tex.name.clear();  // changed: no longer the declared texture itself
     PovTransform m;    // a transform moves the pigment and normal written before it
     // A map's pattern takes the modifiers written after it.
-    if (tex.mapped() && (readWarp(t, in, placementOf(tex.mapPattern.pattern),
-                                  specOf(tex.mapPattern.pattern), tex.mapPattern.transform,
-                                  tex.mapPattern.warped) ||
-                         readPatternModifier(t, in, specOf(tex.mapPattern.pattern),
-                                             placementOf(tex.mapPattern.pattern))))
+    if (tex.mapped() &&
+        (readWarp(t, in, placementOf(tex.mapPattern.pattern), specOf(tex.mapPattern.pattern),
+                  tex.mapPattern.transform, tex.mapPattern.warped) ||
+         readPatternModifier(t, in, specOf(tex.mapPattern.pattern),
+                             placementOf(tex.mapPattern.pattern))))
       continue;
     // Each block continues the texture's own (POV-Ray's Parse_Texture).
     if (isWord(t, "pigment")) tex.pigment = readPigment(in, tex.pigment);
@@ -260,8 +260,8 @@ bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& te
         for (;;) {
           const Token open = in.next();
           if (open.is("}")) break;
-          if (!open.is("[")) in.error(open, "'[' or '}' expected in a texture_map, not " +
-                                                open.describe());
+          if (!open.is("["))
+            in.error(open, "'[' or '}' expected in a texture_map, not " + open.describe());
           const double at = in.parseFloat();
           in.allow(",");
           tex.mapEntries.push_back({at, readTextureBody(in, defaultTexture(), "]")});
@@ -269,8 +269,8 @@ bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& te
         if (tex.mapEntries.empty()) in.error(k, "a texture_map needs at least one entry");
         break;
       }
-      if (readWarp(k, in, placementOf(pattern.pattern), specOf(pattern.pattern),
-                   pattern.transform, pattern.warped) ||
+      if (readWarp(k, in, placementOf(pattern.pattern), specOf(pattern.pattern), pattern.transform,
+                   pattern.warped) ||
           readPatternModifier(k, in, specOf(pattern.pattern), placementOf(pattern.pattern)))
         continue;
       PovTransform m;

@@ -244,8 +244,8 @@ void SceneReader::readScene(TokenStream& in) {
       // refusals are the declaration's, reported where it is used.
       declaring_.emplace_back();
       PovTexture top = readTexture(in, defaultTexture());
-      lastTexture_->texture = layerOver(std::move(lastTexture_->texture), std::move(top),
-                                        t.loc(), in);
+      lastTexture_->texture =
+          layerOver(std::move(lastTexture_->texture), std::move(top), t.loc(), in);
       for (Diagnostic& d : declaring_.back()) lastTexture_->refused.push_back(std::move(d));
       declaring_.pop_back();
       continue;
@@ -375,8 +375,7 @@ Material SceneReader::importTexture(const PovTexture& texture, const PovInterior
       const PovTextureMapEntry& e = texture.mapEntries[k];
       if (k > 0 && e.at < texture.mapEntries[k - 1].at)
         keepError(in, at, "a texture_map's entries out of ascending order are not supported");
-      m.mapEntries.push_back(
-          {e.at, importTexture(e.texture, interior, patternFromObject, at, in)});
+      m.mapEntries.push_back({e.at, importTexture(e.texture, interior, patternFromObject, at, in)});
     }
     m.fullTir = m.isTransmissive();
     return m;

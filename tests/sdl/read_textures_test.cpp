@@ -251,6 +251,49 @@ box { 0, 1 material { texture { pigment { rgb 1 } } texture { pigment { rgbf <1,
   checkColor(glass.layers[0].transmissive, Color(1.0f, 0.0f, 0.0f));
 }
 
+TEST_CASE("scene reader textures: texture_map and block lists of textures become material maps",
+          "[sdl][scene][texture][material-map]") {
+  const auto errors = errorsOf(
+      "#declare T_Two = texture { pigment { rgb 1 } } texture { pigment { rgb 0 } }\n"
+      "sphere { 0, 1 texture { pigment { rgb 1 } } texture { bozo texture_map { [0 T_Two] } } }\n");
+  REQUIRE(errors.size() == 1);
+  CHECK(errors[0] ==
+        "test.pov:2:45: error: a pattern of textures cannot be layered (POV-Ray: \"Cannot layer "
+        "over a patterned texture\")");
+
+  auto good = readScene(R"(
+#declare T_Two = texture { pigment { rgb 1 } } texture { pigment { rgbt <1, 0, 0, 0.5> } }
+sphere { 0, 1 texture { gradient y texture_map { [0.25 T_Two] [0.75 pigment { bozo scale 2 }
+  finish { phong 1 }] } scale 4 } interior { ior 1.5 } }
+plane { y, 0 texture { checker texture { pigment { rgb 1 } } texture { T_Two } scale 2 } }
+)");
+  REQUIRE(good->load.scene);
+  const Scene& s = *good->load.scene;
+  const Material& gradient = materialOf(s, top(s, 0));
+  REQUIRE(gradient.mapped());
+  CHECK(gradient.ior == 1.5);
+  const auto& pattern = std::get<PatternTexture>(gradient.mapPattern);
+  CHECK(pattern.pattern.type == PatternType::gradient);
+  checkMat(pattern.pattern.placement.patternFromObject, scaling(0.25) * kS);
+  REQUIRE(gradient.mapEntries.size() == 2);
+  CHECK(gradient.mapEntries[0].at == 0.25);
+  CHECK(gradient.mapEntries[0].material.layers.size() == 1);  // the declared layered texture
+  // The entry's pattern lies in the map's pattern space: its own scale 2 after the map's 4.
+  const Material& bozo = gradient.mapEntries[1].material;
+  checkMat(std::get<PatternTexture>(bozo.texture).pattern.placement.patternFromObject,
+           scaling(0.5) * scaling(0.25) * kS);
+  checkColor(bozo.phong, Color(1.0f));
+
+  const Material& checker = materialOf(s, top(s, 1));
+  REQUIRE(checker.mapped());
+  checkMat(std::get<CheckerTexture>(checker.mapPattern).placement.patternFromObject,
+           scaling(0.5) * kS);
+  REQUIRE(checker.mapEntries.size() == 2);
+  CHECK(checker.mapEntries[0].at == 0.0);
+  CHECK(checker.mapEntries[1].at == 1.0);
+  CHECK(checker.mapEntries[1].material.layered());
+}
+
 TEST_CASE("scene reader textures: a turbulence warp before any transform is the placement's",
           "[sdl][scene][texture]") {
   auto r = readScene(
