@@ -8,6 +8,7 @@
 #include "render/patterns/pattern_value.h"
 
 #include <fmt/core.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <chrono>
 #include <vector>
@@ -52,6 +53,16 @@ int main() {
   for (int t = 0; t < kPatternTypeCount; ++t) {
     PatternSpec s;
     s.type = static_cast<PatternType>(t);
+    s.frequency = defaultFrequency(s.type);
+    // The fractals at 50 iterations over [−2, 2)³ (the points scaled by ¼), where most
+    // points take more than a step; julia and magnet's Julia form with a constant near
+    // their sets.
+    if (isFractal(s.type)) {
+      s.fractal.iterations = 50;
+      s.fractal.cReal = -0.5;
+      s.fractal.cImaginary = 0.5;
+      s.placement.patternFromObject = glm::scale(Mat4(1.0), Vec3(0.25));
+    }
     PatternSpec turbulent = s;
     turbulent.placement.turbulence = Vec3(0.5);
     NormalSpec n;

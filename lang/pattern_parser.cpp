@@ -8,6 +8,8 @@
 #include "expression.h"
 #include "povray_names.h"
 
+#include <cmath>
+
 namespace lucent {
 
 namespace {
@@ -29,7 +31,11 @@ const std::vector<std::pair<std::string_view, WaveShape>> kWaves{
 const std::vector<std::string_view> kPlacementAttributes{"transform", "turbulence", "octaves",
                                                          "omega", "lambda"};
 const std::vector<std::string_view> kValueAttributes{
-    "type", "axis", "arms", "frequency", "phase", "wave", "exponent", "noise-generator"};
+    "type",     "axis",     "arms",        "frequency",
+    "phase",    "wave",     "exponent",    "noise-generator",
+    "control0", "control1", "iterations",  "power",
+    "c",        "form",     "magnet-type", "exterior",
+    "interior"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -89,8 +95,89 @@ FilterTransmit parseFilterTransmit(ElementReader& r, const std::string& n) {
 
 namespace {
 
+// An attribute only some pattern types take: an error on any other.
+bool onlyFor(ElementReader& r, const char* attr, bool allowed, const char* types,
+             PatternType type) {
+  if (!r.has(attr) || allowed) return allowed;
+  r.attrError(attr, std::string("only type ") + types + " takes '" + attr + "', not " +
+                        std::string(patternTypeInfo(type).name));
+  return false;
+}
+
+// Two numbers "x y" (julia's c as re im, a colouring as type factor).
+std::optional<std::pair<double, double>> numberPair(ElementReader& r, const char* attr,
+                                                    const char* what) {
+  const std::optional<std::string> text = r.text(attr);
+  if (!text) return std::nullopt;
+  auto list = parseNumberList(*text);
+  if (!list) r.attrError(attr, list.error);
+  else if (list->size() != 2)
+    r.attrError(attr, std::string("expected two numbers (") + what + "), got " +
+                          std::to_string(list->size()));
+  else return std::make_pair((*list)[0], (*list)[1]);
+  return std::nullopt;
+}
+
+// exterior="type factor" (0..8) or interior="type factor" (0..6); types 7 and 8 divide
+// by the factor and take the iterations modulo it, so they need a factor >= 1 (7) or > 0 (8).
+void parseColouring(ElementReader& r, const char* attr, int maxType, FractalColouring& c) {
+  const auto pair = numberPair(r, attr, "the colouring type and its factor");
+  if (!pair) return;
+  const auto [type, factor] = *pair;
+  if (type != std::floor(type) || type < 0 || type > maxType)
+    r.attrError(attr, "the type must be a whole number from 0 to " + std::to_string(maxType) +
+                          ", got " + formatNumber(type));
+  else if (type == 7 && !(factor >= 1))
+    r.attrError(attr,
+                "exterior type 7 takes the iterations modulo its factor: it needs a "
+                "factor >= 1, got " +
+                    formatNumber(factor));
+  else if (type == 8 && !(factor > 0))
+    r.attrError(attr, "exterior type 8 divides by its factor: it needs a factor > 0, got " +
+                          formatNumber(factor));
+  else c = {static_cast<int>(type), factor};
+}
+
+// The modifiers of quilted, mandel, julia and magnet.
+void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
+  const bool quilted = s.type == PatternType::quilted;
+  if (onlyFor(r, "control0", quilted, "quilted", s.type))
+    s.quilted.control0 = r.number("control0", s.quilted.control0);
+  if (onlyFor(r, "control1", quilted, "quilted", s.type))
+    s.quilted.control1 = r.number("control1", s.quilted.control1);
+
+  const bool fractal = isFractal(s.type), magnet = s.type == PatternType::magnet;
+  FractalParams& f = s.fractal;
+  if (fractal && !r.has("iterations"))
+    r.error(r.tag() + " type=\"" + std::string(patternTypeInfo(s.type).name) +
+            "\" needs 'iterations' (how many steps before a point counts as inside)");
+  if (onlyFor(r, "iterations", fractal, "mandel, julia or magnet", s.type))
+    f.iterations = static_cast<int>(r.integer("iterations", f.iterations, 0, 100000000));
+  if (onlyFor(r, "power", fractal && !magnet, "mandel or julia", s.type))
+    f.power = static_cast<int>(r.integer("power", f.power, 2, 33));
+  if (onlyFor(r, "magnet-type", magnet, "magnet", s.type))
+    f.magnetType = static_cast<int>(r.integer("magnet-type", f.magnetType, 1, 2));
+  if (onlyFor(r, "form", magnet, "magnet", s.type))
+    f.juliaForm = r.choice("form", false, {{"mandel", false}, {"julia", true}});
+  const bool takesC = s.type == PatternType::julia || (magnet && f.juliaForm);
+  if (takesC && !r.has("c"))
+    r.error(r.tag() + (magnet ? " type=\"magnet\" form=\"julia\"" : " type=\"julia\"") +
+            " needs 'c' (the constant, as its real and imaginary parts)");
+  if (onlyFor(r, "c", takesC, "julia (or magnet with form=\"julia\")", s.type))
+    if (auto c = numberPair(r, "c", "the real and imaginary parts")) {
+      f.cReal = c->first;
+      f.cImaginary = c->second;
+    }
+  if (onlyFor(r, "exterior", fractal, "mandel, julia or magnet", s.type))
+    parseColouring(r, "exterior", 8, f.exterior);
+  if (onlyFor(r, "interior", fractal, "mandel, julia or magnet", s.type))
+    parseColouring(r, "interior", 6, f.interior);
+}
+
 void parseValueAttributes(ElementReader& r, PatternSpec& s) {
   s.placement = parsePlacement(r);
+  s.frequency = defaultFrequency(s.type);
+  parseTypeAttributes(r, s);
   if (r.has("axis")) s.axis = r.direction("axis", s.axis);
   s.arms = static_cast<int>(r.integer("arms", s.arms, 1, 1000));
   s.frequency = r.number("frequency", s.frequency);

@@ -30,6 +30,35 @@ void addPlacement(const PatternPlacement& p, Attributes& a) {
   if (p.lambda != d.lambda) a.emplace_back("lambda", xmlNumber(p.lambda));
 }
 
+// quilted's controls and the fractals' parameters, those of the pattern's type only.
+void addTypeAttributes(const PatternSpec& s, Attributes& a) {
+  const PatternSpec d;
+  if (s.type == PatternType::quilted) {
+    if (s.quilted.control0 != d.quilted.control0)
+      a.emplace_back("control0", xmlNumber(s.quilted.control0));
+    if (s.quilted.control1 != d.quilted.control1)
+      a.emplace_back("control1", xmlNumber(s.quilted.control1));
+  }
+  if (!isFractal(s.type)) return;
+  const FractalParams& f = s.fractal;
+  a.emplace_back("iterations", std::to_string(f.iterations));
+  if (s.type == PatternType::magnet) {
+    if (f.magnetType != d.fractal.magnetType)
+      a.emplace_back("magnet-type", std::to_string(f.magnetType));
+    if (f.juliaForm) a.emplace_back("form", "julia");
+  } else if (f.power != d.fractal.power) {
+    a.emplace_back("power", std::to_string(f.power));
+  }
+  if (s.type == PatternType::julia || f.juliaForm)
+    a.emplace_back("c", xmlNumber(f.cReal) + " " + xmlNumber(f.cImaginary));
+  auto colouring = [&](const char* name, const FractalColouring& c, const FractalColouring& def) {
+    if (c.type != def.type || c.factor != def.factor)
+      a.emplace_back(name, std::to_string(c.type) + " " + xmlNumber(c.factor));
+  };
+  colouring("exterior", f.exterior, d.fractal.exterior);
+  colouring("interior", f.interior, d.fractal.interior);
+}
+
 // The attributes of <pattern> and <normal>: the type by the pattern table's name, the
 // placement and the value's modifiers, written only where they differ from the defaults.
 Attributes patternAttributes(const PatternSpec& s, const SourceLoc& loc) {
@@ -41,12 +70,13 @@ Attributes patternAttributes(const PatternSpec& s, const SourceLoc& loc) {
   addPlacement(s.placement, a);
   if (s.axis != d.axis) a.emplace_back("axis", xmlVector(s.axis));
   if (s.arms != d.arms) a.emplace_back("arms", std::to_string(s.arms));
-  if (s.frequency != d.frequency) a.emplace_back("frequency", xmlNumber(s.frequency));
+  if (s.frequency != defaultFrequency(s.type)) a.emplace_back("frequency", xmlNumber(s.frequency));
   if (s.phase != d.phase) a.emplace_back("phase", xmlNumber(s.phase));
   if (s.wave) a.emplace_back("wave", waveName(*s.wave));
   if (s.exponent != d.exponent) a.emplace_back("exponent", xmlNumber(s.exponent));
   if (s.noiseGenerator != d.noiseGenerator)
     a.emplace_back("noise-generator", std::to_string(s.noiseGenerator));
+  addTypeAttributes(s, a);
   return a;
 }
 

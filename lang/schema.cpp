@@ -170,9 +170,9 @@ std::string lightTypesXsd() {
   return out;
 }
 
-// POV-Ray's patterns, from the pattern table: the colour patterns, or those only a <normal>
-// takes.
-std::string patternTypesXsd(bool colour) {
+// POV-Ray's patterns, from the pattern table: the enumerations of the colour patterns, or
+// of those only a <normal> takes.
+std::string patternEnumerationsXsd(bool colour) {
   std::string out;
   for (const PatternTypeInfo& t : kPatternTypes)
     if (t.colour == colour)
@@ -180,6 +180,28 @@ std::string patternTypesXsd(bool colour) {
           "      <xs:enumeration value=\"{}\"><xs:annotation><xs:documentation>POV-Ray's {}: {}."
           "</xs:documentation></xs:annotation></xs:enumeration>\n",
           t.name, t.pov, escaped(t.doc));
+  return out;
+}
+
+std::string colourPatternsXsd() { return patternEnumerationsXsd(true); }
+
+// The type of <normal type>: any colour pattern, and those only a normal takes (a type of
+// their own when there are any).
+std::string normalPatternsXsd() {
+  const std::string only = patternEnumerationsXsd(false);
+  std::string out;
+  if (!only.empty())
+    out +=
+        "  <xs:simpleType name=\"normalPatternLiteral\">\n    <xs:restriction "
+        "base=\"xs:token\">\n" +
+        only + "    </xs:restriction>\n  </xs:simpleType>\n";
+  out += fmt::format(
+      "  <xs:simpleType name=\"normalPattern\">\n    <xs:annotation><xs:documentation>Any colour "
+      "pattern (its slope; bumps, dents, ripples, waves, wrinkles and quilted have normals of "
+      "their own){}.</xs:documentation></xs:annotation>\n    <xs:union "
+      "memberTypes=\"colourPatternLiteral {}parameterReference\"/>\n  </xs:simpleType>\n",
+      only.empty() ? "" : ", or a pattern only a normal takes",
+      only.empty() ? "" : "normalPatternLiteral ");
   return out;
 }
 
@@ -254,8 +276,8 @@ std::string schemaText() {
   replaceOnce(text, "@LIGHT_TYPES@", lightTypesXsd());
   replaceOnce(text, "@LIGHT_TYPE_NAMES@", lightTypeNames());
   replaceOnce(text, "@LIGHT_ATTRIBUTES@", lightAttributesXsd());
-  replaceOnce(text, "@COLOUR_PATTERNS@", patternTypesXsd(true));
-  replaceOnce(text, "@NORMAL_PATTERNS@", patternTypesXsd(false));
+  replaceOnce(text, "@COLOUR_PATTERNS@", colourPatternsXsd());
+  replaceOnce(text, "@NORMAL_PATTERNS@", normalPatternsXsd());
   replaceOnce(text, "@TEXTURE_ELEMENTS@", textureElementsXsd());
   replaceOnce(text, "@MATERIAL_ATTRIBUTES@", materialAttributesXsd());
   replaceOnce(text, "@LAYER_ATTRIBUTES@", layerAttributesXsd());

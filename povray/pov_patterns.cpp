@@ -32,6 +32,13 @@ std::string patternKeyword(const PatternSpec& s) {
     k += " " + std::to_string(s.arms);
   // Lucent's agate uses POV-Ray's default agate_turb, written so that it cannot drift.
   if (s.type == PatternType::agate) k += " agate_turb 1";
+  const FractalParams& f = s.fractal;
+  const std::string c = "<" + povNumber(f.cReal) + ", " + povNumber(f.cImaginary) + ">, ";
+  if (s.type == PatternType::mandel) k += " " + std::to_string(f.iterations);
+  if (s.type == PatternType::julia) k += " " + c + std::to_string(f.iterations);
+  if (s.type == PatternType::magnet)
+    k += " " + std::to_string(f.magnetType) + (f.juliaForm ? " julia " + c : " mandel ") +
+         std::to_string(f.iterations);
   return k;
 }
 
@@ -45,7 +52,17 @@ void writePlacement(const PatternPlacement& p, PovWriter& out) {
 }
 
 void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
-  if (s.frequency != 1.0) out.line("frequency " + povNumber(s.frequency));
+  if (s.type == PatternType::quilted)
+    out.line("control0 " + povNumber(s.quilted.control0) + " control1 " +
+             povNumber(s.quilted.control1));
+  if (isFractal(s.type)) {
+    const FractalParams& f = s.fractal;
+    if (s.type != PatternType::magnet) out.line("exponent " + std::to_string(f.power));
+    out.line("exterior " + std::to_string(f.exterior.type) + ", " + povNumber(f.exterior.factor));
+    out.line("interior " + std::to_string(f.interior.type) + ", " + povNumber(f.interior.factor));
+  }
+  // POV-Ray's default frequency is Lucent's (0 for quilted, 1 otherwise).
+  if (s.frequency != defaultFrequency(s.type)) out.line("frequency " + povNumber(s.frequency));
   if (s.phase != 0.0) out.line("phase " + povNumber(s.phase));
   if (s.wave) {
     std::string w = povWaveName(*s.wave);

@@ -37,6 +37,10 @@ enum class PatternType {
   ripples,
   waves,
   planar,
+  quilted,
+  mandel,
+  julia,
+  magnet,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -83,14 +87,22 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "ten octaves of noise"},
     {PatternType::bumps, "bumps", "bumps", true, WaveShape::ramp, false,
      "smooth noise (as bozo; as a normal, the noise's gradient)"},
-    {PatternType::dents, "dents", "dents", false, WaveShape::ramp, false,
+    {PatternType::dents, "dents", "dents", true, WaveShape::ramp, false,
      "the noise's gradient scaled by the noise cubed"},
-    {PatternType::ripples, "ripples", "ripples", false, WaveShape::ramp, false,
+    {PatternType::ripples, "ripples", "ripples", true, WaveShape::ramp, false,
      "circular waves from ten sources around the origin"},
-    {PatternType::waves, "waves", "waves", false, WaveShape::ramp, false,
+    {PatternType::waves, "waves", "waves", true, WaveShape::ramp, false,
      "as ripples, each source with a frequency of its own"},
     {PatternType::planar, "planar", "planar", true, WaveShape::ramp, false,
      "1 on the plane y = 0, falling linearly to 0 at |y| = 1, 0 beyond"},
+    {PatternType::quilted, "quilted", "quilted", true, WaveShape::ramp, false,
+     "unit cubes with rounded, sunken centres shaped by control0 and control1"},
+    {PatternType::mandel, "mandel", "mandel", true, WaveShape::ramp, false,
+     "the Mandelbrot set z^power + c in the x-y plane"},
+    {PatternType::julia, "julia", "julia", true, WaveShape::ramp, false,
+     "the Julia set z^power + c of the constant c in the x-y plane"},
+    {PatternType::magnet, "magnet", "magnet", true, WaveShape::ramp, false,
+     "the magnet fractals of type 1 or 2 in the x-y plane, Mandelbrot or Julia form"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 
@@ -125,16 +137,62 @@ struct CrackleParams {
   bool solid = false;  // every cell one noise value instead of the distance pattern
 };
 
+// POV-Ray's quilted modifiers: the cubic that rounds each cube (defaults 1 and 1).
+struct QuiltedParams {
+  double control0 = 1.0;
+  double control1 = 1.0;
+};
+
+// How a fractal pattern turns an escaped or a bounded point into a value (POV-Ray's
+// exterior types 0..8 and interior types 0..6, each with its factor).
+struct FractalColouring {
+  int type = 0;
+  double factor = 1.0;
+};
+
+// POV-Ray's mandel, julia and magnet: iterations, the exponent of z (mandel and julia,
+// 2..33), julia's constant c (and the julia form of magnet), magnet's type (1 or 2), and
+// the exterior (default type 1: iterations to escape over the maximum) and interior
+// (default type 0: the factor) colourings.
+struct FractalParams {
+  int iterations = 1;
+  int power = 2;
+  double cReal = 0.0, cImaginary = 0.0;
+  int magnetType = 1;
+  bool juliaForm = false;  // magnet: the Julia form (c given), else the Mandelbrot form
+  FractalColouring exterior{1, 1.0};
+  FractalColouring interior{0, 1.0};
+  bool operator==(const FractalParams& o) const {
+    return iterations == o.iterations && power == o.power && cReal == o.cReal &&
+           cImaginary == o.cImaginary && magnetType == o.magnetType && juliaForm == o.juliaForm &&
+           exterior.type == o.exterior.type && exterior.factor == o.exterior.factor &&
+           interior.type == o.interior.type && interior.factor == o.interior.factor;
+  }
+  bool operator!=(const FractalParams& o) const { return !(*this == o); }
+};
+
+// POV-Ray's default frequency: 0 for quilted (its value is used unwrapped), 1 otherwise.
+constexpr double defaultFrequency(PatternType type) {
+  return type == PatternType::quilted ? 0.0 : 1.0;
+}
+
+// The patterns that take FractalParams.
+constexpr bool isFractal(PatternType type) {
+  return type == PatternType::mandel || type == PatternType::julia || type == PatternType::magnet;
+}
+
 struct PatternSpec {
   PatternType type = PatternType::bozo;
   PatternPlacement placement;
   Vec3 axis{0.0, 1.0, 0.0};  // gradient's direction (normalised when evaluated, as POV-Ray)
   int arms = 1;              // spiral1, spiral2
-  double frequency = 1.0;    // 0 leaves the value unwrapped (POV-Ray's rule)
+  double frequency = 1.0;    // 0 leaves the value unwrapped; parsers start from defaultFrequency
   double phase = 0.0;
   std::optional<WaveShape> wave;  // nullopt: POV-Ray's default for the type
   double exponent = 1.0;          // poly_wave's exponent
   CrackleParams crackle;
+  QuiltedParams quilted;
+  FractalParams fractal;
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin
 
   WaveShape waveShape() const { return wave ? *wave : patternTypeInfo(type).wave; }

@@ -5,6 +5,8 @@
 #include "read_support.h"
 #include "scene_reader.h"
 
+#include "lang/expression.h"
+
 #include <algorithm>
 #include <string>
 
@@ -39,10 +41,9 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
 constexpr std::string_view kPatternsLucentLacks[] = {
-    "aoi",      "boxed",           "cells",      "cubic",        "cylindrical", "density_file",
-    "facets",   "function",        "julia",      "magnet",       "mandel",      "object",
-    "pavement", "pigment_pattern", "potential",  "quilted",      "slope",       "spherical",
-    "square",   "tiling",          "triangular", "image_pattern"};
+    "aoi",    "boxed",     "cells",  "cubic",    "cylindrical",     "density_file",
+    "facets", "function",  "object", "pavement", "pigment_pattern", "potential",
+    "slope",  "spherical", "square", "tiling",   "triangular",      "image_pattern"};
 
 const PatternTypeInfo* patternType(const Token& t) {
   if (t.kind != TokenKind::Keyword) return nullptr;
@@ -66,6 +67,45 @@ std::string lucentPatternNames() {
 
 }  // namespace
 
+// What follows a pattern's keyword in POV-Ray (parstxtr.cpp, Parse_Pattern), with its
+// defaults: gradient's axis, the spirals' arms, the fractals' constant and iterations,
+// quilted's frequency 0. The pattern is evaluated in POV-Ray's space
+// (SceneReader::addMaterial), so these are kept as written.
+void readPatternArguments(const Token& t, TokenStream& in, PatternSpec& s) {
+  s.frequency = defaultFrequency(s.type);
+  if (s.type == PatternType::gradient) s.axis = toVec3(in.parseVector());
+  if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
+    s.arms = static_cast<int>(in.parseFloat());
+  if (!isFractal(s.type)) return;
+  FractalParams& f = s.fractal;
+  f = FractalParams{};
+  auto readC = [&] {
+    const Vec3 c = toVec3(in.parseVector());
+    f.cReal = c.x;
+    f.cImaginary = c.y;
+    in.allow(",");
+  };
+  if (s.type == PatternType::julia) readC();
+  if (s.type == PatternType::magnet) {
+    f.power = 2;  // unused: magnet takes no exponent
+    const double type = in.parseFloat();
+    const Token form = in.next();
+    if (!isWord(form, "mandel") && !isWord(form, "julia"))
+      in.error(form, "'mandel' or 'julia' expected after 'magnet " + formatNumber(type) +
+                         "', not " + form.describe());
+    if (static_cast<int>(type) != 1 && static_cast<int>(type) != 2)
+      in.error(t, "magnet's type must be 1 or 2, got " + formatNumber(type));
+    f.magnetType = static_cast<int>(type);
+    f.juliaForm = isWord(form, "julia");
+    if (f.juliaForm) readC();
+  }
+  const double iterations = in.parseFloat();
+  if (!(iterations >= 0 && iterations <= 100000000))
+    in.error(t, "a fractal pattern's iterations must be from 0 to 100000000, got " +
+                    formatNumber(iterations));
+  f.iterations = static_cast<int>(iterations);
+}
+
 // A pattern keyword, or a modifier of the pattern a pigment has; false if `t` is neither.
 bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment& p) {
   if (const PatternTypeInfo* info = patternType(t); info && info->colour) {
@@ -73,11 +113,7 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
     if (const PatternPlacement* was = placementOf(p.pattern)) tex.pattern.placement = *was;
     tex.pattern.type = info->type;
     tex.pattern.noiseGenerator = 0;  // the scene's global_settings noise_generator
-    // The axis and the arms as POV-Ray writes them: the pattern is evaluated in POV-Ray's
-    // space (SceneReader::addMaterial).
-    if (info->type == PatternType::gradient) tex.pattern.axis = toVec3(in.parseVector());
-    if (info->type == PatternType::spiral1 || info->type == PatternType::spiral2)
-      tex.pattern.arms = static_cast<int>(in.parseFloat());
+    readPatternArguments(t, in, tex.pattern);
     p.pattern = tex;
     p.map.clear();
     return true;
@@ -206,6 +242,22 @@ bool SceneReader::readPatternModifier(const Token& t, TokenStream& in, PatternSp
     s.crackle.offset = in.parseFloat();
   } else if (w == "solid") {
     s.crackle.solid = true;
+  } else if (w == "control0" || w == "control1") {
+    if (s.type != PatternType::quilted) in.error(t, "'" + std::string(w) + "' is for quilted");
+    (w == "control0" ? s.quilted.control0 : s.quilted.control1) = in.parseFloat();
+  } else if (w == "exterior" || w == "interior") {
+    readFractalColouring(t, in, s);
+  } else if (w == "exponent") {
+    if (s.type != PatternType::mandel && s.type != PatternType::julia)
+      in.error(t, "'exponent' is for mandel and julia");
+    const double power = in.parseFloat();
+    s.fractal.power = static_cast<int>(power);
+    // POV-Ray warns and takes 2 outside 2..33.
+    if (s.fractal.power < 2 || s.fractal.power > 33) {
+      warn(in, t.loc(),
+           "the fractal exponent " + formatNumber(power) + " is outside 2..33; POV-Ray uses 2");
+      s.fractal.power = 2;
+    }
   } else if (w == "agate_turb") {
     const double turb = in.parseFloat();
     if (turb != 1.0)
@@ -216,6 +268,27 @@ bool SceneReader::readPatternModifier(const Token& t, TokenStream& in, PatternSp
     return false;
   }
   return true;
+}
+
+// `exterior TYPE, FACTOR` or `interior TYPE, FACTOR` of mandel, julia and magnet.
+void SceneReader::readFractalColouring(const Token& t, TokenStream& in, PatternSpec& s) {
+  const bool exterior = isWord(t, "exterior");
+  if (!isFractal(s.type))
+    in.error(t, "'" + std::string(t.text()) + "' is for mandel, julia and magnet");
+  const double type = in.parseFloat();
+  in.allow(",");
+  const double factor = in.parseFloat();
+  const int maxType = exterior ? 8 : 6;
+  const int kind = static_cast<int>(type);
+  if (kind < 0 || kind > maxType)
+    in.error(t, std::string(exterior ? "exterior" : "interior") + " types are 0 to " +
+                    std::to_string(maxType) + ", got " + formatNumber(type));
+  // POV-Ray divides by the factor and takes the iterations modulo it (crashing on 0).
+  if (exterior && kind == 7 && !(factor >= 1))
+    in.error(t, "exterior type 7 needs a factor >= 1, got " + formatNumber(factor));
+  if (exterior && kind == 8 && !(factor > 0))
+    in.error(t, "exterior type 8 needs a factor > 0, got " + formatNumber(factor));
+  (exterior ? s.fractal.exterior : s.fractal.interior) = {kind, factor};
 }
 
 // `color_map { [Identifier] [at colour] ... }`, the '{' next; old maps' `[a, b color C1

@@ -5,6 +5,7 @@
 #include "token_stream.h"
 
 #include "primitives/math.h"
+#include "scenegraph/pattern.h"
 
 #include <array>
 #include <string_view>
@@ -15,6 +16,10 @@ namespace lucent::sdl {
 inline bool isWord(const Token& t, std::string_view word) {
   return t.kind == TokenKind::Keyword && t.text() == word;
 }
+
+// What follows a pattern's keyword (read_patterns.cpp): gradient's axis, the spirals'
+// arms, the fractals' constant and iterations; the type's default frequency.
+void readPatternArguments(const Token& t, TokenStream& in, PatternSpec& s);
 
 // A shape's keyword, those Lucent refuses included (read_shapes.cpp).
 bool isShapeKeyword(std::string_view word);

@@ -59,9 +59,7 @@ PovNormal SceneReader::readNormal(TokenStream& in, const PovNormal* start) {
       s.type = type->type;
       s.placement = n.spec.pattern.placement;
       s.noiseGenerator = 0;  // the scene's global_settings noise_generator (finishScene)
-      if (s.type == PatternType::gradient) s.axis = toVec3(in.parseVector());
-      if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
-        s.arms = static_cast<int>(in.parseFloat());
+      readPatternArguments(t, in, s);
       n.spec.pattern = s;
       // POV-Ray: an optional comma, then the optional amount (its bump_size).
       if (in.allow(",") || startsNumber(in.peek())) n.spec.depth = in.parseFloat();

@@ -321,6 +321,7 @@ class SceneReader : public ItemReader {
   bool readPatternKeyword(const Token& t, TokenStream& in, PovPigment& p);
   bool readPatternModifier(const Token& t, TokenStream& in, PatternSpec* spec,
                            PatternPlacement* placement);
+  void readFractalColouring(const Token& t, TokenStream& in, PatternSpec& s);
   std::vector<PovColorMapEntry> readColorMap(TokenStream& in, SourceLoc& loc);
   void resolvePigmentColours(PovPigment& p, TokenStream& in);
   bool refusePattern(const Token& t, TokenStream& in);

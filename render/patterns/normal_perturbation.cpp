@@ -87,6 +87,9 @@ Vec3 perturbNormal(const NormalSpec& normal, const Vec3& objPoint, const Vec3& o
     case PatternType::wrinkles:
       n = wrinkles(n, p, amount);
       break;
+    case PatternType::quilted:  // POV-Ray's own quilted normal, not the slope
+      n = addScaled(n, amount, quiltedOffset(p, spec.quilted));
+      break;
     case PatternType::ripples:
       n = ripplesNormal(n, p, spec.frequency, spec.phase, amount);
       break;

@@ -1,6 +1,7 @@
 #include "pattern_value.h"
 
 #include "crackle.h"
+#include "fractal.h"
 #include "pattern_point.h"
 #include "primitives/noise.h"
 #include "scenegraph/turbulence.h"
@@ -140,6 +141,28 @@ double dents(const Vec3& p, int generator) {
 
 }  // namespace
 
+double povFloor(double x) { return x >= 0.0 ? std::floor(x) : 0.0 - std::floor(0.0 - x) - 1.0; }
+
+Vec3 quiltedOffset(const Vec3& p, const QuiltedParams& q) {
+  Vec3 v(p.x - povFloor(p.x) - 0.5, p.y - povFloor(p.y) - 0.5, p.z - povFloor(p.z) - 0.5);
+  const double t = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+  // The Bézier cubic from 0 to 1 with inner controls control0 and control1 (single
+  // precision in POV-Ray), scaled by 1/√(3/4).
+  const double p1 = static_cast<float>(q.control0), p2 = static_cast<float>(q.control1);
+  const double it = 1 - t;
+  const double k = (t * t * t + 3.0 * t * (it * it) * p1 + 3.0 * (t * t) * it * p2) * 1.154700538;
+  return Vec3(v.x * k, v.y * k, v.z * k);
+}
+
+namespace {
+
+double quilted(const Vec3& p, const QuiltedParams& q) {
+  const Vec3 v = quiltedOffset(p, q);
+  return (std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z)) / 3.0;
+}
+
+}  // namespace
+
 double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
   const int gen = spec.noiseGenerator;
   switch (spec.type) {
@@ -179,6 +202,12 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
       return wavesValue(p, spec.frequency, spec.phase);
     case PatternType::planar:
       return planar(p);
+    case PatternType::quilted:
+      return quilted(p, spec.quilted);
+    case PatternType::mandel:
+    case PatternType::julia:
+    case PatternType::magnet:
+      return fractalValue(spec.type, spec.fractal, p);
   }
   return 0.0;
 }

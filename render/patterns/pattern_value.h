@@ -11,6 +11,14 @@ namespace lucent {
 // unbounded values that shapeValue wraps.
 double rawPatternValue(const PatternSpec& spec, const Vec3& patternPoint);
 
+// POV-Ray's FLOOR (texture.h): one below floor(x) at negative integers.
+double povFloor(double x);
+
+// quilted's offset from the centre of p's unit cube, scaled by the cubic of its length
+// (control0, control1): the pattern's value is its mean absolute coordinate, a normal is
+// bent along it.
+Vec3 quiltedOffset(const Vec3& p, const QuiltedParams& q);
+
 // POV-Ray's Evaluate_TPat: the raw value shaped by frequency, phase and wave.
 double patternValueAt(const PatternSpec& spec, const Vec3& patternPoint);
 

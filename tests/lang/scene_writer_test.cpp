@@ -256,3 +256,27 @@ TEST_CASE("scene writer: filter and transmit of colours and the sky's layers rea
   CHECK(checker.ft2 == FilterTransmit{0.25f, 0.0f});
   CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
 }
+
+TEST_CASE("scene writer: quilted's controls and the fractals' parameters are written and read back",
+          "[lang][scene-writer]") {
+  const std::string first = written(
+      "<sphere><material><pattern type=\"quilted\" control0=\"0.25\" frequency=\"1\"/>"
+      "<normal type=\"magnet\" magnet-type=\"2\" form=\"julia\" c=\"1.1 0.3\" iterations=\"25\" "
+      "exterior=\"6 0.01\"/></material></sphere>"
+      "<sphere center=\"3 0 0\"><material><pattern type=\"julia\" c=\"-0.5 0.5\" "
+      "iterations=\"20\" power=\"7\" interior=\"1 2\"/></material></sphere>"
+      "<sphere center=\"6 0 0\"><material><pattern type=\"mandel\" iterations=\"10\"/>"
+      "</material></sphere>");
+  // quilted's default frequency is 0, so a frequency of 1 is written.
+  CHECK(contains(first, "<pattern type=\"quilted\" frequency=\"1\" control0=\"0.25\"/>"));
+  CHECK(contains(first,
+                 "<normal type=\"magnet\" iterations=\"25\" magnet-type=\"2\" "
+                 "form=\"julia\" c=\"1.1 0.3\" exterior=\"6 0.01\" depth=\"0.5\"/>"));
+  CHECK(contains(first,
+                 "<pattern type=\"julia\" iterations=\"20\" power=\"7\" c=\"-0.5 0.5\" "
+                 "interior=\"1 2\"/>"));
+  CHECK(contains(first, "<pattern type=\"mandel\" iterations=\"10\"/>"));
+  auto reread = parseSceneString(first, "writer.xml");
+  REQUIRE(reread.scene);
+  CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+}

@@ -72,6 +72,10 @@ inline std::map<std::string, ColorAt> colorCases() {
       {"brick", brick(plainBrick, none)},
       {"brick_sized", brick(sizedBrick, none)},
       {"brick_turbulence", brick(whiteBrick, brickTurbulent)},
+      {"mandel_exterior7", mapped(fractal(T::mandel, 15, 7, {7, 3}, {3, 0.5}),
+                                  {{{0, Color(0)}, {1, Color(1, 0.5f, 0.25f)}}})},
+      {"julia_exterior8",
+       mapped(julia(-0.5, 0.5, 20, 3, {8, 4}), {{{0, Color(0)}, {1, Color(1, 0.5f, 0.25f)}}})},
   };
 }
 

@@ -46,6 +46,8 @@ inline std::map<std::string, NormalSpec> normalCases() {
       {"planar_rotated",
        bumpy(placed(spec(T::planar), then(inverseRotate(Vec3(0, 0, 40)), inverseScale(Vec3(1.5)))),
              0.6)},
+      {"quilted", bumpy(placed(quilted(0.5, 0.8), inverseScale(Vec3(0.7))), 0.6)},
+      {"mandel", bumpy(placed(fractal(T::mandel, 30), inverseScale(Vec3(1.5))), 0.5)},
   };
 }
 

@@ -94,6 +94,42 @@ inline PatternSpec crackle(double metric, Vec3 form, double offset, bool solid =
   return s;
 }
 
+inline PatternSpec quilted(double control0, double control1) {
+  PatternSpec s = spec(PatternType::quilted);
+  s.frequency = 0.0;  // POV-Ray's default for quilted
+  s.quilted.control0 = control0;
+  s.quilted.control1 = control1;
+  return s;
+}
+// mandel or julia (c = re + im i) with `iterations`, the exponent `power` and the
+// colourings {type, factor}.
+inline PatternSpec fractal(PatternType type, int iterations, int power = 2,
+                           FractalColouring exterior = {1, 1.0},
+                           FractalColouring interior = {0, 1.0}, double re = 0, double im = 0) {
+  PatternSpec s = spec(type);
+  s.fractal.iterations = iterations;
+  s.fractal.power = power;
+  s.fractal.exterior = exterior;
+  s.fractal.interior = interior;
+  s.fractal.cReal = re;
+  s.fractal.cImaginary = im;
+  return s;
+}
+inline PatternSpec julia(double re, double im, int iterations, int power = 2,
+                         FractalColouring exterior = {1, 1.0},
+                         FractalColouring interior = {0, 1.0}) {
+  return fractal(PatternType::julia, iterations, power, exterior, interior, re, im);
+}
+// magnet of `type` (1 or 2), the Julia form when juliaForm (c = re + im i).
+inline PatternSpec magnet(int type, bool juliaForm, int iterations,
+                          FractalColouring exterior = {1, 1.0},
+                          FractalColouring interior = {0, 1.0}, double re = 0, double im = 0) {
+  PatternSpec s = fractal(PatternType::magnet, iterations, 2, exterior, interior, re, im);
+  s.fractal.magnetType = type;
+  s.fractal.juliaForm = juliaForm;
+  return s;
+}
+
 // patterns.csv
 inline std::map<std::string, PatternSpec> patternCases() {
   using T = PatternType;
@@ -169,6 +205,26 @@ inline std::map<std::string, PatternSpec> patternCases() {
       {"planar_sine", tuned(waved(spec(T::planar), WaveShape::sine), 2, 0)},
       {"planar_turbulence",
        placed(turbulent(spec(T::planar), Vec3(0.4)), inverseRotate(Vec3(0, 0, 30)))},
+      {"quilted", quilted(1, 1)},
+      {"quilted_controls", quilted(0.3, 0.8)},
+      {"quilted_frequency", tuned(quilted(0, 0.5), 2, 0.1)},
+      {"mandel", fractal(T::mandel, 30)},
+      {"mandel_colourings", fractal(T::mandel, 20, 2, {6, 0.2}, {1, 1})},
+      {"mandel3", fractal(T::mandel, 25, 3, {1, 1}, {5, 2})},
+      {"mandel4", fractal(T::mandel, 25, 4, {2, 0.3}, {2, 0.7})},
+      {"mandel7", fractal(T::mandel, 15, 7, {5, 3}, {3, 0.5})},
+      {"mandel_placed", placed(fractal(T::mandel, 25, 2, {0, 0.3}, {6, 0.5}),
+                               then(then(inverseScale(Vec3(0.5)), inverseRotate(Vec3(0, 0, 30))),
+                                    inverseTranslate(Vec3(-0.5, 0, 0))))},
+      {"julia", julia(0.3, 0.44, 30, 2, {1, 1}, {1, 1})},
+      {"julia3", julia(-0.5, 0.5, 20, 3, {2, 4})},
+      {"julia4", julia(0.2, -0.6, 20, 4, {4, 0.1}, {4, 1})},
+      {"julia9", julia(0.1, 0.2, 12, 9, {5, 0.3}, {6, 0.5})},
+      {"julia33", julia(0.4, 0.1, 8, 33, {3, 0.2}, {1, 1})},
+      {"magnet1m", magnet(1, false, 40, {1, 1}, {1, 0.5})},
+      {"magnet1j", magnet(1, true, 30, {6, 0.01}, {0, 1}, 0.4, 0.1)},
+      {"magnet2m", magnet(2, false, 30, {0, 0.3}, {1, 0.4})},
+      {"magnet2j", magnet(2, true, 25, {1, 1}, {0, 1}, 1.1, 0.3)},
   };
 }
 

@@ -41,7 +41,7 @@ TEST_CASE("every reference case has a Lucent spec and every spec a reference", "
   CHECK(cases.size() == specs.size());
 }
 
-TEST_CASE("the 18 types, turbulence, frequency, phase and waves equal POV-Ray's to 1e-13",
+TEST_CASE("the 22 types, turbulence, frequency, phase and waves equal POV-Ray's to 1e-13",
           "[pattern]") {
   const auto cases = referenceCases("patterns.csv");
   for (const auto& [name, s] : patternCases()) {
@@ -83,4 +83,20 @@ TEST_CASE("pattern values and normals are defined at huge and non-finite points"
       CHECK(isFinite(perturbNormal(n, p, Vec3(0, 0, -1))));
     }
   }
+}
+
+TEST_CASE("quilted's offset takes POV-Ray's FLOOR, one below floor at negative integers",
+          "[pattern]") {
+  // POV-Ray's FLOOR(x) = x >= 0 ? floor(x) : -floor(-x) - 1: at x = -1 it is -2, so the
+  // offset from the cube's centre is -1 - (-2) - 0.5 = +0.5, where floor would give -0.5.
+  CHECK(povFloor(-1.0) == -2.0);
+  CHECK(povFloor(-0.25) == -1.0);
+  CHECK(povFloor(2.0) == 2.0);
+  const QuiltedParams q;  // controls 1 and 1: k(t) = (1 - (1 - t)³)·1.154700538
+  const Vec3 v = quiltedOffset(Vec3(-1.0, 0.25, 2.0), q);
+  const double t = std::sqrt(0.5 * 0.5 + 0.25 * 0.25 + 0.5 * 0.5);
+  const double k = (t * t * t + 3 * t * (1 - t) * (1 - t) + 3 * t * t * (1 - t)) * 1.154700538;
+  CHECK(v.x == Approx(0.5 * k).epsilon(1e-15));
+  CHECK(v.y == Approx(-0.25 * k).epsilon(1e-15));
+  CHECK(v.z == Approx(-0.5 * k).epsilon(1e-15));
 }

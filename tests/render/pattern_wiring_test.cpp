@@ -256,3 +256,31 @@ TEST_CASE("a mirror ray that a bent normal sends below the surface is turned bac
     CHECK(seen.b == Approx(1.0).margin(1e-6));
   }
 }
+
+TEST_CASE("quilted, the fractals and dents as a pigment are exported with POV-Ray's syntax",
+          "[povray][pattern]") {
+  auto scene = parse(R"XML(
+    <sphere><material><pattern type="quilted" control0="0.25" frequency="2"/>
+      <normal type="quilted" depth="0.6"/></material></sphere>
+    <sphere center="3 0 0"><material><pattern type="julia" c="-0.5 0.5" iterations="20" power="7"
+      interior="1 2"/><normal type="mandel" iterations="30" depth="0.4"/></material></sphere>
+    <sphere center="6 0 0"><material><pattern type="magnet" magnet-type="2" form="julia"
+      c="1.1 0.3" iterations="25" exterior="6 0.01"/></material></sphere>
+    <sphere center="9 0 0"><material><pattern type="magnet" iterations="5"/>
+      <normal type="quilted" depth="0.5" frequency="0"/></material></sphere>
+    <sphere center="12 0 0"><material><pattern type="dents"/></material></sphere>)XML");
+  PovExport e = exportPov(*scene, {});
+  REQUIRE(e.ok());
+  CHECK_THAT(e.text, Catch::Contains("quilted\n"));
+  CHECK_THAT(e.text, Catch::Contains("control0 0.25 control1 1"));
+  CHECK_THAT(e.text, Catch::Contains("frequency 2"));
+  CHECK_THAT(e.text, Catch::Contains("quilted 0.6"));
+  CHECK_THAT(e.text, Catch::Contains("julia <-0.5, 0.5>, 20"));
+  CHECK_THAT(e.text, Catch::Contains("exponent 7"));
+  CHECK_THAT(e.text, Catch::Contains("interior 1, 2"));
+  CHECK_THAT(e.text, Catch::Contains("mandel 30 0.4"));
+  CHECK_THAT(e.text, Catch::Contains("magnet 2 julia <1.1, 0.3>, 25"));
+  CHECK_THAT(e.text, Catch::Contains("exterior 6, 0.01"));
+  CHECK_THAT(e.text, Catch::Contains("magnet 1 mandel 5"));
+  CHECK_THAT(e.text, Catch::Contains("dents\n"));
+}

@@ -4,7 +4,8 @@
 # Values come from POV-Ray's functions, printed to 17 decimals: `function { pattern {...} }`
 # (the pattern with its transform, turbulence, frequency and wave: POV-Ray's f_pattern),
 # `function { pigment {...} }` (the colour, float) and f_noise_generator (the raw noise).
-# Points are k/4096 for integer k, so the CSV's integers give them exactly. Normals cannot
+# A pattern function takes fractal exterior types 0..6 only, so types 7 and 8 are read
+# through a pigment (colors.csv). Points are k/4096 for integer k, so the CSV's integers give them exactly. Normals cannot
 # be read from a function: they are rendered (normals.csv, see there).
 #
 # Needs povray (3.7) and oiiotool. Usage: make_references.sh [output folder]
@@ -130,6 +131,24 @@ pattern_cases=(
   "planar|2|planar"
   "planar_sine|2|planar frequency 2 sine_wave"
   "planar_turbulence|2|planar turbulence 0.4 rotate <0, 0, 30>"
+  "quilted|2|quilted"
+  "quilted_controls|2|quilted control0 0.3 control1 0.8"
+  "quilted_frequency|2|quilted control0 0 control1 0.5 frequency 2 phase 0.1"
+  "mandel|2|mandel 30"
+  "mandel_colourings|2|mandel 20 exterior 6, 0.2 interior 1, 1"
+  "mandel3|2|mandel 25 exponent 3 interior 5, 2"
+  "mandel4|2|mandel 25 exponent 4 exterior 2, 0.3 interior 2, 0.7"
+  "mandel7|2|mandel 15 exponent 7 exterior 5, 3 interior 3, 0.5"
+  "mandel_placed|2|mandel 25 exterior 0, 0.3 interior 6, 0.5 scale 0.5 rotate <0, 0, 30> translate <-0.5, 0, 0>"
+  "julia|2|julia <0.3, 0.44>, 30 interior 1, 1"
+  "julia3|2|julia <-0.5, 0.5>, 20 exponent 3 exterior 2, 4"
+  "julia4|2|julia <0.2, -0.6>, 20 exponent 4 exterior 4, 0.1 interior 4, 1"
+  "julia9|2|julia <0.1, 0.2>, 12 exponent 9 exterior 5, 0.3 interior 6, 0.5"
+  "julia33|1|julia <0.4, 0.1>, 8 exponent 33 exterior 3, 0.2 interior 1, 1"
+  "magnet1m|3|magnet 1 mandel 40 interior 1, 0.5"
+  "magnet1j|3|magnet 1 julia <0.4, 0.1>, 30 exterior 6, 0.01"
+  "magnet2m|3|magnet 2 mandel 30 exterior 0, 0.3 interior 1, 0.4"
+  "magnet2j|3|magnet 2 julia <1.1, 0.3>, 25"
 )
 color_cases=(
   "map_bozo|8|bozo color_map { [0.2 rgb <1, 0, 0>] [0.5 rgb <0, 1, 0.5>] [0.9 rgb <0.1, 0.2, 0.9>] }"
@@ -144,6 +163,8 @@ color_cases=(
   "brick|32|brick rgb <0.1, 0.2, 0.3>, rgb <0.9, 0.8, 0.7>"
   "brick_sized|4|brick rgb <0.1, 0.2, 0.3>, rgb <0.9, 0.8, 0.7> mortar 0.2 brick_size <1, 0.5, 0.7>"
   "brick_turbulence|16|brick rgb <1, 1, 1>, rgb <0, 0, 0> turbulence 0.4 octaves 3"
+  "mandel_exterior7|2|mandel 15 exponent 7 exterior 7, 3 interior 3, 0.5 color_map { [0 rgb 0] [1 rgb <1, 0.5, 0.25>] }"
+  "julia_exterior8|2|julia <-0.5, 0.5>, 20 exponent 3 exterior 8, 4 color_map { [0 rgb 0] [1 rgb <1, 0.5, 0.25>] }"
 )
 
 write_cases() {  # kind (pattern or pigment), csv path, cases...
@@ -213,6 +234,8 @@ normal_cases=(
   "slope_rotated|granite 0.6 rotate <20, 30, 40> scale <1, 0.5, 2>"
   "planar|planar 0.8"
   "planar_rotated|planar 0.6 rotate <0, 0, 40> scale 1.5"
+  "quilted|quilted 0.6 control0 0.5 control1 0.8 scale 0.7"
+  "mandel|mandel 30 0.5 scale 1.5"
 )
 echo "case,i,j,r,g,b" >"$work/normals.csv"
 for c in "${normal_cases[@]}"; do

@@ -1,0 +1,176 @@
+// The scene reader's quilted, mandel, julia and magnet patterns, and dents, ripples and
+// waves as pigments: each keyword's arguments and modifiers with POV-Ray's defaults
+// (parstxtr.cpp), field by field, as pigments and as normals; and the bad inputs, each
+// one error at its place.
+#include <catch2/catch.hpp>
+
+#include "scene_read_support.h"
+#include "sdl_test_support.h"
+
+#include "sdl/scene_reader.h"
+
+#include <variant>
+
+using namespace lucent;
+using namespace lucent::sdl;
+
+namespace {
+
+using sdltest::errorsOf;
+using sdltest::readScene;
+
+const PatternSpec& pigmentPattern(const Scene& scene, size_t i) {
+  REQUIRE(scene.root->children.size() > i);
+  const Node& n = *scene.root->children[i];
+  REQUIRE(n.material);
+  const auto* t = std::get_if<PatternTexture>(&scene.materials.at(*n.material).texture);
+  REQUIRE(t);
+  return t->pattern;
+}
+
+const NormalSpec& normalOf(const Scene& scene, size_t i) {
+  REQUIRE(scene.root->children.size() > i);
+  const Node& n = *scene.root->children[i];
+  REQUIRE(n.material);
+  const Material& m = scene.materials.at(*n.material);
+  REQUIRE(m.normal);
+  return *m.normal;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "scene reader patterns: quilted's controls and frequency 0, dents, ripples and waves "
+    "as pigments",
+    "[sdl][scene][texture]") {
+  auto r = readScene(R"(
+sphere { 0, 1 pigment { quilted } }
+sphere { 0, 1 pigment { quilted control0 0.25 control1 0.75 frequency 2 } }
+sphere { 0, 1 normal { quilted 0.6 control0 0 } }
+sphere { 0, 1 pigment { dents } }
+sphere { 0, 1 pigment { ripples frequency 3 phase 0.5 } }
+sphere { 0, 1 pigment { waves } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const PatternSpec& plain = pigmentPattern(s, 0);
+  CHECK(plain.type == PatternType::quilted);
+  CHECK(plain.frequency == 0.0);
+  CHECK(plain.quilted.control0 == 1.0);
+  CHECK(plain.quilted.control1 == 1.0);
+  const PatternSpec& tuned = pigmentPattern(s, 1);
+  CHECK(tuned.quilted.control0 == 0.25);
+  CHECK(tuned.quilted.control1 == 0.75);
+  CHECK(tuned.frequency == 2.0);
+  const NormalSpec& n = normalOf(s, 2);
+  CHECK(n.pattern.type == PatternType::quilted);
+  CHECK(n.depth == 0.6);
+  CHECK(n.pattern.quilted.control0 == 0.0);
+  CHECK(n.pattern.frequency == 0.0);
+  CHECK(pigmentPattern(s, 3).type == PatternType::dents);
+  const PatternSpec& ripples = pigmentPattern(s, 4);
+  CHECK(ripples.type == PatternType::ripples);
+  CHECK(ripples.frequency == 3.0);
+  CHECK(ripples.phase == 0.5);
+  CHECK(pigmentPattern(s, 5).type == PatternType::waves);
+}
+
+TEST_CASE("scene reader patterns: mandel, julia and magnet with their arguments and colourings",
+          "[sdl][scene][texture]") {
+  auto r = readScene(R"(
+sphere { 0, 1 pigment { mandel 50 } }
+sphere { 0, 1 pigment { mandel 20 exponent 5 exterior 7, 3 interior 6, 0.5 } }
+sphere { 0, 1 pigment { julia <0.3, -0.44>, 30 exponent 3 interior 1, 2 } }
+sphere { 0, 1 pigment { magnet 1 mandel 40 } }
+sphere { 0, 1 pigment { magnet 2 julia <1.1, 0.3>, 25 exterior 6, 0.01 } }
+sphere { 0, 1 normal { mandel 30, 0.4 interior 1, 1 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const PatternSpec& mandel = pigmentPattern(s, 0);
+  CHECK(mandel.type == PatternType::mandel);
+  CHECK(mandel.fractal.iterations == 50);
+  CHECK(mandel.fractal.power == 2);
+  CHECK(mandel.fractal.exterior.type == 1);
+  CHECK(mandel.fractal.exterior.factor == 1.0);
+  CHECK(mandel.fractal.interior.type == 0);
+  CHECK(mandel.fractal.interior.factor == 1.0);
+  CHECK(mandel.frequency == 1.0);
+  const PatternSpec& mandel5 = pigmentPattern(s, 1);
+  CHECK(mandel5.fractal.power == 5);
+  CHECK(mandel5.fractal.exterior.type == 7);
+  CHECK(mandel5.fractal.exterior.factor == 3.0);
+  CHECK(mandel5.fractal.interior.type == 6);
+  CHECK(mandel5.fractal.interior.factor == 0.5);
+  const PatternSpec& julia = pigmentPattern(s, 2);
+  CHECK(julia.type == PatternType::julia);
+  CHECK(julia.fractal.cReal == 0.3);
+  CHECK(julia.fractal.cImaginary == -0.44);
+  CHECK(julia.fractal.iterations == 30);
+  CHECK(julia.fractal.power == 3);
+  CHECK(julia.fractal.interior.type == 1);
+  CHECK(julia.fractal.interior.factor == 2.0);
+  const PatternSpec& magnet1 = pigmentPattern(s, 3);
+  CHECK(magnet1.type == PatternType::magnet);
+  CHECK(magnet1.fractal.magnetType == 1);
+  CHECK_FALSE(magnet1.fractal.juliaForm);
+  CHECK(magnet1.fractal.iterations == 40);
+  const PatternSpec& magnet2 = pigmentPattern(s, 4);
+  CHECK(magnet2.fractal.magnetType == 2);
+  CHECK(magnet2.fractal.juliaForm);
+  CHECK(magnet2.fractal.cReal == 1.1);
+  CHECK(magnet2.fractal.cImaginary == 0.3);
+  CHECK(magnet2.fractal.iterations == 25);
+  CHECK(magnet2.fractal.exterior.type == 6);
+  CHECK(magnet2.fractal.exterior.factor == 0.01);
+  const NormalSpec& n = normalOf(s, 5);
+  CHECK(n.pattern.type == PatternType::mandel);
+  CHECK(n.pattern.fractal.iterations == 30);
+  CHECK(n.depth == 0.4);
+  CHECK(n.pattern.fractal.interior.type == 1);
+}
+
+TEST_CASE("scene reader patterns: a mandel exponent outside 2..33 is POV-Ray's warning and 2",
+          "[sdl][scene][texture]") {
+  auto r = readScene("sphere { 0, 1 pigment { mandel 10 exponent 40 } }\n");
+  REQUIRE(r->load.scene);
+  CHECK(pigmentPattern(*r->load.scene, 0).fractal.power == 2);
+  bool warned = false;
+  for (const std::string& w : r->out.warnings)
+    warned |= w ==
+              "test.pov:1:35: warning: the fractal exponent 40 is outside 2..33; POV-Ray "
+              "uses 2";
+  CHECK(warned);
+}
+
+TEST_CASE("scene reader patterns: bad fractal and quilted modifiers are errors at their keyword",
+          "[sdl][scene][texture][errors]") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"sphere { 0, 1 pigment { magnet 3 mandel 10 } }",
+       "test.pov:1:25: error: magnet's type must be 1 or 2, got 3"},
+      {"sphere { 0, 1 pigment { magnet 1 bozo 10 } }",
+       "test.pov:1:34: error: 'mandel' or 'julia' expected after 'magnet 1', not"},
+      {"sphere { 0, 1 pigment { mandel -5 } }",
+       "test.pov:1:25: error: a fractal pattern's iterations must be from 0 to 100000000, got -5"},
+      {"sphere { 0, 1 pigment { mandel 10 exterior 9, 1 } }",
+       "test.pov:1:35: error: exterior types are 0 to 8, got 9"},
+      {"sphere { 0, 1 pigment { julia <0, 0>, 10 interior 7, 1 } }",
+       "test.pov:1:42: error: interior types are 0 to 6, got 7"},
+      {"sphere { 0, 1 pigment { mandel 10 exterior 7, 0 } }",
+       "test.pov:1:35: error: exterior type 7 needs a factor >= 1, got 0"},
+      {"sphere { 0, 1 pigment { mandel 10 exterior 8, 0 } }",
+       "test.pov:1:35: error: exterior type 8 needs a factor > 0, got 0"},
+      {"sphere { 0, 1 pigment { bozo exterior 1, 1 } }",
+       "test.pov:1:30: error: 'exterior' is for mandel, julia and magnet"},
+      {"sphere { 0, 1 pigment { magnet 1 mandel 10 exponent 3 } }",
+       "test.pov:1:44: error: 'exponent' is for mandel and julia"},
+      {"sphere { 0, 1 pigment { bozo control0 0.5 } }",
+       "test.pov:1:30: error: 'control0' is for quilted"},
+  };
+  for (const auto& [text, want] : cases) {
+    INFO(text);
+    const auto errors = errorsOf(text);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].rfind(want, 0) == 0);
+  }
+}
