@@ -114,6 +114,7 @@ std::optional<OwnShapeText> own(const BicubicPatchSpec& s, const SourceLoc&, con
   OwnShapeText t;
   t.attributes = {{"points", tripleList(s.points)},
                   {"type", std::to_string(s.type)},
+                  {"flatness-space", s.flatnessInWorld ? "world" : "object"},
                   {"u-steps", std::to_string(s.uSteps)},
                   {"v-steps", std::to_string(s.vSteps)}};
   return t;

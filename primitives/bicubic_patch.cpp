@@ -59,6 +59,8 @@ struct Builder {
   const PatchPoints& whole;
   double flatness;
   int uSteps, vSteps;
+  const Mat4& frame;  // where flatness is measured
+  bool framed;        // frame is not the identity
   MeshData& mesh;
 
   void vertex(const Vec3& p, double u, double v) {
@@ -80,7 +82,14 @@ struct Builder {
   }
 
   void build(const PatchPoints& p, double u0, double u1, double v0, double v1, int depth) {
-    const double f = patchFlatness(p);
+    double f = 0.0;
+    if (framed) {
+      PatchPoints q{};
+      for (size_t k = 0; k < 16; ++k) q[k] = Vec3(frame * Vec4(p[k], 1.0));
+      f = patchFlatness(q);
+    } else {
+      f = patchFlatness(p);
+    }
     const bool flat = f >= 0.0 && f < flatness;
     const bool cutU = depth < uSteps, cutV = depth < vSteps;
     if (flat || (!cutU && !cutV)) return leaf(p, u0, u1, v0, v1);
@@ -109,13 +118,13 @@ struct Builder {
 };
 
 std::shared_ptr<const MeshData> checkedMesh(const PatchPoints& p, double flatness, int uSteps,
-                                            int vSteps) {
+                                            int vSteps, const Mat4& frame) {
   if (uSteps < 0 || vSteps < 0 || uSteps > BicubicPatch::kMaxSteps ||
       vSteps > BicubicPatch::kMaxSteps)
     throw std::invalid_argument("bicubic-patch: u-steps and v-steps must be from 0 to 10");
   for (const Vec3& q : p)
     if (!isFinite(q)) throw std::invalid_argument("bicubic-patch: a control point is not finite");
-  return bicubicPatchMesh(p, flatness, uSteps, vSteps);
+  return bicubicPatchMesh(p, flatness, uSteps, vSteps, frame);
 }
 
 }  // namespace
@@ -164,14 +173,17 @@ double patchFlatness(const PatchPoints& p) {
 }
 
 std::shared_ptr<const MeshData> bicubicPatchMesh(const PatchPoints& p, double flatness, int uSteps,
-                                                 int vSteps) {
+                                                 int vSteps, const Mat4& flatnessFrame) {
   auto mesh = std::make_shared<MeshData>();
-  Builder{p, flatness, uSteps, vSteps, *mesh}.build(p, 0.0, 1.0, 0.0, 1.0, 0);
+  const bool framed = flatnessFrame != Mat4(1.0);
+  Builder{p, flatness, uSteps, vSteps, flatnessFrame, framed, *mesh}.build(p, 0.0, 1.0, 0.0, 1.0,
+                                                                           0);
   return mesh;
 }
 
-BicubicPatch::BicubicPatch(const PatchPoints& p, double flatness, int uSteps, int vSteps)
-    : mesh_(checkedMesh(p, flatness, uSteps, vSteps), true) {}
+BicubicPatch::BicubicPatch(const PatchPoints& p, double flatness, int uSteps, int vSteps,
+                           const Mat4& flatnessFrame)
+    : mesh_(checkedMesh(p, flatness, uSteps, vSteps, flatnessFrame), true) {}
 
 bool BicubicPatch::intersect(const Ray& ray, Hit& hit) const {
   if (!mesh_.intersect(ray, hit)) return false;

@@ -14,9 +14,10 @@
 // the patch's (v, u), interpolated. POV-Ray's types 0 (subdivide per ray) and 1 (subdivide
 // once) make the same triangles; both are this. Not a solid.
 //
-// The subdivision is decided in the patch's own coordinates; POV-Ray decides it after
-// the object's transforms (it moves the control points), so a flatness that matters and a
-// scale differ from it (docs/scene-language.md, <bicubic-patch>).
+// Flatness is measured in the patch's own coordinates, or, given `flatnessFrame`, on the
+// parts' control points mapped by it: POV-Ray measures it after every transform (it moves
+// the control points), and subdividing commutes with affine maps, so the triangles are
+// POV-Ray's in the patch's own space (docs/scene-language.md, <bicubic-patch>).
 #pragma once
 
 #include "mesh_data.h"
@@ -40,13 +41,14 @@ double patchFlatness(const PatchPoints& p);
 
 // The triangles POV-Ray traces, with their normals and (u, v).
 std::shared_ptr<const MeshData> bicubicPatchMesh(const PatchPoints& p, double flatness, int uSteps,
-                                                 int vSteps);
+                                                 int vSteps, const Mat4& flatnessFrame = Mat4(1.0));
 
 class BicubicPatch final : public Shape {
  public:
   // Steps from 0 to kMaxSteps; throws std::invalid_argument otherwise or for points that
   // are not finite.
-  BicubicPatch(const PatchPoints& p, double flatness, int uSteps, int vSteps);
+  BicubicPatch(const PatchPoints& p, double flatness, int uSteps, int vSteps,
+               const Mat4& flatnessFrame = Mat4(1.0));
 
   static constexpr int kMaxSteps = 10;
 

@@ -152,6 +152,10 @@ struct BicubicPatchSpec {
   int type = 0;
   double flatness = 0.0;
   int uSteps = 0, vSteps = 0;
+  bool flatnessInWorld = false;  // flatness-space="world": measured after every transform
+  // Where flatness is measured: the node's world transform when flatnessInWorld, set by the
+  // world builder (flatten.cpp) on its copy; the identity as read.
+  Mat4 flatnessFrame{1.0};
 };
 using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
                                DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,

@@ -578,6 +578,7 @@ void SceneReader::readPolygon(PovObject& o, TokenStream& in) {
 // `accuracy` without using it.
 void SceneReader::readBicubicPatch(PovObject& o, TokenStream& in) {
   BicubicPatchSpec s;
+  s.flatnessInWorld = true;  // POV-Ray measures flatness after the transforms
   double type = -1.0;
   auto steps = [&](const char* what) { return parseCount(in, what, BicubicPatch::kMaxSteps); };
   if (in.peek().kind == TokenKind::Number) {

@@ -20,6 +20,7 @@ Field<BicubicPatchSpec> whole(const char* name, const char* doc) {
 void readPatch(BicubicPatchSpec& s, AttributeInput& in) {
   const int most = BicubicPatch::kMaxSteps;
   s.type = static_cast<int>(in.integer("type", s.type, 0, 1));
+  s.flatnessInWorld = in.choice("flatness-space", 0, {"object", "world"}) == 1;
   s.uSteps = static_cast<int>(in.integer("u-steps", s.uSteps, 0, most));
   s.vSteps = static_cast<int>(in.integer("v-steps", s.vSteps, 0, most));
   if (!in.has("points")) {
@@ -68,6 +69,7 @@ std::vector<std::pair<std::string, BicubicPatchSpec>> patchSamples() {
   sheet.type = 1;
   sheet.flatness = 0.1;
   sheet.uSteps = sheet.vSteps = 4;
+  sheet.flatnessInWorld = true;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
       const bool cornerI = i == 0 || i == 3, cornerJ = j == 0 || j == 3;
@@ -84,7 +86,8 @@ ShapeEntry<BicubicPatchSpec> shapeEntry<BicubicPatchSpec>() {
   ShapeEntry<BicubicPatchSpec> e(
       "bicubic-patch", "bicubic patches",
       [](const BicubicPatchSpec& s) {
-        return std::make_shared<BicubicPatch>(s.points, s.flatness, s.uSteps, s.vSteps);
+        return std::make_shared<BicubicPatch>(s.points, s.flatness, s.uSteps, s.vSteps,
+                                              s.flatnessFrame);
       },
       writePatch);
   e.doc =
@@ -98,6 +101,10 @@ ShapeEntry<BicubicPatchSpec> shapeEntry<BicubicPatchSpec>() {
       numberField("flatness", &BicubicPatchSpec::flatness, NumberRule::nonNegative())
           .doc("A part whose control points lie closer than this to the plane of its corners is "
                "not cut further (0: always cut to the steps)."),
+      readByEntry<BicubicPatchSpec>("flatness-space", AttrType::Choice, "object",
+                                    {"object", "world"})
+          .doc("object (flatness measured in the patch's own coordinates) | world (after every "
+               "transform, as POV-Ray measures it)."),
       whole("u-steps", "Halvings along u, 0 to 10: at most 2^u-steps parts. Default 0."),
       whole("v-steps", "Halvings along v, 0 to 10: at most 2^v-steps parts. Default 0.")};
   e.fields[0].info.required = true;

@@ -1,6 +1,7 @@
 #include "primitives/bicubic_patch.h"
 
 #include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 
@@ -110,4 +111,23 @@ TEST_CASE("bicubic patch: hits on the chords of the subdivision", "[primitives][
   REQUIRE(cl.items.size() == 1);
   CHECK(cl.items[0].hit.shape == &patch);
   CHECK_FALSE(patch.intersect(Ray(Vec3(1.2, 2, 0.4), Vec3(0, -1, 0)), h));  // beside it
+}
+
+TEST_CASE("bicubic patch: flatness measured where the frame places the parts",
+          "[primitives][bicubic]") {
+  // A part of u-size h lies h²/3 (times the cosine of its slope) off its chord: flatness
+  // 0.01 stops the sheet at depth 2 or 3 in its own space. Scaled by 4 the parts are 4
+  // times less flat and cutting goes deeper, as POV-Ray cuts the scaled patch.
+  const PatchPoints sheet = parabolicSheet();
+  const size_t own = bicubicPatchMesh(sheet, 0.01, 6, 6)->triangles.size();
+  const size_t scaled =
+      bicubicPatchMesh(sheet, 0.01, 6, 6, glm::scale(Mat4(1.0), Vec3(4.0)))->triangles.size();
+  PatchPoints moved = sheet;
+  for (Vec3& q : moved) q *= 4.0;
+  CHECK(scaled == bicubicPatchMesh(moved, 0.01, 6, 6)->triangles.size());
+  CHECK(scaled > own);
+  // A rotation and a translation change nothing.
+  const Mat4 rigid =
+      glm::translate(glm::rotate(Mat4(1.0), 0.7, glm::normalize(Vec3(1, 2, 3))), Vec3(5, -2, 1));
+  CHECK(bicubicPatchMesh(sheet, 0.01, 6, 6, rigid)->triangles.size() == own);
 }

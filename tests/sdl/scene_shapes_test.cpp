@@ -531,6 +531,7 @@ bicubic_patch { 3, 0.5, 1, 1
   CHECK(a.flatness == 0.01);
   CHECK(a.uSteps == 4);
   CHECK(a.vSteps == 3);
+  CHECK(a.flatnessInWorld);
   checkVec(a.points[0], Vec3(0, 0, -2));
   checkVec(a.points[15], Vec3(3, 3, 2));
   const auto& b = shapeOf<BicubicPatchSpec>(*r->load.scene, 1);
