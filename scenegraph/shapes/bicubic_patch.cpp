@@ -49,6 +49,8 @@ void writePatch(const BicubicPatchSpec& s, PovShapeOut& out) {
                          i < 12 ? "," : ""));
 }
 
+// Counted as cut in the patch's own space: with flatness-space="world" the world builder
+// may cut it finer or coarser where it is placed.
 long long patchTriangles(const BicubicPatchSpec& s) {
   return static_cast<long long>(
       bicubicPatchMesh(s.points, s.flatness, s.uSteps, s.vSteps)->triangles.size());
