@@ -96,6 +96,30 @@ std::optional<OwnShapeText> own(const PrismSpec& s, const SourceLoc&, const std:
   return t;
 }
 
+// Points as x y z triples, separated by commas (as docs/scene-language.md writes them).
+template <class List>
+std::string tripleList(const List& points) {
+  std::string out;
+  for (const Vec3& p : points) out += (out.empty() ? "" : ", ") + xmlVector(p);
+  return out;
+}
+
+std::optional<OwnShapeText> own(const PolygonSpec& s, const SourceLoc&, const std::string&) {
+  OwnShapeText t;
+  t.attributes = {{"points", tripleList(s.points)}};
+  return t;
+}
+
+std::optional<OwnShapeText> own(const BicubicPatchSpec& s, const SourceLoc&, const std::string&) {
+  OwnShapeText t;
+  t.attributes = {{"points", tripleList(s.points)},
+                  {"type", std::to_string(s.type)},
+                  {"flatness-space", s.flatnessInWorld ? "world" : "object"},
+                  {"u-steps", std::to_string(s.uSteps)},
+                  {"v-steps", std::to_string(s.vSteps)}};
+  return t;
+}
+
 std::optional<OwnShapeText> own(const LatheSpec& s, const SourceLoc&, const std::string&) {
   OwnShapeText t;
   t.attributes = {{"points", pairList(s.points)}, {"spline", kSplines[static_cast<int>(s.spline)]}};

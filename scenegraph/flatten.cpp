@@ -152,7 +152,17 @@ struct Builder {
   // A leaf: its Instance, tagged with its index in `leaves`.
   Part addLeaf(const Node& node, const Transform& world, uint32_t material, bool casts) {
     std::shared_ptr<const Shape> shape;
-    if (share) {
+    const auto* patch = std::get_if<BicubicPatchSpec>(&*node.shape);
+    if (patch && patch->flatnessInWorld) {
+      // Cut where it is flat in the world, as POV-Ray cuts it: built for this placement.
+      BicubicPatchSpec placed = *patch;
+      placed.flatnessFrame = world.worldFromObject();
+      try {
+        shape = makeShape(ShapeSpec(placed));
+      } catch (const std::invalid_argument& e) {
+        throw LocatedError(node.loc, e.what());
+      }
+    } else if (share) {
       auto& shared = shapes[&node];
       if (!shared) shared = made(node);
       shape = shared;

@@ -2,6 +2,7 @@
 // these; the world builder turns them into primitives; the POV-Ray exporter reads them.
 #pragma once
 
+#include "primitives/bicubic_patch.h"
 #include "primitives/blob_component.h"
 #include "primitives/height_map.h"
 #include "primitives/isosurface.h"
@@ -139,9 +140,26 @@ struct HeightFieldSpec {
   bool open = false;                     // without walls and floor (POV-Ray's look)
   std::shared_ptr<const HeightMap> map;  // loaded
 };
-using ShapeSpec =
-    std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec, DiscSpec,
-                 TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec, PolySpec, PrismSpec,
-                 BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec, SorSpec, HeightFieldSpec>;
+// POV-Ray's polygon: outlines of points in one plane, each closed by repeating its first
+// point (primitives/polygon.h); as written (closed when built).
+struct PolygonSpec {
+  std::vector<Vec3> points;
+};
+// POV-Ray's bicubic_patch: 16 control points, traced as POV-Ray's triangles
+// (primitives/bicubic_patch.h). type: POV-Ray's 0 or 1, the same triangles in both.
+struct BicubicPatchSpec {
+  PatchPoints points{};
+  int type = 0;
+  double flatness = 0.0;
+  int uSteps = 0, vSteps = 0;
+  bool flatnessInWorld = false;  // flatness-space="world": measured after every transform
+  // Where flatness is measured: the node's world transform when flatnessInWorld, set by the
+  // world builder (flatten.cpp) on its copy; the identity as read.
+  Mat4 flatnessFrame{1.0};
+};
+using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
+                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
+                               PolySpec, PrismSpec, BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec,
+                               SorSpec, HeightFieldSpec, PolygonSpec, BicubicPatchSpec>;
 
 }  // namespace lucent

@@ -10,6 +10,7 @@
 #include "primitives/blob.h"
 #include "primitives/lathe.h"
 #include "primitives/poly.h"
+#include "primitives/polygon.h"
 #include "primitives/sor.h"
 #include "primitives/superellipsoid.h"
 #include "scenegraph/shape_type.h"
@@ -32,7 +33,8 @@ constexpr std::string_view kShapes[] = {
     "torus",        "disc",  "triangle", "smooth_triangle", "quadric",
     "poly",         "cubic", "quartic",  "polynomial",      "blob",
     "lathe",        "sor",   "prism",    "superellipsoid",  "text",
-    "height_field", "mesh",  "mesh2",    "isosurface"};
+    "height_field", "mesh",  "mesh2",    "isosurface",      "polygon",
+    "bicubic_patch"};
 
 // POV-Ray's shapes Lucent has no equivalent of, with the nearest Lucent feature.
 const std::map<std::string_view, std::string_view>& unsupportedShapes() {
@@ -40,10 +42,8 @@ const std::map<std::string_view, std::string_view>& unsupportedShapes() {
       {"julia_fractal", "4-D quaternion fractals; the nearest Lucent shape is <isosurface>"},
       {"parametric", "parametric surfaces; the nearest Lucent shape is <isosurface>"},
       {"sphere_sweep", "swept spheres; a linear one is a <union> of <sphere> and <cone> elements"},
-      {"bicubic_patch", "Bézier patches; the nearest Lucent shape is <mesh>"},
       {"ovus", "the ovus; the nearest Lucent shapes are <lathe> and <sor>"},
       {"lemon", "the lemon; the nearest Lucent shapes are <lathe> and <sor>"},
-      {"polygon", "flat polygons; the nearest Lucent shapes are <mesh> and a thin <prism>"},
   };
   return shapes;
 }
@@ -245,6 +245,10 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
     readLatheOrSor(o, in);
   } else if (w == "prism") {
     readPrism(o, in);
+  } else if (w == "polygon") {
+    readPolygon(o, in);
+  } else if (w == "bicubic_patch") {
+    readBicubicPatch(o, in);
   } else if (w == "superellipsoid") {
     const Vec2 en = parseUv(in);
     // Poles on z in both: z → −z maps the shape onto itself.
@@ -536,6 +540,84 @@ void SceneReader::readPrism(PovObject& o, TokenStream& in) {
          "the prism's last polygon is not closed (its first point is not repeated); "
          "closed it, as POV-Ray does");
   if (s.height1 == s.height2) in.error(o.loc, "the prism's two heights are equal: it is flat");
+  o.shape = std::move(s);
+}
+
+// polygon { N, <x, y, z>... }: 2-D points have z = 0 (POV-Ray's vectors). POV-Ray closes an
+// unclosed last outline with a warning, and ignores a polygon whose points lie on one line
+// or not in one plane (within 1e-10): Lucent leaves it out, with a warning.
+void SceneReader::readPolygon(PovObject& o, TokenStream& in) {
+  const SourceLoc countLoc = in.peek().loc();
+  const double n = in.parseFloat();
+  if (!(n >= 3.0))
+    in.error(countLoc, "a polygon needs at least three points, not " + attributeText(n));
+  if (n > (1 << 24)) in.error(countLoc, "a polygon of more than 16777216 points");
+  in.parseComma();
+  PolygonSpec s;
+  for (int i = 0; i < static_cast<int>(n); ++i) {
+    s.points.push_back(point(in));
+    in.parseComma();  // POV-Ray allows a trailing comma
+  }
+  const PolygonOutline outline = polygonOutline(s.points);
+  if (outline.closedLast)
+    warn(in, o.loc,
+         "the polygon's last outline is not closed (its first point is not repeated); closed "
+         "it, as POV-Ray does");
+  const std::string problem = polygonProblem(outline.points);
+  if (!problem.empty()) {
+    warn(in, o.loc, "the polygon is left out, as POV-Ray ignores it: " + problem);
+    o.kind = NodeKind::Group;  // nothing: an empty group
+    return;
+  }
+  o.shape = std::move(s);
+}
+
+// bicubic_patch { type T [flatness F] [u_steps U] [v_steps V] [accuracy A] 16 points }, or
+// POV-Ray 1.5's numbers `T, [F,] U, V` (a flatness only for the old types 2 and 3, else
+// 0.1). POV-Ray makes a type above 1 type 1 with a warning, needs a type, and reads
+// `accuracy` without using it.
+void SceneReader::readBicubicPatch(PovObject& o, TokenStream& in) {
+  BicubicPatchSpec s;
+  s.flatnessInWorld = true;  // POV-Ray measures flatness after the transforms
+  double type = -1.0;
+  auto steps = [&](const char* what) { return parseCount(in, what, BicubicPatch::kMaxSteps); };
+  if (in.peek().kind == TokenKind::Number) {
+    type = in.parseFloat();
+    in.parseComma();
+    s.flatness = 0.1;
+    if (static_cast<int>(type) == 2 || static_cast<int>(type) == 3) {
+      s.flatness = in.parseFloat();
+      in.parseComma();
+    }
+    s.uSteps = steps("u_steps");
+    in.parseComma();
+    s.vSteps = steps("v_steps");
+  } else {
+    for (;;) {
+      if (allowWord(in, "type")) type = in.parseFloat();
+      else if (allowWord(in, "flatness")) s.flatness = in.parseFloat();
+      else if (allowWord(in, "u_steps")) s.uSteps = steps("u_steps");
+      else if (allowWord(in, "v_steps")) s.vSteps = steps("v_steps");
+      else if (allowWord(in, "accuracy")) in.parseFloat();
+      else if (isWord(in.peek(), "uv_vectors")) {
+        refuseShape(o, in.peek().loc(), in,
+                    "'uv_vectors' of a bicubic_patch is not supported by Lucent (its (u, v) are "
+                    "the patch's own)");
+        return;
+      } else break;
+    }
+  }
+  const int t = static_cast<int>(type);
+  if (t < 0) in.error(o.loc, "the bicubic_patch has no type (type 0 or 1)");
+  if (t > 1)
+    warn(in, o.loc, "bicubic_patch type " + std::to_string(t) + " is type 1, as in POV-Ray");
+  s.type = std::min(t, 1);
+  if (s.flatness < 0.0) s.flatness = 0.0;  // never flat either way
+  in.parseComma();
+  for (size_t i = 0; i < 16; ++i) {
+    s.points[i] = point(in);
+    in.parseComma();
+  }
   o.shape = std::move(s);
 }
 

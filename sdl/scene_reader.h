@@ -277,6 +277,8 @@ class SceneReader : public ItemReader {
   void readBlob(PovObject& o, TokenStream& in);
   void readLatheOrSor(PovObject& o, TokenStream& in);
   void readPrism(PovObject& o, TokenStream& in);
+  void readPolygon(PovObject& o, TokenStream& in);
+  void readBicubicPatch(PovObject& o, TokenStream& in);
   void readText(PovObject& o, TokenStream& in);
   void readHeightField(PovObject& o, TokenStream& in);
   void readMesh(PovObject& o, TokenStream& in);

@@ -34,6 +34,9 @@ const Spec& shapeOf(const Scene& scene, size_t i) {
 using sdltest::checkMat;
 using sdltest::checkVec;
 
+// The warnings of a read, each as printed.
+std::vector<std::string> warningsOf(const sdltest::Read& r) { return r.out.warnings; }
+
 }  // namespace
 
 TEST_CASE("scene shapes: quadric, its terms odd in z negated", "[sdl][scene][shapes]") {
@@ -338,15 +341,14 @@ TEST_CASE("scene shapes: what Lucent has no shape for, refused at the keyword, e
   const auto errors = errorsOf(R"(julia_fractal { <-0.08, 0.7, 0, 0> quaternion sqr }
 union { parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
         sphere { 0, 1 } }
-#declare P = bicubic_patch { type 1 } object { P }
+#declare P = ovus { 1, 0.5 } object { P }
 sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 0, 0>, 1 }
 ovus { 1, 0.5 }
-polygon { 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }
 poly { 6, <1> }
 superellipsoid { <0, 1> }
 height_field { gif "x.gif" }
 )");
-  REQUIRE(errors.size() == 9);
+  REQUIRE(errors.size() == 8);
   CHECK(errors[0] ==
         "test.pov:1:1: error: 'julia_fractal' is not supported by Lucent (4-D quaternion fractals; "
         "the nearest Lucent shape is <isosurface>)");
@@ -355,17 +357,16 @@ height_field { gif "x.gif" }
         "nearest Lucent shape is <isosurface>)");
   // A declared object's refusal is said where it is used, with that place as a note.
   CHECK(errors[2] ==
-        "test.pov:4:14: error: 'bicubic_patch' is not supported by Lucent (Bézier patches; the "
-        "nearest Lucent shape is <mesh>)\ntest.pov:4:48: note: the declaration is used here");
+        "test.pov:4:14: error: 'ovus' is not supported by Lucent (the ovus; the nearest Lucent "
+        "shapes are <lathe> and <sor>)\ntest.pov:4:39: note: the declaration is used here");
   CHECK(errors[3].find("test.pov:5:1: error: 'sphere_sweep' is not supported by Lucent") == 0);
   CHECK(errors[4].find("test.pov:6:1: error: 'ovus' is not supported by Lucent") == 0);
-  CHECK(errors[5].find("test.pov:7:1: error: 'polygon' is not supported by Lucent") == 0);
-  CHECK(errors[6] ==
-        "test.pov:8:1: error: 'poly' of order 6 is not supported by Lucent (its poly takes orders "
+  CHECK(errors[5] ==
+        "test.pov:7:1: error: 'poly' of order 6 is not supported by Lucent (its poly takes orders "
         "2 to 4; the nearest Lucent shape is <isosurface>)");
-  CHECK(errors[7].find("test.pov:9:1: error: 'superellipsoid' exponents outside 0.01 to 10") == 0);
-  CHECK(errors[8] ==
-        "test.pov:10:16: error: a height field from 'gif' is not supported by Lucent (it reads "
+  CHECK(errors[6].find("test.pov:8:1: error: 'superellipsoid' exponents outside 0.01 to 10") == 0);
+  CHECK(errors[7] ==
+        "test.pov:9:16: error: a height field from 'gif' is not supported by Lucent (it reads "
         "png, pgm, ppm, tga, jpeg and tiff images as height fields)");
 }
 
@@ -467,4 +468,102 @@ TEST_CASE("scene shapes: bad input, located", "[sdl][scene][shapes][errors]") {
     REQUIRE(errors.size() == 1);
     CHECK(errors[0].substr(0, std::string(c.error).size()) == c.error);
   }
+}
+
+TEST_CASE("scene shapes: polygon, 2-D points at z = 0, closed as POV-Ray closes it",
+          "[sdl][scene][shapes]") {
+  auto r = readScene(R"(
+polygon { 5, <0, 0>, <1, 0, 0>, <1, 1, 2>, <0, 1, 2>, <0, 0, 0> }
+polygon { 3, <0, 0>, <1, 0>, <0, 1>, }
+#declare P = polygon { 4, <0, 0>, <2, 0>, <0, 2>, <0, 0> }
+object { P translate x }
+)");
+  REQUIRE(r->load.scene);
+  const auto& a = shapeOf<PolygonSpec>(*r->load.scene, 0);
+  REQUIRE(a.points.size() == 5);
+  checkVec(a.points[2], Vec3(1, 1, -2));  // z negated
+  checkVec(a.points[4], Vec3(0, 0, 0));
+  const auto& b = shapeOf<PolygonSpec>(*r->load.scene, 1);
+  REQUIRE(b.points.size() == 3);  // closed when built
+  CHECK(shapeOf<PolygonSpec>(*r->load.scene, 2).points.size() == 4);
+  const auto warnings = warningsOf(*r);
+  REQUIRE(warnings.size() == 1);
+  CHECK(warnings[0].find("test.pov:3:1: warning: the polygon's last outline is not closed") == 0);
+}
+
+TEST_CASE("scene shapes: a polygon POV-Ray ignores is left out, with a warning",
+          "[sdl][scene][shapes]") {
+  auto r = readScene(R"(
+polygon { 5, <0, 0, 0>, <1, 0, 0>, <1, 1, 0>, <0, 1, 0.001>, <0, 0, 0> }
+polygon { 4, <0, 0>, <1, 1>, <2, 2>, <0, 0> }
+sphere { 0, 1 }
+)");
+  REQUIRE(r->load.scene);
+  REQUIRE(r->load.scene->root->children.size() == 3);
+  for (size_t i = 0; i < 2; ++i) {
+    const Node& n = topNode(*r->load.scene, i);
+    CHECK(n.kind == NodeKind::Group);
+    CHECK(n.children.empty());
+  }
+  const auto warnings = warningsOf(*r);
+  REQUIRE(warnings.size() == 2);
+  CHECK(warnings[0].find("test.pov:2:1: warning: the polygon is left out, as POV-Ray ignores "
+                         "it: the points do not lie in one plane (point 4") == 0);
+  CHECK(warnings[1].find("test.pov:3:1: warning: the polygon is left out, as POV-Ray ignores "
+                         "it: the points lie on one line") == 0);
+}
+
+TEST_CASE("scene shapes: bicubic_patch, keywords and POV-Ray 1.5's numbers",
+          "[sdl][scene][shapes]") {
+  auto r = readScene(R"(
+#declare Row = 0;
+bicubic_patch { type 1 flatness 0.01 u_steps 4 v_steps 3 accuracy 0.001,
+  <0, 0, 2>, <1, 0, 0>, <2, 0, 0>, <3, 0, -2>, <0, 1, 0>, <1, 1, 0>, <2, 1, 0>, <3, 1, 0>,
+  <0, 2, 0>, <1, 2, 0>, <2, 2, 0>, <3, 2, 0>, <0, 3, 2>, <1, 3, 0>, <2, 3, 0>, <3, 3, -2> }
+bicubic_patch { 0, 2, 5
+  0 x 2*x 3*x y x+y 2*x+y 3*x+y 2*y x+2*y 2*x+2*y 3*x+2*y 3*y x+3*y 2*x+3*y 3*x+3*y }
+bicubic_patch { 3, 0.5, 1, 1
+  0 x 2*x 3*x y x+y 2*x+y 3*x+y 2*y x+2*y 2*x+2*y 3*x+2*y 3*y x+3*y 2*x+3*y 3*x+3*y }
+)");
+  REQUIRE(r->load.scene);
+  const auto& a = shapeOf<BicubicPatchSpec>(*r->load.scene, 0);
+  CHECK(a.type == 1);
+  CHECK(a.flatness == 0.01);
+  CHECK(a.uSteps == 4);
+  CHECK(a.vSteps == 3);
+  CHECK(a.flatnessInWorld);
+  checkVec(a.points[0], Vec3(0, 0, -2));
+  checkVec(a.points[15], Vec3(3, 3, 2));
+  const auto& b = shapeOf<BicubicPatchSpec>(*r->load.scene, 1);
+  CHECK(b.type == 0);
+  CHECK(b.flatness == 0.1);  // the old syntax's flatness for types 0 and 1
+  CHECK(b.uSteps == 2);
+  CHECK(b.vSteps == 5);
+  checkVec(b.points[6], Vec3(2, 1, 0));
+  const auto& c = shapeOf<BicubicPatchSpec>(*r->load.scene, 2);
+  CHECK(c.type == 1);  // type 3 is type 1, with POV-Ray's warning
+  CHECK(c.flatness == 0.5);
+  const auto warnings = warningsOf(*r);
+  REQUIRE(warnings.size() == 1);
+  CHECK(warnings[0].find("test.pov:8:1: warning: bicubic_patch type 3 is type 1") == 0);
+}
+
+TEST_CASE("scene shapes: bad polygons and bicubic patches", "[sdl][scene][shapes][errors]") {
+  CHECK(errorsOf("polygon { 2, <0, 0>, <1, 0> }") ==
+        std::vector<std::string>{
+            "test.pov:1:11: error: a polygon needs at least three points, not 2"});
+  CHECK(errorsOf("bicubic_patch { type 1 u_steps 11 <0,0,0> }") ==
+        std::vector<std::string>{"test.pov:1:32: error: the u_steps must be from 0 to 10"});
+  CHECK(
+      errorsOf("bicubic_patch { u_steps 2 v_steps 2 0 x 2*x 3*x y x+y 2*x+y 3*x+y 2*y x+2*y "
+               "2*x+2*y 3*x+2*y 3*y x+3*y 2*x+3*y 3*x+3*y }") ==
+      std::vector<std::string>{"test.pov:1:1: error: the bicubic_patch has no type (type 0 or 1)"});
+  const auto fifteen = errorsOf(
+      "bicubic_patch { type 0 0 x 2*x 3*x y x+y 2*x+y 3*x+y 2*y x+2*y 2*x+2*y 3*x+2*y 3*y x+3*y "
+      "2*x+3*y }");
+  REQUIRE(fifteen.size() == 1);
+  CHECK(fifteen[0].find("test.pov:1:") == 0);
+  const auto uv = errorsOf("bicubic_patch { type 0 uv_vectors <0,0>,<1,0>,<1,1>,<0,1> 0 }");
+  REQUIRE(uv.size() == 1);
+  CHECK(uv[0].find("test.pov:1:24: error: 'uv_vectors' of a bicubic_patch is not supported") == 0);
 }
