@@ -369,6 +369,9 @@ void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, con
       [&](const BrickTexture& brick) {
         writeBrickPigment(brick, s.pigmentScale, s.filter, s.transmit, out);
       },
+      [&](const AverageTexture& average) {
+        writeAveragePigment(average, s.pigmentScale, s.filter, s.transmit, out);
+      },
   };
   if (s.useTexture) std::visit(pigment, m.texture);
   else plain();
