@@ -229,7 +229,7 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
           "[sdl][scene][texture][errors]") {
   const auto errors = errorsOf(
       "sphere { 0, 1 pigment { cells } }\n"
-      "sphere { 0, 1 pigment { bozo pigment_map { [0 rgb 1] } } }\n"
+      "sphere { 0, 1 pigment { checker pigment_map { [0 rgb 1] } } }\n"
       "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }\n"
       "sphere { 0, 1 pigment { image_map { png \"x.png\" } } }\n"
       "sphere { 0, 1 normal { checker } }\n"
@@ -239,8 +239,8 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
                         "Lucent does not have; its patterns are gradient, onion",
                         0) == 0);
   CHECK(errors[1] ==
-        "test.pov:2:30: error: 'pigment_map' is not supported by Lucent (maps of pigments; "
-        "Lucent's colour maps hold colours)");
+        "test.pov:2:33: error: 'pigment_map' on a block pattern is not supported by Lucent (give "
+        "it a list of pigments: checker pigment {..} pigment {..})");
   CHECK(errors[2] ==
         "test.pov:3:45: error: layered textures are not supported by Lucent (one texture per "
         "material; a second texture { } is a layer over the first)");
