@@ -39,8 +39,8 @@ struct CheckerTexture {
   double scale = 1.0;
   PatternPlacement placement;
   FilterTransmit ft1{}, ft2{};  // color1's and color2's
-  // POV-Ray's `checker pigment {..} pigment {..}`: two whole textures instead of the two
-  // colours (empty: the colours), each evaluated at the checker's pattern-space point.
+  // POV-Ray's `checker pigment {..} pigment {..}`: two textures instead of the colours
+  // (empty: the colours), each evaluated at the checker's pattern point divided by scale.
   std::vector<TextureMapEntry> pigments{};
 };
 
