@@ -159,3 +159,20 @@ sphere { 0, 1
   CHECK(m.normal->average[1].weight == 3.0);
   CHECK(m.normal->average[1].normal.depth == 5.0);
 }
+
+TEST_CASE("scene reader maps: number_of_waves other than 10 is said not imported",
+          "[sdl][scene][settings]") {
+  // Lucent's ripples and waves (in averages too) have POV-Ray's default 10 sources.
+  auto count = [](const std::string& text) {
+    auto r = readScene(text);
+    REQUIRE(r->load.scene);
+    size_t said = 0;
+    for (const std::string& w : r->out.warnings)
+      said += w ==
+              "test.pov:1:19: warning: number_of_waves is not imported (Lucent's ripples and "
+              "waves use POV-Ray's default 10 sources)";
+    return said;
+  };
+  CHECK(count("global_settings { number_of_waves 1 }\nsphere { 0, 1 normal { waves } }\n") == 1);
+  CHECK(count("global_settings { number_of_waves 10 }\nsphere { 0, 1 normal { waves } }\n") == 0);
+}
