@@ -7,6 +7,7 @@
 
 #include "expression.h"
 #include "povray_names.h"
+#include "texture_map_parser.h"
 
 #include <cmath>
 
@@ -243,19 +244,49 @@ Texture parsePatternTexture(ElementReader& r) {
   std::optional<SourceLoc> mapLoc;
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader c(r.ctx(), r.file(), n);
-    if (std::string_view(n.name()) != "color-map") {
+    const std::string_view name = n.name();
+    if (name != "color-map" && name != "pigment-map") {
       std::string pov = povrayElementHint("pattern", n.name());
-      c.error("<pattern> may hold one <color-map>, not <" + std::string(n.name()) + ">" + pov);
+      c.error("<pattern> may hold one <color-map> or <pigment-map>, not <" + std::string(name) +
+              ">" + pov);
       return;
     }
     if (mapLoc) {
-      c.error("<pattern> holds one <color-map> at most; the first is at " + mapLoc->str());
+      c.error("<pattern> holds one <color-map> or <pigment-map> at most; the first is at " +
+              mapLoc->str());
       return;
     }
     mapLoc = c.loc();
-    t.map = parseColorMap(c);
+    if (name == "color-map") t.map = parseColorMap(c);
+    else t.pigments = parsePigmentMap(c);
   });
   return t;
+}
+
+// A block pattern's children: at most one <pigment-list> of `count` entries, which stand
+// for its colours (whose attributes it then does not take).
+std::vector<TextureMapEntry> parseBlockPigments(ElementReader& r, size_t count,
+                                                const std::vector<std::string_view>& colours) {
+  std::vector<TextureMapEntry> pigments;
+  std::optional<SourceLoc> listLoc;
+  r.forEachChild([&](pugi::xml_node n) {
+    ElementReader c(r.ctx(), r.file(), n);
+    if (std::string_view(n.name()) != "pigment-list") {
+      c.error(r.tag() + " may hold one <pigment-list>, not <" + std::string(n.name()) + ">");
+      return;
+    }
+    if (listLoc) {
+      c.error(r.tag() + " holds one <pigment-list> at most; the first is at " + listLoc->str());
+      return;
+    }
+    listLoc = c.loc();
+    pigments = parsePigmentList(c, count);
+    for (std::string_view a : colours)
+      if (r.has(std::string(a).c_str()))
+        r.attrError(std::string(a).c_str(),
+                    "a " + r.tag() + " with a <pigment-list> takes its colours from the list");
+  });
+  return pigments;
 }
 
 Texture parseHexagonTexture(ElementReader& r) {
@@ -268,7 +299,9 @@ Texture parseHexagonTexture(ElementReader& r) {
   t.spec.colors[1] = r.color("color2", t.spec.colors[1]);
   t.spec.colors[2] = r.color("color3", t.spec.colors[2]);
   for (int i = 0; i < 3; ++i) t.spec.ft[i] = parseFilterTransmit(r, std::to_string(i + 1));
-  noChildren(r);
+  t.pigments = parseBlockPigments(r, 3,
+                                  {"color1", "color2", "color3", "filter1", "filter2", "filter3",
+                                   "transmit1", "transmit2", "transmit3"});
   return t;
 }
 
@@ -287,7 +320,8 @@ Texture parseBrickTexture(ElementReader& r) {
   if (size.x <= 0 || size.y <= 0 || size.z <= 0)
     r.attrError("size", "the brick's size must be positive in x, y and z");
   else t.spec.size = size;
-  noChildren(r);
+  t.pigments = parseBlockPigments(
+      r, 2, {"color1", "color2", "filter1", "filter2", "transmit1", "transmit2"});
   return t;
 }
 
@@ -295,8 +329,26 @@ NormalSpec parseNormal(ElementReader& r) {
   r.checkAttributes(
       joined(joined(kValueAttributes, kPlacementAttributes), {"depth", "keep-facing-away"}));
   NormalSpec n;
+  if (r.verbatim("type") == "average") {
+    // The weighted mean of its entries' normals, placed by the placement attributes.
+    r.checkAttributes(joined(kPlacementAttributes, {"type", "keep-facing-away"}),
+                      [](std::string_view a) -> std::string {
+                        for (std::string_view v : kValueAttributes)
+                          if (a == v || a == "depth")
+                            return "an average <normal> takes only the placement attributes "
+                                   "and keep-facing-away (each entry's <normal> has its own " +
+                                   std::string(a) + ")";
+                        return "";
+                      });
+    n.pattern.placement = parsePlacement(r);
+    n.keepFacingAway = r.boolean("keep-facing-away", n.keepFacingAway);
+    n.average = parseNormalAverage(r);
+    return n;
+  }
   if (!r.has("type"))
-    r.error("<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles or a colour pattern)");
+    r.error(
+        "<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles, a colour pattern "
+        "or average)");
   else n.pattern.type = r.choice("type", PatternType::bumps, patternNames(false));
   parseValueAttributes(r, n.pattern);
   n.depth = r.number("depth", n.depth);

@@ -26,6 +26,10 @@ PatternPlacement parsePlacement(ElementReader& r);
 FilterTransmit parseFilterTransmit(ElementReader& r, const std::string& n);
 
 const std::vector<std::string_view>& placementAttributes();
+// A block pattern's (checker, hexagon, brick) optional <pigment-list> child of `count`
+// entries; an element with one must not have the attributes `colours` too.
+std::vector<TextureMapEntry> parseBlockPigments(ElementReader& r, size_t count,
+                                                const std::vector<std::string_view>& colours);
 // <bump-map src depth>: src is resolved by the file-access rules, as <image>'s.
 BumpMapSpec parseBumpMap(ElementReader& r);
 

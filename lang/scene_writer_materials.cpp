@@ -7,6 +7,7 @@
 
 #include "scenegraph/finish_terms.h"
 
+#include <algorithm>
 #include <variant>
 
 namespace lucent {
@@ -86,6 +87,67 @@ void addFilterTransmit(const FilterTransmit& ft, const std::string& n, Attribute
   if (ft.transmit != 0.0f) a.emplace_back("transmit" + n, xmlNumber(ft.transmit));
 }
 
+// <list><entry [value="..."] color/> or <entry>TEXTURE</entry>...</list>: a map's or a
+// list's entries (valueAttr "at", "weight", or "" for a block pattern's list).
+void writeEntries(const std::string& list, const std::vector<TextureMapEntry>& entries,
+                  const std::string& valueAttr, const SourceLoc& loc, XmlOut& out,
+                  const std::string& folder) {
+  if (!list.empty()) out.open(list, {}, false);
+  for (const TextureMapEntry& e : entries) {
+    Attributes a;
+    if (!valueAttr.empty()) a.emplace_back(valueAttr, xmlNumber(e.at));
+    if (std::holds_alternative<std::monostate>(e.texture)) {
+      a.emplace_back("color", xmlColor(e.color.rgb));
+      addFilterTransmit(e.color.ft, "", a);
+      out.open("entry", a, true);
+      continue;
+    }
+    out.open("entry", a, false);
+    writeTexture(e.texture, loc, out, folder);
+    out.close("entry");
+  }
+  if (!list.empty()) out.close(list);
+}
+
+// A block pattern's element: empty with its colours, or with a <pigment-list> child and
+// without the colour attributes (colorN, filterN, transmitN).
+void writeBlock(const std::string& element, Attributes a,
+                const std::vector<TextureMapEntry>& pigments, const SourceLoc& loc, XmlOut& out,
+                const std::string& folder) {
+  if (pigments.empty()) return out.open(element, a, true);
+  a.erase(std::remove_if(a.begin(), a.end(),
+                         [](const auto& kv) {
+                           const std::string& k = kv.first;
+                           return k.rfind("color", 0) == 0 || k.rfind("filter", 0) == 0 ||
+                                  k.rfind("transmit", 0) == 0;
+                         }),
+          a.end());
+  out.open(element, a, false);
+  writeEntries("pigment-list", pigments, "", loc, out, folder);
+  out.close(element);
+}
+
+// <normal>: a pattern's, or an average of normals with its <entry weight> children.
+void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
+  if (!n.average.empty()) {
+    Attributes a{{"type", "average"}};
+    addPlacement(n.pattern.placement, a);
+    if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
+    out.open("normal", a, false);
+    for (const WeightedNormal& e : n.average) {
+      out.open("entry", {{"weight", xmlNumber(e.weight)}}, false);
+      writeNormal(e.normal, loc, out);
+      out.close("entry");
+    }
+    out.close("normal");
+    return;
+  }
+  Attributes a = patternAttributes(n.pattern, loc);
+  a.emplace_back("depth", xmlNumber(n.depth));
+  if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
+  out.open("normal", a, true);
+}
+
 }  // namespace
 
 void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
@@ -102,21 +164,24 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
           addFilterTransmit(t.ft1, "1", a);
           addFilterTransmit(t.ft2, "2", a);
           addPlacement(t.placement, a);
-          out.open(std::string(T::kind.element), a, true);
+          writeBlock(std::string(T::kind.element), a, t.pigments, loc, out, folder);
         } else if constexpr (std::is_same_v<T, ImageTexture>) {
           out.open(std::string(T::kind.element),
                    {{"src", fileReference(t.path, folder)},
                     {"scale", xmlNumber(t.scale.x) + " " + xmlNumber(t.scale.y)}},
                    true);
         } else if constexpr (std::is_same_v<T, PatternTexture>) {
-          writePatternTexture(t, loc, out);
+          if (t.pigments.empty()) return writePatternTexture(t, loc, out);
+          out.open("pattern", patternAttributes(t.pattern, loc), false);
+          writeEntries("pigment-map", t.pigments, "at", loc, out, folder);
+          out.close("pattern");
         } else if constexpr (std::is_same_v<T, HexagonTexture>) {
           Attributes a{{"color1", xmlColor(t.spec.colors[0])},
                        {"color2", xmlColor(t.spec.colors[1])},
                        {"color3", xmlColor(t.spec.colors[2])}};
           for (int i = 0; i < 3; ++i) addFilterTransmit(t.spec.ft[i], std::to_string(i + 1), a);
           addPlacement(t.placement, a);
-          out.open(std::string(T::kind.element), a, true);
+          writeBlock(std::string(T::kind.element), a, t.pigments, loc, out, folder);
         } else if constexpr (std::is_same_v<T, BrickTexture>) {
           Attributes a{{"color1", xmlColor(t.spec.color1)},
                        {"color2", xmlColor(t.spec.color2)},
@@ -125,7 +190,13 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
           addFilterTransmit(t.spec.ft1, "1", a);
           addFilterTransmit(t.spec.ft2, "2", a);
           addPlacement(t.placement, a);
-          out.open(std::string(T::kind.element), a, true);
+          writeBlock(std::string(T::kind.element), a, t.pigments, loc, out, folder);
+        } else if constexpr (std::is_same_v<T, AverageTexture>) {
+          Attributes a;
+          addPlacement(t.placement, a);
+          out.open(std::string(T::kind.element), a, false);
+          writeEntries("", t.entries, "weight", loc, out, folder);
+          out.close(std::string(T::kind.element));
         } else {
           // A kind added to Texture without its writer here is an error at the material
           // until it has one, never a material written without its texture.
@@ -196,12 +267,7 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
     return;
   }
   writeTexture(m.texture, m.loc, out, folder);
-  if (m.normal) {
-    Attributes a = patternAttributes(m.normal->pattern, m.loc);
-    a.emplace_back("depth", xmlNumber(m.normal->depth));
-    if (m.normal->keepFacingAway) a.emplace_back("keep-facing-away", "true");
-    out.open("normal", a, true);
-  }
+  if (m.normal) writeNormal(*m.normal, m.loc, out);
   if (m.bumpMap)
     out.open(
         "bump-map",

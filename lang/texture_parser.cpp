@@ -4,6 +4,7 @@
 #include "texture_parser.h"
 
 #include "pattern_parser.h"
+#include "texture_map_parser.h"
 
 namespace lucent {
 
@@ -21,10 +22,8 @@ Texture readTexture(ElementReader& t, const CheckerTexture*) {
   c.ft1 = parseFilterTransmit(t, "1");
   c.ft2 = parseFilterTransmit(t, "2");
   c.scale = t.number("scale", c.scale, NumberRule::positive());
-  t.forEachChild([&](pugi::xml_node n) {
-    ElementReader(t.ctx(), t.file(), n)
-        .error("<checker> takes no child elements, got <" + std::string(n.name()) + ">");
-  });
+  c.pigments = parseBlockPigments(
+      t, 2, {"color1", "color2", "filter1", "filter2", "transmit1", "transmit2"});
   return c;
 }
 
@@ -62,6 +61,7 @@ Texture readTexture(ElementReader& t, const ImageTexture*) {
 Texture readTexture(ElementReader& t, const PatternTexture*) { return parsePatternTexture(t); }
 Texture readTexture(ElementReader& t, const HexagonTexture*) { return parseHexagonTexture(t); }
 Texture readTexture(ElementReader& t, const BrickTexture*) { return parseBrickTexture(t); }
+Texture readTexture(ElementReader& t, const AverageTexture*) { return parseAverageTexture(t); }
 
 // The reader of the kind whose element this is: a kind without a readTexture overload does
 // not compile.

@@ -116,6 +116,7 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
               [&](const CheckerTexture& t) { writeCheckerPigment(t, Vec3(1.0), 0.0, 0.0, out); },
               [&](const HexagonTexture& t) { writeHexagonPigment(t, Vec3(1.0), 0.0, 0.0, out); },
               [&](const BrickTexture& t) { writeBrickPigment(t, Vec3(1.0), 0.0, 0.0, out); },
+              [&](const AverageTexture& t) { writeAveragePigment(t, Vec3(1.0), 0.0, 0.0, out); },
               [](const auto&) {}},  // the parser takes no other layer
           layer);
     }

@@ -529,6 +529,9 @@ void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const Imag
       [&](const BrickTexture& brick) {
         writeBrickPigment(brick, s.pigmentScale, s.filter, s.transmit, out);
       },
+      [&](const AverageTexture& average) {
+        writeAveragePigment(average, s.pigmentScale, s.filter, s.transmit, out);
+      },
   };
   if (s.useTexture) std::visit(pigment, m.texture);
   else plain();

@@ -1,5 +1,10 @@
 #include "pov_patterns.h"
 
+#include "scenegraph/overloaded.h"
+
+#include <stdexcept>
+#include <variant>
+
 namespace lucent {
 
 namespace {
@@ -81,33 +86,73 @@ std::string colour(const Color& c, const FilterTransmit& ft, const Vec3& scale, 
   return povRgbft(scale * Vec3(c.r, c.g, c.b), filter + ft.filter, transmit + ft.transmit);
 }
 
-}  // namespace
+// Each pigment's body (what `pigment { }` holds, and what a pigment_map's entry holds
+// after its value), then the pigments as blocks.
+void writeBody(const Texture& t, const Vec3& scale, double filter, double transmit, PovWriter& out);
 
-void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filter, double transmit,
-                         PovWriter& out) {
-  out.open("pigment");
-  out.line(patternKeyword(t.pattern));
-  out.open("color_map");
-  if (t.map.entries.empty()) {
-    out.line("[0 " + colour(Color(0.0f), {}, scale, filter, transmit) + "]");
-    out.line("[1 " + colour(Color(1.0f), {}, scale, filter, transmit) + "]");
-  } else {
-    for (const ColorMapEntry& e : t.map.entries)
-      out.line("[" + povNumber(e.at) + " " + colour(e.color, e.ft, scale, filter, transmit) + "]");
+// A map's or a list's entry: its plain colour, or its texture's body.
+void writeEntryBody(const TextureMapEntry& e, const Vec3& scale, double filter, double transmit,
+                    PovWriter& out) {
+  if (std::holds_alternative<std::monostate>(e.texture))
+    out.line(colour(e.color.rgb, e.color.ft, scale, filter, transmit));
+  else writeBody(e.texture, scale, filter, transmit, out);
+}
+
+// `pigment_map { [at BODY] ... }`: the material's colour scale, filter and transmit go
+// into each entry (the blend is linear in them, so this is the same as applying them to
+// the blended colour).
+void writePigmentMap(const std::vector<TextureMapEntry>& entries, const Vec3& scale, double filter,
+                     double transmit, PovWriter& out) {
+  out.open("pigment_map");
+  for (const TextureMapEntry& e : entries) {
+    out.line("[" + povNumber(e.at));
+    writeEntryBody(e, scale, filter, transmit, out);
+    out.line("]");
   }
-  out.close();
-  writeValueModifiers(t.pattern, out);
-  writePlacement(t.pattern.placement, out);
   out.close();
 }
 
-void writeCheckerPigment(const CheckerTexture& checker, const Vec3& scale, double filter,
-                         double transmit, PovWriter& out) {
+// A block pattern's list: `pigment { BODY }` for each.
+void writePigmentList(const std::vector<TextureMapEntry>& entries, const Vec3& scale, double filter,
+                      double transmit, PovWriter& out) {
+  for (const TextureMapEntry& e : entries) {
+    out.open("pigment");
+    writeEntryBody(e, scale, filter, transmit, out);
+    out.close();
+  }
+}
+
+void writePatternBody(const PatternTexture& t, const Vec3& scale, double filter, double transmit,
+                      PovWriter& out) {
+  out.line(patternKeyword(t.pattern));
+  if (!t.pigments.empty()) {
+    writePigmentMap(t.pigments, scale, filter, transmit, out);
+  } else {
+    out.open("color_map");
+    if (t.map.entries.empty()) {
+      out.line("[0 " + colour(Color(0.0f), {}, scale, filter, transmit) + "]");
+      out.line("[1 " + colour(Color(1.0f), {}, scale, filter, transmit) + "]");
+    } else {
+      for (const ColorMapEntry& e : t.map.entries)
+        out.line("[" + povNumber(e.at) + " " + colour(e.color, e.ft, scale, filter, transmit) +
+                 "]");
+    }
+    out.close();
+  }
+  writeValueModifiers(t.pattern, out);
+  writePlacement(t.pattern.placement, out);
+}
+
+void writeCheckerBody(const CheckerTexture& checker, const Vec3& scale, double filter,
+                      double transmit, PovWriter& out) {
   // Cells of edge `scale`; the cell [0, scale)^3 has the first colour, as in Lucent.
-  out.open("pigment");
   out.line(std::string(CheckerTexture::kind.pov));
-  out.line(colour(checker.color1, checker.ft1, scale, filter, transmit) + ",");
-  out.line(colour(checker.color2, checker.ft2, scale, filter, transmit));
+  if (!checker.pigments.empty()) {
+    writePigmentList(checker.pigments, scale, filter, transmit, out);
+  } else {
+    out.line(colour(checker.color1, checker.ft1, scale, filter, transmit) + ",");
+    out.line(colour(checker.color2, checker.ft2, scale, filter, transmit));
+  }
   // The cells scale in pattern space, which the placement then carries onto the shape.
   const PatternPlacement& p = checker.placement;
   if (checker.scale != 1.0 && p.turbulence != Vec3(0.0)) {
@@ -123,32 +168,114 @@ void writeCheckerPigment(const CheckerTexture& checker, const Vec3& scale, doubl
     if (checker.scale != 1.0) out.line("scale " + povNumber(checker.scale));
     writePlacement(p, out);
   }
+}
+
+void writeHexagonBody(const HexagonTexture& t, const Vec3& scale, double filter, double transmit,
+                      PovWriter& out) {
+  out.line(std::string(HexagonTexture::kind.pov));
+  if (!t.pigments.empty()) {
+    writePigmentList(t.pigments, scale, filter, transmit, out);
+  } else {
+    for (int i = 0; i < 3; ++i)
+      out.line(colour(t.spec.colors[i], t.spec.ft[i], scale, filter, transmit) +
+               (i < 2 ? "," : ""));
+  }
+  writePlacement(t.placement, out);
+}
+
+void writeBrickBody(const BrickTexture& t, const Vec3& scale, double filter, double transmit,
+                    PovWriter& out) {
+  out.line(std::string(BrickTexture::kind.pov));
+  if (!t.pigments.empty()) {
+    writePigmentList(t.pigments, scale, filter, transmit, out);
+  } else {
+    out.line(colour(t.spec.color1, t.spec.ft1, scale, filter, transmit) + ",");
+    out.line(colour(t.spec.color2, t.spec.ft2, scale, filter, transmit));
+  }
+  out.line("brick_size " + povVector(t.spec.size) + " mortar " + povNumber(t.spec.mortar));
+  writePlacement(t.placement, out);
+}
+
+// `average pigment_map { [weight BODY] ... }` (the weights are the entries' `at`).
+void writeAverageBody(const AverageTexture& t, const Vec3& scale, double filter, double transmit,
+                      PovWriter& out) {
+  out.line(std::string(AverageTexture::kind.pov));
+  writePigmentMap(t.entries, scale, filter, transmit, out);
+  writePlacement(t.placement, out);
+}
+
+void writeBody(const Texture& t, const Vec3& scale, double filter, double transmit,
+               PovWriter& out) {
+  std::visit(
+      Overloaded{
+          [&](std::monostate) { out.line(colour(Color(1.0f), {}, scale, filter, transmit)); },
+          [&](const ImageTexture&) {
+            // The parsers refuse an image inside a map or a list.
+            throw std::logic_error("an image texture inside a map of pigments");
+          },
+          [&](const CheckerTexture& c) { writeCheckerBody(c, scale, filter, transmit, out); },
+          [&](const PatternTexture& c) { writePatternBody(c, scale, filter, transmit, out); },
+          [&](const HexagonTexture& c) { writeHexagonBody(c, scale, filter, transmit, out); },
+          [&](const BrickTexture& c) { writeBrickBody(c, scale, filter, transmit, out); },
+          [&](const AverageTexture& c) { writeAverageBody(c, scale, filter, transmit, out); },
+      },
+      t);
+}
+
+}  // namespace
+
+void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filter, double transmit,
+                         PovWriter& out) {
+  out.open("pigment");
+  writePatternBody(t, scale, filter, transmit, out);
+  out.close();
+}
+
+void writeCheckerPigment(const CheckerTexture& t, const Vec3& scale, double filter, double transmit,
+                         PovWriter& out) {
+  out.open("pigment");
+  writeCheckerBody(t, scale, filter, transmit, out);
   out.close();
 }
 
 void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filter, double transmit,
                          PovWriter& out) {
   out.open("pigment");
-  out.line(std::string(HexagonTexture::kind.pov));
-  for (int i = 0; i < 3; ++i)
-    out.line(colour(t.spec.colors[i], t.spec.ft[i], scale, filter, transmit) + (i < 2 ? "," : ""));
-  writePlacement(t.placement, out);
+  writeHexagonBody(t, scale, filter, transmit, out);
   out.close();
 }
 
 void writeBrickPigment(const BrickTexture& t, const Vec3& scale, double filter, double transmit,
                        PovWriter& out) {
   out.open("pigment");
-  out.line(std::string(BrickTexture::kind.pov));
-  out.line(colour(t.spec.color1, t.spec.ft1, scale, filter, transmit) + ",");
-  out.line(colour(t.spec.color2, t.spec.ft2, scale, filter, transmit));
-  out.line("brick_size " + povVector(t.spec.size) + " mortar " + povNumber(t.spec.mortar));
-  writePlacement(t.placement, out);
+  writeBrickBody(t, scale, filter, transmit, out);
   out.close();
 }
 
-void writeNormal(const NormalSpec& n, PovWriter& out) {
-  out.open("normal");
+void writeAveragePigment(const AverageTexture& t, const Vec3& scale, double filter, double transmit,
+                         PovWriter& out) {
+  out.open("pigment");
+  writeAverageBody(t, scale, filter, transmit, out);
+  out.close();
+}
+
+namespace {
+
+// What `normal { }` holds (and a normal_map's entry after its weight).
+void writeNormalBody(const NormalSpec& n, PovWriter& out) {
+  if (!n.average.empty()) {
+    // `average normal_map { [weight NORMAL_BODY] ... }`.
+    out.line("average");
+    out.open("normal_map");
+    for (const WeightedNormal& e : n.average) {
+      out.line("[" + povNumber(e.weight));
+      writeNormalBody(e.normal, out);
+      out.line("]");
+    }
+    out.close();
+    writePlacement(n.pattern.placement, out);
+    return;
+  }
   std::string keyword = patternKeyword(n.pattern);
   const std::string agate = " agate_turb 1";
   if (keyword.size() > agate.size() &&
@@ -159,6 +286,13 @@ void writeNormal(const NormalSpec& n, PovWriter& out) {
   out.line("accuracy 0.02");
   writeValueModifiers(n.pattern, out);
   writePlacement(n.pattern.placement, out);
+}
+
+}  // namespace
+
+void writeNormal(const NormalSpec& n, PovWriter& out) {
+  out.open("normal");
+  writeNormalBody(n, out);
   out.close();
 }
 

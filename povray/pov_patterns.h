@@ -19,6 +19,10 @@ void writeCheckerPigment(const CheckerTexture& t, const Vec3& scale, double filt
                          PovWriter& out);
 void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filter, double transmit,
                          PovWriter& out);
+// `average pigment_map { [weight P] ... }`; maps and lists of pigments are written by
+// each kind's writer (pigment_map, `checker pigment {..} pigment {..}`).
+void writeAveragePigment(const AverageTexture& t, const Vec3& scale, double filter, double transmit,
+                         PovWriter& out);
 void writeBrickPigment(const BrickTexture& t, const Vec3& scale, double filter, double transmit,
                        PovWriter& out);
 // `normal { PATTERN depth ... }`.

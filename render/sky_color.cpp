@@ -14,7 +14,7 @@ Color skyColor(const Sky& sky, const Vec3& direction, const Color& background) {
   // One opaque pattern (every sky written before layers existed): its colour, as it was.
   if (sky.layers.size() == 1) {
     if (const auto* pattern = std::get_if<PatternTexture>(&sky.layers[0]);
-        pattern && !pattern->map.seeThrough())
+        pattern && pattern->pigments.empty() && !pattern->map.seeThrough())
       return lookupColorMap(pattern->map, patternValue(pattern->pattern, p));
   }
   if (sky.layering == SkyLayering::pov36) {

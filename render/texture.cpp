@@ -137,12 +137,13 @@ namespace {
 
 // The world error bound of the hit point carried back into object space (|M^-1| applied
 // to it).
-Vec3 objectError(const SurfaceInfo& surface, const Instance& leaf) {
-  const Mat4& m = leaf.transform().objectFromWorld();
-  Vec3 err(0.0);
+
+// An error bound carried through a linear map: |m| applied to it.
+Vec3 errorThrough(const Mat4& m, const Vec3& err) {
+  Vec3 out(0.0);
   for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) err[r] += std::abs(m[c][r]) * surface.pError[c];
-  return err;
+    for (int c = 0; c < 3; ++c) out[r] += std::abs(m[c][r]) * err[c];
+  return out;
 }
 
 // The checker's cell (0: color1's) at an object point with its error bound.
@@ -152,48 +153,102 @@ int checkerCell(const CheckerTexture& checker, const Vec3& pObject, const Vec3& 
     return checkerIndex(checker, pObject, err);
   // Placed: the point and its error bound carried into pattern space (turbulence moves
   // the point by a smooth displacement, which leaves the bound as it is).
-  const Mat4& p = place.patternFromObject;
-  Vec3 patternErr(0.0);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) patternErr[r] += std::abs(p[c][r]) * err[c];
-  return checkerIndex(checker, warpPoint(place, pObject), patternErr);
+  return checkerIndex(checker, warpPoint(place, pObject),
+                      errorThrough(place.patternFromObject, err));
 }
 
-// The colour, filter and transmit of each kind of texture at an object point.
+// The colour, filter and transmit of each kind of texture at an object point. A map or a
+// list of textures evaluates its entries at its own pattern-space point (POV-Ray hands
+// them the warped point), so their placements compose with it.
 struct PigmentAt {
   const Vec3& p;
   const Vec3& err;
+
+  // An entry of a map or a list at the pattern-space point q (error bound qErr).
+  static PigmentColor entry(const TextureMapEntry& e, const Vec3& q, const Vec3& qErr) {
+    if (std::holds_alternative<std::monostate>(e.texture)) return e.color;
+    return std::visit(PigmentAt{q, qErr}, e.texture);
+  }
+  PigmentColor inside(const std::vector<TextureMapEntry>& entries, size_t i,
+                      const PatternPlacement& place) const {
+    return entry(entries[i], warpPoint(place, p), errorThrough(place.patternFromObject, err));
+  }
 
   PigmentColor operator()(std::monostate) const { return {}; }
   PigmentColor operator()(const ImageTexture&) const {
     throw std::logic_error("an image texture has no colour at a point without (u,v)");
   }
   PigmentColor operator()(const CheckerTexture& checker) const {
-    return checkerCell(checker, p, err) == 0 ? PigmentColor{checker.color1, checker.ft1}
-                                             : PigmentColor{checker.color2, checker.ft2};
+    const int cell = checkerCell(checker, p, err);
+    if (!checker.pigments.empty()) {
+      // The cells' scale is POV-Ray's `scale` of the whole pigment: it scales the
+      // entries' point too.
+      const PatternPlacement& place = checker.placement;
+      return entry(checker.pigments[cell], warpPoint(place, p) / checker.scale,
+                   errorThrough(place.patternFromObject, err) / checker.scale);
+    }
+    return cell == 0 ? PigmentColor{checker.color1, checker.ft1}
+                     : PigmentColor{checker.color2, checker.ft2};
   }
   PigmentColor operator()(const PatternTexture& pattern) const {
-    return lookupColorMapFT(pattern.map, patternValue(pattern.pattern, p));
+    if (pattern.pigments.empty())
+      return lookupColorMapFT(pattern.map, patternValue(pattern.pattern, p));
+    // The pigment map: the entries around the value, each at the pattern's point.
+    const PatternSpec& spec = pattern.pattern;
+    const Vec3 q = warpPoint(spec.placement, p, turbulenceDisplaces(spec.type));
+    const Vec3 qErr = errorThrough(spec.placement.patternFromObject, err);
+    const std::vector<TextureMapEntry>& e = pattern.pigments;
+    const MapSpan s = mapSpanAt(e.data(), e.size(), patternValueAt(spec, q));
+    if (s.a == s.b) return entry(e[s.a], q, qErr);
+    return blendPigments(entry(e[s.a], q, qErr), entry(e[s.b], q, qErr), s.fraction);
   }
   PigmentColor operator()(const HexagonTexture& hexagon) const {
     const int i = hexagonIndex(warpPoint(hexagon.placement, p));
+    if (!hexagon.pigments.empty()) return inside(hexagon.pigments, i, hexagon.placement);
     return {hexagon.spec.colors[i], hexagon.spec.ft[i]};
   }
   PigmentColor operator()(const BrickTexture& brick) const {
     const BrickSpec& b = brick.spec;
-    return brickIndex(b, warpPoint(brick.placement, p)) == 0 ? PigmentColor{b.color1, b.ft1}
-                                                             : PigmentColor{b.color2, b.ft2};
+    const int i = brickIndex(b, warpPoint(brick.placement, p));
+    if (!brick.pigments.empty()) return inside(brick.pigments, i, brick.placement);
+    return i == 0 ? PigmentColor{b.color1, b.ft1} : PigmentColor{b.color2, b.ft2};
+  }
+  PigmentColor operator()(const AverageTexture& average) const {
+    // POV-Ray sums weight·colour in single precision and divides by the weights' sum.
+    const Vec3 q = warpPoint(average.placement, p);
+    const Vec3 qErr = errorThrough(average.placement.patternFromObject, err);
+    PigmentColor sum{Color(0.0f), {}};
+    float total = 0.0f;
+    for (const TextureMapEntry& e : average.entries) {
+      const float w = static_cast<float>(e.at);
+      const PigmentColor c = entry(e, q, qErr);
+      sum.rgb += w * c.rgb;
+      sum.ft.filter += w * c.ft.filter;
+      sum.ft.transmit += w * c.ft.transmit;
+      total += w;
+    }
+    return {sum.rgb / total, {sum.ft.filter / total, sum.ft.transmit / total}};
   }
 };
 
 // The colour of each kind of texture at a surface point: std::visit needs every kind.
+Vec3 objectError(const SurfaceInfo& surface, const Instance& leaf) {
+  return errorThrough(leaf.transform().objectFromWorld(), surface.pError);
+}
+
 struct TextureColour {
   const std::shared_ptr<const ImageMap>& map;
   const SurfaceInfo& surface;
   const Instance& leaf;
 
   Color operator()(std::monostate) const { return Color(1.0f); }
+  // A map or a list of textures: its entries' colours (their filter and transmit unused).
+  Color nested(const Texture& texture) const {
+    return pigmentAt(texture, surface.pObject, objectError(surface, leaf)).rgb;
+  }
+
   Color operator()(const CheckerTexture& checker) const {
+    if (!checker.pigments.empty()) return nested(checker);
     return checkerCell(checker, surface.pObject, objectError(surface, leaf)) == 0 ? checker.color1
                                                                                   : checker.color2;
   }
@@ -202,14 +257,18 @@ struct TextureColour {
     return map->lookup(surface.hasUV ? surface.uv : Vec2(0.0), image.scale);
   }
   Color operator()(const PatternTexture& pattern) const {
+    if (!pattern.pigments.empty()) return nested(pattern);
     return lookupColorMap(pattern.map, patternValue(pattern.pattern, surface.pObject));
   }
   Color operator()(const HexagonTexture& hexagon) const {
+    if (!hexagon.pigments.empty()) return nested(hexagon);
     return hexagonColor(hexagon.spec, warpPoint(hexagon.placement, surface.pObject));
   }
   Color operator()(const BrickTexture& brick) const {
+    if (!brick.pigments.empty()) return nested(brick);
     return brickColor(brick.spec, warpPoint(brick.placement, surface.pObject));
   }
+  Color operator()(const AverageTexture& average) const { return nested(average); }
 };
 
 }  // namespace

@@ -255,13 +255,24 @@ struct BrickSpec {
   Vec3 size{8.0, 3.0, 4.5};
 };
 
+struct WeightedNormal;  // below NormalSpec
+
 // A normal perturbation: POV-Ray's `normal { PATTERN depth }` (depth is its bump_size).
 struct NormalSpec {
   PatternSpec pattern;
   double depth = 0.5;
+  // POV-Ray's `normal { average normal_map { [w N] ... } }`: when not empty, the normal is
+  // the weighted mean of these normals (each bent at the point the pattern's placement
+  // gives, in its space), normalised; the pattern's type and values and depth are unused.
+  std::vector<WeightedNormal> average{};
   // Where the bent normal faces away from the viewer: false (Lucent's rule) shades with the
   // unperturbed normal there; true keeps the bent one, as POV-Ray does.
   bool keepFacingAway = false;
+};
+
+struct WeightedNormal {
+  double weight = 1.0;
+  NormalSpec normal;
 };
 
 }  // namespace lucent

@@ -22,6 +22,10 @@ struct TextureKindInfo {
   std::string_view doc;      // one line, for the schema
 };
 
+// An entry of a map or a list of whole textures (POV-Ray's pigment_map, a block pattern's
+// list of pigments, average's map), defined below Texture: a plain colour or a texture.
+struct TextureMapEntry;
+
 // <checker color1 color2 scale transform turbulence...>: a solid 3-D checker in pattern
 // space (the shape's object space carried by the placement, as <pattern>'s); the cube
 // [0, scale)^3 of pattern space has color1.
@@ -35,6 +39,9 @@ struct CheckerTexture {
   double scale = 1.0;
   PatternPlacement placement;
   FilterTransmit ft1{}, ft2{};  // color1's and color2's
+  // POV-Ray's `checker pigment {..} pigment {..}`: two textures instead of the colours
+  // (empty: the colours), each evaluated at the checker's pattern point divided by scale.
+  std::vector<TextureMapEntry> pigments{};
 };
 
 // <image src scale>: an image looked up with the shape's (u,v). The pixels are loaded by
@@ -56,6 +63,11 @@ struct PatternTexture {
       "colour map."};
   PatternSpec pattern;
   ColorMap map;
+  // POV-Ray's pigment_map: whole textures at pattern values, blended as a colour map's
+  // colours (filter and transmit too); used instead of `map` when not empty. Each is
+  // evaluated at the pattern's point (after its transform and turbulence), so its own
+  // placement composes with the pattern's.
+  std::vector<TextureMapEntry> pigments{};
 };
 
 // <hexagon> and <brick>: block patterns with colours of their own.
@@ -64,12 +76,26 @@ struct HexagonTexture {
       "hexagon", "hexagon", "POV-Ray's hexagon: three colours on hexagonal columns along y."};
   HexagonSpec spec;
   PatternPlacement placement;
+  std::vector<TextureMapEntry> pigments{};  // three textures instead of the colours (or none)
 };
 struct BrickTexture {
   static constexpr TextureKindInfo kind{"brick", "brick",
                                         "POV-Ray's brick: bricks of color2 in mortar of color1."};
   BrickSpec spec;
   PatternPlacement placement;
+  std::vector<TextureMapEntry> pigments{};  // mortar's and brick's textures (or none)
+};
+
+// <average>: POV-Ray's `average pigment_map { [w P] ... }`, the textures' colours (filter
+// and transmit too) weighted by w and divided by the sum of the weights, each evaluated at
+// the average's pattern-space point.
+struct AverageTexture {
+  static constexpr TextureKindInfo kind{
+      "average", "average",
+      "POV-Ray's average: the weighted mean of whole textures, each placed inside the average's "
+      "placement."};
+  PatternPlacement placement;
+  std::vector<TextureMapEntry> entries{};  // `at` is the weight
 };
 
 // A new kind: its struct above with its `kind`, appended here; then its reader in
@@ -77,15 +103,59 @@ struct BrickTexture {
 // povray/pov_materials.cpp, each a visit or a template that does not compile without it
 // (docs/architecture.md).
 using Texture = std::variant<std::monostate, CheckerTexture, ImageTexture, PatternTexture,
-                             HexagonTexture, BrickTexture>;
+                             HexagonTexture, BrickTexture, AverageTexture>;
+
+// An entry of a map or list of textures: `texture`, or where it holds none (monostate) the
+// plain colour `color`. `at` is its pattern value in a pigment map, its weight in an
+// average, and unused in a block pattern's list.
+struct TextureMapEntry {
+  double at = 0.0;
+  PigmentColor color;
+  Texture texture;
+};
+
+inline bool textureSeeThrough(const Texture& t);
+
+// Some entry of a map or list is see-through.
+inline bool entriesSeeThrough(const std::vector<TextureMapEntry>& entries) {
+  for (const TextureMapEntry& e : entries)
+    if (std::holds_alternative<std::monostate>(e.texture) ? e.color.ft.any()
+                                                          : textureSeeThrough(e.texture))
+      return true;
+  return false;
+}
 
 // Some colour of the texture has a filter or a transmit (the surface then lets light
-// through where it takes it).
+// through where it takes it); for maps and lists of textures, some entry's.
 inline bool textureSeeThrough(const Texture& t) {
-  if (const auto* p = std::get_if<PatternTexture>(&t)) return p->map.seeThrough();
-  if (const auto* c = std::get_if<CheckerTexture>(&t)) return c->ft1.any() || c->ft2.any();
-  if (const auto* h = std::get_if<HexagonTexture>(&t)) return h->spec.seeThrough();
-  if (const auto* b = std::get_if<BrickTexture>(&t)) return b->spec.ft1.any() || b->spec.ft2.any();
+  if (const auto* p = std::get_if<PatternTexture>(&t))
+    return p->pigments.empty() ? p->map.seeThrough() : entriesSeeThrough(p->pigments);
+  if (const auto* c = std::get_if<CheckerTexture>(&t))
+    return c->pigments.empty() ? c->ft1.any() || c->ft2.any() : entriesSeeThrough(c->pigments);
+  if (const auto* h = std::get_if<HexagonTexture>(&t))
+    return h->pigments.empty() ? h->spec.seeThrough() : entriesSeeThrough(h->pigments);
+  if (const auto* b = std::get_if<BrickTexture>(&t))
+    return b->pigments.empty() ? b->spec.ft1.any() || b->spec.ft2.any()
+                               : entriesSeeThrough(b->pigments);
+  if (const auto* a = std::get_if<AverageTexture>(&t)) return entriesSeeThrough(a->entries);
+  return false;
+}
+
+// The texture, or one nested in it, is an image (which a map or a list cannot hold: its
+// pixels are loaded per material).
+inline bool textureHoldsImage(const Texture& t);
+inline bool entriesHoldImage(const std::vector<TextureMapEntry>& entries) {
+  for (const TextureMapEntry& e : entries)
+    if (textureHoldsImage(e.texture)) return true;
+  return false;
+}
+inline bool textureHoldsImage(const Texture& t) {
+  if (std::holds_alternative<ImageTexture>(t)) return true;
+  if (const auto* p = std::get_if<PatternTexture>(&t)) return entriesHoldImage(p->pigments);
+  if (const auto* c = std::get_if<CheckerTexture>(&t)) return entriesHoldImage(c->pigments);
+  if (const auto* h = std::get_if<HexagonTexture>(&t)) return entriesHoldImage(h->pigments);
+  if (const auto* b = std::get_if<BrickTexture>(&t)) return entriesHoldImage(b->pigments);
+  if (const auto* a = std::get_if<AverageTexture>(&t)) return entriesHoldImage(a->entries);
   return false;
 }
 

@@ -57,13 +57,15 @@ inline PatternPlacement* placementOf(Texture& t) {
   if (auto* c = std::get_if<CheckerTexture>(&t)) return &c->placement;
   if (auto* h = std::get_if<HexagonTexture>(&t)) return &h->placement;
   if (auto* b = std::get_if<BrickTexture>(&t)) return &b->placement;
+  if (auto* a = std::get_if<AverageTexture>(&t)) return &a->placement;
   return nullptr;
 }
 
 struct PovNormal {
   NormalSpec spec;
   PovTransform transform;
-  bool warped = false;  // its turbulence is a `warp { turbulence }`
+  bool warped = false;   // its turbulence is a `warp { turbulence }`
+  bool average = false;  // `average` was read: its normal_map fills spec.average
 };
 
 // `reflection { MIN, MAX fresnel falloff exponent metallic }`, or `reflection C` alone

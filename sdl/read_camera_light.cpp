@@ -198,7 +198,13 @@ void SceneReader::readGlobalSettings(TokenStream& in) {
       const double g = in.parseFloat();
       if (g < 1 || g > 3) in.error(t, "noise_generator must be 1, 2 or 3");
       global_.noiseGenerator = static_cast<int>(g);
-    } else if (w == "max_intersections" || w == "number_of_waves" || w == "mm_per_unit") {
+    } else if (w == "number_of_waves") {
+      // The sources of ripples and waves: Lucent has POV-Ray's default 10.
+      if (in.parseFloat() != 10.0)
+        warn(in, t.loc(),
+             "number_of_waves is not imported (Lucent's ripples and waves use POV-Ray's "
+             "default 10 sources)");
+    } else if (w == "max_intersections" || w == "mm_per_unit") {
       in.parseFloat();  // no effect on Lucent's image
     } else if (w == "hf_gray_16") {
       optionalBool(in);

@@ -146,12 +146,17 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
       auto isListEntry = [](const Token& k) {
         return isWord(k, "pigment") || isWord(k, "texture") || isWord(k, "normal");
       };
+      if (isWord(next, "pigment") && i == 0) {
+        // POV-Ray's list of pigments instead of the colours.
+        readBlockPigments(in, p, p.map.size());
+        return true;
+      }
       if (isListEntry(next)) {
         const Token list = in.next();
         keepError(in, list.loc(),
                   "'" + std::string(list.text()) + "' is not supported by Lucent (lists of " +
                       std::string(list.text()) + "s in block patterns; " + std::string(w) +
-                      " takes colours in Lucent)");
+                      " takes colours or pigments in Lucent)");
         // The list's entries skipped, each a block; the pigment's own '}' is left to it.
         for (;;) {
           in.expect("{");
@@ -373,12 +378,33 @@ std::vector<PovColorMapEntry> ascendingMap(const std::vector<PovColorMapEntry>& 
   return out;
 }
 
+namespace {
+
+// The texture blends whole pigments (a pigment map, a block pattern's list, an average):
+// it has no colours of its own.
+bool textureHoldsPigments(const Texture& t) {
+  if (const auto* p = std::get_if<PatternTexture>(&t)) return !p->pigments.empty();
+  if (const auto* c = std::get_if<CheckerTexture>(&t)) return !c->pigments.empty();
+  if (const auto* h = std::get_if<HexagonTexture>(&t)) return !h->pigments.empty();
+  if (const auto* b = std::get_if<BrickTexture>(&t)) return !b->pigments.empty();
+  if (const auto* a = std::get_if<AverageTexture>(&t)) return !a->entries.empty();
+  return false;
+}
+
+}  // namespace
+
 // The colours of a pattern pigment, from its map as written (or POV-Ray's default map),
 // with their filter and transmit. A map whose every entry has one transmit and no filter
 // keeps it as the pigment's (the material's constant transmission, which costs nothing
 // per hit); any other filter or transmit goes with each colour (a see-through texture).
-void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& /*in*/) {
+void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& in, bool nested) {
   if (!p.patterned()) return;
+  if (std::holds_alternative<AverageTexture>(p.pattern) && !textureHoldsPigments(p.pattern))
+    keepError(in, p.mapLoc, "'average' needs a pigment_map (the pigments it averages)");
+  if (textureHoldsPigments(p.pattern) || std::holds_alternative<AverageTexture>(p.pattern)) {
+    p.filter = p.transmit = 0.0f;  // the entries' own
+    return;
+  }
   const PatternSpec* spec = specOf(p.pattern);
   std::vector<PovColorMapEntry> map = p.map.empty() && spec ? defaultColourMap(spec->type) : p.map;
   p.filter = p.transmit = 0.0f;
@@ -387,7 +413,8 @@ void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& /*in*/) {
     const bool uniform = std::all_of(map.begin(), map.end(), [&](const PovColorMapEntry& e) {
       return e.filter == first.filter && e.transmit == first.transmit;
     });
-    if (uniform && first.filter == 0.0f) {
+    // (Not for a pigment inside a map or a list: its colours are its texture's alone.)
+    if (uniform && first.filter == 0.0f && !nested) {
       p.transmit = first.transmit;
       for (PovColorMapEntry& e : map) e.transmit = 0.0f;
     }
@@ -483,10 +510,16 @@ bool SceneReader::isLackingPattern(const Token& t) {
              std::end(kPatternsLucentLacks);
 }
 
-// A pattern Lucent lacks, named in a pigment or a normal: refused, the block skipped.
-bool SceneReader::refusePattern(const Token& t, TokenStream& in) {
+// A pattern Lucent lacks, named in a pigment or a normal: refused, the block skipped (in
+// a map's entry, `inEntry`, the caller skips the entry).
+bool SceneReader::refusePattern(const Token& t, TokenStream& in, bool inEntry) {
   if (t.kind != TokenKind::Keyword) return false;
   const std::string_view w = t.text();
+  auto refuseInBlock = [&](const Token& k, TokenStream& s, const std::string& why) {
+    if (!inEntry) return SceneReader::refuseInBlock(k, s, why);
+    keepError(s, k.loc(),
+              "'" + std::string(k.text()) + "' is not supported by Lucent (" + why + ")");
+  };
   if (w == "checker" || w == "hexagon" || w == "brick") {
     refuseInBlock(t, in, "as a normal pattern; Lucent's " + std::string(w) + " is a pigment");
     return true;

@@ -9,16 +9,20 @@
 namespace lucent::sdl {
 
 PovPigment SceneReader::readPigment(TokenStream& in, const PovPigment& start) {
-  PovPigment p = start;
   in.expect("{");
+  return readPigmentBody(in, start, false);
+}
+
+PovPigment SceneReader::readPigmentBody(TokenStream& in, const PovPigment& start, bool inEntry) {
+  PovPigment p = start;
   if (const auto* item = use<PigmentItem>(in.peek(), in)) {
     in.next();
     p = item->pigment;
   }
   for (;;) {
     const Token t = in.next();
-    if (t.is("}")) {
-      resolvePigmentColours(p, in);
+    if (t.is(inEntry ? "]" : "}")) {
+      resolvePigmentColours(p, in, inEntry);
       return p;
     }
     if (isColourStart(t)) {
@@ -31,8 +35,9 @@ PovPigment SceneReader::readPigment(TokenStream& in, const PovPigment& start) {
       p.map.clear();
     } else if (!readTransform(t, in, p.transform) &&
                !readWarp(t, in, placementOf(p.pattern), specOf(p.pattern), p.transform, p.warped) &&
-               !readPatternKeyword(t, in, p)) {
-      if (!refusePattern(t, in)) unreadInBlock(t, in);
+               !readPigmentMapKeyword(t, in, p) && !readPatternKeyword(t, in, p)) {
+      if (inEntry) skipEntryRest(t, in);
+      else if (!refusePattern(t, in)) unreadInBlock(t, in);
       return p;
     }
   }
@@ -40,16 +45,24 @@ PovPigment SceneReader::readPigment(TokenStream& in, const PovPigment& start) {
 
 // `normal { [Identifier] PATTERN [amount] modifiers bump_size F }`.
 PovNormal SceneReader::readNormal(TokenStream& in, const PovNormal* start) {
+  in.expect("{");
+  return readNormalBody(in, start, false);
+}
+
+PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, bool inEntry) {
   PovNormal n;
   if (start) n = *start;
-  in.expect("{");
   if (const auto* item = use<NormalItem>(in.peek(), in)) {
     in.next();
     n = item->normal;
   }
   for (;;) {
     const Token t = in.next();
-    if (t.is("}")) return n;
+    if (t.is(inEntry ? "]" : "}")) {
+      if (n.average && n.spec.average.empty())
+        keepError(in, t.loc(), "'average' needs a normal_map (the normals it averages)");
+      return n;
+    }
     const PatternTypeInfo* type = nullptr;
     if (t.kind == TokenKind::Keyword)
       for (const PatternTypeInfo& info : kPatternTypes)
@@ -61,6 +74,8 @@ PovNormal SceneReader::readNormal(TokenStream& in, const PovNormal* start) {
       s.noiseGenerator = 0;  // the scene's global_settings noise_generator (finishScene)
       readPatternArguments(t, in, s);
       n.spec.pattern = s;
+      n.spec.average.clear();
+      n.average = false;
       // POV-Ray: an optional comma, then the optional amount (its bump_size).
       if (in.allow(",") || startsNumber(in.peek())) n.spec.depth = in.parseFloat();
     } else if (isWord(t, "bump_size")) {
@@ -70,11 +85,12 @@ PovNormal SceneReader::readNormal(TokenStream& in, const PovNormal* start) {
       if (accuracy != 0.02)
         warn(in, t.loc(),
              "accuracy is not imported (Lucent's normals take POV-Ray's default 0.02)");
-    } else if (!readTransform(t, in, n.transform) &&
+    } else if (!readNormalAverage(t, in, n) && !readTransform(t, in, n.transform) &&
                !readWarp(t, in, &n.spec.pattern.placement, &n.spec.pattern, n.transform,
                          n.warped) &&
                !readPatternModifier(t, in, &n.spec.pattern, &n.spec.pattern.placement)) {
-      if (!refusePattern(t, in)) unreadInBlock(t, in);
+      if (inEntry) skipEntryRest(t, in);
+      else if (!refusePattern(t, in)) unreadInBlock(t, in);
       return n;
     }
   }

@@ -32,10 +32,11 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"double_illuminate", "surfaces lit from both sides"},
       {"material_map", "material maps; Lucent has one material per object"},
       {"texture_map", "maps of textures; Lucent has one texture layer per material"},
-      {"pigment_map", "maps of pigments; Lucent's colour maps hold colours"},
-      {"normal_map", "maps of normals; Lucent's <normal> takes one pattern"},
+      {"normal_map",
+       "maps of normals other than average's; Lucent's <normal> takes one pattern or an "
+       "average"},
       {"slope_map", "slope maps of normals; Lucent's <normal> takes the pattern's own slope"},
-      {"average", "averaged pigments or normals"},
+      {"average", "averages of textures; Lucent averages pigments and normals"},
       {"image_pattern", "image patterns"},
       {"uv_mapping", "uv_mapping of patterns; Lucent's <image> is read at the shape's (u,v)"},
       {"bump_map",
@@ -176,6 +177,11 @@ std::shared_ptr<SceneItem> SceneReader::readItem(const Token& t, TokenStream& in
   if (isWord(first, "sky_sphere")) {
     auto item = std::make_shared<SkySphereItem>();
     item->sky = readSkySphereBlock(first.loc(), in);
+    return item;
+  }
+  if (isWord(first, "pigment_map")) {
+    auto item = std::make_shared<PigmentMapItem>();
+    item->entries = readPigmentMap(in, first);
     return item;
   }
   if (isWord(first, "pigment")) {
@@ -521,6 +527,35 @@ bool SceneReader::keepsBound(const PovObject& o, bool framed) {
   return o.keyword == "quadric" && o.clip.empty();
 }
 
+namespace {
+
+// Every pattern of a texture, those of the pigments in its maps and lists too.
+void forEachPattern(Texture& t, const std::function<void(PatternSpec&)>& f) {
+  std::vector<TextureMapEntry>* entries = nullptr;
+  if (auto* p = std::get_if<PatternTexture>(&t)) {
+    f(p->pattern);
+    entries = &p->pigments;
+  } else if (auto* c = std::get_if<CheckerTexture>(&t)) {
+    entries = &c->pigments;
+  } else if (auto* h = std::get_if<HexagonTexture>(&t)) {
+    entries = &h->pigments;
+  } else if (auto* b = std::get_if<BrickTexture>(&t)) {
+    entries = &b->pigments;
+  } else if (auto* a = std::get_if<AverageTexture>(&t)) {
+    entries = &a->entries;
+  }
+  if (entries)
+    for (TextureMapEntry& e : *entries) forEachPattern(e.texture, f);
+}
+
+// Every pattern of a normal, those of an average's normals too.
+void forEachNormalPattern(NormalSpec& n, const std::function<void(PatternSpec&)>& f) {
+  f(n.pattern);
+  for (WeightedNormal& e : n.average) forEachNormalPattern(e.normal, f);
+}
+
+}  // namespace
+
 void SceneReader::finishScene(TokenStream& in) {
   for (const auto& [key, s] : skipped_)
     in.warning(s.first, "left out (--skip-unsupported): " + s.message + "; " +
@@ -531,16 +566,15 @@ void SceneReader::finishScene(TokenStream& in) {
     if (s.noiseGenerator == 0) s.noiseGenerator = global_.noiseGenerator;
   };
   std::function<void(Material&)> materialNoise = [&](Material& m) {
-    if (auto* p = std::get_if<PatternTexture>(&m.texture)) noise(p->pattern);
-    if (m.normal) noise(m.normal->pattern);
-    if (auto* p = std::get_if<PatternTexture>(&m.mapPattern)) noise(p->pattern);
+    forEachPattern(m.texture, noise);
+    if (m.normal) forEachNormalPattern(*m.normal, noise);
+    forEachPattern(m.mapPattern, noise);
     for (Material& layer : m.layers) materialNoise(layer);
     for (MaterialMapEntry& e : m.mapEntries) materialNoise(e.material);
   };
   for (Material& m : scene_.materials) materialNoise(m);
   if (scene_.sky) {
-    for (Texture& layer : scene_.sky->layers)
-      if (auto* p = std::get_if<PatternTexture>(&layer)) noise(p->pattern);
+    for (Texture& layer : scene_.sky->layers) forEachPattern(layer, noise);
     // POV-Ray layers a sky_sphere's pigments by the language version it renders with (the
     // last #version): below 3.7, by its older rule.
     if (in.languageVersion() < 3.7) scene_.sky->layering = SkyLayering::pov36;

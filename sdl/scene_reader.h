@@ -162,6 +162,11 @@ struct NormalItem : SceneItem {
   PovNormal normal;
   std::string_view kind() const override { return "normal"; }
 };
+// `#declare M = pigment_map {...}`, used as `pigment_map { M }`.
+struct PigmentMapItem : SceneItem {
+  std::vector<TextureMapEntry> entries;
+  std::string_view kind() const override { return "pigment_map"; }
+};
 struct ColorMapItem : SceneItem {
   std::vector<PovColorMapEntry> map;
   SourceLoc loc;
@@ -290,6 +295,10 @@ class SceneReader : public ItemReader {
   // read_textures.cpp
   PovNormal readNormal(TokenStream& in, const PovNormal* start);
   PovPigment readPigment(TokenStream& in, const PovPigment& start);
+  // A pigment's or a normal's keywords up to the '}' of its block, or (inEntry) up to the
+  // ']' of a map's entry; both read. An entry's colours keep their filter and transmit.
+  PovPigment readPigmentBody(TokenStream& in, const PovPigment& start, bool inEntry);
+  PovNormal readNormalBody(TokenStream& in, const PovNormal* start, bool inEntry);
   PovFinish readFinish(TokenStream& in, const PovFinish& start);
   PovTexture readTexture(TokenStream& in, const PovTexture& start);
   // A texture's body up to `closing` ("}", or "]" in a texture_map), the opening read.
@@ -325,8 +334,15 @@ class SceneReader : public ItemReader {
                            PatternPlacement* placement);
   void readFractalColouring(const Token& t, TokenStream& in, PatternSpec& s);
   std::vector<PovColorMapEntry> readColorMap(TokenStream& in, SourceLoc& loc);
-  void resolvePigmentColours(PovPigment& p, TokenStream& in);
-  bool refusePattern(const Token& t, TokenStream& in);
+  void resolvePigmentColours(PovPigment& p, TokenStream& in, bool nested = false);
+  // read_maps.cpp: maps and lists of pigments, averages of pigments and of normals
+  std::vector<TextureMapEntry> readPigmentMap(TokenStream& in, const Token& at,
+                                              bool average = false);
+  bool readPigmentMapKeyword(const Token& t, TokenStream& in, PovPigment& p);
+  bool readBlockPigments(TokenStream& in, PovPigment& p, size_t count);
+  bool readNormalAverage(const Token& t, TokenStream& in, PovNormal& n);
+  void skipEntryRest(const Token& t, TokenStream& in);
+  bool refusePattern(const Token& t, TokenStream& in, bool inEntry = false);
   bool readOldNormal(const Token& t, TokenStream& in, PovTexture& tex);
   bool isTexturePattern(const Token& t) const;
   static bool isLackingPattern(const Token& t);

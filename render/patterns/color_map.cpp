@@ -8,31 +8,6 @@ namespace {
 
 const ColorMapEntry kGrey[2] = {{0.0, Color(0.0f)}, {1.0, Color(1.0f)}};
 
-double position(const ColorMapEntry& e) { return static_cast<float>(e.at); }
-
-// POV-Ray's search: the first entry at or above v (the last if v is past it) and the one
-// before it; at an entry's own position both are that entry. `fraction` is how far v lies
-// from the first towards the second.
-struct Span {
-  const ColorMapEntry* a;
-  const ColorMapEntry* b;
-  double fraction = 0.0;
-};
-Span spanAt(const ColorMapEntry* e, size_t n, double v) {
-  size_t prev, cur;
-  if (v >= position(e[n - 1])) {
-    prev = cur = n - 1;
-  } else {
-    prev = cur = 0;
-    while (v > position(e[cur])) prev = cur++;
-  }
-  if (v == position(e[cur])) prev = cur;
-  if (prev == cur) return {&e[cur], &e[cur]};
-  // The span is a difference of two floats, so POV-Ray computes it in float.
-  const float span = static_cast<float>(e[cur].at) - static_cast<float>(e[prev].at);
-  return {&e[prev], &e[cur], (v - position(e[prev])) / static_cast<double>(span)};
-}
-
 // float difference, scaled in double and rounded back to float, as POV-Ray's colours.
 float blend(float a, float b, double fraction) {
   const float d = b - a;
@@ -44,23 +19,27 @@ float blend(float a, float b, double fraction) {
 Color lookupColorMap(const ColorMap& map, double v) {
   const ColorMapEntry* e = map.entries.empty() ? kGrey : map.entries.data();
   const size_t n = map.entries.empty() ? 2 : map.entries.size();
-  const Span s = spanAt(e, n, v);
-  if (s.a == s.b) return s.a->color;
+  const MapSpan s = mapSpanAt(e, n, v);
+  if (s.a == s.b) return e[s.a].color;
   Color c;
-  for (int i = 0; i < 3; ++i) c[i] = blend(s.a->color[i], s.b->color[i], s.fraction);
+  for (int i = 0; i < 3; ++i) c[i] = blend(e[s.a].color[i], e[s.b].color[i], s.fraction);
+  return c;
+}
+
+PigmentColor blendPigments(const PigmentColor& a, const PigmentColor& b, double fraction) {
+  PigmentColor c;
+  for (int i = 0; i < 3; ++i) c.rgb[i] = blend(a.rgb[i], b.rgb[i], fraction);
+  c.ft.filter = blend(a.ft.filter, b.ft.filter, fraction);
+  c.ft.transmit = blend(a.ft.transmit, b.ft.transmit, fraction);
   return c;
 }
 
 PigmentColor lookupColorMapFT(const ColorMap& map, double v) {
   const ColorMapEntry* e = map.entries.empty() ? kGrey : map.entries.data();
   const size_t n = map.entries.empty() ? 2 : map.entries.size();
-  const Span s = spanAt(e, n, v);
-  if (s.a == s.b) return {s.a->color, s.a->ft};
-  PigmentColor c;
-  for (int i = 0; i < 3; ++i) c.rgb[i] = blend(s.a->color[i], s.b->color[i], s.fraction);
-  c.ft.filter = blend(s.a->ft.filter, s.b->ft.filter, s.fraction);
-  c.ft.transmit = blend(s.a->ft.transmit, s.b->ft.transmit, s.fraction);
-  return c;
+  const MapSpan s = mapSpanAt(e, n, v);
+  if (s.a == s.b) return {e[s.a].color, e[s.a].ft};
+  return blendPigments({e[s.a].color, e[s.a].ft}, {e[s.b].color, e[s.b].ft}, s.fraction);
 }
 
 Color patternColor(const PatternSpec& spec, const ColorMap& map, const Vec3& objectPoint) {

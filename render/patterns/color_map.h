@@ -18,6 +18,35 @@ Color lookupColorMap(const ColorMap& map, double v);
 // POV-Ray blends all five channels of its colours).
 PigmentColor lookupColorMapFT(const ColorMap& map, double v);
 
+// POV-Ray's search of a map (Search_Blend_Map), for any entries with a position `at`: the
+// first entry at or above v (the last if v is past it) and the one before it; at an
+// entry's own position both are that entry. `fraction` is how far v lies from the first
+// towards the second. The positions are taken in single precision, as POV-Ray keeps them.
+struct MapSpan {
+  size_t a = 0, b = 0;
+  double fraction = 0.0;
+};
+template <class Entry>
+MapSpan mapSpanAt(const Entry* e, size_t n, double v) {
+  auto position = [&](size_t i) { return static_cast<double>(static_cast<float>(e[i].at)); };
+  size_t prev, cur;
+  if (v >= position(n - 1)) {
+    prev = cur = n - 1;
+  } else {
+    prev = cur = 0;
+    while (v > position(cur)) prev = cur++;
+  }
+  if (v == position(cur)) prev = cur;
+  if (prev == cur) return {cur, cur};
+  // The span is a difference of two floats, so POV-Ray computes it in float.
+  const float span = static_cast<float>(e[cur].at) - static_cast<float>(e[prev].at);
+  return {prev, cur, (v - position(prev)) / static_cast<double>(span)};
+}
+
+// a + (b − a)·fraction for the colour, the filter and the transmit: the float difference
+// scaled in double and rounded back to float, as POV-Ray's colours.
+PigmentColor blendPigments(const PigmentColor& a, const PigmentColor& b, double fraction);
+
 // lookupColorMap of patternValue(spec, objectPoint).
 Color patternColor(const PatternSpec& spec, const ColorMap& map, const Vec3& objectPoint);
 

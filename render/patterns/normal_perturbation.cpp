@@ -59,6 +59,29 @@ Vec3 slope(const PatternSpec& spec, const Vec3& n, const Vec3& p, double amount)
   return r;
 }
 
+// The pattern's own bend of the pattern-space normal n at the pattern point p.
+Vec3 perturbByPattern(const NormalSpec& normal, Vec3 n, const Vec3& p, double amount) {
+  const PatternSpec& spec = normal.pattern;
+  switch (spec.type) {
+    case PatternType::bumps:
+      return addScaled(n, amount, dnoise(p));
+    case PatternType::dents: {
+      const double v = noise(p, spec.noiseGenerator);
+      return addScaled(n, v * v * v * amount, dnoise(p));
+    }
+    case PatternType::wrinkles:
+      return wrinkles(n, p, amount);
+    case PatternType::quilted:  // POV-Ray's own quilted normal, not the slope
+      return addScaled(n, amount, quiltedOffset(p, spec.quilted));
+    case PatternType::ripples:
+      return ripplesNormal(n, p, spec.frequency, spec.phase, amount);
+    case PatternType::waves:
+      return wavesNormal(n, p, spec.frequency, spec.phase, amount);
+    default:
+      return slope(spec, n, p, amount);
+  }
+}
+
 }  // namespace
 
 Vec3 perturbNormal(const NormalSpec& normal, const Vec3& objPoint, const Vec3& objNormal) {
@@ -74,31 +97,22 @@ Vec3 perturbNormal(const NormalSpec& normal, const Vec3& objPoint, const Vec3& o
   if (!identity) n = transposedTimes(toPattern, n);
   n = normalised(n);
 
-  const Vec3 p = warpPoint(spec.placement, objPoint, turbulenceDisplaces(spec.type));
-  switch (spec.type) {
-    case PatternType::bumps:
-      n = addScaled(n, amount, dnoise(p));
-      break;
-    case PatternType::dents: {
-      const double v = noise(p, spec.noiseGenerator);
-      n = addScaled(n, v * v * v * amount, dnoise(p));
-      break;
+  if (!normal.average.empty()) {
+    // POV-Ray's average: each normal bent at the average's point in the average's space
+    // (its own placement composing with the average's), weighted in single precision;
+    // the mean is normalised on the way back.
+    const Vec3 q = warpPoint(spec.placement, objPoint);
+    Vec3 sum(0.0);
+    float total = 0.0f;
+    for (const WeightedNormal& e : normal.average) {
+      const float w = static_cast<float>(e.weight);
+      sum = addScaled(sum, w, perturbNormal(e.normal, q, n));
+      total += w;
     }
-    case PatternType::wrinkles:
-      n = wrinkles(n, p, amount);
-      break;
-    case PatternType::quilted:  // POV-Ray's own quilted normal, not the slope
-      n = addScaled(n, amount, quiltedOffset(p, spec.quilted));
-      break;
-    case PatternType::ripples:
-      n = ripplesNormal(n, p, spec.frequency, spec.phase, amount);
-      break;
-    case PatternType::waves:
-      n = wavesNormal(n, p, spec.frequency, spec.phase, amount);
-      break;
-    default:
-      n = slope(spec, n, p, amount);
-      break;
+    n = sum / static_cast<double>(total);
+  } else {
+    n = perturbByPattern(
+        normal, n, warpPoint(spec.placement, objPoint, turbulenceDisplaces(spec.type)), amount);
   }
 
   // Back to object space (POV-Ray's UnWarp_Normal), unit length.

@@ -325,18 +325,18 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
           "[sdl][scene][texture][errors]") {
   const auto errors = errorsOf(
       "sphere { 0, 1 pigment { cells } }\n"
-      "sphere { 0, 1 pigment { bozo pigment_map { [0 rgb 1] } } }\n"
+      "sphere { 0, 1 pigment { checker pigment_map { [0 rgb 1] } } }\n"
       "sphere { 0, 1 interior_texture { pigment { rgb 1 } } }\n"
       "sphere { 0, 1 pigment { image_map { png \"x.png\" } } }\n"
       "sphere { 0, 1 normal { checker } }\n"
-      "sphere { 0, 1 texture { gradient y texture_map { [0 T1] [1 T2] } } }\n");
+      "sphere { 0, 1 texture { tiles { texture { pigment { rgb 1 } } } } }\n");
   REQUIRE(errors.size() == 6);
   CHECK(errors[0].rfind("test.pov:1:25: error: 'cells' is not supported by Lucent (a pattern "
                         "Lucent does not have; its patterns are gradient, onion",
                         0) == 0);
   CHECK(errors[1] ==
-        "test.pov:2:30: error: 'pigment_map' is not supported by Lucent (maps of pigments; "
-        "Lucent's colour maps hold colours)");
+        "test.pov:2:33: error: 'pigment_map' on a block pattern is not supported by Lucent (give "
+        "it a list of pigments: checker pigment {..} pigment {..})");
   CHECK(errors[2] ==
         "test.pov:3:15: error: 'interior_texture' is not supported by Lucent (a texture for the "
         "inside of a surface)");
@@ -345,8 +345,9 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
         "test.pov:5:24: error: 'checker' is not supported by Lucent (as a normal pattern; "
         "Lucent's checker is a pigment)");
   CHECK(errors[5] ==
-        "test.pov:6:25: error: 'gradient' is not supported by Lucent (a pattern of textures "
-        "(texture_map, or a block pattern of textures); Lucent has one texture per material)");
+        "test.pov:6:25: error: 'tiles' is not supported by Lucent (a pattern of textures that "
+        "Lucent cannot read: it reads texture_map after a pattern, and the texture lists of "
+        "checker, hexagon and brick)");
 }
 
 TEST_CASE(

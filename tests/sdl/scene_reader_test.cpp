@@ -409,18 +409,26 @@ TEST_CASE("scene reader: trace(), inside(), min_extent() and max_extent() as POV
         "'A'");
 }
 
-TEST_CASE("scene reader: a checker of pigments is one refusal, and reading goes on after it",
-          "[sdl][scene][errors]") {
-  // The list's blocks are skipped, not the pigment's own closing brace (which once made the
-  // rest of the scene an error of the plane: advanced/cliche/cliche.pov).
-  const auto errors = errorsOf(
+TEST_CASE("scene reader: a checker of pigments is read, and reading goes on after it",
+          "[sdl][scene]") {
+  // The list's blocks end with the pigment's own closing brace after them (once skipped as
+  // a refusal, which made the rest of the scene an error of the plane:
+  // advanced/cliche/cliche.pov).
+  auto r = readScene(
       "plane { y, 0 texture { pigment { checker pigment { rgb 1 }, pigment { rgb 0 } scale 2 }\n"
       "  finish { ambient 0.1 } } }\n"
       "sphere { 0, 1 }\n");
-  REQUIRE(errors.size() == 1);
-  CHECK(errors[0].rfind("test.pov:1:42: error: 'pigment' is not supported by Lucent (lists of "
-                        "pigments in block patterns",
-                        0) == 0);
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  REQUIRE(s.root->children.size() == 2);
+  REQUIRE(s.root->children[0]->material);
+  const Material& m = s.materials.at(*s.root->children[0]->material);
+  const auto& c = std::get<CheckerTexture>(m.texture);
+  REQUIRE(c.pigments.size() == 2);
+  CHECK(c.pigments[0].color.rgb == Color(1.0f));
+  CHECK(c.pigments[1].color.rgb == Color(0.0f));
+  CHECK(c.placement.patternFromObject[0][0] == Approx(0.5));
+  CHECK(m.ambient == Color(0.1f));
 }
 
 TEST_CASE("scene reader: shared materials for the default texture and for declared textures",
