@@ -102,8 +102,11 @@ void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve
       }
       havePattern = true;
       m.mapPattern = parseTexture(t);
-      if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern); p && !p->map.entries.empty())
-        t.error("a <material-map>'s <pattern> has no <color-map>: its value picks the entries");
+      if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern);
+          p && (!p->map.entries.empty() || !p->pigments.empty()))
+        t.error(
+            "a <material-map>'s <pattern> has no <color-map> or <pigment-map>: its value "
+            "picks the entries");
       return;
     }
     if (!havePattern) {

@@ -71,8 +71,9 @@ TEST_CASE("layer: the interior terms, a second texture and a nested layer are er
                   "material") != std::string::npos);
   CHECK(text.find("layers.xml:3:35: error: <layer> holds one texture at most; the first is at "
                   "layers.xml:3:25") != std::string::npos);
-  CHECK(text.find("layers.xml:4:25: error: <layer> may hold a texture (<checker>, <image>, "
-                  "<pattern>, <hexagon> or <brick>), a <normal> or <bump-map>, not <layer>") !=
+  CHECK(text.find(
+            "layers.xml:4:25: error: <layer> may hold a texture (<checker>, <image>, "
+            "<pattern>, <hexagon>, <brick> or <average>), a <normal> or <bump-map>, not <layer>") !=
         std::string::npos);
   CHECK(text.find("(POV-Ray's 'roughness' is 'shininess' (1/roughness) in Lucent)") !=
         std::string::npos);

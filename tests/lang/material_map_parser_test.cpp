@@ -68,7 +68,8 @@ TEST_CASE("material-map: what a map cannot hold is an error at its place",
                   "ascending order of 'at'") != std::string::npos);
   CHECK(text.find("maps.xml:4:1: error: a <material> with a <material-map> has no texture, "
                   "normal or <layer> of its own") != std::string::npos);
-  CHECK(text.find("error: a <material-map>'s <pattern> has no <color-map>") != std::string::npos);
+  CHECK(text.find("error: a <material-map>'s <pattern> has no <color-map> or <pigment-map>") !=
+        std::string::npos);
   CHECK(text.find("error: an <entry> needs a material: material=\"id\" or an inline "
                   "<material>") != std::string::npos);
   CHECK(text.find("error: an <entry> holds one inline <material>, or names one with "

@@ -44,7 +44,7 @@ TEST_CASE("a layer's own light is dimmed by what the layers above let through",
   checkColor(got, Color(0.25f) + Color(0.5f) * middle);
 }
 
-TEST_CASE("light from behind crosses every layer; an opaque layer hides the ones below",
+TEST_CASE("light from behind crosses every layer, and an opaque layer hides the ones below",
           "[render][layers]") {
   // A thin sheet (a disc) over a green background. Bottom: k_t 0.8 (no local light).
   // Layer: red (1, 0, 0) with filter 1 (opacity 0): lets red·1 through.
