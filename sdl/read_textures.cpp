@@ -224,12 +224,49 @@ PovTexture SceneReader::readTextureBody(TokenStream& in, const PovTexture& start
   }
 }
 
+namespace {
+
+// POV-Ray 3.1's layers: a filter in a layer over another acts as a transmit (POV-Ray keeps
+// this for scenes of #version 3.1 and older, its Convert_Filter_To_Transmit): every
+// colour's filter joins its transmit.
+void filterToTransmit(FilterTransmit& ft) {
+  ft.transmit += ft.filter;
+  ft.filter = 0.0f;
+}
+
+void filterToTransmit(PovPigment& p) {
+  p.transmit += p.filter;
+  p.filter = 0.0f;
+  for (PovColorMapEntry& e : p.map) {
+    e.transmit += e.filter;
+    e.filter = 0.0f;
+  }
+  if (auto* t = std::get_if<PatternTexture>(&p.pattern))
+    for (ColorMapEntry& e : t->map.entries) filterToTransmit(e.ft);
+  if (auto* c = std::get_if<CheckerTexture>(&p.pattern)) {
+    filterToTransmit(c->ft1);
+    filterToTransmit(c->ft2);
+  }
+  if (auto* h = std::get_if<HexagonTexture>(&p.pattern))
+    for (FilterTransmit& ft : h->spec.ft) filterToTransmit(ft);
+  if (auto* b = std::get_if<BrickTexture>(&p.pattern)) {
+    filterToTransmit(b->spec.ft1);
+    filterToTransmit(b->spec.ft2);
+  }
+}
+
+}  // namespace
+
 PovTexture SceneReader::layerOver(PovTexture under, PovTexture top, const SourceLoc& at,
                                   TokenStream& in) {
   if (under.mapped() || top.mapped())
     keepError(in, at,
               "a pattern of textures cannot be layered (POV-Ray: \"Cannot layer over a "
               "patterned texture\")");
+  if (in.languageVersion() <= 3.1) {
+    filterToTransmit(top.pigment);
+    for (PovTexture& layer : top.below) filterToTransmit(layer.pigment);
+  }
   return layered(std::move(under), std::move(top));
 }
 

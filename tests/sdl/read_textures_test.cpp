@@ -251,6 +251,23 @@ box { 0, 1 material { texture { pigment { rgb 1 } } texture { pigment { rgbf <1,
   checkColor(glass.layers[0].transmissive, Color(1.0f, 0.0f, 0.0f));
 }
 
+TEST_CASE("scene reader textures: under #version 3.1 a layer's filter acts as a transmit",
+          "[sdl][scene][texture][layers]") {
+  // POV-Ray keeps 3.1's layering for old scenes: a filter in a layer over another becomes a
+  // transmit (its Convert_Filter_To_Transmit); from 3.5 on it filters.
+  for (const char* version : {"3.1", "3.7"}) {
+    auto r = readScene(std::string("#version ") + version +
+                       ";\nsphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { "
+                       "rgbf <1, 0.5, 0, 0.5> } } }\n");
+    REQUIRE(r->load.scene);
+    const Material& m = materialOf(*r->load.scene, top(*r->load.scene, 0));
+    REQUIRE(m.layers.size() == 1);
+    INFO("#version " << version);
+    if (std::string(version) == "3.1") checkColor(m.layers[0].transmissive, Color(0.5f));
+    else checkColor(m.layers[0].transmissive, Color(0.5f, 0.25f, 0.0f));
+  }
+}
+
 TEST_CASE("scene reader textures: texture_map and block lists of textures become material maps",
           "[sdl][scene][texture][material-map]") {
   const auto errors = errorsOf(
