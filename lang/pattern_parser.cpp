@@ -32,11 +32,11 @@ const std::vector<std::pair<std::string_view, WaveShape>> kWaves{
 const std::vector<std::string_view> kPlacementAttributes{"transform", "turbulence", "octaves",
                                                          "omega", "lambda"};
 const std::vector<std::string_view> kValueAttributes{
-    "type",     "axis",     "arms",        "frequency",
-    "phase",    "wave",     "exponent",    "noise-generator",
-    "control0", "control1", "iterations",  "power",
-    "c",        "form",     "magnet-type", "exterior",
-    "interior"};
+    "type",     "axis",      "arms",        "frequency",
+    "phase",    "wave",      "exponent",    "noise-generator",
+    "control0", "control1",  "iterations",  "power",
+    "c",        "form",      "magnet-type", "exterior",
+    "interior", "agate-turb"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -139,8 +139,10 @@ void parseColouring(ElementReader& r, const char* attr, int maxType, FractalColo
   else c = {static_cast<int>(type), factor};
 }
 
-// The modifiers of quilted, mandel, julia and magnet.
+// The modifiers of agate, quilted, mandel, julia and magnet.
 void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
+  if (onlyFor(r, "agate-turb", s.type == PatternType::agate, "agate", s.type))
+    s.agateTurb = r.number("agate-turb", s.agateTurb);
   const bool quilted = s.type == PatternType::quilted;
   if (onlyFor(r, "control0", quilted, "quilted", s.type))
     s.quilted.control0 = r.number("control0", s.quilted.control0);

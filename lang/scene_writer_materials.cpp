@@ -34,6 +34,8 @@ void addPlacement(const PatternPlacement& p, Attributes& a) {
 // quilted's controls and the fractals' parameters, those of the pattern's type only.
 void addTypeAttributes(const PatternSpec& s, Attributes& a) {
   const PatternSpec d;
+  if (s.type == PatternType::agate && s.agateTurb != d.agateTurb)
+    a.emplace_back("agate-turb", xmlNumber(s.agateTurb));
   if (s.type == PatternType::quilted) {
     if (s.quilted.control0 != d.quilted.control0)
       a.emplace_back("control0", xmlNumber(s.quilted.control0));

@@ -35,8 +35,8 @@ std::string patternKeyword(const PatternSpec& s) {
   if (s.type == PatternType::gradient) k += " " + povVector(s.axis);
   if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
     k += " " + std::to_string(s.arms);
-  // Lucent's agate uses POV-Ray's default agate_turb, written so that it cannot drift.
-  if (s.type == PatternType::agate) k += " agate_turb 1";
+  // agate_turb always written, so that POV-Ray's default cannot drift.
+  if (s.type == PatternType::agate) k += " agate_turb " + povNumber(s.agateTurb);
   const FractalParams& f = s.fractal;
   const std::string c = "<" + povNumber(f.cReal) + ", " + povNumber(f.cImaginary) + ">, ";
   if (s.type == PatternType::mandel) k += " " + std::to_string(f.iterations);
@@ -277,9 +277,9 @@ void writeNormalBody(const NormalSpec& n, PovWriter& out) {
     return;
   }
   std::string keyword = patternKeyword(n.pattern);
-  const std::string agate = " agate_turb 1";
-  if (keyword.size() > agate.size() &&
-      keyword.compare(keyword.size() - agate.size(), agate.size(), agate) == 0)
+  // The amount comes before agate's agate_turb.
+  const std::string agate = " agate_turb " + povNumber(n.pattern.agateTurb);
+  if (n.pattern.type == PatternType::agate)
     out.line(keyword.substr(0, keyword.size() - agate.size()) + " " + povNumber(n.depth) + agate);
   else out.line(keyword + " " + povNumber(n.depth));
   // POV-Ray's slope method samples at this distance (its default, which Lucent uses).

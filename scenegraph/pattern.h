@@ -73,7 +73,7 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
     {PatternType::marble, "marble", "marble", true, WaveShape::triangle, true,
      "bands across the x axis, bent by turbulence"},
     {PatternType::agate, "agate", "agate", true, WaveShape::ramp, false,
-     "agate's turbulent bands (agate_turb 1)"},
+     "agate's turbulent bands (their turbulence scaled by agate-turb)"},
     {PatternType::granite, "granite", "granite", true, WaveShape::ramp, false,
      "six octaves of absolute noise"},
     {PatternType::bozo, "bozo", "bozo", true, WaveShape::ramp, false, "smooth noise"},
@@ -193,6 +193,7 @@ struct PatternSpec {
   CrackleParams crackle;
   QuiltedParams quilted;
   FractalParams fractal;
+  double agateTurb = 1.0;  // agate's turbulence scale (POV-Ray's agate_turb)
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin
 
   WaveShape waveShape() const { return wave ? *wave : patternTypeInfo(type).wave; }

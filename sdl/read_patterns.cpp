@@ -264,11 +264,7 @@ bool SceneReader::readPatternModifier(const Token& t, TokenStream& in, PatternSp
       s.fractal.power = 2;
     }
   } else if (w == "agate_turb") {
-    const double turb = in.parseFloat();
-    if (turb != 1.0)
-      keepError(in, t.loc(),
-                "'agate_turb' other than 1 is not supported by Lucent (its agate has POV-Ray's "
-                "default agate_turb 1)");
+    s.agateTurb = in.parseFloat();
   } else {
     return false;
   }

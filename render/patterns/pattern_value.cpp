@@ -83,9 +83,10 @@ double wood(const Vec3& p, const PatternPlacement& t) {
 double marble(const Vec3& p, const PatternSpec& spec) { return p.x + scalarTurbulence(p, spec); }
 
 double agate(const Vec3& p, const PatternSpec& spec) {
-  // agate_turb is 1 (the exporter keeps it); POV-Ray always gives agate a turbulence
-  // record, so its octaves, omega and lambda apply even without turbulence.
-  const double turb = 1.0 * turbulence(p, spec.placement, spec.noiseGenerator);
+  // POV-Ray always gives agate a turbulence record, so its octaves, omega and lambda apply
+  // even without turbulence; agate_turb scales it, kept in single precision as POV-Ray's.
+  const double scale = static_cast<float>(spec.agateTurb);
+  const double turb = scale * turbulence(p, spec.placement, spec.noiseGenerator);
   double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
   if (v < 0.0) return 0.0;
   return std::pow(std::min(1.0, v), 0.77);

@@ -63,6 +63,10 @@ inline PatternSpec turbulent(PatternSpec s, Vec3 t, int octaves = 6, double omeg
   s.placement.lambda = lambda;
   return s;
 }
+inline PatternSpec agateTurb(PatternSpec s, double turb) {
+  s.agateTurb = turb;
+  return s;
+}
 inline PatternSpec waved(PatternSpec s, WaveShape w, double exponent = 1.0) {
   s.wave = w;
   s.exponent = exponent;
@@ -186,6 +190,7 @@ inline std::map<std::string, PatternSpec> patternCases() {
       {"spiral2_turbulence", turbulent(arms(spec(T::spiral2), 4), Vec3(0.1, 0.3, 0.2), 4)},
       {"agate_octaves", turbulent(spec(T::agate), Vec3(0.0), 3, 0.6, 1.7)},
       {"agate_turbulence", turbulent(spec(T::agate), Vec3(0.3))},
+      {"agate_turb", agateTurb(turbulent(spec(T::agate), Vec3(0.2)), 0.35)},
       {"onion_frequency", tuned(spec(T::onion), 3, 0.25)},
       {"gradient_negative_frequency", tuned(axis(spec(T::gradient), y), -2.5, 0.1)},
       {"bozo_frequency0", tuned(spec(T::bozo), 0, 0.5)},

@@ -115,6 +115,7 @@ pattern_cases=(
   "spiral2_turbulence|8|spiral2 4 turbulence <0.1, 0.3, 0.2> octaves 4"
   "agate_octaves|8|agate octaves 3 omega 0.6 lambda 1.7"
   "agate_turbulence|8|agate turbulence 0.3"
+  "agate_turb|8|agate agate_turb 0.35 turbulence 0.2"
   "onion_frequency|8|onion frequency 3 phase 0.25"
   "gradient_negative_frequency|8|gradient y frequency -2.5 phase 0.1"
   "bozo_frequency0|8|bozo frequency 0 phase 0.5"
