@@ -5,6 +5,7 @@
 // octaves, omega, lambda, and (for value patterns) frequency, phase, wave and exponent.
 #include "pattern_parser.h"
 
+#include "element_input.h"
 #include "expression.h"
 #include "povray_names.h"
 #include "texture_map_parser.h"
@@ -32,11 +33,11 @@ const std::vector<std::pair<std::string_view, WaveShape>> kWaves{
 const std::vector<std::string_view> kPlacementAttributes{"transform", "turbulence", "octaves",
                                                          "omega", "lambda"};
 const std::vector<std::string_view> kValueAttributes{
-    "type",     "axis",      "arms",        "frequency",
-    "phase",    "wave",      "exponent",    "noise-generator",
-    "control0", "control1",  "iterations",  "power",
-    "c",        "form",      "magnet-type", "exterior",
-    "interior", "agate-turb"};
+    "type",     "axis",       "arms",        "frequency",
+    "phase",    "wave",       "exponent",    "noise-generator",
+    "control0", "control1",   "iterations",  "power",
+    "c",        "form",       "magnet-type", "exterior",
+    "interior", "agate-turb", "function"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -143,6 +144,15 @@ void parseColouring(ElementReader& r, const char* attr, int maxType, FractalColo
 void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
   if (onlyFor(r, "agate-turb", s.type == PatternType::agate, "agate", s.type))
     s.agateTurb = r.number("agate-turb", s.agateTurb);
+  const bool function = s.type == PatternType::function;
+  if (function && !r.has("function"))
+    r.error(r.tag() + " type=\"function\" needs 'function' (an expression of x, y and z)");
+  if (onlyFor(r, "function", function, "function", s.type)) {
+    ElementInput in(r);
+    if (std::optional<FunctionInput> f = in.function("function", {"x", "y", "z"}))
+      s.function =
+          std::make_shared<const PatternFunction>(PatternFunction{f->text, f->constants, f->field});
+  }
   const bool quilted = s.type == PatternType::quilted;
   if (onlyFor(r, "control0", quilted, "quilted", s.type))
     s.quilted.control0 = r.number("control0", s.quilted.control0);

@@ -32,8 +32,17 @@ void addPlacement(const PatternPlacement& p, Attributes& a) {
 }
 
 // quilted's controls and the fractals' parameters, those of the pattern's type only.
-void addTypeAttributes(const PatternSpec& s, Attributes& a) {
+void addTypeAttributes(const PatternSpec& s, const SourceLoc& loc, Attributes& a) {
   const PatternSpec d;
+  if (s.type == PatternType::function && s.function) {
+    // Its names other than x, y and z would need <param>s, which a pattern cannot hold.
+    if (!s.function->constants.empty())
+      cannotWrite(loc, "a function pattern whose expression names parameters ('" +
+                           s.function->constants.front().first + "') cannot be written yet");
+    std::string text;  // '$' starts a parameter reference in an attribute: "$$" is one '$'
+    for (char c : s.function->text) text += c == '$' ? std::string("$$") : std::string(1, c);
+    a.emplace_back("function", text);
+  }
   if (s.type == PatternType::agate && s.agateTurb != d.agateTurb)
     a.emplace_back("agate-turb", xmlNumber(s.agateTurb));
   if (s.type == PatternType::quilted) {
@@ -79,7 +88,7 @@ Attributes patternAttributes(const PatternSpec& s, const SourceLoc& loc) {
   if (s.exponent != d.exponent) a.emplace_back("exponent", xmlNumber(s.exponent));
   if (s.noiseGenerator != d.noiseGenerator)
     a.emplace_back("noise-generator", std::to_string(s.noiseGenerator));
-  addTypeAttributes(s, a);
+  addTypeAttributes(s, loc, a);
   return a;
 }
 

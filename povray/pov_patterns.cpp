@@ -1,5 +1,7 @@
 #include "pov_patterns.h"
 
+#include "pov_function.h"
+
 #include "scenegraph/overloaded.h"
 
 #include <stdexcept>
@@ -35,6 +37,14 @@ std::string patternKeyword(const PatternSpec& s) {
   if (s.type == PatternType::gradient) k += " " + povVector(s.axis);
   if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
     k += " " + std::to_string(s.arms);
+  if (s.type == PatternType::function) {
+    std::string problem;
+    const std::optional<std::string> text =
+        s.function ? povFunctionText(s.function->text, s.function->constants, povNumber, problem)
+                   : std::optional<std::string>("0");
+    if (!text) throw std::runtime_error("a function pattern cannot be exported: " + problem);
+    k += " { " + *text + " }";
+  }
   // agate_turb always written, so that POV-Ray's default cannot drift.
   if (s.type == PatternType::agate) k += " agate_turb " + povNumber(s.agateTurb);
   const FractalParams& f = s.fractal;

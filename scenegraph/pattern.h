@@ -3,10 +3,14 @@
 #pragma once
 
 #include "primitives/math.h"
+#include "primitives/scalar_field.h"
 
 #include <iterator>
+#include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace lucent {
@@ -41,6 +45,7 @@ enum class PatternType {
   mandel,
   julia,
   magnet,
+  function,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -103,6 +108,8 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "the Julia set z^power + c of the constant c in the x-y plane"},
     {PatternType::magnet, "magnet", "magnet", true, WaveShape::ramp, false,
      "the magnet fractals of type 1 or 2 in the x-y plane, Mandelbrot or Julia form"},
+    {PatternType::function, "function", "function", true, WaveShape::ramp, false,
+     "the value of an expression of x, y and z (above 1 its fractional part)"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 
@@ -181,6 +188,14 @@ constexpr bool isFractal(PatternType type) {
   return type == PatternType::mandel || type == PatternType::julia || type == PatternType::magnet;
 }
 
+// A function pattern's expression (the contract's expressions, of x, y and z; the names
+// that stood for numbers with their values) and its compiled field.
+struct PatternFunction {
+  std::string text;
+  std::vector<std::pair<std::string, double>> constants;
+  std::shared_ptr<const ScalarField> field;
+};
+
 struct PatternSpec {
   PatternType type = PatternType::bozo;
   PatternPlacement placement;
@@ -194,6 +209,7 @@ struct PatternSpec {
   QuiltedParams quilted;
   FractalParams fractal;
   double agateTurb = 1.0;  // agate's turbulence scale (POV-Ray's agate_turb)
+  std::shared_ptr<const PatternFunction> function;  // type function
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin
 
   WaveShape waveShape() const { return wave ? *wave : patternTypeInfo(type).wave; }

@@ -27,10 +27,12 @@ class TextWriter {
     switch (f.kind) {
       case FunctionValue::Kind::Unsupported:
         throw FunctionError(
-            at, f.describe() + " is " + f.what + ", which Lucent's isosurface cannot use");
+            at, f.describe() + " is " + f.what +
+                    ", which Lucent cannot evaluate in an isosurface or a function pattern");
       case FunctionValue::Kind::Spline:
-        throw FunctionError(
-            at, f.describe() + " is a spline function, which Lucent's isosurface cannot use");
+        throw FunctionError(at, f.describe() +
+                                    " is a spline function, which Lucent cannot evaluate in an "
+                                    "isosurface or a function pattern");
       case FunctionValue::Kind::Internal: {
         const InternalFunction* in = internalFunction(f.internal);
         if (!in || !in->text) throw FunctionError(at, internalRefusal(f.internal));
@@ -109,10 +111,10 @@ class TextWriter {
       }
       case FnOp::Call: {
         if (n.member >= 0)
-          throw FunctionError(n.loc,
-                              n.callee->describe() + " is " +
-                                  (n.callee->what.empty() ? "a spline function" : n.callee->what) +
-                                  ", which Lucent's isosurface cannot use");
+          throw FunctionError(
+              n.loc, n.callee->describe() + " is " +
+                         (n.callee->what.empty() ? "a spline function" : n.callee->what) +
+                         ", which Lucent cannot evaluate in an isosurface or a function pattern");
         std::vector<std::string> inner(n.args.size());
         for (size_t i = 0; i < n.args.size(); ++i) inner[i] = a(i);
         return checked(paren(call(*n.callee, inner, n.loc)), n.loc);

@@ -27,6 +27,35 @@ class NoNames final : public ExpressionNames {
 
 }  // namespace
 
+std::shared_ptr<const PatternFunction> SceneReader::readPatternFunction(TokenStream& in) {
+  const Token at = in.peek();
+  const std::shared_ptr<const FunctionValue> f = in.parseFunction(false, "");
+  std::string text;
+  try {
+    text = functionText(*f, {"x", "y", "z"});
+  } catch (const FunctionError& e) {
+    std::string m = "this function pattern cannot be imported: " + std::string(e.what());
+    if (e.at.line > 0 && e.at.str() != f->loc.str())
+      m += "\n" + e.at.str() + ": note: the cause, in the function's text";
+    keepError(in, f->loc, m);
+    return nullptr;
+  }
+  // The same cache as the isosurfaces': a text of x, y and z says all of the field.
+  std::shared_ptr<const ScalarField>& field = isosurfaceFields_[text];
+  if (!field) {
+    NoNames names;
+    ExpressionError problem;
+    std::optional<FunctionText> compiled = compileFunction(text, {"x", "y", "z"}, names, problem);
+    if (!compiled) {
+      isosurfaceFields_.erase(text);
+      in.error(at, "the pattern's function, written as '" + text +
+                       "', is not a Lucent expression: " + problem.message);
+    }
+    field = makeExpressionField(*compiled);
+  }
+  return std::make_shared<const PatternFunction>(PatternFunction{text, {}, field});
+}
+
 void SceneReader::readIsosurface(PovObject& o, TokenStream& in) {
   const Token fn = in.next();
   if (!isWord(fn, "function"))

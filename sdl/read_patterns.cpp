@@ -41,9 +41,9 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
 constexpr std::string_view kPatternsLucentLacks[] = {
-    "aoi",    "boxed",     "cells",  "cubic",    "cylindrical",     "density_file",
-    "facets", "function",  "object", "pavement", "pigment_pattern", "potential",
-    "slope",  "spherical", "square", "tiling",   "triangular",      "image_pattern"};
+    "aoi",       "boxed",  "cells",    "cubic",           "cylindrical",  "density_file",
+    "facets",    "object", "pavement", "pigment_pattern", "potential",    "slope",
+    "spherical", "square", "tiling",   "triangular",      "image_pattern"};
 
 const PatternTypeInfo* patternType(const Token& t) {
   if (t.kind != TokenKind::Keyword) return nullptr;
@@ -114,6 +114,7 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
     tex.pattern.type = info->type;
     tex.pattern.noiseGenerator = 0;  // the scene's global_settings noise_generator
     readPatternArguments(t, in, tex.pattern);
+    if (tex.pattern.type == PatternType::function) tex.pattern.function = readPatternFunction(in);
     p.pattern = tex;
     p.map.clear();
     return true;

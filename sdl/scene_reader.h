@@ -309,6 +309,10 @@ class SceneReader : public ItemReader {
   // `layered(under, top)` where POV-Ray allows it: neither may be a pattern of textures
   // (POV-Ray's "Cannot layer over a patterned texture"), an error kept at `at` otherwise.
   PovTexture layerOver(PovTexture under, PovTexture top, const SourceLoc& at, TokenStream& in);
+  // `function { F }` of a function pattern (the keyword read): F as Lucent expression text of
+  // x, y and z in POV-Ray's space, compiled once per text. Null, with an error kept, for a
+  // function Lucent cannot evaluate.
+  std::shared_ptr<const PatternFunction> readPatternFunction(TokenStream& in);
   // A texture (one layer, layers or a map) as a Lucent material, placed.
   Material importTexture(const PovTexture& texture, const PovInterior& interior,
                          const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in);

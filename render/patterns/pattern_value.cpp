@@ -209,6 +209,13 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
     case PatternType::julia:
     case PatternType::magnet:
       return fractalValue(spec.type, spec.fractal, p);
+    case PatternType::function: {
+      // POV-Ray's function pattern: above 1 only the fraction (below 0 the value is left
+      // to the frequency's wrap).
+      if (!spec.function || !spec.function->field) return 0.0;
+      const double v = spec.function->field->value(p);
+      return v > 1.0 ? std::fmod(v, 1.0) : v;
+    }
   }
   return 0.0;
 }
