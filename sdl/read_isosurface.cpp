@@ -27,33 +27,43 @@ class NoNames final : public ExpressionNames {
 
 }  // namespace
 
-std::shared_ptr<const PatternFunction> SceneReader::readPatternFunction(TokenStream& in) {
-  const Token at = in.peek();
-  const std::shared_ptr<const FunctionValue> f = in.parseFunction(false, "");
+std::optional<std::pair<std::string, std::shared_ptr<const ScalarField>>>
+SceneReader::compiledFunction(const FunctionValue& f, const std::vector<std::string>& names,
+                              const char* what, TokenStream& in) {
   std::string text;
   try {
-    text = functionText(*f, {"x", "y", "z"});
+    text = functionText(f, names);
   } catch (const FunctionError& e) {
-    std::string m = "this function pattern cannot be imported: " + std::string(e.what());
-    if (e.at.line > 0 && e.at.str() != f->loc.str())
+    std::string m = std::string(what) + " cannot be imported: " + std::string(e.what());
+    if (e.at.line > 0 && e.at.str() != f.loc.str())
       m += "\n" + e.at.str() + ": note: the cause, in the function's text";
-    keepError(in, f->loc, m);
-    return nullptr;
+    keepError(in, f.loc, m);
+    return std::nullopt;
   }
-  // The same cache as the isosurfaces': a text of x, y and z says all of the field.
-  std::shared_ptr<const ScalarField>& field = isosurfaceFields_[text];
+  // A macro that makes the same function again gets the field compiled the first time: the
+  // text, whose names are x, y and z only, says all of it.
+  std::shared_ptr<const ScalarField>& field = compiledFields_[text];
   if (!field) {
-    NoNames names;
+    NoNames noNames;
     ExpressionError problem;
-    std::optional<FunctionText> compiled = compileFunction(text, {"x", "y", "z"}, names, problem);
+    std::optional<FunctionText> compiled = compileFunction(text, {"x", "y", "z"}, noNames, problem);
     if (!compiled) {
-      isosurfaceFields_.erase(text);
-      in.error(at, "the pattern's function, written as '" + text +
-                       "', is not a Lucent expression: " + problem.message);
+      compiledFields_.erase(text);
+      in.error(f.loc, std::string(what) + ", written as '" + text +
+                          "', is not a Lucent expression: " + problem.message);
     }
     field = makeExpressionField(*compiled);
   }
-  return std::make_shared<const PatternFunction>(PatternFunction{text, {}, field});
+  return std::make_pair(text, field);
+}
+
+std::shared_ptr<const PatternFunction> SceneReader::readPatternFunction(TokenStream& in) {
+  const std::shared_ptr<const FunctionValue> f = in.parseFunction(false, "");
+  // A pattern is evaluated in POV-Ray's space: the names as they are.
+  const auto compiled = compiledFunction(*f, {"x", "y", "z"}, "this function pattern", in);
+  if (!compiled) return nullptr;
+  return std::make_shared<const PatternFunction>(
+      PatternFunction{compiled->first, {}, compiled->second});
 }
 
 void SceneReader::readIsosurface(PovObject& o, TokenStream& in) {
@@ -123,30 +133,11 @@ void SceneReader::readIsosurface(PovObject& o, TokenStream& in) {
   }
   if (s.container.kind == IsosurfaceContainer::Sphere && !(s.container.radius > 0.0))
     in.error(o.loc, "the isosurface's contained_by sphere needs a radius > 0");
-  std::string text;
-  try {
-    text = functionText(*f, {"x", "y", "(-z)"});
-  } catch (const FunctionError& e) {
-    std::string m = "this isosurface's function cannot be imported: " + std::string(e.what());
-    if (e.at.line > 0 && e.at.str() != f->loc.str())
-      m += "\n" + e.at.str() + ": note: the cause, in the function's text";
-    keepError(in, f->loc, m);
-    return;
-  }
-  // A macro that makes the same isosurface again gets the field compiled the first time:
-  // the text, whose names are x, y and z only, says all of it.
-  std::shared_ptr<const ScalarField>& field = isosurfaceFields_[text];
-  if (!field) {
-    NoNames names;
-    ExpressionError problem;
-    std::optional<FunctionText> compiled = compileFunction(text, {"x", "y", "z"}, names, problem);
-    if (!compiled) {
-      isosurfaceFields_.erase(text);
-      in.error(f->loc, "the isosurface's function, written as '" + text +
-                           "', is not a Lucent expression: " + problem.message);
-    }
-    field = makeExpressionField(*compiled);
-  }
+  // Lucent's space is POV-Ray's with z negated.
+  const auto compiled = compiledFunction(*f, {"x", "y", "(-z)"}, "this isosurface's function", in);
+  if (!compiled) return;
+  const std::string& text = compiled->first;
+  const std::shared_ptr<const ScalarField>& field = compiled->second;
   s.function = text;
   s.field = field;
   o.shape = s;

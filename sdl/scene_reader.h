@@ -313,6 +313,12 @@ class SceneReader : public ItemReader {
   // x, y and z in POV-Ray's space, compiled once per text. Null, with an error kept, for a
   // function Lucent cannot evaluate.
   std::shared_ptr<const PatternFunction> readPatternFunction(TokenStream& in);
+  // F's Lucent expression text with its parameters named `names`, and its compiled field
+  // (compiled once per text); nullopt, with an error kept naming `what`, for a function
+  // Lucent cannot evaluate.
+  std::optional<std::pair<std::string, std::shared_ptr<const ScalarField>>> compiledFunction(
+      const FunctionValue& f, const std::vector<std::string>& names, const char* what,
+      TokenStream& in);
   // A texture (one layer, layers or a map) as a Lucent material, placed.
   Material importTexture(const PovTexture& texture, const PovInterior& interior,
                          const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in);
@@ -380,7 +386,8 @@ class SceneReader : public ItemReader {
   };
   std::map<std::string, Skipped> skipped_;
   // The isosurface fields compiled so far, by their function's text (read_isosurface.cpp).
-  std::map<std::string, std::shared_ptr<const ScalarField>> isosurfaceFields_;
+  // The fields compiled so far (isosurfaces and function patterns), by expression text.
+  std::map<std::string, std::shared_ptr<const ScalarField>> compiledFields_;
   // The text outlines laid out so far, by font, string and offset (read_shapes.cpp).
   std::map<std::string, std::shared_ptr<TextOutline>> textOutlines_;
   // The material of the objects that take the default texture (unpatterned) as it is now.

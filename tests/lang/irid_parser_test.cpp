@@ -7,17 +7,6 @@
 using namespace lucent;
 using namespace lucent::test;
 
-namespace {
-
-const Material& material(const Scene& s, const std::string& id) {
-  for (const Material& m : s.materials)
-    if (m.id == id) return m;
-  FAIL("no material " << id);
-  return s.materials[0];
-}
-
-}  // namespace
-
 TEST_CASE("irid: amount, thickness and turbulence are read, and all default to 0",
           "[lang][finish][irid]") {
   auto s = parseClean(
@@ -25,16 +14,16 @@ TEST_CASE("irid: amount, thickness and turbulence are read, and all default to 0
       "irid-turbulence=\"0.7\"/>"
       "<material id=\"thicker\" base=\"film\" irid-thickness=\"1.25\"/>"
       "<material id=\"plain\" diffuse=\"0.5\"/>");
-  const Material& film = material(*s, "film");
+  const Material& film = materialNamed(*s, "film");
   CHECK(film.irid == 0.35);
   CHECK(film.iridThickness == 0.4);
   CHECK(film.iridTurbulence == 0.7);
   // base= keeps what the material does not write.
-  const Material& thicker = material(*s, "thicker");
+  const Material& thicker = materialNamed(*s, "thicker");
   CHECK(thicker.irid == 0.35);
   CHECK(thicker.iridThickness == 1.25);
   CHECK(thicker.iridTurbulence == 0.7);
-  const Material& plain = material(*s, "plain");
+  const Material& plain = materialNamed(*s, "plain");
   CHECK(plain.irid == 0.0);
   CHECK(plain.iridThickness == 0.0);
   CHECK(plain.iridTurbulence == 0.0);

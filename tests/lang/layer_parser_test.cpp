@@ -8,17 +8,6 @@
 using namespace lucent;
 using namespace lucent::test;
 
-namespace {
-
-const Material& material(const Scene& s, const std::string& id) {
-  for (const Material& m : s.materials)
-    if (m.id == id) return m;
-  FAIL("no material " << id);
-  return s.materials[0];
-}
-
-}  // namespace
-
 TEST_CASE("layer: each <layer> is read in order, bottom first, with its own terms",
           "[lang][material][layers]") {
   auto s = parseClean(R"XML(
@@ -30,7 +19,7 @@ TEST_CASE("layer: each <layer> is read in order, bottom first, with its own term
     </material>
     <material id="again" base="wood" phong="0.6"/>
     <material id="other" base="wood"><layer transmissive="0.5"/></material>)XML");
-  const Material& wood = material(*s, "wood");
+  const Material& wood = materialNamed(*s, "wood");
   CHECK(wood.ior == 1.2);
   REQUIRE(wood.layers.size() == 2);
   const Material& grain = wood.layers[0];
@@ -45,14 +34,14 @@ TEST_CASE("layer: each <layer> is read in order, bottom first, with its own term
   CHECK(wood.layers[1].reflective == Color(0.25f));
   CHECK(wood.layers[1].diffuse == Color(0.1f));
   // base= keeps the base's layers unless the material writes its own.
-  const Material& again = material(*s, "again");
+  const Material& again = materialNamed(*s, "again");
   CHECK(again.phong == Color(0.6f));
   CHECK(again.layers.size() == 2);
-  const Material& other = material(*s, "other");
+  const Material& other = materialNamed(*s, "other");
   REQUIRE(other.layers.size() == 1);
   CHECK(other.layers[0].transmissive == Color(0.5f));
   CHECK(other.layered());
-  CHECK(!material(*s, "wood").isTransmissive());
+  CHECK(!materialNamed(*s, "wood").isTransmissive());
 }
 
 TEST_CASE("layer: the interior terms, a second texture and a nested layer are errors",

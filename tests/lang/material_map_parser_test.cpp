@@ -7,17 +7,6 @@
 using namespace lucent;
 using namespace lucent::test;
 
-namespace {
-
-const Material& material(const Scene& s, const std::string& id) {
-  for (const Material& m : s.materials)
-    if (m.id == id) return m;
-  FAIL("no material " << id);
-  return s.materials[0];
-}
-
-}  // namespace
-
 TEST_CASE("material-map: the pattern and the entries, named or inline",
           "[lang][material][material-map]") {
   auto s = parseClean(R"XML(
@@ -31,7 +20,7 @@ TEST_CASE("material-map: the pattern and the entries, named or inline",
     <material id="later" diffuse="1 0 0"/>
     <material id="tiles"><material-map><checker scale="2"/>
       <entry at="0" material="later"/><entry at="1" material="floor"/></material-map></material>)XML");
-  const Material& floor = material(*s, "floor");
+  const Material& floor = materialNamed(*s, "floor");
   REQUIRE(floor.mapped());
   CHECK(floor.ior == 1.3);
   CHECK(std::get<PatternTexture>(floor.mapPattern).pattern.type == PatternType::bozo);
@@ -39,10 +28,10 @@ TEST_CASE("material-map: the pattern and the entries, named or inline",
   CHECK(floor.mapEntries[0].at == 0.0);
   CHECK(floor.mapEntries[0].material.diffuse == Color(1, 0, 0));  // defined after its use
   CHECK(floor.mapEntries[1].material.layers.size() == 1);
-  const Material& tiles = material(*s, "tiles");
+  const Material& tiles = materialNamed(*s, "tiles");
   CHECK(std::get<CheckerTexture>(tiles.mapPattern).scale == 2.0);
   CHECK(tiles.mapEntries[1].material.mapped());  // a map as an entry
-  CHECK(!material(*s, "later").mapped());
+  CHECK(!materialNamed(*s, "later").mapped());
 }
 
 TEST_CASE("material-map: what a map cannot hold is an error at its place",

@@ -12,13 +12,6 @@ using namespace lucent::test;
 
 namespace {
 
-const Material& material(const Scene& s, const std::string& id) {
-  for (const Material& m : s.materials)
-    if (m.id == id) return m;
-  FAIL("no material " << id);
-  return s.materials[0];
-}
-
 const char* kBody =
     "<material id=\"pov\" diffuse=\"0.45 0.3 0.1\" phong=\"0.9\" metallic=\"true\" "
     "metallic-amount=\"0.5\" metallic-color=\"0.9 0.6 0.2\" reflective=\"0.5\" "
@@ -33,7 +26,7 @@ const char* kBody =
 TEST_CASE("POV-Ray's material rules: the attributes are read and default to Lucent's rules",
           "[lang][finish][pov-rules]") {
   auto s = parseClean(kBody);
-  const Material& pov = material(*s, "pov");
+  const Material& pov = materialNamed(*s, "pov");
   CHECK(pov.fullTir);
   CHECK(pov.metallicAmount == 0.5);
   REQUIRE(pov.metallicColor);
@@ -42,7 +35,7 @@ TEST_CASE("POV-Ray's material rules: the attributes are read and default to Luce
   CHECK(pov.fadeDistance == 0.8);
   CHECK(pov.fadePower == 1.0);
   CHECK(pov.fadeColor == Color(0.9f, 0.3f, 0.1f));
-  const Material& plain = material(*s, "plain");
+  const Material& plain = materialNamed(*s, "plain");
   CHECK_FALSE(plain.fullTir);
   CHECK(plain.metallicAmount == 1.0);
   CHECK_FALSE(plain.metallicColor);

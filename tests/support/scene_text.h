@@ -46,6 +46,14 @@ inline std::unique_ptr<Scene> parseClean(const std::string& body,
   return parseRequired(body, name, head, true);
 }
 
+// The scene's material of that id (a test failure if there is none).
+inline const Material& materialNamed(const Scene& s, const std::string& id) {
+  for (const Material& m : s.materials)
+    if (m.id == id) return m;
+  FAIL("no material " << id);
+  return s.materials.at(0);
+}
+
 // A written scene's text without its comment lines (lucent convert's comments name the file
 // and lines read, which differ between two writings of one scene).
 inline std::string withoutComments(const std::string& text) {
