@@ -369,10 +369,56 @@ NormalSpec parseNormal(ElementReader& r) {
   return n;
 }
 
+namespace {
+
+// The names of the projections and interpolations (POV-Ray's map_type and interpolate).
+const std::vector<std::pair<std::string_view, ImageProjection>> kProjections = {
+    {"uv", ImageProjection::uv},
+    {"planar", ImageProjection::planar},
+    {"spherical", ImageProjection::spherical},
+    {"cylindrical", ImageProjection::cylindrical},
+    {"torus", ImageProjection::torus}};
+const std::vector<std::pair<std::string_view, ImageInterpolation>> kInterpolations = {
+    {"none", ImageInterpolation::none},
+    {"bilinear", ImageInterpolation::bilinear},
+    {"bicubic", ImageInterpolation::bicubic},
+    {"normalized", ImageInterpolation::normalized}};
+
+}  // namespace
+
+const std::vector<std::string_view>& imageReadingAttributes() {
+  static const std::vector<std::string_view> names = [] {
+    std::vector<std::string_view> n{"projection", "once", "interpolate"};
+    n.insert(n.end(), placementAttributes().begin(), placementAttributes().end());
+    return n;
+  }();
+  return names;
+}
+
+void parseImageReading(ElementReader& r, ImageProjection& projection, PatternPlacement& placement,
+                       bool& once, ImageInterpolation& interpolation) {
+  projection = r.choice("projection", projection, kProjections);
+  if (projection == ImageProjection::uv) {
+    for (std::string_view a : placementAttributes())
+      if (r.has(std::string(a).c_str()))
+        r.attrError(std::string(a).c_str(),
+                    "'" + std::string(a) + "' places a projected " + r.tag() +
+                        " only: give a 'projection' (at the shape's (u,v) the shape places it)");
+  } else {
+    placement = parsePlacement(r);
+  }
+  once = r.boolean("once", once);
+  interpolation = r.choice("interpolate", interpolation, kInterpolations);
+}
+
 BumpMapSpec parseBumpMap(ElementReader& r) {
-  r.checkAttributes({"src", "depth"});
+  std::vector<std::string_view> attributes{"src", "depth", "keep-facing-away"};
+  attributes.insert(attributes.end(), imageReadingAttributes().begin(),
+                    imageReadingAttributes().end());
+  r.checkAttributes(attributes);
   BumpMapSpec b;
   b.loc = r.loc();
+  parseImageReading(r, b.projection, b.placement, b.once, b.interpolation);
   if (!r.has("src")) {
     r.error("<bump-map> needs a 'src' attribute (the image file whose grey levels are the bumps)");
   } else if (auto src = r.text("src")) {
@@ -381,6 +427,7 @@ BumpMapSpec parseBumpMap(ElementReader& r) {
     else b.path = f.path.string();
   }
   b.depth = r.number("depth", b.depth);
+  b.keepFacingAway = r.boolean("keep-facing-away", b.keepFacingAway);
   noChildren(r);
   return b;
 }

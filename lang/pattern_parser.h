@@ -26,6 +26,13 @@ PatternPlacement parsePlacement(ElementReader& r);
 FilterTransmit parseFilterTransmit(ElementReader& r, const std::string& n);
 
 const std::vector<std::string_view>& placementAttributes();
+
+// The attributes <image> and <bump-map> share: `projection` (uv, planar, spherical,
+// cylindrical, torus), a projected one's placement (placementAttributes; an error at (u,v)),
+// `once` and `interpolate`.
+const std::vector<std::string_view>& imageReadingAttributes();
+void parseImageReading(ElementReader& r, ImageProjection& projection, PatternPlacement& placement,
+                       bool& once, ImageInterpolation& interpolation);
 // A block pattern's (checker, hexagon, brick) optional <pigment-list> child of `count`
 // entries; an element with one must not have the attributes `colours` too.
 std::vector<TextureMapEntry> parseBlockPigments(ElementReader& r, size_t count,

@@ -31,6 +31,32 @@ void addPlacement(const PatternPlacement& p, Attributes& a) {
   if (p.lambda != d.lambda) a.emplace_back("lambda", xmlNumber(p.lambda));
 }
 
+// The attributes <image> and <bump-map> share: a projection and its placement, once,
+// interpolate (those that differ from the defaults).
+template <class Spec>
+void addImageReading(const Spec& t, Attributes& a) {
+  static const char* const kProjection[] = {"uv", "planar", "spherical", "cylindrical", "torus"};
+  static const char* const kInterpolation[] = {"none", "bilinear", "bicubic", "normalized"};
+  if (t.projection != ImageProjection::uv) {
+    a.emplace_back("projection", kProjection[static_cast<int>(t.projection)]);
+    addPlacement(t.placement, a);
+  }
+  if (t.once) a.emplace_back("once", "true");
+  if (t.interpolation != ImageInterpolation::bilinear)
+    a.emplace_back("interpolate", kInterpolation[static_cast<int>(t.interpolation)]);
+}
+
+// <image>'s attributes: (u,v)'s scale, or a projection's placement; how it is read.
+Attributes imageAttributes(const ImageTexture& t, const std::string& folder) {
+  Attributes a{{"src", fileReference(t.path, folder)}};
+  if (t.projection == ImageProjection::uv)
+    a.emplace_back("scale", xmlNumber(t.scale.x) + " " + xmlNumber(t.scale.y));
+  addImageReading(t, a);
+  if (t.all.filter != 0.0f) a.emplace_back("filter", xmlNumber(t.all.filter));
+  if (t.all.transmit != 0.0f) a.emplace_back("transmit", xmlNumber(t.all.transmit));
+  return a;
+}
+
 // quilted's controls and the fractals' parameters, those of the pattern's type only.
 void addTypeAttributes(const PatternSpec& s, const SourceLoc& loc, Attributes& a) {
   const PatternSpec d;
@@ -177,10 +203,7 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
           addPlacement(t.placement, a);
           writeBlock(std::string(T::kind.element), a, t.pigments, loc, out, folder);
         } else if constexpr (std::is_same_v<T, ImageTexture>) {
-          out.open(std::string(T::kind.element),
-                   {{"src", fileReference(t.path, folder)},
-                    {"scale", xmlNumber(t.scale.x) + " " + xmlNumber(t.scale.y)}},
-                   true);
+          out.open(std::string(T::kind.element), imageAttributes(t, folder), true);
         } else if constexpr (std::is_same_v<T, PatternTexture>) {
           if (t.pigments.empty()) return writePatternTexture(t, loc, out);
           out.open("pattern", patternAttributes(t.pattern, loc), false);
@@ -279,11 +302,13 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
   }
   writeTexture(m.texture, m.loc, out, folder);
   if (m.normal) writeNormal(*m.normal, m.loc, out);
-  if (m.bumpMap)
-    out.open(
-        "bump-map",
-        {{"src", fileReference(m.bumpMap->path, folder)}, {"depth", xmlNumber(m.bumpMap->depth)}},
-        true);
+  if (m.bumpMap) {
+    Attributes a{{"src", fileReference(m.bumpMap->path, folder)},
+                 {"depth", xmlNumber(m.bumpMap->depth)}};
+    addImageReading(*m.bumpMap, a);
+    if (m.bumpMap->keepFacingAway) a.emplace_back("keep-facing-away", "true");
+    out.open("bump-map", a, true);
+  }
   // The layers over it, bottom first, each with its own surface terms and children.
   for (const Material& layer : m.layers) {
     XmlOut children;

@@ -27,9 +27,22 @@ Texture readTexture(ElementReader& t, const CheckerTexture*) {
   return c;
 }
 
+// <image>'s own attributes beside those <bump-map> shares (pattern_parser.h).
+void readImageProjection(ElementReader& t, ImageTexture& img) {
+  if (img.projection != ImageProjection::uv && t.has("scale"))
+    t.attrError("scale",
+                "'scale' is for an image at the shape's (u,v); a projected image "
+                "is placed by 'transform'");
+  img.all = parseFilterTransmit(t, "");
+}
+
 Texture readTexture(ElementReader& t, const ImageTexture*) {
-  t.checkAttributes({"src", "scale"});
+  std::vector<std::string_view> attributes{"src", "scale", "filter", "transmit"};
+  attributes.insert(attributes.end(), imageReadingAttributes().begin(),
+                    imageReadingAttributes().end());
+  t.checkAttributes(attributes);
   ImageTexture img;
+  parseImageReading(t, img.projection, img.placement, img.once, img.interpolation);
   img.loc = t.loc();
   if (!t.has("src")) {
     t.error("<image> needs a 'src' attribute (the image file)");
@@ -51,6 +64,7 @@ Texture readTexture(ElementReader& t, const ImageTexture*) {
       else img.scale = v;
     }
   }
+  readImageProjection(t, img);
   t.forEachChild([&](pugi::xml_node n) {
     ElementReader(t.ctx(), t.file(), n)
         .error("<image> takes no child elements, got <" + std::string(n.name()) + ">");

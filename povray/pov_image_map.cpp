@@ -1,5 +1,7 @@
 #include "pov_image_map.h"
 
+#include "pov_patterns.h"
+
 #include "images/image_plugin.h"
 
 #include <fmt/core.h>
@@ -8,6 +10,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <optional>
+#include <utility>
 
 namespace lucent {
 
@@ -62,27 +66,71 @@ ImageFacts imageFacts(const std::string& path) {
   return f;
 }
 
-}  // namespace
+// `image_map { FORMAT "file" gamma map_type once interpolate filter all transmit all }`:
+// the material's filter and transmit added to the image's own (POV-Ray 3.7 adds `all` to
+// every pixel).
+std::string imageMapText(const ImageTexture& image, const std::string& format,
+                         const ImageFacts& facts, int mapType, double filter, double transmit) {
+  static const char* const kInterpolate[] = {"", " interpolate 2", " interpolate 3",
+                                             " interpolate 4"};
+  std::string absolute = std::filesystem::absolute(image.path).lexically_normal().string();
+  std::string map = fmt::format("{} {{ {} {}", ImageTexture::kind.pov, format, povString(absolute));
+  if (!facts.floating) map += facts.srgb ? " gamma srgb" : " gamma 1.0";
+  if (mapType != 0) map += " map_type " + std::to_string(mapType);
+  if (image.once) map += " once";
+  map += kInterpolate[static_cast<int>(image.interpolation)];
+  filter += image.all.filter;
+  transmit += image.all.transmit;
+  if (filter != 0.0) map += " filter all " + povFloat(filter);
+  if (transmit != 0.0) map += " transmit all " + povFloat(transmit);
+  return map + " }";
+}
 
-void writeImagePigment(const ImageTexture& image, double filter, double transmit,
-                       const ImageMapping& mapping, const char* shapeName, const SourceLoc& loc,
-                       const std::string& materialName, PovWriter& out, PovIssues& issues) {
+// The image's format and facts, or an error naming it (then nothing).
+std::optional<std::pair<std::string, ImageFacts>> readableImage(const ImageTexture& image,
+                                                                const std::string& materialName,
+                                                                PovIssues& issues) {
   std::string format = povImageFormat(image.path);
   if (format.empty()) {
     issues.error(image.loc,
                  fmt::format("{}: POV-Ray cannot read the image '{}'", materialName, image.path));
-    return;
+    return std::nullopt;
   }
   ImageFacts facts = imageFacts(image.path);
   if (!facts.readable) {
     issues.error(image.loc,
                  fmt::format("{}: cannot read the image '{}'", materialName, image.path));
-    return;
+    return std::nullopt;
   }
   if (facts.alpha)
     issues.warning(image.loc, fmt::format("{}: the image '{}' has an alpha channel, which "
                                           "POV-Ray uses as transparency and Lucent ignores",
                                           materialName, image.path));
+  return std::make_pair(format, facts);
+}
+
+}  // namespace
+
+void writeProjectedImagePigment(const ImageTexture& image, double filter, double transmit,
+                                const std::string& materialName, PovWriter& out,
+                                PovIssues& issues) {
+  const auto readable = readableImage(image, materialName, issues);
+  if (!readable) return;
+  // POV-Ray's map_type of each projection (the enum's order: uv, planar, spherical, ...).
+  static const int kMapType[] = {0, 0, 1, 2, 5};
+  out.open("pigment");
+  out.line(imageMapText(image, readable->first, readable->second,
+                        kMapType[static_cast<int>(image.projection)], filter, transmit));
+  writePlacement(image.placement, out);
+  out.close();
+}
+
+void writeImagePigment(const ImageTexture& image, double filter, double transmit,
+                       const ImageMapping& mapping, const char* shapeName, const SourceLoc& loc,
+                       const std::string& materialName, PovWriter& out, PovIssues& issues) {
+  const auto readable = readableImage(image, materialName, issues);
+  if (!readable) return;
+  const auto& [format, facts] = *readable;
   if (mapping.kind == ImageMapping::None) {
     issues.error(loc, fmt::format("<{}> with the image texture of {}: POV-Ray has no mapping "
                                   "equal to Lucent's (u,v) for it (plane, disc, box, sphere "
@@ -99,14 +147,8 @@ void writeImagePigment(const ImageTexture& image, double filter, double transmit
     return;
   }
 
-  std::string absolute = std::filesystem::absolute(image.path).lexically_normal().string();
-  std::string map = fmt::format("{} {{ {} {}", ImageTexture::kind.pov, format, povString(absolute));
-  if (!facts.floating) map += facts.srgb ? " gamma srgb" : " gamma 1.0";
-  if (mapping.kind == ImageMapping::Spherical) map += " map_type 1";
-  map += " interpolate 2";
-  if (filter > 0.0) map += " filter all " + povFloat(filter);
-  if (transmit > 0.0) map += " transmit all " + povFloat(transmit);
-  map += " }";
+  const std::string map = imageMapText(
+      image, format, facts, mapping.kind == ImageMapping::Spherical ? 1 : 0, filter, transmit);
 
   // Lucent reads the image at (u / scale.x, v / scale.y).
   const Vec3 scale(image.scale.x, image.scale.y, 1.0);
@@ -141,6 +183,32 @@ void writeImagePigment(const ImageTexture& image, double filter, double transmit
   out.close();
 }
 
+void writeProjectedBumpMapNormal(const BumpMapSpec& bump, const std::string& materialName,
+                                 PovWriter& out, PovIssues& issues) {
+  std::string format = povImageFormat(bump.path);
+  ImageFacts facts = imageFacts(bump.path);
+  if (format.empty() || !facts.readable) {
+    issues.error(bump.loc,
+                 fmt::format("{}: POV-Ray cannot read the bump map '{}'", materialName, bump.path));
+    return;
+  }
+  static const int kMapType[] = {0, 0, 1, 2, 5};
+  static const char* const kInterpolate[] = {"", " interpolate 2", " interpolate 3",
+                                             " interpolate 4"};
+  std::string absolute = std::filesystem::absolute(bump.path).lexically_normal().string();
+  std::string map = fmt::format("bump_map {{ {} {}", format, povString(absolute));
+  if (!facts.floating) map += " gamma 1.0";
+  map += " map_type " + std::to_string(kMapType[static_cast<int>(bump.projection)]);
+  if (bump.once) map += " once";
+  map += kInterpolate[static_cast<int>(bump.interpolation)];
+  map += " use_color }";
+  out.open("normal");
+  out.line(map);
+  out.line("bump_size " + povNumber(bump.depth));
+  writePlacement(bump.placement, out);
+  out.close();
+}
+
 void writeBumpMapNormal(const BumpMapSpec& bump, const ImageMapping& mapping, const char* shapeName,
                         const SourceLoc& loc, const std::string& materialName, PovWriter& out,
                         PovIssues& issues) {
@@ -166,7 +234,11 @@ void writeBumpMapNormal(const BumpMapSpec& bump, const ImageMapping& mapping, co
   std::string absolute = std::filesystem::absolute(bump.path).lexically_normal().string();
   std::string map = fmt::format("bump_map {{ {} {}", format, povString(absolute));
   if (!facts.floating) map += " gamma 1.0";
-  map += " interpolate 2 use_color }";
+  static const char* const kInterpolate[] = {"", " interpolate 2", " interpolate 3",
+                                             " interpolate 4"};
+  if (bump.once) map += " once";
+  map += kInterpolate[static_cast<int>(bump.interpolation)];
+  map += " use_color }";
   out.open("normal");
   out.line("uv_mapping");
   out.line(map);

@@ -32,6 +32,16 @@ void writeImagePigment(const ImageTexture& image, double filter, double transmit
                        const ImageMapping& mapping, const char* shapeName, const SourceLoc& loc,
                        const std::string& materialName, PovWriter& out, PovIssues& issues);
 
+// Writes `pigment { image_map {... map_type N} <placement> }` for a projected <image>
+// (projection other than uv): POV-Ray's own projection, so any shape can wear it.
+void writeProjectedImagePigment(const ImageTexture& image, double filter, double transmit,
+                                const std::string& materialName, PovWriter& out, PovIssues& issues);
+
+// Writes `normal { bump_map {... map_type N} bump_size d <placement> }` for a projected
+// <bump-map>: POV-Ray's own projection and bend, on any shape.
+void writeProjectedBumpMapNormal(const BumpMapSpec& bump, const std::string& materialName,
+                                 PovWriter& out, PovIssues& issues);
+
 // Writes `normal { uv_mapping bump_map {...} bump_size d }` for a <bump-map>: POV-Ray's
 // uv-mapped normal reads the image at the shape's (u, v) with the world normal, as Lucent
 // does (render/bump_map.h), but POV-Ray has such (u, v) equal to Lucent's only for meshes

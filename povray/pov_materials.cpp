@@ -516,6 +516,9 @@ void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const Imag
         writeCheckerPigment(checker, s.pigmentScale, s.filter, s.transmit, out);
       },
       [&](const ImageTexture& image) {
+        if (image.projection != ImageProjection::uv && issues)
+          return writeProjectedImagePigment(image, s.filter, s.transmit, materialLabel(m), out,
+                                            *issues);
         if (!mapping) return plain();
         writeImagePigment(image, s.filter, s.transmit, *mapping, shapeName, *loc, materialLabel(m),
                           out, *issues);
@@ -536,7 +539,9 @@ void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const Imag
   if (s.useTexture) std::visit(pigment, m.texture);
   else plain();
   if (m.normal) writeNormal(*m.normal, out);
-  if (m.bumpMap && mapping)
+  if (m.bumpMap && m.bumpMap->projection != ImageProjection::uv && issues)
+    writeProjectedBumpMapNormal(*m.bumpMap, materialLabel(m), out, *issues);
+  else if (m.bumpMap && mapping)
     writeBumpMapNormal(*m.bumpMap, *mapping, shapeName, *loc, materialLabel(m), out, *issues);
 
   out.open("finish");

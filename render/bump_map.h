@@ -25,4 +25,11 @@ float bumpGrey(const Color& c);
 // normalize(b.x·X' + b.y·Y' − b.z·Z'); a flat image leaves n as it is.
 Vec3 bumpMapNormal(const ImageMap& map, double depth, const Vec2& uv, const Vec3& n);
 
+// The same for a bump map read at image point `xy` (render/image_projection.h: x across, y
+// down from the top row, in pixels) with POV-Ray's interpolation and `once` edge rule; its
+// neighbours are (x − 1, y + 1) and (x + 1, y + 1), wrapped round the image as POV-Ray
+// wraps them.
+Vec3 bumpMapNormalAt(const Image& pixels, double depth, const Vec2& xy,
+                     ImageInterpolation interpolation, bool once, const Vec3& n);
+
 }  // namespace lucent

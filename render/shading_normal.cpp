@@ -1,7 +1,9 @@
 #include "shading_normal.h"
 
 #include "bump_map.h"
+#include "image_projection.h"
 #include "patterns/normal_perturbation.h"
+#include "patterns/pattern_point.h"
 
 namespace lucent {
 
@@ -16,10 +18,45 @@ Vec3 perturbedShadingNormal(const NormalSpec& normal, const Transform& worldFrom
   return normal.keepFacingAway || glm::dot(world, v) > 0.0 ? world : n;
 }
 
-Vec3 bumpedShadingNormal(const ImageMap& map, const BumpMapSpec& bump, const SurfaceInfo& surface,
+namespace {
+
+// A projected bump map's bent normal: the world normal carried into the bump map's pattern
+// space (through the object's and the placement's inverse transposes, normalised as POV-Ray's
+// Warp_Normal), bent there, and carried back; n itself off a `once` image.
+Vec3 projectedBump(const ImageMap& map, const BumpMapSpec& bump, const Transform& worldFromObject,
+                   const SurfaceInfo& surface, const Vec3& n) {
+  const std::optional<Vec2> xy =
+      projectToImage(bump.projection, warpPoint(bump.placement, surface.pObject), map.width(),
+                     map.height(), bump.once);
+  if (!xy) return n;
+  const Mat3 place(bump.placement.patternFromObject);
+  const Vec3 objectNormal =
+      glm::normalize(glm::transpose(Mat3(worldFromObject.worldFromObject())) * n);
+  const Vec3 patternNormal = glm::normalize(glm::transpose(glm::inverse(place)) * objectNormal);
+  const Vec3 bent =
+      bumpMapNormalAt(map.pixels(), bump.depth, *xy, bump.interpolation, bump.once, patternNormal);
+  return glm::normalize(
+      worldFromObject.normalToWorld(glm::normalize(glm::transpose(place) * bent)));
+}
+
+}  // namespace
+
+Vec3 bumpedShadingNormal(const ImageMap& map, const BumpMapSpec& bump,
+                         const Transform& worldFromObject, const SurfaceInfo& surface,
                          const Vec3& n, const Vec3& v) {
-  const Vec3 bent = bumpMapNormal(map, bump.depth, surface.hasUV ? surface.uv : Vec2(0.0), n);
-  return glm::dot(bent, v) > 0.0 ? bent : n;
+  const Vec2 uv = surface.hasUV ? surface.uv : Vec2(0.0);
+  Vec3 bent;
+  if (bump.plainUV()) {
+    bent = bumpMapNormal(map, bump.depth, uv, n);
+  } else if (bump.projection == ImageProjection::uv) {
+    // At (u,v) with POV-Ray's own filters; off a `once` image the normal is not bent.
+    const std::optional<Vec2> xy = uvToImage(uv, Vec2(1.0), map.width(), map.height(), bump.once);
+    if (!xy) return n;
+    bent = bumpMapNormalAt(map.pixels(), bump.depth, *xy, bump.interpolation, bump.once, n);
+  } else {
+    bent = projectedBump(map, bump, worldFromObject, surface, n);
+  }
+  return bump.keepFacingAway || glm::dot(bent, v) > 0.0 ? bent : n;
 }
 
 }  // namespace lucent

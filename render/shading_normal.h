@@ -21,8 +21,10 @@ Vec3 perturbedShadingNormal(const NormalSpec& normal, const Transform& worldFrom
                             const SurfaceInfo& surface, const Vec3& n, const Vec3& v);
 
 // The same for a <bump-map> (render/bump_map.h) with its loaded image: read at the hit's
-// (u,v), or at (0,0) on a shape without one (as an <image> is), in world space.
-Vec3 bumpedShadingNormal(const ImageMap& map, const BumpMapSpec& bump, const SurfaceInfo& surface,
+// (u,v), or at (0,0) on a shape without one (as an <image> is), in world space; or
+// projected from its pattern space, where the normal is bent (as POV-Ray's bump_map).
+Vec3 bumpedShadingNormal(const ImageMap& map, const BumpMapSpec& bump,
+                         const Transform& worldFromObject, const SurfaceInfo& surface,
                          const Vec3& n, const Vec3& v);
 
 }  // namespace lucent

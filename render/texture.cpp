@@ -6,6 +6,7 @@
 #include "patterns/pattern_value.h"
 
 #include "image_map_cache.h"
+#include "image_projection.h"
 #include "image_read.h"
 
 #include "images/image_plugin.h"
@@ -57,6 +58,7 @@ ImageMap::~ImageMap() = default;
 
 int ImageMap::width() const { return impl_->linear.width; }
 int ImageMap::height() const { return impl_->linear.height; }
+const Image& ImageMap::pixels() const { return impl_->linear; }
 
 Color ImageMap::lookup(const Vec2& uv, const Vec2& scale) const {
   float s = static_cast<float>(uv.x / scale.x);
@@ -236,6 +238,22 @@ Vec3 objectError(const SurfaceInfo& surface, const Instance& leaf) {
   return errorThrough(leaf.transform().objectFromWorld(), surface.pError);
 }
 
+// An <image>'s colour at a hit: at the shape's (u,v) (a shape without them reads (0,0)), or
+// projected from pattern space. Off a `once` image the surface is clear, as POV-Ray's.
+PigmentColor imageColour(const ImageMap& map, const ImageTexture& image,
+                         const SurfaceInfo& surface) {
+  const Vec2 uv = surface.hasUV ? surface.uv : Vec2(0.0);
+  if (image.plainUV()) return {map.lookup(uv, image.scale), {}};
+  const int w = map.width(), h = map.height();
+  const std::optional<Vec2> xy =
+      image.projection == ImageProjection::uv
+          ? uvToImage(uv, image.scale, w, h, image.once)
+          : projectToImage(image.projection, warpPoint(image.placement, surface.pObject), w, h,
+                           image.once);
+  if (!xy) return {Color(1.0f), {0.0f, 1.0f}};
+  return sampleImage(map.pixels(), *xy, image.interpolation, image.once, image.all);
+}
+
 struct TextureColour {
   const std::shared_ptr<const ImageMap>& map;
   const SurfaceInfo& surface;
@@ -253,8 +271,7 @@ struct TextureColour {
                                                                                   : checker.color2;
   }
   Color operator()(const ImageTexture& image) const {
-    // A shape without (u,v) reads the image at (0,0): one flat colour.
-    return map->lookup(surface.hasUV ? surface.uv : Vec2(0.0), image.scale);
+    return imageColour(*map, image, surface).rgb;
   }
   Color operator()(const PatternTexture& pattern) const {
     if (!pattern.pigments.empty()) return nested(pattern);
@@ -292,7 +309,7 @@ PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& 
 PigmentColor TextureSet::evalPigment(uint32_t index, const Material& material,
                                      const SurfaceInfo& surface, const Instance& leaf) const {
   if (const auto* image = std::get_if<ImageTexture>(&material.texture))
-    return {maps_[index]->lookup(surface.hasUV ? surface.uv : Vec2(0.0), image->scale), {}};
+    return imageColour(*maps_[index], *image, surface);
   return pigmentAt(material.texture, surface.pObject, objectError(surface, leaf));
 }
 

@@ -54,6 +54,8 @@ class ImageMap {
   Color lookupPixel(double x, double y) const;
   int width() const;
   int height() const;
+  // The decoded pixels (linear RGB, or as stored for a bump map), row 0 the top.
+  const Image& pixels() const;
 
  private:
   struct Impl;

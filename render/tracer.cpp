@@ -334,7 +334,8 @@ Vec3 Tracer::shadingNormal(const WorldLeaf& leaf, const SurfaceInfo& s, bool fro
   unbent = n;
   if (m.normal) n = perturbedShadingNormal(*m.normal, leaf.instance->transform(), s, n, v);
   if (m.bumpMap)
-    n = bumpedShadingNormal(*textures_.bumpMap(leaf.materialIndex), *m.bumpMap, s, n, v);
+    n = bumpedShadingNormal(*textures_.bumpMap(leaf.materialIndex), *m.bumpMap,
+                            leaf.instance->transform(), s, n, v);
   return n;
 }
 

@@ -16,12 +16,24 @@
 
 namespace lucent {
 
-// <bump-map src depth>: POV-Ray's bump_map read at the shape's (u,v): the shading normal
-// bent by the image's grey levels (render/bump_map.h). The renderer loads the pixels.
+// <bump-map src depth>: POV-Ray's bump_map read at the shape's (u,v), or projected from
+// pattern space as an <image> is: the shading normal bent by the image's grey levels
+// (render/bump_map.h). The renderer loads the pixels.
 struct BumpMapSpec {
   std::string path;    // resolved, as ImageTexture's
   double depth = 0.5;  // POV-Ray's bump_size
   SourceLoc loc;
+  ImageProjection projection = ImageProjection::uv;
+  PatternPlacement placement;  // a projected bump map's pattern space
+  bool once = false;           // one copy: off it the normal is not bent
+  ImageInterpolation interpolation = ImageInterpolation::bilinear;
+  bool keepFacingAway = false;  // keep a bent normal that faces away (POV-Ray's rule)
+
+  // Read at (u,v) with OpenImageIO's bilinear filter, as before projections existed.
+  bool plainUV() const {
+    return projection == ImageProjection::uv && !once &&
+           interpolation == ImageInterpolation::bilinear;
+  }
 };
 
 struct MaterialMapEntry;

@@ -44,14 +44,34 @@ struct CheckerTexture {
   std::vector<TextureMapEntry> pigments{};
 };
 
-// <image src scale>: an image looked up with the shape's (u,v). The pixels are loaded by
-// the renderer; the scene keeps the resolved path.
+// How an <image> finds its pixel: at the shape's (u,v), or projected from pattern space as
+// POV-Ray's image_map `map_type` 0 (planar), 1 (spherical), 2 (cylindrical), 5 (torus).
+enum class ImageProjection { uv, planar, spherical, cylindrical, torus };
+// How the pixels around that point are blended (POV-Ray's `interpolate`: none, 2, 3, 4).
+enum class ImageInterpolation { none, bilinear, bicubic, normalized };
+
+// <image src scale projection transform once interpolate filter transmit>: an image looked
+// up with the shape's (u,v) or projected (render/image_projection.h). The pixels are loaded
+// by the renderer; the scene keeps the resolved path.
 struct ImageTexture {
   static constexpr TextureKindInfo kind{
-      "image", "image_map", "An image looked up with the shape's (u,v) texture coordinates."};
+      "image", "image_map",
+      "An image looked up with the shape's (u,v) texture coordinates, or projected from "
+      "pattern space as POV-Ray's image_map."};
   std::string path;  // resolved, absolute or relative to the working directory
   Vec2 scale{1.0, 1.0};
   SourceLoc loc;
+  ImageProjection projection = ImageProjection::uv;
+  PatternPlacement placement;  // a projected image's pattern space (unused at (u,v))
+  bool once = false;           // one copy: outside it the surface is clear (transmit 1)
+  ImageInterpolation interpolation = ImageInterpolation::bilinear;
+  FilterTransmit all{};  // POV-Ray's filter all / transmit all, added to every pixel
+
+  // Looked up with OpenImageIO's bilinear filter at (u,v), as before projections existed.
+  bool plainUV() const {
+    return projection == ImageProjection::uv && !once &&
+           interpolation == ImageInterpolation::bilinear && !all.any();
+  }
 };
 
 // <pattern type>: a procedural pattern's value turned into a colour by its colour map (an
@@ -138,6 +158,7 @@ inline bool textureSeeThrough(const Texture& t) {
     return b->pigments.empty() ? b->spec.ft1.any() || b->spec.ft2.any()
                                : entriesSeeThrough(b->pigments);
   if (const auto* a = std::get_if<AverageTexture>(&t)) return entriesSeeThrough(a->entries);
+  if (const auto* i = std::get_if<ImageTexture>(&t)) return i->once || i->all.any();
   return false;
 }
 

@@ -6,6 +6,7 @@
 
 #include "scenegraph/material.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,11 +59,13 @@ inline PatternPlacement* placementOf(Texture& t) {
   if (auto* h = std::get_if<HexagonTexture>(&t)) return &h->placement;
   if (auto* b = std::get_if<BrickTexture>(&t)) return &b->placement;
   if (auto* a = std::get_if<AverageTexture>(&t)) return &a->placement;
+  if (auto* i = std::get_if<ImageTexture>(&t)) return &i->placement;
   return nullptr;
 }
 
 struct PovNormal {
   NormalSpec spec;
+  std::optional<BumpMapSpec> bump;  // `bump_map { }` instead of a pattern
   PovTransform transform;
   bool warped = false;   // its turbulence is a `warp { turbulence }`
   bool average = false;  // `average` was read: its normal_map fills spec.average

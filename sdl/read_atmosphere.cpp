@@ -75,6 +75,10 @@ PovSkySphere SceneReader::readSkySphereBlock(const SourceLoc& loc, TokenStream& 
     if (isWord(t, "pigment")) {
       // POV-Ray's sky pigments start from its plain black pigment, not the #default.
       sky.pigments.push_back(readPigment(in, PovPigment{}));
+      if (const auto* image = std::get_if<ImageTexture>(&sky.pigments.back().pattern))
+        keepError(in, image->loc,
+                  "'image_map' in a sky_sphere is not supported by Lucent (a sky's pigments are "
+                  "patterns; an image is read on a shape)");
       continue;
     }
     unreadInBlock(t, in);

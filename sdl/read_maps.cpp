@@ -83,6 +83,7 @@ std::vector<TextureMapEntry> SceneReader::readPigmentMap(TokenStream& in, const 
     if (!t.is("[")) in.error(t, "'[' or '}' expected in a pigment map, not " + t.describe());
     const double value = entryValue(in, average);
     entries.push_back(entryOf(readPigmentBody(in, defaults_.pigment, true), value));
+    refuseNestedImage(entries.back(), in);
   }
   if (entries.empty()) in.error(at, "a pigment map needs at least one entry");
   for (size_t i = 1; i < entries.size() && !average; ++i)
@@ -122,12 +123,21 @@ bool SceneReader::readPigmentMapKeyword(const Token& t, TokenStream& in, PovPigm
 }
 
 // A block pattern's `pigment {..} [,] pigment {..}` list (the first 'pigment' next).
+// Lucent loads an image's pixels per material, not per entry of a map or a list.
+void SceneReader::refuseNestedImage(const TextureMapEntry& e, TokenStream& in) {
+  if (const auto* image = std::get_if<ImageTexture>(&e.texture))
+    keepError(in, image->loc,
+              "'image_map' inside a map or a list of pigments is not supported by Lucent (an "
+              "image's pixels are loaded per material; give the object the image_map itself)");
+}
+
 bool SceneReader::readBlockPigments(TokenStream& in, PovPigment& p, size_t count) {
   std::vector<TextureMapEntry> list;
   const SourceLoc at = in.peek().loc();
   while (list.size() < count && isWord(in.peek(), "pigment")) {
     in.next();
     list.push_back(entryOf(readPigment(in, defaults_.pigment), 0.0));
+    refuseNestedImage(list.back(), in);
     in.allow(",");
   }
   if (list.size() < count) {
@@ -164,6 +174,10 @@ bool SceneReader::readNormalAverage(const Token& t, TokenStream& in, PovNormal& 
     WeightedNormal w;
     w.weight = entryValue(in, true);
     const PovNormal entry = readNormalBody(in, nullptr, true);
+    if (entry.bump)
+      keepError(in, entry.bump->loc,
+                "'bump_map' inside a normal map is not supported by Lucent (a bump map's "
+                "pixels are loaded per material; give the texture the bump_map itself)");
     w.normal = entry.spec;
     // Placed from the average's pattern space by its own transforms.
     w.normal.pattern.placement.patternFromObject = glm::inverse(entry.transform.povMatrix());

@@ -27,6 +27,10 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
     case PatternType::bozo:
       return {rgb(0.4, 1.0f, 1.0f, 1.0f), rgb(0.4, 0.0f, 1.0f, 0.0f), rgb(0.6, 0.0f, 1.0f, 0.0f),
               rgb(0.6, 0.0f, 0.0f, 1.0f), rgb(0.8, 0.0f, 0.0f, 1.0f), rgb(0.8, 1.0f, 0.0f, 0.0f)};
+    case PatternType::mandel:  // (julia and magnet take the grey map)
+      return {rgb(0.001, 0.0f, 0.0f, 0.0f), rgb(0.001, 0.0f, 1.0f, 1.0f),
+              rgb(0.012, 1.0f, 1.0f, 0.0f), rgb(0.015, 1.0f, 0.0f, 1.0f),
+              rgb(0.1, 0.0f, 1.0f, 1.0f)};
     case PatternType::marble:
       return {rgb(0.0, 0.9f, 0.8f, 0.8f), rgb(0.9, 0.9f, 0.08f, 0.08f), rgb(0.9, 0.0f, 0.0f, 0.0f)};
     case PatternType::radial:
@@ -120,6 +124,10 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
     return true;
   }
   const std::string_view w = t.kind == TokenKind::Keyword ? t.text() : "";
+  if (w == "image_map") {
+    readImageMap(t, in, p);
+    return true;
+  }
   if (w == "checker" || w == "hexagon" || w == "brick") {
     // POV-Ray's colours for those not written (pattern.cpp's default maps).
     const PatternPlacement was =

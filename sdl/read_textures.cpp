@@ -79,8 +79,11 @@ PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, b
       n.average = false;
       // POV-Ray: an optional comma, then the optional amount (its bump_size).
       if (in.allow(",") || startsNumber(in.peek())) n.spec.depth = in.parseFloat();
+    } else if (isWord(t, "bump_map")) {
+      readBumpMap(t, in, n);
     } else if (isWord(t, "bump_size")) {
       n.spec.depth = in.parseFloat();
+      if (n.bump) n.bump->depth = n.spec.depth;
     } else if (isWord(t, "accuracy")) {
       const double accuracy = in.parseFloat();
       if (accuracy != 0.02)

@@ -39,11 +39,6 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"average", "averages of textures; Lucent averages pigments and normals"},
       {"image_pattern", "image patterns"},
       {"uv_mapping", "uv_mapping of patterns; Lucent's <image> is read at the shape's (u,v)"},
-      {"bump_map",
-       "bump maps projected by map_type; Lucent's <bump-map> is read at the shape's (u,v)"},
-      {"image_map",
-       "image maps projected by map_type (POV-Ray's default is planar); Lucent's <image> is "
-       "read at the shape's (u,v)"},
   };
   return features;
 }
@@ -407,7 +402,13 @@ Material SceneReader::importLayer(const PovTexture& layer, const PovInterior& in
   Material& m = imported.material;
   if (PatternPlacement* p = placementOf(m.texture))
     p->patternFromObject = glm::inverse(layer.pigment.transform.povMatrix()) * objectToTexture;
-  if (layer.normal) {
+  if (layer.normal && layer.normal->bump) {
+    // A bump map is the normal's only perturbation (POV-Ray's bump_map pattern).
+    m.bumpMap = layer.normal->bump;
+    m.bumpMap->keepFacingAway = true;  // POV-Ray keeps a bent normal that faces away
+    m.bumpMap->placement.patternFromObject =
+        glm::inverse(layer.normal->transform.povMatrix()) * objectToTexture;
+  } else if (layer.normal) {
     m.normal = layer.normal->spec;
     m.normal->keepFacingAway = true;  // POV-Ray keeps a bent normal that faces away
     m.normal->pattern.placement.patternFromObject =

@@ -345,11 +345,16 @@ class SceneReader : public ItemReader {
   void readFractalColouring(const Token& t, TokenStream& in, PatternSpec& s);
   std::vector<PovColorMapEntry> readColorMap(TokenStream& in, SourceLoc& loc);
   void resolvePigmentColours(PovPigment& p, TokenStream& in, bool nested = false);
+  // read_image_map.cpp: `image_map { [TYPE] "file" modifiers }` as a projected <image>
+  void readImageMap(const Token& t, TokenStream& in, PovPigment& p);
+  void readBumpMap(const Token& t, TokenStream& in, PovNormal& n);
+  std::string readImageFileSpec(TokenStream& in);
   // read_maps.cpp: maps and lists of pigments, averages of pigments and of normals
   std::vector<TextureMapEntry> readPigmentMap(TokenStream& in, const Token& at,
                                               bool average = false);
   bool readPigmentMapKeyword(const Token& t, TokenStream& in, PovPigment& p);
   bool readBlockPigments(TokenStream& in, PovPigment& p, size_t count);
+  void refuseNestedImage(const TextureMapEntry& e, TokenStream& in);
   bool readNormalAverage(const Token& t, TokenStream& in, PovNormal& n);
   void skipEntryRest(const Token& t, TokenStream& in);
   bool refusePattern(const Token& t, TokenStream& in, bool inEntry = false);

@@ -171,7 +171,10 @@ TEST_CASE("a lens made as the intersection of two spheres refracts as the analyt
   Material wall;
   wall.ambient = Color(1.0f);
   wall.ambientIsScalar = true;
-  wall.texture = ImageTexture{ramp, Vec2(kRampScale, 1.0), {}};
+  ImageTexture image;
+  image.path = ramp;
+  image.scale = Vec2(kRampScale, 1.0);
+  wall.texture = image;
   addShape(scene, PlaneSpec{Vec3(0, 0, 1), -10.0}, addMaterial(scene, wall));
   Material glass;
   glass.transmissive = Color(1.0f);

@@ -59,7 +59,10 @@ TEST_CASE("a ray through a glass slab lands displaced by the analytic amount, pa
     Material wall;
     wall.ambient = Color(1.0f);
     wall.ambientIsScalar = true;
-    wall.texture = ImageTexture{ramp, Vec2(kRampScale, 1.0), {}};
+    ImageTexture image;
+    image.path = ramp;
+    image.scale = Vec2(kRampScale, 1.0);
+    wall.texture = image;
     addWall(scene, zWall, addMaterial(scene, wall));
     if (withSlab)
       addShape(scene, BoxSpec{Vec3(-100, -100, -3), Vec3(100, 100, -3 + thickness)},

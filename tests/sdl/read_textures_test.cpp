@@ -344,7 +344,7 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
       "sphere { 0, 1 pigment { cells } }\n"
       "sphere { 0, 1 pigment { checker pigment_map { [0 rgb 1] } } }\n"
       "sphere { 0, 1 interior_texture { pigment { rgb 1 } } }\n"
-      "sphere { 0, 1 pigment { image_map { png \"x.png\" } } }\n"
+      "sphere { 0, 1 pigment { image_map { png \"scenes/image_maps.png\" use_index } } }\n"
       "sphere { 0, 1 normal { checker } }\n"
       "sphere { 0, 1 texture { tiles { texture { pigment { rgb 1 } } } } }\n");
   REQUIRE(errors.size() == 6);
@@ -357,7 +357,7 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
   CHECK(errors[2] ==
         "test.pov:3:15: error: 'interior_texture' is not supported by Lucent (a texture for the "
         "inside of a surface)");
-  CHECK(errors[3].rfind("test.pov:4:25: error: 'image_map' is not supported by Lucent", 0) == 0);
+  CHECK(errors[3].rfind("test.pov:4:65: error: 'use_index' is not supported by Lucent", 0) == 0);
   CHECK(errors[4] ==
         "test.pov:5:24: error: 'checker' is not supported by Lucent (as a normal pattern; "
         "Lucent's checker is a pigment)");

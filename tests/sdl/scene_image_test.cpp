@@ -120,3 +120,8 @@ TEST_CASE("scene reader image: noise patterns with turbulence and colour maps, n
           "[sdl][scene][image][povray][texture]") {
   requireSameImageAsPovray("noise_patterns.pov", 160, 120);
 }
+
+TEST_CASE("scene reader image: image maps projected planar, spherical, cylindrical and torus",
+          "[sdl][scene][image][povray][image-map]") {
+  requireSameImageAsPovrayInPlace("image_maps.pov", 160, 120);
+}

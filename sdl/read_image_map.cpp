@@ -1,0 +1,212 @@
+// `image_map { [TYPE] "file" [gamma G] modifiers }` in a pigment: Lucent's <image> projected
+// from pattern space as POV-Ray 3.7 projects it (render/image_projection.h), placed by the
+// pigment's transforms like any pattern (docs/povray-import.md, "Image maps").
+#include "read_support.h"
+#include "scene_reader.h"
+
+#include "lang/expression.h"
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lucent::sdl {
+
+namespace {
+
+// The file types POV-Ray names and the extensions it tries for each; empty: a type whose
+// files Lucent does not read.
+const std::map<std::string_view, std::vector<std::string>>& imageTypes() {
+  static const std::map<std::string_view, std::vector<std::string>> kTypes = {
+      {"png", {".png", ".PNG"}},
+      {"jpeg", {".jpg", ".JPG", ".jpeg", ".JPEG"}},
+      {"tiff", {".tif", ".TIF", ".tiff", ".TIFF"}},
+      {"tga", {".tga", ".TGA"}},
+      {"ppm", {".ppm", ".PPM"}},
+      {"pgm", {".pgm", ".PGM"}},
+      {"exr", {".exr", ".EXR"}},
+      {"hdr", {".hdr", ".HDR"}},
+      {"bmp", {".bmp", ".BMP"}},
+      {"gif", {}},
+      {"iff", {}},
+      {"sys", {}},
+      {"pot", {}}};
+  return kTypes;
+}
+
+// POV-Ray's map_type numbers; the others (3 parabolic, 4 hyperbolic, 6, 7) it refuses too.
+std::optional<ImageProjection> projectionOf(double mapType) {
+  switch (static_cast<int>(mapType)) {
+    case 0:
+      return ImageProjection::planar;
+    case 1:
+      return ImageProjection::spherical;
+    case 2:
+      return ImageProjection::cylindrical;
+    case 5:
+      return ImageProjection::torus;
+    default:
+      return std::nullopt;
+  }
+}
+
+}  // namespace
+
+// `[TYPE] "file" [gamma G] [premultiplied B]`: the file's path, found as an include is.
+std::string SceneReader::readImageFileSpec(TokenStream& in) {
+  const Token type = in.next();
+  if (isWord(type, "function"))
+    in.error(type,
+             "'image_map { function }' is not supported by Lucent (images made by a "
+             "function; it reads image files)");
+  const auto& types = imageTypes();
+  const auto known = type.kind == TokenKind::Keyword ? types.find(type.text()) : types.end();
+  if (known != types.end() && known->second.empty())
+    in.error(type, "image maps from '" + std::string(type.text()) +
+                       "' files are not supported by Lucent (it reads png, jpeg, tiff, tga, "
+                       "ppm, pgm, exr, hdr and bmp images)");
+  if (known == types.end()) in.unget();  // a file name alone: its extension, else png
+  const SourceLoc fileLoc = in.peek().loc();
+  const std::string name = in.parseString();
+  std::vector<std::string> extensions =
+      known != types.end() ? known->second : std::vector<std::string>{};
+  // POV-Ray takes a name without an extension as its output type's file (png here).
+  if (known == types.end() && std::filesystem::path(name).extension().empty())
+    extensions = types.at("png");
+  const std::string path = in.findDataFile(name, fileLoc, extensions).string();
+  for (;;) {
+    if (isWord(in.peek(), "gamma")) {
+      const Token k = in.next();
+      if (isWord(in.peek(), "srgb")) {
+        in.next();
+        continue;
+      }
+      const double g = in.parseFloat();
+      warn(in, k.loc(),
+           "the image's gamma " + formatNumber(g) +
+               " is not read (Lucent decodes an image map's 8-bit images from sRGB and a bump "
+               "map's as stored, float images as stored)");
+    } else if (isWord(in.peek(), "premultiplied")) {
+      in.next();
+      in.parseFloat();
+    } else {
+      return path;
+    }
+  }
+}
+
+// `map_type`, `once`, `interpolate`: what image_map and bump_map share; false if `k` is none.
+template <class Spec>
+bool readImageReading(const Token& k, TokenStream& in, Spec& spec) {
+  const std::string_view w = k.kind == TokenKind::Keyword ? k.text() : "";
+  if (w == "once") {
+    spec.once = true;
+  } else if (w == "map_type") {
+    const double m = in.parseFloat();
+    const auto projection = projectionOf(m);
+    if (!projection)
+      in.error(k, "map_type " + formatNumber(m) +
+                      " is not one POV-Ray 3.7 projects an image by (0 planar, 1 spherical, "
+                      "2 cylindrical, 5 torus)");
+    spec.projection = *projection;
+  } else if (w == "interpolate") {
+    const double i = in.parseFloat();
+    switch (static_cast<int>(i)) {
+      case 2:
+        spec.interpolation = ImageInterpolation::bilinear;
+        break;
+      case 3:
+        spec.interpolation = ImageInterpolation::bicubic;
+        break;
+      case 4:
+        spec.interpolation = ImageInterpolation::normalized;
+        break;
+      default:
+        in.error(k, "interpolate " + formatNumber(i) +
+                        " is not one POV-Ray takes (2 bilinear, 3 bicubic, 4 normalized "
+                        "distance)");
+    }
+  } else if (w == "use_color" || w == "use_colour") {
+    // POV-Ray's default for image and bump maps: the pixels' colours.
+  } else {
+    return false;
+  }
+  return true;
+}
+
+void SceneReader::readBumpMap(const Token& t, TokenStream& in, PovNormal& n) {
+  in.expect("{");
+  BumpMapSpec bump;
+  bump.loc = t.loc();
+  bump.projection = ImageProjection::planar;
+  bump.interpolation = ImageInterpolation::none;  // POV-Ray's default
+  bump.depth = n.spec.depth;
+  bump.path = readImageFileSpec(in);
+  for (;;) {
+    const Token k = in.next();
+    if (k.is("}")) break;
+    if (readImageReading(k, in, bump)) continue;
+    if (isWord(k, "bump_size")) {
+      bump.depth = in.parseFloat();
+    } else if (isWord(k, "use_index")) {
+      keepError(in, k.loc(),
+                "'use_index' is not supported by Lucent (palette indices as heights; Lucent "
+                "reads the palette's colours' grey levels)");
+    } else if (isWord(k, "repeat") || isWord(k, "offset")) {
+      keepError(in, k.loc(),
+                "'" + std::string(k.text()) + "' in a bump map is not supported by Lucent");
+      in.parseVector();
+    } else {
+      in.error(k, "'" + std::string(k.text()) + "' is not a bump_map modifier");
+    }
+  }
+  n.bump = bump;
+}
+
+void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {
+  in.expect("{");
+  ImageTexture image;
+  image.loc = t.loc();
+  image.projection = ImageProjection::planar;
+  image.interpolation = ImageInterpolation::none;  // POV-Ray's default
+  if (const PatternPlacement* was = placementOf(p.pattern)) image.placement = *was;
+  image.path = readImageFileSpec(in);
+
+  for (;;) {
+    const Token k = in.next();
+    if (k.is("}")) break;
+    const std::string_view w = k.kind == TokenKind::Keyword ? k.text() : "";
+    if (readImageReading(k, in, image)) {
+      continue;
+    } else if (w == "use_index") {
+      keepError(in, k.loc(),
+                "'use_index' is not supported by Lucent (palette indices as colours; Lucent "
+                "reads the palette's colours)");
+    } else if (w == "filter" || w == "transmit" || w == "alpha") {
+      if (!isWord(in.peek(), "all")) {
+        keepError(in, k.loc(),
+                  "'" + std::string(w) +
+                      " INDEX, AMOUNT' is not supported by Lucent (a palette entry's own filter "
+                      "or transmit; 'all' is)");
+        in.parseFloat();
+        in.parseComma();
+        in.parseFloat();
+        continue;
+      }
+      in.next();
+      const float amount = static_cast<float>(in.parseFloat());
+      (w == "transmit" ? image.all.transmit : image.all.filter) = amount;
+    } else if (w == "repeat" || w == "offset") {
+      keepError(in, k.loc(), "'" + std::string(w) + "' in an image map is not supported by Lucent");
+      in.parseVector();
+    } else {
+      in.error(k, "'" + std::string(k.text()) + "' is not an image_map modifier");
+    }
+  }
+  p.pattern = std::move(image);
+  p.map.clear();
+}
+
+}  // namespace lucent::sdl

@@ -1,0 +1,100 @@
+// <image>'s projections (projection, its placement, once, interpolate, filter and
+// transmit): read field by field, written by the scene writer and read back to the same
+// text, and their errors.
+#include "../support/paths.h"
+#include "../support/scene_text.h"
+
+#include "lang/scene_writer.h"
+
+#include <catch2/catch.hpp>
+
+using namespace lucent;
+using namespace lucent::test;
+
+namespace {
+
+// Parsed as a file of examples/, so that textures/uvgrid.png is found.
+std::string sceneName() { return std::string(lucentSourceDir()) + "/examples/images.xml"; }
+
+const char* kImages = R"XML(
+<material id="uv"><image src="textures/uvgrid.png" scale="2 1" once="true"/></material>
+<material id="sphere"><image src="textures/uvgrid.png" projection="spherical"
+  transform="rotate-y(30)" interpolate="normalized" transmit="0.25"/></material>
+<material id="torus"><image src="textures/uvgrid.png" projection="torus" interpolate="none"
+  filter="0.5" turbulence="0.1"/></material>
+<material id="bump"><bump-map src="textures/uvgrid.png" depth="2" projection="cylindrical"
+  once="true" interpolate="bicubic" keep-facing-away="true" transform="scale(2)"/></material>
+<sphere material="uv"/><sphere material="sphere"/><sphere material="torus"/>
+<sphere material="bump"/>)XML";
+
+}  // namespace
+
+TEST_CASE("image projections: each attribute is read", "[lang][texture][image-map]") {
+  auto s = parseClean(kImages, sceneName());
+  const auto& uv = std::get<ImageTexture>(materialNamed(*s, "uv").texture);
+  CHECK(uv.projection == ImageProjection::uv);
+  CHECK(uv.scale == Vec2(2.0, 1.0));
+  CHECK(uv.once);
+  CHECK(uv.interpolation == ImageInterpolation::bilinear);
+  CHECK_FALSE(uv.plainUV());
+  CHECK(textureSeeThrough(materialNamed(*s, "uv").texture));  // clear off the image
+
+  const auto& sphere = std::get<ImageTexture>(materialNamed(*s, "sphere").texture);
+  CHECK(sphere.projection == ImageProjection::spherical);
+  CHECK(sphere.interpolation == ImageInterpolation::normalized);
+  CHECK(sphere.all.transmit == 0.25f);
+  CHECK_FALSE(sphere.once);
+  // rotate-y(30) places the image: the pattern space is rotated back.
+  CHECK(sphere.placement.patternFromObject[0][0] == Approx(std::cos(M_PI / 6)));
+
+  const auto& torus = std::get<ImageTexture>(materialNamed(*s, "torus").texture);
+  CHECK(torus.projection == ImageProjection::torus);
+  CHECK(torus.interpolation == ImageInterpolation::none);
+  CHECK(torus.all.filter == 0.5f);
+  CHECK(torus.placement.turbulence == Vec3(0.1));
+
+  const Material& bumpy = materialNamed(*s, "bump");
+  REQUIRE(bumpy.bumpMap);
+  CHECK(bumpy.bumpMap->projection == ImageProjection::cylindrical);
+  CHECK(bumpy.bumpMap->once);
+  CHECK(bumpy.bumpMap->interpolation == ImageInterpolation::bicubic);
+  CHECK(bumpy.bumpMap->keepFacingAway);
+  CHECK(bumpy.bumpMap->depth == 2.0);
+  CHECK(bumpy.bumpMap->placement.patternFromObject[1][1] == Approx(0.5));
+}
+
+TEST_CASE("image projections: the scene writer writes them and they read back to the same text",
+          "[lang][scene-writer][image-map]") {
+  const std::string first = writeSceneXml(*parseClean(kImages, sceneName()), WriteOptions{});
+  CHECK(first.find("projection=\"spherical\"") != std::string::npos);
+  CHECK(first.find("interpolate=\"none\"") != std::string::npos);
+  CHECK(first.find("once=\"true\"") != std::string::npos);
+  CHECK(first.find("projection=\"cylindrical\"") != std::string::npos);
+  CHECK(first.find("keep-facing-away=\"true\"") != std::string::npos);
+  auto reread = parseSceneString(first, sceneName());
+  REQUIRE(reread.scene);
+  CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+}
+
+TEST_CASE("image projections: placement without a projection, scale with one, bad names",
+          "[lang][texture][image-map]") {
+  ParseResult r = parseBody(
+      "\n<material id=\"a\"><image src=\"textures/uvgrid.png\" transform=\"scale(2)\"/></material>"
+      "\n<material id=\"b\"><image src=\"textures/uvgrid.png\" projection=\"planar\" "
+      "scale=\"2\"/></material>"
+      "\n<material id=\"c\"><image src=\"textures/uvgrid.png\" projection=\"cubic\"/></material>"
+      "\n<material id=\"d\"><image src=\"textures/uvgrid.png\" interpolate=\"2\"/></material>",
+      sceneName());
+  const std::string m = messages(r);
+  INFO(m);
+  CHECK(m.find("images.xml:2:62: error: <image> attribute 'transform': 'transform' places a "
+               "projected <image> only: give a 'projection' (at the shape's (u,v) the shape places "
+               "it)") != std::string::npos);
+  CHECK(m.find("images.xml:3:78: error: <image> attribute 'scale': 'scale' is for an image at "
+               "the shape's (u,v); a projected image is placed by 'transform'") !=
+        std::string::npos);
+  CHECK(m.find("images.xml:4:") != std::string::npos);
+  CHECK(m.find("cubic") != std::string::npos);
+  CHECK(m.find("images.xml:5:") != std::string::npos);
+  CHECK(r.diagnostics.errorCount() == 4);
+}
