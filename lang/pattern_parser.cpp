@@ -353,18 +353,18 @@ const std::vector<std::pair<std::string_view, NormalBlock>> kNormalBlocks{
     {"brick", NormalBlock::brick}};
 
 // <normal type="checker|hexagon|brick">: the placement, brick's size and mortar, and the
-// <normal-list> whose entries the cells pick.
+// <normal-list> whose entries the cells pick, or without one a depth for the cells' slope.
 NormalSpec parseBlockNormal(ElementReader& r, NormalBlock block) {
   std::vector<std::string_view> allowed =
-      joined(kPlacementAttributes, {"type", "keep-facing-away"});
+      joined(kPlacementAttributes, {"type", "depth", "keep-facing-away"});
   if (block == NormalBlock::brick) allowed = joined(allowed, {"mortar", "size"});
   r.checkAttributes(allowed, [&](std::string_view a) -> std::string {
     if (a == "mortar" || a == "size") return "only a brick <normal> takes '" + std::string(a) + "'";
     for (std::string_view v : kValueAttributes)
-      if (a == v || a == "depth")
+      if (a == v)
         return "a " + r.verbatim("type") +
-               " <normal> takes only the placement attributes and keep-facing-away (each "
-               "entry's <normal> has its own " +
+               " <normal> takes only the placement attributes, depth and keep-facing-away "
+               "(each entry's <normal> has its own " +
                std::string(a) + ")";
     return "";
   });
@@ -388,9 +388,13 @@ NormalSpec parseBlockNormal(ElementReader& r, NormalBlock block) {
     else n.map = parseNormalList(c, count);
     listed = true;
   });
-  if (!listed && !r.failed())
-    r.error("a " + r.verbatim("type") + " <normal> needs a <normal-list> of " +
-            std::to_string(count) + " entries (the normals of its cells)");
+  // Without a list, the slope of the cell index bends the normal by depth (POV-Ray's
+  // `normal { brick 0.75 }`); with one, each entry has its own depth.
+  if (listed && r.has("depth"))
+    r.attrError("depth", "a " + r.verbatim("type") +
+                             " <normal> with a <normal-list> takes no depth (each entry's "
+                             "<normal> has its own)");
+  n.depth = r.number("depth", n.depth);
   return n;
 }
 

@@ -169,7 +169,7 @@ const char* blockName(NormalBlock b) {
   return "";
 }
 
-// <normal type="checker|hexagon|brick"> with its <normal-list>.
+// <normal type="checker|hexagon|brick"> with its <normal-list>, or its depth.
 void writeBlockNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
   Attributes a{{"type", blockName(n.block)}};
   addPlacement(n.pattern.placement, a);
@@ -177,8 +177,10 @@ void writeBlockNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
     a.emplace_back("mortar", xmlNumber(n.brick.mortar));
     a.emplace_back("size", xmlVector(n.brick.size));
   }
+  if (n.map.empty()) a.emplace_back("depth", xmlNumber(n.depth));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
-  out.open("normal", a, false);
+  out.open("normal", a, n.map.empty());
+  if (n.map.empty()) return;
   writeNormalEntries("normal-list", n, false, loc, out);
   out.close("normal");
 }

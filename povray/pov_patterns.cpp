@@ -291,7 +291,8 @@ void writeBlockNormalBody(const NormalSpec& n, PovWriter& out) {
   const char* keyword = n.block == NormalBlock::checker   ? "checker"
                         : n.block == NormalBlock::hexagon ? "hexagon"
                                                           : "brick";
-  out.line(keyword);
+  // Without a list, POV-Ray takes the slope of the cell index, bent by the amount.
+  out.line(n.map.empty() ? std::string(keyword) + " " + povNumber(n.depth) : keyword);
   writeNormalList(n, out);
   if (n.block == NormalBlock::brick)
     out.line("brick_size " + povVector(n.brick.size) + " mortar " + povNumber(n.brick.mortar));

@@ -260,6 +260,7 @@ std::vector<SlopeMapEntry> SceneReader::readSlopeMap(TokenStream& in, const Toke
 // A block pattern in a normal, its keyword read: `checker`, `hexagon` or `brick`, then its
 // list `normal {..} [,] normal {..}` (as many as cells at most). Missing normals are the
 // #default normal's, as POV-Ray's; without one POV-Ray 3.7 stops, and so does Lucent.
+// Without any, the normal is bent by the slope of the cell index.
 bool SceneReader::readBlockNormal(const Token& t, TokenStream& in, PovNormal& n) {
   NormalBlock block = NormalBlock::none;
   if (isWord(t, "checker")) block = NormalBlock::checker;
@@ -282,14 +283,9 @@ bool SceneReader::readBlockNormal(const Token& t, TokenStream& in, PovNormal& n)
     n.spec.map.push_back(std::move(e));
     in.allow(",");
   }
-  if (n.spec.map.empty()) {
-    keepError(in, t.loc(),
-              "'" + std::string(t.text()) +
-                  "' without a list of normals is not supported by Lucent (give each cell a "
-                  "normal: " +
-                  std::string(t.text()) + " normal {..} normal {..})");
-    return true;
-  }
+  // POV-Ray's optional amount after the pattern (unused by a list of normals).
+  if (in.allow(",") || startsNumber(in.peek())) n.spec.depth = in.parseFloat();
+  if (n.spec.map.empty()) return true;  // the slope of the cell index, as POV-Ray's
   while (n.spec.map.size() < count) {
     if (!defaults_.normal || !defaults_.normal->patterned) {
       keepError(in, t.loc(),

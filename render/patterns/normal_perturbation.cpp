@@ -55,7 +55,9 @@ Vec3 slope(const NormalSpec& normal, const Vec3& n, const Vec3& p, double amount
   Vec3 r = n;
   for (const auto& d : kPyramid) {
     const Vec3 q(p.x + delta * d[0], p.y + delta * d[1], p.z + delta * d[2]);
-    double value = patternValueAt(normal.pattern, q);
+    // A block pattern without a list of normals: the slope of its cell index, as POV-Ray's.
+    double value = normal.block != NormalBlock::none ? normalBlockIndex(normal, q)
+                                                     : patternValueAt(normal.pattern, q);
     if (!normal.slopeMap.empty()) value = slopeMapHeight(normal.slopeMap, value);
     r = addScaled(r, value * k, Vec3(d[0], d[1], d[2]));
   }
@@ -136,6 +138,8 @@ Vec3 perturbNormal(const NormalSpec& normal, const Vec3& objPoint, const Vec3& o
     n = averageNormal(normal, n, objPoint);
   } else if (!normal.map.empty()) {
     n = mapNormal(normal, n, objPoint);
+  } else if (normal.block != NormalBlock::none) {
+    n = slope(normal, n, warpPoint(spec.placement, objPoint), amount);
   } else {
     n = perturbByPattern(
         normal, n, warpPoint(spec.placement, objPoint, turbulenceDisplaces(spec.type)), amount);

@@ -120,3 +120,8 @@ TEST_CASE("scene reader image: noise patterns with turbulence and colour maps, n
           "[sdl][scene][image][povray][texture]") {
   requireSameImageAsPovray("noise_patterns.pov", 160, 120);
 }
+
+TEST_CASE("scene reader image: normal maps, lists of normals, slope maps and #default normals",
+          "[sdl][scene][image][povray][texture]") {
+  requireSameImageAsPovray("normal_maps.pov", 160, 120);
+}
