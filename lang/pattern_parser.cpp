@@ -7,6 +7,7 @@
 
 #include "element_input.h"
 #include "expression.h"
+#include "normal_map_parser.h"
 #include "povray_names.h"
 #include "texture_map_parser.h"
 
@@ -337,11 +338,108 @@ Texture parseBrickTexture(ElementReader& r) {
   return t;
 }
 
+namespace {
+
+// Normal types whose own normal (not the slope) POV-Ray uses: a slope map leaves them as
+// they are.
+bool ownNormal(PatternType t) {
+  return t == PatternType::bumps || t == PatternType::dents || t == PatternType::wrinkles ||
+         t == PatternType::ripples || t == PatternType::waves || t == PatternType::quilted;
+}
+
+const std::vector<std::pair<std::string_view, NormalBlock>> kNormalBlocks{
+    {"checker", NormalBlock::checker},
+    {"hexagon", NormalBlock::hexagon},
+    {"brick", NormalBlock::brick}};
+
+// <normal type="checker|hexagon|brick">: the placement, brick's size and mortar, and the
+// <normal-list> whose entries the cells pick, or without one a depth for the cells' slope.
+NormalSpec parseBlockNormal(ElementReader& r, NormalBlock block) {
+  std::vector<std::string_view> allowed =
+      joined(kPlacementAttributes, {"type", "depth", "keep-facing-away"});
+  if (block == NormalBlock::brick) allowed = joined(allowed, {"mortar", "size"});
+  r.checkAttributes(allowed, [&](std::string_view a) -> std::string {
+    if (a == "mortar" || a == "size") return "only a brick <normal> takes '" + std::string(a) + "'";
+    for (std::string_view v : kValueAttributes)
+      if (a == v)
+        return "a " + r.verbatim("type") +
+               " <normal> takes only the placement attributes, depth and keep-facing-away "
+               "(each entry's <normal> has its own " +
+               std::string(a) + ")";
+    return "";
+  });
+  NormalSpec n;
+  n.block = block;
+  n.pattern.placement = parsePlacement(r);
+  n.keepFacingAway = r.boolean("keep-facing-away", n.keepFacingAway);
+  n.brick.mortar = r.number("mortar", n.brick.mortar, NumberRule::nonNegative());
+  const Vec3 size = r.vector("size", n.brick.size);
+  if (size.x <= 0 || size.y <= 0 || size.z <= 0)
+    r.attrError("size", "the brick's size must be positive in x, y and z");
+  else n.brick.size = size;
+  const size_t count = block == NormalBlock::hexagon ? 3 : 2;
+  bool listed = false;
+  r.forEachChild([&](pugi::xml_node child) {
+    ElementReader c(r.ctx(), r.file(), child);
+    if (std::string_view(child.name()) != "normal-list")
+      c.error("a " + r.verbatim("type") + " <normal> holds one <normal-list>, not <" +
+              std::string(child.name()) + ">");
+    else if (listed) c.error("a " + r.verbatim("type") + " <normal> holds one <normal-list>");
+    else n.map = parseNormalList(c, count);
+    listed = true;
+  });
+  // Without a list, the slope of the cell index bends the normal by depth (POV-Ray's
+  // `normal { brick 0.75 }`); with one, each entry has its own depth.
+  if (listed && r.has("depth"))
+    r.attrError("depth", "a " + r.verbatim("type") +
+                             " <normal> with a <normal-list> takes no depth (each entry's "
+                             "<normal> has its own)");
+  n.depth = r.number("depth", n.depth);
+  return n;
+}
+
+// A pattern <normal>'s children: one <normal-map> or one <slope-map>.
+void parseNormalChildren(ElementReader& r, NormalSpec& n) {
+  std::optional<SourceLoc> mapLoc;
+  r.forEachChild([&](pugi::xml_node child) {
+    ElementReader c(r.ctx(), r.file(), child);
+    const std::string_view name = child.name();
+    if (name != "normal-map" && name != "slope-map") {
+      c.error("<normal> may hold one <normal-map> or <slope-map>, not <" + std::string(name) + ">");
+      return;
+    }
+    if (mapLoc) {
+      c.error("<normal> holds one <normal-map> or <slope-map> at most; the first is at " +
+              mapLoc->str());
+      return;
+    }
+    mapLoc = c.loc();
+    if (name == "normal-map") {
+      if (r.has("depth"))
+        r.attrError("depth",
+                    "a <normal> with a <normal-map> takes no depth (each entry's <normal> has "
+                    "its own)");
+      n.map = parseNormalMap(c);
+    } else if (ownNormal(n.pattern.type)) {
+      c.error("a " + std::string(patternTypeInfo(n.pattern.type).name) +
+              " <normal> bends by its own normal, not a slope, so a <slope-map> has nothing "
+              "to shape (POV-Ray ignores it); give it a colour pattern's type");
+    } else {
+      n.slopeMap = parseSlopeMap(c);
+    }
+  });
+}
+
+}  // namespace
+
 NormalSpec parseNormal(ElementReader& r) {
+  const std::string type = r.verbatim("type");
+  for (const auto& [name, block] : kNormalBlocks)
+    if (type == name) return parseBlockNormal(r, block);
   r.checkAttributes(
       joined(joined(kValueAttributes, kPlacementAttributes), {"depth", "keep-facing-away"}));
   NormalSpec n;
-  if (r.verbatim("type") == "average") {
+  if (type == "average") {
     // The weighted mean of its entries' normals, placed by the placement attributes.
     r.checkAttributes(joined(kPlacementAttributes, {"type", "keep-facing-away"}),
                       [](std::string_view a) -> std::string {
@@ -359,13 +457,13 @@ NormalSpec parseNormal(ElementReader& r) {
   }
   if (!r.has("type"))
     r.error(
-        "<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles, a colour pattern "
-        "or average)");
+        "<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles, a colour pattern, "
+        "average, checker, hexagon or brick)");
   else n.pattern.type = r.choice("type", PatternType::bumps, patternNames(false));
   parseValueAttributes(r, n.pattern);
   n.depth = r.number("depth", n.depth);
   n.keepFacingAway = r.boolean("keep-facing-away", n.keepFacingAway);
-  noChildren(r);
+  parseNormalChildren(r, n);
   return n;
 }
 

@@ -164,8 +164,57 @@ void writeBlock(const std::string& element, Attributes a,
   out.close(element);
 }
 
-// <normal>: a pattern's, or an average of normals with its <entry weight> children.
+void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out);
+
+// A normal map's or a block list's entries: <entry [at]><normal/></entry>, or <entry/>.
+void writeNormalEntries(const std::string& list, const NormalSpec& n, bool at, const SourceLoc& loc,
+                        XmlOut& out) {
+  out.open(list, {}, false);
+  for (const NormalMapEntry& e : n.map) {
+    Attributes a;
+    if (at) a.emplace_back("at", xmlNumber(e.at));
+    out.open("entry", a, e.flat);
+    if (e.flat) continue;
+    writeNormal(e.normal, loc, out);
+    out.close("entry");
+  }
+  out.close(list);
+}
+
+const char* blockName(NormalBlock b) {
+  switch (b) {
+    case NormalBlock::checker:
+      return "checker";
+    case NormalBlock::hexagon:
+      return "hexagon";
+    case NormalBlock::brick:
+      return "brick";
+    case NormalBlock::none:
+      break;
+  }
+  return "";
+}
+
+// <normal type="checker|hexagon|brick"> with its <normal-list>, or its depth.
+void writeBlockNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
+  Attributes a{{"type", blockName(n.block)}};
+  addPlacement(n.pattern.placement, a);
+  if (n.block == NormalBlock::brick) {
+    a.emplace_back("mortar", xmlNumber(n.brick.mortar));
+    a.emplace_back("size", xmlVector(n.brick.size));
+  }
+  if (n.map.empty()) a.emplace_back("depth", xmlNumber(n.depth));
+  if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
+  out.open("normal", a, n.map.empty());
+  if (n.map.empty()) return;
+  writeNormalEntries("normal-list", n, false, loc, out);
+  out.close("normal");
+}
+
+// <normal>: a pattern's (with a <normal-map> or a <slope-map>), a block pattern's list, or
+// an average of normals with its <entry weight> children.
 void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
+  if (n.block != NormalBlock::none) return writeBlockNormal(n, loc, out);
   if (!n.average.empty()) {
     Attributes a{{"type", "average"}};
     addPlacement(n.pattern.placement, a);
@@ -180,9 +229,22 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
     return;
   }
   Attributes a = patternAttributes(n.pattern, loc);
-  a.emplace_back("depth", xmlNumber(n.depth));
+  if (n.map.empty()) a.emplace_back("depth", xmlNumber(n.depth));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
-  out.open("normal", a, true);
+  const bool children = !n.map.empty() || !n.slopeMap.empty();
+  out.open("normal", a, !children);
+  if (!children) return;
+  if (!n.map.empty()) writeNormalEntries("normal-map", n, true, loc, out);
+  if (!n.slopeMap.empty()) {
+    out.open("slope-map", {}, false);
+    for (const SlopeMapEntry& e : n.slopeMap)
+      out.open(
+          "entry",
+          {{"at", xmlNumber(e.at)}, {"height", xmlNumber(e.height)}, {"slope", xmlNumber(e.slope)}},
+          true);
+    out.close("slope-map");
+  }
+  out.close("normal");
 }
 
 }  // namespace

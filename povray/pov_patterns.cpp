@@ -271,8 +271,57 @@ void writeAveragePigment(const AverageTexture& t, const Vec3& scale, double filt
 
 namespace {
 
+void writeNormalBody(const NormalSpec& n, PovWriter& out);
+
+// A block pattern's `normal {..} normal {..}` list, every entry written: POV-Ray 3.7 stops
+// at a list with fewer normals than cells (it reads a missing entry as the #default
+// normal, and without one as nothing, which its parser then dereferences). A flat entry
+// is `bumps 0`, which bends nothing.
+void writeNormalList(const NormalSpec& n, PovWriter& out) {
+  for (const NormalMapEntry& e : n.map) {
+    out.open("normal");
+    if (e.flat) out.line("bumps 0");
+    else writeNormalBody(e.normal, out);
+    out.close();
+  }
+}
+
+// `checker|hexagon|brick normal {..} ...` with brick's size and mortar.
+void writeBlockNormalBody(const NormalSpec& n, PovWriter& out) {
+  const char* keyword = n.block == NormalBlock::checker   ? "checker"
+                        : n.block == NormalBlock::hexagon ? "hexagon"
+                                                          : "brick";
+  // Without a list, POV-Ray takes the slope of the cell index, bent by the amount.
+  out.line(n.map.empty() ? std::string(keyword) + " " + povNumber(n.depth) : keyword);
+  writeNormalList(n, out);
+  if (n.block == NormalBlock::brick)
+    out.line("brick_size " + povVector(n.brick.size) + " mortar " + povNumber(n.brick.mortar));
+  writePlacement(n.pattern.placement, out);
+}
+
+// `normal_map { [at NORMAL_BODY] ... }` and `slope_map { [at <height, slope>] ... }`.
+void writeNormalMaps(const NormalSpec& n, PovWriter& out) {
+  if (!n.map.empty()) {
+    out.open("normal_map");
+    for (const NormalMapEntry& e : n.map) {
+      out.line("[" + povNumber(e.at));
+      writeNormalBody(e.normal, out);
+      out.line("]");
+    }
+    out.close();
+  }
+  if (!n.slopeMap.empty()) {
+    out.open("slope_map");
+    for (const SlopeMapEntry& e : n.slopeMap)
+      out.line("[" + povNumber(e.at) + " <" + povNumber(e.height) + ", " + povNumber(e.slope) +
+               ">]");
+    out.close();
+  }
+}
+
 // What `normal { }` holds (and a normal_map's entry after its weight).
 void writeNormalBody(const NormalSpec& n, PovWriter& out) {
+  if (n.block != NormalBlock::none) return writeBlockNormalBody(n, out);
   if (!n.average.empty()) {
     // `average normal_map { [weight NORMAL_BODY] ... }`.
     out.line("average");
@@ -294,6 +343,7 @@ void writeNormalBody(const NormalSpec& n, PovWriter& out) {
   else out.line(keyword + " " + povNumber(n.depth));
   // POV-Ray's slope method samples at this distance (its default, which Lucent uses).
   out.line("accuracy 0.02");
+  writeNormalMaps(n, out);
   writeValueModifiers(n.pattern, out);
   writePlacement(n.pattern.placement, out);
 }

@@ -273,6 +273,20 @@ struct BrickSpec {
 };
 
 struct WeightedNormal;  // below NormalSpec
+struct NormalMapEntry;  // below NormalSpec
+
+// POV-Ray's block patterns as a normal's pattern (`normal { checker normal {..} normal {..} }`):
+// the cell's index (checker 0 or 1, hexagon 0 to 2, brick 0 mortar or 1 brick) picks the
+// entry of the normal's list.
+enum class NormalBlock { none, checker, hexagon, brick };
+
+// An entry of POV-Ray's slope_map: at the pattern value `at`, the height and the slope the
+// bumps take (its `[at <height, slope>]`).
+struct SlopeMapEntry {
+  double at = 0.0;
+  double height = 0.0;
+  double slope = 0.0;
+};
 
 // A normal perturbation: POV-Ray's `normal { PATTERN depth }` (depth is its bump_size).
 struct NormalSpec {
@@ -282,6 +296,15 @@ struct NormalSpec {
   // the weighted mean of these normals (each bent at the point the pattern's placement
   // gives, in its space), normalised; the pattern's type and values and depth are unused.
   std::vector<WeightedNormal> average{};
+  // POV-Ray's normal_map (entries in ascending `at`) or, with `block`, a block pattern's
+  // list of normals (entries at 0, 1, 2): the pattern's value picks one entry or blends two
+  // bent normals, each bent at the pattern's point in its space; depth is unused.
+  std::vector<NormalMapEntry> map{};
+  NormalBlock block = NormalBlock::none;
+  BrickSpec brick;  // block brick: its size and mortar (the colours are unused)
+  // POV-Ray's slope_map (entries in ascending `at`): the pattern's value becomes a height
+  // by the entries' heights and slopes (Hermite cubics) before the slope is estimated.
+  std::vector<SlopeMapEntry> slopeMap{};
   // Where the bent normal faces away from the viewer: false (Lucent's rule) shades with the
   // unperturbed normal there; true keeps the bent one, as POV-Ray does.
   bool keepFacingAway = false;
@@ -289,6 +312,15 @@ struct NormalSpec {
 
 struct WeightedNormal {
   double weight = 1.0;
+  NormalSpec normal;
+};
+
+// An entry of a normal map or a block pattern's list: its value and its normal, or (flat)
+// none: the normal left as the map's pattern space has it (POV-Ray's block list with fewer
+// normals than cells).
+struct NormalMapEntry {
+  double at = 0.0;
+  bool flat = false;
   NormalSpec normal;
 };
 

@@ -69,6 +69,9 @@ struct PovNormal {
   PovTransform transform;
   bool warped = false;   // its turbulence is a `warp { turbulence }`
   bool average = false;  // `average` was read: its normal_map fills spec.average
+  // A pattern was given (a #default normal may hold only a bump_size; POV-Ray then wants
+  // one in every normal that starts from it).
+  bool patterned = false;
 };
 
 // `reflection { MIN, MAX fresnel falloff exponent metallic }`, or `reflection C` alone
@@ -114,6 +117,7 @@ struct PovInterior {
 // written change it), and gives an object without texture both.
 struct PovDefaults {
   PovPigment pigment;
+  std::optional<PovNormal> normal;  // `#default { normal {..} }`: what normals start from
   PovFinish finish;
 };
 

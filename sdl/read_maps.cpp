@@ -1,5 +1,6 @@
 // Maps and lists of whole pigments (`pigment_map`, a block pattern's `pigment {..}` list),
-// `average` of pigments and of normals. POV-Ray evaluates an entry at the point its
+// `average` of pigments and of normals, normal maps, slope maps and block patterns' lists
+// of normals. POV-Ray evaluates an entry at the point its
 // enclosing pattern is evaluated at, so an entry's transforms are its own, from the
 // enclosing pattern's space (POV-Ray's coordinates): Lucent's nested placements.
 #include "read_support.h"
@@ -104,6 +105,12 @@ bool SceneReader::readPigmentMapKeyword(const Token& t, TokenStream& in, PovPigm
     p.mapLoc = t.loc();
     return true;
   }
+  if (isWord(t, "slope_map") || isWord(t, "normal_map")) {
+    // POV-Ray's parser: "slope_map only in normal".
+    keepError(in, t.loc(), "'" + std::string(t.text()) + "' belongs in a normal, not a pigment");
+    skipBlock(in);
+    return true;
+  }
   if (!isWord(t, "pigment_map")) return false;
   std::vector<TextureMapEntry> entries =
       readPigmentMap(in, t, std::holds_alternative<AverageTexture>(p.pattern));
@@ -153,37 +160,165 @@ bool SceneReader::readBlockPigments(TokenStream& in, PovPigment& p, size_t count
   return true;
 }
 
-// `average` and its `normal_map { [weight NORMAL_BODY] ... }` in a normal. A normal_map of
-// another pattern is refused.
-bool SceneReader::readNormalAverage(const Token& t, TokenStream& in, PovNormal& n) {
+namespace {
+
+// Normal patterns whose own normal POV-Ray uses (not the slope): it ignores their slope map.
+bool ownNormal(PatternType t) {
+  return t == PatternType::bumps || t == PatternType::dents || t == PatternType::wrinkles ||
+         t == PatternType::ripples || t == PatternType::waves || t == PatternType::quilted;
+}
+
+// A normal read as a map's or a list's entry, placed from the map's pattern space by its
+// own transforms.
+NormalSpec placedEntry(const PovNormal& entry) {
+  NormalSpec spec = entry.spec;
+  spec.pattern.placement.patternFromObject = glm::inverse(entry.transform.povMatrix());
+  return spec;
+}
+
+}  // namespace
+
+// `normal_map { [value NORMAL_BODY] ... }` (in an average, the values are optional weights)
+// and `slope_map { [value, <height, slope>] ... }`, the keyword read.
+bool SceneReader::readNormalMapKeyword(const Token& t, TokenStream& in, PovNormal& n) {
   if (isWord(t, "average")) {
     n.average = true;
+    n.patterned = true;
     n.spec.average.clear();
+    n.spec.map.clear();
+    n.spec.slopeMap.clear();
+    n.spec.block = NormalBlock::none;
     return true;
   }
-  if (!isWord(t, "normal_map")) return false;
-  if (!n.average) {
-    unsupported(t, in, true);
+  const bool slope = isWord(t, "slope_map");
+  if (!slope && !isWord(t, "normal_map")) return false;
+  if (n.spec.block != NormalBlock::none || (slope && n.average)) {
+    // POV-Ray's parser: "Cannot use normal_map with this normal type."
+    keepError(in, t.loc(),
+              "'" + std::string(t.text()) +
+                  "' cannot be used with this normal type (as POV-Ray's " + "parser says)");
+    skipBlock(in);
+    return true;
+  }
+  if (slope) {
+    n.spec.slopeMap = readSlopeMap(in, t);
+    n.spec.map.clear();
+    if (n.patterned && ownNormal(n.spec.pattern.type)) {
+      warn(in, t.loc(),
+           "the slope_map has no effect on " +
+               std::string(patternTypeInfo(n.spec.pattern.type).pov) +
+               " (POV-Ray bends by that pattern's own normal, not by a slope)");
+      n.spec.slopeMap.clear();
+    }
     return true;
   }
   in.expect("{");
+  std::vector<NormalMapEntry> entries;
   for (;;) {
     const Token e = in.next();
     if (e.is("}")) break;
     if (!e.is("[")) in.error(e, "'[' or '}' expected in a normal map, not " + e.describe());
-    WeightedNormal w;
-    w.weight = entryValue(in, true);
-    const PovNormal entry = readNormalBody(in, nullptr, true);
-    if (entry.bump)
-      keepError(in, entry.bump->loc,
+    NormalMapEntry entry;
+    entry.at = entryValue(in, n.average);
+    const PovNormal read = readNormalBody(in, nullptr, true);
+    if (read.bump)
+      keepError(in, read.bump->loc,
                 "'bump_map' inside a normal map is not supported by Lucent (a bump map's "
                 "pixels are loaded per material; give the texture the bump_map itself)");
-    w.normal = entry.spec;
-    // Placed from the average's pattern space by its own transforms.
-    w.normal.pattern.placement.patternFromObject = glm::inverse(entry.transform.povMatrix());
-    n.spec.average.push_back(std::move(w));
+    entry.normal = placedEntry(read);
+    entries.push_back(std::move(entry));
   }
-  if (n.spec.average.empty()) in.error(t, "a normal map needs at least one entry");
+  if (entries.empty()) in.error(t, "a normal map needs at least one entry");
+  if (n.average) {
+    n.spec.average.clear();
+    for (NormalMapEntry& e : entries) n.spec.average.push_back({e.at, std::move(e.normal)});
+    return true;
+  }
+  for (size_t i = 1; i < entries.size(); ++i)
+    if (entries[i].at < entries[i - 1].at) {
+      keepError(in, t.loc(), "the normal map's entries must be in ascending order");
+      break;
+    }
+  n.spec.map = std::move(entries);
+  n.spec.slopeMap.clear();
+  return true;
+}
+
+// The `{ [value, <height, slope>] ... }` of a slope_map (a float for the pair is both).
+std::vector<SlopeMapEntry> SceneReader::readSlopeMap(TokenStream& in, const Token& at) {
+  std::vector<SlopeMapEntry> entries;
+  in.expect("{");
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) break;
+    if (!t.is("[")) in.error(t, "'[' or '}' expected in a slope map, not " + t.describe());
+    SlopeMapEntry e;
+    e.at = in.parseFloat();
+    in.allow(",");
+    const Token& pairAt = in.peek();
+    const Value v = in.parseExpression();
+    if (v.type == ValueType::Float) e.height = e.slope = v.v[0];
+    else if (v.type == ValueType::Uv) e.height = v.v[0], e.slope = v.v[1];
+    else in.error(pairAt, "a slope map's entry needs <height, slope> after its value");
+    in.expect("]");
+    entries.push_back(e);
+  }
+  if (entries.empty()) in.error(at, "a slope map needs at least one entry");
+  for (size_t i = 1; i < entries.size(); ++i)
+    if (entries[i].at < entries[i - 1].at) {
+      keepError(in, at.loc(), "the slope map's entries must be in ascending order");
+      break;
+    }
+  return entries;
+}
+
+// A block pattern in a normal, its keyword read: `checker`, `hexagon` or `brick`, then its
+// list `normal {..} [,] normal {..}` (as many as cells at most). Missing normals are the
+// #default normal's, as POV-Ray's; without one POV-Ray 3.7 stops, and so does Lucent.
+// Without any, the normal is bent by the slope of the cell index.
+bool SceneReader::readBlockNormal(const Token& t, TokenStream& in, PovNormal& n) {
+  NormalBlock block = NormalBlock::none;
+  if (isWord(t, "checker")) block = NormalBlock::checker;
+  else if (isWord(t, "hexagon")) block = NormalBlock::hexagon;
+  else if (isWord(t, "brick")) block = NormalBlock::brick;
+  else return false;
+  const size_t count = block == NormalBlock::hexagon ? 3 : 2;
+  n.spec.block = block;
+  n.spec.brick = BrickSpec{};
+  n.spec.map.clear();
+  n.spec.slopeMap.clear();
+  n.spec.average.clear();
+  n.average = false;
+  n.patterned = true;
+  while (n.spec.map.size() < count && isWord(in.peek(), "normal")) {
+    in.next();
+    NormalMapEntry e;
+    e.at = static_cast<double>(n.spec.map.size());
+    const PovNormal read = readNormal(in, nullptr);
+    if (read.bump)
+      keepError(in, read.bump->loc,
+                "'bump_map' in a list of normals is not supported by Lucent (a bump map's "
+                "pixels are loaded per material; give the texture the bump_map itself)");
+    e.normal = placedEntry(read);
+    n.spec.map.push_back(std::move(e));
+    in.allow(",");
+  }
+  // POV-Ray's optional amount after the pattern (unused by a list of normals).
+  if (in.allow(",") || startsNumber(in.peek())) n.spec.depth = in.parseFloat();
+  if (n.spec.map.empty()) return true;  // the slope of the cell index, as POV-Ray's
+  while (n.spec.map.size() < count) {
+    if (!defaults_.normal || !defaults_.normal->patterned) {
+      keepError(in, t.loc(),
+                "the list of normals needs " + std::to_string(count) +
+                    " normals here (POV-Ray 3.7 fills a shorter list with the #default normal, "
+                    "and there is none)");
+      return true;
+    }
+    NormalMapEntry e;
+    e.at = static_cast<double>(n.spec.map.size());
+    e.normal = placedEntry(*defaults_.normal);
+    n.spec.map.push_back(std::move(e));
+  }
   return true;
 }
 

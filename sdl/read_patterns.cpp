@@ -525,10 +525,6 @@ bool SceneReader::refusePattern(const Token& t, TokenStream& in, bool inEntry) {
     keepError(s, k.loc(),
               "'" + std::string(k.text()) + "' is not supported by Lucent (" + why + ")");
   };
-  if (w == "checker" || w == "hexagon" || w == "brick") {
-    refuseInBlock(t, in, "as a normal pattern; Lucent's " + std::string(w) + " is a pigment");
-    return true;
-  }
   if (const PatternTypeInfo* info = patternType(t); info && !info->colour) {
     refuseInBlock(t, in,
                   "as a colour pattern; Lucent's " + std::string(w) + " is a normal pattern");

@@ -52,6 +52,7 @@ PovNormal SceneReader::readNormal(TokenStream& in, const PovNormal* start) {
 PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, bool inEntry) {
   PovNormal n;
   if (start) n = *start;
+  else if (defaults_.normal) n = *defaults_.normal;  // POV-Ray copies the #default normal
   if (const auto* item = use<NormalItem>(in.peek(), in)) {
     in.next();
     n = item->normal;
@@ -76,7 +77,9 @@ PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, b
       if (s.type == PatternType::function) s.function = readPatternFunction(in);
       n.spec.pattern = s;
       n.spec.average.clear();
+      n.spec.block = NormalBlock::none;  // a map (a block's list too) stays, as POV-Ray's
       n.average = false;
+      n.patterned = true;
       // POV-Ray: an optional comma, then the optional amount (its bump_size).
       if (in.allow(",") || startsNumber(in.peek())) n.spec.depth = in.parseFloat();
     } else if (isWord(t, "bump_map")) {
@@ -84,12 +87,23 @@ PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, b
     } else if (isWord(t, "bump_size")) {
       n.spec.depth = in.parseFloat();
       if (n.bump) n.bump->depth = n.spec.depth;
+    } else if (n.spec.block == NormalBlock::brick &&
+               (isWord(t, "brick_size") || isWord(t, "mortar"))) {
+      if (isWord(t, "mortar")) {
+        n.spec.brick.mortar = in.parseFloat();
+      } else {
+        const Vec3 size = toVec3(in.parseVector());
+        if (!(size.x > 0 && size.y > 0 && size.z > 0))
+          in.error(t, "the brick's size must be positive in x, y and z");
+        n.spec.brick.size = size;
+      }
     } else if (isWord(t, "accuracy")) {
       const double accuracy = in.parseFloat();
       if (accuracy != 0.02)
         warn(in, t.loc(),
              "accuracy is not imported (Lucent's normals take POV-Ray's default 0.02)");
-    } else if (!readNormalAverage(t, in, n) && !readTransform(t, in, n.transform) &&
+    } else if (!readBlockNormal(t, in, n) && !readNormalMapKeyword(t, in, n) &&
+               !readTransform(t, in, n.transform) &&
                !readWarp(t, in, &n.spec.pattern.placement, &n.spec.pattern, n.transform,
                          n.warped) &&
                !readPatternModifier(t, in, &n.spec.pattern, &n.spec.pattern.placement)) {
@@ -355,6 +369,7 @@ bool SceneReader::readOldNormal(const Token& t, TokenStream& in, PovTexture& tex
     if (info.pov == t.text()) n.spec.pattern.type = info.type;
   n.spec.pattern.noiseGenerator = 0;  // the scene's global_settings noise_generator
   n.spec.depth = in.parseFloat();
+  n.patterned = true;
   tex.normal = n;
   return true;
 }

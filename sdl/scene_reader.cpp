@@ -32,10 +32,6 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"double_illuminate", "surfaces lit from both sides"},
       {"material_map", "material maps; Lucent has one material per object"},
       {"texture_map", "maps of textures; Lucent has one texture layer per material"},
-      {"normal_map",
-       "maps of normals other than average's; Lucent's <normal> takes one pattern or an "
-       "average"},
-      {"slope_map", "slope maps of normals; Lucent's <normal> takes the pattern's own slope"},
       {"average", "averages of textures; Lucent averages pigments and normals"},
       {"image_pattern", "image patterns"},
       {"uv_mapping", "uv_mapping of patterns; Lucent's <image> is read at the shape's (u,v)"},
@@ -275,7 +271,8 @@ void SceneReader::readScene(TokenStream& in) {
   }
 }
 
-// `#default { texture { } pigment { } finish { } }`: what later textures start from.
+// `#default { texture { } pigment { } normal { } finish { } }`: what later textures start
+// from.
 void SceneReader::readDefault(TokenStream& in) {
   defaultMaterial_.reset();  // objects from here on take the new defaults
   in.expect("{");
@@ -286,9 +283,12 @@ void SceneReader::readDefault(TokenStream& in) {
       defaults_.pigment = readPigment(in, defaults_.pigment);
     } else if (isWord(t, "finish")) {
       defaults_.finish = readFinish(in, defaults_.finish);
+    } else if (isWord(t, "normal")) {
+      defaults_.normal = readNormal(in, nullptr);  // starts from the default normal
     } else if (isWord(t, "texture")) {
       const PovTexture tex = readTexture(in, defaultTexture());
       defaults_.pigment = tex.pigment;
+      defaults_.normal = tex.normal;
       defaults_.finish = tex.finish;
     } else {
       unreadInBlock(t, in);
@@ -408,6 +408,8 @@ Material SceneReader::importLayer(const PovTexture& layer, const PovInterior& in
     m.bumpMap->keepFacingAway = true;  // POV-Ray keeps a bent normal that faces away
     m.bumpMap->placement.patternFromObject =
         glm::inverse(layer.normal->transform.povMatrix()) * objectToTexture;
+  } else if (layer.normal && !layer.normal->patterned) {
+    keepError(in, at, "a normal without a pattern (POV-Ray: 'No normal type given')");
   } else if (layer.normal) {
     m.normal = layer.normal->spec;
     m.normal->keepFacingAway = true;  // POV-Ray keeps a bent normal that faces away
@@ -553,6 +555,7 @@ void forEachPattern(Texture& t, const std::function<void(PatternSpec&)>& f) {
 void forEachNormalPattern(NormalSpec& n, const std::function<void(PatternSpec&)>& f) {
   f(n.pattern);
   for (WeightedNormal& e : n.average) forEachNormalPattern(e.normal, f);
+  for (NormalMapEntry& e : n.map) forEachNormalPattern(e.normal, f);
 }
 
 }  // namespace

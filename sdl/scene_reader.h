@@ -355,7 +355,9 @@ class SceneReader : public ItemReader {
   bool readPigmentMapKeyword(const Token& t, TokenStream& in, PovPigment& p);
   bool readBlockPigments(TokenStream& in, PovPigment& p, size_t count);
   void refuseNestedImage(const TextureMapEntry& e, TokenStream& in);
-  bool readNormalAverage(const Token& t, TokenStream& in, PovNormal& n);
+  bool readNormalMapKeyword(const Token& t, TokenStream& in, PovNormal& n);
+  std::vector<SlopeMapEntry> readSlopeMap(TokenStream& in, const Token& at);
+  bool readBlockNormal(const Token& t, TokenStream& in, PovNormal& n);
   void skipEntryRest(const Token& t, TokenStream& in);
   bool refusePattern(const Token& t, TokenStream& in, bool inEntry = false);
   bool readOldNormal(const Token& t, TokenStream& in, PovTexture& tex);
@@ -365,7 +367,7 @@ class SceneReader : public ItemReader {
                 const PatternSpec* spec, const PovTransform& before, bool& warped);
 
   PovTexture defaultTexture() const {
-    return {defaults_.pigment, std::nullopt, defaults_.finish, {}, {}, {}, {}};
+    return {defaults_.pigment, defaults_.normal, defaults_.finish, {}, {}, {}, {}};
   }
 
   Scene& scene_;

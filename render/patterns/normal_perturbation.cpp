@@ -1,5 +1,6 @@
 #include "normal_perturbation.h"
 
+#include "normal_map.h"
 #include "pattern_point.h"
 #include "pattern_value.h"
 #include "primitives/noise.h"
@@ -47,13 +48,17 @@ Vec3 wrinkles(const Vec3& n, const Vec3& p, double amount) {
   return addScaled(n, amount, sum);
 }
 
-Vec3 slope(const PatternSpec& spec, const Vec3& n, const Vec3& p, double amount) {
+// The slope estimate; a slope map turns each sampled value into its height first.
+Vec3 slope(const NormalSpec& normal, const Vec3& n, const Vec3& p, double amount) {
   const double delta = static_cast<float>(kNormalAccuracy);
   const double k = amount * -5.0 * (0.02 / delta);  // POV-Ray's "fudge factor"
   Vec3 r = n;
   for (const auto& d : kPyramid) {
     const Vec3 q(p.x + delta * d[0], p.y + delta * d[1], p.z + delta * d[2]);
-    const double value = patternValueAt(spec, q);
+    // A block pattern without a list of normals: the slope of its cell index, as POV-Ray's.
+    double value = normal.block != NormalBlock::none ? normalBlockIndex(normal, q)
+                                                     : patternValueAt(normal.pattern, q);
+    if (!normal.slopeMap.empty()) value = slopeMapHeight(normal.slopeMap, value);
     r = addScaled(r, value * k, Vec3(d[0], d[1], d[2]));
   }
   return r;
@@ -78,8 +83,40 @@ Vec3 perturbByPattern(const NormalSpec& normal, Vec3 n, const Vec3& p, double am
     case PatternType::waves:
       return wavesNormal(n, p, spec.frequency, spec.phase, amount);
     default:
-      return slope(spec, n, p, amount);
+      return slope(normal, n, p, amount);
   }
+}
+
+// POV-Ray's average: each normal bent at the average's point in the average's space (its
+// own placement composing with the average's), weighted in single precision; the mean is
+// normalised on the way back.
+Vec3 averageNormal(const NormalSpec& normal, const Vec3& n, const Vec3& objPoint) {
+  const Vec3 q = warpPoint(normal.pattern.placement, objPoint);
+  Vec3 sum(0.0);
+  float total = 0.0f;
+  for (const WeightedNormal& e : normal.average) {
+    const float w = static_cast<float>(e.weight);
+    sum = addScaled(sum, w, perturbNormal(e.normal, q, n));
+    total += w;
+  }
+  return sum / static_cast<double>(total);
+}
+
+// POV-Ray's normal_map and block lists: the pattern's value (a block pattern's cell) at
+// the map's point picks one entry, or two whose bent normals are blended linearly (not
+// normalised in between); each entry is bent at that point from the map-space normal n.
+Vec3 mapNormal(const NormalSpec& normal, const Vec3& n, const Vec3& objPoint) {
+  const PatternSpec& spec = normal.pattern;
+  const bool block = normal.block != NormalBlock::none;
+  const Vec3 q = warpPoint(spec.placement, objPoint, block || turbulenceDisplaces(spec.type));
+  const double value = block ? normalBlockIndex(normal, q) : patternValueAt(spec, q);
+  const MapSearch s = searchMap(normal.map, value);
+  auto bent = [&](const NormalMapEntry& e) { return e.flat ? n : perturbNormal(e.normal, q, n); };
+  const Vec3 cur = bent(normal.map[s.cur]);
+  if (s.prev == s.cur) return cur;
+  const Vec3 prev = bent(normal.map[s.prev]);
+  return addScaled(Vec3(prev.x * (1.0 - s.t), prev.y * (1.0 - s.t), prev.z * (1.0 - s.t)), s.t,
+                   cur);
 }
 
 }  // namespace
@@ -98,18 +135,11 @@ Vec3 perturbNormal(const NormalSpec& normal, const Vec3& objPoint, const Vec3& o
   n = normalised(n);
 
   if (!normal.average.empty()) {
-    // POV-Ray's average: each normal bent at the average's point in the average's space
-    // (its own placement composing with the average's), weighted in single precision;
-    // the mean is normalised on the way back.
-    const Vec3 q = warpPoint(spec.placement, objPoint);
-    Vec3 sum(0.0);
-    float total = 0.0f;
-    for (const WeightedNormal& e : normal.average) {
-      const float w = static_cast<float>(e.weight);
-      sum = addScaled(sum, w, perturbNormal(e.normal, q, n));
-      total += w;
-    }
-    n = sum / static_cast<double>(total);
+    n = averageNormal(normal, n, objPoint);
+  } else if (!normal.map.empty()) {
+    n = mapNormal(normal, n, objPoint);
+  } else if (normal.block != NormalBlock::none) {
+    n = slope(normal, n, warpPoint(spec.placement, objPoint), amount);
   } else {
     n = perturbByPattern(
         normal, n, warpPoint(spec.placement, objPoint, turbulenceDisplaces(spec.type)), amount);

@@ -15,6 +15,33 @@ inline NormalSpec bumpy(PatternSpec s, double depth) {
   return n;
 }
 
+// A normal map (entries at `at`) or a block pattern's list (entries at 0, 1, 2) over `s`.
+inline NormalSpec mapped(PatternSpec s, std::vector<std::pair<double, NormalSpec>> entries,
+                         NormalBlock block = NormalBlock::none) {
+  NormalSpec n;
+  n.pattern = s;
+  n.block = block;
+  for (auto& [at, normal] : entries) n.map.push_back({at, false, normal});
+  return n;
+}
+
+// A normal spec with its depth (a map's or a list's, for a block pattern's slope).
+inline NormalSpec bumpy(NormalSpec n, double depth) {
+  n.depth = depth;
+  return n;
+}
+
+inline NormalSpec sloped(NormalSpec n, std::vector<SlopeMapEntry> map) {
+  n.slopeMap = std::move(map);
+  return n;
+}
+
+inline NormalSpec bricked(NormalSpec n, Vec3 size, double mortar) {
+  n.brick.size = size;
+  n.brick.mortar = mortar;
+  return n;
+}
+
 inline std::map<std::string, NormalSpec> normalCases() {
   using T = PatternType;
   return {
@@ -48,6 +75,46 @@ inline std::map<std::string, NormalSpec> normalCases() {
              0.6)},
       {"quilted", bumpy(placed(quilted(0.5, 0.8), inverseScale(Vec3(0.7))), 0.6)},
       {"mandel", bumpy(placed(fractal(T::mandel, 30), inverseScale(Vec3(1.5))), 0.5)},
+      {"normal_map", mapped(placed(axis(spec(T::gradient), Vec3(1, 0, 0)), inverseScale(Vec3(2))),
+                            {{0.3, bumpy(placed(spec(T::bumps), inverseScale(Vec3(0.5))), 0.6)},
+                             {0.7, bumpy(turbulent(spec(T::marble), Vec3(0.5)), 0.5)}})},
+      {"normal_map_three",
+       mapped(placed(spec(T::bozo), inverseScale(Vec3(0.7))),
+              {{0.2, bumpy(tuned(spec(T::ripples), 3, 0), 0.6)},
+               {0.5, bumpy(spec(T::granite), 0.3)},
+               {0.8, bumpy(placed(spec(T::leopard), inverseScale(Vec3(0.2))), 0.5)}})},
+      {"checker_normals", mapped(placed(spec(T::bozo), inverseScale(Vec3(0.9))),
+                                 {{0, bumpy(placed(spec(T::bumps), inverseScale(Vec3(0.3))), 0.8)},
+                                  {1, bumpy(spec(T::wrinkles), 0.5)}},
+                                 NormalBlock::checker)},
+      {"hexagon_normals",
+       mapped(placed(spec(T::bozo), then(inverseRotate(Vec3(90, 0, 0)), inverseScale(Vec3(0.6)))),
+              {{0, bumpy(spec(T::ripples), 0.5)},
+               {1, bumpy(spec(T::granite), 0.4)},
+               {2, bumpy(spec(T::bumps), 0.7)}},
+              NormalBlock::hexagon)},
+      {"brick_normals",
+       bricked(mapped(spec(T::bozo),
+                      {{0, bumpy(spec(T::granite), 0.3)},
+                       {1, bumpy(placed(spec(T::bumps), inverseScale(Vec3(0.2))), 0.8)}},
+                      NormalBlock::brick),
+               Vec3(1, 0.4, 0.6), 0.1)},
+      {"slope_map", sloped(bumpy(placed(spec(T::onion), inverseScale(Vec3(0.6))), 0.8),
+                           {{0, 0, 1}, {0.5, 1, 1}, {0.5, 1, -1}, {1, 0, -1}})},
+      {"slope_map_sine",
+       sloped(bumpy(placed(axis(spec(T::gradient), Vec3(1, 1, 0)), inverseScale(Vec3(0.8))), 0.6),
+              {{0, 0.5, 1}, {0.25, 1, 0}, {0.5, 0.5, -1}, {0.75, 0, 0}, {1, 0.5, 1}})},
+      {"checker_slope",
+       bumpy(mapped(placed(spec(T::bozo), inverseScale(Vec3(0.7))), {}, NormalBlock::checker),
+             0.5)},
+      {"hexagon_slope", bumpy(mapped(placed(spec(T::bozo), then(inverseRotate(Vec3(90, 0, 0)),
+                                                                inverseScale(Vec3(0.5)))),
+                                     {}, NormalBlock::hexagon),
+                              0.6)},
+      {"brick_slope",
+       bumpy(bricked(mapped(spec(T::bozo), {}, NormalBlock::brick), Vec3(1, 0.4, 0.6), 0.1), 0.75)},
+      {"slope_map_granite",
+       sloped(bumpy(spec(T::granite), 0.5), {{0, 0, 0}, {0.4, 0.2, 2}, {1, 1, 0}})},
   };
 }
 

@@ -118,22 +118,18 @@ TEST_CASE("scene reader maps: what stays refused, at its keyword",
   const auto errors = errorsOf(
       "sphere { 0, 1 pigment { average } }\n"
       "sphere { 0, 1 pigment { checker pigment { rgb 1 } rgb 0 } }\n"
-      "sphere { 0, 1 normal { gradient x normal_map { [0 bumps] [1 dents] } } }\n"
       "sphere { 0, 1 pigment { gradient y pigment_map { [0 rgb 1] [1 cells] } } }\n"
       "sphere { 0, 1 pigment { gradient y pigment_map { [0.5 rgb 1] [0.2 rgb 0] } } }\n");
-  REQUIRE(errors.size() == 5);
+  REQUIRE(errors.size() == 4);
   CHECK(errors[0] ==
         "test.pov:1:25: error: 'average' needs a pigment_map (the pigments it averages)");
   CHECK(errors[1] ==
         "test.pov:2:33: error: a list of pigments in a block pattern needs 2 pigments here "
         "(Lucent does not mix pigments and colours in one list)");
-  CHECK(errors[2] ==
-        "test.pov:3:35: error: 'normal_map' is not supported by Lucent (maps of normals other "
-        "than average's; Lucent's <normal> takes one pattern or an average)");
-  CHECK(errors[3].rfind("test.pov:4:63: error: 'cells' is not supported by Lucent (a pattern "
+  CHECK(errors[2].rfind("test.pov:3:63: error: 'cells' is not supported by Lucent (a pattern "
                         "Lucent does not have; its patterns are gradient",
                         0) == 0);
-  CHECK(errors[4] == "test.pov:5:36: error: the pigment map's entries must be in ascending order");
+  CHECK(errors[3] == "test.pov:4:36: error: the pigment map's entries must be in ascending order");
 }
 
 TEST_CASE("scene reader maps: an average's weights are optional, 1 by default (POV-Ray's)",

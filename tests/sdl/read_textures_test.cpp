@@ -345,9 +345,8 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
       "sphere { 0, 1 pigment { checker pigment_map { [0 rgb 1] } } }\n"
       "sphere { 0, 1 interior_texture { pigment { rgb 1 } } }\n"
       "sphere { 0, 1 pigment { image_map { png \"scenes/image_maps.png\" use_index } } }\n"
-      "sphere { 0, 1 normal { checker } }\n"
       "sphere { 0, 1 texture { tiles { texture { pigment { rgb 1 } } } } }\n");
-  REQUIRE(errors.size() == 6);
+  REQUIRE(errors.size() == 5);
   CHECK(errors[0].rfind("test.pov:1:25: error: 'cells' is not supported by Lucent (a pattern "
                         "Lucent does not have; its patterns are gradient, onion",
                         0) == 0);
@@ -359,10 +358,7 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
         "inside of a surface)");
   CHECK(errors[3].rfind("test.pov:4:65: error: 'use_index' is not supported by Lucent", 0) == 0);
   CHECK(errors[4] ==
-        "test.pov:5:24: error: 'checker' is not supported by Lucent (as a normal pattern; "
-        "Lucent's checker is a pigment)");
-  CHECK(errors[5] ==
-        "test.pov:6:25: error: 'tiles' is not supported by Lucent (a pattern of textures that "
+        "test.pov:5:25: error: 'tiles' is not supported by Lucent (a pattern of textures that "
         "Lucent cannot read: it reads texture_map after a pattern, and the texture lists of "
         "checker, hexagon and brick)");
 }

@@ -125,3 +125,8 @@ TEST_CASE("scene reader image: image maps projected planar, spherical, cylindric
           "[sdl][scene][image][povray][image-map]") {
   requireSameImageAsPovrayInPlace("image_maps.pov", 160, 120);
 }
+
+TEST_CASE("scene reader image: normal maps, lists of normals, slope maps and #default normals",
+          "[sdl][scene][image][povray][texture]") {
+  requireSameImageAsPovray("normal_maps.pov", 160, 120);
+}

@@ -237,6 +237,17 @@ normal_cases=(
   "planar_rotated|planar 0.6 rotate <0, 0, 40> scale 1.5"
   "quilted|quilted 0.6 control0 0.5 control1 0.8 scale 0.7"
   "mandel|mandel 30 0.5 scale 1.5"
+  "normal_map|gradient x normal_map { [0.3 bumps 0.6 scale 0.5] [0.7 marble 0.5 turbulence 0.5] } scale 2"
+  "normal_map_three|bozo normal_map { [0.2 ripples 0.6 frequency 3] [0.5 granite 0.3] [0.8 leopard 0.5 scale 0.2] } scale 0.7"
+  "checker_normals|checker normal { bumps 0.8 scale 0.3 } normal { wrinkles 0.5 } scale 0.9"
+  "hexagon_normals|hexagon normal { ripples 0.5 } normal { granite 0.4 } normal { bumps 0.7 } rotate x * 90 scale 0.6"
+  "brick_normals|brick normal { granite 0.3 } normal { bumps 0.8 scale 0.2 } brick_size <1, 0.4, 0.6> mortar 0.1"
+  "slope_map|onion 0.8 slope_map { [0 <0, 1>] [0.5 <1, 1>] [0.5 <1, -1>] [1 <0, -1>] } scale 0.6"
+  "slope_map_sine|gradient <1, 1, 0> 0.6 slope_map { [0 <0.5, 1>] [0.25 <1, 0>] [0.5 <0.5, -1>] [0.75 <0, 0>] [1 <0.5, 1>] } scale 0.8"
+  "slope_map_granite|granite 0.5 slope_map { [0 <0, 0>] [0.4 <0.2, 2>] [1 <1, 0>] }"
+  "checker_slope|checker 0.5 scale 0.7"
+  "hexagon_slope|hexagon 0.6 rotate x * 90 scale 0.5"
+  "brick_slope|brick 0.75 brick_size <1, 0.4, 0.6> mortar 0.1"
 )
 echo "case,i,j,r,g,b" >"$work/normals.csv"
 for c in "${normal_cases[@]}"; do
