@@ -46,6 +46,10 @@ enum class PatternType {
   julia,
   magnet,
   function,
+  spherical,
+  cylindrical,
+  boxed,
+  cells,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -110,6 +114,14 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "the magnet fractals of type 1 or 2 in the x-y plane, Mandelbrot or Julia form"},
     {PatternType::function, "function", "function", true, WaveShape::ramp, false,
      "the value of an expression of x, y and z (above 1 its fractional part)"},
+    {PatternType::spherical, "spherical", "spherical", true, WaveShape::ramp, false,
+     "1 at the origin, falling linearly to 0 at distance 1, 0 beyond"},
+    {PatternType::cylindrical, "cylindrical", "cylindrical", true, WaveShape::ramp, false,
+     "1 on the y axis, falling linearly to 0 at distance 1 from it, 0 beyond"},
+    {PatternType::boxed, "boxed", "boxed", true, WaveShape::ramp, false,
+     "1 at the origin, falling linearly to 0 on the cube of half-side 1, 0 outside it"},
+    {PatternType::cells, "cells", "cells", true, WaveShape::ramp, false,
+     "one random value for each unit cube"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 

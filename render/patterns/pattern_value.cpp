@@ -135,6 +135,14 @@ double planar(const Vec3& p) {
   return r > 1.0 ? 0.0 : 1.0 - r;
 }
 
+// POV-Ray's CLIP_DENSITY of a distance r: 1 − r within [0, 1], 0 beyond (and 1 below 0,
+// which a distance never is). Spherical, cylindrical and boxed are its distance to the
+// origin, to the y axis and (the largest coordinate) to the origin's cube.
+double clippedDistance(double r) {
+  if (r < 0.0) return 1.0;
+  return r > 1.0 ? 0.0 : 1.0 - r;
+}
+
 double dents(const Vec3& p, int generator) {
   const double n = noise(p, generator);
   return n * n * n;
@@ -216,6 +224,14 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
       const double v = spec.function->field->value(p);
       return v > 1.0 ? std::fmod(v, 1.0) : v;
     }
+    case PatternType::spherical:
+      return clippedDistance(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z));
+    case PatternType::cylindrical:
+      return clippedDistance(std::sqrt(p.x * p.x + p.z * p.z));
+    case PatternType::boxed:
+      return clippedDistance(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
+    case PatternType::cells:
+      return cellsValue(p);
   }
   return 0.0;
 }

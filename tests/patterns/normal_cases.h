@@ -48,6 +48,14 @@ inline std::map<std::string, NormalSpec> normalCases() {
              0.6)},
       {"quilted", bumpy(placed(quilted(0.5, 0.8), inverseScale(Vec3(0.7))), 0.6)},
       {"mandel", bumpy(placed(fractal(T::mandel, 30), inverseScale(Vec3(1.5))), 0.5)},
+      {"spherical", bumpy(placed(spec(T::spherical), inverseScale(Vec3(2))), 0.7)},
+      {"cylindrical", bumpy(placed(spec(T::cylindrical),
+                                   then(inverseScale(Vec3(1.5)), inverseRotate(Vec3(0, 0, 30)))),
+                            0.5)},
+      {"boxed",
+       bumpy(placed(spec(T::boxed), then(inverseScale(Vec3(1.7)), inverseRotate(Vec3(0, 0, 20)))),
+             0.6)},
+      {"cells", bumpy(placed(spec(T::cells), inverseScale(Vec3(0.6))), 0.5)},
   };
 }
 

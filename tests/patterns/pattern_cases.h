@@ -230,6 +230,20 @@ inline std::map<std::string, PatternSpec> patternCases() {
       {"magnet1j", magnet(1, true, 30, {6, 0.01}, {0, 1}, 0.4, 0.1)},
       {"magnet2m", magnet(2, false, 30, {0, 0.3}, {1, 0.4})},
       {"magnet2j", magnet(2, true, 25, {1, 1}, {0, 1}, 1.1, 0.3)},
+      {"spherical", spec(T::spherical)},
+      {"spherical_sine", tuned(waved(spec(T::spherical), WaveShape::sine), 3, 0.2)},
+      {"cylindrical", spec(T::cylindrical)},
+      {"cylindrical_turbulence",
+       placed(turbulent(spec(T::cylindrical), Vec3(0.3)), inverseScale(Vec3(1, 2, 0.5)))},
+      {"boxed", spec(T::boxed)},
+      {"boxed_rotated",
+       tuned(waved(placed(spec(T::boxed), inverseRotate(Vec3(20, 30, 0))), WaveShape::triangle), 2,
+             0)},
+      {"cells", spec(T::cells)},
+      {"cells_placed",
+       placed(spec(T::cells), then(inverseScale(Vec3(0.3)), inverseTranslate(Vec3(0.5, 0, 0))))},
+      {"cells_far", spec(T::cells)},
+      {"cells_turbulence", tuned(turbulent(spec(T::cells), Vec3(0.5)), 1.5, 0.1)},
   };
 }
 
