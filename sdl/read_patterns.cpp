@@ -41,9 +41,8 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
 constexpr std::string_view kPatternsLucentLacks[] = {
-    "aoi",       "boxed",  "cells",    "cubic",           "cylindrical",  "density_file",
-    "facets",    "object", "pavement", "pigment_pattern", "potential",    "slope",
-    "spherical", "square", "tiling",   "triangular",      "image_pattern"};
+    "aoi",       "cubic", "density_file", "facets", "object",     "pavement",     "pigment_pattern",
+    "potential", "slope", "square",       "tiling", "triangular", "image_pattern"};
 
 const PatternTypeInfo* patternType(const Token& t) {
   if (t.kind != TokenKind::Keyword) return nullptr;

@@ -119,7 +119,7 @@ TEST_CASE("scene reader maps: what stays refused, at its keyword",
       "sphere { 0, 1 pigment { average } }\n"
       "sphere { 0, 1 pigment { checker pigment { rgb 1 } rgb 0 } }\n"
       "sphere { 0, 1 normal { gradient x normal_map { [0 bumps] [1 dents] } } }\n"
-      "sphere { 0, 1 pigment { gradient y pigment_map { [0 rgb 1] [1 cells] } } }\n"
+      "sphere { 0, 1 pigment { gradient y pigment_map { [0 rgb 1] [1 cubic] } } }\n"
       "sphere { 0, 1 pigment { gradient y pigment_map { [0.5 rgb 1] [0.2 rgb 0] } } }\n");
   REQUIRE(errors.size() == 5);
   CHECK(errors[0] ==
@@ -130,7 +130,7 @@ TEST_CASE("scene reader maps: what stays refused, at its keyword",
   CHECK(errors[2] ==
         "test.pov:3:35: error: 'normal_map' is not supported by Lucent (maps of normals other "
         "than average's; Lucent's <normal> takes one pattern or an average)");
-  CHECK(errors[3].rfind("test.pov:4:63: error: 'cells' is not supported by Lucent (a pattern "
+  CHECK(errors[3].rfind("test.pov:4:63: error: 'cubic' is not supported by Lucent (a pattern "
                         "Lucent does not have; its patterns are gradient",
                         0) == 0);
   CHECK(errors[4] == "test.pov:5:36: error: the pigment map's entries must be in ascending order");
