@@ -120,6 +120,21 @@ void writeEntries(const std::string& list, const std::vector<TextureMapEntry>& e
   if (!list.empty()) out.close(list);
 }
 
+// pigment-pattern's <pigment>: a plain colour's attributes, or one texture element.
+void writePatternPigment(const PatternSpec& s, const SourceLoc& loc, XmlOut& out,
+                         const std::string& folder) {
+  if (s.type != PatternType::pigment || !s.pigment) return;
+  const TextureMapEntry& e = *s.pigment;
+  if (std::holds_alternative<std::monostate>(e.texture)) {
+    Attributes a{{"color", xmlColor(e.color.rgb)}};
+    addFilterTransmit(e.color.ft, "", a);
+    return out.open("pigment", a, true);
+  }
+  out.open("pigment", {}, false);
+  writeTexture(e.texture, loc, out, folder);
+  out.close("pigment");
+}
+
 // A block pattern's element: empty with its colours, or with a <pigment-list> child and
 // without the colour attributes (colorN, filterN, transmitN).
 void writeBlock(const std::string& element, Attributes a,
@@ -139,7 +154,8 @@ void writeBlock(const std::string& element, Attributes a,
 }
 
 // <normal>: a pattern's, or an average of normals with its <entry weight> children.
-void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
+void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
+                 const std::string& folder) {
   if (!n.average.empty()) {
     Attributes a{{"type", "average"}};
     addPlacement(n.pattern.placement, a);
@@ -147,7 +163,7 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
     out.open("normal", a, false);
     for (const WeightedNormal& e : n.average) {
       out.open("entry", {{"weight", xmlNumber(e.weight)}}, false);
-      writeNormal(e.normal, loc, out);
+      writeNormal(e.normal, loc, out, folder);
       out.close("entry");
     }
     out.close("normal");
@@ -156,7 +172,10 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
   Attributes a = patternAttributes(n.pattern, loc);
   a.emplace_back("depth", xmlNumber(n.depth));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
-  out.open("normal", a, true);
+  if (n.pattern.type != PatternType::pigment) return out.open("normal", a, true);
+  out.open("normal", a, false);
+  writePatternPigment(n.pattern, loc, out, folder);
+  out.close("normal");
 }
 
 }  // namespace
@@ -182,8 +201,9 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
                     {"scale", xmlNumber(t.scale.x) + " " + xmlNumber(t.scale.y)}},
                    true);
         } else if constexpr (std::is_same_v<T, PatternTexture>) {
-          if (t.pigments.empty()) return writePatternTexture(t, loc, out);
+          if (t.pigments.empty()) return writePatternTexture(t, loc, out, folder);
           out.open("pattern", patternAttributes(t.pattern, loc), false);
+          writePatternPigment(t.pattern, loc, out, folder);
           writeEntries("pigment-map", t.pigments, "at", loc, out, folder);
           out.close("pattern");
         } else if constexpr (std::is_same_v<T, HexagonTexture>) {
@@ -218,10 +238,14 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
       texture);
 }
 
-void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out) {
+void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out,
+                         const std::string& folder) {
   const Attributes a = patternAttributes(t.pattern, loc);
-  if (t.map.entries.empty()) return out.open("pattern", a, true);
+  const bool pigment = t.pattern.type == PatternType::pigment;
+  if (t.map.entries.empty() && !pigment) return out.open("pattern", a, true);
   out.open("pattern", a, false);
+  writePatternPigment(t.pattern, loc, out, folder);
+  if (t.map.entries.empty()) return out.close("pattern");
   out.open("color-map", {}, false);
   for (const ColorMapEntry& e : t.map.entries) {
     Attributes entry{{"at", xmlNumber(e.at)}, {"color", xmlColor(e.color)}};
@@ -278,7 +302,7 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
     return;
   }
   writeTexture(m.texture, m.loc, out, folder);
-  if (m.normal) writeNormal(*m.normal, m.loc, out);
+  if (m.normal) writeNormal(*m.normal, m.loc, out, folder);
   if (m.bumpMap)
     out.open(
         "bump-map",

@@ -56,6 +56,8 @@ inline std::map<std::string, NormalSpec> normalCases() {
        bumpy(placed(spec(T::boxed), then(inverseScale(Vec3(1.7)), inverseRotate(Vec3(0, 0, 20)))),
              0.6)},
       {"cells", bumpy(placed(spec(T::cells), inverseScale(Vec3(0.6))), 0.5)},
+      {"pigment_pattern",
+       bumpy(pigmentPattern(withMap(placed(spec(T::granite), inverseScale(Vec3(0.5))), {})), 0.6)},
   };
 }
 

@@ -160,6 +160,9 @@ pattern_cases=(
   "cells_placed|8|cells scale 0.3 translate <0.5, 0, 0>"
   "cells_far|4096|cells"
   "cells_turbulence|8|cells turbulence 0.5 frequency 1.5 phase 0.1"
+  "pigment_checker|4|pigment_pattern { checker rgb <1, 0.5, 0>, rgb <0, 0.2, 1> scale 0.5 }"
+  "pigment_gradient|2|pigment_pattern { gradient x color_map { [0 rgb <1, 0, 0>] [1 rgb <0.2, 0.9, 0.4>] } } frequency 2 sine_wave"
+  "pigment_granite|4|pigment_pattern { granite scale 0.3 } turbulence 0.2 scale 1.5"
 )
 color_cases=(
   "map_bozo|8|bozo color_map { [0.2 rgb <1, 0, 0>] [0.5 rgb <0, 1, 0.5>] [0.9 rgb <0.1, 0.2, 0.9>] }"
@@ -251,6 +254,7 @@ normal_cases=(
   "cylindrical|cylindrical 0.5 scale 1.5 rotate <0, 0, 30>"
   "boxed|boxed 0.6 scale 1.7 rotate <0, 0, 20>"
   "cells|cells 0.5 scale 0.6"
+  "pigment_pattern|pigment_pattern { granite scale 0.5 } 0.6"
 )
 echo "case,i,j,r,g,b" >"$work/normals.csv"
 for c in "${normal_cases[@]}"; do
