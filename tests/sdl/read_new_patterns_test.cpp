@@ -108,6 +108,32 @@ sphere { 0, 1 texture { boxed texture_map { [0 pigment { rgb 1 }] [1 pigment { c
         PatternType::cells);
 }
 
+TEST_CASE(
+    "scene reader patterns: pigment_pattern holds its pigment, with POV-Ray's default map "
+    "and its own transform",
+    "[sdl][scene][texture]") {
+  auto r = readScene(R"(
+sphere { 0, 1 pigment { pigment_pattern { bozo scale 2 } color_map { [0 rgb 0] [1 rgb 1] } } }
+sphere { 0, 1 normal { pigment_pattern { rgb <1, 0.5, 0> } 0.4 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const PatternSpec& p = pigmentPattern(s, 0);
+  CHECK(p.type == PatternType::pigment);
+  REQUIRE(p.pigment);
+  const auto& bozo = std::get<PatternTexture>(p.pigment->texture);
+  CHECK(bozo.pattern.type == PatternType::bozo);
+  CHECK(bozo.pattern.noiseGenerator == 2);  // global_settings' default reaches it
+  CHECK(bozo.map.entries.size() == 6);      // POV-Ray's default map of bozo
+  CHECK(bozo.pattern.placement.patternFromObject[0][0] == Approx(0.5));
+  const NormalSpec& n = normalOf(s, 1);
+  CHECK(n.pattern.type == PatternType::pigment);
+  CHECK(n.depth == 0.4);
+  REQUIRE(n.pattern.pigment);
+  CHECK(std::holds_alternative<std::monostate>(n.pattern.pigment->texture));
+  CHECK(n.pattern.pigment->color.rgb == Color(1, 0.5, 0));
+}
+
 TEST_CASE("scene reader patterns: mandel, julia and magnet with their arguments and colourings",
           "[sdl][scene][texture]") {
   auto r = readScene(R"(
