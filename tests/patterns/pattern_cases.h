@@ -274,9 +274,10 @@ inline std::map<std::string, PatternSpec> patternCases() {
                    WaveShape::sine),
              2, 0)},
       {"pigment_granite",
-       placed(turbulent(pigmentPattern(withMap(placed(spec(T::granite), inverseScale(Vec3(0.3))), {})),
-                        Vec3(0.2)),
-              inverseScale(Vec3(1.5)))},
+       placed(
+           turbulent(pigmentPattern(withMap(placed(spec(T::granite), inverseScale(Vec3(0.3))), {})),
+                     Vec3(0.2)),
+           inverseScale(Vec3(1.5)))},
   };
 }
 
