@@ -238,6 +238,29 @@ ColorMap parseColorMap(ElementReader& r) {
   return map;
 }
 
+// A <pigment> child: pigment-pattern's pigment, once; an error on any other type.
+void parsePigmentChild(ElementReader& r, ElementReader& c, PatternSpec& s,
+                       std::optional<SourceLoc>& pigmentLoc) {
+  if (s.type != PatternType::pigment) {
+    c.error(r.tag() + " holds a <pigment> only with type=\"pigment-pattern\", not " +
+            std::string(patternTypeInfo(s.type).name));
+    return;
+  }
+  if (pigmentLoc) {
+    c.error(r.tag() + " holds one <pigment>; the first is at " + pigmentLoc->str());
+    return;
+  }
+  pigmentLoc = c.loc();
+  s.pigment = parsePatternPigment(c);
+}
+
+void needsPigment(ElementReader& r, const PatternSpec& s, const std::optional<SourceLoc>& loc) {
+  if (s.type == PatternType::pigment && !loc && !r.failed())
+    r.error(r.tag() +
+            " type=\"pigment-pattern\" needs a <pigment> (the pigment whose grey level is the "
+            "value)");
+}
+
 }  // namespace
 
 Texture parsePatternTexture(ElementReader& r) {
@@ -254,10 +277,14 @@ Texture parsePatternTexture(ElementReader& r) {
     t.pattern.type = r.choice("type", PatternType::bozo, patternNames(true));
   }
   parseValueAttributes(r, t.pattern);
-  std::optional<SourceLoc> mapLoc;
+  std::optional<SourceLoc> mapLoc, pigmentLoc;
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader c(r.ctx(), r.file(), n);
     const std::string_view name = n.name();
+    if (name == "pigment") {
+      parsePigmentChild(r, c, t.pattern, pigmentLoc);
+      return;
+    }
     if (name != "color-map" && name != "pigment-map") {
       std::string pov = povrayElementHint("pattern", n.name());
       c.error("<pattern> may hold one <color-map> or <pigment-map>, not <" + std::string(name) +
@@ -273,6 +300,7 @@ Texture parsePatternTexture(ElementReader& r) {
     if (name == "color-map") t.map = parseColorMap(c);
     else t.pigments = parsePigmentMap(c);
   });
+  needsPigment(r, t.pattern, pigmentLoc);
   return t;
 }
 
@@ -400,10 +428,14 @@ NormalSpec parseBlockNormal(ElementReader& r, NormalBlock block) {
 
 // A pattern <normal>'s children: one <normal-map> or one <slope-map>.
 void parseNormalChildren(ElementReader& r, NormalSpec& n) {
-  std::optional<SourceLoc> mapLoc;
+  std::optional<SourceLoc> mapLoc, pigmentLoc;
   r.forEachChild([&](pugi::xml_node child) {
     ElementReader c(r.ctx(), r.file(), child);
     const std::string_view name = child.name();
+    if (name == "pigment") {  // pigment-pattern's pigment
+      parsePigmentChild(r, c, n.pattern, pigmentLoc);
+      return;
+    }
     if (name != "normal-map" && name != "slope-map") {
       c.error("<normal> may hold one <normal-map> or <slope-map>, not <" + std::string(name) + ">");
       return;
@@ -428,6 +460,7 @@ void parseNormalChildren(ElementReader& r, NormalSpec& n) {
       n.slopeMap = parseSlopeMap(c);
     }
   });
+  needsPigment(r, n.pattern, pigmentLoc);
 }
 
 }  // namespace

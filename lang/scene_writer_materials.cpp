@@ -146,6 +146,21 @@ void writeEntries(const std::string& list, const std::vector<TextureMapEntry>& e
   if (!list.empty()) out.close(list);
 }
 
+// pigment-pattern's <pigment>: a plain colour's attributes, or one texture element.
+void writePatternPigment(const PatternSpec& s, const SourceLoc& loc, XmlOut& out,
+                         const std::string& folder) {
+  if (s.type != PatternType::pigment || !s.pigment) return;
+  const TextureMapEntry& e = *s.pigment;
+  if (std::holds_alternative<std::monostate>(e.texture)) {
+    Attributes a{{"color", xmlColor(e.color.rgb)}};
+    addFilterTransmit(e.color.ft, "", a);
+    return out.open("pigment", a, true);
+  }
+  out.open("pigment", {}, false);
+  writeTexture(e.texture, loc, out, folder);
+  out.close("pigment");
+}
+
 // A block pattern's element: empty with its colours, or with a <pigment-list> child and
 // without the colour attributes (colorN, filterN, transmitN).
 void writeBlock(const std::string& element, Attributes a,
@@ -164,18 +179,19 @@ void writeBlock(const std::string& element, Attributes a,
   out.close(element);
 }
 
-void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out);
+void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
+                 const std::string& folder);
 
 // A normal map's or a block list's entries: <entry [at]><normal/></entry>, or <entry/>.
 void writeNormalEntries(const std::string& list, const NormalSpec& n, bool at, const SourceLoc& loc,
-                        XmlOut& out) {
+                        XmlOut& out, const std::string& folder) {
   out.open(list, {}, false);
   for (const NormalMapEntry& e : n.map) {
     Attributes a;
     if (at) a.emplace_back("at", xmlNumber(e.at));
     out.open("entry", a, e.flat);
     if (e.flat) continue;
-    writeNormal(e.normal, loc, out);
+    writeNormal(e.normal, loc, out, folder);
     out.close("entry");
   }
   out.close(list);
@@ -196,7 +212,8 @@ const char* blockName(NormalBlock b) {
 }
 
 // <normal type="checker|hexagon|brick"> with its <normal-list>, or its depth.
-void writeBlockNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
+void writeBlockNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
+                      const std::string& folder) {
   Attributes a{{"type", blockName(n.block)}};
   addPlacement(n.pattern.placement, a);
   if (n.block == NormalBlock::brick) {
@@ -207,14 +224,15 @@ void writeBlockNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
   out.open("normal", a, n.map.empty());
   if (n.map.empty()) return;
-  writeNormalEntries("normal-list", n, false, loc, out);
+  writeNormalEntries("normal-list", n, false, loc, out, folder);
   out.close("normal");
 }
 
 // <normal>: a pattern's (with a <normal-map> or a <slope-map>), a block pattern's list, or
 // an average of normals with its <entry weight> children.
-void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
-  if (n.block != NormalBlock::none) return writeBlockNormal(n, loc, out);
+void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
+                 const std::string& folder) {
+  if (n.block != NormalBlock::none) return writeBlockNormal(n, loc, out, folder);
   if (!n.average.empty()) {
     Attributes a{{"type", "average"}};
     addPlacement(n.pattern.placement, a);
@@ -222,7 +240,7 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
     out.open("normal", a, false);
     for (const WeightedNormal& e : n.average) {
       out.open("entry", {{"weight", xmlNumber(e.weight)}}, false);
-      writeNormal(e.normal, loc, out);
+      writeNormal(e.normal, loc, out, folder);
       out.close("entry");
     }
     out.close("normal");
@@ -231,10 +249,12 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
   Attributes a = patternAttributes(n.pattern, loc);
   if (n.map.empty()) a.emplace_back("depth", xmlNumber(n.depth));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
-  const bool children = !n.map.empty() || !n.slopeMap.empty();
+  const bool children =
+      !n.map.empty() || !n.slopeMap.empty() || n.pattern.type == PatternType::pigment;
   out.open("normal", a, !children);
   if (!children) return;
-  if (!n.map.empty()) writeNormalEntries("normal-map", n, true, loc, out);
+  if (n.pattern.type == PatternType::pigment) writePatternPigment(n.pattern, loc, out, folder);
+  if (!n.map.empty()) writeNormalEntries("normal-map", n, true, loc, out, folder);
   if (!n.slopeMap.empty()) {
     out.open("slope-map", {}, false);
     for (const SlopeMapEntry& e : n.slopeMap)
@@ -267,8 +287,9 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
         } else if constexpr (std::is_same_v<T, ImageTexture>) {
           out.open(std::string(T::kind.element), imageAttributes(t, folder), true);
         } else if constexpr (std::is_same_v<T, PatternTexture>) {
-          if (t.pigments.empty()) return writePatternTexture(t, loc, out);
+          if (t.pigments.empty()) return writePatternTexture(t, loc, out, folder);
           out.open("pattern", patternAttributes(t.pattern, loc), false);
+          writePatternPigment(t.pattern, loc, out, folder);
           writeEntries("pigment-map", t.pigments, "at", loc, out, folder);
           out.close("pattern");
         } else if constexpr (std::is_same_v<T, HexagonTexture>) {
@@ -303,10 +324,14 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
       texture);
 }
 
-void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out) {
+void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out,
+                         const std::string& folder) {
   const Attributes a = patternAttributes(t.pattern, loc);
-  if (t.map.entries.empty()) return out.open("pattern", a, true);
+  const bool pigment = t.pattern.type == PatternType::pigment;
+  if (t.map.entries.empty() && !pigment) return out.open("pattern", a, true);
   out.open("pattern", a, false);
+  writePatternPigment(t.pattern, loc, out, folder);
+  if (t.map.entries.empty()) return out.close("pattern");
   out.open("color-map", {}, false);
   for (const ColorMapEntry& e : t.map.entries) {
     Attributes entry{{"at", xmlNumber(e.at)}, {"color", xmlColor(e.color)}};
@@ -363,7 +388,7 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
     return;
   }
   writeTexture(m.texture, m.loc, out, folder);
-  if (m.normal) writeNormal(*m.normal, m.loc, out);
+  if (m.normal) writeNormal(*m.normal, m.loc, out, folder);
   if (m.bumpMap) {
     Attributes a{{"src", fileReference(m.bumpMap->path, folder)},
                  {"depth", xmlNumber(m.bumpMap->depth)}};

@@ -42,7 +42,8 @@ std::string fileReference(const std::string& resolvedPath, const std::string& fo
 // For a <layer> (`layer`): its surface terms only.
 Attributes materialAttributes(const Material& m, bool layer = false);
 void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& folder);
-void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out);
+void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out,
+                         const std::string& folder);
 // A texture element (<checker>, <image>, <pattern>...); file references relative to
 // `folder`.
 void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,

@@ -40,10 +40,9 @@ TextureMapEntry parseEntry(ElementReader& e, EntryValue value) {
     ElementReader c(e.ctx(), e.file(), n);
     const std::string name = n.name();
     if (!isTextureElement(name)) {
-      c.error(
-          "<entry> holds one texture element (pattern, checker, hexagon, brick or average), "
-          "not <" +
-          name + ">");
+      c.error(e.tag() +
+              " holds one texture element (pattern, checker, hexagon, brick or average), not <" +
+              name + ">");
       e.markFailed();
       return;
     }
@@ -55,13 +54,13 @@ TextureMapEntry parseEntry(ElementReader& e, EntryValue value) {
       return;
     }
     if (textureLoc) {
-      c.error("<entry> holds one texture; the first is at " + textureLoc->str());
+      c.error(e.tag() + " holds one texture; the first is at " + textureLoc->str());
       return;
     }
     if (plain || e.has("filter") || e.has("transmit")) {
-      c.error(
-          "an <entry> with a texture takes no color, filter or transmit (the texture's own "
-          "colours have them)");
+      c.error((e.name() == "entry" ? "an " : "a ") + e.tag() +
+              " with a texture takes no color, filter or transmit (the texture's own colours have "
+              "them)");
       e.markFailed();
       return;
     }
@@ -69,9 +68,9 @@ TextureMapEntry parseEntry(ElementReader& e, EntryValue value) {
     entry.texture = parseTexture(c);
   });
   if (!plain && !textureLoc && !e.failed())
-    e.error(
-        "<entry> needs a 'color' or a texture element (pattern, checker, hexagon, brick or "
-        "average)");
+    e.error(e.tag() +
+            " needs a 'color' or a texture element (pattern, checker, hexagon, brick or "
+            "average)");
   return entry;
 }
 
@@ -106,6 +105,10 @@ std::vector<TextureMapEntry> parsePigmentMap(ElementReader& r) {
   });
   if (entries.empty() && !r.failed()) r.error("<pigment-map> needs at least one <entry at>");
   return entries;
+}
+
+std::shared_ptr<const TextureMapEntry> parsePatternPigment(ElementReader& r) {
+  return std::make_shared<const TextureMapEntry>(parseEntry(r, EntryValue::none));
 }
 
 std::vector<TextureMapEntry> parsePigmentList(ElementReader& r, size_t count) {

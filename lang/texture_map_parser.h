@@ -8,6 +8,7 @@
 
 #include "scenegraph/material.h"
 
+#include <memory>
 #include <string_view>
 
 namespace lucent {
@@ -17,6 +18,10 @@ std::vector<TextureMapEntry> parsePigmentMap(ElementReader& r);
 
 // <pigment-list> of exactly `count` entries (without at), for the block pattern `owner`.
 std::vector<TextureMapEntry> parsePigmentList(ElementReader& r, size_t count);
+
+// <pigment color filter transmit/> or <pigment> holding one texture element: the pigment
+// of <pattern type="pigment-pattern"> and of such a <normal>.
+std::shared_ptr<const TextureMapEntry> parsePatternPigment(ElementReader& r);
 
 // <average transform turbulence...><entry weight>...</entry>...</average>.
 Texture parseAverageTexture(ElementReader& r);

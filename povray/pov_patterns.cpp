@@ -134,7 +134,7 @@ void writePigmentList(const std::vector<TextureMapEntry>& entries, const Vec3& s
 
 void writePatternBody(const PatternTexture& t, const Vec3& scale, double filter, double transmit,
                       PovWriter& out) {
-  out.line(patternKeyword(t.pattern));
+  writePatternKeyword(t.pattern, out);
   if (!t.pigments.empty()) {
     writePigmentMap(t.pigments, scale, filter, transmit, out);
   } else {
@@ -233,6 +233,16 @@ void writeBody(const Texture& t, const Vec3& scale, double filter, double transm
 }
 
 }  // namespace
+
+void writePatternKeyword(const PatternSpec& s, PovWriter& out, const std::string& after) {
+  if (s.type != PatternType::pigment) return out.line(patternKeyword(s) + after);
+  // Only the pigment's grey level counts: its colours as they are.
+  out.open("pigment_pattern");
+  if (s.pigment) writeEntryBody(*s.pigment, Vec3(1.0), 0.0, 0.0, out);
+  else out.line("rgb 0");
+  out.close();
+  if (!after.empty()) out.line(after.front() == ' ' ? after.substr(1) : after);
+}
 
 void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filter, double transmit,
                          PovWriter& out) {
@@ -340,7 +350,7 @@ void writeNormalBody(const NormalSpec& n, PovWriter& out) {
   const std::string agate = " agate_turb " + povNumber(n.pattern.agateTurb);
   if (n.pattern.type == PatternType::agate)
     out.line(keyword.substr(0, keyword.size() - agate.size()) + " " + povNumber(n.depth) + agate);
-  else out.line(keyword + " " + povNumber(n.depth));
+  else writePatternKeyword(n.pattern, out, " " + povNumber(n.depth));
   // POV-Ray's slope method samples at this distance (its default, which Lucent uses).
   out.line("accuracy 0.02");
   writeNormalMaps(n, out);

@@ -30,6 +30,9 @@ void writeNormal(const NormalSpec& n, PovWriter& out);
 // The pattern keyword with its arguments ("gradient <0, 1, 0>"), and the value's modifiers
 // (frequency, phase, wave), for a pattern written without its colours (a texture_map's).
 std::string patternKeyword(const PatternSpec& s);
+// The pattern keyword on its line, then `after` (a normal's depth); pigment_pattern's is a
+// block holding its pigment's body.
+void writePatternKeyword(const PatternSpec& s, PovWriter& out, const std::string& after = {});
 void writeValueModifiers(const PatternSpec& s, PovWriter& out);
 // A pattern's turbulence and transform (after the pattern's own modifiers).
 void writePlacement(const PatternPlacement& p, PovWriter& out);

@@ -46,6 +46,11 @@ enum class PatternType {
   julia,
   magnet,
   function,
+  spherical,
+  cylindrical,
+  boxed,
+  cells,
+  pigment,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -110,6 +115,16 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "the magnet fractals of type 1 or 2 in the x-y plane, Mandelbrot or Julia form"},
     {PatternType::function, "function", "function", true, WaveShape::ramp, false,
      "the value of an expression of x, y and z (above 1 its fractional part)"},
+    {PatternType::spherical, "spherical", "spherical", true, WaveShape::ramp, false,
+     "1 at the origin, falling linearly to 0 at distance 1, 0 beyond"},
+    {PatternType::cylindrical, "cylindrical", "cylindrical", true, WaveShape::ramp, false,
+     "1 on the y axis, falling linearly to 0 at distance 1 from it, 0 beyond"},
+    {PatternType::boxed, "boxed", "boxed", true, WaveShape::ramp, false,
+     "1 at the origin, falling linearly to 0 on the cube of half-side 1, 0 outside it"},
+    {PatternType::cells, "cells", "cells", true, WaveShape::ramp, false,
+     "one random value for each unit cube"},
+    {PatternType::pigment, "pigment-pattern", "pigment_pattern", true, WaveShape::ramp, false,
+     "the grey level of a pigment's colour (0.297 r + 0.589 g + 0.114 b)"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 
@@ -196,6 +211,10 @@ struct PatternFunction {
   std::shared_ptr<const ScalarField> field;
 };
 
+// pigment-pattern's pigment: a plain colour or a texture (scenegraph/texture_spec.h; its
+// `at` unused).
+struct TextureMapEntry;
+
 struct PatternSpec {
   PatternType type = PatternType::bozo;
   PatternPlacement placement;
@@ -210,6 +229,7 @@ struct PatternSpec {
   FractalParams fractal;
   double agateTurb = 1.0;  // agate's turbulence scale (POV-Ray's agate_turb)
   std::shared_ptr<const PatternFunction> function;  // type function
+  std::shared_ptr<const TextureMapEntry> pigment;   // type pigment (pigment-pattern)
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin
 
   WaveShape waveShape() const { return wave ? *wave : patternTypeInfo(type).wave; }

@@ -60,6 +60,12 @@ double entryValue(TokenStream& in, bool average) {
 
 }  // namespace
 
+// pigment_pattern's `{ PIGMENT_BODY }`: the pigment as a map's entry, placed in the
+// pattern's space by its own transforms.
+std::shared_ptr<const TextureMapEntry> SceneReader::readPatternPigment(TokenStream& in) {
+  return std::make_shared<const TextureMapEntry>(entryOf(readPigment(in, defaults_.pigment), 0.0));
+}
+
 // `pigment_map { [value PIGMENT_BODY] ... }`, the '{' next, or `pigment_map { M }`; in an
 // average (`average`) the values are optional weights.
 std::vector<TextureMapEntry> SceneReader::readPigmentMap(TokenStream& in, const Token& at,

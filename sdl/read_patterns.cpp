@@ -45,9 +45,8 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
 constexpr std::string_view kPatternsLucentLacks[] = {
-    "aoi",       "boxed",  "cells",    "cubic",           "cylindrical",  "density_file",
-    "facets",    "object", "pavement", "pigment_pattern", "potential",    "slope",
-    "spherical", "square", "tiling",   "triangular",      "image_pattern"};
+    "aoi",       "cubic", "density_file", "facets", "object",     "pavement",
+    "potential", "slope", "square",       "tiling", "triangular", "image_pattern"};
 
 const PatternTypeInfo* patternType(const Token& t) {
   if (t.kind != TokenKind::Keyword) return nullptr;
@@ -119,6 +118,7 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
     tex.pattern.noiseGenerator = 0;  // the scene's global_settings noise_generator
     readPatternArguments(t, in, tex.pattern);
     if (tex.pattern.type == PatternType::function) tex.pattern.function = readPatternFunction(in);
+    if (tex.pattern.type == PatternType::pigment) tex.pattern.pigment = readPatternPigment(in);
     p.pattern = tex;
     p.map.clear();
     return true;

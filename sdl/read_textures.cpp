@@ -75,6 +75,7 @@ PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, b
       s.noiseGenerator = 0;  // the scene's global_settings noise_generator (finishScene)
       readPatternArguments(t, in, s);
       if (s.type == PatternType::function) s.function = readPatternFunction(in);
+      if (s.type == PatternType::pigment) s.pigment = readPatternPigment(in);
       n.spec.pattern = s;
       n.spec.average.clear();
       n.spec.block = NormalBlock::none;  // a map (a block's list too) stays, as POV-Ray's

@@ -532,11 +532,22 @@ bool SceneReader::keepsBound(const PovObject& o, bool framed) {
 
 namespace {
 
+void forEachPattern(Texture& t, const std::function<void(PatternSpec&)>& f);
+
+// The pattern `s` and those of its pigment (pigment_pattern's, shared: changed on a copy).
+void withPigmentPatterns(PatternSpec& s, const std::function<void(PatternSpec&)>& f) {
+  f(s);
+  if (!s.pigment) return;
+  auto copy = std::make_shared<TextureMapEntry>(*s.pigment);
+  forEachPattern(copy->texture, f);
+  s.pigment = std::move(copy);
+}
+
 // Every pattern of a texture, those of the pigments in its maps and lists too.
 void forEachPattern(Texture& t, const std::function<void(PatternSpec&)>& f) {
   std::vector<TextureMapEntry>* entries = nullptr;
   if (auto* p = std::get_if<PatternTexture>(&t)) {
-    f(p->pattern);
+    withPigmentPatterns(p->pattern, f);
     entries = &p->pigments;
   } else if (auto* c = std::get_if<CheckerTexture>(&t)) {
     entries = &c->pigments;
@@ -553,7 +564,7 @@ void forEachPattern(Texture& t, const std::function<void(PatternSpec&)>& f) {
 
 // Every pattern of a normal, those of an average's normals too.
 void forEachNormalPattern(NormalSpec& n, const std::function<void(PatternSpec&)>& f) {
-  f(n.pattern);
+  withPigmentPatterns(n.pattern, f);
   for (WeightedNormal& e : n.average) forEachNormalPattern(e.normal, f);
   for (NormalMapEntry& e : n.map) forEachNormalPattern(e.normal, f);
 }

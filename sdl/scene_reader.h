@@ -313,6 +313,7 @@ class SceneReader : public ItemReader {
   // x, y and z in POV-Ray's space, compiled once per text. Null, with an error kept, for a
   // function Lucent cannot evaluate.
   std::shared_ptr<const PatternFunction> readPatternFunction(TokenStream& in);
+  std::shared_ptr<const TextureMapEntry> readPatternPigment(TokenStream& in);
   // F's Lucent expression text with its parameters named `names`, and its compiled field
   // (compiled once per text); nullopt, with an error kept naming `what`, for a function
   // Lucent cannot evaluate.

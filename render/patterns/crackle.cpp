@@ -54,10 +54,11 @@ const CubeTable& cubeTable() {
   return t;
 }
 
-// The cell below x, as POV-Ray's (int)floor(x - EPSILON); far coordinates are brought into
-// range first (the cell grid repeats every 4096 through the hash).
-int cellBelow(double x) {
-  double f = std::floor(x - kEpsilon);
+// The cell below x, as POV-Ray's (int)floor(x - EPSILON) (cells: floor(x + EPSILON)); far
+// coordinates are brought into range first (the cell grid repeats every 4096 through the
+// hash).
+int cellBelow(double x, double nudge = -kEpsilon) {
+  double f = std::floor(x + nudge);
   if (!(std::fabs(f) < 2.0e9)) f = std::isfinite(f) ? std::fmod(f, 4096.0) : 0.0;
   return static_cast<int>(f);
 }
@@ -137,6 +138,12 @@ double crackleValue(const Vec3& p, const CrackleParams& crackle, int generator) 
             form.z * std::pow(min3, 1.0 / metric);
   }
   return std::max(std::min(value, 1.0), 0.0);
+}
+
+double cellsValue(const Vec3& p) {
+  const int seed =
+      latticeHash(cellBelow(p.x, kEpsilon), cellBelow(p.y, kEpsilon), cellBelow(p.z, kEpsilon));
+  return std::min(cellRandoms().value[seed], 1.0);
 }
 
 }  // namespace lucent

@@ -1,5 +1,6 @@
 // POV-Ray 3.7's crackle (pattern.cpp, crackle_pattern): one random point in every unit
-// cube; the value combines the distances to the nearest three.
+// cube; the value combines the distances to the nearest three. And its cells, which share
+// crackle's random table.
 #pragma once
 
 #include "scenegraph/pattern.h"
@@ -11,5 +12,9 @@ namespace lucent {
 // knight's move of p's cube; with `solid`, the noise at the nearest point instead.
 // Allocates nothing; the random table is built once, on first use.
 double crackleValue(const Vec3& p, const CrackleParams& crackle, int generator);
+
+// POV-Ray's cells: the random value of p's unit cube (the cube below p + 1e-10 on each
+// axis), from the table crackle seeds its points with, indexed by the cube's hash.
+double cellsValue(const Vec3& p);
 
 }  // namespace lucent

@@ -4,6 +4,7 @@
 #include "fractal.h"
 #include "pattern_point.h"
 #include "primitives/noise.h"
+#include "render/texture.h"
 #include "scenegraph/turbulence.h"
 #include "wave.h"
 #include "wave_sources.h"
@@ -135,6 +136,26 @@ double planar(const Vec3& p) {
   return r > 1.0 ? 0.0 : 1.0 - r;
 }
 
+// POV-Ray's CLIP_DENSITY of a distance r: 1 − r within [0, 1], 0 beyond (and 1 below 0,
+// which a distance never is). Spherical, cylindrical and boxed are its distance to the
+// origin, to the y axis and (the largest coordinate) to the origin's cube.
+double clippedDistance(double r) {
+  if (r < 0.0) return 1.0;
+  return r > 1.0 ? 0.0 : 1.0 - r;
+}
+
+// POV-Ray's pigment_pattern: the grey level of the pigment's colour at p (filter and
+// transmit ignored), with POV-Ray's weights of red, green and blue, kept in single
+// precision as POV-Ray's colour channels.
+double pigmentGrey(const PatternSpec& spec, const Vec3& p) {
+  if (!spec.pigment) return 0.0;
+  const TextureMapEntry& e = *spec.pigment;
+  const Color c = std::holds_alternative<std::monostate>(e.texture)
+                      ? e.color.rgb
+                      : pigmentAt(e.texture, p, Vec3(0.0)).rgb;
+  return static_cast<float>(0.297 * c.r + 0.589 * c.g + 0.114 * c.b);
+}
+
 double dents(const Vec3& p, int generator) {
   const double n = noise(p, generator);
   return n * n * n;
@@ -216,6 +237,16 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
       const double v = spec.function->field->value(p);
       return v > 1.0 ? std::fmod(v, 1.0) : v;
     }
+    case PatternType::spherical:
+      return clippedDistance(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z));
+    case PatternType::cylindrical:
+      return clippedDistance(std::sqrt(p.x * p.x + p.z * p.z));
+    case PatternType::boxed:
+      return clippedDistance(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
+    case PatternType::cells:
+      return cellsValue(p);
+    case PatternType::pigment:
+      return pigmentGrey(spec, p);
   }
   return 0.0;
 }

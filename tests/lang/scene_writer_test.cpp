@@ -280,3 +280,21 @@ TEST_CASE("scene writer: quilted's controls and the fractals' parameters are wri
   REQUIRE(reread.scene);
   CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
 }
+
+TEST_CASE("scene writer: pigment-pattern's pigment is written and read back",
+          "[lang][scene-writer]") {
+  const std::string first = written(
+      "<sphere><material><pattern type=\"pigment-pattern\" frequency=\"2\">"
+      "<pigment><checker color1=\"1 0.5 0\" color2=\"0 0.2 1\"/></pigment>"
+      "<color-map><entry at=\"0\" color=\"0 0 0\"/><entry at=\"1\" color=\"1 0 0\"/></color-map>"
+      "</pattern><normal type=\"pigment-pattern\" depth=\"0.3\"><pigment color=\"0.5 0.5 0.5\"/>"
+      "</normal></material></sphere>"
+      "<sphere center=\"3 0 0\"><material><pattern type=\"cells\"/></material></sphere>");
+  CHECK(contains(first, "<pattern type=\"pigment-pattern\" frequency=\"2\">"));
+  CHECK(contains(first, "<checker color1=\"1 0.5 0\" color2=\"0 0.2 1\""));
+  CHECK(contains(first, "<pigment color=\"0.5 0.5 0.5\"/>"));
+  CHECK(contains(first, "<pattern type=\"cells\"/>"));
+  auto reread = parseSceneString(first, "writer.xml");
+  REQUIRE(reread.scene);
+  CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+}

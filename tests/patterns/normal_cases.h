@@ -115,6 +115,16 @@ inline std::map<std::string, NormalSpec> normalCases() {
        bumpy(bricked(mapped(spec(T::bozo), {}, NormalBlock::brick), Vec3(1, 0.4, 0.6), 0.1), 0.75)},
       {"slope_map_granite",
        sloped(bumpy(spec(T::granite), 0.5), {{0, 0, 0}, {0.4, 0.2, 2}, {1, 1, 0}})},
+      {"spherical", bumpy(placed(spec(T::spherical), inverseScale(Vec3(2))), 0.7)},
+      {"cylindrical", bumpy(placed(spec(T::cylindrical),
+                                   then(inverseScale(Vec3(1.5)), inverseRotate(Vec3(0, 0, 30)))),
+                            0.5)},
+      {"boxed",
+       bumpy(placed(spec(T::boxed), then(inverseScale(Vec3(1.7)), inverseRotate(Vec3(0, 0, 20)))),
+             0.6)},
+      {"cells", bumpy(placed(spec(T::cells), inverseScale(Vec3(0.6))), 0.5)},
+      {"pigment_pattern",
+       bumpy(pigmentPattern(withMap(placed(spec(T::granite), inverseScale(Vec3(0.5))), {})), 0.6)},
   };
 }
 

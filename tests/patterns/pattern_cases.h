@@ -3,9 +3,11 @@
 #pragma once
 
 #include "scenegraph/pattern.h"
+#include "scenegraph/texture_spec.h"
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <string>
 
 namespace lucent::test {
@@ -105,6 +107,21 @@ inline PatternSpec quilted(double control0, double control1) {
   s.quilted.control1 = control1;
   return s;
 }
+// pigment_pattern of the texture `t`.
+inline PatternSpec pigmentPattern(Texture t) {
+  PatternSpec s = spec(PatternType::pigment);
+  auto e = std::make_shared<TextureMapEntry>();
+  e->texture = std::move(t);
+  s.pigment = std::move(e);
+  return s;
+}
+inline PatternTexture withMap(PatternSpec s, std::vector<ColorMapEntry> entries) {
+  PatternTexture t;
+  t.pattern = std::move(s);
+  t.map.entries = std::move(entries);
+  return t;
+}
+
 // mandel or julia (c = re + im i) with `iterations`, the exponent `power` and the
 // colourings {type, factor}.
 inline PatternSpec fractal(PatternType type, int iterations, int power = 2,
@@ -230,6 +247,37 @@ inline std::map<std::string, PatternSpec> patternCases() {
       {"magnet1j", magnet(1, true, 30, {6, 0.01}, {0, 1}, 0.4, 0.1)},
       {"magnet2m", magnet(2, false, 30, {0, 0.3}, {1, 0.4})},
       {"magnet2j", magnet(2, true, 25, {1, 1}, {0, 1}, 1.1, 0.3)},
+      {"spherical", spec(T::spherical)},
+      {"spherical_sine", tuned(waved(spec(T::spherical), WaveShape::sine), 3, 0.2)},
+      {"cylindrical", spec(T::cylindrical)},
+      {"cylindrical_turbulence",
+       placed(turbulent(spec(T::cylindrical), Vec3(0.3)), inverseScale(Vec3(1, 2, 0.5)))},
+      {"boxed", spec(T::boxed)},
+      {"boxed_rotated",
+       tuned(waved(placed(spec(T::boxed), inverseRotate(Vec3(20, 30, 0))), WaveShape::triangle), 2,
+             0)},
+      {"cells", spec(T::cells)},
+      {"cells_placed",
+       placed(spec(T::cells), then(inverseScale(Vec3(0.3)), inverseTranslate(Vec3(0.5, 0, 0))))},
+      {"cells_far", spec(T::cells)},
+      {"cells_turbulence", tuned(turbulent(spec(T::cells), Vec3(0.5)), 1.5, 0.1)},
+      {"pigment_checker", pigmentPattern([] {
+         CheckerTexture c;
+         c.color1 = Color(1, 0.5, 0);
+         c.color2 = Color(0, 0.2, 1);
+         c.placement.patternFromObject = inverseScale(Vec3(0.5));
+         return c;
+       }())},
+      {"pigment_gradient",
+       tuned(waved(pigmentPattern(withMap(axis(spec(T::gradient), x),
+                                          {{0, Color(1, 0, 0)}, {1, Color(0.2, 0.9, 0.4)}})),
+                   WaveShape::sine),
+             2, 0)},
+      {"pigment_granite",
+       placed(
+           turbulent(pigmentPattern(withMap(placed(spec(T::granite), inverseScale(Vec3(0.3))), {})),
+                     Vec3(0.2)),
+           inverseScale(Vec3(1.5)))},
   };
 }
 

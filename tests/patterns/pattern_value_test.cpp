@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace lucent;
@@ -41,7 +42,7 @@ TEST_CASE("every reference case has a Lucent spec and every spec a reference", "
   CHECK(cases.size() == specs.size());
 }
 
-TEST_CASE("the 22 types, turbulence, frequency, phase and waves equal POV-Ray's to 1e-13",
+TEST_CASE("the types, turbulence, frequency, phase and waves equal POV-Ray's to 1e-13",
           "[pattern]") {
   const auto cases = referenceCases("patterns.csv");
   for (const auto& [name, s] : patternCases()) {
@@ -99,4 +100,48 @@ TEST_CASE("quilted's offset takes POV-Ray's FLOOR, one below floor at negative i
   CHECK(v.x == Approx(0.5 * k).epsilon(1e-15));
   CHECK(v.y == Approx(-0.25 * k).epsilon(1e-15));
   CHECK(v.z == Approx(-0.5 * k).epsilon(1e-15));
+}
+
+TEST_CASE("spherical, cylindrical and boxed are 1 minus a distance, clipped to 0 beyond 1",
+          "[pattern]") {
+  // POV-Ray's CLIP_DENSITY of |p|, of the distance to the y axis and of the largest |coordinate|.
+  auto clip = [](double r) { return r > 1.0 ? 0.0 : 1.0 - r; };
+  const Vec3 points[] = {Vec3(0.0),
+                         Vec3(0.3, -0.4, 0.2),
+                         Vec3(0.6, 5, -0.7),
+                         Vec3(0.3, 0.95, -0.2),
+                         Vec3(-0.5, 0.1, 0.5),
+                         Vec3(1, 0, 0),
+                         Vec3(0.2, -0.9, 0.1)};
+  for (const Vec3& p : points) {
+    INFO(p.x << " " << p.y << " " << p.z);
+    PatternSpec s;
+    s.type = PatternType::spherical;
+    CHECK(patternValue(s, p) == Approx(clip(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z))));
+    s.type = PatternType::cylindrical;
+    CHECK(patternValue(s, p) == Approx(clip(std::hypot(p.x, p.z))));
+    s.type = PatternType::boxed;
+    CHECK(patternValue(s, p) ==
+          Approx(clip(std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}))));
+  }
+}
+
+TEST_CASE("cells gives each unit cube POV-Ray's value, the cube chosen below p + 1e-10",
+          "[pattern]") {
+  // Printed by POV-Ray 3.7 (function { pattern { cells } }): the cube of (0.5, 0.5, 0.5) at
+  // its far corner, just below x = 1 within 1e-10 (the next cube), and 4096 cubes away.
+  PatternSpec s;
+  s.type = PatternType::cells;
+  const double inner = 0.71181891532614827, next = 0.68127137050032616;
+  CHECK(patternValue(s, Vec3(0.5, 0.5, 0.5)) == inner);
+  CHECK(patternValue(s, Vec3(0.99, 0.01, 0.99)) == inner);
+  CHECK(patternValue(s, Vec3(1 - 1e-9, 0, 0)) == inner);
+  CHECK(patternValue(s, Vec3(-1e-11, 0, 0)) == inner);
+  CHECK(patternValue(s, Vec3(1, 0, 0)) == next);
+  CHECK(patternValue(s, Vec3(1 - 1e-11, 0, 0)) == next);
+  CHECK(patternValue(s, Vec3(4096.5, 0.5, 0.5)) == inner);
+  CHECK(patternValue(s, Vec3(-0.5, 0.5, 0.5)) == 0.56695487583056092);
+  CHECK(patternValue(s, Vec3(-1, 2, 3)) == 0.53998210094869137);
+  CHECK(patternValue(s, Vec3(0.3, -0.4, 0.2)) == 0.09653274621814489);
+  CHECK(patternValue(s, Vec3(0.6, 5, -0.7)) == 0.97483614366501570);
 }

@@ -284,3 +284,25 @@ TEST_CASE("quilted, the fractals and dents as a pigment are exported with POV-Ra
   CHECK_THAT(e.text, Catch::Contains("magnet 1 mandel 5"));
   CHECK_THAT(e.text, Catch::Contains("dents\n"));
 }
+
+TEST_CASE("pigment-pattern's value is the grey level of its pigment", "[render][pattern]") {
+  // A wall lit by its ambient alone shows the value: over a checker of two colours, POV-Ray's
+  // grey 0.297 r + 0.589 g + 0.114 b of each (docs/scene-language.md, pigment-pattern).
+  auto scene = parse(R"XML(<render ambient="1"/><plane normal="0 0 -1" offset="0">
+      <material ambient="1"><pattern type="pigment-pattern"><pigment>
+        <checker color1="1 0.5 0" color2="0 0.2 1" transform="translate(0 0 0.5)"/>
+      </pigment></pattern></material></plane>)XML");
+  World world(*scene);
+  auto grey = [&](double x, double y) {
+    return traceOne(world, Ray(Vec3(x, y, -1), Vec3(0, 0, 1))).r;
+  };
+  const double first = 0.297 * 1 + 0.589 * 0.5, second = 0.589 * 0.2 + 0.114 * 1;
+  // The wall z = 0 lies in the checker's cubes from z = -1 (translated by 0.5).
+  CHECK(grey(0.5, 0.5) == Approx(second).margin(1e-6));
+  CHECK(grey(1.5, 0.5) == Approx(first).margin(1e-6));
+  CHECK(grey(-0.5, 0.5) == Approx(first).margin(1e-6));
+  CHECK(grey(-0.5, -0.5) == Approx(second).margin(1e-6));
+  PovExport e = exportPov(*scene, {});
+  REQUIRE(e.ok());
+  CHECK_THAT(e.text, Catch::Contains("pigment_pattern {"));
+}

@@ -118,7 +118,7 @@ TEST_CASE("scene reader maps: what stays refused, at its keyword",
   const auto errors = errorsOf(
       "sphere { 0, 1 pigment { average } }\n"
       "sphere { 0, 1 pigment { checker pigment { rgb 1 } rgb 0 } }\n"
-      "sphere { 0, 1 pigment { gradient y pigment_map { [0 rgb 1] [1 cells] } } }\n"
+      "sphere { 0, 1 pigment { gradient y pigment_map { [0 rgb 1] [1 cubic] } } }\n"
       "sphere { 0, 1 pigment { gradient y pigment_map { [0.5 rgb 1] [0.2 rgb 0] } } }\n");
   REQUIRE(errors.size() == 4);
   CHECK(errors[0] ==
@@ -126,7 +126,7 @@ TEST_CASE("scene reader maps: what stays refused, at its keyword",
   CHECK(errors[1] ==
         "test.pov:2:33: error: a list of pigments in a block pattern needs 2 pigments here "
         "(Lucent does not mix pigments and colours in one list)");
-  CHECK(errors[2].rfind("test.pov:3:63: error: 'cells' is not supported by Lucent (a pattern "
+  CHECK(errors[2].rfind("test.pov:3:63: error: 'cubic' is not supported by Lucent (a pattern "
                         "Lucent does not have; its patterns are gradient",
                         0) == 0);
   CHECK(errors[3] == "test.pov:4:36: error: the pigment map's entries must be in ascending order");

@@ -1,7 +1,7 @@
-// The scene reader's quilted, mandel, julia and magnet patterns, and dents, ripples and
-// waves as pigments: each keyword's arguments and modifiers with POV-Ray's defaults
-// (parstxtr.cpp), field by field, as pigments and as normals; and the bad inputs, each
-// one error at its place.
+// The scene reader's quilted, mandel, julia and magnet patterns, dents, ripples and waves
+// as pigments, and spherical, cylindrical, boxed and cells: each keyword's arguments and modifiers
+// with POV-Ray's defaults (parstxtr.cpp), field by field, as pigments and as normals; and the bad
+// inputs, each one error at its place.
 #include <catch2/catch.hpp>
 
 #include "scene_read_support.h"
@@ -73,6 +73,65 @@ sphere { 0, 1 pigment { waves } }
   CHECK(ripples.frequency == 3.0);
   CHECK(ripples.phase == 0.5);
   CHECK(pigmentPattern(s, 5).type == PatternType::waves);
+}
+
+TEST_CASE(
+    "scene reader patterns: spherical, cylindrical, boxed and cells in pigments, normals, "
+    "pigment maps and texture maps",
+    "[sdl][scene][texture]") {
+  auto r = readScene(R"(
+sphere { 0, 1 pigment { spherical color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] } } }
+sphere { 0, 1 pigment { cylindrical frequency 2 sine_wave } }
+sphere { 0, 1 normal { boxed 0.6 scale 2 } }
+sphere { 0, 1 pigment { cells pigment_map { [0 rgb 1] [1 checker] } } }
+sphere { 0, 1 texture { boxed texture_map { [0 pigment { rgb 1 }] [1 pigment { cells }] } } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  CHECK(pigmentPattern(s, 0).type == PatternType::spherical);
+  const PatternSpec& cylindrical = pigmentPattern(s, 1);
+  CHECK(cylindrical.type == PatternType::cylindrical);
+  CHECK(cylindrical.frequency == 2.0);
+  CHECK(cylindrical.waveShape() == WaveShape::sine);
+  const NormalSpec& n = normalOf(s, 2);
+  CHECK(n.pattern.type == PatternType::boxed);
+  CHECK(n.depth == 0.6);
+  const PatternSpec& cells = pigmentPattern(s, 3);
+  CHECK(cells.type == PatternType::cells);
+  const auto& t = std::get<PatternTexture>(s.materials.at(*s.root->children[3]->material).texture);
+  CHECK(t.pigments.size() == 2);
+  const Material& mapped = s.materials.at(*s.root->children[4]->material);
+  REQUIRE(mapped.mapped());
+  CHECK(std::get<PatternTexture>(mapped.mapPattern).pattern.type == PatternType::boxed);
+  REQUIRE(mapped.mapEntries.size() == 2);
+  CHECK(std::get<PatternTexture>(mapped.mapEntries[1].material.texture).pattern.type ==
+        PatternType::cells);
+}
+
+TEST_CASE(
+    "scene reader patterns: pigment_pattern holds its pigment, with POV-Ray's default map "
+    "and its own transform",
+    "[sdl][scene][texture]") {
+  auto r = readScene(R"(
+sphere { 0, 1 pigment { pigment_pattern { bozo scale 2 } color_map { [0 rgb 0] [1 rgb 1] } } }
+sphere { 0, 1 normal { pigment_pattern { rgb <1, 0.5, 0> } 0.4 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const PatternSpec& p = pigmentPattern(s, 0);
+  CHECK(p.type == PatternType::pigment);
+  REQUIRE(p.pigment);
+  const auto& bozo = std::get<PatternTexture>(p.pigment->texture);
+  CHECK(bozo.pattern.type == PatternType::bozo);
+  CHECK(bozo.pattern.noiseGenerator == 2);  // global_settings' default reaches it
+  CHECK(bozo.map.entries.size() == 6);      // POV-Ray's default map of bozo
+  CHECK(bozo.pattern.placement.patternFromObject[0][0] == Approx(0.5));
+  const NormalSpec& n = normalOf(s, 1);
+  CHECK(n.pattern.type == PatternType::pigment);
+  CHECK(n.depth == 0.4);
+  REQUIRE(n.pattern.pigment);
+  CHECK(std::holds_alternative<std::monostate>(n.pattern.pigment->texture));
+  CHECK(n.pattern.pigment->color.rgb == Color(1, 0.5, 0));
 }
 
 TEST_CASE("scene reader patterns: mandel, julia and magnet with their arguments and colourings",

@@ -341,13 +341,13 @@ TEST_CASE("scene reader textures: a turbulence warp before any transform is the 
 TEST_CASE("scene reader textures: what Lucent cannot render is refused at its keyword",
           "[sdl][scene][texture][errors]") {
   const auto errors = errorsOf(
-      "sphere { 0, 1 pigment { cells } }\n"
+      "sphere { 0, 1 pigment { cubic } }\n"
       "sphere { 0, 1 pigment { checker pigment_map { [0 rgb 1] } } }\n"
       "sphere { 0, 1 interior_texture { pigment { rgb 1 } } }\n"
       "sphere { 0, 1 pigment { image_map { png \"scenes/image_maps.png\" use_index } } }\n"
       "sphere { 0, 1 texture { tiles { texture { pigment { rgb 1 } } } } }\n");
   REQUIRE(errors.size() == 5);
-  CHECK(errors[0].rfind("test.pov:1:25: error: 'cells' is not supported by Lucent (a pattern "
+  CHECK(errors[0].rfind("test.pov:1:25: error: 'cubic' is not supported by Lucent (a pattern "
                         "Lucent does not have; its patterns are gradient, onion",
                         0) == 0);
   CHECK(errors[1] ==
@@ -376,13 +376,13 @@ TEST_CASE(
   // include, with where the scene uses it; reported once.
   const auto errors = errorsOf(
       "#include \"refusals.inc\"\n"
-      "#declare T = texture { pigment { P_Cells } }\n"
+      "#declare T = texture { pigment { P_Cubic } }\n"
       "sphere { 0, 1 texture { T } }\n"
-      "sphere { 0, 1 pigment { P_Cells } }\n"
+      "sphere { 0, 1 pigment { P_Cubic } }\n"
       "sphere { 0, 1 texture { T_Uv } }\n"
       "object { J_Unread }\n");
   REQUIRE(errors.size() == 3);
-  CHECK(errors[0].rfind("refusals.inc:3:30: error: 'cells' is not supported by Lucent", 0) == 0);
+  CHECK(errors[0].rfind("refusals.inc:3:30: error: 'cubic' is not supported by Lucent", 0) == 0);
   CHECK(errors[0].find("\ntest.pov:3:25: note: the declaration is used here") != std::string::npos);
   CHECK(errors[1].rfind("refusals.inc:4:27: error: 'uv_mapping' is not supported", 0) == 0);
   CHECK(errors[1].find("\ntest.pov:5:25: note: the declaration is used here") != std::string::npos);
@@ -438,10 +438,10 @@ TEST_CASE("scene reader textures: a sky_sphere pattern Lucent lacks is one error
           "[sdl][scene][texture]") {
   // The refusal reads to the pigment's end: what follows is read as usual.
   const std::vector<std::string> errors = errorsOf(
-      "sky_sphere { pigment { cells color_map { [0 rgb 1] [1 rgb 0] } } }\n"
+      "sky_sphere { pigment { cubic color_map { [0 rgb 1] [1 rgb 0] } } }\n"
       "sphere { 0, 1 pigment { rgb 1 } }\n");
   REQUIRE(errors.size() == 1);
-  CHECK(errors[0].find("test.pov:1:24: error: 'cells'") == 0);
+  CHECK(errors[0].find("test.pov:1:24: error: 'cubic'") == 0);
 }
 
 TEST_CASE(

@@ -150,6 +150,19 @@ pattern_cases=(
   "magnet1j|3|magnet 1 julia <0.4, 0.1>, 30 exterior 6, 0.01"
   "magnet2m|3|magnet 2 mandel 30 exterior 0, 0.3 interior 1, 0.4"
   "magnet2j|3|magnet 2 julia <1.1, 0.3>, 25"
+  "spherical|2|spherical"
+  "spherical_sine|2|spherical frequency 3 phase 0.2 sine_wave"
+  "cylindrical|2|cylindrical"
+  "cylindrical_turbulence|2|cylindrical turbulence 0.3 scale <1, 2, 0.5>"
+  "boxed|2|boxed"
+  "boxed_rotated|2|boxed rotate <20, 30, 0> frequency 2 triangle_wave"
+  "cells|8|cells"
+  "cells_placed|8|cells scale 0.3 translate <0.5, 0, 0>"
+  "cells_far|4096|cells"
+  "cells_turbulence|8|cells turbulence 0.5 frequency 1.5 phase 0.1"
+  "pigment_checker|4|pigment_pattern { checker rgb <1, 0.5, 0>, rgb <0, 0.2, 1> scale 0.5 }"
+  "pigment_gradient|2|pigment_pattern { gradient x color_map { [0 rgb <1, 0, 0>] [1 rgb <0.2, 0.9, 0.4>] } } frequency 2 sine_wave"
+  "pigment_granite|4|pigment_pattern { granite scale 0.3 } turbulence 0.2 scale 1.5"
 )
 color_cases=(
   "map_bozo|8|bozo color_map { [0.2 rgb <1, 0, 0>] [0.5 rgb <0, 1, 0.5>] [0.9 rgb <0.1, 0.2, 0.9>] }"
@@ -248,6 +261,11 @@ normal_cases=(
   "checker_slope|checker 0.5 scale 0.7"
   "hexagon_slope|hexagon 0.6 rotate x * 90 scale 0.5"
   "brick_slope|brick 0.75 brick_size <1, 0.4, 0.6> mortar 0.1"
+  "spherical|spherical 0.7 scale 2"
+  "cylindrical|cylindrical 0.5 scale 1.5 rotate <0, 0, 30>"
+  "boxed|boxed 0.6 scale 1.7 rotate <0, 0, 20>"
+  "cells|cells 0.5 scale 0.6"
+  "pigment_pattern|pigment_pattern { granite scale 0.5 } 0.6"
 )
 echo "case,i,j,r,g,b" >"$work/normals.csv"
 for c in "${normal_cases[@]}"; do
