@@ -150,8 +150,8 @@ void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
   if (onlyFor(r, "function", function, "function", s.type)) {
     ElementInput in(r);
     if (std::optional<FunctionInput> f = in.function("function", {"x", "y", "z"}))
-      s.function =
-          std::make_shared<const PatternFunction>(PatternFunction{f->text, f->constants, f->field});
+      s.function = std::make_shared<const PatternFunction>(
+          PatternFunction{f->text, f->constants, f->field, f->pigments});
   }
   const bool quilted = s.type == PatternType::quilted;
   if (onlyFor(r, "control0", quilted, "quilted", s.type))
@@ -257,6 +257,8 @@ Texture parsePatternTexture(ElementReader& r) {
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader c(r.ctx(), r.file(), n);
     const std::string_view name = n.name();
+    if (name == "pigment-function" && t.pattern.type == PatternType::function)
+      return;  // read with the function (lang/pigment_function_parser.h)
     if (name != "color-map" && name != "pigment-map") {
       std::string pov = povrayElementHint("pattern", n.name());
       c.error("<pattern> may hold one <color-map> or <pigment-map>, not <" + std::string(name) +

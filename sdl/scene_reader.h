@@ -188,6 +188,10 @@ struct TransformItem : SceneItem {
   std::string_view kind() const override { return "transform"; }
 };
 
+// A pigment, read and resolved, as an entry of a map or a list: its plain colour, or its
+// texture placed by its own transforms (read_maps.cpp).
+TextureMapEntry entryOf(const PovPigment& p, double at);
+
 // The refusal of a second texture { } (a layer), where it is.
 
 class SceneReader : public ItemReader {
@@ -313,12 +317,17 @@ class SceneReader : public ItemReader {
   // x, y and z in POV-Ray's space, compiled once per text. Null, with an error kept, for a
   // function Lucent cannot evaluate.
   std::shared_ptr<const PatternFunction> readPatternFunction(TokenStream& in);
-  // F's Lucent expression text with its parameters named `names`, and its compiled field
-  // (compiled once per text); nullopt, with an error kept naming `what`, for a function
-  // Lucent cannot evaluate.
-  std::optional<std::pair<std::string, std::shared_ptr<const ScalarField>>> compiledFunction(
-      const FunctionValue& f, const std::vector<std::string>& names, const char* what,
-      TokenStream& in);
+  // F's Lucent expression text with its parameters named `names`, its compiled field
+  // (compiled once per text) and the pigments it calls (pigment functions, placed in
+  // POV-Ray's space); nullopt, with an error kept naming `what`, for a function Lucent
+  // cannot evaluate.
+  std::optional<FunctionInput> compiledFunction(const FunctionValue& f,
+                                                const std::vector<std::string>& names,
+                                                const char* what, TokenStream& in);
+  // The pigment functions of a function's text (read_isosurface.cpp): each pigment as a
+  // texture placed in POV-Ray's space, with the component the call takes.
+  std::vector<std::shared_ptr<const PigmentFunction>> pigmentFunctions(
+      const std::vector<PigmentCall>& calls, TokenStream& in);
   // A texture (one layer, layers or a map) as a Lucent material, placed.
   Material importTexture(const PovTexture& texture, const PovInterior& interior,
                          const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in);

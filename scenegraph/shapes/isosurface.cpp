@@ -113,6 +113,7 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
       s.function = f->text;
       s.constants = f->constants;
       s.field = f->field;
+      s.pigments = f->pigments;
     } else if (!in.has("function")) {
       in.error("<isosurface> needs a 'function' (an expression in x, y and z)");
     }
