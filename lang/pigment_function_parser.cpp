@@ -49,7 +49,8 @@ std::vector<std::shared_ptr<const PigmentFunction>> parsePigmentFunctions(Elemen
     c.checkAttributes({"name", "component"});
     auto f = std::make_shared<PigmentFunction>();
     const std::optional<std::string> name = c.text("name");
-    if (!name) c.error("<pigment-function> needs a 'name' (how the function calls it)");
+    if (name) f->name = *name;
+    else c.error("<pigment-function> needs a 'name' (how the function calls it)");
     if (!c.has("component"))
       c.error(
           "<pigment-function> needs a 'component' (red, green, blue, filter, transmit or gray)");

@@ -6,6 +6,7 @@
 #include "xml_numbers.h"
 
 #include "scenegraph/finish_terms.h"
+#include "scenegraph/pigment_function.h"
 
 #include <algorithm>
 #include <variant>
@@ -120,6 +121,11 @@ void writeEntries(const std::string& list, const std::vector<TextureMapEntry>& e
   if (!list.empty()) out.close(list);
 }
 
+void writePigmentFunctions(const PatternSpec& s, const SourceLoc& loc, XmlOut& out) {
+  if (!s.function) return;
+  for (const auto& p : s.function->pigments) writePigmentFunction(*p, loc, out);
+}
+
 // A block pattern's element: empty with its colours, or with a <pigment-list> child and
 // without the colour attributes (colorN, filterN, transmitN).
 void writeBlock(const std::string& element, Attributes a,
@@ -153,6 +159,8 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out) {
     out.close("normal");
     return;
   }
+  if (n.pattern.function && !n.pattern.function->pigments.empty())
+    cannotWrite(loc, "a function <normal> that calls a pigment function cannot be written yet");
   Attributes a = patternAttributes(n.pattern, loc);
   a.emplace_back("depth", xmlNumber(n.depth));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
@@ -184,6 +192,7 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
         } else if constexpr (std::is_same_v<T, PatternTexture>) {
           if (t.pigments.empty()) return writePatternTexture(t, loc, out);
           out.open("pattern", patternAttributes(t.pattern, loc), false);
+          writePigmentFunctions(t.pattern, loc, out);
           writeEntries("pigment-map", t.pigments, "at", loc, out, folder);
           out.close("pattern");
         } else if constexpr (std::is_same_v<T, HexagonTexture>) {
@@ -218,10 +227,21 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
       texture);
 }
 
+void writePigmentFunction(const PigmentFunction& f, const SourceLoc& loc, XmlOut& out) {
+  out.open("pigment-function",
+           {{"name", f.name}, {"component", std::string(pigmentComponentName(f.component))}},
+           false);
+  writeTexture(f.pigment, loc, out, "");
+  out.close("pigment-function");
+}
+
 void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out) {
   const Attributes a = patternAttributes(t.pattern, loc);
-  if (t.map.entries.empty()) return out.open("pattern", a, true);
+  const bool pigments = t.pattern.function && !t.pattern.function->pigments.empty();
+  if (t.map.entries.empty() && !pigments) return out.open("pattern", a, true);
   out.open("pattern", a, false);
+  writePigmentFunctions(t.pattern, loc, out);
+  if (t.map.entries.empty()) return out.close("pattern");
   out.open("color-map", {}, false);
   for (const ColorMapEntry& e : t.map.entries) {
     Attributes entry{{"at", xmlNumber(e.at)}, {"color", xmlColor(e.color)}};

@@ -8,6 +8,10 @@
 #include "pov_writer.h"
 
 #include "scenegraph/material.h"
+#include "scenegraph/pigment_function.h"
+
+#include <memory>
+#include <vector>
 
 namespace lucent {
 
@@ -30,6 +34,12 @@ void writeNormal(const NormalSpec& n, PovWriter& out);
 // The pattern keyword with its arguments ("gradient <0, 1, 0>"), and the value's modifiers
 // (frequency, phase, wave), for a pattern written without its colours (a texture_map's).
 std::string patternKeyword(const PatternSpec& s);
+// `#declare NAME = function { pigment { ... } }` for each pigment a function calls, written
+// before the pattern or the isosurface whose function calls them (POV-Ray's directives may
+// stand inside a block).
+void writePigmentFunctions(const std::vector<std::shared_ptr<const PigmentFunction>>& pigments,
+                           PovWriter& out);
+void writePigmentFunctions(const PatternSpec& s, PovWriter& out);
 void writeValueModifiers(const PatternSpec& s, PovWriter& out);
 // A pattern's turbulence and transform (after the pattern's own modifiers).
 void writePlacement(const PatternPlacement& p, PovWriter& out);

@@ -53,6 +53,7 @@ std::vector<std::shared_ptr<const PigmentFunction>> SceneReader::pigmentFunction
       throw FunctionError(c.callee->loc, c.callee->describe() +
                                              " is an image pigment, which Lucent cannot "
                                              "evaluate at a point in a function");
+    pigmentFunctions_.push_back(f);
     out.push_back(std::move(f));
   }
   return out;

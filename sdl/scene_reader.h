@@ -19,6 +19,7 @@
 #include "token_stream.h"
 
 #include "lang/diagnostics.h"
+#include "scenegraph/pigment_function.h"
 #include "scenegraph/scene.h"
 
 #include <filesystem>
@@ -397,6 +398,9 @@ class SceneReader : public ItemReader {
   // The isosurface fields compiled so far, by their function's text (read_isosurface.cpp).
   // The fields compiled so far (isosurfaces and function patterns), by expression text.
   std::map<std::string, std::shared_ptr<const ScalarField>> compiledFields_;
+  // Every pigment function's pigment, whose patterns take the scene's noise generator at
+  // the end (finishScene).
+  std::vector<std::shared_ptr<PigmentFunction>> pigmentFunctions_;
   // The text outlines laid out so far, by font, string and offset (read_shapes.cpp).
   std::map<std::string, std::shared_ptr<TextOutline>> textOutlines_;
   // The material of the objects that take the default texture (unpatterned) as it is now.

@@ -54,7 +54,8 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
       },
       [](const IsosurfaceSpec& s, PovShapeOut& out) {
         std::string problem;
-        std::optional<std::string> body = out.function(s.function, s.constants, problem);
+        std::optional<std::string> body =
+            out.function(s.function, s.constants, s.pigments, problem);
         if (!body) {
           out.error("<isosurface> function: " + problem);
           return;
