@@ -72,6 +72,10 @@ std::vector<std::shared_ptr<const PigmentFunction>> parsePigmentFunctions(Elemen
         return;
       }
       f->pigment = parseTexture(tr);
+      if (textureHoldsImage(f->pigment))
+        tr.error(
+            "a <pigment-function>'s texture holds an <image>, which has no colour at a "
+            "point without (u, v)");
     });
     if (textures == 0 && !c.failed())
       c.error("<pigment-function> needs a texture child (<pattern>, <checker>...)");

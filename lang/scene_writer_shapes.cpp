@@ -161,7 +161,7 @@ std::optional<OwnShapeText> own(const IsosurfaceSpec& s, const SourceLoc& loc, c
     t.children.push_back(
         {"pigment-function",
          {{"name", p->name}, {"component", std::string(pigmentComponentName(p->component))}},
-         [p, loc](XmlOut& out) { writePigmentFunction(*p, loc, out); }});
+         [p, loc](XmlOut& out) { writeTexture(p->pigment, loc, out, ""); }});
   const IsosurfaceContainer& c = s.container;
   if (c.kind == IsosurfaceContainer::Sphere) {
     t.attributes.emplace_back("container", "sphere");

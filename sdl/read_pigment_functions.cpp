@@ -10,22 +10,6 @@ namespace lucent::sdl {
 
 namespace {
 
-// The render's pattern evaluator gives no colour to an image at a point without (u, v).
-bool holdsImage(const Texture& t) {
-  if (std::holds_alternative<ImageTexture>(t)) return true;
-  auto any = [](const std::vector<TextureMapEntry>& entries) {
-    for (const TextureMapEntry& e : entries)
-      if (holdsImage(e.texture)) return true;
-    return false;
-  };
-  if (const auto* p = std::get_if<PatternTexture>(&t)) return any(p->pigments);
-  if (const auto* c = std::get_if<CheckerTexture>(&t)) return any(c->pigments);
-  if (const auto* h = std::get_if<HexagonTexture>(&t)) return any(h->pigments);
-  if (const auto* b = std::get_if<BrickTexture>(&t)) return any(b->pigments);
-  if (const auto* a = std::get_if<AverageTexture>(&t)) return any(a->entries);
-  return false;
-}
-
 // A pigment as a texture of its own: a plain colour becomes a one-entry map.
 Texture pigmentTexture(const PovPigment& pigment) {
   TextureMapEntry e = entryOf(pigment, 0.0);
@@ -49,7 +33,7 @@ std::vector<std::shared_ptr<const PigmentFunction>> SceneReader::pigmentFunction
     f->name = c.name;
     f->component = static_cast<PigmentComponent>(c.member);
     f->pigment = pigmentTexture(item->pigment);
-    if (holdsImage(f->pigment))
+    if (textureHoldsImage(f->pigment))
       throw FunctionError(c.callee->loc, c.callee->describe() +
                                              " is an image pigment, which Lucent cannot "
                                              "evaluate at a point in a function");
