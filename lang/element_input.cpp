@@ -46,8 +46,15 @@ std::optional<std::vector<long long>> ElementInput::integers(const char* attr) {
 
 std::optional<FunctionInput> ElementInput::function(const char* attr,
                                                     const std::vector<std::string>& variables) {
-  // The element's <pigment-function> children are the pigments the function may call.
-  std::optional<FunctionText> f = r_.function(attr, variables, parsePigmentFunctions(r_));
+  // The element's <pigment-function> children are the pigments the function may call; when
+  // one is wrong, the function's calls of it would only repeat that.
+  bool pigmentsFailed = false;
+  const auto pigments = parsePigmentFunctions(r_, pigmentsFailed);
+  if (pigmentsFailed) {
+    r_.markFailed();
+    return std::nullopt;
+  }
+  std::optional<FunctionText> f = r_.function(attr, variables, pigments);
   if (!f) return std::nullopt;
   FunctionInput in;
   in.text = f->text;

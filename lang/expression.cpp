@@ -340,6 +340,14 @@ std::optional<FunctionText> compileFunction(
     for (const auto& entry : parser.GetUsedVar()) used.push_back(entry.first);
   } catch (const mu::ParserError& e) {
     error = syntaxError(e, out.text, tokens);
+    if (e.GetCode() == mu::ecTOO_FEW_PARAMS || e.GetCode() == mu::ecTOO_MANY_PARAMS) {
+      std::string token = e.GetToken();
+      if (auto sp = token.find(' '); sp != std::string::npos) token.resize(sp);
+      if (pigmentNamed(token))  // a pigment function takes the point
+        error.message = (e.GetCode() == mu::ecTOO_FEW_PARAMS ? "too few" : "too many") +
+                        std::string(" arguments for '") + token +
+                        "' (a pigment function takes 3 arguments: x, y and z)";
+    }
     return std::nullopt;
   }
   for (const std::string& name : used) {

@@ -259,6 +259,11 @@ Texture parsePatternTexture(ElementReader& r) {
     const std::string_view name = n.name();
     if (name == "pigment-function" && t.pattern.type == PatternType::function)
       return;  // read with the function (lang/pigment_function_parser.h)
+    if (name == "pigment-function") {
+      c.error("<pigment-function> belongs in a <pattern type=\"function\">, whose function "
+              "calls it");
+      return;
+    }
     if (name != "color-map" && name != "pigment-map") {
       std::string pov = povrayElementHint("pattern", n.name());
       c.error("<pattern> may hold one <color-map> or <pigment-map>, not <" + std::string(name) +

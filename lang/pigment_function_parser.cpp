@@ -41,7 +41,8 @@ bool validName(ElementReader& c, const std::string& name,
 
 }  // namespace
 
-std::vector<std::shared_ptr<const PigmentFunction>> parsePigmentFunctions(ElementReader& r) {
+std::vector<std::shared_ptr<const PigmentFunction>> parsePigmentFunctions(ElementReader& r,
+                                                                          bool& failed) {
   std::vector<std::shared_ptr<const PigmentFunction>> out;
   for (pugi::xml_node n = r.element().child("pigment-function"); n;
        n = n.next_sibling("pigment-function")) {
@@ -60,26 +61,27 @@ std::vector<std::shared_ptr<const PigmentFunction>> parsePigmentFunctions(Elemen
     c.forEachChild([&](pugi::xml_node t) {
       ElementReader tr(r.ctx(), r.file(), t);
       const std::string_view kind = t.name();
+      ++textures;
       if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end() || kind == "image") {
         tr.error(
             "<pigment-function> holds one texture (<pattern>, <checker>, <hexagon>, "
             "<brick> or <average>), not <" +
             std::string(kind) + ">");
-        return;
-      }
-      if (++textures > 1) {
+      } else if (textures > 1) {
         tr.error("<pigment-function> holds one texture");
-        return;
+      } else {
+        f->pigment = parseTexture(tr);
+        if (textureHoldsImage(f->pigment))
+          tr.error(
+              "a <pigment-function>'s texture holds an <image>, which has no colour at a "
+              "point without (u, v)");
       }
-      f->pigment = parseTexture(tr);
-      if (textureHoldsImage(f->pigment))
-        tr.error(
-            "a <pigment-function>'s texture holds an <image>, which has no colour at a "
-            "point without (u, v)");
+      failed = failed || tr.failed();
     });
     if (textures == 0 && !c.failed())
       c.error("<pigment-function> needs a texture child (<pattern>, <checker>...)");
     if (name && validName(c, *name, out) && !c.failed()) out.push_back(std::move(f));
+    failed = failed || c.failed();
   }
   return out;
 }

@@ -13,7 +13,8 @@
 namespace lucent {
 
 // The <pigment-function> children of r's element, each with its texture child read; errors
-// located at the child.
-std::vector<std::shared_ptr<const PigmentFunction>> parsePigmentFunctions(ElementReader& r);
+// located at the child, and `failed` set when there was one.
+std::vector<std::shared_ptr<const PigmentFunction>> parsePigmentFunctions(ElementReader& r,
+                                                                          bool& failed);
 
 }  // namespace lucent
