@@ -234,8 +234,6 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
         node->children.push_back(std::move(child));
     } else if (shapeType && shapeType->child(cn)) {
       // The shape's own child (a blob's <component>): its entry reads it in parseShape.
-    } else if (cn == "pigment-function" && r.tag() == "<isosurface>") {
-      // Read with the isosurface's function (lang/pigment_function_parser.h).
     } else {
       std::vector<std::string_view> childNames{"material", "param", "clip", "bound"};
       if (shapeType)

@@ -30,6 +30,9 @@ struct ChildElementInfo {
   std::string doc;
   std::vector<AttributeInfo> attributes;
   bool required = false;  // at least one
+  // The schema's particles for the child's own children, when it has any (an isosurface's
+  // <pigment-function> holds a texture); the parser reads those itself.
+  std::string contentXsd = {};
 };
 
 // The exporter's side of writing one shape (povray/pov_geometry.cpp implements it). The
