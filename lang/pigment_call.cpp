@@ -25,9 +25,10 @@ double pigmentFunctionValue(const PigmentFunction& f, double x, double y, double
 
 void definePigmentFunctions(mu::Parser& parser,
                             const std::vector<std::shared_ptr<const PigmentFunction>>& pigments) {
-  // A pigment's value depends on the point alone: muParser may fold a constant call.
+  // Never folded at compile time: an imported pigment's noise generator is settled after
+  // its function is compiled (sdl's finishScene), before any render thread compiles its own.
   for (const auto& p : pigments)
-    parser.DefineFunUserData(p->name, call, const_cast<PigmentFunction*>(p.get()), true);
+    parser.DefineFunUserData(p->name, call, const_cast<PigmentFunction*>(p.get()), false);
 }
 
 }  // namespace lucent
