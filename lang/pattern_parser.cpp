@@ -260,8 +260,9 @@ Texture parsePatternTexture(ElementReader& r) {
     if (name == "pigment-function" && t.pattern.type == PatternType::function)
       return;  // read with the function (lang/pigment_function_parser.h)
     if (name == "pigment-function") {
-      c.error("<pigment-function> belongs in a <pattern type=\"function\">, whose function "
-              "calls it");
+      c.error(
+          "<pigment-function> belongs in a <pattern type=\"function\">, whose function "
+          "calls it");
       return;
     }
     if (name != "color-map" && name != "pigment-map") {
