@@ -1,5 +1,7 @@
 #include "element_input.h"
 
+#include "pigment_function_parser.h"
+
 #include "expression_field.h"
 
 #include "images/height_map_file.h"
@@ -44,11 +46,20 @@ std::optional<std::vector<long long>> ElementInput::integers(const char* attr) {
 
 std::optional<FunctionInput> ElementInput::function(const char* attr,
                                                     const std::vector<std::string>& variables) {
-  std::optional<FunctionText> f = r_.function(attr, variables);
+  // The element's <pigment-function> children are the pigments the function may call; when
+  // one is wrong, the function's calls of it would only repeat that.
+  bool pigmentsFailed = false;
+  const auto pigments = parsePigmentFunctions(r_, pigmentsFailed);
+  if (pigmentsFailed) {
+    r_.markFailed();
+    return std::nullopt;
+  }
+  std::optional<FunctionText> f = r_.function(attr, variables, pigments);
   if (!f) return std::nullopt;
   FunctionInput in;
   in.text = f->text;
   in.constants = f->constants;
+  in.pigments = f->pigments;
   try {
     in.field = makeExpressionField(std::move(*f));
   } catch (...) {  // muParser's own errors were reported above; this is a safety net

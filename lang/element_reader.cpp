@@ -80,8 +80,9 @@ std::optional<std::string> ElementReader::text(const char* attr) {
   return v;
 }
 
-std::optional<FunctionText> ElementReader::function(const char* attr,
-                                                    const std::vector<std::string>& variables) {
+std::optional<FunctionText> ElementReader::function(
+    const char* attr, const std::vector<std::string>& variables,
+    const std::vector<std::shared_ptr<const PigmentFunction>>& pigments) {
   pugi::xml_attribute a = el_.attribute(attr);
   if (!a) return std::nullopt;
   // Written with ${...}: substituted first, and an error then points at the value.
@@ -93,7 +94,8 @@ std::optional<FunctionText> ElementReader::function(const char* attr,
     value = *t;
   }
   SubstitutionError error;
-  std::optional<FunctionText> f = ctx_.params.function(value, ctx_.scope.get(), variables, error);
+  std::optional<FunctionText> f =
+      ctx_.params.function(value, ctx_.scope.get(), variables, error, pigments);
   if (!f) {
     if (!error.message.empty()) {
       SourceLoc where = !substituted && error.offset != std::string::npos

@@ -46,7 +46,10 @@ class ElementReader {
 
   // A function expression of `variables` (an isosurface's), checked and its other names
   // resolved; errors point inside the expression when it was written without ${...}.
-  std::optional<FunctionText> function(const char* attr, const std::vector<std::string>& variables);
+  // `pigments`: the pigment functions it may call.
+  std::optional<FunctionText> function(
+      const char* attr, const std::vector<std::string>& variables,
+      const std::vector<std::shared_ptr<const PigmentFunction>>& pigments = {});
 
   double number(const char* attr, double def, const NumberRule& rule = NumberRule::any());
   std::optional<double> optionalNumber(const char* attr,

@@ -2,6 +2,9 @@
 
 #include "did_you_mean.h"
 #include "expression_functions.h"
+#include "pigment_call.h"
+
+#include "scenegraph/pigment_function.h"
 
 #include <fmt/format.h>
 #include <muParser.h>
@@ -286,9 +289,9 @@ void ExpressionEvaluator::locateFault(const Compiled& c, ExpressionError& error)
   }
 }
 
-std::optional<FunctionText> compileFunction(std::string_view text,
-                                            const std::vector<std::string>& variables,
-                                            ExpressionNames& names, ExpressionError& error) {
+std::optional<FunctionText> compileFunction(
+    std::string_view text, const std::vector<std::string>& variables, ExpressionNames& names,
+    ExpressionError& error, const std::vector<std::shared_ptr<const PigmentFunction>>& pigments) {
   FunctionText out;
   out.text = std::string(text);
   out.variables = variables;
@@ -302,11 +305,27 @@ std::optional<FunctionText> compileFunction(std::string_view text,
     return fail("an empty expression", 0);
   if (auto d = t.find('$'); d != std::string_view::npos)
     return fail("a function's names are written alone ('r', not '$r')", d);
+  auto pigmentNamed = [&](std::string_view name) -> std::shared_ptr<const PigmentFunction> {
+    for (const auto& p : pigments)
+      if (p->name == name) return p;
+    return nullptr;
+  };
   for (const NameToken& n : tokens) {
-    if (n.call && !isFunction(n.name))
-      return fail("unknown function '" + std::string(n.name) + "'" +
-                      didYouMean(n.name, expressionFunctionNames()),
+    if (const auto p = pigmentNamed(n.name)) {
+      if (!n.call)
+        return fail("'" + std::string(n.name) + "' is a pigment function: write " +
+                        std::string(n.name) + "(x, y, z)",
+                    n.offset);
+      if (std::find(out.pigments.begin(), out.pigments.end(), p) == out.pigments.end())
+        out.pigments.push_back(p);
+      continue;
+    }
+    if (n.call && !isFunction(n.name)) {
+      std::vector<std::string_view> known = expressionFunctionNames();
+      for (const auto& p : pigments) known.push_back(p->name);
+      return fail("unknown function '" + std::string(n.name) + "'" + didYouMean(n.name, known),
                   n.offset);
+    }
     if (!n.call && isFunction(n.name))
       return fail(
           "'" + std::string(n.name) + "' is a function: write " + std::string(n.name) + "(...)",
@@ -316,10 +335,19 @@ std::optional<FunctionText> compileFunction(std::string_view text,
   try {
     mu::Parser parser;
     defineLanguage(parser, ParserRole::Plain);
+    definePigmentFunctions(parser, out.pigments);
     parser.SetExpr(out.text);
     for (const auto& entry : parser.GetUsedVar()) used.push_back(entry.first);
   } catch (const mu::ParserError& e) {
     error = syntaxError(e, out.text, tokens);
+    if (e.GetCode() == mu::ecTOO_FEW_PARAMS || e.GetCode() == mu::ecTOO_MANY_PARAMS) {
+      std::string token = e.GetToken();
+      if (auto sp = token.find(' '); sp != std::string::npos) token.resize(sp);
+      if (pigmentNamed(token))  // a pigment function takes the point
+        error.message = (e.GetCode() == mu::ecTOO_FEW_PARAMS ? "too few" : "too many") +
+                        std::string(" arguments for '") + token +
+                        "' (a pigment function takes 3 arguments: x, y and z)";
+    }
     return std::nullopt;
   }
   for (const std::string& name : used) {

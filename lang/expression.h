@@ -56,20 +56,26 @@ class ExpressionEvaluator {
   size_t locateBudget_ = 200'000;
 };
 
+struct PigmentFunction;  // scenegraph/pigment_function.h
+
 // A function expression (an isosurface's): its text, the names that stay variables (x, y,
-// z) and the values of its other names, resolved once where it stands.
+// z), the values of its other names, resolved once where it stands, and the pigments it
+// may call by name with three arguments.
 struct FunctionText {
   std::string text;
   std::vector<std::string> variables;
   std::vector<std::pair<std::string, double>> constants;
+  std::vector<std::shared_ptr<const PigmentFunction>> pigments{};
 };
 
 // Checks `text` as an expression whose `variables` are left free and whose other names are
 // looked up in `names` now; nullopt with `error` (located within the text) on a syntax
-// error, an unknown function or name, or a name that is not a number.
-std::optional<FunctionText> compileFunction(std::string_view text,
-                                            const std::vector<std::string>& variables,
-                                            ExpressionNames& names, ExpressionError& error);
+// error, an unknown function or name, or a name that is not a number. `pigments` may be
+// called by name, each with three arguments; the result keeps those the text calls.
+std::optional<FunctionText> compileFunction(
+    std::string_view text, const std::vector<std::string>& variables, ExpressionNames& names,
+    ExpressionError& error,
+    const std::vector<std::shared_ptr<const PigmentFunction>>& pigments = {});
 
 // Shortest decimal text that reads back as exactly `v` ("0.1", "3", "1e+21").
 std::string formatNumber(double v);

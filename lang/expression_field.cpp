@@ -1,6 +1,7 @@
 #include "expression_field.h"
 
 #include "expression_functions.h"
+#include "pigment_call.h"
 
 #include <atomic>
 #include <cmath>
@@ -50,6 +51,7 @@ class ExpressionField final : public ScalarField {
     t.parser.DefineVar(f_.variables[1], &t.y);
     t.parser.DefineVar(f_.variables[2], &t.z);
     for (const auto& [name, v] : f_.constants) t.parser.DefineConst(name, v);
+    definePigmentFunctions(t.parser, f_.pigments);
     t.parser.SetExpr(f_.text);
     t.parser.Eval();  // muParser compiles to its bytecode on the first evaluation
   }

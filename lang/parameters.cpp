@@ -61,12 +61,12 @@ Parameters::Parameters(const std::map<std::string, std::string>& defines, Diagno
   builtins_ = {{"pi", M_PI}, {"e", M_E}, {"clock", 0.0}, {"frame", 1.0}, {"frames", 1.0}};
 }
 
-std::optional<FunctionText> Parameters::function(std::string_view text, const Scope* scope,
-                                                 const std::vector<std::string>& variables,
-                                                 SubstitutionError& error) {
+std::optional<FunctionText> Parameters::function(
+    std::string_view text, const Scope* scope, const std::vector<std::string>& variables,
+    SubstitutionError& error, const std::vector<std::shared_ptr<const PigmentFunction>>& pigments) {
   Names names(*this, scope);
   ExpressionError e;
-  std::optional<FunctionText> f = compileFunction(text, variables, names, e);
+  std::optional<FunctionText> f = compileFunction(text, variables, names, e, pigments);
   if (!f) {
     error.message = e.reported || quiet_ ? "" : e.message;
     error.offset = e.offset;

@@ -58,9 +58,11 @@ class Parameters {
 
   // A function expression (an isosurface's) with `variables` left free and its other names
   // resolved from `scope` now (expression.h, compileFunction).
-  std::optional<FunctionText> function(std::string_view text, const Scope* scope,
-                                       const std::vector<std::string>& variables,
-                                       SubstitutionError& error);
+  // `pigments`: the pigment functions it may call (expression.h, compileFunction).
+  std::optional<FunctionText> function(
+      std::string_view text, const Scope* scope, const std::vector<std::string>& variables,
+      SubstitutionError& error,
+      const std::vector<std::shared_ptr<const PigmentFunction>>& pigments = {});
 
   // Is `name` visible from `scope` (a parameter, a repeat variable, -D or a built-in)?
   // Returns a description ("the parameter declared at 3:5") or "" when it is not.

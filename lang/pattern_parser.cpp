@@ -151,8 +151,8 @@ void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
   if (onlyFor(r, "function", function, "function", s.type)) {
     ElementInput in(r);
     if (std::optional<FunctionInput> f = in.function("function", {"x", "y", "z"}))
-      s.function =
-          std::make_shared<const PatternFunction>(PatternFunction{f->text, f->constants, f->field});
+      s.function = std::make_shared<const PatternFunction>(
+          PatternFunction{f->text, f->constants, f->field, f->pigments});
   }
   const bool quilted = s.type == PatternType::quilted;
   if (onlyFor(r, "control0", quilted, "quilted", s.type))
@@ -283,6 +283,14 @@ Texture parsePatternTexture(ElementReader& r) {
     const std::string_view name = n.name();
     if (name == "pigment") {
       parsePigmentChild(r, c, t.pattern, pigmentLoc);
+      return;
+    }
+    if (name == "pigment-function" && t.pattern.type == PatternType::function)
+      return;  // read with the function (lang/pigment_function_parser.h)
+    if (name == "pigment-function") {
+      c.error(
+          "<pigment-function> belongs in a <pattern type=\"function\">, whose function "
+          "calls it");
       return;
     }
     if (name != "color-map" && name != "pigment-map") {

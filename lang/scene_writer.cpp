@@ -409,8 +409,13 @@ class SceneWriter {
     for (const OwnShapeChild& c : shapeChildren)
       if (c.element == "param") out_.open(c.element, c.attributes, true);
     if (inlineMaterial) writeMaterial(scene_.materials.at(*n.material), "");
-    for (const OwnShapeChild& c : shapeChildren)
-      if (c.element != "param") out_.open(c.element, c.attributes, true);
+    for (const OwnShapeChild& c : shapeChildren) {
+      if (c.element == "param") continue;
+      out_.open(c.element, c.attributes, !c.body);
+      if (!c.body) continue;
+      c.body(out_);
+      out_.close(c.element);
+    }
     for (const auto& c : n.children) writeNode(*c);
     writeSolids("clip", n.clip);
     writeSolids("bound", n.bound);

@@ -6,6 +6,7 @@
 #include "xml_numbers.h"
 
 #include "scenegraph/finish_terms.h"
+#include "scenegraph/pigment_function.h"
 
 #include <algorithm>
 #include <variant>
@@ -161,6 +162,11 @@ void writePatternPigment(const PatternSpec& s, const SourceLoc& loc, XmlOut& out
   out.close("pigment");
 }
 
+void writePigmentFunctions(const PatternSpec& s, const SourceLoc& loc, XmlOut& out) {
+  if (!s.function) return;
+  for (const auto& p : s.function->pigments) writePigmentFunction(*p, loc, out);
+}
+
 // A block pattern's element: empty with its colours, or with a <pigment-list> child and
 // without the colour attributes (colorN, filterN, transmitN).
 void writeBlock(const std::string& element, Attributes a,
@@ -246,6 +252,8 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
     out.close("normal");
     return;
   }
+  if (n.pattern.function && !n.pattern.function->pigments.empty())
+    cannotWrite(loc, "a function <normal> that calls a pigment function cannot be written yet");
   Attributes a = patternAttributes(n.pattern, loc);
   if (n.map.empty()) a.emplace_back("depth", xmlNumber(n.depth));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
@@ -290,6 +298,7 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
           if (t.pigments.empty()) return writePatternTexture(t, loc, out, folder);
           out.open("pattern", patternAttributes(t.pattern, loc), false);
           writePatternPigment(t.pattern, loc, out, folder);
+          writePigmentFunctions(t.pattern, loc, out);
           writeEntries("pigment-map", t.pigments, "at", loc, out, folder);
           out.close("pattern");
         } else if constexpr (std::is_same_v<T, HexagonTexture>) {
@@ -324,13 +333,23 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
       texture);
 }
 
+void writePigmentFunction(const PigmentFunction& f, const SourceLoc& loc, XmlOut& out) {
+  out.open("pigment-function",
+           {{"name", f.name}, {"component", std::string(pigmentComponentName(f.component))}},
+           false);
+  writeTexture(f.pigment, loc, out, "");
+  out.close("pigment-function");
+}
+
 void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out,
                          const std::string& folder) {
   const Attributes a = patternAttributes(t.pattern, loc);
   const bool pigment = t.pattern.type == PatternType::pigment;
-  if (t.map.entries.empty() && !pigment) return out.open("pattern", a, true);
+  const bool pigments = t.pattern.function && !t.pattern.function->pigments.empty();
+  if (t.map.entries.empty() && !pigment && !pigments) return out.open("pattern", a, true);
   out.open("pattern", a, false);
   writePatternPigment(t.pattern, loc, out, folder);
+  writePigmentFunctions(t.pattern, loc, out);
   if (t.map.entries.empty()) return out.close("pattern");
   out.open("color-map", {}, false);
   for (const ColorMapEntry& e : t.map.entries) {

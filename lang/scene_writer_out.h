@@ -5,6 +5,7 @@
 #include "scenegraph/located_error.h"
 #include "scenegraph/scene.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -44,6 +45,8 @@ Attributes materialAttributes(const Material& m, bool layer = false);
 void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& folder);
 void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out,
                          const std::string& folder);
+// <pigment-function name component>TEXTURE</pigment-function>: a pigment a function calls.
+void writePigmentFunction(const PigmentFunction& f, const SourceLoc& loc, XmlOut& out);
 // A texture element (<checker>, <image>, <pattern>...); file references relative to
 // `folder`.
 void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
@@ -57,6 +60,7 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
 struct OwnShapeChild {
   std::string element;
   Attributes attributes;
+  std::function<void(XmlOut&)> body{};  // its own children, if any (else written empty)
 };
 struct OwnShapeText {
   Attributes attributes;

@@ -7,6 +7,7 @@
 #include "scene_writer_out.h"
 #include "xml_numbers.h"
 
+#include "scenegraph/pigment_function.h"
 #include "scenegraph/shape_type.h"
 
 #include <filesystem>
@@ -151,11 +152,16 @@ std::optional<OwnShapeText> own(const BlobSpec& s, const SourceLoc&, const std::
 
 // The function as read, its names other than x, y and z as local <param>s of the shape
 // (the language's way of giving them), each the number it stood for.
-std::optional<OwnShapeText> own(const IsosurfaceSpec& s, const SourceLoc&, const std::string&) {
+std::optional<OwnShapeText> own(const IsosurfaceSpec& s, const SourceLoc& loc, const std::string&) {
   OwnShapeText t;
   for (const auto& [name, value] : s.constants)
     t.children.push_back({"param", {{"name", name}, {"value", xmlNumber(value)}}});
   t.attributes.emplace_back("function", literal(s.function));
+  for (const auto& p : s.pigments)
+    t.children.push_back(
+        {"pigment-function",
+         {{"name", p->name}, {"component", std::string(pigmentComponentName(p->component))}},
+         [p, loc](XmlOut& out) { writeTexture(p->pigment, loc, out, ""); }});
   const IsosurfaceContainer& c = s.container;
   if (c.kind == IsosurfaceContainer::Sphere) {
     t.attributes.emplace_back("container", "sphere");

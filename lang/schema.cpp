@@ -118,6 +118,7 @@ std::string shapeWithChildrenXsd(const ShapeType& t) {
   // Each child's own type (named after the shape: blobcomponentType), after the shape's.
   for (const ChildElementInfo& c : t.children) {
     out += fmt::format("  <xs:complexType name=\"{}{}Type\">\n", t.element, c.name);
+    out += c.contentXsd;
     for (const AttributeInfo& a : c.attributes) out += attributeXsd(a);
     out += "  </xs:complexType>\n\n";
   }

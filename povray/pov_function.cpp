@@ -12,8 +12,9 @@ namespace {
 class Writer {
  public:
   Writer(const std::string& t, const std::vector<std::pair<std::string, double>>& c,
-         const std::function<std::string(double)>& number)
-      : t_(t), c_(c), number_(number) {}
+         const std::function<std::string(double)>& number,
+         const std::vector<std::shared_ptr<const PigmentFunction>>& pigments)
+      : t_(t), c_(c), number_(number), pigments_(pigments) {}
 
   std::string all() {
     std::string r = ternary();
@@ -153,6 +154,11 @@ class Writer {
       for (size_t k = 0; k < a.size(); ++k) s += (k ? ", " : "") + a[k];
       return s;
     };
+    // A pigment function: its declaration's name (povPigmentFunctionName) and member.
+    for (const auto& pf : pigments_)
+      if (pf->name == f)
+        return povPigmentFunctionName(*pf) + "(" + args() + ")." +
+               std::string(pigmentComponentName(pf->component));
     // The same name and meaning in POV-Ray.
     for (const char* same : {"sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sqrt", "exp",
                              "ln", "abs", "floor", "ceil", "pow"})
@@ -185,16 +191,23 @@ class Writer {
   const std::string& t_;
   const std::vector<std::pair<std::string, double>>& c_;
   std::function<std::string(double)> number_;
+  const std::vector<std::shared_ptr<const PigmentFunction>>& pigments_;
   size_t i_ = 0;
 };
 
 }  // namespace
 
+std::string povPigmentFunctionName(const PigmentFunction& f) {
+  // A prefix keeps the name clear of POV-Ray's keywords (a Lucent name may be `wood`).
+  return "LucentPigment_" + f.name;
+}
+
 std::optional<std::string> povFunctionText(
     const std::string& text, const std::vector<std::pair<std::string, double>>& constants,
-    const std::function<std::string(double)>& number, std::string& problem) {
+    const std::function<std::string(double)>& number, std::string& problem,
+    const std::vector<std::shared_ptr<const PigmentFunction>>& pigments) {
   try {
-    return Writer(text, constants, number).all();
+    return Writer(text, constants, number, pigments).all();
   } catch (const Writer::Unsupported& u) {
     problem = u.what;
   } catch (const std::exception& e) {

@@ -6,7 +6,10 @@
 // other than x, y and z are written as the numbers they stood for.
 #pragma once
 
+#include "scenegraph/pigment_function.h"
+
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -15,9 +18,15 @@
 namespace lucent {
 
 // The POV-Ray text, or nullopt with `problem` set for what POV-Ray cannot express
-// (random()). `number` writes a number in POV-Ray's syntax.
+// (random()). `number` writes a number in POV-Ray's syntax. A call of one of `pigments` is
+// written as a call of its declaration (povPigmentFunctionName) with its member (`.red`).
 std::optional<std::string> povFunctionText(
     const std::string& text, const std::vector<std::pair<std::string, double>>& constants,
-    const std::function<std::string(double)>& number, std::string& problem);
+    const std::function<std::string(double)>& number, std::string& problem,
+    const std::vector<std::shared_ptr<const PigmentFunction>>& pigments = {});
+
+// The identifier a pigment function is declared as (`#declare NAME = function { pigment { } }`,
+// pov_patterns.h writePigmentFunctions).
+std::string povPigmentFunctionName(const PigmentFunction& f);
 
 }  // namespace lucent

@@ -1,6 +1,7 @@
 #include "pov_geometry.h"
 #include "pov_coincident.h"
 #include "pov_function.h"
+#include "pov_patterns.h"
 #include "scenegraph/shape_registry.h"
 
 #include "pov_smooth_normals.h"
@@ -259,10 +260,14 @@ class ShapeOut final : public PovShapeOut {
   std::string number(double v) const override { return povNumber(v); }
   std::string vector(const Vec3& v) const override { return povVector(v); }
   std::string declaredMesh(const MeshSpec& mesh) override { return mesh_(mesh); }
-  std::optional<std::string> function(const std::string& text,
-                                      const std::vector<std::pair<std::string, double>>& constants,
-                                      std::string& problem) const override {
-    return povFunctionText(text, constants, povNumber, problem);
+  std::optional<std::string> function(
+      const std::string& text, const std::vector<std::pair<std::string, double>>& constants,
+      const std::vector<std::shared_ptr<const PigmentFunction>>& pigments,
+      std::string& problem) override {
+    std::optional<std::string> body =
+        povFunctionText(text, constants, povNumber, problem, pigments);
+    if (body) writePigmentFunctions(pigments, out_);
+    return body;
   }
   void error(const std::string& message) override { error_(message); }
 

@@ -446,6 +446,7 @@ void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, cons
                               ": the map's turbulence moves its entries' patterns too in "
                               "POV-Ray (it evaluates them at the map's turbulent point)");
   if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern)) {
+    writePigmentFunctions(p->pattern, out);
     writePatternKeyword(p->pattern, out);
     out.open("texture_map");
     for (size_t k = 0; k < entries.size(); ++k) {

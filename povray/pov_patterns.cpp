@@ -40,7 +40,8 @@ std::string patternKeyword(const PatternSpec& s) {
   if (s.type == PatternType::function) {
     std::string problem;
     const std::optional<std::string> text =
-        s.function ? povFunctionText(s.function->text, s.function->constants, povNumber, problem)
+        s.function ? povFunctionText(s.function->text, s.function->constants, povNumber, problem,
+                                     s.function->pigments)
                    : std::optional<std::string>("0");
     if (!text) throw std::runtime_error("a function pattern cannot be exported: " + problem);
     k += " { " + *text + " }";
@@ -134,6 +135,7 @@ void writePigmentList(const std::vector<TextureMapEntry>& entries, const Vec3& s
 
 void writePatternBody(const PatternTexture& t, const Vec3& scale, double filter, double transmit,
                       PovWriter& out) {
+  writePigmentFunctions(t.pattern, out);
   writePatternKeyword(t.pattern, out);
   if (!t.pigments.empty()) {
     writePigmentMap(t.pigments, scale, filter, transmit, out);
@@ -345,6 +347,7 @@ void writeNormalBody(const NormalSpec& n, PovWriter& out) {
     writePlacement(n.pattern.placement, out);
     return;
   }
+  writePigmentFunctions(n.pattern, out);
   std::string keyword = patternKeyword(n.pattern);
   // The amount comes before agate's agate_turb.
   const std::string agate = " agate_turb " + povNumber(n.pattern.agateTurb);
@@ -364,6 +367,25 @@ void writeNormal(const NormalSpec& n, PovWriter& out) {
   out.open("normal");
   writeNormalBody(n, out);
   out.close();
+}
+
+void writePigmentFunctions(const std::vector<std::shared_ptr<const PigmentFunction>>& pigments,
+                           PovWriter& out) {
+  for (const auto& f : pigments) {
+    // The pigment's own colours: the surface's scale, filter and transmit are not its.
+    // POV-Ray refuses to declare a function again: another material may use the name.
+    const std::string name = povPigmentFunctionName(*f);
+    out.line("#ifdef (" + name + ") #undef " + name + " #end");
+    out.open("#declare " + name + " = function");
+    out.open("pigment");
+    writeBody(f->pigment, Vec3(1.0), 0.0, 0.0, out);
+    out.close();
+    out.close();
+  }
+}
+
+void writePigmentFunctions(const PatternSpec& s, PovWriter& out) {
+  if (s.function) writePigmentFunctions(s.function->pigments, out);
 }
 
 }  // namespace lucent

@@ -8,6 +8,10 @@
 #include "pov_writer.h"
 
 #include "scenegraph/material.h"
+#include "scenegraph/pigment_function.h"
+
+#include <memory>
+#include <vector>
 
 namespace lucent {
 
@@ -33,6 +37,12 @@ std::string patternKeyword(const PatternSpec& s);
 // The pattern keyword on its line, then `after` (a normal's depth); pigment_pattern's is a
 // block holding its pigment's body.
 void writePatternKeyword(const PatternSpec& s, PovWriter& out, const std::string& after = {});
+// `#declare NAME = function { pigment { ... } }` for each pigment a function calls, written
+// before the pattern or the isosurface whose function calls them (POV-Ray's directives may
+// stand inside a block).
+void writePigmentFunctions(const std::vector<std::shared_ptr<const PigmentFunction>>& pigments,
+                           PovWriter& out);
+void writePigmentFunctions(const PatternSpec& s, PovWriter& out);
 void writeValueModifiers(const PatternSpec& s, PovWriter& out);
 // A pattern's turbulence and transform (after the pattern's own modifiers).
 void writePlacement(const PatternPlacement& p, PovWriter& out);

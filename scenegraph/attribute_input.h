@@ -21,6 +21,8 @@
 
 namespace lucent {
 
+struct PigmentFunction;  // pigment_function.h
+
 // The range a number attribute must lie in, and how the error names it.
 struct NumberRule {
   double lo = -kInf, hi = kInf;
@@ -49,6 +51,7 @@ struct FunctionInput {
   std::shared_ptr<const ScalarField> field;
   std::string text;
   std::vector<std::pair<std::string, double>> constants;
+  std::vector<std::shared_ptr<const PigmentFunction>> pigments{};
 };
 
 // An integer attribute's `max` at or above this: no upper bound ("a whole number >= min").

@@ -203,12 +203,15 @@ constexpr bool isFractal(PatternType type) {
   return type == PatternType::mandel || type == PatternType::julia || type == PatternType::magnet;
 }
 
+struct PigmentFunction;  // pigment_function.h
+
 // A function pattern's expression (the contract's expressions, of x, y and z; the names
-// that stood for numbers with their values) and its compiled field.
+// that stood for numbers with their values; the pigments it calls) and its compiled field.
 struct PatternFunction {
   std::string text;
   std::vector<std::pair<std::string, double>> constants;
   std::shared_ptr<const ScalarField> field;
+  std::vector<std::shared_ptr<const PigmentFunction>> pigments{};
 };
 
 // pigment-pattern's pigment: a plain colour or a texture (scenegraph/texture_spec.h; its

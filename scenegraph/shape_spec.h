@@ -22,6 +22,8 @@
 
 namespace lucent {
 
+struct PigmentFunction;  // pigment_function.h
+
 struct SphereSpec {
   Vec3 center{0.0};
   double radius = 1.0;
@@ -110,6 +112,7 @@ struct IsosurfaceSpec {
   std::string function;  // required
   std::vector<std::pair<std::string, double>> constants;
   std::shared_ptr<const ScalarField> field;
+  std::vector<std::shared_ptr<const PigmentFunction>> pigments{};  // the pigments it calls
   double threshold = 0.0;
   IsosurfaceContainer container;
   double maxGradient = 1.1;

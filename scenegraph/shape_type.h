@@ -30,6 +30,9 @@ struct ChildElementInfo {
   std::string doc;
   std::vector<AttributeInfo> attributes;
   bool required = false;  // at least one
+  // The schema's particles for the child's own children, when it has any (an isosurface's
+  // <pigment-function> holds a texture); the parser reads those itself.
+  std::string contentXsd = {};
 };
 
 // The exporter's side of writing one shape (povray/pov_geometry.cpp implements it). The
@@ -46,10 +49,12 @@ class PovShapeOut {
   virtual std::string declaredMesh(const MeshSpec& mesh) = 0;
   // An expression of the scene language as a POV-Ray function body with `constants` (the
   // names other than x, y and z) written as their numbers; nullopt with `problem` set for
-  // what POV-Ray cannot express (random()).
+  // what POV-Ray cannot express (random()). The pigment functions it calls are declared
+  // first (before the shape's block opens).
   virtual std::optional<std::string> function(
       const std::string& text, const std::vector<std::pair<std::string, double>>& constants,
-      std::string& problem) const = 0;
+      const std::vector<std::shared_ptr<const PigmentFunction>>& pigments,
+      std::string& problem) = 0;
   // What the shape's parameters cannot be written as (an isosurface's random()): an
   // export error at the shape.
   virtual void error(const std::string& message) = 0;

@@ -36,6 +36,7 @@ class Evaluator {
   double call(const FunctionValue& f, const double* args, const SourceLoc& at) {
     switch (f.kind) {
       case FunctionValue::Kind::Unsupported:
+      case FunctionValue::Kind::Pigment:
         throw FunctionError(at, "cannot evaluate " + f.describe() + ": it is " + f.what +
                                     ", which Lucent's POV-Ray reader does not evaluate");
       case FunctionValue::Kind::Internal: {

@@ -10,6 +10,8 @@
 // POV-Ray 3.7 has no `^`, `?:` or `!` in functions.
 #pragma once
 
+#include "item_reader.h"
+
 #include "scenegraph/source_loc.h"
 
 #include <memory>
@@ -104,6 +106,7 @@ struct FunctionValue {
     Internal,     // `internal(N)`: one of POV-Ray's built-in functions (internal_functions.h)
     Unsupported,  // a pigment, pattern or transform function: refused where called
     Spline,       // `function { spline { } }`: one parameter, a vector value (`spline`)
+    Pigment,      // `function { pigment { } }`: x, y, z; a colour (`pigment`, the reader's item)
   };
   Kind kind = Kind::Expression;
   std::string name;  // the identifier it was declared as ("" when anonymous)
@@ -113,6 +116,7 @@ struct FunctionValue {
   int internal = -1;
   std::string what;                      // Unsupported: "a pigment function"...
   std::shared_ptr<const Spline> spline;  // Spline
+  ItemPtr pigment;                       // Pigment: the scene reader's pigment item
   int locals = 0;                        // slots of sum() and prod() variables
   int depth = 1;  // the longest chain of nodes and calls within calls (bounded)
 
@@ -145,6 +149,18 @@ double evaluateFunction(const FunctionValue& f, const std::vector<double>& args)
 // inlined, internal functions written out by their formulas. Throws FunctionError for
 // what Lucent's expressions cannot say (a noise function, sum()...) or past
 // kMaxFunctionTextLength.
-std::string functionText(const FunctionValue& f, const std::vector<std::string>& args);
+// A pigment function's call kept in the text as `name(x, y, z)` (functionText): the
+// function called and the component its call takes (`member`: 0 red ... 5 gray).
+struct PigmentCall {
+  std::string name;
+  std::shared_ptr<const FunctionValue> callee;
+  int member = 0;
+};
+
+// `pigments`, when given, lets calls of pigment functions stay in the text, each written as
+// a call of a name listed there (a pigment function with each of its components once); when
+// null they are refused.
+std::string functionText(const FunctionValue& f, const std::vector<std::string>& args,
+                         std::vector<PigmentCall>* pigments = nullptr);
 
 }  // namespace lucent::sdl

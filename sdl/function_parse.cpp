@@ -218,6 +218,14 @@ std::shared_ptr<const FunctionValue> TokenStream::parseFunction(bool declaration
     f->kind = FunctionValue::Kind::Unsupported;
     f->what = "a " + std::string(word) + " function";
     f->params = {"x", "y", "z"};
+    if (word == "pigment" && items_) {
+      // The scene reader reads the pigment; isosurfaces and function patterns evaluate it.
+      const Token t = cur_;
+      f->pigment = items_->read(t, *this);
+      if (f->pigment && f->pigment->kind() == "pigment") f->kind = FunctionValue::Kind::Pigment;
+      expect("}");
+      return f;
+    }
     fnSkipBlock();
     expect("}");
     return f;
@@ -549,7 +557,7 @@ FnNodePtr TokenStream::fnUserCall(FnScope& s) {
             "'.', found " +
                 cur_.describe());
     if (callee->kind != FunctionValue::Kind::Unsupported &&
-        callee->kind != FunctionValue::Kind::Spline)
+        callee->kind != FunctionValue::Kind::Spline && callee->kind != FunctionValue::Kind::Pigment)
       error(cur_, "'." + std::string(cur_.text()) + "' of '" + name +
                       "', which gives a float, not a vector");
     n->member = member;
@@ -559,7 +567,9 @@ FnNodePtr TokenStream::fnUserCall(FnScope& s) {
       error(at, "'" + name +
                     "' is a spline function: it gives a vector, so a function takes one of its "
                     "components ('.x', '.red'...)");
-    if (callee->kind == FunctionValue::Kind::Unsupported && callee->what != "a pattern function")
+    if ((callee->kind == FunctionValue::Kind::Unsupported ||
+         callee->kind == FunctionValue::Kind::Pigment) &&
+        callee->what != "a pattern function")
       error(at, "'" + name + "' is " + callee->what +
                     ": it gives a vector, so a function takes one of its components "
                     "('.x', '.red'...)");

@@ -22,10 +22,13 @@ std::string paren(const std::string& s) { return "(" + s + ")"; }
 
 class TextWriter {
  public:
+  explicit TextWriter(std::vector<PigmentCall>* pigments) : pigments_(pigments) {}
+
   std::string call(const FunctionValue& f, const std::vector<std::string>& args,
                    const SourceLoc& at) {
     switch (f.kind) {
       case FunctionValue::Kind::Unsupported:
+      case FunctionValue::Kind::Pigment:
         throw FunctionError(
             at, f.describe() + " is " + f.what +
                     ", which Lucent cannot evaluate in an isosurface or a function pattern");
@@ -110,6 +113,8 @@ class TextWriter {
             n.loc);
       }
       case FnOp::Call: {
+        if (n.member >= 0 && n.callee->kind == FunctionValue::Kind::Pigment && pigments_)
+          return checked(pigmentCall(n, a(0), a(1), a(2)), n.loc);
         if (n.member >= 0)
           throw FunctionError(
               n.loc, n.callee->describe() + " is " +
@@ -190,6 +195,29 @@ class TextWriter {
     return out;
   }
 
+  // `name(x, y, z)`, the name listed once per pigment function and component.
+  std::string pigmentCall(const FnNode& n, const std::string& x, const std::string& y,
+                          const std::string& z) {
+    const PigmentCall* found = nullptr;
+    for (const PigmentCall& c : *pigments_)
+      if (c.callee == n.callee && c.member == n.member) found = &c;
+    if (!found) {
+      static const char* const kMembers[] = {"red", "green", "blue", "filter", "transmit", "gray"};
+      std::string base = (n.callee->name.empty() ? std::string("pigment") : n.callee->name) + "_" +
+                         kMembers[n.member];
+      std::string name = base;
+      for (int k = 2;; ++k) {
+        bool taken = false;
+        for (const PigmentCall& c : *pigments_) taken = taken || c.name == name;
+        if (!taken) break;
+        name = base + std::to_string(k);
+      }
+      pigments_->push_back({name, n.callee, n.member});
+      found = &pigments_->back();
+    }
+    return found->name + "(" + x + ", " + y + ", " + z + ")";
+  }
+
   static std::string checked(std::string s, const SourceLoc& at) {
     if (s.size() > kMaxFunctionTextLength)
       throw FunctionError(at, "the function written out as an expression is longer than " +
@@ -197,12 +225,15 @@ class TextWriter {
                                   " characters (see docs/povray-import.md)");
     return s;
   }
+
+  std::vector<PigmentCall>* pigments_;
 };
 
 }  // namespace
 
-std::string functionText(const FunctionValue& f, const std::vector<std::string>& args) {
-  TextWriter w;
+std::string functionText(const FunctionValue& f, const std::vector<std::string>& args,
+                         std::vector<PigmentCall>* pigments) {
+  TextWriter w(pigments);
   return w.call(f, args, f.loc);
 }
 

@@ -27,12 +27,15 @@ class NoNames final : public ExpressionNames {
 
 }  // namespace
 
-std::optional<std::pair<std::string, std::shared_ptr<const ScalarField>>>
-SceneReader::compiledFunction(const FunctionValue& f, const std::vector<std::string>& names,
-                              const char* what, TokenStream& in) {
+std::optional<FunctionInput> SceneReader::compiledFunction(const FunctionValue& f,
+                                                           const std::vector<std::string>& names,
+                                                           const char* what, TokenStream& in) {
   std::string text;
+  std::vector<PigmentCall> calls;
+  std::vector<std::shared_ptr<const PigmentFunction>> pigments;
   try {
-    text = functionText(f, names);
+    text = functionText(f, names, &calls);
+    pigments = pigmentFunctions(calls, in);
   } catch (const FunctionError& e) {
     std::string m = std::string(what) + " cannot be imported: " + std::string(e.what());
     if (e.at.line > 0 && e.at.str() != f.loc.str())
@@ -40,21 +43,37 @@ SceneReader::compiledFunction(const FunctionValue& f, const std::vector<std::str
     keepError(in, f.loc, m);
     return std::nullopt;
   }
-  // A macro that makes the same function again gets the field compiled the first time: the
-  // text, whose names are x, y and z only, says all of it.
-  std::shared_ptr<const ScalarField>& field = compiledFields_[text];
-  if (!field) {
+  auto compile = [&] {
     NoNames noNames;
     ExpressionError problem;
-    std::optional<FunctionText> compiled = compileFunction(text, {"x", "y", "z"}, noNames, problem);
-    if (!compiled) {
-      compiledFields_.erase(text);
+    std::optional<FunctionText> compiled =
+        compileFunction(text, {"x", "y", "z"}, noNames, problem, pigments);
+    if (!compiled)
       in.error(f.loc, std::string(what) + ", written as '" + text +
                           "', is not a Lucent expression: " + problem.message);
-    }
-    field = makeExpressionField(*compiled);
+    return makeExpressionField(*compiled);
+  };
+  FunctionInput out;
+  out.text = text;
+  out.pigments = pigments;
+  // A macro that makes the same function again gets the field compiled the first time: the
+  // text, whose names are x, y and z only, says all of it (not so with pigments: the names
+  // of the pigments it calls do not tell which pigments they are).
+  if (!pigments.empty()) {
+    out.field = compile();
+    return out;
   }
-  return std::make_pair(text, field);
+  std::shared_ptr<const ScalarField>& field = compiledFields_[text];
+  if (!field) {
+    try {
+      field = compile();
+    } catch (...) {
+      compiledFields_.erase(text);
+      throw;
+    }
+  }
+  out.field = field;
+  return out;
 }
 
 std::shared_ptr<const PatternFunction> SceneReader::readPatternFunction(TokenStream& in) {
@@ -63,7 +82,7 @@ std::shared_ptr<const PatternFunction> SceneReader::readPatternFunction(TokenStr
   const auto compiled = compiledFunction(*f, {"x", "y", "z"}, "this function pattern", in);
   if (!compiled) return nullptr;
   return std::make_shared<const PatternFunction>(
-      PatternFunction{compiled->first, {}, compiled->second});
+      PatternFunction{compiled->text, {}, compiled->field, compiled->pigments});
 }
 
 void SceneReader::readIsosurface(PovObject& o, TokenStream& in) {
@@ -136,10 +155,9 @@ void SceneReader::readIsosurface(PovObject& o, TokenStream& in) {
   // Lucent's space is POV-Ray's with z negated.
   const auto compiled = compiledFunction(*f, {"x", "y", "(-z)"}, "this isosurface's function", in);
   if (!compiled) return;
-  const std::string& text = compiled->first;
-  const std::shared_ptr<const ScalarField>& field = compiled->second;
-  s.function = text;
-  s.field = field;
+  s.function = compiled->text;
+  s.field = compiled->field;
+  s.pigments = compiled->pigments;
   o.shape = s;
 }
 

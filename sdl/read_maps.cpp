@@ -30,8 +30,8 @@ void addToColours(Texture& t, const FilterTransmit& ft) {
   }
 }
 
-// A pigment, read and resolved, as an entry of a map or a list: its plain colour, or its
-// texture placed by its own transforms.
+}  // namespace
+
 TextureMapEntry entryOf(const PovPigment& p, double at) {
   TextureMapEntry e;
   e.at = at;
@@ -45,6 +45,8 @@ TextureMapEntry entryOf(const PovPigment& p, double at) {
   if (p.filter != 0.0f || p.transmit != 0.0f) addToColours(e.texture, {p.filter, p.transmit});
   return e;
 }
+
+namespace {
 
 // An entry's value: required in a map, optional in an average's (POV-Ray's weight 1 then),
 // where the entry may start with the body itself.

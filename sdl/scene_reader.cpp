@@ -588,6 +588,9 @@ void SceneReader::finishScene(TokenStream& in) {
     for (MaterialMapEntry& e : m.mapEntries) materialNoise(e.material);
   };
   for (Material& m : scene_.materials) materialNoise(m);
+  // The pigments of pigment functions (their fields keep pointers to them: changed in place).
+  for (const std::shared_ptr<PigmentFunction>& p : pigmentFunctions_)
+    forEachPattern(p->pigment, noise);
   if (scene_.sky) {
     for (Texture& layer : scene_.sky->layers) forEachPattern(layer, noise);
     // POV-Ray layers a sky_sphere's pigments by the language version it renders with (the

@@ -19,6 +19,7 @@
 #include "token_stream.h"
 
 #include "lang/diagnostics.h"
+#include "scenegraph/pigment_function.h"
 #include "scenegraph/scene.h"
 
 #include <filesystem>
@@ -188,6 +189,10 @@ struct TransformItem : SceneItem {
   std::string_view kind() const override { return "transform"; }
 };
 
+// A pigment, read and resolved, as an entry of a map or a list: its plain colour, or its
+// texture placed by its own transforms (read_maps.cpp).
+TextureMapEntry entryOf(const PovPigment& p, double at);
+
 // The refusal of a second texture { } (a layer), where it is.
 
 class SceneReader : public ItemReader {
@@ -314,12 +319,17 @@ class SceneReader : public ItemReader {
   // function Lucent cannot evaluate.
   std::shared_ptr<const PatternFunction> readPatternFunction(TokenStream& in);
   std::shared_ptr<const TextureMapEntry> readPatternPigment(TokenStream& in);
-  // F's Lucent expression text with its parameters named `names`, and its compiled field
-  // (compiled once per text); nullopt, with an error kept naming `what`, for a function
-  // Lucent cannot evaluate.
-  std::optional<std::pair<std::string, std::shared_ptr<const ScalarField>>> compiledFunction(
-      const FunctionValue& f, const std::vector<std::string>& names, const char* what,
-      TokenStream& in);
+  // F's Lucent expression text with its parameters named `names`, its compiled field
+  // (compiled once per text) and the pigments it calls (pigment functions, placed in
+  // POV-Ray's space); nullopt, with an error kept naming `what`, for a function Lucent
+  // cannot evaluate.
+  std::optional<FunctionInput> compiledFunction(const FunctionValue& f,
+                                                const std::vector<std::string>& names,
+                                                const char* what, TokenStream& in);
+  // The pigment functions of a function's text (read_isosurface.cpp): each pigment as a
+  // texture placed in POV-Ray's space, with the component the call takes.
+  std::vector<std::shared_ptr<const PigmentFunction>> pigmentFunctions(
+      const std::vector<PigmentCall>& calls, TokenStream& in);
   // A texture (one layer, layers or a map) as a Lucent material, placed.
   Material importTexture(const PovTexture& texture, const PovInterior& interior,
                          const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in);
@@ -396,6 +406,9 @@ class SceneReader : public ItemReader {
   // The isosurface fields compiled so far, by their function's text (read_isosurface.cpp).
   // The fields compiled so far (isosurfaces and function patterns), by expression text.
   std::map<std::string, std::shared_ptr<const ScalarField>> compiledFields_;
+  // Every pigment function's pigment, whose patterns take the scene's noise generator at
+  // the end (finishScene).
+  std::vector<std::shared_ptr<PigmentFunction>> pigmentFunctions_;
   // The text outlines laid out so far, by font, string and offset (read_shapes.cpp).
   std::map<std::string, std::shared_ptr<TextOutline>> textOutlines_;
   // The material of the objects that take the default texture (unpatterned) as it is now.

@@ -3,11 +3,13 @@
 // expression of the scene language in x, y, z, compiled where it is read (its other names
 // are parameters, taken as numbers then); POV-Ray gets it as a function { } body
 // (PovShapeOut::function, written by povray/pov_function.h).
+#include "scenegraph/pigment_function.h"
 #include "scenegraph/shape_type.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
+#include <iterator>
 
 namespace lucent {
 
@@ -54,7 +56,8 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
       },
       [](const IsosurfaceSpec& s, PovShapeOut& out) {
         std::string problem;
-        std::optional<std::string> body = out.function(s.function, s.constants, problem);
+        std::optional<std::string> body =
+            out.function(s.function, s.constants, s.pigments, problem);
         if (!body) {
           out.error("<isosurface> function: " + problem);
           return;
@@ -81,6 +84,24 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
       "POV-Ray's isosurface: the solid where a function of x, y, z is below the threshold, within "
       "a "
       "box or sphere container (solid unless open).";
+  // Its <pigment-function> children are read with the function (the language reads them).
+  AttributeInfo name;
+  name.name = "name";
+  name.type = AttrType::Text;
+  name.required = true;
+  name.doc = "How the function calls it: name(x, y, z).";
+  AttributeInfo component;
+  component.name = "component";
+  component.type = AttrType::Choice;
+  component.required = true;
+  component.doc = "The component of the colour the call gives.";
+  component.choices.assign(std::begin(kPigmentComponentNames), std::end(kPigmentComponentNames));
+  e.children = {{"pigment-function",
+                 "A texture the function calls by name with a point (POV-Ray's pigment "
+                 "function): the component of its colour there.",
+                 {name, component},
+                 false,
+                 "    <xs:group ref=\"nestedTexture\"/>\n"}};
   Field<IsosurfaceSpec> function = readByEntry<IsosurfaceSpec>("function", AttrType::Text);
   function.info.required = true;
   e.fields = {
@@ -113,6 +134,7 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
       s.function = f->text;
       s.constants = f->constants;
       s.field = f->field;
+      s.pigments = f->pigments;
     } else if (!in.has("function")) {
       in.error("<isosurface> needs a 'function' (an expression in x, y and z)");
     }

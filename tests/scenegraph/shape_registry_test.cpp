@@ -26,7 +26,8 @@ class RecordingOut final : public PovShapeOut {
   std::string declaredMesh(const MeshSpec&) override { return "Mesh0"; }
   std::optional<std::string> function(const std::string& text,
                                       const std::vector<std::pair<std::string, double>>&,
-                                      std::string&) const override {
+                                      const std::vector<std::shared_ptr<const PigmentFunction>>&,
+                                      std::string&) override {
     return "f(" + text + ")";
   }
   void error(const std::string& message) override { errors.push_back(message); }
