@@ -185,8 +185,7 @@ void writeBlock(const std::string& element, Attributes a,
   out.close(element);
 }
 
-void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
-                 const std::string& folder);
+void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out, const std::string& folder);
 
 // A normal map's or a block list's entries: <entry [at]><normal/></entry>, or <entry/>.
 void writeNormalEntries(const std::string& list, const NormalSpec& n, bool at, const SourceLoc& loc,

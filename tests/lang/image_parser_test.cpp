@@ -16,6 +16,13 @@ namespace {
 // Parsed as a file of examples/, so that textures/uvgrid.png is found.
 std::string sceneName() { return std::string(lucentSourceDir()) + "/examples/images.xml"; }
 
+// Written as a file of examples/ too: its file references relative to that folder.
+WriteOptions inExamples() {
+  WriteOptions o;
+  o.folder = std::string(lucentSourceDir()) + "/examples";
+  return o;
+}
+
 const char* kImages = R"XML(
 <material id="uv"><image src="textures/uvgrid.png" scale="2 1" once="true"/></material>
 <material id="sphere"><image src="textures/uvgrid.png" projection="spherical"
@@ -65,7 +72,7 @@ TEST_CASE("image projections: each attribute is read", "[lang][texture][image-ma
 
 TEST_CASE("image projections: the scene writer writes them and they read back to the same text",
           "[lang][scene-writer][image-map]") {
-  const std::string first = writeSceneXml(*parseClean(kImages, sceneName()), WriteOptions{});
+  const std::string first = writeSceneXml(*parseClean(kImages, sceneName()), inExamples());
   CHECK(first.find("projection=\"spherical\"") != std::string::npos);
   CHECK(first.find("interpolate=\"none\"") != std::string::npos);
   CHECK(first.find("once=\"true\"") != std::string::npos);
@@ -73,7 +80,7 @@ TEST_CASE("image projections: the scene writer writes them and they read back to
   CHECK(first.find("keep-facing-away=\"true\"") != std::string::npos);
   auto reread = parseSceneString(first, sceneName());
   REQUIRE(reread.scene);
-  CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+  CHECK(withoutComments(writeSceneXml(*reread.scene, inExamples())) == withoutComments(first));
 }
 
 TEST_CASE("image projections: placement without a projection, scale with one, bad names",

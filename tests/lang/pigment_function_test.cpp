@@ -112,9 +112,11 @@ TEST_CASE("pigment function: a bare call, an unknown member and an image are ref
   CHECK(has(sdltest::errorsOf(std::string(kPovPigments) +
                               "sphere { 0, 1 pigment { function { G(x, y, z).hue } } }\n"),
             "expected x, y, z, t, u, v, red, green, blue, gray, filter or transmit after '.'"));
-  CHECK(has(sdltest::errorsOf("#declare I = function { pigment { image_map { png \"x.png\" } } }\n"
-                              "sphere { 0, 1 pigment { function { I(x, y, z).red } } }\n"),
-            "'image_map' is not supported by Lucent"));
+  CHECK(has(sdltest::errorsOf(
+                "#declare I = function { pigment { image_map { png \"scenes/image_maps.png\" } } "
+                "}\n"
+                "sphere { 0, 1 pigment { function { I(x, y, z).red } } }\n"),
+            "is an image pigment, which Lucent cannot evaluate at a point in a function"));
 }
 
 TEST_CASE("pigment function: <pigment-function> in a function pattern, each component",
