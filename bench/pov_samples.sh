@@ -116,7 +116,12 @@ while IFS= read -r pov; do
     frame=$(middleFrame "$ini")
     [ "$frame" -gt 1 ] && frameArgs=(--frame "$frame") && checkFrame=(-D "frame=$frame")
   fi
-  cd "$dir"
+  # In a copy of the scene's folder, where the scene may write (its #fopen ... write, as
+  # POV-Ray's own run writes there too): the installed examples stay as they are.
+  rm -rf "$work/scene"
+  cp -r "$dir" "$work/scene"
+  cd "$work/scene"
+  args+=(--allow-write "$work/scene")
   timeout 120 "$lucent" check "${args[@]}" "$name" >/dev/null 2>"$work/check.err"
   status=$?
   if [ $status -eq 124 ]; then
@@ -124,7 +129,7 @@ while IFS= read -r pov; do
   elif [ $status -ge 128 ] || { [ $status -ne 0 ] && [ $status -ne 2 ] && [ $status -ne 1 ]; }; then
     printf '%s\tcrashed\tcheck exit status %s\t\t\t\t\n' "$rel" "$status" >>"$rows"
   elif [ $status -ne 0 ]; then
-    first=$(grep -m1 ': error: ' "$work/check.err" | sed "s#^$examples/##; s#^/usr/share/povray-3.7/include/##")
+    first=$(grep -m1 ': error: ' "$work/check.err" | sed "s#^$work/scene/##; s#^$examples/##; s#^/usr/share/povray-3.7/include/##")
     printf '%s\trefused\t%s\t\t\t\t\n' "$rel" "${first:-exit status $status}" >>"$rows"
   else
     : >"$work/err"
