@@ -17,8 +17,8 @@ namespace lucent {
 
 namespace {
 
-// What OpenImageIO hides: a PNG's colour type and bit depth (its IHDR chunk) and GIF's
-// palette, which POV-Ray reads as indices.
+// What OpenImageIO hides: a PNG's colour type and bit depth (its IHDR chunk; a palette PNG's
+// indices are read through libpng) and GIF's palette, which POV-Ray reads as indices.
 // A PNG's IHDR facts, when the file is a PNG.
 struct PngFacts {
   bool png = false;
@@ -37,10 +37,6 @@ PngFacts refusePaletteFiles(const std::string& path) {
   static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   if (n < 26 || !std::equal(png, png + 8, b)) return {};
   const int depth = b[24], type = b[25];
-  if (type == 3)
-    throw HeightMapError(
-        "a palette PNG: POV-Ray takes its palette indices as heights (index x 256); "
-        "save the image as grey or RGB");
   return {true, depth, type};
 }
 
@@ -169,7 +165,10 @@ std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
       // The stored code values, then POV-Ray's floats of them (value / max).
       auto code = [&](int c) { return static_cast<float>(std::lround(p[c] * top)) / top; };
       uint16_t v;
-      if (pngFacts.png && pngFacts.type == 0 && pngFacts.depth <= 8) {
+      if (pngFacts.png && pngFacts.type == 3) {
+        // A palette image: POV-Ray's height is the palette index times 256.
+        v = static_cast<uint16_t>(std::lround(p[0] * top) * 256);
+      } else if (pngFacts.png && pngFacts.type == 0 && pngFacts.depth <= 8) {
         const int max = (1 << pngFacts.depth) - 1;
         v = static_cast<uint16_t>(povPngGrey(std::lround(p[0] * max), max) * 65535.0f);
       } else if (grey) {

@@ -19,22 +19,22 @@ NodeKind csgKind(std::string_view word) {
 }
 
 // POV-Ray's height fields and lathes have no walls, floor or discs (the importer sets
-// `open`), but an intersection, a difference or a merge asks their inside, which an open
-// Lucent shape has not: there they stay closed, as Lucent's solid. The messages of those
-// closed again, at each.
+// `open`), but an intersection, a difference, a merge or a clip asks their inside, which an
+// open Lucent shape has not: there they stay closed, as Lucent's solid. The messages of
+// those closed again, at each.
 void closeForCsg(PovObject& o, std::vector<std::pair<SourceLoc, std::string>>& closed) {
   if (o.shape) {
     if (auto* h = std::get_if<HeightFieldSpec>(&*o.shape); h && h->open) {
       h->open = false;
       closed.emplace_back(o.loc,
-                          "in an intersection, difference or merge Lucent's height field "
+                          "in an intersection, difference, merge or clip Lucent's height field "
                           "is a solid closed by walls and a floor at the water level; "
                           "POV-Ray's has none (seen from below or beside, they differ)");
     }
     if (auto* l = std::get_if<LatheSpec>(&*o.shape); l && l->open) {
       l->open = false;
       closed.emplace_back(o.loc,
-                          "in an intersection, difference or merge Lucent's lathe is a "
+                          "in an intersection, difference, merge or clip Lucent's lathe is a "
                           "solid, its curve closed with discs to the axis; POV-Ray "
                           "leaves it open");
     }
@@ -244,6 +244,12 @@ void SceneReader::readClipOrBound(const Token& t, PovObject& o, TokenStream& in)
     if (!readTransform(n, in, after))
       in.error(n, "an object or a transform expected in " + std::string(t.text()) + ", not " +
                       n.describe());
+  }
+  // A clip asks its objects' inside, as a CSG does: open height fields and lathes closed.
+  if (clip) {
+    std::vector<std::pair<SourceLoc, std::string>> closed;
+    for (PovObject& c : objects) closeForCsg(c, closed);
+    for (const auto& [loc, message] : closed) warn(in, loc, message);
   }
   for (PovObject& c : objects) {
     c.transform = c.transform.then(after).then(backToObject);

@@ -33,7 +33,7 @@ struct PngPixels {
   int channels = 0;                   // after widening: 1 grey, 2 grey and alpha, 3 RGB, 4 RGBA
   bool sixteenBit = false;            // values of 0 to 65535; else 0 to 255
   int storedDepth = 0;                // the file's bit depth (1, 2, 4, 8 or 16)
-  bool palette = false;               // a palette image: its values are not read here
+  bool palette = false;               // a palette image: its values are the palette indices
   std::vector<std::uint16_t> values;  // rows top first, width x channels values each
 };
 
@@ -41,7 +41,8 @@ struct PngPixels {
 bool isPngFile(const std::string& path);
 // The header's facts into `out`: "" or the reason the file cannot be read.
 std::string readPngHeader(const std::string& path, PngPixels& out);
-// The values of a file whose header `pixels` holds (not a palette image): "" or the reason.
+// The values of a file whose header `pixels` holds (a palette image's indices): "" or the
+// reason.
 std::string readPngValues(const std::string& path, PngPixels& pixels);
 
 }  // namespace lucent

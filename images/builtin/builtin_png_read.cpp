@@ -29,10 +29,13 @@ void readData(png_structp png, png_bytep data, size_t length) {
               std::feof(file) ? "the file ends before its image does" : "the file cannot be read");
 }
 
-// The transformations both passes set: stored values, 16 bits in the machine's order.
+// The transformations both passes set: stored values, 16 bits in the machine's order; a
+// palette image's indices, a byte each (not its colours).
 void setTransforms(png_structp png, png_infop info) {
   if (png_get_color_type(png, info) == PNG_COLOR_TYPE_GRAY && png_get_bit_depth(png, info) < 8)
     png_set_expand_gray_1_2_4_to_8(png);
+  if (png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE && png_get_bit_depth(png, info) < 8)
+    png_set_packing(png);
   if (png_get_bit_depth(png, info) == 16) png_set_swap(png);
 }
 

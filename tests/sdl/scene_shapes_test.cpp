@@ -201,8 +201,25 @@ union { lathe { 3, <0, 0>, <1, 0>, <1, 1> } sphere { 0, 0.5 } })");
   size_t said = 0;
   for (const std::string& w : r->out.warnings)
     said += w.find(
-                "test.pov:4:14: warning: in an intersection, difference or merge Lucent's "
-                "lathe is a solid") == 0;
+                "test.pov:4:14: warning: in an intersection, difference, merge or clip "
+                "Lucent's lathe is a solid") == 0;
+  CHECK(said == 1);
+}
+
+TEST_CASE("scene shapes: a height field that clips is closed, as in a CSG",
+          "[sdl][scene][shapes][clip]") {
+  auto r = readScene(R"(sphere { <0.5, 0.5, 0.5>, 0.6
+  clipped_by { height_field { pgm "hf.pgm" } } })");
+  REQUIRE(r->load.scene);
+  const Node& sphere = *r->load.scene->root->children.at(0);
+  REQUIRE(sphere.clip.size() == 1);
+  const Node* field = sphere.clip[0].get();
+  while (!field->shape && !field->children.empty()) field = field->children[0].get();
+  REQUIRE(field->shape);
+  CHECK_FALSE(std::get<HeightFieldSpec>(*field->shape).open);
+  size_t said = 0;
+  for (const std::string& w : r->out.warnings)
+    said += w.find("merge or clip Lucent's height field is a solid") != std::string::npos;
   CHECK(said == 1);
 }
 

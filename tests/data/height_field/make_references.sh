@@ -1,5 +1,5 @@
 #!/bin/sh
-# POV-Ray 3.7's 16-bit heights of the test images (grey and RGB, 8 and 16 bits), for
+# POV-Ray 3.7's 16-bit heights of the test images (grey and RGB, 8 and 16 bits, a palette), for
 # tests/images/height_map_file_test.cpp: each image is 258 x 3 pixels, the 256 test values
 # in columns 1 to 256 of every row; POV-Ray's trace() straight down at the grid points of
 # the middle row gives y = h / 65536.
@@ -16,8 +16,11 @@ rgb = [(0, 0, 0)] + [((i * 53) % 256, i, (i * 7) % 256) for i in range(256)] + [
 write_png('rgb8.png', W, 3, [rgb] * 3, 8, 2)
 rgb16 = [(0, 0, 0)] + [((i * 53 * 257) % 65536, i * 257, (i * 7 * 257) % 65536) for i in range(256)] + [(0, 0, 0)]
 write_png('rgb16.png', W, 3, [rgb16] * 3, 16, 2)
+# A palette image: its indices 0..255, each a colour that is not its index's grey.
+palette = [((i * 97) % 256, (i * 29) % 256, 255 - i) for i in range(256)]
+write_png('p8.png', W, 3, [row] * 3, 8, 3, palette)
 PY
-for f in g8 g16 rgb8 rgb16; do
+for f in g8 g16 rgb8 rgb16 p8; do
   cat > /tmp/probe_$f.pov <<POV
 #version 3.7;
 #declare H = height_field { png "$PWD/$f.png" }
