@@ -392,7 +392,7 @@ const std::vector<std::pair<std::string_view, NormalBlock>> kNormalBlocks{
 // <normal-list> whose entries the cells pick, or without one a depth for the cells' slope.
 NormalSpec parseBlockNormal(ElementReader& r, NormalBlock block) {
   std::vector<std::string_view> allowed =
-      joined(kPlacementAttributes, {"type", "depth", "keep-facing-away"});
+      joined(kPlacementAttributes, {"type", "depth", "keep-facing-away", "accuracy"});
   if (block == NormalBlock::brick) allowed = joined(allowed, {"mortar", "size"});
   r.checkAttributes(allowed, [&](std::string_view a) -> std::string {
     if (a == "mortar" || a == "size") return "only a brick <normal> takes '" + std::string(a) + "'";
@@ -431,6 +431,7 @@ NormalSpec parseBlockNormal(ElementReader& r, NormalBlock block) {
                              " <normal> with a <normal-list> takes no depth (each entry's "
                              "<normal> has its own)");
   n.depth = r.number("depth", n.depth);
+  n.accuracy = r.number("accuracy", n.accuracy, NumberRule::positive());
   return n;
 }
 
@@ -477,8 +478,8 @@ NormalSpec parseNormal(ElementReader& r) {
   const std::string type = r.verbatim("type");
   for (const auto& [name, block] : kNormalBlocks)
     if (type == name) return parseBlockNormal(r, block);
-  r.checkAttributes(
-      joined(joined(kValueAttributes, kPlacementAttributes), {"depth", "keep-facing-away"}));
+  r.checkAttributes(joined(joined(kValueAttributes, kPlacementAttributes),
+                           {"depth", "keep-facing-away", "accuracy"}));
   NormalSpec n;
   if (type == "average") {
     // The weighted mean of its entries' normals, placed by the placement attributes.
@@ -503,6 +504,7 @@ NormalSpec parseNormal(ElementReader& r) {
   else n.pattern.type = r.choice("type", PatternType::bumps, patternNames(false));
   parseValueAttributes(r, n.pattern);
   n.depth = r.number("depth", n.depth);
+  n.accuracy = r.number("accuracy", n.accuracy, NumberRule::positive());
   n.keepFacingAway = r.boolean("keep-facing-away", n.keepFacingAway);
   parseNormalChildren(r, n);
   return n;

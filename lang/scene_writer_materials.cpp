@@ -226,6 +226,7 @@ void writeBlockNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
     a.emplace_back("size", xmlVector(n.brick.size));
   }
   if (n.map.empty()) a.emplace_back("depth", xmlNumber(n.depth));
+  if (n.accuracy != NormalSpec{}.accuracy) a.emplace_back("accuracy", xmlNumber(n.accuracy));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
   out.open("normal", a, n.map.empty());
   if (n.map.empty()) return;
@@ -255,6 +256,7 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
     cannotWrite(loc, "a function <normal> that calls a pigment function cannot be written yet");
   Attributes a = patternAttributes(n.pattern, loc);
   if (n.map.empty()) a.emplace_back("depth", xmlNumber(n.depth));
+  if (n.accuracy != NormalSpec{}.accuracy) a.emplace_back("accuracy", xmlNumber(n.accuracy));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
   const bool children =
       !n.map.empty() || !n.slopeMap.empty() || n.pattern.type == PatternType::pigment;

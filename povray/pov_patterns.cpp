@@ -305,6 +305,7 @@ void writeBlockNormalBody(const NormalSpec& n, PovWriter& out) {
                                                           : "brick";
   // Without a list, POV-Ray takes the slope of the cell index, bent by the amount.
   out.line(n.map.empty() ? std::string(keyword) + " " + povNumber(n.depth) : keyword);
+  if (n.map.empty()) out.line("accuracy " + povNumber(n.accuracy));
   writeNormalList(n, out);
   if (n.block == NormalBlock::brick)
     out.line("brick_size " + povVector(n.brick.size) + " mortar " + povNumber(n.brick.mortar));
@@ -354,8 +355,8 @@ void writeNormalBody(const NormalSpec& n, PovWriter& out) {
   if (n.pattern.type == PatternType::agate)
     out.line(keyword.substr(0, keyword.size() - agate.size()) + " " + povNumber(n.depth) + agate);
   else writePatternKeyword(n.pattern, out, " " + povNumber(n.depth));
-  // POV-Ray's slope method samples at this distance (its default, which Lucent uses).
-  out.line("accuracy 0.02");
+  // POV-Ray's slope method samples at this distance.
+  out.line("accuracy " + povNumber(n.accuracy));
   writeNormalMaps(n, out);
   writeValueModifiers(n.pattern, out);
   writePlacement(n.pattern.placement, out);

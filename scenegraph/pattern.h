@@ -328,6 +328,9 @@ struct NormalSpec {
   // POV-Ray's slope_map (entries in ascending `at`): the pattern's value becomes a height
   // by the entries' heights and slopes (Hermite cubics) before the slope is estimated.
   std::vector<SlopeMapEntry> slopeMap{};
+  // POV-Ray's accuracy: the distance at which the slope of a pattern's value is sampled
+  // (patterns whose normal is their own, bumps to quilted, do not sample).
+  double accuracy = 0.02;
   // Where the bent normal faces away from the viewer: false (Lucent's rule) shades with the
   // unperturbed normal there; true keeps the bent one, as POV-Ray does.
   bool keepFacingAway = false;

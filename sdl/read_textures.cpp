@@ -4,6 +4,10 @@
 #include "read_support.h"
 #include "scene_reader.h"
 
+#include "lang/expression.h"
+
+#include <cmath>
+
 #include <algorithm>
 
 namespace lucent::sdl {
@@ -100,9 +104,9 @@ PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, b
       }
     } else if (isWord(t, "accuracy")) {
       const double accuracy = in.parseFloat();
-      if (accuracy != 0.02)
-        warn(in, t.loc(),
-             "accuracy is not imported (Lucent's normals take POV-Ray's default 0.02)");
+      if (!(accuracy > 0.0 && std::isfinite(accuracy)))
+        in.error(t, "a normal's accuracy must be a positive number, not " + formatNumber(accuracy));
+      n.spec.accuracy = accuracy;
     } else if (!readBlockNormal(t, in, n) && !readNormalMapKeyword(t, in, n) &&
                !readTransform(t, in, n.transform) &&
                !readWarp(t, in, &n.spec.pattern.placement, &n.spec.pattern, n.transform,

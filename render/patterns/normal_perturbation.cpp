@@ -50,8 +50,8 @@ Vec3 wrinkles(const Vec3& n, const Vec3& p, double amount) {
 
 // The slope estimate; a slope map turns each sampled value into its height first.
 Vec3 slope(const NormalSpec& normal, const Vec3& n, const Vec3& p, double amount) {
-  const double delta = static_cast<float>(kNormalAccuracy);
-  const double k = amount * -5.0 * (0.02 / delta);  // POV-Ray's "fudge factor"
+  const double delta = static_cast<float>(normal.accuracy);  // single precision, as POV-Ray's
+  const double k = amount * -5.0 * (0.02 / delta);           // POV-Ray's "fudge factor"
   Vec3 r = n;
   for (const auto& d : kPyramid) {
     const Vec3 q(p.x + delta * d[0], p.y + delta * d[1], p.z + delta * d[2]);
