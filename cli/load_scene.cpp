@@ -4,6 +4,7 @@
 #include "load_pov_scene.h"
 
 #include "lang/parser.h"
+#include "register.h"
 #include "render/scene_check.h"
 
 #include <fmt/core.h>
@@ -47,6 +48,7 @@ void checkOverrides(const SceneRequest& request) {
 
 LoadedScene loadScene(const SceneRequest& request, const CommonOptions& common) {
   checkOverrides(request);
+  registerPovLibrary();  // `pov:` names in XML scenes
 
   ParseOptions options;
   options.defines = common.defines;

@@ -7,6 +7,7 @@
 #include "element_input.h"
 #include "element_parsers.h"
 #include "pattern_parser.h"
+#include "pov_library.h"
 #include "povray_names.h"
 #include "texture_parser.h"
 
@@ -217,6 +218,40 @@ void readSurfaceChildren(ElementReader& r, Material& m, const BaseResolver* reso
   }
 }
 
+bool isPovName(std::string_view id) { return id.rfind(kPovPrefix, 0) == 0; }
+
+bool isPovLibraryFile(const SourceFile& f) {
+  const PovLibrary* lib = povLibrary();
+  return lib && &lib->file == &f;
+}
+
+std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const BaseResolver& baseOf);
+
+// `material="pov:NAME"` (or base=): the library's material, read into the scene on its first
+// use and named by its id from then on.
+std::optional<uint32_t> povMaterial(ElementReader& r, const char* attr, const std::string& id) {
+  const PovLibrary* lib = povLibrary();
+  if (!lib) {
+    r.attrError(attr, "this program has no 'pov:' library (the lucent command has it)");
+    return std::nullopt;
+  }
+  if (auto it = r.ctx().materialIds.find(id); it != r.ctx().materialIds.end()) return it->second;
+  auto it = lib->materials.find(id);
+  if (it == lib->materials.end()) {
+    std::string what = lib->colours.count(id) ? " ('" + id + "' is a colour: diffuse=\"" + id +
+                                                    "\" or color=\"" + id + "\" take it)"
+                                              : didYouMean(id, lib->materialNames);
+    r.attrError(attr, "POV-Ray's library has no texture, pigment or material '" +
+                          id.substr(kPovPrefix.size()) + "'" + what);
+    return std::nullopt;
+  }
+  ElementReader library(r.ctx(), lib->file, it->second);
+  return parseMaterial(library, true, [](ElementReader& e, const char* a) {
+    e.attrError(a, "a material of the pov: library has no base");
+    return std::optional<uint32_t>{};
+  });
+}
+
 std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const BaseResolver& baseOf) {
   static const std::vector<std::string_view> attributes = materialAttributes();
   r.checkAttributes(attributes);
@@ -236,6 +271,9 @@ std::optional<uint32_t> parseMaterial(ElementReader& r, bool topLevel, const Bas
     else if (auto id = r.text("id")) {
       if (!isValidId(*id))
         r.attrError("id", "an id must be non-empty and contain no spaces, got '" + *id + "'");
+      else if (isPovName(*id) && !isPovLibraryFile(r.file()))
+        r.attrError("id", "'pov:' names POV-Ray's library (material=\"" + *id +
+                              "\" uses it); give your material an id of its own");
       else m.id = *id;
     }
   } else if (r.has("id")) {
@@ -313,6 +351,7 @@ void parseNamedMaterials(ParseContext& ctx, const std::vector<TopLevelItem>& ite
           auto id = e.text(attr);
           if (!id) return std::nullopt;
           auto it = byId.find(*id);
+          if (it == byId.end() && isPovName(*id)) return povMaterial(e, attr, *id);
           if (it == byId.end()) {
             std::vector<std::string_view> names;
             for (const auto& [name, k] : byId) names.push_back(name);
@@ -353,6 +392,7 @@ std::optional<uint32_t> lookupMaterial(ElementReader& r, const char* attr) {
   if (!id) return std::nullopt;
   auto& ids = r.ctx().materialIds;
   if (auto it = ids.find(*id); it != ids.end()) return it->second;
+  if (isPovName(*id)) return povMaterial(r, attr, *id);
   std::vector<std::string_view> names;
   names.reserve(ids.size());
   for (const auto& [name, index] : ids) names.push_back(name);

@@ -129,6 +129,11 @@ class SceneWriter {
     return out_.text;
   }
 
+  // One top-level <material id=...>, as a child of <scene>.
+  std::string topLevelMaterial(const Material& m, const std::string& id) {
+    return materialText(m, id, false, 1);
+  }
+
  private:
   const Scene& scene_;
   WriteOptions opt_;
@@ -435,6 +440,12 @@ class SceneWriter {
 
 std::string writeSceneXml(const Scene& scene, const WriteOptions& options) {
   return SceneWriter(scene, options).write();
+}
+
+std::string writeMaterialXml(const Material& material, const std::string& id,
+                             const WriteOptions& options) {
+  const Scene none;
+  return SceneWriter(none, options).topLevelMaterial(material, id);
 }
 
 }  // namespace lucent

@@ -21,4 +21,9 @@ struct WriteOptions {
 // element and its source location: a file is never written with it left out.
 std::string writeSceneXml(const Scene& scene, const WriteOptions& options);
 
+// One material as a top-level `<material id="ID" ...>` element of a scene (its children
+// included), as writeSceneXml writes a shared one: for libraries of materials.
+std::string writeMaterialXml(const Material& material, const std::string& id,
+                             const WriteOptions& options);
+
 }  // namespace lucent

@@ -2,8 +2,11 @@
 
 #include "color_names.h"
 #include "did_you_mean.h"
+#include "pov_library.h"
 
 #include "primitives/value_limits.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
@@ -144,6 +147,34 @@ double srgbToLinear(double c) {
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
+namespace {
+
+// "pov:NAME": a colour of POV-Ray's colors.inc (and the other standard includes), linear.
+Parsed<ParsedColor> povColor(std::string_view t) {
+  const PovLibrary* lib = povLibrary();
+  const std::string name(t);
+  if (!lib) return {std::nullopt, "this program has no 'pov:' library (the lucent command has it)"};
+  auto it = lib->colours.find(name);
+  if (it == lib->colours.end()) {
+    std::string what = lib->materials.count(name)
+                           ? " ('" + name + "' is a texture: material=\"" + name + "\" takes it)"
+                           : didYouMean(name, lib->colourNames);
+    return {std::nullopt,
+            "POV-Ray's library has no colour '" + name.substr(kPovPrefix.size()) + "'" + what};
+  }
+  const std::array<float, 5>& c = it->second;
+  if (c[3] != 0.0f || c[4] != 0.0f)
+    return {std::nullopt, fmt::format("'{}' has filter {} and transmit {}, which a colour here "
+                                      "cannot hold: write its red, green and blue ({} {} {}) "
+                                      "and the filter or transmit where the element takes them",
+                                      name, c[3], c[4], c[0], c[1], c[2])};
+  ParsedColor pc;
+  pc.color = Color(c[0], c[1], c[2]);
+  return {pc, {}};
+}
+
+}  // namespace
+
 Parsed<ParsedColor> parseColor(std::string_view text) {
   std::string_view t = trim(text);
   if (!t.empty() && t[0] == '#') {
@@ -163,6 +194,7 @@ Parsed<ParsedColor> parseColor(std::string_view text) {
     }
     return {pc, {}};
   }
+  if (t.rfind(kPovPrefix, 0) == 0) return povColor(t);
   // A word is a CSS colour name: sRGB like #rrggbb.
   if (!t.empty() && std::isalpha(static_cast<unsigned char>(t[0]))) {
     bool word = std::all_of(t.begin(), t.end(), [](char c) {

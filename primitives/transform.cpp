@@ -10,10 +10,12 @@ std::optional<Transform> Transform::fromMatrix(const Mat4& m) {
       if (!std::isfinite(m[c][r])) return std::nullopt;
   Mat3 linear(m);
   double det = glm::determinant(linear);
-  // Singular relative to the matrix's own scale: det of a 3x3 scales as the cube of
-  // its entries, so compare against the cube of the largest column length.
-  double scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
-  if (!(std::abs(det) > 1e-12 * scale * scale * scale)) return std::nullopt;
+  // Singular relative to the matrix's own axes: |det| is at most the product of the column
+  // lengths (Hadamard), equal for orthogonal axes, so their ratio says how flat the map is
+  // whatever its scales. A scale of 0.01 on two axes and 1e5 on the third (POV-Ray's way of
+  // making a pattern constant along an axis) is no flatter than the identity.
+  const double axes = glm::length(linear[0]) * glm::length(linear[1]) * glm::length(linear[2]);
+  if (!(axes > 0.0) || !(std::abs(det) > 1e-12 * axes)) return std::nullopt;
 
   Transform t;
   t.worldFromObject_ = m;

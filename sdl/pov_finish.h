@@ -24,6 +24,9 @@ struct PovColorMapEntry {
 // A colour map as written, in the ascending order Lucent's maps keep, giving every value
 // the colour POV-Ray's search of the written order gives it (sdl/read_patterns.cpp).
 std::vector<PovColorMapEntry> ascendingMap(const std::vector<PovColorMapEntry>& map);
+// An ascending map with entries outside [0, 1], as entries within it that give every pattern
+// value the same colour (the XML language's maps lie in [0, 1]).
+std::vector<PovColorMapEntry> unitMap(const std::vector<PovColorMapEntry>& map);
 
 // `pigment { rgbft <r, g, b, f, t> }` or `pigment { PATTERN color_map {...} modifiers }`.
 // POV-Ray's default pigment, an object's when nothing gives it one, is black.

@@ -76,7 +76,12 @@ std::string lucentPatternNames() {
 // (SceneReader::addMaterial), so these are kept as written.
 void readPatternArguments(const Token& t, TokenStream& in, PatternSpec& s) {
   s.frequency = defaultFrequency(s.type);
-  if (s.type == PatternType::gradient) s.axis = toVec3(in.parseVector());
+  if (s.type == PatternType::gradient) {
+    // Normalised here as the XML language's axis is (POV-Ray normalises it too): the same
+    // pattern, written back by `convert` as it reads back.
+    s.axis = toVec3(in.parseVector());
+    if (glm::length(s.axis) > 0.0) s.axis = glm::normalize(s.axis);
+  }
   if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
     s.arms = static_cast<int>(in.parseFloat());
   if (!isFractal(s.type)) return;
@@ -383,6 +388,39 @@ std::vector<PovColorMapEntry> ascendingMap(const std::vector<PovColorMapEntry>& 
   return out;
 }
 
+// An ascending map whose entries lie outside [0, 1] (stones.inc's maps end at 1.001), as
+// the map of entries within [0, 1] that gives every pattern value (all lie in [0, 1]) the
+// same colour: the entries beyond an end replaced by the blend at that end, or, when every
+// entry is beyond it, by the colour the values take there (the nearest entry's).
+std::vector<PovColorMapEntry> unitMap(const std::vector<PovColorMapEntry>& map) {
+  auto blendAt = [](const PovColorMapEntry& a, const PovColorMapEntry& b, double v) {
+    const float w = static_cast<float>((v - a.at) / (b.at - a.at));
+    PovColorMapEntry e = a;
+    e.at = v;
+    e.color = a.color + (b.color - a.color) * w;
+    e.filter = a.filter + (b.filter - a.filter) * w;
+    e.transmit = a.transmit + (b.transmit - a.transmit) * w;
+    return e;
+  };
+  std::vector<PovColorMapEntry> out;
+  for (size_t i = 0; i < map.size(); ++i) {
+    const PovColorMapEntry& e = map[i];
+    if (e.at < 0.0) {
+      // Kept only as the blend at 0 towards the next entry, if that one is at 0 or above.
+      if (i + 1 < map.size() && map[i + 1].at > 0.0) out.push_back(blendAt(e, map[i + 1], 0.0));
+      else if (i + 1 == map.size()) out.push_back({0.0, e.color, e.filter, e.transmit});
+      continue;
+    }
+    if (e.at > 1.0) {
+      if (out.empty()) out.push_back({1.0, e.color, e.filter, e.transmit});
+      else if (i > 0 && map[i - 1].at < 1.0) out.push_back(blendAt(map[i - 1], e, 1.0));
+      continue;
+    }
+    out.push_back(e);
+  }
+  return out;
+}
+
 namespace {
 
 // The texture blends whole pigments (a pigment map, a block pattern's list, an average):
@@ -423,7 +461,7 @@ void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& in, bool nes
       p.transmit = first.transmit;
       for (PovColorMapEntry& e : map) e.transmit = 0.0f;
     }
-    map = ascendingMap(map);
+    map = unitMap(ascendingMap(map));
   }
   auto colour = [&](size_t i) { return map.at(i).color; };
   auto ft = [&](size_t i) { return FilterTransmit{map.at(i).filter, map.at(i).transmit}; };

@@ -68,6 +68,13 @@ class SymbolTable {
     return map_.emplace(key, std::move(e)).first->second->symbol;
   }
   void erase(std::string_view name) { map_.erase(name); }
+  // Every name in the table, in no particular order.
+  std::vector<std::string_view> names() const {
+    std::vector<std::string_view> out;
+    out.reserve(map_.size());
+    for (const auto& [name, entry] : map_) out.push_back(name);
+    return out;
+  }
 
  private:
   struct Entry {

@@ -7,6 +7,7 @@
 #include "lang/file_access.h"
 #include "lang/source_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -361,6 +362,13 @@ const Value* TokenStream::lookup(const std::string& name) const {
     return &(*it)->value;
   }
   return nullptr;
+}
+
+std::vector<std::string> TokenStream::globalNames() const {
+  std::vector<std::string> names;
+  for (std::string_view n : tables_.front().names()) names.emplace_back(n);
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 }  // namespace lucent::sdl

@@ -130,6 +130,8 @@ class TokenStream {
 
   // --- For tests and the command: an identifier's value as the scene left it.
   const Value* lookup(const std::string& name) const;
+  // The names of the global symbol table (#declare's), sorted.
+  std::vector<std::string> globalNames() const;
   double languageVersion() const { return version_ / 100.0; }
 
  private:

@@ -7,7 +7,10 @@
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 
+#include "register.h"
+
 int main(int argc, char* argv[]) {
+  lucent::registerPovLibrary();  // `pov:` names in the XML scenes tests parse
   Catch::Session session;
   session.configData().warnings = static_cast<Catch::WarnAbout::What>(
       Catch::WarnAbout::NoAssertions | Catch::WarnAbout::NoTests);

@@ -25,6 +25,12 @@ TEST_CASE("singular and non-affine matrices are refused", "[transform]") {
   CHECK_FALSE(Transform::fromMatrix(nan));
   // A tiny but regular scale is fine: singularity is relative to the matrix's own size.
   CHECK(Transform::fromMatrix(glm::scale(Mat4(1.0), Vec3(1e-6))));
+  // ... and to its axes: very different scales on orthogonal axes are no flattening
+  // (stones.inc scales patterns by <0.01, 0.01, 1e5>), nearly parallel axes are.
+  CHECK(Transform::fromMatrix(glm::scale(Mat4(1.0), Vec3(0.01, 0.01, 1e5))));
+  Mat4 nearlyFlat(1.0);
+  nearlyFlat[2] = nearlyFlat[0] + Vec4(0, 0, 1e-13, 0);  // z axis within 1e-13 of x
+  CHECK_FALSE(Transform::fromMatrix(nearlyFlat));
 }
 
 TEST_CASE("points, vectors and normals round-trip through a sheared, scaled transform",

@@ -84,3 +84,29 @@ TEST_CASE("a colour map out of order gives POV-Ray's colour at every value",
   const std::vector<PovColorMapEntry> ascending{entry(0, 0, 0, 0), entry(1, 1, 1, 1)};
   CHECK(ascendingMap(ascending).size() == 2);
 }
+
+TEST_CASE("a colour map with entries beyond 0 and 1 keeps POV-Ray's colour at every value",
+          "[sdl][pattern][colour-map]") {
+  // stones.inc ends its maps at 1.001; maps may also start below 0 or lie wholly outside.
+  const std::vector<std::vector<PovColorMapEntry>> maps{
+      {entry(0, 0.2f, 0.3f, 0.4f), entry(0.729, 0.7f, 0.5f, 0.4f), entry(1.001, 0.1f, 0.9f, 0.3f)},
+      {entry(-0.5, 1, 0, 0), entry(0.25, 0, 1, 0), entry(1.5, 0, 0, 1)},
+      {entry(-2, 1, 0, 0), entry(-1, 0, 1, 0), entry(0.5, 0, 0, 1), entry(1, 1, 1, 1)},
+      {entry(1.2, 1, 0, 0), entry(1.5, 0, 1, 0)},
+      {entry(-1.5, 1, 0, 0), entry(-0.5, 0, 1, 0)}};
+  for (const std::vector<PovColorMapEntry>& map : maps) {
+    const std::vector<PovColorMapEntry> unit = unitMap(map);
+    for (const PovColorMapEntry& e : unit) {
+      CHECK(e.at >= 0.0);
+      CHECK(e.at <= 1.0);
+    }
+    ColorMap lucent;
+    for (const PovColorMapEntry& e : unit) lucent.entries.push_back({e.at, e.color});
+    for (int i = 0; i <= 100; ++i) {
+      const double v = i / 100.0;
+      INFO("v = " << v);
+      const Color want = povColour(map, v), got = lookupColorMap(lucent, v);
+      for (int c = 0; c < 3; ++c) CHECK(got[c] == Approx(want[c]).margin(1e-5));
+    }
+  }
+}
