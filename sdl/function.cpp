@@ -33,7 +33,15 @@ struct Frame {
 
 class Evaluator {
  public:
-  double call(const FunctionValue& f, const double* args, const SourceLoc& at) {
+  explicit Evaluator(const PigmentValue& pigments) : pigments_(pigments) {}
+
+  double call(const FunctionValue& f, const double* args, const SourceLoc& at, int member = -1) {
+    if (f.kind == FunctionValue::Kind::Pigment && pigments_) {
+      // A pattern function gives its pigment's red (function_parse.cpp).
+      if (member < 0 && f.what == "a pattern function") member = 0;
+      if (member >= 0)
+        if (std::optional<double> v = pigments_(f, member, args)) return *v;
+    }
     switch (f.kind) {
       case FunctionValue::Kind::Unsupported:
       case FunctionValue::Kind::Pigment:
@@ -131,12 +139,13 @@ class Evaluator {
         for (size_t i = 0; i < n.args.size(); ++i) args[i] = a(i);
         if (n.callee->kind == FunctionValue::Kind::Spline && n.member >= 0)
           return splineMember(n.callee->spline->at(args[0]), n.member);
-        return call(*n.callee, args.data(), n.loc);
+        return call(*n.callee, args.data(), n.loc, n.member);
       }
     }
     return 0.0;
   }
 
+  const PigmentValue& pigments_;
   long long steps_ = 0;
 };
 
@@ -214,8 +223,9 @@ std::string FunctionValue::describe() const {
   return name.empty() ? std::string("the function") : "'" + name + "'";
 }
 
-double evaluateFunction(const FunctionValue& f, const std::vector<double>& args) {
-  Evaluator e;
+double evaluateFunction(const FunctionValue& f, const std::vector<double>& args,
+                        const PigmentValue& pigments) {
+  Evaluator e(pigments);
   return e.call(f, args.data(), f.loc);
 }
 

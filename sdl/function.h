@@ -14,7 +14,9 @@
 
 #include "scenegraph/source_loc.h"
 
+#include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -142,7 +144,13 @@ constexpr size_t kMaxFunctionTextLength = 1'000'000;  // characters of an isosur
 // for a division by zero or a logarithm of a negative number, as in POV-Ray 3.7). Throws
 // FunctionError for what Lucent cannot evaluate (a pigment function, a noise function) and
 // past kMaxFunctionSteps. `args` has f.arity() numbers.
-double evaluateFunction(const FunctionValue& f, const std::vector<double>& args);
+// The value of a pigment or pattern function's call (its component `member` at the point
+// xyz), given by the scene reader, which holds the pigment; empty when it cannot.
+using PigmentValue =
+    std::function<std::optional<double>(const FunctionValue& f, int member, const double* xyz)>;
+
+double evaluateFunction(const FunctionValue& f, const std::vector<double>& args,
+                        const PigmentValue& pigments = {});
 
 // f's body as a Lucent expression (docs/scene-language.md, "Expressions") in which f's
 // parameters are the texts `args` (each an atom or parenthesised); user functions are

@@ -202,6 +202,14 @@ std::shared_ptr<const FunctionValue> TokenStream::parseFunction(bool declaration
     f->internal = n;
     f->params = {"x", "y", "z"};
     for (int i = 3; i < in->params; ++i) f->params.push_back("P" + std::to_string(i - 3));
+    if (n == kNoise3d && items_) {
+      // f_noise3d is the value of POV-Ray's bozo pattern (both are its Noise at the point
+      // with the scene's generator): a pattern function of it.
+      if ((f->pigment = items_->patternPigment(*this, true))) {
+        f->kind = FunctionValue::Kind::Pigment;
+        f->what = "a pattern function";
+      }
+    }
     return f;
   }
   if (declaration &&
@@ -218,6 +226,13 @@ std::shared_ptr<const FunctionValue> TokenStream::parseFunction(bool declaration
     f->kind = FunctionValue::Kind::Unsupported;
     f->what = "a " + std::string(word) + " function";
     f->params = {"x", "y", "z"};
+    if (word == "pattern" && items_) {
+      // A pigment whose red is the pattern's value, evaluated as pigment functions are.
+      f->pigment = items_->patternPigment(*this, false);
+      if (f->pigment) f->kind = FunctionValue::Kind::Pigment;
+      expect("}");
+      return f;
+    }
     if (word == "pigment" && items_) {
       // The scene reader reads the pigment; isosurfaces and function patterns evaluate it.
       const Token t = cur_;
@@ -556,13 +571,18 @@ FnNodePtr TokenStream::fnUserCall(FnScope& s) {
             "expected x, y, z, t, u, v, red, green, blue, gray, filter or transmit after "
             "'.', found " +
                 cur_.describe());
-    if (callee->kind != FunctionValue::Kind::Unsupported &&
-        callee->kind != FunctionValue::Kind::Spline && callee->kind != FunctionValue::Kind::Pigment)
+    if ((callee->kind != FunctionValue::Kind::Unsupported &&
+         callee->kind != FunctionValue::Kind::Spline &&
+         callee->kind != FunctionValue::Kind::Pigment) ||
+        callee->what == "a pattern function")
       error(cur_, "'." + std::string(cur_.text()) + "' of '" + name +
                       "', which gives a float, not a vector");
     n->member = member;
   } else {
     unget_ = true;
+    // A pattern function's value: its pigment's red.
+    if (callee->kind == FunctionValue::Kind::Pigment && callee->what == "a pattern function")
+      n->member = 0;
     if (callee->kind == FunctionValue::Kind::Spline)
       error(at, "'" + name +
                     "' is a spline function: it gives a vector, so a function takes one of its "
@@ -595,7 +615,12 @@ double TokenStream::functionCall() {
     error(at, "'" + name + "' takes " + std::to_string(f->arity()) + " argument" +
                   (f->arity() == 1 ? "" : "s") + ", " + std::to_string(args.size()) + " given");
   try {
-    return evaluateFunction(*f, args);
+    PigmentValue pigments;
+    if (items_)
+      pigments = [this](const FunctionValue& fn, int member, const double* xyz) {
+        return items_->pigmentValue(fn, member, xyz);
+      };
+    return evaluateFunction(*f, args, pigments);
   } catch (const FunctionError& e) {
     std::string m = e.what();
     if (e.at.line > 0) m += "\n" + e.at.str() + ": note: the cause, in the function's declaration";

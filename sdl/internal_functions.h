@@ -10,6 +10,9 @@
 
 namespace lucent::sdl {
 
+// internal(76), f_noise3d: POV-Ray's noise at the point (a pattern function of bozo).
+inline constexpr int kNoise3d = 76;
+
 struct InternalFunction {
   const char* name;  // as functions.inc declares it
   int params;        // x, y, z and its own

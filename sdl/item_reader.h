@@ -5,12 +5,14 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string_view>
 
 namespace lucent::sdl {
 
 class TokenStream;
 struct Token;
+struct FunctionValue;
 
 struct Item {
   virtual ~Item() = default;
@@ -49,6 +51,24 @@ class ItemReader {
   // `t` may be the stream's current token, which changes as `in` is read: take what is
   // needed of it first.
   virtual ItemPtr read(const Token& t, TokenStream& in) = 0;
+  // A pattern function's pattern as a pigment item whose red component is the pattern's
+  // value: `pattern { PATTERN modifiers }` read from `in` (the keyword `pattern` read), or,
+  // when `noise`, POV-Ray's noise (f_noise3d) read from nothing. Null when this reader
+  // makes no pigments (then such functions are refused where called).
+  // The component `member` (0 red ... 5 gray) of the pigment function `f`'s colour at the
+  // point xyz (POV-Ray's space), evaluated now; empty when this reader cannot.
+  virtual std::optional<double> pigmentValue(const FunctionValue& f, int member,
+                                             const double* xyz) {
+    (void)f;
+    (void)member;
+    (void)xyz;
+    return std::nullopt;
+  }
+  virtual ItemPtr patternPigment(TokenStream& in, bool noise) {
+    (void)in;
+    (void)noise;
+    return nullptr;
+  }
 };
 
 }  // namespace lucent::sdl

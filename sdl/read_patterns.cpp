@@ -461,13 +461,14 @@ void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& in, bool nes
       p.transmit = first.transmit;
       for (PovColorMapEntry& e : map) e.transmit = 0.0f;
     }
-    map = unitMap(ascendingMap(map));
+    map = ascendingMap(map);
   }
   auto colour = [&](size_t i) { return map.at(i).color; };
   auto ft = [&](size_t i) { return FilterTransmit{map.at(i).filter, map.at(i).transmit}; };
   if (auto* t = std::get_if<PatternTexture>(&p.pattern)) {
     t->map.entries.clear();
-    for (const PovColorMapEntry& e : map)
+    // (A block pattern's "map" holds its colours by index, 0, 1, 2: kept as they are.)
+    for (const PovColorMapEntry& e : unitMap(map))
       t->map.entries.push_back({e.at, e.color, {e.filter, e.transmit}});
   } else if (auto* c = std::get_if<CheckerTexture>(&p.pattern)) {
     c->color1 = colour(0);

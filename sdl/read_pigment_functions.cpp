@@ -4,6 +4,7 @@
 // placed in POV-Ray's space (the function's x, y and z are POV-Ray's), with its component.
 #include "scene_reader.h"
 
+#include "lang/pigment_call.h"
 #include "scenegraph/pigment_function.h"
 
 namespace lucent::sdl {
@@ -41,6 +42,26 @@ std::vector<std::shared_ptr<const PigmentFunction>> SceneReader::pigmentFunction
     out.push_back(std::move(f));
   }
   return out;
+}
+
+// `F(x, y, z).red` (or a pattern function's `F(x, y, z)`) evaluated while the scene is read
+// (a #declare, a macro's arithmetic): the pigment's colour at the point now, with the noise
+// generator global_settings chose so far.
+std::optional<double> SceneReader::pigmentValue(const FunctionValue& f, int member,
+                                                const double* xyz) {
+  const auto* item = dynamic_cast<const PigmentItem*>(f.pigment.get());
+  if (!item || member < 0 || member > 5) return std::nullopt;
+  std::shared_ptr<PigmentFunction>& p = evaluatedPigments_[&f];
+  if (!p) {
+    p = std::make_shared<PigmentFunction>();
+    p->pigment = pigmentTexture(item->pigment);
+    if (textureHoldsImage(p->pigment)) return std::nullopt;
+    forEachTexturePattern(p->pigment, [&](PatternSpec& s) {
+      if (s.noiseGenerator == 0) s.noiseGenerator = global_.noiseGenerator;
+    });
+  }
+  p->component = static_cast<PigmentComponent>(member);
+  return pigmentFunctionValue(*p, xyz[0], xyz[1], xyz[2]);
 }
 
 }  // namespace lucent::sdl

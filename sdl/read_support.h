@@ -6,8 +6,10 @@
 
 #include "primitives/math.h"
 #include "scenegraph/pattern.h"
+#include "scenegraph/texture_spec.h"
 
 #include <array>
+#include <functional>
 #include <string_view>
 
 namespace lucent::sdl {
@@ -54,6 +56,10 @@ inline void skipBlock(TokenStream& in) {
   in.next();
   skipToClose(in, 1);
 }
+
+// Every pattern of a texture, those of the pigments in its maps and lists too
+// (scene_reader.cpp).
+void forEachTexturePattern(Texture& t, const std::function<void(PatternSpec&)>& f);
 
 // The item an identifier token names, or null.
 inline const Item* itemOf(const Token& t) {

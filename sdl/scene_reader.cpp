@@ -571,6 +571,10 @@ void forEachNormalPattern(NormalSpec& n, const std::function<void(PatternSpec&)>
 
 }  // namespace
 
+void forEachTexturePattern(Texture& t, const std::function<void(PatternSpec&)>& f) {
+  forEachPattern(t, f);
+}
+
 void SceneReader::finishScene(TokenStream& in) {
   for (const auto& [key, s] : skipped_)
     in.warning(s.first, "left out (--skip-unsupported): " + s.message + "; " +

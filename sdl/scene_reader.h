@@ -201,6 +201,10 @@ class SceneReader : public ItemReader {
       : scene_(scene), diags_(diagnostics), options_(options) {}
 
   ItemPtr read(const Token& t, TokenStream& in) override;
+  // read_pattern_functions.cpp
+  ItemPtr patternPigment(TokenStream& in, bool noise) override;
+  std::optional<double> pigmentValue(const FunctionValue& f, int member,
+                                     const double* xyz) override;
   // object_geometry.cpp: an object item built for trace(), inside() and the extents.
   std::shared_ptr<const ObjectGeometry> geometry(const ItemPtr& item, TokenStream& in) override;
 
@@ -409,6 +413,9 @@ class SceneReader : public ItemReader {
   // Every pigment function's pigment, whose patterns take the scene's noise generator at
   // the end (finishScene).
   std::vector<std::shared_ptr<PigmentFunction>> pigmentFunctions_;
+  // The pigments of pigment and pattern functions evaluated while the scene is read, by
+  // function (read_pattern_functions.cpp).
+  std::map<const FunctionValue*, std::shared_ptr<PigmentFunction>> evaluatedPigments_;
   // The text outlines laid out so far, by font, string and offset (read_shapes.cpp).
   std::map<std::string, std::shared_ptr<TextOutline>> textOutlines_;
   // The material of the objects that take the default texture (unpatterned) as it is now.
