@@ -81,3 +81,16 @@ TEST_CASE("pattern functions of block patterns are refused where they are called
   REQUIRE(!errors.empty());
   CHECK_THAT(errors.front(), Catch::Contains("'f_checker' is a pattern function"));
 }
+
+TEST_CASE("a hexagon pigment keeps its three colours (functions.inc's f_hexagon)",
+          "[sdl][pattern]") {
+  auto r = sdltest::readScene(
+      "#version 3.7;\ncamera { location -5 look_at 0 }\n"
+      "sphere { 0, 1 pigment { hexagon color rgb 0, color rgb 0.5, color rgb 1 } }\n");
+  REQUIRE(r->load.scene);
+  const Material& m = r->load.scene->materials.at(*r->load.scene->root->children.at(0)->material);
+  const auto& h = std::get<HexagonTexture>(m.texture);
+  CHECK(h.spec.colors[0] == Color(0.0f));
+  CHECK(h.spec.colors[1] == Color(0.5f));
+  CHECK(h.spec.colors[2] == Color(1.0f));
+}
