@@ -267,8 +267,8 @@ std::string internalRefusal(int n) {
       std::string(f ? f->name : "?") + " (internal(" + std::to_string(n) + "))";
   if (usesNoise(n))
     return name +
-           " needs POV-Ray's noise, which Lucent has in its renderer, out of the language "
-           "core's reach (docs/povray-import.md)";
+           " is a noise function Lucent does not evaluate (of POV-Ray's noise functions it "
+           "evaluates f_noise3d, as the bozo pattern: docs/povray-import.md)";
   if (n == 77) return name + " is a pattern's function, which Lucent does not evaluate";
   return name +
          " is not evaluated by Lucent's POV-Ray reader (only the closed forms listed in "
