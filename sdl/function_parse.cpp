@@ -230,6 +230,8 @@ std::shared_ptr<const FunctionValue> TokenStream::parseFunction(bool declaration
       // A pigment whose red is the pattern's value, evaluated as pigment functions are.
       f->pigment = items_->patternPigment(*this, false);
       if (f->pigment) f->kind = FunctionValue::Kind::Pigment;
+      // A reader that makes no pigments leaves the block unread.
+      if (rawPeek().kind == RawKind::Punct && rawPeek().text == "{") fnSkipBlock();
       expect("}");
       return f;
     }
