@@ -275,13 +275,16 @@ Tracer::Shaded Tracer::shadeMap(const SurfaceSlots::Slot& map, const Hit& h, int
   const MapBlend b = mapBlend(m.mapEntries, mapValueAt(m.mapPattern, h.s, *h.leaf.instance));
   Shaded out;
   out.beyond = media;
-  out.result =
-      b.wa *
-      shadeSlot(map.first + b.a, h, depth, weight * b.wa, media, seed, context, false).result;
-  if (b.b != b.a && b.wb > 0.0f)
-    out.result +=
-        b.wb *
-        shadeSlot(map.first + b.b, h, depth, weight * b.wb, media, seed, context, false).result;
+  const bool both = b.b != b.a && b.wb > 0.0f;
+  auto shade = [&](uint32_t entry, float w) {
+    return w *
+           shadeSlot(map.first + entry, h, depth, weight * w, media, seed, context, false).result;
+  };
+  // POV-Ray shades the upper entry first, so a slope in the lower one reads the normal the
+  // upper one bent (its PNormal): only a scene with a slope depends on the order.
+  const Color upper = both && patternSurface_ ? shade(b.b, b.wb) : Color(0.0f);
+  out.result = shade(b.a, b.wa);
+  if (both) out.result += patternSurface_ ? upper : shade(b.b, b.wb);
   return out;
 }
 
@@ -351,6 +354,7 @@ Vec3 Tracer::shadingNormal(const WorldLeaf& leaf, const SurfaceInfo& s, bool fro
   if (m.bumpMap)
     n = bumpedShadingNormal(*textures_.bumpMap(leaf.materialIndex), *m.bumpMap,
                             leaf.instance->transform(), s, n, v);
+  if (patternSurface_ && (m.normal || m.bumpMap)) bendPatternSurface(n);
   return n;
 }
 

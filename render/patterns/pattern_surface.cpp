@@ -6,7 +6,7 @@ namespace lucent {
 
 namespace {
 
-thread_local const PatternSurface* tCurrent = nullptr;
+thread_local PatternSurface* tCurrent = nullptr;
 
 bool readsSurface(const PatternSpec& s);
 bool readsSurface(const Texture& t);
@@ -46,8 +46,11 @@ bool readsSurface(const NormalSpec& n) {
 
 const PatternSurface* currentPatternSurface() { return tCurrent; }
 
-PatternSurfaceScope::PatternSurfaceScope(bool active, const PatternSurface& surface)
-    : active_(active) {
+void bendPatternSurface(const Vec3& normal) {
+  if (tCurrent) tCurrent->normal = normal;
+}
+
+PatternSurfaceScope::PatternSurfaceScope(bool active, PatternSurface& surface) : active_(active) {
   if (!active_) return;
   previous_ = tCurrent;
   tCurrent = &surface;

@@ -18,18 +18,23 @@ struct PatternSurface {
 // a function, an isosurface), where POV-Ray's slope is 0.
 const PatternSurface* currentPatternSurface();
 
+// POV-Ray's PNormal after a normal pattern bent it: the current surface (if a scope is
+// open) takes `normal`, which the slopes evaluated later at this hit read (the same
+// layer's pigment, the layers below, a map's lower entry).
+void bendPatternSurface(const Vec3& normal);
+
 // Makes `surface` current until destroyed, then restores the one before (a reflected ray
 // shades other surfaces inside the first one's shading). Inactive: changes nothing.
 class PatternSurfaceScope {
  public:
-  PatternSurfaceScope(bool active, const PatternSurface& surface);
+  PatternSurfaceScope(bool active, PatternSurface& surface);
   ~PatternSurfaceScope();
   PatternSurfaceScope(const PatternSurfaceScope&) = delete;
   PatternSurfaceScope& operator=(const PatternSurfaceScope&) = delete;
 
  private:
   bool active_;
-  const PatternSurface* previous_ = nullptr;
+  PatternSurface* previous_ = nullptr;
 };
 
 // Some texture, map pattern or normal of the material (its layers and map entries

@@ -24,7 +24,7 @@ PatternSpec slopeSpec(const Vec3& direction) {
 
 double valueOn(const PatternSpec& s, const Vec3& normal, const Vec3& p,
                const Vec3& world = Vec3(0.0)) {
-  const PatternSurface surface{glm::normalize(normal), world};
+  PatternSurface surface{glm::normalize(normal), world};
   const PatternSurfaceScope scope(true, surface);
   return patternValue(s, p);
 }
@@ -135,4 +135,26 @@ TEST_CASE("only a scene with a slope opens the surface scope", "[pattern][slope]
   nested.layers.push_back(Material{});
   nested.layers.back().texture = outer;
   CHECK(usesPatternSurface(nested));
+}
+
+TEST_CASE("a bent normal is what later slopes at the hit read, until the hit's scope closes",
+          "[pattern][slope]") {
+  const PatternSpec s = slopeSpec(Vec3(0, 1, 0));
+  PatternSurface outer{Vec3(0, 1, 0), Vec3(0.0)};
+  const PatternSurfaceScope scope(true, outer);
+  CHECK(patternValue(s, Vec3(0.0)) == 1.0 - 1e-10);
+  {
+    // A reflected ray's hit: its own surface, then the first one's again.
+    PatternSurface inner{Vec3(1, 0, 0), Vec3(0.0)};
+    const PatternSurfaceScope nested(true, inner);
+    CHECK(patternValue(s, Vec3(0.0)) == Approx(0.5).margin(1e-15));
+  }
+  CHECK(patternValue(s, Vec3(0.0)) == 1.0 - 1e-10);
+  // POV-Ray's PNormal: a normal pattern bent it, the slopes after it read the bent one.
+  bendPatternSurface(Vec3(0, -1, 0));
+  CHECK(patternValue(s, Vec3(0.0)) == Approx(0.0).margin(1e-15));
+  // An inactive scope changes nothing.
+  PatternSurface unused{Vec3(1, 0, 0), Vec3(0.0)};
+  const PatternSurfaceScope inactive(false, unused);
+  CHECK(currentPatternSurface() == &outer);
 }
