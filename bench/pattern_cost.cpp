@@ -5,6 +5,7 @@
 #include "render/patterns/block_pattern.h"
 #include "render/patterns/color_map.h"
 #include "render/patterns/normal_perturbation.h"
+#include "render/patterns/pattern_surface.h"
 #include "render/patterns/pattern_value.h"
 
 #include <fmt/core.h>
@@ -63,6 +64,10 @@ int main() {
       s.fractal.cImaginary = 0.5;
       s.placement.patternFromObject = glm::scale(Mat4(1.0), Vec3(0.25));
     }
+    // slope reads the surface: a tilted normal, with an altitude so both parts count.
+    if (s.type == PatternType::slope) s.slope.altitude = Vec3(0, 1, 0);
+    PatternSurface surface{glm::normalize(Vec3(0.3, 0.8, 0.5)), Vec3(0.0)};
+    const PatternSurfaceScope scope(s.type == PatternType::slope, surface);
     PatternSpec turbulent = s;
     turbulent.placement.turbulence = Vec3(0.5);
     NormalSpec n;
@@ -83,6 +88,12 @@ int main() {
   fmt::print("| dnoise | {:.1f} |\n", nanoseconds(pts, [&](const Vec3& p) { return dnoise(p).x; }));
   fmt::print("| colour map lookup (3 entries) | {:.1f} |\n",
              nanoseconds(pts, [&](const Vec3& p) { return lookupColorMap(map, p.x * 0.1).r; }));
+  // What a scene with a slope pays per hit besides the pattern: opening the surface scope.
+  fmt::print("| slope's surface scope, per hit | {:.1f} |\n", nanoseconds(pts, [&](const Vec3& p) {
+               PatternSurface surface{p, p};
+               const PatternSurfaceScope scope(true, surface);
+               return currentPatternSurface()->normal.x;
+             }));
   fmt::print("| hexagon | {:.1f} |\n",
              nanoseconds(pts, [&](const Vec3& p) { return hexagonColor(hex, p).r; }));
   fmt::print("| brick | {:.1f} |\n",

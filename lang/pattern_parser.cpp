@@ -34,11 +34,12 @@ const std::vector<std::pair<std::string_view, WaveShape>> kWaves{
 const std::vector<std::string_view> kPlacementAttributes{"transform", "turbulence", "octaves",
                                                          "omega", "lambda"};
 const std::vector<std::string_view> kValueAttributes{
-    "type",     "axis",       "arms",        "frequency",
-    "phase",    "wave",       "exponent",    "noise-generator",
-    "control0", "control1",   "iterations",  "power",
-    "c",        "form",       "magnet-type", "exterior",
-    "interior", "agate-turb", "function"};
+    "type",     "axis",        "arms",        "frequency",
+    "phase",    "wave",        "exponent",    "noise-generator",
+    "control0", "control1",    "iterations",  "power",
+    "c",        "form",        "magnet-type", "exterior",
+    "interior", "agate-turb",  "function",    "direction",
+    "point-at", "slope-range", "altitude",    "altitude-range"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -141,8 +142,46 @@ void parseColouring(ElementReader& r, const char* attr, int maxType, FractalColo
   else c = {static_cast<int>(type), factor};
 }
 
+// slope's direction (or point-at), its range, and its altitude with its range.
+void parseSlopeAttributes(ElementReader& r, PatternSpec& s) {
+  const bool slope = s.type == PatternType::slope;
+  SlopeParams& p = s.slope;
+  if (slope && r.has("direction") == r.has("point-at")) {
+    r.error(r.tag() +
+            " type=\"slope\" needs one of 'direction' (the way the value's slope is measured "
+            "against) and 'point-at' (a point to look towards)");
+    return;
+  }
+  if (onlyFor(r, "direction", slope, "slope", s.type))
+    p.direction = r.vector("direction", p.direction);
+  if (onlyFor(r, "point-at", slope, "slope", s.type) && r.has("point-at")) {
+    p.pointAt = true;
+    p.direction = r.vector("point-at", p.direction);
+  }
+  if (onlyFor(r, "slope-range", slope, "slope", s.type))
+    if (auto range = numberPair(r, "slope-range", "the low and the high slope")) {
+      p.low = range->first;
+      p.high = range->second;
+    }
+  if (onlyFor(r, "altitude", slope, "slope", s.type) && r.has("altitude")) {
+    if (p.pointAt)
+      r.attrError("altitude", "a slope with 'point-at' takes no altitude (as POV-Ray)");
+    p.altitude = r.vector("altitude", p.altitude);
+  }
+  if (slope && r.has("altitude-range") && !r.has("altitude"))
+    r.attrError("altitude-range", "'altitude-range' needs 'altitude'");
+  else if (onlyFor(r, "altitude-range", slope, "slope", s.type))
+    if (auto range = numberPair(r, "altitude-range", "the low and the high altitude")) {
+      p.altitudeLow = range->first;
+      p.altitudeHigh = range->second;
+    }
+  if (slope && !p.pointAt && p.direction == Vec3(0.0) && p.altitude == Vec3(0.0))
+    r.attrError("direction", "the direction and the altitude cannot both be zero");
+}
+
 // The modifiers of agate, quilted, mandel, julia and magnet.
 void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
+  parseSlopeAttributes(r, s);
   if (onlyFor(r, "agate-turb", s.type == PatternType::agate, "agate", s.type))
     s.agateTurb = r.number("agate-turb", s.agateTurb);
   const bool function = s.type == PatternType::function;

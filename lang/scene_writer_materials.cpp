@@ -72,6 +72,18 @@ void addTypeAttributes(const PatternSpec& s, const SourceLoc& loc, Attributes& a
   }
   if (s.type == PatternType::agate && s.agateTurb != d.agateTurb)
     a.emplace_back("agate-turb", xmlNumber(s.agateTurb));
+  if (s.type == PatternType::slope) {
+    const SlopeParams& p = s.slope;
+    a.emplace_back(p.pointAt ? "point-at" : "direction", xmlVector(p.direction));
+    if (p.low != 0.0 || p.high != 0.0)
+      a.emplace_back("slope-range", xmlNumber(p.low) + " " + xmlNumber(p.high));
+    if (p.altitude != Vec3(0.0)) {
+      a.emplace_back("altitude", xmlVector(p.altitude));
+      if (p.altitudeLow != 0.0 || p.altitudeHigh != 0.0)
+        a.emplace_back("altitude-range",
+                       xmlNumber(p.altitudeLow) + " " + xmlNumber(p.altitudeHigh));
+    }
+  }
   if (s.type == PatternType::quilted) {
     if (s.quilted.control0 != d.quilted.control0)
       a.emplace_back("control0", xmlNumber(s.quilted.control0));

@@ -46,6 +46,15 @@ std::string patternKeyword(const PatternSpec& s) {
     if (!text) throw std::runtime_error("a function pattern cannot be exported: " + problem);
     k += " { " + *text + " }";
   }
+  if (s.type == PatternType::slope) {
+    const SlopeParams& p = s.slope;
+    k += std::string(" { ") + (p.pointAt ? "point_at " : "") + povVector(p.direction) + ", " +
+         povNumber(p.low) + ", " + povNumber(p.high);
+    if (p.altitude != Vec3(0.0))
+      k += " altitude " + povVector(p.altitude) + ", " + povNumber(p.altitudeLow) + ", " +
+           povNumber(p.altitudeHigh);
+    k += " }";
+  }
   // agate_turb always written, so that POV-Ray's default cannot drift.
   if (s.type == PatternType::agate) k += " agate_turb " + povNumber(s.agateTurb);
   const FractalParams& f = s.fractal;

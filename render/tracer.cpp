@@ -4,6 +4,7 @@
 #include "finish.h"
 #include "fog.h"
 #include "optics.h"
+#include "patterns/pattern_surface.h"
 #include "sampling.h"
 #include "scenegraph/map_blend.h"
 #include "see_through.h"
@@ -28,6 +29,16 @@ Color interiorAttenuation(const Material& m, double distance, bool shadowRay) {
   return keep;
 }
 
+// The surface a slope pattern reads: the shading normal on the side of `v` (the
+// geometric one where the interpolated normal faces away), as POV-Ray's raw normal
+// turned against the ray, and the world point.
+PatternSurface patternSurfaceAt(const SurfaceInfo& s, const Vec3& v) {
+  const bool front = glm::dot(v, s.ng) > 0.0;
+  Vec3 n = front ? s.ns : -s.ns;
+  if (glm::dot(n, v) <= 0.0) n = front ? s.ng : -s.ng;
+  return {n, s.p};
+}
+
 double boxVolume(const AABB& b) {
   if (!b.isBounded()) return kInf;
   Vec3 e = b.extent();
@@ -50,6 +61,7 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
   for (const Material& m : world.scene().materials) {
     anyTransmissive_ = anyTransmissive_ || m.isTransmissive();
     anyAbsorbing_ = anyAbsorbing_ || (m.attenuates() && m.isTransmissive());
+    patternSurface_ = patternSurface_ || usesPatternSurface(m);
   }
   for (const Light& light : lights_) {
     std::vector<Vec3> targets;
@@ -99,6 +111,9 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     const Hit here{hitLeaf, s, -glm::normalize(ray.d), front, solid && !front};
     travelled(ray, hit.t(), here.leaving ? hitLeaf.material : nullptr, media, sum, throughput);
 
+    PatternSurface surface;
+    if (patternSurface_) surface = patternSurfaceAt(s, here.v);
+    const PatternSurfaceScope surfaceScope(patternSurface_, surface);
     const Shaded shaded =
         shadeSlot(hitLeaf.materialIndex, here, depth, weight, media, seed, context, true);
     sum += throughput * shaded.result;
@@ -260,13 +275,16 @@ Tracer::Shaded Tracer::shadeMap(const SurfaceSlots::Slot& map, const Hit& h, int
   const MapBlend b = mapBlend(m.mapEntries, mapValueAt(m.mapPattern, h.s, *h.leaf.instance));
   Shaded out;
   out.beyond = media;
-  out.result =
-      b.wa *
-      shadeSlot(map.first + b.a, h, depth, weight * b.wa, media, seed, context, false).result;
-  if (b.b != b.a && b.wb > 0.0f)
-    out.result +=
-        b.wb *
-        shadeSlot(map.first + b.b, h, depth, weight * b.wb, media, seed, context, false).result;
+  const bool both = b.b != b.a && b.wb > 0.0f;
+  auto shade = [&](uint32_t entry, float w) {
+    return w *
+           shadeSlot(map.first + entry, h, depth, weight * w, media, seed, context, false).result;
+  };
+  // POV-Ray shades the upper entry first, so a slope in the lower one reads the normal the
+  // upper one bent (its PNormal): only a scene with a slope depends on the order.
+  const Color upper = both && patternSurface_ ? shade(b.b, b.wb) : Color(0.0f);
+  out.result = shade(b.a, b.wa);
+  if (both) out.result += patternSurface_ ? upper : shade(b.b, b.wb);
   return out;
 }
 
@@ -336,6 +354,7 @@ Vec3 Tracer::shadingNormal(const WorldLeaf& leaf, const SurfaceInfo& s, bool fro
   if (m.bumpMap)
     n = bumpedShadingNormal(*textures_.bumpMap(leaf.materialIndex), *m.bumpMap,
                             leaf.instance->transform(), s, n, v);
+  if (patternSurface_ && (m.normal || m.bumpMap)) bendPatternSurface(n);
   return n;
 }
 
@@ -553,7 +572,13 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
     if (slots_[leaf.materialIndex].kind == SurfaceSlots::Kind::plain &&
         !seeThrough_[leaf.materialIndex])
       t *= leaf.material->transmissive;
-    else t *= letThrough(leaf.materialIndex, leaf, hit.surface(ray));
+    else {
+      const SurfaceInfo s = hit.surface(ray);
+      PatternSurface surface;
+      if (patternSurface_) surface = patternSurfaceAt(s, -glm::normalize(ray.d));
+      const PatternSurfaceScope surfaceScope(patternSurface_, surface);
+      t *= letThrough(leaf.materialIndex, leaf, s);
+    }
     if (anyAbsorbing_) {
       // A solid's medium is its material.
       bool leaving = false;

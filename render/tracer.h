@@ -172,6 +172,8 @@ class Tracer {
   std::vector<char> seeThrough_;  // per slot: textureSeeThrough (evaluated per hit)
   bool anyTransmissive_ = false;  // else shadow rays ask only the any-hit question
   bool anyAbsorbing_ = false;     // else shadow rays need no media bookkeeping
+  bool patternSurface_ =
+      false;  // some pattern reads the surface (render/patterns/pattern_surface.h)
   // What this tracer's entries in a ShadowCache carry (unique in the process). Copies
   // share it, as they share the world whose objects the cached ids name.
   uint64_t cacheOwner_ = newShadowCacheOwner();

@@ -51,6 +51,7 @@ enum class PatternType {
   boxed,
   cells,
   pigment,
+  slope,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -125,6 +126,8 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "one random value for each unit cube"},
     {PatternType::pigment, "pigment-pattern", "pigment_pattern", true, WaveShape::ramp, false,
      "the grey level of a pigment's colour (0.297 r + 0.589 g + 0.114 b)"},
+    {PatternType::slope, "slope", "slope", true, WaveShape::ramp, false,
+     "the surface normal's angle to a direction, optionally mixed with the height along another"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 
@@ -157,6 +160,24 @@ struct CrackleParams {
   Vec3 form{-1.0, 1.0, 0.0};
   double offset = 0.0;
   bool solid = false;  // every cell one noise value instead of the distance pattern
+};
+
+// POV-Ray's slope: the angle of the surface normal (world space, facing the ray) to
+// `direction`, or to the way towards the world point `pointAt`, mapped from -90..90 degrees
+// to 0..1; with `altitude`, mixed with the pattern point's height along it, the two weighed
+// by the lengths of direction and altitude. A range (low, high) stretches its part so that
+// low..high becomes 0..1 (both 0: none).
+struct SlopeParams {
+  Vec3 direction{0.0, 1.0, 0.0};
+  bool pointAt = false;  // direction is a world point to look towards
+  double low = 0.0, high = 0.0;
+  Vec3 altitude{0.0};  // zero: the slope alone
+  double altitudeLow = 0.0, altitudeHigh = 0.0;
+  bool operator==(const SlopeParams& o) const {
+    return direction == o.direction && pointAt == o.pointAt && low == o.low && high == o.high &&
+           altitude == o.altitude && altitudeLow == o.altitudeLow && altitudeHigh == o.altitudeHigh;
+  }
+  bool operator!=(const SlopeParams& o) const { return !(*this == o); }
 };
 
 // POV-Ray's quilted modifiers: the cubic that rounds each cube (defaults 1 and 1).
@@ -231,6 +252,7 @@ struct PatternSpec {
   QuiltedParams quilted;
   FractalParams fractal;
   double agateTurb = 1.0;  // agate's turbulence scale (POV-Ray's agate_turb)
+  SlopeParams slope;       // type slope
   std::shared_ptr<const PatternFunction> function;  // type function
   std::shared_ptr<const TextureMapEntry> pigment;   // type pigment (pigment-pattern)
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin

@@ -2,6 +2,7 @@
 // with their colour maps, the block patterns checker, hexagon and brick with their colours,
 // and the modifiers a pattern takes in a pigment or a normal, with POV-Ray 3.7's defaults
 // (its default colour maps, pattern.cpp; its block patterns' colours).
+#include "pov_space.h"
 #include "read_support.h"
 #include "scene_reader.h"
 
@@ -45,8 +46,8 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
 constexpr std::string_view kPatternsLucentLacks[] = {
-    "aoi",       "cubic", "density_file", "facets", "object",     "pavement",
-    "potential", "slope", "square",       "tiling", "triangular", "image_pattern"};
+    "aoi",       "cubic",  "density_file", "facets",     "object",       "pavement",
+    "potential", "square", "tiling",       "triangular", "image_pattern"};
 
 const PatternTypeInfo* patternType(const Token& t) {
   if (t.kind != TokenKind::Keyword) return nullptr;
@@ -74,8 +75,41 @@ std::string lucentPatternNames() {
 // defaults: gradient's axis, the spirals' arms, the fractals' constant and iterations,
 // quilted's frequency 0. The pattern is evaluated in POV-Ray's space
 // (SceneReader::addMaterial), so these are kept as written.
+// slope's `<dir>` or `{ [point_at] <v> [, low, high] [altitude <v> [, low, high]] }`: the
+// direction and point in Lucent's world space (the normal's), the altitude in the
+// pattern's (POV-Ray's) space.
+void readSlope(const Token& t, TokenStream& in, SlopeParams& p) {
+  p = SlopeParams{};
+  if (!in.allow("{")) {
+    p.direction = lucentFromPov(toVec3(in.parseVector()));
+    return;
+  }
+  if (isWord(in.peek(), "point_at")) {
+    in.next();
+    p.pointAt = true;
+  }
+  auto range = [&](double& low, double& high) {
+    in.allow(",");
+    if (startsNumber(in.peek())) low = in.parseFloat();
+    in.allow(",");
+    if (startsNumber(in.peek())) high = in.parseFloat();
+  };
+  p.direction = lucentFromPov(toVec3(in.parseVector()));
+  range(p.low, p.high);
+  if (isWord(in.peek(), "altitude")) {
+    const Token a = in.next();
+    if (p.pointAt) in.error(a, "'altitude' cannot be used with 'point_at' in slope (as POV-Ray)");
+    p.altitude = toVec3(in.parseVector());
+    range(p.altitudeLow, p.altitudeHigh);
+  }
+  in.expect("}");
+  if (!p.pointAt && p.direction == Vec3(0.0) && p.altitude == Vec3(0.0))
+    in.error(t, "slope: zero length for both slope and altitude (POV-Ray's error)");
+}
+
 void readPatternArguments(const Token& t, TokenStream& in, PatternSpec& s) {
   s.frequency = defaultFrequency(s.type);
+  if (s.type == PatternType::slope) readSlope(t, in, s.slope);
   if (s.type == PatternType::gradient) {
     // Normalised here as the XML language's axis is (POV-Ray normalises it too): the same
     // pattern, written back by `convert` as it reads back.

@@ -6,6 +6,7 @@
 #include "primitives/noise.h"
 #include "render/texture.h"
 #include "scenegraph/turbulence.h"
+#include "slope.h"
 #include "wave.h"
 #include "wave_sources.h"
 
@@ -247,6 +248,8 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
       return cellsValue(p);
     case PatternType::pigment:
       return pigmentGrey(spec, p);
+    case PatternType::slope:
+      return slopeValue(spec.slope, p, currentPatternSurface());
   }
   return 0.0;
 }

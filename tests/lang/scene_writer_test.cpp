@@ -298,3 +298,22 @@ TEST_CASE("scene writer: pigment-pattern's pigment is written and read back",
   REQUIRE(reread.scene);
   CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
 }
+
+TEST_CASE("scene writer: slope's direction or point, ranges and altitude are written and read back",
+          "[lang][scene-writer]") {
+  const std::string first = written(
+      "<sphere><material><pattern type=\"slope\" direction=\"0 -3 0\" slope-range=\"0 0.5\" "
+      "altitude=\"0 1 0\" altitude-range=\"0.005 0.4\"/></material></sphere>"
+      "<sphere center=\"3 0 0\"><material><pattern type=\"slope\" point-at=\"1 2 3\"/>"
+      "</material></sphere>"
+      "<sphere center=\"6 0 0\"><material><normal type=\"slope\" direction=\"1 0 0\" "
+      "depth=\"0.3\"/></material></sphere>");
+  CHECK(contains(first,
+                 "<pattern type=\"slope\" direction=\"0 -3 0\" slope-range=\"0 0.5\" "
+                 "altitude=\"0 1 0\" altitude-range=\"0.005 0.4\"/>"));
+  CHECK(contains(first, "<pattern type=\"slope\" point-at=\"1 2 3\"/>"));
+  CHECK(contains(first, "<normal type=\"slope\" direction=\"1 0 0\" depth=\"0.3\"/>"));
+  auto reread = parseSceneString(first, "writer.xml");
+  REQUIRE(reread.scene);
+  CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+}

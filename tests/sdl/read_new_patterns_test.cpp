@@ -233,3 +233,60 @@ TEST_CASE("scene reader patterns: bad fractal and quilted modifiers are errors a
     CHECK(errors[0].rfind(want, 0) == 0);
   }
 }
+
+TEST_CASE(
+    "scene reader patterns: slope's vector and point in Lucent's space, its altitude in the "
+    "pattern's, in pigments, normals and texture maps",
+    "[sdl][scene][texture]") {
+  auto r = readScene(R"(
+sphere { 0, 1 pigment { slope <0.5, 1, 2> } }
+sphere { 0, 1 pigment { slope { -y*3, 0, 0.5 altitude <0, 1, 1>, 0.005, 0.4 } } }
+sphere { 0, 1 pigment { slope { point_at <1, 2, 3> } } }
+sphere { 0, 1 normal { slope { z 0.2, 0.7 } 0.3 } }
+sphere { 0, 1 texture { slope x texture_map { [0 pigment { rgb 0 }] [1 pigment { rgb 1 }] } } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const PatternSpec& simple = pigmentPattern(s, 0);
+  CHECK(simple.type == PatternType::slope);
+  CHECK(simple.slope.direction == Vec3(0.5, 1, -2));  // POV-Ray's z negated, as the normal's
+  CHECK(simple.slope.altitude == Vec3(0.0));
+  CHECK(simple.frequency == 1.0);
+  const SlopeParams& full = pigmentPattern(s, 1).slope;
+  CHECK(full.direction == Vec3(0, -3, 0));
+  CHECK(full.low == 0.0);
+  CHECK(full.high == 0.5);
+  CHECK(full.altitude == Vec3(0, 1, 1));  // the pattern point is POV-Ray's: kept as written
+  CHECK(full.altitudeLow == 0.005);
+  CHECK(full.altitudeHigh == 0.4);
+  const SlopeParams& at = pigmentPattern(s, 2).slope;
+  CHECK(at.pointAt);
+  CHECK(at.direction == Vec3(1, 2, -3));
+  const NormalSpec& n = normalOf(s, 3);
+  CHECK(n.pattern.type == PatternType::slope);
+  CHECK(n.pattern.slope.direction == Vec3(0, 0, -1));
+  CHECK(n.pattern.slope.low == 0.2);
+  CHECK(n.pattern.slope.high == 0.7);
+  CHECK(n.depth == 0.3);
+  const Material& mapped = s.materials.at(*s.root->children[4]->material);
+  REQUIRE(mapped.mapped());
+  const PatternSpec& m = std::get<PatternTexture>(mapped.mapPattern).pattern;
+  CHECK(m.type == PatternType::slope);
+  CHECK(m.slope.direction == Vec3(1, 0, 0));
+}
+
+TEST_CASE("scene reader patterns: slope's POV-Ray errors at their keyword",
+          "[sdl][scene][texture][errors]") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"sphere { 0, 1 pigment { slope { point_at y altitude y } } }",
+       "test.pov:1:44: error: 'altitude' cannot be used with 'point_at' in slope (as POV-Ray)"},
+      {"sphere { 0, 1 pigment { slope { 0 altitude 0 } } }",
+       "test.pov:1:25: error: slope: zero length for both slope and altitude (POV-Ray's error)"},
+  };
+  for (const auto& [text, want] : cases) {
+    INFO(text);
+    const auto errors = errorsOf(text);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].rfind(want, 0) == 0);
+  }
+}
