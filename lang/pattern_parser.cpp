@@ -38,7 +38,7 @@ const std::vector<std::string_view> kValueAttributes{
     "phase",    "wave",       "exponent",    "noise-generator",
     "control0", "control1",   "iterations",  "power",
     "c",        "form",       "magnet-type", "exterior",
-    "interior", "agate-turb", "function"};
+    "interior", "agate-turb", "function",    "tiling"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -141,8 +141,13 @@ void parseColouring(ElementReader& r, const char* attr, int maxType, FractalColo
   else c = {static_cast<int>(type), factor};
 }
 
-// The modifiers of agate, quilted, mandel, julia and magnet.
+// The modifiers of agate, quilted, tiling, mandel, julia and magnet.
 void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
+  const bool tiling = s.type == PatternType::tiling;
+  if (tiling && !r.has("tiling"))
+    r.error(r.tag() + " type=\"tiling\" needs 'tiling' (which of POV-Ray's tilings, 1 to 27)");
+  if (onlyFor(r, "tiling", tiling, "tiling", s.type))
+    s.tiling = static_cast<int>(r.integer("tiling", s.tiling, 1, 27));
   if (onlyFor(r, "agate-turb", s.type == PatternType::agate, "agate", s.type))
     s.agateTurb = r.number("agate-turb", s.agateTurb);
   const bool function = s.type == PatternType::function;

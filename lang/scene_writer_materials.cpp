@@ -70,6 +70,7 @@ void addTypeAttributes(const PatternSpec& s, const SourceLoc& loc, Attributes& a
     for (char c : s.function->text) text += c == '$' ? std::string("$$") : std::string(1, c);
     a.emplace_back("function", text);
   }
+  if (s.type == PatternType::tiling) a.emplace_back("tiling", std::to_string(s.tiling));
   if (s.type == PatternType::agate && s.agateTurb != d.agateTurb)
     a.emplace_back("agate-turb", xmlNumber(s.agateTurb));
   if (s.type == PatternType::quilted) {

@@ -37,6 +37,7 @@ std::string patternKeyword(const PatternSpec& s) {
   if (s.type == PatternType::gradient) k += " " + povVector(s.axis);
   if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
     k += " " + std::to_string(s.arms);
+  if (s.type == PatternType::tiling) k += " " + std::to_string(s.tiling);
   if (s.type == PatternType::function) {
     std::string problem;
     const std::optional<std::string> text =

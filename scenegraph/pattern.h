@@ -51,6 +51,7 @@ enum class PatternType {
   boxed,
   cells,
   pigment,
+  tiling,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -125,6 +126,8 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "one random value for each unit cube"},
     {PatternType::pigment, "pigment-pattern", "pigment_pattern", true, WaveShape::ramp, false,
      "the grey level of a pigment's colour (0.297 r + 0.589 g + 0.114 b)"},
+    {PatternType::tiling, "tiling", "tiling", true, WaveShape::ramp, false,
+     "one of POV-Ray's 27 tilings of the x-z plane: 1 on a tile's edge, falling inside it"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 
@@ -231,6 +234,7 @@ struct PatternSpec {
   QuiltedParams quilted;
   FractalParams fractal;
   double agateTurb = 1.0;  // agate's turbulence scale (POV-Ray's agate_turb)
+  int tiling = 1;          // tiling's number, 1..27 (render/patterns/tiling.h)
   std::shared_ptr<const PatternFunction> function;  // type function
   std::shared_ptr<const TextureMapEntry> pigment;   // type pigment (pigment-pattern)
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin

@@ -45,8 +45,8 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
 constexpr std::string_view kPatternsLucentLacks[] = {
-    "aoi",       "cubic", "density_file", "facets", "object",     "pavement",
-    "potential", "slope", "square",       "tiling", "triangular", "image_pattern"};
+    "aoi",       "cubic", "density_file", "facets",     "object",       "pavement",
+    "potential", "slope", "square",       "triangular", "image_pattern"};
 
 const PatternTypeInfo* patternType(const Token& t) {
   if (t.kind != TokenKind::Keyword) return nullptr;
@@ -79,6 +79,14 @@ void readPatternArguments(const Token& t, TokenStream& in, PatternSpec& s) {
   if (s.type == PatternType::gradient) s.axis = toVec3(in.parseVector());
   if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
     s.arms = static_cast<int>(in.parseFloat());
+  if (s.type == PatternType::tiling) {
+    // POV-Ray keeps the number as an unsigned char, then allows 1 to 27.
+    const double n = in.parseFloat();
+    s.tiling = static_cast<int>(n) & 0xff;
+    if (s.tiling < 1 || s.tiling > 27)
+      in.error(t,
+               "Tiling number must be between 1 and 27 (POV-Ray's error), got " + formatNumber(n));
+  }
   if (!isFractal(s.type)) return;
   FractalParams& f = s.fractal;
   f = FractalParams{};
