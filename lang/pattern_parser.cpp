@@ -38,7 +38,8 @@ const std::vector<std::string_view> kValueAttributes{
     "phase",    "wave",       "exponent",    "noise-generator",
     "control0", "control1",   "iterations",  "power",
     "c",        "form",       "magnet-type", "exterior",
-    "interior", "agate-turb", "function",    "tiling"};
+    "interior", "agate-turb", "function",    "tiling",
+    "metric",   "offset",     "solid"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -159,6 +160,13 @@ void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
       s.function = std::make_shared<const PatternFunction>(
           PatternFunction{f->text, f->constants, f->field, f->pigments});
   }
+  const bool crackle = s.type == PatternType::crackle;
+  if (onlyFor(r, "metric", crackle, "crackle", s.type))
+    s.crackle.metric = r.number("metric", s.crackle.metric);
+  if (onlyFor(r, "offset", crackle, "crackle", s.type))
+    s.crackle.offset = r.number("offset", s.crackle.offset);
+  if (onlyFor(r, "solid", crackle, "crackle", s.type))
+    s.crackle.solid = r.boolean("solid", s.crackle.solid);
   const bool quilted = s.type == PatternType::quilted;
   if (onlyFor(r, "control0", quilted, "quilted", s.type))
     s.quilted.control0 = r.number("control0", s.quilted.control0);
@@ -176,8 +184,10 @@ void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
     f.power = static_cast<int>(r.integer("power", f.power, 2, 33));
   if (onlyFor(r, "magnet-type", magnet, "magnet", s.type))
     f.magnetType = static_cast<int>(r.integer("magnet-type", f.magnetType, 1, 2));
-  if (onlyFor(r, "form", magnet, "magnet", s.type))
-    f.juliaForm = r.choice("form", false, {{"mandel", false}, {"julia", true}});
+  if (onlyFor(r, "form", magnet || s.type == PatternType::crackle, "crackle or magnet", s.type)) {
+    if (magnet) f.juliaForm = r.choice("form", false, {{"mandel", false}, {"julia", true}});
+    else s.crackle.form = r.vector("form", s.crackle.form);
+  }
   const bool takesC = s.type == PatternType::julia || (magnet && f.juliaForm);
   if (takesC && !r.has("c"))
     r.error(r.tag() + (magnet ? " type=\"magnet\" form=\"julia\"" : " type=\"julia\"") +

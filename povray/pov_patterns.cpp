@@ -69,6 +69,12 @@ void writePlacement(const PatternPlacement& p, PovWriter& out) {
 }
 
 void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
+  if (s.type == PatternType::crackle) {
+    // Always written, so that POV-Ray's defaults cannot drift.
+    const CrackleParams& c = s.crackle;
+    out.line("metric " + povNumber(c.metric) + " form " + povVector(c.form) + " offset " +
+             povNumber(c.offset) + (c.solid ? " solid" : ""));
+  }
   if (s.type == PatternType::quilted)
     out.line("control0 " + povNumber(s.quilted.control0) + " control1 " +
              povNumber(s.quilted.control1));

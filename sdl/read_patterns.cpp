@@ -68,6 +68,15 @@ std::string lucentPatternNames() {
   return names + ", checker, hexagon, brick";
 }
 
+// crackle's form <a, b, c>, metric M (a vector in old scenes: its x counts), offset O and
+// solid.
+void readCrackleModifier(std::string_view w, TokenStream& in, CrackleParams& c) {
+  if (w == "form") c.form = toVec3(in.parseVector());
+  else if (w == "metric") c.metric = in.parseVector()[0];
+  else if (w == "offset") c.offset = in.parseFloat();
+  else c.solid = true;
+}
+
 }  // namespace
 
 // What follows a pattern's keyword in POV-Ray (parstxtr.cpp, Parse_Pattern), with its
@@ -256,14 +265,10 @@ bool SceneReader::readPatternModifier(const Token& t, TokenStream& in, PatternSp
     const double g = in.parseFloat();
     if (g < 1 || g > 3) in.error(t, "noise_generator must be 1, 2 or 3");
     s.noiseGenerator = static_cast<int>(g);
-  } else if (w == "form") {
-    s.crackle.form = toVec3(in.parseVector());
-  } else if (w == "metric") {
-    s.crackle.metric = in.parseVector()[0];  // a vector for old scenes: its x counts
-  } else if (w == "offset") {
-    s.crackle.offset = in.parseFloat();
-  } else if (w == "solid") {
-    s.crackle.solid = true;
+  } else if (w == "form" || w == "metric" || w == "offset" || w == "solid") {
+    if (spec && s.type != PatternType::crackle)  // POV-Ray's Only_In
+      in.error(t, "'" + std::string(w) + "' is for crackle");
+    readCrackleModifier(w, in, s.crackle);
   } else if (w == "control0" || w == "control1") {
     if (s.type != PatternType::quilted) in.error(t, "'" + std::string(w) + "' is for quilted");
     (w == "control0" ? s.quilted.control0 : s.quilted.control1) = in.parseFloat();
