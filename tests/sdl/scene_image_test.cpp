@@ -135,3 +135,8 @@ TEST_CASE("scene reader image: the 27 tilings from above, each pixel the tiling'
           "[sdl][scene][image][tiling]") {
   requireSameImageAsPovray("tilings.pov", 270, 90);
 }
+
+TEST_CASE("scene reader image: tilings as normals, bent by their slope",
+          "[sdl][scene][image][tiling]") {
+  requireSameImageAsPovray("tilings_normal.pov", 160, 80);
+}
