@@ -17,8 +17,8 @@ namespace tiling {
 double wrap(double v, double period) { return v - period * std::floor(v / period); }
 
 // The lozenge tiling's last fold and measure, shared with tiling 5 (whose rhombi are
-// lozenges in three orientations): in the strip 0 <= z <= sqrt(3)/2 with x near 0, the
-// larger of the distances to the lozenge's two edges, scaled to 1 at its centre.
+// lozenges in three orientations): in the strip 0 <= z <= sqrt(3)/2 with x near 0, 1 minus
+// the scaled distance to the nearer of the lozenge's two edges: 1 on them, 0 at its centre.
 double lozengeInStrip(double x, double z) {
   if (2.0 * z > kS3h) {
     z = kS3h - z;

@@ -12,7 +12,7 @@ inline constexpr double kS2h = 0.70710678118654752440;  // sqrt(2) / 2
 // v moved by whole periods into [0, period).
 double wrap(double v, double period);
 
-// The lozenge of tiling 4 in its strip, from its last fold: 0 on the edges... 1 inside.
+// The lozenge of tiling 4 in its strip, from its last fold: 1 on its edges, 0 at its centre.
 double lozengeInStrip(double x, double z);
 
 // A 2x1 rectangle's edge measure (0 on the middle of its centre line, 1 on its edges).
