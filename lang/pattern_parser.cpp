@@ -39,7 +39,8 @@ const std::vector<std::string_view> kValueAttributes{
     "control0", "control1",    "iterations",  "power",
     "c",        "form",        "magnet-type", "exterior",
     "interior", "agate-turb",  "function",    "direction",
-    "point-at", "slope-range", "altitude",    "altitude-range"};
+    "point-at", "slope-range", "altitude",    "altitude-range",
+    "tiling",   "metric",      "offset",      "solid"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -179,9 +180,14 @@ void parseSlopeAttributes(ElementReader& r, PatternSpec& s) {
     r.attrError("direction", "the direction and the altitude cannot both be zero");
 }
 
-// The modifiers of agate, quilted, mandel, julia and magnet.
+// The modifiers of agate, quilted, tiling, mandel, julia and magnet.
 void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
   parseSlopeAttributes(r, s);
+  const bool tiling = s.type == PatternType::tiling;
+  if (tiling && !r.has("tiling"))
+    r.error(r.tag() + " type=\"tiling\" needs 'tiling' (which of POV-Ray's tilings, 1 to 27)");
+  if (onlyFor(r, "tiling", tiling, "tiling", s.type))
+    s.tiling = static_cast<int>(r.integer("tiling", s.tiling, 1, 27));
   if (onlyFor(r, "agate-turb", s.type == PatternType::agate, "agate", s.type))
     s.agateTurb = r.number("agate-turb", s.agateTurb);
   const bool function = s.type == PatternType::function;
@@ -193,6 +199,13 @@ void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
       s.function = std::make_shared<const PatternFunction>(
           PatternFunction{f->text, f->constants, f->field, f->pigments});
   }
+  const bool crackle = s.type == PatternType::crackle;
+  if (onlyFor(r, "metric", crackle, "crackle", s.type))
+    s.crackle.metric = r.number("metric", s.crackle.metric);
+  if (onlyFor(r, "offset", crackle, "crackle", s.type))
+    s.crackle.offset = r.number("offset", s.crackle.offset);
+  if (onlyFor(r, "solid", crackle, "crackle", s.type))
+    s.crackle.solid = r.boolean("solid", s.crackle.solid);
   const bool quilted = s.type == PatternType::quilted;
   if (onlyFor(r, "control0", quilted, "quilted", s.type))
     s.quilted.control0 = r.number("control0", s.quilted.control0);
@@ -210,8 +223,10 @@ void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
     f.power = static_cast<int>(r.integer("power", f.power, 2, 33));
   if (onlyFor(r, "magnet-type", magnet, "magnet", s.type))
     f.magnetType = static_cast<int>(r.integer("magnet-type", f.magnetType, 1, 2));
-  if (onlyFor(r, "form", magnet, "magnet", s.type))
-    f.juliaForm = r.choice("form", false, {{"mandel", false}, {"julia", true}});
+  if (onlyFor(r, "form", magnet || s.type == PatternType::crackle, "crackle or magnet", s.type)) {
+    if (magnet) f.juliaForm = r.choice("form", false, {{"mandel", false}, {"julia", true}});
+    else s.crackle.form = r.vector("form", s.crackle.form);
+  }
   const bool takesC = s.type == PatternType::julia || (magnet && f.juliaForm);
   if (takesC && !r.has("c"))
     r.error(r.tag() + (magnet ? " type=\"magnet\" form=\"julia\"" : " type=\"julia\"") +

@@ -70,6 +70,13 @@ void addTypeAttributes(const PatternSpec& s, const SourceLoc& loc, Attributes& a
     for (char c : s.function->text) text += c == '$' ? std::string("$$") : std::string(1, c);
     a.emplace_back("function", text);
   }
+  if (s.type == PatternType::tiling) a.emplace_back("tiling", std::to_string(s.tiling));
+  if (s.type == PatternType::crackle) {
+    if (s.crackle.metric != d.crackle.metric) a.emplace_back("metric", xmlNumber(s.crackle.metric));
+    if (s.crackle.form != d.crackle.form) a.emplace_back("form", xmlVector(s.crackle.form));
+    if (s.crackle.offset != d.crackle.offset) a.emplace_back("offset", xmlNumber(s.crackle.offset));
+    if (s.crackle.solid) a.emplace_back("solid", "true");
+  }
   if (s.type == PatternType::agate && s.agateTurb != d.agateTurb)
     a.emplace_back("agate-turb", xmlNumber(s.agateTurb));
   if (s.type == PatternType::slope) {
@@ -114,9 +121,6 @@ void addTypeAttributes(const PatternSpec& s, const SourceLoc& loc, Attributes& a
 // placement and the value's modifiers, written only where they differ from the defaults.
 Attributes patternAttributes(const PatternSpec& s, const SourceLoc& loc) {
   const PatternSpec d;
-  if (s.crackle.metric != d.crackle.metric || s.crackle.form != d.crackle.form ||
-      s.crackle.offset != d.crackle.offset || s.crackle.solid != d.crackle.solid)
-    cannotWrite(loc, "crackle's metric, form, offset and solid have no attributes yet");
   Attributes a{{"type", std::string(patternTypeInfo(s.type).name)}};
   addPlacement(s.placement, a);
   if (s.axis != d.axis) a.emplace_back("axis", xmlVector(s.axis));

@@ -37,6 +37,7 @@ std::string patternKeyword(const PatternSpec& s) {
   if (s.type == PatternType::gradient) k += " " + povVector(s.axis);
   if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
     k += " " + std::to_string(s.arms);
+  if (s.type == PatternType::tiling) k += " " + std::to_string(s.tiling);
   if (s.type == PatternType::function) {
     std::string problem;
     const std::optional<std::string> text =
@@ -77,6 +78,12 @@ void writePlacement(const PatternPlacement& p, PovWriter& out) {
 }
 
 void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
+  if (s.type == PatternType::crackle) {
+    // Always written, so that POV-Ray's defaults cannot drift.
+    const CrackleParams& c = s.crackle;
+    out.line("metric " + povNumber(c.metric) + " form " + povVector(c.form) + " offset " +
+             povNumber(c.offset) + (c.solid ? " solid" : ""));
+  }
   if (s.type == PatternType::quilted)
     out.line("control0 " + povNumber(s.quilted.control0) + " control1 " +
              povNumber(s.quilted.control1));

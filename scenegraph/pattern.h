@@ -52,6 +52,7 @@ enum class PatternType {
   cells,
   pigment,
   slope,
+  tiling,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -128,6 +129,8 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "the grey level of a pigment's colour (0.297 r + 0.589 g + 0.114 b)"},
     {PatternType::slope, "slope", "slope", true, WaveShape::ramp, false,
      "the surface normal's angle to a direction, optionally mixed with the height along another"},
+    {PatternType::tiling, "tiling", "tiling", true, WaveShape::ramp, false,
+     "one of POV-Ray's 27 tilings of the x-z plane: 1 on a tile's edge, falling inside it"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 
@@ -253,6 +256,7 @@ struct PatternSpec {
   FractalParams fractal;
   double agateTurb = 1.0;  // agate's turbulence scale (POV-Ray's agate_turb)
   SlopeParams slope;       // type slope
+  int tiling = 1;          // tiling's number, 1..27 (render/patterns/tiling.h)
   std::shared_ptr<const PatternFunction> function;  // type function
   std::shared_ptr<const TextureMapEntry> pigment;   // type pigment (pigment-pattern)
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin

@@ -47,7 +47,7 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
 constexpr std::string_view kPatternsLucentLacks[] = {
     "aoi",       "cubic",  "density_file", "facets",     "object",       "pavement",
-    "potential", "square", "tiling",       "triangular", "image_pattern"};
+    "potential", "square", "triangular", "image_pattern"};
 
 const PatternTypeInfo* patternType(const Token& t) {
   if (t.kind != TokenKind::Keyword) return nullptr;
@@ -67,6 +67,15 @@ std::string lucentPatternNames() {
     names += (names.empty() ? "" : ", ") + std::string(info.pov);
   }
   return names + ", checker, hexagon, brick";
+}
+
+// crackle's form <a, b, c>, metric M (a vector in old scenes: its x counts), offset O and
+// solid.
+void readCrackleModifier(std::string_view w, TokenStream& in, CrackleParams& c) {
+  if (w == "form") c.form = toVec3(in.parseVector());
+  else if (w == "metric") c.metric = in.parseVector()[0];
+  else if (w == "offset") c.offset = in.parseFloat();
+  else c.solid = true;
 }
 
 }  // namespace
@@ -118,6 +127,14 @@ void readPatternArguments(const Token& t, TokenStream& in, PatternSpec& s) {
   }
   if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
     s.arms = static_cast<int>(in.parseFloat());
+  if (s.type == PatternType::tiling) {
+    // POV-Ray keeps the number as an unsigned char, then allows 1 to 27.
+    const double n = in.parseFloat();
+    s.tiling = static_cast<int>(n) & 0xff;
+    if (s.tiling < 1 || s.tiling > 27)
+      in.error(t,
+               "Tiling number must be between 1 and 27 (POV-Ray's error), got " + formatNumber(n));
+  }
   if (!isFractal(s.type)) return;
   FractalParams& f = s.fractal;
   f = FractalParams{};
@@ -287,14 +304,10 @@ bool SceneReader::readPatternModifier(const Token& t, TokenStream& in, PatternSp
     const double g = in.parseFloat();
     if (g < 1 || g > 3) in.error(t, "noise_generator must be 1, 2 or 3");
     s.noiseGenerator = static_cast<int>(g);
-  } else if (w == "form") {
-    s.crackle.form = toVec3(in.parseVector());
-  } else if (w == "metric") {
-    s.crackle.metric = in.parseVector()[0];  // a vector for old scenes: its x counts
-  } else if (w == "offset") {
-    s.crackle.offset = in.parseFloat();
-  } else if (w == "solid") {
-    s.crackle.solid = true;
+  } else if (w == "form" || w == "metric" || w == "offset" || w == "solid") {
+    if (spec && s.type != PatternType::crackle)  // POV-Ray's Only_In
+      in.error(t, "'" + std::string(w) + "' is for crackle");
+    readCrackleModifier(w, in, s.crackle);
   } else if (w == "control0" || w == "control1") {
     if (s.type != PatternType::quilted) in.error(t, "'" + std::string(w) + "' is for quilted");
     (w == "control0" ? s.quilted.control0 : s.quilted.control1) = in.parseFloat();

@@ -7,6 +7,7 @@
 #include "render/texture.h"
 #include "scenegraph/turbulence.h"
 #include "slope.h"
+#include "tiling.h"
 #include "wave.h"
 #include "wave_sources.h"
 
@@ -246,6 +247,8 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
       return clippedDistance(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
     case PatternType::cells:
       return cellsValue(p);
+    case PatternType::tiling:
+      return tilingValue(spec.tiling, p);
     case PatternType::pigment:
       return pigmentGrey(spec, p);
     case PatternType::slope:

@@ -130,3 +130,13 @@ TEST_CASE("scene reader image: normal maps, lists of normals, slope maps and #de
           "[sdl][scene][image][povray][texture]") {
   requireSameImageAsPovray("normal_maps.pov", 160, 120);
 }
+
+TEST_CASE("scene reader image: the 27 tilings from above, each pixel the tiling's value",
+          "[sdl][scene][image][tiling]") {
+  requireSameImageAsPovray("tilings.pov", 270, 90);
+}
+
+TEST_CASE("scene reader image: tilings as normals, bent by their slope",
+          "[sdl][scene][image][tiling]") {
+  requireSameImageAsPovray("tilings_normal.pov", 160, 80);
+}

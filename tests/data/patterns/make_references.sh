@@ -217,6 +217,46 @@ write_cases pigment "$work/colors.csv" "${color_cases[@]}" >"$work/colors.pov"
 run_pov "$work/colors.pov" +W8 +H8 "+O$work/discard.png"
 cp "$work/colors.csv" "$out/colors.csv"
 
+# --- tilings.csv: POV-Ray's 27 tilings, 300 points each, and some placed --------------------
+# tests/patterns/tiling_test.cpp holds the same cases. POV-Ray 3.7 does not take tiling in a
+# pattern function, so the value is read as the red of a pigment mapping 0..1 to black..white
+# (a float colour: the value to single precision).
+tiling_cases=()
+for n in $(seq 1 27); do tiling_cases+=("tiling$n|300|6|tiling $n"); done
+tiling_cases+=(
+  "tiling_far2|100|1000|tiling 2"
+  "tiling_far13|100|1000|tiling 13"
+  "tiling_far21|100|1000|tiling 21"
+  "tiling_far25|100|300|tiling 25"
+  "tiling_far26|100|300|tiling 26"
+  "tiling_far27|100|300|tiling 27"
+  "tiling_near25|100|0.2|tiling 25"
+  "tiling_near27|100|0.2|tiling 27"
+  "tiling_placed|100|6|tiling 9 scale 0.7 rotate <10, 30, 0> translate <0.3, 0, -1>"
+  "tiling_wave|100|6|tiling 7 frequency 2 phase 0.1 sine_wave"
+  "tiling_turbulence|100|6|tiling 17 turbulence 0.3"
+  "tiling_byte|100|6|tiling 258.7"
+)
+{
+  header
+  echo "#fopen Out \"$work/tilings.csv\" write"
+  echo '#write (Out, "case,kx,ky,kz,value\n")'
+  i=0
+  for c in "${tiling_cases[@]}"; do
+    IFS='|' read -r name count range text <<<"$c"
+    i=$((i + 1))
+    echo "#declare P$i = function { pigment { $text color_map { [0 rgb 0] [1 rgb 1] } } }"
+    echo "#declare F$i = function { P$i(x, y, z).red }"
+    echo "#macro Row(KX, KY, KZ, X, Y, Z)"
+    echo "  #write (Out, \"$name,\", Ints(KX, KY, KZ), \",\", str(F$i(X, Y, Z), 0, 17), \"\\n\")"
+    echo "#end"
+    echo "Points($count, $((500 + i)), $range)"
+  done
+  echo "#fclose Out"
+} >"$work/tilings.pov"
+run_pov "$work/tilings.pov" +W8 +H8 "+O$work/discard.png"
+cp "$work/tilings.csv" "$out/tilings.csv"
+
 # --- normals.csv: perturbed normals, rendered ----------------------------------------------
 # A plane z = 0 facing the camera (normal -z) seen by an orthographic camera over the square
 # of side 4 centred at (0.375, -1.25), 16x16 pixels, pixel (i, j) at x = 0.375 + 4((i+0.5)/16
