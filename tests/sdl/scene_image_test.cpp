@@ -130,3 +130,13 @@ TEST_CASE("scene reader image: normal maps, lists of normals, slope maps and #de
           "[sdl][scene][image][povray][texture]") {
   requireSameImageAsPovray("normal_maps.pov", 160, 120);
 }
+
+TEST_CASE("scene reader image: uv_mapping of pigments, textures and texture maps on meshes",
+          "[sdl][scene][image][povray][texture][uv-mapping]") {
+  requireSameImageAsPovray("uv_mapping.pov", 160, 120);
+}
+
+TEST_CASE("scene reader image: tiles, a checker of layered textures",
+          "[sdl][scene][image][povray][texture][tiles]") {
+  requireSameImageAsPovray("tiles.pov", 160, 120);
+}
