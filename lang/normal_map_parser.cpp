@@ -43,7 +43,10 @@ void entryNormal(ElementReader& e, NormalMapEntry& entry, bool flatAllowed) {
     else if (normals++ > 0)
       c.error("an <entry> of a <" + std::string(e.element().parent().name()) +
               "> holds one <normal>");
-    else entry.normal = parseNormal(c);
+    else {
+      entry.normal = parseNormal(c);
+      refuseNormalUvMapping(c, entry.normal);
+    }
   });
   entry.flat = normals == 0;
   if (entry.flat && !flatAllowed && !e.failed())

@@ -32,7 +32,7 @@ const std::vector<std::pair<std::string_view, WaveShape>> kWaves{
     {"scallop", WaveShape::scallop}, {"cubic", WaveShape::cubic}, {"poly", WaveShape::poly}};
 
 const std::vector<std::string_view> kPlacementAttributes{"transform", "turbulence", "octaves",
-                                                         "omega", "lambda"};
+                                                         "omega",     "lambda",     "mapping"};
 const std::vector<std::string_view> kValueAttributes{
     "type",     "axis",        "arms",        "frequency",
     "phase",    "wave",        "exponent",    "noise-generator",
@@ -86,6 +86,9 @@ PatternPlacement parsePlacement(ElementReader& r) {
   p.octaves = static_cast<int>(r.integer("octaves", p.octaves, 1, 10));
   p.omega = r.number("omega", p.omega, NumberRule::positive());
   p.lambda = r.number("lambda", p.lambda, NumberRule::positive());
+  static const std::vector<std::pair<std::string_view, bool>> kMappings{{"object", false},
+                                                                        {"uv", true}};
+  p.uv = r.choice("mapping", false, kMappings);
   return p;
 }
 
@@ -527,6 +530,13 @@ void parseNormalChildren(ElementReader& r, NormalSpec& n) {
 }
 
 }  // namespace
+
+void refuseNormalUvMapping(ElementReader& r, const NormalSpec& n) {
+  if (n.pattern.placement.uv)
+    r.attrError("mapping",
+                "mapping=\"uv\" is for a material's own normal: an entry's normal is bent at "
+                "its map's pattern point in its map's space");
+}
 
 NormalSpec parseNormal(ElementReader& r) {
   const std::string type = r.verbatim("type");

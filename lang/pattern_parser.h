@@ -15,6 +15,9 @@ Texture parsePatternTexture(ElementReader& r);
 Texture parseHexagonTexture(ElementReader& r);
 Texture parseBrickTexture(ElementReader& r);
 NormalSpec parseNormal(ElementReader& r);
+// An error at r's `mapping` when the normal read from r, an entry of a map, list or average,
+// is uv-mapped (its map's point reaches it, not the shape's (u,v)).
+void refuseNormalUvMapping(ElementReader& r, const NormalSpec& n);
 // turbulence="s" or "x y z", each >= 0 (POV-Ray's vector): the strength per axis, shared by
 // patterns and fog; nullopt when absent or wrong (reported).
 std::optional<Vec3> parseTurbulenceStrength(ElementReader& r);

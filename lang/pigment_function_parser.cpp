@@ -71,6 +71,7 @@ std::vector<std::shared_ptr<const PigmentFunction>> parsePigmentFunctions(Elemen
         tr.error("<pigment-function> holds one texture");
       } else {
         f->pigment = parseTexture(tr);
+        refuseUvMapping(tr, f->pigment, "a pigment function, called at a point,");
         if (textureHoldsImage(f->pigment))
           tr.error(
               "a <pigment-function>'s texture holds an <image>, which has no colour at a "

@@ -30,6 +30,7 @@ void addPlacement(const PatternPlacement& p, Attributes& a) {
   if (p.octaves != d.octaves) a.emplace_back("octaves", std::to_string(p.octaves));
   if (p.omega != d.omega) a.emplace_back("omega", xmlNumber(p.omega));
   if (p.lambda != d.lambda) a.emplace_back("lambda", xmlNumber(p.lambda));
+  if (p.uv) a.emplace_back("mapping", "uv");
 }
 
 // The attributes <image> and <bump-map> share: a projection and its placement, once,

@@ -33,6 +33,7 @@ void parseSky(ElementReader& r) {
       return;
     }
     sky.layers.push_back(parseTexture(c));
+    refuseUvMapping(c, sky.layers.back(), "a sky, seen at a direction,");
   });
   if (sky.layers.empty() && !wrongChild && !r.failed()) {
     r.error("<sky> needs a <pattern> child, e.g. <pattern type=\"gradient\"> with a <color-map>");

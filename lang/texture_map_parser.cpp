@@ -66,6 +66,8 @@ TextureMapEntry parseEntry(ElementReader& e, EntryValue value) {
     }
     textureLoc = c.loc();
     entry.texture = parseTexture(c);
+    refuseUvMapping(c, entry.texture,
+                    "an entry, evaluated at its map's pattern point in its map's space,");
   });
   if (!plain && !textureLoc && !e.failed())
     e.error(e.tag() +
@@ -148,6 +150,7 @@ std::vector<WeightedNormal> parseNormalAverage(ElementReader& r) {
         c.error("an <entry> of an average <normal> holds one <normal>");
       } else {
         w.normal = parseNormal(c);
+        refuseNormalUvMapping(c, w.normal);
       }
     });
     if (normals == 0 && !e.failed()) e.error("<entry> needs a <normal> child");

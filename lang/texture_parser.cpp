@@ -101,3 +101,13 @@ std::vector<std::string_view> textureElements() {
 Texture parseTexture(ElementReader& t) { return readKind(t, static_cast<const Texture*>(nullptr)); }
 
 }  // namespace lucent
+
+namespace lucent {
+
+void refuseUvMapping(ElementReader& t, const Texture& texture, const std::string& where) {
+  if (textureUvMapped(texture))
+    t.attrError("mapping", "mapping=\"uv\" is for a material's own texture, normal or map: " +
+                               where + " has no (u,v) of its own");
+}
+
+}  // namespace lucent

@@ -6,6 +6,7 @@
 
 #include "scenegraph/material.h"
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -16,5 +17,9 @@ std::vector<std::string_view> textureElements();
 
 // Reads the texture element t (its name is one of textureElements()).
 Texture parseTexture(ElementReader& t);
+
+// An error at t's `mapping` when `texture` (read from t) is uv-mapped where no (u,v) reach
+// it (`where`: an entry of a map, a sky's layer, a pigment function's pigment).
+void refuseUvMapping(ElementReader& t, const Texture& texture, const std::string& where);
 
 }  // namespace lucent

@@ -119,6 +119,7 @@ void writeProjectedImagePigment(const ImageTexture& image, double filter, double
   // POV-Ray's map_type of each projection (the enum's order: uv, planar, spherical, ...).
   static const int kMapType[] = {0, 0, 1, 2, 5};
   out.open("pigment");
+  writeUvMapping(image.placement, out);
   out.line(imageMapText(image, readable->first, readable->second,
                         kMapType[static_cast<int>(image.projection)], filter, transmit));
   writePlacement(image.placement, out);

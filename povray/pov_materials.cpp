@@ -329,11 +329,37 @@ bool showsImage(const Material& m) {
   return false;
 }
 
+// Does any surface of the material read a pattern at the shape's (u,v) (mapping="uv")?
+bool usesUvMapping(const Material& m) {
+  if (textureUvMapped(m.texture) || textureUvMapped(m.mapPattern)) return true;
+  if (m.normal && m.normal->pattern.placement.uv) return true;
+  for (const Material& layer : m.layers)
+    if (usesUvMapping(layer)) return true;
+  for (const MaterialMapEntry& e : m.mapEntries)
+    if (usesUvMapping(e.material)) return true;
+  return false;
+}
+
 }  // namespace
 
 bool PovMaterials::dependsOnShape(uint32_t index) const {
-  return usesImageMap(index) || showsImage(materials_[index]);
+  return usesImageMap(index) || showsImage(materials_[index]) || usesUvMapping(materials_[index]);
 }
+
+namespace {
+
+// POV-Ray's uv_mapping gives Lucent's (u,v) only on meshes with texture coordinates (its
+// spheres, boxes, sors and planes have (u,v) of their own); an export error elsewhere.
+void checkUvShape(bool uv, const ImageMapping* mapping, const char* shapeName, const SourceLoc* loc,
+                  const std::string& what, PovIssues* issues) {
+  if (!uv || !issues || !loc || (mapping && mapping->kind == ImageMapping::MeshUV)) return;
+  issues->error(*loc, fmt::format("<{}> with {} mapped at (u,v): POV-Ray's uv_mapping gives "
+                                  "this shape other (u,v) than Lucent's (meshes with uvs can be "
+                                  "exported)",
+                                  shapeName ? shapeName : "shape", what));
+}
+
+}  // namespace
 
 void PovMaterials::writeFor(uint32_t index, const ShapeSpec& shape, const SourceLoc& loc,
                             PovWriter& out, PovIssues& issues, bool interior) const {
@@ -382,9 +408,15 @@ namespace {
 // The entry as POV-Ray must see it: POV-Ray evaluates an entry's patterns at the point the
 // map's pattern was evaluated at (in the map's pattern space), Lucent in the object's, so
 // each of the entry's placements is taken from the map's space: P_entry·P_map⁻¹.
-void intoMapSpace(Material& m, const Mat4& mapFromPattern) {
+// A uv-mapped entry of a map that is not keeps its placement (POV-Ray's uv_mapping ignores
+// the point it is given); in a uv-mapped map every entry must be uv-mapped (`mixed` if not),
+// and is then evaluated at the map's point.
+void intoMapSpace(Material& m, const Mat4& mapFromPattern, bool mapUv, bool& mixed) {
   auto move = [&](PatternPlacement* p) {
-    if (p) p->patternFromObject = p->patternFromObject * mapFromPattern;
+    if (!p || (p->uv && !mapUv)) return;
+    if (mapUv && !p->uv) mixed = true;
+    p->patternFromObject = p->patternFromObject * mapFromPattern;
+    p->uv = false;
   };
   auto texture = [&](Texture& t) {
     if (auto* p = std::get_if<PatternTexture>(&t)) move(&p->pattern.placement);
@@ -394,7 +426,7 @@ void intoMapSpace(Material& m, const Mat4& mapFromPattern) {
   };
   texture(m.texture);
   if (m.normal) move(&m.normal->pattern.placement);
-  for (Material& layer : m.layers) intoMapSpace(layer, mapFromPattern);
+  for (Material& layer : m.layers) intoMapSpace(layer, mapFromPattern, mapUv, mixed);
   texture(m.mapPattern);
 }
 
@@ -419,9 +451,11 @@ void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, cons
   // entry is a texture's body, which cannot hold layers unless it names a declared texture.
   std::vector<Material> entries;
   std::vector<std::string> declared(m.mapEntries.size());
+  const bool uv = place && place->uv;
+  bool mixed = false;
   for (size_t k = 0; k < m.mapEntries.size(); ++k) {
     entries.push_back(m.mapEntries[k].material);
-    intoMapSpace(entries.back(), mapFromPattern);
+    intoMapSpace(entries.back(), mapFromPattern, uv, mixed);
     const Material& entry = entries.back();
     if (entry.mapped() || !entry.layered()) continue;
     declared[k] = fmt::format("LucentLayers{}", layeredEntries_++);
@@ -441,6 +475,13 @@ void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, cons
     else if (entry.mapped()) writeMap(entry, mapping, shapeName, loc, out, issues);
     else writeLayer(entry, povSurface(entry, report), mapping, shapeName, loc, out, issues);
   };
+  if (mixed)
+    report.error(m.loc, materialLabel(m) +
+                            ": the map is mapped at (u,v) and an entry is not, which POV-Ray "
+                            "cannot write (it evaluates every entry at the map's point)");
+  checkUvShape(uv, mapping, shapeName, loc, materialLabel(m), issues);
+  // The rest of the texture is the map POV-Ray evaluates at (u, v, 0).
+  if (uv) out.line("uv_mapping");
   if (place && place->turbulence != Vec3(0.0))
     report.warning(m.loc, materialLabel(m) +
                               ": the map's turbulence moves its entries' patterns too in "
@@ -505,6 +546,8 @@ const std::vector<PovSurface>& PovMaterials::layerSurfaces(uint32_t material) co
 void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const ImageMapping* mapping,
                               const char* shapeName, const SourceLoc* loc, PovWriter& out,
                               PovIssues* issues) const {
+  checkUvShape(textureUvMapped(m.texture) || (m.normal && m.normal->pattern.placement.uv), mapping,
+               shapeName, loc, materialLabel(m), issues);
   // The pigment of each kind of texture (std::visit needs every kind); a material whose
   // texture POV-Ray cannot show (useTexture false, an image without a mapping) gets its
   // plain colour.

@@ -68,6 +68,11 @@ std::string patternKeyword(const PatternSpec& s) {
   return k;
 }
 
+void writeUvMapping(const PatternPlacement& p, PovWriter& out) {
+  // First in the block: the rest of it is the pattern POV-Ray evaluates at (u, v, 0).
+  if (p.uv) out.line("uv_mapping");
+}
+
 void writePlacement(const PatternPlacement& p, PovWriter& out) {
   if (p.turbulence != Vec3(0.0)) {
     out.line("turbulence " + povVector(p.turbulence));
@@ -265,6 +270,7 @@ void writePatternKeyword(const PatternSpec& s, PovWriter& out, const std::string
 void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filter, double transmit,
                          PovWriter& out) {
   out.open("pigment");
+  writeUvMapping(t.pattern.placement, out);
   writePatternBody(t, scale, filter, transmit, out);
   out.close();
 }
@@ -272,6 +278,7 @@ void writePatternPigment(const PatternTexture& t, const Vec3& scale, double filt
 void writeCheckerPigment(const CheckerTexture& t, const Vec3& scale, double filter, double transmit,
                          PovWriter& out) {
   out.open("pigment");
+  writeUvMapping(t.placement, out);
   writeCheckerBody(t, scale, filter, transmit, out);
   out.close();
 }
@@ -279,6 +286,7 @@ void writeCheckerPigment(const CheckerTexture& t, const Vec3& scale, double filt
 void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filter, double transmit,
                          PovWriter& out) {
   out.open("pigment");
+  writeUvMapping(t.placement, out);
   writeHexagonBody(t, scale, filter, transmit, out);
   out.close();
 }
@@ -286,6 +294,7 @@ void writeHexagonPigment(const HexagonTexture& t, const Vec3& scale, double filt
 void writeBrickPigment(const BrickTexture& t, const Vec3& scale, double filter, double transmit,
                        PovWriter& out) {
   out.open("pigment");
+  writeUvMapping(t.placement, out);
   writeBrickBody(t, scale, filter, transmit, out);
   out.close();
 }
@@ -293,6 +302,7 @@ void writeBrickPigment(const BrickTexture& t, const Vec3& scale, double filter, 
 void writeAveragePigment(const AverageTexture& t, const Vec3& scale, double filter, double transmit,
                          PovWriter& out) {
   out.open("pigment");
+  writeUvMapping(t.placement, out);
   writeAverageBody(t, scale, filter, transmit, out);
   out.close();
 }
@@ -382,6 +392,7 @@ void writeNormalBody(const NormalSpec& n, PovWriter& out) {
 
 void writeNormal(const NormalSpec& n, PovWriter& out) {
   out.open("normal");
+  writeUvMapping(n.pattern.placement, out);
   writeNormalBody(n, out);
   out.close();
 }

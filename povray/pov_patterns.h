@@ -46,5 +46,7 @@ void writePigmentFunctions(const PatternSpec& s, PovWriter& out);
 void writeValueModifiers(const PatternSpec& s, PovWriter& out);
 // A pattern's turbulence and transform (after the pattern's own modifiers).
 void writePlacement(const PatternPlacement& p, PovWriter& out);
+// `uv_mapping` for a uv-mapped placement (the first line of its pigment or normal block).
+void writeUvMapping(const PatternPlacement& p, PovWriter& out);
 
 }  // namespace lucent

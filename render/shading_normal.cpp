@@ -4,11 +4,14 @@
 #include "image_projection.h"
 #include "patterns/normal_perturbation.h"
 #include "patterns/pattern_point.h"
+#include "uv_mapping.h"
 
 namespace lucent {
 
 Vec3 perturbedShadingNormal(const NormalSpec& normal, const Transform& worldFromObject,
-                            const SurfaceInfo& surface, const Vec3& n, const Vec3& v) {
+                            const SurfaceInfo& hit, const Vec3& n, const Vec3& v) {
+  SurfaceInfo uvView;
+  const SurfaceInfo& surface = surfaceFor(normal.pattern.placement, hit, uvView);
   // Normals are covariant: the world normal is M^-T times the object one, so the object
   // normal is M^T times the world one.
   const Vec3 objectNormal =
@@ -24,7 +27,9 @@ namespace {
 // space (through the object's and the placement's inverse transposes, normalised as POV-Ray's
 // Warp_Normal), bent there, and carried back; n itself off a `once` image.
 Vec3 projectedBump(const ImageMap& map, const BumpMapSpec& bump, const Transform& worldFromObject,
-                   const SurfaceInfo& surface, const Vec3& n) {
+                   const SurfaceInfo& hit, const Vec3& n) {
+  SurfaceInfo uvView;
+  const SurfaceInfo& surface = surfaceFor(bump.placement, hit, uvView);
   const std::optional<Vec2> xy =
       projectToImage(bump.projection, warpPoint(bump.placement, surface.pObject), map.width(),
                      map.height(), bump.once);

@@ -8,6 +8,7 @@
 #include "image_map_cache.h"
 #include "image_projection.h"
 #include "image_read.h"
+#include "uv_mapping.h"
 
 #include "images/image_plugin.h"
 
@@ -290,7 +291,10 @@ struct TextureColour {
 
 }  // namespace
 
-double mapValueAt(const Texture& pattern, const SurfaceInfo& surface, const Instance& leaf) {
+double mapValueAt(const Texture& pattern, const SurfaceInfo& hit, const Instance& leaf) {
+  SurfaceInfo uvView;
+  const PatternPlacement* place = texturePlacement(pattern);
+  const SurfaceInfo& surface = place ? surfaceFor(*place, hit, uvView) : hit;
   const Vec3& p = surface.pObject;
   if (const auto* t = std::get_if<PatternTexture>(&pattern)) return patternValue(t->pattern, p);
   if (const auto* c = std::get_if<CheckerTexture>(&pattern))
@@ -307,14 +311,20 @@ PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& 
 }
 
 PigmentColor TextureSet::evalPigment(uint32_t index, const Material& material,
-                                     const SurfaceInfo& surface, const Instance& leaf) const {
+                                     const SurfaceInfo& hit, const Instance& leaf) const {
+  SurfaceInfo uvView;
+  const SurfaceInfo& surface =
+      textureUvMapped(material.texture) ? uvView = uvMappedSurface(hit) : hit;
   if (const auto* image = std::get_if<ImageTexture>(&material.texture))
     return imageColour(*maps_[index], *image, surface);
   return pigmentAt(material.texture, surface.pObject, objectError(surface, leaf));
 }
 
-Color TextureSet::eval(uint32_t index, const Material& material, const SurfaceInfo& surface,
+Color TextureSet::eval(uint32_t index, const Material& material, const SurfaceInfo& hit,
                        const Instance& leaf) const {
+  SurfaceInfo uvView;
+  const SurfaceInfo& surface =
+      textureUvMapped(material.texture) ? uvView = uvMappedSurface(hit) : hit;
   return std::visit(TextureColour{maps_[index], surface, leaf}, material.texture);
 }
 

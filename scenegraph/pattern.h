@@ -155,6 +155,9 @@ struct PatternPlacement {
   int octaves = 6;       // POV-Ray clamps to 1..10; so does the evaluation
   double omega = 0.5;    // amplitude factor per octave
   double lambda = 2.0;   // frequency factor per octave
+  // POV-Ray's uv_mapping: the point carried into pattern space is the shape's (u, v, 0)
+  // instead of the object point (on a shape without (u,v), (0, 0, 0)).
+  bool uv = false;
 };
 
 // POV-Ray's crackle modifiers and their defaults (metric 2, form <-1,1,0>, offset 0).

@@ -180,6 +180,23 @@ inline bool textureHoldsImage(const Texture& t) {
   return false;
 }
 
+// The placement a texture's point goes through first (null for none), and whether it is
+// uv-mapped: evaluated at the shape's (u, v, 0).
+inline const PatternPlacement* texturePlacement(const Texture& t) {
+  if (const auto* p = std::get_if<PatternTexture>(&t)) return &p->pattern.placement;
+  if (const auto* c = std::get_if<CheckerTexture>(&t)) return &c->placement;
+  if (const auto* h = std::get_if<HexagonTexture>(&t)) return &h->placement;
+  if (const auto* b = std::get_if<BrickTexture>(&t)) return &b->placement;
+  if (const auto* a = std::get_if<AverageTexture>(&t)) return &a->placement;
+  if (const auto* i = std::get_if<ImageTexture>(&t))
+    return i->projection == ImageProjection::uv ? nullptr : &i->placement;
+  return nullptr;
+}
+inline bool textureUvMapped(const Texture& t) {
+  const PatternPlacement* p = texturePlacement(t);
+  return p && p->uv;
+}
+
 // Every kind of texture, in Texture's order (monostate, no texture, left out).
 template <class... Kinds>
 std::vector<TextureKindInfo> textureKindsOf(const std::variant<std::monostate, Kinds...>*) {

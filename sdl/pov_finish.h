@@ -45,6 +45,11 @@ struct PovPigment {
   std::vector<PovColorMapEntry> map;
   SourceLoc mapLoc;
   bool warped = false;  // its turbulence is a `warp { turbulence }`
+  // `uv_mapping`: the rest of its block is a pigment read at the shape's (u, v, 0), placed by
+  // its own transforms only (uvTransform: those written in that block); the transforms
+  // that reach it later are POV-Ray's outer pigment's, which its uv_mapping ignores.
+  bool uv = false;
+  PovTransform uvTransform;
 
   bool patterned() const { return !std::holds_alternative<std::monostate>(pattern); }
 };

@@ -741,7 +741,7 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
 }
 
 // The triangles of a mesh or mesh2 as read: three corners each, with their normals when
-// any triangle has them, and their uvs when every triangle has them.
+// any triangle has them, and their uvs when any has them (the others' (0, 0), as POV-Ray's).
 struct MeshBuild {
   std::vector<std::array<Vec3, 3>> corners;
   std::vector<std::optional<std::array<Vec3, 3>>> normals;
@@ -754,9 +754,9 @@ namespace {
 // the mesh repair pairs their edges by position.
 std::shared_ptr<const MeshData> meshData(const MeshBuild& b) {
   auto d = std::make_shared<MeshData>();
-  bool anyNormals = false, allUvs = !b.uvs.empty();
+  bool anyNormals = false, anyUvs = false;
   for (const auto& n : b.normals) anyNormals |= n.has_value();
-  for (const auto& uv : b.uvs) allUvs &= uv.has_value();
+  for (const auto& uv : b.uvs) anyUvs |= uv.has_value();
   for (size_t t = 0; t < b.corners.size(); ++t) {
     const auto& p = b.corners[t];
     const uint32_t first = static_cast<uint32_t>(d->positions.size());
@@ -768,7 +768,7 @@ std::shared_ptr<const MeshData> meshData(const MeshBuild& b) {
         const Vec3 n = b.normals[t] ? (*b.normals[t])[static_cast<size_t>(k)] : face;
         d->normals.push_back(glm::normalize(lucentFromPov(n)));
       }
-      if (allUvs) d->uvs.push_back((*b.uvs[t])[static_cast<size_t>(k)]);
+      if (anyUvs) d->uvs.push_back(b.uvs[t] ? (*b.uvs[t])[static_cast<size_t>(k)] : Vec2(0.0));
     }
     d->triangles.push_back({first, first + 1, first + 2});
   }

@@ -23,13 +23,31 @@ PovPigment SceneReader::readPigmentBody(TokenStream& in, const PovPigment& start
     in.next();
     p = item->pigment;
   }
+  bool uvBlock = false, first = true;
   for (;;) {
     const Token t = in.next();
+    const bool atStart = first;
+    first = false;
     if (t.is(inEntry ? "]" : "}")) {
       resolvePigmentColours(p, in, inEntry);
+      if (uvBlock) p.uvTransform = p.transform;
       return p;
     }
-    if (isColourStart(t)) {
+    if (isWord(t, "uv_mapping")) {
+      // POV-Ray: the rest of the block is a new pigment (from the #default's) that the
+      // outer one evaluates at (u, v, 0); an identifier before it is dropped.
+      if (!atStart) in.error(t, "'uv_mapping' must come first in a pigment, as POV-Ray reads it");
+      if (inEntry)
+        keepError(in, t.loc(),
+                  "'uv_mapping' inside a map or a list of pigments is not supported by Lucent "
+                  "(an entry is read at its map's point; map the whole pigment instead)");
+      p = defaults_.pigment;
+      if (const auto* item = use<PigmentItem>(in.peek(), in)) {
+        in.next();
+        p = item->pigment;
+      }
+      p.uv = uvBlock = true;
+    } else if (isColourStart(t)) {
       in.unget();
       const PovColour c = readColour(in);
       p.color = c.rgb;
@@ -218,9 +236,12 @@ PovTexture SceneReader::readTextureBody(TokenStream& in, const PovTexture& start
     const Token& id = in.next();
     tex.name = id.element ? std::string() : std::string(id.text());
   }
+  bool first = true;
   for (;;) {
     const Token t = in.next();
     if (t.is(closing)) return tex;
+    const bool atStart = first;
+    first = false;
     tex.name.clear();  // changed: no longer the declared texture itself
     PovTransform m;    // a transform moves the pigment and normal written before it
     // A map's pattern takes the modifiers written after it.
@@ -231,6 +252,11 @@ PovTexture SceneReader::readTextureBody(TokenStream& in, const PovTexture& start
                              placementOf(tex.mapPattern.pattern))))
       continue;
     // Each block continues the texture's own (POV-Ray's Parse_Texture).
+    if (isWord(t, "uv_mapping")) {
+      if (!atStart) in.error(t, "'uv_mapping' must come first in a texture, as POV-Ray reads it");
+      readUvTexture(t, in, tex, closing);
+      return tex;
+    }
     if (isWord(t, "pigment")) tex.pigment = readPigment(in, tex.pigment);
     else if (isWord(t, "normal")) tex.normal = readNormal(in, tex.normal ? &*tex.normal : nullptr);
     else if (isWord(t, "finish")) tex.finish = readFinish(in, tex.finish);
@@ -245,6 +271,30 @@ PovTexture SceneReader::readTextureBody(TokenStream& in, const PovTexture& start
       return tex;
     }
   }
+}
+
+// `texture { uv_mapping BODY }`: POV-Ray reads the rest of the block as a new texture (from
+// the #default) that the outer one evaluates at (u, v, 0): its pigment, or its map with the
+// entries, placed by the transforms written in it. What came before is dropped.
+void SceneReader::readUvTexture(const Token& t, TokenStream& in, PovTexture& tex,
+                                std::string_view closing) {
+  if (!tex.below.empty())
+    keepError(in, t.loc(),
+              "a uv-mapped texture cannot be layered (POV-Ray: \"Cannot layer over a "
+              "patterned texture\")");
+  tex = readTextureBody(in, defaultTexture(), closing);
+  if (tex.mapped()) {
+    tex.mapPattern.uv = true;
+    tex.mapPattern.uvTransform = tex.mapPattern.transform;
+    return;
+  }
+  // A pigment uv-mapped itself keeps its own transforms (the later ones are its outer's).
+  if (!tex.pigment.uv) tex.pigment.uvTransform = tex.pigment.transform;
+  tex.pigment.uv = true;
+  if (tex.normal)
+    keepError(in, t.loc(),
+              "a normal in a uv-mapped texture is not supported by Lucent (POV-Ray bends the "
+              "world's normal by the slope in (u, v) space, Lucent bends it in the object's)");
 }
 
 namespace {
@@ -306,7 +356,10 @@ bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& te
   pattern.transform = tex.mapPattern.transform;
   const std::string_view w = t.text();
   const bool block = w == "checker" || w == "hexagon" || w == "brick";
-  if (block && isWord(in.peek(), "texture")) {
+  if (w == "tiles") {
+    readTiles(t, in, tex);
+    pattern.pattern = CheckerTexture{};
+  } else if (block && isWord(in.peek(), "texture")) {
     if (w == "checker") pattern.pattern = CheckerTexture{};
     else if (w == "hexagon") pattern.pattern = HexagonTexture{};
     else pattern.pattern = BrickTexture{};
@@ -359,6 +412,33 @@ bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& te
   tex.mapPattern = std::move(pattern);
   tex.name.clear();
   return true;
+}
+
+// `tiles { texture {..}... tile2 texture {..}... }`: POV-Ray's old checker of textures, the
+// first textures (layered, as several texture blocks are) on the odd cells (its value 1),
+// tile2's on the even ones (value 0, the cell [0, 1)³).
+void SceneReader::readTiles(const Token& t, TokenStream& in, PovTexture& tex) {
+  in.expect("{");
+  auto textures = [&]() -> std::optional<PovTexture> {
+    std::optional<PovTexture> all;
+    while (isWord(in.peek(), "texture")) {
+      const Token k = in.next();
+      PovTexture one = readTexture(in, defaultTexture());
+      all = all ? layerOver(std::move(*all), std::move(one), k.loc(), in) : std::move(one);
+    }
+    return all;
+  };
+  std::optional<PovTexture> first = textures();
+  const Token tile2 = in.next();
+  if (!isWord(tile2, "tile2"))
+    in.error(tile2, "'tile2' expected in tiles, not " + tile2.describe());
+  std::optional<PovTexture> second = textures();
+  in.expect("}");
+  if (!first) in.error(t, "the first texture is missing from tiles (POV-Ray's error)");
+  if (!second) in.error(tile2, "tile2 needs a texture (POV-Ray would have none for its cells)");
+  tex.mapEntries.clear();
+  tex.mapEntries.push_back({0.0, std::move(*second)});
+  tex.mapEntries.push_back({1.0, std::move(*first)});
 }
 
 // POV-Ray 1's normals written in the texture: `bumps 0.5`, `dents`, `ripples`, `waves`,

@@ -34,7 +34,9 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"texture_map", "maps of textures; Lucent has one texture layer per material"},
       {"average", "averages of textures; Lucent averages pigments and normals"},
       {"image_pattern", "image patterns"},
-      {"uv_mapping", "uv_mapping of patterns; Lucent's <image> is read at the shape's (u,v)"},
+      {"uv_mapping",
+       "uv_mapping of normals and objects; Lucent reads a uv-mapped pigment or texture at a "
+       "mesh's (u,v)"},
   };
   return features;
 }
@@ -358,14 +360,21 @@ uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& 
 // the others its <layer>s, bottom first) or a map, whose entries lie in its pattern space.
 Material SceneReader::importTexture(const PovTexture& texture, const PovInterior& interior,
                                     const Mat4& objectToTexture, const SourceLoc& at,
-                                    TokenStream& in) {
+                                    TokenStream& in, bool uv) {
   if (texture.mapped()) {
     // The interior terms of the whole, from a plain texture's import.
     Material m = importMaterial(PovPigment{}, PovFinish{}, interior).material;
     m.mapPattern = texture.mapPattern.pattern;
+    // A uv-mapped map and its entries read the shape's (u, v, 0), placed from there.
+    const bool mapUv = uv || texture.mapPattern.uv;
     const Mat4 patternFromObject =
-        glm::inverse(texture.mapPattern.transform.povMatrix()) * objectToTexture;
-    if (PatternPlacement* p = placementOf(m.mapPattern)) p->patternFromObject = patternFromObject;
+        texture.mapPattern.uv
+            ? glm::inverse(texture.mapPattern.uvTransform.povMatrix())
+            : glm::inverse(texture.mapPattern.transform.povMatrix()) * objectToTexture;
+    if (PatternPlacement* p = placementOf(m.mapPattern)) {
+      p->patternFromObject = patternFromObject;
+      p->uv = mapUv;
+    }
     const PatternPlacement* place = placementOf(m.mapPattern);
     if (place && place->turbulence != Vec3(0.0))
       warn(in, at,
@@ -376,7 +385,8 @@ Material SceneReader::importTexture(const PovTexture& texture, const PovInterior
       const PovTextureMapEntry& e = texture.mapEntries[k];
       if (k > 0 && e.at < texture.mapEntries[k - 1].at)
         keepError(in, at, "a texture_map's entries out of ascending order are not supported");
-      m.mapEntries.push_back({e.at, importTexture(e.texture, interior, patternFromObject, at, in)});
+      m.mapEntries.push_back(
+          {e.at, importTexture(e.texture, interior, patternFromObject, at, in, mapUv)});
     }
     m.fullTir = m.isTransmissive();
     return m;
@@ -384,9 +394,9 @@ Material SceneReader::importTexture(const PovTexture& texture, const PovInterior
   std::vector<const PovTexture*> layers;
   for (const PovTexture& layer : texture.below) layers.push_back(&layer);
   layers.push_back(&texture);
-  Material m = importLayer(*layers.front(), interior, objectToTexture, at, in);
+  Material m = importLayer(*layers.front(), interior, objectToTexture, at, in, uv);
   for (size_t k = 1; k < layers.size(); ++k)
-    m.layers.push_back(importLayer(*layers[k], interior, objectToTexture, at, in));
+    m.layers.push_back(importLayer(*layers[k], interior, objectToTexture, at, in, uv));
   // Under total internal reflection POV-Ray continues the mirror ray with weight 1 where
   // the surface lets light through at all (every layer).
   if (m.layered()) m.fullTir = m.isTransmissive();
@@ -395,13 +405,22 @@ Material SceneReader::importTexture(const PovTexture& texture, const PovInterior
 
 // One layer of a texture as a Lucent material: its pigment, finish and normal, placed.
 Material SceneReader::importLayer(const PovTexture& layer, const PovInterior& interior,
-                                  const Mat4& objectToTexture, const SourceLoc& at,
-                                  TokenStream& in) {
+                                  const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in,
+                                  bool uv) {
   MaterialImport imported = importMaterial(layer.pigment, layer.finish, interior);
   for (const std::string& d : imported.differences) warn(in, at, d);
   Material& m = imported.material;
-  if (PatternPlacement* p = placementOf(m.texture))
-    p->patternFromObject = glm::inverse(layer.pigment.transform.povMatrix()) * objectToTexture;
+  if (PatternPlacement* p = placementOf(m.texture)) {
+    // A uv-mapped pigment's pattern space is reached from (u, v, 0) by its own transforms.
+    p->uv = uv || layer.pigment.uv;
+    p->patternFromObject =
+        layer.pigment.uv ? glm::inverse(layer.pigment.uvTransform.povMatrix())
+                         : glm::inverse(layer.pigment.transform.povMatrix()) * objectToTexture;
+  }
+  if (uv && layer.normal)
+    keepError(in, at,
+              "a normal in a uv-mapped texture is not supported by Lucent (POV-Ray bends the "
+              "world's normal by the slope in (u, v) space, Lucent bends it in the object's)");
   if (layer.normal && layer.normal->bump) {
     // A bump map is the normal's only perturbation (POV-Ray's bump_map pattern).
     m.bumpMap = layer.normal->bump;
@@ -456,6 +475,7 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   // this object's transforms lead to.
   const Mat4 textureFromNode =
       o.texture ? Mat4(1.0) : inherited.textureFromParent * o.transform.povMatrix();
+  if (o.shape && here.texture->uvMapped()) checkUvShape(o, in);
   const bool placed = here.texture->patterned();
   const bool moved = placed && o.shape && textureFromNode != inherited.materialTextureFromNode;
   // A top-level object and one with its own texture or interior get a material, and a
@@ -488,6 +508,16 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     addBoxCut(o, here, *n, in);
   }
   return n;
+}
+
+// uv_mapping reads a pattern at the shape's (u, v): only a mesh's (its uv_vectors, (0, 0)
+// without them) are POV-Ray's in Lucent; the other shapes' differ or are missing.
+void SceneReader::checkUvShape(const PovObject& o, TokenStream& in) {
+  if (std::holds_alternative<MeshSpec>(*o.shape)) return;
+  keepError(in, o.loc,
+            "'uv_mapping' on a " + o.keyword +
+                " is not supported by Lucent (its (u, v) differ from POV-Ray's; only a mesh's "
+                "uv_vectors are read as POV-Ray reads them)");
 }
 
 // An object linked to the frame whose bounds POV-Ray drops keeps their box as its own when

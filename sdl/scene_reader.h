@@ -56,6 +56,16 @@ struct PovTexture {
   std::vector<PovTextureMapEntry> mapEntries;
 
   bool mapped() const { return !mapEntries.empty(); }
+  // Some pigment of it (a layer's, a map's, an entry's) is read at the shape's (u, v).
+  bool uvMapped() const {
+    if ((pigment.uv && pigment.patterned()) || mapPattern.uv) return true;
+    for (const PovTexture& layer : below)
+      if (layer.uvMapped()) return true;
+    for (const auto& e : mapEntries)
+      if (entryUvMapped(e)) return true;
+    return false;
+  }
+  static bool entryUvMapped(const PovTextureMapEntry& e);
   bool patterned() const {
     if (mapped()) return true;
     if (pigment.patterned() || normal.has_value()) return true;
@@ -77,6 +87,7 @@ struct PovTextureMapEntry {
   double at = 0.0;
   PovTexture texture;
 };
+inline bool PovTexture::entryUvMapped(const PovTextureMapEntry& e) { return e.texture.uvMapped(); }
 
 // `texture { under } texture { top }`: the layers of top (itself perhaps layered) over
 // those of under.
@@ -243,8 +254,10 @@ class SceneReader : public ItemReader {
   static bool keepsBound(const PovObject& o, bool framed);
   void addBoxCut(const PovObject& o, const Inherited& here, Node& n, TokenStream& in);
   // `hollow`: the object's flag, which POV-Ray promotes to its interior (the material's).
+  // uv: objectToTexture leads from the shape's (u, v, 0) (a uv-mapped map's entries).
   Material importLayer(const PovTexture& layer, const PovInterior& interior,
-                       const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in);
+                       const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in,
+                       bool uv = false);
   uint32_t addMaterial(const PovTexture& texture, const PovInterior& interior, bool hollow,
                        const Mat4& textureFromNode, const SourceLoc& at, TokenStream& in);
   // The item an identifier names if it is a T; the errors its declaration kept are
@@ -266,6 +279,7 @@ class SceneReader : public ItemReader {
   // The same inside a block: its error kept, and the block skipped to its closing brace.
   void unreadInBlock(const Token& t, TokenStream& in);
   void keepError(TokenStream& in, const SourceLoc& at, const std::string& message);
+  void checkUvShape(const PovObject& o, TokenStream& in);
   // What Lucent cannot render, said at `at`: an error (kept with the include and macro
   // chain that led `here`, or plainly; inside a declaration kept by the item until it is
   // used), or with --skip-unsupported counted by kind and left out.
@@ -336,7 +350,10 @@ class SceneReader : public ItemReader {
       const std::vector<PigmentCall>& calls, TokenStream& in);
   // A texture (one layer, layers or a map) as a Lucent material, placed.
   Material importTexture(const PovTexture& texture, const PovInterior& interior,
-                         const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in);
+                         const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in,
+                         bool uv = false);
+  void readUvTexture(const Token& t, TokenStream& in, PovTexture& tex, std::string_view closing);
+  void readTiles(const Token& t, TokenStream& in, PovTexture& tex);
   PovInterior readInterior(TokenStream& in, const PovInterior& start);
   PovMaterial readMaterial(TokenStream& in);
   void readReflection(TokenStream& in, PovReflection& r);

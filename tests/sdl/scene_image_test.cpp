@@ -140,3 +140,13 @@ TEST_CASE("scene reader image: tilings as normals, bent by their slope",
           "[sdl][scene][image][tiling]") {
   requireSameImageAsPovray("tilings_normal.pov", 160, 80);
 }
+
+TEST_CASE("scene reader image: uv_mapping of pigments, textures and texture maps on meshes",
+          "[sdl][scene][image][povray][texture][uv-mapping]") {
+  requireSameImageAsPovray("uv_mapping.pov", 160, 120);
+}
+
+TEST_CASE("scene reader image: tiles, a checker of layered textures",
+          "[sdl][scene][image][povray][texture][tiles]") {
+  requireSameImageAsPovray("tiles.pov", 160, 120);
+}

@@ -312,7 +312,10 @@ mesh2 {
   REQUIRE(m.data->normals.size() == 6);
   CHECK(std::count(m.data->normals.begin(), m.data->normals.end(), Vec3(0, 0, 1)) == 1);
   CHECK(std::count(m.data->normals.begin(), m.data->normals.end(), Vec3(0, 1, 0)) == 1);
-  CHECK(m.data->uvs.empty());  // only one triangle has uvs
+  // One triangle has uvs: the other's are POV-Ray's (0, 0) (its Parse_Three_UVCoords).
+  REQUIRE(m.data->uvs.size() == 6);
+  CHECK(std::count(m.data->uvs.begin(), m.data->uvs.end(), Vec2(0.0)) == 4);
+  CHECK(std::count(m.data->uvs.begin(), m.data->uvs.end(), Vec2(0, 1)) == 1);
   const auto& m2 = shapeOf<MeshSpec>(*r->load.scene, 1);
   REQUIRE(m2.data);
   REQUIRE(m2.data->triangles.size() == 2);

@@ -1,0 +1,122 @@
+// mapping="uv" (POV-Ray's uv_mapping): patterns, normals and material maps read at the
+// shape's (u, v, 0), checked against the documented (u,v) of each shape computed here.
+#include "scene_builder.h"
+
+#include "lang/parser.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace lucent;
+using namespace lucent::test;
+
+namespace {
+
+// A scene whose only light is the ambient 1: a material ambient="1" diffuse="0" shows its
+// texture T as it is.
+std::unique_ptr<Scene> sceneOf(const std::string& body) {
+  ParseResult r = parseSceneString(
+      R"XML(<scene version="1"><camera position="0 5 5" look-at="0 0 0"/><render ambient="1"/>)XML" +
+          body + "</scene>",
+      "uv.xml");
+  std::string all;
+  for (const Diagnostic& d : r.diagnostics.all()) all += d.str() + "\n";
+  INFO(all);
+  REQUIRE(r.scene);
+  return std::move(r.scene);
+}
+
+// A 4 by 4 quad in y = 0 with u = x/4, v = −z/4, wearing `texture`.
+std::string quad(const std::string& texture) {
+  return R"XML(<mesh positions="0 0 0  4 0 0  4 0 -4  0 0 -4" uvs="0 0  1 0  1 1  0 1"
+      indices="0 1 2  0 2 3"><material ambient="1" diffuse="0">)XML" +
+         texture + "</material></mesh>";
+}
+
+Color down(const Scene& scene, double x, double z) {
+  World world(scene);
+  return traceOne(world, Ray(Vec3(x, 2, z), Vec3(0, -1, 0)));
+}
+
+}  // namespace
+
+TEST_CASE("uv mapping: a gradient reads the mesh's (u, v, 0) through its placement",
+          "[render][uv-mapping]") {
+  // At x = 1.5, z = −3: u = 0.375, v = 0.75; the object point's x is 1.5 (value 0.5).
+  auto uvX = sceneOf(quad(R"X(<pattern type="gradient" axis="1 0 0" mapping="uv"/>)X"));
+  auto uvY = sceneOf(quad(R"X(<pattern type="gradient" axis="0 1 0" mapping="uv"/>)X"));
+  auto uvScaled = sceneOf(
+      quad(R"X(<pattern type="gradient" axis="1 0 0" mapping="uv" transform="scale(0.5)"/>)X"));
+  auto object = sceneOf(quad(R"X(<pattern type="gradient" axis="1 0 0"/>)X"));
+  CHECK(down(*uvX, 1.5, -3).r == Approx(0.375).margin(1e-6));
+  CHECK(down(*uvY, 1.5, -3).r == Approx(0.75).margin(1e-6));
+  // scale(0.5): the pattern point is (u, v, 0)/0.5 = (0.75, 1.5, 0).
+  CHECK(down(*uvScaled, 1.5, -3).r == Approx(0.75).margin(1e-6));
+  CHECK(down(*object, 1.5, -3).r == Approx(0.5).margin(1e-6));
+}
+
+TEST_CASE("uv mapping: a checker on a sphere follows the sphere's longitude and latitude",
+          "[render][uv-mapping]") {
+  auto scene = sceneOf(R"XML(<sphere radius="1"><material ambient="1" diffuse="0">
+      <pattern type="gradient" axis="1 0 0" mapping="uv"/></material></sphere>
+      <sphere radius="1" center="4 0 0"><material ambient="1" diffuse="0">
+      <pattern type="gradient" axis="0 1 0" mapping="uv"/></material></sphere>)XML");
+  World world(*scene);
+  for (const Vec3& dir : {Vec3(0.3, 0.4, 0.866), Vec3(-0.7, -0.2, 0.5), Vec3(0.1, 0.9, -0.4)}) {
+    const Vec3 n = glm::normalize(dir);
+    // docs/scene-language.md: u = (atan2(x, z) + π)/2π, v = 1 − θ/π from the +y pole.
+    const double u = (std::atan2(n.x, n.z) + M_PI) / (2.0 * M_PI);
+    const double v = 1.0 - std::acos(n.y) / M_PI;
+    INFO("direction " << n.x << " " << n.y << " " << n.z);
+    CHECK(traceOne(world, Ray(3.0 * n, -n)).r == Approx(u - std::floor(u)).margin(1e-5));
+    CHECK(traceOne(world, Ray(Vec3(4, 0, 0) + 3.0 * n, -n)).r == Approx(v).margin(1e-5));
+  }
+}
+
+TEST_CASE("uv mapping: on a shape without (u,v) the point is the origin", "[render][uv-mapping]") {
+  auto scene = sceneOf(R"XML(<cylinder base="0 -1 0" cap="0 1 0" radius="1">
+      <material ambient="1" diffuse="0">
+      <pattern type="gradient" axis="1 0 0" phase="0.3" mapping="uv"/></material></cylinder>)XML");
+  World world(*scene);
+  CHECK(traceOne(world, Ray(Vec3(0.2, 5, 0.1), Vec3(0, -1, 0))).r == Approx(0.3).margin(1e-6));
+  CHECK(traceOne(world, Ray(Vec3(5, 0.3, 0.4), Vec3(-1, 0, 0))).r == Approx(0.3).margin(1e-6));
+}
+
+TEST_CASE("uv mapping: a normal bent at (u, v, 0) equals the object mapping where they agree",
+          "[render][uv-mapping]") {
+  // A quad in z = 0 whose (u, v) are its (x, y): the object point and (u, v, 0) agree.
+  auto wall = [&](const std::string& uvs, const std::string& mapping) {
+    return sceneOf(R"XML(<light type="point" position="0.3 0.8 3"/>
+      <mesh positions="0 0 0  1 0 0  1 1 0  0 1 0" uvs=")XML" +
+                   uvs +
+                   R"XML(" indices="0 1 2  0 2 3"><material diffuse="1">
+      <normal type="bumps" depth="1" transform="scale(0.1)" )XML" +
+                   mapping + "/></material></mesh>");
+  };
+  auto object = wall("0 0  1 0  1 1  0 1", "");
+  auto uv = wall("0 0  1 0  1 1  0 1", R"X(mapping="uv")X");
+  auto shifted = wall("0.37 0  1.37 0  1.37 1  0.37 1", R"X(mapping="uv")X");
+  World a(*object), b(*uv), c(*shifted);
+  int differ = 0;
+  for (double x : {0.21, 0.48, 0.77})
+    for (double y : {0.13, 0.52, 0.91}) {
+      const Ray r(Vec3(x, y, 2), Vec3(0, 0, -1));
+      CHECK(traceOne(a, r) == traceOne(b, r));
+      if (std::abs(traceOne(a, r).r - traceOne(c, r).r) > 1e-3f) ++differ;
+    }
+  CHECK(differ >= 6);
+}
+
+TEST_CASE("uv mapping: a material map picks its entries at (u, v, 0)", "[render][uv-mapping]") {
+  // A checker of uv cells of 0.25, moved off the plane z = 0 of its cells' boundaries.
+  auto scene = sceneOf(R"XML(<mesh positions="0 0 0  4 0 0  4 0 -4  0 0 -4"
+      uvs="0 0  1 0  1 1  0 1" indices="0 1 2  0 2 3"><material><material-map>
+      <checker scale="0.25" mapping="uv" transform="translate(0 0 -0.1)"/>
+      <entry at="0"><material ambient="1 0 0"/></entry>
+      <entry at="1"><material ambient="0 0 1"/></entry></material-map></material></mesh>)XML");
+  World world(*scene);
+  // u = 0.375, v = 0.575: the cell (1, 2, 0) is odd; u = 0.125: the cell (0, 2, 0) is even.
+  CHECK(traceOne(world, Ray(Vec3(1.5, 2, -2.3), Vec3(0, -1, 0))) == Color(0, 0, 1));
+  CHECK(traceOne(world, Ray(Vec3(0.5, 2, -2.3), Vec3(0, -1, 0))) == Color(1, 0, 0));
+}
