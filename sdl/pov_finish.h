@@ -41,7 +41,6 @@ struct PovPigment {
   // empty: the pattern's default map.
   std::vector<PovColorMapEntry> map;
   SourceLoc mapLoc;
-  bool warped = false;  // its turbulence is a `warp { turbulence }`
 
   bool patterned() const { return !std::holds_alternative<std::monostate>(pattern); }
 };
@@ -67,7 +66,6 @@ struct PovNormal {
   NormalSpec spec;
   std::optional<BumpMapSpec> bump;  // `bump_map { }` instead of a pattern
   PovTransform transform;
-  bool warped = false;   // its turbulence is a `warp { turbulence }`
   bool average = false;  // `average` was read: its normal_map fills spec.average
   // A pattern was given (a #default normal may hold only a bump_size; POV-Ray then wants
   // one in every normal that starts from it).
