@@ -10,6 +10,7 @@
 #include "normal_map_parser.h"
 #include "povray_names.h"
 #include "texture_map_parser.h"
+#include "warp_parser.h"
 
 #include <cmath>
 
@@ -57,6 +58,17 @@ void noChildren(ElementReader& r) {
 
 }  // namespace
 
+void noChildrenButWarps(ElementReader& r, ImageProjection projection) {
+  r.forEachChild([&](pugi::xml_node n) {
+    if (isWarpElement(n) && projection != ImageProjection::uv) return;  // the placement's
+    ElementReader c(r.ctx(), r.file(), n);
+    if (isWarpElement(n))
+      c.error("a <warp> belongs to a projected " + r.tag() +
+              " only: give a 'projection' (at the shape's (u,v) the shape places it)");
+    else c.error(r.tag() + " takes no child elements, got <" + std::string(n.name()) + ">");
+  });
+}
+
 const std::vector<std::string_view>& placementAttributes() { return kPlacementAttributes; }
 
 std::optional<Vec3> parseTurbulenceStrength(ElementReader& r) {
@@ -89,6 +101,7 @@ PatternPlacement parsePlacement(ElementReader& r) {
   static const std::vector<std::pair<std::string_view, bool>> kMappings{{"object", false},
                                                                         {"uv", true}};
   p.uv = r.choice("mapping", false, kMappings);
+  parseWarps(r, p.warps);
   return p;
 }
 
@@ -338,6 +351,7 @@ Texture parsePatternTexture(ElementReader& r) {
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader c(r.ctx(), r.file(), n);
     const std::string_view name = n.name();
+    if (isWarpElement(n)) return;  // read with the placement
     if (name == "pigment") {
       parsePigmentChild(r, c, t.pattern, pigmentLoc);
       return;
@@ -377,6 +391,7 @@ std::vector<TextureMapEntry> parseBlockPigments(ElementReader& r, size_t count,
   std::optional<SourceLoc> listLoc;
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader c(r.ctx(), r.file(), n);
+    if (isWarpElement(n)) return;  // read with the placement
     if (std::string_view(n.name()) != "pigment-list") {
       c.error(r.tag() + " may hold one <pigment-list>, not <" + std::string(n.name()) + ">");
       return;
@@ -473,6 +488,7 @@ NormalSpec parseBlockNormal(ElementReader& r, NormalBlock block) {
   const size_t count = block == NormalBlock::hexagon ? 3 : 2;
   bool listed = false;
   r.forEachChild([&](pugi::xml_node child) {
+    if (isWarpElement(child)) return;  // read with the placement
     ElementReader c(r.ctx(), r.file(), child);
     if (std::string_view(child.name()) != "normal-list")
       c.error("a " + r.verbatim("type") + " <normal> holds one <normal-list>, not <" +
@@ -498,7 +514,8 @@ void parseNormalChildren(ElementReader& r, NormalSpec& n) {
   r.forEachChild([&](pugi::xml_node child) {
     ElementReader c(r.ctx(), r.file(), child);
     const std::string_view name = child.name();
-    if (name == "pigment") {  // pigment-pattern's pigment
+    if (isWarpElement(child)) return;  // read with the placement
+    if (name == "pigment") {           // pigment-pattern's pigment
       parsePigmentChild(r, c, n.pattern, pigmentLoc);
       return;
     }
@@ -633,7 +650,7 @@ BumpMapSpec parseBumpMap(ElementReader& r) {
   }
   b.depth = r.number("depth", b.depth);
   b.keepFacingAway = r.boolean("keep-facing-away", b.keepFacingAway);
-  noChildren(r);
+  noChildrenButWarps(r, b.projection);
   return b;
 }
 

@@ -33,6 +33,65 @@ void addPlacement(const PatternPlacement& p, Attributes& a) {
   if (p.uv) a.emplace_back("mapping", "uv");
 }
 
+// A <warp> per step between the transform and the turbulence, in the order written.
+void writeWarps(const PatternPlacement& p, XmlOut& out) {
+  for (const PatternWarp& w : p.warps) {
+    Attributes a;
+    std::visit(
+        [&](const auto& v) {
+          using W = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<W, TransformWarp>) {
+            a = {{"type", "transform"},
+                 {"transform", xmlMatrix(glm::inverse(v.patternFromPrevious))}};
+          } else if constexpr (std::is_same_v<W, TurbulenceWarp>) {
+            a = {{"type", "turbulence"},
+                 {"turbulence", xmlVector(v.strength)},
+                 {"octaves", std::to_string(v.octaves)},
+                 {"omega", xmlNumber(v.omega)},
+                 {"lambda", xmlNumber(v.lambda)}};
+          } else if constexpr (std::is_same_v<W, RepeatWarp>) {
+            Vec3 d(0.0);
+            d[v.axis] = v.width;
+            a = {{"type", "repeat"}, {"direction", xmlVector(d)}};
+            if (v.offset != Vec3(0.0)) a.emplace_back("offset", xmlVector(v.offset));
+            if (v.flip[0] || v.flip[1] || v.flip[2])
+              a.emplace_back("flip", xmlVector(Vec3(v.flip[0], v.flip[1], v.flip[2])));
+          } else if constexpr (std::is_same_v<W, BlackHoleWarp>) {
+            a = {{"type", "black-hole"},
+                 {"center", xmlVector(v.center)},
+                 {"radius", xmlNumber(v.radius)},
+                 {"strength", xmlNumber(v.strength)},
+                 {"falloff", xmlNumber(v.falloff)}};
+            if (v.inverse) a.emplace_back("inverse", "true");
+            if (v.repeat != Vec3(0.0)) a.emplace_back("repeat", xmlVector(v.repeat));
+            if (v.turbulence != Vec3(0.0)) a.emplace_back("turbulence", xmlVector(v.turbulence));
+          } else {
+            a = {{"type", std::string(mappingWarpName(v.kind))}};
+            if (v.kind == MappingWarpKind::planar) {
+              a.emplace_back("normal", xmlVector(v.orientation));
+              a.emplace_back("distance", xmlNumber(v.distance));
+            } else if (v.kind != MappingWarpKind::cubic) {
+              a.emplace_back("orientation", xmlVector(v.orientation));
+              a.emplace_back("dist-exp", xmlNumber(v.distExp));
+            }
+            if (v.kind == MappingWarpKind::toroidal)
+              a.emplace_back("major-radius", xmlNumber(v.majorRadius));
+          }
+        },
+        w);
+    out.open("warp", a, true);
+  }
+}
+
+// out.open of a pattern element followed by its <warp>s; `empty`: nothing else follows, and
+// the element is closed here when it has warps.
+void openPlaced(XmlOut& out, const std::string& element, const Attributes& a, bool empty,
+                const PatternPlacement& p) {
+  out.open(element, a, empty && p.warps.empty());
+  writeWarps(p, out);
+  if (empty && !p.warps.empty()) out.close(element);
+}
+
 // The attributes <image> and <bump-map> share: a projection and its placement, once,
 // interpolate (those that differ from the defaults).
 template <class Spec>
@@ -186,10 +245,10 @@ void writePigmentFunctions(const PatternSpec& s, const SourceLoc& loc, XmlOut& o
 
 // A block pattern's element: empty with its colours, or with a <pigment-list> child and
 // without the colour attributes (colorN, filterN, transmitN).
-void writeBlock(const std::string& element, Attributes a,
+void writeBlock(const std::string& element, Attributes a, const PatternPlacement& placement,
                 const std::vector<TextureMapEntry>& pigments, const SourceLoc& loc, XmlOut& out,
                 const std::string& folder) {
-  if (pigments.empty()) return out.open(element, a, true);
+  if (pigments.empty()) return openPlaced(out, element, a, true, placement);
   a.erase(std::remove_if(a.begin(), a.end(),
                          [](const auto& kv) {
                            const std::string& k = kv.first;
@@ -197,7 +256,7 @@ void writeBlock(const std::string& element, Attributes a,
                                   k.rfind("transmit", 0) == 0;
                          }),
           a.end());
-  out.open(element, a, false);
+  openPlaced(out, element, a, false, placement);
   writeEntries("pigment-list", pigments, "", loc, out, folder);
   out.close(element);
 }
@@ -245,7 +304,7 @@ void writeBlockNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
   if (n.map.empty()) a.emplace_back("depth", xmlNumber(n.depth));
   if (n.accuracy != NormalSpec{}.accuracy) a.emplace_back("accuracy", xmlNumber(n.accuracy));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
-  out.open("normal", a, n.map.empty());
+  openPlaced(out, "normal", a, n.map.empty(), n.pattern.placement);
   if (n.map.empty()) return;
   writeNormalEntries("normal-list", n, false, loc, out, folder);
   out.close("normal");
@@ -260,7 +319,7 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
     Attributes a{{"type", "average"}};
     addPlacement(n.pattern.placement, a);
     if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
-    out.open("normal", a, false);
+    openPlaced(out, "normal", a, false, n.pattern.placement);
     for (const WeightedNormal& e : n.average) {
       out.open("entry", {{"weight", xmlNumber(e.weight)}}, false);
       writeNormal(e.normal, loc, out, folder);
@@ -277,7 +336,7 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
   const bool children =
       !n.map.empty() || !n.slopeMap.empty() || n.pattern.type == PatternType::pigment;
-  out.open("normal", a, !children);
+  openPlaced(out, "normal", a, !children, n.pattern.placement);
   if (!children) return;
   if (n.pattern.type == PatternType::pigment) writePatternPigment(n.pattern, loc, out, folder);
   if (!n.map.empty()) writeNormalEntries("normal-map", n, true, loc, out, folder);
@@ -309,12 +368,13 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
           addFilterTransmit(t.ft1, "1", a);
           addFilterTransmit(t.ft2, "2", a);
           addPlacement(t.placement, a);
-          writeBlock(std::string(T::kind.element), a, t.pigments, loc, out, folder);
+          writeBlock(std::string(T::kind.element), a, t.placement, t.pigments, loc, out, folder);
         } else if constexpr (std::is_same_v<T, ImageTexture>) {
-          out.open(std::string(T::kind.element), imageAttributes(t, folder), true);
+          openPlaced(out, std::string(T::kind.element), imageAttributes(t, folder), true,
+                     t.placement);
         } else if constexpr (std::is_same_v<T, PatternTexture>) {
           if (t.pigments.empty()) return writePatternTexture(t, loc, out, folder);
-          out.open("pattern", patternAttributes(t.pattern, loc), false);
+          openPlaced(out, "pattern", patternAttributes(t.pattern, loc), false, t.pattern.placement);
           writePatternPigment(t.pattern, loc, out, folder);
           writePigmentFunctions(t.pattern, loc, out);
           writeEntries("pigment-map", t.pigments, "at", loc, out, folder);
@@ -325,7 +385,7 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
                        {"color3", xmlColor(t.spec.colors[2])}};
           for (int i = 0; i < 3; ++i) addFilterTransmit(t.spec.ft[i], std::to_string(i + 1), a);
           addPlacement(t.placement, a);
-          writeBlock(std::string(T::kind.element), a, t.pigments, loc, out, folder);
+          writeBlock(std::string(T::kind.element), a, t.placement, t.pigments, loc, out, folder);
         } else if constexpr (std::is_same_v<T, BrickTexture>) {
           Attributes a{{"color1", xmlColor(t.spec.color1)},
                        {"color2", xmlColor(t.spec.color2)},
@@ -334,11 +394,11 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
           addFilterTransmit(t.spec.ft1, "1", a);
           addFilterTransmit(t.spec.ft2, "2", a);
           addPlacement(t.placement, a);
-          writeBlock(std::string(T::kind.element), a, t.pigments, loc, out, folder);
+          writeBlock(std::string(T::kind.element), a, t.placement, t.pigments, loc, out, folder);
         } else if constexpr (std::is_same_v<T, AverageTexture>) {
           Attributes a;
           addPlacement(t.placement, a);
-          out.open(std::string(T::kind.element), a, false);
+          openPlaced(out, std::string(T::kind.element), a, false, t.placement);
           writeEntries("", t.entries, "weight", loc, out, folder);
           out.close(std::string(T::kind.element));
         } else {
@@ -364,8 +424,9 @@ void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& 
   const Attributes a = patternAttributes(t.pattern, loc);
   const bool pigment = t.pattern.type == PatternType::pigment;
   const bool pigments = t.pattern.function && !t.pattern.function->pigments.empty();
-  if (t.map.entries.empty() && !pigment && !pigments) return out.open("pattern", a, true);
-  out.open("pattern", a, false);
+  if (t.map.entries.empty() && !pigment && !pigments)
+    return openPlaced(out, "pattern", a, true, t.pattern.placement);
+  openPlaced(out, "pattern", a, false, t.pattern.placement);
   writePatternPigment(t.pattern, loc, out, folder);
   writePigmentFunctions(t.pattern, loc, out);
   if (t.map.entries.empty()) return out.close("pattern");
@@ -431,7 +492,7 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
                  {"depth", xmlNumber(m.bumpMap->depth)}};
     addImageReading(*m.bumpMap, a);
     if (m.bumpMap->keepFacingAway) a.emplace_back("keep-facing-away", "true");
-    out.open("bump-map", a, true);
+    openPlaced(out, "bump-map", a, true, m.bumpMap->placement);
   }
   // The layers over it, bottom first, each with its own surface terms and children.
   for (const Material& layer : m.layers) {

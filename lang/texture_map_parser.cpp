@@ -81,6 +81,9 @@ template <class Read>
 void forEachEntry(ElementReader& r, Read read) {
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader e(r.ctx(), r.file(), n);
+    // An average's <warp>s belong to its placement (lang/warp_parser.h).
+    if (std::string_view(n.name()) == "warp" && (r.name() == "average" || r.name() == "normal"))
+      return;
     if (std::string_view(n.name()) != "entry") {
       e.error(r.tag() + " holds <entry> elements, not <" + std::string(n.name()) + ">");
       return;

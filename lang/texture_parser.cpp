@@ -65,10 +65,7 @@ Texture readTexture(ElementReader& t, const ImageTexture*) {
     }
   }
   readImageProjection(t, img);
-  t.forEachChild([&](pugi::xml_node n) {
-    ElementReader(t.ctx(), t.file(), n)
-        .error("<image> takes no child elements, got <" + std::string(n.name()) + ">");
-  });
+  noChildrenButWarps(t, img.projection);
   return img;
 }
 

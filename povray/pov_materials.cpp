@@ -447,6 +447,13 @@ void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, cons
   PovIssues& report = issues ? *issues : issues_;
   const PatternPlacement* place = mapPlacement(m.mapPattern);
   const Mat4 mapFromPattern = place ? glm::inverse(place->patternFromObject) : Mat4(1.0);
+  // POV-Ray hands a texture_map's entries the map's warped point; Lucent's entries see the
+  // object point, which the map's transform alone carries into the map's space.
+  if (place && !place->warps.empty())
+    report.warning(m.loc,
+                   "a material map whose pattern has warps: POV-Ray evaluates the entries at "
+                   "the warped point, Lucent at the object point (the entries' patterns lie "
+                   "differently)");
   // The entries as POV-Ray sees them, and the layered ones declared first: a texture_map
   // entry is a texture's body, which cannot hold layers unless it names a declared texture.
   std::vector<Material> entries;

@@ -73,13 +73,62 @@ void writeUvMapping(const PatternPlacement& p, PovWriter& out) {
   if (p.uv) out.line("uv_mapping");
 }
 
+namespace {
+
+// `warp { ... }` of one step that is not a transform.
+std::string povWarp(const PatternWarp& w) {
+  return std::visit(
+      [](const auto& v) -> std::string {
+        using W = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<W, TransformWarp>) {
+          return povMatrix(glm::inverse(v.patternFromPrevious));
+        } else if constexpr (std::is_same_v<W, TurbulenceWarp>) {
+          return "warp { turbulence " + povVector(v.strength) + " octaves " +
+                 std::to_string(v.octaves) + " omega " + povNumber(v.omega) + " lambda " +
+                 povNumber(v.lambda) + " }";
+        } else if constexpr (std::is_same_v<W, RepeatWarp>) {
+          Vec3 d(0.0);
+          d[v.axis] = v.width;
+          return "warp { repeat " + povVector(d) + " offset " + povVector(v.offset) + " flip " +
+                 povVector(Vec3(v.flip[0], v.flip[1], v.flip[2])) + " }";
+        } else if constexpr (std::is_same_v<W, BlackHoleWarp>) {
+          std::string s = "warp { black_hole " + povVector(v.center) + ", " + povNumber(v.radius) +
+                          " strength " + povNumber(v.strength) + " falloff " +
+                          povNumber(v.falloff) + (v.inverse ? " inverse" : "");
+          if (v.repeat != Vec3(0.0)) s += " repeat " + povVector(v.repeat);
+          if (v.turbulence != Vec3(0.0)) s += " turbulence " + povVector(v.turbulence);
+          return s + " }";
+        } else {
+          const std::string name(mappingWarpName(v.kind));
+          if (v.kind == MappingWarpKind::planar)
+            return "warp { planar " + povVector(v.orientation) + ", " + povNumber(v.distance) +
+                   " }";
+          if (v.kind == MappingWarpKind::cubic) return "warp { cubic }";
+          std::string s = "warp { " + name + " orientation " + povVector(v.orientation) +
+                          " dist_exp " + povNumber(v.distExp);
+          if (v.kind == MappingWarpKind::toroidal) s += " major_radius " + povNumber(v.majorRadius);
+          return s + " }";
+        }
+      },
+      w);
+}
+
+// POV-Ray applies the transforms and warps written last first, so the steps go in their
+// order and the placement's transform after them; the classic turbulence is always last.
+void writeWarpSteps(const PatternPlacement& p, PovWriter& out) {
+  for (const PatternWarp& w : p.warps) out.line(povWarp(w));
+  if (p.patternFromObject != Mat4(1.0)) out.line(povMatrix(glm::inverse(p.patternFromObject)));
+}
+
+}  // namespace
+
 void writePlacement(const PatternPlacement& p, PovWriter& out) {
   if (p.turbulence != Vec3(0.0)) {
     out.line("turbulence " + povVector(p.turbulence));
     out.line("octaves " + std::to_string(p.octaves) + " omega " + povNumber(p.omega) + " lambda " +
              povNumber(p.lambda));
   }
-  if (p.patternFromObject != Mat4(1.0)) out.line(povMatrix(glm::inverse(p.patternFromObject)));
+  writeWarpSteps(p, out);
 }
 
 void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
@@ -196,7 +245,7 @@ void writeCheckerBody(const CheckerTexture& checker, const Vec3& scale, double f
     out.line("warp { turbulence " + povVector(p.turbulence) + " octaves " +
              std::to_string(p.octaves) + " omega " + povNumber(p.omega) + " lambda " +
              povNumber(p.lambda) + " }");
-    if (p.patternFromObject != Mat4(1.0)) out.line(povMatrix(glm::inverse(p.patternFromObject)));
+    writeWarpSteps(p, out);
   } else {
     if (checker.scale != 1.0) out.line("scale " + povNumber(checker.scale));
     writePlacement(p, out);

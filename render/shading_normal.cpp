@@ -5,6 +5,7 @@
 #include "patterns/normal_perturbation.h"
 #include "patterns/pattern_point.h"
 #include "uv_mapping.h"
+#include "patterns/warp.h"
 
 namespace lucent {
 
@@ -34,7 +35,7 @@ Vec3 projectedBump(const ImageMap& map, const BumpMapSpec& bump, const Transform
       projectToImage(bump.projection, warpPoint(bump.placement, surface.pObject), map.width(),
                      map.height(), bump.once);
   if (!xy) return n;
-  const Mat3 place(bump.placement.patternFromObject);
+  const Mat3 place(linearPatternFromObject(bump.placement));
   const Vec3 objectNormal =
       glm::normalize(glm::transpose(Mat3(worldFromObject.worldFromObject())) * n);
   const Vec3 patternNormal = glm::normalize(glm::transpose(glm::inverse(place)) * objectNormal);

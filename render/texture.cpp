@@ -4,6 +4,7 @@
 #include "patterns/color_map.h"
 #include "patterns/pattern_point.h"
 #include "patterns/pattern_value.h"
+#include "patterns/warp.h"
 
 #include "image_map_cache.h"
 #include "image_projection.h"
@@ -149,15 +150,21 @@ Vec3 errorThrough(const Mat4& m, const Vec3& err) {
   return out;
 }
 
+// The error bound carried into a placement's pattern space (through its transforms; the
+// other warps are taken as leaving it as it is).
+Vec3 placedError(const PatternPlacement& place, const Vec3& err) {
+  if (place.warps.empty()) return errorThrough(place.patternFromObject, err);
+  return errorThrough(linearPatternFromObject(place), err);
+}
+
 // The checker's cell (0: color1's) at an object point with its error bound.
 int checkerCell(const CheckerTexture& checker, const Vec3& pObject, const Vec3& err) {
   const PatternPlacement& place = checker.placement;
-  if (place.patternFromObject == Mat4(1.0) && place.turbulence == Vec3(0.0))
+  if (place.patternFromObject == Mat4(1.0) && place.turbulence == Vec3(0.0) && place.warps.empty())
     return checkerIndex(checker, pObject, err);
   // Placed: the point and its error bound carried into pattern space (turbulence moves
   // the point by a smooth displacement, which leaves the bound as it is).
-  return checkerIndex(checker, warpPoint(place, pObject),
-                      errorThrough(place.patternFromObject, err));
+  return checkerIndex(checker, warpPoint(place, pObject), placedError(place, err));
 }
 
 // The colour, filter and transmit of each kind of texture at an object point. A map or a
@@ -174,7 +181,7 @@ struct PigmentAt {
   }
   PigmentColor inside(const std::vector<TextureMapEntry>& entries, size_t i,
                       const PatternPlacement& place) const {
-    return entry(entries[i], warpPoint(place, p), errorThrough(place.patternFromObject, err));
+    return entry(entries[i], warpPoint(place, p), placedError(place, err));
   }
 
   PigmentColor operator()(std::monostate) const { return {}; }
@@ -188,7 +195,7 @@ struct PigmentAt {
       // entries' point too.
       const PatternPlacement& place = checker.placement;
       return entry(checker.pigments[cell], warpPoint(place, p) / checker.scale,
-                   errorThrough(place.patternFromObject, err) / checker.scale);
+                   placedError(place, err) / checker.scale);
     }
     return cell == 0 ? PigmentColor{checker.color1, checker.ft1}
                      : PigmentColor{checker.color2, checker.ft2};
@@ -199,7 +206,7 @@ struct PigmentAt {
     // The pigment map: the entries around the value, each at the pattern's point.
     const PatternSpec& spec = pattern.pattern;
     const Vec3 q = warpPoint(spec.placement, p, turbulenceDisplaces(spec.type));
-    const Vec3 qErr = errorThrough(spec.placement.patternFromObject, err);
+    const Vec3 qErr = placedError(spec.placement, err);
     const std::vector<TextureMapEntry>& e = pattern.pigments;
     const MapSpan s = mapSpanAt(e.data(), e.size(), patternValueAt(spec, q));
     if (s.a == s.b) return entry(e[s.a], q, qErr);
@@ -219,7 +226,7 @@ struct PigmentAt {
   PigmentColor operator()(const AverageTexture& average) const {
     // POV-Ray sums weight·colour in single precision and divides by the weights' sum.
     const Vec3 q = warpPoint(average.placement, p);
-    const Vec3 qErr = errorThrough(average.placement.patternFromObject, err);
+    const Vec3 qErr = placedError(average.placement, err);
     PigmentColor sum{Color(0.0f), {}};
     float total = 0.0f;
     for (const TextureMapEntry& e : average.entries) {

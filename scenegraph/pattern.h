@@ -4,6 +4,7 @@
 
 #include "primitives/math.h"
 #include "primitives/scalar_field.h"
+#include "scenegraph/pattern_warp.h"
 
 #include <iterator>
 #include <memory>
@@ -147,10 +148,14 @@ constexpr bool patternRowsInOrder() {
 static_assert(patternRowsInOrder(), "kPatternTypes: one row per PatternType, in its order");
 
 // Where a pattern sits on its object and how turbulence displaces it. The object point is
-// carried into pattern space first; turbulence then works in pattern space, so it scales
-// with the pattern (POV-Ray's warp list: the transform, then the turbulence warp).
+// carried into pattern space first, then through the warps (last written first), then
+// turbulence displaces it; so turbulence scales with the pattern (POV-Ray's warp list: the
+// transforms and warps in reverse written order, its classic turbulence last).
 struct PatternPlacement {
   Mat4 patternFromObject{1.0};
+  // The warps as written (each changes the pattern built so far, as POV-Ray's); empty for
+  // a pattern with only a transform, which then costs nothing more.
+  std::vector<PatternWarp> warps{};
   Vec3 turbulence{0.0};  // per-axis strength; zero means none
   int octaves = 6;       // POV-Ray clamps to 1..10; so does the evaluation
   double omega = 0.5;    // amplitude factor per octave

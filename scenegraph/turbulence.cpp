@@ -10,15 +10,14 @@ namespace {
 
 // POV-Ray's parser keeps octaves in 1..10 ("avoid DOMAIN errors") and stores omega and
 // lambda in single precision.
-int octaves(const PatternPlacement& t) { return std::clamp(t.octaves, 1, 10); }
-double omega(const PatternPlacement& t) { return static_cast<float>(t.omega); }
-double lambda(const PatternPlacement& t) { return static_cast<float>(t.lambda); }
+int octaves(int n) { return std::clamp(n, 1, 10); }
+double single(double v) { return static_cast<float>(v); }
 
 }  // namespace
 
 double turbulence(const Vec3& p, const PatternPlacement& placement, int generator) {
-  const int n = octaves(placement);
-  const double lam = lambda(placement), om = omega(placement);
+  const int n = octaves(placement.octaves);
+  const double lam = single(placement.lambda), om = single(placement.omega);
   double value;
   if (generator > 1) value = std::min(std::max(2.0 * noise(p, generator) - 0.5, 0.0), 1.0);
   else value = noise(p, generator);
@@ -36,8 +35,12 @@ double turbulence(const Vec3& p, const PatternPlacement& placement, int generato
 }
 
 Vec3 dturbulence(const Vec3& p, const PatternPlacement& placement) {
-  const int n = octaves(placement);
-  const double lam = lambda(placement), om = omega(placement);
+  return dturbulence(p, placement.octaves, placement.omega, placement.lambda);
+}
+
+Vec3 dturbulence(const Vec3& p, int octaveCount, double omegaValue, double lambdaValue) {
+  const int n = octaves(octaveCount);
+  const double lam = single(lambdaValue), om = single(omegaValue);
   Vec3 result = dnoise(p);
   double l = lam, o = om;
   for (int i = 2; i <= n; ++i) {

@@ -13,5 +13,7 @@ double turbulence(const Vec3& p, const PatternPlacement& placement, int generato
 // The vector sum that displaces the pattern point (and bends wood's rings). It does not
 // depend on the noise generator.
 Vec3 dturbulence(const Vec3& p, const PatternPlacement& placement);
+// The same with the octaves, omega and lambda given (a turbulence warp's).
+Vec3 dturbulence(const Vec3& p, int octaves, double omega, double lambda);
 
 }  // namespace lucent

@@ -44,7 +44,6 @@ struct PovPigment {
   // empty: the pattern's default map.
   std::vector<PovColorMapEntry> map;
   SourceLoc mapLoc;
-  bool warped = false;  // its turbulence is a `warp { turbulence }`
   // `uv_mapping`: the rest of its block is a pigment read at the shape's (u, v, 0), placed by
   // its own transforms only (uvTransform: those written in that block); the transforms
   // that reach it later are POV-Ray's outer pigment's, which its uv_mapping ignores.
@@ -75,7 +74,6 @@ struct PovNormal {
   NormalSpec spec;
   std::optional<BumpMapSpec> bump;  // `bump_map { }` instead of a pattern
   PovTransform transform;
-  bool warped = false;   // its turbulence is a `warp { turbulence }`
   bool average = false;  // `average` was read: its normal_map fills spec.average
   // A pattern was given (a #default normal may hold only a bump_size; POV-Ray then wants
   // one in every normal that starts from it).

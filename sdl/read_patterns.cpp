@@ -535,66 +535,6 @@ void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& in, bool nes
   }
 }
 
-// `warp { turbulence V [octaves N] [omega F] [lambda F] }`. POV-Ray's turbulence warp
-// displaces the point as the classic turbulence does; its warp list applies the transforms
-// written after the warp first, then the warp. That is Lucent's placement (every
-// transform, then the turbulence) when no transform precedes the warp, the pattern has
-// no other turbulence, and it lets turbulence displace its point (wood's and marble's
-// classic turbulence works inside them). Other warps are refused, their block skipped.
-bool SceneReader::readWarp(const Token& t, TokenStream& in, PatternPlacement* placement,
-                           const PatternSpec* spec, const PovTransform& before, bool& warped) {
-  if (!isWord(t, "warp")) {
-    // The classic turbulence after a turbulence warp would apply after it: two of them.
-    if (warped && (isWord(t, "turbulence") || isWord(t, "octaves") || isWord(t, "omega") ||
-                   isWord(t, "lambda")))
-      keepError(in, t.loc(),
-                "'" + std::string(t.text()) +
-                    "' with a turbulence warp is not supported by Lucent (a pattern has one "
-                    "turbulence)");
-    return false;
-  }
-  in.expect("{");
-  const Token kind = in.next();
-  if (!isWord(kind, "turbulence")) {
-    keepError(in, kind.loc(),
-              "'warp { " + std::string(kind.text()) +
-                  " }' is not supported by Lucent (warps; the nearest Lucent feature is a "
-                  "pattern's turbulence)");
-    skipToClose(in, 1);
-    return true;
-  }
-  PatternPlacement warp;
-  warp.turbulence = toVec3(in.parseVector());
-  for (;;) {
-    const Token k = in.next();
-    if (k.is("}")) break;
-    if (isWord(k, "octaves")) warp.octaves = std::clamp(static_cast<int>(in.parseFloat()), 1, 10);
-    else if (isWord(k, "omega")) warp.omega = in.parseFloat();
-    else if (isWord(k, "lambda")) warp.lambda = in.parseFloat();
-    else in.error(k, "unexpected " + k.describe() + " in a turbulence warp");
-  }
-  std::string why;
-  if (!placement) why = "on a solid colour";
-  else if (!before.isIdentity()) why = "after a transform of the pattern";
-  else if (warped || placement->turbulence != Vec3(0.0)) why = "with another turbulence";
-  else if (spec && patternTypeInfo(spec->type).turbulenceInside)
-    why = std::string("on ") + std::string(patternTypeInfo(spec->type).pov) +
-          " (its turbulence works inside the pattern in Lucent)";
-  if (!why.empty()) {
-    keepError(in, t.loc(),
-              "'warp { turbulence }' " + why +
-                  " is not supported by Lucent (a pattern's turbulence applies after all its "
-                  "transforms)");
-    return true;
-  }
-  placement->turbulence = warp.turbulence;
-  placement->octaves = warp.octaves;
-  placement->omega = warp.omega;
-  placement->lambda = warp.lambda;
-  warped = true;
-  return true;
-}
-
 bool SceneReader::isLackingPattern(const Token& t) {
   return t.kind == TokenKind::Keyword &&
          std::find(std::begin(kPatternsLucentLacks), std::end(kPatternsLucentLacks), t.text()) !=

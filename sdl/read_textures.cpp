@@ -56,7 +56,7 @@ PovPigment SceneReader::readPigmentBody(TokenStream& in, const PovPigment& start
       p.pattern = std::monostate{};
       p.map.clear();
     } else if (!readTransform(t, in, p.transform) &&
-               !readWarp(t, in, placementOf(p.pattern), specOf(p.pattern), p.transform, p.warped) &&
+               !readWarp(t, in, placementOf(p.pattern), p.transform) &&
                !readPigmentMapKeyword(t, in, p) && !readPatternKeyword(t, in, p)) {
       if (inEntry) skipEntryRest(t, in);
       else if (!refusePattern(t, in)) unreadInBlock(t, in);
@@ -127,8 +127,7 @@ PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, b
       n.spec.accuracy = accuracy;
     } else if (!readBlockNormal(t, in, n) && !readNormalMapKeyword(t, in, n) &&
                !readTransform(t, in, n.transform) &&
-               !readWarp(t, in, &n.spec.pattern.placement, &n.spec.pattern, n.transform,
-                         n.warped) &&
+               !readWarp(t, in, &n.spec.pattern.placement, n.transform) &&
                !readPatternModifier(t, in, &n.spec.pattern, &n.spec.pattern.placement)) {
       if (inEntry) skipEntryRest(t, in);
       else if (!refusePattern(t, in)) unreadInBlock(t, in);
@@ -246,8 +245,7 @@ PovTexture SceneReader::readTextureBody(TokenStream& in, const PovTexture& start
     PovTransform m;    // a transform moves the pigment and normal written before it
     // A map's pattern takes the modifiers written after it.
     if (tex.mapped() &&
-        (readWarp(t, in, placementOf(tex.mapPattern.pattern), specOf(tex.mapPattern.pattern),
-                  tex.mapPattern.transform, tex.mapPattern.warped) ||
+        (readWarp(t, in, placementOf(tex.mapPattern.pattern), tex.mapPattern.transform) ||
          readPatternModifier(t, in, specOf(tex.mapPattern.pattern),
                              placementOf(tex.mapPattern.pattern))))
       continue;
@@ -396,8 +394,7 @@ bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& te
         if (tex.mapEntries.empty()) in.error(k, "a texture_map needs at least one entry");
         break;
       }
-      if (readWarp(k, in, placementOf(pattern.pattern), specOf(pattern.pattern), pattern.transform,
-                   pattern.warped) ||
+      if (readWarp(k, in, placementOf(pattern.pattern), pattern.transform) ||
           readPatternModifier(k, in, specOf(pattern.pattern), placementOf(pattern.pattern)))
         continue;
       PovTransform m;

@@ -381,6 +381,10 @@ Material SceneReader::importTexture(const PovTexture& texture, const PovInterior
            "a texture_map's turbulence: POV-Ray evaluates its entries at the turbulent point, "
            "Lucent at the point the map's transform gives (the entries' patterns lie "
            "differently)");
+    if (place && !place->warps.empty())
+      warn(in, at,
+           "a texture_map's warps: POV-Ray evaluates its entries at the warped point, Lucent "
+           "at the point the map's transform gives (the entries' patterns lie differently)");
     for (size_t k = 0; k < texture.mapEntries.size(); ++k) {
       const PovTextureMapEntry& e = texture.mapEntries[k];
       if (k > 0 && e.at < texture.mapEntries[k - 1].at)
@@ -427,6 +431,7 @@ Material SceneReader::importLayer(const PovTexture& layer, const PovInterior& in
     m.bumpMap->keepFacingAway = true;  // POV-Ray keeps a bent normal that faces away
     m.bumpMap->placement.patternFromObject =
         glm::inverse(layer.normal->transform.povMatrix()) * objectToTexture;
+    m.bumpMap->placement.warps = layer.normal->spec.pattern.placement.warps;
   } else if (layer.normal && !layer.normal->patterned) {
     keepError(in, at, "a normal without a pattern (POV-Ray: 'No normal type given')");
   } else if (layer.normal) {

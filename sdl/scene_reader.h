@@ -395,8 +395,10 @@ class SceneReader : public ItemReader {
   bool readOldNormal(const Token& t, TokenStream& in, PovTexture& tex);
   bool isTexturePattern(const Token& t) const;
   static bool isLackingPattern(const Token& t);
+  // `warp { ... }`: a step of the placement after the transforms written before it
+  // (sdl/read_warps.cpp); false when t is not `warp`.
   bool readWarp(const Token& t, TokenStream& in, PatternPlacement* placement,
-                const PatternSpec* spec, const PovTransform& before, bool& warped);
+                PovTransform& transform);
 
   PovTexture defaultTexture() const {
     return {defaults_.pigment, defaults_.normal, defaults_.finish, {}, {}, {}, {}};

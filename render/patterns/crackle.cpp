@@ -71,6 +71,8 @@ Vec3 cellPoint(int x, int y, int z) {
 
 }  // namespace
 
+double patternRandom(int index) { return cellRandoms().value[index]; }
+
 double crackleValue(const Vec3& p, const CrackleParams& crackle, int generator) {
   const double metric = crackle.metric;
   const double offset = crackle.offset;

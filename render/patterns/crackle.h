@@ -17,4 +17,8 @@ double crackleValue(const Vec3& p, const CrackleParams& crackle, int generator);
 // axis), from the table crackle seeds its points with, indexed by the cube's hash.
 double cellsValue(const Vec3& p);
 
+// POV-Ray's random table (PatternRands, and WarpRands, drawn alike) at index 0..4097: a
+// lattice hash plus at most 2, as crackle's and the black hole warp's seeds are.
+double patternRandom(int index);
+
 }  // namespace lucent

@@ -4,6 +4,7 @@
 #include "pattern_point.h"
 #include "pattern_value.h"
 #include "primitives/noise.h"
+#include "warp.h"
 #include "wave_sources.h"
 
 #include <cmath>
@@ -123,7 +124,9 @@ Vec3 mapNormal(const NormalSpec& normal, const Vec3& n, const Vec3& objPoint) {
 
 Vec3 perturbNormal(const NormalSpec& normal, const Vec3& objPoint, const Vec3& objNormal) {
   const PatternSpec& spec = normal.pattern;
-  const Mat4& m = spec.placement.patternFromObject;
+  // POV-Ray carries the normal through the transforms only, not through the other warps.
+  const Mat4 m = spec.placement.warps.empty() ? spec.placement.patternFromObject
+                                              : linearPatternFromObject(spec.placement);
   const bool identity = m == Mat4(1.0);
   const Mat3 toPattern = identity ? Mat3(1.0) : glm::inverse(Mat3(m));
   const double amount = static_cast<float>(normal.depth);

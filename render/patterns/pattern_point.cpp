@@ -1,6 +1,7 @@
 #include "pattern_point.h"
 
 #include "scenegraph/turbulence.h"
+#include "warp.h"
 
 namespace lucent {
 
@@ -12,6 +13,7 @@ Vec3 toPatternSpace(const Mat4& m, const Vec3& p) {
 
 Vec3 warpPoint(const PatternPlacement& placement, const Vec3& objectPoint, bool displace) {
   Vec3 p = toPatternSpace(placement.patternFromObject, objectPoint);
+  if (!placement.warps.empty()) p = applyWarps(placement.warps, p);
   const Vec3& t = placement.turbulence;
   if (displace && (t.x != 0.0 || t.y != 0.0 || t.z != 0.0)) {
     const Vec3 d = dturbulence(p, placement);

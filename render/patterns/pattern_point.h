@@ -1,5 +1,5 @@
 // Where a pattern is evaluated: the object point carried into pattern space, then displaced
-// by turbulence (POV-Ray 3.7's warp list: warps.cpp, Warp_EPoint).
+// by the warps and turbulence (POV-Ray 3.7's warp list: warps.cpp, Warp_EPoint).
 #pragma once
 
 #include "scenegraph/pattern.h"
@@ -15,8 +15,9 @@ constexpr bool turbulenceDisplaces(PatternType type) {
   return !patternTypeInfo(type).turbulenceInside;
 }
 
-// The pattern-space point, plus dturbulence·turbulence (per axis) when `displace` and the
-// turbulence is not zero. Hexagon and brick take their point from here (displace = true).
+// The pattern-space point carried through the warps, plus dturbulence·turbulence (per axis) when
+// `displace` and the turbulence is not zero. Hexagon and brick take their point from here (displace
+// = true).
 Vec3 warpPoint(const PatternPlacement& placement, const Vec3& objectPoint, bool displace = true);
 
 }  // namespace lucent

@@ -311,33 +311,6 @@ plane { y, 0 texture { checker texture { pigment { rgb 1 } } texture { T_Two } s
   CHECK(checker.mapEntries[1].material.layered());
 }
 
-TEST_CASE("scene reader textures: a turbulence warp before any transform is the placement's",
-          "[sdl][scene][texture]") {
-  auto r = readScene(
-      "sphere { 0, 1 pigment { crackle warp { turbulence 0.6 octaves 4 lambda 3 } scale 2 } }\n");
-  REQUIRE(r->load.scene);
-  const Scene& s = *r->load.scene;
-  const auto& t = std::get<PatternTexture>(materialOf(s, top(s, 0)).texture);
-  CHECK(t.pattern.placement.turbulence == Vec3(0.6));
-  CHECK(t.pattern.placement.octaves == 4);
-  CHECK(t.pattern.placement.lambda == 3.0);
-  checkMat(t.pattern.placement.patternFromObject, scaling(0.5) * kS);
-  const auto errors = errorsOf(
-      "sphere { 0, 1 pigment { bozo scale 2 warp { turbulence 0.5 } } }\n"
-      "sphere { 0, 1 pigment { bozo warp { repeat x } } }\n"
-      "sphere { 0, 1 pigment { bozo warp { turbulence 0.5 } turbulence 0.2 } }\n");
-  REQUIRE(errors.size() == 3);
-  CHECK(errors[0] ==
-        "test.pov:1:38: error: 'warp { turbulence }' after a transform of the pattern is not "
-        "supported by Lucent (a pattern's turbulence applies after all its transforms)");
-  CHECK(errors[1] ==
-        "test.pov:2:37: error: 'warp { repeat }' is not supported by Lucent (warps; the nearest "
-        "Lucent feature is a pattern's turbulence)");
-  CHECK(errors[2] ==
-        "test.pov:3:54: error: 'turbulence' with a turbulence warp is not supported by Lucent "
-        "(a pattern has one turbulence)");
-}
-
 TEST_CASE("scene reader textures: what Lucent cannot render is refused at its keyword",
           "[sdl][scene][texture][errors]") {
   const auto errors = errorsOf(
