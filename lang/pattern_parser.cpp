@@ -39,7 +39,8 @@ const std::vector<std::string_view> kValueAttributes{
     "control0", "control1",    "iterations",  "power",
     "c",        "form",        "magnet-type", "exterior",
     "interior", "agate-turb",  "function",    "direction",
-    "point-at", "slope-range", "altitude",    "altitude-range"};
+    "point-at", "slope-range", "altitude",    "altitude-range",
+    "size",     "coords",      "metric"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -179,9 +180,19 @@ void parseSlopeAttributes(ElementReader& r, PatternSpec& s) {
     r.attrError("direction", "the direction and the altitude cannot both be zero");
 }
 
-// The modifiers of agate, quilted, mandel, julia and magnet.
+// facets' size, coords and metric (POV-Ray takes any numbers; a size below 1e-6 acts as 1e-6).
+void parseFacetsAttributes(ElementReader& r, PatternSpec& s) {
+  const bool facets = s.type == PatternType::facets;
+  FacetsParams& f = s.facets;
+  if (onlyFor(r, "size", facets, "facets", s.type)) f.size = r.number("size", f.size);
+  if (onlyFor(r, "coords", facets, "facets", s.type)) f.coords = r.number("coords", f.coords);
+  if (onlyFor(r, "metric", facets, "facets", s.type)) f.metric = r.number("metric", f.metric);
+}
+
+// The modifiers of slope, facets, agate, quilted, mandel, julia and magnet.
 void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
   parseSlopeAttributes(r, s);
+  parseFacetsAttributes(r, s);
   if (onlyFor(r, "agate-turb", s.type == PatternType::agate, "agate", s.type))
     s.agateTurb = r.number("agate-turb", s.agateTurb);
   const bool function = s.type == PatternType::function;
@@ -419,7 +430,8 @@ namespace {
 // they are.
 bool ownNormal(PatternType t) {
   return t == PatternType::bumps || t == PatternType::dents || t == PatternType::wrinkles ||
-         t == PatternType::ripples || t == PatternType::waves || t == PatternType::quilted;
+         t == PatternType::ripples || t == PatternType::waves || t == PatternType::quilted ||
+         t == PatternType::facets;
 }
 
 const std::vector<std::pair<std::string_view, NormalBlock>> kNormalBlocks{
@@ -494,7 +506,9 @@ void parseNormalChildren(ElementReader& r, NormalSpec& n) {
       return;
     }
     mapLoc = c.loc();
-    if (name == "normal-map") {
+    if (name == "normal-map" && n.pattern.type == PatternType::facets) {
+      c.error("a facets <normal> takes no <normal-map> (POV-Ray refuses normal_map with facets)");
+    } else if (name == "normal-map") {
       if (r.has("depth"))
         r.attrError("depth",
                     "a <normal> with a <normal-map> takes no depth (each entry's <normal> has "
@@ -538,7 +552,8 @@ NormalSpec parseNormal(ElementReader& r) {
   }
   if (!r.has("type"))
     r.error(
-        "<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles, a colour pattern, "
+        "<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles, facets, a colour "
+        "pattern, "
         "average, checker, hexagon or brick)");
   else n.pattern.type = r.choice("type", PatternType::bumps, patternNames(false));
   parseValueAttributes(r, n.pattern);

@@ -77,6 +77,9 @@ void writePlacement(const PatternPlacement& p, PovWriter& out) {
 }
 
 void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
+  if (s.type == PatternType::facets)
+    out.line("size " + povNumber(s.facets.size) + " coords " + povNumber(s.facets.coords) +
+             " metric " + povNumber(s.facets.metric));
   if (s.type == PatternType::quilted)
     out.line("control0 " + povNumber(s.quilted.control0) + " control1 " +
              povNumber(s.quilted.control1));

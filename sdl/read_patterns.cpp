@@ -46,7 +46,7 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
 constexpr std::string_view kPatternsLucentLacks[] = {
-    "aoi",       "cubic",  "density_file", "facets",     "object",       "pavement",
+    "aoi",       "cubic",  "density_file", "object",     "pavement",
     "potential", "square", "tiling",       "triangular", "image_pattern"};
 
 const PatternTypeInfo* patternType(const Token& t) {
@@ -285,7 +285,12 @@ bool SceneReader::readPatternModifier(const Token& t, TokenStream& in, PatternSp
   } else if (w == "form") {
     s.crackle.form = toVec3(in.parseVector());
   } else if (w == "metric") {
-    s.crackle.metric = in.parseVector()[0];  // a vector for old scenes: its x counts
+    // A vector for old scenes: its x counts.
+    (s.type == PatternType::facets ? s.facets.metric : s.crackle.metric) = in.parseVector()[0];
+  } else if (w == "coords" || w == "size") {
+    // facets' (POV-Ray: "Keyword 'coords' [or 'size'] can only be used in a facets pattern").
+    if (s.type != PatternType::facets) in.error(t, "'" + std::string(w) + "' is for facets");
+    (w == "size" ? s.facets.size : s.facets.coords) = in.parseFloat();
   } else if (w == "offset") {
     s.crackle.offset = in.parseFloat();
   } else if (w == "solid") {

@@ -17,4 +17,9 @@ double crackleValue(const Vec3& p, const CrackleParams& crackle, int generator);
 // axis), from the table crackle seeds its points with, indexed by the cube's hash.
 double cellsValue(const Vec3& p);
 
+// The random points of the 81 cubes within a 3-D knight's move of p's cube (the cube below
+// p - 1e-10 on each axis), in POV-Ray's order (facets takes the first nearest).
+constexpr int kCrackleCubes = 81;
+void crackleCubePoints(const Vec3& p, Vec3 (&points)[kCrackleCubes]);
+
 }  // namespace lucent
