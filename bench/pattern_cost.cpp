@@ -72,6 +72,19 @@ int main() {
     turbulent.placement.turbulence = Vec3(0.5);
     NormalSpec n;
     n.pattern = s;
+    if (!kPatternTypes[t].colour) {
+      // A normal only (facets), with no value: its normal, the surface's normal turning with
+      // the point as a sphere's does, and with coords (which reads the point instead).
+      auto sphereNormal = [](const Vec3& p) { return glm::normalize(p + Vec3(0.01, 0.02, 0.03)); };
+      const double normal =
+          nanoseconds(pts, [&](const Vec3& p) { return perturbNormal(n, p, sphereNormal(p)).x; });
+      fmt::print("| {} | — | — | {:.0f} |\n", kPatternTypes[t].name, normal);
+      n.pattern.facets.coords = 0.4;
+      const double coords =
+          nanoseconds(pts, [&](const Vec3& p) { return perturbNormal(n, p, sphereNormal(p)).x; });
+      fmt::print("| {} with coords 0.4 | — | — | {:.0f} |\n", kPatternTypes[t].name, coords);
+      continue;
+    }
     const double plain = nanoseconds(pts, [&](const Vec3& p) { return patternValue(s, p); });
     const double turb = nanoseconds(pts, [&](const Vec3& p) { return patternValue(turbulent, p); });
     const double normal =

@@ -41,7 +41,8 @@ const std::vector<std::string_view> kValueAttributes{
     "c",        "form",        "magnet-type", "exterior",
     "interior", "agate-turb",  "function",    "direction",
     "point-at", "slope-range", "altitude",    "altitude-range",
-    "tiling",   "metric",      "offset",      "solid"};
+    "tiling",   "metric",      "offset",      "solid",
+    "size",     "coords"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -196,9 +197,20 @@ void parseSlopeAttributes(ElementReader& r, PatternSpec& s) {
     r.attrError("direction", "the direction and the altitude cannot both be zero");
 }
 
-// The modifiers of agate, quilted, tiling, mandel, julia and magnet.
+// facets' size, coords and metric (POV-Ray takes any numbers; a size below 1e-6 acts as 1e-6).
+void parseFacetsAttributes(ElementReader& r, PatternSpec& s) {
+  const bool facets = s.type == PatternType::facets;
+  FacetsParams& f = s.facets;
+  if (onlyFor(r, "size", facets, "facets", s.type)) f.size = r.number("size", f.size);
+  if (onlyFor(r, "coords", facets, "facets", s.type)) f.coords = r.number("coords", f.coords);
+  // (metric is crackle's too: checked with crackle's.)
+  if (facets && r.has("metric")) f.metric = r.number("metric", f.metric);
+}
+
+// The modifiers of slope, facets, agate, quilted, tiling, mandel, julia and magnet.
 void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
   parseSlopeAttributes(r, s);
+  parseFacetsAttributes(r, s);
   const bool tiling = s.type == PatternType::tiling;
   if (tiling && !r.has("tiling"))
     r.error(r.tag() + " type=\"tiling\" needs 'tiling' (which of POV-Ray's tilings, 1 to 27)");
@@ -216,7 +228,9 @@ void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
           PatternFunction{f->text, f->constants, f->field, f->pigments});
   }
   const bool crackle = s.type == PatternType::crackle;
-  if (onlyFor(r, "metric", crackle, "crackle", s.type))
+  if (onlyFor(r, "metric", crackle || s.type == PatternType::facets, "crackle or facets",
+              s.type) &&
+      crackle)
     s.crackle.metric = r.number("metric", s.crackle.metric);
   if (onlyFor(r, "offset", crackle, "crackle", s.type))
     s.crackle.offset = r.number("offset", s.crackle.offset);
@@ -452,7 +466,8 @@ namespace {
 // they are.
 bool ownNormal(PatternType t) {
   return t == PatternType::bumps || t == PatternType::dents || t == PatternType::wrinkles ||
-         t == PatternType::ripples || t == PatternType::waves || t == PatternType::quilted;
+         t == PatternType::ripples || t == PatternType::waves || t == PatternType::quilted ||
+         t == PatternType::facets;
 }
 
 const std::vector<std::pair<std::string_view, NormalBlock>> kNormalBlocks{
@@ -529,7 +544,9 @@ void parseNormalChildren(ElementReader& r, NormalSpec& n) {
       return;
     }
     mapLoc = c.loc();
-    if (name == "normal-map") {
+    if (name == "normal-map" && n.pattern.type == PatternType::facets) {
+      c.error("a facets <normal> takes no <normal-map> (POV-Ray refuses normal_map with facets)");
+    } else if (name == "normal-map") {
       if (r.has("depth"))
         r.attrError("depth",
                     "a <normal> with a <normal-map> takes no depth (each entry's <normal> has "
@@ -580,7 +597,8 @@ NormalSpec parseNormal(ElementReader& r) {
   }
   if (!r.has("type"))
     r.error(
-        "<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles, a colour pattern, "
+        "<normal> needs a 'type' (bumps, dents, ripples, waves, wrinkles, facets, a colour "
+        "pattern, "
         "average, checker, hexagon or brick)");
   else n.pattern.type = r.choice("type", PatternType::bumps, patternNames(false));
   parseValueAttributes(r, n.pattern);

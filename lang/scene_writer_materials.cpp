@@ -151,6 +151,12 @@ void addTypeAttributes(const PatternSpec& s, const SourceLoc& loc, Attributes& a
                        xmlNumber(p.altitudeLow) + " " + xmlNumber(p.altitudeHigh));
     }
   }
+  if (s.type == PatternType::facets) {
+    const FacetsParams& f = s.facets;
+    if (f.size != d.facets.size) a.emplace_back("size", xmlNumber(f.size));
+    if (f.coords != d.facets.coords) a.emplace_back("coords", xmlNumber(f.coords));
+    if (f.metric != d.facets.metric) a.emplace_back("metric", xmlNumber(f.metric));
+  }
   if (s.type == PatternType::quilted) {
     if (s.quilted.control0 != d.quilted.control0)
       a.emplace_back("control0", xmlNumber(s.quilted.control0));

@@ -138,6 +138,9 @@ void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
     out.line("metric " + povNumber(c.metric) + " form " + povVector(c.form) + " offset " +
              povNumber(c.offset) + (c.solid ? " solid" : ""));
   }
+  if (s.type == PatternType::facets)
+    out.line("size " + povNumber(s.facets.size) + " coords " + povNumber(s.facets.coords) +
+             " metric " + povNumber(s.facets.metric));
   if (s.type == PatternType::quilted)
     out.line("control0 " + povNumber(s.quilted.control0) + " control1 " +
              povNumber(s.quilted.control1));

@@ -54,6 +54,7 @@ enum class PatternType {
   pigment,
   slope,
   tiling,
+  facets,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -132,6 +133,8 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "the surface normal's angle to a direction, optionally mixed with the height along another"},
     {PatternType::tiling, "tiling", "tiling", true, WaveShape::ramp, false,
      "one of POV-Ray's 27 tilings of the x-z plane: 1 on a tile's edge, falling inside it"},
+    {PatternType::facets, "facets", "facets", false, WaveShape::ramp, false,
+     "flat facets: the normal (or, with coords, the point) snapped to the nearest random point"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 
@@ -189,6 +192,22 @@ struct SlopeParams {
            altitude == o.altitude && altitudeLow == o.altitudeLow && altitudeHigh == o.altitudeHigh;
   }
   bool operator!=(const SlopeParams& o) const { return !(*this == o); }
+};
+
+// POV-Ray's facets (normal.cpp, facets; a normal only, its depth unused): with coords 0
+// the unit normal scaled by 1/size is replaced by the nearest of crackle's random points
+// (one per unit cube), so that each small patch of directions shares one normal; with
+// coords c the point scaled by 1/size finds that nearest point, and c times the noise
+// gradient there, less its part along the normal, is added to the normal. Distances in
+// `metric` (2 Euclidean; 1 POV-Ray's dx + dy + dz, signed; else the sum of |d|^metric).
+struct FacetsParams {
+  double size = 0.1;
+  double coords = 0.0;
+  double metric = 2.0;
+  bool operator==(const FacetsParams& o) const {
+    return size == o.size && coords == o.coords && metric == o.metric;
+  }
+  bool operator!=(const FacetsParams& o) const { return !(*this == o); }
 };
 
 // POV-Ray's quilted modifiers: the cubic that rounds each cube (defaults 1 and 1).
@@ -265,6 +284,7 @@ struct PatternSpec {
   double agateTurb = 1.0;  // agate's turbulence scale (POV-Ray's agate_turb)
   SlopeParams slope;       // type slope
   int tiling = 1;          // tiling's number, 1..27 (render/patterns/tiling.h)
+  FacetsParams facets;     // type facets
   std::shared_ptr<const PatternFunction> function;  // type function
   std::shared_ptr<const TextureMapEntry> pigment;   // type pigment (pigment-pattern)
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin

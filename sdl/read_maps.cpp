@@ -173,7 +173,8 @@ namespace {
 // Normal patterns whose own normal POV-Ray uses (not the slope): it ignores their slope map.
 bool ownNormal(PatternType t) {
   return t == PatternType::bumps || t == PatternType::dents || t == PatternType::wrinkles ||
-         t == PatternType::ripples || t == PatternType::waves || t == PatternType::quilted;
+         t == PatternType::ripples || t == PatternType::waves || t == PatternType::quilted ||
+         t == PatternType::facets;
 }
 
 // A normal read as a map's or a list's entry, placed from the map's pattern space by its
@@ -200,7 +201,8 @@ bool SceneReader::readNormalMapKeyword(const Token& t, TokenStream& in, PovNorma
   }
   const bool slope = isWord(t, "slope_map");
   if (!slope && !isWord(t, "normal_map")) return false;
-  if (n.spec.block != NormalBlock::none || (slope && n.average)) {
+  const bool facets = n.patterned && !n.average && n.spec.pattern.type == PatternType::facets;
+  if (n.spec.block != NormalBlock::none || (slope && n.average) || (!slope && facets)) {
     // POV-Ray's parser: "Cannot use normal_map with this normal type."
     keepError(in, t.loc(),
               "'" + std::string(t.text()) +

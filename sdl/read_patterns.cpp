@@ -46,7 +46,7 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
 constexpr std::string_view kPatternsLucentLacks[] = {
-    "aoi",       "cubic",  "density_file", "facets",     "object",       "pavement",
+    "aoi",       "cubic",  "density_file", "object",     "pavement",
     "potential", "square", "triangular", "image_pattern"};
 
 const PatternTypeInfo* patternType(const Token& t) {
@@ -304,6 +304,12 @@ bool SceneReader::readPatternModifier(const Token& t, TokenStream& in, PatternSp
     const double g = in.parseFloat();
     if (g < 1 || g > 3) in.error(t, "noise_generator must be 1, 2 or 3");
     s.noiseGenerator = static_cast<int>(g);
+  } else if (w == "coords" || w == "size") {
+    // facets' (POV-Ray: "Keyword 'coords' [or 'size'] can only be used in a facets pattern").
+    if (s.type != PatternType::facets) in.error(t, "'" + std::string(w) + "' is for facets");
+    (w == "size" ? s.facets.size : s.facets.coords) = in.parseFloat();
+  } else if (w == "metric" && s.type == PatternType::facets) {
+    s.facets.metric = in.parseVector()[0];  // a vector for old scenes: its x counts
   } else if (w == "form" || w == "metric" || w == "offset" || w == "solid") {
     if (spec && s.type != PatternType::crackle)  // POV-Ray's Only_In
       in.error(t, "'" + std::string(w) + "' is for crackle");

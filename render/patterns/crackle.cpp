@@ -13,7 +13,7 @@ namespace lucent {
 namespace {
 
 constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
-constexpr int kCubes = 81;
+constexpr int kCubes = kCrackleCubes;
 
 // POV-Ray's PatternRands: the first outputs of a default-seeded 32-bit Mersenne twister
 // divided by 2^32 (boost's uniform_real on [0, 1)). The cell hash is below 4096 and each
@@ -72,6 +72,14 @@ Vec3 cellPoint(int x, int y, int z) {
 }  // namespace
 
 double patternRandom(int index) { return cellRandoms().value[index]; }
+
+void crackleCubePoints(const Vec3& p, Vec3 (&points)[kCrackleCubes]) {
+  const int fx = cellBelow(p.x), fy = cellBelow(p.y), fz = cellBelow(p.z);
+  const CubeTable& cubes = cubeTable();
+  for (int i = 0; i < kCubes; ++i)
+    points[i] =
+        cellPoint(fx + cubes.offset[i][0], fy + cubes.offset[i][1], fz + cubes.offset[i][2]);
+}
 
 double crackleValue(const Vec3& p, const CrackleParams& crackle, int generator) {
   const double metric = crackle.metric;

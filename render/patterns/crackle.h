@@ -21,4 +21,9 @@ double cellsValue(const Vec3& p);
 // lattice hash plus at most 2, as crackle's and the black hole warp's seeds are.
 double patternRandom(int index);
 
+// The random points of the 81 cubes within a 3-D knight's move of p's cube (the cube below
+// p - 1e-10 on each axis), in POV-Ray's order (facets takes the first nearest).
+constexpr int kCrackleCubes = 81;
+void crackleCubePoints(const Vec3& p, Vec3 (&points)[kCrackleCubes]);
+
 }  // namespace lucent

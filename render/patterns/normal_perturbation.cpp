@@ -1,5 +1,6 @@
 #include "normal_perturbation.h"
 
+#include "facets.h"
 #include "normal_map.h"
 #include "pattern_point.h"
 #include "pattern_value.h"
@@ -83,6 +84,8 @@ Vec3 perturbByPattern(const NormalSpec& normal, Vec3 n, const Vec3& p, double am
       return ripplesNormal(n, p, spec.frequency, spec.phase, amount);
     case PatternType::waves:
       return wavesNormal(n, p, spec.frequency, spec.phase, amount);
+    case PatternType::facets:  // POV-Ray's facets takes no amount
+      return facetsNormal(spec.facets, n, p);
     default:
       return slope(normal, n, p, amount);
   }

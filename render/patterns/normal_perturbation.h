@@ -15,6 +15,7 @@ constexpr double kNormalAccuracy = 0.02;
 //
 // The normal is carried into pattern space (inverse transpose of the pattern transform)
 // and normalised; bumps, dents, wrinkles, ripples and waves then add their own vector
+// (facets puts its own in place, render/patterns/facets.h)
 // (POV-Ray's functions of those names), any other type POV-Ray's slope estimate: the
 // pattern value at four points 0.02 from the (turbulence-displaced) point along a regular
 // tetrahedron's vertex directions, each pushing the normal along its direction by

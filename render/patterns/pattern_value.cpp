@@ -253,6 +253,8 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
       return pigmentGrey(spec, p);
     case PatternType::slope:
       return slopeValue(spec.slope, p, currentPatternSurface());
+    case PatternType::facets:  // a normal only, with no value (the parsers refuse one)
+      return 0.0;
   }
   return 0.0;
 }

@@ -317,3 +317,17 @@ TEST_CASE("scene writer: slope's direction or point, ranges and altitude are wri
   REQUIRE(reread.scene);
   CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
 }
+
+TEST_CASE("scene writer: facets' size, coords and metric are written and read back",
+          "[lang][scene-writer]") {
+  const std::string first = written(
+      "<sphere><material><normal type=\"facets\"/></material></sphere>"
+      "<sphere center=\"3 0 0\"><material><normal type=\"facets\" size=\"0.25\" coords=\"0.4\" "
+      "metric=\"1\"/></material></sphere>");
+  CHECK(contains(first, "<normal type=\"facets\" depth=\"0.5\"/>"));
+  CHECK(contains(
+      first, "<normal type=\"facets\" size=\"0.25\" coords=\"0.4\" metric=\"1\" depth=\"0.5\"/>"));
+  auto reread = parseSceneString(first, "writer.xml");
+  REQUIRE(reread.scene);
+  CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+}

@@ -290,3 +290,42 @@ TEST_CASE("scene reader patterns: slope's POV-Ray errors at their keyword",
     CHECK(errors[0].rfind(want, 0) == 0);
   }
 }
+
+TEST_CASE("scene reader patterns: facets' size, coords and metric in a normal, amount unused",
+          "[sdl][scene][texture]") {
+  auto r = readScene(R"(
+sphere { 0, 1 normal { facets } }
+sphere { 0, 1 normal { facets coords 0.4 } }
+sphere { 0, 1 normal { facets 0.7 size 0.25 metric <1, 0, 0> scale 2 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const NormalSpec& plain = normalOf(s, 0);
+  CHECK(plain.pattern.type == PatternType::facets);
+  CHECK(plain.pattern.facets == FacetsParams{0.1, 0.0, 2.0});  // POV-Ray's defaults
+  CHECK(normalOf(s, 1).pattern.facets == FacetsParams{0.1, 0.4, 2.0});
+  const NormalSpec& full = normalOf(s, 2);
+  CHECK(full.pattern.facets == FacetsParams{0.25, 0.0, 1.0});
+  CHECK(full.pattern.crackle.metric == 2.0);  // facets' own metric, not crackle's
+  CHECK(full.depth == 0.7);
+}
+
+TEST_CASE("scene reader patterns: facets' POV-Ray errors at their keyword",
+          "[sdl][scene][texture][errors]") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"sphere { 0, 1 normal { bumps coords 0.4 } }",
+       "test.pov:1:30: error: 'coords' is for facets"},
+      {"sphere { 0, 1 normal { bumps size 0.4 } }", "test.pov:1:30: error: 'size' is for facets"},
+      {"sphere { 0, 1 pigment { facets } }",
+       "test.pov:1:25: error: 'facets' is not supported by Lucent (as a colour pattern; "
+       "Lucent's facets is a normal pattern)"},
+      {"sphere { 0, 1 normal { facets normal_map { [0 bumps] } } }",
+       "test.pov:1:31: error: 'normal_map' cannot be used with this normal type"},
+  };
+  for (const auto& [text, want] : cases) {
+    INFO(text);
+    const auto errors = errorsOf(text);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].rfind(want, 0) == 0);
+  }
+}
