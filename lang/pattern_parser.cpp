@@ -228,8 +228,7 @@ void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
           PatternFunction{f->text, f->constants, f->field, f->pigments});
   }
   const bool crackle = s.type == PatternType::crackle;
-  if (onlyFor(r, "metric", crackle || s.type == PatternType::facets, "crackle or facets",
-              s.type) &&
+  if (onlyFor(r, "metric", crackle || s.type == PatternType::facets, "crackle or facets", s.type) &&
       crackle)
     s.crackle.metric = r.number("metric", s.crackle.metric);
   if (onlyFor(r, "offset", crackle, "crackle", s.type))

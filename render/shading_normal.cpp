@@ -4,8 +4,8 @@
 #include "image_projection.h"
 #include "patterns/normal_perturbation.h"
 #include "patterns/pattern_point.h"
-#include "uv_mapping.h"
 #include "patterns/warp.h"
+#include "uv_mapping.h"
 
 namespace lucent {
 

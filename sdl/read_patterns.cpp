@@ -45,9 +45,9 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 }
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
-constexpr std::string_view kPatternsLucentLacks[] = {
-    "aoi",       "cubic",  "density_file", "object",     "pavement",
-    "potential", "square", "triangular", "image_pattern"};
+constexpr std::string_view kPatternsLucentLacks[] = {"aoi",    "cubic",      "density_file",
+                                                     "object", "pavement",   "potential",
+                                                     "square", "triangular", "image_pattern"};
 
 const PatternTypeInfo* patternType(const Token& t) {
   if (t.kind != TokenKind::Keyword) return nullptr;
@@ -403,6 +403,21 @@ std::vector<PovColorMapEntry> SceneReader::readColorMap(TokenStream& in, SourceL
   return map;
 }
 
+namespace {
+
+// The colour (and filter and transmit) a map blends at v between its entries a and b.
+PovColorMapEntry blendAt(const PovColorMapEntry& a, const PovColorMapEntry& b, double v) {
+  const float w = static_cast<float>((v - a.at) / (b.at - a.at));
+  PovColorMapEntry e;
+  e.at = v;
+  e.color = a.color + (b.color - a.color) * w;
+  e.filter = a.filter + (b.filter - a.filter) * w;
+  e.transmit = a.transmit + (b.transmit - a.transmit) * w;
+  return e;
+}
+
+}  // namespace
+
 // A colour map whose entries are not in ascending order (woods.inc's T_Wood32), as the
 // ascending map that gives every value the colour POV-Ray gives it. POV-Ray's search takes
 // the last entry at or above the last entry's value; below that, the first entry whose
@@ -416,15 +431,6 @@ std::vector<PovColorMapEntry> ascendingMap(const std::vector<PovColorMapEntry>& 
           [](const PovColorMapEntry& a, const PovColorMapEntry& b) { return a.at < b.at; }))
     return map;
   const double last = map.back().at;
-  auto blendAt = [](const PovColorMapEntry& a, const PovColorMapEntry& b, double v) {
-    const float w = static_cast<float>((v - a.at) / (b.at - a.at));
-    PovColorMapEntry e;
-    e.at = v;
-    e.color = a.color + (b.color - a.color) * w;
-    e.filter = a.filter + (b.filter - a.filter) * w;
-    e.transmit = a.transmit + (b.transmit - a.transmit) * w;
-    return e;
-  };
   std::vector<PovColorMapEntry> out;
   double highest = map.front().at;
   out.push_back(map.front());  // up to its value (or the last entry's, if that is lower)
@@ -446,15 +452,6 @@ std::vector<PovColorMapEntry> ascendingMap(const std::vector<PovColorMapEntry>& 
 // same colour: the entries beyond an end replaced by the blend at that end, or, when every
 // entry is beyond it, by the colour the values take there (the nearest entry's).
 std::vector<PovColorMapEntry> unitMap(const std::vector<PovColorMapEntry>& map) {
-  auto blendAt = [](const PovColorMapEntry& a, const PovColorMapEntry& b, double v) {
-    const float w = static_cast<float>((v - a.at) / (b.at - a.at));
-    PovColorMapEntry e = a;
-    e.at = v;
-    e.color = a.color + (b.color - a.color) * w;
-    e.filter = a.filter + (b.filter - a.filter) * w;
-    e.transmit = a.transmit + (b.transmit - a.transmit) * w;
-    return e;
-  };
   std::vector<PovColorMapEntry> out;
   for (size_t i = 0; i < map.size(); ++i) {
     const PovColorMapEntry& e = map[i];
