@@ -25,12 +25,6 @@ const Material& materialOf(const Scene& scene, size_t i) {
   return scene.materials.at(*n.material);
 }
 
-const PatternSpec& patternOf(const Scene& scene, size_t i) {
-  const auto* t = std::get_if<PatternTexture>(&materialOf(scene, i).texture);
-  REQUIRE(t);
-  return t->pattern;
-}
-
 const char* kBody =
     "<sphere><material><pattern type=\"crackle\" form=\"1 0 0\" metric=\"1\" offset=\"0.2\"/>"
     "<normal type=\"crackle\" solid=\"true\" depth=\"0.4\"/></material></sphere>"
@@ -44,7 +38,7 @@ const char* kBody =
 TEST_CASE("crackle: form, metric, offset and solid reach the pattern and the normal",
           "[lang][pattern][crackle]") {
   auto scene = parseClean(kBody);
-  const CrackleParams& a = patternOf(*scene, 0).crackle;
+  const CrackleParams& a = nodePigmentPattern(*scene, 0).crackle;
   CHECK(a.form == Vec3(1, 0, 0));
   CHECK(a.metric == 1.0);
   CHECK(a.offset == 0.2);
@@ -55,10 +49,10 @@ TEST_CASE("crackle: form, metric, offset and solid reach the pattern and the nor
   CHECK(n.form == Vec3(-1, 1, 0));  // POV-Ray's defaults
   CHECK(n.metric == 2.0);
   CHECK(n.offset == 0.0);
-  const CrackleParams& b = patternOf(*scene, 1).crackle;
+  const CrackleParams& b = nodePigmentPattern(*scene, 1).crackle;
   CHECK(b.metric == 3.0);
   CHECK(b.form == Vec3(-0.5, 1.2, 0.3));
-  CHECK(patternOf(*scene, 2).fractal.juliaForm);  // magnet's form is still its word
+  CHECK(nodePigmentPattern(*scene, 2).fractal.juliaForm);  // magnet's form is still its word
 }
 
 TEST_CASE("crackle: convert writes its modifiers and reads back to the same text",
@@ -86,7 +80,7 @@ TEST_CASE("crackle: the importer's modifiers survive convert, and other patterns
   auto r = sdltest::readScene(
       "sphere { 0, 1 pigment { crackle form <0, 1, 0> metric <1, 5, 5> offset 0.3 solid } }\n");
   REQUIRE(r->load.scene);
-  const CrackleParams& c = patternOf(*r->load.scene, 0).crackle;
+  const CrackleParams& c = nodePigmentPattern(*r->load.scene, 0).crackle;
   CHECK(c.form == Vec3(0, 1, 0));
   CHECK(c.metric == 1.0);  // a vector's x, as POV-Ray's
   CHECK(c.offset == 0.3);

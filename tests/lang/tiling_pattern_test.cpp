@@ -17,15 +17,6 @@ using namespace lucent::test;
 
 namespace {
 
-const PatternSpec& patternOf(const Scene& scene, size_t i) {
-  REQUIRE(scene.root->children.size() > i);
-  const Node& n = *scene.root->children[i];
-  REQUIRE(n.material);
-  const auto* t = std::get_if<PatternTexture>(&scene.materials.at(*n.material).texture);
-  REQUIRE(t);
-  return t->pattern;
-}
-
 const char* kBody =
     "<sphere><material><pattern type=\"tiling\" tiling=\"24\" transform=\"scale(0.5)\"/>"
     "<normal type=\"tiling\" tiling=\"3\" depth=\"0.4\"/></material></sphere>"
@@ -37,14 +28,14 @@ const char* kBody =
 TEST_CASE("tiling: the XML's tiling number reaches the pattern and the normal",
           "[lang][pattern][tiling]") {
   auto scene = parseClean(kBody);
-  const PatternSpec& p = patternOf(*scene, 0);
+  const PatternSpec& p = nodePigmentPattern(*scene, 0);
   CHECK(p.type == PatternType::tiling);
   CHECK(p.tiling == 24);
   const Material& m = scene->materials.at(*scene->root->children[0]->material);
   REQUIRE(m.normal);
   CHECK(m.normal->pattern.type == PatternType::tiling);
   CHECK(m.normal->pattern.tiling == 3);
-  CHECK(patternOf(*scene, 1).tiling == 1);
+  CHECK(nodePigmentPattern(*scene, 1).tiling == 1);
 }
 
 TEST_CASE("tiling: convert writes the number and reads back to the same text",
@@ -78,14 +69,14 @@ sphere { 0, 1 texture { tiling 9 texture_map { [0 pigment { rgb 1 }] [1 pigment 
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
-  CHECK(patternOf(s, 0).type == PatternType::tiling);
-  CHECK(patternOf(s, 0).tiling == 27);
+  CHECK(nodePigmentPattern(s, 0).type == PatternType::tiling);
+  CHECK(nodePigmentPattern(s, 0).tiling == 27);
   const Material& normal = s.materials.at(*s.root->children[1]->material);
   REQUIRE(normal.normal);
   CHECK(normal.normal->pattern.type == PatternType::tiling);
   CHECK(normal.normal->pattern.tiling == 5);
   CHECK(normal.normal->depth == Approx(0.3));
-  CHECK(patternOf(s, 2).tiling == 2);  // 258 as POV-Ray's byte
+  CHECK(nodePigmentPattern(s, 2).tiling == 2);  // 258 as POV-Ray's byte
   const Material& mapped = s.materials.at(*s.root->children[3]->material);
   REQUIRE(mapped.mapped());
   const auto& map = std::get<PatternTexture>(mapped.mapPattern);

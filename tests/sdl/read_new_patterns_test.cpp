@@ -4,6 +4,7 @@
 // inputs, each one error at its place.
 #include <catch2/catch.hpp>
 
+#include "../support/scene_text.h"
 #include "scene_read_support.h"
 #include "sdl_test_support.h"
 
@@ -13,20 +14,12 @@
 
 using namespace lucent;
 using namespace lucent::sdl;
+using lucent::test::nodePigmentPattern;
 
 namespace {
 
 using sdltest::errorsOf;
 using sdltest::readScene;
-
-const PatternSpec& pigmentPattern(const Scene& scene, size_t i) {
-  REQUIRE(scene.root->children.size() > i);
-  const Node& n = *scene.root->children[i];
-  REQUIRE(n.material);
-  const auto* t = std::get_if<PatternTexture>(&scene.materials.at(*n.material).texture);
-  REQUIRE(t);
-  return t->pattern;
-}
 
 const NormalSpec& normalOf(const Scene& scene, size_t i) {
   REQUIRE(scene.root->children.size() > i);
@@ -53,12 +46,12 @@ sphere { 0, 1 pigment { waves } }
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
-  const PatternSpec& plain = pigmentPattern(s, 0);
+  const PatternSpec& plain = nodePigmentPattern(s, 0);
   CHECK(plain.type == PatternType::quilted);
   CHECK(plain.frequency == 0.0);
   CHECK(plain.quilted.control0 == 1.0);
   CHECK(plain.quilted.control1 == 1.0);
-  const PatternSpec& tuned = pigmentPattern(s, 1);
+  const PatternSpec& tuned = nodePigmentPattern(s, 1);
   CHECK(tuned.quilted.control0 == 0.25);
   CHECK(tuned.quilted.control1 == 0.75);
   CHECK(tuned.frequency == 2.0);
@@ -67,12 +60,12 @@ sphere { 0, 1 pigment { waves } }
   CHECK(n.depth == 0.6);
   CHECK(n.pattern.quilted.control0 == 0.0);
   CHECK(n.pattern.frequency == 0.0);
-  CHECK(pigmentPattern(s, 3).type == PatternType::dents);
-  const PatternSpec& ripples = pigmentPattern(s, 4);
+  CHECK(nodePigmentPattern(s, 3).type == PatternType::dents);
+  const PatternSpec& ripples = nodePigmentPattern(s, 4);
   CHECK(ripples.type == PatternType::ripples);
   CHECK(ripples.frequency == 3.0);
   CHECK(ripples.phase == 0.5);
-  CHECK(pigmentPattern(s, 5).type == PatternType::waves);
+  CHECK(nodePigmentPattern(s, 5).type == PatternType::waves);
 }
 
 TEST_CASE(
@@ -88,15 +81,15 @@ sphere { 0, 1 texture { boxed texture_map { [0 pigment { rgb 1 }] [1 pigment { c
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
-  CHECK(pigmentPattern(s, 0).type == PatternType::spherical);
-  const PatternSpec& cylindrical = pigmentPattern(s, 1);
+  CHECK(nodePigmentPattern(s, 0).type == PatternType::spherical);
+  const PatternSpec& cylindrical = nodePigmentPattern(s, 1);
   CHECK(cylindrical.type == PatternType::cylindrical);
   CHECK(cylindrical.frequency == 2.0);
   CHECK(cylindrical.waveShape() == WaveShape::sine);
   const NormalSpec& n = normalOf(s, 2);
   CHECK(n.pattern.type == PatternType::boxed);
   CHECK(n.depth == 0.6);
-  const PatternSpec& cells = pigmentPattern(s, 3);
+  const PatternSpec& cells = nodePigmentPattern(s, 3);
   CHECK(cells.type == PatternType::cells);
   const auto& t = std::get<PatternTexture>(s.materials.at(*s.root->children[3]->material).texture);
   CHECK(t.pigments.size() == 2);
@@ -118,7 +111,7 @@ sphere { 0, 1 normal { pigment_pattern { rgb <1, 0.5, 0> } 0.4 } }
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
-  const PatternSpec& p = pigmentPattern(s, 0);
+  const PatternSpec& p = nodePigmentPattern(s, 0);
   CHECK(p.type == PatternType::pigment);
   REQUIRE(p.pigment);
   const auto& bozo = std::get<PatternTexture>(p.pigment->texture);
@@ -146,7 +139,7 @@ sphere { 0, 1 normal { mandel 30, 0.4 interior 1, 1 } }
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
-  const PatternSpec& mandel = pigmentPattern(s, 0);
+  const PatternSpec& mandel = nodePigmentPattern(s, 0);
   CHECK(mandel.type == PatternType::mandel);
   CHECK(mandel.fractal.iterations == 50);
   CHECK(mandel.fractal.power == 2);
@@ -155,13 +148,13 @@ sphere { 0, 1 normal { mandel 30, 0.4 interior 1, 1 } }
   CHECK(mandel.fractal.interior.type == 0);
   CHECK(mandel.fractal.interior.factor == 1.0);
   CHECK(mandel.frequency == 1.0);
-  const PatternSpec& mandel5 = pigmentPattern(s, 1);
+  const PatternSpec& mandel5 = nodePigmentPattern(s, 1);
   CHECK(mandel5.fractal.power == 5);
   CHECK(mandel5.fractal.exterior.type == 7);
   CHECK(mandel5.fractal.exterior.factor == 3.0);
   CHECK(mandel5.fractal.interior.type == 6);
   CHECK(mandel5.fractal.interior.factor == 0.5);
-  const PatternSpec& julia = pigmentPattern(s, 2);
+  const PatternSpec& julia = nodePigmentPattern(s, 2);
   CHECK(julia.type == PatternType::julia);
   CHECK(julia.fractal.cReal == 0.3);
   CHECK(julia.fractal.cImaginary == -0.44);
@@ -169,12 +162,12 @@ sphere { 0, 1 normal { mandel 30, 0.4 interior 1, 1 } }
   CHECK(julia.fractal.power == 3);
   CHECK(julia.fractal.interior.type == 1);
   CHECK(julia.fractal.interior.factor == 2.0);
-  const PatternSpec& magnet1 = pigmentPattern(s, 3);
+  const PatternSpec& magnet1 = nodePigmentPattern(s, 3);
   CHECK(magnet1.type == PatternType::magnet);
   CHECK(magnet1.fractal.magnetType == 1);
   CHECK_FALSE(magnet1.fractal.juliaForm);
   CHECK(magnet1.fractal.iterations == 40);
-  const PatternSpec& magnet2 = pigmentPattern(s, 4);
+  const PatternSpec& magnet2 = nodePigmentPattern(s, 4);
   CHECK(magnet2.fractal.magnetType == 2);
   CHECK(magnet2.fractal.juliaForm);
   CHECK(magnet2.fractal.cReal == 1.1);
@@ -193,7 +186,7 @@ TEST_CASE("scene reader patterns: a mandel exponent outside 2..33 is POV-Ray's w
           "[sdl][scene][texture]") {
   auto r = readScene("sphere { 0, 1 pigment { mandel 10 exponent 40 } }\n");
   REQUIRE(r->load.scene);
-  CHECK(pigmentPattern(*r->load.scene, 0).fractal.power == 2);
+  CHECK(nodePigmentPattern(*r->load.scene, 0).fractal.power == 2);
   bool warned = false;
   for (const std::string& w : r->out.warnings)
     warned |= w ==
@@ -247,19 +240,19 @@ sphere { 0, 1 texture { slope x texture_map { [0 pigment { rgb 0 }] [1 pigment {
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
-  const PatternSpec& simple = pigmentPattern(s, 0);
+  const PatternSpec& simple = nodePigmentPattern(s, 0);
   CHECK(simple.type == PatternType::slope);
   CHECK(simple.slope.direction == Vec3(0.5, 1, -2));  // POV-Ray's z negated, as the normal's
   CHECK(simple.slope.altitude == Vec3(0.0));
   CHECK(simple.frequency == 1.0);
-  const SlopeParams& full = pigmentPattern(s, 1).slope;
+  const SlopeParams& full = nodePigmentPattern(s, 1).slope;
   CHECK(full.direction == Vec3(0, -3, 0));
   CHECK(full.low == 0.0);
   CHECK(full.high == 0.5);
   CHECK(full.altitude == Vec3(0, 1, 1));  // the pattern point is POV-Ray's: kept as written
   CHECK(full.altitudeLow == 0.005);
   CHECK(full.altitudeHigh == 0.4);
-  const SlopeParams& at = pigmentPattern(s, 2).slope;
+  const SlopeParams& at = nodePigmentPattern(s, 2).slope;
   CHECK(at.pointAt);
   CHECK(at.direction == Vec3(1, 2, -3));
   const NormalSpec& n = normalOf(s, 3);

@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <variant>
 
 namespace lucent::test {
 
@@ -52,6 +53,17 @@ inline const Material& materialNamed(const Scene& s, const std::string& id) {
     if (m.id == id) return m;
   FAIL("no material " << id);
   return s.materials.at(0);
+}
+
+// The pattern of the pigment of the scene's top-level node i (a test failure if it has no
+// material or its texture is not a pattern).
+inline const PatternSpec& nodePigmentPattern(const Scene& scene, size_t i) {
+  REQUIRE(scene.root->children.size() > i);
+  const Node& n = *scene.root->children[i];
+  REQUIRE(n.material);
+  const auto* t = std::get_if<PatternTexture>(&scene.materials.at(*n.material).texture);
+  REQUIRE(t);
+  return t->pattern;
 }
 
 // A written scene's text without its comment lines (lucent convert's comments name the file
