@@ -14,7 +14,8 @@ Ray toPrism(const Ray& r) { return Ray(swapYZ(r.o), swapYZ(r.d), r.tmin, r.tmax)
 
 }  // namespace
 
-Text::Text(const std::vector<std::vector<PrismContour>>& glyphs, double thickness) {
+Text::Text(const std::vector<std::vector<PrismContour>>& glyphs, double thickness,
+           const std::vector<Vec2>& blanks) {
   if (!(thickness > 0.0) || !std::isfinite(thickness))
     throw std::invalid_argument("text: thickness must be > 0");
   for (const auto& g : glyphs) {
@@ -25,6 +26,7 @@ Text::Text(const std::vector<std::vector<PrismContour>>& glyphs, double thicknes
     bounds_.expand(AABB(swapYZ(b.lo), swapYZ(b.hi)));
   }
   if (!boxes_.empty()) bvh_ = Bvh(boxes_);
+  for (const Vec2& o : blanks) bounds_.expand(AABB(Vec3(o.x, o.y, 0.0), Vec3(o.x, o.y, thickness)));
 }
 
 size_t Text::segmentCount() const {

@@ -19,8 +19,12 @@ namespace lucent {
 class Text final : public Shape {
  public:
   // One outline per glyph (x, y in the glyph plane); blank glyphs (no contours) are
-  // skipped. Throws std::invalid_argument for a bad outline or a thickness <= 0.
-  Text(const std::vector<std::vector<PrismContour>>& glyphs, double thickness);
+  // skipped, except that their origins (`blanks`) still extend the box from z = 0 to
+  // thickness, as POV-Ray's box of a space does (a trailing space counts in min_extent and
+  // max_extent, which shapes.inc's Text_Width measures). Throws std::invalid_argument for a
+  // bad outline or a thickness <= 0.
+  Text(const std::vector<std::vector<PrismContour>>& glyphs, double thickness,
+       const std::vector<Vec2>& blanks = {});
 
   const char* kind() const override { return "text"; }
   AABB bounds() const override { return bounds_; }

@@ -67,8 +67,12 @@ std::shared_ptr<const Shape> buildText(const TextSpec& s) {
   if (!outline) outline = std::make_shared<TextOutline>(textOutline(fontOf(s), s.string, s.offset));
   if (!outline->error.empty()) throw std::invalid_argument("makeShape: <text>: " + outline->error);
   std::vector<std::vector<PrismContour>> glyphs;
-  for (const PlacedGlyph& g : outline->glyphs) glyphs.push_back(g.contours);
-  return std::make_shared<Text>(glyphs, s.thickness);
+  std::vector<Vec2> blanks;
+  for (const PlacedGlyph& g : outline->glyphs) {
+    glyphs.push_back(g.contours);
+    if (g.contours.empty()) blanks.push_back(g.origin);
+  }
+  return std::make_shared<Text>(glyphs, s.thickness, blanks);
 }
 
 // A POV-Ray string: quotes and backslashes escaped, other characters than printable ASCII

@@ -27,3 +27,11 @@ Show("ring", Ring, <0, 3, -10>, z)
 #debug concat("ball extent ", V(min_extent(Ball)), " ", V(max_extent(Ball)), "\n")
 #debug concat("bored extent ", V(min_extent(Bored)), " ", V(max_extent(Bored)), "\n")
 #debug concat("ring extent ", V(min_extent(Ring)), " ", V(max_extent(Ring)), "\n")
+// A text's box includes its blank glyphs' origins, as shapes.inc's Text_Width measures (its
+// bounds lie within 4e-5 of POV-Ray's, which pads them: shifted by 1 and printed to 3
+// decimals, so that no -0.000 appears).
+#macro V3(A) concat("<", vstr(3, A + 1, ", ", 0, 3), ">") #end
+#declare Blank = text { ttf "cyrvetic.ttf" " " 0.5, 0 }
+#declare Spaced = text { ttf "cyrvetic.ttf" "l  " 1, 0 scale 2 }
+#debug concat("blank extent ", V3(min_extent(Blank)), " ", V3(max_extent(Blank)), "\n")
+#debug concat("spaced extent ", V3(min_extent(Spaced)), " ", V3(max_extent(Spaced)), "\n")
