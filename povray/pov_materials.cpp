@@ -207,17 +207,28 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
   // Reflection.
   s.reflection = kr;
   const bool transmits = !isZero(kt);
-  if (m.fresnel && (transmits || !isZero(kr))) {
-    // reflection { 0, k_r fresnel } gives k_r·F; conserve_energy scales the transmitted
-    // light by 1 − k_r·F, which is Lucent's 1 − F only for k_r = 1.
+  if (m.reflectiveMin) s.reflectionMin = v3(*m.reflectiveMin);
+  s.falloff = m.reflectFalloff;
+  s.exponent = m.reflectExponent;
+  s.conserveEnergy = m.conserveEnergy && transmits;
+  if (m.fresnel && (transmits || !isZero(kr) || m.reflectiveMin)) {
     s.fresnel = true;
-    s.conserveEnergy = transmits;
-    if (transmits && !(kr.x == 1.0 && kr.y == 1.0 && kr.z == 1.0))
-      issues.warning(m.loc, fmt::format("{}: fresnel with reflective {} (not 1): POV-Ray "
-                                        "reduces the transmission by 1 - k_r*F, Lucent by 1 - F",
-                                        name, colourText(m.reflective)));
+    if (transmits && m.fresnelTransmission) {
+      // Lucent's k_t·(1 − F): POV-Ray's conserve_energy gives k_t·(1 − R), R the reflection
+      // MIN + F·(MAX − MIN), which is 1 − F only for MIN 0 and MAX 1.
+      const Vec3 lo = s.reflectionMin.value_or(Vec3(0.0));
+      if (!(kr == Vec3(1.0) && lo == Vec3(0.0)) || m.conserveEnergy)
+        issues.warning(m.loc,
+                       fmt::format("{}: fresnel with reflective {}{}: POV-Ray reduces the "
+                                   "transmission by 1 - R (conserve_energy, R its reflection), "
+                                   "Lucent by 1 - F{} (fresnel-transmission=\"false\" with "
+                                   "conserve-energy=\"true\" is POV-Ray's rule)",
+                                   name, colourText(m.reflective),
+                                   m.reflectiveMin ? " and reflective-min" : " (not 1)",
+                                   m.conserveEnergy ? " and 1 - R" : ""));
+      s.conserveEnergy = true;
+    }
   }
-
   // Interior: index of refraction and absorption (a map's, where an entry transmits).
   const bool entryTransmits = m.mapped() && m.isTransmissive();
   if (transmits || s.fresnel || entryTransmits) {
@@ -603,12 +614,15 @@ void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const Imag
   out.line("specular " + povFloat(s.specular));
   const std::string metallic =
       s.reflectMetallic > 0.0 ? " metallic " + povNumber(s.reflectMetallic) : "";
-  if (s.fresnel) {
-    out.line("reflection { rgb <0, 0, 0>, " + povRgb(s.reflection) + " fresnel on" + metallic +
+  // The minimum: 0 with fresnel when none is given (POV-Ray's own default there), else k_r.
+  const Vec3 lo = s.reflectionMin.value_or(s.fresnel ? Vec3(0.0) : s.reflection);
+  std::string options = s.fresnel ? " fresnel on" : "";
+  if (!s.fresnel && s.falloff != 1.0) options += " falloff " + povNumber(s.falloff);
+  if (s.exponent != 1.0) options += " exponent " + povNumber(s.exponent);
+  if (s.fresnel || lo != s.reflection)
+    out.line("reflection { " + povRgb(lo) + ", " + povRgb(s.reflection) + options + metallic +
              " }");
-  } else {
-    out.line("reflection { " + povRgb(s.reflection) + metallic + " }");
-  }
+  else out.line("reflection { " + povRgb(s.reflection) + options + metallic + " }");
   if (s.conserveEnergy) out.line("conserve_energy");
   // The terms POV-Ray has as they are, each written by its row of the finish table.
   FinishLines finishLines(out);

@@ -39,7 +39,10 @@ struct PovSurface {
   double diffuse = 0.0;
   double specular = 0.0;
   double phong = 0.0;
-  Vec3 reflection{0.0};  // the maximum (fresnel) or constant reflection
+  Vec3 reflection{0.0};  // the maximum (fresnel, or with a minimum) or constant reflection
+  std::optional<Vec3> reflectionMin;  // reflection { MIN, MAX }: facing the viewer
+  double falloff = 1.0;
+  double exponent = 1.0;
   bool fresnel = false;
   bool conserveEnergy = false;
   double reflectMetallic = 0.0;  // reflection { metallic amount }

@@ -92,20 +92,38 @@ Color surfaceResponse(const Material& m, const Color& kd, const Color& metal,
   return sum;
 }
 
+Color reflectivity(const Material& m, double cosView, double n1, double n2, float& f) {
+  f = 1.0f;
+  if (m.fresnel) {
+    f = static_cast<float>(fresnelDielectric(cosView, n1, n2));
+    if (!m.reflectiveMin) return m.reflective * f;
+    return *m.reflectiveMin + f * (m.reflective - *m.reflectiveMin);
+  }
+  if (!m.reflectiveMin) return m.reflective;
+  // POV-Ray's reflection { MIN, MAX falloff k }: MIN facing the viewer, MAX at grazing.
+  const double grazing = 1.0 - cosView;
+  const auto frac = static_cast<float>(
+      m.reflectFalloff == 1.0 ? grazing : std::pow(std::max(grazing, 0.0), m.reflectFalloff));
+  return *m.reflectiveMin + frac * (m.reflective - *m.reflectiveMin);
+}
+
 SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool solid, double n1,
                             double n2, const Color& metal) {
   SecondaryRays rays;
   Color kr = m.reflective, kt = m.transmissive;
-  if (m.fresnel && (maxComponent(kr) > 0.0f || maxComponent(kt) > 0.0f)) {
-    const float f = static_cast<float>(fresnelDielectric(glm::dot(at.v, at.n), n1, n2));
-    kr *= f;
-    kt *= 1.0f - f;
+  if (m.reflectiveMin || (m.fresnel && (maxComponent(kr) > 0.0f || maxComponent(kt) > 0.0f))) {
+    float f = 1.0f;
+    kr = reflectivity(m, glm::dot(at.v, at.n), n1, n2, f);
+    if (m.fresnel && m.fresnelTransmission) kt *= 1.0f - f;
   }
   // POV-Ray's reflection { metallic }: tinted by the metallic colour facing the viewer,
   // untinted at grazing angles.
   if (m.reflectMetallic > 0.0 && maxComponent(kr) > 0.0f)
     kr *= metallicTint(metal, m.reflectMetallic, glm::dot(at.n, at.v));
+  // POV-Ray's conserve_energy: what is transmitted is what is not reflected.
+  if (m.conserveEnergy) kt *= glm::min(Color(1.0f) - kr, Color(1.0f));
   rays.mirror = kr;
+  rays.mirrorPower = 1.0 / m.reflectExponent;
   // With fullTir the split above does not decide whether a ray is totally reflected:
   // POV-Ray reflects it whole wherever the surface transmits at all.
   const Color& transmits = m.fullTir ? m.transmissive : kt;
@@ -134,11 +152,11 @@ SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool soli
 
 Color mirrorWeight(const Material& m, const ShadingPoint& at, double n1, double n2,
                    const Color& metal) {
-  Color kr = m.reflective;
-  if (!(maxComponent(kr) > 0.0f)) return kr;
+  if (!(maxComponent(m.reflective) > 0.0f) && !m.reflectiveMin) return m.reflective;
   // secondaryRays' steps for the mirror ray, with no transmitted share to take.
   const double cosView = glm::dot(at.n, at.v);
-  if (m.fresnel) kr *= static_cast<float>(fresnelDielectric(cosView, n1, n2));
+  float f = 1.0f;
+  Color kr = reflectivity(m, cosView, n1, n2, f);
   if (m.reflectMetallic > 0.0) kr *= metallicTint(metal, m.reflectMetallic, cosView);
   if (m.irid > 0.0) kr *= iridFactor(m, at, cosView);
   return kr;

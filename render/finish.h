@@ -47,7 +47,15 @@ struct SecondaryRays {
   // The surface transmits but the ray cannot leave: the mirror ray took its share.
   bool totallyReflected = false;
   Vec3 refracted{0.0};  // its direction when it bends
+  // The light the mirror ray brings back is raised to this power per channel (1 / the
+  // material's reflect-exponent).
+  double mirrorPower = 1.0;
 };
+
+// k_r at the hit, before the metallic tint: k_r, or with reflective-min or fresnel the
+// reflection at the angle whose cosine with the normal is cosView (n1, n2 the indices
+// fresnel takes). `f` receives the Fresnel reflectance (1 without fresnel).
+Color reflectivity(const Material& m, double cosView, double n1, double n2, float& f);
 // n1: the index on the viewer's side, n2: beyond (both 1 for an opaque material that needs
 // no Fresnel split); solid: whether the surface has an inside. metal: metallicBase at the
 // hit, needed only with reflect-metallic.

@@ -23,6 +23,7 @@ struct LayerMirror {
   Vec3 direction{0.0};
   Vec3 normal{0.0};
   Color weight{0.0f};
+  double power = 1.0;  // SecondaryRays::mirrorPower
 };
 
 class TraceContext {

@@ -237,7 +237,8 @@ Tracer::Shaded Tracer::shadeLayers(const SurfaceSlots::Slot& layers, const Hit& 
       topTint = tint;
     } else {
       const Color w = mirrorWeight(m, ShadingPoint{s.p, n, h.v}, side.n1, side.n2, tint);
-      if (maxComponent(w) > 0.0f) lower.push_back({reflectAboveSurface(-h.v, n, unbent), n, w});
+      if (maxComponent(w) > 0.0f)
+        lower.push_back({reflectAboveSurface(-h.v, n, unbent), n, w, 1.0 / m.reflectExponent});
     }
     through *= m.transmissive;
     if (k == 0) top = std::move(seen);
@@ -260,6 +261,7 @@ Tracer::Shaded Tracer::shadeLayers(const SurfaceSlots::Slot& layers, const Hit& 
     if (out.rays.totallyReflected && l.normal == topN) continue;
     SecondaryRays mirrorOnly;
     mirrorOnly.mirror = l.weight;
+    mirrorOnly.mirrorPower = l.power;
     out.result = withBranches(out.result, s, l.direction, mirrorOnly, depth, weight, media,
                               side.beyond, seed, context);
   }
@@ -392,7 +394,8 @@ Tracer::Interface Tracer::interfaceAt(const Material& m, const Color& transmits,
                                       bool front, const MediaStack& media) const {
   Interface side{1.0, 1.0, media};
   // Only a material that transmits or splits by Fresnel needs the indices.
-  if (!anyPositive(transmits) && !(m.fresnel && anyPositive(m.reflective))) return side;
+  if (!anyPositive(transmits) && !(m.fresnel && (anyPositive(m.reflective) || m.reflectiveMin)))
+    return side;
   if (!solid || front) {
     side.n1 = media.ior();
     side.n2 = m.ior;
@@ -421,8 +424,12 @@ Color Tracer::withBranches(Color result, const SurfaceInfo& s, const Vec3& mirro
     Color w = weight * rays.mirror;
     if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
       ++context.stats.reflected;
-      result += rays.mirror *
-                trace(spawnRay(s, mirror, settings_.epsilon), depth + 1, w, media, seed, context);
+      Color seen =
+          trace(spawnRay(s, mirror, settings_.epsilon), depth + 1, w, media, seed, context);
+      // POV-Ray's reflection exponent.
+      if (rays.mirrorPower != 1.0)
+        seen = glm::pow(glm::max(seen, Color(0.0f)), Color(static_cast<float>(rays.mirrorPower)));
+      result += rays.mirror * seen;
     }
   }
   return result;

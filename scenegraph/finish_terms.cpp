@@ -110,6 +110,45 @@ const std::vector<FinishTerm>& finishTerms() {
                    "true: k_r becomes k_r·F and k_t becomes k_t·(1−F), F the unpolarised "
                    "dielectric Fresnel reflectance for ior."),
            "finish { reflection { 0, k_r fresnel on } conserve_energy }"),
+      term(
+          [] {
+            Attribute a{info("reflective-min", AttrType::Vector, "",
+                             "POV-Ray's reflection { MIN, MAX }: the mirror reflection facing "
+                             "the viewer, k_r being the one at grazing angles; between them "
+                             "k_min + w·(k_r − k_min), w the Fresnel reflectance F with "
+                             "fresnel, else (1 − cos θ)^reflect-falloff. Absent: k_r at "
+                             "every angle (with fresnel: k_r·F, a minimum of 0)."),
+                        nullptr};
+            a.info.schemaType = "color";
+            // Unset is not a colour: only a colour that was set is written (as metallic-color).
+            a.read = [](Material& m, AttributeInput& in) {
+              if (in.has("reflective-min"))
+                m.reflectiveMin =
+                    in.color("reflective-min", m.reflectiveMin.value_or(Color(-1.0f)));
+            };
+            return a;
+          }(),
+          "finish { reflection { MIN, MAX } }, written with the reflection"),
+      term(number("reflect-falloff", &Material::reflectFalloff, NumberRule::nonNegative(),
+                  "With reflective-min and without fresnel: the exponent k of (1 − cos θ) "
+                  "that takes the reflection from reflective-min facing the viewer to "
+                  "reflective at grazing angles, >= 0 (POV-Ray's falloff)."),
+           "finish { reflection { falloff } }, written with the reflection", {{"falloff"}}),
+      term(number("reflect-exponent", &Material::reflectExponent, NumberRule::positive(),
+                  "POV-Ray's reflection { exponent e }: the light the mirror ray brings back, "
+                  "I, counts as I^(1/e) per channel (> 0; 1: as it is)."),
+           "finish { reflection { exponent } }, written with the reflection",
+           {{"reflection_exponent"}}),
+      term(boolean("fresnel-transmission", &Material::fresnelTransmission,
+                   "With fresnel: true takes F from the transmitted light too (k_t·(1−F)); "
+                   "false from the reflection only, as POV-Ray's reflection { fresnel } "
+                   "without conserve_energy."),
+           "POV-Ray's reflection { fresnel } without conserve_energy when false"),
+      term(boolean("conserve-energy", &Material::conserveEnergy,
+                   "POV-Ray's conserve_energy: k_t is multiplied by 1 − k_r per channel (at "
+                   "most 1), k_r the reflection at the hit's angle (with reflective-min, "
+                   "fresnel and reflect-metallic)."),
+           "finish { conserve_energy }", {{"conserve_energy"}}),
       term(boolean("full-tir", &Material::fullTir,
                    "true: under total internal reflection the mirror ray has weight 1 (in "
                    "place of k_r's reflection), as POV-Ray's; false: k_t is added to "

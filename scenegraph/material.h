@@ -67,6 +67,20 @@ struct Material {
   Color transmissive{0.0f};  // k_t
   double ior = 1.0;          // eta
   bool fresnel = false;
+  // POV-Ray's reflection { MIN, MAX }: k_r is the reflection at grazing angles and this the
+  // one facing the viewer; between them by fresnel's F, or without fresnel by
+  // (1 − cos θ)^reflectFalloff (render/finish.cpp: reflectivity). Unset: k_r at every
+  // angle (with fresnel: k_r·F).
+  std::optional<Color> reflectiveMin;
+  double reflectFalloff = 1.0;
+  // POV-Ray's reflection { exponent e }: the reflected light I is taken as I^(1/e).
+  double reflectExponent = 1.0;
+  // fresnel also takes F from the transmitted light (k_t·(1 − F)); false: from the
+  // reflection only, as POV-Ray's reflection { fresnel } without conserve_energy.
+  bool fresnelTransmission = true;
+  // POV-Ray's conserve_energy: k_t is multiplied by 1 − k_r per channel, k_r the
+  // reflection at the hit's angle (capped at 1).
+  bool conserveEnergy = false;
   Color absorption{0.0f};  // Beer–Lambert coefficient per world unit
   // POV-Ray's interior fade: light travelling d inside is multiplied by
   // fadeColor + (1 − fadeColor)/(1 + (d/fadeDistance)^fadePower) (render/optics.h).

@@ -11,41 +11,25 @@ namespace {
 
 Color withFilter(const Color& c, float f, float t) { return c * f + Color(t); }
 
-// The reflection colour Lucent's constant k_r (or, with fresnel, its k_r·F) stands for.
-Color importReflection(const PovFinish& finish, bool transmits, Material& m,
-                       std::vector<std::string>& notes) {
+// POV-Ray's reflection { MIN, MAX fresnel falloff exponent metallic } as Lucent's k_r
+// (MAX, the return value), reflective-min, fresnel (on the reflection only: POV-Ray takes F
+// from the transmitted light only through conserve_energy), reflect-falloff,
+// reflect-exponent and reflect-metallic.
+Color importReflection(const PovFinish& finish, Material& m) {
   const PovReflection& r = finish.reflection;
   if (maxComponent(r.max) <= 0.0f && maxComponent(r.min) <= 0.0f) return Color(0.0f);
-  Color kr = r.max;
   if (r.fresnel) {
-    // POV-Ray: F·MAX + (1 − F)·MIN. Lucent's fresnel: k_r·F (and k_t·(1 − F)).
     m.fresnel = true;
-    if (maxComponent(r.min) > 0.0f)
-      notes.push_back(
-          "reflection { MIN, MAX fresnel } with MIN above 0: Lucent's fresnel reflects "
-          "k_r·F, with no floor (imported as MIN 0)");
-    if (transmits && !(finish.conserveEnergy && r.max == Color(1.0f)))
-      notes.push_back(
-          "reflection with fresnel on a transparent surface: Lucent's fresnel also takes F "
-          "from the transmitted light, POV-Ray only with conserve_energy and reflection "
-          "MAX 1 (then both transmit k_t·(1 − F))");
-  } else if (r.min != r.max) {
-    // (1 − c)^falloff·MAX + (1 − (1 − c)^falloff)·MIN: MIN facing the viewer.
-    kr = r.min;
-    notes.push_back(fmt::format(
-        "reflection {{ MIN, MAX falloff {} }}: POV-Ray's reflection grows from MIN facing the "
-        "viewer to MAX at grazing angles, Lucent's is constant (imported as MIN)",
-        r.falloff));
+    m.fresnelTransmission = false;
   }
+  // Lucent's default minimum: 0 with fresnel (k_r·F), k_r without (constant).
+  if (r.fresnel ? maxComponent(glm::abs(r.min)) > 0.0f : r.min != r.max) m.reflectiveMin = r.min;
+  m.reflectFalloff = r.falloff;
+  m.reflectExponent = r.exponent;
   // reflection { metallic }: reflect-metallic, tinting by the metallic colour (the pigment,
   // set by importMaterial).
   m.reflectMetallic = r.metallic;
-  if (r.exponent != 1.0)
-    notes.push_back(fmt::format(
-        "reflection exponent {}: POV-Ray raises the reflected colour to 1/exponent, Lucent "
-        "reflects it linearly (imported as exponent 1)",
-        r.exponent));
-  return kr;
+  return r.max;
 }
 
 void importFade(const PovInterior& in, Material& m) {
@@ -103,10 +87,10 @@ MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish
   m.iridTurbulence = finish.iridTurbulence;
   const bool transmits = m.isTransmissive();
 
-  m.reflective = importReflection(finish, transmits, m, notes);
-  // conserve_energy: what is transmitted is what is not reflected, per channel.
-  if (finish.conserveEnergy && transmits && !m.fresnel)
-    m.transmissive *= glm::max(Color(1.0f) - m.reflective, Color(0.0f));
+  m.reflective = importReflection(finish, m);
+  // conserve_energy: what is transmitted is what is not reflected, per channel, at the
+  // hit's angle.
+  m.conserveEnergy = finish.conserveEnergy && transmits;
 
   if (finish.metallic > 0.0 && m.hasHighlight()) {
     m.metallic = true;

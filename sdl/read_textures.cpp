@@ -209,10 +209,15 @@ PovFinish SceneReader::readFinish(TokenStream& in, const PovFinish& start) {
 void SceneReader::readReflection(TokenStream& in, PovReflection& r) {
   const Color first = readColour(in).rgb;
   r.min = r.max = first;
-  if (in.allow(",")) r.max = readColour(in).rgb;
+  const bool two = in.allow(",");
+  if (two) r.max = readColour(in).rgb;
   for (;;) {
     const Token t = in.next();
-    if (t.is("}")) return;
+    if (t.is("}")) {
+      // One colour with fresnel is the maximum over a minimum of 0, as POV-Ray reads it.
+      if (r.fresnel && !two) r.min = Color(0.0f);
+      return;
+    }
     if (isWord(t, "fresnel")) r.fresnel = optionalBool(in);
     else if (isWord(t, "falloff")) r.falloff = in.parseFloat();
     else if (isWord(t, "exponent")) r.exponent = in.parseFloat();

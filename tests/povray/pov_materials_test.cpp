@@ -96,8 +96,9 @@ TEST_CASE("fresnel uses reflection { 0, k_r fresnel } with conserve_energy",
       exportMaterial(R"XML(transmissive="1" reflective="0.5" fresnel="true" ior="1.5")XML");
   CHECK(weak.messages() ==
         "test.xml:3:1: warning: material 'm': fresnel with reflective 0.5 "
-        "(not 1): POV-Ray reduces the transmission by 1 - k_r*F, Lucent by "
-        "1 - F\n");
+        "(not 1): POV-Ray reduces the transmission by 1 - R (conserve_energy, R its "
+        "reflection), Lucent by 1 - F (fresnel-transmission=\"false\" with "
+        "conserve-energy=\"true\" is POV-Ray's rule)\n");
 }
 
 TEST_CASE("absorption maps onto an exponential interior fade", "[povray][materials]") {

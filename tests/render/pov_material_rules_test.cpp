@@ -1,6 +1,7 @@
 // POV-Ray's material rules the XML language selects explicitly (docs/scene-language.md,
-// <material>): full-tir, metallic-amount and metallic-color, reflect-metallic, and the
-// interior fade, each against values computed by hand from POV-Ray 3.7's formulas.
+// <material>): full-tir, metallic-amount and metallic-color, reflect-metallic, the interior
+// fade, reflective-min, reflect-falloff, fresnel-transmission, conserve-energy and
+// reflect-exponent, each against values computed by hand from POV-Ray 3.7's formulas.
 #include "render/finish.h"
 #include "render/optics.h"
 
@@ -108,4 +109,85 @@ TEST_CASE("interior fade: fade_color + (1 - fade_color)/(1 + (d/fade_distance)^f
   // Power 1000 and up: exp(−(1 − c)·d/fd), d/fd = 2.
   checkColor(interiorFade(c, 2, 1000, 4, false), std::exp(-1.6), std::exp(-1.0), 1);
   checkColor(interiorFade(c, 2, 1000, kInf, false), 0, 0, 1);
+}
+
+namespace {
+
+// POV-Ray 3.7's unpolarised Fresnel reflectance for the relative index n, written out from
+// its documented formula: g = sqrt(n² + c² − 1), R = ½ (g − c)²/(g + c)² · (1 + (c(g + c) −
+// 1)²/(c(g − c) + 1)²).
+double povFresnel(double c, double n) {
+  const double g = std::sqrt(n * n + c * c - 1.0);
+  const double a = (g - c) / (g + c), b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+  return 0.5 * a * a * (1.0 + b * b);
+}
+
+ShadingPoint viewedAt(double cosView) {
+  return ShadingPoint{Vec3(0), kNormal, Vec3(std::sqrt(1.0 - cosView * cosView), 0, cosView)};
+}
+
+}  // namespace
+
+TEST_CASE("reflective-min and reflect-falloff: MIN + (1 - cos)^k (MAX - MIN), as POV-Ray",
+          "[render][finish][pov-rules]") {
+  Material m;
+  m.reflective = Color(0.9f, 0.5f, 0.3f);
+  m.reflectiveMin = Color(0.1f, 0.0f, 0.3f);
+  m.reflectFalloff = 2.0;
+  for (double c : {1.0, 0.8, 0.5, 0.1}) {
+    INFO(c);
+    const double w = (1.0 - c) * (1.0 - c);
+    checkColor(secondaryRays(m, viewedAt(c), false, 1, 1).mirror, 0.1 + w * 0.8, 0.5 * w, 0.3);
+  }
+  // Falloff 1 (POV-Ray's default): linear in 1 − cos.
+  m.reflectFalloff = 1.0;
+  checkColor(secondaryRays(m, viewedAt(0.25), false, 1, 1).mirror, 0.1 + 0.75 * 0.8, 0.375, 0.3);
+  // No minimum: k_r at every angle.
+  m.reflectiveMin.reset();
+  checkColor(secondaryRays(m, viewedAt(0.25), false, 1, 1).mirror, 0.9, 0.5, 0.3);
+}
+
+TEST_CASE("fresnel with reflective-min: MIN + F (MAX - MIN), the transmission as asked",
+          "[render][finish][pov-rules]") {
+  Material m;
+  m.reflective = Color(0.8f);
+  m.reflectiveMin = Color(0.05f);
+  m.transmissive = Color(0.9f);
+  m.fresnel = true;
+  m.ior = 1.5;
+  for (double c : {1.0, 0.6, 0.2}) {
+    INFO(c);
+    const double f = povFresnel(c, 1.5), r = 0.05 + f * 0.75;
+    SecondaryRays out = secondaryRays(m, viewedAt(c), true, 1.0, 1.5);
+    checkColor(out.mirror, r, r, r);
+    checkColor(out.transmitted, 0.9 * (1 - f), 0.9 * (1 - f), 0.9 * (1 - f));
+    // POV-Ray's reflection { fresnel } alone leaves the transmission whole ...
+    m.fresnelTransmission = false;
+    out = secondaryRays(m, viewedAt(c), true, 1.0, 1.5);
+    checkColor(out.mirror, r, r, r);
+    checkColor(out.transmitted, 0.9, 0.9, 0.9);
+    // ... and conserve_energy takes the reflection from it.
+    m.conserveEnergy = true;
+    out = secondaryRays(m, viewedAt(c), true, 1.0, 1.5);
+    checkColor(out.transmitted, 0.9 * (1 - r), 0.9 * (1 - r), 0.9 * (1 - r));
+    m.fresnelTransmission = true;
+    m.conserveEnergy = false;
+  }
+}
+
+TEST_CASE("conserve-energy: k_t (1 - k_r) per channel, at most k_t",
+          "[render][finish][pov-rules]") {
+  Material m;
+  m.reflective = Color(0.2f, 0.5f, -0.5f);
+  m.transmissive = Color(0.6f);
+  m.conserveEnergy = true;
+  checkColor(secondaryRays(m, viewedAt(0.7), false, 1, 1).transmitted, 0.48, 0.3, 0.6);
+}
+
+TEST_CASE("reflect-exponent: the mirror ray's light taken to the power 1/e",
+          "[render][finish][pov-rules]") {
+  Material m;
+  m.reflective = Color(0.5f);
+  m.reflectExponent = 2.5;
+  CHECK(secondaryRays(m, viewedAt(1.0), false, 1, 1).mirrorPower == Approx(0.4));
 }

@@ -12,11 +12,6 @@ using namespace lucent::sdl;
 
 namespace {
 
-bool mentions(const std::vector<std::string>& notes, const std::string& word) {
-  return std::any_of(notes.begin(), notes.end(),
-                     [&](const std::string& n) { return n.find(word) != std::string::npos; });
-}
-
 void requireColor(const Color& got, const Color& want) {
   INFO("<" << got.r << ", " << got.g << ", " << got.b << "> vs <" << want.r << ", " << want.g
            << ", " << want.b << ">");
@@ -88,34 +83,52 @@ TEST_CASE("reflection: constant, fresnel, falloff, metallic and conserve_energy"
   finish.ambient = Color(0.0f);
   finish.diffuse = 0.0;
 
-  // Constant reflection with conserve_energy: transmission times 1 - reflection.
+  // Constant reflection with conserve_energy: Lucent's conserve-energy, which takes the
+  // reflection at the hit's angle from the transmission.
   finish.reflection.min = finish.reflection.max = Color(0.25f);
   finish.conserveEnergy = true;
   MaterialImport m = importMaterial(glass, finish, interior);
   requireColor(m.material.reflective, Color(0.25f));
-  requireColor(m.material.transmissive, Color(0.75f));
+  requireColor(m.material.transmissive, Color(1.0f));
+  CHECK(m.material.conserveEnergy);
   CHECK(!m.material.fresnel);
+  CHECK(!m.material.reflectiveMin);
 
-  // reflection { 0, 1 fresnel } conserve_energy: Lucent's fresnel exactly.
-  finish.reflection.min = Color(0.0f);
+  // reflection { 0.1, 1 fresnel } conserve_energy: fresnel on the reflection only, over a
+  // minimum, and conserve-energy.
+  finish.reflection.min = Color(0.1f);
   finish.reflection.max = Color(1.0f);
   finish.reflection.fresnel = true;
   m = importMaterial(glass, finish, interior);
   CHECK(m.material.fresnel);
+  CHECK(!m.material.fresnelTransmission);
+  CHECK(m.material.conserveEnergy);
   requireColor(m.material.reflective, Color(1.0f));
+  REQUIRE(m.material.reflectiveMin);
+  requireColor(*m.material.reflectiveMin, Color(0.1f));
   requireColor(m.material.transmissive, Color(1.0f));
   CHECK(m.differences.empty());
-  // Without conserve_energy POV-Ray does not take F from the transmitted light: said.
+  // A minimum of 0 is Lucent's default under fresnel: not written.
+  finish.reflection.min = Color(0.0f);
   finish.conserveEnergy = false;
-  CHECK(mentions(importMaterial(glass, finish, interior).differences, "conserve_energy"));
+  m = importMaterial(glass, finish, interior);
+  CHECK(!m.material.reflectiveMin);
+  CHECK(!m.material.conserveEnergy);
+  CHECK(m.differences.empty());
 
-  // A falloff between two values: the value facing the viewer, said.
+  // A falloff between two values, and an exponent: as they are.
   finish.reflection = PovReflection{};
   finish.reflection.min = Color(0.1f);
   finish.reflection.max = Color(0.8f);
+  finish.reflection.falloff = 3.0;
+  finish.reflection.exponent = 2.0;
   m = importMaterial(PovPigment{}, finish, interior);
-  requireColor(m.material.reflective, Color(0.1f));
-  CHECK(mentions(m.differences, "falloff"));
+  requireColor(m.material.reflective, Color(0.8f));
+  REQUIRE(m.material.reflectiveMin);
+  requireColor(*m.material.reflectiveMin, Color(0.1f));
+  CHECK(m.material.reflectFalloff == 3.0);
+  CHECK(m.material.reflectExponent == 2.0);
+  CHECK(m.differences.empty());
 
   // metallic reflection: reflect-metallic, tinting by the pigment as metallic-color.
   PovPigment gold;

@@ -145,6 +145,29 @@ sphere { 0, 1 material { M } }
   CHECK(red.shininess == Approx(100.0));
   // No texture at all: POV-Ray's default, black.
   checkColor(materialOf(s, topNode(s, 2)).diffuse, Color(0.0f));
+  REQUIRE(got.reflectiveMin);
+  checkColor(*got.reflectiveMin, Color(0.1f));
+}
+
+TEST_CASE("scene reader: reflection { C fresnel } is C over a minimum of 0, as POV-Ray reads it",
+          "[sdl][scene]") {
+  auto r = readScene(R"(
+sphere { 0, 1 finish { reflection { 0.6 fresnel } } interior { ior 1.5 } }
+sphere { 0, 1 finish { reflection { 0.2, 0.6 falloff 2 exponent 3 } } }
+sphere { 0, 1 finish { reflection { 0.6 } } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const Material& fresnel = materialOf(s, topNode(s, 0));
+  CHECK(fresnel.fresnel);
+  CHECK_FALSE(fresnel.reflectiveMin);  // 0: Lucent's default under fresnel
+  checkColor(fresnel.reflective, Color(0.6f));
+  const Material& falloff = materialOf(s, topNode(s, 1));
+  REQUIRE(falloff.reflectiveMin);
+  checkColor(*falloff.reflectiveMin, Color(0.2f));
+  CHECK(falloff.reflectFalloff == 2.0);
+  CHECK(falloff.reflectExponent == 3.0);
+  CHECK_FALSE(materialOf(s, topNode(s, 2)).reflectiveMin);
 }
 
 TEST_CASE("scene reader: #default finish and pigment apply to what follows", "[sdl][scene]") {
