@@ -155,10 +155,6 @@ LightImport importLight(const PovLight& pov) {
     l.fadeDistance = pov.fadeDistance;
     l.fadePower = pov.fadePower;
   }
-  if (pov.looksLike)
-    notes.push_back(
-        "looks_like: ignored (Lucent's lights have no visible shape; the object "
-        "can be written on its own)");
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include "scenegraph/light.h"
 #include "scenegraph/source_loc.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,8 +46,12 @@ struct PovLight {
   bool mediaAttenuation = false;  // media_attenuation: the fogs dim the light
   double fadeDistance = 0.0;      // both needed (> 0) for any fading
   double fadePower = 0.0;
-  bool looksLike = false;  // `looks_like { ... }` was written (Lucent ignores it)
   PovTransform transform;  // translate, rotate, ... inside the block
+  // `looks_like { OBJECT }`: the object, moved to the light's centre as it was there (and
+  // by the modifiers written after it in looks_like's block), with the light's transform
+  // at that point; the light's later transforms move it too (SceneReader::toNode).
+  std::shared_ptr<const struct PovObject> looksLike;
+  PovTransform looksLikeAt;
 };
 
 // POV-Ray's attenuation of a light at distance d: 2 / (1 + (d/fade_distance)^fade_power),

@@ -164,14 +164,22 @@ PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
     } else if (w == "media_interaction") {
       optionalBool(in);  // only media would see it, and media are refused
     } else if (w == "looks_like") {
-      l.looksLike = true;
+      // POV-Ray moves the object to the light's centre, then applies the modifiers
+      // written after it, and draws it with no_shadow (its light shines through it).
+      if (l.looksLike) in.error(t, "only one looks_like per light_source, as POV-Ray allows");
       in.expect("{");
       const Token o = in.next();
-      if (isObjectKeyword(o)) readObject(o, in);
-      else if (!dynamic_cast<const ObjectItem*>(itemOf(o)))
-        in.error(o, "an object expected in looks_like, not " + o.describe());
-      PovObject ignored;
-      readObjectModifiers(ignored, in);
+      PovObject object;
+      if (isObjectKeyword(o)) object = readObject(o, in);
+      else if (const auto* item = use<ObjectItem>(o, in); item && !item->object.light)
+        object = item->object;
+      else in.error(o, "an object expected in looks_like, not " + o.describe());
+      object.transform =
+          object.transform.then(PovTransform::translation(l.transform.point(l.location)));
+      readObjectModifiers(object, in);
+      object.noShadow = true;
+      l.looksLike = std::make_shared<const PovObject>(std::move(object));
+      l.looksLikeAt = l.transform;
     } else {
       unreadInBlock(t, in);
       return l;

@@ -461,7 +461,19 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     imported.light.loc = light.loc;
     n->kind = NodeKind::Light;
     n->light = std::make_unique<Light>(imported.light);
-    return n;
+    if (!light.looksLike) return n;
+    // looks_like: the light and its object in a union, the object moved on by the light's
+    // transforms written after looks_like.
+    PovObject shape = *light.looksLike;
+    shape.transform = shape.transform.then(light.looksLikeAt.inverse()).then(light.transform);
+    auto both = std::make_unique<Node>();
+    both->kind = NodeKind::Union;
+    both->element = "light_source";
+    both->loc = o.loc;
+    both->children.push_back(std::move(n));
+    if (auto object = toNode(shape, inherited, topLevel, in))
+      both->children.push_back(std::move(object));
+    return both;
   }
   // Left out (--skip-unsupported): a shape Lucent has not.
   if (o.kind == NodeKind::Shape && !o.shape && options_.skipUnsupported) return nullptr;

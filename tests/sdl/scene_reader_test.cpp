@@ -527,3 +527,31 @@ TEST_CASE("scene reader: POV-Ray's cylinder camera types 1 to 4, and others refu
                            ": the types are 1 to 4");
   }
 }
+
+TEST_CASE("scene reader: looks_like draws its object at the light, casting no shadow",
+          "[sdl][scene][light]") {
+  // POV-Ray moves the object to the light's centre as it is when looks_like is read, then
+  // applies the modifiers in looks_like's block; transforms of the light written later move
+  // both.
+  auto r = readScene(R"(
+light_source { <0, 5, 0> rgb 1 translate <0, 0, 2>
+  looks_like { sphere { 0, 0.5 } scale <1, 2, 1> }
+  translate <1, 0, 0> }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const Node& both = topNode(s, 0);
+  REQUIRE(both.children.size() == 2);
+  REQUIRE(both.children[0]->light);
+  checkVec(both.children[0]->light->position, Vec3(1, 5, -2));
+  const Node& sphere = *both.children[1];
+  CHECK_FALSE(sphere.shadows);
+  // The scale in looks_like's block comes after the move to <0, 5, 2>: about the origin, so
+  // the centre goes to y 10 and the top to 11.
+  checkVec(Vec3(sphere.parentFromNode * Vec4(0, 0, 0, 1)), Vec3(1, 10, -2));
+  checkVec(Vec3(sphere.parentFromNode * Vec4(0, 0.5, 0, 1)), Vec3(1, 11, -2));
+  CHECK(errorsOf("light_source { 0, 1 looks_like { sphere { 0, 1 } } looks_like { sphere { 0, 1 "
+                 "} } }\n")
+            .at(0) ==
+        "test.pov:1:52: error: only one looks_like per light_source, as POV-Ray allows");
+}
