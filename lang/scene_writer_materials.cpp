@@ -404,7 +404,10 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
         } else if constexpr (std::is_same_v<T, AverageTexture>) {
           Attributes a;
           addPlacement(t.placement, a);
-          openPlaced(out, std::string(T::kind.element), a, false, t.placement);
+          // A material map's average holds no entries (the map's are averaged).
+          const bool empty = t.entries.empty();
+          openPlaced(out, std::string(T::kind.element), a, empty, t.placement);
+          if (empty) return;
           writeEntries("", t.entries, "weight", loc, out, folder);
           out.close(std::string(T::kind.element));
         } else {
@@ -477,7 +480,7 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
     out.open("material-map", {}, false);
     writeTexture(m.mapPattern, m.loc, out, folder);
     for (const MaterialMapEntry& e : m.mapEntries) {
-      out.open("entry", {{"at", xmlNumber(e.at)}}, false);
+      out.open("entry", {{m.mapAverages() ? "weight" : "at", xmlNumber(e.at)}}, false);
       XmlOut children;
       children.depth = out.depth + 1;
       writeMaterialChildren(e.material, children, folder);
