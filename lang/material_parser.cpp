@@ -12,6 +12,7 @@
 #include "texture_parser.h"
 
 #include "scenegraph/finish_terms.h"
+#include "scenegraph/map_blend.h"
 
 #include <algorithm>
 #include <functional>
@@ -134,7 +135,7 @@ void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve
       return;
     }
     MaterialMapEntry entry;
-    if (m.mapAverages()) {
+    if (mapAverages(m)) {
       t.checkAttributes({"weight", "material"});
       if (!t.has("weight"))
         t.error("an <entry> of an averaged <material-map> needs a 'weight' (a positive number)");

@@ -6,6 +6,7 @@
 #include "xml_numbers.h"
 
 #include "scenegraph/finish_terms.h"
+#include "scenegraph/map_blend.h"
 #include "scenegraph/pigment_function.h"
 
 #include <algorithm>
@@ -480,7 +481,7 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
     out.open("material-map", {}, false);
     writeTexture(m.mapPattern, m.loc, out, folder);
     for (const MaterialMapEntry& e : m.mapEntries) {
-      out.open("entry", {{m.mapAverages() ? "weight" : "at", xmlNumber(e.at)}}, false);
+      out.open("entry", {{mapAverages(m) ? "weight" : "at", xmlNumber(e.at)}}, false);
       XmlOut children;
       children.depth = out.depth + 1;
       writeMaterialChildren(e.material, children, folder);

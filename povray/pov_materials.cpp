@@ -1,6 +1,7 @@
 #include "pov_materials.h"
 #include "pov_patterns.h"
 #include "scenegraph/finish_terms.h"
+#include "scenegraph/linear_placement.h"
 #include "scenegraph/map_blend.h"
 #include "scenegraph/overloaded.h"
 #include "scenegraph/shape_registry.h"

@@ -275,7 +275,7 @@ Tracer::Shaded Tracer::shadeMap(const SurfaceSlots::Slot& map, const Hit& h, int
   const Material& m = *map.material;
   SurfaceInfo moved;
   const Hit at{h.leaf, mapEntrySurface(m.mapPattern, h.s, moved), h.v, h.front, h.leaving};
-  if (m.mapAverages()) return shadeAverage(map, at, depth, weight, media, seed, context);
+  if (mapAverages(m)) return shadeAverage(map, at, depth, weight, media, seed, context);
   const MapBlend b = mapBlend(m.mapEntries, mapValueAt(m.mapPattern, h.s, *h.leaf.instance));
   Shaded out;
   out.beyond = media;
@@ -331,7 +331,7 @@ Color Tracer::letThrough(uint32_t slot, const WorldLeaf& leaf, const SurfaceInfo
       const Material& m = *at.material;
       SurfaceInfo moved;
       const SurfaceInfo& e = mapEntrySurface(m.mapPattern, s, moved);
-      if (m.mapAverages()) {
+      if (mapAverages(m)) {
         Color t(0.0f);
         float total = 0.0f;
         for (uint32_t k = 0; k < at.count; ++k) {

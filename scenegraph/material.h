@@ -95,9 +95,7 @@ struct Material {
   // <material-map>: POV-Ray's texture_map and block patterns of textures. The pattern's value
   // at the hit (a <pattern>'s, or the cell of a <checker>, <hexagon> or <brick>: 0, 1, 2)
   // picks the entries and blends their shaded colours (render/surface_slots.h). A material
-  // with a map has no surface of its own: its entries are its surfaces. With an <average>
-  // as its pattern (placement only) every entry is shaded and the colours are averaged,
-  // each entry's `at` its weight (POV-Ray's average of textures).
+  // with a map has no surface of its own: its entries are its surfaces.
   Texture mapPattern;
   std::vector<MaterialMapEntry> mapEntries;
   // <normal>: the shading normal perturbed by a pattern's slope (geometry unchanged).
@@ -113,7 +111,6 @@ struct Material {
   bool isTransmissive() const;
   bool layered() const { return !layers.empty(); }
   bool mapped() const { return !mapEntries.empty(); }
-  bool mapAverages() const { return std::holds_alternative<AverageTexture>(mapPattern); }
   bool isReflective() const { return maxComponent(reflective) > 0.0f; }
   bool isAbsorbing() const { return maxComponent(absorption) > 0.0f; }
   bool hasFade() const { return fadeDistance > 0.0; }

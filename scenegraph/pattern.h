@@ -168,16 +168,6 @@ struct PatternPlacement {
   bool uv = false;
 };
 
-// The linear part of a placement, for normals, error bounds and a map's entries:
-// patternFromObject and then every transform between the warps (POV-Ray's Warp_Normal uses
-// only the transforms).
-inline Mat4 linearPatternFromObject(const PatternPlacement& placement) {
-  Mat4 m = placement.patternFromObject;
-  for (auto w = placement.warps.rbegin(); w != placement.warps.rend(); ++w)
-    if (const auto* t = std::get_if<TransformWarp>(&*w)) m = t->patternFromPrevious * m;
-  return m;
-}
-
 // POV-Ray's crackle modifiers and their defaults (metric 2, form <-1,1,0>, offset 0).
 struct CrackleParams {
   double metric = 2.0;

@@ -5,6 +5,8 @@
 #include "read_support.h"
 
 #include "scenegraph/light_placement.h"
+#include "scenegraph/linear_placement.h"
+#include "scenegraph/map_blend.h"
 
 #include <fmt/format.h>
 
@@ -384,7 +386,7 @@ Material SceneReader::importTexture(const PovTexture& texture, const PovInterior
            "warped (u, v) point, Lucent at (u, v) (the entries' patterns lie differently)");
     for (size_t k = 0; k < texture.mapEntries.size(); ++k) {
       const PovTextureMapEntry& e = texture.mapEntries[k];
-      if (k > 0 && e.at < texture.mapEntries[k - 1].at && !m.mapAverages())
+      if (k > 0 && e.at < texture.mapEntries[k - 1].at && !mapAverages(m))
         keepError(in, at, "a texture_map's entries out of ascending order are not supported");
       m.mapEntries.push_back(
           {e.at, importTexture(e.texture, interior, entriesFromObject, at, in, mapUv)});

@@ -1,6 +1,7 @@
 // POV-Ray 3.7's warps (warps.cpp: Warp_EPoint) applied to a pattern-space point.
 #pragma once
 
+#include "scenegraph/linear_placement.h"
 #include "scenegraph/pattern.h"
 
 namespace lucent {
