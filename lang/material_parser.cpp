@@ -12,6 +12,7 @@
 #include "texture_parser.h"
 
 #include "scenegraph/finish_terms.h"
+#include "scenegraph/map_blend.h"
 
 #include <algorithm>
 #include <functional>
@@ -76,9 +77,26 @@ Material parseLayer(ElementReader& r) {
 
 // The children of a <material> (layers allowed) or a <layer>: one texture, one normal
 // perturbation, and for a material its <layer>s, each over the ones before.
+// The <average> of a <material-map>: its placement (attributes and <warp>s) only, the
+// map's entries being what it averages.
+Texture parseMapAverage(ElementReader& t) {
+  t.checkAttributes(placementAttributes());
+  AverageTexture a;
+  a.placement = parsePlacement(t);
+  t.forEachChild([&](pugi::xml_node c) {
+    if (std::string_view(c.name()) == "warp") return;
+    ElementReader(t.ctx(), t.file(), c)
+        .error(
+            "the <average> of a <material-map> holds only <warp>s: the map's <entry weight>s "
+            "are what it averages");
+  });
+  return a;
+}
+
 // <material-map>: its pattern first (a <pattern> without colour map, or a <checker>,
-// <hexagon> or <brick>, whose colours are not used), then its <entry at material>s or
-// <entry at><material/></entry>s, in ascending order of `at`.
+// <hexagon> or <brick>, whose colours are not used, or an <average>), then its
+// <entry at material>s or <entry at><material/></entry>s, in ascending order of `at`
+// (an average's entries take a `weight` instead, in any order).
 void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve) {
   r.checkAttributes({});
   ParseContext& ctx = r.ctx();
@@ -92,8 +110,8 @@ void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve
     if (name != "entry") {
       if (std::find(textures.begin(), textures.end(), name) == textures.end() || name == "image") {
         t.error(
-            "<material-map> holds its pattern (<pattern>, <checker>, <hexagon> or <brick>) "
-            "and <entry>s, not <" +
+            "<material-map> holds its pattern (<pattern>, <checker>, <hexagon>, <brick> or "
+            "<average>) and <entry>s, not <" +
             std::string(name) + ">");
         return;
       }
@@ -102,7 +120,7 @@ void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve
         return;
       }
       havePattern = true;
-      m.mapPattern = parseTexture(t);
+      m.mapPattern = name == "average" ? parseMapAverage(t) : parseTexture(t);
       if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern);
           p && (!p->map.entries.empty() || !p->pigments.empty()))
         t.error(
@@ -112,16 +130,24 @@ void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve
     }
     if (!havePattern) {
       t.error(
-          "a <material-map> starts with its pattern (<pattern>, <checker>, <hexagon> or "
-          "<brick>), before its <entry>s");
+          "a <material-map> starts with its pattern (<pattern>, <checker>, <hexagon>, <brick> "
+          "or <average>), before its <entry>s");
       return;
     }
-    t.checkAttributes({"at", "material"});
     MaterialMapEntry entry;
-    if (!t.has("at")) t.error("<entry> needs the attribute 'at' (the pattern's value it sits at)");
-    entry.at = t.number("at", 0.0);
-    if (!m.mapEntries.empty() && entry.at < m.mapEntries.back().at)
-      t.attrError("at", "the entries of a <material-map> must be in ascending order of 'at'");
+    if (mapAverages(m)) {
+      t.checkAttributes({"weight", "material"});
+      if (!t.has("weight"))
+        t.error("an <entry> of an averaged <material-map> needs a 'weight' (a positive number)");
+      entry.at = t.number("weight", 1.0, NumberRule::positive());
+    } else {
+      t.checkAttributes({"at", "material"});
+      if (!t.has("at"))
+        t.error("<entry> needs the attribute 'at' (the pattern's value it sits at)");
+      entry.at = t.number("at", 0.0);
+      if (!m.mapEntries.empty() && entry.at < m.mapEntries.back().at)
+        t.attrError("at", "the entries of a <material-map> must be in ascending order of 'at'");
+    }
     std::optional<uint32_t> index;
     if (t.has("material")) index = resolve(t, "material");
     bool inline_ = false;

@@ -6,6 +6,7 @@
 #include "xml_numbers.h"
 
 #include "scenegraph/finish_terms.h"
+#include "scenegraph/map_blend.h"
 #include "scenegraph/pigment_function.h"
 
 #include <algorithm>
@@ -404,7 +405,10 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
         } else if constexpr (std::is_same_v<T, AverageTexture>) {
           Attributes a;
           addPlacement(t.placement, a);
-          openPlaced(out, std::string(T::kind.element), a, false, t.placement);
+          // A material map's average holds no entries (the map's are averaged).
+          const bool empty = t.entries.empty();
+          openPlaced(out, std::string(T::kind.element), a, empty, t.placement);
+          if (empty) return;
           writeEntries("", t.entries, "weight", loc, out, folder);
           out.close(std::string(T::kind.element));
         } else {
@@ -477,7 +481,7 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
     out.open("material-map", {}, false);
     writeTexture(m.mapPattern, m.loc, out, folder);
     for (const MaterialMapEntry& e : m.mapEntries) {
-      out.open("entry", {{"at", xmlNumber(e.at)}}, false);
+      out.open("entry", {{mapAverages(m) ? "weight" : "at", xmlNumber(e.at)}}, false);
       XmlOut children;
       children.depth = out.depth + 1;
       writeMaterialChildren(e.material, children, folder);

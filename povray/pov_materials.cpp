@@ -1,6 +1,7 @@
 #include "pov_materials.h"
 #include "pov_patterns.h"
 #include "scenegraph/finish_terms.h"
+#include "scenegraph/linear_placement.h"
 #include "scenegraph/map_blend.h"
 #include "scenegraph/overloaded.h"
 #include "scenegraph/shape_registry.h"
@@ -434,6 +435,7 @@ void intoMapSpace(Material& m, const Mat4& mapFromPattern, bool mapUv, bool& mix
     if (auto* c = std::get_if<CheckerTexture>(&t)) move(&c->placement);
     if (auto* h = std::get_if<HexagonTexture>(&t)) move(&h->placement);
     if (auto* b = std::get_if<BrickTexture>(&t)) move(&b->placement);
+    if (auto* a = std::get_if<AverageTexture>(&t)) move(&a->placement);
   };
   texture(m.texture);
   if (m.normal) move(&m.normal->pattern.placement);
@@ -446,6 +448,7 @@ const PatternPlacement* mapPlacement(const Texture& t) {
   if (const auto* c = std::get_if<CheckerTexture>(&t)) return &c->placement;
   if (const auto* h = std::get_if<HexagonTexture>(&t)) return &h->placement;
   if (const auto* b = std::get_if<BrickTexture>(&t)) return &b->placement;
+  if (const auto* a = std::get_if<AverageTexture>(&t)) return &a->placement;
   return nullptr;
 }
 
@@ -457,14 +460,15 @@ void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, cons
                             const SourceLoc* loc, PovWriter& out, PovIssues* issues) const {
   PovIssues& report = issues ? *issues : issues_;
   const PatternPlacement* place = mapPlacement(m.mapPattern);
-  const Mat4 mapFromPattern = place ? glm::inverse(place->patternFromObject) : Mat4(1.0);
-  // POV-Ray hands a texture_map's entries the map's warped point; Lucent's entries see the
-  // object point, which the map's transform alone carries into the map's space.
-  if (place && !place->warps.empty())
-    report.warning(m.loc,
-                   "a material map whose pattern has warps: POV-Ray evaluates the entries at "
-                   "the warped point, Lucent at the object point (the entries' patterns lie "
-                   "differently)");
+  // Both hand the entries the map's warped point (render/map_entries.h): Lucent's entries
+  // are placed from the object, composed with the map's linear placement, POV-Ray's from
+  // the map's pattern space.
+  const Mat4 mapFromPattern = place ? glm::inverse(linearPatternFromObject(*place)) : Mat4(1.0);
+  const bool moved = place && (!place->warps.empty() || place->turbulence != Vec3(0.0));
+  if (place && place->uv && moved)
+    report.warning(m.loc, materialLabel(m) +
+                              ": a uv-mapped map with warps or turbulence: POV-Ray evaluates "
+                              "its entries at the warped (u, v) point, Lucent at (u, v)");
   // The entries as POV-Ray sees them, and the layered ones declared first: a texture_map
   // entry is a texture's body, which cannot hold layers unless it names a declared texture.
   std::vector<Material> entries;
@@ -500,10 +504,18 @@ void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, cons
   checkUvShape(uv, mapping, shapeName, loc, materialLabel(m), issues);
   // The rest of the texture is the map POV-Ray evaluates at (u, v, 0).
   if (uv) out.line("uv_mapping");
-  if (place && place->turbulence != Vec3(0.0))
-    report.warning(m.loc, materialLabel(m) +
-                              ": the map's turbulence moves its entries' patterns too in "
-                              "POV-Ray (it evaluates them at the map's turbulent point)");
+  if (const auto* a = std::get_if<AverageTexture>(&m.mapPattern)) {
+    out.line(std::string(AverageTexture::kind.pov));
+    out.open("texture_map");
+    for (size_t k = 0; k < entries.size(); ++k) {
+      out.line("[" + povNumber(m.mapEntries[k].at));
+      entryBody(k);
+      out.line("]");
+    }
+    out.close();
+    writePlacement(a->placement, out);
+    return;
+  }
   if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern)) {
     writePigmentFunctions(p->pattern, out);
     writePatternKeyword(p->pattern, out);

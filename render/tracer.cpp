@@ -3,6 +3,7 @@
 #include "adaptive_area.h"
 #include "finish.h"
 #include "fog.h"
+#include "map_entries.h"
 #include "optics.h"
 #include "patterns/pattern_surface.h"
 #include "sampling.h"
@@ -274,19 +275,42 @@ Tracer::Shaded Tracer::shadeMap(const SurfaceSlots::Slot& map, const Hit& h, int
                                 const Color& weight, const MediaStack& media, PathSeed& seed,
                                 TraceContext& context) const {
   const Material& m = *map.material;
+  SurfaceInfo moved;
+  const Hit at{h.leaf, mapEntrySurface(m.mapPattern, h.s, moved), h.v, h.front, h.leaving};
+  if (mapAverages(m)) return shadeAverage(map, at, depth, weight, media, seed, context);
   const MapBlend b = mapBlend(m.mapEntries, mapValueAt(m.mapPattern, h.s, *h.leaf.instance));
   Shaded out;
   out.beyond = media;
   const bool both = b.b != b.a && b.wb > 0.0f;
   auto shade = [&](uint32_t entry, float w) {
     return w *
-           shadeSlot(map.first + entry, h, depth, weight * w, media, seed, context, false).result;
+           shadeSlot(map.first + entry, at, depth, weight * w, media, seed, context, false).result;
   };
   // POV-Ray shades the upper entry first, so a slope in the lower one reads the normal the
   // upper one bent (its PNormal): only a scene with a slope depends on the order.
   const Color upper = both && patternSurface_ ? shade(b.b, b.wb) : Color(0.0f);
   out.result = shade(b.a, b.wa);
   if (both) out.result += patternSurface_ ? upper : shade(b.b, b.wb);
+  return out;
+}
+
+// POV-Ray's Trace::ComputeAverageTextureColours, as facts: each entry shaded in order with
+// the ray's own weight, its colour times its weight summed in single precision, the sum
+// divided by the weights' sum.
+Tracer::Shaded Tracer::shadeAverage(const SurfaceSlots::Slot& map, const Hit& h, int depth,
+                                    const Color& weight, const MediaStack& media, PathSeed& seed,
+                                    TraceContext& context) const {
+  const Material& m = *map.material;
+  Shaded out;
+  out.beyond = media;
+  float total = 0.0f;
+  for (uint32_t k = 0; k < map.count; ++k) {
+    const auto w = static_cast<float>(m.mapEntries[k].at);
+    out.result +=
+        w * shadeSlot(map.first + k, h, depth, weight, media, seed, context, false).result;
+    total += w;
+  }
+  out.result /= total;
   return out;
 }
 
@@ -306,10 +330,22 @@ Color Tracer::letThrough(uint32_t slot, const WorldLeaf& leaf, const SurfaceInfo
       return t;
     }
     case SurfaceSlots::Kind::map: {
-      const MapBlend b =
-          mapBlend(at.material->mapEntries, mapValueAt(at.material->mapPattern, s, *leaf.instance));
-      Color t = b.wa * letThrough(at.first + b.a, leaf, s);
-      if (b.b != b.a && b.wb > 0.0f) t += b.wb * letThrough(at.first + b.b, leaf, s);
+      const Material& m = *at.material;
+      SurfaceInfo moved;
+      const SurfaceInfo& e = mapEntrySurface(m.mapPattern, s, moved);
+      if (mapAverages(m)) {
+        Color t(0.0f);
+        float total = 0.0f;
+        for (uint32_t k = 0; k < at.count; ++k) {
+          const auto w = static_cast<float>(m.mapEntries[k].at);
+          t += w * letThrough(at.first + k, leaf, e);
+          total += w;
+        }
+        return t / total;
+      }
+      const MapBlend b = mapBlend(m.mapEntries, mapValueAt(m.mapPattern, s, *leaf.instance));
+      Color t = b.wa * letThrough(at.first + b.a, leaf, e);
+      if (b.b != b.a && b.wb > 0.0f) t += b.wb * letThrough(at.first + b.b, leaf, e);
       return t;
     }
   }

@@ -101,8 +101,14 @@ class Tracer {
   // whole, their colours blended by weight (POV-Ray's texture_map).
   Shaded shadeMap(const SurfaceSlots::Slot& map, const Hit& h, int depth, const Color& weight,
                   const MediaStack& media, PathSeed& seed, TraceContext& context) const;
+  // An average of materials: every entry shaded whole at the map's weight, the colours
+  // averaged by the entries' weights (POV-Ray's average of textures). `h` holds the
+  // entries' point (render/map_entries.h).
+  Shaded shadeAverage(const SurfaceSlots::Slot& map, const Hit& h, int depth, const Color& weight,
+                      const MediaStack& media, PathSeed& seed, TraceContext& context) const;
   // What the surface of slot `slot` lets through at a hit (a shadow ray's share): k_t, or a
-  // see-through texture's, the product over layers, the blend over a map's entries.
+  // see-through texture's, the product over layers, the blend over a map's entries (the
+  // weighted mean over an average's).
   Color letThrough(uint32_t slot, const WorldLeaf& leaf, const SurfaceInfo& s) const;
   // `leaf` as the surface of slot `slot` (itself when the slot is its material's).
   WorldLeaf leafOfSlot(const WorldLeaf& leaf, uint32_t slot) const;

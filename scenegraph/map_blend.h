@@ -19,4 +19,10 @@ struct MapBlend {
 
 MapBlend mapBlend(const std::vector<MaterialMapEntry>& entries, double v);
 
+// A map whose pattern is an <average>: every entry is shaded and the colours averaged, each
+// entry's `at` its weight (POV-Ray's average of textures), instead of a blend by value.
+inline bool mapAverages(const Material& m) {
+  return std::holds_alternative<AverageTexture>(m.mapPattern);
+}
+
 }  // namespace lucent

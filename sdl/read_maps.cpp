@@ -46,8 +46,6 @@ TextureMapEntry entryOf(const PovPigment& p, double at) {
   return e;
 }
 
-namespace {
-
 // An entry's value: required in a map, optional in an average's (POV-Ray's weight 1 then),
 // where the entry may start with the body itself.
 double entryValue(TokenStream& in, bool average) {
@@ -59,8 +57,6 @@ double entryValue(TokenStream& in, bool average) {
   in.allow(",");
   return value;
 }
-
-}  // namespace
 
 // pigment_pattern's `{ PIGMENT_BODY }`: the pigment as a map's entry, placed in the
 // pattern's space by its own transforms.

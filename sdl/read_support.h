@@ -23,6 +23,10 @@ inline bool isWord(const Token& t, std::string_view word) {
 // arms, the fractals' constant and iterations; the type's default frequency.
 void readPatternArguments(const Token& t, TokenStream& in, PatternSpec& s);
 
+// A map entry's value (read_maps.cpp): required in a map, an optional weight (1 if left
+// out) in an average's.
+double entryValue(TokenStream& in, bool average);
+
 // A shape's keyword, those Lucent refuses included (read_shapes.cpp).
 bool isShapeKeyword(std::string_view word);
 

@@ -372,7 +372,7 @@ bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& te
       tex.mapEntries.push_back({double(cell), readTexture(in, defaultTexture())});
       in.allow(",");
     }
-  } else if (block || !readPatternKeyword(t, in, pattern)) {
+  } else if (w != "average" && (block || !readPatternKeyword(t, in, pattern))) {
     // A pattern Lucent lacks is refused as such; `tiles` and a block pattern without its
     // list of textures as a pattern of textures.
     if (block || !refusePattern(t, in))
@@ -381,7 +381,10 @@ bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& te
                     "pattern, and the texture lists of checker, hexagon and brick");
     return false;
   } else {
-    // The pattern's own arguments are read; its modifiers and the map follow.
+    // The pattern's own arguments are read; its modifiers and the map follow. An average
+    // (of textures) takes only a placement, and weights in its map.
+    const bool average = w == "average";
+    if (average) pattern.pattern = AverageTexture{};
     tex.mapEntries.clear();
     for (;;) {
       const Token k = in.next();
@@ -392,8 +395,12 @@ bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& te
           if (open.is("}")) break;
           if (!open.is("["))
             in.error(open, "'[' or '}' expected in a texture_map, not " + open.describe());
-          const double at = in.parseFloat();
-          in.allow(",");
+          const SourceLoc valueAt = in.peek().loc();
+          const double at = entryValue(in, average);
+          if (average && !(at > 0.0))
+            keepError(in, valueAt,
+                      "an average's weight must be above 0 (Lucent's averages take positive "
+                      "weights)");
           tex.mapEntries.push_back({at, readTextureBody(in, defaultTexture(), "]")});
         }
         if (tex.mapEntries.empty()) in.error(k, "a texture_map needs at least one entry");
@@ -468,7 +475,8 @@ bool SceneReader::isTexturePattern(const Token& t) const {
   const std::string_view w = t.text();
   for (const PatternTypeInfo& info : kPatternTypes)
     if (info.pov == w) return true;
-  return w == "checker" || w == "hexagon" || w == "brick" || w == "tiles" || isLackingPattern(t);
+  return w == "checker" || w == "hexagon" || w == "brick" || w == "tiles" || w == "average" ||
+         isLackingPattern(t);
 }
 
 PovInterior SceneReader::readInterior(TokenStream& in, const PovInterior& start) {

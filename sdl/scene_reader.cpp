@@ -5,6 +5,8 @@
 #include "read_support.h"
 
 #include "scenegraph/light_placement.h"
+#include "scenegraph/linear_placement.h"
+#include "scenegraph/map_blend.h"
 
 #include <fmt/format.h>
 
@@ -32,7 +34,6 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"double_illuminate", "surfaces lit from both sides"},
       {"material_map", "material maps; Lucent has one material per object"},
       {"texture_map", "maps of textures; Lucent has one texture layer per material"},
-      {"average", "averages of textures; Lucent averages pigments and normals"},
       {"image_pattern", "image patterns"},
       {"uv_mapping",
        "uv_mapping of normals and objects; Lucent reads a uv-mapped pigment or texture at a "
@@ -375,22 +376,20 @@ Material SceneReader::importTexture(const PovTexture& texture, const PovInterior
       p->patternFromObject = patternFromObject;
       p->uv = mapUv;
     }
+    // The entries are shaded at the map's warped point carried back by its linear
+    // placement (render/map_entries.h), so they are placed from the map's space by it.
     const PatternPlacement* place = placementOf(m.mapPattern);
-    if (place && place->turbulence != Vec3(0.0))
+    const Mat4 entriesFromObject = place ? linearPatternFromObject(*place) : patternFromObject;
+    if (place && mapUv && (place->turbulence != Vec3(0.0) || !place->warps.empty()))
       warn(in, at,
-           "a texture_map's turbulence: POV-Ray evaluates its entries at the turbulent point, "
-           "Lucent at the point the map's transform gives (the entries' patterns lie "
-           "differently)");
-    if (place && !place->warps.empty())
-      warn(in, at,
-           "a texture_map's warps: POV-Ray evaluates its entries at the warped point, Lucent "
-           "at the point the map's transform gives (the entries' patterns lie differently)");
+           "a uv-mapped texture_map's warps or turbulence: POV-Ray evaluates its entries at the "
+           "warped (u, v) point, Lucent at (u, v) (the entries' patterns lie differently)");
     for (size_t k = 0; k < texture.mapEntries.size(); ++k) {
       const PovTextureMapEntry& e = texture.mapEntries[k];
-      if (k > 0 && e.at < texture.mapEntries[k - 1].at)
+      if (k > 0 && e.at < texture.mapEntries[k - 1].at && !mapAverages(m))
         keepError(in, at, "a texture_map's entries out of ascending order are not supported");
       m.mapEntries.push_back(
-          {e.at, importTexture(e.texture, interior, patternFromObject, at, in, mapUv)});
+          {e.at, importTexture(e.texture, interior, entriesFromObject, at, in, mapUv)});
     }
     m.fullTir = m.isTransmissive();
     return m;

@@ -154,11 +154,4 @@ Vec3 applyWarps(const std::vector<PatternWarp>& warps, Vec3 p) {
   return p;
 }
 
-Mat4 linearPatternFromObject(const PatternPlacement& placement) {
-  Mat4 m = placement.patternFromObject;
-  for (auto w = placement.warps.rbegin(); w != placement.warps.rend(); ++w)
-    if (const auto* t = std::get_if<TransformWarp>(&*w)) m = t->patternFromPrevious * m;
-  return m;
-}
-
 }  // namespace lucent
