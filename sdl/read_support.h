@@ -23,6 +23,11 @@ inline bool isWord(const Token& t, std::string_view word) {
 // arms, the fractals' constant and iterations; the type's default frequency.
 void readPatternArguments(const Token& t, TokenStream& in, PatternSpec& s);
 
+// POV-Ray's check of a pavement once its block is read (`end`, its closing token): the
+// corners' types modulo 3, the form modulo 4 (squares) or 3, the sides, tiles and
+// arrangement within POV-Ray's limits, else its errors. Other patterns (or none) pass.
+void settlePavement(const Token& end, TokenStream& in, PatternSpec* s);
+
 // A shape's keyword, those Lucent refuses included (read_shapes.cpp).
 bool isShapeKeyword(std::string_view word);
 
