@@ -12,6 +12,8 @@
 #include "texture_map_parser.h"
 #include "warp_parser.h"
 
+#include "scenegraph/pavement.h"
+
 #include <cmath>
 
 namespace lucent {
@@ -34,15 +36,42 @@ const std::vector<std::pair<std::string_view, WaveShape>> kWaves{
 
 const std::vector<std::string_view> kPlacementAttributes{"transform", "turbulence", "octaves",
                                                          "omega",     "lambda",     "mapping"};
-const std::vector<std::string_view> kValueAttributes{
-    "type",     "axis",        "arms",        "frequency",
-    "phase",    "wave",        "exponent",    "noise-generator",
-    "control0", "control1",    "iterations",  "power",
-    "c",        "form",        "magnet-type", "exterior",
-    "interior", "agate-turb",  "function",    "direction",
-    "point-at", "slope-range", "altitude",    "altitude-range",
-    "tiling",   "metric",      "offset",      "solid",
-    "size",     "coords"};
+const std::vector<std::string_view> kValueAttributes{"type",
+                                                     "axis",
+                                                     "arms",
+                                                     "frequency",
+                                                     "phase",
+                                                     "wave",
+                                                     "exponent",
+                                                     "noise-generator",
+                                                     "control0",
+                                                     "control1",
+                                                     "iterations",
+                                                     "power",
+                                                     "c",
+                                                     "form",
+                                                     "magnet-type",
+                                                     "exterior",
+                                                     "interior",
+                                                     "agate-turb",
+                                                     "function",
+                                                     "direction",
+                                                     "point-at",
+                                                     "slope-range",
+                                                     "altitude",
+                                                     "altitude-range",
+                                                     "tiling",
+                                                     "metric",
+                                                     "offset",
+                                                     "solid",
+                                                     "size",
+                                                     "coords",
+                                                     "sides",
+                                                     "tiles",
+                                                     "pavement",
+                                                     "exterior-corners",
+                                                     "interior-corners",
+                                                     "pavement-form"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -207,10 +236,41 @@ void parseFacetsAttributes(ElementReader& r, PatternSpec& s) {
   if (facets && r.has("metric")) f.metric = r.number("metric", f.metric);
 }
 
+// pavement's sides, tiles, arrangement and corners (POV-Ray's number_of_sides,
+// number_of_tiles, pattern, exterior, interior and form), within POV-Ray's limits.
+void parsePavementAttributes(ElementReader& r, PatternSpec& s) {
+  const bool pavement = s.type == PatternType::pavement;
+  PavementParams& v = s.pavement;
+  if (onlyFor(r, "sides", pavement, "pavement", s.type)) {
+    v.sides = static_cast<int>(r.integer("sides", v.sides, 3, 6));
+    if (v.sides == 5)
+      r.attrError("sides", "expected 3, 4 or 6 (triangles, squares or hexagons), got 5");
+  }
+  const int maxTiles = v.sides == 6 ? 5 : 6;
+  if (onlyFor(r, "tiles", pavement, "pavement", s.type))
+    v.tiles = static_cast<int>(r.integer("tiles", v.tiles, 1, maxTiles));
+  if (onlyFor(r, "pavement", pavement, "pavement", s.type)) {
+    v.number = static_cast<int>(r.integer("pavement", v.number, 1, 35));
+    const int count = pavementArrangements(v.sides, v.tiles);
+    if (count > 0 && v.number > count)
+      r.attrError("pavement", "tiles of " + std::to_string(v.tiles) + " cells with " +
+                                  std::to_string(v.sides) + " sides have arrangements 1 to " +
+                                  std::to_string(count) + " (POV-Ray's), got " +
+                                  std::to_string(v.number));
+  }
+  if (onlyFor(r, "exterior-corners", pavement, "pavement", s.type))
+    v.exterior = static_cast<int>(r.integer("exterior-corners", v.exterior, 0, 2));
+  if (onlyFor(r, "interior-corners", pavement, "pavement", s.type))
+    v.interior = static_cast<int>(r.integer("interior-corners", v.interior, 0, 2));
+  if (onlyFor(r, "pavement-form", pavement, "pavement", s.type))
+    v.form = static_cast<int>(r.integer("pavement-form", v.form, 0, 3));
+}
+
 // The modifiers of slope, facets, agate, quilted, tiling, mandel, julia and magnet.
 void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
   parseSlopeAttributes(r, s);
   parseFacetsAttributes(r, s);
+  parsePavementAttributes(r, s);
   const bool tiling = s.type == PatternType::tiling;
   if (tiling && !r.has("tiling"))
     r.error(r.tag() + " type=\"tiling\" needs 'tiling' (which of POV-Ray's tilings, 1 to 27)");

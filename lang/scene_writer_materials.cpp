@@ -132,6 +132,20 @@ void addTypeAttributes(const PatternSpec& s, const SourceLoc& loc, Attributes& a
     a.emplace_back("function", text);
   }
   if (s.type == PatternType::tiling) a.emplace_back("tiling", std::to_string(s.tiling));
+  if (s.type == PatternType::pavement) {  // what differs from the defaults
+    const PavementParams& v = s.pavement;
+    const PavementParams pd;
+    const std::pair<const char*, int> values[] = {{"sides", v.sides},
+                                                  {"tiles", v.tiles},
+                                                  {"pavement", v.number},
+                                                  {"exterior-corners", v.exterior},
+                                                  {"interior-corners", v.interior},
+                                                  {"pavement-form", v.form}};
+    const int defaults[] = {pd.sides, pd.tiles, pd.number, pd.exterior, pd.interior, pd.form};
+    for (int i = 0; i < 6; ++i)
+      if (values[i].second != defaults[i])
+        a.emplace_back(values[i].first, std::to_string(values[i].second));
+  }
   if (s.type == PatternType::crackle) {
     if (s.crackle.metric != d.crackle.metric) a.emplace_back("metric", xmlNumber(s.crackle.metric));
     if (s.crackle.form != d.crackle.form) a.emplace_back("form", xmlVector(s.crackle.form));

@@ -141,6 +141,13 @@ void writeValueModifiers(const PatternSpec& s, PovWriter& out) {
   if (s.type == PatternType::facets)
     out.line("size " + povNumber(s.facets.size) + " coords " + povNumber(s.facets.coords) +
              " metric " + povNumber(s.facets.metric));
+  if (s.type == PatternType::pavement) {  // always written, as crackle's
+    const PavementParams& v = s.pavement;
+    out.line("number_of_sides " + std::to_string(v.sides) + " number_of_tiles " +
+             std::to_string(v.tiles) + " pattern " + std::to_string(v.number));
+    out.line("exterior " + std::to_string(v.exterior) + " interior " + std::to_string(v.interior) +
+             " form " + std::to_string(v.form));
+  }
   if (s.type == PatternType::quilted)
     out.line("control0 " + povNumber(s.quilted.control0) + " control1 " +
              povNumber(s.quilted.control1));

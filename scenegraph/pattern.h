@@ -55,6 +55,7 @@ enum class PatternType {
   slope,
   tiling,
   facets,
+  pavement,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -135,6 +136,8 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "one of POV-Ray's 27 tilings of the x-z plane: 1 on a tile's edge, falling inside it"},
     {PatternType::facets, "facets", "facets", false, WaveShape::ramp, false,
      "flat facets: the normal (or, with coords, the point) snapped to the nearest random point"},
+    {PatternType::pavement, "pavement", "pavement", true, WaveShape::ramp, false,
+     "POV-Ray's pavements of the x-z plane: tiles of 1 to 6 triangles, squares or hexagons"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 
@@ -210,6 +213,13 @@ struct FacetsParams {
   bool operator!=(const FacetsParams& o) const { return !(*this == o); }
 };
 
+// POV-Ray's pavement: tiles made of `tiles` cells with `sides` sides, arrangement `number`
+// (1..the count for sides and tiles, render/patterns/pavement_layouts.h), the shapes of
+// its outer and inner corners (0 sharp, 1 cut, 2 rounded) and `form`, its turning cells'.
+struct PavementParams {
+  int sides = 3, tiles = 1, number = 1, exterior = 0, interior = 0, form = 0;
+};
+
 // POV-Ray's quilted modifiers: the cubic that rounds each cube (defaults 1 and 1).
 struct QuiltedParams {
   double control0 = 1.0;
@@ -281,10 +291,11 @@ struct PatternSpec {
   CrackleParams crackle;
   QuiltedParams quilted;
   FractalParams fractal;
-  double agateTurb = 1.0;  // agate's turbulence scale (POV-Ray's agate_turb)
-  SlopeParams slope;       // type slope
-  int tiling = 1;          // tiling's number, 1..27 (render/patterns/tiling.h)
-  FacetsParams facets;     // type facets
+  double agateTurb = 1.0;   // agate's turbulence scale (POV-Ray's agate_turb)
+  SlopeParams slope;        // type slope
+  int tiling = 1;           // tiling's number, 1..27 (render/patterns/tiling.h)
+  FacetsParams facets;      // type facets
+  PavementParams pavement;  // type pavement
   std::shared_ptr<const PatternFunction> function;  // type function
   std::shared_ptr<const TextureMapEntry> pigment;   // type pigment (pigment-pattern)
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin

@@ -7,6 +7,7 @@
 #include "scene_reader.h"
 
 #include "lang/expression.h"
+#include "scenegraph/pavement.h"
 
 #include <algorithm>
 #include <string>
@@ -45,9 +46,8 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 }
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
-constexpr std::string_view kPatternsLucentLacks[] = {"aoi",    "cubic",      "density_file",
-                                                     "object", "pavement",   "potential",
-                                                     "square", "triangular", "image_pattern"};
+constexpr std::string_view kPatternsLucentLacks[] = {
+    "aoi", "cubic", "density_file", "object", "square", "triangular", "potential", "image_pattern"};
 
 const PatternTypeInfo* patternType(const Token& t) {
   if (t.kind != TokenKind::Keyword) return nullptr;
@@ -67,6 +67,24 @@ std::string lucentPatternNames() {
     names += (names.empty() ? "" : ", ") + std::string(info.pov);
   }
   return names + ", checker, hexagon, brick";
+}
+
+// POV-Ray keeps pavement's numbers as bytes (unsigned char).
+int pavementByte(TokenStream& in) { return static_cast<int>(in.parseFloat()) & 0xff; }
+
+// pavement's number_of_sides, number_of_tiles, pattern, exterior, interior and form (true),
+// checked when its block ends (settlePavement).
+bool readPavementModifier(std::string_view w, TokenStream& in, PatternSpec& s) {
+  if (s.type != PatternType::pavement) return false;
+  PavementParams& v = s.pavement;
+  if (w == "number_of_sides") v.sides = pavementByte(in);
+  else if (w == "number_of_tiles") v.tiles = pavementByte(in);
+  else if (w == "pattern") v.number = pavementByte(in);
+  else if (w == "exterior") v.exterior = pavementByte(in);
+  else if (w == "interior") v.interior = pavementByte(in);
+  else if (w == "form") v.form = pavementByte(in);
+  else return false;
+  return true;
 }
 
 // crackle's form <a, b, c>, metric M (a vector in old scenes: its x counts), offset O and
@@ -114,6 +132,27 @@ void readSlope(const Token& t, TokenStream& in, SlopeParams& p) {
   in.expect("}");
   if (!p.pointAt && p.direction == Vec3(0.0) && p.altitude == Vec3(0.0))
     in.error(t, "slope: zero length for both slope and altitude (POV-Ray's error)");
+}
+
+void settlePavement(const Token& end, TokenStream& in, PatternSpec* s) {
+  if (!s || s->type != PatternType::pavement) return;
+  PavementParams& v = s->pavement;
+  v.interior %= 3;
+  v.exterior %= 3;
+  if (v.sides != 3 && v.sides != 4 && v.sides != 6)
+    in.error(end, "number_of_sides of pavement must be 3, 4 or 6 (POV-Ray's error), got " +
+                      std::to_string(v.sides));
+  const int maxTiles = v.sides == 6 ? 5 : 6;
+  if (v.tiles < 1 || v.tiles > maxTiles)
+    in.error(end, "number_of_tiles of pavement must be between 1 and " + std::to_string(maxTiles) +
+                      " (POV-Ray's error), got " + std::to_string(v.tiles));
+  const int count = pavementArrangements(v.sides, v.tiles);
+  if (v.number < 1 || v.number > count)
+    in.error(end, "pattern value for pavement is out of range (POV-Ray's error): " +
+                      std::to_string(v.tiles) + " tiles of " + std::to_string(v.sides) +
+                      " sides have patterns 1 to " + std::to_string(count) + ", got " +
+                      std::to_string(v.number));
+  v.form %= v.sides == 4 ? 4 : 3;
 }
 
 void readPatternArguments(const Token& t, TokenStream& in, PatternSpec& s) {
@@ -308,6 +347,7 @@ bool SceneReader::readPatternModifier(const Token& t, TokenStream& in, PatternSp
     // facets' (POV-Ray: "Keyword 'coords' [or 'size'] can only be used in a facets pattern").
     if (s.type != PatternType::facets) in.error(t, "'" + std::string(w) + "' is for facets");
     (w == "size" ? s.facets.size : s.facets.coords) = in.parseFloat();
+  } else if (spec && readPavementModifier(w, in, s)) {
   } else if (w == "metric" && s.type == PatternType::facets) {
     s.facets.metric = in.parseVector()[0];  // a vector for old scenes: its x counts
   } else if (w == "form" || w == "metric" || w == "offset" || w == "solid") {

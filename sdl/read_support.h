@@ -26,6 +26,10 @@ void readPatternArguments(const Token& t, TokenStream& in, PatternSpec& s);
 // A map entry's value (read_maps.cpp): required in a map, an optional weight (1 if left
 // out) in an average's.
 double entryValue(TokenStream& in, bool average);
+// POV-Ray's check of a pavement once its block is read (`end`, its closing token): the
+// corners' types modulo 3, the form modulo 4 (squares) or 3, the sides, tiles and
+// arrangement within POV-Ray's limits, else its errors. Other patterns (or none) pass.
+void settlePavement(const Token& end, TokenStream& in, PatternSpec* s);
 
 // A shape's keyword, those Lucent refuses included (read_shapes.cpp).
 bool isShapeKeyword(std::string_view word);

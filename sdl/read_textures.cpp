@@ -29,6 +29,7 @@ PovPigment SceneReader::readPigmentBody(TokenStream& in, const PovPigment& start
     const bool atStart = first;
     first = false;
     if (t.is(inEntry ? "]" : "}")) {
+      settlePavement(t, in, specOf(p.pattern));
       resolvePigmentColours(p, in, inEntry);
       if (uvBlock) p.uvTransform = p.transform;
       return p;
@@ -82,6 +83,7 @@ PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, b
   for (;;) {
     const Token t = in.next();
     if (t.is(inEntry ? "]" : "}")) {
+      settlePavement(t, in, &n.spec.pattern);
       if (n.average && n.spec.average.empty())
         keepError(in, t.loc(), "'average' needs a normal_map (the normals it averages)");
       return n;
@@ -389,6 +391,7 @@ bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& te
     for (;;) {
       const Token k = in.next();
       if (isWord(k, "texture_map")) {
+        settlePavement(k, in, specOf(pattern.pattern));
         in.expect("{");
         for (;;) {
           const Token open = in.next();

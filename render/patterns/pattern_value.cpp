@@ -3,6 +3,7 @@
 #include "crackle.h"
 #include "fractal.h"
 #include "pattern_point.h"
+#include "pavement.h"
 #include "primitives/noise.h"
 #include "render/texture.h"
 #include "scenegraph/turbulence.h"
@@ -249,6 +250,8 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
       return cellsValue(p);
     case PatternType::tiling:
       return tilingValue(spec.tiling, p);
+    case PatternType::pavement:
+      return pavementValue(spec.pavement, p);
     case PatternType::pigment:
       return pigmentGrey(spec, p);
     case PatternType::slope:

@@ -141,6 +141,11 @@ TEST_CASE("scene reader image: tilings as normals, bent by their slope",
   requireSameImageAsPovray("tilings_normal.pov", 160, 80);
 }
 
+TEST_CASE("scene reader image: pavements as a pigment and as normals",
+          "[sdl][scene][image][pavement]") {
+  requireSameImageAsPovray("pavements.pov", 240, 80);
+}
+
 TEST_CASE("scene reader image: uv_mapping of pigments, textures and texture maps on meshes",
           "[sdl][scene][image][povray][texture][uv-mapping]") {
   requireSameImageAsPovray("uv_mapping.pov", 160, 120);

@@ -257,6 +257,70 @@ tiling_cases+=(
 run_pov "$work/tilings.pov" +W8 +H8 "+O$work/discard.png"
 cp "$work/tilings.csv" "$out/tilings.csv"
 
+# --- pavements.csv: POV-Ray's pavements, every arrangement and every corner modifier ----------
+# tests/patterns/pavement_test.cpp reads the case names: sSIDES_tTILES_pN (60 points with the
+# default modifiers) and sSIDES_tTILES_pN_eE_iI_fF (3 points each of every exterior, interior
+# and form, 0..2, 0..2 and 0..3), and two placed cases. Read through a grey pigment as the
+# tilings are (POV-Ray 3.7 takes neither in a pattern function).
+{
+  header
+  cat <<POV
+#fopen Out "$work/pavements.csv" write
+#write (Out, "case,kx,ky,kz,value\n")
+#declare P = 0;
+#declare G = 0;
+#macro Pavement(S, T, N, E, I, F, Name, Count, Seed)
+  #undef P
+  #undef G
+  #declare P = function { pigment { pavement number_of_sides S number_of_tiles T pattern N
+    exterior E interior I form F color_map { [0 rgb 0] [1 rgb 1] } } }
+  #declare G = function { P(x, y, z).red }
+  #macro Row(KX, KY, KZ, X, Y, Z)
+    #write (Out, Name, ",", Ints(KX, KY, KZ), ",", str(G(X, Y, Z), 0, 17), "\n")
+  #end
+  Points(Count, Seed, 8)
+#end
+#declare Counts = array[3][6] { {1, 1, 1, 3, 4, 12}, {1, 1, 2, 5, 12, 35}, {1, 1, 3, 7, 22, 0} }
+#declare Sides = array[3] { 3, 4, 6 }
+#declare Seed = 700;
+#for (K, 0, 2)
+  #for (T, 1, 6)
+    #for (N, 1, Counts[K][T - 1])
+      #declare Base = concat("s", str(Sides[K], 0, 0), "_t", str(T, 0, 0), "_p", str(N, 0, 0));
+      #declare Seed = Seed + 1;
+      Pavement(Sides[K], T, N, 0, 0, 0, Base, 60, Seed)
+      #for (E, 0, 2) #for (I, 0, 2) #for (F, 0, 3)
+        #declare Seed = Seed + 1;
+        Pavement(Sides[K], T, N, E, I, F,
+                 concat(Base, "_e", str(E, 0, 0), "_i", str(I, 0, 0), "_f", str(F, 0, 0)), 3, Seed)
+      #end #end #end
+    #end
+  #end
+#end
+#undef P
+#undef G
+#declare P = function { pigment { pavement number_of_sides 4 number_of_tiles 5 pattern 8
+  interior 2 scale 0.7 rotate <10, 30, 0> translate <0.3, 0, -1> color_map { [0 rgb 0] [1 rgb 1] } } }
+#declare G = function { P(x, y, z).red }
+#macro Row(KX, KY, KZ, X, Y, Z)
+  #write (Out, "pavement_placed,", Ints(KX, KY, KZ), ",", str(G(X, Y, Z), 0, 17), "\n")
+#end
+Points(100, 690, 6)
+#undef P
+#undef G
+#declare P = function { pigment { pavement number_of_sides 6 number_of_tiles 4 pattern 2
+  form 2 frequency 2 phase 0.1 sine_wave turbulence 0.3 color_map { [0 rgb 0] [1 rgb 1] } } }
+#declare G = function { P(x, y, z).red }
+#macro Row(KX, KY, KZ, X, Y, Z)
+  #write (Out, "pavement_waved,", Ints(KX, KY, KZ), ",", str(G(X, Y, Z), 0, 17), "\n")
+#end
+Points(100, 691, 6)
+#fclose Out
+POV
+} >"$work/pavements.pov"
+run_pov "$work/pavements.pov" +W8 +H8 "+O$work/discard.png"
+cp "$work/pavements.csv" "$out/pavements.csv"
+
 # --- normals.csv: perturbed normals, rendered ----------------------------------------------
 # A plane z = 0 facing the camera (normal -z) seen by an orthographic camera over the square
 # of side 4 centred at (0.375, -1.25), 16x16 pixels, pixel (i, j) at x = 0.375 + 4((i+0.5)/16
