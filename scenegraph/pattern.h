@@ -55,6 +55,7 @@ enum class PatternType {
   slope,
   tiling,
   facets,
+  image,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -135,6 +136,8 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "one of POV-Ray's 27 tilings of the x-z plane: 1 on a tile's edge, falling inside it"},
     {PatternType::facets, "facets", "facets", false, WaveShape::ramp, false,
      "flat facets: the normal (or, with coords, the point) snapped to the nearest random point"},
+    {PatternType::image, "image-pattern", "image_pattern", true, WaveShape::ramp, false,
+     "the grey level (or with use-alpha the transparency) of a projected image"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 
@@ -244,9 +247,10 @@ struct FractalParams {
   bool operator!=(const FractalParams& o) const { return !(*this == o); }
 };
 
-// POV-Ray's default frequency: 0 for quilted (its value is used unwrapped), 1 otherwise.
+// POV-Ray's default frequency: 0 for quilted and image_pattern (their values are used
+// unwrapped), 1 otherwise.
 constexpr double defaultFrequency(PatternType type) {
-  return type == PatternType::quilted ? 0.0 : 1.0;
+  return type == PatternType::quilted || type == PatternType::image ? 0.0 : 1.0;
 }
 
 // The patterns that take FractalParams.
@@ -268,6 +272,7 @@ struct PatternFunction {
 // pigment-pattern's pigment: a plain colour or a texture (scenegraph/texture_spec.h; its
 // `at` unused).
 struct TextureMapEntry;
+struct ImagePattern;  // image_pattern.h
 
 struct PatternSpec {
   PatternType type = PatternType::bozo;
@@ -287,6 +292,7 @@ struct PatternSpec {
   FacetsParams facets;     // type facets
   std::shared_ptr<const PatternFunction> function;  // type function
   std::shared_ptr<const TextureMapEntry> pigment;   // type pigment (pigment-pattern)
+  std::shared_ptr<const ImagePattern> image;        // type image (image-pattern)
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin
 
   WaveShape waveShape() const { return wave ? *wave : patternTypeInfo(type).wave; }

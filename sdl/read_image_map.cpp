@@ -4,7 +4,9 @@
 #include "read_support.h"
 #include "scene_reader.h"
 
+#include "images/image_values_file.h"
 #include "lang/expression.h"
+#include "scenegraph/image_pattern.h"
 
 #include <filesystem>
 #include <map>
@@ -163,6 +165,39 @@ void SceneReader::readBumpMap(const Token& t, TokenStream& in, PovNormal& n) {
     }
   }
   n.bump = bump;
+}
+
+// `image_pattern { [TYPE] "file" modifiers }`: its values read now, as the XML reader
+// reads them (images/image_values_file.h). POV-Ray 3.7 reads the grey level with use_color
+// (its default) and with use_index alike, for palette images too; use_alpha the
+// transparency. The last of them counts.
+std::shared_ptr<const ImagePattern> SceneReader::readImagePattern(TokenStream& in) {
+  in.expect("{");
+  ImagePattern im;
+  const SourceLoc fileLoc = in.peek().loc();
+  im.path = readImageFileSpec(in);
+  for (;;) {
+    const Token k = in.next();
+    if (k.is("}")) break;
+    const std::string_view w = k.kind == TokenKind::Keyword ? k.text() : "";
+    if (w == "use_alpha" || w == "use_color" || w == "use_colour" || w == "use_index") {
+      im.useAlpha = w == "use_alpha";
+    } else if (readImageReading(k, in, im)) {
+      continue;
+    } else if (w == "repeat" || w == "offset") {
+      keepError(in, k.loc(),
+                "'" + std::string(w) + "' in an image pattern is not supported by Lucent");
+      in.parseVector();
+    } else {
+      in.error(k, "'" + std::string(k.text()) + "' is not an image_pattern modifier");
+    }
+  }
+  try {
+    im.values = readImagePatternValues(im.path, im.useAlpha);
+  } catch (const std::exception& e) {
+    in.error(fileLoc, "cannot read the image pattern's image '" + im.path + "': " + e.what());
+  }
+  return std::make_shared<const ImagePattern>(std::move(im));
 }
 
 void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {
