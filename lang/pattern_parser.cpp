@@ -7,6 +7,7 @@
 
 #include "element_input.h"
 #include "expression.h"
+#include "images/image_values_file.h"
 #include "normal_map_parser.h"
 #include "povray_names.h"
 #include "scenegraph/image_pattern.h"

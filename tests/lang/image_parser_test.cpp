@@ -4,6 +4,7 @@
 #include "../support/paths.h"
 #include "../support/scene_text.h"
 
+#include "images/image_values_file.h"
 #include "lang/scene_writer.h"
 #include "scenegraph/image_pattern.h"
 

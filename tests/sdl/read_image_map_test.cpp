@@ -5,6 +5,7 @@
 #include "scene_read_support.h"
 #include "sdl_test_support.h"
 
+#include "images/image_values_file.h"
 #include "scenegraph/image_pattern.h"
 #include "sdl/scene_reader.h"
 
