@@ -76,15 +76,6 @@ void refuseBadPnmMaximum(const std::string& path) {
         "a PNM image whose maximum value is '{}': Netpbm allows 1 to 65535", token.substr(0, 20)));
 }
 
-// POV-Ray reads a grey PNG of up to 8 bits through a grey colour map: each value v becomes
-// c = v / max, then the grey of (c, c, c) by its float weights, stored truncated to 8 bits
-// (base/image/png.cpp, image.cpp: RGB2Gray, SetGrayValue). This can lower v by one.
-float povPngGrey(long v, int max) {
-  const float c = float(v) / float(max);
-  const float grey = c * 0.297f + c * 0.589f + c * 0.114f;
-  return float(static_cast<unsigned char>(grey * 255.0f)) / 255.0f;
-}
-
 // The limits every height map's image is held to, once its header is known.
 void checkHeader(const ImageHeader& h) {
   if (h.width <= 0 || h.height <= 0 || h.channels <= 0)
@@ -144,6 +135,15 @@ StoredImage readThroughPlugin(const std::string& path) {
 }
 
 }  // namespace
+
+// POV-Ray reads a grey PNG of up to 8 bits through a grey colour map: each value v becomes
+// c = v / max, then the grey of (c, c, c) by its float weights, stored truncated to 8 bits
+// (base/image/png.cpp, image.cpp: RGB2Gray, SetGrayValue). This can lower v by one.
+float povPngGrey(long v, int max) {
+  const float c = float(v) / float(max);
+  const float grey = c * 0.297f + c * 0.589f + c * 0.114f;
+  return float(static_cast<unsigned char>(grey * 255.0f)) / 255.0f;
+}
 
 std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
   const PngFacts pngFacts = refusePaletteFiles(path);

@@ -25,6 +25,10 @@ struct HeightMapError : std::runtime_error {
 // The largest image side read as a height field (16.7 million grid points).
 constexpr int kMaxHeightFieldSide = 4096;
 
+// The grey level, 0 to 1, POV-Ray gives the value v of a grey PNG of up to 8 bits (max
+// 2^depth - 1): through its grey colour map, truncated to 8 bits (can be v - 1 over max).
+float povPngGrey(long v, int max);
+
 // Throws HeightMapError with the reason (the caller names the file).
 std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path);
 

@@ -7,8 +7,10 @@
 
 #include "element_input.h"
 #include "expression.h"
+#include "images/image_values_file.h"
 #include "normal_map_parser.h"
 #include "povray_names.h"
+#include "scenegraph/image_pattern.h"
 #include "texture_map_parser.h"
 #include "warp_parser.h"
 
@@ -33,6 +35,19 @@ std::vector<std::pair<std::string_view, PatternType>> patternNames(bool colourOn
 const std::vector<std::pair<std::string_view, WaveShape>> kWaves{
     {"ramp", WaveShape::ramp},       {"sine", WaveShape::sine},   {"triangle", WaveShape::triangle},
     {"scallop", WaveShape::scallop}, {"cubic", WaveShape::cubic}, {"poly", WaveShape::poly}};
+
+// The names of the projections and interpolations (POV-Ray's map_type and interpolate).
+const std::vector<std::pair<std::string_view, ImageProjection>> kProjections = {
+    {"uv", ImageProjection::uv},
+    {"planar", ImageProjection::planar},
+    {"spherical", ImageProjection::spherical},
+    {"cylindrical", ImageProjection::cylindrical},
+    {"torus", ImageProjection::torus}};
+const std::vector<std::pair<std::string_view, ImageInterpolation>> kInterpolations = {
+    {"none", ImageInterpolation::none},
+    {"bilinear", ImageInterpolation::bilinear},
+    {"bicubic", ImageInterpolation::bicubic},
+    {"normalized", ImageInterpolation::normalized}};
 
 const std::vector<std::string_view> kPlacementAttributes{"transform", "turbulence", "octaves",
                                                          "omega",     "lambda",     "mapping"};
@@ -71,7 +86,12 @@ const std::vector<std::string_view> kValueAttributes{"type",
                                                      "pavement",
                                                      "exterior-corners",
                                                      "interior-corners",
-                                                     "pavement-form"};
+                                                     "pavement-form",
+                                                     "src",
+                                                     "projection",
+                                                     "once",
+                                                     "interpolate",
+                                                     "use-alpha"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -266,9 +286,46 @@ void parsePavementAttributes(ElementReader& r, PatternSpec& s) {
     v.form = static_cast<int>(r.integer("pavement-form", v.form, 0, 3));
 }
 
-// The modifiers of slope, facets, agate, quilted, tiling, mandel, julia and magnet.
+// image-pattern's file, read now (its values are the pattern's), and how it is projected
+// and blended; the projection is one of space's, (u,v) coming from mapping="uv".
+void parseImagePatternAttributes(ElementReader& r, PatternSpec& s) {
+  const bool image = s.type == PatternType::image;
+  for (const char* a : {"src", "projection", "once", "interpolate", "use-alpha"})
+    onlyFor(r, a, image, "image-pattern", s.type);
+  if (!image) return;
+  ImagePattern im;
+  if (r.verbatim("projection") == "uv")
+    r.attrError("projection",
+                "an image-pattern is projected from pattern space (planar, spherical, "
+                "cylindrical or torus); for the shape's (u,v) give mapping=\"uv\" with the "
+                "planar projection");
+  else im.projection = r.choice("projection", im.projection, kProjections);
+  im.once = r.boolean("once", im.once);
+  im.interpolation = r.choice("interpolate", im.interpolation, kInterpolations);
+  im.useAlpha = r.boolean("use-alpha", im.useAlpha);
+  const std::optional<std::string> src = r.text("src");
+  if (!src) {
+    r.error(r.tag() +
+            " type=\"image-pattern\" needs 'src' (the image file whose grey levels are the "
+            "values)");
+    return;
+  }
+  FileAccess::Resolved f = r.ctx().files.resolve(*src, r.file().folder());
+  if (f.path.empty()) return r.attrError("src", f.error);
+  im.path = f.path.string();
+  try {
+    im.values = readImagePatternValues(im.path, im.useAlpha);
+  } catch (const std::exception& e) {  // ImageValuesError, ImagePluginError, a library's own
+    return r.attrError("src", "cannot read the image '" + *src + "': " + e.what());
+  }
+  s.image = std::make_shared<const ImagePattern>(std::move(im));
+}
+
+// The modifiers of slope, facets, agate, quilted, tiling, mandel, julia, magnet, pavement and
+// image-pattern.
 void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
   parseSlopeAttributes(r, s);
+  parseImagePatternAttributes(r, s);
   parseFacetsAttributes(r, s);
   parsePavementAttributes(r, s);
   const bool tiling = s.type == PatternType::tiling;
@@ -667,23 +724,6 @@ NormalSpec parseNormal(ElementReader& r) {
   parseNormalChildren(r, n);
   return n;
 }
-
-namespace {
-
-// The names of the projections and interpolations (POV-Ray's map_type and interpolate).
-const std::vector<std::pair<std::string_view, ImageProjection>> kProjections = {
-    {"uv", ImageProjection::uv},
-    {"planar", ImageProjection::planar},
-    {"spherical", ImageProjection::spherical},
-    {"cylindrical", ImageProjection::cylindrical},
-    {"torus", ImageProjection::torus}};
-const std::vector<std::pair<std::string_view, ImageInterpolation>> kInterpolations = {
-    {"none", ImageInterpolation::none},
-    {"bilinear", ImageInterpolation::bilinear},
-    {"bicubic", ImageInterpolation::bicubic},
-    {"normalized", ImageInterpolation::normalized}};
-
-}  // namespace
 
 const std::vector<std::string_view>& imageReadingAttributes() {
   static const std::vector<std::string_view> names = [] {

@@ -3,6 +3,8 @@
 // pattern table's names.
 #include "attribute_probe.h"
 #include "scene_writer_out.h"
+
+#include "scenegraph/image_pattern.h"
 #include "xml_numbers.h"
 
 #include "scenegraph/finish_terms.h"
@@ -95,17 +97,24 @@ void openPlaced(XmlOut& out, const std::string& element, const Attributes& a, bo
 
 // The attributes <image> and <bump-map> share: a projection and its placement, once,
 // interpolate (those that differ from the defaults).
+const char* projectionName(ImageProjection p) {
+  static const char* const kProjection[] = {"uv", "planar", "spherical", "cylindrical", "torus"};
+  return kProjection[static_cast<int>(p)];
+}
+const char* interpolationName(ImageInterpolation i) {
+  static const char* const kInterpolation[] = {"none", "bilinear", "bicubic", "normalized"};
+  return kInterpolation[static_cast<int>(i)];
+}
+
 template <class Spec>
 void addImageReading(const Spec& t, Attributes& a) {
-  static const char* const kProjection[] = {"uv", "planar", "spherical", "cylindrical", "torus"};
-  static const char* const kInterpolation[] = {"none", "bilinear", "bicubic", "normalized"};
   if (t.projection != ImageProjection::uv) {
-    a.emplace_back("projection", kProjection[static_cast<int>(t.projection)]);
+    a.emplace_back("projection", projectionName(t.projection));
     addPlacement(t.placement, a);
   }
   if (t.once) a.emplace_back("once", "true");
   if (t.interpolation != ImageInterpolation::bilinear)
-    a.emplace_back("interpolate", kInterpolation[static_cast<int>(t.interpolation)]);
+    a.emplace_back("interpolate", interpolationName(t.interpolation));
 }
 
 // <image>'s attributes: (u,v)'s scale, or a projection's placement; how it is read.
@@ -198,9 +207,24 @@ void addTypeAttributes(const PatternSpec& s, const SourceLoc& loc, Attributes& a
   colouring("interior", f.interior, d.fractal.interior);
 }
 
+// image-pattern's file (relative to `folder`), projection and blending, each where it
+// differs from the default.
+void addImagePatternAttributes(const PatternSpec& s, const std::string& folder, Attributes& a) {
+  if (s.type != PatternType::image || !s.image) return;
+  const ImagePattern& im = *s.image;
+  const ImagePattern d;
+  a.emplace_back("src", fileReference(im.path, folder));
+  if (im.projection != d.projection) a.emplace_back("projection", projectionName(im.projection));
+  if (im.once) a.emplace_back("once", "true");
+  if (im.interpolation != d.interpolation)
+    a.emplace_back("interpolate", interpolationName(im.interpolation));
+  if (im.useAlpha) a.emplace_back("use-alpha", "true");
+}
+
 // The attributes of <pattern> and <normal>: the type by the pattern table's name, the
 // placement and the value's modifiers, written only where they differ from the defaults.
-Attributes patternAttributes(const PatternSpec& s, const SourceLoc& loc) {
+Attributes patternAttributes(const PatternSpec& s, const SourceLoc& loc,
+                             const std::string& folder) {
   const PatternSpec d;
   Attributes a{{"type", std::string(patternTypeInfo(s.type).name)}};
   addPlacement(s.placement, a);
@@ -213,6 +237,7 @@ Attributes patternAttributes(const PatternSpec& s, const SourceLoc& loc) {
   if (s.noiseGenerator != d.noiseGenerator)
     a.emplace_back("noise-generator", std::to_string(s.noiseGenerator));
   addTypeAttributes(s, loc, a);
+  addImagePatternAttributes(s, folder, a);
   return a;
 }
 
@@ -351,7 +376,7 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
   }
   if (n.pattern.function && !n.pattern.function->pigments.empty())
     cannotWrite(loc, "a function <normal> that calls a pigment function cannot be written yet");
-  Attributes a = patternAttributes(n.pattern, loc);
+  Attributes a = patternAttributes(n.pattern, loc, folder);
   if (n.map.empty()) a.emplace_back("depth", xmlNumber(n.depth));
   if (n.accuracy != NormalSpec{}.accuracy) a.emplace_back("accuracy", xmlNumber(n.accuracy));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
@@ -395,7 +420,8 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
                      t.placement);
         } else if constexpr (std::is_same_v<T, PatternTexture>) {
           if (t.pigments.empty()) return writePatternTexture(t, loc, out, folder);
-          openPlaced(out, "pattern", patternAttributes(t.pattern, loc), false, t.pattern.placement);
+          openPlaced(out, "pattern", patternAttributes(t.pattern, loc, folder), false,
+                     t.pattern.placement);
           writePatternPigment(t.pattern, loc, out, folder);
           writePigmentFunctions(t.pattern, loc, out);
           writeEntries("pigment-map", t.pigments, "at", loc, out, folder);
@@ -445,7 +471,7 @@ void writePigmentFunction(const PigmentFunction& f, const SourceLoc& loc, XmlOut
 
 void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& out,
                          const std::string& folder) {
-  const Attributes a = patternAttributes(t.pattern, loc);
+  const Attributes a = patternAttributes(t.pattern, loc, folder);
   const bool pigment = t.pattern.type == PatternType::pigment;
   const bool pigments = t.pattern.function && !t.pattern.function->pigments.empty();
   if (t.map.entries.empty() && !pigment && !pigments)

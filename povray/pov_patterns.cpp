@@ -1,9 +1,12 @@
 #include "pov_patterns.h"
 
 #include "pov_function.h"
+#include "pov_image_map.h"
 
+#include "scenegraph/image_pattern.h"
 #include "scenegraph/overloaded.h"
 
+#include <filesystem>
 #include <stdexcept>
 #include <variant>
 
@@ -32,8 +35,33 @@ const char* povWaveName(WaveShape w) {
 }  // namespace
 
 // The pattern keyword and what belongs to it (gradient's axis, the spirals' arms).
+namespace {
+
+// image_pattern's block: `{ FORMAT "file" map_type N once interpolate N use_alpha }`.
+// POV-Ray reads its file without gamma correction, as Lucent does; a format it does not
+// name is left to the file's extension.
+std::string imagePatternBlock(const PatternSpec& s) {
+  if (!s.image) return " { \"\" }";
+  const ImagePattern& im = *s.image;
+  static const int kMapType[] = {0, 0, 1, 2, 5};  // ImageProjection's order: uv, planar, ...
+  static const char* const kInterpolate[] = {"", " interpolate 2", " interpolate 3",
+                                             " interpolate 4"};
+  const std::string format = povImageFormat(im.path);
+  std::string b = " { " + (format.empty() ? "" : format + " ") +
+                  povString(std::filesystem::absolute(im.path).lexically_normal().string());
+  const int mapType = kMapType[static_cast<int>(im.projection)];
+  if (mapType != 0) b += " map_type " + std::to_string(mapType);
+  if (im.once) b += " once";
+  b += kInterpolate[static_cast<int>(im.interpolation)];
+  if (im.useAlpha) b += " use_alpha";
+  return b + " }";
+}
+
+}  // namespace
+
 std::string patternKeyword(const PatternSpec& s) {
   std::string k(patternTypeInfo(s.type).pov);
+  if (s.type == PatternType::image) k += imagePatternBlock(s);
   if (s.type == PatternType::gradient) k += " " + povVector(s.axis);
   if (s.type == PatternType::spiral1 || s.type == PatternType::spiral2)
     k += " " + std::to_string(s.arms);

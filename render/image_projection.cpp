@@ -1,6 +1,7 @@
 #include "image_projection.h"
 
 #include <cmath>
+#include <type_traits>
 
 namespace lucent {
 
@@ -78,8 +79,10 @@ std::optional<Vec2> onImage(Vec2 uv, int width, int height, bool once) {
   return Vec2(wrap(uv.x, width), wrap(-uv.y, height));
 }
 
-// The pixel at (x, y), wrapped round, or for a `once` image clamped to its edge.
-const Color& pixel(const Image& image, double x, double y, bool once) {
+// The pixel at (x, y), wrapped round, or for a `once` image clamped to its edge: a colour
+// of an Image, a value of an ImageValueGrid.
+template <class Grid>
+auto pixel(const Grid& image, double x, double y, bool once) {
   int ix, iy;
   if (once) {
     ix = x < 0.0 ? 0 : x >= image.width ? image.width - 1 : static_cast<int>(x);
@@ -91,6 +94,10 @@ const Color& pixel(const Image& image, double x, double y, bool once) {
   return image.at(ix, iy);
 }
 
+// Blends are summed in double precision, as POV-Ray's.
+glm::dvec3 precise(const Color& c) { return glm::dvec3(c); }
+double precise(float v) { return v; }
+
 // Catmull-Rom weights of the four pixels around fraction x (POV-Ray's cubic).
 void cubicWeights(double x, double w[4]) {
   const double p = x - static_cast<int>(x), q = 1.0 - p;
@@ -100,23 +107,25 @@ void cubicWeights(double x, double w[4]) {
   w[3] = -0.5 * q * p * p;
 }
 
-Color bicubic(const Image& image, double x, double y, bool once) {
+template <class Grid>
+auto bicubic(const Grid& image, double x, double y, bool once) {
   x += 0.5;
   y += 0.5;
   const int ix = static_cast<int>(x), iy = static_cast<int>(y);
   double wx[4], wy[4];
   cubicWeights(x, wx);
   cubicWeights(y, wy);
-  glm::dvec3 sum(0.0);
+  decltype(precise(pixel(image, 0, 0, once))) sum(0.0);
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j)
-      sum += glm::dvec3(pixel(image, ix + i - 2, iy + j - 2, once)) * (wx[i] * wy[j]);
-  return Color(sum);
+      sum += precise(pixel(image, ix + i - 2, iy + j - 2, once)) * (wx[i] * wy[j]);
+  return sum;
 }
 
 // The four pixels whose centres surround the point, weighted by area (bilinear) or by
 // inverse squared distance (normalized).
-Color fourCorners(const Image& image, double x, double y, bool once, bool normalized) {
+template <class Grid>
+auto fourCorners(const Grid& image, double x, double y, bool once, bool normalized) {
   x += 0.5;
   y += 0.5;
   const int ix = static_cast<int>(x), iy = static_cast<int>(y);
@@ -136,11 +145,10 @@ Color fourCorners(const Image& image, double x, double y, bool once, bool normal
     f[2] = p * (1 - q);
     f[3] = (1 - p) * (1 - q);
   }
-  const glm::dvec3 sum = glm::dvec3(pixel(image, ix, iy, once)) * f[0] +
-                         glm::dvec3(pixel(image, ix - 1, iy, once)) * f[1] +
-                         glm::dvec3(pixel(image, ix, iy - 1, once)) * f[2] +
-                         glm::dvec3(pixel(image, ix - 1, iy - 1, once)) * f[3];
-  return Color(sum);
+  return precise(pixel(image, ix, iy, once)) * f[0] +
+         precise(pixel(image, ix - 1, iy, once)) * f[1] +
+         precise(pixel(image, ix, iy - 1, once)) * f[2] +
+         precise(pixel(image, ix - 1, iy - 1, once)) * f[3];
 }
 
 }  // namespace
@@ -156,24 +164,35 @@ std::optional<Vec2> uvToImage(const Vec2& uv, const Vec2& scale, int width, int 
   return projectToImage(ImageProjection::planar, Vec3(uv / scale, 0.0), width, height, once);
 }
 
-PigmentColor sampleImage(const Image& image, const Vec2& xy, ImageInterpolation interpolation,
-                         bool once, const FilterTransmit& all) {
-  Color c;
+namespace {
+
+// The pixel or the blend of pixels at `xy`, in single precision as POV-Ray keeps it.
+template <class Grid>
+auto sampled(const Grid& image, const Vec2& xy, ImageInterpolation interpolation, bool once) {
+  using Single = std::decay_t<decltype(pixel(image, 0, 0, once))>;
   switch (interpolation) {
     case ImageInterpolation::none:
-      c = pixel(image, xy.x, xy.y, once);
       break;
     case ImageInterpolation::bilinear:
-      c = fourCorners(image, xy.x, xy.y, once, false);
-      break;
+      return Single(fourCorners(image, xy.x, xy.y, once, false));
     case ImageInterpolation::normalized:
-      c = fourCorners(image, xy.x, xy.y, once, true);
-      break;
+      return Single(fourCorners(image, xy.x, xy.y, once, true));
     case ImageInterpolation::bicubic:
-      c = bicubic(image, xy.x, xy.y, once);
-      break;
+      return Single(bicubic(image, xy.x, xy.y, once));
   }
-  return {c, all};
+  return Single(pixel(image, xy.x, xy.y, once));
+}
+
+}  // namespace
+
+PigmentColor sampleImage(const Image& image, const Vec2& xy, ImageInterpolation interpolation,
+                         bool once, const FilterTransmit& all) {
+  return {sampled(image, xy, interpolation, once), all};
+}
+
+float sampleImageValue(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
+                       bool once) {
+  return sampled(grid, xy, interpolation, once);
 }
 
 }  // namespace lucent

@@ -6,6 +6,7 @@
 
 #include "image.h"
 
+#include "images/image_values_file.h"
 #include "scenegraph/texture_spec.h"
 
 #include <optional>
@@ -33,5 +34,9 @@ std::optional<Vec2> uvToImage(const Vec2& uv, const Vec2& scale, int width, int 
 // image repeat the edge pixel. `all` is added to every pixel's filter and transmit.
 PigmentColor sampleImage(const Image& image, const Vec2& xy, ImageInterpolation interpolation,
                          bool once, const FilterTransmit& all);
+
+// The same blend of an image_pattern's values (no filter or transmit).
+float sampleImageValue(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
+                       bool once);
 
 }  // namespace lucent

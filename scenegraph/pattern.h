@@ -56,6 +56,7 @@ enum class PatternType {
   tiling,
   facets,
   pavement,
+  image,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -138,6 +139,8 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "flat facets: the normal (or, with coords, the point) snapped to the nearest random point"},
     {PatternType::pavement, "pavement", "pavement", true, WaveShape::ramp, false,
      "POV-Ray's pavements of the x-z plane: tiles of 1 to 6 triangles, squares or hexagons"},
+    {PatternType::image, "image-pattern", "image_pattern", true, WaveShape::ramp, false,
+     "the grey level (or with use-alpha the transparency) of a projected image"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 
@@ -254,9 +257,10 @@ struct FractalParams {
   bool operator!=(const FractalParams& o) const { return !(*this == o); }
 };
 
-// POV-Ray's default frequency: 0 for quilted (its value is used unwrapped), 1 otherwise.
+// POV-Ray's default frequency: 0 for quilted and image_pattern (their values are used
+// unwrapped), 1 otherwise.
 constexpr double defaultFrequency(PatternType type) {
-  return type == PatternType::quilted ? 0.0 : 1.0;
+  return type == PatternType::quilted || type == PatternType::image ? 0.0 : 1.0;
 }
 
 // The patterns that take FractalParams.
@@ -278,6 +282,7 @@ struct PatternFunction {
 // pigment-pattern's pigment: a plain colour or a texture (scenegraph/texture_spec.h; its
 // `at` unused).
 struct TextureMapEntry;
+struct ImagePattern;  // image_pattern.h
 
 struct PatternSpec {
   PatternType type = PatternType::bozo;
@@ -298,6 +303,7 @@ struct PatternSpec {
   PavementParams pavement;  // type pavement
   std::shared_ptr<const PatternFunction> function;  // type function
   std::shared_ptr<const TextureMapEntry> pigment;   // type pigment (pigment-pattern)
+  std::shared_ptr<const ImagePattern> image;        // type image (image-pattern)
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin
 
   WaveShape waveShape() const { return wave ? *wave : patternTypeInfo(type).wave; }

@@ -4,8 +4,12 @@
 #include "read_support.h"
 #include "scene_reader.h"
 
+#include "images/builtin/builtin_images.h"
+#include "images/image_values_file.h"
 #include "lang/expression.h"
+#include "scenegraph/image_pattern.h"
 
+#include <cctype>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -50,6 +54,20 @@ std::optional<ImageProjection> projectionOf(double mapType) {
     default:
       return std::nullopt;
   }
+}
+
+// Whether the file may be a palette image, whose indices POV-Ray reads where a bump map says
+// use_index: a palette PNG, or a format that can hold a palette whose indices OpenImageIO
+// hides (TGA, BMP, TIFF); JPEG, PPM, PGM, EXR and HDR cannot.
+bool mayHoldPalette(const std::string& path) {
+  if (isPngFile(path)) {
+    PngPixels png;
+    return !readPngHeader(path, png).empty() || png.palette;
+  }
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return !(ext == ".jpg" || ext == ".jpeg" || ext == ".ppm" || ext == ".pgm" || ext == ".exr" ||
+           ext == ".hdr");
 }
 
 }  // namespace
@@ -151,9 +169,13 @@ void SceneReader::readBumpMap(const Token& t, TokenStream& in, PovNormal& n) {
     if (isWord(k, "bump_size")) {
       bump.depth = in.parseFloat();
     } else if (isWord(k, "use_index")) {
-      keepError(in, k.loc(),
-                "'use_index' is not supported by Lucent (palette indices as heights; Lucent "
-                "reads the palette's colours' grey levels)");
+      // POV-Ray takes a palette image's indices as heights; any other image has none, and
+      // its grey levels are read as with use_color.
+      if (mayHoldPalette(bump.path))
+        keepError(in, k.loc(),
+                  "'use_index' on a palette image is not supported by Lucent (palette indices "
+                  "as heights; Lucent reads the palette's colours' grey levels); on an image "
+                  "without a palette it changes nothing");
     } else if (isWord(k, "repeat") || isWord(k, "offset")) {
       keepError(in, k.loc(),
                 "'" + std::string(k.text()) + "' in a bump map is not supported by Lucent");
@@ -163,6 +185,39 @@ void SceneReader::readBumpMap(const Token& t, TokenStream& in, PovNormal& n) {
     }
   }
   n.bump = bump;
+}
+
+// `image_pattern { [TYPE] "file" modifiers }`: its values read now, as the XML reader
+// reads them (images/image_values_file.h). POV-Ray 3.7 reads the grey level with use_color
+// (its default) and with use_index alike, for palette images too; use_alpha the
+// transparency. The last of them counts.
+std::shared_ptr<const ImagePattern> SceneReader::readImagePattern(TokenStream& in) {
+  in.expect("{");
+  ImagePattern im;
+  const SourceLoc fileLoc = in.peek().loc();
+  im.path = readImageFileSpec(in);
+  for (;;) {
+    const Token k = in.next();
+    if (k.is("}")) break;
+    const std::string_view w = k.kind == TokenKind::Keyword ? k.text() : "";
+    if (w == "use_alpha" || w == "use_color" || w == "use_colour" || w == "use_index") {
+      im.useAlpha = w == "use_alpha";
+    } else if (readImageReading(k, in, im)) {
+      continue;
+    } else if (w == "repeat" || w == "offset") {
+      keepError(in, k.loc(),
+                "'" + std::string(w) + "' in an image pattern is not supported by Lucent");
+      in.parseVector();
+    } else {
+      in.error(k, "'" + std::string(k.text()) + "' is not an image_pattern modifier");
+    }
+  }
+  try {
+    im.values = readImagePatternValues(im.path, im.useAlpha);
+  } catch (const std::exception& e) {
+    in.error(fileLoc, "cannot read the image pattern's image '" + im.path + "': " + e.what());
+  }
+  return std::make_shared<const ImagePattern>(std::move(im));
 }
 
 void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {
@@ -181,9 +236,8 @@ void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {
     if (readImageReading(k, in, image)) {
       continue;
     } else if (w == "use_index") {
-      keepError(in, k.loc(),
-                "'use_index' is not supported by Lucent (palette indices as colours; Lucent "
-                "reads the palette's colours)");
+      // POV-Ray 3.7's image_map reads its use_index and use_color flag nowhere: a palette
+      // image shows its palette's colours either way.
     } else if (w == "filter" || w == "transmit" || w == "alpha") {
       if (!isWord(in.peek(), "all")) {
         keepError(in, k.loc(),

@@ -47,7 +47,7 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
 constexpr std::string_view kPatternsLucentLacks[] = {
-    "aoi", "cubic", "density_file", "object", "square", "triangular", "potential", "image_pattern"};
+    "aoi", "cubic", "density_file", "object", "potential", "square", "triangular"};
 
 const PatternTypeInfo* patternType(const Token& t) {
   if (t.kind != TokenKind::Keyword) return nullptr;
@@ -214,6 +214,7 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
     readPatternArguments(t, in, tex.pattern);
     if (tex.pattern.type == PatternType::function) tex.pattern.function = readPatternFunction(in);
     if (tex.pattern.type == PatternType::pigment) tex.pattern.pigment = readPatternPigment(in);
+    if (tex.pattern.type == PatternType::image) tex.pattern.image = readImagePattern(in);
     p.pattern = tex;
     p.map.clear();
     return true;

@@ -100,6 +100,7 @@ PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, b
       readPatternArguments(t, in, s);
       if (s.type == PatternType::function) s.function = readPatternFunction(in);
       if (s.type == PatternType::pigment) s.pigment = readPatternPigment(in);
+      if (s.type == PatternType::image) s.image = readImagePattern(in);
       n.spec.pattern = s;
       n.spec.average.clear();
       n.spec.block = NormalBlock::none;  // a map (a block's list too) stays, as POV-Ray's

@@ -381,6 +381,7 @@ class SceneReader : public ItemReader {
   void readImageMap(const Token& t, TokenStream& in, PovPigment& p);
   void readBumpMap(const Token& t, TokenStream& in, PovNormal& n);
   std::string readImageFileSpec(TokenStream& in);
+  std::shared_ptr<const ImagePattern> readImagePattern(TokenStream& in);
   // read_maps.cpp: maps and lists of pigments, averages of pigments and of normals
   std::vector<TextureMapEntry> readPigmentMap(TokenStream& in, const Token& at,
                                               bool average = false);

@@ -7,6 +7,7 @@
 
 #include "images/image_plugin.h"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -30,10 +31,13 @@ bool builtinReadsBackComplete(const std::string& path, const ImageToWrite& image
 // take values as they are stored (height fields), with no colour conversion.
 struct PngPixels {
   int width = 0, height = 0;
-  int channels = 0;                   // after widening: 1 grey, 2 grey and alpha, 3 RGB, 4 RGBA
-  bool sixteenBit = false;            // values of 0 to 65535; else 0 to 255
-  int storedDepth = 0;                // the file's bit depth (1, 2, 4, 8 or 16)
-  bool palette = false;               // a palette image: its values are the palette indices
+  int channels = 0;         // after widening: 1 grey, 2 grey and alpha, 3 RGB, 4 RGBA
+  bool sixteenBit = false;  // values of 0 to 65535; else 0 to 255
+  int storedDepth = 0;      // the file's bit depth (1, 2, 4, 8 or 16)
+  bool palette = false;     // a palette image: its values are the palette indices
+  // A palette image's colours with their alphas (255 where its tRNS chunk says none).
+  std::vector<std::array<std::uint8_t, 4>> paletteColours;
+  bool transparencyChunk = false;     // the file has a tRNS chunk (left unapplied)
   std::vector<std::uint16_t> values;  // rows top first, width x channels values each
 };
 

@@ -39,6 +39,23 @@ void setTransforms(png_structp png, png_infop info) {
   if (png_get_bit_depth(png, info) == 16) png_set_swap(png);
 }
 
+// The palette's colours and the alphas of its tRNS chunk (the header pass: libpng keeps
+// them in the info struct once png_read_info has run).
+void readPalette(png_structp png, png_infop info, PngPixels& pixels) {
+  pixels.transparencyChunk = png_get_valid(png, info, PNG_INFO_tRNS) != 0;
+  pixels.paletteColours.clear();
+  png_colorp palette = nullptr;
+  int count = 0;
+  if (!pixels.palette || !png_get_PLTE(png, info, &palette, &count)) return;
+  png_bytep alphas = nullptr;
+  int alphaCount = 0;
+  if (pixels.transparencyChunk) png_get_tRNS(png, info, &alphas, &alphaCount, nullptr);
+  for (int i = 0; i < count; ++i)
+    pixels.paletteColours.push_back(
+        {palette[i].red, palette[i].green, palette[i].blue,
+         static_cast<std::uint8_t>(alphas && i < alphaCount ? alphas[i] : 255)});
+}
+
 // A read struct and its info reporting to `sink`; false (nothing to free) if libpng has no
 // memory for them.
 bool startReading(ErrorSink& sink, png_structp& png, png_infop& info) {
@@ -70,6 +87,7 @@ bool readPass(FILE* file, PngPixels& pixels, unsigned char* values, ErrorSink& s
     pixels.height = static_cast<int>(png_get_image_height(png, info));
     pixels.palette = png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE;
     pixels.storedDepth = png_get_bit_depth(png, info);
+    readPalette(png, info, pixels);
   }
   setTransforms(png, info);
   const int passes = png_set_interlace_handling(png);

@@ -2,6 +2,7 @@
 
 #include "crackle.h"
 #include "fractal.h"
+#include "image_pattern_value.h"
 #include "pattern_point.h"
 #include "pavement.h"
 #include "primitives/noise.h"
@@ -256,6 +257,8 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
       return pigmentGrey(spec, p);
     case PatternType::slope:
       return slopeValue(spec.slope, p, currentPatternSurface());
+    case PatternType::image:
+      return spec.image ? imagePatternValue(*spec.image, p) : 0.0;
     case PatternType::facets:  // a normal only, with no value (the parsers refuse one)
       return 0.0;
   }

@@ -4,7 +4,9 @@
 #include "../support/paths.h"
 #include "../support/scene_text.h"
 
+#include "images/image_values_file.h"
 #include "lang/scene_writer.h"
+#include "scenegraph/image_pattern.h"
 
 #include <catch2/catch.hpp>
 
@@ -104,4 +106,41 @@ TEST_CASE("image projections: placement without a projection, scale with one, ba
   CHECK(m.find("cubic") != std::string::npos);
   CHECK(m.find("images.xml:5:") != std::string::npos);
   CHECK(r.diagnostics.errorCount() == 4);
+}
+
+TEST_CASE(
+    "image-pattern: its file and reading are written back and read again, as pattern and normal",
+    "[lang][texture][image-pattern]") {
+  const char* kImagePatterns = R"XML(
+<material id="p"><pattern type="image-pattern" src="textures/uvgrid.png" projection="cylindrical"
+  once="true" interpolate="bicubic" use-alpha="true" transform="scale(2)">
+  <color-map><entry at="0" color="0 0 0"/><entry at="1" color="1 0.5 0"/></color-map>
+</pattern></material>
+<material id="n"><normal type="image-pattern" src="textures/uvgrid.png" depth="0.4"/></material>
+<sphere material="p"/><sphere center="3 0 0" material="n"/>)XML";
+  auto s = parseClean(kImagePatterns, sceneName());
+  const auto& p = std::get<PatternTexture>(materialNamed(*s, "p").texture).pattern;
+  CHECK(p.type == PatternType::image);
+  CHECK(p.frequency == 0.0);
+  REQUIRE(p.image);
+  CHECK(p.image->projection == ImageProjection::cylindrical);
+  CHECK(p.image->once);
+  CHECK(p.image->interpolation == ImageInterpolation::bicubic);
+  CHECK(p.image->useAlpha);
+  REQUIRE(p.image->values);
+  CHECK(p.image->values->width > 0);
+  const NormalSpec& n = *materialNamed(*s, "n").normal;
+  REQUIRE(n.pattern.image);
+  CHECK(n.pattern.image->projection == ImageProjection::planar);
+  CHECK(n.pattern.image->interpolation == ImageInterpolation::none);
+  const std::string first = writeSceneXml(*s, inExamples());
+  INFO(first);
+  CHECK(first.find("<pattern type=\"image-pattern\" transform=\"matrix(2 ") != std::string::npos);
+  CHECK(first.find("src=\"textures/uvgrid.png\" projection=\"cylindrical\" once=\"true\" "
+                   "interpolate=\"bicubic\" use-alpha=\"true\"") != std::string::npos);
+  CHECK(first.find("<normal type=\"image-pattern\" src=\"textures/uvgrid.png\" depth=\"0.4\"") !=
+        std::string::npos);
+  auto reread = parseSceneString(first, sceneName());
+  REQUIRE(reread.scene);
+  CHECK(withoutComments(writeSceneXml(*reread.scene, inExamples())) == withoutComments(first));
 }

@@ -5,6 +5,8 @@
 #include "scene_read_support.h"
 #include "sdl_test_support.h"
 
+#include "images/image_values_file.h"
+#include "scenegraph/image_pattern.h"
 #include "sdl/scene_reader.h"
 
 #include <variant>
@@ -76,10 +78,10 @@ TEST_CASE("scene reader image_map: what POV-Ray refuses and what Lucent does not
       errorsOf(
           R"(sphere { 0, 1 pigment { image_map { png "scenes/image_maps.png" interpolate 1 } } })"),
       "interpolate 1 is not one POV-Ray takes"));
-  CHECK(anyContains(
-      errorsOf(
-          R"(sphere { 0, 1 pigment { image_map { png "scenes/image_maps.png" use_index } } })"),
-      "'use_index' is not supported by Lucent"));
+  // POV-Ray 3.7's image_map reads neither use_index nor use_color: both are accepted.
+  CHECK(readScene(R"(sphere { 0, 1 pigment { image_map { png "scenes/image_pattern_palette.png"
+  use_index } } })")
+            ->load.scene != nullptr);
   CHECK(anyContains(
       errorsOf(
           R"(sphere { 0, 1 pigment { image_map { png "scenes/image_maps.png" filter 2, 0.5 } } })"),
@@ -120,7 +122,92 @@ sphere { 0, 1 normal { bump_map { png "scenes/image_maps.png" } bump_size -1.5 }
   CHECK(b.bumpMap->projection == ImageProjection::planar);
   CHECK(b.bumpMap->interpolation == ImageInterpolation::none);
   CHECK(b.bumpMap->depth == -1.5);  // the normal's bump_size after the block
+  // use_index: a palette image's indices as heights are refused; an image without a palette
+  // has none, and reads its grey levels as with use_color.
   CHECK(anyContains(
-      errorsOf(R"(sphere { 0, 1 normal { bump_map { png "scenes/image_maps.png" use_index } } })"),
-      "'use_index' is not supported by Lucent"));
+      errorsOf(
+          R"(sphere { 0, 1 normal { bump_map { png "scenes/image_pattern_palette.png" use_index } } })"),
+      "'use_index' on a palette image is not supported by Lucent"));
+  CHECK(
+      readScene(R"(sphere { 0, 1 normal { bump_map { png "scenes/image_maps.png" use_index } } })")
+          ->load.scene != nullptr);
+}
+
+namespace {
+
+const PatternSpec& patternOf(const Scene& scene, size_t i) {
+  REQUIRE(scene.root->children.size() > i);
+  const Node& n = *scene.root->children[i];
+  REQUIRE(n.material);
+  return std::get<PatternTexture>(scene.materials.at(*n.material).texture).pattern;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "scene reader image_pattern: its file read with map_type, once, interpolate and use_alpha, "
+    "in pigments and normals",
+    "[sdl][scene][texture][image-pattern]") {
+  auto r = readScene(R"(
+sphere { 0, 1 pigment { image_pattern { png "scenes/image_pattern_palette.png" } } }
+sphere { 0, 1 pigment { image_pattern { "scenes/image_pattern_rgba8.png" map_type 1 once
+  interpolate 3 use_alpha } color_map { [0 rgb 0] [1 rgb <1, 0, 0>] } scale 2 } }
+sphere { 0, 1 normal { image_pattern { png "scenes/image_pattern_grey8.png" map_type 5 use_alpha
+  use_index } 0.5 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const PatternSpec& plain = patternOf(s, 0);
+  CHECK(plain.type == PatternType::image);
+  CHECK(plain.frequency == 0.0);  // POV-Ray's image_pattern is unwrapped
+  REQUIRE(plain.image);
+  CHECK(plain.image->projection == ImageProjection::planar);
+  CHECK(plain.image->interpolation == ImageInterpolation::none);
+  CHECK_FALSE(plain.image->once);
+  CHECK_FALSE(plain.image->useAlpha);
+  REQUIRE(plain.image->values);
+  CHECK(plain.image->values->width == 5);
+  CHECK(plain.image->values->indices.size() == 20);  // a palette image
+
+  const PatternSpec& alpha = patternOf(s, 1);
+  REQUIRE(alpha.image);
+  CHECK(alpha.image->projection == ImageProjection::spherical);
+  CHECK(alpha.image->once);
+  CHECK(alpha.image->interpolation == ImageInterpolation::bicubic);
+  CHECK(alpha.image->useAlpha);
+  CHECK(alpha.placement.patternFromObject[0][0] == Approx(0.5));
+
+  const Node& n = *s.root->children[2];
+  const NormalSpec& normal = *s.materials.at(*n.material).normal;
+  CHECK(normal.pattern.type == PatternType::image);
+  CHECK(normal.depth == 0.5);
+  REQUIRE(normal.pattern.image);
+  CHECK(normal.pattern.image->projection == ImageProjection::torus);
+  CHECK_FALSE(normal.pattern.image->useAlpha);  // use_index after use_alpha: the grey again
+}
+
+TEST_CASE(
+    "scene reader image_pattern: bad modifiers and unreadable files are errors at their place",
+    "[sdl][scene][texture][image-pattern]") {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"sphere { 0, 1 pigment { image_pattern { png \"scenes/image_pattern_grey8.png\" gamma_x } } "
+       "}",
+       "test.pov:1:78: error: 'gamma_x' is not an image_pattern modifier"},
+      {"sphere { 0, 1 pigment { image_pattern { png \"scenes/image_pattern_grey8.png\" map_type 3 "
+       "} } "
+       "}",
+       "test.pov:1:78: error: map_type 3 is not one POV-Ray 3.7 projects an image by"},
+      {"sphere { 0, 1 pigment { image_pattern { png \"scenes/image_pattern_grey8.png\" repeat <1, "
+       "1> } "
+       "} }",
+       "test.pov:1:78: error: 'repeat' in an image pattern is not supported by Lucent"},
+      {"sphere { 0, 1 pigment { image_pattern { png \"scenes/none.png\" } } }",
+       "test.pov:1:45: error:"},
+  };
+  for (const auto& [text, want] : cases) {
+    INFO(text);
+    const auto errors = errorsOf(text);
+    REQUIRE(errors.size() >= 1);
+    CHECK(errors[0].rfind(want, 0) == 0);
+  }
 }

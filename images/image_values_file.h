@@ -1,0 +1,41 @@
+// An image read as POV-Ray 3.7's image_pattern reads it (core/support/imageutil.cpp,
+// image_pattern; the parser reads its file without gamma correction): one value per pixel,
+//   the grey level 0.297 r + 0.589 g + 0.114 b of its colour (in single precision), or
+//   with use_alpha its transmit 1 - alpha where the image can hold transparency, and its
+//   red channel where it cannot.
+// Colours are the stored values over their maximum (v / 255, v / 65535), as POV-Ray's
+// integer images give them: a palette PNG's from its palette (whose alphas, 1 where its
+// tRNS chunk gives none, make it an image that holds transparency), a grey PNG of up to 8
+// bits through POV-Ray's grey colour map (images/height_map_file.h).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lucent {
+
+struct ImageValuesError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The pixels' values, rows top first. `indices`: a palette image's palette indices (empty
+// for other images).
+struct ImageValueGrid {
+  int width = 0;
+  int height = 0;
+  std::vector<float> values;
+  std::vector<std::uint8_t> indices;
+  float at(int x, int y) const { return values[static_cast<size_t>(y) * width + x]; }
+};
+
+// The largest image side read as a pattern.
+constexpr int kMaxImagePatternSide = 16384;
+
+// Throws ImageValuesError with the reason (the caller names the file).
+std::shared_ptr<const ImageValueGrid> readImagePatternValues(const std::string& path,
+                                                             bool useAlpha);
+
+}  // namespace lucent
