@@ -193,3 +193,19 @@ TEST_CASE("a pigment function called while the scene is read gives its colour",
   // The grey by POV-Ray's weights, worked out here.
   CHECK(lucent[5] == Approx(0.297 * 0.2 + 0.589 * 0.3 + 0.114 * 0.4).margin(1e-7));
 }
+
+TEST_CASE("a function pattern of block pattern functions matches POV-Ray's image",
+          "[sdl][function][pattern][povray]") {
+  // The three indices weighted so that every combination is a colour of its own.
+  const std::string pov =
+      "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n#include \"functions.inc\"\n"
+      "#declare H = function { pattern { hexagon scale 0.3 } }\n"
+      "camera { location <0, 3, -3> look_at 0 angle 40 }\n"
+      "light_source { <-5, 8, -10> color rgb 1 }\n"
+      "box { -1, 1 pigment { function { H(x, y, z) * 0.4 + f_checker(x * 2, y * 2, z * 2) * 0.2 "
+      "+ f_brick(x * 8, y * 8, z * 8) * 0.1 } color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] } "
+      "} }\n";
+  auto r = sdltest::readScene(pov);
+  REQUIRE(r->load.scene);
+  test::requireSameImage(*r->load.scene, pov);
+}
