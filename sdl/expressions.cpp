@@ -128,7 +128,7 @@ void TokenStream::identifierFactor(Express& e, int& terms) {
     return;
   }
   if (v && v->type == ValueType::Function) {
-    fill(e.v, terms, functionCall());
+    functionCall(e, terms);
     return;
   }
   if (!v || !v->isNumeric()) {

@@ -224,9 +224,9 @@ std::string FunctionValue::describe() const {
 }
 
 double evaluateFunction(const FunctionValue& f, const std::vector<double>& args,
-                        const PigmentValue& pigments) {
+                        const PigmentValue& pigments, int member) {
   Evaluator e(pigments);
-  return e.call(f, args.data(), f.loc);
+  return e.call(f, args.data(), f.loc, member);
 }
 
 }  // namespace lucent::sdl

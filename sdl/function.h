@@ -143,14 +143,15 @@ constexpr size_t kMaxFunctionTextLength = 1'000'000;  // characters of an isosur
 // f(args): POV-Ray's value of the call, as its function machine computes it (IEEE results
 // for a division by zero or a logarithm of a negative number, as in POV-Ray 3.7). Throws
 // FunctionError for what Lucent cannot evaluate (a pigment function, a noise function) and
-// past kMaxFunctionSteps. `args` has f.arity() numbers.
+// past kMaxFunctionSteps. `args` has f.arity() numbers; `member` (0 to 5, as FnNode's) is
+// the component taken of a pigment or spline function's value.
 // The value of a pigment or pattern function's call (its component `member` at the point
 // xyz), given by the scene reader, which holds the pigment; empty when it cannot.
 using PigmentValue =
     std::function<std::optional<double>(const FunctionValue& f, int member, const double* xyz)>;
 
 double evaluateFunction(const FunctionValue& f, const std::vector<double>& args,
-                        const PigmentValue& pigments = {});
+                        const PigmentValue& pigments = {}, int member = -1);
 
 // f's body as a Lucent expression (docs/scene-language.md, "Expressions") in which f's
 // parameters are the texts `args` (each an atom or parenthesised); user functions are

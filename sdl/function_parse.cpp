@@ -599,8 +599,9 @@ FnNodePtr TokenStream::fnUserCall(FnScope& s) {
   return n;
 }
 
-// f(a, b, c) in an expression, f the current token: POV-Ray evaluates it now.
-double TokenStream::functionCall() {
+// f(a, b, c) in an expression, f the current token: POV-Ray evaluates it now. A pigment
+// function gives its colour (five terms, as POV-Ray's call of one does), others a float.
+void TokenStream::functionCall(Express& e, int& terms) {
   const Token at = cur_;
   const std::shared_ptr<const FunctionValue> f = at.value()->function;
   const std::string name(at.text());
@@ -622,10 +623,17 @@ double TokenStream::functionCall() {
       pigments = [this](const FunctionValue& fn, int member, const double* xyz) {
         return items_->pigmentValue(fn, member, xyz);
       };
-    return evaluateFunction(*f, args, pigments);
-  } catch (const FunctionError& e) {
-    std::string m = e.what();
-    if (e.at.line > 0) m += "\n" + e.at.str() + ": note: the cause, in the function's declaration";
+    if (f->kind == FunctionValue::Kind::Pigment && f->what != "a pattern function") {
+      for (int i = 0; i < 5; ++i) e.v[i] = evaluateFunction(*f, args, pigments, i);
+      terms = 5;
+      return;
+    }
+    const double v = evaluateFunction(*f, args, pigments);
+    for (int i = 0; i < terms; ++i) e.v[i] = v;
+  } catch (const FunctionError& err) {
+    std::string m = err.what();
+    if (err.at.line > 0)
+      m += "\n" + err.at.str() + ": note: the cause, in the function's declaration";
     error(at, m);
   }
 }

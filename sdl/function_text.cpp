@@ -6,6 +6,7 @@
 #include "function.h"
 
 #include "internal_functions.h"
+#include "spline.h"
 
 #include "lang/expression.h"
 
@@ -115,6 +116,9 @@ class TextWriter {
       case FnOp::Call: {
         if (n.member >= 0 && n.callee->kind == FunctionValue::Kind::Pigment && pigments_)
           return checked(pigmentCall(n, a(0), a(1), a(2)), n.loc);
+        // A spline function's component: its segments' polynomials written out.
+        if (n.member >= 0 && n.callee->kind == FunctionValue::Kind::Spline)
+          return checked(splineText(*n.callee->spline, a(0), n.member), n.loc);
         if (n.member >= 0)
           throw FunctionError(
               n.loc, n.callee->describe() + " is " +

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <map>
+#include <string>
 #include <vector>
 
 namespace lucent::sdl {
@@ -41,6 +42,12 @@ struct Spline {
   std::array<double, 5> at(double t, SplineKind kind) const;
   std::array<double, 5> at(double t) const { return at(t, kind); }
 };
+
+// Component `member` (0 to 4, or 5 for POV-Ray's grey of the first three) of the spline's
+// value at the parameter whose expression text is `t` (an atom or parenthesised), written as
+// a Lucent expression (docs/scene-language.md, "Expressions"): conditions on t choosing
+// each segment's polynomial (spline_text.cpp), for isosurfaces and function patterns.
+std::string splineText(const Spline& s, const std::string& t, int member);
 
 // The entries of a `spline { }` as they are read, in any order. An entry at a parameter
 // already present replaces that one's vector, except at the highest parameter of two or

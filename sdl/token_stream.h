@@ -289,7 +289,7 @@ class TokenStream {
   FnNodePtr fnUserCall(FnScope& s);
   std::vector<FnNodePtr> fnArguments(FnScope& s);
   void fnSkipBlock();
-  double functionCall();
+  void functionCall(Express& e, int& terms);
 
   // spline_parse.cpp: `spline { }` (the keyword just read) and S(T [, KIND]) in expressions
   std::shared_ptr<const Spline> splineBlock();
