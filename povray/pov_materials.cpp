@@ -504,8 +504,8 @@ void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, cons
   checkUvShape(uv, mapping, shapeName, loc, materialLabel(m), issues);
   // The rest of the texture is the map POV-Ray evaluates at (u, v, 0).
   if (uv) out.line("uv_mapping");
-  if (const auto* a = std::get_if<AverageTexture>(&m.mapPattern)) {
-    out.line(std::string(AverageTexture::kind.pov));
+  // The entries' values (an average's weights) and textures.
+  auto textureMap = [&] {
     out.open("texture_map");
     for (size_t k = 0; k < entries.size(); ++k) {
       out.line("[" + povNumber(m.mapEntries[k].at));
@@ -513,19 +513,17 @@ void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, cons
       out.line("]");
     }
     out.close();
+  };
+  if (const auto* a = std::get_if<AverageTexture>(&m.mapPattern)) {
+    out.line(std::string(AverageTexture::kind.pov));
+    textureMap();
     writePlacement(a->placement, out);
     return;
   }
   if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern)) {
     writePigmentFunctions(p->pattern, out);
     writePatternKeyword(p->pattern, out);
-    out.open("texture_map");
-    for (size_t k = 0; k < entries.size(); ++k) {
-      out.line("[" + povNumber(m.mapEntries[k].at));
-      entryBody(k);
-      out.line("]");
-    }
-    out.close();
+    textureMap();
     writeValueModifiers(p->pattern, out);
     writePlacement(p->pattern.placement, out);
     return;

@@ -18,12 +18,7 @@ using namespace lucent::test;
 
 namespace {
 
-const Material& materialOf(const Scene& scene, size_t i) {
-  REQUIRE(scene.root->children.size() > i);
-  const Node& n = *scene.root->children[i];
-  REQUIRE(n.material);
-  return scene.materials.at(*n.material);
-}
+using sdltest::materialOf;
 
 const char* kBody =
     "<sphere><material><pattern type=\"crackle\" form=\"1 0 0\" metric=\"1\" offset=\"0.2\"/>"

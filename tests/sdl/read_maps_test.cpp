@@ -16,15 +16,10 @@ using namespace lucent::sdl;
 
 namespace {
 
+using sdltest::materialOf;
+
 using sdltest::errorsOf;
 using sdltest::readScene;
-
-const Material& materialOf(const Scene& scene, size_t i) {
-  REQUIRE(scene.root->children.size() > i);
-  const Node& n = *scene.root->children[i];
-  REQUIRE(n.material);
-  return scene.materials.at(*n.material);
-}
 
 }  // namespace
 

@@ -15,16 +15,11 @@ using namespace lucent::sdl;
 
 namespace {
 
+using sdltest::materialOf;
+
 using sdltest::checkMat;
 using sdltest::errorsOf;
 using sdltest::readScene;
-
-const Material& materialOf(const Scene& scene, size_t i) {
-  REQUIRE(scene.root->children.size() > i);
-  const Node& n = *scene.root->children[i];
-  REQUIRE(n.material);
-  return scene.materials.at(*n.material);
-}
 
 // Lucent's space is POV-Ray's with z negated: a pattern's point is S·p in POV-Ray's.
 const Mat4 kS = glm::scale(Mat4(1.0), Vec3(1, 1, -1));

@@ -49,4 +49,12 @@ inline void checkMat(const lucent::Mat4& got, const lucent::Mat4& want) {
     for (int j = 0; j < 4; ++j) CHECK(got[i][j] == Approx(want[i][j]).margin(1e-12));
 }
 
+// The material of the scene's i-th top-level node (which must have one).
+inline const lucent::Material& materialOf(const lucent::Scene& scene, size_t i) {
+  REQUIRE(scene.root->children.size() > i);
+  const lucent::Node& n = *scene.root->children[i];
+  REQUIRE(n.material);
+  return scene.materials.at(*n.material);
+}
+
 }  // namespace sdltest
