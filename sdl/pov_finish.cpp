@@ -49,7 +49,7 @@ void importFade(const PovInterior& in, Material& m) {
 }  // namespace
 
 MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish,
-                              const PovInterior& interior) {
+                              const PovInterior& interior, bool legacyOpacity) {
   MaterialImport out;
   Material& m = out.material;
   std::vector<std::string>& notes = out.differences;
@@ -64,7 +64,9 @@ MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish
   // pigment·filter + transmit, per channel.
   // Not clamped: with filter + transmit above 1 the local terms go negative, as in POV-Ray
   // (a transmit of 100 makes a contrast amplifier: advanced/bwstripe.pov).
-  const float opacity = 1.0f - pigment.filter - pigment.transmit;
+  const float opacity = legacyOpacity && !patterned
+                            ? 1.0f - (pigment.filter * maxComponent(p) + pigment.transmit)
+                            : 1.0f - pigment.filter - pigment.transmit;
   m.diffuse = p * static_cast<float>(finish.diffuse) * opacity;
   m.ambient = p * finish.ambient * opacity;
   m.ambientIsScalar = patterned;  // multiplied by the texture, or the pigment already in it

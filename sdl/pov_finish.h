@@ -133,7 +133,9 @@ struct MaterialImport {
 };
 // The material of a one-layer texture: POV-Ray multiplies the pigment's colour by the
 // finish and by the opacity 1 - filter - transmit; transmits pigment·filter + transmit.
+// legacyOpacity (a scene of #version below 3.7): the opacity of a plain pigment is POV-Ray
+// 3.6's 1 - (filter·max(r, g, b) + transmit), which POV-Ray 3.7 keeps for such scenes.
 MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish,
-                              const PovInterior& interior);
+                              const PovInterior& interior, bool legacyOpacity = false);
 
 }  // namespace lucent::sdl

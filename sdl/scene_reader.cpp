@@ -409,7 +409,9 @@ Material SceneReader::importTexture(const PovTexture& texture, const PovInterior
 Material SceneReader::importLayer(const PovTexture& layer, const PovInterior& interior,
                                   const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in,
                                   bool uv) {
-  MaterialImport imported = importMaterial(layer.pigment, layer.finish, interior);
+  // POV-Ray 3.7 keeps 3.6's opacity of the local terms for scenes of an older #version.
+  MaterialImport imported =
+      importMaterial(layer.pigment, layer.finish, interior, in.languageVersion() < 3.7);
   for (const std::string& d : imported.differences) warn(in, at, d);
   Material& m = imported.material;
   if (PatternPlacement* p = placementOf(m.texture)) {

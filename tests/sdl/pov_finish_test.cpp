@@ -198,3 +198,21 @@ TEST_CASE("interior fade: exponential above fade_power 1000 is Lucent's absorpti
   interior.fadeDistance = 0.0;
   CHECK_FALSE(importMaterial(clear, PovFinish{}, interior).material.hasFade());
 }
+
+TEST_CASE("a scene of #version below 3.7: a plain pigment's opacity is 3.6's", "[sdl][finish]") {
+  // POV-Ray 3.7 keeps, for older scenes, 1 - (filter·max(r, g, b) + transmit) as the factor
+  // of the local terms (its comment calls the formula bogus, kept for legacy scenes).
+  PovPigment glass;
+  glass.color = Color(0.4f, 0.72f, 0.4f);
+  glass.filter = 0.6f;
+  PovFinish finish;
+  finish.ambient = Color(0.1f);
+  finish.diffuse = 0.1;
+  const Material now = importMaterial(glass, finish, PovInterior{}).material;
+  const Material legacy = importMaterial(glass, finish, PovInterior{}, true).material;
+  requireColor(now.diffuse, glass.color * (0.1f * 0.4f));
+  requireColor(legacy.diffuse, glass.color * (0.1f * (1.0f - 0.6f * 0.72f)));
+  requireColor(legacy.ambient, glass.color * (0.1f * (1.0f - 0.6f * 0.72f)));
+  // What it lets through is the same: pigment·filter + transmit.
+  requireColor(legacy.transmissive, now.transmissive);
+}

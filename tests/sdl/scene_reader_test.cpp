@@ -555,3 +555,19 @@ light_source { <0, 5, 0> rgb 1 translate <0, 0, 2>
             .at(0) ==
         "test.pov:1:52: error: only one looks_like per light_source, as POV-Ray allows");
 }
+
+TEST_CASE("scene reader: #version 3.6 keeps POV-Ray 3.6's opacity of a filtering pigment",
+          "[sdl][scene]") {
+  // 3.6: 1 - 0.5·max(0.2, 0.4, 0.2) = 0.8; 3.7: 1 - 0.5 = 0.5. The version in force where
+  // the object is placed decides.
+  auto r = readScene(R"(
+#version 3.6;
+sphere { 0, 1 pigment { rgbf <0.2, 0.4, 0.2, 0.5> } finish { ambient 0 diffuse 1 } }
+#version 3.7;
+sphere { 0, 1 pigment { rgbf <0.2, 0.4, 0.2, 0.5> } finish { ambient 0 diffuse 1 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  checkColor(materialOf(s, topNode(s, 0)).diffuse, Color(0.2f, 0.4f, 0.2f) * 0.8f);
+  checkColor(materialOf(s, topNode(s, 1)).diffuse, Color(0.2f, 0.4f, 0.2f) * 0.5f);
+}
