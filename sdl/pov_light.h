@@ -47,11 +47,9 @@ struct PovLight {
   double fadeDistance = 0.0;      // both needed (> 0) for any fading
   double fadePower = 0.0;
   PovTransform transform;  // translate, rotate, ... inside the block
-  // `looks_like { OBJECT }`: the object, moved to the light's centre as it was there (and
-  // by the modifiers written after it in looks_like's block), with the light's transform
-  // at that point; the light's later transforms move it too (SceneReader::toNode).
-  std::shared_ptr<const struct PovObject> looksLike;
-  PovTransform looksLikeAt;
+  // `looks_like { OBJECT }` (SceneReader::toNode). Behind a pointer: every object read
+  // holds a light's worth of room, and nested objects recurse on the stack.
+  std::shared_ptr<const struct PovLooksLike> looksLike;
 };
 
 // POV-Ray's attenuation of a light at distance d: 2 / (1 + (d/fade_distance)^fade_power),

@@ -178,8 +178,8 @@ PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
           object.transform.then(PovTransform::translation(l.transform.point(l.location)));
       readObjectModifiers(object, in);
       object.noShadow = true;
-      l.looksLike = std::make_shared<const PovObject>(std::move(object));
-      l.looksLikeAt = l.transform;
+      l.looksLike =
+          std::make_shared<const PovLooksLike>(PovLooksLike{std::move(object), l.transform});
     } else {
       unreadInBlock(t, in);
       return l;

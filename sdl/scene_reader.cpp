@@ -464,8 +464,9 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     if (!light.looksLike) return n;
     // looks_like: the light and its object in a union, the object moved on by the light's
     // transforms written after looks_like.
-    PovObject shape = *light.looksLike;
-    shape.transform = shape.transform.then(light.looksLikeAt.inverse()).then(light.transform);
+    PovObject shape = light.looksLike->object;
+    shape.transform =
+        shape.transform.then(light.looksLike->lightAt.inverse()).then(light.transform);
     auto both = std::make_unique<Node>();
     both->kind = NodeKind::Union;
     both->element = "light_source";

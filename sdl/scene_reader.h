@@ -131,6 +131,14 @@ struct PovObject {
   uint64_t nodes = 1;  // objects within, this one included
 };
 
+// A light's looks_like: the object, moved to the light's centre as it was there (and by the
+// modifiers written after it in looks_like's block), and the light's transform at that
+// point; the light's later transforms move the object too.
+struct PovLooksLike {
+  PovObject object;
+  PovTransform lightAt;
+};
+
 // The items the reader makes, for #declare and for identifiers in blocks. Each keeps the
 // errors of the features Lucent cannot render that its declaration holds: they are
 // reported where the item is used in the scene, not where an include declares it.

@@ -88,8 +88,8 @@ double squareValue(const PavementParams& p, unsigned how, double x, double z) {
 double squaresValue(const PavementParams& p, const Vec3& point) {
   const double x = point.x, z = point.z;
   const double fx = std::floor(x), fz = std::floor(z);
-  const unsigned how =
-      pavement::flagsAt(p.sides, p.tiles, p.number, static_cast<long>(fx), static_cast<long>(fz));
+  const unsigned how = pavement::flagsAt(p.sides, p.tiles, p.number, pavement::cellIndex(fx),
+                                         pavement::cellIndex(fz));
   return squareValue(p, how, x - fx, z - fz);
 }
 

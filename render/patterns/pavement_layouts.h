@@ -2,6 +2,8 @@
 // edges and corners of each cell of an arrangement's repeating block are a tile's border.
 #pragma once
 
+#include <cmath>
+
 #include <cstdint>
 #include <vector>
 
@@ -41,5 +43,11 @@ Layouts layouts(int sides, int tiles);
 
 // The flags of cell (xv, zv) of arrangement `number` (1..count).
 unsigned flagsAt(int sides, int tiles, int number, long xv, long zv);
+
+// A whole cell coordinate (already floored) as a long, for values within ±2^60; beyond
+// that, and for NaN, 0: such a cast is undefined, and the layouts repeat anyway.
+inline long cellIndex(double whole) {
+  return std::fabs(whole) < 0x1p60 ? static_cast<long>(whole) : 0;
+}
 
 }  // namespace lucent::pavement

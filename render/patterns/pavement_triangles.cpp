@@ -28,8 +28,8 @@ struct Cell {
 // down by half a side, and the point in a neighbour of the upright triangle turns onto it.
 Cell foldTriangle(double px, double pz) {
   Cell c;
-  c.xv = static_cast<long>(std::floor(px));
-  c.zv = static_cast<long>(std::floor(pz / kS3));
+  c.xv = pavement::cellIndex(std::floor(px));
+  c.zv = pavement::cellIndex(std::floor(pz / kS3));
   double x = px - static_cast<double>(c.xv);
   double z = pz - kS3 * static_cast<double>(c.zv);
   c.zv *= 2;
