@@ -1,5 +1,7 @@
 #include "scene_reader.h"
 
+#include "deep_stack.h"
+
 #include "pov_bounds.h"
 
 #include "read_support.h"
@@ -682,18 +684,21 @@ SceneLoad load(const Options& options, const std::string& file,
   auto scene = std::make_unique<Scene>();
   scene->file = file;
   SceneReader reader(*scene, result.diagnostics, options);
-  try {
-    TokenStream in(options, &reader);
-    open(in);
-    reader.readScene(in);
-    if (!result.diagnostics.hasErrors()) reader.finishScene(in);
-  } catch (const LocatedError& e) {
-    result.diagnostics.error(e.loc(), e.message());
-  } catch (const std::exception& e) {
-    // Nothing a scene contains should get here; if it does, fail cleanly, not crash.
-    result.diagnostics.error(SourceLoc{file, 0, 0},
-                             std::string("internal error while reading the scene: ") + e.what());
-  }
+  // 256 MB of address space, touched only as deep as the scene nests (sdl/deep_stack.h).
+  runWithStack(std::size_t{256} << 20, [&] {
+    try {
+      TokenStream in(options, &reader);
+      open(in);
+      reader.readScene(in);
+      if (!result.diagnostics.hasErrors()) reader.finishScene(in);
+    } catch (const LocatedError& e) {
+      result.diagnostics.error(e.loc(), e.message());
+    } catch (const std::exception& e) {
+      // Nothing a scene contains should get here; if it does, fail cleanly, not crash.
+      result.diagnostics.error(SourceLoc{file, 0, 0},
+                               std::string("internal error while reading the scene: ") + e.what());
+    }
+  });
   if (!result.diagnostics.hasErrors()) result.scene = std::move(scene);
   return result;
 }
