@@ -152,16 +152,23 @@ std::optional<OwnShapeText> own(const BlobSpec& s, const SourceLoc&, const std::
 
 // The function as read, its names other than x, y and z as local <param>s of the shape
 // (the language's way of giving them), each the number it stood for.
-std::optional<OwnShapeText> own(const IsosurfaceSpec& s, const SourceLoc& loc, const std::string&) {
-  OwnShapeText t;
-  for (const auto& [name, value] : s.constants)
+void addFunction(OwnShapeText& t, const std::string& function,
+                 const std::vector<std::pair<std::string, double>>& constants,
+                 const std::vector<std::shared_ptr<const PigmentFunction>>& pigments,
+                 const SourceLoc& loc) {
+  for (const auto& [name, value] : constants)
     t.children.push_back({"param", {{"name", name}, {"value", xmlNumber(value)}}});
-  t.attributes.emplace_back("function", literal(s.function));
-  for (const auto& p : s.pigments)
+  t.attributes.emplace_back("function", literal(function));
+  for (const auto& p : pigments)
     t.children.push_back(
         {"pigment-function",
          {{"name", p->name}, {"component", std::string(pigmentComponentName(p->component))}},
          [p, loc](XmlOut& out) { writeTexture(p->pigment, loc, out, ""); }});
+}
+
+std::optional<OwnShapeText> own(const IsosurfaceSpec& s, const SourceLoc& loc, const std::string&) {
+  OwnShapeText t;
+  addFunction(t, s.function, s.constants, s.pigments, loc);
   const IsosurfaceContainer& c = s.container;
   if (c.kind == IsosurfaceContainer::Sphere) {
     t.attributes.emplace_back("container", "sphere");
@@ -188,10 +195,19 @@ std::optional<OwnShapeText> own(const TextSpec& s, const SourceLoc&, const std::
   return t;
 }
 
-std::optional<OwnShapeText> own(const HeightFieldSpec& s, const SourceLoc&,
+std::optional<OwnShapeText> own(const HeightFieldSpec& s, const SourceLoc& loc,
                                 const std::string& folder) {
   OwnShapeText t;
+  if (!s.function.empty()) {
+    addFunction(t, s.function, s.constants, s.pigments, loc);
+    t.attributes.emplace_back(
+        "resolution", std::to_string(s.resolution[0]) + " " + std::to_string(s.resolution[1]));
+    t.handled.push_back("src");
+    return t;
+  }
   t.attributes.emplace_back("src", literal(fileReference(s.path, folder)));
+  t.handled.push_back("function");
+  t.handled.push_back("resolution");
   return t;
 }
 

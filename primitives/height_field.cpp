@@ -172,6 +172,17 @@ void HeightField::walk(const Ray& ray, Sink&& sink) const {
            (upper ? 1u : 0u);
   };
 
+  // The box's top lies at the highest grid point, so where the field is flat at that
+  // height the top is the surface itself: a crossing there is the triangle's (an open
+  // field draws no top face, and would lose it).
+  auto faceOrSurface = [&](uint32_t face, double at) {
+    if (face != kTop) return face;
+    const double X = std::clamp(O.x + at * D.x, 0.0, hi.x),
+                 Z = std::clamp(O.z + at * D.z, 0.0, hi.z);
+    const int ci = cellOf(X, D.x, cellsX_), cj = cellOf(Z, D.z, cellsZ_);
+    return triPart(ci, cj, (X - ci) + (Z - cj) > 1.0);
+  };
+
   double t = t0;
   int i = cellOf(std::clamp(O.x + t * D.x, 0.0, hi.x), D.x, cellsX_);
   int j = cellOf(std::clamp(O.z + t * D.z, 0.0, hi.z), D.z, cellsZ_);
@@ -180,7 +191,7 @@ void HeightField::walk(const Ray& ray, Sink&& sink) const {
     const double X = O.x + t * D.x, Z = O.z + t * D.z;
     const bool upper = (X - i) + (Z - j) > 1.0;
     neg = O.y + t * D.y - triangleHeightGrid(i, j, upper, X, Z) < 0.0;
-    if (neg && sink(t0, face0, true)) return;
+    if (neg && sink(t0, faceOrSurface(face0, t0), true)) return;
   }
   double tx = nextX(i), tz = nextZ(j);
   const int top = static_cast<int>(levels_.size()) - 1;
@@ -274,7 +285,7 @@ void HeightField::walk(const Ray& ray, Sink&& sink) const {
     if (stepZ) tz = nextZ(j);
     level = std::min(1, top);
   }
-  if (neg) sink(t1, face1, false);
+  if (neg) sink(t1, faceOrSurface(face1, t1), false);
 }
 
 bool HeightField::intersect(const Ray& ray, Hit& hit) const {
@@ -376,9 +387,6 @@ SurfaceInfo HeightField::surface(const Ray& ray, const Hit& hit) const {
       break;
     case kFloor:
       n = Vec3(0.0, -1.0, 0.0);
-      break;
-    case kTop:
-      n = Vec3(0.0, 1.0, 0.0);
       break;
     default: {
       const uint32_t cell = hit.part >> 1;

@@ -134,14 +134,22 @@ struct SorSpec {
   std::vector<Vec2> points;  // required: x >= 0, y increasing (the first and last steer)
   bool open = false;
 };
-// POV-Ray's height_field: the image's grid (primitives/height_field.h).
+// POV-Ray's height_field: the image's grid (primitives/height_field.h), or a function's
+// sampled on a grid of `resolution` points (primitives/height_map_function.h).
 struct HeightFieldSpec {
-  std::string src;   // as written
+  std::string src;   // as written ("" for a function's)
   std::string path;  // resolved, for the POV-Ray file
+  // A function's field: its text, parameters and pigment functions as read (as an
+  // isosurface's), and the grid's points along x and z.
+  std::string function;
+  std::vector<std::pair<std::string, double>> constants;
+  std::shared_ptr<const ScalarField> field;
+  std::vector<std::shared_ptr<const PigmentFunction>> pigments{};
+  int resolution[2] = {0, 0};
   bool smooth = false;
   double waterLevel = 0.0;
   bool open = false;                     // without walls and floor (POV-Ray's look)
-  std::shared_ptr<const HeightMap> map;  // loaded
+  std::shared_ptr<const HeightMap> map;  // loaded, or sampled
 };
 // POV-Ray's polygon: outlines of points in one plane, each closed by repeating its first
 // point (primitives/polygon.h); as written (closed when built).

@@ -35,6 +35,9 @@ struct ChildElementInfo {
   std::string contentXsd = {};
 };
 
+// The <pigment-function> child of a shape whose function calls pigments (isosurface.cpp).
+ChildElementInfo pigmentFunctionChild();
+
 // The exporter's side of writing one shape (povray/pov_geometry.cpp implements it). The
 // entry writes the object's keyword and the lines of its own parameters; the exporter adds
 // the material and the transform and closes the object.

@@ -8,11 +8,13 @@
 #include "images/height_map_file.h"
 #include "meshes/mesh_repair.h"
 #include "primitives/blob.h"
+#include "primitives/height_map_function.h"
 #include "primitives/lathe.h"
 #include "primitives/poly.h"
 #include "primitives/polygon.h"
 #include "primitives/sor.h"
 #include "primitives/superellipsoid.h"
+#include "scenegraph/pigment_function.h"
 #include "scenegraph/shape_type.h"
 
 #include <fmt/format.h>
@@ -20,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 namespace lucent::sdl {
 
@@ -674,6 +677,87 @@ void SceneReader::readText(PovObject& o, TokenStream& in) {
   o.shape = std::move(s);
 }
 
+// smooth and water_level, after the field's source.
+void SceneReader::readHeightFieldOptions(HeightFieldSpec& s, TokenStream& in) {
+  for (;;) {
+    if (allowWord(in, "smooth")) {
+      s.smooth = true;
+    } else if (isWord(in.peek(), "water_level")) {
+      const SourceLoc loc = in.next().loc();
+      s.waterLevel = in.parseFloat();
+      if (!(s.waterLevel >= 0.0 && s.waterLevel < 1.0))
+        in.error(loc,
+                 "the water level must be from 0 to below 1, not " + attributeText(s.waterLevel));
+    } else {
+      break;
+    }
+  }
+}
+
+// height_field { function W, H { F } [smooth] [water_level W] }: F sampled on a W x H grid
+// (primitives/height_map_function.h) where it is read, as POV-Ray does. A pigment function's height
+// is its grey (POV-Ray takes the grey of its colour's channels each first stored in 16 bits: a
+// height differs by at most 1/65535). POV-Ray's point is (x, y, 0) in its space, which is Lucent's
+// (z = 0 either way).
+void SceneReader::readFunctionHeightField(PovObject& o, TokenStream& in) {
+  in.next();  // function
+  HeightFieldSpec s;
+  const SourceLoc wAt = in.peek().loc();
+  const double w = in.parseFloat();
+  in.parseComma();
+  const SourceLoc hAt = in.peek().loc();
+  const double h = in.parseFloat();
+  // POV-Ray rounds each to the nearest whole number.
+  for (const auto& [v, at, axis] : {std::tuple{w, wAt, "width"}, std::tuple{h, hAt, "height"}})
+    if (!(v + 0.5 >= 2.0 && v + 0.5 < kMaxFunctionFieldSide + 1.0))
+      in.error(at, fmt::format("the function height field's {} must be from 2 to {}, not {}", axis,
+                               kMaxFunctionFieldSide, attributeText(v)));
+  s.resolution[0] = static_cast<int>(w + 0.5);
+  s.resolution[1] = static_cast<int>(h + 0.5);
+  // Read as a declared function is (POV-Ray's Parse_DeclareFunction): a pigment may be given.
+  const std::shared_ptr<const FunctionValue> f = in.parseFunction(true, "");
+  std::shared_ptr<const FunctionValue> scalar = f;
+  if (f->kind == FunctionValue::Kind::Pigment) {
+    // Its grey, as a call of it: a function of x, y and z whose body takes .gray.
+    auto call = std::make_shared<FnNode>();
+    call->op = FnOp::Call;
+    call->callee = f;
+    call->member = static_cast<int>(PigmentComponent::gray);
+    call->loc = f->loc;
+    for (int i = 0; i < 3; ++i) {
+      auto p = std::make_shared<FnNode>();
+      p->op = FnOp::Param;
+      p->index = i;
+      p->loc = f->loc;
+      call->args.push_back(p);
+    }
+    call->depth = 2;
+    auto g = std::make_shared<FunctionValue>();
+    g->loc = f->loc;
+    g->params = {"x", "y", "z"};
+    g->body = call;
+    g->depth = f->depth + 1;
+    scalar = g;
+  }
+  const auto compiled =
+      compiledFunction(*scalar, {"x", "y", "z"}, "this height field's function", in);
+  readHeightFieldOptions(s, in);
+  if (!compiled) return;
+  s.function = compiled->text;
+  s.field = compiled->field;
+  s.pigments = compiled->pigments;
+  // POV-Ray makes the grid here, with the noise generator global_settings chose so far.
+  for (const std::shared_ptr<PigmentFunction>& p : pigmentFunctions_)
+    if (std::find(s.pigments.begin(), s.pigments.end(), p) != s.pigments.end())
+      forEachTexturePattern(p->pigment, [&](PatternSpec& ps) {
+        if (ps.noiseGenerator == 0) ps.noiseGenerator = global_.noiseGenerator;
+      });
+  s.map = sampleHeightMap(*s.field, s.resolution[0], s.resolution[1]);
+  s.open = true;
+  o.transform.scale(Vec3(1.0, 1.0, -1.0));
+  o.shape = std::move(s);
+}
+
 // height_field { TYPE "file" [smooth] [water_level W] }: the types whose files Lucent reads
 // as POV-Ray does (images/height_map_file.h). The field spans x and z from 0 to 1, the
 // image's top row at z = 1 in POV-Ray's space; Lucent's has it at z = 1 in its own, so the
@@ -693,8 +777,11 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
       {"sys", {}},
       {"bmp", {}},
       {"exr", {}},
-      {"hdr", {}},
-      {"function", {}}};
+      {"hdr", {}}};
+  if (isWord(in.peek(), "function")) {
+    readFunctionHeightField(o, in);
+    return;
+  }
   const Token type = in.next();
   const auto known = type.kind == TokenKind::Keyword ? kTypes.find(type.text()) : kTypes.end();
   if (known != kTypes.end() && known->second.empty()) {
@@ -716,19 +803,7 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
   } catch (const std::exception& e) {
     in.error(fileLoc, "cannot read the height field's image '" + s.src + "': " + e.what());
   }
-  for (;;) {
-    if (allowWord(in, "smooth")) {
-      s.smooth = true;
-    } else if (isWord(in.peek(), "water_level")) {
-      const SourceLoc loc = in.next().loc();
-      s.waterLevel = in.parseFloat();
-      if (!(s.waterLevel >= 0.0 && s.waterLevel < 1.0))
-        in.error(loc,
-                 "the water level must be from 0 to below 1, not " + attributeText(s.waterLevel));
-    } else {
-      break;
-    }
-  }
+  readHeightFieldOptions(s, in);
   const uint16_t top = *std::max_element(s.map->values.begin(), s.map->values.end());
   if (!(top / 65536.0 > s.waterLevel))
     in.error(fileLoc, "nothing of the height field lies above the water level " +

@@ -316,6 +316,8 @@ class SceneReader : public ItemReader {
   void readPolygon(PovObject& o, TokenStream& in);
   void readBicubicPatch(PovObject& o, TokenStream& in);
   void readText(PovObject& o, TokenStream& in);
+  void readHeightFieldOptions(HeightFieldSpec& s, TokenStream& in);
+  void readFunctionHeightField(PovObject& o, TokenStream& in);
   void readHeightField(PovObject& o, TokenStream& in);
   void readMesh(PovObject& o, TokenStream& in);
   void readMesh2(PovObject& o, TokenStream& in);

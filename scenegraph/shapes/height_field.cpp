@@ -1,10 +1,15 @@
 // <height-field src="image" smooth="false" water-level="0"/>: POV-Ray 3.7's height_field
 // (primitives/height_field.h), its image read as POV-Ray reads it (images/height_map_file.h).
 // The image is read while the scene is parsed, so a missing or damaged file is an error at
-// the attribute; only the formats POV-Ray reads as height fields are taken.
+// the attribute; only the formats POV-Ray reads as height fields are taken. Or
+// <height-field function="..." resolution="W H">: POV-Ray's `function W, H { }`, the
+// function sampled on the grid as POV-Ray samples it (primitives/height_map_function.h).
 #include "scenegraph/shape_type.h"
 
+#include "scenegraph/pigment_function.h"
+
 #include "primitives/height_field.h"
+#include "primitives/height_map_function.h"
 
 #include <fmt/format.h>
 
@@ -39,9 +44,66 @@ std::string povQuoted(const std::string& s) {
   return out + "\"";
 }
 
+// The grid's highest point against the water level (both sources).
+void checkHeights(const HeightFieldSpec& s, AttributeInput& in, const char* attr,
+                  const std::string& allZero) {
+  const uint16_t top = *std::max_element(s.map->values.begin(), s.map->values.end());
+  if (top == 0) {
+    in.attrError(attr, allZero + ": there is no field above the water level");
+    return;
+  }
+  if (!(top / 65536.0 > s.waterLevel))
+    in.attrError(
+        "water-level",
+        fmt::format("{} is at or above the field's highest point ({}): nothing would be left",
+                    attributeText(s.waterLevel), attributeText(top / 65536.0)));
+}
+
+// function="..." resolution="W H": the function compiled and sampled now, so that a field
+// of zeros is an error where it is written.
+void readFunctionField(HeightFieldSpec& s, AttributeInput& in) {
+  if (in.has("src")) {
+    in.attrError("function", "a height field has either 'src' (an image) or 'function', not both");
+    return;
+  }
+  if (!in.has("resolution")) {
+    in.error(
+        "<height-field function> needs 'resolution' (the grid's points along x and z, e.g. "
+        "\"256 256\")");
+    return;
+  }
+  const auto res = in.integers("resolution");
+  if (!res) return;
+  if (res->size() != 2 || (*res)[0] < 2 || (*res)[1] < 2 || (*res)[0] > kMaxFunctionFieldSide ||
+      (*res)[1] > kMaxFunctionFieldSide) {
+    in.attrError("resolution", fmt::format("two whole numbers from 2 to {} are expected (the "
+                                           "grid's points along x and z)",
+                                           kMaxFunctionFieldSide));
+    return;
+  }
+  s.resolution[0] = static_cast<int>((*res)[0]);
+  s.resolution[1] = static_cast<int>((*res)[1]);
+  const auto f = in.function("function", {"x", "y", "z"});
+  if (!f) return;
+  s.function = f->text;
+  s.constants = f->constants;
+  s.field = f->field;
+  s.pigments = f->pigments;
+  s.map = sampleHeightMap(*s.field, s.resolution[0], s.resolution[1]);
+  checkHeights(s, in, "function", "the function's value makes every height 0");
+}
+
 void readHeightField(HeightFieldSpec& s, AttributeInput& in) {
+  if (in.has("function")) {
+    readFunctionField(s, in);
+    return;
+  }
+  if (in.has("resolution"))
+    in.attrError("resolution", "'resolution' belongs to a height field of a 'function'");
   if (!in.has("src")) {
-    in.error("<height-field> needs 'src' (a grey or colour image whose brightness is the height)");
+    in.error(
+        "<height-field> needs 'src' (a grey or colour image whose brightness is the height) "
+        "or 'function' (a function of x and y sampled on a grid)");
     return;
   }
   auto src = in.text("src");
@@ -55,19 +117,7 @@ void readHeightField(HeightFieldSpec& s, AttributeInput& in) {
   }
   s.map = in.heightMapFile("src", s.path);
   if (!s.map) return;
-  const uint16_t top = *std::max_element(s.map->values.begin(), s.map->values.end());
-  if (top == 0) {
-    in.attrError(
-        "src",
-        "'" + *src +
-            "' is black everywhere (every height is 0): there is no field above the water level");
-    return;
-  }
-  if (!(top / 65536.0 > s.waterLevel))
-    in.attrError(
-        "water-level",
-        fmt::format("{} is at or above the image's highest point ({}): nothing would be left",
-                    attributeText(s.waterLevel), attributeText(top / 65536.0)));
+  checkHeights(s, in, "src", "'" + *src + "' is black everywhere (every height is 0)");
 }
 
 std::shared_ptr<const Shape> buildHeightField(const HeightFieldSpec& s) {
@@ -76,6 +126,20 @@ std::shared_ptr<const Shape> buildHeightField(const HeightFieldSpec& s) {
 }
 
 void writeHeightField(const HeightFieldSpec& s, PovShapeOut& out) {
+  if (!s.function.empty()) {
+    std::string problem;
+    const std::optional<std::string> body =
+        out.function(s.function, s.constants, s.pigments, problem);
+    if (!body) {
+      out.error("<height-field> function: " + problem);
+      return;
+    }
+    out.open("height_field");
+    out.line(fmt::format("function {}, {} {{ {} }}", s.resolution[0], s.resolution[1], *body));
+    if (s.smooth) out.line("smooth");
+    if (s.waterLevel != 0.0) out.line("water_level " + out.number(s.waterLevel));
+    return;
+  }
   out.open("height_field");
   const std::string absolute = std::filesystem::absolute(s.path).lexically_normal().string();
   out.line(povFormat(s.path) + " " + povQuoted(absolute));
@@ -102,11 +166,22 @@ ShapeEntry<HeightFieldSpec> shapeEntry<HeightFieldSpec>() {
   e.doc =
       "POV-Ray's height_field: an image's brightness as heights over x, z in [0, 1], closed by "
       "walls and a floor at the water level (solid; open: the surface alone, as POV-Ray's).";
+  e.children = {pigmentFunctionChild()};
+  Field<HeightFieldSpec> resolution =
+      readByEntry<HeightFieldSpec>("resolution", AttrType::IntegerList)
+          .doc("With function: the grid's points along x and z (2 to 4096 each).");
+  resolution.info.schemaType = "integerPair";
   e.fields = {readByEntry<HeightFieldSpec>("src", AttrType::File)
                   .doc("A grey or colour PNG, PGM, PPM, TGA, JPEG or TIFF image, relative to the "
                        "scene file, read as POV-Ray reads it: grey values are heights; in an 8-bit "
                        "colour image red is the high byte and green the low byte, in a 16-bit one "
                        "the brightness is the height. The image's top row is at z = 1."),
+              readByEntry<HeightFieldSpec>("function", AttrType::Text)
+                  .doc("Instead of src: an expression in x, y and z (as an isosurface's) whose "
+                       "value is the height at the grid point (x, z) taken at (x, 1 - z, 0), "
+                       "stored in 16 bits as POV-Ray's height_field { function W, H { } } "
+                       "(outside [0, 1] it wraps around)."),
+              std::move(resolution),
               booleanField("smooth", &HeightFieldSpec::smooth)
                   .doc("Interpolate POV-Ray's vertex normals over each cell."),
               numberField("water-level", &HeightFieldSpec::waterLevel,

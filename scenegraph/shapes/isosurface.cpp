@@ -39,6 +39,26 @@ IsosurfaceSpec sample(const char* text, double (*f)(const Vec3&), IsosurfaceCont
 
 }  // namespace
 
+ChildElementInfo pigmentFunctionChild() {
+  AttributeInfo name;
+  name.name = "name";
+  name.type = AttrType::Text;
+  name.required = true;
+  name.doc = "How the function calls it: name(x, y, z).";
+  AttributeInfo component;
+  component.name = "component";
+  component.type = AttrType::Choice;
+  component.required = true;
+  component.doc = "The component of the colour the call gives.";
+  component.choices.assign(std::begin(kPigmentComponentNames), std::end(kPigmentComponentNames));
+  return {"pigment-function",
+          "A texture the function calls by name with a point (POV-Ray's pigment "
+          "function): the component of its colour there.",
+          {name, component},
+          false,
+          "    <xs:group ref=\"nestedTexture\"/>\n"};
+}
+
 template <>
 ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
   ShapeEntry<IsosurfaceSpec> e(
@@ -85,23 +105,7 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
       "a "
       "box or sphere container (solid unless open).";
   // Its <pigment-function> children are read with the function (the language reads them).
-  AttributeInfo name;
-  name.name = "name";
-  name.type = AttrType::Text;
-  name.required = true;
-  name.doc = "How the function calls it: name(x, y, z).";
-  AttributeInfo component;
-  component.name = "component";
-  component.type = AttrType::Choice;
-  component.required = true;
-  component.doc = "The component of the colour the call gives.";
-  component.choices.assign(std::begin(kPigmentComponentNames), std::end(kPigmentComponentNames));
-  e.children = {{"pigment-function",
-                 "A texture the function calls by name with a point (POV-Ray's pigment "
-                 "function): the component of its colour there.",
-                 {name, component},
-                 false,
-                 "    <xs:group ref=\"nestedTexture\"/>\n"}};
+  e.children = {pigmentFunctionChild()};
   Field<IsosurfaceSpec> function = readByEntry<IsosurfaceSpec>("function", AttrType::Text);
   function.info.required = true;
   e.fields = {

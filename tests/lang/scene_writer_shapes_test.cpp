@@ -6,9 +6,11 @@
 
 #include "lang/scene_writer.h"
 #include "primitives/text_outline.h"
+#include "scenegraph/pigment_function.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -333,4 +335,26 @@ TEST_CASE("scene writer: a height field names its image", "[lang][scene-writer]"
   CHECK(a.map->width == b.map->width);
   CHECK(a.map->depth == b.map->depth);
   CHECK(a.map->values == b.map->values);
+}
+
+TEST_CASE("scene writer: a height field of a function keeps its function, pigments and grid",
+          "[lang][scene-writer]") {
+  auto r = roundTrip(
+      "<height-field function=\"k*x + G(x, y, z)\" resolution=\"7 5\" open=\"true\">"
+      "<param name=\"k\" value=\"0.25\"/>"
+      "<pigment-function name=\"G\" component=\"gray\">"
+      "<pattern type=\"bozo\" transform=\"scale(0.3)\"/></pigment-function></height-field>");
+  auto [a, b] = specs<HeightFieldSpec>(r);
+  CHECK(b.src.empty());
+  CHECK(b.function == a.function);
+  CHECK(b.resolution[0] == 7);
+  CHECK(b.resolution[1] == 5);
+  CHECK(b.open);
+  REQUIRE(b.pigments.size() == 1);
+  CHECK(b.pigments[0]->component == PigmentComponent::gray);
+  REQUIRE(b.map);
+  CHECK(a.map->values == b.map->values);
+  // The grid is not flat: the bozo and the slope in x both show.
+  CHECK(*std::max_element(b.map->values.begin(), b.map->values.end()) >
+        *std::min_element(b.map->values.begin(), b.map->values.end()) + 1000);
 }

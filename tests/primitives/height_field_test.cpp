@@ -249,6 +249,32 @@ TEST_CASE("height field: an open field has neither walls nor floor, as POV-Ray's
   CHECK(h.part == HeightField::kFloor);
 }
 
+TEST_CASE("height field: a field flat at its highest point is hit wherever a ray comes down",
+          "[primitives][height-field]") {
+  // The box's top is the surface itself: rounding may put a ray's entry just below it,
+  // which must still be the surface (open or closed), never a miss or the box's top face.
+  const double level = 13107 / 65536.0;
+  for (bool open : {true, false}) {
+    HeightField hf(grid(4, 4, std::vector<uint16_t>(16, 13107)), false, 0.0, open);
+    int tried = 0;
+    for (int a = 0; a < 40; ++a)
+      for (int b = 0; b < 40; ++b) {
+        const Vec3 target(0.0123 + a * 0.0244, level, 0.0071 + b * 0.0247);
+        const Vec3 from(target.x - 0.7 + 0.013 * b, 2.0 + 0.01 * a, target.z - 1.3 + 0.02 * a);
+        const Ray ray(from, target - from);
+        Hit h;
+        INFO("open " << open << ", target " << target.x << " " << target.z);
+        REQUIRE(hf.intersect(ray, h));
+        CHECK(h.t == Approx(1.0).epsilon(1e-12));
+        CHECK(h.part < HeightField::kWallX0);
+        const SurfaceInfo si = hf.surface(ray, h);
+        CHECK(si.ng.y == Approx(1.0));
+        ++tried;
+      }
+    CHECK(tried == 1600);
+  }
+}
+
 TEST_CASE("height field: inside is below the surface, above the water, within the square",
           "[primitives][height-field]") {
   HeightField hf(rough(), false, 0.2);

@@ -111,6 +111,11 @@ TEST_CASE("scene reader image: height fields, their image's rows where POV-Ray p
   requireSameImageAsPovrayInPlace("height_field.pov", 160, 120);
 }
 
+TEST_CASE("scene reader image: height fields of functions, sampled as POV-Ray samples them",
+          "[sdl][scene][image][povray]") {
+  requireSameImageAsPovray("height_field_function.pov", 160, 120);
+}
+
 TEST_CASE("scene reader image: textures placed among transforms, block patterns and maps",
           "[sdl][scene][image][povray][texture]") {
   requireSameImageAsPovray("textures_placed.pov", 160, 120);

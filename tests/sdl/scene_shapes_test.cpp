@@ -6,6 +6,7 @@
 #include "scene_read_support.h"
 #include "sdl_test_support.h"
 
+#include "primitives/height_map_function.h"
 #include "sdl/scene_reader.h"
 
 #include <variant>
@@ -281,6 +282,37 @@ height_field { "hf.pgm" })");
   CHECK(said);
 }
 
+TEST_CASE("scene shapes: height_field of a function, sampled where it is read",
+          "[sdl][scene][shapes]") {
+  auto r = readScene(R"(height_field { function 3.4, 2.5 { x + 0.25*y } smooth }
+#declare P = pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] } }
+height_field { function 5, 2 { pigment { P } } })");
+  REQUIRE(r->load.scene);
+  const auto& h = shapeOf<HeightFieldSpec>(*r->load.scene, 0);
+  CHECK(h.smooth);
+  CHECK(h.open);
+  CHECK(h.src.empty());
+  CHECK(h.resolution[0] == 3);  // POV-Ray rounds the sizes
+  CHECK(h.resolution[1] == 3);
+  REQUIRE(h.map);
+  REQUIRE(h.map->width == 3);
+  REQUIRE(h.map->depth == 3);
+  // Row z = 0 takes the function at y = 1 (POV-Ray's function image read bottom up).
+  CHECK(h.map->at(0, 0) == heightOfFunctionValue(0.25));
+  CHECK(h.map->at(2, 0) == heightOfFunctionValue(1.25));  // wrapped, as POV-Ray's
+  CHECK(h.map->at(1, 2) == heightOfFunctionValue(0.5));
+  CHECK(h.map->at(1, 1) == heightOfFunctionValue(0.5 + 0.125));
+  checkMat(topNode(*r->load.scene, 0).parentFromNode,
+           PovTransform::scaling(Vec3(1, 1, -1)).lucentMatrix());
+  // A pigment function's height is its grey: 0.297 r + 0.589 g at x = 0.5 (gradient x).
+  const auto& g = shapeOf<HeightFieldSpec>(*r->load.scene, 1);
+  REQUIRE(g.map);
+  CHECK(g.pigments.size() == 1);
+  const double grey = 0.297 * 0.5 + 0.589 * 0.25;
+  CHECK(std::abs(int(g.map->at(2, 0)) - int(heightOfFunctionValue(grey))) <= 1);
+  CHECK(g.map->at(0, 1) == 0);
+}
+
 TEST_CASE("scene shapes: mesh and mesh2 as inline meshes", "[sdl][scene][shapes]") {
   auto r = readScene(R"(
 mesh {
@@ -475,6 +507,11 @@ TEST_CASE("scene shapes: bad input, located", "[sdl][scene][shapes][errors]") {
        "test.pov:1:20: error: cannot find the file 'none.png' (searched "},
       {"height_field { pgm \"hf.pgm\" water_level 1 }",
        "test.pov:1:29: error: the water level must be from 0 to below 1, not 1"},
+      {"height_field { function 1, 8 { x } }",
+       "test.pov:1:25: error: the function height field's width must be from 2 to 4096, not 1"},
+      {"height_field { function 8, 5000 { x } }",
+       "test.pov:1:28: error: the function height field's height must be from 2 to 4096, not 5000"},
+      {"height_field { function 8, 8 { x + nosuch } }", "test.pov:1:36: error: "},
       {"mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0, 1, 3> } }",
        "test.pov:1:1: error: the mesh2's vertex index 3 is outside its 3 vectors"},
       {"smooth_triangle { 0, y, x, 0, z, y }",
