@@ -248,7 +248,8 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
     issues.warning(m.loc, fmt::format("{}: inside the object Lucent scales the ambient term by "
                                       "transmissive; POV-Ray does not",
                                       name));
-  if (transmits && m.attenuates() && !isZero(kr))
+  // fade-on-exit is POV-Ray's rule: nothing to say then.
+  if (transmits && m.attenuates() && !m.fadeOnExit && !isZero(kr))
     issues.warning(m.loc, fmt::format("{}: POV-Ray does not attenuate light reflected inside "
                                       "an absorbing object (its fade applies to transmitted "
                                       "light only); Lucent does",
@@ -256,7 +257,7 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
   // Found by the gallery (examples/gallery/absorption.xml): POV-Ray applies the interior
   // fade to the light passing out, not to the local terms at a hit inside the object, so a
   // highlight seen on the inside of the far wall keeps its full strength.
-  if (transmits && m.attenuates() && !isZero(ks))
+  if (transmits && m.attenuates() && !m.fadeOnExit && !isZero(ks))
     issues.warning(m.loc, fmt::format("{}: POV-Ray does not attenuate the highlights seen on "
                                       "the inside of an absorbing object; Lucent does",
                                       name));

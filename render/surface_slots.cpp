@@ -15,6 +15,7 @@ Material withInterior(const Material& surface, const Material& whole, bool keepL
   m.fadeDistance = whole.fadeDistance;
   m.fadePower = whole.fadePower;
   m.fadeColor = whole.fadeColor;
+  m.fadeOnExit = whole.fadeOnExit;
   m.hollow = whole.hollow;
   m.innerAmbient = whole.innerAmbient;
   return m;

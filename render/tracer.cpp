@@ -22,6 +22,14 @@ namespace {
 
 bool anyPositive(const Color& c) { return maxComponent(c) > 0.0f; }
 
+// fade-on-exit: what the stretch inside keeps dims the rays that carry light out of the
+// solid at this hit (Tracer::Hit::passOut, 1 otherwise), as POV-Ray's interior fade.
+void dimPassingOut(SecondaryRays& rays, const Color& passOut) {
+  if (passOut == Color(1.0f)) return;
+  rays.transmitted *= passOut;
+  if (rays.totallyReflected) rays.mirror *= passOut;
+}
+
 // What light keeps over `distance` inside m: its absorption and its fade (render/optics.h).
 Color interiorAttenuation(const Material& m, double distance, bool shadowRay) {
   Color keep = m.isAbsorbing() ? beerLambert(m.absorption, distance) : Color(1.0f);
@@ -109,8 +117,12 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     const SurfaceInfo s = hit.surface(ray);
     const bool solid = hitLeaf.medium != nullptr;  // the leaf bounds a medium (its material)
     const bool front = glm::dot(ray.d, s.ng) < 0.0;
-    const Hit here{hitLeaf, s, -glm::normalize(ray.d), front, solid && !front};
-    travelled(ray, hit.t(), here.leaving ? hitLeaf.material : nullptr, media, sum, throughput);
+    Hit here{hitLeaf, s, -glm::normalize(ray.d), front, solid && !front};
+    const Material* leaving = here.leaving ? hitLeaf.material : nullptr;
+    // fade-on-exit: the stretch's attenuation waits for the rays that leave at this hit.
+    if (leaving && leaving->fadeOnExit && leaving->attenuates())
+      here.passOut = interiorAttenuation(*leaving, hit.t() * glm::length(ray.d), false);
+    travelled(ray, hit.t(), leaving, media, sum, throughput);
 
     PatternSurface surface;
     if (patternSurface_) surface = patternSurfaceAt(s, here.v);
@@ -182,6 +194,7 @@ Tracer::Shaded Tracer::shadeOne(uint32_t slot, const Hit& h, int depth, const Co
   Interface side = interfaceAt(*h.leaf.material, m.transmissive, solid, h.front, media);
   out.rays =
       secondaryRays(m, ShadingPoint{s.p, n, h.v}, solid, side.n1, side.n2, reflectionTint(leaf, s));
+  dimPassingOut(out.rays, h.passOut);
   if (out.rays.straight && !mayContinue) {
     out.rays.straight = false;  // traced below, as a bent ray is
     out.rays.refracted = -h.v;
@@ -250,6 +263,7 @@ Tracer::Shaded Tracer::shadeLayers(const SurfaceSlots::Slot& layers, const Hit& 
   // The top layer's mirror ray and the ray through all the layers.
   top->transmissive = through;
   out.rays = secondaryRays(*top, ShadingPoint{s.p, topN, h.v}, solid, side.n1, side.n2, topTint);
+  dimPassingOut(out.rays, h.passOut);
   if (!(maxComponent(through) > 0.0f)) side.beyond = media;  // nothing crosses
   if (out.rays.straight && !mayContinue) {
     out.rays.straight = false;  // traced below, as a bent ray is
@@ -276,7 +290,8 @@ Tracer::Shaded Tracer::shadeMap(const SurfaceSlots::Slot& map, const Hit& h, int
                                 TraceContext& context) const {
   const Material& m = *map.material;
   SurfaceInfo moved;
-  const Hit at{h.leaf, mapEntrySurface(m.mapPattern, h.s, moved), h.v, h.front, h.leaving};
+  const Hit at{h.leaf,   mapEntrySurface(m.mapPattern, h.s, moved), h.v, h.front, h.leaving,
+               h.passOut};
   if (mapAverages(m)) return shadeAverage(map, at, depth, weight, media, seed, context);
   const MapBlend b = mapBlend(m.mapEntries, mapValueAt(m.mapPattern, h.s, *h.leaf.instance));
   Shaded out;
@@ -374,7 +389,7 @@ void Tracer::travelled(const Ray& ray, double t, const Material* leaving, const 
   // The stretch lies inside the solid being left, or else in the innermost medium the
   // ray is known to be in.
   const Material* segment = leaving ? leaving : media.top();
-  if (segment && segment->attenuates())
+  if (segment && segment->attenuates() && !segment->fadeOnExit)
     throughput *= interiorAttenuation(*segment, t * glm::length(ray.d), false);
 }
 

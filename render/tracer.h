@@ -75,6 +75,8 @@ class Tracer {
     Vec3 v;  // towards the viewer
     bool front = true;
     bool leaving = false;  // the ray was inside this solid
+    // fade-on-exit: the attenuation of the stretch inside, for the rays leaving here.
+    Color passOut{1.0f};
   };
   struct Shaded {
     Color result{0.0f};

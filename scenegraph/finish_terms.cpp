@@ -52,9 +52,9 @@ FinishTerm term(Attribute a, std::string_view pov, std::vector<PovHint> hints = 
 // The terms of the whole material, which its <layer>s do not take: the interior (what
 // light meets inside the solid) and the rules for the ray that crosses the surface.
 std::vector<FinishTerm> markInterior(std::vector<FinishTerm> table) {
-  static constexpr std::string_view kInterior[] = {"ior",           "full-tir",     "absorption",
-                                                   "fade-distance", "fade-power",   "fade-color",
-                                                   "hollow",        "inner-ambient"};
+  static constexpr std::string_view kInterior[] = {"ior",           "full-tir",   "absorption",
+                                                   "fade-distance", "fade-power", "fade-color",
+                                                   "fade-on-exit",  "hollow",     "inner-ambient"};
   for (FinishTerm& t : table)
     for (std::string_view name : kInterior)
       if (t.info.name == name) t.ofInterior = true;
@@ -172,6 +172,13 @@ const std::vector<FinishTerm>& finishTerms() {
       term(color("fade-color", &Material::fadeColor,
                  "The colour the fade tends to far inside the object. Default 0."),
            "interior { fade_color }", {{"fade_color"}, {"fade_colour"}}),
+      term(boolean("fade-on-exit", &Material::fadeOnExit,
+                   "true: the fade and absorption dim only the light leaving the solid (the "
+                   "transmitted ray, or the totally reflected one, at a hit reached from "
+                   "inside), as POV-Ray's interior; false: everything seen along a stretch "
+                   "inside, the hit's own lighting and partial reflection included."),
+           // No POV-Ray line: POV-Ray's own rule is true (povray/ says where false differs).
+           "POV-Ray's rule (it has no keyword: its fade dims only light passing out)"),
       term(boolean("hollow", &Material::hollow,
                    "true: the scene's fogs go on inside the solid, as inside POV-Ray's hollow "
                    "objects. Default false: a ray inside a solid is not fogged (POV-Ray's "

@@ -87,6 +87,10 @@ struct Material {
   double fadeDistance = 0.0;  // 0: no fade
   double fadePower = 2.0;
   Color fadeColor{0.0f};
+  // POV-Ray's rule: the fade and absorption of a stretch inside dim only the rays that carry
+  // light out at the hit ending it (transmitted, or totally reflected), not what is seen at
+  // that hit itself; false: everything seen along the stretch.
+  bool fadeOnExit = false;
   // Total internal reflection: false adds k_t to the mirror ray's weight k_r; true gives
   // the mirror ray weight 1, as POV-Ray's (which then skips its own reflection there).
   bool fullTir = false;

@@ -34,6 +34,7 @@ Color importReflection(const PovFinish& finish, Material& m) {
 
 void importFade(const PovInterior& in, Material& m) {
   if (!(in.fadeDistance > 0.0)) return;
+  m.fadeOnExit = true;  // POV-Ray fades only the light passing out of the object
   if (in.fadePower >= 1000.0) {
     // exp(−(1 − fade_color)·d/fade_distance): Beer–Lambert, as Lucent's absorption.
     m.absorption = (Color(1.0f) - in.fadeColor) / static_cast<float>(in.fadeDistance);

@@ -173,6 +173,12 @@ TEST_CASE("approximations are warnings naming the material", "[povray][materials
         "test.xml:3:1: warning: material 'm': POV-Ray does not attenuate "
         "light reflected inside an absorbing object (its fade applies to "
         "transmitted light only); Lucent does\n");
+  // fade-on-exit is POV-Ray's rule: nothing to say.
+  CHECK(
+      exportMaterial(
+          R"XML(transmissive="1" reflective="0.3" absorption="0.5" specular="1" fade-on-exit="true")XML")
+          .messages()
+          .empty());
 
   // Lucent's weight under total internal reflection is k_r + k_t.
   Exported tir = exportMaterial(R"XML(transmissive="0.7" reflective="0.1" ior="1.5")XML");

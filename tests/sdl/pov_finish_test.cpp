@@ -184,12 +184,14 @@ TEST_CASE("interior fade: exponential above fade_power 1000 is Lucent's absorpti
   // exp(−(1 − fade_color)·d/fade_distance) = exp(−absorption·d)
   requireColor(m.material.absorption, Color(0.25f, 0.1f, 0.0f));
   CHECK_FALSE(m.material.hasFade());
+  CHECK(m.material.fadeOnExit);  // POV-Ray dims only the light passing out
   // Below 1000: POV-Ray's fade itself.
   interior.fadePower = 2.0;
   m = importMaterial(clear, PovFinish{}, interior);
   requireColor(m.material.absorption, Color(0.0f));
   CHECK(m.material.fadeDistance == 2.0);
   CHECK(m.material.fadePower == 2.0);
+  CHECK(m.material.fadeOnExit);
   requireColor(m.material.fadeColor, interior.fadeColor);
   CHECK(m.differences.empty());
   // fade_power 0 too (a constant in POV-Ray); no fade_distance: no fade.
