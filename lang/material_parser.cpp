@@ -96,7 +96,8 @@ Texture parseMapAverage(ElementReader& t) {
 // <material-map>: its pattern first (a <pattern> without colour map, or a <checker>,
 // <hexagon> or <brick>, whose colours are not used, or an <average>), then its
 // <entry at material>s or <entry at><material/></entry>s, in ascending order of `at`
-// (an average's entries take a `weight` instead, in any order).
+// (an average's entries take a `weight` instead, in any order; those of an image-pattern
+// read by index neither, their order giving their numbers).
 void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve) {
   r.checkAttributes({});
   ParseContext& ctx = r.ctx();
@@ -120,7 +121,9 @@ void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve
         return;
       }
       havePattern = true;
+      ctx.mapPatternElement = n;
       m.mapPattern = name == "average" ? parseMapAverage(t) : parseTexture(t);
+      ctx.mapPatternElement = pugi::xml_node();
       if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern);
           p && (!p->map.entries.empty() || !p->pigments.empty()))
         t.error(
@@ -135,7 +138,15 @@ void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve
       return;
     }
     MaterialMapEntry entry;
-    if (mapAverages(m)) {
+    if (mapIndexImage(m)) {
+      // Entry k shows where the image gives material number k (POV-Ray's material_map).
+      if (t.has("at") || t.has("weight"))
+        t.error(
+            "the <entry>s of a <material-map> read by index take no 'at' or 'weight': the k-th "
+            "entry (from 0) shows where the image's index is k");
+      t.checkAttributes({"at", "weight", "material"});
+      entry.at = static_cast<double>(m.mapEntries.size());
+    } else if (mapAverages(m)) {
       t.checkAttributes({"weight", "material"});
       if (!t.has("weight"))
         t.error("an <entry> of an averaged <material-map> needs a 'weight' (a positive number)");

@@ -91,7 +91,8 @@ const std::vector<std::string_view> kValueAttributes{"type",
                                                      "projection",
                                                      "once",
                                                      "interpolate",
-                                                     "use-alpha"};
+                                                     "use-alpha",
+                                                     "index"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -290,10 +291,20 @@ void parsePavementAttributes(ElementReader& r, PatternSpec& s) {
 // and blended; the projection is one of space's, (u,v) coming from mapping="uv".
 void parseImagePatternAttributes(ElementReader& r, PatternSpec& s) {
   const bool image = s.type == PatternType::image;
-  for (const char* a : {"src", "projection", "once", "interpolate", "use-alpha"})
+  for (const char* a : {"src", "projection", "once", "interpolate", "use-alpha", "index"})
     onlyFor(r, a, image, "image-pattern", s.type);
   if (!image) return;
   ImagePattern im;
+  im.byIndex = r.boolean("index", false);
+  if (r.has("index") && r.element() != r.ctx().mapPatternElement)
+    r.attrError("index",
+                "only the image-pattern that is a <material-map>'s pattern reads its image by "
+                "index (its palette index picks an entry)");
+  if (im.byIndex)
+    for (const char* a : {"use-alpha", "frequency", "phase", "wave", "exponent"})
+      if (r.has(a))
+        r.attrError(a, std::string("an image-pattern read by index takes no '") + a +
+                           "': the index picks an entry, it is not a value");
   if (r.verbatim("projection") == "uv")
     r.attrError("projection",
                 "an image-pattern is projected from pattern space (planar, spherical, "
@@ -314,7 +325,8 @@ void parseImagePatternAttributes(ElementReader& r, PatternSpec& s) {
   if (f.path.empty()) return r.attrError("src", f.error);
   im.path = f.path.string();
   try {
-    im.values = readImagePatternValues(im.path, im.useAlpha);
+    im.values =
+        im.byIndex ? readImageIndexValues(im.path) : readImagePatternValues(im.path, im.useAlpha);
   } catch (const std::exception& e) {  // ImageValuesError, ImagePluginError, a library's own
     return r.attrError("src", "cannot read the image '" + *src + "': " + e.what());
   }
