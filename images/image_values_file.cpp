@@ -128,6 +128,12 @@ std::shared_ptr<const ImageValueGrid> readImagePatternValues(const std::string& 
   return isPngFile(path) ? readPng(path, read) : readThroughPlugin(path, read);
 }
 
+std::shared_ptr<const ImageValueGrid> bumpIndices(const std::string& path) {
+  if (!isPngFile(path)) return nullptr;  // Lucent reads palettes of PNGs only
+  auto grid = readPng(path, ValueRead::red);
+  return grid->indices.empty() ? nullptr : grid;
+}
+
 std::shared_ptr<const ImageValueGrid> readImageIndexValues(const std::string& path) {
   return isPngFile(path) ? readPng(path, ValueRead::red) : readThroughPlugin(path, ValueRead::red);
 }

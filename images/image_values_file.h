@@ -43,4 +43,8 @@ std::shared_ptr<const ImageValueGrid> readImagePatternValues(const std::string& 
 // image's grey), whose value times 255 gives the material number where there is no palette.
 std::shared_ptr<const ImageValueGrid> readImageIndexValues(const std::string& path);
 
+// A bump map's palette indices for use_index: the grid of a palette image, null for an image
+// without a palette (whose grey levels POV-Ray reads then).
+std::shared_ptr<const ImageValueGrid> bumpIndices(const std::string& path);
+
 }  // namespace lucent

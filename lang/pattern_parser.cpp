@@ -763,7 +763,7 @@ void parseImageReading(ElementReader& r, ImageProjection& projection, PatternPla
 }
 
 BumpMapSpec parseBumpMap(ElementReader& r) {
-  std::vector<std::string_view> attributes{"src", "depth", "keep-facing-away"};
+  std::vector<std::string_view> attributes{"src", "depth", "keep-facing-away", "use-index"};
   attributes.insert(attributes.end(), imageReadingAttributes().begin(),
                     imageReadingAttributes().end());
   r.checkAttributes(attributes);
@@ -776,6 +776,14 @@ BumpMapSpec parseBumpMap(ElementReader& r) {
     FileAccess::Resolved f = r.ctx().files.resolve(*src, r.file().folder());
     if (f.path.empty()) r.attrError("src", f.error);
     else b.path = f.path.string();
+  }
+  b.useIndex = r.boolean("use-index", false);
+  if (b.useIndex && !b.path.empty()) {
+    try {
+      b.indices = bumpIndices(b.path);
+    } catch (const std::exception& e) {  // ImageValuesError, ImagePluginError, a library's own
+      r.attrError("src", "cannot read the bump map's palette indices: " + std::string(e.what()));
+    }
   }
   b.depth = r.number("depth", b.depth);
   b.keepFacingAway = r.boolean("keep-facing-away", b.keepFacingAway);

@@ -545,6 +545,7 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
                  {"depth", xmlNumber(m.bumpMap->depth)}};
     addImageReading(*m.bumpMap, a);
     if (m.bumpMap->keepFacingAway) a.emplace_back("keep-facing-away", "true");
+    if (m.bumpMap->useIndex) a.emplace_back("use-index", "true");
     openPlaced(out, "bump-map", a, true, m.bumpMap->placement);
   }
   // The layers over it, bottom first, each with its own surface terms and children.

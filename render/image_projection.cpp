@@ -210,10 +210,15 @@ struct IndexView {
 
 }  // namespace
 
+int samplePaletteIndex(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
+                       bool once) {
+  return static_cast<int>(
+      sampled(IndexView{grid, grid.width, grid.height}, xy, interpolation, once));
+}
+
 int sampleImageIndex(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
                      bool once) {
-  const double blended = sampled(IndexView{grid, grid.width, grid.height}, xy, interpolation, once);
-  const int index = static_cast<int>(blended);
+  const int index = samplePaletteIndex(grid, xy, interpolation, once);
   if (index != -1) return index;
   const double red = sampleImageValue(grid, xy, interpolation, once);
   return static_cast<int>(red * 255.0);

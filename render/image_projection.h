@@ -46,4 +46,8 @@ float sampleImageValue(const ImageValueGrid& grid, const Vec2& xy, ImageInterpol
 int sampleImageIndex(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
                      bool once);
 
+// The palette indices alone, blended and truncated as above: -1 for an image without one.
+int samplePaletteIndex(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
+                       bool once);
+
 }  // namespace lucent

@@ -165,23 +165,34 @@ void SceneReader::readBumpMap(const Token& t, TokenStream& in, PovNormal& n) {
   for (;;) {
     const Token k = in.next();
     if (k.is("}")) break;
+    if (isWord(k, "use_color") || isWord(k, "use_colour")) {
+      bump.useIndex = false;
+      continue;
+    }
     if (readImageReading(k, in, bump)) continue;
     if (isWord(k, "bump_size")) {
       bump.depth = in.parseFloat();
     } else if (isWord(k, "use_index")) {
       // POV-Ray takes a palette image's indices as heights; any other image has none, and
-      // its grey levels are read as with use_color.
-      if (mayHoldPalette(bump.path))
+      // its grey levels are read as with use_color. The last of the two counts.
+      bump.useIndex = true;
+      if (mayHoldPalette(bump.path) && !isPngFile(bump.path))
         keepError(in, k.loc(),
-                  "'use_index' on a palette image is not supported by Lucent (palette indices "
-                  "as heights; Lucent reads the palette's colours' grey levels); on an image "
-                  "without a palette it changes nothing");
+                  "'use_index' on a palette image other than a PNG is not supported by Lucent "
+                  "(it reads the palette indices of PNGs)");
     } else if (isWord(k, "repeat") || isWord(k, "offset")) {
       keepError(in, k.loc(),
                 "'" + std::string(k.text()) + "' in a bump map is not supported by Lucent");
       in.parseVector();
     } else {
       in.error(k, "'" + std::string(k.text()) + "' is not a bump_map modifier");
+    }
+  }
+  if (bump.useIndex) {
+    try {
+      bump.indices = bumpIndices(bump.path);
+    } catch (const std::exception& e) {
+      in.error(t, "cannot read the bump map's palette indices in '" + bump.path + "': " + e.what());
     }
   }
   n.bump = bump;
