@@ -287,6 +287,26 @@ void parsePavementAttributes(ElementReader& r, PatternSpec& s) {
     v.form = static_cast<int>(r.integer("pavement-form", v.form, 0, 3));
 }
 
+// image-pattern's file: resolved and its values read now (left empty where it cannot be).
+void readImagePatternFile(ElementReader& r, ImagePattern& im) {
+  const std::optional<std::string> src = r.text("src");
+  if (!src) {
+    r.error(r.tag() +
+            " type=\"image-pattern\" needs 'src' (the image file whose grey levels are the "
+            "values)");
+    return;
+  }
+  FileAccess::Resolved f = r.ctx().files.resolve(*src, r.file().folder());
+  if (f.path.empty()) return r.attrError("src", f.error);
+  im.path = f.path.string();
+  try {
+    im.values =
+        im.byIndex ? readImageIndexValues(im.path) : readImagePatternValues(im.path, im.useAlpha);
+  } catch (const std::exception& e) {  // ImageValuesError, ImagePluginError, a library's own
+    r.attrError("src", "cannot read the image '" + *src + "': " + e.what());
+  }
+}
+
 // image-pattern's file, read now (its values are the pattern's), and how it is projected
 // and blended; the projection is one of space's, (u,v) coming from mapping="uv".
 void parseImagePatternAttributes(ElementReader& r, PatternSpec& s) {
@@ -314,23 +334,9 @@ void parseImagePatternAttributes(ElementReader& r, PatternSpec& s) {
   im.once = r.boolean("once", im.once);
   im.interpolation = r.choice("interpolate", im.interpolation, kInterpolations);
   im.useAlpha = r.boolean("use-alpha", im.useAlpha);
-  const std::optional<std::string> src = r.text("src");
-  if (!src) {
-    r.error(r.tag() +
-            " type=\"image-pattern\" needs 'src' (the image file whose grey levels are the "
-            "values)");
-    return;
-  }
-  FileAccess::Resolved f = r.ctx().files.resolve(*src, r.file().folder());
-  if (f.path.empty()) return r.attrError("src", f.error);
-  im.path = f.path.string();
-  try {
-    im.values =
-        im.byIndex ? readImageIndexValues(im.path) : readImagePatternValues(im.path, im.useAlpha);
-  } catch (const std::exception& e) {  // ImageValuesError, ImagePluginError, a library's own
-    return r.attrError("src", "cannot read the image '" + *src + "': " + e.what());
-  }
-  s.image = std::make_shared<const ImagePattern>(std::move(im));
+  readImagePatternFile(r, im);
+  // An index map keeps its image even unread, so that its entries are read as its own.
+  if (im.values || im.byIndex) s.image = std::make_shared<const ImagePattern>(std::move(im));
 }
 
 // The modifiers of slope, facets, agate, quilted, tiling, mandel, julia, magnet, pavement and

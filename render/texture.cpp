@@ -316,6 +316,7 @@ double mapValueAt(const Texture& pattern, const SurfaceInfo& hit, const Instance
 MapBlend mapChoice(const Material& m, const SurfaceInfo& hit, const Instance& leaf) {
   const ImagePattern* image = mapIndexImage(m);
   if (!image) return mapBlend(m.mapEntries, mapValueAt(m.mapPattern, hit, leaf));
+  if (!image->values) return mapIndexEntry(0, m.mapEntries.size());  // an invalid scene's
   const PatternSpec& spec = std::get<PatternTexture>(m.mapPattern).pattern;
   SurfaceInfo uvView;
   const SurfaceInfo& surface = surfaceFor(spec.placement, hit, uvView);

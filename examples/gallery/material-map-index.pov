@@ -72,16 +72,16 @@ sphere {
   }
 }
 
-// Right: the emblem's palette indices as bump heights.
+// Right: the emblem's palette indices as bump heights, one copy (flat off it).
 box {
   <1.5, 0.3, -0.1>, <3.9, 2.7, 0>
   texture {
     pigment { rgb <0.85, 0.85, 0.8> }
     normal {
-      bump_map { png "textures/emblem.png" interpolate 2 use_index }  // Lucent blends bilinearly by default
+      bump_map { png "textures/emblem.png" once interpolate 2 use_index }  // Lucent blends bilinearly by default
       bump_size 0.02
-      scale 2.4
-      translate <1.5, 0.3, 0>
+      scale 2
+      translate <1.7, 0.5, 0>
     }
     finish { ambient 0.1 / <0.85, 0.85, 0.8> diffuse 1 specular 0 phong 0.4 phong_size 40 }
   }
