@@ -18,9 +18,13 @@ struct Pixel {
   float r, g, b, alpha;
 };
 
-// The value image_pattern takes from a pixel.
-float patternValue(const Pixel& p, bool useAlpha, bool holdsTransparency) {
-  if (useAlpha) return holdsTransparency ? 1.0f - p.alpha : p.r;
+// What is kept of each pixel.
+enum class ValueRead { grey, alpha, red };
+
+// The value image_pattern (or with `red` material_map) takes from a pixel.
+float patternValue(const Pixel& p, ValueRead read, bool holdsTransparency) {
+  if (read == ValueRead::red) return p.r;
+  if (read == ValueRead::alpha) return holdsTransparency ? 1.0f - p.alpha : p.r;
   return static_cast<float>(0.297 * p.r + 0.589 * p.g + 0.114 * p.b);
 }
 
@@ -32,7 +36,8 @@ void checkSize(int width, int height) {
 }
 
 // A PNG through libpng: its palette and bit depth are facts OpenImageIO hides.
-std::shared_ptr<const ImageValueGrid> readPng(const std::string& path, bool useAlpha) {
+std::shared_ptr<const ImageValueGrid> readPng(const std::string& path, ValueRead read) {
+  const bool useAlpha = read == ValueRead::alpha;
   PngPixels png;
   std::string error = readPngHeader(path, png);
   if (!error.empty()) throw ImageValuesError(error);
@@ -77,14 +82,14 @@ std::shared_ptr<const ImageValueGrid> readPng(const std::string& path, bool useA
     } else {
       p = {v[0] / top, v[1] / top, v[2] / top, n == 4 ? v[3] / top : 1.0f};
     }
-    grid->values[i] = patternValue(p, useAlpha, holdsTransparency);
+    grid->values[i] = patternValue(p, read, holdsTransparency);
   }
   return grid;
 }
 
 // Other formats through OpenImageIO: integer code values over their maximum, floats as
 // they are.
-std::shared_ptr<const ImageValueGrid> readThroughPlugin(const std::string& path, bool useAlpha) {
+std::shared_ptr<const ImageValueGrid> readThroughPlugin(const std::string& path, ValueRead read) {
   std::string error;
   std::unique_ptr<ImageReader> in = openImageReader(path, error);
   if (!in) throw ImageValuesError(error.empty() ? std::string("not an image") : error);
@@ -110,7 +115,7 @@ std::shared_ptr<const ImageValueGrid> readThroughPlugin(const std::string& path,
     Pixel p{};
     if (n - (holdsTransparency ? 1 : 0) < 3) p = {stored(v[0]), stored(v[0]), stored(v[0]), alpha};
     else p = {stored(v[0]), stored(v[1]), stored(v[2]), alpha};
-    grid->values[i] = patternValue(p, useAlpha, holdsTransparency);
+    grid->values[i] = patternValue(p, read, holdsTransparency);
   }
   return grid;
 }
@@ -119,7 +124,18 @@ std::shared_ptr<const ImageValueGrid> readThroughPlugin(const std::string& path,
 
 std::shared_ptr<const ImageValueGrid> readImagePatternValues(const std::string& path,
                                                              bool useAlpha) {
-  return isPngFile(path) ? readPng(path, useAlpha) : readThroughPlugin(path, useAlpha);
+  const ValueRead read = useAlpha ? ValueRead::alpha : ValueRead::grey;
+  return isPngFile(path) ? readPng(path, read) : readThroughPlugin(path, read);
+}
+
+std::shared_ptr<const ImageValueGrid> bumpIndices(const std::string& path) {
+  if (!isPngFile(path)) return nullptr;  // Lucent reads palettes of PNGs only
+  auto grid = readPng(path, ValueRead::red);
+  return grid->indices.empty() ? nullptr : grid;
+}
+
+std::shared_ptr<const ImageValueGrid> readImageIndexValues(const std::string& path) {
+  return isPngFile(path) ? readPng(path, ValueRead::red) : readThroughPlugin(path, ValueRead::red);
 }
 
 }  // namespace lucent

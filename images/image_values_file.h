@@ -38,4 +38,13 @@ constexpr int kMaxImagePatternSide = 16384;
 std::shared_ptr<const ImageValueGrid> readImagePatternValues(const std::string& path,
                                                              bool useAlpha);
 
+// An image as POV-Ray 3.7's material_map reads it (imageutil.cpp, material_map): a palette
+// image's indices, and for every image each pixel's red channel (v / 255, v / 65535; a grey
+// image's grey), whose value times 255 gives the material number where there is no palette.
+std::shared_ptr<const ImageValueGrid> readImageIndexValues(const std::string& path);
+
+// A bump map's palette indices for use_index: the grid of a palette image, null for an image
+// without a palette (whose grey levels POV-Ray reads then).
+std::shared_ptr<const ImageValueGrid> bumpIndices(const std::string& path);
+
 }  // namespace lucent

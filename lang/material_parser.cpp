@@ -93,10 +93,37 @@ Texture parseMapAverage(ElementReader& t) {
   return a;
 }
 
+// An <entry>'s place in its map: its `at` (ascending), an average's `weight`, or under an
+// image read by index its number, the count of entries before it.
+double entryPlace(ElementReader& t, const Material& m) {
+  if (mapIndexImage(m)) {
+    // Entry k shows where the image gives material number k (POV-Ray's material_map).
+    if (t.has("at") || t.has("weight"))
+      t.error(
+          "the <entry>s of a <material-map> read by index take no 'at' or 'weight': the k-th "
+          "entry (from 0) shows where the image's index is k");
+    t.checkAttributes({"at", "weight", "material"});
+    return static_cast<double>(m.mapEntries.size());
+  }
+  if (mapAverages(m)) {
+    t.checkAttributes({"weight", "material"});
+    if (!t.has("weight"))
+      t.error("an <entry> of an averaged <material-map> needs a 'weight' (a positive number)");
+    return t.number("weight", 1.0, NumberRule::positive());
+  }
+  t.checkAttributes({"at", "material"});
+  if (!t.has("at")) t.error("<entry> needs the attribute 'at' (the pattern's value it sits at)");
+  const double at = t.number("at", 0.0);
+  if (!m.mapEntries.empty() && at < m.mapEntries.back().at)
+    t.attrError("at", "the entries of a <material-map> must be in ascending order of 'at'");
+  return at;
+}
+
 // <material-map>: its pattern first (a <pattern> without colour map, or a <checker>,
 // <hexagon> or <brick>, whose colours are not used, or an <average>), then its
 // <entry at material>s or <entry at><material/></entry>s, in ascending order of `at`
-// (an average's entries take a `weight` instead, in any order).
+// (an average's entries take a `weight` instead, in any order; those of an image-pattern
+// read by index neither, their order giving their numbers).
 void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve) {
   r.checkAttributes({});
   ParseContext& ctx = r.ctx();
@@ -120,7 +147,9 @@ void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve
         return;
       }
       havePattern = true;
+      ctx.mapPatternElement = n;
       m.mapPattern = name == "average" ? parseMapAverage(t) : parseTexture(t);
+      ctx.mapPatternElement = pugi::xml_node();
       if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern);
           p && (!p->map.entries.empty() || !p->pigments.empty()))
         t.error(
@@ -135,19 +164,7 @@ void parseMaterialMap(ElementReader& r, Material& m, const BaseResolver& resolve
       return;
     }
     MaterialMapEntry entry;
-    if (mapAverages(m)) {
-      t.checkAttributes({"weight", "material"});
-      if (!t.has("weight"))
-        t.error("an <entry> of an averaged <material-map> needs a 'weight' (a positive number)");
-      entry.at = t.number("weight", 1.0, NumberRule::positive());
-    } else {
-      t.checkAttributes({"at", "material"});
-      if (!t.has("at"))
-        t.error("<entry> needs the attribute 'at' (the pattern's value it sits at)");
-      entry.at = t.number("at", 0.0);
-      if (!m.mapEntries.empty() && entry.at < m.mapEntries.back().at)
-        t.attrError("at", "the entries of a <material-map> must be in ascending order of 'at'");
-    }
+    entry.at = entryPlace(t, m);
     std::optional<uint32_t> index;
     if (t.has("material")) index = resolve(t, "material");
     bool inline_ = false;

@@ -107,6 +107,10 @@ struct ParseContext {
   // for all the parses that share ParseOptions::meshCache).
   std::shared_ptr<MeshFileCache> meshCache = std::make_shared<MeshFileCache>();
 
+  // The pattern element of the <material-map> being read: the only image-pattern that may
+  // say index="true" (its value picks an entry by number).
+  pugi::xml_node mapPatternElement;
+
   // Camera names, for duplicates.
   std::unordered_map<std::string, SourceLoc> cameraNames;
   // Where <render> was given, to refuse a second one.

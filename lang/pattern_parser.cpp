@@ -91,7 +91,8 @@ const std::vector<std::string_view> kValueAttributes{"type",
                                                      "projection",
                                                      "once",
                                                      "interpolate",
-                                                     "use-alpha"};
+                                                     "use-alpha",
+                                                     "index"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -286,23 +287,8 @@ void parsePavementAttributes(ElementReader& r, PatternSpec& s) {
     v.form = static_cast<int>(r.integer("pavement-form", v.form, 0, 3));
 }
 
-// image-pattern's file, read now (its values are the pattern's), and how it is projected
-// and blended; the projection is one of space's, (u,v) coming from mapping="uv".
-void parseImagePatternAttributes(ElementReader& r, PatternSpec& s) {
-  const bool image = s.type == PatternType::image;
-  for (const char* a : {"src", "projection", "once", "interpolate", "use-alpha"})
-    onlyFor(r, a, image, "image-pattern", s.type);
-  if (!image) return;
-  ImagePattern im;
-  if (r.verbatim("projection") == "uv")
-    r.attrError("projection",
-                "an image-pattern is projected from pattern space (planar, spherical, "
-                "cylindrical or torus); for the shape's (u,v) give mapping=\"uv\" with the "
-                "planar projection");
-  else im.projection = r.choice("projection", im.projection, kProjections);
-  im.once = r.boolean("once", im.once);
-  im.interpolation = r.choice("interpolate", im.interpolation, kInterpolations);
-  im.useAlpha = r.boolean("use-alpha", im.useAlpha);
+// image-pattern's file: resolved and its values read now (left empty where it cannot be).
+void readImagePatternFile(ElementReader& r, ImagePattern& im) {
   const std::optional<std::string> src = r.text("src");
   if (!src) {
     r.error(r.tag() +
@@ -314,11 +300,43 @@ void parseImagePatternAttributes(ElementReader& r, PatternSpec& s) {
   if (f.path.empty()) return r.attrError("src", f.error);
   im.path = f.path.string();
   try {
-    im.values = readImagePatternValues(im.path, im.useAlpha);
+    im.values =
+        im.byIndex ? readImageIndexValues(im.path) : readImagePatternValues(im.path, im.useAlpha);
   } catch (const std::exception& e) {  // ImageValuesError, ImagePluginError, a library's own
-    return r.attrError("src", "cannot read the image '" + *src + "': " + e.what());
+    r.attrError("src", "cannot read the image '" + *src + "': " + e.what());
   }
-  s.image = std::make_shared<const ImagePattern>(std::move(im));
+}
+
+// image-pattern's file, read now (its values are the pattern's), and how it is projected
+// and blended; the projection is one of space's, (u,v) coming from mapping="uv".
+void parseImagePatternAttributes(ElementReader& r, PatternSpec& s) {
+  const bool image = s.type == PatternType::image;
+  for (const char* a : {"src", "projection", "once", "interpolate", "use-alpha", "index"})
+    onlyFor(r, a, image, "image-pattern", s.type);
+  if (!image) return;
+  ImagePattern im;
+  im.byIndex = r.boolean("index", false);
+  if (r.has("index") && r.element() != r.ctx().mapPatternElement)
+    r.attrError("index",
+                "only the image-pattern that is a <material-map>'s pattern reads its image by "
+                "index (its palette index picks an entry)");
+  if (im.byIndex)
+    for (const char* a : {"use-alpha", "frequency", "phase", "wave", "exponent"})
+      if (r.has(a))
+        r.attrError(a, std::string("an image-pattern read by index takes no '") + a +
+                           "': the index picks an entry, it is not a value");
+  if (r.verbatim("projection") == "uv")
+    r.attrError("projection",
+                "an image-pattern is projected from pattern space (planar, spherical, "
+                "cylindrical or torus); for the shape's (u,v) give mapping=\"uv\" with the "
+                "planar projection");
+  else im.projection = r.choice("projection", im.projection, kProjections);
+  im.once = r.boolean("once", im.once);
+  im.interpolation = r.choice("interpolate", im.interpolation, kInterpolations);
+  im.useAlpha = r.boolean("use-alpha", im.useAlpha);
+  readImagePatternFile(r, im);
+  // An index map keeps its image even unread, so that its entries are read as its own.
+  if (im.values || im.byIndex) s.image = std::make_shared<const ImagePattern>(std::move(im));
 }
 
 // The modifiers of slope, facets, agate, quilted, tiling, mandel, julia, magnet, pavement and
@@ -751,7 +769,7 @@ void parseImageReading(ElementReader& r, ImageProjection& projection, PatternPla
 }
 
 BumpMapSpec parseBumpMap(ElementReader& r) {
-  std::vector<std::string_view> attributes{"src", "depth", "keep-facing-away"};
+  std::vector<std::string_view> attributes{"src", "depth", "keep-facing-away", "use-index"};
   attributes.insert(attributes.end(), imageReadingAttributes().begin(),
                     imageReadingAttributes().end());
   r.checkAttributes(attributes);
@@ -764,6 +782,14 @@ BumpMapSpec parseBumpMap(ElementReader& r) {
     FileAccess::Resolved f = r.ctx().files.resolve(*src, r.file().folder());
     if (f.path.empty()) r.attrError("src", f.error);
     else b.path = f.path.string();
+  }
+  b.useIndex = r.boolean("use-index", false);
+  if (b.useIndex && !b.path.empty()) {
+    try {
+      b.indices = bumpIndices(b.path);
+    } catch (const std::exception& e) {  // ImageValuesError, ImagePluginError, a library's own
+      r.attrError("src", "cannot read the bump map's palette indices: " + std::string(e.what()));
+    }
   }
   b.depth = r.number("depth", b.depth);
   b.keepFacingAway = r.boolean("keep-facing-away", b.keepFacingAway);

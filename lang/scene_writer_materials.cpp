@@ -219,6 +219,7 @@ void addImagePatternAttributes(const PatternSpec& s, const std::string& folder, 
   if (im.interpolation != d.interpolation)
     a.emplace_back("interpolate", interpolationName(im.interpolation));
   if (im.useAlpha) a.emplace_back("use-alpha", "true");
+  if (im.byIndex) a.emplace_back("index", "true");
 }
 
 // The attributes of <pattern> and <normal>: the type by the pattern table's name, the
@@ -521,7 +522,9 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
     out.open("material-map", {}, false);
     writeTexture(m.mapPattern, m.loc, out, folder);
     for (const MaterialMapEntry& e : m.mapEntries) {
-      out.open("entry", {{mapAverages(m) ? "weight" : "at", xmlNumber(e.at)}}, false);
+      Attributes at;  // an index map's entries are numbered by their order
+      if (!mapIndexImage(m)) at.emplace_back(mapAverages(m) ? "weight" : "at", xmlNumber(e.at));
+      out.open("entry", at, false);
       XmlOut children;
       children.depth = out.depth + 1;
       writeMaterialChildren(e.material, children, folder);
@@ -542,6 +545,7 @@ void writeMaterialChildren(const Material& m, XmlOut& out, const std::string& fo
                  {"depth", xmlNumber(m.bumpMap->depth)}};
     addImageReading(*m.bumpMap, a);
     if (m.bumpMap->keepFacingAway) a.emplace_back("keep-facing-away", "true");
+    if (m.bumpMap->useIndex) a.emplace_back("use-index", "true");
     openPlaced(out, "bump-map", a, true, m.bumpMap->placement);
   }
   // The layers over it, bottom first, each with its own surface terms and children.

@@ -202,7 +202,7 @@ void writeProjectedBumpMapNormal(const BumpMapSpec& bump, const std::string& mat
   map += " map_type " + std::to_string(kMapType[static_cast<int>(bump.projection)]);
   if (bump.once) map += " once";
   map += kInterpolate[static_cast<int>(bump.interpolation)];
-  map += " use_color }";
+  map += bump.useIndex ? " use_index }" : " use_color }";
   out.open("normal");
   out.line(map);
   out.line("bump_size " + povNumber(bump.depth));
@@ -239,7 +239,7 @@ void writeBumpMapNormal(const BumpMapSpec& bump, const ImageMapping& mapping, co
                                              " interpolate 4"};
   if (bump.once) map += " once";
   map += kInterpolate[static_cast<int>(bump.interpolation)];
-  map += " use_color }";
+  map += bump.useIndex ? " use_index }" : " use_color }";
   out.open("normal");
   out.line("uv_mapping");
   out.line(map);

@@ -521,6 +521,25 @@ void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, cons
     writePlacement(a->placement, out);
     return;
   }
+  if (const ImagePattern* image = mapIndexImage(m)) {
+    // POV-Ray's material_map: the k-th texture where the image gives number k; only
+    // transforms follow it (Parse_Texture_Transform).
+    const PatternSpec& spec = std::get<PatternTexture>(m.mapPattern).pattern;
+    if (!spec.placement.warps.empty() || spec.placement.turbulence != Vec3(0.0))
+      report.error(m.loc, materialLabel(m) +
+                              ": a material map read by index with warps or turbulence, which "
+                              "POV-Ray's material_map does not take");
+    out.open("material_map");
+    out.line(imageReadingSpec(*image));
+    for (size_t k = 0; k < entries.size(); ++k) {
+      out.open("texture");
+      entryBody(k);
+      out.close();
+    }
+    out.close();
+    writePlacement(spec.placement, out);
+    return;
+  }
   if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern)) {
     writePigmentFunctions(p->pattern, out);
     writePatternKeyword(p->pattern, out);

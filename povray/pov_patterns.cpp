@@ -43,21 +43,23 @@ namespace {
 std::string imagePatternBlock(const PatternSpec& s) {
   if (!s.image) return " { \"\" }";
   const ImagePattern& im = *s.image;
+  return " { " + imageReadingSpec(im) + (im.useAlpha ? " use_alpha" : "") + " }";
+}
+
+}  // namespace
+
+std::string imageReadingSpec(const ImagePattern& im) {
   static const int kMapType[] = {0, 0, 1, 2, 5};  // ImageProjection's order: uv, planar, ...
   static const char* const kInterpolate[] = {"", " interpolate 2", " interpolate 3",
                                              " interpolate 4"};
   const std::string format = povImageFormat(im.path);
-  std::string b = " { " + (format.empty() ? "" : format + " ") +
+  std::string b = (format.empty() ? "" : format + " ") +
                   povString(std::filesystem::absolute(im.path).lexically_normal().string());
   const int mapType = kMapType[static_cast<int>(im.projection)];
   if (mapType != 0) b += " map_type " + std::to_string(mapType);
   if (im.once) b += " once";
-  b += kInterpolate[static_cast<int>(im.interpolation)];
-  if (im.useAlpha) b += " use_alpha";
-  return b + " }";
+  return b + kInterpolate[static_cast<int>(im.interpolation)];
 }
-
-}  // namespace
 
 std::string patternKeyword(const PatternSpec& s) {
   std::string k(patternTypeInfo(s.type).pov);

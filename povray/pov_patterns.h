@@ -7,6 +7,7 @@
 
 #include "pov_writer.h"
 
+#include "scenegraph/image_pattern.h"
 #include "scenegraph/material.h"
 #include "scenegraph/pigment_function.h"
 
@@ -44,6 +45,9 @@ void writePigmentFunctions(const std::vector<std::shared_ptr<const PigmentFuncti
                            PovWriter& out);
 void writePigmentFunctions(const PatternSpec& s, PovWriter& out);
 void writeValueModifiers(const PatternSpec& s, PovWriter& out);
+// An image-pattern's file and reading: `FORMAT "file" map_type N once interpolate N` (what
+// image_pattern and material_map share; POV-Ray reads both files without gamma correction).
+std::string imageReadingSpec(const ImagePattern& im);
 // A pattern's turbulence and transform (after the pattern's own modifiers).
 void writePlacement(const PatternPlacement& p, PovWriter& out);
 // `uv_mapping` for a uv-mapped placement (the first line of its pigment or normal block).

@@ -48,13 +48,23 @@ Vec3 bumpMapNormal(const ImageMap& map, double depth, const Vec2& uv, const Vec3
 }
 
 Vec3 bumpMapNormalAt(const Image& pixels, double depth, const Vec2& xy,
-                     ImageInterpolation interpolation, bool once, const Vec3& n) {
+                     ImageInterpolation interpolation, bool once, const Vec3& n,
+                     const ImageValueGrid* indices) {
   auto grey = [&](double x, double y) {
     return bumpGrey(sampleImage(pixels, Vec2(x, y), interpolation, once, {}).rgb);
   };
   const double w = pixels.width, h = pixels.height;
   const double x2 = wrapOnce(xy.x - 1.0, w), y2 = wrapOnce(xy.y + 1.0, h);
   const double x3 = wrapOnce(x2 + 2.0, w);
+  if (indices) {
+    auto index = [&](double x, double y) {
+      return samplePaletteIndex(*indices, Vec2(x, y), interpolation, once);
+    };
+    const int i1 = index(xy.x, xy.y), i2 = index(x2, y2), i3 = index(x3, y2);
+    if (i1 != -1 && i2 != -1 && i3 != -1)
+      return normalFromGreys(static_cast<float>(depth), static_cast<float>(i1),
+                             static_cast<float>(i2), static_cast<float>(i3), n);
+  }
   return normalFromGreys(static_cast<float>(depth), grey(xy.x, xy.y), grey(x2, y2), grey(x3, y2),
                          n);
 }

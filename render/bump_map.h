@@ -29,7 +29,12 @@ Vec3 bumpMapNormal(const ImageMap& map, double depth, const Vec2& uv, const Vec3
 // down from the top row, in pixels) with POV-Ray's interpolation and `once` edge rule; its
 // neighbours are (x − 1, y + 1) and (x + 1, y + 1), wrapped round the image as POV-Ray
 // wraps them.
+//
+// With `indices` (a palette image read with use_index) the heights are the three points'
+// palette indices themselves (a · index, 0..255 unscaled), as POV-Ray 3.7 takes them; where
+// a blend gives -1 at one of them it falls back to the grey levels, as POV-Ray does.
 Vec3 bumpMapNormalAt(const Image& pixels, double depth, const Vec2& xy,
-                     ImageInterpolation interpolation, bool once, const Vec3& n);
+                     ImageInterpolation interpolation, bool once, const Vec3& n,
+                     const ImageValueGrid* indices = nullptr);
 
 }  // namespace lucent

@@ -97,6 +97,7 @@ auto pixel(const Grid& image, double x, double y, bool once) {
 // Blends are summed in double precision, as POV-Ray's.
 glm::dvec3 precise(const Color& c) { return glm::dvec3(c); }
 double precise(float v) { return v; }
+double precise(double v) { return v; }
 
 // Catmull-Rom weights of the four pixels around fraction x (POV-Ray's cubic).
 void cubicWeights(double x, double w[4]) {
@@ -193,6 +194,34 @@ PigmentColor sampleImage(const Image& image, const Vec2& xy, ImageInterpolation 
 float sampleImageValue(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
                        bool once) {
   return sampled(grid, xy, interpolation, once);
+}
+
+namespace {
+
+// A grid's palette indices as POV-Ray hands them to its blends: -1 for a pixel of an image
+// without a palette.
+struct IndexView {
+  const ImageValueGrid& grid;
+  int width, height;
+  double at(int x, int y) const {
+    return grid.indices.empty() ? -1.0 : grid.indices[static_cast<size_t>(y) * width + x];
+  }
+};
+
+}  // namespace
+
+int samplePaletteIndex(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
+                       bool once) {
+  return static_cast<int>(
+      sampled(IndexView{grid, grid.width, grid.height}, xy, interpolation, once));
+}
+
+int sampleImageIndex(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
+                     bool once) {
+  const int index = samplePaletteIndex(grid, xy, interpolation, once);
+  if (index != -1) return index;
+  const double red = sampleImageValue(grid, xy, interpolation, once);
+  return static_cast<int>(red * 255.0);
 }
 
 }  // namespace lucent

@@ -39,4 +39,15 @@ PigmentColor sampleImage(const Image& image, const Vec2& xy, ImageInterpolation 
 float sampleImageValue(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
                        bool once);
 
+// POV-Ray 3.7's material number at image point `xy` (imageutil.cpp, material_map, as facts):
+// the palette indices blended as the colours are (none: the pixel's; the blend in double
+// precision) and truncated toward zero; where that gives -1 (an image without a palette
+// counts -1 a pixel), the blended red channel, in single precision, times 255, truncated.
+int sampleImageIndex(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
+                     bool once);
+
+// The palette indices alone, blended and truncated as above: -1 for an image without one.
+int samplePaletteIndex(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
+                       bool once);
+
 }  // namespace lucent

@@ -39,8 +39,8 @@ Vec3 projectedBump(const ImageMap& map, const BumpMapSpec& bump, const Transform
   const Vec3 objectNormal =
       glm::normalize(glm::transpose(Mat3(worldFromObject.worldFromObject())) * n);
   const Vec3 patternNormal = glm::normalize(glm::transpose(glm::inverse(place)) * objectNormal);
-  const Vec3 bent =
-      bumpMapNormalAt(map.pixels(), bump.depth, *xy, bump.interpolation, bump.once, patternNormal);
+  const Vec3 bent = bumpMapNormalAt(map.pixels(), bump.depth, *xy, bump.interpolation, bump.once,
+                                    patternNormal, bump.indices.get());
   return glm::normalize(
       worldFromObject.normalToWorld(glm::normalize(glm::transpose(place) * bent)));
 }
@@ -58,7 +58,8 @@ Vec3 bumpedShadingNormal(const ImageMap& map, const BumpMapSpec& bump,
     // At (u,v) with POV-Ray's own filters; off a `once` image the normal is not bent.
     const std::optional<Vec2> xy = uvToImage(uv, Vec2(1.0), map.width(), map.height(), bump.once);
     if (!xy) return n;
-    bent = bumpMapNormalAt(map.pixels(), bump.depth, *xy, bump.interpolation, bump.once, n);
+    bent = bumpMapNormalAt(map.pixels(), bump.depth, *xy, bump.interpolation, bump.once, n,
+                           bump.indices.get());
   } else {
     bent = projectedBump(map, bump, worldFromObject, surface, n);
   }

@@ -313,6 +313,21 @@ double mapValueAt(const Texture& pattern, const SurfaceInfo& hit, const Instance
   return 0.0;
 }
 
+MapBlend mapChoice(const Material& m, const SurfaceInfo& hit, const Instance& leaf) {
+  const ImagePattern* image = mapIndexImage(m);
+  if (!image) return mapBlend(m.mapEntries, mapValueAt(m.mapPattern, hit, leaf));
+  if (!image->values) return mapIndexEntry(0, m.mapEntries.size());  // an invalid scene's
+  const PatternSpec& spec = std::get<PatternTexture>(m.mapPattern).pattern;
+  SurfaceInfo uvView;
+  const SurfaceInfo& surface = surfaceFor(spec.placement, hit, uvView);
+  const Vec3 p = warpPoint(spec.placement, surface.pObject, turbulenceDisplaces(spec.type));
+  const ImageValueGrid& grid = *image->values;
+  const auto xy = projectToImage(image->projection, p, grid.width, grid.height, image->once);
+  // Off a `once` image (or where the projection gives no point) POV-Ray takes number 0.
+  const int number = xy ? sampleImageIndex(grid, *xy, image->interpolation, image->once) : 0;
+  return mapIndexEntry(number, m.mapEntries.size());
+}
+
 PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& pError) {
   return std::visit(PigmentAt{pObject, pError}, texture);
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "scenegraph/located_error.h"
+#include "scenegraph/map_blend.h"
 #include "scenegraph/material.h"
 
 #include "image_read.h"
@@ -34,6 +35,10 @@ PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& 
 // value, or the cell of a <checker> (0, 1), <hexagon> (0, 1, 2) or <brick> (0 mortar,
 // 1 brick).
 double mapValueAt(const Texture& pattern, const SurfaceInfo& surface, const Instance& leaf);
+
+// The entries a material map shows at a hit: those its pattern's value falls between, or for
+// an image read by index the one entry its material number picks (scenegraph/map_blend.h).
+MapBlend mapChoice(const Material& m, const SurfaceInfo& surface, const Instance& leaf);
 
 // An image looked up bilinearly at (u, v), repeating outside [0,1]^2 (v = 0 is the
 // bottom row of the image, v = 1 the top, as in OpenGL and Mitsuba). 8-bit images and

@@ -293,7 +293,7 @@ Tracer::Shaded Tracer::shadeMap(const SurfaceSlots::Slot& map, const Hit& h, int
   const Hit at{h.leaf,   mapEntrySurface(m.mapPattern, h.s, moved), h.v, h.front, h.leaving,
                h.passOut};
   if (mapAverages(m)) return shadeAverage(map, at, depth, weight, media, seed, context);
-  const MapBlend b = mapBlend(m.mapEntries, mapValueAt(m.mapPattern, h.s, *h.leaf.instance));
+  const MapBlend b = mapChoice(m, h.s, *h.leaf.instance);
   Shaded out;
   out.beyond = media;
   const bool both = b.b != b.a && b.wb > 0.0f;
@@ -358,7 +358,7 @@ Color Tracer::letThrough(uint32_t slot, const WorldLeaf& leaf, const SurfaceInfo
         }
         return t / total;
       }
-      const MapBlend b = mapBlend(m.mapEntries, mapValueAt(m.mapPattern, s, *leaf.instance));
+      const MapBlend b = mapChoice(m, s, *leaf.instance);
       Color t = b.wa * letThrough(at.first + b.a, leaf, e);
       if (b.b != b.a && b.wb > 0.0f) t += b.wb * letThrough(at.first + b.b, leaf, e);
       return t;

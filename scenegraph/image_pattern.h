@@ -20,6 +20,10 @@ struct ImagePattern {
   bool once = false;                                            // one copy: off it the value is 0
   ImageInterpolation interpolation = ImageInterpolation::none;  // POV-Ray's default
   bool useAlpha = false;  // POV-Ray's use_alpha: the transmit (or red) instead of the grey
+  // A <material-map>'s image read by index (POV-Ray's material_map): the palette index, or
+  // the red channel times 255, picks an entry (scenegraph/map_blend.h); `values` then hold
+  // the red channel (images/image_values_file.h, readImageIndexValues).
+  bool byIndex = false;
   std::shared_ptr<const ImageValueGrid> values;
 };
 

@@ -19,6 +19,8 @@ namespace lucent {
 // <bump-map src depth>: POV-Ray's bump_map read at the shape's (u,v), or projected from
 // pattern space as an <image> is: the shading normal bent by the image's grey levels
 // (render/bump_map.h). The renderer loads the pixels.
+struct ImageValueGrid;  // images/image_values_file.h, below the scene graph
+
 struct BumpMapSpec {
   std::string path;    // resolved, as ImageTexture's
   double depth = 0.5;  // POV-Ray's bump_size
@@ -28,11 +30,17 @@ struct BumpMapSpec {
   bool once = false;           // one copy: off it the normal is not bent
   ImageInterpolation interpolation = ImageInterpolation::bilinear;
   bool keepFacingAway = false;  // keep a bent normal that faces away (POV-Ray's rule)
+  // POV-Ray's use_index: a palette image's indices (0..255, not scaled) are the heights
+  // instead of its colours' grey levels (render/bump_map.h). `indices` holds them, read
+  // when the scene is read; null for an image without a palette, which use_index leaves
+  // to its grey levels.
+  bool useIndex = false;
+  std::shared_ptr<const ImageValueGrid> indices;
 
   // Read at (u,v) with OpenImageIO's bilinear filter, as before projections existed.
   bool plainUV() const {
     return projection == ImageProjection::uv && !once &&
-           interpolation == ImageInterpolation::bilinear;
+           interpolation == ImageInterpolation::bilinear && !indices;
   }
 };
 

@@ -165,23 +165,34 @@ void SceneReader::readBumpMap(const Token& t, TokenStream& in, PovNormal& n) {
   for (;;) {
     const Token k = in.next();
     if (k.is("}")) break;
+    if (isWord(k, "use_color") || isWord(k, "use_colour")) {
+      bump.useIndex = false;
+      continue;
+    }
     if (readImageReading(k, in, bump)) continue;
     if (isWord(k, "bump_size")) {
       bump.depth = in.parseFloat();
     } else if (isWord(k, "use_index")) {
       // POV-Ray takes a palette image's indices as heights; any other image has none, and
-      // its grey levels are read as with use_color.
-      if (mayHoldPalette(bump.path))
+      // its grey levels are read as with use_color. The last of the two counts.
+      bump.useIndex = true;
+      if (mayHoldPalette(bump.path) && !isPngFile(bump.path))
         keepError(in, k.loc(),
-                  "'use_index' on a palette image is not supported by Lucent (palette indices "
-                  "as heights; Lucent reads the palette's colours' grey levels); on an image "
-                  "without a palette it changes nothing");
+                  "'use_index' on a palette image other than a PNG is not supported by Lucent "
+                  "(it reads the palette indices of PNGs)");
     } else if (isWord(k, "repeat") || isWord(k, "offset")) {
       keepError(in, k.loc(),
                 "'" + std::string(k.text()) + "' in a bump map is not supported by Lucent");
       in.parseVector();
     } else {
       in.error(k, "'" + std::string(k.text()) + "' is not a bump_map modifier");
+    }
+  }
+  if (bump.useIndex) {
+    try {
+      bump.indices = bumpIndices(bump.path);
+    } catch (const std::exception& e) {
+      in.error(t, "cannot read the bump map's palette indices in '" + bump.path + "': " + e.what());
     }
   }
   n.bump = bump;
@@ -218,6 +229,57 @@ std::shared_ptr<const ImagePattern> SceneReader::readImagePattern(TokenStream& i
     in.error(fileLoc, "cannot read the image pattern's image '" + im.path + "': " + e.what());
   }
   return std::make_shared<const ImagePattern>(std::move(im));
+}
+
+// `material_map { [TYPE] "file" modifiers texture {..} texture {..} ... }`: a material map
+// whose image-pattern is read by index (POV-Ray 3.7's Parse_Material_Map: the modifiers
+// first, then at least one texture), its k-th texture shown where the image gives number k.
+// The transforms after the block move the map (its textures lie in its space).
+void SceneReader::readMaterialMap(const Token& t, TokenStream& in, PovTexture& tex) {
+  if (!tex.below.empty())
+    keepError(in, t.loc(),
+              "a material_map over a layered texture (POV-Ray: \"Cannot layer over a patterned "
+              "texture\")");
+  in.expect("{");
+  ImagePattern im;
+  im.byIndex = true;
+  const SourceLoc fileLoc = in.peek().loc();
+  im.path = readImageFileSpec(in);
+  std::vector<PovTextureMapEntry> entries;
+  for (;;) {
+    const Token k = in.next();
+    if (k.is("}")) break;
+    const std::string_view w = k.kind == TokenKind::Keyword ? k.text() : "";
+    if (w == "texture") {
+      entries.push_back({double(entries.size()), readTexture(in, defaultTexture())});
+    } else if (!entries.empty()) {
+      in.error(k, "a texture or '}' expected after a material_map's textures, not " + k.describe());
+    } else if (readImageReading(k, in, im)) {
+      continue;
+    } else if (w == "repeat" || w == "offset") {
+      keepError(in, k.loc(),
+                "'" + std::string(w) + "' in a material map is not supported by Lucent");
+      in.parseVector();
+    } else {
+      in.error(k, "'" + std::string(k.text()) + "' is not a material_map modifier");
+    }
+  }
+  if (entries.empty()) in.error(t, "a material_map needs at least one texture");
+  try {
+    im.values = readImageIndexValues(im.path);
+  } catch (const std::exception& e) {
+    in.error(fileLoc, "cannot read the material map's image '" + im.path + "': " + e.what());
+  }
+  PatternTexture pattern;
+  pattern.pattern.type = PatternType::image;
+  pattern.pattern.frequency = defaultFrequency(PatternType::image);
+  pattern.pattern.image = std::make_shared<const ImagePattern>(std::move(im));
+  PovPigment map;
+  map.transform = tex.mapPattern.transform;
+  map.pattern = std::move(pattern);
+  tex.mapPattern = std::move(map);
+  tex.mapEntries = std::move(entries);
+  tex.name.clear();
 }
 
 void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {

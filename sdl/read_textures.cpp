@@ -263,6 +263,10 @@ PovTexture SceneReader::readTextureBody(TokenStream& in, const PovTexture& start
       readUvTexture(t, in, tex, closing);
       return tex;
     }
+    if (isWord(t, "material_map")) {
+      readMaterialMap(t, in, tex);
+      continue;
+    }
     if (isWord(t, "pigment")) tex.pigment = readPigment(in, tex.pigment);
     else if (isWord(t, "normal")) tex.normal = readNormal(in, tex.normal ? &*tex.normal : nullptr);
     else if (isWord(t, "finish")) tex.finish = readFinish(in, tex.finish);

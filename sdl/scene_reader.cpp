@@ -34,7 +34,6 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"no_image", "objects hidden from the camera"},
       {"no_reflection", "objects hidden from reflections"},
       {"double_illuminate", "surfaces lit from both sides"},
-      {"material_map", "material maps; Lucent has one material per object"},
       {"texture_map", "maps of textures; Lucent has one texture layer per material"},
       {"uv_mapping",
        "uv_mapping of normals and objects; Lucent reads a uv-mapped pigment or texture at a "

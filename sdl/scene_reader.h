@@ -392,6 +392,7 @@ class SceneReader : public ItemReader {
   void readBumpMap(const Token& t, TokenStream& in, PovNormal& n);
   std::string readImageFileSpec(TokenStream& in);
   std::shared_ptr<const ImagePattern> readImagePattern(TokenStream& in);
+  void readMaterialMap(const Token& t, TokenStream& in, PovTexture& tex);
   // read_maps.cpp: maps and lists of pigments, averages of pigments and of normals
   std::vector<TextureMapEntry> readPigmentMap(TokenStream& in, const Token& at,
                                               bool average = false);

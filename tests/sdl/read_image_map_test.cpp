@@ -7,6 +7,7 @@
 
 #include "images/image_values_file.h"
 #include "scenegraph/image_pattern.h"
+#include "scenegraph/map_blend.h"
 #include "sdl/scene_reader.h"
 
 #include <variant>
@@ -122,15 +123,60 @@ sphere { 0, 1 normal { bump_map { png "scenes/image_maps.png" } bump_size -1.5 }
   CHECK(b.bumpMap->projection == ImageProjection::planar);
   CHECK(b.bumpMap->interpolation == ImageInterpolation::none);
   CHECK(b.bumpMap->depth == -1.5);  // the normal's bump_size after the block
-  // use_index: a palette image's indices as heights are refused; an image without a palette
-  // has none, and reads its grey levels as with use_color.
-  CHECK(anyContains(
-      errorsOf(
-          R"(sphere { 0, 1 normal { bump_map { png "scenes/image_pattern_palette.png" use_index } } })"),
-      "'use_index' on a palette image is not supported by Lucent"));
-  CHECK(
-      readScene(R"(sphere { 0, 1 normal { bump_map { png "scenes/image_maps.png" use_index } } })")
-          ->load.scene != nullptr);
+  // use_index: a palette image's indices are the heights; an image without a palette has
+  // none, and reads its grey levels as with use_color (the last of the two counts).
+  auto palette = readScene(R"(
+sphere { 0, 1 normal { bump_map { png "scenes/image_pattern_palette.png" use_index } } }
+sphere { 0, 1 normal { bump_map { png "scenes/image_maps.png" use_index } } }
+sphere { 0, 1 normal { bump_map { png "scenes/image_pattern_palette.png" use_index use_color } } }
+)");
+  REQUIRE(palette->load.scene);
+  const Scene& p = *palette->load.scene;
+  const BumpMapSpec& indexed = *p.materials.at(*p.root->children[0]->material).bumpMap;
+  CHECK(indexed.useIndex);
+  REQUIRE(indexed.indices);
+  CHECK_FALSE(indexed.indices->indices.empty());
+  const BumpMapSpec& plain = *p.materials.at(*p.root->children[1]->material).bumpMap;
+  CHECK(plain.useIndex);
+  CHECK(!plain.indices);
+  CHECK_FALSE(p.materials.at(*p.root->children[2]->material).bumpMap->useIndex);
+}
+
+TEST_CASE("scene reader material_map: its image read by index, its textures numbered in order",
+          "[sdl][scene][texture][material-map]") {
+  auto r = readScene(R"(
+sphere { 0, 1 texture { material_map { png "scenes/mm_palette.png" map_type 1 once interpolate 2
+  texture { pigment { rgb 1 } } texture { pigment { rgb <1, 0, 0> } finish { ambient 1 } }
+  texture { pigment { checker } } } scale 2 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const Material& m = s.materials.at(*s.root->children[0]->material);
+  const ImagePattern* image = mapIndexImage(m);
+  REQUIRE(image);
+  CHECK(image->projection == ImageProjection::spherical);
+  CHECK(image->once);
+  CHECK(image->interpolation == ImageInterpolation::bilinear);
+  REQUIRE(image->values);
+  CHECK(image->values->indices.size() == 24);
+  REQUIRE(m.mapEntries.size() == 3);
+  CHECK(m.mapEntries[0].at == 0.0);
+  CHECK(m.mapEntries[2].at == 2.0);
+  // scale 2 (after the block) moves the map: its pattern space is the object's halved.
+  const auto& spec = std::get<PatternTexture>(m.mapPattern).pattern;
+  CHECK(spec.placement.patternFromObject[0][0] == Approx(0.5));
+  CHECK(anyContains(errorsOf(R"(sphere { 0, 1 texture { material_map { png
+  "scenes/mm_palette.png" } } })"),
+                    "a material_map needs at least one texture"));
+  CHECK(anyContains(errorsOf(R"(sphere { 0, 1 texture { material_map { png
+  "scenes/mm_palette.png" texture { pigment { rgb 1 } } once } } })"),
+                    "a texture or '}' expected after a material_map's textures"));
+  CHECK(anyContains(errorsOf(R"(sphere { 0, 1 texture { material_map { png
+  "scenes/mm_palette.png" map_type 3 texture { pigment { rgb 1 } } } } })"),
+                    "map_type 3 is not one POV-Ray 3.7 projects an image by"));
+  CHECK(anyContains(errorsOf(R"(sphere { 0, 1 texture { material_map { png
+  "scenes/mm_palette.png" repeat <2, 2> texture { pigment { rgb 1 } } } } })"),
+                    "'repeat' in a material map is not supported by Lucent"));
 }
 
 namespace {

@@ -317,9 +317,8 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
       "sphere { 0, 1 pigment { cubic } }\n"
       "sphere { 0, 1 pigment { checker pigment_map { [0 rgb 1] } } }\n"
       "sphere { 0, 1 interior_texture { pigment { rgb 1 } } }\n"
-      "sphere { 0, 1 normal { bump_map { png \"scenes/image_pattern_palette.png\" use_index } } }\n"
       "sphere { 0, 1 texture { brick scale 2 } }\n");
-  REQUIRE(errors.size() == 5);
+  REQUIRE(errors.size() == 4);
   CHECK(errors[0].rfind("test.pov:1:25: error: 'cubic' is not supported by Lucent (a pattern "
                         "Lucent does not have; its patterns are gradient, onion",
                         0) == 0);
@@ -329,11 +328,8 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
   CHECK(errors[2] ==
         "test.pov:3:15: error: 'interior_texture' is not supported by Lucent (a texture for the "
         "inside of a surface)");
-  CHECK(errors[3].rfind("test.pov:4:74: error: 'use_index' on a palette image is not supported "
-                        "by Lucent",
-                        0) == 0);
-  CHECK(errors[4] ==
-        "test.pov:5:25: error: 'brick' is not supported by Lucent (a pattern of textures that "
+  CHECK(errors[3] ==
+        "test.pov:4:25: error: 'brick' is not supported by Lucent (a pattern of textures that "
         "Lucent cannot read: it reads texture_map after a pattern, and the texture lists of "
         "checker, hexagon and brick)");
 }

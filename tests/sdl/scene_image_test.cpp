@@ -131,6 +131,11 @@ TEST_CASE("scene reader image: image maps projected planar, spherical, cylindric
   requireSameImageAsPovrayInPlace("image_maps.pov", 160, 120);
 }
 
+TEST_CASE("scene reader image: material maps picked by palette index and red, palette bump maps",
+          "[sdl][scene][image][povray][material-map]") {
+  requireSameImageAsPovrayInPlace("material_maps.pov", 360, 360);
+}
+
 TEST_CASE("scene reader image: normal maps, lists of normals, slope maps and #default normals",
           "[sdl][scene][image][povray][texture]") {
   requireSameImageAsPovray("normal_maps.pov", 160, 120);
