@@ -40,6 +40,83 @@ void PovGeometry::write(PovWriter& declarations, PovWriter& objects) {
   declarations.append(meshDeclarations_);
 }
 
+namespace {
+
+void collectObjectPatterns(const PatternSpec& s, std::vector<const ObjectPattern*>& out);
+void collectObjectPatterns(const Texture& t, std::vector<const ObjectPattern*>& out);
+
+void collectObjectPatterns(const std::vector<TextureMapEntry>& entries,
+                           std::vector<const ObjectPattern*>& out) {
+  for (const TextureMapEntry& e : entries) collectObjectPatterns(e.texture, out);
+}
+
+void collectObjectPatterns(const PatternSpec& s, std::vector<const ObjectPattern*>& out) {
+  if (s.type == PatternType::object && s.object && s.object->node) out.push_back(s.object.get());
+  if (s.pigment) collectObjectPatterns(s.pigment->texture, out);
+}
+
+void collectObjectPatterns(const Texture& t, std::vector<const ObjectPattern*>& out) {
+  if (const auto* p = std::get_if<PatternTexture>(&t)) {
+    collectObjectPatterns(p->pattern, out);
+    collectObjectPatterns(p->pigments, out);
+  }
+  if (const auto* c = std::get_if<CheckerTexture>(&t)) collectObjectPatterns(c->pigments, out);
+  if (const auto* h = std::get_if<HexagonTexture>(&t)) collectObjectPatterns(h->pigments, out);
+  if (const auto* b = std::get_if<BrickTexture>(&t)) collectObjectPatterns(b->pigments, out);
+  if (const auto* a = std::get_if<AverageTexture>(&t)) collectObjectPatterns(a->entries, out);
+}
+
+void collectObjectPatterns(const NormalSpec& n, std::vector<const ObjectPattern*>& out) {
+  collectObjectPatterns(n.pattern, out);
+  for (const WeightedNormal& e : n.average) collectObjectPatterns(e.normal, out);
+  for (const NormalMapEntry& e : n.map) collectObjectPatterns(e.normal, out);
+}
+
+void collectObjectPatterns(const Material& m, std::vector<const ObjectPattern*>& out) {
+  collectObjectPatterns(m.texture, out);
+  collectObjectPatterns(m.mapPattern, out);
+  if (m.normal) collectObjectPatterns(*m.normal, out);
+  for (const Material& layer : m.layers) collectObjectPatterns(layer, out);
+  for (const MaterialMapEntry& e : m.mapEntries) collectObjectPatterns(e.material, out);
+}
+
+}  // namespace
+
+void PovGeometry::writeObjectPatterns(PovWriter& out) {
+  std::vector<const ObjectPattern*> patterns;
+  for (const Material& m : scene_.materials) collectObjectPatterns(m, patterns);
+  std::map<std::string, const Node*> declared;
+  for (const ObjectPattern* o : patterns) {
+    const std::string name = povObjectPatternName(*o);
+    auto [it, added] = declared.emplace(name, o->node);
+    if (!added) {
+      if (it->second != o->node)
+        issues_.error(o->node->loc, "the ids '" + it->second->id + "' and '" + o->id +
+                                        "' give one POV-Ray name, " + name +
+                                        ", to the objects of two object patterns");
+      continue;
+    }
+    // Its geometry only, as a clip's: POV-Ray asks the object's inside alone.
+    const bool shadowless = shadowless_, ignore = ignoreOwnShadows_, inSolid = inWrittenSolid_,
+               inverse = pendingInverse_, inClip = inClipOrBound_;
+    inClipOrBound_ = true;
+    shadowless_ = false;
+    ignoreOwnShadows_ = true;
+    inWrittenSolid_ = true;
+    pendingInverse_ = false;
+    out.line("// the object of an object pattern: <" + o->node->element + " id=\"" + o->id +
+             "\"> " + o->node->loc.str());
+    out.open("#declare " + name + " = " + (operandCount(*o->node) == 1 ? "object" : "union"));
+    writeNode(*o->node, Mat4(1.0), 0, false, out);
+    out.close();
+    shadowless_ = shadowless;
+    ignoreOwnShadows_ = ignore;
+    inWrittenSolid_ = inSolid;
+    pendingInverse_ = inverse;
+    inClipOrBound_ = inClip;
+  }
+}
+
 int PovGeometry::operandCount(const Node& node) const {
   switch (node.kind) {
     case NodeKind::Group: {
