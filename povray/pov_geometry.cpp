@@ -42,21 +42,35 @@ void PovGeometry::write(PovWriter& declarations, PovWriter& objects) {
 
 namespace {
 
-void collectObjectPatterns(const PatternSpec& s, std::vector<const ObjectPattern*>& out);
-void collectObjectPatterns(const Texture& t, std::vector<const ObjectPattern*>& out);
+// The object patterns of a material, and one whose map POV-Ray cannot write (if any).
+struct FoundObjects {
+  std::vector<const ObjectPattern*> patterns;
+  const ObjectPattern* unexportable = nullptr;
+};
 
-void collectObjectPatterns(const std::vector<TextureMapEntry>& entries,
-                           std::vector<const ObjectPattern*>& out) {
+void collectObjectPatterns(const PatternSpec& s, FoundObjects& out);
+void collectObjectPatterns(const Texture& t, FoundObjects& out);
+
+void collectObjectPatterns(const std::vector<TextureMapEntry>& entries, FoundObjects& out) {
   for (const TextureMapEntry& e : entries) collectObjectPatterns(e.texture, out);
 }
 
-void collectObjectPatterns(const PatternSpec& s, std::vector<const ObjectPattern*>& out) {
-  if (s.type == PatternType::object && s.object && s.object->node) out.push_back(s.object.get());
+void collectObjectPatterns(const PatternSpec& s, FoundObjects& out) {
+  if (s.type == PatternType::object && s.object && s.object->node)
+    out.patterns.push_back(s.object.get());
   if (s.pigment) collectObjectPatterns(s.pigment->texture, out);
 }
 
-void collectObjectPatterns(const Texture& t, std::vector<const ObjectPattern*>& out) {
+// An object pattern whose value is not 0 or 1 alone with a map of more than two entries:
+// POV-Ray's list of two cannot stand for it.
+bool beyondTwoEntries(const PatternSpec& s, size_t entries) {
+  return s.type == PatternType::object && entries > 2 && !objectPatternTwoValued(s);
+}
+
+void collectObjectPatterns(const Texture& t, FoundObjects& out) {
   if (const auto* p = std::get_if<PatternTexture>(&t)) {
+    if (beyondTwoEntries(p->pattern, std::max(p->map.entries.size(), p->pigments.size())))
+      out.unexportable = p->pattern.object.get();
     collectObjectPatterns(p->pattern, out);
     collectObjectPatterns(p->pigments, out);
   }
@@ -66,13 +80,14 @@ void collectObjectPatterns(const Texture& t, std::vector<const ObjectPattern*>& 
   if (const auto* a = std::get_if<AverageTexture>(&t)) collectObjectPatterns(a->entries, out);
 }
 
-void collectObjectPatterns(const NormalSpec& n, std::vector<const ObjectPattern*>& out) {
+void collectObjectPatterns(const NormalSpec& n, FoundObjects& out) {
+  if (beyondTwoEntries(n.pattern, n.map.size())) out.unexportable = n.pattern.object.get();
   collectObjectPatterns(n.pattern, out);
   for (const WeightedNormal& e : n.average) collectObjectPatterns(e.normal, out);
   for (const NormalMapEntry& e : n.map) collectObjectPatterns(e.normal, out);
 }
 
-void collectObjectPatterns(const Material& m, std::vector<const ObjectPattern*>& out) {
+void collectObjectPatterns(const Material& m, FoundObjects& out) {
   collectObjectPatterns(m.texture, out);
   collectObjectPatterns(m.mapPattern, out);
   if (m.normal) collectObjectPatterns(*m.normal, out);
@@ -84,7 +99,15 @@ void collectObjectPatterns(const Material& m, std::vector<const ObjectPattern*>&
 
 void PovGeometry::writeObjectPatterns(PovWriter& out) {
   std::vector<const ObjectPattern*> patterns;
-  for (const Material& m : scene_.materials) collectObjectPatterns(m, patterns);
+  for (const Material& m : scene_.materials) {
+    FoundObjects found;
+    collectObjectPatterns(m, found);
+    patterns.insert(patterns.end(), found.patterns.begin(), found.patterns.end());
+    if (found.unexportable)
+      issues_.error(m.loc, "the object pattern of '" + found.unexportable->id +
+                               "' has a frequency or a wave and a map of more than two "
+                               "entries, which POV-Ray's list of two cannot write");
+  }
   std::map<std::string, const Node*> declared;
   for (const ObjectPattern* o : patterns) {
     const std::string name = povObjectPatternName(*o);

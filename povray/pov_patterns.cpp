@@ -260,11 +260,7 @@ void writePigmentList(const std::vector<TextureMapEntry>& entries, const Vec3& s
 // two; a blend of the two between them, as a two-entry map's).
 void writeObjectPatternBody(const PatternTexture& t, const Vec3& scale, double filter,
                             double transmit, PovWriter& out) {
-  const size_t inner = std::max(t.pigments.size(), t.map.entries.size());
-  if (inner > 2 && !objectPatternTwoValued(t.pattern))
-    throw std::runtime_error(
-        "an object pattern with a frequency or a wave and a map of more than two entries "
-        "cannot be exported (POV-Ray's object pattern takes a list of two)");
+  // (A map POV-Ray's list cannot hold is reported by PovGeometry::writeObjectPatterns.)
   out.open("object");
   out.line(t.pattern.object ? povObjectPatternName(*t.pattern.object) : "sphere { 0, 0 }");
   if (!t.pigments.empty()) {
@@ -491,10 +487,6 @@ void writeNormalMaps(const NormalSpec& n, PovWriter& out) {
 
 // `object { NAME normal {..} normal {..} }`: the map's first entry outside, its last inside.
 void writeObjectNormalBody(const NormalSpec& n, PovWriter& out) {
-  if (n.map.size() > 2 && !objectPatternTwoValued(n.pattern))
-    throw std::runtime_error(
-        "an object normal with a frequency or a wave and a map of more than two entries "
-        "cannot be exported (POV-Ray's object pattern takes a list of two)");
   out.open("object");
   out.line(n.pattern.object ? povObjectPatternName(*n.pattern.object) : "sphere { 0, 0 }");
   for (const NormalMapEntry* e : {&n.map.front(), &n.map.back()}) {

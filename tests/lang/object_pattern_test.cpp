@@ -53,9 +53,10 @@ TEST_CASE("object pattern: the id names the node and its solid is built once",
   REQUIRE(m.normal);
   CHECK(m.normal->pattern.object->solid);
   CHECK(m.normal->map.size() == 2);
-  // scale(0.5) on the pattern: the object twice as large on the shape.
-  CHECK(patternValue(p, Vec3(-1.5, -1.5, -1.5)) == 1.0);
-  CHECK(patternValue(p, Vec3(1.5, 1.5, 1.5)) == 0.0);
+  // scale(0.5) on the pattern: the object half as large on the shape.
+  CHECK(patternValue(p, Vec3(-0.4, -0.4, -0.4)) == 1.0);
+  CHECK(patternValue(p, Vec3(-0.6, -0.6, -0.6)) == 0.0);
+  CHECK(patternValue(p, Vec3(0.45, 0.45, 0.45)) == 0.0);  // in the ball cut out
 }
 
 TEST_CASE("object pattern: convert writes object=\"id\" and reads back the same",
@@ -93,6 +94,8 @@ TEST_CASE("object pattern: a map with a frequency and entries between its ends i
                   "</material></sphere>"),
       {});
   CHECK_FALSE(e.ok());
+  REQUIRE_FALSE(e.issues.empty());
+  CHECK_THAT(e.issues.front().message, Catch::Contains("POV-Ray's list of two cannot write"));
 }
 
 TEST_CASE("object pattern: the importer reads it in pigments, normals and textures",
