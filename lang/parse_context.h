@@ -9,6 +9,7 @@
 #include "source_file.h"
 
 #include "meshes/mesh_file_cache.h"
+#include "scenegraph/object_pattern.h"
 #include "scenegraph/scene.h"
 
 #include <pugixml.hpp>
@@ -102,6 +103,14 @@ struct ParseContext {
   std::unordered_set<const Node*> broken;
   // Nodes with a <clip> or <bound>: their solids are checked once references are known.
   std::vector<const Node*> clipped;
+  // <pattern type="object" object="id">s: the node named and its solid found once every id
+  // is known (references.cpp), then given to the pattern.
+  struct PendingObjectPattern {
+    std::shared_ptr<ObjectPattern> pattern;
+    SourceLoc loc;    // the value of the object attribute
+    std::string tag;  // "<pattern>" or "<normal>"
+  };
+  std::vector<PendingObjectPattern> objectPatterns;
 
   // Meshes read from files, by canonical path: a file used twice is read once (and once
   // for all the parses that share ParseOptions::meshCache).

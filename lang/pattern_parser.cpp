@@ -11,6 +11,7 @@
 #include "normal_map_parser.h"
 #include "povray_names.h"
 #include "scenegraph/image_pattern.h"
+#include "scenegraph/object_pattern.h"
 #include "texture_map_parser.h"
 #include "warp_parser.h"
 
@@ -92,7 +93,8 @@ const std::vector<std::string_view> kValueAttributes{"type",
                                                      "once",
                                                      "interpolate",
                                                      "use-alpha",
-                                                     "index"};
+                                                     "index",
+                                                     "object"};
 
 std::vector<std::string_view> joined(std::vector<std::string_view> a,
                                      const std::vector<std::string_view>& b) {
@@ -339,10 +341,27 @@ void parseImagePatternAttributes(ElementReader& r, PatternSpec& s) {
   if (im.values || im.byIndex) s.image = std::make_shared<const ImagePattern>(std::move(im));
 }
 
-// The modifiers of slope, facets, agate, quilted, tiling, mandel, julia, magnet, pavement and
-// image-pattern.
+// object's solid: the id of a node, found (and its solid built) once every id is known.
+void parseObjectAttribute(ElementReader& r, PatternSpec& s) {
+  const bool object = s.type == PatternType::object;
+  if (!onlyFor(r, "object", object, "object", s.type)) return;
+  const std::optional<std::string> id = r.text("object");
+  if (!id) {
+    r.error(r.tag() +
+            " type=\"object\" needs 'object' (the id of the solid whose inside is the value 1)");
+    return;
+  }
+  auto pattern = std::make_shared<ObjectPattern>();
+  pattern->id = *id;
+  r.ctx().objectPatterns.push_back({pattern, r.valueLoc("object"), r.tag()});
+  s.object = std::move(pattern);
+}
+
+// The modifiers of slope, facets, agate, quilted, tiling, mandel, julia, magnet, pavement,
+// image-pattern and object.
 void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
   parseSlopeAttributes(r, s);
+  parseObjectAttribute(r, s);
   parseImagePatternAttributes(r, s);
   parseFacetsAttributes(r, s);
   parsePavementAttributes(r, s);
@@ -695,6 +714,10 @@ void parseNormalChildren(ElementReader& r, NormalSpec& n) {
     }
   });
   needsPigment(r, n.pattern, pigmentLoc);
+  if (n.pattern.type == PatternType::object && n.map.empty() && !mapLoc && !r.failed())
+    r.error(
+        "<normal> type=\"object\" needs a <normal-map> (the normal outside the object at "
+        "0 and inside it at 1, POV-Ray's object pattern's list of normals)");
 }
 
 }  // namespace

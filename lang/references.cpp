@@ -4,6 +4,8 @@
 // solids (which needs the references resolved, since a <use> is as solid as its target).
 #include "element_parsers.h"
 #include "expansion.h"
+#include "scenegraph/flatten.h"
+#include "scenegraph/located_error.h"
 #include "scenegraph/shape_registry.h"
 
 #include <fmt/format.h>
@@ -294,6 +296,53 @@ void instantiate(ParseContext& ctx) {
   }
 }
 
+// Each object pattern's node, which must be a solid (the pattern is its inside), and its
+// solid built once. Its materials play no part, so a node may wear a pattern of itself.
+void resolveObjectPatterns(ParseContext& ctx) {
+  std::vector<std::string_view> ids;
+  for (const ParseContext::PendingObjectPattern& p : ctx.objectPatterns) {
+    const std::string prefix = p.tag + " attribute 'object': ";
+    auto it = ctx.nodeIds.find(p.pattern->id);
+    if (it == ctx.nodeIds.end()) {
+      if (ids.empty()) {
+        for (const auto& [id, entry] : ctx.nodeIds) ids.push_back(id);
+        std::sort(ids.begin(), ids.end());
+      }
+      ctx.diags.error(p.loc, prefix + "no node has the id '" + p.pattern->id + "'" +
+                                 didYouMean(p.pattern->id, ids));
+      continue;
+    }
+    const Node& node = *it->second.node;
+    if (ctx.broken.count(&node)) continue;
+    if (node.isLight()) {
+      ctx.diags.error(p.loc, prefix + "'" + p.pattern->id + "' (at " + node.loc.str() +
+                                 ") is a light; an object pattern needs a solid");
+      continue;
+    }
+    if (const Node* leaf = findNonSolid(ctx, node)) {
+      if (ctx.broken.count(leaf)) continue;
+      std::string message = prefix + "'" + p.pattern->id + "' (<" + node.element + "> at " +
+                            node.loc.str() + ") has no inside, which an object pattern needs: ";
+      if (leaf == &node) message += "it is not a solid (" + whyNotSolid(*leaf) + ")";
+      else
+        message += "it contains <" + leaf->element + "> at " + leaf->loc.str() +
+                   ", which is not a solid (" + whyNotSolid(*leaf) + ")";
+      ctx.diags.error(p.loc, message);
+      continue;
+    }
+    p.pattern->node = &node;
+    if (ctx.diags.hasErrors()) continue;  // a reference cycle would not end
+    try {
+      p.pattern->solid = buildSolid(ctx.scene, node, makeShape);
+      if (!p.pattern->solid)
+        ctx.diags.error(p.loc, prefix + "'" + p.pattern->id + "' (at " + node.loc.str() +
+                                   ") holds no shape; an object pattern needs a solid");
+    } catch (const LocatedError& e) {
+      ctx.diags.error(e.loc(), e.message());
+    }
+  }
+}
+
 }  // namespace
 
 void resolveReferences(ParseContext& ctx) {
@@ -383,6 +432,7 @@ void resolveReferences(ParseContext& ctx) {
     checkClipSolids(ctx, *n, n->clip, "clip");
     checkClipSolids(ctx, *n, n->bound, "bound");
   }
+  resolveObjectPatterns(ctx);
 }
 
 }  // namespace lucent

@@ -5,6 +5,7 @@
 #include "scene_writer_out.h"
 
 #include "scenegraph/image_pattern.h"
+#include "scenegraph/object_pattern.h"
 #include "xml_numbers.h"
 
 #include "scenegraph/finish_terms.h"
@@ -239,6 +240,7 @@ Attributes patternAttributes(const PatternSpec& s, const SourceLoc& loc,
     a.emplace_back("noise-generator", std::to_string(s.noiseGenerator));
   addTypeAttributes(s, loc, a);
   addImagePatternAttributes(s, folder, a);
+  if (s.type == PatternType::object && s.object) a.emplace_back("object", s.object->id);
   return a;
 }
 

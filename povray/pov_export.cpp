@@ -129,12 +129,21 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   PovMaterials materials(scene.materials, issues);
   PovCameraFrame frame = povCameraFrame(*camera);
   PovGeometry geometry(scene, materials, frame.location, issues);
-  PovWriter declarations, objects;
+  PovWriter declarations, objects, objectPatterns;
+  geometry.writeObjectPatterns(objectPatterns);
   geometry.write(declarations, objects);
 
   const bool anySpecular = materials.anySpecular(geometry.usedMaterials());
   for (const Light& light : scene.lights) writeLight(light, anySpecular, out, issues);
   if (!scene.lights.empty()) out.blank();
+  // The object patterns' objects before the materials that name them, and the meshes
+  // they may hold before them (a mesh declaration holds no texture).
+  if (!objectPatterns.text().empty()) {
+    out.append(declarations);
+    declarations = PovWriter();
+    out.append(objectPatterns);
+    out.blank();
+  }
   materials.writeDeclarations(geometry.usedMaterials(), out);
   out.blank();
   out.append(declarations);

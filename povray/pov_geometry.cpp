@@ -40,6 +40,106 @@ void PovGeometry::write(PovWriter& declarations, PovWriter& objects) {
   declarations.append(meshDeclarations_);
 }
 
+namespace {
+
+// The object patterns of a material, and one whose map POV-Ray cannot write (if any).
+struct FoundObjects {
+  std::vector<const ObjectPattern*> patterns;
+  const ObjectPattern* unexportable = nullptr;
+};
+
+void collectObjectPatterns(const PatternSpec& s, FoundObjects& out);
+void collectObjectPatterns(const Texture& t, FoundObjects& out);
+
+void collectObjectPatterns(const std::vector<TextureMapEntry>& entries, FoundObjects& out) {
+  for (const TextureMapEntry& e : entries) collectObjectPatterns(e.texture, out);
+}
+
+void collectObjectPatterns(const PatternSpec& s, FoundObjects& out) {
+  if (s.type == PatternType::object && s.object && s.object->node)
+    out.patterns.push_back(s.object.get());
+  if (s.pigment) collectObjectPatterns(s.pigment->texture, out);
+}
+
+// An object pattern whose value is not 0 or 1 alone with a map of more than two entries:
+// POV-Ray's list of two cannot stand for it.
+bool beyondTwoEntries(const PatternSpec& s, size_t entries) {
+  return s.type == PatternType::object && entries > 2 && !objectPatternTwoValued(s);
+}
+
+void collectObjectPatterns(const Texture& t, FoundObjects& out) {
+  if (const auto* p = std::get_if<PatternTexture>(&t)) {
+    if (beyondTwoEntries(p->pattern, std::max(p->map.entries.size(), p->pigments.size())))
+      out.unexportable = p->pattern.object.get();
+    collectObjectPatterns(p->pattern, out);
+    collectObjectPatterns(p->pigments, out);
+  }
+  if (const auto* c = std::get_if<CheckerTexture>(&t)) collectObjectPatterns(c->pigments, out);
+  if (const auto* h = std::get_if<HexagonTexture>(&t)) collectObjectPatterns(h->pigments, out);
+  if (const auto* b = std::get_if<BrickTexture>(&t)) collectObjectPatterns(b->pigments, out);
+  if (const auto* a = std::get_if<AverageTexture>(&t)) collectObjectPatterns(a->entries, out);
+}
+
+void collectObjectPatterns(const NormalSpec& n, FoundObjects& out) {
+  if (beyondTwoEntries(n.pattern, n.map.size())) out.unexportable = n.pattern.object.get();
+  collectObjectPatterns(n.pattern, out);
+  for (const WeightedNormal& e : n.average) collectObjectPatterns(e.normal, out);
+  for (const NormalMapEntry& e : n.map) collectObjectPatterns(e.normal, out);
+}
+
+void collectObjectPatterns(const Material& m, FoundObjects& out) {
+  collectObjectPatterns(m.texture, out);
+  collectObjectPatterns(m.mapPattern, out);
+  if (m.normal) collectObjectPatterns(*m.normal, out);
+  for (const Material& layer : m.layers) collectObjectPatterns(layer, out);
+  for (const MaterialMapEntry& e : m.mapEntries) collectObjectPatterns(e.material, out);
+}
+
+}  // namespace
+
+void PovGeometry::writeObjectPatterns(PovWriter& out) {
+  std::vector<const ObjectPattern*> patterns;
+  for (const Material& m : scene_.materials) {
+    FoundObjects found;
+    collectObjectPatterns(m, found);
+    patterns.insert(patterns.end(), found.patterns.begin(), found.patterns.end());
+    if (found.unexportable)
+      issues_.error(m.loc, "the object pattern of '" + found.unexportable->id +
+                               "' has a frequency or a wave and a map of more than two "
+                               "entries, which POV-Ray's list of two cannot write");
+  }
+  std::map<std::string, const Node*> declared;
+  for (const ObjectPattern* o : patterns) {
+    const std::string name = povObjectPatternName(*o);
+    auto [it, added] = declared.emplace(name, o->node);
+    if (!added) {
+      if (it->second != o->node)
+        issues_.error(o->node->loc, "the ids '" + it->second->id + "' and '" + o->id +
+                                        "' give one POV-Ray name, " + name +
+                                        ", to the objects of two object patterns");
+      continue;
+    }
+    // Its geometry only, as a clip's: POV-Ray asks the object's inside alone.
+    const bool shadowless = shadowless_, ignore = ignoreOwnShadows_, inSolid = inWrittenSolid_,
+               inverse = pendingInverse_, inClip = inClipOrBound_;
+    inClipOrBound_ = true;
+    shadowless_ = false;
+    ignoreOwnShadows_ = true;
+    inWrittenSolid_ = true;
+    pendingInverse_ = false;
+    out.line("// the object of an object pattern: <" + o->node->element + " id=\"" + o->id +
+             "\"> " + o->node->loc.str());
+    out.open("#declare " + name + " = " + (operandCount(*o->node) == 1 ? "object" : "union"));
+    writeNode(*o->node, Mat4(1.0), 0, false, out);
+    out.close();
+    shadowless_ = shadowless;
+    ignoreOwnShadows_ = ignore;
+    inWrittenSolid_ = inSolid;
+    pendingInverse_ = inverse;
+    inClipOrBound_ = inClip;
+  }
+}
+
 int PovGeometry::operandCount(const Node& node) const {
   switch (node.kind) {
     case NodeKind::Group: {

@@ -39,6 +39,9 @@ class PovGeometry {
   // Writes every top-level object into `objects` and the mesh declarations they use into
   // `declarations`; `used` gets the indices of the materials referenced.
   void write(PovWriter& declarations, PovWriter& objects);
+  // `#declare NAME = object|union { ... }` of every object pattern's node (its geometry,
+  // without textures), for the materials that name it (povObjectPatternName).
+  void writeObjectPatterns(PovWriter& out);
   const std::vector<bool>& usedMaterials() const { return used_; }
 
  private:

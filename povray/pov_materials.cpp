@@ -540,6 +540,25 @@ void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, cons
     writePlacement(spec.placement, out);
     return;
   }
+  if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern);
+      p && p->pattern.type == PatternType::object) {
+    // `object { NAME texture {..} texture {..} }`: the first entry outside, the last inside.
+    if (entries.size() > 2 && !objectPatternTwoValued(p->pattern))
+      report.error(m.loc, materialLabel(m) +
+                              ": an object pattern with a frequency or a wave and more than two "
+                              "entries, which POV-Ray's list of two textures cannot write");
+    out.open("object");
+    out.line(p->pattern.object ? povObjectPatternName(*p->pattern.object) : "sphere { 0, 0 }");
+    for (size_t k : {size_t(0), entries.size() - 1}) {
+      out.open("texture");
+      entryBody(k);
+      out.close();
+    }
+    out.close();
+    writeValueModifiers(p->pattern, out);
+    writePlacement(p->pattern.placement, out);
+    return;
+  }
   if (const auto* p = std::get_if<PatternTexture>(&m.mapPattern)) {
     writePigmentFunctions(p->pattern, out);
     writePatternKeyword(p->pattern, out);

@@ -6,6 +6,8 @@
 #include "scenegraph/image_pattern.h"
 #include "scenegraph/overloaded.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <stdexcept>
 #include <variant>
@@ -61,7 +63,20 @@ std::string imageReadingSpec(const ImagePattern& im) {
   return b + kInterpolate[static_cast<int>(im.interpolation)];
 }
 
+std::string povObjectPatternName(const ObjectPattern& o) {
+  std::string name = "LucentObject_";
+  for (char c : o.id) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return name;
+}
+
+bool objectPatternTwoValued(const PatternSpec& s) {
+  return s.frequency == 0.0 && s.waveShape() == WaveShape::ramp;
+}
+
 std::string patternKeyword(const PatternSpec& s) {
+  if (s.type == PatternType::object)
+    return "object { " +
+           (s.object ? povObjectPatternName(*s.object) : std::string("sphere { 0, 0 }")) + " }";
   std::string k(patternTypeInfo(s.type).pov);
   if (s.type == PatternType::image) k += imagePatternBlock(s);
   if (s.type == PatternType::gradient) k += " " + povVector(s.axis);
@@ -243,8 +258,33 @@ void writePigmentList(const std::vector<TextureMapEntry>& entries, const Vec3& s
   }
 }
 
+// `object { NAME A B }`: the map's first entry outside, its last inside (POV-Ray's list of
+// two; a blend of the two between them, as a two-entry map's).
+void writeObjectPatternBody(const PatternTexture& t, const Vec3& scale, double filter,
+                            double transmit, PovWriter& out) {
+  // (A map POV-Ray's list cannot hold is reported by PovGeometry::writeObjectPatterns.)
+  out.open("object");
+  out.line(t.pattern.object ? povObjectPatternName(*t.pattern.object) : "sphere { 0, 0 }");
+  if (!t.pigments.empty()) {
+    writePigmentList({t.pigments.front(), t.pigments.back()}, scale, filter, transmit, out);
+  } else if (t.map.entries.empty()) {
+    out.line(colour(Color(0.0f), {}, scale, filter, transmit) + ",");
+    out.line(colour(Color(1.0f), {}, scale, filter, transmit));
+  } else {
+    const ColorMapEntry& a = t.map.entries.front();
+    const ColorMapEntry& b = t.map.entries.back();
+    out.line(colour(a.color, a.ft, scale, filter, transmit) + ",");
+    out.line(colour(b.color, b.ft, scale, filter, transmit));
+  }
+  out.close();
+  writeValueModifiers(t.pattern, out);
+  writePlacement(t.pattern.placement, out);
+}
+
 void writePatternBody(const PatternTexture& t, const Vec3& scale, double filter, double transmit,
                       PovWriter& out) {
+  if (t.pattern.type == PatternType::object)
+    return writeObjectPatternBody(t, scale, filter, transmit, out);
   writePigmentFunctions(t.pattern, out);
   writePatternKeyword(t.pattern, out);
   if (!t.pigments.empty()) {
@@ -447,9 +487,24 @@ void writeNormalMaps(const NormalSpec& n, PovWriter& out) {
   }
 }
 
+// `object { NAME normal {..} normal {..} }`: the map's first entry outside, its last inside.
+void writeObjectNormalBody(const NormalSpec& n, PovWriter& out) {
+  out.open("object");
+  out.line(n.pattern.object ? povObjectPatternName(*n.pattern.object) : "sphere { 0, 0 }");
+  for (const NormalMapEntry* e : {&n.map.front(), &n.map.back()}) {
+    out.open("normal");
+    writeNormalBody(e->normal, out);
+    out.close();
+  }
+  out.close();
+  writeValueModifiers(n.pattern, out);
+  writePlacement(n.pattern.placement, out);
+}
+
 // What `normal { }` holds (and a normal_map's entry after its weight).
 void writeNormalBody(const NormalSpec& n, PovWriter& out) {
   if (n.block != NormalBlock::none) return writeBlockNormalBody(n, out);
+  if (n.pattern.type == PatternType::object && !n.map.empty()) return writeObjectNormalBody(n, out);
   if (!n.average.empty()) {
     // `average normal_map { [weight NORMAL_BODY] ... }`.
     out.line("average");

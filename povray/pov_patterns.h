@@ -9,6 +9,7 @@
 
 #include "scenegraph/image_pattern.h"
 #include "scenegraph/material.h"
+#include "scenegraph/object_pattern.h"
 #include "scenegraph/pigment_function.h"
 
 #include <memory>
@@ -52,5 +53,12 @@ std::string imageReadingSpec(const ImagePattern& im);
 void writePlacement(const PatternPlacement& p, PovWriter& out);
 // `uv_mapping` for a uv-mapped placement (the first line of its pigment or normal block).
 void writeUvMapping(const PatternPlacement& p, PovWriter& out);
+
+// The object pattern's declared object (`#declare NAME = ...`, written by the exporter
+// before the materials): "LucentObject_" and the node's id, its other characters as '_'.
+std::string povObjectPatternName(const ObjectPattern& o);
+// An object pattern's value is 0 or 1 only (no frequency and a ramp wave), so that POV-Ray's
+// list of two, at 0 and 1, can stand for any map: the first entry and the last.
+bool objectPatternTwoValued(const PatternSpec& s);
 
 }  // namespace lucent

@@ -273,6 +273,18 @@ struct Builder {
 
 void checkWorld(const Scene& scene) { checkNode(*scene.root, Transform()); }
 
+std::unique_ptr<Shape> buildSolid(const Scene& scene, const Node& node,
+                                  const ShapeMaker& makeShape) {
+  std::vector<WorldLeaf> leaves;  // never looked up: only inside() is asked
+  Builder b{scene, makeShape, true, {}, leaves};
+  std::vector<Part> parts;
+  // As an operand of a solid: one union, never split by shadow flags.
+  b.add(node, Transform(), 0, true, true, parts);
+  if (parts.empty()) return nullptr;
+  if (parts.size() == 1) return std::move(parts.front().shape);
+  return compose(CsgOp::Union, std::move(parts), true).shape;
+}
+
 FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape) {
   FlatScene flat;
   Builder b{scene, makeShape, hasUses(scene), {}, flat.leaves};

@@ -54,6 +54,13 @@ struct FlatScene {
 // scene.materials, which must keep its elements where they are while they are used.
 FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape);
 
+// The geometry of one node as a single shape (a union of its parts when it has several),
+// its own transform included: the solid of an object pattern (scenegraph/object_pattern.h),
+// whose inside() alone is asked, so no material matters. Null for a node with no geometry.
+// Throws LocatedError as flattenScene.
+std::unique_ptr<Shape> buildSolid(const Scene& scene, const Node& node,
+                                  const ShapeMaker& makeShape);
+
 // Throws, without building any shape, the LocatedError that flattening would: a
 // transform down to some node that is singular or beyond double range (nested scales).
 // `lucent check` calls it so that it refuses what `lucent render` refuses.

@@ -57,6 +57,7 @@ enum class PatternType {
   facets,
   pavement,
   image,
+  object,
 };
 
 // What the parser's names, the schema, the POV-Ray exporter and the renderer's defaults
@@ -141,6 +142,8 @@ inline constexpr PatternTypeInfo kPatternTypes[] = {
      "POV-Ray's pavements of the x-z plane: tiles of 1 to 6 triangles, squares or hexagons"},
     {PatternType::image, "image-pattern", "image_pattern", true, WaveShape::ramp, false,
      "the grey level (or with use-alpha the transparency) of a projected image"},
+    {PatternType::object, "object", "object", true, WaveShape::ramp, false,
+     "1 inside the solid that 'object' names, 0 outside it (POV-Ray's object pattern)"},
 };
 inline constexpr int kPatternTypeCount = static_cast<int>(std::size(kPatternTypes));
 
@@ -257,10 +260,12 @@ struct FractalParams {
   bool operator!=(const FractalParams& o) const { return !(*this == o); }
 };
 
-// POV-Ray's default frequency: 0 for quilted and image_pattern (their values are used
-// unwrapped), 1 otherwise.
+// POV-Ray's default frequency: 0 for quilted, image_pattern and object (their values are
+// used unwrapped), 1 otherwise.
 constexpr double defaultFrequency(PatternType type) {
-  return type == PatternType::quilted || type == PatternType::image ? 0.0 : 1.0;
+  return type == PatternType::quilted || type == PatternType::image || type == PatternType::object
+             ? 0.0
+             : 1.0;
 }
 
 // The patterns that take FractalParams.
@@ -282,7 +287,8 @@ struct PatternFunction {
 // pigment-pattern's pigment: a plain colour or a texture (scenegraph/texture_spec.h; its
 // `at` unused).
 struct TextureMapEntry;
-struct ImagePattern;  // image_pattern.h
+struct ImagePattern;   // image_pattern.h
+struct ObjectPattern;  // object_pattern.h
 
 struct PatternSpec {
   PatternType type = PatternType::bozo;
@@ -304,6 +310,7 @@ struct PatternSpec {
   std::shared_ptr<const PatternFunction> function;  // type function
   std::shared_ptr<const TextureMapEntry> pigment;   // type pigment (pigment-pattern)
   std::shared_ptr<const ImagePattern> image;        // type image (image-pattern)
+  std::shared_ptr<const ObjectPattern> object;      // type object
   int noiseGenerator = 2;  // 1 original, 2 range corrected (3.7's default), 3 Perlin
 
   WaveShape waveShape() const { return wave ? *wave : patternTypeInfo(type).wave; }

@@ -120,6 +120,11 @@ bool SceneReader::readPigmentMapKeyword(const Token& t, TokenStream& in, PovPigm
       readPigmentMap(in, t, std::holds_alternative<AverageTexture>(p.pattern));
   if (auto* a = std::get_if<AverageTexture>(&p.pattern)) {
     a->entries = std::move(entries);
+  } else if (auto* pattern = std::get_if<PatternTexture>(&p.pattern);
+             pattern && pattern->pattern.type == PatternType::object) {
+    in.error(t,
+             "a pigment_map cannot be used with an object pattern (POV-Ray's rule: its "
+             "pigments are its list of two)");
   } else if (auto* pattern = std::get_if<PatternTexture>(&p.pattern)) {
     pattern->pigments = std::move(entries);
     p.map.clear();
@@ -157,7 +162,10 @@ bool SceneReader::readBlockPigments(TokenStream& in, PovPigment& p, size_t count
                   " pigments here (Lucent does not mix pigments and colours in one list)");
     return true;
   }
-  if (auto* c = std::get_if<CheckerTexture>(&p.pattern)) c->pigments = std::move(list);
+  // An object pattern's pigments are a map's entries at its values 0 and 1.
+  for (size_t i = 0; i < list.size(); ++i) list[i].at = static_cast<double>(i);
+  if (auto* o = std::get_if<PatternTexture>(&p.pattern)) o->pigments = std::move(list);
+  else if (auto* c = std::get_if<CheckerTexture>(&p.pattern)) c->pigments = std::move(list);
   else if (auto* h = std::get_if<HexagonTexture>(&p.pattern)) h->pigments = std::move(list);
   else if (auto* b = std::get_if<BrickTexture>(&p.pattern)) b->pigments = std::move(list);
   p.map.clear();

@@ -46,8 +46,8 @@ std::vector<PovColorMapEntry> defaultColourMap(PatternType type) {
 }
 
 // POV-Ray's patterns Lucent does not have (as pigments or normals).
-constexpr std::string_view kPatternsLucentLacks[] = {
-    "aoi", "cubic", "density_file", "object", "potential", "square", "triangular"};
+constexpr std::string_view kPatternsLucentLacks[] = {"aoi",       "cubic",  "density_file",
+                                                     "potential", "square", "triangular"};
 
 const PatternTypeInfo* patternType(const Token& t) {
   if (t.kind != TokenKind::Keyword) return nullptr;
@@ -206,6 +206,10 @@ void readPatternArguments(const Token& t, TokenStream& in, PatternSpec& s) {
 
 // A pattern keyword, or a modifier of the pattern a pigment has; false if `t` is neither.
 bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment& p) {
+  if (isWord(t, "object")) {
+    readObjectPigment(t, in, p);
+    return true;
+  }
   if (const PatternTypeInfo* info = patternType(t); info && info->colour) {
     PatternTexture tex;
     if (const PatternPlacement* was = placementOf(p.pattern)) tex.pattern.placement = *was;
@@ -279,6 +283,10 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
     return true;
   }
   if (w == "color_map" || w == "colour_map") {
+    if (const PatternSpec* s = specOf(p.pattern); s && s->type == PatternType::object)
+      in.error(t,
+               "a color_map cannot be used with an object pattern (POV-Ray's rule: its "
+               "colours are its list of two)");
     SourceLoc loc = t.loc();
     p.map = readColorMap(in, loc);
     p.mapLoc = loc;

@@ -89,10 +89,12 @@ PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, b
       return n;
     }
     const PatternTypeInfo* type = nullptr;
-    if (t.kind == TokenKind::Keyword)
+    if (t.kind == TokenKind::Keyword && !isWord(t, "object"))  // object's list: readObjectNormal
       for (const PatternTypeInfo& info : kPatternTypes)
         if (info.pov == t.text()) type = &info;
-    if (type) {
+    if (isWord(t, "object")) {
+      readObjectNormal(t, in, n);
+    } else if (type) {
       PatternSpec s;
       s.type = type->type;
       s.placement = n.spec.pattern.placement;
@@ -369,6 +371,19 @@ bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& te
   if (w == "tiles") {
     readTiles(t, in, tex);
     pattern.pattern = CheckerTexture{};
+  } else if (w == "object") {
+    pattern.pattern = objectPatternTexture(readObjectPatternObject(t, in), pattern.pattern);
+    tex.mapEntries.clear();
+    for (int cell = 0; cell < 2 && isWord(in.peek(), "texture"); ++cell) {
+      in.next();
+      tex.mapEntries.push_back({double(cell), readTexture(in, defaultTexture())});
+      in.allow(",");
+    }
+    if (tex.mapEntries.size() < 2)
+      keepError(in, t.loc(),
+                "an object pattern of textures needs its two textures (outside, inside) in "
+                "Lucent");
+    in.expect("}");
   } else if (block && isWord(in.peek(), "texture")) {
     if (w == "checker") pattern.pattern = CheckerTexture{};
     else if (w == "hexagon") pattern.pattern = HexagonTexture{};

@@ -19,6 +19,7 @@
 #include "token_stream.h"
 
 #include "lang/diagnostics.h"
+#include "scenegraph/object_pattern.h"
 #include "scenegraph/pigment_function.h"
 #include "scenegraph/scene.h"
 
@@ -393,6 +394,16 @@ class SceneReader : public ItemReader {
   std::string readImageFileSpec(TokenStream& in);
   std::shared_ptr<const ImagePattern> readImagePattern(TokenStream& in);
   void readMaterialMap(const Token& t, TokenStream& in, PovTexture& tex);
+  // read_object_pattern.cpp: `object { OBJECT transforms` of an object pattern (the keyword
+  // read; its list and '}' are the caller's), the object a node of the scene's <defs>.
+  std::shared_ptr<const ObjectPattern> readObjectPatternObject(const Token& t, TokenStream& in);
+  // `object { OBJECT transforms COLOUR, COLOUR }` or `... pigment {..} pigment {..} }` in a
+  // pigment, and `... normal {..} normal {..} }` in a normal (the keyword read).
+  void readObjectPigment(const Token& t, TokenStream& in, PovPigment& p);
+  void readObjectNormal(const Token& t, TokenStream& in, PovNormal& n);
+  // The pattern of an object pattern, placed as `was` is.
+  static PatternTexture objectPatternTexture(std::shared_ptr<const ObjectPattern> object,
+                                             const Texture& was);
   // read_maps.cpp: maps and lists of pigments, averages of pigments and of normals
   std::vector<TextureMapEntry> readPigmentMap(TokenStream& in, const Token& at,
                                               bool average = false);
@@ -453,6 +464,8 @@ class SceneReader : public ItemReader {
   std::optional<uint32_t> defaultMaterial_;
   // The materials of declared textures (unpatterned), by name and interior.
   std::map<std::string, uint32_t> namedMaterials_;
+  // Object patterns' objects put into the scene's <defs> so far (their ids' numbers).
+  int objectPatterns_ = 0;
   // The objects built for trace() and the like, each with its item (few in a scene: a
   // search of this list is fast enough).
   std::vector<std::pair<ItemPtr, std::shared_ptr<const ObjectGeometry>>> built_;

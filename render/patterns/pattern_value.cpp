@@ -7,6 +7,7 @@
 #include "pavement.h"
 #include "primitives/noise.h"
 #include "render/texture.h"
+#include "scenegraph/object_pattern.h"
 #include "scenegraph/turbulence.h"
 #include "slope.h"
 #include "tiling.h"
@@ -259,6 +260,9 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
       return slopeValue(spec.slope, p, currentPatternSurface());
     case PatternType::image:
       return spec.image ? imagePatternValue(*spec.image, p) : 0.0;
+    case PatternType::object:
+      // POV-Ray's Inside_Object: the solid's own test, its clips included.
+      return spec.object && spec.object->solid && spec.object->solid->inside(p) ? 1.0 : 0.0;
     case PatternType::facets:  // a normal only, with no value (the parsers refuse one)
       return 0.0;
   }

@@ -156,6 +156,12 @@ TEST_CASE("scene reader image: pavements as a pigment and as normals",
   requireSameImageAsPovray("pavements.pov", 240, 80);
 }
 
+TEST_CASE(
+    "scene reader image: object patterns in a pigment, a pigment list, a normal and a texture",
+    "[sdl][scene][image][object]") {
+  requireSameImageAsPovray("object_patterns.pov", 240, 160);
+}
+
 TEST_CASE("scene reader image: uv_mapping of pigments, textures and texture maps on meshes",
           "[sdl][scene][image][povray][texture][uv-mapping]") {
   requireSameImageAsPovray("uv_mapping.pov", 160, 120);
