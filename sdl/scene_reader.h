@@ -315,6 +315,7 @@ class SceneReader : public ItemReader {
   void readPrism(PovObject& o, TokenStream& in);
   void readPolygon(PovObject& o, TokenStream& in);
   void readBicubicPatch(PovObject& o, TokenStream& in);
+  void readJuliaFractal(PovObject& o, TokenStream& in);
   void readText(PovObject& o, TokenStream& in);
   void readHeightField(PovObject& o, TokenStream& in);
   void readMesh(PovObject& o, TokenStream& in);
