@@ -10,6 +10,7 @@
 #include "scenegraph/pigment_function.h"
 #include "scenegraph/shape_type.h"
 
+#include <array>
 #include <filesystem>
 
 namespace lucent {
@@ -118,6 +119,24 @@ std::optional<OwnShapeText> own(const BicubicPatchSpec& s, const SourceLoc&, con
                   {"flatness-space", s.flatnessInWorld ? "world" : "object"},
                   {"u-steps", std::to_string(s.uSteps)},
                   {"v-steps", std::to_string(s.vSteps)}};
+  return t;
+}
+
+std::optional<OwnShapeText> own(const JuliaFractalSpec& s, const SourceLoc&, const std::string&) {
+  static const char* const kAlgebras[] = {"quaternion", "hypercomplex"};
+  static const char* const kFunctions[] = {"sqr",   "cube", "reciprocal", "exp",  "ln",    "sin",
+                                           "asin",  "cos",  "acos",       "tan",  "atan",  "sinh",
+                                           "asinh", "cosh", "acosh",      "tanh", "atanh", "pwr"};
+  OwnShapeText t;
+  t.attributes = {
+      {"c", numberList(std::array<double, 4>{s.c.x, s.c.y, s.c.z, s.c.w})},
+      {"algebra", kAlgebras[static_cast<size_t>(s.algebra)]},
+      {"function", kFunctions[static_cast<size_t>(s.function)]},
+      {"max-iteration", std::to_string(s.maxIteration)},
+      {"slice", numberList(std::array<double, 4>{s.slice.x, s.slice.y, s.slice.z, s.slice.w})}};
+  if (s.function == JuliaFunction::Pwr)
+    t.attributes.push_back(
+        {"exponent", numberList(std::array<double, 2>{s.exponent.x, s.exponent.y})});
   return t;
 }
 

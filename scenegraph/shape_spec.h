@@ -6,6 +6,7 @@
 #include "primitives/blob_component.h"
 #include "primitives/height_map.h"
 #include "primitives/isosurface.h"
+#include "primitives/julia_map.h"
 #include "primitives/lathe_spline.h"
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
@@ -168,9 +169,13 @@ struct BicubicPatchSpec {
   // world builder (flatten.cpp) on its copy; the identity as read.
   Mat4 flatnessFrame{1.0};
 };
-using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
-                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
-                               PolySpec, PrismSpec, BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec,
-                               SorSpec, HeightFieldSpec, PolygonSpec, BicubicPatchSpec>;
+// POV-Ray's julia_fractal: the 3-D slice of a 4-D Julia set (primitives/julia_map.h), its
+// parameters as written (the slice made unit when built).
+struct JuliaFractalSpec : JuliaParams {};
+using ShapeSpec =
+    std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec, DiscSpec,
+                 TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec, PolySpec, PrismSpec,
+                 BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec, SorSpec, HeightFieldSpec,
+                 PolygonSpec, BicubicPatchSpec, JuliaFractalSpec>;
 
 }  // namespace lucent

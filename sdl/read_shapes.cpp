@@ -32,17 +32,16 @@ namespace {
 constexpr double kPovEpsilon = 1e-10;
 
 constexpr std::string_view kShapes[] = {
-    "sphere",       "box",   "plane",    "cylinder",        "cone",
-    "torus",        "disc",  "triangle", "smooth_triangle", "quadric",
-    "poly",         "cubic", "quartic",  "polynomial",      "blob",
-    "lathe",        "sor",   "prism",    "superellipsoid",  "text",
-    "height_field", "mesh",  "mesh2",    "isosurface",      "polygon",
-    "bicubic_patch"};
+    "sphere",        "box",          "plane",    "cylinder",        "cone",
+    "torus",         "disc",         "triangle", "smooth_triangle", "quadric",
+    "poly",          "cubic",        "quartic",  "polynomial",      "blob",
+    "lathe",         "sor",          "prism",    "superellipsoid",  "text",
+    "height_field",  "mesh",         "mesh2",    "isosurface",      "polygon",
+    "bicubic_patch", "julia_fractal"};
 
 // POV-Ray's shapes Lucent has no equivalent of, with the nearest Lucent feature.
 const std::map<std::string_view, std::string_view>& unsupportedShapes() {
   static const std::map<std::string_view, std::string_view> shapes = {
-      {"julia_fractal", "4-D quaternion fractals; the nearest Lucent shape is <isosurface>"},
       {"parametric", "parametric surfaces; the nearest Lucent shape is <isosurface>"},
       {"sphere_sweep", "swept spheres; a linear one is a <union> of <sphere> and <cone> elements"},
       {"ovus", "the ovus; the nearest Lucent shapes are <lathe> and <sor>"},
@@ -117,6 +116,18 @@ bool similarity(const Mat4& m, double& scale) {
       if (std::abs(glm::dot(c[i], c[j])) > tol) return false;
   }
   return scale > 0.0;
+}
+
+// POV-Ray's 4-D vector: a float is all four components, a shorter vector padded with 0.
+Vec4 parseVector4(TokenStream& in) {
+  const SourceLoc loc = in.peek().loc();
+  const Value v = in.parseExpression();
+  const int n = v.terms();
+  if (n < 1 || n > 4) in.error(loc, "expected a 4-D vector, not a " + typeName(v));
+  if (n == 1) return Vec4(v.v[0]);
+  Vec4 out(0.0);
+  for (int i = 0; i < n; ++i) out[i] = v.v[static_cast<size_t>(i)];
+  return out;
 }
 
 }  // namespace
@@ -252,6 +263,8 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
     readPolygon(o, in);
   } else if (w == "bicubic_patch") {
     readBicubicPatch(o, in);
+  } else if (w == "julia_fractal") {
+    readJuliaFractal(o, in);
   } else if (w == "superellipsoid") {
     const Vec2 en = parseUv(in);
     // Poles on z in both: z → −z maps the shape onto itself.
@@ -621,6 +634,79 @@ void SceneReader::readBicubicPatch(PovObject& o, TokenStream& in) {
     s.points[i] = point(in);
     in.parseComma();
   }
+  o.shape = std::move(s);
+}
+
+// julia_fractal { <4-vector> [quaternion|hypercomplex] [FUNCTION] [max_iteration N]
+// [precision P] [slice <4-vector>, D] } (the keywords in any order, the last of each
+// counting): POV-Ray's rules, a max_iteration below 1 made 1 and a precision below 1 made 1
+// (silently, as POV-Ray). The map is the same in both spaces, so the shape is first
+// mirrored in z (as a height field).
+void SceneReader::readJuliaFractal(PovObject& o, TokenStream& in) {
+  static const std::map<std::string_view, JuliaFunction> kFunctions = {
+      {"sqr", JuliaFunction::Sqr},
+      {"cube", JuliaFunction::Cube},
+      {"reciprocal", JuliaFunction::Reciprocal},
+      {"exp", JuliaFunction::Exp},
+      {"ln", JuliaFunction::Ln},
+      {"sin", JuliaFunction::Sin},
+      {"asin", JuliaFunction::Asin},
+      {"cos", JuliaFunction::Cos},
+      {"acos", JuliaFunction::Acos},
+      {"tan", JuliaFunction::Tan},
+      {"atan", JuliaFunction::Atan},
+      {"sinh", JuliaFunction::Sinh},
+      {"asinh", JuliaFunction::Asinh},
+      {"cosh", JuliaFunction::Cosh},
+      {"acosh", JuliaFunction::Acosh},
+      {"tanh", JuliaFunction::Tanh},
+      {"atanh", JuliaFunction::Atanh}};
+  JuliaFractalSpec s;
+  s.c = parseVector4(in);
+  SourceLoc functionLoc = o.loc;
+  for (;;) {
+    const Token& t = in.peek();
+    if (t.kind != TokenKind::Keyword) break;
+    const std::string word(t.text());  // kept: next() moves on from t
+    if (const auto f = kFunctions.find(word); f != kFunctions.end()) {
+      functionLoc = in.next().loc();
+      s.function = f->second;
+    } else if (word == "pwr") {
+      functionLoc = in.next().loc();
+      s.function = JuliaFunction::Pwr;
+      in.expect("(");
+      s.exponent.x = in.parseFloat();
+      in.expect(",");
+      s.exponent.y = in.parseFloat();
+      in.expect(")");
+    } else if (word == "quaternion" || word == "hypercomplex") {
+      in.next();
+      s.algebra = word == "quaternion" ? JuliaAlgebra::Quaternion : JuliaAlgebra::Hypercomplex;
+    } else if (word == "max_iteration") {
+      in.next();
+      s.maxIteration = static_cast<int>(std::max(1.0, std::floor(in.parseFloat())));
+    } else if (word == "precision") {
+      in.next();
+      s.precision = std::max(1.0, in.parseFloat());
+    } else if (word == "slice") {
+      const SourceLoc loc = in.next().loc();
+      s.slice = parseVector4(in);
+      in.parseComma();
+      s.distance = in.parseFloat();
+      if (!(std::fabs(glm::dot(s.slice, s.slice)) >= kPovEpsilon))
+        in.error(loc, "the julia_fractal's slice vector is zero");
+      if (!(std::fabs(s.slice.w) >= kPovEpsilon))
+        in.error(loc, "the julia_fractal's slice t component is zero");
+    } else {
+      break;
+    }
+  }
+  if (s.algebra == JuliaAlgebra::Quaternion && s.function != JuliaFunction::Sqr &&
+      s.function != JuliaFunction::Cube)
+    in.error(functionLoc,
+             "illegal function: quaternion only supports sqr and cube (POV-Ray's "
+             "error)");
+  o.transform.scale(Vec3(1.0, 1.0, -1.0));
   o.shape = std::move(s);
 }
 

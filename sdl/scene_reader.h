@@ -316,6 +316,7 @@ class SceneReader : public ItemReader {
   void readPrism(PovObject& o, TokenStream& in);
   void readPolygon(PovObject& o, TokenStream& in);
   void readBicubicPatch(PovObject& o, TokenStream& in);
+  void readJuliaFractal(PovObject& o, TokenStream& in);
   void readText(PovObject& o, TokenStream& in);
   void readHeightFieldOptions(HeightFieldSpec& s, TokenStream& in);
   void readFunctionHeightField(PovObject& o, TokenStream& in);

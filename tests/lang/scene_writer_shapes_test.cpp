@@ -357,4 +357,31 @@ TEST_CASE("scene writer: a height field of a function keeps its function, pigmen
   // The grid is not flat: the bozo and the slope in x both show.
   CHECK(*std::max_element(b.map->values.begin(), b.map->values.end()) >
         *std::min_element(b.map->values.begin(), b.map->values.end()) + 1000);
+
+TEST_CASE("scene writer: a julia fractal keeps its parameter, algebra, function and slice",
+          "[lang][scene-writer]") {
+  {
+    auto r = roundTrip(
+        "<julia-fractal c=\"0.4 0.3 0.1 0.05\" algebra=\"hypercomplex\" function=\"pwr\" "
+        "exponent=\"2 0.1\" max-iteration=\"9\" precision=\"35\" slice=\"0 0 0.2 1\" "
+        "distance=\"0.1\"/>");
+    auto [a, b] = specs<JuliaFractalSpec>(r);
+    CHECK(b.c == Vec4(0.4, 0.3, 0.1, 0.05));
+    CHECK(b.algebra == JuliaAlgebra::Hypercomplex);
+    CHECK(b.function == JuliaFunction::Pwr);
+    CHECK(b.exponent == Vec2(2.0, 0.1));
+    CHECK(b.maxIteration == 9);
+    CHECK(b.precision == 35.0);
+    CHECK(b.slice == a.slice);
+    CHECK(b.distance == 0.1);
+  }
+  {
+    auto r = roundTrip("<julia-fractal c=\"-0.03 0.5 -0.2 -0.5\" function=\"cube\"/>");
+    auto [a, b] = specs<JuliaFractalSpec>(r);
+    CHECK(b.c == a.c);
+    CHECK(b.algebra == JuliaAlgebra::Quaternion);
+    CHECK(b.function == JuliaFunction::Cube);
+    CHECK(b.maxIteration == 20);
+    CHECK(b.slice == Vec4(0.0, 0.0, 0.0, 1.0));
+  }
 }

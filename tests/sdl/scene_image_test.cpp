@@ -171,3 +171,13 @@ TEST_CASE("scene reader image: tiles, a checker of layered textures",
           "[sdl][scene][image][povray][texture][tiles]") {
   requireSameImageAsPovray("tiles.pov", 160, 120);
 }
+
+TEST_CASE("scene reader image: quaternion julia fractals, z² and z³ and a tilted slice",
+          "[sdl][scene][image][povray][julia]") {
+  requireSameImageAsPovray("julia_quaternion.pov", 160, 120);
+}
+
+TEST_CASE("scene reader image: hypercomplex julia fractals, z² and POV-Ray's cube",
+          "[sdl][scene][image][povray][julia]") {
+  requireSameImageAsPovray("julia_hypercomplex.pov", 160, 120);
+}

@@ -390,7 +390,7 @@ union { object { B } object { L } object { S } object { P } object { E } object 
 
 TEST_CASE("scene shapes: what Lucent has no shape for, refused at the keyword, every one",
           "[sdl][scene][shapes][errors]") {
-  const auto errors = errorsOf(R"(julia_fractal { <-0.08, 0.7, 0, 0> quaternion sqr }
+  const auto errors = errorsOf(R"(sphere { 0, 1 }
 union { parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
         sphere { 0, 1 } }
 #declare P = ovus { 1, 0.5 } object { P }
@@ -400,24 +400,21 @@ poly { 6, <1> }
 superellipsoid { <0, 1> }
 height_field { gif "x.gif" }
 )");
-  REQUIRE(errors.size() == 8);
+  REQUIRE(errors.size() == 7);
   CHECK(errors[0] ==
-        "test.pov:1:1: error: 'julia_fractal' is not supported by Lucent (4-D quaternion fractals; "
-        "the nearest Lucent shape is <isosurface>)");
-  CHECK(errors[1] ==
         "test.pov:2:9: error: 'parametric' is not supported by Lucent (parametric surfaces; the "
         "nearest Lucent shape is <isosurface>)");
   // A declared object's refusal is said where it is used, with that place as a note.
-  CHECK(errors[2] ==
+  CHECK(errors[1] ==
         "test.pov:4:14: error: 'ovus' is not supported by Lucent (the ovus; the nearest Lucent "
         "shapes are <lathe> and <sor>)\ntest.pov:4:39: note: the declaration is used here");
-  CHECK(errors[3].find("test.pov:5:1: error: 'sphere_sweep' is not supported by Lucent") == 0);
-  CHECK(errors[4].find("test.pov:6:1: error: 'ovus' is not supported by Lucent") == 0);
-  CHECK(errors[5] ==
+  CHECK(errors[2].find("test.pov:5:1: error: 'sphere_sweep' is not supported by Lucent") == 0);
+  CHECK(errors[3].find("test.pov:6:1: error: 'ovus' is not supported by Lucent") == 0);
+  CHECK(errors[4] ==
         "test.pov:7:1: error: 'poly' of order 6 is not supported by Lucent (its poly takes orders "
         "2 to 4; the nearest Lucent shape is <isosurface>)");
-  CHECK(errors[6].find("test.pov:8:1: error: 'superellipsoid' exponents outside 0.01 to 10") == 0);
-  CHECK(errors[7] ==
+  CHECK(errors[5].find("test.pov:8:1: error: 'superellipsoid' exponents outside 0.01 to 10") == 0);
+  CHECK(errors[6] ==
         "test.pov:9:16: error: a height field from 'gif' is not supported by Lucent (it reads "
         "png, pgm, ppm, tga, jpeg and tiff images as height fields)");
 }
@@ -430,20 +427,20 @@ TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where 
   auto r = readScene(R"(#include "shapes.inc"
 #include "shapesq.inc"
 object { Monkey_Saddle }
-#declare J = julia_fractal { <-0.08, 0.7, 0, 0> }
+#declare J = ovus { 1, 0.5 }
 #declare Blobs = union { blob { sphere { 0, 1, 1 scale <1, 2, 1> } } sphere { 0, 1 } }
 )");
   REQUIRE(r->load.scene);
   CHECK(shapeOf<PolySpec>(*r->load.scene, 0).order == 4);  // a quartic
   // Placed (twice), each refusal is said once, at its keyword.
-  const auto errors = errorsOf(R"(#declare J = julia_fractal { <-0.08, 0.7, 0, 0> }
+  const auto errors = errorsOf(R"(#declare J = ovus { 1, 0.5 }
 #declare Blobs = union { blob { sphere { 0, 1, 1 scale <1, 2, 1> } } sphere { 0, 1 } }
 object { J }
 object { Blobs translate x }
 object { Blobs }
 )");
   REQUIRE(errors.size() == 2);
-  CHECK(errors[0].find("test.pov:1:14: error: 'julia_fractal' is not supported by Lucent") == 0);
+  CHECK(errors[0].find("test.pov:1:14: error: 'ovus' is not supported by Lucent") == 0);
   CHECK(errors[1].find("test.pov:2:33: error: a blob component scaled unevenly") == 0);
 }
 
@@ -623,4 +620,48 @@ TEST_CASE("scene shapes: bad polygons and bicubic patches", "[sdl][scene][shapes
   const auto uv = errorsOf("bicubic_patch { type 0 uv_vectors <0,0>,<1,0>,<1,1>,<0,1> 0 }");
   REQUIRE(uv.size() == 1);
   CHECK(uv[0].find("test.pov:1:24: error: 'uv_vectors' of a bicubic_patch is not supported") == 0);
+}
+
+TEST_CASE("scene shapes: julia_fractal, its keywords in any order, mirrored in z",
+          "[sdl][scene][shapes][julia]") {
+  auto r = readScene(R"(
+julia_fractal { <-0.083, 0, -0.83, -0.025> quaternion sqr max_iteration 8 precision 15 }
+julia_fractal { <0.4, 0.3, 0.1, 0.05> precision 0.5 max_iteration -3 pwr(2, 0.1)
+                slice <0, 0, 0.2, 1>, 0.1 hypercomplex }
+julia_fractal { 0.3 hypercomplex atanh cube }
+)");
+  REQUIRE(r->load.scene);
+  const auto& a = shapeOf<JuliaFractalSpec>(*r->load.scene, 0);
+  CHECK(a.c == Vec4(-0.083, 0.0, -0.83, -0.025));
+  CHECK(a.algebra == JuliaAlgebra::Quaternion);
+  CHECK(a.function == JuliaFunction::Sqr);
+  CHECK(a.maxIteration == 8);
+  CHECK(a.precision == 15.0);
+  CHECK(a.slice == Vec4(0.0, 0.0, 0.0, 1.0));
+  // The map is the same in both spaces: the shape is mirrored in z first.
+  checkMat(topNode(*r->load.scene, 0).parentFromNode,
+           PovTransform::scaling(Vec3(1, 1, -1)).lucentMatrix());
+  const auto& b = shapeOf<JuliaFractalSpec>(*r->load.scene, 1);
+  CHECK(b.algebra == JuliaAlgebra::Hypercomplex);
+  CHECK(b.function == JuliaFunction::Pwr);
+  CHECK(b.exponent == Vec2(2.0, 0.1));
+  CHECK(b.precision == 1.0);   // below 1: 1, as POV-Ray makes it
+  CHECK(b.maxIteration == 1);  // below 1: 1
+  CHECK(b.slice == Vec4(0.0, 0.0, 0.2, 1.0));
+  CHECK(b.distance == 0.1);
+  const auto& c = shapeOf<JuliaFractalSpec>(*r->load.scene, 2);
+  CHECK(c.c == Vec4(0.3));                   // a float is all four components
+  CHECK(c.function == JuliaFunction::Cube);  // the last function given counts
+  CHECK(warningsOf(*r).empty());
+}
+
+TEST_CASE("scene shapes: julia_fractal's errors are POV-Ray's", "[sdl][scene][shapes][errors]") {
+  CHECK(errorsOf("julia_fractal { <0.1, 0.2, 0.3, 0> exp }") ==
+        std::vector<std::string>{"test.pov:1:36: error: illegal function: quaternion only "
+                                 "supports sqr and cube (POV-Ray's error)"});
+  CHECK(errorsOf("julia_fractal { <0.1, 0.2, 0.3, 0> slice <1, 0, 0, 0>, 0 }") ==
+        std::vector<std::string>{
+            "test.pov:1:36: error: the julia_fractal's slice t component is zero"});
+  CHECK(errorsOf("julia_fractal { <0.1, 0.2, 0.3, 0> slice 0, 0 }") ==
+        std::vector<std::string>{"test.pov:1:36: error: the julia_fractal's slice vector is zero"});
 }
