@@ -357,6 +357,7 @@ TEST_CASE("scene writer: a height field of a function keeps its function, pigmen
   // The grid is not flat: the bozo and the slope in x both show.
   CHECK(*std::max_element(b.map->values.begin(), b.map->values.end()) >
         *std::min_element(b.map->values.begin(), b.map->values.end()) + 1000);
+}
 
 TEST_CASE("scene writer: a julia fractal keeps its parameter, algebra, function and slice",
           "[lang][scene-writer]") {
