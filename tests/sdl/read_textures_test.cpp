@@ -327,8 +327,8 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
         "test.pov:2:33: error: 'pigment_map' on a block pattern is not supported by Lucent (give "
         "it a list of pigments: checker pigment {..} pigment {..})");
   CHECK(errors[2] ==
-        "test.pov:3:15: error: 'interior_texture' is not supported by Lucent (a texture for the "
-        "inside of a surface)");
+        "test.pov:3:15: error: 'interior_texture' needs a texture of the object's own, as in "
+        "POV-Ray");
   CHECK(errors[3].rfind("test.pov:4:74: error: 'use_index' on a palette image is not supported "
                         "by Lucent",
                         0) == 0);
