@@ -185,7 +185,6 @@ class Tracer {
   TextureSet textures_;           // by slot
   std::vector<char> seeThrough_;  // per slot: textureSeeThrough (evaluated per hit)
   bool anyTransmissive_ = false;  // else shadow rays ask only the any-hit question
-  bool hidesAny_ = false;         // some object is not seen by camera or by reflected rays
   bool anyAbsorbing_ = false;     // else shadow rays need no media bookkeeping
   bool patternSurface_ =
       false;  // some pattern reads the surface (render/patterns/pattern_surface.h)
