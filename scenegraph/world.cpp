@@ -53,6 +53,8 @@ bool World::intersect(const Ray& ray, WorldHit& hit) const {
 
 bool World::intersectSeen(const Ray& ray, WorldHit& hit, bool reflected) const {
   hit.leaves_ = leaves_.data();
+  // A scene without the flags searches as intersect() does.
+  if (!aggregate_.anyMasked(kNoImage | kNoReflection)) return aggregate_.closest(ray, hit.hit);
   return aggregate_.closestIn(reflected ? 1 : 0, ray, hit.hit);
 }
 
