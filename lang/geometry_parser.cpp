@@ -66,6 +66,7 @@ void readNodeMaterial(ElementReader& r, Node& node, pugi::xml_node inlineMateria
                     r.file().loc(inlineMaterial).str() + "), not both");
     return;
   }
+  if (r.has("interior-material")) node.interiorMaterial = lookupMaterial(r, "interior-material");
   if (r.has("material")) {
     node.material = lookupMaterial(r, "material");
   } else if (inlineMaterial) {
@@ -103,21 +104,26 @@ void registerNodeId(ElementReader& r, Node& node) {
 
 namespace {
 
-// shadows="false" on a part of a merge, intersection or difference changes nothing: the
-// operation casts its shadow as a whole, as in POV-Ray (whose no_shadow there counts on
-// the whole object only). Nested operations have warned about their own parts.
-void warnShadowlessOperands(ParseContext& ctx, const Node& csg) {
+// shadows="false", image="false" or reflection="false" on a part of a merge, intersection or
+// difference changes nothing: the operation is seen and casts its shadow as a whole, as in
+// POV-Ray (whose no_shadow there counts on the whole object only; its no_image and
+// no_reflection count on the whole, and on a merge's parts, which Lucent does not follow).
+// Nested operations have warned about their own parts.
+void warnFlaggedOperands(ParseContext& ctx, const Node& csg) {
   std::vector<const Node*> stack;
   for (const auto& c : csg.children) stack.push_back(c.get());
+  auto warn = [&](const Node& n, const std::string& attr, const std::string& what) {
+    ctx.diags.warning(n.loc, "<" + n.element + "> " + attr + "=\"false\" has no effect inside <" +
+                                 csg.element + "> (at " + csg.loc.str() + "), which " + what +
+                                 " as a whole, as in POV-Ray; put " + attr + "=\"false\" on the <" +
+                                 csg.element + ">");
+  };
   while (!stack.empty()) {
     const Node* n = stack.back();
     stack.pop_back();
-    if (!n->shadows)
-      ctx.diags.warning(n->loc, "<" + n->element + "> shadows=\"false\" has no effect inside <" +
-                                    csg.element + "> (at " + csg.loc.str() +
-                                    "), which casts its shadow as a whole, as in "
-                                    "POV-Ray; put shadows=\"false\" on the <" +
-                                    csg.element + ">");
+    if (!n->shadows) warn(*n, "shadows", "casts its shadow");
+    if (!n->image) warn(*n, "image", "is seen");
+    if (!n->reflection) warn(*n, "reflection", "is seen");
     if (n->kind == NodeKind::Group || n->kind == NodeKind::Union)
       for (const auto& c : n->children) stack.push_back(c.get());
   }
@@ -129,7 +135,9 @@ const std::vector<std::string_view>& nodeAttributes(std::string_view element) {
   static std::unordered_map<std::string_view, std::vector<std::string_view>> cache;
   auto it = cache.find(element);
   if (it != cache.end()) return it->second;
-  std::vector<std::string_view> allowed{"id", "transform", "material", "shadows", "inverse"};
+  std::vector<std::string_view> allowed{"id",      "transform", "material",   "interior-material",
+                                        "shadows", "image",     "reflection", "double-illuminate",
+                                        "inverse"};
   if (element == "use") allowed.push_back("ref");
   for (auto a : shapeAttributes(element)) allowed.push_back(a);
   // The key must outlive the call: the registry's and this file's names are static.
@@ -204,6 +212,9 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
   registerNodeId(r, *node);
   node->parentFromNode = r.transform("transform");
   node->shadows = r.boolean("shadows", true);
+  node->image = r.boolean("image", true);
+  node->reflection = r.boolean("reflection", true);
+  node->doubleIlluminate = r.boolean("double-illuminate", false);
   node->inverse = r.boolean("inverse", false);
 
   // Children: geometry (groups and CSG only), at most one inline <material>, one <clip>
@@ -265,7 +276,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
       r.error(r.tag() + " needs at least one child shape");
     if (node->kind == NodeKind::Merge || node->kind == NodeKind::Intersection ||
         node->kind == NodeKind::Difference)
-      warnShadowlessOperands(ctx, *node);
+      warnFlaggedOperands(ctx, *node);
   } else if (isUse) {
     node->kind = NodeKind::Use;
     if (!r.has("ref")) {

@@ -271,6 +271,8 @@ class SceneWriter {
 
   void count(const Node& n) {
     if (n.material) ++uses_[*n.material];
+    // An interior material is named by id only: written once, shared.
+    if (n.interiorMaterial) uses_[*n.interiorMaterial] += 2;
     if (n.kind == NodeKind::Use && n.target) targets_.insert(n.target);
     for (const auto& c : n.children) count(*c);
     for (const auto& c : n.clip) count(*c);
@@ -402,9 +404,13 @@ class SceneWriter {
     if (n.parentFromNode != Mat4(1.0))
       a.emplace_back("transform", transformText(n.parentFromNode, n.loc));
     if (!n.shadows) a.emplace_back("shadows", "false");
+    if (!n.image) a.emplace_back("image", "false");
+    if (!n.reflection) a.emplace_back("reflection", "false");
+    if (n.doubleIlluminate) a.emplace_back("double-illuminate", "true");
     if (n.inverse) a.emplace_back("inverse", "true");
     const bool inlineMaterial = n.material && !named_.count(*n.material);
     if (n.material && !inlineMaterial) a.emplace_back("material", named_.at(*n.material));
+    if (n.interiorMaterial) a.emplace_back("interior-material", named_.at(*n.interiorMaterial));
     out_.source(n.loc);
     const bool empty = !inlineMaterial && n.children.empty() && shapeChildren.empty() &&
                        n.clip.empty() && n.bound.empty();

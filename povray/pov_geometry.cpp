@@ -181,8 +181,8 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
     // Several objects clipped as one: POV-Ray's union of them with the clip (inverted as
     // one when asked, its clip not: as Lucent inverts before it clips).
     const bool inv = takeInverse() != node.inverse;
-    const bool outerShadowless = shadowless_;
-    if (!ignoreOwnShadows_ && !node.shadows) shadowless_ = true;
+    const Marks outerMarks = marks_;
+    markNode(node);
     out.open("union", "<" + node.element + "> " + node.loc.str() + " (clipped)");
     if (node.kind == NodeKind::Group)
       for (const auto& c : node.children) writeNode(*c, Mat4(1.0), material, false, out);
@@ -191,13 +191,13 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
     if (!isIdentity(m)) out.line(povMatrix(m));
     if (inv) out.line("inverse");
     out.close();
-    shadowless_ = outerShadowless;
+    marks_ = outerMarks;
     return;
   }
   // The flags of the enclosing writes, restored on return.
-  const bool outerShadowless = shadowless_, outerIgnore = ignoreOwnShadows_,
-             outerInSolid = inWrittenSolid_;
-  if (!ignoreOwnShadows_ && !node.shadows) shadowless_ = true;
+  const Marks outerMarks = marks_;
+  const bool outerIgnore = ignoreOwnShadows_, outerInSolid = inWrittenSolid_;
+  markNode(node);
   const bool solid = node.kind == NodeKind::Merge || node.kind == NodeKind::Intersection ||
                      node.kind == NodeKind::Difference;
   if (node.inverse) {
@@ -210,7 +210,7 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
       else if (node.target) writeNode(*node.target, m, material, false, out);
       if (inv) out.line("inverse");
       out.close();
-      shadowless_ = outerShadowless;
+      marks_ = outerMarks;
       pendingInverse_ = false;
       return;
     }
@@ -246,7 +246,7 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
       const bool inv = takeInverse();
       // POV-Ray's CSG keywords are Lucent's element names.
       out.open(nodeKindName(node.kind), "<" + node.element + "> " + node.loc.str());
-      const bool markHere = solid && shadowless_ && !inWrittenSolid_;
+      const bool markHere = solid && !inWrittenSolid_;
       if (solid) inWrittenSolid_ = true;
       // A union keeps every operand's surfaces, each its own object to POV-Ray as to
       // Lucent: only the solid operations share one interior (see the header).
@@ -259,13 +259,13 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
       csgInterior_ = outer;
       writeSolids("clipped_by", node.clip, Mat4(1.0), material, out);
       if (!isIdentity(m)) out.line(povMatrix(m));
-      if (markHere) out.line("no_shadow");
+      if (markHere) writeVisibility(out);
       if (inv) out.line("inverse");
       out.close();
       break;
     }
   }
-  shadowless_ = outerShadowless;
+  marks_ = outerMarks;
   ignoreOwnShadows_ = outerIgnore;
   inWrittenSolid_ = outerInSolid;
   pendingInverse_ = false;  // an inverse its subtree did not use (no object) ends with it
@@ -275,21 +275,44 @@ void PovGeometry::writeSolids(const char* keyword, const std::vector<std::unique
                               const Mat4& m, uint32_t material, PovWriter& out) {
   if (solids.empty()) return;
   // Written as shapes of their own: the flags of the object around them are not theirs.
-  const bool shadowless = shadowless_, ignore = ignoreOwnShadows_, inSolid = inWrittenSolid_,
-             inverse = pendingInverse_, inClip = inClipOrBound_;
+  const Marks marks = marks_;
+  const bool ignore = ignoreOwnShadows_, inSolid = inWrittenSolid_, inverse = pendingInverse_,
+             inClip = inClipOrBound_;
   inClipOrBound_ = true;
-  shadowless_ = false;
+  marks_ = Marks{};
   ignoreOwnShadows_ = true;
   inWrittenSolid_ = true;
   pendingInverse_ = false;
   out.open(keyword);
   for (const auto& c : solids) writeNode(*c, m, material, false, out);
   out.close();
-  shadowless_ = shadowless;
+  marks_ = marks;
   ignoreOwnShadows_ = ignore;
   inWrittenSolid_ = inSolid;
   pendingInverse_ = inverse;
   inClipOrBound_ = inClip;
+}
+
+void PovGeometry::markNode(const Node& node) {
+  if (!ignoreOwnShadows_) {
+    marks_.noShadow = marks_.noShadow || !node.shadows;
+    marks_.noImage = marks_.noImage || !node.image;
+    marks_.noReflection = marks_.noReflection || !node.reflection;
+  }
+  marks_.doubleIlluminate = marks_.doubleIlluminate || node.doubleIlluminate;
+  if (node.interiorMaterial) marks_.interior = node.interiorMaterial;
+}
+
+void PovGeometry::writeVisibility(PovWriter& out) const {
+  if (marks_.noShadow) out.line("no_shadow");
+  if (marks_.noImage) out.line("no_image");
+  if (marks_.noReflection) out.line("no_reflection");
+}
+
+bool PovGeometry::writesInterior(uint32_t material) {
+  if (inClipOrBound_ || !marks_.interior || *marks_.interior == material) return false;
+  used_[*marks_.interior] = true;
+  return true;
 }
 
 std::string PovGeometry::meshName(const MeshSpec& mesh, const Node& node) {
@@ -435,11 +458,15 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
       out.open("plane");
       out.line(fmt::format("{}, {}", povVector(face.normal), povNumber(face.offset)));
       materials_.writeFor(material, face.mapping, node.element.c_str(), node.loc, out, issues_);
+      if (writesInterior(material))
+        materials_.writeInteriorTexture(*marks_.interior, face.mapping, node.element.c_str(),
+                                        node.loc, out, issues_);
+      if (marks_.doubleIlluminate) out.line("double_illuminate");
       out.close();
     }
     writeSolids("clipped_by", node.clip, Mat4(1.0), material, out);
     if (!isIdentity(m)) out.line(povMatrix(m));
-    if (shadowless_ && !inWrittenSolid_) out.line("no_shadow");
+    if (!inWrittenSolid_) writeVisibility(out);
     if (inv) out.line("inverse");
     out.close();
     return;
@@ -448,9 +475,12 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
   // POV-Ray refuses a texture in a clip or bound.
   if (!inClipOrBound_)
     materials_.writeFor(material, *node.shape, node.loc, out, issues_, csgInterior_ != material);
+  if (writesInterior(material))
+    materials_.writeInteriorTexture(*marks_.interior, *node.shape, node.loc, out, issues_);
   writeSolids("clipped_by", node.clip, Mat4(1.0), material, out);
   if (!isIdentity(m)) out.line(povMatrix(m));
-  if (shadowless_ && !inWrittenSolid_) out.line("no_shadow");
+  if (!inWrittenSolid_) writeVisibility(out);
+  if (marks_.doubleIlluminate && !inClipOrBound_) out.line("double_illuminate");
   if (inv) out.line("inverse");
   out.close();
 }

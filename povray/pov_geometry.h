@@ -15,7 +15,9 @@
 // exit for an entry into a second glass and does not bend there; Lucent bends there).
 // shadows="false" is POV-Ray's no_shadow on each leaf (POV-Ray splits unions into their
 // children, so a union's parts keep their own) or on the whole merge, intersection or
-// difference, whose parts' no_shadow POV-Ray ignores.
+// difference, whose parts' no_shadow POV-Ray ignores; so are image="false" and
+// reflection="false" as no_image and no_reflection. double-illuminate and interior-material
+// go on every leaf as double_illuminate and interior_texture.
 #pragma once
 
 #include "pov_materials.h"
@@ -54,6 +56,12 @@ class PovGeometry {
   // A node's clipped_by or bounded_by block: its solids below `m`.
   void writeSolids(const char* keyword, const std::vector<std::unique_ptr<Node>>& solids,
                    const Mat4& m, uint32_t material, PovWriter& out);
+  // Takes the node's flags into marks_ (the caller restores them).
+  void markNode(const Node& node);
+  // no_shadow, no_image, no_reflection as marks_ says.
+  void writeVisibility(PovWriter& out) const;
+  // Does a leaf of `material` write an interior_texture (marking its material used)?
+  bool writesInterior(uint32_t material);
   // Operands a CSG node gets once groups and <use> are flattened.
   int operandCount(const Node& node) const;
 
@@ -67,11 +75,18 @@ class PovGeometry {
   // The material whose interior the enclosing merge, intersection or difference holds:
   // leaves of that material leave theirs out, so POV-Ray sees one shared interior.
   std::optional<uint32_t> csgInterior_;
-  // shadows="false" as no_shadow, as the World reads it: `shadowless_` is inherited by
+  // shadows="false" as no_shadow, as the World reads it: `marks_` is inherited by
   // the node being written; inside a merge, intersection or difference the parts' own
   // flags are ignored (`ignoreOwnShadows_`), and a written one carries no_shadow itself
   // (`inWrittenSolid_`: its parts write none).
-  bool shadowless_ = false;
+  // The same for image="false" and reflection="false" (no_image, no_reflection); and the
+  // double-illuminate and interior-material a leaf inherits, written on every leaf.
+  struct Marks {
+    bool noShadow = false, noImage = false, noReflection = false;
+    bool doubleIlluminate = false;
+    std::optional<uint32_t> interior;
+  };
+  Marks marks_;
   bool ignoreOwnShadows_ = false;
   bool inWrittenSolid_ = false;
   // inverse="true" still to be written: by the next object opened (a leaf or a CSG block),

@@ -399,6 +399,25 @@ void PovMaterials::writeFor(uint32_t index, const ImageMapping& mapping, const c
   if (interior) writeInteriorFor(index, out);
 }
 
+void PovMaterials::writeInteriorTexture(uint32_t index, const ShapeSpec& shape,
+                                        const SourceLoc& loc, PovWriter& out,
+                                        PovIssues& issues) const {
+  writeInteriorTexture(index, shapeTypeOf(shape).povImageMapping(shape), shapeElementName(shape),
+                       loc, out, issues);
+}
+
+void PovMaterials::writeInteriorTexture(uint32_t index, const ImageMapping& mapping,
+                                        const char* shapeName, const SourceLoc& loc, PovWriter& out,
+                                        PovIssues& issues) const {
+  if (!dependsOnShape(index)) {
+    out.line("interior_texture { " + names_[index] + " }");
+    return;
+  }
+  out.open("interior_texture");
+  writeTexture(index, &mapping, shapeName, &loc, out, &issues);
+  out.close();
+}
+
 void PovMaterials::writeTexture(uint32_t index, const ImageMapping* mapping, const char* shapeName,
                                 const SourceLoc* loc, PovWriter& out, PovIssues* issues) const {
   if (materials_[index].mapped()) {

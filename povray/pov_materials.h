@@ -78,6 +78,11 @@ class PovMaterials {
   void writeFor(uint32_t material, const ImageMapping& mapping, const char* shapeName,
                 const SourceLoc& loc, PovWriter& out, PovIssues& issues,
                 bool interior = true) const;
+  // An interior-material as the shape's interior_texture block.
+  void writeInteriorTexture(uint32_t material, const ShapeSpec& shape, const SourceLoc& loc,
+                            PovWriter& out, PovIssues& issues) const;
+  void writeInteriorTexture(uint32_t material, const ImageMapping& mapping, const char* shapeName,
+                            const SourceLoc& loc, PovWriter& out, PovIssues& issues) const;
   // The interior alone (and `hollow` for a hollow material), for a CSG object whose
   // operands share it.
   void writeInteriorFor(uint32_t material, PovWriter& out) const;

@@ -109,15 +109,23 @@ Aggregate::Aggregate(const std::vector<Object>& objects, const Options& options)
 
   // The selected objects, each tested as all_ tests it (one by one, or in a tree as the
   // same kind of leaf), so that a search of them finds the same hits.
-  auto isSelected = [&](uint32_t input) { return (objects[input].mask & options.selected) != 0; };
-  std::vector<uint32_t> selectedItems;
-  for (uint32_t i = 0; i < bounded.size(); ++i)
-    if (isSelected(bounded[i])) selectedItems.push_back(i);
-  for (uint32_t i : direct)
-    if (isSelected(i)) selected_.direct.push_back(objects[i].shape);
-  if (!selectedItems.empty() || !selected_.direct.empty()) {
-    fill(selected_, selectedItems);
-    selected_.linearSearch = options.linearSelected;
+  // The objects a predicate keeps, as a search of their own.
+  auto subset = [&](Search& set, auto keeps) {
+    std::vector<uint32_t> items;
+    for (uint32_t i = 0; i < bounded.size(); ++i)
+      if (keeps(bounded[i])) items.push_back(i);
+    for (uint32_t i : direct)
+      if (keeps(i)) set.direct.push_back(objects[i].shape);
+    if (!items.empty() || !set.direct.empty()) fill(set, items);
+  };
+  subset(selected_, [&](uint32_t i) { return (objects[i].mask & options.selected) != 0; });
+  selected_.linearSearch = options.linearSelected;
+  for (size_t v = 0; v < viewOf_.size(); ++v) {
+    const Mask hidden = options.hidden[v];
+    if ((anyMask_ & hidden) == 0) continue;
+    viewOf_[v] = static_cast<int>(views_.size());
+    views_.emplace_back();
+    subset(views_.back(), [&](uint32_t i) { return (objects[i].mask & hidden) == 0; });
   }
 }
 

@@ -9,6 +9,7 @@
 #include "shape.h"
 #include "test_counts.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -38,6 +39,8 @@ class Aggregate {
     size_t linearSelected = 0;
     // What --stats counts a test of a sphere kept in world space as (test_counts.h).
     size_t sphereTestSlot = kOtherTestSlot;
+    // closestIn(v) searches the objects whose mask has no bit of hidden[v].
+    std::array<Mask, 2> hidden{0, 0};
   };
 
   Aggregate() = default;
@@ -52,6 +55,11 @@ class Aggregate {
   // closest() over the selected objects only, with the same tests and so the same hits to
   // the last bit.
   bool closestSelected(const Ray& ray, Hit& hit) const { return selected_.closest(ray, hit); }
+  // closest() over the objects of view v (Options::hidden), with the same tests: the whole
+  // search itself when no object is hidden from the view, else one built for it.
+  bool closestIn(size_t v, const Ray& ray, Hit& hit) const {
+    return (viewOf_[v] < 0 ? all_ : views_[size_t(viewOf_[v])]).closest(ray, hit);
+  }
 
   // An object that the ray hits, leaving out the objects whose mask has a bit of kSkip;
   // kNoObject if none. `first`, kNoObject or an id an earlier call on this aggregate
@@ -121,6 +129,9 @@ class Aggregate {
 
   Search all_;
   Search selected_;  // the objects of all_ that are selected, tested as all_ tests them
+  // The searches of the views that hide some object; viewOf_: a view's, or -1 for all_.
+  std::vector<Search> views_;
+  std::array<int, 2> viewOf_{-1, -1};
   // Per ObjectId: the object's mask. Empty when every mask is 0.
   std::vector<Mask> masks_;
   Mask anyMask_ = 0;  // the union of every mask

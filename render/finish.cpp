@@ -65,8 +65,10 @@ Color surfaceResponse(const Material& m, const Color& kd, const Color& metal,
   const Vec3& n = at.n;
   const Vec3& v = at.v;
   const double nDotL = glm::dot(n, toLight);
-  // pow is skipped at the default brilliance: the common case stays one multiply.
-  const double diffuse = m.brilliance == 1.0 ? nDotL : std::pow(nDotL, m.brilliance);
+  // |N·L|: a light behind counts only on a surface lit from both sides (double-illuminate),
+  // by the cosine's magnitude, as POV-Ray's. pow is skipped at the default brilliance.
+  const double cosIn = std::abs(nDotL);
+  const double diffuse = m.brilliance == 1.0 ? cosIn : std::pow(cosIn, m.brilliance);
   Color sum = kd * static_cast<float>(diffuse);
   if (highlights && maxComponent(m.specular) > 0.0f) {
     const Vec3 h = glm::normalize(toLight + v);

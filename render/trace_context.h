@@ -37,6 +37,10 @@ class TraceContext {
   // A stack of lower layers' mirror rays: each call pushes its own above the entries of the
   // calls it recursed from and pops them before it returns (no allocation per hit).
   std::vector<LayerMirror> layerMirrors;
+  // The ray being traced was reflected, or went on from a reflection: it does not see
+  // reflection="false" objects, where the others do not see image="false" ones
+  // (POV-Ray's ray kinds). Set around each mirror ray's trace.
+  bool reflected = false;
 
   // Begins a tile: no counts yet, and an empty shadow cache, so that what a tile counts
   // (rays, tests, cache hits) never depends on which tiles its thread traced before.

@@ -111,7 +111,10 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
   for (;;) {
     WorldHit hit;
     ++stats.queries;
-    if (!world_.intersect(ray, hit)) return sum + throughput * escaped(ray, media);
+    // One call whatever the scene (World::intersectSeen): a choice made here, before the
+    // call, cost 5 % of a glass scene's time.
+    const bool found = world_.intersectSeen(ray, hit, context.reflected);
+    if (!found) return sum + throughput * escaped(ray, media);
 
     const WorldLeaf& hitLeaf = hit.leaf();
     const SurfaceInfo s = hit.surface(ray);
@@ -128,7 +131,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     if (patternSurface_) surface = patternSurfaceAt(s, here.v);
     const PatternSurfaceScope surfaceScope(patternSurface_, surface);
     const Shaded shaded =
-        shadeSlot(hitLeaf.materialIndex, here, depth, weight, media, seed, context, true);
+        shadeSlot(surfaceSlot(hitLeaf, ray, s), here, depth, weight, media, seed, context, true);
     sum += throughput * shaded.result;
     const SecondaryRays& rays = shaded.rays;
     if (!rays.straight) return sum;
@@ -155,6 +158,23 @@ Tracer::Shaded Tracer::shadeSlot(uint32_t slot, const Hit& h, int depth, const C
       break;
   }
   return shadeOne(slot, h, depth, weight, media, seed, context, mayContinue);
+}
+
+// POV-Ray chooses the interior texture where the ray runs along the surface's own normal
+// (the interpolated one of a smooth triangle), from inside.
+uint32_t Tracer::surfaceSlot(const WorldLeaf& leaf, const Ray& ray, const SurfaceInfo& s) {
+  if (!leaf.interior || !(glm::dot(ray.d, s.ns) > 0.0)) return leaf.materialIndex;
+  return leaf.interiorIndex;
+}
+
+const WorldLeaf& Tracer::surfaceLeaf(const WorldLeaf& leaf, const Ray& ray, const WorldHit& hit,
+                                     WorldLeaf& inner) const {
+  if (!leaf.interior) return leaf;
+  const uint32_t slot = surfaceSlot(leaf, ray, hit.surface(ray));
+  if (slot == leaf.materialIndex) return leaf;
+  inner = leafOfSlot(leaf, slot);
+  inner.transmissive = inner.material->isTransmissive();
+  return inner;
 }
 
 WorldLeaf Tracer::leafOfSlot(const WorldLeaf& leaf, uint32_t slot) const {
@@ -435,7 +455,7 @@ Color Tracer::localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3
   local += ambient;
   if (!lights_.empty() && (anyPositive(kd) || m.hasHighlight())) {
     const Color metal = m.metallic ? metallicBase(m, texture) : kd;
-    local += directLight(s, n, v, kd, metal, m, media, seed, context);
+    local += directLight(s, n, v, kd, metal, m, leaf.doubleIlluminate, media, seed, context);
     ++seed.event;
   }
   return local;
@@ -475,8 +495,11 @@ Color Tracer::withBranches(Color result, const SurfaceInfo& s, const Vec3& mirro
     Color w = weight * rays.mirror;
     if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
       ++context.stats.reflected;
+      const bool wasReflected = context.reflected;
+      context.reflected = true;
       Color seen =
           trace(spawnRay(s, mirror, settings_.epsilon), depth + 1, w, media, seed, context);
+      context.reflected = wasReflected;
       // POV-Ray's reflection exponent.
       if (rays.mirrorPower != 1.0)
         seen = glm::pow(glm::max(seen, Color(0.0f)), Color(static_cast<float>(rays.mirrorPower)));
@@ -487,14 +510,15 @@ Color Tracer::withBranches(Color result, const SurfaceInfo& s, const Vec3& mirro
 }
 
 Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
-                          const Color& metal, const Material& m, const MediaStack& media,
-                          PathSeed& seed, TraceContext& context) const {
+                          const Color& metal, const Material& m, bool doubleIlluminate,
+                          const MediaStack& media, PathSeed& seed, TraceContext& context) const {
   Color sum(0.0f);
   for (size_t i = 0; i < lights_.size(); ++i) {
     const Light& light = lights_[i];
     const LightIncidence in = lightIncidence(light, s.p);
     if (!anyPositive(in.radiance)) continue;
-    if (glm::dot(n, in.toLight) <= 0.0) continue;  // light behind: no diffuse, no highlight
+    // A light behind: no diffuse, no highlight, unless the surface is lit from both sides.
+    if (!doubleIlluminate && glm::dot(n, in.toLight) <= 0.0) continue;
     const Color brdf =
         surfaceResponse(m, kd, metal, ShadingPoint{s.p, n, v}, in.toLight, light.highlights);
     if (!anyPositive(brdf)) continue;
@@ -625,7 +649,8 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
     WorldHit hit;
     ++stats.queries;
     if (!world_.intersectTransmissive(ray, hit)) break;
-    const WorldLeaf& leaf = hit.leaf();
+    WorldLeaf inner;
+    const WorldLeaf& leaf = surfaceLeaf(hit.leaf(), ray, hit, inner);
     if (!leaf.transmissive) return Color(0.0f);
     if (slots_[leaf.materialIndex].kind == SurfaceSlots::Kind::plain &&
         !seeThrough_[leaf.materialIndex])

@@ -114,6 +114,13 @@ class Tracer {
   Color letThrough(uint32_t slot, const WorldLeaf& leaf, const SurfaceInfo& s) const;
   // `leaf` as the surface of slot `slot` (itself when the slot is its material's).
   WorldLeaf leafOfSlot(const WorldLeaf& leaf, uint32_t slot) const;
+  // The slot of the surface `ray` meets at s: the leaf's interior material where it meets
+  // the surface from inside, else its material.
+  static uint32_t surfaceSlot(const WorldLeaf& leaf, const Ray& ray, const SurfaceInfo& s);
+  // The leaf as the surface a shadow ray meets at the hit: itself, or its interior
+  // material's (written to `inner`) where the ray comes from inside.
+  const WorldLeaf& surfaceLeaf(const WorldLeaf& leaf, const Ray& ray, const WorldHit& hit,
+                               WorldLeaf& inner) const;
 
   // The parts of one step of trace(), in the order it takes them.
   // The colour of a ray that hits nothing: the sky or background, through the medium the
@@ -150,9 +157,10 @@ class Tracer {
                      const MediaStack& media, const MediaStack& beyond, PathSeed& seed,
                      TraceContext& context) const;
   // Σ over lights of A_shadow·A_dist·I_L·[k_d (N·L) + k_s (N·H)^n_s].
+  // `doubleIlluminate`: lights behind the surface count too (double-illuminate).
   Color directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
-                    const Color& metal, const Material& m, const MediaStack& media, PathSeed& seed,
-                    TraceContext& context) const;
+                    const Color& metal, const Material& m, bool doubleIlluminate,
+                    const MediaStack& media, PathSeed& seed, TraceContext& context) const;
   // A_shadow of one light at s: the transmittance averaged over the light's samples
   // (an adaptive area light: the context's AdaptiveAreaSampler's estimate of it), with
   // the light's slot of the context's shadow cache.

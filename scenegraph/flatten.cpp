@@ -70,19 +70,51 @@ bool hasUses(const Scene& scene) {
   return false;
 }
 
+// Which rays see an object: shadow rays, camera rays (and those that went on through
+// surfaces from the camera), reflected rays. A union whose children differ is split.
+struct Seen {
+  bool casts = true;       // it casts shadows (shadows="false" clears it)
+  bool image = true;       // image="false" clears it
+  bool reflection = true;  // reflection="false" clears it
+  bool operator==(const Seen& o) const {
+    return casts == o.casts && image == o.image && reflection == o.reflection;
+  }
+  bool operator!=(const Seen& o) const { return !(*this == o); }
+};
+
+// The node's own flags under those of its ancestors.
+Seen seenBelow(const Seen& above, const Node& node) {
+  return {above.casts && node.shadows, above.image && node.image,
+          above.reflection && node.reflection};
+}
+
+// What a node passes down to its children: its material, interior material and whether
+// its surfaces are lit from both sides.
+struct Inherited {
+  uint32_t material = 0;
+  std::optional<uint32_t> interior;
+  bool doubleIlluminate = false;
+
+  Inherited below(const Node& node) const {
+    return {node.material.value_or(material),
+            node.interiorMaterial ? node.interiorMaterial : interior,
+            doubleIlluminate || node.doubleIlluminate};
+  }
+};
+
 // An object being built, with what its leaves say of it.
 struct Part {
   std::unique_ptr<Shape> shape;
   uint32_t firstLeaf = 0;  // its first leaf in scene order: a solid's medium is its material
-  bool casts = true;       // it casts shadows
+  Seen seen;
   bool transmits = false;  // one of its leaves has a transmissive material
 };
 
 // The parts as one object: the operation `op` of their shapes (all of them non-empty).
-Part compose(CsgOp op, std::vector<Part> parts, bool casts) {
+Part compose(CsgOp op, std::vector<Part> parts, const Seen& seen) {
   Part whole;
   whole.firstLeaf = parts.front().firstLeaf;
-  whole.casts = casts;
+  whole.seen = seen;
   std::vector<std::unique_ptr<Shape>> shapes;
   for (Part& p : parts) {
     whole.transmits = whole.transmits || p.transmits;
@@ -103,13 +135,13 @@ struct Builder {
 
   // Adds the node's objects to `out`.
   // `inSolid`: the node is (inside) an operand of a merge, intersection or difference,
-  // whose shadow is the whole operation's: the flags of its parts are not consulted.
+  // which shows and casts its shadow as a whole: the flags of its parts are not consulted.
   // `invert`: inverted once more (a subtrahend of a difference written as an intersection).
-  void add(const Node& node, const Transform& parentWorld, uint32_t inherited, bool castsAbove,
-           bool inSolid, std::vector<Part>& out, bool invert = false) {
+  void add(const Node& node, const Transform& parentWorld, const Inherited& inherited,
+           const Seen& above, bool inSolid, std::vector<Part>& out, bool invert = false) {
     const size_t first = out.size();
-    if (node.inverse != invert) addInverted(node, parentWorld, inherited, castsAbove, inSolid, out);
-    else addPlain(node, parentWorld, inherited, castsAbove, inSolid, out);
+    if (node.inverse != invert) addInverted(node, parentWorld, inherited, above, inSolid, out);
+    else addPlain(node, parentWorld, inherited, above, inSolid, out);
     if (node.clip.empty() && node.bound.empty()) return;
     // The clip tests points of the (possibly inverted) surface, as POV-Ray's, and the bound
     // the ray before anything else; both are in the node's frame.
@@ -130,10 +162,10 @@ struct Builder {
     std::vector<std::unique_ptr<Shape>> shapes;
     for (const auto& n : nodes) {
       std::vector<Part> parts;
-      add(*n, world, 0, true, true, parts);
+      add(*n, world, Inherited{}, Seen{}, true, parts);
       if (parts.empty()) continue;
       shapes.push_back(parts.size() == 1 ? std::move(parts.front().shape)
-                                         : compose(CsgOp::Union, std::move(parts), true).shape);
+                                         : compose(CsgOp::Union, std::move(parts), Seen{}).shape);
     }
     return shapes;
   }
@@ -150,7 +182,8 @@ struct Builder {
   }
 
   // A leaf: its Instance, tagged with its index in `leaves`.
-  Part addLeaf(const Node& node, const Transform& world, uint32_t material, bool casts) {
+  Part addLeaf(const Node& node, const Transform& world, const Inherited& inherited,
+               const Seen& seen) {
     std::shared_ptr<const Shape> shape;
     const auto* patch = std::get_if<BicubicPatchSpec>(&*node.shape);
     if (patch && patch->flatnessInWorld) {
@@ -173,57 +206,44 @@ struct Builder {
     auto inst = std::make_unique<Instance>(std::move(shape), world, index, node.shape->index());
     WorldLeaf leaf;
     leaf.instance = inst.get();
-    leaf.materialIndex = material;
-    leaf.material = &scene.materials[material];
+    leaf.materialIndex = inherited.material;
+    leaf.material = &scene.materials[inherited.material];
     leaf.medium = inst->isSolid() ? leaf.material : nullptr;
     leaf.transmissive = leaf.material->isTransmissive();
+    if (inherited.interior && *inherited.interior != inherited.material) {
+      leaf.interiorIndex = *inherited.interior;
+      leaf.interior = &scene.materials[*inherited.interior];
+    }
+    leaf.doubleIlluminate = inherited.doubleIlluminate;
     leaves.push_back(leaf);
-    return Part{std::move(inst), index, casts, leaf.transmissive};
+    // A shadow ray may cross the surface from inside: the interior material's k_t counts.
+    const bool transmits = leaf.transmissive || (leaf.interior && leaf.interior->isTransmissive());
+    return Part{std::move(inst), index, seen, transmits};
   }
 
   // The node's objects as written, its own inverse aside.
-  void addPlain(const Node& node, const Transform& parentWorld, uint32_t inherited, bool castsAbove,
-                bool inSolid, std::vector<Part>& out) {
+  void addPlain(const Node& node, const Transform& parentWorld, const Inherited& inherited,
+                const Seen& above, bool inSolid, std::vector<Part>& out) {
     Transform world = nodeWorld(node, parentWorld);
-    uint32_t material = node.material.value_or(inherited);
-    const bool castsShadow = inSolid || (castsAbove && node.shadows);
+    const Inherited here = inherited.below(node);
+    const Seen seen = inSolid ? Seen{} : seenBelow(above, node);
 
     switch (node.kind) {
       case NodeKind::Shape:
-        out.push_back(addLeaf(node, world, material, castsShadow));
+        out.push_back(addLeaf(node, world, here, seen));
         break;
       case NodeKind::Group:
-        for (const auto& c : node.children) add(*c, world, material, castsShadow, inSolid, out);
+        for (const auto& c : node.children) add(*c, world, here, seen, inSolid, out);
         break;
       case NodeKind::Use:
         // The referenced node's own transform applies first, then the <use>'s.
-        add(*node.target, world, material, castsShadow, inSolid, out);
+        add(*node.target, world, here, seen, inSolid, out);
         break;
       case NodeKind::Light:
         break;  // placed by placeLights, not built
-      case NodeKind::Union: {
-        std::vector<Part> children;
-        for (const auto& c : node.children)
-          add(*c, world, material, castsShadow, inSolid, children);
-        if (children.empty()) break;
-        const bool mixed = std::any_of(children.begin(), children.end(), [&](const Part& c) {
-          return c.casts != children.front().casts;
-        });
-        if (!mixed) {
-          const bool casts = children.front().casts;
-          out.push_back(compose(CsgOp::Union, std::move(children), casts));
-          break;
-        }
-        // Some children cast shadows and some do not: two unions, which together show and
-        // hold the same as one (POV-Ray splits every union into its children).
-        for (bool flag : {true, false}) {
-          std::vector<Part> part;
-          for (Part& c : children)
-            if (c.casts == flag) part.push_back(std::move(c));
-          out.push_back(compose(CsgOp::Union, std::move(part), flag));
-        }
+      case NodeKind::Union:
+        addUnion(node, world, here, seen, inSolid, out);
         break;
-      }
       case NodeKind::Merge:
       case NodeKind::Intersection:
       case NodeKind::Difference: {
@@ -233,16 +253,31 @@ struct Builder {
           // a clipped object leaves its clip as it is: inside the subtrahend is then inside
           // its clip and outside its shape. Written so, the same result.
           for (size_t i = 0; i < node.children.size(); ++i)
-            add(*node.children[i], world, material, true, true, children, i > 0);
+            add(*node.children[i], world, here, Seen{}, true, children, i > 0);
           if (children.empty()) break;
-          out.push_back(compose(CsgOp::Intersection, std::move(children), castsShadow));
+          out.push_back(compose(CsgOp::Intersection, std::move(children), seen));
           break;
         }
-        for (const auto& c : node.children) add(*c, world, material, true, true, children);
+        for (const auto& c : node.children) add(*c, world, here, Seen{}, true, children);
         if (children.empty()) break;
-        out.push_back(compose(csgOpOf(node.kind), std::move(children), castsShadow));
+        out.push_back(compose(csgOpOf(node.kind), std::move(children), seen));
         break;
       }
+    }
+  }
+
+  // A union: one object, or one per set of flags its children have (POV-Ray splits every
+  // union into its children), which together show and hold the same as one.
+  void addUnion(const Node& node, const Transform& world, const Inherited& here, const Seen& seen,
+                bool inSolid, std::vector<Part>& out) {
+    std::vector<Part> children;
+    for (const auto& c : node.children) add(*c, world, here, seen, inSolid, children);
+    while (!children.empty()) {
+      const Seen flags = children.front().seen;
+      std::vector<Part> part, rest;
+      for (Part& c : children) (c.seen == flags ? part : rest).push_back(std::move(c));
+      out.push_back(compose(CsgOp::Union, std::move(part), flags));
+      children = std::move(rest);
     }
   }
 
@@ -253,17 +288,17 @@ struct Builder {
   }
 
   // inverse="true": the node's objects as one solid (a union of them when there are
-  // several, unsplit by shadow flags: the inverse of a union is not the union of the
-  // inverses), inside out. It casts shadows as the node says.
-  void addInverted(const Node& node, const Transform& parentWorld, uint32_t inherited,
-                   bool castsAbove, bool inSolid, std::vector<Part>& out) {
+  // several, unsplit by their flags: the inverse of a union is not the union of the
+  // inverses), inside out. It is seen and casts shadows as the node says.
+  void addInverted(const Node& node, const Transform& parentWorld, const Inherited& inherited,
+                   const Seen& above, bool inSolid, std::vector<Part>& out) {
     std::vector<Part> parts;
-    addPlain(node, parentWorld, inherited, castsAbove, inSolid, parts);
+    addPlain(node, parentWorld, inherited, above, inSolid, parts);
     if (parts.empty()) return;
-    const bool casts = inSolid || (castsAbove && node.shadows);
+    const Seen seen = inSolid ? Seen{} : seenBelow(above, node);
     Part solid = parts.size() == 1 ? std::move(parts.front())
-                                   : compose(CsgOp::Union, std::move(parts), casts);
-    solid.casts = casts;
+                                   : compose(CsgOp::Union, std::move(parts), seen);
+    solid.seen = seen;
     solid.shape = std::make_unique<Inverted>(std::move(solid.shape));
     out.push_back(std::move(solid));
   }
@@ -289,12 +324,14 @@ FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape) {
   FlatScene flat;
   Builder b{scene, makeShape, hasUses(scene), {}, flat.leaves};
   std::vector<Part> parts;
-  b.add(*scene.root, Transform(), 0, true, false, parts);
+  b.add(*scene.root, Transform(), Inherited{}, Seen{}, false, parts);
   flat.objects.reserve(parts.size());
   for (Part& p : parts) {
     WorldObject o;
     o.medium = p.shape->isSolid() ? flat.leaves[p.firstLeaf].material : nullptr;
-    o.castsShadow = p.casts;
+    o.castsShadow = p.seen.casts;
+    o.seenByImage = p.seen.image;
+    o.seenByReflection = p.seen.reflection;
     o.transmits = p.transmits;
     o.shape = std::move(p.shape);
     flat.objects.push_back(std::move(o));

@@ -29,6 +29,11 @@ struct WorldLeaf {
   // without an inside, which light crosses as a thin sheet.
   const Material* medium = nullptr;
   bool transmissive = false;  // material->isTransmissive()
+  // The material its surface shows to a ray that meets it from inside (interior-material),
+  // null when it has none; Scene::materials' index of it.
+  const Material* interior = nullptr;
+  uint32_t interiorIndex = 0;
+  bool doubleIlluminate = false;  // lit from both sides (double-illuminate)
 };
 
 // A top-level object: a leaf's Instance, a CSG node of leaves, or either inside out.
@@ -38,7 +43,9 @@ struct WorldObject {
   // normally share it); null for an object that is not a solid.
   const Material* medium = nullptr;
   bool castsShadow = true;  // false: built from shadows="false" nodes
-  bool transmits = false;   // one of its leaves has a transmissive material
+  // false: built from image="false" nodes, or from reflection="false" ones
+  bool seenByImage = true, seenByReflection = true;
+  bool transmits = false;  // one of its leaves has a transmissive material
 };
 
 struct FlatScene {
@@ -49,8 +56,8 @@ struct FlatScene {
 // Composes transforms down to the leaves (world matrix, inverse and normal matrix
 // computed once per instance), resolves inherited materials and shares the shape of a
 // node used many times: a mesh used through many <use> is stored and built once. A union
-// whose children differ in casting shadows becomes two (POV-Ray splits every union into
-// its children). Throws LocatedError (checkWorld's). The leaves point into
+// whose children differ in casting shadows or being seen becomes several (POV-Ray splits every
+// union into its children). Throws LocatedError (checkWorld's). The leaves point into
 // scene.materials, which must keep its elements where they are while they are used.
 FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape);
 

@@ -31,6 +31,19 @@ struct Node {
   // Inside a merge, intersection or difference only the whole operation's counts, as in
   // POV-Ray (World splits a union whose children differ, as POV-Ray splits its unions).
   bool shadows = true;
+  // image="false" / reflection="false": the node and everything under it are not seen by
+  // camera rays (and rays that went on through surfaces from the camera, never reflected),
+  // or by reflected rays (POV-Ray's no_image, no_reflection). Shadows are cast either way.
+  // Inside a merge, intersection or difference only the whole operation's count.
+  bool image = true;
+  bool reflection = true;
+  // double-illuminate="true": the surfaces are lit from both sides, a light behind the
+  // surface counting as one in front (POV-Ray's double_illuminate); inherited by children.
+  bool doubleIlluminate = false;
+  // interior-material: the material the surface shows where a ray meets it from inside
+  // (POV-Ray's interior_texture); none: inherit (or the node's material). Its surface
+  // only: the medium inside stays the node's material's.
+  std::optional<uint32_t> interiorMaterial;
   // inverse="true" on a solid: inside and outside swapped (POV-Ray's inverse), built as
   // csg/inverted.h around the node's geometry.
   bool inverse = false;

@@ -26,12 +26,15 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
     Aggregate::Mask mask = 0;
     if (o.castsShadow && o.transmits) mask |= kTransmits;
     if (!o.castsShadow) mask |= kShadowless;
+    if (!o.seenByImage) mask |= kNoImage;
+    if (!o.seenByReflection) mask |= kNoReflection;
     items.push_back({o.shape.get(), mask});
   }
   Aggregate::Options options;
   options.selected = kTransmits;
   options.linearSelected = kLinearTransmissive;
   options.sphereTestSlot = slotOf<SphereSpec>();
+  options.hidden = {kNoImage, kNoReflection};  // the views intersectSeen() searches
   aggregate_ = Aggregate(items, options);
   occluderSkips_ = aggregate_.anyMasked(kShadowless);
   opaqueSkips_ = aggregate_.anyMasked(kTransmits | kShadowless);
@@ -46,6 +49,13 @@ bool World::intersect(const Ray& ray, Hit& hit) const { return aggregate_.closes
 bool World::intersect(const Ray& ray, WorldHit& hit) const {
   hit.leaves_ = leaves_.data();
   return aggregate_.closest(ray, hit.hit);
+}
+
+bool World::intersectSeen(const Ray& ray, WorldHit& hit, bool reflected) const {
+  hit.leaves_ = leaves_.data();
+  // A scene without the flags searches as intersect() does.
+  if (!aggregate_.anyMasked(kNoImage | kNoReflection)) return aggregate_.closest(ray, hit.hit);
+  return aggregate_.closestIn(reflected ? 1 : 0, ray, hit.hit);
 }
 
 bool World::intersectTransmissive(const Ray& ray, Hit& hit) const {

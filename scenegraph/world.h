@@ -54,6 +54,11 @@ class World {
   // The closest hit: the geometry alone, or typed.
   bool intersect(const Ray& ray, Hit& hit) const;
   bool intersect(const Ray& ray, WorldHit& hit) const;
+  // The closest hit a ray of the tracer sees: a reflected ray (or one that went on from a
+  // reflection) does not see the objects of reflection="false" nodes, any other the objects
+  // of image="false" nodes (POV-Ray's no_reflection, no_image). In a scene without them,
+  // intersect().
+  bool intersectSeen(const Ray& ray, WorldHit& hit, bool reflected) const;
   // Whether an object that casts shadows crosses the ray (objects of shadows="false"
   // nodes are not asked, here and in every shadow query below).
   bool occluded(const Ray& ray) const { return occluder(ray) != kNoObject; }
@@ -92,7 +97,8 @@ class World {
  private:
   // The meaning of the aggregate's mask bits: the object may transmit light (and casts
   // shadows); it casts no shadow (shadows="false").
-  static constexpr Aggregate::Mask kTransmits = 1, kShadowless = 2;
+  // Not seen by camera rays (image="false"); not seen by reflected rays (reflection="false").
+  static constexpr Aggregate::Mask kTransmits = 1, kShadowless = 2, kNoImage = 4, kNoReflection = 8;
 
   const Scene& scene_;
   std::vector<WorldObject> objects_;

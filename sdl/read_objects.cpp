@@ -172,9 +172,27 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
       o.texture->transform(backToObject);
       o.textureLoc = t.loc();
     }
+    if (m.interiorTexture) {
+      o.interiorTexture = m.interiorTexture;
+      o.interiorTexture->transform(backToObject);
+      o.interiorTextureLoc = t.loc();
+    }
     if (m.interior) o.interior = m.interior;
+  } else if (w == "interior_texture") {
+    // POV-Ray's interior_texture replaces a former one, layered only by its own blocks.
+    o.interiorTexture = readTexture(in, defaultTexture());
+    o.interiorTexture->transform(backToObject);
+    o.interiorTextureLoc = t.loc();
   } else if (w == "no_shadow") {
     o.noShadow = true;
+  } else if (w == "no_image") {
+    o.noImage = optionalBool(in);
+  } else if (w == "no_reflection") {
+    o.noReflection = optionalBool(in);
+  } else if (w == "no_radiosity") {
+    optionalBool(in);  // Lucent traces no radiosity rays: nothing to hide from
+  } else if (w == "double_illuminate") {
+    o.doubleIlluminate = optionalBool(in);
   } else if (w == "hollow") {
     o.hollow = optionalBool(in);  // the material's hollow (fog goes on inside)
   } else if (w == "inverse") {

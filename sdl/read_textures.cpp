@@ -544,10 +544,13 @@ PovMaterial SceneReader::readMaterial(TokenStream& in) {
       if (textures++ > 0 && m.texture)
         m.texture = layerOver(std::move(*m.texture), std::move(read), t.loc(), in);
       else m.texture = std::move(read);
+    } else if (isWord(t, "interior_texture")) {
+      m.interiorTexture = readTexture(in, defaultTexture());
     } else if (isWord(t, "interior")) {
       m.interior = readInterior(in, m.interior ? *m.interior : PovInterior{});
     } else if (readTransform(t, in, move)) {
       if (m.texture) m.texture->transform(move);
+      if (m.interiorTexture) m.interiorTexture->transform(move);
     } else {
       unreadInBlock(t, in);
       return m;

@@ -29,11 +29,7 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"subsurface", "subsurface light transport"},
       {"caustics", "faked caustics"},
       {"dispersion", "dispersion"},
-      {"interior_texture", "a texture for the inside of a surface"},
       {"projected_through", "lights projected through objects"},
-      {"no_image", "objects hidden from the camera"},
-      {"no_reflection", "objects hidden from reflections"},
-      {"double_illuminate", "surfaces lit from both sides"},
       {"texture_map", "maps of textures; Lucent has one texture layer per material"},
       {"uv_mapping",
        "uv_mapping of normals and objects; Lucent reads a uv-mapped pigment or texture at a "
@@ -482,6 +478,9 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   n->parentFromNode = o.transform.lucentMatrix();
   n->shape = o.shape;
   n->shadows = !o.noShadow;
+  n->image = !o.noImage;
+  n->reflection = !o.noReflection;
+  n->doubleIlluminate = o.doubleIlluminate;
   n->inverse = o.inverse;
   Inherited here = inherited;
   here.hollow = o.hollow.value_or(inherited.hollow);
@@ -513,6 +512,7 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     here.material = n->material;
     here.materialTextureFromNode = textureFromNode;
   }
+  addInteriorMaterial(o, here, textureFromNode, *n, in);
   here.textureFromParent = textureFromNode;
   here.framed = inherited.framed && o.kind == NodeKind::Union && o.clip.empty() && o.bound.empty();
   here.movedAfter = inherited.movedAfter || !o.transform.isIdentity();
@@ -527,6 +527,28 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     addBoxCut(o, here, *n, in);
   }
   return n;
+}
+
+// interior_texture: a material of the texture (with the object's interior) for the node
+// that wrote it, and for a shape below whose texture space lies otherwise (a patterned one);
+// the others inherit their parent's. POV-Ray refuses one on an object without a texture.
+void SceneReader::addInteriorMaterial(const PovObject& o, Inherited& here,
+                                      const Mat4& textureFromNode, Node& n, TokenStream& in) {
+  if (o.interiorTexture) {
+    if (!o.texture)
+      keepError(in, o.interiorTextureLoc,
+                "'interior_texture' needs a texture of the object's own, as in POV-Ray");
+    here.interiorTexture = &*o.interiorTexture;
+  }
+  if (!here.interiorTexture) return;
+  const bool moved = here.interiorTexture->patterned() && o.shape &&
+                     textureFromNode != here.interiorTextureFromNode;
+  if (!o.interiorTexture && !moved && here.interiorMaterial) return;
+  const SourceLoc at = o.interiorTexture ? o.interiorTextureLoc : o.loc;
+  n.interiorMaterial =
+      addMaterial(*here.interiorTexture, *here.interior, here.hollow, textureFromNode, at, in);
+  here.interiorMaterial = n.interiorMaterial;
+  here.interiorTextureFromNode = textureFromNode;
 }
 
 // uv_mapping reads a pattern at the shape's (u, v): only a mesh's (its uv_vectors, (0, 0)

@@ -117,7 +117,13 @@ struct PovObject {
   std::optional<PovTexture> texture;
   SourceLoc textureLoc;
   std::optional<PovInterior> interior;
+  // interior_texture: the texture seen from inside, in the same space as `texture`.
+  std::optional<PovTexture> interiorTexture;
+  SourceLoc interiorTextureLoc;
   bool noShadow = false;
+  bool noImage = false;       // no_image [on|off]
+  bool noReflection = false;  // no_reflection [on|off]
+  bool doubleIlluminate = false;
   bool inverse = false;
   // `hollow [on|off]` when written; unwritten, the object takes its CSG parent's (POV-Ray
   // sets the flag of the operands that did not set theirs), else not hollow.
@@ -173,6 +179,7 @@ struct InteriorItem : SceneItem {
 // `material { texture { } interior { } }`: what it gives an object.
 struct PovMaterial {
   std::optional<PovTexture> texture;
+  std::optional<PovTexture> interiorTexture;
   std::optional<PovInterior> interior;
 };
 struct MaterialItem : SceneItem {
@@ -241,6 +248,11 @@ class SceneReader : public ItemReader {
   struct Inherited {
     const PovTexture* texture = nullptr;
     const PovInterior* interior = nullptr;
+    // The interior texture (interior_texture) and the material made of it for the parent,
+    // placed as `material` is.
+    const PovTexture* interiorTexture = nullptr;
+    std::optional<uint32_t> interiorMaterial;
+    Mat4 interiorTextureFromNode{1.0};
     Mat4 textureFromParent{1.0};
     std::optional<uint32_t> material;
     Mat4 materialTextureFromNode{1.0};
@@ -262,6 +274,8 @@ class SceneReader : public ItemReader {
                                TokenStream& in);
   static bool keepsBound(const PovObject& o, bool framed);
   void addBoxCut(const PovObject& o, const Inherited& here, Node& n, TokenStream& in);
+  void addInteriorMaterial(const PovObject& o, Inherited& here, const Mat4& textureFromNode,
+                           Node& n, TokenStream& in);
   // `hollow`: the object's flag, which POV-Ray promotes to its interior (the material's).
   // uv: objectToTexture leads from the shape's (u, v, 0) (a uv-mapped map's entries).
   Material importLayer(const PovTexture& layer, const PovInterior& interior,

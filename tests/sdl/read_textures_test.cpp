@@ -326,8 +326,8 @@ TEST_CASE("scene reader textures: what Lucent cannot render is refused at its ke
         "test.pov:2:33: error: 'pigment_map' on a block pattern is not supported by Lucent (give "
         "it a list of pigments: checker pigment {..} pigment {..})");
   CHECK(errors[2] ==
-        "test.pov:3:15: error: 'interior_texture' is not supported by Lucent (a texture for the "
-        "inside of a surface)");
+        "test.pov:3:15: error: 'interior_texture' needs a texture of the object's own, as in "
+        "POV-Ray");
   CHECK(errors[3] ==
         "test.pov:4:25: error: 'brick' is not supported by Lucent (a pattern of textures that "
         "Lucent cannot read: it reads texture_map after a pattern, and the texture lists of "
