@@ -120,10 +120,11 @@ void PovGeometry::writeObjectPatterns(PovWriter& out) {
       continue;
     }
     // Its geometry only, as a clip's: POV-Ray asks the object's inside alone.
-    const bool shadowless = shadowless_, ignore = ignoreOwnShadows_, inSolid = inWrittenSolid_,
-               inverse = pendingInverse_, inClip = inClipOrBound_;
+    const Marks marks = marks_;
+    const bool ignore = ignoreOwnShadows_, inSolid = inWrittenSolid_, inverse = pendingInverse_,
+               inClip = inClipOrBound_;
     inClipOrBound_ = true;
-    shadowless_ = false;
+    marks_ = Marks{};
     ignoreOwnShadows_ = true;
     inWrittenSolid_ = true;
     pendingInverse_ = false;
@@ -132,7 +133,7 @@ void PovGeometry::writeObjectPatterns(PovWriter& out) {
     out.open("#declare " + name + " = " + (operandCount(*o->node) == 1 ? "object" : "union"));
     writeNode(*o->node, Mat4(1.0), 0, false, out);
     out.close();
-    shadowless_ = shadowless;
+    marks_ = marks;
     ignoreOwnShadows_ = ignore;
     inWrittenSolid_ = inSolid;
     pendingInverse_ = inverse;

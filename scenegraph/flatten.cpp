@@ -314,10 +314,10 @@ std::unique_ptr<Shape> buildSolid(const Scene& scene, const Node& node,
   Builder b{scene, makeShape, true, {}, leaves};
   std::vector<Part> parts;
   // As an operand of a solid: one union, never split by shadow flags.
-  b.add(node, Transform(), 0, true, true, parts);
+  b.add(node, Transform(), Inherited{}, Seen{}, true, parts);
   if (parts.empty()) return nullptr;
   if (parts.size() == 1) return std::move(parts.front().shape);
-  return compose(CsgOp::Union, std::move(parts), true).shape;
+  return compose(CsgOp::Union, std::move(parts), Seen{}).shape;
 }
 
 FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape) {
