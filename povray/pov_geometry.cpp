@@ -120,24 +120,13 @@ void PovGeometry::writeObjectPatterns(PovWriter& out) {
       continue;
     }
     // Its geometry only, as a clip's: POV-Ray asks the object's inside alone.
-    const Marks marks = marks_;
-    const bool ignore = ignoreOwnShadows_, inSolid = inWrittenSolid_, inverse = pendingInverse_,
-               inClip = inClipOrBound_;
-    inClipOrBound_ = true;
-    marks_ = Marks{};
-    ignoreOwnShadows_ = true;
-    inWrittenSolid_ = true;
-    pendingInverse_ = false;
     out.line("// the object of an object pattern: <" + o->node->element + " id=\"" + o->id +
              "\"> " + o->node->loc.str());
-    out.open("#declare " + name + " = " + (operandCount(*o->node) == 1 ? "object" : "union"));
-    writeNode(*o->node, Mat4(1.0), 0, false, out);
-    out.close();
-    marks_ = marks;
-    ignoreOwnShadows_ = ignore;
-    inWrittenSolid_ = inSolid;
-    pendingInverse_ = inverse;
-    inClipOrBound_ = inClip;
+    asOwnSolids([&] {
+      out.open("#declare " + name + " = " + (operandCount(*o->node) == 1 ? "object" : "union"));
+      writeNode(*o->node, Mat4(1.0), 0, false, out);
+      out.close();
+    });
   }
 }
 
@@ -275,7 +264,16 @@ void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t 
 void PovGeometry::writeSolids(const char* keyword, const std::vector<std::unique_ptr<Node>>& solids,
                               const Mat4& m, uint32_t material, PovWriter& out) {
   if (solids.empty()) return;
-  // Written as shapes of their own: the flags of the object around them are not theirs.
+  asOwnSolids([&] {
+    out.open(keyword);
+    for (const auto& c : solids) writeNode(*c, m, material, false, out);
+    out.close();
+  });
+}
+
+// Shapes written as solids of their own (clips, bounds, an object pattern's object): the
+// flags of the object around them are not theirs.
+void PovGeometry::asOwnSolids(const std::function<void()>& write) {
   const Marks marks = marks_;
   const bool ignore = ignoreOwnShadows_, inSolid = inWrittenSolid_, inverse = pendingInverse_,
              inClip = inClipOrBound_;
@@ -284,9 +282,7 @@ void PovGeometry::writeSolids(const char* keyword, const std::vector<std::unique
   ignoreOwnShadows_ = true;
   inWrittenSolid_ = true;
   pendingInverse_ = false;
-  out.open(keyword);
-  for (const auto& c : solids) writeNode(*c, m, material, false, out);
-  out.close();
+  write();
   marks_ = marks;
   ignoreOwnShadows_ = ignore;
   inWrittenSolid_ = inSolid;

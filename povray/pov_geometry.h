@@ -25,6 +25,7 @@
 
 #include "scenegraph/scene.h"
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <vector>
@@ -54,6 +55,8 @@ class PovGeometry {
                       bool& inverse, PovWriter& out);
   std::string meshName(const MeshSpec& mesh, const Node& node);
   // A node's clipped_by or bounded_by block: its solids below `m`.
+  // Runs `write` with the flags of shapes written as solids of their own (clips, bounds).
+  void asOwnSolids(const std::function<void()>& write);
   void writeSolids(const char* keyword, const std::vector<std::unique_ptr<Node>>& solids,
                    const Mat4& m, uint32_t material, PovWriter& out);
   // Takes the node's flags into marks_ (the caller restores them).

@@ -286,6 +286,24 @@ std::vector<SlopeMapEntry> SceneReader::readSlopeMap(TokenStream& in, const Toke
   return entries;
 }
 
+// A list of normals, `normal {..} [,] normal {..}`, up to `count` of them, each placed by
+// its own transforms: the entries of a block pattern's or an object pattern's normal.
+void SceneReader::readNormalList(TokenStream& in, PovNormal& n, size_t count) {
+  while (n.spec.map.size() < count && isWord(in.peek(), "normal")) {
+    in.next();
+    NormalMapEntry e;
+    e.at = static_cast<double>(n.spec.map.size());
+    const PovNormal read = readNormal(in, nullptr);
+    if (read.bump)
+      keepError(in, read.bump->loc,
+                "'bump_map' in a list of normals is not supported by Lucent (a bump map's "
+                "pixels are loaded per material; give the texture the bump_map itself)");
+    e.normal = placedEntry(read);
+    n.spec.map.push_back(std::move(e));
+    in.allow(",");
+  }
+}
+
 // A block pattern in a normal, its keyword read: `checker`, `hexagon` or `brick`, then its
 // list `normal {..} [,] normal {..}` (as many as cells at most). Missing normals are the
 // #default normal's, as POV-Ray's; without one POV-Ray 3.7 stops, and so does Lucent.
@@ -304,19 +322,7 @@ bool SceneReader::readBlockNormal(const Token& t, TokenStream& in, PovNormal& n)
   n.spec.average.clear();
   n.average = false;
   n.patterned = true;
-  while (n.spec.map.size() < count && isWord(in.peek(), "normal")) {
-    in.next();
-    NormalMapEntry e;
-    e.at = static_cast<double>(n.spec.map.size());
-    const PovNormal read = readNormal(in, nullptr);
-    if (read.bump)
-      keepError(in, read.bump->loc,
-                "'bump_map' in a list of normals is not supported by Lucent (a bump map's "
-                "pixels are loaded per material; give the texture the bump_map itself)");
-    e.normal = placedEntry(read);
-    n.spec.map.push_back(std::move(e));
-    in.allow(",");
-  }
+  readNormalList(in, n, count);
   // POV-Ray's optional amount after the pattern (unused by a list of normals).
   if (in.allow(",") || startsNumber(in.peek())) n.spec.depth = in.parseFloat();
   if (n.spec.map.empty()) return true;  // the slope of the cell index, as POV-Ray's

@@ -134,20 +134,7 @@ void SceneReader::readObjectNormal(const Token& t, TokenStream& in, PovNormal& n
   n.spec.average.clear();
   n.average = false;
   n.patterned = true;
-  while (n.spec.map.size() < 2 && isWord(in.peek(), "normal")) {
-    in.next();
-    NormalMapEntry e;
-    e.at = static_cast<double>(n.spec.map.size());
-    const PovNormal read = readNormal(in, nullptr);
-    if (read.bump)
-      keepError(in, read.bump->loc,
-                "'bump_map' in a list of normals is not supported by Lucent (a bump map's "
-                "pixels are loaded per material; give the texture the bump_map itself)");
-    e.normal = read.spec;
-    e.normal.pattern.placement.patternFromObject = glm::inverse(read.transform.povMatrix());
-    n.spec.map.push_back(std::move(e));
-    in.allow(",");
-  }
+  readNormalList(in, n, 2);
   in.expect("}");
   // POV-Ray's optional amount after the pattern (unused by a list of normals).
   if (in.allow(",") || startsNumber(in.peek())) n.spec.depth = in.parseFloat();

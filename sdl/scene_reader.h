@@ -416,6 +416,8 @@ class SceneReader : public ItemReader {
   // pigment, and `... normal {..} normal {..} }` in a normal (the keyword read).
   void readObjectPigment(const Token& t, TokenStream& in, PovPigment& p);
   void readObjectNormal(const Token& t, TokenStream& in, PovNormal& n);
+  // read_maps.cpp: `normal {..} [,] normal {..}`, up to `count`, into n's map.
+  void readNormalList(TokenStream& in, PovNormal& n, size_t count);
   // The pattern of an object pattern, placed as `was` is.
   static PatternTexture objectPatternTexture(std::shared_ptr<const ObjectPattern> object,
                                              const Texture& was);

@@ -5,16 +5,6 @@
 using namespace lucent;
 using namespace lucent::test;
 
-namespace {
-
-size_t count(const std::string& text, const std::string& word) {
-  size_t n = 0;
-  for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
-  return n;
-}
-
-}  // namespace
-
 TEST_CASE("shadows=false is no_shadow on each leaf under the node", "[povray][no-shadow]") {
   Exported e = exportScene(R"XML(
     <sphere shadows="false"/>
@@ -24,14 +14,14 @@ TEST_CASE("shadows=false is no_shadow on each leaf under the node", "[povray][no
     <use ref="s"/>
     <cone/>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(count(e.pov.text, "no_shadow") == 5);  // sphere, box, two union spheres, one use
+  CHECK(occurrences(e.pov.text, "no_shadow") == 5);  // sphere, box, two union spheres, one use
 }
 
 TEST_CASE("no_shadow goes on a whole difference, not on its parts", "[povray][no-shadow]") {
   Exported e = exportScene(R"XML(
     <difference shadows="false"><box/><sphere radius="0.5" shadows="false"/></difference>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(count(e.pov.text, "no_shadow") == 1);
+  CHECK(occurrences(e.pov.text, "no_shadow") == 1);
   CHECK(e.has("  no_shadow\n}\n"));  // the last line of the difference
 }
 
@@ -40,5 +30,5 @@ TEST_CASE("a one-operand difference written as its operand carries the differenc
   Exported e = exportScene(
       R"XML(<difference shadows="false"><sphere/></difference><intersection><box shadows="false"/></intersection>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(count(e.pov.text, "no_shadow") == 1);
+  CHECK(occurrences(e.pov.text, "no_shadow") == 1);
 }

@@ -44,4 +44,11 @@ inline Exported exportScene(const std::string& body) {
   return e;
 }
 
+// How many times `word` stands in `text` (overlapping counted).
+inline size_t occurrences(const std::string& text, const std::string& word) {
+  size_t n = 0;
+  for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
+  return n;
+}
+
 }  // namespace lucent::test

@@ -6,16 +6,6 @@
 using namespace lucent;
 using namespace lucent::test;
 
-namespace {
-
-size_t count(const std::string& text, const std::string& word) {
-  size_t n = 0;
-  for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
-  return n;
-}
-
-}  // namespace
-
 TEST_CASE("image and reflection flags are no_image and no_reflection on each leaf",
           "[povray][visibility]") {
   Exported e = exportScene(R"XML(
@@ -24,8 +14,8 @@ TEST_CASE("image and reflection flags are no_image and no_reflection on each lea
     <difference image="false"><box/><sphere radius="0.5" reflection="false"/></difference>
     <cone/>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(count(e.pov.text, "no_image") == 3);       // sphere, union sphere, difference
-  CHECK(count(e.pov.text, "no_reflection") == 3);  // box, both union spheres
+  CHECK(occurrences(e.pov.text, "no_image") == 3);       // sphere, union sphere, difference
+  CHECK(occurrences(e.pov.text, "no_reflection") == 3);  // box, both union spheres
   CHECK(e.has("  no_image\n}\n"));
 }
 
@@ -37,7 +27,7 @@ TEST_CASE("double-illuminate and interior-material go on every leaf", "[povray][
     <difference material="shell" interior-material="lining"><sphere/><box/></difference>
     <sphere material="lining" interior-material="lining"/>)XML");
   REQUIRE(e.pov.ok());
-  CHECK(count(e.pov.text, "double_illuminate") == 1);
+  CHECK(occurrences(e.pov.text, "double_illuminate") == 1);
   // The difference's two leaves; the sphere whose interior material is its own writes none.
-  CHECK(count(e.pov.text, "interior_texture {") == 2);
+  CHECK(occurrences(e.pov.text, "interior_texture {") == 2);
 }

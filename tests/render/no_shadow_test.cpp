@@ -1,7 +1,7 @@
 // shadows="false" on geometry nodes (Node::shadows): the node casts no shadow but is still
 // seen; a union's children keep their own flags, a merge, intersection or difference casts
 // its shadow as a whole (as POV-Ray's no_shadow).
-#include "scene_builder.h"
+#include "lit_floor.h"
 
 #include <catch2/catch.hpp>
 
@@ -9,43 +9,6 @@ using namespace lucent;
 using namespace lucent::test;
 
 namespace {
-
-// A white floor y = 0 lit from straight above; floorAt(x) is the colour at (x, 0, 0),
-// seen from above at an angle that passes beside the blockers placed at y in [2, 3].
-struct Floor {
-  Scene scene;
-  uint32_t grey;
-  Floor() {
-    Material floor;
-    floor.diffuse = Color(1.0f);
-    addShape(scene, PlaneSpec{Vec3(0, 1, 0), 0.0}, addMaterial(scene, floor));
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = Vec3(0, -1, 0);
-    scene.lights.push_back(sun);
-    Material m;
-    m.emissive = Color(0.25f);
-    grey = addMaterial(scene, m);
-  }
-  Color floorAt(double x) {
-    World world(scene);
-    return traceOne(world, Ray(Vec3(x, 1, 3), glm::normalize(Vec3(0, -1, -3))));
-  }
-  // A box 1 wide over floor point x.
-  std::unique_ptr<Node> blocker(double x) {
-    return shapeNode(BoxSpec{Vec3(x - 0.5, 2, -0.5), Vec3(x + 0.5, 3, 0.5)}, grey);
-  }
-  Node& add(std::unique_ptr<Node> n) {
-    scene.root->children.push_back(std::move(n));
-    return *scene.root->children.back();
-  }
-  Node& csg(NodeKind kind, std::vector<std::unique_ptr<Node>> children) {
-    auto n = std::make_unique<Node>();
-    n->kind = kind;
-    for (auto& c : children) n->children.push_back(std::move(c));
-    return add(std::move(n));
-  }
-};
 
 std::vector<std::unique_ptr<Node>> nodes(std::unique_ptr<Node> a, std::unique_ptr<Node> b) {
   std::vector<std::unique_ptr<Node>> v;
@@ -58,7 +21,7 @@ std::vector<std::unique_ptr<Node>> nodes(std::unique_ptr<Node> a, std::unique_pt
 
 TEST_CASE("shadows=false: the floor under the node is lit, the node is still seen",
           "[render][no-shadow]") {
-  Floor f;
+  LitFloor f;
   Node& box = f.add(f.blocker(0.0));
   CHECK(f.floorAt(0.0) == Color(0.0f));
   box.shadows = false;
@@ -70,7 +33,7 @@ TEST_CASE("shadows=false: the floor under the node is lit, the node is still see
 
 TEST_CASE("shadows=false: a transparent node does not even filter the light",
           "[render][no-shadow]") {
-  Floor f;
+  LitFloor f;
   Material glass;
   glass.transmissive = Color(0.5f);
   Node& box = f.add(
@@ -81,7 +44,7 @@ TEST_CASE("shadows=false: a transparent node does not even filter the light",
 }
 
 TEST_CASE("shadows=false: inherited through groups and <use>", "[render][no-shadow]") {
-  Floor f;
+  LitFloor f;
   auto def = f.blocker(0.0);
   const Node* target = def.get();
   f.scene.defs.push_back(std::move(def));
@@ -100,7 +63,7 @@ TEST_CASE("shadows=false: inherited through groups and <use>", "[render][no-shad
 
 TEST_CASE("shadows=false: a union's children keep their own, a difference casts as a whole",
           "[render][no-shadow]") {
-  Floor f;
+  LitFloor f;
   auto shadowless = f.blocker(0.0);
   shadowless->shadows = false;
   f.csg(NodeKind::Union, nodes(std::move(shadowless), f.blocker(2.0)));

@@ -3,7 +3,7 @@
 // an image="false" object; a reflected ray, and what goes on from it, does not see a
 // reflection="false" one; shadow rays see both), double-illuminate (a light behind the
 // surface lights it by |N.L|) and interior-material (the surface met from inside).
-#include "scene_builder.h"
+#include "lit_floor.h"
 
 #include <catch2/catch.hpp>
 
@@ -44,34 +44,6 @@ struct MirrorScene {
   Color direct() {
     World world(scene);
     return traceOne(world, Ray(Vec3(0, 0, 1), Vec3(0, 0, 1)));
-  }
-};
-
-// A white floor y = 0 lit from straight above, and grey emissive boxes over it.
-struct Floor {
-  Scene scene;
-  uint32_t grey;
-  Floor() {
-    Material floor;
-    floor.diffuse = Color(1.0f);
-    addShape(scene, PlaneSpec{Vec3(0, 1, 0), 0.0}, addMaterial(scene, floor));
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = Vec3(0, -1, 0);
-    scene.lights.push_back(sun);
-    grey = addMaterial(scene, emissive(Color(0.25f)));
-  }
-  std::unique_ptr<Node> blocker(double x) {
-    return shapeNode(BoxSpec{Vec3(x - 0.5, 2, -0.5), Vec3(x + 0.5, 3, 0.5)}, grey);
-  }
-  Node& add(std::unique_ptr<Node> n) {
-    scene.root->children.push_back(std::move(n));
-    return *scene.root->children.back();
-  }
-  // Straight down at x: the box's emission if the camera sees it, else the floor.
-  Color fromAbove(double x) {
-    World world(scene);
-    return traceOne(world, Ray(Vec3(x, 5, 0), Vec3(0, -1, 0)));
   }
 };
 
@@ -132,7 +104,7 @@ TEST_CASE("a ray that went through glass and then reflected does not see reflect
 }
 
 TEST_CASE("image=false and reflection=false still cast shadows", "[render][visibility]") {
-  Floor f;
+  LitFloor f;
   Node& hidden = f.add(f.blocker(0.0));
   Node& unreflected = f.add(f.blocker(2.0));
   CHECK(f.fromAbove(0.0) == Color(0.25f));
@@ -145,7 +117,7 @@ TEST_CASE("image=false and reflection=false still cast shadows", "[render][visib
 
 TEST_CASE("image=false: a union's children keep their own, a difference is seen as a whole",
           "[render][visibility]") {
-  Floor f;
+  LitFloor f;
   auto hidden = f.blocker(0.0);
   hidden->image = false;
   auto u = std::make_unique<Node>();
@@ -169,7 +141,7 @@ TEST_CASE("image=false: a union's children keep their own, a difference is seen 
 
 TEST_CASE("image=false: inherited through groups, on unbounded objects too",
           "[render][visibility]") {
-  Floor f;
+  LitFloor f;
   auto group = std::make_unique<Node>();
   group->image = false;
   group->children.push_back(f.blocker(0.0));
@@ -213,7 +185,7 @@ TEST_CASE("interior-material: the surface met from inside shows it", "[render][v
 TEST_CASE("interior-material: shadow rays leaving the solid take its transmission",
           "[render][visibility]") {
   // A lit floor inside an opaque ball whose interior material lets half the light through.
-  Floor f;
+  LitFloor f;
   Material clearInside;
   clearInside.transmissive = Color(0.5f);
   const uint32_t inside = addMaterial(f.scene, clearInside);
