@@ -5,10 +5,12 @@
 // GDAL, OpenVDB, DCMTK...): about 0.4 s of CPU time and 130 MB of resident memory before
 // the first line of main. `lucent --help`, `check`, a scene with an error or an export
 // need none of it, and a render loads it only once its scene is freed, so the two are
-// never in memory together. A render to PNG or PPM, the common case, does not load it at
-// all: those files are written by the built-in part (builtin/builtin_images.h). Every
-// other image is read, written, compared and sampled by OpenImageIO: the plugin
-// (images/oiio/, the file lucent-oiio.so) is the only code that includes its headers.
+// never in memory together. A render to PNG or PPM with PNG or JPEG textures, the common
+// case, does not load it at all: those files are written and read by the built-in part
+// (builtin/builtin_images.h), and textures are decoded and sampled by Lucent's own code
+// (srgb_decoding.h, periodic_bilinear.h). Every other image is read, written and compared
+// by OpenImageIO: the plugin (images/oiio/, the file lucent-oiio.so) is the only code
+// that includes its headers.
 //
 // The interface is a C++ abstract class: the plugin is built by the same compiler from the
 // same tree, so C++ types and exceptions cross the boundary safely. Pixels cross it as
@@ -85,7 +87,8 @@ struct ImageToWrite {
 };
 
 // Bilinear lookup of a float RGB image with periodic wrapping (OpenImageIO's
-// interppixel_NDC); the sampler only views the pixels, which must outlive it.
+// interppixel_NDC); the sampler only views the pixels, which must outlive it. The
+// reference that Lucent's own lookup (periodic_bilinear.h) is tested against.
 class TextureSampler {
  public:
   virtual ~TextureSampler() = default;
@@ -117,8 +120,9 @@ class ImagePlugin {
   // for a file rewritten under the same name).
   virtual std::unique_ptr<ImageReader> openFile(const std::string& path,
                                                 std::string& error) const = 0;
-  // Decodes sRGB-encoded values in place to linear (OpenImageIO's colour conversion).
-  // Returns "" or the reason.
+  // Decodes sRGB-encoded values in place to linear (OpenImageIO's colour conversion, which
+  // approximates the power): the reference Lucent's exact decoding (srgb_decoding.h) is
+  // tested against. Returns "" or the reason.
   virtual std::string srgbToLinear(float* pixels, int width, int height, int channels) const = 0;
   virtual std::unique_ptr<TextureSampler> textureSampler(const float* rgb, int width,
                                                          int height) const = 0;

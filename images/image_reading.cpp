@@ -1,6 +1,7 @@
 #include "image_reading.h"
 
 #include "address_sanitizer.h"
+#include "builtin/builtin_images.h"
 
 #if defined(LUCENT_ASAN)
 #include <sanitizer/lsan_interface.h>
@@ -13,6 +14,7 @@ namespace lucent {
 // and damaged files are what the bad-input corpus feeds the readers: LeakSanitizer
 // ignores what opening and decoding allocate.
 std::unique_ptr<ImageReader> openImageReader(const std::string& path, std::string& error) {
+  if (auto reader = builtinOpenFile(path, error); reader || !error.empty()) return reader;
 #if defined(LUCENT_ASAN)
   __lsan::ScopedDisabler ignoreLibraryLeak;
 #endif

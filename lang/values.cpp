@@ -143,10 +143,6 @@ Parsed<std::vector<long long>> parseIntegerList(std::string_view text) {
   return {std::move(values), {}};
 }
 
-double srgbToLinear(double c) {
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
 namespace {
 
 // "pov:NAME": a colour of POV-Ray's colors.inc (and the other standard includes), linear.

@@ -4,6 +4,7 @@
 // message without location; the caller names the element and attribute.
 #pragma once
 
+#include "images/srgb_decoding.h"
 #include "primitives/math.h"
 
 #include <optional>
@@ -47,9 +48,7 @@ struct ParsedColor {
 // decoded to linear).
 Parsed<ParsedColor> parseColor(std::string_view text);
 
-// The exact sRGB decoding (IEC 61966-2-1): c/12.92 at or below 0.04045, else
-// ((c + 0.055)/1.055)^2.4; c in [0, 1].
-double srgbToLinear(double c);
+// srgbToLinear(c): sRGB's exact decoding, shared with image files.
 
 // "true" or "false".
 Parsed<bool> parseBool(std::string_view text);

@@ -1,6 +1,7 @@
 #include "image_read.h"
 
 #include "images/image_reading.h"
+#include "images/srgb_decoding.h"
 #include "memory/system_memory.h"
 #include "scenegraph/render_limits.h"
 
@@ -54,18 +55,16 @@ Image readImageFile(const std::string& path, PixelDecoding decoding) {
   error = readImagePixels(*in, data.data());
   if (!error.empty()) throw ImageIOError(fmt::format("cannot read '{}': {}", path, error));
 
-  // Integer files are sRGB-encoded unless they say otherwise.
-  const bool integer = spec.eightBit || spec.sixteenBit;
-  if (decoding == PixelDecoding::Linear && integer &&
-      (spec.colorSpace.empty() || spec.saysSrgb())) {
-    error = imagePlugin().srgbToLinear(data.data(), spec.width, spec.height, channels);
-    if (!error.empty()) throw ImageIOError(fmt::format("cannot decode '{}': {}", path, error));
-  }
   Image image(spec.width, spec.height);
   for (size_t p = 0; p < image.pixels.size(); ++p) {
     const float* px = &data[p * static_cast<size_t>(channels)];
     image.pixels[p] = channels < 3 ? Color(px[0]) : Color(px[0], px[1], px[2]);
   }
+  // Integer files are sRGB-encoded unless they say otherwise: their code values decoded
+  // exactly, as colours written as sRGB in a scene are.
+  const bool integer = spec.eightBit || spec.sixteenBit;
+  if (decoding == PixelDecoding::Linear && integer && (spec.colorSpace.empty() || spec.saysSrgb()))
+    decodeSrgbCodeValues(&image.pixels[0][0], 3 * image.pixels.size(), spec.eightBit ? 255 : 65535);
   return image;
 }
 

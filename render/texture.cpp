@@ -11,7 +11,7 @@
 #include "image_read.h"
 #include "uv_mapping.h"
 
-#include "images/image_plugin.h"
+#include "images/periodic_bilinear.h"
 
 #include <fmt/core.h>
 
@@ -44,16 +44,16 @@ Color checkerColor(const CheckerTexture& checker, const Vec3& pObject, const Vec
 }
 
 struct ImageMap::Impl {
-  Image linear;                             // RGB, linear (or as stored, for bump maps)
-  std::unique_ptr<TextureSampler> sampler;  // OpenImageIO's bilinear lookup of `linear`
+  Image linear;                               // RGB, linear (or as stored, for bump maps)
+  std::unique_ptr<PeriodicBilinear> sampler;  // the bilinear lookup of `linear`
 };
 
 ImageMap::ImageMap(const std::string& path, PixelDecoding decoding)
     : impl_(std::make_unique<Impl>()) {
   impl_->linear = readImageFile(path, decoding);
   static_assert(sizeof(Color) == 3 * sizeof(float), "Image pixels are packed RGB floats");
-  impl_->sampler = imagePlugin().textureSampler(&impl_->linear.pixels[0][0], impl_->linear.width,
-                                                impl_->linear.height);
+  impl_->sampler = std::make_unique<PeriodicBilinear>(&impl_->linear.pixels[0][0],
+                                                      impl_->linear.width, impl_->linear.height);
 }
 
 ImageMap::~ImageMap() = default;

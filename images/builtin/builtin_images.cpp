@@ -1,7 +1,8 @@
-// Which files the built-in part writes, and the dispatch to its writers.
+// Which files the built-in part writes and reads, and the dispatch to its writers and readers.
 #include "builtin_images.h"
 
 #include "builtin_parts.h"
+#include "builtin_readers.h"
 
 namespace lucent {
 
@@ -17,6 +18,13 @@ bool builtinWrites(const ImageToWrite& image) {
 
 WriteFailure builtinWriteFile(const std::string& path, const ImageToWrite& image) {
   return image.format == "png" ? builtin::writePng(path, image) : builtin::writePpm(path, image);
+}
+
+std::unique_ptr<ImageReader> builtinOpenFile(const std::string& path, std::string& error) {
+  error.clear();
+  if (isPngFile(path)) return builtin::openPng(path, error);
+  if (builtin::isJpegFile(path)) return builtin::openJpeg(path, error);
+  return nullptr;
 }
 
 bool builtinReadsBackComplete(const std::string& path, const ImageToWrite& image) {

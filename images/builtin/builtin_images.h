@@ -1,5 +1,6 @@
 // The image files Lucent writes without OpenImageIO: PNG through libpng and binary PPM in
-// plain code. A render to either never loads the plugin (image_plugin.h says what that
+// plain code; and those it reads without it: PNG and JPEG (builtin_readers.h). A render
+// that reads and writes only those never loads the plugin (image_plugin.h says what that
 // costs). Each writes exactly what the plugin's OpenImageIO writer writes for the same
 // ImageToWrite: the same pixels, bit depth and colour-space chunks, so the two paths give
 // identical images (tests/images/builtin_png_test.cpp).
@@ -9,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,10 @@ bool builtinWrites(const ImageToWrite& image);
 // image that builtinWrites() accepts.
 WriteFailure builtinWriteFile(const std::string& path, const ImageToWrite& image);
 
+// Opens a PNG or JPEG file (told by its first bytes) for reading without OpenImageIO:
+// null with `error` empty for any other file, null with `error` set for a damaged one.
+std::unique_ptr<ImageReader> builtinOpenFile(const std::string& path, std::string& error);
+
 // Does the file decode completely as an image of this format and size? Every row is
 // decoded (PNG: every zlib block and checksum up to the end chunk).
 bool builtinReadsBackComplete(const std::string& path, const ImageToWrite& image);
@@ -30,6 +36,9 @@ bool builtinReadsBackComplete(const std::string& path, const ImageToWrite& image
 // A PNG's stored values, read without OpenImageIO (builtin_png_read.cpp): for readers that
 // take values as they are stored (height fields), with no colour conversion.
 struct PngPixels {
+  // Set before reading: widen as OpenImageIO does (a palette to its colours, a tRNS chunk
+  // to an alpha channel) rather than keep palette indices and leave tRNS unapplied.
+  bool expandAsOiio = false;
   int width = 0, height = 0;
   int channels = 0;         // after widening: 1 grey, 2 grey and alpha, 3 RGB, 4 RGBA
   bool sixteenBit = false;  // values of 0 to 65535; else 0 to 255
@@ -38,6 +47,9 @@ struct PngPixels {
   // A palette image's colours with their alphas (255 where its tRNS chunk says none).
   std::vector<std::array<std::uint8_t, 4>> paletteColours;
   bool transparencyChunk = false;     // the file has a tRNS chunk (left unapplied)
+  bool srgbChunk = false;             // the file has an sRGB chunk
+  double fileGamma = 0.0;             // its gAMA chunk's value (0.4545 for 2.2), 0 if none
+  std::string colorSpaceText;         // a tEXt "oiio:ColorSpace" before the pixels, if any
   std::vector<std::uint16_t> values;  // rows top first, width x channels values each
 };
 

@@ -30,13 +30,18 @@ void readData(png_structp png, png_bytep data, size_t length) {
 }
 
 // The transformations both passes set: stored values, 16 bits in the machine's order; a
-// palette image's indices, a byte each (not its colours).
-void setTransforms(png_structp png, png_infop info) {
+// palette image's indices, a byte each (not its colours), or, expanded as OpenImageIO
+// expands them, a palette's colours and tRNS as an alpha channel.
+void setTransforms(png_structp png, png_infop info, bool expandAsOiio) {
+  if (png_get_bit_depth(png, info) == 16) png_set_swap(png);
+  if (expandAsOiio) {
+    png_set_expand(png);
+    return;
+  }
   if (png_get_color_type(png, info) == PNG_COLOR_TYPE_GRAY && png_get_bit_depth(png, info) < 8)
     png_set_expand_gray_1_2_4_to_8(png);
   if (png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE && png_get_bit_depth(png, info) < 8)
     png_set_packing(png);
-  if (png_get_bit_depth(png, info) == 16) png_set_swap(png);
 }
 
 // The palette's colours and the alphas of its tRNS chunk (the header pass: libpng keeps
@@ -54,6 +59,17 @@ void readPalette(png_structp png, png_infop info, PngPixels& pixels) {
     pixels.paletteColours.push_back(
         {palette[i].red, palette[i].green, palette[i].blue,
          static_cast<std::uint8_t>(alphas && i < alphaCount ? alphas[i] : 255)});
+}
+
+// The text chunk OpenImageIO takes as the colour space's name (Lucent's PNGs carry one).
+// The string is assigned only here, after libpng has returned: no longjmp crosses it.
+void readColorSpaceText(png_structp png, png_infop info, PngPixels& pixels) {
+  png_textp text = nullptr;
+  const int count = png_get_text(png, info, &text, nullptr);
+  pixels.colorSpaceText.clear();
+  for (int i = 0; i < count; ++i)
+    if (text[i].key && text[i].text && std::strcmp(text[i].key, "oiio:ColorSpace") == 0)
+      pixels.colorSpaceText = text[i].text;
 }
 
 // A read struct and its info reporting to `sink`; false (nothing to free) if libpng has no
@@ -85,11 +101,17 @@ bool readPass(FILE* file, PngPixels& pixels, unsigned char* values, ErrorSink& s
   if (!values) {
     pixels.width = static_cast<int>(png_get_image_width(png, info));
     pixels.height = static_cast<int>(png_get_image_height(png, info));
-    pixels.palette = png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE;
+    pixels.palette =
+        !pixels.expandAsOiio && png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE;
     pixels.storedDepth = png_get_bit_depth(png, info);
     readPalette(png, info, pixels);
+    int intent = 0;
+    pixels.srgbChunk = png_get_sRGB(png, info, &intent) != 0;
+    double gamma = 0.0;
+    pixels.fileGamma = png_get_gAMA(png, info, &gamma) ? gamma : 0.0;
+    readColorSpaceText(png, info, pixels);
   }
-  setTransforms(png, info);
+  setTransforms(png, info, pixels.expandAsOiio);
   const int passes = png_set_interlace_handling(png);
   png_read_update_info(png, info);
   if (!values) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # OpenImageIO lives in a plugin (lucent-oiio.so, images/image_plugin.h) loaded only when an
-# image is read, or written in a format other than PNG and PPM (those have built-in
-# writers). With LUCENT_IMAGE_PLUGIN naming a file that is missing or not the plugin:
+# image other than PNG or JPEG is read, or one other than PNG and PPM written (those have
+# built-in readers and writers). With LUCENT_IMAGE_PLUGIN naming a file that is missing or not the plugin:
 # commands that need no OpenImageIO still work, and those that do fail with a clear
 # message, status 3, and the old output image untouched.
 # Usage: bash image_plugin.sh <path-to-lucent> <source-dir>
@@ -55,11 +55,23 @@ libc=$(ldd "$lucent" | sed -n 's/.*libc\.so\.6 => \([^ ]*\).*/\1/p')
 export LUCENT_IMAGE_PLUGIN="$libc"
 check_render_fails "another library" "$libc: not a Lucent image plugin of version"
 
-# An image texture needs the library while the scene is set up: the same message.
-"$lucent" render "$src/examples/gallery/image-texture.xml" -o "$tmp/out.png" -q >/dev/null 2>"$tmp/stderr"
+# PNG and JPEG textures are read by the built-in part too.
+"$lucent" render "$src/examples/gallery/image-texture.xml" -o "$tmp/out.png" -q 2>"$tmp/stderr" ||
+  fail "a PNG texture needs the image library: $(cat "$tmp/stderr")"
+sed 's|textures/uvgrid.png|'"$src"'/tests/data/jpeg_kinds/rgb420.jpg|' \
+  "$src/examples/gallery/image-texture.xml" >"$tmp/jpeg-texture.xml"
+"$lucent" render "$tmp/jpeg-texture.xml" -o "$tmp/out.png" -q --allow-path "$src" 2>"$tmp/stderr" ||
+  fail "a JPEG texture needs the image library: $(cat "$tmp/stderr")"
+
+# A TIFF texture needs the library while the scene is set up: the same message.
+unset LUCENT_IMAGE_PLUGIN
+"$lucent" render "$tmp/scene.xml" -o "$tmp/grid.tif" -q 2>"$tmp/stderr" || fail "render to TIFF: $(cat "$tmp/stderr")"
+sed 's|textures/uvgrid.png|'"$tmp"'/grid.tif|' "$src/examples/gallery/image-texture.xml" >"$tmp/tiff-texture.xml"
+export LUCENT_IMAGE_PLUGIN="$libc"
+"$lucent" render "$tmp/tiff-texture.xml" -o "$tmp/out.png" -q >/dev/null 2>"$tmp/stderr"
 status=$?
-[ "$status" -eq 3 ] || fail "texture: exit status $status, expected 3"
-grep -qF "cannot load the image library" "$tmp/stderr" || fail "texture: message: $(cat "$tmp/stderr")"
+[ "$status" -eq 3 ] || fail "TIFF texture: exit status $status, expected 3"
+grep -qF "cannot load the image library" "$tmp/stderr" || fail "TIFF texture: message: $(cat "$tmp/stderr")"
 
 unset LUCENT_IMAGE_PLUGIN
 # With the real plugin (found beside lucent or where the build wrote it) all works.

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Start-up without OpenImageIO (images/image_plugin.h): `--version`, `check` and a render to
-# PNG or PPM load no part of it, while a render to EXR or of a scene with an image
-# texture does. Proved from the dynamic linker's own record of every object it loads
+# PNG or PPM, with PNG or JPEG textures, load no part of it, while a render to EXR or of a
+# scene with a TIFF texture does. Proved from the dynamic linker's own record of every object it loads
 # (LD_DEBUG=files), which needs no code in lucent.
 # Usage: bash startup_libraries.sh <path-to-lucent> <source-dir>
 set -u
@@ -52,9 +52,29 @@ without_oiio "render to PPM" -- "$lucent" render "$tmp/scene.xml" -o "$tmp/out.p
 # What needs OpenImageIO still gets it.
 with_oiio "render to EXR" -- "$lucent" render "$tmp/scene.xml" -o "$tmp/out.exr" -q
 [ -s "$tmp/out.exr" ] || fail "render wrote no EXR"
-with_oiio "a scene with an image texture" -- \
+
+# PNG and JPEG textures, and a POV-Ray scene's PNG image_map, are read by the built-in part.
+without_oiio "a scene with a PNG texture" -- \
   "$lucent" render "$src/examples/gallery/image-texture.xml" -o "$tmp/texture.png" -q -w 32 -h 24
 [ "$(head -c 4 "$tmp/texture.png" | tail -c 3)" = "PNG" ] || fail "the texture scene wrote no PNG"
+sed 's|textures/uvgrid.png|'"$src"'/tests/data/jpeg_kinds/rgb420.jpg|' \
+  "$src/examples/gallery/image-texture.xml" >"$tmp/jpeg-texture.xml"
+without_oiio "a scene with a JPEG texture" -- \
+  "$lucent" render "$tmp/jpeg-texture.xml" -o "$tmp/texture.png" -q -w 32 -h 24 --allow-path "$src"
+cp "$src/tests/data/png_kinds/rgba8.png" "$tmp/map.png"
+cat > "$tmp/map.pov" <<'POV'
+camera { location <0, 0, -3> look_at 0 }
+light_source { <2, 4, -3>, rgb 1 }
+plane { z, 1 pigment { image_map { png "map.png" } } finish { ambient 1 diffuse 0 } }
+POV
+without_oiio "a POV-Ray scene with a PNG image_map" -- "$lucent" render "$tmp/map.pov" -o "$tmp/map-render.png" -q -w 32 -h 24
+
+# An image texture in another format gets it.
+"$lucent" render "$tmp/scene.xml" -o "$tmp/grid.tif" -q || fail "render to TIFF failed"
+sed 's|textures/uvgrid.png|'"$tmp"'/grid.tif|' "$src/examples/gallery/image-texture.xml" >"$tmp/tiff-texture.xml"
+with_oiio "a scene with a TIFF texture" -- \
+  "$lucent" render "$tmp/tiff-texture.xml" -o "$tmp/texture.png" -q -w 32 -h 24
+[ "$(head -c 4 "$tmp/texture.png" | tail -c 3)" = "PNG" ] || fail "the TIFF texture scene wrote no PNG"
 
 [ "$failures" -eq 0 ] && echo "startup_libraries: all checks passed"
 exit $((failures > 0))

@@ -1,6 +1,9 @@
 # PNG files of the kinds a PNG reader must widen or reorder (bits below 8, grey with alpha,
 # RGBA of 16 bits, Adam7 interlacing, a grey tRNS), for tests/images/builtin_png_read_test.cpp,
-# which reads each through libpng and through OpenImageIO and compares. Run: python3 make.py
+# which reads each through libpng and through OpenImageIO and compares; and of the kinds
+# OpenImageIO labels or premultiplies in its own way (a palette with tRNS, alpha with and
+# without a gAMA chunk, sRGB and gAMA 1 chunks), for tests/images/builtin_texture_read_test.cpp.
+# Run: python3 make.py
 import struct, zlib
 
 W, H = 11, 7
@@ -25,7 +28,7 @@ def pack_row(samples, depth):
     return bytes(out)
 
 def write(path, ctype, depth, pixel, interlace=False, extra=b''):
-    per = {0: 1, 2: 3, 4: 2, 6: 4}[ctype]
+    per = {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}[ctype]
     def rows(xs, ys):
         raw = b''
         for y in ys:
@@ -56,3 +59,18 @@ write('interlaced8.png', 0, 8, lambda x, y: ((x * 19 + y * 31) % 256,), interlac
 write('interlaced_rgb16.png', 2, 16, lambda x, y: (x * 4000, y * 7000, (x + y) * 1000),
       interlace=True)
 write('grey_trns8.png', 0, 8, lambda x, y: ((x * 11 + y) % 256,), extra=chunk(b'tRNS', struct.pack('>H', 12)))
+
+palette = bytes(sum(([i * 17, 255 - i * 13, (i * 50) % 256] for i in range(16)), []))
+write('palette4_trns.png', 3, 4, lambda x, y: ((x + 2 * y) % 16,),
+      extra=chunk(b'PLTE', palette) + chunk(b'tRNS', bytes([0, 40, 128, 200, 255, 7])))
+write('rgba8.png', 6, 8, lambda x, y: ((x * 23) % 256, (y * 37) % 256, (x * y * 7) % 256,
+                                       (x * 25 + y * 3) % 256))
+write('rgba8_gamma22.png', 6, 8, lambda x, y: ((x * 23) % 256, (y * 37) % 256, 200,
+                                               (x * 25 + y * 3) % 256),
+      extra=chunk(b'gAMA', struct.pack('>I', 45455)))
+write('grey_alpha16_gamma18.png', 4, 16, lambda x, y: (x * 6000, 65535 - y * 9000),
+      extra=chunk(b'gAMA', struct.pack('>I', 55556)))
+write('rgb8_srgb.png', 2, 8, lambda x, y: ((x * 23) % 256, (y * 37) % 256, 99),
+      extra=chunk(b'sRGB', bytes([0])))
+write('grey8_linear.png', 0, 8, lambda x, y: ((x * 20 + y) % 256,),
+      extra=chunk(b'gAMA', struct.pack('>I', 100000)))
