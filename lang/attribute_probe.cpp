@@ -60,6 +60,11 @@ size_t AttributeProbe::choice(const char* attr, size_t def,
   return def;
 }
 
+Mat4 AttributeProbe::transform(const char* attr, const Mat4& def) {
+  if (has(attr)) record(attr, xmlMatrix(def));
+  return def;
+}
+
 std::optional<std::string> AttributeProbe::text(const char* attr) {
   cannot(attr);
   return std::nullopt;

@@ -32,6 +32,7 @@ class AttributeProbe : public AttributeInput {
   bool boolean(const char* attr, bool def) override;
   Color color(const char* attr, const Color& def, bool* scalar) override;
   size_t choice(const char* attr, size_t def, const std::vector<std::string_view>& names) override;
+  Mat4 transform(const char* attr, const Mat4& def) override;
   std::optional<std::string> text(const char* attr) override;
   std::optional<std::vector<double>> numbers(const char* attr) override;
   std::optional<std::vector<long long>> integers(const char* attr) override;

@@ -35,6 +35,9 @@ class ElementInput final : public AttributeInput {
   }
   bool boolean(const char* attr, bool def) override { return r_.boolean(attr, def); }
   size_t choice(const char* attr, size_t def, const std::vector<std::string_view>& names) override;
+  Mat4 transform(const char* attr, const Mat4& def) override {
+    return r_.has(attr) ? r_.transform(attr) : def;
+  }
   std::optional<std::string> text(const char* attr) override { return r_.text(attr); }
   std::optional<std::vector<double>> numbers(const char* attr) override;
   std::optional<std::vector<long long>> integers(const char* attr) override;

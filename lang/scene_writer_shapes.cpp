@@ -163,6 +163,7 @@ std::optional<OwnShapeText> own(const BlobSpec& s, const SourceLoc&, const std::
     }
     a.emplace_back("radius", xmlNumber(c.radius));
     a.emplace_back("strength", xmlNumber(c.strength));
+    if (c.transform != Mat4(1.0)) a.emplace_back("transform", xmlMatrix(c.transform));
     t.children.push_back({"component", std::move(a)});
   }
   t.handled.push_back("<component>");

@@ -47,19 +47,28 @@ Interval slabInterval(double z0, double zd, double zlo, double zhi) {
   return {a, b};
 }
 
+// A point and a direction of the blob's space in the piece's own.
+Vec3 localPoint(const Piece& p, const Vec3& pt) {
+  return p.local ? p.toLocal * pt + p.localOffset : pt;
+}
+Vec3 localVector(const Piece& p, const Vec3& v) { return p.local ? p.toLocal * v : v; }
+
 // The interval of the line o + t·d inside the piece's support.
 Interval pieceInterval(const Piece& p, const Ray& ray) {
-  Vec3 w = ray.o - p.c, wr, dr;
-  radialLine(p, w, ray.d, wr, dr);
+  const Vec3 o = localPoint(p, ray.o), d = localVector(p, ray.d);
+  Vec3 w = o - p.c, wr, dr;
+  radialLine(p, w, d, wr, dr);
   Interval I = radialInterval(wr, dr, p.r2);
   if (I.empty()) return I;
   if (p.axis == Vec3(0.0)) return I;
-  double z0 = glm::dot(p.axis, ray.o - p.base), zd = glm::dot(p.axis, ray.d);
+  double z0 = glm::dot(p.axis, o - p.base), zd = glm::dot(p.axis, d);
   return I.intersect(slabInterval(z0, zd, p.zlo, p.zhi));
 }
 
-// r² of the point w = p − c within the piece, or -1 outside the piece's part of space.
-double pieceRadius2(const Piece& p, const Vec3& pt, Vec3& radial) {
+// r² of the point w = p − c within the piece, or -1 outside the piece's part of space;
+// `radial` in the piece's space.
+double pieceRadius2(const Piece& p, const Vec3& blobPoint, Vec3& radial) {
+  const Vec3 pt = localPoint(p, blobPoint);
   if (p.axis != Vec3(0.0)) {
     double z = glm::dot(p.axis, pt - p.base);
     if (!(z >= p.zlo && z < p.zhi)) return -1.0;
@@ -67,6 +76,35 @@ double pieceRadius2(const Piece& p, const Vec3& pt, Vec3& radial) {
   Vec3 w = pt - p.c;
   radial = p.kind == Piece::Body ? w - glm::dot(p.axis, w) * p.axis : w;
   return glm::dot(radial, radial);
+}
+
+// Gives the pieces [begin, end) of one component the component's transform and returns
+// the bounds of its support box carried into the blob's space.
+AABB placeComponent(const Mat4& transform, const AABB& box, std::vector<Piece>::iterator begin,
+                    std::vector<Piece>::iterator end) {
+  const Mat3 linear(transform);
+  const double det = glm::determinant(linear);
+  double size = 0.0;
+  for (int i = 0; i < 3; ++i) size = std::max(size, glm::length(linear[i]));
+  bool finiteMatrix = true;
+  for (int i = 0; i < 4; ++i) finiteMatrix = finiteMatrix && finite(Vec3(transform[i]));
+  if (!finiteMatrix || !(std::abs(det) > 1e-12 * size * size * size))
+    throw std::invalid_argument("blob: a component's transform must be finite and invertible");
+  const Mat3 toLocal = glm::inverse(linear);
+  const Vec3 offset = -(toLocal * Vec3(transform[3]));
+  for (auto p = begin; p != end; ++p) {
+    p->local = true;
+    p->toLocal = toLocal;
+    p->localOffset = offset;
+  }
+  AABB placed;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 corner((k & 1) ? box.hi.x : box.lo.x, (k & 2) ? box.hi.y : box.lo.y,
+                      (k & 4) ? box.hi.z : box.lo.z);
+    const Vec3 q = Vec3(transform * Vec4(corner, 1.0));
+    placed = k == 0 ? AABB(q, q) : AABB::join(placed, AABB(q, q));
+  }
+  return placed;
 }
 
 struct Event {
@@ -89,6 +127,7 @@ Blob::Blob(double threshold, std::vector<BlobComponent> components) : threshold_
           "blob: a component needs a finite radius > 0, strength and position");
     double r2 = c.radius * c.radius;
     AABB box;
+    const size_t first = pieces_.size();
     if (c.kind == BlobComponent::Sphere) {
       pieces_.push_back({Piece::Ball, c.a, c.a, Vec3(0.0), -kInf, kInf, r2, c.strength});
       box = AABB(c.a - Vec3(c.radius), c.a + Vec3(c.radius));
@@ -101,6 +140,10 @@ Blob::Blob(double threshold, std::vector<BlobComponent> components) : threshold_
       pieces_.push_back({Piece::Ball, c.a, c.a, axis, -kInf, 0.0, r2, c.strength});
       pieces_.push_back({Piece::Ball, c.b, c.a, axis, len, kInf, r2, c.strength});
       box = AABB(glm::min(c.a, c.b) - Vec3(c.radius), glm::max(c.a, c.b) + Vec3(c.radius));
+    }
+    if (c.transform != Mat4(1.0)) {
+      box = placeComponent(c.transform, box, pieces_.begin() + static_cast<long>(first),
+                           pieces_.end());
     }
     // Only positive components can lift the field above the threshold.
     if (c.strength > 0.0) {
@@ -132,7 +175,8 @@ Vec3 Blob::gradient(const Vec3& p) const {
     double q = pieceRadius2(pc, p, radial);
     if (q < 0.0 || q >= pc.r2) continue;
     double g = 1.0 - q / pc.r2;
-    grad += (-4.0 * pc.s * g / pc.r2) * radial;
+    const Vec3 localGrad = (-4.0 * pc.s * g / pc.r2) * radial;
+    grad += pc.local ? glm::transpose(pc.toLocal) * localGrad : localGrad;
   }
   return grad;
 }
@@ -182,7 +226,7 @@ bool Blob::walk(const Ray& ray, double lo, double hi, Emit&& emit) const {
     for (int i : active) {
       const Piece& pc = pieces_[i];
       Vec3 wr, dr;
-      radialLine(pc, om - pc.c, ray.d, wr, dr);
+      radialLine(pc, localPoint(pc, om) - pc.c, localVector(pc, ray.d), wr, dr);
       double ww = glm::dot(wr, wr) / pc.r2;
       double al = 1.0 - ww, be = -2.0 * glm::dot(wr, dr) / pc.r2, ga = -glm::dot(dr, dr) / pc.r2;
       double s = pc.s, as = std::abs(s), A = 1.0 + ww;

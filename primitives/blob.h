@@ -57,6 +57,11 @@ class Blob final : public Shape {
     double zlo = -kInf, zhi = kInf;  // the piece keeps zlo <= axis·(p − base) < zhi
     double r2 = 1.0;                 // radius²
     double s = 1.0;                  // strength
+    // The component's own space, when it has a transform: q = toLocal·p + localOffset, and
+    // every field above is in that space.
+    bool local = false;
+    Mat3 toLocal{1.0};
+    Vec3 localOffset{0.0};
   };
 
  private:

@@ -77,6 +77,9 @@ class AttributeInput {
   // The index of the value in `names`; `def` when absent or not one of them (reported).
   virtual size_t choice(const char* attr, size_t def,
                         const std::vector<std::string_view>& names) = 0;
+  // A transform in the language's syntax (translate(...) scale(...) matrix(...)...); `def`
+  // when absent or wrong (reported, located inside the value).
+  virtual Mat4 transform(const char* attr, const Mat4& def) = 0;
   // The value after parameter substitution; nullopt when absent or wrong (reported).
   virtual std::optional<std::string> text(const char* attr) = 0;
   // Lists of numbers and of whole numbers >= 0; nullopt when absent or wrong (reported).

@@ -365,8 +365,9 @@ void SceneReader::readPoly(PovObject& o, TokenStream& in) {
 // blob { threshold T  sphere { C, R, [strength] S }  cylinder { B, A, R, [strength] S }
 // component S, R, C }: the components in any order, then the blob's modifiers. A
 // component's translate, rotate, uniform scale and matrix are carried into its centre, ends
-// and radius (the field moves with them exactly); what makes a component an ellipsoid or a
-// sheared cylinder, and a component's own texture, Lucent's blob cannot hold.
+// and radius (the field moves with them exactly); any other transform (an ellipsoid, a
+// sheared cylinder) becomes the component's own transform. A component's own texture
+// Lucent's blob cannot hold.
 void SceneReader::readBlob(PovObject& o, TokenStream& in) {
   BlobSpec s;
   s.threshold = 1.0;
@@ -419,16 +420,17 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
         in.error(mod, "unexpected " + mod.describe() + " in a blob component");
       }
       double scale = 1.0;
-      if (!similarity(m.povMatrix(), scale)) {
-        refuse(o, t.loc(), in,
-               "a blob component scaled unevenly or sheared is not supported by Lucent (its "
-               "components are spheres and round cylinders; scale the whole blob instead)");
-        refused = true;
-        continue;
+      if (similarity(m.povMatrix(), scale)) {
+        c.a = lucentFromPov(m.point(c.a));
+        c.b = lucentFromPov(m.point(c.b));
+        c.radius *= scale;
+      } else {
+        if (!(std::abs(glm::determinant(Mat3(m.povMatrix()))) > 0.0))
+          in.error(t, "the blob component's transform is singular (a scale of 0)");
+        c.a = lucentFromPov(c.a);
+        c.b = lucentFromPov(c.b);
+        c.transform = m.lucentMatrix();
       }
-      c.a = lucentFromPov(m.point(c.a));
-      c.b = lucentFromPov(m.point(c.b));
-      c.radius *= scale;
       s.components.push_back(c);
     } else {
       in.unget();

@@ -1,5 +1,6 @@
 // <blob threshold="1"> with <component type="sphere" center radius strength/> and
-// <component type="cylinder" base cap radius strength/> children: POV-Ray's blob
+// <component type="cylinder" base cap radius strength/> children, each with an optional
+// transform of its own: POV-Ray's blob
 // (primitives/blob.h). POV-Ray takes a threshold of any sign; Lucent wants it > 0, since
 // otherwise all of space far from the components would be inside.
 #include "scenegraph/shape_type.h"
@@ -7,6 +8,9 @@
 #include "primitives/blob.h"
 
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace lucent {
 
@@ -39,6 +43,12 @@ void readComponent(BlobSpec& s, AttributeInput& c) {
     comp.b = c.vector("cap", Vec3(0.0, 1.0, 0.0));
     if (comp.a == comp.b) c.error("a cylinder <component> needs different 'base' and 'cap'");
   }
+  comp.transform = c.transform("transform", Mat4(1.0));
+  const Mat3 linear(comp.transform);
+  double size = 0.0;
+  for (int i = 0; i < 3; ++i) size = std::max(size, glm::length(linear[i]));
+  if (!(std::abs(glm::determinant(linear)) > 1e-12 * size * size * size))
+    c.attrError("transform", "a component's transform must be invertible (no scale of 0)");
   if (!c.failed()) s.components.push_back(comp);
 }
 
@@ -46,6 +56,16 @@ AttributeInfo childAttribute(const char* name, AttrType type, std::string def, s
                              bool required = false, std::vector<std::string_view> choices = {}) {
   AttributeInfo a{name, type, {}, std::move(choices), std::move(def), required, std::move(doc)};
   if (std::string_view(name) == "radius") a.rule = NumberRule::positive();
+  return a;
+}
+
+// A component's own transform: its field is the one above in the component's space, as
+// POV-Ray's transformed components (a sphere scaled unevenly is an ellipsoid).
+AttributeInfo transformAttribute() {
+  AttributeInfo a = childAttribute(
+      "transform", AttrType::Text, "",
+      "From the component's space to the blob's (an uneven scale makes an ellipsoid).");
+  a.schemaType = "transform";
   return a;
 }
 
@@ -60,12 +80,23 @@ ShapeEntry<BlobSpec> shapeEntry<BlobSpec>() {
         out.open("blob");
         out.line("threshold " + out.number(s.threshold));
         for (const BlobComponent& c : s.components) {
+          // POV-Ray's matrix multiplies row vectors: its 12 numbers are the columns of
+          // Lucent's (column-vector) matrix, each cut to x, y, z.
+          std::string placed;
+          if (c.transform != Mat4(1.0)) {
+            placed = " matrix <";
+            for (int col = 0; col < 4; ++col)
+              for (int row = 0; row < 3; ++row)
+                placed += (col || row ? ", " : "") + out.number(c.transform[col][row]);
+            placed += ">";
+          }
           if (c.kind == BlobComponent::Sphere)
-            out.line(fmt::format("sphere {{ {}, {}, strength {} }}", out.vector(c.a),
-                                 out.number(c.radius), out.number(c.strength)));
+            out.line(fmt::format("sphere {{ {}, {}, strength {}{} }}", out.vector(c.a),
+                                 out.number(c.radius), out.number(c.strength), placed));
           else
-            out.line(fmt::format("cylinder {{ {}, {}, {}, strength {} }}", out.vector(c.a),
-                                 out.vector(c.b), out.number(c.radius), out.number(c.strength)));
+            out.line(fmt::format("cylinder {{ {}, {}, {}, strength {}{} }}", out.vector(c.a),
+                                 out.vector(c.b), out.number(c.radius), out.number(c.strength),
+                                 placed));
         }
       });
   e.doc =
@@ -85,7 +116,8 @@ ShapeEntry<BlobSpec> shapeEntry<BlobSpec>() {
         childAttribute("radius", AttrType::Number, "", "Where the component's field ends (> 0).",
                        true),
         childAttribute("strength", AttrType::Number, "1",
-                       "The field at the centre or axis; may be negative.")},
+                       "The field at the centre or axis; may be negative."),
+        transformAttribute()},
        true}};
   e.finish = [](BlobSpec& s, AttributeInput& in) {
     in.forEachChild("component", [&](AttributeInput& c) { readComponent(s, c); });

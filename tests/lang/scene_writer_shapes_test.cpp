@@ -249,7 +249,7 @@ TEST_CASE("scene writer: a blob's components are written as its children", "[lan
   auto r = roundTrip(
       "<blob threshold=\"0.6\"><component type=\"sphere\" center=\"0.1 0 0\" radius=\"1\" "
       "strength=\"2\"/><component type=\"cylinder\" base=\"0 0 0\" cap=\"0 1 0\" radius=\"0.3\" "
-      "strength=\"-0.5\"/></blob>");
+      "strength=\"-0.5\" transform=\"scale(1 0.3 2) rotate-x(10) rotate-z(30)\"/></blob>");
   auto [a, b] = specs<BlobSpec>(r);
   CHECK(a.threshold == b.threshold);
   REQUIRE(b.components.size() == 2);
@@ -261,6 +261,9 @@ TEST_CASE("scene writer: a blob's components are written as its children", "[lan
   }
   CHECK(b.components[1].kind == BlobComponent::Cylinder);
   CHECK(a.components[1].b == b.components[1].b);
+  CHECK(b.components[0].transform == Mat4(1.0));
+  CHECK(b.components[1].transform != Mat4(1.0));
+  CHECK(a.components[1].transform == b.components[1].transform);  // to the last bit
 }
 
 TEST_CASE("scene writer: an isosurface's function keeps its parameters as local <param>s",

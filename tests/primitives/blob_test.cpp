@@ -3,6 +3,7 @@
 #include "primitives/blob.h"
 
 #include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -229,4 +230,107 @@ TEST_CASE("blob: invalid parameters are refused", "[primitives][blob]") {
                   std::invalid_argument);
   CHECK_THROWS_AS(Blob(1.0, {{C::Cylinder, Vec3(1.0), Vec3(1.0), 1.0, 1.0}}),
                   std::invalid_argument);
+}
+
+TEST_CASE("blob: a sphere component scaled unevenly is the ellipsoid of the closed-form axes",
+          "[primitives][blob]") {
+  // One component of strength 2, radius 1.5, threshold 1: in its own space a sphere of
+  // radius r; scaled by (2, 0.5, 1.25), turned 30 degrees about z and moved, the ellipsoid
+  // of semi-axes r·(2, 0.5, 1.25) there. Hits and normals against that ellipsoid, solved in
+  // long double.
+  const double r = surfaceRadius(2.0, 1.0, 1.5);
+  const Vec3 axes(2.0, 0.5, 1.25), centre(0.3, -0.2, 0.7);
+  const Mat4 transform = glm::translate(Mat4(1.0), centre) *
+                         glm::rotate(Mat4(1.0), glm::radians(30.0), Vec3(0, 0, 1)) *
+                         glm::scale(Mat4(1.0), axes);
+  C c{C::Sphere, Vec3(0.0), Vec3(0.0), 1.5, 2.0};
+  c.transform = transform;
+  Blob b(1.0, {c});
+  const Mat4 toLocal = glm::inverse(transform);
+  std::vector<Vec3> dirs = {Vec3(1, 0.1, 0.05), Vec3(-0.3, 1, 0.2), Vec3(0.2, -0.4, -1),
+                            Vec3(1, 1, 1)};
+  int checked = 0;
+  for (const Vec3& d0 : dirs) {
+    const Vec3 d = glm::normalize(d0);
+    const Ray ray(centre - 6.0 * d + Vec3(0.05, 0.02, -0.03), d);
+    // The ellipsoid's unit sphere of radius r in local space: |o' + t d'|² = r².
+    const Vec3 o = Vec3(toLocal * Vec4(ray.o, 1.0)), dl = Vec3(toLocal * Vec4(ray.d, 0.0));
+    const LD A = (LD)glm::dot(dl, dl), B = 2 * (LD)glm::dot(o, dl),
+             Cc = (LD)glm::dot(o, o) - (LD)r * r;
+    const LD disc = B * B - 4 * A * Cc;
+    REQUIRE(disc > 0);
+    const LD tNear = (-B - std::sqrt(disc)) / (2 * A), tFar = (-B + std::sqrt(disc)) / (2 * A);
+    CrossingList cl;
+    b.crossings(ray, cl);
+    REQUIRE(cl.items.size() == 2);
+    CHECK(cl.items[0].hit.t == Approx((double)tNear).epsilon(1e-13));
+    CHECK(cl.items[1].hit.t == Approx((double)tFar).epsilon(1e-13));
+    // The normal: the inverse-transpose of the local sphere's normal.
+    const Vec3 pLocal = o + (double)tNear * dl;
+    const Vec3 expected = glm::normalize(glm::transpose(Mat3(toLocal)) * pLocal);
+    Hit h;
+    REQUIRE(b.intersect(ray, h));
+    CHECK(angle(b.surface(ray, h).ng, expected) < 1e-12);
+    ++checked;
+  }
+  CHECK(checked == 4);
+  // Inside: the centre, and points just within and beyond the long axis's end.
+  const Vec3 longAxis = Vec3(transform * Vec4(1, 0, 0, 0));
+  CHECK(b.inside(centre));
+  CHECK(b.inside(centre + (r * (1 - 1e-9)) * longAxis));
+  CHECK_FALSE(b.inside(centre + (r * (1 + 1e-9)) * longAxis));
+  // The bounds hold the support (the local radius 1.5, placed).
+  const AABB box = b.bounds();
+  CHECK(box.hi.x >= centre.x + 1.5 * 2.0 * std::cos(glm::radians(30.0)) - 1e-12);
+}
+
+TEST_CASE("blob: transformed components merge with plain ones on a continuous field",
+          "[primitives][blob]") {
+  // A sheared cylinder and a flattened sphere beside a plain sphere: every crossing lies on
+  // the surface of the long-double field evaluated through each component's inverse.
+  C cyl{C::Cylinder, Vec3(-1, 0, 0), Vec3(1, 0, 0), 0.6, 1.5};
+  cyl.transform = Mat4(1.0);
+  cyl.transform[1][0] = 0.4;  // x += 0.4 y
+  C flat{C::Sphere, Vec3(0.8, 0.3, 0), Vec3(0.0), 0.8, 1.0};
+  flat.transform = glm::scale(Mat4(1.0), Vec3(1.0, 0.4, 1.0));
+  C plain{C::Sphere, Vec3(-0.9, 0.1, 0.2), Vec3(0.0), 0.7, 1.2};
+  const std::vector<C> cs = {cyl, flat, plain};
+  Blob b(0.5, cs);
+  auto fieldAt = [&](const Vec3& p) {
+    LD f = 0;
+    for (const C& c : cs) {
+      const Vec3 q = Vec3(glm::inverse(c.transform) * Vec4(p, 1.0));
+      C own = c;
+      own.transform = Mat4(1.0);
+      f += fieldL({own}, q);
+    }
+    return f;
+  };
+  int crossings = 0;
+  for (int i = 0; i < 40; ++i) {
+    const double a = 0.157 * i;
+    const Vec3 d = glm::normalize(Vec3(std::cos(a), 0.3 * std::sin(3 * a), std::sin(a)));
+    const Ray ray(Vec3(0.1, 0.15, 0.05) - 5.0 * d, d);
+    CrossingList cl;
+    b.crossings(ray, cl);
+    for (const Crossing& x : cl.items) {
+      const Vec3 p = ray.at(x.hit.t);
+      CHECK(std::abs((double)(fieldAt(p) - 0.5)) < 1e-10);
+      // The normal is the falling gradient, by central differences of the field.
+      const double e = 1e-6;
+      Vec3 g((double)(fieldAt(p + Vec3(e, 0, 0)) - fieldAt(p - Vec3(e, 0, 0))),
+             (double)(fieldAt(p + Vec3(0, e, 0)) - fieldAt(p - Vec3(0, e, 0))),
+             (double)(fieldAt(p + Vec3(0, 0, e)) - fieldAt(p - Vec3(0, 0, e))));
+      Hit h = x.hit;
+      CHECK(angle(b.surface(ray, h).ng, -glm::normalize(g)) < 1e-5);
+      ++crossings;
+    }
+  }
+  CHECK(crossings > 40);
+}
+
+TEST_CASE("blob: a component's transform must be invertible", "[primitives][blob]") {
+  C c{C::Sphere, Vec3(0.0), Vec3(0.0), 1.0, 2.0};
+  c.transform = glm::scale(Mat4(1.0), Vec3(1.0, 0.0, 1.0));
+  CHECK_THROWS_AS(Blob(1.0, {c}), std::invalid_argument);
 }

@@ -34,6 +34,7 @@ class RecordingInput final : public AttributeInput {
   size_t choice(const char* attr, size_t def, const std::vector<std::string_view>&) override {
     return ask(attr, def);
   }
+  Mat4 transform(const char* attr, const Mat4& def) override { return ask(attr, def); }
   std::optional<std::string> text(const char* attr) override {
     return ask(attr, std::optional<std::string>());
   }

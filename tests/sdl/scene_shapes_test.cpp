@@ -137,6 +137,27 @@ blob {
   checkVec(b.components[3].a, Vec3(0, 1, -2));
   CHECK(b.components[3].radius == 0.5);  // POV-Ray keeps the square of the radius
   CHECK(b.components[3].strength == 2.0);
+  for (const BlobComponent& c : b.components) CHECK(c.transform == Mat4(1.0));  // carried in
+}
+
+TEST_CASE("scene shapes: a blob component scaled unevenly keeps its transform",
+          "[sdl][scene][shapes]") {
+  auto r = readScene(R"(
+blob {
+  threshold 0.5
+  sphere { <0, 0, 1>, 2, 1 scale <2, 1, 0.5> translate <0, 3, 1> }
+}
+)");
+  REQUIRE(r->load.scene);
+  const auto& b = shapeOf<BlobSpec>(*r->load.scene, 0);
+  REQUIRE(b.components.size() == 1);
+  const BlobComponent& c = b.components[0];
+  checkVec(c.a, Vec3(0, 0, -1));  // the centre in the component's own space (z mirrored)
+  CHECK(c.radius == 2.0);
+  // S·M·S: POV-Ray's point (0, 0, 1) goes to (0, 3, 1.5), Lucent's (0, 0, -1) to (0, 3, -1.5).
+  checkVec(Vec3(c.transform * Vec4(c.a, 1.0)), Vec3(0, 3, -1.5));
+  checkVec(Vec3(c.transform * Vec4(1, 0, 0, 0)), Vec3(2, 0, 0));
+  checkVec(Vec3(c.transform * Vec4(0, 0, 1, 0)), Vec3(0, 0, 0.5));
 }
 
 TEST_CASE("scene shapes: lathe, sor, prism and superellipsoid", "[sdl][scene][shapes]") {
@@ -428,20 +449,21 @@ TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where 
 #include "shapesq.inc"
 object { Monkey_Saddle }
 #declare J = ovus { 1, 0.5 }
-#declare Blobs = union { blob { sphere { 0, 1, 1 scale <1, 2, 1> } } sphere { 0, 1 } }
+#declare Blobs = union { blob { sphere { 0, 1, 1 pigment { rgb 1 } } } sphere { 0, 1 } }
 )");
   REQUIRE(r->load.scene);
   CHECK(shapeOf<PolySpec>(*r->load.scene, 0).order == 4);  // a quartic
   // Placed (twice), each refusal is said once, at its keyword.
   const auto errors = errorsOf(R"(#declare J = ovus { 1, 0.5 }
-#declare Blobs = union { blob { sphere { 0, 1, 1 scale <1, 2, 1> } } sphere { 0, 1 } }
+#declare Blobs = union { blob { sphere { 0, 1, 1 pigment { rgb 1 } } } sphere { 0, 1 } }
 object { J }
 object { Blobs translate x }
 object { Blobs }
 )");
   REQUIRE(errors.size() == 2);
   CHECK(errors[0].find("test.pov:1:14: error: 'ovus' is not supported by Lucent") == 0);
-  CHECK(errors[1].find("test.pov:2:33: error: a blob component scaled unevenly") == 0);
+  CHECK(errors[1].find("test.pov:2:50: error: a texture on a blob component is not supported") ==
+        0);
 }
 
 TEST_CASE("scene shapes: blob components and mesh triangles Lucent cannot hold",
@@ -455,16 +477,16 @@ blob { sphere { 0, 1, 1 } threshold -1 }
 mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } }
 mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 1, texture { } } face_indices { 1, <0, 1, 2>, 0 } }
 )");
-  REQUIRE(errors.size() == 5);
-  CHECK(errors[0].find("test.pov:2:3: error: a blob component scaled unevenly or sheared is not "
-                       "supported by Lucent") == 0);
-  CHECK(errors[1].find("test.pov:3:20: error: a texture on a blob component is not supported") ==
+  // The first component, scaled unevenly, is read (its own transform); the second's texture
+  // is refused.
+  REQUIRE(errors.size() == 4);
+  CHECK(errors[0].find("test.pov:3:20: error: a texture on a blob component is not supported") ==
         0);
-  CHECK(errors[2] ==
+  CHECK(errors[1] ==
         "test.pov:6:1: error: a blob threshold of -1 is not supported by Lucent (it takes a "
         "threshold above 0: at or below 0 all of space away from the components would be inside)");
-  CHECK(errors[3].find("test.pov:7:27: error: a texture on a mesh triangle is not supported") == 0);
-  CHECK(errors[4].find("test.pov:8:39: error: a texture_list (textures per mesh triangle) is not "
+  CHECK(errors[2].find("test.pov:7:27: error: a texture on a mesh triangle is not supported") == 0);
+  CHECK(errors[3].find("test.pov:8:39: error: a texture_list (textures per mesh triangle) is not "
                        "supported") == 0);
 }
 
