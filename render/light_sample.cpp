@@ -109,7 +109,33 @@ LightIncidence lightIncidence(const Light& light, const Vec3& p) {
   return {};  // not reached: the switch names every type
 }
 
+AreaAxes areaAxes(const Light& light, const Vec3& p) {
+  const Vec3 toCentre = light.position - p;
+  const double distance = glm::length(toCentre);
+  if (light.type != LightType::Area || !light.orient || !(distance > 0.0))
+    return {light.u, light.v};
+  const Vec3 d = toCentre / distance;
+  // Near ±z, d × z is too short to trust: POV-Ray crosses with y instead.
+  const Vec3 reference =
+      std::abs(std::abs(d.z) - 1.0) < 0.01 ? Vec3(0.0, 1.0, 0.0) : Vec3(0.0, 0.0, 1.0);
+  const double side = glm::length(light.u);
+  const Vec3 u = glm::normalize(glm::cross(d, reference));
+  const Vec3 v = glm::normalize(glm::cross(d, u));
+  return {u * side, v * side};
+}
+
+Vec2 areaGridCoordinates(double a, double b, int nu, int nv, bool circular) {
+  if (!circular) return Vec2(a / (nu - 1) - 0.5, b / (nv - 1) - 0.5);
+  const double x = a / (nu - 1) - 0.5 + 0.001, y = b / (nv - 1) - 0.5 + 0.001;
+  const double scale = std::max(std::abs(x), std::abs(y)) / std::sqrt(x * x + y * y);
+  return Vec2(x * scale, y * scale);
+}
+
 Vec3 lightSamplePoint(const Light& light, int k, const Vec2& jitter) {
+  return lightSamplePoint(light, AreaAxes{light.u, light.v}, k, jitter);
+}
+
+Vec3 lightSamplePoint(const Light& light, const AreaAxes& axes, int k, const Vec2& jitter) {
   if (light.type != LightType::Area) return light.position;
   int nu = std::max(light.samplesU, 2), nv = std::max(light.samplesV, 2);
   double a = k % nu, b = k / nu;
@@ -117,7 +143,8 @@ Vec3 lightSamplePoint(const Light& light, int k, const Vec2& jitter) {
     a = std::clamp(a + jitter.x - 0.5, 0.0, nu - 1.0);
     b = std::clamp(b + jitter.y - 0.5, 0.0, nv - 1.0);
   }
-  return light.position + light.u * (a / (nu - 1) - 0.5) + light.v * (b / (nv - 1) - 0.5);
+  const Vec2 xy = areaGridCoordinates(a, b, nu, nv, light.circular);
+  return light.position + axes.u * xy.x + axes.v * xy.y;
 }
 
 }  // namespace lucent

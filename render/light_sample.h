@@ -44,10 +44,30 @@ inline int shadowSampleCount(const Light& light) {
   return std::max(light.samplesU, 2) * std::max(light.samplesV, 2);  // the contract's minimum
 }
 
-// Shadow sample k of an area light: grid point (a, b) = (k mod nu, k div nu) of the
-// rectangle, the grid including its edges: position + u·(a/(nu−1) − ½) + v·(b/(nv−1) − ½).
-// With jitter, `jitter` ∈ [0,1)² moves the point within ±½ grid step, clamped to the
-// rectangle. Other lights: their position.
+// An area light's edge vectors as its samples at point p use them: its u and v, or for an
+// oriented light POV-Ray's turn to face p. With d = (centre − p)/|centre − p| and
+// r = (0, 1, 0) when | |d.z| − 1 | < 0.01, else (0, 0, 1):
+//   u' = |u|·normalize(d × r),  v' = |u|·normalize(d × u'),
+// a square of side |u| across d (the numbers as written, in Lucent's space; at the centre
+// itself the light's own axes).
+struct AreaAxes {
+  Vec3 u;
+  Vec3 v;
+};
+AreaAxes areaAxes(const Light& light, const Vec3& p);
+
+// Where grid point (a, b) of an nu × nv grid lies on the rectangle, in units of its edge
+// vectors: (a/(nu−1) − ½, b/(nv−1) − ½). Circular (POV-Ray's): with x = a/(nu−1) − ½ +
+// 0.001 and y likewise (the offset keeps the centre off 0/0), (x, y)·max(|x|, |y|)/√(x² + y²)
+// — each square shell of the grid pulled onto the circle of its half-width.
+Vec2 areaGridCoordinates(double a, double b, int nu, int nv, bool circular);
+
+// Shadow sample k of an area light: grid point (a, b) = (k mod nu, k div nu), the grid
+// including the rectangle's edges: position + u·x + v·y for (x, y) from
+// areaGridCoordinates. With jitter, `jitter` ∈ [0,1)² moves (a, b) within ±½ grid step,
+// clamped to the grid, before the circular remap (as POV-Ray jitters before it). Other
+// lights: their position. The light's own axes, or `axes` (areaAxes at the lit point).
 Vec3 lightSamplePoint(const Light& light, int k, const Vec2& jitter);
+Vec3 lightSamplePoint(const Light& light, const AreaAxes& axes, int k, const Vec2& jitter);
 
 }  // namespace lucent

@@ -74,7 +74,7 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
   }
   for (const Light& light : lights_) {
     std::vector<Vec3> targets;
-    if (light.type != LightType::Area || !light.jitter)
+    if (light.type != LightType::Area || (!light.jitter && !light.orient))
       for (int k = 0, n = shadowSampleCount(light); k < n; ++k)
         targets.push_back(lightSamplePoint(light, k, Vec2(0.5)));
     fixedTargets_.push_back(std::move(targets));
@@ -558,17 +558,21 @@ Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightI
   }
   const ShadowRays rays(s, settings_.epsilon);
   const std::vector<Vec3>& fixed = fixedTargets_[lightIndex];
+  // An oriented light turns to face the point: its axes here, once for all its samples.
+  const AreaAxes axes = fixed.empty() ? areaAxes(light, s.p) : AreaAxes{light.u, light.v};
   auto sampleRay = [&](int k) {
     Vec3 target;
     if (!fixed.empty()) {
       target = fixed[k];
+    } else if (!light.jitter) {
+      target = lightSamplePoint(light, axes, k, Vec2(0.5));
     } else {
       // Deterministic: a hash of the pixel, sample, shading event, light and grid point.
       uint64_t path = (uint64_t(seed.sample) << 32) | seed.event;
       uint64_t which = (uint64_t(lightIndex) << 32) | uint32_t(k);
       Vec2 jitter(hashToUnit(seed.x, seed.y, path, 2 * which),
                   hashToUnit(seed.x, seed.y, path, 2 * which + 1));
-      target = lightSamplePoint(light, k, jitter);
+      target = lightSamplePoint(light, axes, k, jitter);
     }
     return shadowRay(rays.to(target));
   };

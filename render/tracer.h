@@ -181,7 +181,7 @@ class Tracer {
   const std::vector<Fog> fogs_;      // a copy; none: no per-ray cost but this test
   // Each light's shadow-ray targets when they are fixed (lightSamplePoint without
   // jitter), computed once: the loop over an area light's 64 samples then only reads
-  // them. Empty for a jittered area light, whose targets differ per point.
+  // them. Empty for a jittered or oriented area light, whose targets differ per point.
   std::vector<std::vector<Vec3>> fixedTargets_;
   SurfaceSlots slots_;            // the materials and their layers, by slot
   TextureSet textures_;           // by slot

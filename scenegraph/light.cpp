@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -38,6 +39,9 @@ void writePovArea(const Light& l, PovLightOut& out) {
                        out.vector(l.v), l.samplesU, l.samplesV));
   // Lucent's adaptive light is POV-Ray's: the same corners, test and quadrant averages.
   if (l.adaptive) out.line(fmt::format("adaptive {}", *l.adaptive));
+  // The same remap and the same turn as POV-Ray's (render/light_sample.h).
+  if (l.circular) out.line("circular");
+  if (l.orient) out.line("orient");
   if (l.jitter) {
     out.line("jitter");
     out.warning(
@@ -85,6 +89,20 @@ void finishArea(Light& l, AttributeInput& in) {
     in.error(
         "<light type=\"area\">: 'u' and 'v' must be non-zero and not parallel (they span the "
         "rectangle)");
+  // POV-Ray makes an oriented light circular, and so does Lucent unless told otherwise;
+  // it uses only u's length (its warning says the axes must be equal): Lucent asks for it
+  // rather than quietly change the light.
+  if (l.orient && in.has("circular") && !l.circular)
+    in.attrError("orient",
+                 "orient=\"true\" makes the light circular (a disc facing the point, as "
+                 "POV-Ray's): remove circular=\"false\"");
+  if (l.orient) l.circular = true;
+  const double lu = glm::length(l.u), lv = glm::length(l.v);
+  if (l.orient && std::abs(lu - lv) > 1e-9 * std::max(lu, lv))
+    in.attrError("orient",
+                 fmt::format("orient=\"true\" needs 'u' and 'v' of equal length (the disc's "
+                             "diameter), got {} and {}",
+                             lu, lv));
 }
 
 }  // namespace
@@ -329,6 +347,16 @@ const std::vector<LightAttribute>& lightAttributes() {
       {attribute("jitter", AttrType::Boolean, {}, "",
                  "area: jitter the sample positions within their grid cells. Default false."),
        area, readBoolean("jitter", &Light::jitter)},
+      {attribute("circular", AttrType::Boolean, {}, "",
+                 "area: POV-Ray's circular. The grid's square shells are pulled onto circles, so "
+                 "the samples fill the ellipse inscribed in the rectangle u × v. Default false."),
+       area, readBoolean("circular", &Light::circular)},
+      {attribute(
+           "orient", AttrType::Boolean, {}, "",
+           "area: POV-Ray's orient (makes the light circular; u and v of equal length). At "
+           "every lit point the disc is turned to face it: its axes become perpendicular to the "
+           "direction to the centre, each as long as u. Default false."),
+       area, readBoolean("orient", &Light::orient)},
       {attribute("adaptive", AttrType::Number, "wholeNumber", "",
                  "area: POV-Ray's adaptive N. Trace the grid's 4 corners and split a rectangle "
                  "of samples into quadrants where its neighbouring corners differ (by more than "

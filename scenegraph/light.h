@@ -127,6 +127,12 @@ struct Light {
   int samplesU = 4;
   int samplesV = 4;
   bool jitter = false;
+  // POV-Ray's circular: the grid's square shells pulled onto circles, so the samples fill
+  // the ellipse inscribed in the rectangle (render/light_sample.h has the rule).
+  bool circular = false;
+  // POV-Ray's orient (circular only): the light turned at every lit point to face it, a
+  // disc of diameter |u| across the direction to the centre; v's length equals u's.
+  bool orient = false;
   // POV-Ray's `adaptive N`: trace the grid's corners and subdivide where they differ, with
   // at least N forced levels, combining by recursive quadrant averages. Absent: every grid
   // point is traced and the plain average taken.

@@ -19,6 +19,36 @@ double spotFalloff(const PovLight& l) { return l.falloff.value_or(45.0); }
 // same).
 bool averagesUniformly(int n) { return n >= 2 && (n & (n - 1)) == 0; }
 
+// POV-Ray's circular and orient. An oriented light is made circular by POV-Ray (a warning)
+// and uses u's length for both axes (a warning when they differ): Lucent's asks for both,
+// so v takes u's length. A line of lights (a size of 1) is not circular in POV-Ray (its
+// parser refuses `circular` there, and turns off the circular that orient implies).
+void importCircularOrient(const PovAreaLight& a, Light& l, std::vector<std::string>& notes) {
+  const bool line = a.size1 <= 1 || a.size2 <= 1;
+  if (line) {
+    if (a.orient)
+      notes.push_back(
+          "area_light: `orient` on a line of lights (one sample across) is not imported; "
+          "the line keeps its axes");
+    return;
+  }
+  l.circular = a.circular || a.orient;
+  if (!a.orient) return;
+  l.orient = true;
+  const double side = glm::length(l.u);
+  Vec3 v = l.v;
+  // Only v's length counts once the light turns; a v along u is replaced by one across it.
+  if (!(glm::length(glm::cross(l.u, v)) > 1e-9 * side * glm::length(v))) {
+    v = glm::cross(l.u, Vec3(1.0, 0.0, 0.0));
+    if (glm::length(v) < 1e-6 * side) v = glm::cross(l.u, Vec3(0.0, 1.0, 0.0));
+  }
+  l.v = glm::normalize(v) * side;
+  notes.push_back(
+      "area_light: `orient` turns the disc in Lucent's right-handed space: its grid is "
+      "POV-Ray's mirrored, each sample within 0.003 of the axis length of POV-Ray's "
+      "(the 0.001 offset of POV-Ray's circular grid changes side)");
+}
+
 }  // namespace
 
 double povLightFade(const PovLight& l, double d) {
@@ -127,14 +157,7 @@ LightImport importLight(const PovLight& pov) {
         notes.push_back(
             "area_light: jitter is random in POV-Ray and a fixed hash in Lucent; the noise "
             "differs");
-      if (a.circular)
-        notes.push_back(
-            "area_light: `circular` (a round grid) has no Lucent equivalent; the "
-            "grid stays rectangular");
-      if (a.orient)
-        notes.push_back(
-            "area_light: `orient` (the grid turned to face each lit point) has no "
-            "Lucent equivalent");
+      importCircularOrient(a, l, notes);
       if (!a.adaptive && (!averagesUniformly(l.samplesU) || !averagesUniformly(l.samplesV)))
         notes.push_back(fmt::format(
             "area_light: POV-Ray weights a {}x{} grid unevenly (edge samples count less); "

@@ -122,7 +122,14 @@ PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
   }
   for (;;) {
     const Token t = in.next();
-    if (t.is("}")) return l;
+    if (t.is("}")) {
+      // POV-Ray's parser: a circular light needs a grid (a point light has size 0).
+      if (l.area && l.area->circular && (l.area->size1 <= 1 || l.area->size2 <= 1))
+        in.error(t,
+                 "a circular area light must have more than 1 light along each axis, as "
+                 "POV-Ray requires");
+      return l;
+    }
     if (readTransform(t, in, l.transform)) continue;
     const std::string_view w = t.kind == TokenKind::Keyword ? t.text() : "";
     if (w == "color" || w == "colour" || (t.kind == TokenKind::Keyword && isColourKey(t.kw))) {

@@ -140,6 +140,33 @@ TEST_CASE("scene writer: POV-Ray's light rules and open shapes are written and r
   CHECK_FALSE(contains(plain, "highlights"));
 }
 
+TEST_CASE("scene writer: circular and oriented area lights are written and read back",
+          "[lang][scene-writer]") {
+  const std::string first = written(
+      "<light type=\"area\" position=\"0 5 0\" u=\"2 0 0\" v=\"0 0 2\" samples=\"4 6\" "
+      "circular=\"true\" orient=\"true\" adaptive=\"1\"/>"
+      "<light type=\"area\" position=\"1 5 0\" u=\"2 0 0\" v=\"0 0 1\" circular=\"true\"/>"
+      "<sphere/>");
+  CHECK(contains(first, "circular=\"true\" orient=\"true\""));
+  auto reread = parseSceneString(first, "writer.xml");
+  REQUIRE(reread.scene);
+  CHECK(withoutComments(writeSceneXml(*reread.scene, WriteOptions{})) == withoutComments(first));
+  REQUIRE(reread.scene->lights.size() == 2);
+  CHECK(reread.scene->lights[0].circular);
+  CHECK(reread.scene->lights[0].orient);
+  CHECK(reread.scene->lights[0].samplesV == 6);
+  CHECK(reread.scene->lights[1].circular);
+  CHECK_FALSE(reread.scene->lights[1].orient);
+  // orient alone makes the light circular, as POV-Ray's.
+  CHECK(contains(written("<light type=\"area\" orient=\"true\"/><sphere/>"),
+                 "circular=\"true\" orient=\"true\""));
+  // A light without them writes neither.
+  const std::string plain =
+      written("<light type=\"area\" position=\"0 5 0\" samples=\"4\"/><sphere/>");
+  CHECK_FALSE(contains(plain, "circular"));
+  CHECK_FALSE(contains(plain, "orient"));
+}
+
 TEST_CASE("scene writer: a spherical camera's v-angle is its own, not half of h-angle",
           "[lang][scene-writer]") {
   const std::string text =

@@ -210,6 +210,22 @@ TEST_CASE("an adaptive area light is POV-Ray's adaptive, whose weights it shares
   CHECK_FALSE(plain.has("adaptive"));
 }
 
+TEST_CASE("circular and oriented area lights are POV-Ray's circular and orient",
+          "[povray][lights]") {
+  Exported e = exportScene(
+      R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 2" samples="4" adaptive="1" circular="true" orient="true"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.has("  area_light <2, 0, 0>, <0, 0, 2>, 4, 4\n  adaptive 1\n  circular\n  orient\n"));
+  CHECK(e.pov.issues.empty());  // the same disc, the same turn
+  Exported round = exportScene(
+      R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 1" samples="4" adaptive="0" circular="true"/>)XML");
+  CHECK(round.has("  adaptive 0\n  circular\n"));
+  CHECK_FALSE(round.has("orient"));
+  Exported plain =
+      exportScene(R"XML(<light type="area" position="0 5 0" u="2 0 0" v="0 0 1" samples="4"/>)XML");
+  CHECK_FALSE(plain.has("circular"));
+}
+
 TEST_CASE("a light without shadows is shadowless, with a warning when highlights exist",
           "[povray][lights]") {
   Exported plain = exportScene(R"XML(<light position="0 5 0" shadows="false"/>
