@@ -47,7 +47,7 @@ sphere { 0, 1 pigment { rgb 1 } }
   const Camera& imported = r->load.scene->cameras.front();
   REQUIRE(imported.normal);
   CHECK(imported.normal->pattern.waveSources == 1);
-  PovCamera pov;
+  sdl::PovCamera pov;
   pov.location = Vec3(0.5, 1, -3);
   pov.lookAt = Vec3(0, 1.2, 0);
   pov.angle = 50.0;
