@@ -96,8 +96,8 @@ TEST_CASE("camera normal's image point follows POV-Ray's camera types", "[render
   spherical.vAngle = 90.0;
   // (x0, y0) scaled to the longitude and latitude, in radians.
   const Vec3 s = cameraNormalPoint(spherical, frame, Vec2(30, 10), Vec3(0, 0, -1), 40, 40);
-  CHECK(s.x == Approx(0.25 * kPi * 0.5));
-  CHECK(s.y == Approx(0.25 * kPi * 0.25));
+  CHECK(s.x == Approx(0.25 * kPi));        // x0 = 1/4 of 180 degrees
+  CHECK(s.y == Approx(0.25 * kPi * 0.5));  // y0 = 1/4 of 90 degrees
   CHECK(s.z == 0.0);
   Camera panoramic;
   panoramic.type = CameraType::Panoramic;
