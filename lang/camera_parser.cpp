@@ -5,6 +5,7 @@
 // the message for an attribute of another type, which names the types it belongs to.
 #include "element_input.h"
 #include "element_parsers.h"
+#include "pattern_parser.h"
 
 namespace lucent {
 
@@ -74,9 +75,19 @@ void parseCamera(ElementReader& r) {
   }
   checkCamera(cam, in);
 
+  // <normal>: POV-Ray's camera normal, which bends the primary rays (render/camera_normal.h).
+  std::optional<SourceLoc> normalLoc;
   r.forEachChild([&](pugi::xml_node n) {
-    ElementReader(ctx, r.file(), n)
-        .error("<camera> takes no child elements, got <" + std::string(n.name()) + ">");
+    ElementReader child(ctx, r.file(), n);
+    if (std::string_view(n.name()) != "normal") {
+      child.error("<camera> takes one <normal> child at most (POV-Ray's camera normal), got <" +
+                  std::string(n.name()) + ">");
+    } else if (normalLoc) {
+      child.error("<camera> holds one <normal> at most; the first is at " + normalLoc->str());
+    } else {
+      normalLoc = child.loc();
+      cam.normal = parseNormal(child);
+    }
   });
   ctx.scene.cameras.push_back(std::move(cam));
 }

@@ -70,6 +70,7 @@ const std::vector<std::string_view> kValueAttributes{"type",
                                                      "exterior",
                                                      "interior",
                                                      "agate-turb",
+                                                     "sources",
                                                      "function",
                                                      "direction",
                                                      "point-at",
@@ -372,6 +373,9 @@ void parseTypeAttributes(ElementReader& r, PatternSpec& s) {
     s.tiling = static_cast<int>(r.integer("tiling", s.tiling, 1, 27));
   if (onlyFor(r, "agate-turb", s.type == PatternType::agate, "agate", s.type))
     s.agateTurb = r.number("agate-turb", s.agateTurb);
+  const bool waves = s.type == PatternType::ripples || s.type == PatternType::waves;
+  if (onlyFor(r, "sources", waves, "ripples or waves", s.type))
+    s.waveSources = static_cast<int>(r.integer("sources", s.waveSources, 1, kMaxWaveSources));
   const bool function = s.type == PatternType::function;
   if (function && !r.has("function"))
     r.error(r.tag() + " type=\"function\" needs 'function' (an expression of x, y and z)");

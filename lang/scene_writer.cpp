@@ -198,7 +198,11 @@ class SceneWriter {
       for (auto& kv : probed(c, plain, attr.read, c.loc, "camera", false)) a.push_back(kv);
     }
     out_.source(c.loc);
-    out_.open("camera", a, true);
+    out_.open("camera", a, !c.normal);
+    if (c.normal) {
+      writeNormalElement(*c.normal, c.loc, out_, opt_.folder);
+      out_.close("camera");
+    }
   }
 
   Attributes lightAttributesOf(const Light& l) {

@@ -164,6 +164,9 @@ void addTypeAttributes(const PatternSpec& s, const SourceLoc& loc, Attributes& a
   }
   if (s.type == PatternType::agate && s.agateTurb != d.agateTurb)
     a.emplace_back("agate-turb", xmlNumber(s.agateTurb));
+  const bool waves = s.type == PatternType::ripples || s.type == PatternType::waves;
+  if (waves && s.waveSources != d.waveSources)
+    a.emplace_back("sources", std::to_string(s.waveSources));
   if (s.type == PatternType::slope) {
     const SlopeParams& p = s.slope;
     a.emplace_back(p.pointAt ? "point-at" : "direction", xmlVector(p.direction));
@@ -402,6 +405,11 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
 }
 
 }  // namespace
+
+void writeNormalElement(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
+                        const std::string& folder) {
+  writeNormal(n, loc, out, folder);
+}
 
 void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
                   const std::string& folder) {

@@ -47,6 +47,9 @@ void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& 
                          const std::string& folder);
 // <pigment-function name component>TEXTURE</pigment-function>: a pigment a function calls.
 void writePigmentFunction(const PigmentFunction& f, const SourceLoc& loc, XmlOut& out);
+// <normal ...> with its children (a material's, a camera's).
+void writeNormalElement(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
+                        const std::string& folder);
 // A texture element (<checker>, <image>, <pattern>...); file references relative to
 // `folder`.
 void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,

@@ -1,5 +1,7 @@
 #include "pov_camera.h"
 
+#include "pov_patterns.h"
+
 #include <fmt/core.h>
 
 #include <cmath>
@@ -83,6 +85,7 @@ void writeImagePlane(const Camera& camera, const PovCameraFrame& frame, PovWrite
   out.line("direction " + povVector(forward));
   out.line("right " + povVector(world(camera.imagePlane->right)));
   out.line("up " + povVector(world(camera.imagePlane->up)));
+  if (camera.normal) writeNormal(*camera.normal, out);
   out.close();
 }
 
@@ -123,6 +126,9 @@ void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& 
   out.line("location " + povVector(frame.location));
   out.line("sky " + povVector(type.pov.reversedSky ? -frame.sky : frame.sky));
   out.line("look_at " + povVector(frame.lookAt));
+  // Lucent's coordinates are written unchanged and POV-Ray's image point is Lucent's, so the
+  // normal bends the same rays the same way.
+  if (camera.normal) writeNormal(*camera.normal, out);
   out.close();
 }
 

@@ -7,6 +7,7 @@
 #include "pov_materials.h"
 #include "pov_patterns.h"
 #include "pov_runner.h"
+#include "pov_wave_sources.h"
 
 #include "scenegraph/overloaded.h"
 
@@ -132,6 +133,15 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   PovWriter declarations, objects, objectPatterns;
   geometry.writeObjectPatterns(objectPatterns);
   geometry.write(declarations, objects);
+  if (const std::optional<int> waves =
+          sharedWaveSources(scene, geometry.usedMaterials(), *camera, issues)) {
+    // Known once the materials in use are: a second block, as POV-Ray takes each setting
+    // wherever it is written.
+    out.open("global_settings");
+    out.line(fmt::format("number_of_waves {}", *waves));
+    out.close();
+    out.blank();
+  }
 
   const bool anySpecular = materials.anySpecular(geometry.usedMaterials());
   for (const Light& light : scene.lights) writeLight(light, anySpecular, out, issues);

@@ -1,5 +1,6 @@
 #include "projection.h"
 
+#include "camera_normal.h"
 #include "cubemap.h"
 #include "cylinder_camera.h"
 #include "fibonacci.h"
@@ -54,10 +55,10 @@ class SphericalProjection final : public Projection {
 
 }  // namespace
 
+namespace {
+
 // The one table from camera type to ray generator (style: no self-registration).
-std::unique_ptr<Projection> makeProjection(const Camera& camera, int width, int height) {
-  if (width <= 0 || height <= 0)
-    throw std::invalid_argument(fmt::format("image size {}x{} is empty", width, height));
+std::unique_ptr<Projection> projectionOfType(const Camera& camera, int width, int height) {
   CameraFrame frame = makeCameraFrame(camera);
   switch (camera.type) {
     case CameraType::Pinhole:
@@ -91,6 +92,16 @@ std::unique_ptr<Projection> makeProjection(const Camera& camera, int width, int 
   }
   throw std::logic_error(fmt::format("{}: camera type {} has no projection", camera.loc.str(),
                                      static_cast<int>(camera.type)));
+}
+
+}  // namespace
+
+std::unique_ptr<Projection> makeProjection(const Camera& camera, int width, int height) {
+  if (width <= 0 || height <= 0)
+    throw std::invalid_argument(fmt::format("image size {}x{} is empty", width, height));
+  std::unique_ptr<Projection> projection = projectionOfType(camera, width, height);
+  if (camera.normal) return bentByCameraNormal(std::move(projection), camera, width, height);
+  return projection;
 }
 
 }  // namespace lucent

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "attribute_info.h"
+#include "pattern.h"
 #include "source_loc.h"
 
 #include "primitives/math.h"
@@ -100,6 +101,9 @@ struct Camera {
   // panoramic: POV-Ray's |right| and |up| over |direction|.
   double rightLength = 1.0;
   double upLength = 1.0;
+  // <normal>: POV-Ray's camera normal. Each primary ray's direction is bent as a surface
+  // normal would be, by the pattern at the image point (x0, y0, 0) (render/camera_normal.h).
+  std::optional<NormalSpec> normal;
 };
 
 // The exporter's side of writing one camera's POV-Ray block (povray/pov_camera.cpp

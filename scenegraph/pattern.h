@@ -290,6 +290,11 @@ struct TextureMapEntry;
 struct ImagePattern;   // image_pattern.h
 struct ObjectPattern;  // object_pattern.h
 
+// POV-Ray's default number_of_waves, and the most sources Lucent's ripples and waves take
+// (each costs a sine at every evaluation).
+constexpr int kDefaultWaveSources = 10;
+constexpr int kMaxWaveSources = 1000;
+
 struct PatternSpec {
   PatternType type = PatternType::bozo;
   PatternPlacement placement;
@@ -302,7 +307,10 @@ struct PatternSpec {
   CrackleParams crackle;
   QuiltedParams quilted;
   FractalParams fractal;
-  double agateTurb = 1.0;   // agate's turbulence scale (POV-Ray's agate_turb)
+  double agateTurb = 1.0;  // agate's turbulence scale (POV-Ray's agate_turb)
+  // ripples and waves: how many of POV-Ray's fixed wave sources they sum (its
+  // global_settings number_of_waves, 1 to kMaxWaveSources).
+  int waveSources = kDefaultWaveSources;
   SlopeParams slope;        // type slope
   int tiling = 1;           // tiling's number, 1..27 (render/patterns/tiling.h)
   FacetsParams facets;      // type facets

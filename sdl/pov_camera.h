@@ -1,6 +1,7 @@
 // POV-Ray's camera block and its meaning in Lucent (docs/povray-import.md, "Camera").
 #pragma once
 
+#include "pov_finish.h"
 #include "pov_space.h"
 
 #include "scenegraph/camera.h"
@@ -49,6 +50,10 @@ struct PovCamera {
   bool upGiven = false;
   // translate, rotate, scale, matrix, transform inside the block: applied last.
   PovTransform transform;
+  // `normal { }`: bends the primary rays, with its own transforms only (the camera's do not
+  // move it); imported by SceneReader::importCameraNormal.
+  std::optional<PovNormal> normal;
+  SourceLoc normalLoc;
 };
 
 // The camera's vectors once POV-Ray has applied its modifiers, in POV-Ray's space:

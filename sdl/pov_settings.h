@@ -25,6 +25,7 @@ struct PovGlobalSettings {
   // The noise of the patterns that do not choose theirs (POV-Ray 3.7's default, range
   // corrected); the importer marks those patterns with 0 until the scene is read.
   int noiseGenerator = 2;
+  int numberOfWaves = kDefaultWaveSources;  // the sources of ripples and waves
 };
 
 // `background { colour }` (default black; its filter and transmit do not show).

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace lucent::sdl {
 
 namespace {
@@ -86,6 +88,10 @@ PovCamera SceneReader::readCamera(TokenStream& in) {
         in.parseComma();
         c.verticalAngle = in.parseFloat();
       }
+    } else if (w == "normal") {
+      // Starts from the camera's normal so far, or as any normal from the default one.
+      c.normal = readNormal(in, c.normal ? &*c.normal : nullptr);
+      c.normalLoc = t.loc();
     } else if (w == "aperture" || w == "blur_samples" || w == "focal_point" || w == "confidence" ||
                w == "variance") {
       // Focal blur: read and left out, said (docs/povray-import.md, "Camera").
@@ -214,11 +220,18 @@ void SceneReader::readGlobalSettings(TokenStream& in) {
       if (g < 1 || g > 3) in.error(t, "noise_generator must be 1, 2 or 3");
       global_.noiseGenerator = static_cast<int>(g);
     } else if (w == "number_of_waves") {
-      // The sources of ripples and waves: Lucent has POV-Ray's default 10.
-      if (in.parseFloat() != 10.0)
-        warn(in, t.loc(),
-             "number_of_waves is not imported (Lucent's ripples and waves use POV-Ray's "
-             "default 10 sources)");
+      // The sources of every ripples and waves (finishScene gives them the count). POV-Ray
+      // truncates the number and makes one below 1 into 1, with a warning.
+      const double n = std::trunc(in.parseFloat());
+      if (n < 1) {
+        warn(in, t.loc(), "number_of_waves below 1 is 1 (as POV-Ray makes it)");
+        global_.numberOfWaves = 1;
+      } else if (n > kMaxWaveSources) {
+        in.error(t, "number_of_waves above " + std::to_string(kMaxWaveSources) +
+                        " is not supported by Lucent");
+      } else {
+        global_.numberOfWaves = static_cast<int>(n);
+      }
     } else if (w == "max_intersections" || w == "mm_per_unit") {
       in.parseFloat();  // no effect on Lucent's image
     } else if (w == "hf_gray_16") {

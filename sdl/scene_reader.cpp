@@ -402,6 +402,25 @@ Material SceneReader::importTexture(const PovTexture& texture, const PovInterior
   return m;
 }
 
+void SceneReader::importCameraNormal(const PovCamera& camera, Camera& imported, TokenStream& in) {
+  if (!camera.normal) return;
+  const PovNormal& n = *camera.normal;
+  if (n.bump) {
+    keepError(in, camera.normalLoc,
+              "a camera's bump_map is not supported by Lucent (a camera's normal is a pattern)");
+    return;
+  }
+  if (!n.patterned) {
+    keepError(in, camera.normalLoc, "a normal without a pattern (POV-Ray: 'No normal type given')");
+    return;
+  }
+  Mat4 povFromLucent(1.0);
+  povFromLucent[2][2] = -1.0;
+  imported.normal = n.spec;
+  imported.normal->pattern.placement.patternFromObject =
+      glm::inverse(n.transform.povMatrix()) * povFromLucent;
+}
+
 // One layer of a texture as a Lucent material: its pigment, finish and normal, placed.
 Material SceneReader::importLayer(const PovTexture& layer, const PovInterior& interior,
                                   const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in,
@@ -651,9 +670,12 @@ void SceneReader::finishScene(TokenStream& in) {
     in.warning(s.first, "left out (--skip-unsupported): " + s.message + "; " +
                             std::to_string(s.count) + (s.count == 1 ? " place" : " places") +
                             ", the first here");
-  // The patterns that did not choose a noise generator take global_settings' one.
+  // The patterns that did not choose a noise generator take global_settings' one, and
+  // ripples and waves its number_of_waves (wherever global_settings stands in the file).
   auto noise = [&](PatternSpec& s) {
     if (s.noiseGenerator == 0) s.noiseGenerator = global_.noiseGenerator;
+    if (s.type == PatternType::ripples || s.type == PatternType::waves)
+      s.waveSources = global_.numberOfWaves;
   };
   std::function<void(Material&)> materialNoise = [&](Material& m) {
     forEachPattern(m.texture, noise);
@@ -689,6 +711,8 @@ void SceneReader::finishScene(TokenStream& in) {
   }
   for (const std::string& d : imported.differences) warn(in, cameraLoc, d);
   imported.camera.loc = cameraLoc;
+  importCameraNormal(camera, imported.camera, in);
+  if (imported.camera.normal) forEachNormalPattern(*imported.camera.normal, noise);
   scene_.cameras = {imported.camera};
   try {
     scene_.lights = placeLights(scene_, 10'000'000);

@@ -343,6 +343,9 @@ class SceneReader : public ItemReader {
 
   // read_textures.cpp
   PovNormal readNormal(TokenStream& in, const PovNormal* start);
+  // The camera's normal on the imported camera, placed in POV-Ray's space (its image point
+  // (x0, y0, 0) is the same in both spaces; the ray's direction is carried by the mirror).
+  void importCameraNormal(const PovCamera& camera, Camera& imported, TokenStream& in);
   PovPigment readPigment(TokenStream& in, const PovPigment& start);
   // A pigment's or a normal's keywords up to the '}' of its block, or (inEntry) up to the
   // ']' of a map's entry; both read. An entry's colours keep their filter and transmit.

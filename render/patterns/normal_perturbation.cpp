@@ -81,9 +81,9 @@ Vec3 perturbByPattern(const NormalSpec& normal, Vec3 n, const Vec3& p, double am
     case PatternType::quilted:  // POV-Ray's own quilted normal, not the slope
       return addScaled(n, amount, quiltedOffset(p, spec.quilted));
     case PatternType::ripples:
-      return ripplesNormal(n, p, spec.frequency, spec.phase, amount);
+      return ripplesNormal(n, p, spec.frequency, spec.phase, amount, spec.waveSources);
     case PatternType::waves:
-      return wavesNormal(n, p, spec.frequency, spec.phase, amount);
+      return wavesNormal(n, p, spec.frequency, spec.phase, amount, spec.waveSources);
     case PatternType::facets:  // POV-Ray's facets takes no amount
       return facetsNormal(spec.facets, n, p);
     default:

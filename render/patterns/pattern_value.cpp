@@ -224,9 +224,9 @@ double rawPatternValue(const PatternSpec& spec, const Vec3& p) {
     case PatternType::dents:
       return dents(p, gen);
     case PatternType::ripples:
-      return ripplesValue(p, spec.frequency, spec.phase);
+      return ripplesValue(p, spec.frequency, spec.phase, spec.waveSources);
     case PatternType::waves:
-      return wavesValue(p, spec.frequency, spec.phase);
+      return wavesValue(p, spec.frequency, spec.phase, spec.waveSources);
     case PatternType::planar:
       return planar(p);
     case PatternType::quilted:

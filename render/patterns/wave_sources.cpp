@@ -34,7 +34,7 @@ const WaveSources& waveSources() {
   static const WaveSources sources = [] {
     WaveSources w;
     uint32_t state = static_cast<uint32_t>(-560851967);  // POV-Ray's seed for the waves
-    for (int i = 0; i < kWaveCount; ++i) {
+    for (int i = 0; i < kMaxWaveSources; ++i) {
       const Vec3 d = dnoise(Vec3(static_cast<double>(i), 0.0, 0.0));
       const double l = length(d);
       w.source[i] = l != 0.0 ? Vec3(d.x / l, d.y / l, d.z / l) : d;
@@ -46,26 +46,26 @@ const WaveSources& waveSources() {
   return sources;
 }
 
-double ripplesValue(const Vec3& p, double frequency, double phase) {
+double ripplesValue(const Vec3& p, double frequency, double phase, int count) {
   const WaveSources& w = waveSources();
   const double f = single(frequency), ph = single(phase);
   double scalar = 0.0;
-  for (int i = 0; i < kWaveCount; ++i) {
+  for (int i = 0; i < count; ++i) {
     const Source s = fromSource(p, w.source[i]);
     scalar += cycloidal(s.length * f + ph);
   }
-  return 0.5 * (1.0 + (scalar / static_cast<double>(kWaveCount)));
+  return 0.5 * (1.0 + (scalar / static_cast<double>(count)));
 }
 
-double wavesValue(const Vec3& p, double frequency, double phase) {
+double wavesValue(const Vec3& p, double frequency, double phase, int count) {
   const WaveSources& w = waveSources();
   const double f = single(frequency), ph = single(phase);
   double scalar = 0.0;
-  for (int i = 0; i < kWaveCount; ++i) {
+  for (int i = 0; i < count; ++i) {
     const Source s = fromSource(p, w.source[i]);
     scalar += cycloidal(s.length * f * w.frequency[i] + ph) / w.frequency[i];
   }
-  return 0.2 * (2.5 + (scalar / static_cast<double>(kWaveCount)));
+  return 0.2 * (2.5 + (scalar / static_cast<double>(count)));
 }
 
 namespace {
@@ -73,15 +73,15 @@ namespace {
 // Ripples and waves bend the normal alike; waves scale each source by its own frequency
 // (multiplying and dividing by 1 for ripples leaves POV-Ray's values bit for bit).
 Vec3 bendByWaveSources(const Vec3& normal, const Vec3& p, double frequency, double phase,
-                       double amount, bool perSourceFrequency) {
+                       double amount, int count, bool perSourceFrequency) {
   const WaveSources& w = waveSources();
   const double f = single(frequency), ph = single(phase);
   Vec3 n = normal;
-  for (int i = 0; i < kWaveCount; ++i) {
+  for (int i = 0; i < count; ++i) {
     const Source s = fromSource(p, w.source[i]);
     const double fi = perSourceFrequency ? w.frequency[i] : 1.0;
     const double scalar = cycloidal(s.length * f * fi + ph) * amount / fi;
-    const double k = scalar / (s.length * static_cast<double>(kWaveCount));
+    const double k = scalar / (s.length * static_cast<double>(count));
     n.x += k * s.toPoint.x;
     n.y += k * s.toPoint.y;
     n.z += k * s.toPoint.z;
@@ -91,13 +91,14 @@ Vec3 bendByWaveSources(const Vec3& normal, const Vec3& p, double frequency, doub
 
 }  // namespace
 
-Vec3 ripplesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase,
-                   double amount) {
-  return bendByWaveSources(normal, p, frequency, phase, amount, false);
+Vec3 ripplesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase, double amount,
+                   int count) {
+  return bendByWaveSources(normal, p, frequency, phase, amount, count, false);
 }
 
-Vec3 wavesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase, double amount) {
-  return bendByWaveSources(normal, p, frequency, phase, amount, true);
+Vec3 wavesNormal(const Vec3& normal, const Vec3& p, double frequency, double phase, double amount,
+                 int count) {
+  return bendByWaveSources(normal, p, frequency, phase, amount, count, true);
 }
 
 }  // namespace lucent

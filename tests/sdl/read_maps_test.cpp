@@ -151,19 +151,34 @@ sphere { 0, 1
   CHECK(m.normal->average[1].normal.depth == 5.0);
 }
 
-TEST_CASE("scene reader maps: number_of_waves other than 10 is said not imported",
+TEST_CASE("scene reader maps: number_of_waves gives every ripples and waves its sources",
           "[sdl][scene][settings]") {
-  // Lucent's ripples and waves (in averages too) have POV-Ray's default 10 sources.
-  auto count = [](const std::string& text) {
-    auto r = readScene(text);
-    REQUIRE(r->load.scene);
-    size_t said = 0;
-    for (const std::string& w : r->out.warnings)
-      said += w ==
-              "test.pov:1:19: warning: number_of_waves is not imported (Lucent's ripples and "
-              "waves use POV-Ray's default 10 sources)";
-    return said;
-  };
-  CHECK(count("global_settings { number_of_waves 1 }\nsphere { 0, 1 normal { waves } }\n") == 1);
-  CHECK(count("global_settings { number_of_waves 10 }\nsphere { 0, 1 normal { waves } }\n") == 0);
+  // Wherever global_settings stands, in averages too; other patterns keep the default.
+  auto r = readScene(
+      "sphere { 0, 1 normal { average normal_map { [1 waves] [1 ripples] } } }\n"
+      "sphere { 0, 1 pigment { waves } }\n"
+      "sphere { 0, 1 pigment { bozo } }\n"
+      "global_settings { number_of_waves 3.7 }\n");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const NormalSpec& n = *materialOf(s, 0).normal;
+  REQUIRE(n.average.size() == 2);
+  CHECK(n.average[0].normal.pattern.waveSources == 3);  // truncated, as POV-Ray does
+  CHECK(n.average[1].normal.pattern.waveSources == 3);
+  CHECK(std::get<PatternTexture>(materialOf(s, 1).texture).pattern.waveSources == 3);
+  CHECK(std::get<PatternTexture>(materialOf(s, 2).texture).pattern.waveSources == 10);
+  CHECK(r->out.warnings.empty());
+}
+
+TEST_CASE("scene reader maps: number_of_waves below 1 is 1, above Lucent's limit refused",
+          "[sdl][scene][settings]") {
+  auto r = readScene("global_settings { number_of_waves 0 }\nsphere { 0, 1 pigment { waves } }\n");
+  REQUIRE(r->load.scene);
+  CHECK(std::get<PatternTexture>(materialOf(*r->load.scene, 0).texture).pattern.waveSources == 1);
+  REQUIRE(r->out.warnings.size() == 1);
+  CHECK(r->out.warnings[0] ==
+        "test.pov:1:19: warning: number_of_waves below 1 is 1 (as POV-Ray makes it)");
+  CHECK(errorsOf("global_settings { number_of_waves 1001 }\n") ==
+        std::vector<std::string>{
+            "test.pov:1:19: error: number_of_waves above 1000 is not supported by Lucent"});
 }
