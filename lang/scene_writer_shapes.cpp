@@ -140,6 +140,16 @@ std::optional<OwnShapeText> own(const JuliaFractalSpec& s, const SourceLoc&, con
   return t;
 }
 
+std::optional<OwnShapeText> own(const SphereSweepSpec& s, const SourceLoc&, const std::string&) {
+  static const char* const kSweepSplines[] = {"linear", "cubic", "b-spline"};
+  OwnShapeText t;
+  std::string spheres;
+  for (const SweepSphere& sp : s.spheres)
+    spheres += (spheres.empty() ? "" : ", ") + xmlVector(sp.center) + " " + xmlNumber(sp.radius);
+  t.attributes = {{"spheres", spheres}, {"spline", kSweepSplines[static_cast<size_t>(s.spline)]}};
+  return t;
+}
+
 std::optional<OwnShapeText> own(const LatheSpec& s, const SourceLoc&, const std::string&) {
   OwnShapeText t;
   t.attributes = {{"points", pairList(s.points)}, {"spline", kSplines[static_cast<int>(s.spline)]}};

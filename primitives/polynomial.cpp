@@ -192,6 +192,14 @@ int polynomialRoots(const double* c, const double* cAbs, int n, double lo, doubl
       return polynomialRootsN<5>(c, cAbs, lo, hi, out);
     case 6:
       return polynomialRootsN<6>(c, cAbs, lo, hi, out);
+    case 7:
+      return polynomialRootsN<7>(c, cAbs, lo, hi, out);
+    case 8:
+      return polynomialRootsN<8>(c, cAbs, lo, hi, out);
+    case 9:
+      return polynomialRootsN<9>(c, cAbs, lo, hi, out);
+    case 10:
+      return polynomialRootsN<10>(c, cAbs, lo, hi, out);
   }
   return 0;
 }

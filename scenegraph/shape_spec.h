@@ -11,6 +11,7 @@
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
 #include "primitives/prism_outline.h"
+#include "primitives/sphere_sweep.h"
 #include "primitives/text_outline.h"
 
 #include <array>
@@ -172,10 +173,16 @@ struct BicubicPatchSpec {
 // POV-Ray's julia_fractal: the 3-D slice of a 4-D Julia set (primitives/julia_map.h), its
 // parameters as written (the slice made unit when built).
 struct JuliaFractalSpec : JuliaParams {};
+// POV-Ray's sphere_sweep: control spheres joined by a spline (primitives/sphere_sweep.h).
+struct SphereSweepSpec {
+  SweepSpline spline = SweepSpline::Linear;
+  std::vector<SweepSphere> spheres;  // required: radii >= 0, not all 0
+  double tolerance = 1e-6;           // POV-Ray's depth tolerance: written, not used
+};
 using ShapeSpec =
     std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec, DiscSpec,
                  TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec, PolySpec, PrismSpec,
                  BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec, SorSpec, HeightFieldSpec,
-                 PolygonSpec, BicubicPatchSpec, JuliaFractalSpec>;
+                 PolygonSpec, BicubicPatchSpec, JuliaFractalSpec, SphereSweepSpec>;
 
 }  // namespace lucent

@@ -13,6 +13,7 @@
 #include "primitives/poly.h"
 #include "primitives/polygon.h"
 #include "primitives/sor.h"
+#include "primitives/sphere_sweep.h"
 #include "primitives/superellipsoid.h"
 #include "scenegraph/pigment_function.h"
 #include "scenegraph/shape_type.h"
@@ -32,18 +33,17 @@ namespace {
 constexpr double kPovEpsilon = 1e-10;
 
 constexpr std::string_view kShapes[] = {
-    "sphere",        "box",          "plane",    "cylinder",        "cone",
-    "torus",         "disc",         "triangle", "smooth_triangle", "quadric",
-    "poly",          "cubic",        "quartic",  "polynomial",      "blob",
-    "lathe",         "sor",          "prism",    "superellipsoid",  "text",
-    "height_field",  "mesh",         "mesh2",    "isosurface",      "polygon",
-    "bicubic_patch", "julia_fractal"};
+    "sphere",        "box",           "plane",       "cylinder",        "cone",
+    "torus",         "disc",          "triangle",    "smooth_triangle", "quadric",
+    "poly",          "cubic",         "quartic",     "polynomial",      "blob",
+    "lathe",         "sor",           "prism",       "superellipsoid",  "text",
+    "height_field",  "mesh",          "mesh2",       "isosurface",      "polygon",
+    "bicubic_patch", "julia_fractal", "sphere_sweep"};
 
 // POV-Ray's shapes Lucent has no equivalent of, with the nearest Lucent feature.
 const std::map<std::string_view, std::string_view>& unsupportedShapes() {
   static const std::map<std::string_view, std::string_view> shapes = {
       {"parametric", "parametric surfaces; the nearest Lucent shape is <isosurface>"},
-      {"sphere_sweep", "swept spheres; a linear one is a <union> of <sphere> and <cone> elements"},
       {"ovus", "the ovus; the nearest Lucent shapes are <lathe> and <sor>"},
       {"lemon", "the lemon; the nearest Lucent shapes are <lathe> and <sor>"},
   };
@@ -265,6 +265,8 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
     readBicubicPatch(o, in);
   } else if (w == "julia_fractal") {
     readJuliaFractal(o, in);
+  } else if (w == "sphere_sweep") {
+    readSphereSweep(o, in);
   } else if (w == "superellipsoid") {
     const Vec2 en = parseUv(in);
     // Poles on z in both: z → −z maps the shape onto itself.
@@ -709,6 +711,51 @@ void SceneReader::readJuliaFractal(PovObject& o, TokenStream& in) {
              "illegal function: quaternion only supports sqr and cube (POV-Ray's "
              "error)");
   o.transform.scale(Vec3(1.0, 1.0, -1.0));
+  o.shape = std::move(s);
+}
+
+// sphere_sweep { linear_spline|cubic_spline|b_spline [,] N, <c>, r, ... [tolerance T] }:
+// POV-Ray's parser's rules (the spline first, N read as a float and truncated, at least 2
+// spheres, 4 for the cubic splines); the centres into Lucent's space. POV-Ray takes a
+// negative radius; Lucent refuses it at the number.
+void SceneReader::readSphereSweep(PovObject& o, TokenStream& in) {
+  SphereSweepSpec s;
+  if (allowWord(in, "linear_spline")) s.spline = SweepSpline::Linear;
+  else if (allowWord(in, "cubic_spline")) s.spline = SweepSpline::Cubic;
+  else if (allowWord(in, "b_spline")) s.spline = SweepSpline::BSpline;
+  else
+    in.error(in.peek().loc(),
+             "the sphere_sweep's spline expected: linear_spline, cubic_spline or b_spline "
+             "(POV-Ray's 'Invalid type of interpolation')");
+  in.parseComma();
+  const SourceLoc countLoc = in.peek().loc();
+  const int n = parseCount(in, "number of spheres");
+  if (n < SphereSweep::minSpheres(s.spline))
+    in.error(countLoc, std::string(s.spline == SweepSpline::Linear
+                                       ? "a linear_spline sphere_sweep needs 2 spheres or more"
+                                       : "a cubic_spline or b_spline sphere_sweep needs 4 "
+                                         "spheres or more") +
+                           ", not " + std::to_string(n) +
+                           " (POV-Ray's 'Too few modeling spheres')");
+  for (int i = 0; i < n; ++i) {
+    in.parseComma();
+    SweepSphere sphere;
+    sphere.center = point(in);
+    in.parseComma();
+    const SourceLoc radiusLoc = in.peek().loc();
+    sphere.radius = in.parseFloat();
+    if (sphere.radius < 0.0)
+      in.error(radiusLoc, "a negative sphere_sweep radius is not supported by Lucent (radii >= 0)");
+    s.spheres.push_back(sphere);
+  }
+  if (allowWord(in, "tolerance")) s.tolerance = in.parseFloat();
+  try {
+    SphereSweep check(s.spline, s.spheres);
+  } catch (const std::invalid_argument& e) {
+    refuseShape(o, o.loc, in,
+                std::string("this sphere_sweep is not supported by Lucent (") + e.what() + ")");
+    return;
+  }
   o.shape = std::move(s);
 }
 

@@ -389,3 +389,24 @@ TEST_CASE("scene writer: a julia fractal keeps its parameter, algebra, function 
     CHECK(b.slice == Vec4(0.0, 0.0, 0.0, 1.0));
   }
 }
+
+TEST_CASE("scene writer: a sphere sweep keeps its spline, spheres and tolerance",
+          "[lang][scene-writer]") {
+  auto r = roundTrip(
+      "<sphere-sweep spline=\"b-spline\" spheres=\"0 0 0 0.5, 1 0.25 -1 0.125, 2 0 0 0, 3.5 1 2 "
+      "0.75\" tolerance=\"0.001\"/>");
+  auto [a, b] = specs<SphereSweepSpec>(r);
+  CHECK(b.spline == SweepSpline::BSpline);
+  REQUIRE(b.spheres.size() == 4);
+  for (size_t i = 0; i < 4; ++i) {
+    CHECK(b.spheres[i].center == a.spheres[i].center);
+    CHECK(b.spheres[i].radius == a.spheres[i].radius);
+  }
+  CHECK(b.spheres[1].center == Vec3(1, 0.25, -1));
+  CHECK(b.tolerance == 0.001);
+  auto l = roundTrip("<sphere-sweep spheres=\"0 0 0 1, 1 0 0 0.5\"/>");
+  auto [c, d] = specs<SphereSweepSpec>(l);
+  CHECK(d.spline == SweepSpline::Linear);
+  CHECK(d.spheres.size() == 2);
+  CHECK(d.tolerance == 1e-6);
+}

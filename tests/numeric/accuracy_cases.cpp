@@ -539,10 +539,10 @@ std::vector<CaseResult> nearSingularCases(double effort) {
 
 std::vector<CaseResult> allCases(double effort) {
   std::vector<CaseResult> all;
-  for (auto family :
-       {baselineCases, grazingCases, farAndScaledCases, secondaryRayCases, zeroDirectionCases,
-        nearSingularCases, superellipsoidCases, quadricCases, blobCases, prismCases, latheCases,
-        isosurfaceCases, textCases, sorCases, heightFieldCases, meshCases, meshAlongEdgeCases}) {
+  for (auto family : {baselineCases, grazingCases, farAndScaledCases, secondaryRayCases,
+                      zeroDirectionCases, nearSingularCases, superellipsoidCases, quadricCases,
+                      blobCases, prismCases, latheCases, isosurfaceCases, textCases, sorCases,
+                      sweepCases, heightFieldCases, meshCases, meshAlongEdgeCases}) {
     std::vector<CaseResult> part = family(effort);
     all.insert(all.end(), part.begin(), part.end());
   }

@@ -52,6 +52,9 @@ std::vector<CaseResult> textCases(double effort);
 // Surfaces of revolution (accuracy_sor_cases.cpp): a vase, random rays, rays tangent to its
 // silhouette, along and parallel to its axis, through its caps' rims; a bulb's poles.
 std::vector<CaseResult> sorCases(double effort);
+// Sphere sweeps (accuracy_sweep_cases.cpp): linear, Catmull-Rom and B-spline sweeps through
+// the same spheres, random rays and rays tangent to the surface.
+std::vector<CaseResult> sweepCases(double effort);
 // Height fields (accuracy_height_field_cases.cpp): a 9 x 7 grid with a water level, random
 // rays, rays edge-on along its grid lines and diagonals, rays along its grid edges.
 std::vector<CaseResult> heightFieldCases(double effort);

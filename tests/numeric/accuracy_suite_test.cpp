@@ -115,6 +115,11 @@ TEST_CASE(
   requireWithinBounds(sorCases(1.0));
 }
 
+TEST_CASE("accuracy: sphere sweeps: linear, cubic and b-spline, random and tangent rays",
+          "[numeric][accuracy][sweep]") {
+  requireWithinBounds(sweepCases(1.0));
+}
+
 TEST_CASE(
     "accuracy: height fields: random rays, edge-on along grid lines and diagonals, along grid "
     "edges",

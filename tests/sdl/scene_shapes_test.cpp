@@ -415,7 +415,7 @@ TEST_CASE("scene shapes: what Lucent has no shape for, refused at the keyword, e
 union { parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
         sphere { 0, 1 } }
 #declare P = ovus { 1, 0.5 } object { P }
-sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 0, 0>, 1 }
+parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
 ovus { 1, 0.5 }
 poly { 6, <1> }
 superellipsoid { <0, 1> }
@@ -429,7 +429,7 @@ height_field { gif "x.gif" }
   CHECK(errors[1] ==
         "test.pov:4:14: error: 'ovus' is not supported by Lucent (the ovus; the nearest Lucent "
         "shapes are <lathe> and <sor>)\ntest.pov:4:39: note: the declaration is used here");
-  CHECK(errors[2].find("test.pov:5:1: error: 'sphere_sweep' is not supported by Lucent") == 0);
+  CHECK(errors[2].find("test.pov:5:1: error: 'parametric' is not supported by Lucent") == 0);
   CHECK(errors[3].find("test.pov:6:1: error: 'ovus' is not supported by Lucent") == 0);
   CHECK(errors[4] ==
         "test.pov:7:1: error: 'poly' of order 6 is not supported by Lucent (its poly takes orders "
@@ -686,4 +686,46 @@ TEST_CASE("scene shapes: julia_fractal's errors are POV-Ray's", "[sdl][scene][sh
             "test.pov:1:36: error: the julia_fractal's slice t component is zero"});
   CHECK(errorsOf("julia_fractal { <0.1, 0.2, 0.3, 0> slice 0, 0 }") ==
         std::vector<std::string>{"test.pov:1:36: error: the julia_fractal's slice vector is zero"});
+}
+
+TEST_CASE("scene shapes: sphere_sweep, its splines and tolerance, centres mirrored in z",
+          "[sdl][scene][shapes][sweep]") {
+  auto r = readScene(R"(
+sphere_sweep { linear_spline 2, <0, 0, 1>, 0.5, <1, 2, 3>, 0.25 }
+sphere_sweep { cubic_spline, 4.7, <0, 0, 0>, 1 <1, 0, 0>, 1, <2, 0, 0>, 1, <3, 0, 0>, 1 tolerance 0.01 }
+sphere_sweep { b_spline 4 <0, 0, 0> 1 <1, 0, 0> 1 <2, 0, 0> 1 <3, 0, 0> 0 }
+)");
+  REQUIRE(r->load.scene);
+  const auto& a = shapeOf<SphereSweepSpec>(*r->load.scene, 0);
+  CHECK(a.spline == SweepSpline::Linear);
+  REQUIRE(a.spheres.size() == 2);
+  CHECK(a.spheres[0].center == Vec3(0, 0, -1));
+  CHECK(a.spheres[1].center == Vec3(1, 2, -3));
+  CHECK(a.spheres[1].radius == 0.25);
+  CHECK(a.tolerance == 1e-6);
+  const auto& b = shapeOf<SphereSweepSpec>(*r->load.scene, 1);
+  CHECK(b.spline == SweepSpline::Cubic);
+  CHECK(b.spheres.size() == 4);  // 4.7 truncated, as POV-Ray's (int)
+  CHECK(b.tolerance == 0.01);
+  const auto& c = shapeOf<SphereSweepSpec>(*r->load.scene, 2);
+  CHECK(c.spline == SweepSpline::BSpline);
+  CHECK(c.spheres[3].radius == 0.0);
+  CHECK(warningsOf(*r).empty());
+}
+
+TEST_CASE("scene shapes: sphere_sweep's errors are POV-Ray's", "[sdl][scene][shapes][errors]") {
+  CHECK(errorsOf("sphere_sweep { cubic_spline 3, <0, 0, 0>, 1, <1, 0, 0>, 1, <2, 0, 0>, 1 }") ==
+        std::vector<std::string>{
+            "test.pov:1:29: error: a cubic_spline or b_spline sphere_sweep needs 4 spheres or "
+            "more, not 3 (POV-Ray's 'Too few modeling spheres')"});
+  CHECK(errorsOf("sphere_sweep { linear_spline 1, <0, 0, 0>, 1 }") ==
+        std::vector<std::string>{"test.pov:1:30: error: a linear_spline sphere_sweep needs 2 "
+                                 "spheres or more, not 1 (POV-Ray's 'Too few modeling spheres')"});
+  CHECK(errorsOf("sphere_sweep { 2, <0, 0, 0>, 1, <1, 0, 0>, 1 }") ==
+        std::vector<std::string>{
+            "test.pov:1:16: error: the sphere_sweep's spline expected: linear_spline, cubic_spline "
+            "or b_spline (POV-Ray's 'Invalid type of interpolation')"});
+  CHECK(errorsOf("sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 0, 0>, -1 }") ==
+        std::vector<std::string>{"test.pov:1:58: error: a negative sphere_sweep radius is not "
+                                 "supported by Lucent (radii >= 0)"});
 }
