@@ -1,8 +1,8 @@
 // The media a ray travels in: a small stack of the solids it has entered and not left,
 // innermost on top, so that leaving a glass inside water refracts into water (nested
-// objects, as POV-Ray's interior list). Keyed by material: a CSG solid's surfaces share
-// their material, so entering through one leaf and leaving through another pairs up; a
-// cut's wall looks its medium up by its interior terms (render/medium_crossing.h).
+// objects, as POV-Ray's interior list). Keyed by medium (sameMedium): a CSG solid's
+// surfaces share their material or its interior terms, so entering through one leaf and
+// leaving through another pairs up (render/medium_crossing.h).
 #pragma once
 
 #include "scenegraph/material.h"
@@ -49,11 +49,12 @@ class MediaStack {
       if (sameMedium(*items_[i], m)) return items_[i];
     return nullptr;
   }
-  // Removes the innermost occurrence of m; returns false (and changes nothing) if the ray
-  // was not known to be inside m (a camera inside a solid it did not start in, say).
+  // Removes the innermost occurrence of m's medium (m, or a material with its interior
+  // terms); returns false (and changes nothing) if the ray was not known to be inside it (a
+  // camera inside a solid it did not start in, say).
   bool remove(const Material* m) {
     for (int i = size_ - 1; i >= 0; --i) {
-      if (items_[i] != m) continue;
+      if (!sameMedium(*items_[i], *m)) continue;
       for (int j = i; j + 1 < size_; ++j) items_[j] = items_[j + 1];
       --size_;
       return true;

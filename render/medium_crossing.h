@@ -13,26 +13,22 @@ struct MediumCrossing {
   bool leaving = false;              // the ray was inside `medium`; else it enters it
 };
 
-// A surface that bounds its own part (not `cut`) is left or entered by its side: the part's
-// medium, its material, is behind its outward normal. A cut wall (Hit::flip: a later
-// operand of a difference, an inverse part) bounds the cut, which holds the cut part's
-// medium as POV-Ray gives each CSG part an interior of its own: the ray passes between the
-// medium it is in and that one. A cut whose medium is the one the ray is in (the same
-// material or the same interior terms, as one interior shared by the whole solid) is empty:
-// the ray leaves the solid there and enters it again on the way out of the cut, into the
-// solid's medium (a cut open to the outside, met from outside, included).
+// Each part of a solid is filled with its material's medium, as POV-Ray gives each CSG
+// part an interior of its own. A part of the solid's medium (its first part's, or one with
+// the same interior terms) bounds the solid: it is left or entered by the side it is met
+// from (its outward normal). A part with a medium of its own (a cut of a difference: a
+// later operand, a part of one, an inverse part) is entered where the ray is not in its
+// medium and left where it is, as POV-Ray's list of interiors: so a cut holds its part's
+// medium. A cut's wall (Hit::flip) met from inside the cut by a ray that is not in the
+// cut's medium (it came from outside, through an opening) enters the solid's medium.
 inline MediumCrossing mediumCrossing(const WorldLeaf& leaf, bool cut, bool front,
                                      const MediaStack& media) {
   if (!leaf.medium) return {};
-  if (!cut) return {leaf.medium, !front};
-  if (!front) {  // into the cut
-    const Material* in = media.top();
-    if (in && sameMedium(*in, *leaf.medium)) return {in, true};
-    return {leaf.medium, false};
-  }
-  // Out of the cut: out of its medium if the ray is in it, else into the solid.
-  if (const Material* in = media.find(*leaf.medium)) return {in, true};
-  return {leaf.solidMedium ? leaf.solidMedium : leaf.medium, false};
+  const Material* solid = leaf.solidMedium ? leaf.solidMedium : leaf.medium;
+  if (sameMedium(*leaf.medium, *solid)) return {leaf.medium, !front};
+  const bool in = media.find(*leaf.medium) != nullptr;
+  if (cut && front && !in) return {solid, false};
+  return {leaf.medium, in};
 }
 
 }  // namespace lucent

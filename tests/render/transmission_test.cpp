@@ -255,16 +255,30 @@ namespace {
 
 // A glass slab z in [-5, -1] minus a slab z in [cutNear, cutFar] of material `cut` (narrower
 // in x and y, so the glass surrounds it there), as a <difference> or, with `asInverse`, an
-// <intersection> with the inverse slab.
+// <intersection> with the inverse slab. `spared`: a slab z in [near, far] taken out of the
+// cut (the cut part is then itself a difference, whose parts wear its material).
 void addCutSlab(Scene& scene, uint32_t glassMaterial, uint32_t cut, double cutNear, double cutFar,
-                bool asInverse = false) {
+                bool asInverse = false,
+                std::optional<std::pair<double, double>> spared = std::nullopt) {
   auto node = std::make_unique<Node>();
   node->kind = asInverse ? NodeKind::Intersection : NodeKind::Difference;
   node->element = asInverse ? "intersection" : "difference";
   node->children.push_back(
       shapeNode(BoxSpec{Vec3(-100, -100, -5), Vec3(100, 100, -1)}, glassMaterial));
-  node->children.push_back(shapeNode(BoxSpec{Vec3(-50, -50, cutFar), Vec3(50, 50, cutNear)}, cut));
-  node->children.back()->inverse = asInverse;
+  std::unique_ptr<Node> part = shapeNode(BoxSpec{Vec3(-50, -50, cutFar), Vec3(50, 50, cutNear)},
+                                         spared ? std::nullopt : std::optional(cut));
+  if (spared) {
+    auto piece = std::make_unique<Node>();
+    piece->kind = NodeKind::Difference;
+    piece->element = "difference";
+    piece->material = cut;
+    piece->children.push_back(std::move(part));
+    piece->children.push_back(shapeNode(
+        BoxSpec{Vec3(-40, -40, spared->second), Vec3(40, 40, spared->first)}, std::nullopt));
+    part = std::move(piece);
+  }
+  part->inverse = asInverse;
+  node->children.push_back(std::move(part));
   scene.root->children.push_back(std::move(node));
 }
 
@@ -284,9 +298,11 @@ TEST_CASE("a cut of a difference holds its part's medium: rays bend from the gla
   const double straight = 20 + 10 * std::tan(theta);
 
   // `cutMaterial`: the cut part's own material, or none (it shares the glass's).
-  auto land = [&](std::optional<Material> cutMaterial, double cutNear, double cutFar) {
+  auto land = [&](std::optional<Material> cutMaterial, double cutNear, double cutFar,
+                  std::optional<std::pair<double, double>> spared = std::nullopt) {
     Scene scene;
     scene.render.ambient = Color(1.0f);
+    scene.render.maxDepth = 10;  // up to six bends
     Material wall;
     wall.ambient = Color(1.0f);
     wall.ambientIsScalar = true;
@@ -296,7 +312,8 @@ TEST_CASE("a cut of a difference holds its part's medium: rays bend from the gla
     wall.texture = image;
     addWall(scene, -10, addMaterial(scene, wall));
     const uint32_t g = addMaterial(scene, glass(1.5));
-    addCutSlab(scene, g, cutMaterial ? addMaterial(scene, *cutMaterial) : g, cutNear, cutFar);
+    addCutSlab(scene, g, cutMaterial ? addMaterial(scene, *cutMaterial) : g, cutNear, cutFar, false,
+               spared);
     World world(scene);
     return landingX(traceOne(world, Ray(origin, d)));
   };
@@ -315,6 +332,12 @@ TEST_CASE("a cut of a difference holds its part's medium: rays bend from the gla
     Material shiny = glass(1.5);
     shiny.specular = Color(1.0f);  // no light: nothing of it shows
     CHECK(land(shiny, -2, -4) == Approx(straight - shift(2, 1.5)).margin(1e-4));
+  }
+  SECTION("a cut part that is itself a difference: what it spares is glass again") {
+    // Glass 1, water 0.5, glass 1 (spared: z in [-3.5, -2.5]), water 0.5, glass 1, as
+    // glasschess's pieces (differences) cut into glass blocks.
+    CHECK(land(glass(1.33), -2, -4, std::pair{-2.5, -3.5}) ==
+          Approx(straight - shift(3, 1.5) - shift(1, 1.33)).margin(1e-4));
   }
   SECTION("a cut open to the outside: a ray from outside enters the glass at its wall") {
     // The cut z in [-3, 0] opens the glass's front face: the ray crosses the cut in air,
