@@ -15,18 +15,19 @@ struct MediumCrossing {
 
 // Each part of a solid is filled with its material's medium, as POV-Ray gives each CSG
 // part an interior of its own. A part of the solid's medium (its first part's, or one with
-// the same interior terms) bounds the solid: it is left or entered by the side it is met
-// from (its outward normal). A part with a medium of its own (a cut of a difference: a
-// later operand, a part of one, an inverse part) is entered where the ray is not in its
-// medium and left where it is, as POV-Ray's list of interiors: so a cut holds its part's
-// medium. A cut's wall (Hit::flip) met from inside the cut by a ray that is not in the
-// cut's medium (it came from outside, through an opening) enters the solid's medium.
+// the same interior terms, which then stands for it) bounds the solid: it is left or
+// entered by the side it is met from (its outward normal). A part with a medium of its own
+// (a cut of a difference: a later operand, a part of one, an inverse part) is entered where
+// the ray is not in that material and left where it is, as POV-Ray's list of interiors: so
+// a cut holds its part's medium. A cut's wall (Hit::flip) met from inside the cut by a ray
+// that is not in the cut's medium (it came from outside, through an opening) enters the
+// solid's medium.
 inline MediumCrossing mediumCrossing(const WorldLeaf& leaf, bool cut, bool front,
                                      const MediaStack& media) {
   if (!leaf.medium) return {};
   const Material* solid = leaf.solidMedium ? leaf.solidMedium : leaf.medium;
-  if (sameMedium(*leaf.medium, *solid)) return {leaf.medium, !front};
-  const bool in = media.find(*leaf.medium) != nullptr;
+  if (sameMedium(*leaf.medium, *solid)) return {solid, !front};
+  const bool in = media.contains(leaf.medium);
   if (cut && front && !in) return {solid, false};
   return {leaf.medium, in};
 }

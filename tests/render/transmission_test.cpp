@@ -298,8 +298,11 @@ TEST_CASE("a cut of a difference holds its part's medium: rays bend from the gla
   const double straight = 20 + 10 * std::tan(theta);
 
   // `cutMaterial`: the cut part's own material, or none (it shares the glass's).
+  // `insideOpaque`: the camera starts inside an opaque half-space x > 0 (of the default
+  // medium, index 1, as the cut's), which the ray never leaves.
   auto land = [&](std::optional<Material> cutMaterial, double cutNear, double cutFar,
-                  std::optional<std::pair<double, double>> spared = std::nullopt) {
+                  std::optional<std::pair<double, double>> spared = std::nullopt,
+                  bool insideOpaque = false) {
     Scene scene;
     scene.render.ambient = Color(1.0f);
     scene.render.maxDepth = 10;  // up to six bends
@@ -314,12 +317,16 @@ TEST_CASE("a cut of a difference holds its part's medium: rays bend from the gla
     const uint32_t g = addMaterial(scene, glass(1.5));
     addCutSlab(scene, g, cutMaterial ? addMaterial(scene, *cutMaterial) : g, cutNear, cutFar, false,
                spared);
+    if (insideOpaque) addShape(scene, PlaneSpec{Vec3(-1, 0, 0), 0.0}, addMaterial(scene, {}));
     World world(scene);
     return landingX(traceOne(world, Ray(origin, d)));
   };
 
   SECTION("a cut part of index 1 is an air bubble: only the glass's 2 units shift the ray") {
     CHECK(land(glass(1.0), -2, -4) == Approx(straight - shift(2, 1.5)).margin(1e-4));
+    // The opaque solid's medium, alike in its terms, is not the cut's.
+    CHECK(land(glass(1.0), -2, -4, std::nullopt, true) ==
+          Approx(straight - shift(2, 1.5)).margin(1e-4));
   }
   SECTION("a cut part of index 1.33 is water inside the glass") {
     CHECK(land(glass(1.33), -2, -4) ==
