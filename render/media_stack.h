@@ -1,7 +1,8 @@
 // The media a ray travels in: a small stack of the solids it has entered and not left,
 // innermost on top, so that leaving a glass inside water refracts into water (nested
-// objects, as POV-Ray's interior list). Keyed by material: a CSG solid's surfaces share
-// their material, so entering through one leaf and leaving through another pairs up.
+// objects, as POV-Ray's interior list). Keyed by material: the surfaces of a CSG solid's
+// medium stand for it by one material (render/medium_crossing.h), so entering through one
+// leaf and leaving through another pairs up.
 #pragma once
 
 #include "scenegraph/material.h"
@@ -9,6 +10,16 @@
 #include <array>
 
 namespace lucent {
+
+// Whether two materials fill a solid alike: the same material, or the same interior terms
+// (index, absorption, fade, fade-on-exit, hollow), as one POV-Ray interior worn by the parts
+// of a CSG solid with different textures.
+inline bool sameMedium(const Material& a, const Material& b) {
+  return &a == &b ||
+         (a.ior == b.ior && a.absorption == b.absorption && a.fadeDistance == b.fadeDistance &&
+          a.fadePower == b.fadePower && a.fadeColor == b.fadeColor &&
+          a.fadeOnExit == b.fadeOnExit && a.hollow == b.hollow);
+}
 
 class MediaStack {
  public:
@@ -31,6 +42,13 @@ class MediaStack {
 
   void push(const Material* m) {
     if (size_ < kCapacity) items_[size_++] = m;
+  }
+  // Whether the ray is in m (this very material: two of equal terms are two media, as
+  // two POV-Ray interiors; an opaque solid's default medium must not pass for a cut's).
+  bool contains(const Material* m) const {
+    for (int i = 0; i < size_; ++i)
+      if (items_[i] == m) return true;
+    return false;
   }
   // Removes the innermost occurrence of m; returns false (and changes nothing) if the ray
   // was not known to be inside m (a camera inside a solid it did not start in, say).

@@ -120,8 +120,9 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     const SurfaceInfo s = hit.surface(ray);
     const bool solid = hitLeaf.medium != nullptr;  // the leaf bounds a medium (its material)
     const bool front = glm::dot(ray.d, s.ng) < 0.0;
-    Hit here{hitLeaf, s, -glm::normalize(ray.d), front, solid && !front};
-    const Material* leaving = here.leaving ? hitLeaf.material : nullptr;
+    const MediumCrossing crossing = mediumCrossing(hitLeaf, hit.hit.flip, front, media);
+    Hit here{hitLeaf, s, -glm::normalize(ray.d), front, crossing.leaving, crossing.medium};
+    const Material* leaving = here.leaving ? here.medium : nullptr;
     // fade-on-exit: the stretch's attenuation waits for the rays that leave at this hit.
     if (leaving && leaving->fadeOnExit && leaving->attenuates())
       here.passOut = interiorAttenuation(*leaving, hit.t() * glm::length(ray.d), false);
@@ -211,7 +212,7 @@ Tracer::Shaded Tracer::shadeOne(uint32_t slot, const Hit& h, int depth, const Co
   Shaded out;
   out.result = localLight(leaf, s, n, h.v, h.leaving, media, seed, context);
   // The media are known by the hit's own material (the solid's medium).
-  Interface side = interfaceAt(*h.leaf.material, m.transmissive, solid, h.front, media);
+  Interface side = interfaceAt(*h.leaf.material, m.transmissive, h, media);
   out.rays =
       secondaryRays(m, ShadingPoint{s.p, n, h.v}, solid, side.n1, side.n2, reflectionTint(leaf, s));
   dimPassingOut(out.rays, h.passOut);
@@ -241,7 +242,7 @@ Tracer::Shaded Tracer::shadeLayers(const SurfaceSlots::Slot& layers, const Hit& 
   const bool solid = h.leaf.medium != nullptr;
   // The indices on both sides whether or not the surface transmits here: a lower layer's
   // Fresnel reflection needs them.
-  Interface side = interfaceAt(*h.leaf.material, Color(1.0f), solid, h.front, media);
+  Interface side = interfaceAt(*h.leaf.material, Color(1.0f), h, media);
   std::vector<LayerMirror>& lower = context.layerMirrors;
   const size_t firstLower = lower.size();
 
@@ -310,8 +311,9 @@ Tracer::Shaded Tracer::shadeMap(const SurfaceSlots::Slot& map, const Hit& h, int
                                 TraceContext& context) const {
   const Material& m = *map.material;
   SurfaceInfo moved;
-  const Hit at{h.leaf,   mapEntrySurface(m.mapPattern, h.s, moved), h.v, h.front, h.leaving,
-               h.passOut};
+  const Hit at{
+      h.leaf,   mapEntrySurface(m.mapPattern, h.s, moved), h.v, h.front, h.leaving, h.medium,
+      h.passOut};
   if (mapAverages(m)) return shadeAverage(map, at, depth, weight, media, seed, context);
   const MapBlend b = mapChoice(m, h.s, *h.leaf.instance);
   Shaded out;
@@ -461,19 +463,22 @@ Color Tracer::localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3
   return local;
 }
 
-Tracer::Interface Tracer::interfaceAt(const Material& m, const Color& transmits, bool solid,
-                                      bool front, const MediaStack& media) const {
+Tracer::Interface Tracer::interfaceAt(const Material& m, const Color& transmits, const Hit& h,
+                                      const MediaStack& media) const {
   Interface side{1.0, 1.0, media};
   // Only a material that transmits or splits by Fresnel needs the indices.
   if (!anyPositive(transmits) && !(m.fresnel && (anyPositive(m.reflective) || m.reflectiveMin)))
     return side;
-  if (!solid || front) {
+  if (!h.medium) {  // a thin sheet: no medium to enter
     side.n1 = media.ior();
     side.n2 = m.ior;
-    if (solid) side.beyond.push(&m);
+  } else if (!h.leaving) {
+    side.n1 = media.ior();
+    side.n2 = h.medium->ior;
+    side.beyond.push(h.medium);
   } else {
-    side.n1 = m.ior;
-    side.beyond.remove(&m);
+    side.n1 = h.medium->ior;
+    side.beyond.remove(h.medium);
     side.n2 = side.beyond.ior();
   }
   return side;
@@ -625,11 +630,12 @@ Color Tracer::fogKeptAlongShadowRay(Ray ray, MediaStack media, RayStats& stats) 
       ++stats.queries;
       if (!world_.intersectTransmissive(ray, hit)) break;
       const WorldLeaf& leaf = hit.leaf();
-      const bool leaving = leaf.medium && glm::dot(ray.d, hit.surface(ray).ng) > 0.0;
-      stretch(from, hit.t(), leaving ? leaf.medium : nullptr);
-      if (leaf.medium) {
-        if (leaving) media.remove(leaf.medium);
-        else media.push(leaf.medium);
+      const bool front = !leaf.medium || !(glm::dot(ray.d, hit.surface(ray).ng) > 0.0);
+      const MediumCrossing c = mediumCrossing(leaf, hit.hit.flip, front, media);
+      stretch(from, hit.t(), c.leaving ? c.medium : nullptr);
+      if (c.medium) {
+        if (c.leaving) media.remove(c.medium);
+        else media.push(c.medium);
       }
       from = hit.t();
       ray.tmin = hit.t();
@@ -667,15 +673,14 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
       t *= letThrough(leaf.materialIndex, leaf, s);
     }
     if (anyAbsorbing_) {
-      // A solid's medium is its material.
-      bool leaving = false;
-      if (leaf.medium) leaving = glm::dot(ray.d, hit.surface(ray).ng) > 0.0;
-      const Material* segment = leaving ? leaf.medium : media.top();
+      const bool front = !leaf.medium || !(glm::dot(ray.d, hit.surface(ray).ng) > 0.0);
+      const MediumCrossing c = mediumCrossing(hit.leaf(), hit.hit.flip, front, media);
+      const Material* segment = c.leaving ? c.medium : media.top();
       if (segment && segment->attenuates())
         t *= interiorAttenuation(*segment, (hit.t() - tPrevious) * speed, true);
-      if (leaf.medium) {
-        if (leaving) media.remove(leaf.medium);
-        else media.push(leaf.medium);
+      if (c.medium) {
+        if (c.leaving) media.remove(c.medium);
+        else media.push(c.medium);
       }
     }
     if (!anyPositive(t)) return Color(0.0f);

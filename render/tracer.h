@@ -7,6 +7,7 @@
 #include "finish.h"
 #include "light_sample.h"
 #include "media_stack.h"
+#include "medium_crossing.h"
 #include "ray_stats.h"
 #include "shadow_cache.h"
 #include "surface_slots.h"
@@ -74,7 +75,10 @@ class Tracer {
     const SurfaceInfo& s;
     Vec3 v;  // towards the viewer
     bool front = true;
-    bool leaving = false;  // the ray was inside this solid
+    bool leaving = false;  // the ray was inside `medium`
+    // The medium the ray leaves or enters here (render/medium_crossing.h); null: a
+    // surface without an inside.
+    const Material* medium = nullptr;
     // fade-on-exit: the attenuation of the stretch inside, for the rays leaving here.
     Color passOut{1.0f};
   };
@@ -142,12 +146,13 @@ class Tracer {
                    TraceContext& context) const;
   // The indices of refraction on the viewer's side and beyond a surface, and the media
   // beyond it (both indices 1 for a material that neither transmits nor splits by Fresnel).
-  // `transmits`: what m lets through at this point (its k_t, or a see-through texture's).
+  // `transmits`: what m lets through at this point (its k_t, or a see-through texture's);
+  // the hit's medium is left or entered as h says.
   struct Interface {
     double n1 = 1.0, n2 = 1.0;
     MediaStack beyond;
   };
-  Interface interfaceAt(const Material& m, const Color& transmits, bool solid, bool front,
+  Interface interfaceAt(const Material& m, const Color& transmits, const Hit& h,
                         const MediaStack& media) const;
   // `result` plus the bent transmitted ray and the mirror ray, each traced one level
   // deeper when its weight and the depth allow.

@@ -108,6 +108,8 @@ struct Part {
   uint32_t firstLeaf = 0;  // its first leaf in scene order: a solid's medium is its material
   Seen seen;
   bool transmits = false;  // one of its leaves has a transmissive material
+  // All its leaves (a split union's parts need not be consecutive).
+  std::vector<uint32_t> leaves;
 };
 
 // The parts as one object: the operation `op` of their shapes (all of them non-empty).
@@ -118,6 +120,7 @@ Part compose(CsgOp op, std::vector<Part> parts, const Seen& seen) {
   std::vector<std::unique_ptr<Shape>> shapes;
   for (Part& p : parts) {
     whole.transmits = whole.transmits || p.transmits;
+    whole.leaves.insert(whole.leaves.end(), p.leaves.begin(), p.leaves.end());
     shapes.push_back(std::move(p.shape));
   }
   whole.shape = std::make_unique<CsgNode>(op, std::move(shapes));
@@ -218,7 +221,7 @@ struct Builder {
     leaves.push_back(leaf);
     // A shadow ray may cross the surface from inside: the interior material's k_t counts.
     const bool transmits = leaf.transmissive || (leaf.interior && leaf.interior->isTransmissive());
-    return Part{std::move(inst), index, seen, transmits};
+    return Part{std::move(inst), index, seen, transmits, {index}};
   }
 
   // The node's objects as written, its own inverse aside.
@@ -329,6 +332,8 @@ FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape) {
   for (Part& p : parts) {
     WorldObject o;
     o.medium = p.shape->isSolid() ? flat.leaves[p.firstLeaf].material : nullptr;
+    for (uint32_t i : p.leaves)
+      if (flat.leaves[i].medium) flat.leaves[i].solidMedium = o.medium;
     o.castsShadow = p.seen.casts;
     o.seenByImage = p.seen.image;
     o.seenByReflection = p.seen.reflection;

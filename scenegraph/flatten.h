@@ -28,6 +28,9 @@ struct WorldLeaf {
   // The medium the leaf encloses: its material when it is a solid; null for a surface
   // without an inside, which light crosses as a thin sheet.
   const Material* medium = nullptr;
+  // The medium of the solid the leaf is part of (its top-level object's), which a ray
+  // coming out of a cut this leaf makes enters (render/medium_crossing.h); null as medium.
+  const Material* solidMedium = nullptr;
   bool transmissive = false;  // material->isTransmissive()
   // The material its surface shows to a ray that meets it from inside (interior-material),
   // null when it has none; Scene::materials' index of it.

@@ -250,3 +250,138 @@ TEST_CASE("a surface without an inside is a thin sheet: transmission does not be
         Approx(0.5).epsilon(1e-7));
   CHECK(stats.refracted == 1);
 }
+
+namespace {
+
+// A glass slab z in [-5, -1] minus a slab z in [cutNear, cutFar] of material `cut` (narrower
+// in x and y, so the glass surrounds it there), as a <difference> or, with `asInverse`, an
+// <intersection> with the inverse slab. `spared`: a slab z in [near, far] taken out of the
+// cut (the cut part is then itself a difference, whose parts wear its material).
+void addCutSlab(Scene& scene, uint32_t glassMaterial, uint32_t cut, double cutNear, double cutFar,
+                bool asInverse = false,
+                std::optional<std::pair<double, double>> spared = std::nullopt) {
+  auto node = std::make_unique<Node>();
+  node->kind = asInverse ? NodeKind::Intersection : NodeKind::Difference;
+  node->element = asInverse ? "intersection" : "difference";
+  node->children.push_back(
+      shapeNode(BoxSpec{Vec3(-100, -100, -5), Vec3(100, 100, -1)}, glassMaterial));
+  std::unique_ptr<Node> part = shapeNode(BoxSpec{Vec3(-50, -50, cutFar), Vec3(50, 50, cutNear)},
+                                         spared ? std::nullopt : std::optional(cut));
+  if (spared) {
+    auto piece = std::make_unique<Node>();
+    piece->kind = NodeKind::Difference;
+    piece->element = "difference";
+    piece->material = cut;
+    piece->children.push_back(std::move(part));
+    piece->children.push_back(shapeNode(
+        BoxSpec{Vec3(-40, -40, spared->second), Vec3(40, 40, spared->first)}, std::nullopt));
+    part = std::move(piece);
+  }
+  part->inverse = asInverse;
+  node->children.push_back(std::move(part));
+  scene.root->children.push_back(std::move(node));
+}
+
+}  // namespace
+
+TEST_CASE("a cut of a difference holds its part's medium: rays bend from the glass into it",
+          "[render][refraction][csg]") {
+  // Snell's law across parallel layers keeps n sin(theta): each layer of thickness d and
+  // index n shifts the landing point by d (tan(theta) - tan(theta_n)), sin(theta_n) =
+  // sin(theta) / n, an index-1 layer not at all.
+  const std::string ramp = writeRamp();
+  const double theta = radians(30.0);
+  const Vec3 origin(20, 0, 0), d(std::sin(theta), 0, -std::cos(theta));
+  auto shift = [&](double thickness, double n) {
+    return thickness * (std::tan(theta) - std::tan(std::asin(std::sin(theta) / n)));
+  };
+  const double straight = 20 + 10 * std::tan(theta);
+
+  // `cutMaterial`: the cut part's own material, or none (it shares the glass's).
+  // `insideOpaque`: the camera starts inside an opaque half-space x > 0 (of the default
+  // medium, index 1, as the cut's), which the ray never leaves.
+  auto land = [&](std::optional<Material> cutMaterial, double cutNear, double cutFar,
+                  std::optional<std::pair<double, double>> spared = std::nullopt,
+                  bool insideOpaque = false) {
+    Scene scene;
+    scene.render.ambient = Color(1.0f);
+    scene.render.maxDepth = 10;  // up to six bends
+    Material wall;
+    wall.ambient = Color(1.0f);
+    wall.ambientIsScalar = true;
+    ImageTexture image;
+    image.path = ramp;
+    image.scale = Vec2(kRampScale, 1.0);
+    wall.texture = image;
+    addWall(scene, -10, addMaterial(scene, wall));
+    const uint32_t g = addMaterial(scene, glass(1.5));
+    addCutSlab(scene, g, cutMaterial ? addMaterial(scene, *cutMaterial) : g, cutNear, cutFar, false,
+               spared);
+    if (insideOpaque) addShape(scene, PlaneSpec{Vec3(-1, 0, 0), 0.0}, addMaterial(scene, {}));
+    World world(scene);
+    return landingX(traceOne(world, Ray(origin, d)));
+  };
+
+  SECTION("a cut part of index 1 is an air bubble: only the glass's 2 units shift the ray") {
+    CHECK(land(glass(1.0), -2, -4) == Approx(straight - shift(2, 1.5)).margin(1e-4));
+    // The opaque solid's medium, alike in its terms, is not the cut's.
+    CHECK(land(glass(1.0), -2, -4, std::nullopt, true) ==
+          Approx(straight - shift(2, 1.5)).margin(1e-4));
+  }
+  SECTION("a cut part of index 1.33 is water inside the glass") {
+    CHECK(land(glass(1.33), -2, -4) ==
+          Approx(straight - shift(2, 1.5) - shift(2, 1.33)).margin(1e-4));
+  }
+  SECTION("a cut part of the glass's own material leaves an empty cut") {
+    CHECK(land(std::nullopt, -2, -4) == Approx(straight - shift(2, 1.5)).margin(1e-4));
+  }
+  SECTION("a cut part of the same index but another surface leaves it empty too") {
+    Material shiny = glass(1.5);
+    shiny.specular = Color(1.0f);  // no light: nothing of it shows
+    CHECK(land(shiny, -2, -4) == Approx(straight - shift(2, 1.5)).margin(1e-4));
+  }
+  SECTION("a cut part that is itself a difference: what it spares is glass again") {
+    // Glass 1, water 0.5, glass 1 (spared: z in [-3.5, -2.5]), water 0.5, glass 1, as
+    // glasschess's pieces (differences) cut into glass blocks.
+    CHECK(land(glass(1.33), -2, -4, std::pair{-2.5, -3.5}) ==
+          Approx(straight - shift(3, 1.5) - shift(1, 1.33)).margin(1e-4));
+  }
+  SECTION("a cut open to the outside: a ray from outside enters the glass at its wall") {
+    // The cut z in [-3, 0] opens the glass's front face: the ray crosses the cut in air,
+    // then 2 units of glass behind it.
+    CHECK(land(glass(1.0), 0, -3) == Approx(straight - shift(2, 1.5)).margin(1e-4));
+  }
+}
+
+TEST_CASE("a cut's medium absorbs camera and shadow rays inside the cut, the glass outside it",
+          "[render][refraction][csg]") {
+  // Head-on through 1 + 1 units of glass (absorption 0.1) and 2 of cut (0.3 when it holds
+  // a medium of its own, none when it is empty).
+  Material g = glass(1.5);
+  g.absorption = Color(0.1f);
+  Material cut = glass(1.0);
+  cut.absorption = Color(0.3f);
+  const Ray camera(Vec3(0, 0, 5), Vec3(0, 0, -1));
+  auto through = [&](bool ownMedium, bool asInverse) {
+    Scene scene;
+    addWall(scene, -10, addMaterial(scene, emissive(Color(1.0f))));
+    const uint32_t gi = addMaterial(scene, g);
+    addCutSlab(scene, gi, ownMedium ? addMaterial(scene, cut) : gi, -2, -4, asInverse);
+    World world(scene);
+    Tracer tracer(world);
+    RayStats stats;
+    const Color shadow =
+        tracer.transmittance(Ray(camera.o, camera.d, 0.0, 13.0), MediaStack{}, stats);
+    return std::pair{traceOne(world, camera).r, shadow.r};
+  };
+  const double filled = std::exp(-0.1 * 2 - 0.3 * 2), empty = std::exp(-0.1 * 2);
+  for (bool asInverse : {false, true}) {
+    CAPTURE(asInverse);
+    const auto [seen, shadow] = through(true, asInverse);
+    CHECK(seen == Approx(filled).epsilon(1e-5));
+    CHECK(shadow == Approx(filled).epsilon(1e-5));
+    const auto [seenEmpty, shadowEmpty] = through(false, asInverse);
+    CHECK(seenEmpty == Approx(empty).epsilon(1e-5));
+    CHECK(shadowEmpty == Approx(empty).epsilon(1e-5));
+  }
+}
