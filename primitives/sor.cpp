@@ -1,5 +1,7 @@
 #include "sor.h"
 
+#include "centred_line.h"
+
 #include "polynomial.h"
 #include "quadratic.h"
 
@@ -219,14 +221,10 @@ void Sor::segmentSpans(size_t i, const Vec3& o, const Vec3& d, double ta, double
 
 void Sor::lineEvents(const Ray& ray, std::vector<Event>& out) const {
   out.clear();
-  const double len = glm::length(ray.d);
-  if (!(len > 0.0) || !std::isfinite(len)) return;
-  const Vec3 d = ray.d / len;
-  // From the line's point closest to the shape's centre, so the coefficients stay of the
-  // shape's size for a far ray.
-  const double s0 = glm::dot(bounds_.center() - ray.o, d);
-  const Vec3 o = ray.o + s0 * d;
-  if (!bounds_.hit(Ray(o, d, -kInf, kInf), 1.0 / d)) return;
+  CentredLine line;
+  if (!centredLine(ray, bounds_, line)) return;
+  const Vec3 o = line.o, d = line.d;
+  const double s0 = line.s0, len = line.len;
   const double rr = d.x * d.x + d.z * d.z, m = o.x * d.x + o.z * d.z, oo = o.x * o.x + o.z * o.z;
   thread_local std::vector<Span> spans;
   spans.clear();

@@ -1,5 +1,7 @@
 #include "sphere_sweep.h"
 
+#include "centred_line.h"
+
 #include "polynomial.h"
 #include "quadratic.h"
 
@@ -360,14 +362,10 @@ void SphereSweep::splineSpans(size_t seg, const Vec3& o, const Vec3& d,
 
 void SphereSweep::lineSpans(const Ray& ray, std::vector<Span>& out) const {
   out.clear();
-  const double len = glm::length(ray.d);
-  if (!(len > 0.0) || !std::isfinite(len)) return;
-  const Vec3 d = ray.d / len;
-  // From the line's point nearest the shape's centre, so that the coefficients keep the
-  // shape's size for a far ray.
-  const double s0 = glm::dot(bounds_.center() - ray.o, d);
-  const Vec3 o = ray.o + s0 * d;
-  if (!bounds_.hit(Ray(o, d, -kInf, kInf), 1.0 / d)) return;
+  CentredLine line;
+  if (!centredLine(ray, bounds_, line)) return;
+  const Vec3 o = line.o, d = line.d;
+  const double s0 = line.s0, len = line.len;
   if (spline_ == SweepSpline::Linear) {
     linearSpans(o, d, out);
   } else {

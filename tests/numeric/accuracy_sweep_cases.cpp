@@ -7,6 +7,7 @@
 // reference shares nothing with Lucent's method (cones, the degree-10 envelope condition).
 #include "accuracy_cases.h"
 
+#include "../support/sweep_spline_weights.h"
 #include "primitives/sphere_sweep.h"
 
 #include <algorithm>
@@ -89,24 +90,8 @@ class RefSweep final : public RefShape {
   size_t segments() const { return spline_ == SweepSpline::Linear ? p_.size() - 1 : p_.size() - 3; }
 
   void ball(size_t i, LD u, LVec& c, LD& r) const {
-    LD w[4] = {0, 0, 0, 0};
-    if (spline_ == SweepSpline::Linear) {
-      w[0] = 1 - u;
-      w[1] = u;
-    } else if (spline_ == SweepSpline::BSpline) {
-      w[0] = (1 - u) * (1 - u) * (1 - u) / 6;
-      w[1] = (3 * u * u * u - 6 * u * u + 4) / 6;
-      w[2] = (-3 * u * u * u + 3 * u * u + 3 * u + 1) / 6;
-      w[3] = u * u * u / 6;
-    } else {
-      // Hermite between P1 and P2 with the tangents (P2 − P0)/2 and (P3 − P1)/2.
-      const LD h00 = 2 * u * u * u - 3 * u * u + 1, h10 = u * u * u - 2 * u * u + u,
-               h01 = -2 * u * u * u + 3 * u * u, h11 = u * u * u - u * u;
-      w[0] = -h10 / 2;
-      w[1] = h00 - h11 / 2;
-      w[2] = h01 + h10 / 2;
-      w[3] = h11 / 2;
-    }
+    LD w[4];
+    test::sweepSplineWeights(spline_, u, w);
     c = LVec(0);
     r = 0;
     for (size_t k = 0; k < 4; ++k) {

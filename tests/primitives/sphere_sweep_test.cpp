@@ -1,5 +1,6 @@
 #include "shape_checks.h"
 
+#include "../support/sweep_spline_weights.h"
 #include "primitives/sphere_sweep.h"
 
 #include <catch2/catch.hpp>
@@ -32,25 +33,9 @@ struct Reference {
   size_t segments() const { return spline == SweepSpline::Linear ? p.size() - 1 : p.size() - 3; }
 
   void ball(size_t i, LD u, LD c[3], LD& r) const {
-    LD w[4] = {0, 0, 0, 0};
+    LD w[4];
     size_t first = i;
-    if (spline == SweepSpline::Linear) {
-      w[0] = 1 - u;
-      w[1] = u;
-    } else if (spline == SweepSpline::BSpline) {
-      w[0] = (1 - u) * (1 - u) * (1 - u) / 6;
-      w[1] = (3 * u * u * u - 6 * u * u + 4) / 6;
-      w[2] = (-3 * u * u * u + 3 * u * u + 3 * u + 1) / 6;
-      w[3] = u * u * u / 6;
-    } else {
-      // p(u) = h00·P1 + h10·m1 + h01·P2 + h11·m2, m1 = (P2 − P0)/2, m2 = (P3 − P1)/2.
-      const LD h00 = 2 * u * u * u - 3 * u * u + 1, h10 = u * u * u - 2 * u * u + u,
-               h01 = -2 * u * u * u + 3 * u * u, h11 = u * u * u - u * u;
-      w[0] = -h10 / 2;
-      w[1] = h00 - h11 / 2;
-      w[2] = h01 + h10 / 2;
-      w[3] = h11 / 2;
-    }
+    test::sweepSplineWeights(spline, u, w);
     c[0] = c[1] = c[2] = 0;
     r = 0;
     for (size_t k = 0; k < 4; ++k) {
