@@ -110,12 +110,13 @@ Color reflectivity(const Material& m, double cosView, double n1, double n2, floa
 }
 
 SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool solid, double n1,
-                            double n2, const Color& metal) {
+                            double n2, const Color& metal, std::optional<FresnelIndices> fresnel) {
   SecondaryRays rays;
   Color kr = m.reflective, kt = m.transmissive;
   if (m.reflectiveMin || (m.fresnel && (maxComponent(kr) > 0.0f || maxComponent(kt) > 0.0f))) {
     float f = 1.0f;
-    kr = reflectivity(m, glm::dot(at.v, at.n), n1, n2, f);
+    const FresnelIndices split = fresnel.value_or(FresnelIndices{n1, n2});
+    kr = reflectivity(m, glm::dot(at.v, at.n), split.n1, split.n2, f);
     if (m.fresnel && m.fresnelTransmission) kt *= 1.0f - f;
   }
   // POV-Ray's reflection { metallic }: tinted by the metallic colour facing the viewer,

@@ -5,6 +5,8 @@
 // finish's terms are declared in scenegraph/finish_terms.h; their shading is here.
 #pragma once
 
+#include <optional>
+
 #include "scenegraph/material.h"
 
 namespace lucent {
@@ -59,8 +61,14 @@ Color reflectivity(const Material& m, double cosView, double n1, double n2, floa
 // n1: the index on the viewer's side, n2: beyond (both 1 for an opaque material that needs
 // no Fresnel split); solid: whether the surface has an inside. metal: metallicBase at the
 // hit, needed only with reflect-metallic.
+// The indices the Fresnel split takes where they are not the refraction's (POV-Ray's rule on
+// leaving a nested solid: Material::nestedExitFresnel).
+struct FresnelIndices {
+  double n1 = 1.0, n2 = 1.0;
+};
 SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool solid, double n1,
-                            double n2, const Color& metal = Color(1.0f));
+                            double n2, const Color& metal = Color(1.0f),
+                            std::optional<FresnelIndices> fresnel = std::nullopt);
 
 // The mirror ray's weight alone, as secondaryRays gives it where the surface transmits
 // nothing: a lower layer's reflection (render/surface_slots.h).

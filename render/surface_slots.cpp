@@ -18,6 +18,7 @@ Material withInterior(const Material& surface, const Material& whole, bool keepL
   m.fadeOnExit = whole.fadeOnExit;
   m.hollow = whole.hollow;
   m.innerAmbient = whole.innerAmbient;
+  m.nestedExitFresnel = whole.nestedExitFresnel;
   return m;
 }
 

@@ -213,8 +213,8 @@ Tracer::Shaded Tracer::shadeOne(uint32_t slot, const Hit& h, int depth, const Co
   out.result = localLight(leaf, s, n, h.v, h.leaving, media, seed, context);
   // The media are known by the hit's own material (the solid's medium).
   Interface side = interfaceAt(*h.leaf.material, m.transmissive, h, media);
-  out.rays =
-      secondaryRays(m, ShadingPoint{s.p, n, h.v}, solid, side.n1, side.n2, reflectionTint(leaf, s));
+  out.rays = secondaryRays(m, ShadingPoint{s.p, n, h.v}, solid, side.n1, side.n2,
+                           reflectionTint(leaf, s), side.fresnel);
   dimPassingOut(out.rays, h.passOut);
   if (out.rays.straight && !mayContinue) {
     out.rays.straight = false;  // traced below, as a bent ray is
@@ -271,7 +271,8 @@ Tracer::Shaded Tracer::shadeLayers(const SurfaceSlots::Slot& layers, const Hit& 
       topUnbent = unbent;
       topTint = tint;
     } else {
-      const Color w = mirrorWeight(m, ShadingPoint{s.p, n, h.v}, side.n1, side.n2, tint);
+      const Color w = mirrorWeight(m, ShadingPoint{s.p, n, h.v}, side.fresnelPair().n1,
+                                   side.fresnelPair().n2, tint);
       if (maxComponent(w) > 0.0f)
         lower.push_back({reflectAboveSurface(-h.v, n, unbent), n, w, 1.0 / m.reflectExponent});
     }
@@ -283,7 +284,8 @@ Tracer::Shaded Tracer::shadeLayers(const SurfaceSlots::Slot& layers, const Hit& 
 
   // The top layer's mirror ray and the ray through all the layers.
   top->transmissive = through;
-  out.rays = secondaryRays(*top, ShadingPoint{s.p, topN, h.v}, solid, side.n1, side.n2, topTint);
+  out.rays = secondaryRays(*top, ShadingPoint{s.p, topN, h.v}, solid, side.n1, side.n2, topTint,
+                           side.fresnel);
   dimPassingOut(out.rays, h.passOut);
   if (!(maxComponent(through) > 0.0f)) side.beyond = media;  // nothing crosses
   if (out.rays.straight && !mayContinue) {
@@ -465,7 +467,7 @@ Color Tracer::localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3
 
 Tracer::Interface Tracer::interfaceAt(const Material& m, const Color& transmits, const Hit& h,
                                       const MediaStack& media) const {
-  Interface side{1.0, 1.0, media};
+  Interface side{1.0, 1.0, media, std::nullopt};
   // Only a material that transmits or splits by Fresnel needs the indices.
   if (!anyPositive(transmits) && !(m.fresnel && (anyPositive(m.reflective) || m.reflectiveMin)))
     return side;
@@ -480,6 +482,10 @@ Tracer::Interface Tracer::interfaceAt(const Material& m, const Color& transmits,
     side.n1 = h.medium->ior;
     side.beyond.remove(h.medium);
     side.n2 = side.beyond.ior();
+    // POV-Ray's Fresnel ratio on leaving while inside another solid too: the last medium
+    // entered (this one, when nested) over this one.
+    if (!m.nestedExitFresnel && media.size() > 1)
+      side.fresnel = FresnelIndices{h.medium->ior, media.ior()};
   }
   return side;
 }

@@ -151,6 +151,9 @@ class Tracer {
   struct Interface {
     double n1 = 1.0, n2 = 1.0;
     MediaStack beyond;
+    // The indices of the Fresnel split, where not n1 and n2 (Material::nestedExitFresnel).
+    std::optional<FresnelIndices> fresnel;
+    FresnelIndices fresnelPair() const { return fresnel.value_or(FresnelIndices{n1, n2}); }
   };
   Interface interfaceAt(const Material& m, const Color& transmits, const Hit& h,
                         const MediaStack& media) const;

@@ -52,9 +52,9 @@ FinishTerm term(Attribute a, std::string_view pov, std::vector<PovHint> hints = 
 // The terms of the whole material, which its <layer>s do not take: the interior (what
 // light meets inside the solid) and the rules for the ray that crosses the surface.
 std::vector<FinishTerm> markInterior(std::vector<FinishTerm> table) {
-  static constexpr std::string_view kInterior[] = {"ior",           "full-tir",   "absorption",
-                                                   "fade-distance", "fade-power", "fade-color",
-                                                   "fade-on-exit",  "hollow",     "inner-ambient"};
+  static constexpr std::string_view kInterior[] = {
+      "ior",        "full-tir",     "absorption", "fade-distance", "fade-power",
+      "fade-color", "fade-on-exit", "hollow",     "inner-ambient", "nested-exit-fresnel"};
   for (FinishTerm& t : table)
     for (std::string_view name : kInterior)
       if (t.info.name == name) t.ofInterior = true;
@@ -247,6 +247,16 @@ const std::vector<FinishTerm>& finishTerms() {
                    "gets none, so that a camera inside a backdrop does not see it glow)."),
            // No POV-Ray line: POV-Ray's own rule is true (povray/ says where false differs).
            "POV-Ray's rule (it has no keyword: every surface gets its ambient)"),
+      term(boolean("nested-exit-fresnel", &Material::nestedExitFresnel,
+                   "With fresnel: whether a ray leaving this solid while it is also inside "
+                   "another solid is reflected by Fresnel's law (default true, the indices on "
+                   "both sides). false: POV-Ray 3.7's rule, which takes the index of the last "
+                   "solid the ray entered over this solid's there: 1 when this solid is the "
+                   "innermost, so nothing is reflected on the way out (a glass seen from a "
+                   "camera inside a sky sphere)."),
+           // No POV-Ray line: POV-Ray's own rule is false (it has no keyword).
+           "POV-Ray's rule (it has no keyword: leaving a nested solid, fresnel reflects "
+           "nothing)"),
       term(
           [] {
             Attribute a = number("irid", &Material::irid,

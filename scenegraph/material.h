@@ -71,6 +71,11 @@ struct Material {
   // The ambient term also where the surface is seen from inside its solid (POV-Ray's rule);
   // false: from inside, it is multiplied by transmissive (none inside an opaque solid).
   bool innerAmbient = false;
+  // The Fresnel reflection of a ray leaving this solid while it is also inside another
+  // (physical: the indices on both sides). false: POV-Ray 3.7's rule, which takes the index
+  // of the last solid the ray entered (this one, when nested) over this solid's there, so
+  // nothing is reflected on the way out (render/tracer.cpp: interfaceAt).
+  bool nestedExitFresnel = true;
   Color reflective{0.0f};    // k_r
   Color transmissive{0.0f};  // k_t
   double ior = 1.0;          // eta

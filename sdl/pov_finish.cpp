@@ -72,6 +72,7 @@ MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish
   m.ambient = p * finish.ambient * opacity;
   m.ambientIsScalar = patterned;  // multiplied by the texture, or the pigment already in it
   m.innerAmbient = true;          // POV-Ray lights the inner side of a surface with ambient too
+  m.nestedExitFresnel = false;    // POV-Ray's fresnel ratio on leaving a nested solid: 1
   m.emissive = p * finish.emission * opacity;
   if (patterned && maxComponent(finish.emission) > 0.0f)
     notes.push_back(

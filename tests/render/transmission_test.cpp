@@ -218,6 +218,31 @@ TEST_CASE("nested media: leaving glass into water uses the water's index", "[ren
   CHECK(c.r == Approx(1.0 + f).epsilon(1e-6));
 }
 
+TEST_CASE("nested-exit-fresnel false: leaving a nested solid, Fresnel reflects nothing",
+          "[render][refraction][pov-rules]") {
+  // The scene above with POV-Ray 3.7's rule: the ray leaves the glass ball while inside the
+  // water ball too, and POV-Ray's Fresnel ratio there is the last medium entered (the glass)
+  // over the glass, 1: no reflection, only the glow. Alone (not nested) the rule is the
+  // physical one, F = ((1.5 - 1)/2.5)^2 = 0.04. Refraction keeps the true indices.
+  for (bool nested : {true, false}) {
+    INFO(nested);
+    Scene scene;
+    scene.render.maxDepth = 2;
+    scene.render.minWeight = 0.0;
+    Material ball;
+    ball.emissive = Color(1.0f);
+    ball.reflective = Color(1.0f);
+    ball.fresnel = true;
+    ball.ior = 1.5;
+    ball.nestedExitFresnel = false;
+    addShape(scene, SphereSpec{Vec3(0), 1.0}, addMaterial(scene, ball));
+    if (nested) addShape(scene, SphereSpec{Vec3(0), 3.0}, addMaterial(scene, glass(1.33)));
+    World world(scene);
+    Color c = traceOne(world, Ray(Vec3(0), Vec3(0, 0, -1)));
+    CHECK(c.r == Approx(nested ? 1.0 : 1.04).epsilon(1e-6));
+  }
+}
+
 TEST_CASE("<render epsilon> moves secondary origins by epsilon along the normal",
           "[render][refraction]") {
   // An exaggerated epsilon of 0.5: the ray entering the slab z in [-2, 0] starts again at

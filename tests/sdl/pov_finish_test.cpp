@@ -70,6 +70,7 @@ TEST_CASE("filter and transmit: the opacity scales the local terms, not the high
   CHECK_FALSE(importMaterial(PovPigment{}, finish, interior).material.fullTir);
   // Ambient seen from inside is POV-Ray's rule too (inner-ambient): no difference to report.
   CHECK(m.material.innerAmbient);
+  CHECK_FALSE(m.material.nestedExitFresnel);  // POV-Ray's Fresnel ratio on leaving a nested solid
   CHECK(m.differences.empty());
 }
 
