@@ -1,6 +1,6 @@
 // Running the scene reader on a stack of its own: a POV-Ray scene nests objects, macros and
 // directives by recursion (each bounded, objects at 256 deep), and the frames of that
-// recursion are large (a PovObject holds a whole texture), larger still under the
+// recursion are large (tokens, values and a PovObject per level), larger still under the
 // sanitizers; a thread's default 8 MB is too little for the deepest nesting allowed there.
 #pragma once
 

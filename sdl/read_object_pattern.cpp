@@ -16,7 +16,7 @@ namespace {
 // POV-Ray asks the object's inside alone: its textures are left out of the node.
 void dropTextures(PovObject& o) {
   o.texture.reset();
-  for (PovObject& c : o.children) dropTextures(c);
+  for (PovObject& c : o.children.edit()) dropTextures(c);
   for (PovObject& c : o.clip) dropTextures(c);
   for (PovObject& c : o.bound) dropTextures(c);
 }

@@ -22,16 +22,29 @@ NodeKind csgKind(std::string_view word) {
 // `open`), but an intersection, a difference, a merge or a clip asks their inside, which an
 // open Lucent shape has not: there they stay closed, as Lucent's solid. The messages of
 // those closed again, at each.
-void closeForCsg(PovObject& o, std::vector<std::pair<SourceLoc, std::string>>& closed) {
+// Whether the object holds an open height field or lathe (only then is it changed, so a
+// declared object's children stay shared).
+bool opensInCsg(const PovObject& o) {
   if (o.shape) {
-    if (auto* h = std::get_if<HeightFieldSpec>(&*o.shape); h && h->open) {
+    if (auto* h = std::get_if<HeightFieldSpec>(&*o.shape); h && h->open) return true;
+    if (auto* l = std::get_if<LatheSpec>(&*o.shape); l && l->open) return true;
+  }
+  for (const PovObject& c : *o.children)
+    if (opensInCsg(c)) return true;
+  return false;
+}
+
+void closeForCsg(PovObject& o, std::vector<std::pair<SourceLoc, std::string>>& closed) {
+  if (!opensInCsg(o)) return;
+  if (o.shape) {
+    if (auto* h = std::get_if<HeightFieldSpec>(&o.shape.edit()); h && h->open) {
       h->open = false;
       closed.emplace_back(o.loc,
                           "in an intersection, difference, merge or clip Lucent's height field "
                           "is a solid closed by walls and a floor at the water level; "
                           "POV-Ray's has none (seen from below or beside, they differ)");
     }
-    if (auto* l = std::get_if<LatheSpec>(&*o.shape); l && l->open) {
+    if (auto* l = std::get_if<LatheSpec>(&o.shape.edit()); l && l->open) {
       l->open = false;
       closed.emplace_back(o.loc,
                           "in an intersection, difference, merge or clip Lucent's lathe is a "
@@ -39,7 +52,7 @@ void closeForCsg(PovObject& o, std::vector<std::pair<SourceLoc, std::string>>& c
                           "leaves it open");
     }
   }
-  for (PovObject& c : o.children) closeForCsg(c, closed);
+  for (PovObject& c : o.children.edit()) closeForCsg(c, closed);
 }
 
 }  // namespace
@@ -86,10 +99,10 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
     o.kind = csgKind(o.keyword);
     while (isObjectKeyword(in.peek())) {
       const Token child = in.next();
-      o.children.push_back(readObject(child, in));
+      o.children.edit().push_back(readObject(child, in));
       // Objects built of declared objects grow without reading deeper (a loop that puts the
       // last union in the next): their depth and size are bounded as they are composed.
-      const PovObject& c = o.children.back();
+      const PovObject& c = o.children->back();
       o.depth = std::max(o.depth, c.depth + 1);
       o.nodes += c.nodes;
       if (o.depth > kMaxObjectDepth)
@@ -100,7 +113,7 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
     }
     if (o.kind != NodeKind::Union) {
       std::vector<std::pair<SourceLoc, std::string>> closed;
-      for (PovObject& c : o.children) closeForCsg(c, closed);
+      for (PovObject& c : o.children.edit()) closeForCsg(c, closed);
       for (const auto& [loc, message] : closed) warn(in, loc, message);
     }
   } else {
@@ -133,34 +146,36 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
       // A texture { } on an object that has one (from any block) is a layer over it.
       PovTexture top = readTexture(in, defaultTexture());
       top.transform(backToObject);
-      o.texture = layerOver(std::move(*o.texture), std::move(top), t.loc(), in);
+      o.texture = layerOver(std::move(o.texture.edit()), std::move(top), t.loc(), in);
       return true;
     }
     if (!o.texture) {
       o.texture = defaultTexture();
-      o.texture->transform(backToObject);
+      o.texture.edit().transform(backToObject);
       o.textureLoc = t.loc();
     }
     // A block continues the object's own pigment, normal or finish, as POV-Ray's does
     // (the default texture's when the object had none): moved back to the object's
     // current space to be read on, then carried back again.
     const PovTransform here = o.transform;
-    if (w != "texture") o.texture->name.clear();  // a declared texture, changed
+    if (w != "texture") o.texture.edit().name.clear();  // a declared texture, changed
     if (w == "pigment") {
       PovPigment start = o.texture->pigment;
       start.transform = start.transform.then(here);
-      o.texture->pigment = readPigment(in, start);
-      o.texture->pigment.transform = o.texture->pigment.transform.then(backToObject);
+      PovPigment& pigment = o.texture.edit().pigment;
+      pigment = readPigment(in, start);
+      pigment.transform = pigment.transform.then(backToObject);
     } else if (w == "normal") {
       std::optional<PovNormal> start = o.texture->normal;
       if (start) start->transform = start->transform.then(here);
-      o.texture->normal = readNormal(in, start ? &*start : nullptr);
-      o.texture->normal->transform = o.texture->normal->transform.then(backToObject);
+      std::optional<PovNormal>& normal = o.texture.edit().normal;
+      normal = readNormal(in, start ? &*start : nullptr);
+      normal->transform = normal->transform.then(backToObject);
     } else if (w == "finish") {
-      o.texture->finish = readFinish(in, o.texture->finish);
+      o.texture.edit().finish = readFinish(in, o.texture->finish);
     } else {
-      *o.texture = readTexture(in, defaultTexture());
-      o.texture->transform(backToObject);
+      o.texture = readTexture(in, defaultTexture());
+      o.texture.edit().transform(backToObject);
       o.textureLoc = t.loc();
     }
   } else if (w == "interior") {
@@ -168,20 +183,20 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
   } else if (w == "material") {
     const PovMaterial m = readMaterial(in);
     if (m.texture) {
-      o.texture = m.texture;
-      o.texture->transform(backToObject);
+      o.texture = *m.texture;
+      o.texture.edit().transform(backToObject);
       o.textureLoc = t.loc();
     }
     if (m.interiorTexture) {
-      o.interiorTexture = m.interiorTexture;
-      o.interiorTexture->transform(backToObject);
+      o.interiorTexture = *m.interiorTexture;
+      o.interiorTexture.edit().transform(backToObject);
       o.interiorTextureLoc = t.loc();
     }
     if (m.interior) o.interior = m.interior;
   } else if (w == "interior_texture") {
     // POV-Ray's interior_texture replaces a former one, layered only by its own blocks.
     o.interiorTexture = readTexture(in, defaultTexture());
-    o.interiorTexture->transform(backToObject);
+    o.interiorTexture.edit().transform(backToObject);
     o.interiorTextureLoc = t.loc();
   } else if (w == "no_shadow") {
     o.noShadow = true;
@@ -202,15 +217,15 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
   } else if (w == "open") {
     const bool open = optionalBool(in);
     if (o.shape && std::holds_alternative<CylinderSpec>(*o.shape))
-      std::get<CylinderSpec>(*o.shape).open = open;
+      std::get<CylinderSpec>(o.shape.edit()).open = open;
     else if (o.shape && std::holds_alternative<ConeSpec>(*o.shape))
-      std::get<ConeSpec>(*o.shape).open = open;
+      std::get<ConeSpec>(o.shape.edit()).open = open;
     else if (o.shape && std::holds_alternative<IsosurfaceSpec>(*o.shape))
-      std::get<IsosurfaceSpec>(*o.shape).open = open;
+      std::get<IsosurfaceSpec>(o.shape.edit()).open = open;
     else if (o.shape && std::holds_alternative<SorSpec>(*o.shape))
-      std::get<SorSpec>(*o.shape).open = open;
+      std::get<SorSpec>(o.shape.edit()).open = open;
     else if (o.shape && std::holds_alternative<PrismSpec>(*o.shape))
-      std::get<PrismSpec>(*o.shape).open = open;
+      std::get<PrismSpec>(o.shape.edit()).open = open;
     else in.error(t, "'open' is for a cylinder, cone, sor, prism or isosurface, not " + o.keyword);
   } else if (w == "clipped_by" || w == "bounded_by") {
     readClipOrBound(t, o, in);

@@ -495,7 +495,7 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   // Left out (--skip-unsupported): a shape Lucent has not.
   if (o.kind == NodeKind::Shape && !o.shape && options_.skipUnsupported) return nullptr;
   n->parentFromNode = o.transform.lucentMatrix();
-  n->shape = o.shape;
+  if (o.shape) n->shape = *o.shape;
   n->shadows = !o.noShadow;
   n->image = !o.noImage;
   n->reflection = !o.noReflection;
@@ -535,7 +535,7 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   here.textureFromParent = textureFromNode;
   here.framed = inherited.framed && o.kind == NodeKind::Union && o.clip.empty() && o.bound.empty();
   here.movedAfter = inherited.movedAfter || !o.transform.isIdentity();
-  for (const PovObject& c : o.children)
+  for (const PovObject& c : *o.children)
     if (auto child = toNode(c, here, false, in)) n->children.push_back(std::move(child));
   for (const PovObject& c : o.clip)
     if (auto child = toNode(c, here, false, in)) n->clip.push_back(std::move(child));

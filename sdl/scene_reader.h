@@ -16,6 +16,7 @@
 #include "pov_settings.h"
 #include "pov_space.h"
 #include "read_support.h"
+#include "shared_values.h"
 #include "token_stream.h"
 
 #include "lang/diagnostics.h"
@@ -107,18 +108,19 @@ struct PovObject {
   std::string keyword;  // "sphere", "union", "light_source"...
   SourceLoc loc;
   NodeKind kind = NodeKind::Shape;
-  std::optional<ShapeSpec> shape;  // in Lucent's space (z negated)
-  std::optional<PovLight> light;   // kind == Light
-  std::vector<PovObject> children;
-  PovTransform transform;  // the object's transforms, in POV-Ray's space
+  SharedOptional<ShapeSpec> shape;               // in Lucent's space (z negated)
+  SharedOptional<PovLight> light;                // kind == Light
+  SharedValue<std::vector<PovObject>> children;  // shared by copies until one changes
+  PovTransform transform;                        // the object's transforms, in POV-Ray's space
   // Its texture, whose transforms lead from pattern space to this object's own space
   // (before `transform`): a texture written among the transforms is carried back by the
   // inverse of those written before it, so it follows only the later ones, as in POV-Ray.
-  std::optional<PovTexture> texture;
+  // Shared by the copies of the object until one changes it.
+  SharedOptional<PovTexture> texture;
   SourceLoc textureLoc;
   std::optional<PovInterior> interior;
   // interior_texture: the texture seen from inside, in the same space as `texture`.
-  std::optional<PovTexture> interiorTexture;
+  SharedOptional<PovTexture> interiorTexture;
   SourceLoc interiorTextureLoc;
   bool noShadow = false;
   bool noImage = false;       // no_image [on|off]

@@ -220,6 +220,43 @@ intersection { sphere { 0, 1 } plane { y, 0 } }
   CHECK(topNode(s, 2).kind == NodeKind::Intersection);
 }
 
+// A declared object's copies share its texture, shape and children until one is changed
+// (sdl/shared_values.h): a change to one use never reaches the declaration or another use.
+TEST_CASE("scene reader: changing one use of a declared object leaves the others as declared",
+          "[sdl][scene]") {
+  auto r = readScene(R"(
+#declare Pair = union {
+  cylinder { 0, y, 1 pigment { rgb <1, 0, 0> } }
+  sphere { 0, 1 }
+  pigment { rgb <0, 0, 1> }
+}
+#declare Can = cylinder { 0, y, 1 pigment { rgb <1, 0, 0> } }
+object { Pair pigment { rgb <0, 1, 0> } }
+difference { object { Pair } box { -1, 1 } }
+object { Pair }
+object { Can open pigment { rgb <0, 1, 0> } }
+object { Can }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  checkColor(materialOf(s, topNode(s, 0)).diffuse, Color(0.0f, 0.6f, 0.0f));
+  for (size_t i = 1; i < 3; ++i) {
+    INFO("use " << i);
+    const Node& u = i == 1 ? *topNode(s, i).children.at(0) : topNode(s, i);
+    checkColor(materialOf(s, u).diffuse, Color(0.0f, 0.0f, 0.6f));
+    REQUIRE(u.children.size() == 2);
+    checkColor(materialOf(s, *u.children[0]).diffuse, Color(0.6f, 0.0f, 0.0f));
+  }
+  const Node& opened = topNode(s, 3);
+  const Node& can = topNode(s, 4);
+  REQUIRE(opened.shape);
+  REQUIRE(can.shape);
+  CHECK(std::get<CylinderSpec>(*opened.shape).open);
+  CHECK(!std::get<CylinderSpec>(*can.shape).open);
+  checkColor(materialOf(s, opened).diffuse, Color(0.0f, 0.6f, 0.0f));
+  checkColor(materialOf(s, can).diffuse, Color(0.6f, 0.0f, 0.0f));
+}
+
 TEST_CASE("scene reader: camera, lights and settings", "[sdl][scene]") {
   auto r = readScene(R"(
 global_settings { assumed_gamma 1.0 max_trace_level 7 adc_bailout 0.01 ambient_light rgb 0.5 }
