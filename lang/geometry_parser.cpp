@@ -178,8 +178,7 @@ void readSolids(ParseContext& ctx, const SourceFile& file, pugi::xml_node elemen
 // The shapes of the registry, then the groups, CSG operations and <use>.
 const std::vector<std::string_view>& geometryElementNames() {
   static const std::vector<std::string_view> names = [] {
-    std::vector<std::string_view> n;
-    for (const ShapeType& t : shapeTypes()) n.push_back(t.element);
+    std::vector<std::string_view> n = shapeElementNames();
     for (const GroupEntry& g : kGroups) n.push_back(g.element);
     n.push_back("use");
     return n;

@@ -5,6 +5,7 @@
 
 #include "shape_type.h"
 
+#include <functional>
 #include <string_view>
 #include <type_traits>
 #include <variant>
@@ -12,7 +13,12 @@
 
 namespace lucent {
 
-const std::vector<ShapeType>& shapeTypes();
+// Every row (building those not yet built): for the schema, the tests, listing names.
+const std::vector<std::reference_wrapper<const ShapeType>>& shapeTypes();
+// One row, built on its first use; slot is ShapeSpec's alternative.
+const ShapeType& shapeType(size_t slot);
+// The elements' names, in slot order, without building any row.
+const std::vector<std::string_view>& shapeElementNames();
 // Null when no shape element has that name.
 const ShapeType* findShapeType(std::string_view element);
 const ShapeType& shapeTypeOf(const ShapeSpec& spec);

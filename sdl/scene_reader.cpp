@@ -349,7 +349,7 @@ uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& 
     m.id = same == 0 ? texture.name : texture.name + "-" + std::to_string(same + 1);
     namedMaterials_[key] = index;
   }
-  scene_.materials.push_back(m);
+  scene_.materials.push_back(std::move(m));
   return index;
 }
 

@@ -48,16 +48,20 @@ TEST_CASE("shape registry: one row per ShapeSpec alternative, each named once",
   const auto& types = shapeTypes();
   REQUIRE(types.size() == std::variant_size_v<ShapeSpec>);
   std::set<std::string> names;
+  REQUIRE(shapeElementNames().size() == types.size());
   for (size_t i = 0; i < types.size(); ++i) {
-    INFO(types[i].element);
-    CHECK(types[i].slot == i);
-    CHECK(names.insert(types[i].element).second);
-    CHECK(findShapeType(types[i].element) == &types[i]);
-    CHECK(testSlotName(i) == types[i].plural);
+    const ShapeType& type = types[i];
+    INFO(type.element);
+    CHECK(type.slot == i);
+    CHECK(names.insert(type.element).second);
+    CHECK(findShapeType(type.element) == &type);
+    CHECK(&shapeType(i) == &type);
+    CHECK(shapeElementNames()[i] == type.element);
+    CHECK(testSlotName(i) == type.plural);
   }
   CHECK(findShapeType("group") == nullptr);
   CHECK(slotOf<SphereSpec>() == 0);
-  CHECK(types[slotOf<MeshSpec>()].element == "mesh");
+  CHECK(shapeType(slotOf<MeshSpec>()).element == "mesh");
   CHECK(testSlotName(kMeshTriangleSlot) == "mesh triangles");
 }
 
