@@ -173,35 +173,31 @@ int polynomialRootsN(const double* c, const double* cAbs, double lo, double hi,
 
 }  // namespace
 
+namespace {
+
+// The degree-N solver for n = N, or the next one up: the instantiations 2 to
+// kMaxPolynomialDegree without writing each case, the low degrees (the torus's, the
+// lathe's) tested first.
+template <int N>
+int rootsOfDegree(const double* c, const double* cAbs, int n, double lo, double hi,
+                  PolynomialRoot* out) {
+  if (n == N) return polynomialRootsN<N>(c, cAbs, lo, hi, out);
+  if constexpr (N < kMaxPolynomialDegree) return rootsOfDegree<N + 1>(c, cAbs, n, lo, hi, out);
+  return 0;
+}
+
+}  // namespace
+
 int polynomialRoots(const double* c, const double* cAbs, int n, double lo, double hi,
                     PolynomialRoot* out) {
-  switch (n) {
-    case 1: {
-      double x;
-      if (!linearRoot(c, lo, hi, x)) return 0;
-      out[0] = {x, false};
-      return 1;
-    }
-    case 2:
-      return polynomialRootsN<2>(c, cAbs, lo, hi, out);
-    case 3:
-      return polynomialRootsN<3>(c, cAbs, lo, hi, out);
-    case 4:
-      return polynomialRootsN<4>(c, cAbs, lo, hi, out);
-    case 5:
-      return polynomialRootsN<5>(c, cAbs, lo, hi, out);
-    case 6:
-      return polynomialRootsN<6>(c, cAbs, lo, hi, out);
-    case 7:
-      return polynomialRootsN<7>(c, cAbs, lo, hi, out);
-    case 8:
-      return polynomialRootsN<8>(c, cAbs, lo, hi, out);
-    case 9:
-      return polynomialRootsN<9>(c, cAbs, lo, hi, out);
-    case 10:
-      return polynomialRootsN<10>(c, cAbs, lo, hi, out);
+  if (n == 1) {
+    double x;
+    if (!linearRoot(c, lo, hi, x)) return 0;
+    out[0] = {x, false};
+    return 1;
   }
-  return 0;
+  if (n < 1 || n > kMaxPolynomialDegree) return 0;
+  return rootsOfDegree<2>(c, cAbs, n, lo, hi, out);
 }
 
 }  // namespace lucent
