@@ -60,11 +60,16 @@ double errorBound(const double* cAbs, double x) {
 // (Numerical Recipes' rtsafe). It stops once |p(x)| is within the rounding error of its
 // evaluation (then x is as good as the coefficients allow; one more Newton step is taken)
 // or the step falls below a few ulps: waiting for the step itself to vanish would make
-// Newton chase the rounding noise of p near the root for dozens of iterations.
+// Newton chase the rounding noise of p near the root for dozens of iterations. A bracket
+// may span the Cauchy bound of a line polynomial with a tiny leading coefficient (1e11 for a
+// sextic poly met by a line almost square to its x⁶ axis) with the root near 0: halving it
+// down to the ulps of the root takes about 90 steps, so the cap of 400 is never the reason
+// to stop (at 100 such a root came back unfinished, a critical point off by far more than
+// its piece, and the roots beside it were lost).
 template <int N>
 double refineBracketed(const double* c, const double* cAbs, double a, double b, double fa) {
   double x = 0.5 * (a + b);
-  for (int it = 0; it < 100; ++it) {
+  for (int it = 0; it < 400; ++it) {
     double fx = evalN<N>(c, x);
     if (fx == 0.0) return x;
     if ((fx < 0.0) == (fa < 0.0)) {

@@ -3,7 +3,9 @@
 // (P < 0 inside exactly one of them), so every hit is a sphere's quadratic root; the
 // "superellipsoid" x^34 + y^34 + z^34 < 1 and z^35 + x² + y² < 1 have roots along the axes
 // given by real powers.
+#include "primitives/offset.h"
 #include "primitives/poly.h"
+#include "shape_checks.h"
 
 #include <catch2/catch.hpp>
 
@@ -148,4 +150,105 @@ TEST_CASE("poly: order 34 and 35 surfaces hit at their exact roots", "[primitive
   Hit h;
   REQUIRE(odd.intersect(down, h));
   CHECK(h.t == Approx(4.0 + std::pow(1.25, 1.0 / 35.0)).epsilon(1e-12));
+}
+
+namespace {
+
+// POV-Ray's Twin_Glob and Glob_5 (shapesq.inc) and the rounded cube of order 8.
+std::vector<std::pair<std::string, Poly>> shapesAboveFour() {
+  return {
+      {"Twin_Glob",
+       Poly(6, coefficients(
+                   {{{6, 0, 0}, 4.0}, {{4, 0, 0}, -4.0}, {{0, 2, 0}, 1.0}, {{0, 0, 2}, 1.0}}, 6))},
+      {"Glob_5",
+       Poly(5, coefficients(
+                   {{{5, 0, 0}, -0.5}, {{4, 0, 0}, -0.5}, {{0, 2, 0}, 1.0}, {{0, 0, 2}, 1.0}}, 5))},
+      {"cube of order 8",
+       Poly(8, coefficients(
+                   {{{8, 0, 0}, 1.0}, {{0, 8, 0}, 1.0}, {{0, 0, 8}, 1.0}, {{0, 0, 0}, -1.0}}, 8))}};
+}
+
+}  // namespace
+
+TEST_CASE("poly above order 4: the crossings contract, and rays leaving never re-hit",
+          "[primitives][poly]") {
+  // The checks every registered shape passes (contract_test, self_intersection_test), here
+  // for orders 5, 6 and 8: random rays at the box [-1, 1]³, and from each hit a mirror ray,
+  // a ray into the solid and one out of it, offset by the hit's error bound alone.
+  test::Rng rng(4343);
+  const AABB aim(Vec3(-1.0), Vec3(1.0));
+  for (const auto& [name, poly] : shapesAboveFour()) {
+    INFO(name);
+    int hits = 0, secondaries = 0, rehits = 0, wrongStart = 0;
+    std::string violation;
+    for (int i = 0; i < 3000; ++i) {
+      const Ray primary = test::randomRayAt(rng, aim);
+      const std::string v = test::intersectAgreesWithCrossings(poly, primary);
+      if (!v.empty() && violation.empty()) violation = v;
+      Hit h;
+      if (!poly.intersect(primary, h)) continue;
+      const SurfaceInfo si = poly.surface(primary, h);
+      const Vec3 d = glm::normalize(primary.d);
+      if (std::abs(glm::dot(d, si.ng)) < 0.05) continue;
+      ++hits;
+      const Vec3 facing = glm::dot(d, si.ng) < 0.0 ? si.ng : -si.ng;
+      for (const Vec3& w : {d - 2.0 * glm::dot(d, facing) * facing, d,
+                            glm::normalize(si.ng + 0.7 * test::randomUnit(rng))}) {
+        if (std::abs(glm::dot(w, si.ng)) < 0.05) continue;
+        ++secondaries;
+        const bool outward = glm::dot(w, si.ng) > 0.0;
+        const Ray ray(offsetRayOrigin(si.p, si.pError, si.ng, w), w);
+        Hit again;
+        if (poly.intersect(ray, again) && again.t < 1e-6) ++rehits;
+        CrossingList list;
+        poly.crossings(ray, list);
+        if (list.startsInside == outward) ++wrongStart;
+      }
+    }
+    CHECK(violation.empty());
+    CHECK(hits > 300);
+    CHECK(secondaries > 2 * hits);
+    CHECK(rehits == 0);
+    CHECK(wrongStart == 0);
+  }
+}
+
+TEST_CASE("poly: a line almost square to the top power keeps its roots near the origin",
+          "[primitives][poly]") {
+  // Twin_Glob met by a line whose x moves 0.012 per unit: the line polynomial's x⁶ term is
+  // 1.3e-11, so the roots' Cauchy bound is 1.6e11 while the two crossings lie within half a
+  // unit. The reference: bisection on P along the line in long double.
+  const Poly poly(
+      6,
+      coefficients({{{6, 0, 0}, 4.0}, {{4, 0, 0}, -4.0}, {{0, 2, 0}, 1.0}, {{0, 0, 2}, 1.0}}, 6));
+  const Vec3 o(-0.5076919, -0.3851853, -0.2175339);  // 0.001 inside the lower lobe
+  const Vec3 d = glm::normalize(Vec3(0.0121044, 0.881708, -0.471639));
+  auto P = [&](long double t) {
+    const long double x = o.x + t * d.x, y = o.y + t * d.y, z = o.z + t * d.z;
+    const long double x2 = x * x, x4 = x2 * x2;
+    return 4 * x4 * x2 - 4 * x4 + y * y + z * z;
+  };
+  auto bisect = [&](long double a, long double b) {
+    const bool aNeg = P(a) < 0;
+    for (int i = 0; i < 200; ++i) {
+      const long double m = 0.5L * (a + b);
+      ((P(m) < 0) == aNeg ? a : b) = m;
+    }
+    return static_cast<double>(0.5L * (a + b));
+  };
+  REQUIRE(P(0) < 0);
+  REQUIRE(P(1) > 0);
+  const double exit = bisect(0, 1);
+  CrossingList list;
+  Ray ray(o, d);
+  ray.tmin = -1.0;
+  poly.crossings(ray, list);
+  CHECK(!list.startsInside);
+  REQUIRE(list.items.size() == 2);
+  CHECK(list.items[0].entering);
+  CHECK(list.items[0].hit.t == Approx(bisect(-1, 0)).epsilon(1e-12));
+  CHECK(list.items[1].hit.t == Approx(exit).epsilon(1e-12));
+  Hit h;
+  REQUIRE(poly.intersect(Ray(o, d), h));
+  CHECK(h.t == Approx(exit).epsilon(1e-12));
 }
