@@ -10,8 +10,8 @@
 // sums, from an origin shifted to the line's point closest to the object's origin (so the
 // coefficients stay of the shape's size however far a ray starts). Its real roots on the
 // whole line come from primitives/polynomial.h (monotone pieces between the derivative's
-// roots, bracketed Newton: Yuksel, HPG 2022), inside the Cauchy bound of the roots (capped
-// where the top power would overflow: 10^(250/n) from the line's closest point); each is
+// roots, bracketed Newton: Yuksel, HPG 2022), inside Cauchy's or Fujiwara's bound of the roots
+// (capped where the top power would overflow: 10^(250/n) from the line's closest point); each is
 // polished by one Newton step on P evaluated at the point itself. A root is a crossing
 // only where the sign of P differs on its two sides (a tangent ray touches without
 // crossing), which also decides entering or leaving. The shape is unbounded, like
