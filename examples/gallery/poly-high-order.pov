@@ -9,11 +9,11 @@ background { rgb <0.12, 0.14, 0.18> }
 
 camera {
   perspective
-  location <0, 2.8, 9.6>
+  location <0, 4.6, 9.2>
   right -x*4/3
   up y
   angle 45
-  look_at <0, 0.95, 0>
+  look_at <0, 0.75, 0>
 }
 light_source { <-5, 8, 7> color rgb 1 }
 light_source { <4, 3, 6> color rgb 0.4 }
