@@ -7,7 +7,7 @@
 #
 #   bash bench/mpi_efficiency.sh [--runs N] [--build DIR]
 #
-# The scenes: examples/showcase.xml (glass, mirrors, area light: uneven tiles), a displaced
+# The scenes: examples/five-shapes.xml (glass, mirrors, area light: uneven tiles), a displaced
 # sphere of 720,000 triangles in a PLY file (mostly parsing: the file streamed to rank 1
 # while both parse it, and a BVH built by each rank), and examples/primitives.xml at
 # 1600x1200 (many cheap, even tiles). mpirun's own start (`mpirun -np 2 lucent-mpi
@@ -87,7 +87,7 @@ launch=$(median < "$work/launch")
 printf '# mpirun -np 2 lucent-mpi --version (the launch of a job): %.2f s\n\n' "$launch"
 echo "| scene | 1 process × 2 threads (s) | 2 ranks × 1 thread (s) | efficiency | without the launch | same bytes |"
 echo "|---|---|---|---|---|---|"
-for spec in "examples/showcase.xml" "$work/bumpy.xml" "examples/primitives.xml -w 1600 -h 1200"; do
+for spec in "examples/five-shapes.xml" "$work/bumpy.xml" "examples/primitives.xml -w 1600 -h 1200"; do
   read -r -a args <<< "$spec"
   name=$(basename "${args[0]}")
   [ ${#args[@]} -gt 1 ] && name="$name ${args[*]:1}"

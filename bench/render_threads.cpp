@@ -2,7 +2,7 @@
 // same run, wall time each and the ratio to one thread. The images must be identical
 // (the renderer promises bit-identical output for any thread count); this checks it too.
 //
-//   render_threads [SCENE.xml] [--repeat N]     (default: examples/showcase.xml, run from
+//   render_threads [SCENE.xml] [--repeat N]     (default: examples/five-shapes.xml, run from
 //                                                the source folder)
 #include "lang/parser.h"
 #include "render/renderer.h"
@@ -18,7 +18,7 @@
 using namespace lucent;
 
 int main(int argc, char** argv) {
-  std::string path = "examples/showcase.xml";
+  std::string path = "examples/five-shapes.xml";
   int repeat = 3;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) repeat = std::atoi(argv[++i]);

@@ -109,7 +109,7 @@ if command -v povray >/dev/null; then
     --size "$gallerySize" --no-doc --out "$data/gallery-speed" "${galleryScenes[@]}" || true
   echo "bash bench/run.sh: the showcase against POV-Ray ($showSize, one sample, one thread)" >&2
   bash bench/gallery_speed.sh --lucent "$lucent" --threads 1 --samples 1 --reps "$showReps" \
-    --size "$showSize" --no-doc --out "$data/showcase-speed" examples/showcase.xml || true
+    --size "$showSize" --no-doc --out "$data/showcase-speed" examples/five-shapes.xml || true
   echo "bash bench/run.sh: speed against error" >&2
   bash bench/speed_vs_error.sh --lucent "$lucent" --out "$sve" "${sveArgs[@]}" "${sveScenes[@]}" || true
 fi
@@ -213,7 +213,7 @@ B=$build
 vsCmd="\`$B/bench/vs_povray $B/cli/lucent WORK --triangles $tris --size $peakSize --repeat $povRepeat\`"
 embreeCmd="\`$B/bench/mesh_embree --triangles $tris --size $size\`"
 galleryCmd="\`bash bench/gallery_speed.sh --lucent $B/cli/lucent --threads 1 --samples 1 --reps $galleryReps --size $gallerySize\`"
-showCmd="\`bash bench/gallery_speed.sh --lucent $B/cli/lucent --threads 1 --samples 1 --reps $showReps --size $showSize examples/showcase.xml\`"
+showCmd="\`bash bench/gallery_speed.sh --lucent $B/cli/lucent --threads 1 --samples 1 --reps $showReps --size $showSize examples/five-shapes.xml\`"
 sveShown=$(for a in "${sveArgs[@]}"; do [[ $a == *" "* ]] && printf " '%s'" "$a" || printf ' %s' "$a"; done)
 sveCmd="\`bash bench/speed_vs_error.sh --lucent $B/cli/lucent$sveShown examples/gallery/{glass,mirrors,light-area}.xml\`"
 scaleCmd="\`$B/bench/bvh_scaling --max $scaleMax --size $scaleSize\`"
@@ -270,7 +270,7 @@ profile() {  # title [profile-options] scene render-args...
 }
 notMet() { [[ $1 == *"not met"* ]]; }
 profile "The 1,000-sphere field, one thread (against POV-Ray: $s_spheres)" --repeat 5 "$work/spheres.xml" -t 1
-profile "The showcase at $showX, one sample, one thread (against POV-Ray: $s_show)" examples/showcase.xml \
+profile "The showcase at $showX, one sample, one thread (against POV-Ray: $s_show)" examples/five-shapes.xml \
   -w "${showSize%x*}" -h "${showSize#*x}" -s 1 -t 1
 if notMet "$s_mesh" || notMet "$s_prim" || notMet "$s_shad"; then
   profile "The 1M-triangle mesh, one thread (against POV-Ray: $s_mesh; against Embree, primary: $s_prim, shadow: $s_shad; the render traces the same mesh)" \

@@ -3,7 +3,7 @@
 // size, or a synthetic one when there is no trace.
 //
 //   # lucent tile costs 1
-//   # image 3840 2160 tile 16 threads 1 samples 16 scene examples/showcase.xml
+//   # image 3840 2160 tile 16 threads 1 samples 16 scene examples/five-shapes.xml
 //   x0 y0 x1 y1 seconds
 //   0 0 16 16 0.00123
 //

@@ -1,6 +1,6 @@
-// <poly order="3|4" coefficients="..."/>: the solid where a polynomial P(x, y, z) of degree
-// 3 or 4 is below 0, POV-Ray's poly { order, <coefficients> } with the same coefficients
-// in the same order.
+// <poly order="2..35" coefficients="..."/>: the solid where a polynomial P(x, y, z) of
+// degree 2 to 35 (POV-Ray's MAX_ORDER) is below 0, POV-Ray's poly { order, <coefficients> }
+// with the same coefficients in the same order.
 //
 // POV-Ray's order: the terms x^i y^j z^k of degree at most n, with i descending, then j,
 // then k (for n = 2: x², xy, xz, x, y², yz, y, z², z, 1); (n+1)(n+2)(n+3)/6 of them.
@@ -10,7 +10,8 @@
 // sums, from an origin shifted to the line's point closest to the object's origin (so the
 // coefficients stay of the shape's size however far a ray starts). Its real roots on the
 // whole line come from primitives/polynomial.h (monotone pieces between the derivative's
-// roots, bracketed Newton: Yuksel, HPG 2022), inside the Cauchy bound of the roots; each is
+// roots, bracketed Newton: Yuksel, HPG 2022), inside Cauchy's or Fujiwara's bound of the roots
+// (capped where the top power would overflow: 10^(250/n) from the line's closest point); each is
 // polished by one Newton step on P evaluated at the point itself. A root is a crossing
 // only where the sign of P differs on its two sides (a tangent ray touches without
 // crossing), which also decides entering or leaving. The shape is unbounded, like
@@ -26,11 +27,10 @@ namespace lucent {
 
 class Poly final : public Shape {
  public:
-  static constexpr int kMaxOrder = 4;
-  static constexpr int kMaxTerms = 35;  // (4+1)(4+2)(4+3)/6
+  static constexpr int kMaxOrder = 35;  // POV-Ray's MAX_ORDER
   static int termCount(int order) { return (order + 1) * (order + 2) * (order + 3) / 6; }
 
-  // Throws std::invalid_argument for an order outside 2 to 4, a wrong number of
+  // Throws std::invalid_argument for an order outside 2 to 35, a wrong number of
   // coefficients, a non-finite one, or when every coefficient but the constant is 0.
   Poly(int order, const std::vector<double>& coefficients);
 
@@ -45,7 +45,7 @@ class Poly final : public Shape {
   double value(const Vec3& p) const;
   Vec3 gradient(const Vec3& p) const;
 
-  // The sign changes of P along the whole line, ascending (room for 4), each marked
+  // The sign changes of P along the whole line, ascending (room for the order), each marked
   // entering (P turns negative) or not; startsInside tells the state before the first.
   int lineCrossings(const Ray& ray, double t[kMaxOrder], bool entering[kMaxOrder],
                     bool& startsInside) const;
@@ -56,8 +56,8 @@ class Poly final : public Shape {
     double c;
   };
   int order_;
-  std::vector<Term> terms_;                                         // the non-zero ones
-  double dense_[kMaxOrder + 1][kMaxOrder + 1][kMaxOrder + 1] = {};  // c_ijk, zero where absent
+  std::vector<Term> terms_;    // the non-zero ones
+  std::vector<double> dense_;  // c_ijk at (i·(n+1) + j)·(n+1) + k, zero where absent
   AABB bounds_ = AABB::everything();
 
   // P(o + u·d) as a polynomial in u (degree order_), with its coefficients' magnitudes.

@@ -60,11 +60,16 @@ double errorBound(const double* cAbs, double x) {
 // (Numerical Recipes' rtsafe). It stops once |p(x)| is within the rounding error of its
 // evaluation (then x is as good as the coefficients allow; one more Newton step is taken)
 // or the step falls below a few ulps: waiting for the step itself to vanish would make
-// Newton chase the rounding noise of p near the root for dozens of iterations.
+// Newton chase the rounding noise of p near the root for dozens of iterations. A bracket
+// may span the Cauchy bound of a line polynomial with a tiny leading coefficient (1e11 for a
+// sextic poly met by a line almost square to its x⁶ axis) with the root near 0: halving it
+// down to the ulps of the root takes about 90 steps, so the cap of 400 is never the reason
+// to stop (at 100 such a root came back unfinished, a critical point off by far more than
+// its piece, and the roots beside it were lost).
 template <int N>
 double refineBracketed(const double* c, const double* cAbs, double a, double b, double fa) {
   double x = 0.5 * (a + b);
-  for (int it = 0; it < 100; ++it) {
+  for (int it = 0; it < 400; ++it) {
     double fx = evalN<N>(c, x);
     if (fx == 0.0) return x;
     if ((fx < 0.0) == (fa < 0.0)) {
@@ -173,35 +178,31 @@ int polynomialRootsN(const double* c, const double* cAbs, double lo, double hi,
 
 }  // namespace
 
+namespace {
+
+// The degree-N solver for n = N, or the next one up: the instantiations 2 to
+// kMaxPolynomialDegree without writing each case, the low degrees (the torus's, the
+// lathe's) tested first.
+template <int N>
+int rootsOfDegree(const double* c, const double* cAbs, int n, double lo, double hi,
+                  PolynomialRoot* out) {
+  if (n == N) return polynomialRootsN<N>(c, cAbs, lo, hi, out);
+  if constexpr (N < kMaxPolynomialDegree) return rootsOfDegree<N + 1>(c, cAbs, n, lo, hi, out);
+  return 0;
+}
+
+}  // namespace
+
 int polynomialRoots(const double* c, const double* cAbs, int n, double lo, double hi,
                     PolynomialRoot* out) {
-  switch (n) {
-    case 1: {
-      double x;
-      if (!linearRoot(c, lo, hi, x)) return 0;
-      out[0] = {x, false};
-      return 1;
-    }
-    case 2:
-      return polynomialRootsN<2>(c, cAbs, lo, hi, out);
-    case 3:
-      return polynomialRootsN<3>(c, cAbs, lo, hi, out);
-    case 4:
-      return polynomialRootsN<4>(c, cAbs, lo, hi, out);
-    case 5:
-      return polynomialRootsN<5>(c, cAbs, lo, hi, out);
-    case 6:
-      return polynomialRootsN<6>(c, cAbs, lo, hi, out);
-    case 7:
-      return polynomialRootsN<7>(c, cAbs, lo, hi, out);
-    case 8:
-      return polynomialRootsN<8>(c, cAbs, lo, hi, out);
-    case 9:
-      return polynomialRootsN<9>(c, cAbs, lo, hi, out);
-    case 10:
-      return polynomialRootsN<10>(c, cAbs, lo, hi, out);
+  if (n == 1) {
+    double x;
+    if (!linearRoot(c, lo, hi, x)) return 0;
+    out[0] = {x, false};
+    return 1;
   }
-  return 0;
+  if (n < 1 || n > kMaxPolynomialDegree) return 0;
+  return rootsOfDegree<2>(c, cAbs, n, lo, hi, out);
 }
 
 }  // namespace lucent

@@ -1,5 +1,6 @@
-// Real roots of low-degree polynomials on an interval: the torus's quartic, the lathe's
-// sextic, the sphere sweep's tenth-degree envelope condition.
+// Real roots of polynomials on an interval: the torus's quartic, the lathe's sextic, the
+// sphere sweep's tenth-degree envelope condition, a poly's line polynomial up to degree 35
+// (POV-Ray's MAX_ORDER).
 //
 // Method: Yuksel, "High-Performance Polynomial Root Finding for Graphics" (HPG 2022). The
 // roots of the derivative split the interval into pieces on which the polynomial is
@@ -12,14 +13,14 @@
 
 namespace lucent {
 
-constexpr int kMaxPolynomialDegree = 10;
+constexpr int kMaxPolynomialDegree = 35;
 
 struct PolynomialRoot {
   double x;
   bool touching;  // a critical point where p is 0 within rounding: a double (tangent) root
 };
 
-// p(x) = Σ c[i]·x^i of degree n (1 <= n <= 10, c[n] != 0). cAbs[i] bounds the magnitude of
+// p(x) = Σ c[i]·x^i of degree n (1 <= n <= 35, c[n] != 0). cAbs[i] bounds the magnitude of
 // the terms that make up c[i] (c[i]'s own rounding error is a few ulps of it), so that
 // gamma(2n + 6)·Σ cAbs[i]·|x|^i bounds the error of p's value at x. Writes the roots in
 // (lo, hi), ascending, to out (room for n) and returns their count. A touching root is

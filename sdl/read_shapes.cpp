@@ -306,7 +306,7 @@ void SceneReader::readQuadric(PovObject& o, TokenStream& in) {
 }
 
 // poly { ORDER, <c...> }, cubic { <20 c> }, quartic { <35 c> }, and POV-Ray 3.7's
-// polynomial { ORDER, xyz(i, j, k): c ... }. POV-Ray takes orders 2 to 35; Lucent's poly 2 to 4.
+// polynomial { ORDER, xyz(i, j, k): c ... }: orders 2 to 35, as POV-Ray (its MAX_ORDER).
 void SceneReader::readPoly(PovObject& o, TokenStream& in) {
   const std::string& w = o.keyword;
   int order = w == "cubic" ? 3 : w == "quartic" ? 4 : 0;
@@ -316,13 +316,6 @@ void SceneReader::readPoly(PovObject& o, TokenStream& in) {
     in.parseComma();
     if (!(f >= 2.0 && f < 36.0)) in.error(loc, "the order of a " + w + " must be from 2 to 35");
     order = static_cast<int>(f);
-    if (order > 4) {
-      refuseShape(o, o.loc, in,
-                  "'" + w + "' of order " + std::to_string(order) +
-                      " is not supported by Lucent (its poly takes orders 2 to 4; the nearest "
-                      "Lucent shape is <isosurface>)");
-      return;
-    }
   }
   PolySpec s;
   s.order = order;

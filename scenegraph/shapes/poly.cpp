@@ -1,5 +1,5 @@
-// <poly order="4" coefficients="..."/>: the solid where a polynomial of degree 2 to 4 in x,
-// y and z is below 0, with POV-Ray's poly's coefficient order (primitives/poly.h).
+// <poly order="4" coefficients="..."/>: the solid where a polynomial of degree 2 to 35 in
+// x, y and z is below 0, with POV-Ray's poly's coefficient order (primitives/poly.h).
 #include "scenegraph/shape_type.h"
 
 #include "primitives/poly.h"
@@ -47,23 +47,25 @@ ShapeEntry<PolySpec> shapeEntry<PolySpec>() {
         out.line("sturm");
       });
   e.doc =
-      "The solid where a polynomial of degree 2, 3 or 4 in x, y and z is below 0 (solid; "
+      "The solid where a polynomial of degree 2 to 35 in x, y and z is below 0 (solid; "
       "unbounded).";
   e.fields = {
-      required(readByEntry<PolySpec>("order", AttrType::Number)).doc("The degree: 2, 3 or 4."),
+      required(readByEntry<PolySpec>("order", AttrType::Number))
+          .doc("The degree: 2 to 35 (POV-Ray's MAX_ORDER)."),
       required(readByEntry<PolySpec>("coefficients", AttrType::NumberList))
           .doc("The coefficients in POV-Ray's poly order: the terms x^i y^j z^k with i descending, "
-               "then j, then k (10, 20 or 35 numbers).")};
-  e.fields[0].info.rule = NumberRule::between(2, 4, "2, 3 or 4");
+               "then j, then k: (n+1)(n+2)(n+3)/6 numbers for order n (10, 20, 35, 56, ...).")};
+  e.fields[0].info.rule = NumberRule::between(2, Poly::kMaxOrder, "a whole number from 2 to 35");
   e.finish = [](PolySpec& s, AttributeInput& in) {
     if (!in.has("order")) {
-      in.error("<poly> needs the attribute 'order' (2, 3 or 4)");
+      in.error("<poly> needs the attribute 'order' (a whole number from 2 to 35)");
       return;
     }
-    const double order = in.number("order", 0.0, NumberRule::between(2, 4, "2, 3 or 4"));
+    const double order = in.number(
+        "order", 0.0, NumberRule::between(2, Poly::kMaxOrder, "a whole number from 2 to 35"));
     if (in.failed()) return;
     if (order != std::floor(order)) {
-      in.attrError("order", "must be 2, 3 or 4");
+      in.attrError("order", "must be a whole number from 2 to 35");
       return;
     }
     s.order = static_cast<int>(order);

@@ -3,7 +3,9 @@
 // the cone's apex at 1e-16 to 1e-1, grazing the plane), each against the long-double
 // quadratic of refQuadric; and polys: a torus written as a quartic against the torus's own
 // reference (the tube's distance function, independent of any quartic), tangent rays
-// included, the tangle cube (up to eight crossings a line) and an ellipsoid of order 2.
+// included, the tangle cube (up to eight crossings a line) and an ellipsoid of order 2; above
+// order 4, three spheres multiplied (order 6), the rounded cube x⁸ + y⁸ + z⁸ < 1 (order 8) and
+// x³⁴ + y³⁴ + z³⁴ < 1 (order 34), each against P evaluated term by term in long double.
 #include "accuracy_cases.h"
 
 #include "primitives/poly.h"
@@ -12,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <map>
 
 namespace lucent::accuracy {
 
@@ -182,6 +185,47 @@ std::vector<CaseResult> quadricCases(double effort) {
     CaseResult re = newCase("ellipsoid as a poly of order 2: random rays", kT, kN);
     for (int i = 0; i < n; ++i) measureRay(re, e, *refE, randomRay(rng, 1.5), 4.0);
     out.push_back(std::move(re));
+  }
+  {
+    // Above order 4: three disjoint spheres multiplied (the surface is theirs: P < 0 inside
+    // exactly one), expanded into 84 coefficients with cancelling terms; and two rounded
+    // cubes, whose high powers make the line polynomial's terms span many magnitudes.
+    std::map<std::array<int, 3>, double> product = {{{0, 0, 0}, 1.0}};
+    const std::array<std::pair<Vec3, double>, 3> balls = {
+        {{Vec3(-1.2, 0, 0), 0.7}, {Vec3(0.4, 0.5, 0.2), 0.6}, {Vec3(0.6, -0.9, -0.3), 0.5}}};
+    for (const auto& [c, radius] : balls) {
+      const std::map<std::array<int, 3>, double> sphere = {
+          {{2, 0, 0}, 1.0},
+          {{0, 2, 0}, 1.0},
+          {{0, 0, 2}, 1.0},
+          {{1, 0, 0}, -2.0 * c.x},
+          {{0, 1, 0}, -2.0 * c.y},
+          {{0, 0, 1}, -2.0 * c.z},
+          {{0, 0, 0}, glm::dot(c, c) - radius * radius}};
+      std::map<std::array<int, 3>, double> next;
+      for (const auto& [pa, ca] : product)
+        for (const auto& [pb, cb] : sphere)
+          next[{pa[0] + pb[0], pa[1] + pb[1], pa[2] + pb[2]}] += ca * cb;
+      product = std::move(next);
+    }
+    const auto spheres = polyCoefficients(
+        6, std::vector<std::pair<std::array<int, 3>, double>>(product.begin(), product.end()));
+    const Poly p6(6, spheres);
+    auto ref6 = refPoly(6, spheres, 2.0);
+    CaseResult r6 = newCase("three spheres multiplied (order 6 poly): random rays", kT, kN);
+    Rng rng(2206);
+    for (int i = 0; i < n; ++i) measureRay(r6, p6, *ref6, randomRay(rng, 1.5), 7.0);
+    out.push_back(std::move(r6));
+    for (int order : {8, 34}) {
+      const auto cube = polyCoefficients(
+          order, {{{order, 0, 0}, 1}, {{0, order, 0}, 1}, {{0, 0, order}, 1}, {{0, 0, 0}, -1}});
+      const Poly p(order, cube);
+      auto ref = refPoly(order, cube, 1.8);  // the corners reach 3^(1/2 − 1/order)
+      CaseResult r = newCase(
+          fmt::format("x^{0} + y^{0} + z^{0} < 1 (order {0} poly): random rays", order), kT, kN);
+      for (int i = 0; i < n; ++i) measureRay(r, p, *ref, randomRay(rng, 1.2), 7.0);
+      out.push_back(std::move(r));
+    }
   }
   return out;
 }

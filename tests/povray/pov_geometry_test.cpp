@@ -124,3 +124,21 @@ TEST_CASE("meshes are declared once as mesh2 and instanced, closed ones get an i
   CHECK(e.has(
       "  Mesh0\n  texture { M0_default }\n  matrix <1, 0, 0,  0, 1, 0,  0, 0, 1,  3, 0, 0>\n"));
 }
+
+TEST_CASE("a poly above order 4 is written with its order, every coefficient and sturm",
+          "[povray][geometry]") {
+  // Glob_5 of shapesq.inc: −0.5x⁵ − 0.5x⁴ + y² + z², 56 coefficients in POV-Ray's order.
+  std::vector<std::string> c(56, "0");
+  c[0] = "-0.5";
+  c[3] = "-0.5";
+  c[44] = "1";
+  c[53] = "1";
+  std::string xmlList, povList;
+  for (size_t i = 0; i < c.size(); ++i) {
+    xmlList += (i ? " " : "") + c[i];
+    povList += (i ? ", " : "") + c[i];
+  }
+  Exported e = exportScene("<poly order=\"5\" coefficients=\"" + xmlList + "\"/>");
+  REQUIRE(e.pov.ok());
+  CHECK(e.has("poly {  // <poly> test.xml:3:1\n  5, <" + povList + ">\n  sturm\n"));
+}

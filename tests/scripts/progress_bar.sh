@@ -7,9 +7,10 @@ set -u
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_test.sh"
 
 # The bar is redrawn every 250 ms: the render must last a few redraws. 2 samples of the
-# showcase at 480x360 take about 2.8 s of CPU (measured: 16 samples take 22 s), so at
-# least a second on two cores; longer under load, which only means more redraws.
-render=("$lucent" render "$src/examples/showcase.xml" -w 480 -h 360 -s 2)
+# five-shapes scene (the former showcase) at 480x360 take about 2.8 s of CPU (measured:
+# 16 samples take 22 s), so at least a second on two cores; longer under load, which only
+# means more redraws.
+render=("$lucent" render "$src/examples/five-shapes.xml" -w 480 -h 360 -s 2)
 
 # On a terminal: the bar with its four parts. script -e returns the command's status.
 script -qec "$(printf '%q ' "${render[@]}" -o "$tmp/tty.png")" "$tmp/tty.log" >/dev/null 2>&1 ||

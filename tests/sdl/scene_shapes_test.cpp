@@ -108,6 +108,30 @@ TEST_CASE("scene shapes: poly, cubic, quartic and polynomial", "[sdl][scene][sha
   CHECK(pn.coefficients == want);
 }
 
+TEST_CASE("scene shapes: poly and polynomial above order 4, up to POV-Ray's 35",
+          "[sdl][scene][shapes]") {
+  // Order 6 has 84 terms: x⁶ first, then x⁵y, x⁵z, ...; z⁶ is the 78th, the constant last.
+  std::string sextic = "poly { 6, <1";
+  for (int i = 1; i < 84; ++i) sextic += i == 77 ? ", 2" : i == 83 ? ", -1" : ", 0";
+  sextic += "> }\n";
+  auto r = readScene(sextic + "polynomial { 35, xyz(0, 0, 35): 1, xyz(0, 0, 0): -1 }\n");
+  REQUIRE(r->load.scene);
+  const auto& p6 = shapeOf<PolySpec>(*r->load.scene, 0);
+  CHECK(p6.order == 6);
+  REQUIRE(p6.coefficients.size() == 84);
+  CHECK(p6.coefficients[0] == 1);
+  CHECK(p6.coefficients[77] == 2);  // z⁶: an even power, so not negated
+  CHECK(p6.coefficients[83] == -1);
+  const auto& p35 = shapeOf<PolySpec>(*r->load.scene, 1);
+  CHECK(p35.order == 35);
+  REQUIRE(p35.coefficients.size() == 8436);  // 36·37·38/6
+  // z³⁵ is the first of the last 36 (z³⁵ ... z, 1), and odd: negated with z.
+  CHECK(p35.coefficients[8436 - 36] == -1);
+  CHECK(p35.coefficients.back() == -1);
+  CHECK(errorsOf("poly { 36, <1> }\n")[0] ==
+        "test.pov:1:8: error: the order of a poly must be from 2 to 35");
+}
+
 TEST_CASE("scene shapes: blob components, their transforms carried in", "[sdl][scene][shapes]") {
   auto r = readScene(R"(
 blob {
@@ -417,11 +441,10 @@ union { parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1>
 #declare P = ovus { 1, 0.5 } object { P }
 parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
 ovus { 1, 0.5 }
-poly { 6, <1> }
 superellipsoid { <0, 1> }
 height_field { gif "x.gif" }
 )");
-  REQUIRE(errors.size() == 7);
+  REQUIRE(errors.size() == 6);
   CHECK(errors[0] ==
         "test.pov:2:9: error: 'parametric' is not supported by Lucent (parametric surfaces; the "
         "nearest Lucent shape is <isosurface>)");
@@ -431,20 +454,17 @@ height_field { gif "x.gif" }
         "shapes are <lathe> and <sor>)\ntest.pov:4:39: note: the declaration is used here");
   CHECK(errors[2].find("test.pov:5:1: error: 'parametric' is not supported by Lucent") == 0);
   CHECK(errors[3].find("test.pov:6:1: error: 'ovus' is not supported by Lucent") == 0);
-  CHECK(errors[4] ==
-        "test.pov:7:1: error: 'poly' of order 6 is not supported by Lucent (its poly takes orders "
-        "2 to 4; the nearest Lucent shape is <isosurface>)");
-  CHECK(errors[5].find("test.pov:8:1: error: 'superellipsoid' exponents outside 0.01 to 10") == 0);
-  CHECK(errors[6] ==
-        "test.pov:9:16: error: a height field from 'gif' is not supported by Lucent (it reads "
+  CHECK(errors[4].find("test.pov:7:1: error: 'superellipsoid' exponents outside 0.01 to 10") == 0);
+  CHECK(errors[5] ==
+        "test.pov:8:16: error: a height field from 'gif' is not supported by Lucent (it reads "
         "png, pgm, ppm, tga, jpeg and tiff images as height fields)");
 }
 
 TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where it is placed",
           "[sdl][scene][shapes][errors]") {
-  // shapesq.inc declares polys of orders 5 to 8 among its quartics: a scene that uses only
-  // the quartics is read. (Its helix is clipped by shapes.inc's Cylinder_Z, which it does
-  // not include: POV-Ray needs shapes.inc first, too.)
+  // shapesq.inc declares polys of orders 5 to 8 among its quartics (read since poly takes
+  // every order POV-Ray does): a scene that uses a quartic is read. (Its helix is clipped by
+  // shapes.inc's Cylinder_Z, which it does not include: POV-Ray needs shapes.inc first, too.)
   auto r = readScene(R"(#include "shapes.inc"
 #include "shapesq.inc"
 object { Monkey_Saddle }
