@@ -1,0 +1,80 @@
+// The page of `lucent preview`: it listens to the server's events (server-sent events on
+// /events) and draws what they carry. "image": a picture of the whole image (a coarse pass:
+// one value per step x step block, drawn scaled up; or the finished image), "tile": a
+// finished tile, "status": the state, figures and messages. Images are drawn in the order
+// they came, each once decoded.
+"use strict";
+const token = new URLSearchParams(location.search).get("token") || "";
+const canvas = document.getElementById("image");
+const context = canvas.getContext("2d");
+const el = (id) => document.getElementById(id);
+let drawing = Promise.resolve();
+
+function decoded(png) {
+  const image = new Image();
+  image.src = "data:image/png;base64," + png;
+  return image.decode().then(() => image);
+}
+
+// Queues the drawing of one image event after those before it.
+function queueDraw(data, draw) {
+  const image = decoded(data.png);
+  drawing = drawing.then(() => image).then(draw).catch(() => {});
+}
+
+function size(width, height) {
+  if (canvas.width !== width || canvas.height !== height) {
+    canvas.width = width;
+    canvas.height = height;
+  }
+  context.imageSmoothingEnabled = false;
+}
+
+function onPicture(event) {
+  const data = JSON.parse(event.data);
+  queueDraw(data, (image) => {
+    size(data.imageWidth, data.imageHeight);
+    context.drawImage(image, 0, 0, data.width * data.step, data.height * data.step);
+    canvas.classList.remove("stale");
+  });
+}
+
+function onTile(event) {
+  const data = JSON.parse(event.data);
+  queueDraw(data, (image) => context.drawImage(image, data.x, data.y));
+}
+
+function stateText(s) {
+  const time = s.seconds.toFixed(2) + " s";
+  switch (s.phase) {
+    case "loading": return "render " + s.generation + ": loading the scene…";
+    case "coarse": return "render " + s.generation + ": coarse pass, every " + s.step + "th pixel · " + time;
+    case "tiles": return "render " + s.generation + ": tiles " + s.done + " / " + s.total + " · " + time;
+    case "done": return "render " + s.generation + ": done in " + time;
+    case "cancelled": return "render " + s.generation + ": cancelled";
+    case "invalid": return "render " + s.generation + ": the scene is invalid";
+    default: return s.phase;
+  }
+}
+
+function onStatus(event) {
+  const s = JSON.parse(event.data);
+  document.body.dataset.phase = s.phase;
+  document.body.dataset.generation = s.generation;
+  el("scene").textContent = s.scene;
+  el("state").textContent = stateText(s);
+  el("progress").value = s.phase === "done" ? 1 : s.total ? s.done / s.total : 0;
+  el("stats").textContent = s.stats;
+  const messages = el("messages");
+  messages.textContent = s.messages;
+  messages.hidden = s.messages === "";
+  messages.classList.toggle("error", s.phase === "invalid");
+  // The last good image stays, dimmed, until the scene is valid again.
+  if (s.phase === "invalid") drawing = drawing.then(() => canvas.classList.add("stale"));
+}
+
+const events = new EventSource("/events?token=" + encodeURIComponent(token));
+events.addEventListener("image", onPicture);
+events.addEventListener("tile", onTile);
+events.addEventListener("status", onStatus);
+events.onerror = () => { el("state").textContent = "disconnected: is lucent preview still running?"; };

@@ -1,0 +1,181 @@
+// lucent preview SCENE: a live render of the scene in the browser, rendered again on every
+// save (docs/preview.md). A web server (http_server.h, a plugin) serves one page and the
+// board of what it shows (preview_board.h); each render loads the scene as `render` does
+// (load_scene.h), sends the coarse passes and tiles (preview_render.h), then the scene's
+// files are watched (change_relay.h) until the next save or Ctrl-C.
+#include "commands.h"
+
+#include "browser_open.h"
+#include "change_relay.h"
+#include "file_watcher.h"
+#include "http_server.h"
+#include "preview_board.h"
+#include "preview_render.h"
+#include "preview_routes.h"
+#include "preview_status.h"
+#include "preview_token.h"
+#include "watch_list.h"
+
+#include "interrupt_catcher.h"
+#include "load_scene.h"
+#include "render_run.h"
+#include "render_stats.h"
+
+#include "meshes/mesh_file_cache.h"
+
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include <malloc.h>
+
+namespace lucent::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace lucent::preview;
+
+SceneRequest previewRequest(const PreviewOptions& options) {
+  SceneRequest request;
+  request.scene = options.scene;
+  request.width = options.width;
+  request.height = options.height;
+  request.samples = options.samples;
+  request.threads = options.threads;
+  request.maxDepth = options.maxDepth;
+  request.camera = options.camera;
+  return request;
+}
+
+// Bad options, a missing scene: refused before anything is served.
+void checkPreviewOptions(const PreviewOptions& options, const SceneRequest& request) {
+  checkOverrides(request);
+  if (options.port && (*options.port < 1 || *options.port > 65535))
+    throw UsageError(
+        fmt::format("--port {}: must be 1 to 65535 (or none: a free port)", *options.port));
+  std::error_code ec;
+  if (!fs::is_regular_file(options.scene, ec))
+    throw IoFailure(fmt::format("cannot read the scene '{}': {}", options.scene,
+                                fs::exists(options.scene, ec) ? "not a file" : "no such file"));
+}
+
+std::string addressOf(const std::string& host, int port, const std::string& token) {
+  const bool v6 = host.find(':') != std::string::npos;
+  return fmt::format("http://{}{}{}:{}/?token={}", v6 ? "[" : "", host, v6 ? "]" : "", port, token);
+}
+
+// The files that decide the render besides those the scene reads: the scene itself (even
+// when it does not load) and --pov-ini's file.
+WatchList alwaysWatched(const PreviewOptions& options, const CommonOptions& common) {
+  WatchList list;
+  list.add(options.scene);
+  std::error_code ec;
+  const fs::path real = fs::canonical(options.scene, ec);
+  if (!ec) list.add(real);
+  if (!common.povIni.empty()) list.add(common.povIni.substr(0, common.povIni.find('[')));
+  return list;
+}
+
+struct Session {
+  const PreviewOptions& options;
+  const CommonOptions& common;
+  PreviewBoard& board;
+  PreviewStatus status;
+  std::atomic<bool> cancel{false};
+};
+
+// Loads and renders the scene once for the page; the files it read.
+WatchList renderOnce(Session& s, int generation) {
+  PreviewRun run{s.board, s.status, s.cancel, s.options.threads.value_or(0),
+                 std::chrono::steady_clock::now()};
+  s.status.generation = generation;
+  s.status.phase = "loading";
+  s.status.done = s.status.total = 0;
+  s.status.seconds = 0.0;
+  s.board.publishStatus(s.status.json());
+  std::vector<std::string> messages;  // as `check` prints them
+  SceneRequest request = previewRequest(s.options);
+  request.heldMessages = &messages;
+  request.meshCache = std::make_shared<MeshFileCache>();
+  WatchList read;
+  try {
+    LoadedScene loaded = loadScene(request, s.common);
+    read.add(loaded.sources);
+    read.add(loaded.dataFiles);
+    s.status.messages = fmt::format("{}", fmt::join(messages, "\n"));
+    const PreviewOutcome out = renderForPage(loaded, run);
+    s.status.phase = out.cancelled ? "cancelled" : "done";
+    if (!out.cancelled)
+      s.status.stats = renderStatsText(out.stats, out.seconds, threadsShown(run.threads));
+  } catch (...) {
+    const Failure failure = describeFailure(std::current_exception());
+    if (!failure.message.empty()) messages.push_back(failure.message);
+    s.status.phase = "invalid";
+    s.status.messages = fmt::format("{}", fmt::join(messages, "\n"));
+    fmt::print(stderr, "{}\n", s.status.messages);
+  }
+  s.status.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - run.start).count();
+  s.board.publishStatus(s.status.json());
+  // What the render freed goes back to the system: a preview runs for hours of saves.
+  ::malloc_trim(0);
+  return read;
+}
+
+// Renders, then waits for a save, until Ctrl-C.
+void previewLoop(Session& s) {
+  FileWatcher watcher;
+  const WatchList always = alwaysWatched(s.options, s.common);
+  watcher.watch(always);
+  ChangeRelay relay(watcher, s.cancel);
+  for (int generation = 1;; ++generation) {
+    relay.renderStarts();
+    WatchList watched = renderOnce(s, generation);
+    watched.merge(always);
+    watcher.watch(watched);
+    if (!relay.waitForChange()) return;
+  }
+}
+
+}  // namespace
+
+int runPreview(const PreviewOptions& options, const CommonOptions& common) {
+  InterruptCatcher interrupts;
+  const SceneRequest request = previewRequest(options);
+  checkPreviewOptions(options, request);
+  PreviewBoard board;
+  const std::string token = makeToken();
+  std::unique_ptr<HttpServer> server;
+  try {
+    server = startHttpServer({options.bind, options.port.value_or(0), previewRoutes(token, board)});
+  } catch (const std::runtime_error& e) {
+    throw IoFailure(fmt::format("cannot serve the preview on {} port {}: {}", options.bind,
+                                options.port ? std::to_string(*options.port) : "(any)", e.what()));
+  }
+  const std::string address = addressOf(options.bind, server->port(), token);
+  fmt::print("lucent: preview of '{}' at {}\n", options.scene, address);
+  fmt::print(
+      "lucent: rendered again on every save of the scene or a file it reads; Ctrl-C stops\n");
+  std::fflush(stdout);
+  if (options.open) openInBrowser(address);
+  // However the loop ends: the page's streams end, then the server's threads.
+  struct Closing {
+    PreviewBoard& board;
+    HttpServer& server;
+    ~Closing() {
+      board.close();
+      server.stop();
+    }
+  } closing{board, *server};
+  Session session{options, common, board, {}};
+  session.status.scene = options.scene;
+  previewLoop(session);
+  fmt::print(stderr, "lucent: preview stopped\n");
+  return kOk;
+}
+
+}  // namespace lucent::cli

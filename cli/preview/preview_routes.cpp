@@ -1,0 +1,42 @@
+#include "preview_routes.h"
+
+#include "preview_page.h"
+#include "preview_token.h"
+
+namespace lucent::preview {
+
+bool BoardStream::next(std::string& text) {
+  if (!board_.collect(cursor_, std::chrono::milliseconds(1000), text)) return false;
+  if (text.empty()) text = ": still here\n\n";
+  return true;
+}
+
+HttpHandler previewRoutes(const std::string& token, PreviewBoard& board) {
+  return [token, &board](const HttpRequest& request) {
+    HttpReply reply;
+    reply.headers.emplace_back("Cache-Control", "no-store");
+    const auto given = request.query.find("token");
+    if (given == request.query.end() || !tokenAccepted(given->second, token)) {
+      reply.status = 403;
+      reply.body = "403 forbidden: use the address lucent preview printed (with its token)\n";
+      return reply;
+    }
+    if (request.path == "/") {
+      reply.contentType = "text/html; charset=utf-8";
+      reply.body = previewPage();
+      // The page reaches nothing but this server: no script, style or image from elsewhere.
+      reply.headers.emplace_back("Content-Security-Policy",
+                                 "default-src 'none'; connect-src 'self'; img-src data:; "
+                                 "style-src 'unsafe-inline'; script-src 'unsafe-inline'");
+    } else if (request.path == "/events") {
+      reply.contentType = "text/event-stream";
+      reply.stream = std::make_shared<BoardStream>(board);
+    } else {
+      reply.status = 404;
+      reply.body = "404 not found\n";
+    }
+    return reply;
+  };
+}
+
+}  // namespace lucent::preview

@@ -1,0 +1,27 @@
+// What the preview's server answers: every request must carry the token (403 without it);
+// "/" is the page, "/events" the stream of the board's events, anything else 404.
+#pragma once
+
+#include "http_server.h"
+#include "preview_board.h"
+
+#include <string>
+
+namespace lucent::preview {
+
+HttpHandler previewRoutes(const std::string& token, PreviewBoard& board);
+
+// A stream of the board's events from the start (each connection gets the current state
+// first, then what changes), with a comment line after a quiet second, so that a closed
+// connection is noticed.
+class BoardStream : public EventStream {
+ public:
+  explicit BoardStream(PreviewBoard& board) : board_(board) {}
+  bool next(std::string& text) override;
+
+ private:
+  PreviewBoard& board_;
+  uint64_t cursor_ = 0;
+};
+
+}  // namespace lucent::preview
