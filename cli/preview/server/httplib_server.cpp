@@ -6,8 +6,9 @@
 
 #include <cerrno>
 #include <cstring>
-#include <sys/socket.h>
 #include <thread>
+
+#include <sys/socket.h>
 
 namespace lucent::preview {
 
