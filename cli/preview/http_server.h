@@ -16,6 +16,7 @@
 namespace lucent::preview {
 
 struct HttpRequest {
+  std::string method;  // GET or POST
   std::string path;
   std::map<std::string, std::string> query;
 };

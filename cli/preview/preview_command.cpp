@@ -9,6 +9,7 @@
 #include "change_relay.h"
 #include "file_watcher.h"
 #include "http_server.h"
+#include "last_image.h"
 #include "preview_board.h"
 #include "preview_render.h"
 #include "preview_routes.h"
@@ -84,6 +85,7 @@ struct Session {
   const PreviewOptions& options;
   const CommonOptions& common;
   PreviewBoard& board;
+  LastImage& last;
   PreviewStatus status;
   std::atomic<bool> cancel{false};
 };
@@ -107,10 +109,12 @@ WatchList renderOnce(Session& s, int generation) {
     read.add(loaded.sources);
     read.add(loaded.dataFiles);
     s.status.messages = fmt::format("{}", fmt::join(messages, "\n"));
-    const PreviewOutcome out = renderForPage(loaded, run);
+    PreviewOutcome out = renderForPage(loaded, run);
     s.status.phase = out.cancelled ? "cancelled" : "done";
-    if (!out.cancelled)
+    if (!out.cancelled) {
       s.status.stats = renderStatsText(out.stats, out.seconds, threadsShown(run.threads));
+      s.last.set(std::move(out.image));
+    }
   } catch (...) {
     const Failure failure = describeFailure(std::current_exception());
     if (!failure.message.empty()) messages.push_back(failure.message);
@@ -148,10 +152,12 @@ int runPreview(const PreviewOptions& options, const CommonOptions& common) {
   const SceneRequest request = previewRequest(options);
   checkPreviewOptions(options, request);
   PreviewBoard board;
+  LastImage last(defaultRenderOutput(options.scene));
   const std::string token = makeToken();
   std::unique_ptr<HttpServer> server;
   try {
-    server = startHttpServer({options.bind, options.port.value_or(0), previewRoutes(token, board)});
+    server = startHttpServer(
+        {options.bind, options.port.value_or(0), previewRoutes(token, board, last)});
   } catch (const std::runtime_error& e) {
     throw IoFailure(fmt::format("cannot serve the preview on {} port {}: {}", options.bind,
                                 options.port ? std::to_string(*options.port) : "(any)", e.what()));
@@ -171,7 +177,7 @@ int runPreview(const PreviewOptions& options, const CommonOptions& common) {
       server.stop();
     }
   } closing{board, *server};
-  Session session{options, common, board, {}};
+  Session session{options, common, board, last, {}};
   session.status.scene = options.scene;
   previewLoop(session);
   fmt::print(stderr, "lucent: preview stopped\n");

@@ -11,8 +11,18 @@ bool BoardStream::next(std::string& text) {
   return true;
 }
 
-HttpHandler previewRoutes(const std::string& token, PreviewBoard& board) {
-  return [token, &board](const HttpRequest& request) {
+namespace {
+
+HttpReply save(const LastImage& last) {
+  HttpReply reply;
+  if (!last.save(reply.body)) reply.status = 409;
+  return reply;
+}
+
+}  // namespace
+
+HttpHandler previewRoutes(const std::string& token, PreviewBoard& board, const LastImage& last) {
+  return [token, &board, &last](const HttpRequest& request) {
     HttpReply reply;
     reply.headers.emplace_back("Cache-Control", "no-store");
     const auto given = request.query.find("token");
@@ -21,7 +31,12 @@ HttpHandler previewRoutes(const std::string& token, PreviewBoard& board) {
       reply.body = "403 forbidden: use the address lucent preview printed (with its token)\n";
       return reply;
     }
-    if (request.path == "/") {
+    if (request.method == "POST") {
+      // Only the button's request changes anything; a link cannot (it would be a GET).
+      if (request.path == "/save") return save(last);
+      reply.status = 404;
+      reply.body = "404 not found\n";
+    } else if (request.path == "/") {
       reply.contentType = "text/html; charset=utf-8";
       reply.body = previewPage();
       // The page reaches nothing but this server: no script, style or image from elsewhere.

@@ -1,15 +1,17 @@
 // What the preview's server answers: every request must carry the token (403 without it);
-// "/" is the page, "/events" the stream of the board's events, anything else 404.
+// "/" is the page, "/events" the stream of the board's events, POST "/save" writes the last
+// finished image (last_image.h), anything else 404.
 #pragma once
 
 #include "http_server.h"
+#include "last_image.h"
 #include "preview_board.h"
 
 #include <string>
 
 namespace lucent::preview {
 
-HttpHandler previewRoutes(const std::string& token, PreviewBoard& board);
+HttpHandler previewRoutes(const std::string& token, PreviewBoard& board, const LastImage& last);
 
 // A stream of the board's events from the start (each connection gets the current state
 // first, then what changes), with a comment line after a quiet second, so that a closed

@@ -235,6 +235,43 @@ def three_saves(browser, preview, scene):
         fail("the messages are still shown after the fix")
 
 
+def post_status(url):
+    try:
+        with urllib.request.urlopen(urllib.request.Request(url, data=b"", method="POST"), timeout=10) as r:
+            return r.status
+    except urllib.error.HTTPError as e:
+        return e.code
+
+
+def save_button_and_pixel(browser, preview, scene):
+    """The button writes SCENE.png (blue now); the pointer's pixel is read out."""
+    output = scene[:-len(".xml")] + ".png"
+    if post_status(preview.base + "/save") != 403 or http_status(preview.url.replace("/?", "/save?")) != 404:
+        fail("/save answers without the token, or to a GET")
+    if os.path.exists(output):
+        fail(f"{output} exists before the button is pressed")
+    browser.script("document.getElementById('save').click()")
+    end = time.time() + 10
+    while time.time() < end and not browser.script("return document.getElementById('saved').textContent"):
+        time.sleep(0.05)
+    said = browser.script("return document.getElementById('saved').textContent")
+    if not said.startswith(f"wrote '{output}' (240x160)"):
+        fail(f"the save button says {said!r}")
+    subprocess.run(["oiiotool", output, "-o", f"{WORK}/saved.ppm"], check=True)
+    width, height, pixels = read_ppm(f"{WORK}/saved.ppm")
+    centre = 3 * (height // 2 * width + width // 2)
+    if (width, height) != (240, 160) or list(pixels[centre:centre + 3]) != [0, 0, 255]:
+        fail(f"the saved image is {width}x{height}, its centre {list(pixels[centre:centre + 3])}")
+    os.remove(output)
+    shown = browser.script("""const c = document.getElementById('image'), r = c.getBoundingClientRect();
+        c.dispatchEvent(new MouseEvent('mousemove', {clientX: r.left + r.width * 0.25 + 0.5,
+                                                     clientY: r.top + r.height * 0.5 + 0.5}));
+        return document.getElementById('pixel').textContent;""")
+    if shown != "pixel 60, 80: sRGB 0 0 255 · linear 0.000 0.000 1.000":
+        fail(f"the pixel under the pointer reads {shown!r}")
+    print(f"save button: {said}; pointer: {shown}")
+
+
 def side_by_side(browser, first, scene2):
     """A second preview of another scene on another port: each page shows its own scene."""
     save(scene2, scene_text("1 1 0"))
@@ -287,6 +324,7 @@ def main():
     second = None
     try:
         three_saves(browser, first, scene)
+        save_button_and_pixel(browser, first, scene)
         second = side_by_side(browser, first, scene2)
         browser.open(first.url)
         browser.wait_for(4, "done")

@@ -73,6 +73,30 @@ function onStatus(event) {
   if (s.phase === "invalid") drawing = drawing.then(() => canvas.classList.add("stale"));
 }
 
+// The button writes the last finished image where `lucent render` would (SCENE.png).
+el("save").addEventListener("click", () => {
+  fetch("/save?token=" + encodeURIComponent(token), { method: "POST" })
+    .then((reply) => reply.text())
+    .then((text) => { el("saved").textContent = text.trim(); })
+    .catch(() => { el("saved").textContent = "not saved: no answer from lucent preview"; });
+});
+
+// The colour of the pixel under the pointer: the 8-bit sRGB value shown, and the linear
+// value it encodes (the renderer's, to the byte's precision).
+function linear(byte) {
+  const c = byte / 255;
+  return (c <= 0.04045 ? c / 12.92 : Math.pow((c + 0.055) / 1.055, 2.4)).toFixed(3);
+}
+canvas.addEventListener("mousemove", (event) => {
+  const r = canvas.getBoundingClientRect();
+  const x = Math.floor((event.clientX - r.left) * canvas.width / r.width);
+  const y = Math.floor((event.clientY - r.top) * canvas.height / r.height);
+  if (x < 0 || y < 0 || x >= canvas.width || y >= canvas.height) return;
+  const [red, green, blue] = context.getImageData(x, y, 1, 1).data;
+  el("pixel").textContent = "pixel " + x + ", " + y + ": sRGB " + red + " " + green + " " + blue +
+    " · linear " + linear(red) + " " + linear(green) + " " + linear(blue);
+});
+
 const events = new EventSource("/events?token=" + encodeURIComponent(token));
 events.addEventListener("image", onPicture);
 events.addEventListener("tile", onTile);

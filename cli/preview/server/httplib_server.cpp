@@ -29,9 +29,11 @@ class HttplibServer : public HttpServer {
       int yes = 1;
       ::setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
     });
-    server_.Get(".*", [this](const httplib::Request& request, httplib::Response& response) {
-      serve(request, response);
-    });
+    auto serve = [this](const httplib::Request& request, httplib::Response& response) {
+      this->serve(request, response);
+    };
+    server_.Get(".*", serve);
+    server_.Post(".*", serve);
   }
   ~HttplibServer() override { stop(); }
 
@@ -56,6 +58,7 @@ class HttplibServer : public HttpServer {
  private:
   void serve(const httplib::Request& request, httplib::Response& response) {
     HttpRequest r;
+    r.method = request.method;
     r.path = request.path;
     for (const auto& [name, value] : request.params) r.query.emplace(name, value);
     HttpReply reply = handler_(r);
