@@ -31,6 +31,15 @@ bool ChangeRelay::waitForChange() {
   return !interrupted_;
 }
 
+void ChangeRelay::poke() {
+  {
+    std::lock_guard lock(mutex_);
+    changed_ = true;
+    cancel_ = true;
+  }
+  wake_.notify_all();
+}
+
 void ChangeRelay::run() {
   Debouncer debouncer(kQuiet);
   while (!quit_) {

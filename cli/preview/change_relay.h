@@ -28,6 +28,8 @@ class ChangeRelay {
   void renderStarts();
   // Waits for a change (true) or Ctrl-C (false).
   bool waitForChange();
+  // A change now (a slider of the page): the render in flight is cancelled, the next starts.
+  void poke();
 
  private:
   void run();

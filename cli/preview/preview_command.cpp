@@ -11,13 +11,16 @@
 #include "http_server.h"
 #include "last_image.h"
 #include "preview_board.h"
+#include "preview_controls.h"
 #include "preview_render.h"
 #include "preview_routes.h"
 #include "preview_status.h"
 #include "preview_token.h"
 #include "watch_list.h"
 
+#include "frame_loading.h"
 #include "interrupt_catcher.h"
+#include "load_pov_scene.h"
 #include "load_scene.h"
 #include "render_run.h"
 #include "render_stats.h"
@@ -27,7 +30,9 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <thread>
 
@@ -86,9 +91,38 @@ struct Session {
   const CommonOptions& common;
   PreviewBoard& board;
   LastImage& last;
+  PreviewControls& controls;
+  std::atomic<bool>& cancel;
   PreviewStatus status;
-  std::atomic<bool> cancel{false};
 };
+
+// The sliders' values over the command line's -D values; the status told what they are.
+CommonOptions withControls(Session& s) {
+  s.status.parameters = isPovScene(s.options.scene, s.common.format)
+                            ? std::vector<SceneParameter>{}
+                            : numericParameters(s.options.scene);
+  // Only what the scene still has: a parameter removed by a save is no longer set.
+  CommonOptions common = s.common;
+  for (const auto& [name, value] : s.controls.values())
+    if (name == "frame" || std::any_of(s.status.parameters.begin(), s.status.parameters.end(),
+                                       [&](const SceneParameter& p) { return p.name == name; }))
+      common.defines[name] = value;
+  s.status.values.clear();
+  for (const SceneParameter& p : s.status.parameters) {
+    const auto given = common.defines.find(p.name);
+    s.status.values.push_back(given != common.defines.end() ? given->second
+                                                            : fmt::format("{}", p.declared));
+  }
+  const auto frame = common.defines.find("frame");
+  s.status.frame = frame != common.defines.end() ? std::atoi(frame->second.c_str()) : 1;
+  return common;
+}
+
+// The frames the page may choose among: none when -D fixes the moment.
+int framesToChoose(const Session& s, const LoadedScene& loaded) {
+  if (!loaded.scene->animation.present || picksOneMoment(s.common)) return 0;
+  return loaded.scene->animation.frames;
+}
 
 // Loads and renders the scene once for the page; the files it read.
 WatchList renderOnce(Session& s, int generation) {
@@ -98,6 +132,7 @@ WatchList renderOnce(Session& s, int generation) {
   s.status.phase = "loading";
   s.status.done = s.status.total = 0;
   s.status.seconds = 0.0;
+  const CommonOptions common = withControls(s);
   s.board.publishStatus(s.status.json());
   std::vector<std::string> messages;  // as `check` prints them
   SceneRequest request = previewRequest(s.options);
@@ -105,9 +140,11 @@ WatchList renderOnce(Session& s, int generation) {
   request.meshCache = std::make_shared<MeshFileCache>();
   WatchList read;
   try {
-    LoadedScene loaded = loadScene(request, s.common);
+    LoadedScene loaded = loadScene(request, common);
     read.add(loaded.sources);
     read.add(loaded.dataFiles);
+    s.status.frames = framesToChoose(s, loaded);
+    s.controls.offer(s.status.parameters, s.status.frames);
     s.status.messages = fmt::format("{}", fmt::join(messages, "\n"));
     PreviewOutcome out = renderForPage(loaded, run);
     s.status.phase = out.cancelled ? "cancelled" : "done";
@@ -130,18 +167,26 @@ WatchList renderOnce(Session& s, int generation) {
   return read;
 }
 
-// Renders, then waits for a save, until Ctrl-C.
-void previewLoop(Session& s) {
-  FileWatcher watcher;
+// Renders, then waits for a save or a slider, until Ctrl-C.
+void previewLoop(Session& s, FileWatcher& watcher, ChangeRelay& relay) {
   const WatchList always = alwaysWatched(s.options, s.common);
   watcher.watch(always);
-  ChangeRelay relay(watcher, s.cancel);
   for (int generation = 1;; ++generation) {
     relay.renderStarts();
     WatchList watched = renderOnce(s, generation);
     watched.merge(always);
     watcher.watch(watched);
     if (!relay.waitForChange()) return;
+  }
+}
+
+// The server on the options' address; IoFailure when it cannot listen there.
+std::unique_ptr<HttpServer> startServer(const PreviewOptions& options, HttpHandler handler) {
+  try {
+    return startHttpServer({options.bind, options.port.value_or(0), std::move(handler)});
+  } catch (const std::runtime_error& e) {
+    throw IoFailure(fmt::format("cannot serve the preview on {} port {}: {}", options.bind,
+                                options.port ? std::to_string(*options.port) : "(any)", e.what()));
   }
 }
 
@@ -153,15 +198,13 @@ int runPreview(const PreviewOptions& options, const CommonOptions& common) {
   checkPreviewOptions(options, request);
   PreviewBoard board;
   LastImage last(defaultRenderOutput(options.scene));
+  PreviewControls controls;
+  std::atomic<bool> cancel{false};
+  FileWatcher watcher;
+  ChangeRelay relay(watcher, cancel);
   const std::string token = makeToken();
-  std::unique_ptr<HttpServer> server;
-  try {
-    server = startHttpServer(
-        {options.bind, options.port.value_or(0), previewRoutes(token, board, last)});
-  } catch (const std::runtime_error& e) {
-    throw IoFailure(fmt::format("cannot serve the preview on {} port {}: {}", options.bind,
-                                options.port ? std::to_string(*options.port) : "(any)", e.what()));
-  }
+  std::unique_ptr<HttpServer> server = startServer(
+      options, previewRoutes(token, {board, last, controls, [&relay] { relay.poke(); }}));
   const std::string address = addressOf(options.bind, server->port(), token);
   fmt::print("lucent: preview of '{}' at {}\n", options.scene, address);
   fmt::print(
@@ -177,9 +220,9 @@ int runPreview(const PreviewOptions& options, const CommonOptions& common) {
       server.stop();
     }
   } closing{board, *server};
-  Session session{options, common, board, last, {}};
+  Session session{options, common, board, last, controls, cancel, {}};
   session.status.scene = options.scene;
-  previewLoop(session);
+  previewLoop(session, watcher, relay);
   fmt::print(stderr, "lucent: preview stopped\n");
   return kOk;
 }

@@ -19,10 +19,27 @@ HttpReply save(const LastImage& last) {
   return reply;
 }
 
+HttpReply setControl(const HttpRequest& request, const PreviewPlaces& places) {
+  HttpReply reply;
+  const auto name = request.query.find("name"), value = request.query.find("value");
+  if (name == request.query.end() || value == request.query.end()) {
+    reply.status = 400;
+    reply.body = "/set needs name and value";
+    return reply;
+  }
+  reply.body = places.controls.set(name->second, value->second);
+  if (!reply.body.empty()) {
+    reply.status = 400;
+    return reply;
+  }
+  places.changed();
+  return reply;
+}
+
 }  // namespace
 
-HttpHandler previewRoutes(const std::string& token, PreviewBoard& board, const LastImage& last) {
-  return [token, &board, &last](const HttpRequest& request) {
+HttpHandler previewRoutes(const std::string& token, PreviewPlaces places) {
+  return [token, places](const HttpRequest& request) {
     HttpReply reply;
     reply.headers.emplace_back("Cache-Control", "no-store");
     const auto given = request.query.find("token");
@@ -33,7 +50,8 @@ HttpHandler previewRoutes(const std::string& token, PreviewBoard& board, const L
     }
     if (request.method == "POST") {
       // Only the button's request changes anything; a link cannot (it would be a GET).
-      if (request.path == "/save") return save(last);
+      if (request.path == "/save") return save(places.last);
+      if (request.path == "/set") return setControl(request, places);
       reply.status = 404;
       reply.body = "404 not found\n";
     } else if (request.path == "/") {
@@ -45,7 +63,7 @@ HttpHandler previewRoutes(const std::string& token, PreviewBoard& board, const L
                                  "style-src 'unsafe-inline'; script-src 'unsafe-inline'");
     } else if (request.path == "/events") {
       reply.contentType = "text/event-stream";
-      reply.stream = std::make_shared<BoardStream>(board);
+      reply.stream = std::make_shared<BoardStream>(places.board);
     } else {
       reply.status = 404;
       reply.body = "404 not found\n";

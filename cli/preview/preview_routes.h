@@ -1,17 +1,25 @@
 // What the preview's server answers: every request must carry the token (403 without it);
 // "/" is the page, "/events" the stream of the board's events, POST "/save" writes the last
-// finished image (last_image.h), anything else 404.
+// finished image (last_image.h), POST "/set?name=N&value=V" sets a slider
+// (preview_controls.h) and calls `changed`, anything else 404.
 #pragma once
 
 #include "http_server.h"
 #include "last_image.h"
 #include "preview_board.h"
+#include "preview_controls.h"
 
 #include <string>
 
 namespace lucent::preview {
 
-HttpHandler previewRoutes(const std::string& token, PreviewBoard& board, const LastImage& last);
+struct PreviewPlaces {
+  PreviewBoard& board;
+  const LastImage& last;
+  PreviewControls& controls;
+  std::function<void()> changed;
+};
+HttpHandler previewRoutes(const std::string& token, PreviewPlaces places);
 
 // A stream of the board's events from the start (each connection gets the current state
 // first, then what changes), with a comment line after a quiet second, so that a closed

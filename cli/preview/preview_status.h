@@ -2,8 +2,11 @@
 // is, how long it has taken, the figures of `render --stats`, and the scene's messages.
 #pragma once
 
+#include "scene_parameters.h"
+
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace lucent::preview {
 
@@ -19,6 +22,11 @@ struct PreviewStatus {
   double seconds = 0.0;          // since the save that started it
   std::string stats;             // the figures of the last finished render
   std::string messages;          // errors and warnings, as `lucent check` prints them
+  // The sliders: the scene's numeric parameters with the values rendered, and its frames
+  // (0: none to choose) with the frame rendered.
+  std::vector<SceneParameter> parameters;
+  std::vector<std::string> values;  // one per parameter
+  int frames = 0, frame = 1;
 
   std::string json() const;
 };

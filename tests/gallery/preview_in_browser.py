@@ -272,6 +272,55 @@ def save_button_and_pixel(browser, preview, scene):
     print(f"save button: {said}; pointer: {shown}")
 
 
+SLIDER_SCENE = """<scene version="1">
+  <param name="red" value="0.5"/>
+  <animation frames="3" clock-from="0" clock-to="1"/>
+  <render width="120" height="80"/>
+  <camera position="0 0 5" look-at="0 0 0"/>
+  <light position="0 0 10"/>
+  <box min="-9 -9 -1" max="9 9 0"><material ambient="${red} 0 ${clock}" diffuse="0"/></box>
+</scene>
+"""
+
+
+def move_slider(browser, name, value):
+    browser.script(f"""const s = document.querySelector('#controls input[data-name="{name}"]');
+        s.value = {value}; s.dispatchEvent(new Event('input'));""")
+
+
+def sliders(browser, scene):
+    """A numeric <param> and the frame of an animation, each a slider that renders again."""
+    save(scene, SLIDER_SCENE)
+    preview = Preview(scene)
+    try:
+        browser.open(preview.url)
+        browser.wait_for(1, "done")
+        names = browser.script("return [...document.querySelectorAll('#controls input')].map("
+                               "s => [s.dataset.name, s.min, s.max, s.value])")
+        if names != [["red", "0", "1", "0.5"], ["frame", "1", "3", "1"]]:
+            fail(f"the sliders are {names}")
+        # linear 0.5 is sRGB byte 188
+        expect_colour("sliders: red 0.5, frame 1", canvas_mean(browser, browser.screenshot("slider-1")), 0, 180, 5)
+        move_slider(browser, "red", 1)
+        browser.wait_for(2, "done")
+        expect_colour("sliders: red 1", canvas_mean(browser, browser.screenshot("slider-2")), 0, 250, 5)
+        move_slider(browser, "frame", 3)
+        browser.wait_for(3, "done")
+        mean = canvas_mean(browser, browser.screenshot("slider-3"))
+        if mean[0] < 250 or mean[2] < 250 or mean[1] > 5:
+            fail(f"frame 3 (clock 1) is not magenta: {mean}")
+        for query, expected in [("name=blue&value=1", 400), ("name=red&value=x", 400),
+                                ("name=frame&value=4", 400), ("name=frame&value=2", 200)]:
+            got = post_status(f"{preview.base}/set?token={preview.token}&{query}")
+            if got != expected:
+                fail(f"POST /set?{query}: {got}, expected {expected}")
+        if post_status(f"{preview.base}/set?name=red&value=1") != 403:
+            fail("/set answers without the token")
+        print(f"sliders: {names} render again; frame 3 magenta {[round(m) for m in mean]}")
+    finally:
+        preview.stop()
+
+
 def side_by_side(browser, first, scene2):
     """A second preview of another scene on another port: each page shows its own scene."""
     save(scene2, scene_text("1 1 0"))
@@ -325,6 +374,7 @@ def main():
     try:
         three_saves(browser, first, scene)
         save_button_and_pixel(browser, first, scene)
+        sliders(browser, f"{WORK}/sliders.xml")
         second = side_by_side(browser, first, scene2)
         browser.open(first.url)
         browser.wait_for(4, "done")

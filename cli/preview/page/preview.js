@@ -57,6 +57,62 @@ function stateText(s) {
   }
 }
 
+// The sliders: a scene's numeric parameters (each set as -D name=value) and an animation's
+// frame. Moving one renders again; at most one request is in flight, the latest value next.
+let sliders = "";
+const pending = new Map();
+let sending = false;
+
+function sendNext() {
+  if (sending || pending.size === 0) return;
+  const [name, value] = pending.entries().next().value;
+  pending.delete(name);
+  sending = true;
+  const query = "?token=" + encodeURIComponent(token) + "&name=" + encodeURIComponent(name) +
+    "&value=" + encodeURIComponent(value);
+  fetch("/set" + query, { method: "POST" })
+    .then((reply) => reply.text())
+    .then((text) => { if (text) el("saved").textContent = text; })
+    .catch(() => {})
+    .finally(() => { sending = false; sendNext(); });
+}
+
+function slider(name, label, min, max, step, value) {
+  const row = document.createElement("label");
+  const title = document.createElement("span");
+  title.textContent = label;
+  const input = document.createElement("input");
+  Object.assign(input, { type: "range", min, max, step, value });
+  input.dataset.name = name;
+  const shown = document.createElement("output");
+  shown.textContent = value;
+  input.addEventListener("input", () => {
+    shown.textContent = input.value;
+    pending.set(name, input.value);
+    sendNext();
+  });
+  row.append(title, input, shown);
+  return row;
+}
+
+// Rebuilt only when the scene's parameters or frames change, not while one is moved.
+function showSliders(s) {
+  const key = JSON.stringify([s.parameters.map((p) => [p.name, p.declared]), s.frames]);
+  if (key === sliders) return;
+  sliders = key;
+  const controls = el("controls");
+  controls.replaceChildren();
+  for (const p of s.parameters) {
+    const value = Number(p.value);
+    let min = p.declared === 0 ? -1 : Math.min(0, 2 * p.declared);
+    let max = p.declared === 0 ? 1 : Math.max(0, 2 * p.declared);
+    min = Math.min(min, value);
+    max = Math.max(max, value);
+    controls.append(slider(p.name, p.name, min, max, (max - min) / 200, value));
+  }
+  if (s.frames > 0) controls.append(slider("frame", "frame", 1, s.frames, 1, s.frame));
+}
+
 function onStatus(event) {
   const s = JSON.parse(event.data);
   document.body.dataset.phase = s.phase;
@@ -65,6 +121,7 @@ function onStatus(event) {
   el("state").textContent = stateText(s);
   el("progress").value = s.phase === "done" ? 1 : s.total ? s.done / s.total : 0;
   el("stats").textContent = s.stats;
+  showSliders(s);
   const messages = el("messages");
   messages.textContent = s.messages;
   messages.hidden = s.messages === "";

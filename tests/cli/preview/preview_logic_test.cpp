@@ -5,7 +5,9 @@
 #include "debounce.h"
 #include "json_text.h"
 #include "preview_board.h"
+#include "preview_controls.h"
 #include "preview_token.h"
+#include "scene_parameters.h"
 #include "watch_list.h"
 
 #include "../../temp_dir.h"
@@ -169,4 +171,41 @@ TEST_CASE("preview: JSON strings and base64 as the page decodes them", "[preview
   CHECK(base64("fooba") == "Zm9vYmE=");
   CHECK(base64("foobar") == "Zm9vYmFy");
   CHECK(base64(std::string("\xff\x00\x80", 3)) == "/wCA");
+}
+
+TEST_CASE("preview: the sliders are the scene's numeric top-level parameters", "[preview]") {
+  lucent::test::TempDir dir("preview-params");
+  const auto scene = dir.write("s.xml", R"(<scene version="1">
+  <param name="turn" value="30"/>
+  <param name="tint" value="0.9 0.3 0.1"/>
+  <param name="size" value="-1.5e0"/>
+  <param name="expr" value="${turn * 2}"/>
+  <group><param name="inner" value="1"/></group>
+</scene>)");
+  const std::vector<SceneParameter> found = numericParameters(scene.string());
+  REQUIRE(found.size() == 2);
+  CHECK(found[0].name == "turn");
+  CHECK(found[0].declared == 30.0);
+  CHECK(found[1].name == "size");
+  CHECK(found[1].declared == -1.5);
+  CHECK(numericParameters(dir.file("missing.xml")).empty());
+  dir.write("broken.xml", "<scene><param name=");
+  CHECK(numericParameters(dir.file("broken.xml")).empty());
+}
+
+TEST_CASE("preview: a slider sets only a parameter offered, or a frame of the animation",
+          "[preview]") {
+  PreviewControls controls;
+  CHECK(controls.set("turn", "10") != "");  // nothing offered yet
+  controls.offer({{"turn", 30.0}}, 24);
+  CHECK(controls.set("turn", "45.5") == "");
+  CHECK(controls.set("turn", "forty") == "'forty' is not a number");
+  CHECK(controls.set("turn", "1e999") != "");
+  CHECK(controls.set("tint", "1") == "'tint' is not a numeric parameter of the scene");
+  CHECK(controls.set("frame", "24") == "");
+  CHECK(controls.set("frame", "25") == "frame 25: the scene has frames 1 to 24");
+  CHECK(controls.set("frame", "2.5") != "");
+  CHECK(controls.values() == std::map<std::string, std::string>{{"frame", "24"}, {"turn", "45.5"}});
+  controls.offer({{"turn", 30.0}}, 0);
+  CHECK(controls.set("frame", "1") == "the scene is not an animation (or -D picks its moment)");
 }
