@@ -14,6 +14,11 @@ void LastImage::set(Image image) {
   image_ = std::move(shared);
 }
 
+std::shared_ptr<const Image> LastImage::get() const {
+  std::lock_guard lock(mutex_);
+  return image_;
+}
+
 bool LastImage::save(std::string& message) const {
   std::shared_ptr<const Image> image;
   {

@@ -16,6 +16,8 @@ class LastImage {
   explicit LastImage(std::string output) : output_(std::move(output)) {}
 
   void set(Image image);
+  // The image, or null before the first one.
+  std::shared_ptr<const Image> get() const;
   // Writes the image (atomically, as `render` writes its output); the message to show:
   // "wrote 'FILE' (WxH)", or why not. False when nothing was written.
   bool save(std::string& message) const;

@@ -126,13 +126,23 @@ int framesToChoose(const Session& s, const LoadedScene& loaded) {
 
 // Loads and renders the scene once for the page; the files it read.
 WatchList renderOnce(Session& s, int generation) {
-  PreviewRun run{s.board, s.status, s.cancel, s.options.threads.value_or(0),
-                 std::chrono::steady_clock::now()};
+  PreviewRun run{s.board,
+                 s.status,
+                 s.cancel,
+                 s.options.threads.value_or(0),
+                 std::chrono::steady_clock::now(),
+                 std::nullopt,
+                 nullptr};
   s.status.generation = generation;
   s.status.phase = "loading";
   s.status.done = s.status.total = 0;
   s.status.seconds = 0.0;
   const CommonOptions common = withControls(s);
+  run.region = s.controls.region();
+  run.previous = s.last.get();
+  s.status.region = run.region ? fmt::format("{},{},{},{}", run.region->x0, run.region->y0,
+                                             run.region->x1, run.region->y1)
+                               : "";
   s.board.publishStatus(s.status.json());
   std::vector<std::string> messages;  // as `check` prints them
   SceneRequest request = previewRequest(s.options);

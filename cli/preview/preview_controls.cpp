@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace lucent::preview {
 
@@ -27,6 +28,28 @@ std::string PreviewControls::set(const std::string& name, const std::string& val
   }
   values_[name] = value;
   return "";
+}
+
+std::string PreviewControls::setRegion(const std::string& text) {
+  std::optional<PixelRect> region;
+  if (!text.empty()) {
+    PixelRect r;
+    char c1 = 0, c2 = 0, c3 = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c%d%c%d%c", &r.x0, &c1, &r.y0, &c2, &r.x1, &c3, &r.y1,
+                    &extra) != 7 ||
+        c1 != ',' || c2 != ',' || c3 != ',' || r.x0 < 0 || r.y0 < 0 || r.x1 <= r.x0 || r.y1 <= r.y0)
+      return fmt::format("region '{}': expected X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1",
+                         text);
+    region = r;
+  }
+  std::lock_guard lock(mutex_);
+  region_ = region;
+  return "";
+}
+
+std::optional<PixelRect> PreviewControls::region() const {
+  std::lock_guard lock(mutex_);
+  return region_;
 }
 
 std::map<std::string, std::string> PreviewControls::values() const {

@@ -5,8 +5,11 @@
 
 #include "scene_parameters.h"
 
+#include "render/pixel_rect.h"
+
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,11 +25,17 @@ class PreviewControls {
   // The -D values the page set, to apply over the command line's.
   std::map<std::string, std::string> values() const;
 
+  // The region dragged ("x0,y0,x1,y1" in pixels, bounds excluded, as --region) or "" for
+  // the whole image: "" or why not.
+  std::string setRegion(const std::string& text);
+  std::optional<PixelRect> region() const;
+
  private:
   mutable std::mutex mutex_;
   std::vector<SceneParameter> parameters_;
   int frames_ = 0;
   std::map<std::string, std::string> values_;
+  std::optional<PixelRect> region_;
 };
 
 }  // namespace lucent::preview

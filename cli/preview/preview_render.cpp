@@ -80,15 +80,13 @@ bool coarsePasses(const Renderer& renderer, int width, int height, PreviewRun& r
   return true;
 }
 
-// The full image tile by tile into `out`. False when cancelled.
-bool tilePass(const Renderer& renderer, const RenderSettings& settings, PreviewRun& run,
-              PreviewOutcome& out) {
-  const std::vector<PixelRect> tiles =
-      tilesOf(wholeImage(settings.width, settings.height), defaultTileSize(settings));
+// The tiles of `area` into `out.image`. False when cancelled.
+bool tilePass(const Renderer& renderer, const RenderSettings& settings, const PixelRect& area,
+              PreviewRun& run, PreviewOutcome& out) {
+  const std::vector<PixelRect> tiles = tilesOf(area, defaultTileSize(settings));
   RenderControl control;
   control.threads = run.threads;
   control.cancel = &run.cancel;
-  out.image = Image(settings.width, settings.height);
   run.status.phase = "tiles";
   run.status.done = 0;
   run.status.total = tiles.size();
@@ -117,8 +115,18 @@ PreviewOutcome renderForPage(const cli::LoadedScene& loaded, PreviewRun& run) {
   PreviewOutcome out;
   run.status.width = settings.width;
   run.status.height = settings.height;
-  out.cancelled = !coarsePasses(renderer, settings.width, settings.height, run) ||
-                  !tilePass(renderer, settings, run, out);
+  const PixelRect whole = wholeImage(settings.width, settings.height);
+  const bool sameSize = run.previous && run.previous->width == settings.width &&
+                        run.previous->height == settings.height;
+  if (run.region && whole.contains(*run.region)) {
+    out.image = sameSize ? *run.previous : Image(settings.width, settings.height);
+    out.cancelled = !tilePass(renderer, settings, *run.region, run, out);
+  } else {
+    run.status.region.clear();  // none, or not inside this image: the whole image
+    out.image = Image(settings.width, settings.height);
+    out.cancelled = !coarsePasses(renderer, settings.width, settings.height, run) ||
+                    !tilePass(renderer, settings, whole, run, out);
+  }
   if (out.cancelled) return out;
   run.board.publishImage(pictureEvent(out.image, 1, out.image.width, out.image.height));
   run.status.phase = "done";

@@ -1,6 +1,7 @@
 // One render of a loaded scene for the preview page: the coarse passes (coarse_passes.h),
 // each sent whole as a small image the page scales up, then the full image tile by tile,
-// each tile sent as it is finished, then the whole image. The status goes with each step.
+// each tile sent as it is finished, then the whole image; or, with a region, the region's
+// tiles alone. The status goes with each step.
 // The cancel flag (a save, Ctrl-C) stops it within a row.
 #pragma once
 
@@ -10,10 +11,13 @@
 #include "load_scene.h"
 
 #include "render/image.h"
+#include "render/pixel_rect.h"
 #include "render/ray_stats.h"
 
 #include <atomic>
 #include <chrono>
+#include <memory>
+#include <optional>
 
 namespace lucent::preview {
 
@@ -23,6 +27,10 @@ struct PreviewRun {
   const std::atomic<bool>& cancel;
   int threads = 0;                              // 0: every core
   std::chrono::steady_clock::time_point start;  // the save's time
+  // A region dragged in the page: only its tiles are rendered (no coarse pass), over
+  // `previous` (the last finished image, when it has this size; else black).
+  std::optional<PixelRect> region;
+  std::shared_ptr<const Image> previous;
 };
 
 struct PreviewOutcome {

@@ -36,6 +36,18 @@ HttpReply setControl(const HttpRequest& request, const PreviewPlaces& places) {
   return reply;
 }
 
+HttpReply setRegion(const HttpRequest& request, const PreviewPlaces& places) {
+  HttpReply reply;
+  const auto region = request.query.find("region");
+  reply.body = places.controls.setRegion(region == request.query.end() ? "" : region->second);
+  if (!reply.body.empty()) {
+    reply.status = 400;
+    return reply;
+  }
+  places.changed();
+  return reply;
+}
+
 }  // namespace
 
 HttpHandler previewRoutes(const std::string& token, PreviewPlaces places) {
@@ -52,6 +64,7 @@ HttpHandler previewRoutes(const std::string& token, PreviewPlaces places) {
       // Only the button's request changes anything; a link cannot (it would be a GET).
       if (request.path == "/save") return save(places.last);
       if (request.path == "/set") return setControl(request, places);
+      if (request.path == "/region") return setRegion(request, places);
       reply.status = 404;
       reply.body = "404 not found\n";
     } else if (request.path == "/") {

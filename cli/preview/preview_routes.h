@@ -1,7 +1,8 @@
 // What the preview's server answers: every request must carry the token (403 without it);
 // "/" is the page, "/events" the stream of the board's events, POST "/save" writes the last
 // finished image (last_image.h), POST "/set?name=N&value=V" sets a slider
-// (preview_controls.h) and calls `changed`, anything else 404.
+// (preview_controls.h) and calls `changed`, POST "/region?region=X0,Y0,X1,Y1" renders only
+// that rectangle from now on (without: the whole image again), anything else 404.
 #pragma once
 
 #include "http_server.h"

@@ -15,9 +15,9 @@ std::string PreviewStatus::json() const {
   return fmt::format(
       "{{\"scene\":{},\"generation\":{},\"phase\":{},\"step\":{},\"width\":{},\"height\":{},"
       "\"done\":{},\"total\":{},\"seconds\":{:.3f},\"stats\":{},\"messages\":{},"
-      "\"parameters\":[{}],\"frames\":{},\"frame\":{}}}",
+      "\"parameters\":[{}],\"frames\":{},\"frame\":{},\"region\":{}}}",
       jsonString(scene), generation, jsonString(phase), step, width, height, done, total, seconds,
-      jsonString(stats), jsonString(messages), sliders, frames, frame);
+      jsonString(stats), jsonString(messages), sliders, frames, frame, jsonString(region));
 }
 
 }  // namespace lucent::preview

@@ -317,8 +317,57 @@ def sliders(browser, scene):
         if post_status(f"{preview.base}/set?name=red&value=1") != 403:
             fail("/set answers without the token")
         print(f"sliders: {names} render again; frame 3 magenta {[round(m) for m in mean]}")
+        region(browser, preview)
     finally:
         preview.stop()
+
+
+def half_means(browser, shot):
+    """The mean colours of the canvas's left and right thirds in the screenshot."""
+    r = browser.script("const r = document.getElementById('image').getBoundingClientRect();"
+                       "return [r.left, r.top, r.width, r.height];")
+    width, _, pixels = shot
+    def mean(x0, x1):
+        sums, n = [0, 0, 0], 0
+        for y in range(int(r[1]) + 5, int(r[1] + r[3]) - 5, 2):
+            for x in range(x0, x1, 2):
+                i = 3 * (y * width + x)
+                for c in range(3):
+                    sums[c] += pixels[i + c]
+                n += 1
+        return [round(v / n) for v in sums]
+    third = int(r[2] / 3)
+    return mean(int(r[0]) + 5, int(r[0]) + third), mean(int(r[0] + r[2]) - third, int(r[0] + r[2]) - 5)
+
+
+def region(browser, preview):
+    """A drag over the left half renders only it: a change shows there alone, until
+    "whole image"."""
+    browser.script("""const c = document.getElementById('image'), r = c.getBoundingClientRect();
+        const at = (type, fx, fy, target) => target.dispatchEvent(new MouseEvent(type,
+            {clientX: r.left + r.width * fx, clientY: r.top + r.height * fy, bubbles: true}));
+        at('mousedown', 0.001, 0.001, c); at('mousemove', 0.3, 0.5, window);
+        at('mouseup', 0.5, 0.999, window);""")
+    browser.wait_for(5, "done")  # render 4 was frame 2's (POST /set above): clock 0.5
+    move_slider(browser, "red", 0)  # the region turns from magenta to blue
+    browser.wait_for(6, "done")
+    time.sleep(0.2)
+    left, right = half_means(browser, browser.screenshot("region"))
+    shown = browser.script("return [document.getElementById('region').hidden, "
+                           "document.getElementById('whole').hidden]")
+    # clock 0.5: linear blue 0.5 is sRGB byte 188
+    if left != [0, 0, 188] or right != [255, 0, 188] or shown != [False, False]:
+        fail(f"after a change with the left half as the region: left {left}, right {right}, "
+             f"region and button hidden: {shown}")
+    browser.script("document.getElementById('whole').click()")
+    browser.wait_for(7, "done")
+    time.sleep(0.2)
+    left, right = half_means(browser, browser.screenshot("whole"))
+    if left != [0, 0, 188] or right != [0, 0, 188]:
+        fail(f"the whole image again: left {left}, right {right}")
+    if post_status(f"{preview.base}/region?token={preview.token}&region=5,5,2,9") != 400:
+        fail("/region takes an empty rectangle")
+    print("region: a change shows in the dragged region only, then in the whole image again")
 
 
 def side_by_side(browser, first, scene2):

@@ -122,6 +122,9 @@ function onStatus(event) {
   el("progress").value = s.phase === "done" ? 1 : s.total ? s.done / s.total : 0;
   el("stats").textContent = s.stats;
   showSliders(s);
+  el("whole").hidden = s.region === "";
+  if (s.region && !dragStart) showRegion(...s.region.split(",").map(Number));
+  else if (!dragStart) el("region").hidden = true;
   const messages = el("messages");
   messages.textContent = s.messages;
   messages.hidden = s.messages === "";
@@ -153,6 +156,49 @@ canvas.addEventListener("mousemove", (event) => {
   el("pixel").textContent = "pixel " + x + ", " + y + ": sRGB " + red + " " + green + " " + blue +
     " · linear " + linear(red) + " " + linear(green) + " " + linear(blue);
 });
+
+// A drag over the image renders only that rectangle, at full quality ("whole image" undoes
+// it). The rectangle is shown in image pixels, scaled as the canvas is.
+function imagePoint(event) {
+  const r = canvas.getBoundingClientRect();
+  const x = Math.floor((event.clientX - r.left) * canvas.width / r.width);
+  const y = Math.floor((event.clientY - r.top) * canvas.height / r.height);
+  return [Math.max(0, Math.min(canvas.width, x)), Math.max(0, Math.min(canvas.height, y))];
+}
+
+function showRegion(x0, y0, x1, y1) {
+  const box = el("region");
+  const scale = canvas.getBoundingClientRect().width / canvas.width;
+  Object.assign(box.style, { left: x0 * scale + "px", top: y0 * scale + "px",
+    width: (x1 - x0) * scale + "px", height: (y1 - y0) * scale + "px" });
+  box.hidden = false;
+}
+
+function postRegion(region) {
+  const query = "?token=" + encodeURIComponent(token) + (region ? "&region=" + region : "");
+  fetch("/region" + query, { method: "POST" }).catch(() => {});
+}
+
+let dragStart = null;
+canvas.addEventListener("mousedown", (event) => {
+  dragStart = imagePoint(event);
+  event.preventDefault();
+});
+window.addEventListener("mousemove", (event) => {
+  if (!dragStart) return;
+  const [x, y] = imagePoint(event);
+  showRegion(Math.min(x, dragStart[0]), Math.min(y, dragStart[1]),
+             Math.max(x, dragStart[0]), Math.max(y, dragStart[1]));
+});
+window.addEventListener("mouseup", (event) => {
+  if (!dragStart) return;
+  const [x, y] = imagePoint(event);
+  const [x0, y0, x1, y1] = [Math.min(x, dragStart[0]), Math.min(y, dragStart[1]),
+                            Math.max(x, dragStart[0]), Math.max(y, dragStart[1])];
+  dragStart = null;
+  if (x1 - x0 >= 2 && y1 - y0 >= 2) postRegion([x0, y0, x1, y1].join(","));
+});
+el("whole").addEventListener("click", () => postRegion(""));
 
 const events = new EventSource("/events?token=" + encodeURIComponent(token));
 events.addEventListener("image", onPicture);

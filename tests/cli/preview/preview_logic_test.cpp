@@ -209,3 +209,16 @@ TEST_CASE("preview: a slider sets only a parameter offered, or a frame of the an
   controls.offer({{"turn", 30.0}}, 0);
   CHECK(controls.set("frame", "1") == "the scene is not an animation (or -D picks its moment)");
 }
+
+TEST_CASE("preview: a region is four pixel bounds, or none for the whole image", "[preview]") {
+  PreviewControls controls;
+  CHECK_FALSE(controls.region());
+  CHECK(controls.setRegion("0,0,120,160") == "");
+  REQUIRE(controls.region());
+  CHECK(*controls.region() == lucent::PixelRect{0, 0, 120, 160});
+  for (const char* bad : {"5,5,2,9", "0,0,0,4", "-1,0,4,4", "1,2,3", "1,2,3,4,5", "1;2;3;4", "a"})
+    CHECK(controls.setRegion(bad) != "");
+  CHECK(*controls.region() == lucent::PixelRect{0, 0, 120, 160});  // a bad one changes nothing
+  CHECK(controls.setRegion("") == "");
+  CHECK_FALSE(controls.region());
+}
