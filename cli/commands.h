@@ -118,6 +118,7 @@ struct PreviewOptions {
   std::string bind = "127.0.0.1";  // --bind: the address the server listens on
   std::optional<int> port;         // --port; none: a free port
   bool open = false;               // --open: start the desktop's browser on the address
+  bool compare = false;            // --compare: POV-Ray's render and the difference beside it
 };
 int runPreview(const PreviewOptions& options, const CommonOptions& common);
 

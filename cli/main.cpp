@@ -146,6 +146,9 @@ void addPreview(CLI::App& app, Commands& c) {
                   "printed carries a secret token all the same)");
   cmd->add_option("--port", preview.port, "Port to listen on (default: a free one)");
   cmd->add_flag("--open", preview.open, "Open the address in the desktop's browser (xdg-open)");
+  cmd->add_flag("--compare", preview.compare,
+                "After each render, show POV-Ray's render of the scene and the difference "
+                "beside it (as lucent compare)");
   addCommonOptions(cmd, c.defines, c.allowPaths);
   addPovOptions(cmd, c.pov);
 }

@@ -30,6 +30,14 @@ void PreviewBoard::publishStatus(std::string json) {
   wake_.notify_all();
 }
 
+void PreviewBoard::publishComparison(std::string json) {
+  {
+    std::lock_guard lock(mutex_);
+    comparison_ = Entry{++seq_, "comparison", std::move(json)};
+  }
+  wake_.notify_all();
+}
+
 bool PreviewBoard::collect(uint64_t& cursor, std::chrono::milliseconds wait, std::string& out) {
   out.clear();
   std::unique_lock lock(mutex_);
@@ -41,6 +49,7 @@ bool PreviewBoard::collect(uint64_t& cursor, std::chrono::milliseconds wait, std
   };
   if (image_) take(*image_);
   if (status_) take(*status_);
+  if (comparison_) take(*comparison_);
   for (const auto& entry : tiles_) take(entry.second);
   std::sort(newer.begin(), newer.end(),
             [](const Entry* a, const Entry* b) { return a->seq < b->seq; });
@@ -65,6 +74,7 @@ size_t PreviewBoard::bytesHeld() const {
   size_t n = 0;
   if (image_) n += image_->data.size();
   if (status_) n += status_->data.size();
+  if (comparison_) n += comparison_->data.size();
   for (const auto& entry : tiles_) n += entry.second.data.size();
   return n;
 }

@@ -25,6 +25,8 @@ class PreviewBoard {
   void publishTile(const std::string& key, std::string json);
   // The status (progress, time, figures, messages), replacing the last one.
   void publishStatus(std::string json);
+  // POV-Ray's render and the difference (--compare), replacing the last ones.
+  void publishComparison(std::string json);
 
   // Server-sent events of every entry newer than `cursor`, oldest first, into `out`, and
   // `cursor` moved past them; waits up to `wait` for one (out is then empty). False once
@@ -47,7 +49,7 @@ class PreviewBoard {
   std::condition_variable wake_;
   uint64_t seq_ = 0;
   bool closed_ = false;
-  std::optional<Entry> image_, status_;
+  std::optional<Entry> image_, status_, comparison_;
   std::map<std::string, Entry> tiles_;
 };
 

@@ -7,9 +7,12 @@
 
 #include "browser_open.h"
 #include "change_relay.h"
+#include "compare_arguments.h"
 #include "file_watcher.h"
 #include "http_server.h"
+#include "json_text.h"
 #include "last_image.h"
+#include "pov_comparison.h"
 #include "preview_board.h"
 #include "preview_controls.h"
 #include "preview_render.h"
@@ -93,8 +96,24 @@ struct Session {
   LastImage& last;
   PreviewControls& controls;
   std::atomic<bool>& cancel;
+  std::string compareDir;  // --compare: the folder of its reports
   PreviewStatus status;
 };
+
+// --compare, after a finished render of the whole image: POV-Ray's render and the
+// difference, sent to the page (or why they could not be made).
+void compareForPage(Session& s, const CommonOptions& common) {
+  s.status.phase = "comparing";
+  s.board.publishStatus(s.status.json());
+  const Comparison c = runComparison(
+      compareArguments(s.options, common, s.status.width, s.status.height), s.compareDir, s.cancel);
+  s.status.phase = "done";
+  if (c.cancelled) return;
+  s.board.publishComparison(fmt::format(
+      "{{\"generation\":{},\"povray\":\"{}\",\"diff\":\"{}\",\"report\":{},\"error\":{}}}",
+      s.status.generation, base64(c.povrayPng), base64(c.diffPng), jsonString(c.report),
+      jsonString(c.error)));
+}
 
 // The sliders' values over the command line's -D values; the status told what they are.
 CommonOptions withControls(Session& s) {
@@ -161,6 +180,7 @@ WatchList renderOnce(Session& s, int generation) {
     if (!out.cancelled) {
       s.status.stats = renderStatsText(out.stats, out.seconds, threadsShown(run.threads));
       s.last.set(std::move(out.image));
+      if (s.options.compare && s.status.region.empty()) compareForPage(s, common);
     }
   } catch (...) {
     const Failure failure = describeFailure(std::current_exception());
@@ -230,7 +250,20 @@ int runPreview(const PreviewOptions& options, const CommonOptions& common) {
       server.stop();
     }
   } closing{board, *server};
-  Session session{options, common, board, last, controls, cancel, {}};
+  // --compare's reports, in a folder of this run's own, removed at the end.
+  struct CompareFolder {
+    std::string path;
+    ~CompareFolder() {
+      std::error_code ec;
+      if (!path.empty()) fs::remove_all(path, ec);
+    }
+  } compareFolder;
+  if (options.compare) {
+    std::string pattern = (fs::temp_directory_path() / "lucent-preview-XXXXXX").string();
+    if (!::mkdtemp(pattern.data())) throw IoFailure("cannot make a folder for --compare's reports");
+    compareFolder.path = pattern;
+  }
+  Session session{options, common, board, last, controls, cancel, compareFolder.path, {}};
   session.status.scene = options.scene;
   previewLoop(session, watcher, relay);
   fmt::print(stderr, "lucent: preview stopped\n");

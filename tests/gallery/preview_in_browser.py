@@ -370,6 +370,58 @@ def region(browser, preview):
     print("region: a change shows in the dragged region only, then in the whole image again")
 
 
+def wait_comparison(browser, generation, timeout=60):
+    end = time.time() + timeout
+    while time.time() < end:
+        if browser.script("return document.getElementById('comparison').dataset.generation") == str(generation):
+            time.sleep(0.3)  # the images decoded
+            return
+        time.sleep(0.1)
+    fail(f"no comparison of render {generation} after {timeout} s")
+
+
+def image_mean(browser, shot, element):
+    r = browser.script(f"const r = document.getElementById('{element}').getBoundingClientRect();"
+                       "return [r.left, r.top, r.width, r.height];")
+    width, _, pixels = shot
+    sums, n = [0, 0, 0], 0
+    for y in range(int(r[1]) + 3, int(r[1] + r[3]) - 3, 2):
+        for x in range(int(r[0]) + 3, int(r[0] + r[2]) - 3, 2):
+            i = 3 * (y * width + x)
+            for c in range(3):
+                sums[c] += pixels[i + c]
+            n += 1
+    if n == 0:
+        fail(f"#{element} is not shown: {r}")
+    return [round(v / n) for v in sums]
+
+
+def compare_beside(browser, scene):
+    """--compare: POV-Ray's render of each save and the difference, beside Lucent's."""
+    save(scene, scene_text("0 1 0"))
+    preview = Preview(scene, "-w", "120", "-h", "80", "--compare")
+    try:
+        browser.open(preview.url)
+        browser.wait_for(1, "done")
+        wait_comparison(browser, 1)
+        report = browser.script("return document.getElementById('report').textContent")
+        if "psnr:       inf (identical)" not in report:
+            fail(f"the comparison's report: {report}")
+        shot = browser.screenshot("compare-green")
+        if image_mean(browser, shot, "povray") != [0, 255, 0] or image_mean(browser, shot, "diff") != [0, 0, 0]:
+            fail(f"POV-Ray's render {image_mean(browser, shot, 'povray')}, the difference "
+                 f"{image_mean(browser, shot, 'diff')}")
+        save(scene, scene_text("0 0 1"))
+        browser.wait_for(2, "done")
+        wait_comparison(browser, 2)
+        povray = image_mean(browser, browser.screenshot("compare-blue"), "povray")
+        if povray != [0, 0, 255]:
+            fail(f"POV-Ray's render of the second save: {povray}")
+        print("compare: POV-Ray's render and the difference beside each save's render")
+    finally:
+        preview.stop()
+
+
 def side_by_side(browser, first, scene2):
     """A second preview of another scene on another port: each page shows its own scene."""
     save(scene2, scene_text("1 1 0"))
@@ -424,6 +476,7 @@ def main():
         three_saves(browser, first, scene)
         save_button_and_pixel(browser, first, scene)
         sliders(browser, f"{WORK}/sliders.xml")
+        compare_beside(browser, f"{WORK}/compare.xml")
         second = side_by_side(browser, first, scene2)
         browser.open(first.url)
         browser.wait_for(4, "done")

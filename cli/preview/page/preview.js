@@ -51,6 +51,7 @@ function stateText(s) {
     case "coarse": return "render " + s.generation + ": coarse pass, every " + s.step + "th pixel · " + time;
     case "tiles": return "render " + s.generation + ": tiles " + s.done + " / " + s.total + " · " + time;
     case "done": return "render " + s.generation + ": done in " + time;
+    case "comparing": return "render " + s.generation + ": done; POV-Ray renders it…";
     case "cancelled": return "render " + s.generation + ": cancelled";
     case "invalid": return "render " + s.generation + ": the scene is invalid";
     default: return s.phase;
@@ -200,8 +201,19 @@ window.addEventListener("mouseup", (event) => {
 });
 el("whole").addEventListener("click", () => postRegion(""));
 
+// --compare: POV-Ray's render and the difference of the last finished render.
+function onComparison(event) {
+  const data = JSON.parse(event.data);
+  el("comparison").hidden = false;
+  el("comparison").dataset.generation = data.generation;
+  el("povray").src = data.povray ? "data:image/png;base64," + data.povray : "";
+  el("diff").src = data.diff ? "data:image/png;base64," + data.diff : "";
+  el("report").textContent = data.error || data.report;
+}
+
 const events = new EventSource("/events?token=" + encodeURIComponent(token));
 events.addEventListener("image", onPicture);
 events.addEventListener("tile", onTile);
 events.addEventListener("status", onStatus);
+events.addEventListener("comparison", onComparison);
 events.onerror = () => { el("state").textContent = "disconnected: is lucent preview still running?"; };
