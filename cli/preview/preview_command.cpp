@@ -105,8 +105,10 @@ struct Session {
 void compareForPage(Session& s, const CommonOptions& common) {
   s.status.phase = "comparing";
   s.board.publishStatus(s.status.json());
+  PreviewOptions options = s.options;
+  options.samples = s.status.samples;
   const Comparison c = runComparison(
-      compareArguments(s.options, common, s.status.width, s.status.height), s.compareDir, s.cancel);
+      compareArguments(options, common, s.status.width, s.status.height), s.compareDir, s.cancel);
   s.status.phase = "done";
   if (c.cancelled) return;
   s.board.publishComparison(fmt::format(
@@ -123,8 +125,10 @@ CommonOptions withControls(Session& s) {
   // Only what the scene still has: a parameter removed by a save is no longer set.
   CommonOptions common = s.common;
   for (const auto& [name, value] : s.controls.values())
-    if (name == "frame" || std::any_of(s.status.parameters.begin(), s.status.parameters.end(),
-                                       [&](const SceneParameter& p) { return p.name == name; }))
+    if (name == "samples") continue;  // not a -D value (previewRequest takes it)
+    else if (name == "frame" ||
+             std::any_of(s.status.parameters.begin(), s.status.parameters.end(),
+                         [&](const SceneParameter& p) { return p.name == name; }))
       common.defines[name] = value;
   s.status.values.clear();
   for (const SceneParameter& p : s.status.parameters) {
@@ -165,6 +169,8 @@ WatchList renderOnce(Session& s, int generation) {
   s.board.publishStatus(s.status.json());
   std::vector<std::string> messages;  // as `check` prints them
   SceneRequest request = previewRequest(s.options);
+  if (const auto values = s.controls.values(); values.count("samples"))
+    request.samples = std::atoi(values.at("samples").c_str());
   request.heldMessages = &messages;
   request.meshCache = std::make_shared<MeshFileCache>();
   WatchList read;
@@ -173,6 +179,7 @@ WatchList renderOnce(Session& s, int generation) {
     read.add(loaded.sources);
     read.add(loaded.dataFiles);
     s.status.frames = framesToChoose(s, loaded);
+    s.status.samples = loaded.scene->render.samples;
     s.controls.offer(s.status.parameters, s.status.frames);
     s.status.messages = fmt::format("{}", fmt::join(messages, "\n"));
     PreviewOutcome out = renderForPage(loaded, run);

@@ -18,7 +18,10 @@ std::string PreviewControls::set(const std::string& name, const std::string& val
   double number = 0.0;
   if (!readNumber(value, number)) return fmt::format("'{}' is not a number", value);
   std::lock_guard lock(mutex_);
-  if (name == "frame") {
+  if (name == "samples") {
+    if (number != std::floor(number) || number < 1 || number > kMaxPreviewSamples)
+      return fmt::format("samples {}: 1 to {}", value, kMaxPreviewSamples);
+  } else if (name == "frame") {
     if (frames_ == 0) return "the scene is not an animation (or -D picks its moment)";
     if (number != std::floor(number) || number < 1 || number > frames_)
       return fmt::format("frame {}: the scene has frames 1 to {}", value, frames_);

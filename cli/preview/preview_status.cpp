@@ -15,9 +15,9 @@ std::string PreviewStatus::json() const {
   return fmt::format(
       "{{\"scene\":{},\"generation\":{},\"phase\":{},\"step\":{},\"width\":{},\"height\":{},"
       "\"done\":{},\"total\":{},\"seconds\":{:.3f},\"stats\":{},\"messages\":{},"
-      "\"parameters\":[{}],\"frames\":{},\"frame\":{},\"region\":{}}}",
+      "\"parameters\":[{}],\"frames\":{},\"frame\":{},\"samples\":{},\"region\":{}}}",
       jsonString(scene), generation, jsonString(phase), step, width, height, done, total, seconds,
-      jsonString(stats), jsonString(messages), sliders, frames, frame, jsonString(region));
+      jsonString(stats), jsonString(messages), sliders, frames, frame, samples, jsonString(region));
 }
 
 }  // namespace lucent::preview

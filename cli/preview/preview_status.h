@@ -27,6 +27,7 @@ struct PreviewStatus {
   std::vector<SceneParameter> parameters;
   std::vector<std::string> values;  // one per parameter
   int frames = 0, frame = 1;
+  int samples = 1;     // per pixel, as rendered
   std::string region;  // "x0,y0,x1,y1" of the region rendered, or "" for the whole image
 
   std::string json() const;

@@ -297,7 +297,7 @@ def sliders(browser, scene):
         browser.wait_for(1, "done")
         names = browser.script("return [...document.querySelectorAll('#controls input')].map("
                                "s => [s.dataset.name, s.min, s.max, s.value])")
-        if names != [["red", "0", "1", "0.5"], ["frame", "1", "3", "1"]]:
+        if names != [["red", "0", "1", "0.5"], ["frame", "1", "3", "1"], ["samples", "1", "16", "1"]]:
             fail(f"the sliders are {names}")
         # linear 0.5 is sRGB byte 188
         expect_colour("sliders: red 0.5, frame 1", canvas_mean(browser, browser.screenshot("slider-1")), 0, 180, 5)
@@ -309,8 +309,14 @@ def sliders(browser, scene):
         mean = canvas_mean(browser, browser.screenshot("slider-3"))
         if mean[0] < 250 or mean[2] < 250 or mean[1] > 5:
             fail(f"frame 3 (clock 1) is not magenta: {mean}")
+        move_slider(browser, "samples", 4)
+        browser.wait_for(4, "done")
+        rays = browser.script("return document.getElementById('stats').textContent")
+        if "primary 38400" not in rays:  # 120 x 80 pixels, 4 samples each
+            fail(f"the samples slider did not give 4 samples a pixel: {rays}")
         for query, expected in [("name=blue&value=1", 400), ("name=red&value=x", 400),
-                                ("name=frame&value=4", 400), ("name=frame&value=2", 200)]:
+                                ("name=frame&value=4", 400), ("name=samples&value=0", 400),
+                                ("name=frame&value=2", 200)]:
             got = post_status(f"{preview.base}/set?token={preview.token}&{query}")
             if got != expected:
                 fail(f"POST /set?{query}: {got}, expected {expected}")
@@ -348,9 +354,9 @@ def region(browser, preview):
             {clientX: r.left + r.width * fx, clientY: r.top + r.height * fy, bubbles: true}));
         at('mousedown', 0.001, 0.001, c); at('mousemove', 0.3, 0.5, window);
         at('mouseup', 0.5, 0.999, window);""")
-    browser.wait_for(5, "done")  # render 4 was frame 2's (POST /set above): clock 0.5
+    browser.wait_for(6, "done")  # render 5 was frame 2's (POST /set above): clock 0.5
     move_slider(browser, "red", 0)  # the region turns from magenta to blue
-    browser.wait_for(6, "done")
+    browser.wait_for(7, "done")
     time.sleep(0.2)
     left, right = half_means(browser, browser.screenshot("region"))
     shown = browser.script("return [document.getElementById('region').hidden, "
@@ -360,7 +366,7 @@ def region(browser, preview):
         fail(f"after a change with the left half as the region: left {left}, right {right}, "
              f"region and button hidden: {shown}")
     browser.script("document.getElementById('whole').click()")
-    browser.wait_for(7, "done")
+    browser.wait_for(8, "done")
     time.sleep(0.2)
     left, right = half_means(browser, browser.screenshot("whole"))
     if left != [0, 0, 188] or right != [0, 0, 188]:

@@ -112,6 +112,7 @@ function showSliders(s) {
     controls.append(slider(p.name, p.name, min, max, (max - min) / 200, value));
   }
   if (s.frames > 0) controls.append(slider("frame", "frame", 1, s.frames, 1, s.frame));
+  controls.append(slider("samples", "samples per pixel", 1, Math.max(16, s.samples), 1, s.samples));
 }
 
 function onStatus(event) {
@@ -122,7 +123,8 @@ function onStatus(event) {
   el("state").textContent = stateText(s);
   el("progress").value = s.phase === "done" ? 1 : s.total ? s.done / s.total : 0;
   el("stats").textContent = s.stats;
-  showSliders(s);
+  // Once the scene is loaded: its frames and samples are known then.
+  if (s.phase !== "loading" && s.phase !== "invalid") showSliders(s);
   el("whole").hidden = s.region === "";
   if (s.region && !dragStart) showRegion(...s.region.split(",").map(Number));
   else if (!dragStart) el("region").hidden = true;

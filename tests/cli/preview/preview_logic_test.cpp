@@ -206,6 +206,10 @@ TEST_CASE("preview: a slider sets only a parameter offered, or a frame of the an
   CHECK(controls.set("frame", "25") == "frame 25: the scene has frames 1 to 24");
   CHECK(controls.set("frame", "2.5") != "");
   CHECK(controls.values() == std::map<std::string, std::string>{{"frame", "24"}, {"turn", "45.5"}});
+  CHECK(controls.set("samples", "4") == "");
+  CHECK(controls.set("samples", "0") == "samples 0: 1 to 64");
+  CHECK(controls.set("samples", "1.5") != "");
+  CHECK(controls.values().at("samples") == "4");
   controls.offer({{"turn", 30.0}}, 0);
   CHECK(controls.set("frame", "1") == "the scene is not an animation (or -D picks its moment)");
 }
