@@ -68,6 +68,7 @@ class Preview:
     """A `lucent preview` process and the address it printed."""
 
     def __init__(self, scene, *options):
+        self.scene = scene
         self.log = open(scene + ".log", "w")
         self.process = subprocess.Popen([LUCENT, "preview", scene, *options], stdout=subprocess.PIPE,
                                         stderr=self.log, text=True)
@@ -199,6 +200,13 @@ def check_token(preview):
         if got != expected:
             fail(f"GET {url.replace(preview.token, 'TOKEN')}: status {got}, expected {expected}")
     print("token: refused without it (403), served with it")
+    port = preview.base.rsplit(":", 1)[1]
+    taken = subprocess.run([LUCENT, "preview", preview.scene, "--port", port], capture_output=True,
+                           text=True, timeout=20)
+    expected = f"lucent: error: cannot serve the preview on 127.0.0.1 port {port}: Address already in use\n"
+    if taken.returncode != 3 or taken.stderr != expected:
+        fail(f"a second preview on a port in use: status {taken.returncode}, {taken.stderr!r}")
+    print("a port in use: refused with status 3")
 
 
 def three_saves(browser, preview, scene):
@@ -349,12 +357,13 @@ def half_means(browser, shot):
 def region(browser, preview):
     """A drag over the left half renders only it: a change shows there alone, until
     "whole image"."""
+    browser.wait_for(5, "done")  # frame 2's render (POST /set above), finished before the drag
     browser.script("""const c = document.getElementById('image'), r = c.getBoundingClientRect();
         const at = (type, fx, fy, target) => target.dispatchEvent(new MouseEvent(type,
             {clientX: r.left + r.width * fx, clientY: r.top + r.height * fy, bubbles: true}));
         at('mousedown', 0.001, 0.001, c); at('mousemove', 0.3, 0.5, window);
         at('mouseup', 0.5, 0.999, window);""")
-    browser.wait_for(6, "done")  # render 5 was frame 2's (POST /set above): clock 0.5
+    browser.wait_for(6, "done")  # the region's render, still frame 2 (clock 0.5)
     move_slider(browser, "red", 0)  # the region turns from magenta to blue
     browser.wait_for(7, "done")
     time.sleep(0.2)
