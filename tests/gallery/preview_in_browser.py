@@ -11,6 +11,7 @@ the process grow. Ctrl-C stops both cleanly.
 
 Usage: preview_in_browser.py LUCENT WORKDIR
 """
+import atexit
 import base64
 import json
 import os
@@ -66,12 +67,14 @@ def http_status(url):
 
 class Preview:
     """A `lucent preview` process and the address it printed."""
+    running = []  # killed at exit, if a failed check left them running
 
     def __init__(self, scene, *options):
         self.scene = scene
         self.log = open(scene + ".log", "w")
         self.process = subprocess.Popen([LUCENT, "preview", scene, *options], stdout=subprocess.PIPE,
                                         stderr=self.log, text=True)
+        Preview.running.append(self.process)
         line = self.process.stdout.readline()
         if "http://" not in line:
             fail(f"lucent preview printed no address: {line!r}")
@@ -94,6 +97,14 @@ class Preview:
             fail("lucent preview did not stop within 5 s of Ctrl-C")
         if status != 0:
             fail(f"lucent preview exited {status} after Ctrl-C")
+
+
+@atexit.register
+def kill_previews():
+    for process in Preview.running:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
 
 
 class Browser:
