@@ -22,6 +22,7 @@
 #include "interrupt_catcher.h"
 #include "load_scene.h"
 #include "render_run.h"
+#include "render_stats.h"
 
 #include "app/image_output.h"
 #include "meshes/mesh_file_cache.h"
@@ -42,26 +43,7 @@ namespace lucent::cli {
 namespace {
 
 void printStats(const RayStats& s, double seconds, int threads) {
-  fmt::print("rays:      {:>14}  (primary {}, shadow {}, reflected {}, refracted {})\n", s.rays(),
-             s.primary, s.shadow, s.reflected, s.refracted);
-  fmt::print("searches:  {:>14}  (closest-hit and any-hit queries of the world)\n", s.queries);
-  fmt::print(
-      "cache hits:{:>14}  (shadow rays blocked by the object that blocked the light's "
-      "previous one, tested first)\n",
-      s.shadowCacheHits);
-  // Intersection tests by kind, the kinds the scene has only.
-  uint64_t tests = 0;
-  std::string byKind;
-  for (size_t k = 0; k < kTestSlots; ++k) {
-    const uint64_t n = s.tests[k];
-    if (n == 0) continue;
-    tests += n;
-    byKind += fmt::format("{}{} {}", byKind.empty() ? "" : ", ", testSlotName(k), n);
-  }
-  fmt::print("tests:     {:>14}  ({})\n", tests, byKind.empty() ? "none" : byKind);
-  fmt::print("time:      {:>14.3f}  s ({})\n", seconds, formatDuration(seconds));
-  fmt::print("speed:     {:>14.3f}  Mrays/s on {} threads\n",
-             seconds > 0.0 ? s.rays() / seconds * 1e-6 : 0.0, threads);
+  fmt::print("{}", renderStatsText(s, seconds, threads));
 }
 
 // Every frame of `range` of `animation`, each parsed again for its frame, to the numbered

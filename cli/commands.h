@@ -110,4 +110,16 @@ struct CompareOptions {
 };
 int runCompare(const CompareOptions& options, const CommonOptions& common);
 
+// lucent preview SCENE: a live render in the browser, again on every save (docs/preview.md).
+struct PreviewOptions {
+  std::string scene;
+  std::optional<int> width, height, samples, threads, maxDepth;
+  std::string camera;
+  std::string bind = "127.0.0.1";  // --bind: the address the server listens on
+  std::optional<int> port;         // --port; none: a free port
+  bool open = false;               // --open: start the desktop's browser on the address
+  bool compare = false;            // --compare: POV-Ray's render and the difference beside it
+};
+int runPreview(const PreviewOptions& options, const CommonOptions& common);
+
 }  // namespace lucent::cli

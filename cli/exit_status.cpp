@@ -9,28 +9,29 @@
 
 namespace lucent::cli {
 
-int reportFailure(const std::exception_ptr& failure) {
+Failure describeFailure(const std::exception_ptr& failure) {
   try {
     std::rethrow_exception(failure);
   } catch (const ReportedFailure& f) {
-    return f.status;
+    return {f.status, ""};
   } catch (const LocatedError& e) {
-    fmt::print(stderr, "{}\n", e.what());
-    return e.kind() == LocatedError::Kind::Input ? kRuntimeFailure : kInvalidScene;
+    return {e.kind() == LocatedError::Kind::Input ? kRuntimeFailure : kInvalidScene, e.what()};
   } catch (const UsageError& e) {
-    fmt::print(stderr, "lucent: error: {}\n", e.what());
-    return kUsage;
+    return {kUsage, fmt::format("lucent: error: {}", e.what())};
   } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "lucent: error: not enough memory\n");
-    return kRuntimeFailure;
+    return {kRuntimeFailure, "lucent: error: not enough memory"};
   } catch (const std::exception& e) {
     // IoFailure, ImageIOError, ImagePluginError, and anything a library throws.
-    fmt::print(stderr, "lucent: error: {}\n", e.what());
-    return kRuntimeFailure;
+    return {kRuntimeFailure, fmt::format("lucent: error: {}", e.what())};
   } catch (...) {
-    fmt::print(stderr, "lucent: error: an unknown failure\n");
-    return kRuntimeFailure;
+    return {kRuntimeFailure, "lucent: error: an unknown failure"};
   }
+}
+
+int reportFailure(const std::exception_ptr& failure) {
+  const Failure f = describeFailure(failure);
+  if (!f.message.empty()) fmt::print(stderr, "{}\n", f.message);
+  return f.status;
 }
 
 }  // namespace lucent::cli

@@ -4,6 +4,7 @@
 
 #include <exception>
 #include <stdexcept>
+#include <string>
 
 namespace lucent::cli {
 
@@ -24,6 +25,14 @@ struct IoFailure : std::runtime_error {
 struct ReportedFailure {
   int status;
 };
+
+// A failure's exit status and the message the command line reports it with ("" for a
+// ReportedFailure, already printed).
+struct Failure {
+  int status;
+  std::string message;
+};
+Failure describeFailure(const std::exception_ptr& failure);
 
 // Prints the failure as the command line reports it and returns its exit status:
 // LocatedError as "file:line:col: error: ..." (2, or 3 for a file the scene names that

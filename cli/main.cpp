@@ -1,4 +1,4 @@
-// lucent: render, check, export-pov, convert and compare scene files.
+// lucent: render, check, export-pov, convert, compare and preview scene files.
 #include "command_line.h"
 #include "commands.h"
 
@@ -15,8 +15,8 @@ using namespace lucent::cli;
 
 namespace {
 
-const std::vector<std::string_view> kCommands{"render",  "check",   "export-pov",
-                                              "convert", "compare", "schema"};
+const std::vector<std::string_view> kCommands{"render",  "check",   "export-pov", "convert",
+                                              "compare", "preview", "schema"};
 
 // The first argument names the command; a misspelled one gets a hint (CLI11 alone would
 // only say that a command is required).
@@ -48,9 +48,10 @@ struct Commands {
   ExportPovOptions exportPov;
   ConvertOptions convert;
   CompareOptions compare;
+  PreviewOptions preview;
   std::string schemaOutput;
   CLI::App *renderCmd = nullptr, *checkCmd = nullptr, *exportCmd = nullptr, *compareCmd = nullptr,
-           *convertCmd = nullptr, *schemaCmd = nullptr;
+           *convertCmd = nullptr, *schemaCmd = nullptr, *previewCmd = nullptr;
 };
 
 void addRender(CLI::App& app, Commands& c) {
@@ -128,6 +129,30 @@ void addCompare(CLI::App& app, Commands& c) {
   addPovOptions(cmd, c.pov);
 }
 
+void addPreview(CLI::App& app, Commands& c) {
+  PreviewOptions& preview = c.preview;
+  CLI::App* cmd = c.previewCmd = app.add_subcommand(
+      "preview", "Show a live render of the scene in the browser, rendered again on every save");
+  setHelp(cmd);
+  cmd->add_option("scene", preview.scene, "Scene file (.xml, or .pov: POV-Ray 3.7)")->required();
+  cmd->add_option("-w,--width", preview.width, "Image width in pixels");
+  cmd->add_option("-h,--height", preview.height, "Image height in pixels");
+  cmd->add_option("-s,--samples", preview.samples, "Samples per pixel");
+  cmd->add_option("-t,--threads", preview.threads, "Render threads (default: every core)");
+  cmd->add_option("--max-depth", preview.maxDepth, "Maximum recursion depth");
+  cmd->add_option("--camera", preview.camera, "Render through the camera with this name");
+  cmd->add_option("--bind", preview.bind,
+                  "Address to listen on (default 127.0.0.1: this machine only; the address "
+                  "printed carries a secret token all the same)");
+  cmd->add_option("--port", preview.port, "Port to listen on (default: a free one)");
+  cmd->add_flag("--open", preview.open, "Open the address in the desktop's browser (xdg-open)");
+  cmd->add_flag("--compare", preview.compare,
+                "After each render, show POV-Ray's render of the scene and the difference "
+                "beside it (as lucent compare)");
+  addCommonOptions(cmd, c.defines, c.allowPaths);
+  addPovOptions(cmd, c.pov);
+}
+
 void addSchema(CLI::App& app, Commands& c) {
   c.schemaCmd =
       app.add_subcommand("schema", "Print the scene language's XML Schema (docs/lucent.xsd)");
@@ -156,6 +181,7 @@ int runCommand(const CLI::App& app, Commands& c) {
     if (*c.exportCmd) return runExportPov(c.exportPov, common);
     if (*c.convertCmd) return runConvert(c.convert, common);
     if (*c.compareCmd) return runCompare(c.compare, common);
+    if (*c.previewCmd) return runPreview(c.preview, common);
     if (*c.schemaCmd) return runSchema(c.schemaOutput);
     return kUsage;
   } catch (...) {
@@ -176,6 +202,7 @@ int main(int argc, char** argv) {
   addExportPov(app, commands);
   addConvert(app, commands);
   addCompare(app, commands);
+  addPreview(app, commands);
   addSchema(app, commands);
 
   if (!checkCommandName(argc, argv)) return kUsage;

@@ -26,17 +26,17 @@ TEST_CASE("cli: a misspelled command or option gets a 'did you mean'", "[cli]") 
   CHECK(r.status == 1);
   CHECK(r.err ==
         "lucent: error: unknown command 'rendr' (did you mean 'render'?); the commands are "
-        "render, check, export-pov, convert, compare and schema (lucent --help)\n");
+        "render, check, export-pov, convert, compare, preview and schema (lucent --help)\n");
   r = runLucent("nonsense");
   CHECK(r.status == 1);
   CHECK(r.err ==
         "lucent: error: unknown command 'nonsense'; the commands are render, check, "
-        "export-pov, convert, compare and schema (lucent --help)\n");
+        "export-pov, convert, compare, preview and schema (lucent --help)\n");
   r = runLucent("schem");
   CHECK(r.status == 1);
   CHECK(r.err ==
         "lucent: error: unknown command 'schem' (did you mean 'schema'?); the commands are "
-        "render, check, export-pov, convert, compare and schema (lucent --help)\n");
+        "render, check, export-pov, convert, compare, preview and schema (lucent --help)\n");
   r = runLucent("check '" + kValid + "' --widht 16");
   CHECK(r.status == 1);
   CHECK(r.err ==

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Start-up without OpenImageIO (images/image_plugin.h): `--version`, `check` and a render to
 # PNG or PPM, with PNG or JPEG textures, load no part of it, while a render to EXR or of a
-# scene with a TIFF texture does. Proved from the dynamic linker's own record of every object it loads
+# scene with a TIFF texture does. And no command but `preview` loads its web server
+# (cpp-httplib and the OpenSSL it is built with, cli/preview/http_server.h). Proved from the dynamic linker's own record of every object it loads
 # (LD_DEBUG=files), which needs no code in lucent.
 # Usage: bash startup_libraries.sh <path-to-lucent> <source-dir>
 set -u
@@ -31,6 +32,9 @@ loaded() {
 
 without_oiio() {  # LABEL -- COMMAND...
   loaded "$@"
+  if grep -E "httplib|lucent-preview-server|libssl" "$tmp/loaded" >"$tmp/found"; then
+    fail "$1 loads the preview's web server: $(tr '\n' ' ' < "$tmp/found")"
+  fi
   if grep -E "OpenImageIO|lucent-oiio" "$tmp/loaded" >"$tmp/found"; then
     fail "$1 loads OpenImageIO: $(tr '\n' ' ' < "$tmp/found")"
   fi
@@ -75,6 +79,18 @@ sed 's|textures/uvgrid.png|'"$tmp"'/grid.tif|' "$src/examples/gallery/image-text
 with_oiio "a scene with a TIFF texture" -- \
   "$lucent" render "$tmp/tiff-texture.xml" -o "$tmp/texture.png" -q -w 32 -h 24
 [ "$(head -c 4 "$tmp/texture.png" | tail -c 3)" = "PNG" ] || fail "the TIFF texture scene wrote no PNG"
+
+# `preview` loads the server plugin, and with it cpp-httplib; stopped by Ctrl-C once it has
+# printed its address.
+rm -f "$tmp"/ld.*
+LD_DEBUG=files LD_DEBUG_OUTPUT="$tmp/ld" "$lucent" preview "$tmp/scene.xml" >"$tmp/preview.out" 2>&1 &
+preview=$!
+for _ in $(seq 100); do grep -q "http://" "$tmp/preview.out" && break; sleep 0.1; done
+kill -INT "$preview"
+wait "$preview" || fail "preview: exit status $? after Ctrl-C: $(cat "$tmp/preview.out")"
+cat "$tmp"/ld.* 2>/dev/null | sed -n 's/.*file=\([^ ]*\).*/\1/p' | sort -u > "$tmp/loaded"
+grep -q "lucent-preview-server\.so" "$tmp/loaded" || fail "preview does not load its server plugin"
+grep -q "libcpp-httplib" "$tmp/loaded" || fail "preview does not load cpp-httplib"
 
 [ "$failures" -eq 0 ] && echo "startup_libraries: all checks passed"
 exit $((failures > 0))

@@ -1,0 +1,42 @@
+#include "last_image.h"
+
+#include "app/image_output.h"
+
+#include <fmt/core.h>
+
+#include <exception>
+
+namespace lucent::preview {
+
+void LastImage::set(Image image) {
+  auto shared = std::make_shared<const Image>(std::move(image));
+  std::lock_guard lock(mutex_);
+  image_ = std::move(shared);
+}
+
+std::shared_ptr<const Image> LastImage::get() const {
+  std::lock_guard lock(mutex_);
+  return image_;
+}
+
+bool LastImage::save(std::string& message) const {
+  std::shared_ptr<const Image> image;
+  {
+    std::lock_guard lock(mutex_);
+    image = image_;
+  }
+  if (!image) {
+    message = "no finished image to save yet";
+    return false;
+  }
+  try {
+    writeImageFile(*image, output_);
+  } catch (const std::exception& e) {
+    message = e.what();
+    return false;
+  }
+  message = fmt::format("wrote '{}' ({}x{})", output_, image->width, image->height);
+  return true;
+}
+
+}  // namespace lucent::preview
