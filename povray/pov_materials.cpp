@@ -1,6 +1,7 @@
 #include "pov_materials.h"
 #include "pov_patterns.h"
 #include "scenegraph/finish_terms.h"
+#include "scenegraph/images_in_maps.h"
 #include "scenegraph/linear_placement.h"
 #include "scenegraph/map_blend.h"
 #include "scenegraph/overloaded.h"
@@ -380,6 +381,20 @@ Material mirroredInU(const Material& m) {
   return out;
 }
 
+// The image maps inside the texture's maps and lists: readable, projected, and not tinted
+// (POV-Ray cannot multiply an image_map's colours, as it multiplies a colour's).
+void checkImagesInMaps(const Texture& t, const Vec3& pigmentScale, const std::string& name,
+                       PovIssues& issues) {
+  forEachImageInMaps(t, [&](const ImageTexture& image) {
+    if (!checkNestedImage(image, name, issues)) return;
+    if (pigmentScale != Vec3(1.0))
+      issues.error(image.loc, fmt::format("{}: an image map inside a map or a list of pigments "
+                                          "of a material with a coloured diffuse, which POV-Ray "
+                                          "cannot tint",
+                                          name));
+  });
+}
+
 // The mapping with its mirror taken: what is left for the material written through it.
 ImageMapping unmirrored(const ImageMapping& mapping) {
   ImageMapping m = mapping;
@@ -688,6 +703,8 @@ void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const Imag
         writeAveragePigment(average, s.pigmentScale, s.filter, s.transmit, out);
       },
   };
+  if (s.useTexture && !std::holds_alternative<ImageTexture>(m.texture))
+    checkImagesInMaps(m.texture, s.pigmentScale, materialLabel(m), issues ? *issues : issues_);
   if (s.useTexture) std::visit(pigment, m.texture);
   else plain();
   if (m.normal) writeNormal(*m.normal, out);

@@ -174,6 +174,11 @@ TEST_CASE(
   requireSameImageAsPovrayInPlace("uv_mapping_shapes.pov", 240, 180);
 }
 
+TEST_CASE("scene reader image: image maps as entries of pigment maps and block patterns' lists",
+          "[sdl][scene][image][povray][texture][image-map][pigment-map]") {
+  requireSameImageAsPovrayInPlace("image_maps_in_maps.pov", 240, 180);
+}
+
 TEST_CASE("scene reader image: tiles, a checker of layered textures",
           "[sdl][scene][image][povray][texture][tiles]") {
   requireSameImageAsPovray("tiles.pov", 160, 120);
