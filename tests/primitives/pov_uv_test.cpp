@@ -143,7 +143,7 @@ TEST_CASE("pov uv: a sor's u turns towards POV-Ray's +z, its v is its own",
   checkUV(povUVAlong(sor, towards(Vec3(-0.5, 5, 0), Vec3(-0.5, 1, 0))), 0.5, 1.5);
 }
 
-TEST_CASE("pov uv: a mesh's uv_vectors, (0, 0) without them; a patch's own (u, v)",
+TEST_CASE("pov uv: a mesh's uv_vectors, (0, 0) without them, and a patch's own (u, v)",
           "[primitives][uv-mapping]") {
   auto data = std::make_shared<MeshData>();
   data->positions = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}};

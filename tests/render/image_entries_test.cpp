@@ -17,11 +17,12 @@ using namespace lucent::test;
 
 namespace {
 
-// Red | green over blue | white (row 0 the top), in the temporary folder.
+// Red | green over blue | white (row 0 the top).
 struct QuadImage {
   std::string path;
   QuadImage() {
-    path = (std::filesystem::temp_directory_path() /
+    // Beside the scene (the working folder), which the scene may read.
+    path = (std::filesystem::current_path() /
             ("lucent-image-entries-" + std::to_string(::getpid()) + ".png"))
                .string();
     Image img(2, 2);

@@ -87,8 +87,8 @@ TEST_CASE("uv mapping: on a shape without (u,v) the point is the world's x and y
   World world(*scene);
   // The top cap at world x 0.45: 0.45 + 0.3.
   CHECK(traceOne(world, Ray(Vec3(0.45, 5, 0.1), Vec3(0, -1, 0))).r == Approx(0.75).margin(1e-6));
-  // The side at world x 0.25 + 0.6 (z 0.8): 0.85 + 0.3 wraps to 0.15.
-  CHECK(traceOne(world, Ray(Vec3(5, 0.3, 0.8), Vec3(-1, 0, 0))).r == Approx(0.15).margin(1e-6));
+  // The side at world x 0.25 + 1 (z 0): 1.25 + 0.3 wraps to 0.55.
+  CHECK(traceOne(world, Ray(Vec3(5, 0.3, 0), Vec3(-1, 0, 0))).r == Approx(0.55).margin(1e-6));
   // The second cylinder's side at world y 0.4.
   CHECK(traceOne(world, Ray(Vec3(5, 0.4, -5), Vec3(-1, 0, 0))).r == Approx(0.4).margin(1e-6));
 }
