@@ -493,6 +493,11 @@ void parsePigmentChild(ElementReader& r, ElementReader& c, PatternSpec& s,
   }
   pigmentLoc = c.loc();
   s.pigment = parsePatternPigment(c);
+  // Its value is taken at a pattern point, where an image's pixels are not at hand.
+  if (textureHoldsImage(s.pigment->texture))
+    c.error(
+        "an <image> cannot be in a pigment-pattern's <pigment> (its grey level is taken "
+        "wherever the pattern is, without the image's pixels)");
 }
 
 void needsPigment(ElementReader& r, const PatternSpec& s, const std::optional<SourceLoc>& loc) {

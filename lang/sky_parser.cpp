@@ -34,6 +34,10 @@ void parseSky(ElementReader& r) {
     }
     sky.layers.push_back(parseTexture(c));
     refuseUvMapping(c, sky.layers.back(), "a sky, seen at a direction,");
+    if (textureHoldsImage(sky.layers.back()))
+      c.error(
+          "a <sky> layer cannot hold an <image> in its maps or lists (a sky's colours are "
+          "taken without a material's images)");
   });
   if (sky.layers.empty() && !wrongChild && !r.failed()) {
     r.error("<sky> needs a <pattern> child, e.g. <pattern type=\"gradient\"> with a <color-map>");

@@ -18,8 +18,8 @@ bool isTextureElement(std::string_view name) {
 // An <entry>'s value attribute: "at" (a pigment map's), "weight" (an average's) or none.
 enum class EntryValue { at, weight, none };
 
-// One <entry>: its value, then a plain colour or one texture child. An image cannot be
-// nested: its pixels are loaded per material, not per entry.
+// One <entry>: its value, then a plain colour or one texture child. An image there is
+// projected (an entry is read at its map's pattern point, which has no (u,v)).
 TextureMapEntry parseEntry(ElementReader& e, EntryValue value) {
   std::vector<std::string_view> attributes{"color", "filter", "transmit"};
   if (value == EntryValue::at) attributes.push_back("at");
@@ -41,15 +41,9 @@ TextureMapEntry parseEntry(ElementReader& e, EntryValue value) {
     const std::string name = n.name();
     if (!isTextureElement(name)) {
       c.error(e.tag() +
-              " holds one texture element (pattern, checker, hexagon, brick or average), not <" +
+              " holds one texture element (pattern, checker, hexagon, brick, average or image), "
+              "not <" +
               name + ">");
-      e.markFailed();
-      return;
-    }
-    if (name == ImageTexture::kind.element) {
-      c.error(
-          "<image> cannot be inside a map or a list of pigments (an image's pixels are "
-          "loaded per material); give the material the image itself");
       e.markFailed();
       return;
     }
@@ -66,6 +60,12 @@ TextureMapEntry parseEntry(ElementReader& e, EntryValue value) {
     }
     textureLoc = c.loc();
     entry.texture = parseTexture(c);
+    if (const auto* image = std::get_if<ImageTexture>(&entry.texture);
+        image && image->projection == ImageProjection::uv && !c.failed())
+      c.error(
+          "an <image> inside a map or a list of pigments needs a 'projection' (planar is "
+          "POV-Ray's image_map's): an entry is read at its map's pattern point, which has no "
+          "(u,v)");
     refuseUvMapping(c, entry.texture,
                     "an entry, evaluated at its map's pattern point in its map's space,");
   });

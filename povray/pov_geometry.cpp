@@ -420,10 +420,26 @@ void PovGeometry::writeShapeHead(const Node& node, const Mat4& m, uint32_t mater
       where += " (turned so the camera is outside)";
     }
   }
+  // A uv-mapped box: POV-Ray takes its cube map in its left-handed space, Lucent in the
+  // importer's (z negated), so the box is written mirrored in z and mirrored back by its
+  // first transform, which POV-Ray's (u, v) undo (Box::UVCoord works in the box's space).
+  const auto* box = std::get_if<BoxSpec>(&spec);
+  const bool mirrored = box && !inClipOrBound_ && uvMappedHere(material);
+  if (mirrored) {
+    const Vec3 lo = glm::min(box->min, box->max), hi = glm::max(box->min, box->max);
+    spec = BoxSpec{Vec3(lo.x, lo.y, -hi.z), Vec3(hi.x, hi.y, -lo.z)};
+  }
   ShapeOut shapeOut(
       out, where, [&](const MeshSpec& mesh) { return meshName(mesh, node); },
       [&](const std::string& message) { issues_.error(node.loc, message); });
   shapeTypeOf(spec).writePov(spec, shapeOut);
+  if (mirrored) out.line("matrix <1, 0, 0, 0, 1, 0, 0, 0, -1, 0, 0, 0>");
+}
+
+// Does the leaf's material or the interior texture written with it read (u, v)?
+bool PovGeometry::uvMappedHere(uint32_t material) const {
+  if (usesUvMapping(scene_.materials[material])) return true;
+  return marks_.interior && usesUvMapping(scene_.materials[*marks_.interior]);
 }
 
 void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
@@ -444,8 +460,17 @@ void PovGeometry::writeLeaf(const Node& node, const Mat4& m, uint32_t material, 
   warnSmoothNormalRule(node, issues_);
   used_[material] = true;
   std::vector<ImageMapFace> faces;
-  if (!inClipOrBound_ && materials_.usesImageMap(material))
+  // A projected image needs no faces of its own (POV-Ray projects it as Lucent does): a box
+  // whose patterns are read at (u,v) keeps its shape, which has POV-Ray's (u,v).
+  const auto* image = std::get_if<ImageTexture>(&mat.texture);
+  const bool projected = image && image->projection != ImageProjection::uv;
+  if (!inClipOrBound_ && materials_.usesImageMap(material) &&
+      !(projected && uvMappedHere(material)))
     faces = shapeTypeOf(*node.shape).povImageFaces(*node.shape);
+  if (!faces.empty() && uvMappedHere(material))
+    issues_.error(node.loc, "<" + node.element +
+                                "> with an image on its faces and a pattern mapped at (u,v): "
+                                "POV-Ray's faces written as planes have no (u,v)");
   if (!faces.empty()) {
     // Each face has its own copy of the image: the solid as the intersection of its face
     // planes, each with its own mapping. The same solid, surface and inside.

@@ -65,6 +65,7 @@ class PovGeometry {
   void writeVisibility(PovWriter& out) const;
   // Does a leaf of `material` write an interior_texture (marking its material used)?
   bool writesInterior(uint32_t material);
+  bool uvMappedHere(uint32_t material) const;
   // Operands a CSG node gets once groups and <use> are flattened.
   int operandCount(const Node& node) const;
 

@@ -111,6 +111,26 @@ std::optional<std::pair<std::string, ImageFacts>> readableImage(const ImageTextu
 
 }  // namespace
 
+bool checkNestedImage(const ImageTexture& image, const std::string& materialName,
+                      PovIssues& issues) {
+  if (!readableImage(image, materialName, issues)) return false;
+  if (image.projection == ImageProjection::uv) {
+    issues.error(image.loc, materialName +
+                                ": an image at (u,v) inside a map or a list of "
+                                "pigments, which POV-Ray reads at its map's point");
+    return false;
+  }
+  return true;
+}
+
+void writeNestedImageBody(const ImageTexture& image, double filter, double transmit,
+                          PovWriter& out) {
+  static const int kMapType[] = {0, 0, 1, 2, 5};
+  out.line(imageMapText(image, povImageFormat(image.path), imageFacts(image.path),
+                        kMapType[static_cast<int>(image.projection)], filter, transmit));
+  writePlacement(image.placement, out);
+}
+
 void writeProjectedImagePigment(const ImageTexture& image, double filter, double transmit,
                                 const std::string& materialName, PovWriter& out,
                                 PovIssues& issues) {

@@ -37,6 +37,14 @@ void writeImagePigment(const ImageTexture& image, double filter, double transmit
 void writeProjectedImagePigment(const ImageTexture& image, double filter, double transmit,
                                 const std::string& materialName, PovWriter& out, PovIssues& issues);
 
+// An image inside a map or a list of pigments, as POV-Ray takes it: readable and projected
+// (errors name `materialName`); false with an error otherwise.
+bool checkNestedImage(const ImageTexture& image, const std::string& materialName,
+                      PovIssues& issues);
+// Writes the entry's body `image_map {... map_type N} <placement>` (checked first).
+void writeNestedImageBody(const ImageTexture& image, double filter, double transmit,
+                          PovWriter& out);
+
 // Writes `normal { bump_map {... map_type N} bump_size d <placement> }` for a projected
 // <bump-map>: POV-Ray's own projection and bend, on any shape.
 void writeProjectedBumpMapNormal(const BumpMapSpec& bump, const std::string& materialName,

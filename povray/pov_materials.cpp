@@ -1,6 +1,7 @@
 #include "pov_materials.h"
 #include "pov_patterns.h"
 #include "scenegraph/finish_terms.h"
+#include "scenegraph/images_in_maps.h"
 #include "scenegraph/linear_placement.h"
 #include "scenegraph/map_blend.h"
 #include "scenegraph/overloaded.h"
@@ -342,17 +343,6 @@ bool showsImage(const Material& m) {
   return false;
 }
 
-// Does any surface of the material read a pattern at the shape's (u,v) (mapping="uv")?
-bool usesUvMapping(const Material& m) {
-  if (textureUvMapped(m.texture) || textureUvMapped(m.mapPattern)) return true;
-  if (m.normal && m.normal->pattern.placement.uv) return true;
-  for (const Material& layer : m.layers)
-    if (usesUvMapping(layer)) return true;
-  for (const MaterialMapEntry& e : m.mapEntries)
-    if (usesUvMapping(e.material)) return true;
-  return false;
-}
-
 }  // namespace
 
 bool PovMaterials::dependsOnShape(uint32_t index) const {
@@ -361,15 +351,55 @@ bool PovMaterials::dependsOnShape(uint32_t index) const {
 
 namespace {
 
-// POV-Ray's uv_mapping gives Lucent's (u,v) only on meshes with texture coordinates (its
-// spheres, boxes, sors and planes have (u,v) of their own); an export error elsewhere.
-void checkUvShape(bool uv, const ImageMapping* mapping, const char* shapeName, const SourceLoc* loc,
-                  const std::string& what, PovIssues* issues) {
-  if (!uv || !issues || !loc || (mapping && mapping->kind == ImageMapping::MeshUV)) return;
-  issues->error(*loc, fmt::format("<{}> with {} mapped at (u,v): POV-Ray's uv_mapping gives "
-                                  "this shape other (u,v) than Lucent's (meshes with uvs can be "
-                                  "exported)",
-                                  shapeName ? shapeName : "shape", what));
+// The material as POV-Ray must see it on a shape whose (u, v) run u the other way
+// (ImageMapping::uvMirrored): every uv-mapped placement reads 1 - u, so POV-Ray's (u, v) land
+// where Lucent's are (exactly but on the seam, which a pattern of period 1 in u hides).
+Material mirroredInU(const Material& m) {
+  Material out = m;
+  Mat4 flip(1.0);
+  flip[0][0] = -1.0;
+  flip[3][0] = 1.0;
+  auto mirror = [&](PatternPlacement* p) {
+    if (p && p->uv) p->patternFromObject = p->patternFromObject * flip;
+  };
+  auto texture = [&](Texture& t) {
+    if (auto* p = std::get_if<PatternTexture>(&t)) mirror(&p->pattern.placement);
+    if (auto* c = std::get_if<CheckerTexture>(&t)) mirror(&c->placement);
+    if (auto* h = std::get_if<HexagonTexture>(&t)) mirror(&h->placement);
+    if (auto* b = std::get_if<BrickTexture>(&t)) mirror(&b->placement);
+    if (auto* a = std::get_if<AverageTexture>(&t)) mirror(&a->placement);
+    if (auto* i = std::get_if<ImageTexture>(&t); i && i->projection != ImageProjection::uv)
+      mirror(&i->placement);
+  };
+  texture(out.texture);
+  texture(out.mapPattern);
+  if (out.normal) mirror(&out.normal->pattern.placement);
+  if (out.bumpMap && out.bumpMap->projection != ImageProjection::uv)
+    mirror(&out.bumpMap->placement);
+  for (Material& layer : out.layers) layer = mirroredInU(layer);
+  for (MaterialMapEntry& e : out.mapEntries) e.material = mirroredInU(e.material);
+  return out;
+}
+
+// The image maps inside the texture's maps and lists: readable, projected, and not tinted
+// (POV-Ray cannot multiply an image_map's colours, as it multiplies a colour's).
+void checkImagesInMaps(const Texture& t, const Vec3& pigmentScale, const std::string& name,
+                       PovIssues& issues) {
+  forEachImageInMaps(t, [&](const ImageTexture& image) {
+    if (!checkNestedImage(image, name, issues)) return;
+    if (pigmentScale != Vec3(1.0))
+      issues.error(image.loc, fmt::format("{}: an image map inside a map or a list of pigments "
+                                          "of a material with a coloured diffuse, which POV-Ray "
+                                          "cannot tint",
+                                          name));
+  });
+}
+
+// The mapping with its mirror taken: what is left for the material written through it.
+ImageMapping unmirrored(const ImageMapping& mapping) {
+  ImageMapping m = mapping;
+  m.uvMirrored = false;
+  return m;
 }
 
 }  // namespace
@@ -478,6 +508,11 @@ const PatternPlacement* mapPlacement(const Texture& t) {
 // (its cells 0, 1, 2 each showing the entry the map gives that value alone).
 void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, const char* shapeName,
                             const SourceLoc* loc, PovWriter& out, PovIssues* issues) const {
+  if (mapping && mapping->uvMirrored && usesUvMapping(m)) {
+    const ImageMapping plain = unmirrored(*mapping);
+    writeMap(mirroredInU(m), &plain, shapeName, loc, out, issues);
+    return;
+  }
   PovIssues& report = issues ? *issues : issues_;
   const PatternPlacement* place = mapPlacement(m.mapPattern);
   // Both hand the entries the map's warped point (render/map_entries.h): Lucent's entries
@@ -521,7 +556,6 @@ void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, cons
     report.error(m.loc, materialLabel(m) +
                             ": the map is mapped at (u,v) and an entry is not, which POV-Ray "
                             "cannot write (it evaluates every entry at the map's point)");
-  checkUvShape(uv, mapping, shapeName, loc, materialLabel(m), issues);
   // The rest of the texture is the map POV-Ray evaluates at (u, v, 0).
   if (uv) out.line("uv_mapping");
   // The entries' values (an average's weights) and textures.
@@ -632,8 +666,11 @@ const std::vector<PovSurface>& PovMaterials::layerSurfaces(uint32_t material) co
 void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const ImageMapping* mapping,
                               const char* shapeName, const SourceLoc* loc, PovWriter& out,
                               PovIssues* issues) const {
-  checkUvShape(textureUvMapped(m.texture) || (m.normal && m.normal->pattern.placement.uv), mapping,
-               shapeName, loc, materialLabel(m), issues);
+  if (mapping && mapping->uvMirrored && usesUvMapping(m)) {
+    const ImageMapping plain = unmirrored(*mapping);
+    writeLayer(mirroredInU(m), s, &plain, shapeName, loc, out, issues);
+    return;
+  }
   // The pigment of each kind of texture (std::visit needs every kind); a material whose
   // texture POV-Ray cannot show (useTexture false, an image without a mapping) gets its
   // plain colour.
@@ -666,6 +703,8 @@ void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const Imag
         writeAveragePigment(average, s.pigmentScale, s.filter, s.transmit, out);
       },
   };
+  if (s.useTexture && !std::holds_alternative<ImageTexture>(m.texture))
+    checkImagesInMaps(m.texture, s.pigmentScale, materialLabel(m), issues ? *issues : issues_);
   if (s.useTexture) std::visit(pigment, m.texture);
   else plain();
   if (m.normal) writeNormal(*m.normal, out);

@@ -371,9 +371,9 @@ void writeBody(const Texture& t, const Vec3& scale, double filter, double transm
   std::visit(
       Overloaded{
           [&](std::monostate) { out.line(colour(Color(1.0f), {}, scale, filter, transmit)); },
-          [&](const ImageTexture&) {
-            // The parsers refuse an image inside a map or a list.
-            throw std::logic_error("an image texture inside a map of pigments");
+          [&](const ImageTexture& image) {
+            // POV-Ray cannot tint an image map: PovMaterials checks the scale is 1.
+            writeNestedImageBody(image, filter, transmit, out);
           },
           [&](const CheckerTexture& c) { writeCheckerBody(c, scale, filter, transmit, out); },
           [&](const PatternTexture& c) { writePatternBody(c, scale, filter, transmit, out); },

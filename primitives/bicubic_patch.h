@@ -62,6 +62,10 @@ class BicubicPatch final : public Shape {
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override {
     return mesh_.surface(ray, hit);
   }
+  // POV-Ray's precomputed (u, v) of the patch: its triangles' (bicubicPatchMesh).
+  bool povUV(const SurfaceInfo& s, const Hit& hit, Vec2& uv) const override {
+    return mesh_.povUV(s, hit, uv);
+  }
   size_t triangleCount() const override { return mesh_.triangleCount(); }
 
   const TriangleMesh& mesh() const { return mesh_; }

@@ -1,4 +1,5 @@
 #include "box.h"
+#include "pov_uv.h"
 
 #include <stdexcept>
 #include <utility>
@@ -92,6 +93,29 @@ SurfaceInfo Box::surface(const Ray& ray, const Hit& hit) const {
   }
   s.hasUV = true;
   return s;
+}
+
+// POV-Ray's box: its cube map (boxes.cpp's picture), each face a quarter of u and a third
+// of v, from the point's fractions across the box in POV-Ray's space, where z is negated:
+// Lucent's min-z face is POV-Ray's max-z face and the z fraction runs from Lucent's max z.
+bool Box::povUV(const SurfaceInfo& s, const Hit& hit, Vec2& uv) const {
+  const Vec3 e = hi_ - lo_;
+  auto frac = [&](double num, double den) { return den > 0.0 ? num / den : 0.0; };
+  const double px = frac(s.p.x - lo_.x, e.x), py = frac(s.p.y - lo_.y, e.y);
+  const double pz = frac(hi_.z - s.p.z, e.z);
+  const int axis = static_cast<int>(hit.part / 2);
+  const bool maxSide = (hit.part & 1) != 0;
+  if (axis == 0) {
+    uv = maxSide ? Vec2(0.75 - pz / 4.0, 1.0 / 3.0 + py / 3.0)
+                 : Vec2(pz / 4.0, 1.0 / 3.0 + py / 3.0);
+  } else if (axis == 1) {
+    uv = maxSide ? Vec2(0.25 + px / 4.0, 1.0 - pz / 3.0) : Vec2(0.25 + px / 4.0, pz / 3.0);
+  } else if (maxSide) {  // POV-Ray's min-z face
+    uv = Vec2(1.0 - px / 4.0, 1.0 / 3.0 + py / 3.0);
+  } else {  // POV-Ray's max-z face
+    uv = Vec2(0.25 + px / 4.0, 1.0 / 3.0 + py / 3.0);
+  }
+  return true;
 }
 
 }  // namespace lucent

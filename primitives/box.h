@@ -25,6 +25,7 @@ class Box final : public Shape {
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  bool povUV(const SurfaceInfo& s, const Hit& hit, Vec2& uv) const override;
 
  private:
   // Where the whole line enters and leaves the box, and through which faces.

@@ -32,6 +32,10 @@ struct SurfaceInfo {
   Vec3 ns{0.0, 1.0, 0.0};  // unit shading normal (interpolated normals), same side as ng
   Vec2 uv{0.0};
   bool hasUV = false;
+  // POV-Ray's (u, v) (Shape::povUV, or the world x and y on shapes without), which
+  // mapping="uv" reads; filled in by Instance only when the leaf's material asks for it.
+  Vec2 mappedUV{0.0};
+  bool hasMappedUV = false;
   Vec3 pObject{0.0};  // hit point in the leaf's object space, filled in by Instance
 };
 

@@ -80,7 +80,7 @@ bool Instance::inside(const Vec3& p) const {
   return shape_->inside(placed_ ? placed_->transform.pointToObject(p) : p);
 }
 
-SurfaceInfo Instance::surface(const Ray& ray, const Hit& hit) const {
+SurfaceInfo Instance::surface(const Ray& ray, const Hit& hit, bool mappedUV) const {
   Hit local = hit;
   local.shape = shape_.get();
   // The ray the hit was found with (toObject); the rest goes through the matrices even
@@ -95,6 +95,10 @@ SurfaceInfo Instance::surface(const Ray& ray, const Hit& hit) const {
   w.ns = t.normalToWorld(s.ns);
   if (Vec3 ns; shape_->worldShadingNormal(toObject(ray), local, t, ns)) w.ns = ns;
   w.pObject = s.p;  // solid textures are evaluated in the leaf's object space
+  if (mappedUV) {
+    w.hasMappedUV = true;
+    if (!shape_->povUV(s, local, w.mappedUV)) w.mappedUV = Vec2(w.p.x, w.p.y);
+  }
   if (hit.flip) {
     w.ng = -w.ng;
     w.ns = -w.ns;

@@ -29,7 +29,12 @@ class Instance final : public Shape {
   bool occluded(const Ray& ray) const override;
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
-  SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  SurfaceInfo surface(const Ray& ray, const Hit& hit) const override {
+    return surface(ray, hit, false);
+  }
+  // With `mappedUV`, also POV-Ray's (u, v) (SurfaceInfo::mappedUV): the shape's povUV, or
+  // where it has none the world point's x and y, as POV-Ray's default UVCoord.
+  SurfaceInfo surface(const Ray& ray, const Hit& hit, bool mappedUV) const;
   size_t triangleCount() const override { return shape_->triangleCount(); }
 
   const Shape& shape() const { return *shape_; }

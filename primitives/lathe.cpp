@@ -1,4 +1,5 @@
 #include "lathe.h"
+#include "pov_uv.h"
 
 #include "polynomial.h"
 #include "quadratic.h"
@@ -72,7 +73,7 @@ Lathe::Lathe(LatheSpline spline, const std::vector<Vec2>& points, bool open) : o
   std::vector<std::pair<Vec2, Vec2>> ends;
   // The ends from the points themselves: a + b + c + d need not round to the last one.
   auto add = [&](Vec2 a, Vec2 b, Vec2 c, Vec2 d, Vec2 first, Vec2 last) {
-    Piece p{a, b, c, d, 0, 0.0, 0.0, 0.0, true};
+    Piece p{a, b, c, d, 0, 0.0, 0.0, 0.0, true, segments_++};
     p.degree = (a.x != 0.0 || a.y != 0.0)   ? 3
                : (b.x != 0.0 || b.y != 0.0) ? 2
                : (c.x != 0.0 || c.y != 0.0) ? 1
@@ -128,9 +129,9 @@ Lathe::Lathe(LatheSpline spline, const std::vector<Vec2>& points, bool open) : o
     }
   for (size_t i = 0; i < m; ++i) {
     if (pieces_[i].endsFree && ends[i].second.x > 0.0)
-      discs_.push_back({ends[i].second.y, ends[i].second.x});
+      discs_.push_back({ends[i].second.y, ends[i].second.x, pieces_[i].segment + 1.0});
     if (!startJoined[i] && ends[i].first.x > 0.0)
-      discs_.push_back({ends[i].first.y, ends[i].first.x});
+      discs_.push_back({ends[i].first.y, ends[i].first.x, pieces_[i].segment + 0.0});
   }
   double r = 0.0, h1 = kInf, h2 = -kInf;
   for (const Piece& p : pieces_) {
@@ -428,6 +429,18 @@ SurfaceInfo Lathe::surface(const Ray& ray, const Hit& hit) const {
   si.pError =
       gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) + glm::abs(si.p) + Vec3(scale_));
   return si;
+}
+
+// POV-Ray's lathe: u the angle about +y in POV-Ray's space, v the spline parameter plus
+// the segment's number over the number of segments, at most 1. A closing disc (which
+// POV-Ray does not draw) takes the v of the curve's end it closes.
+bool Lathe::povUV(const SurfaceInfo& s, const Hit& hit, Vec2& uv) const {
+  const uint32_t part = hit.part & ~kEnteringBit;
+  const double n = static_cast<double>(segments_);
+  const double v = part < pieces_.size() ? (hit.b1 + pieces_[part].segment) / n
+                                         : discs_[part - pieces_.size()].v / n;
+  uv = Vec2(povTurnsAboutY(s.p.x, -s.p.z), std::min(v, 1.0));
+  return true;
 }
 
 }  // namespace lucent

@@ -47,6 +47,7 @@ class Lathe final : public Shape {
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  bool povUV(const SurfaceInfo& s, const Hit& hit, Vec2& uv) const override;
 
   // One place where the line meets the surface: t along the ray, the piece (or a closing
   // disc, numbered after the pieces) and the curve parameter s on it.
@@ -66,9 +67,11 @@ class Lathe final : public Shape {
     int degree;         // the highest power of s with a nonzero coefficient (1 to 3)
     double r2, h1, h2;  // bounding cylinder: |x| <= r2, y in [h1, h2]
     bool endsFree;      // the curve ends at s = 1 here (s = 1 belongs to this piece)
+    int segment = 0;    // POV-Ray's number of the spline segment (its i1), for povUV
   };
   struct Disc {
     double y, radius;
+    double v = 0.0;  // POV-Ray's v at the curve's end the disc closes
   };
   Vec2 at(const Piece& p, double s) const { return ((p.a * s + p.b) * s + p.c) * s + p.d; }
   Vec2 slope(const Piece& p, double s) const { return (3.0 * p.a * s + 2.0 * p.b) * s + p.c; }
@@ -82,6 +85,7 @@ class Lathe final : public Shape {
   void decideByInside(const Vec3& o, const Vec3& d, std::vector<LineRoot>& roots) const;
 
   std::vector<Piece> pieces_;
+  int segments_ = 0;       // POV-Ray's number of segments, degenerate ones included
   std::vector<int> next_;  // the piece each one's end joins, or -1
   std::vector<Disc> discs_;
   AABB bounds_;

@@ -44,6 +44,14 @@ class Shape {
   // Geometry of a hit this shape found on the same ray.
   virtual SurfaceInfo surface(const Ray& ray, const Hit& hit) const = 0;
 
+  // POV-Ray 3.7's (u, v) at a hit (its UVCoord, which uv_mapping reads), in POV-Ray's
+  // left-handed object space (pov_uv.h), given this shape's surface() `s` for the hit.
+  // False where POV-Ray has none: its uv_mapping then reads the world point's x and y
+  // (Instance gives them). Asked only for leaves whose material maps patterns at (u, v).
+  virtual bool povUV(const SurfaceInfo& /*s*/, const Hit& /*hit*/, Vec2& /*uv*/) const {
+    return false;
+  }
+
   // The shading normal in world space where the shape blends its normals there, as POV-Ray
   // blends a smooth height field's vertex normals after transforming them (Instance asks;
   // false: the object-space shading normal of surface() is transformed as usual).

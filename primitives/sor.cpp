@@ -1,4 +1,5 @@
 #include "sor.h"
+#include "pov_uv.h"
 
 #include "centred_line.h"
 
@@ -382,6 +383,12 @@ SurfaceInfo Sor::surface(const Ray& ray, const Hit& hit) const {
   si.pError =
       gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) + glm::abs(si.p) + Vec3(scale_));
   return si;
+}
+
+// POV-Ray's sor: its v is the one surface() gives; u the angle about +y in POV-Ray's space.
+bool Sor::povUV(const SurfaceInfo& s, const Hit& /*hit*/, Vec2& uv) const {
+  uv = Vec2(povTurnsAboutY(s.p.x, -s.p.z), s.uv.y);
+  return true;
 }
 
 }  // namespace lucent

@@ -40,6 +40,7 @@ class Sor final : public Shape {
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  bool povUV(const SurfaceInfo& s, const Hit& hit, Vec2& uv) const override;
 
   // One place where the whole line meets the surface: t along the ray, the segment (or
   // the bottom cap, numbered segments(), and the top cap after it), and for a solid

@@ -1,4 +1,5 @@
 #include "sphere.h"
+#include "pov_uv.h"
 
 #include "span.h"
 
@@ -56,6 +57,21 @@ SurfaceInfo Sphere::surface(const Ray& ray, const Hit& hit) const {
   s.uv = Vec2(phi / (2.0 * kPi), 1.0 - std::acos(cosTheta) / kPi);
   s.hasUV = true;
   return s;
+}
+
+// POV-Ray's sphere: the longitude of the direction from the centre about +y from +x, and
+// 0.5 + its latitude over pi, in POV-Ray's space (z negated).
+bool Sphere::povUV(const SurfaceInfo& s, const Hit& /*hit*/, Vec2& uv) const {
+  Vec3 d = s.p - center_;
+  d.z = -d.z;
+  const double len = glm::length(d);
+  if (len == 0.0) {
+    uv = Vec2(0.0);
+    return true;
+  }
+  d /= len;
+  uv = Vec2(povTurnsAboutY(d.x, d.z), 0.5 + std::asin(d.y) / kPi);
+  return true;
 }
 
 }  // namespace lucent

@@ -45,6 +45,7 @@ class Sphere final : public Shape {
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  bool povUV(const SurfaceInfo& s, const Hit& hit, Vec2& uv) const override;
 
   const Vec3& center() const { return center_; }
   double radius() const { return radius_; }

@@ -1,4 +1,5 @@
 #include "torus.h"
+#include "pov_uv.h"
 
 #include "polynomial.h"
 
@@ -215,6 +216,16 @@ SurfaceInfo Torus::surface(const Ray& ray, const Hit& hit) const {
   }
   s.ns = s.ng;
   return s;
+}
+
+// POV-Ray's torus: u = 1 - (atan2(z, x) + pi)/2pi about +y, v = the angle round the tube
+// from its inner equator, (atan2(y, rho - R) + pi)/2pi, in POV-Ray's space (z negated).
+bool Torus::povUV(const SurfaceInfo& s, const Hit& /*hit*/, Vec2& uv) const {
+  const double x = s.p.x, y = s.p.y, z = -s.p.z;
+  const double u = 1.0 - (std::atan2(z, x) + kPi) / (2.0 * kPi);
+  const double rho = std::sqrt(x * x + z * z);
+  uv = Vec2(u, (std::atan2(y, rho - R_) + kPi) / (2.0 * kPi));
+  return true;
 }
 
 }  // namespace lucent

@@ -32,6 +32,7 @@ class Torus final : public Shape {
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  bool povUV(const SurfaceInfo& s, const Hit& hit, Vec2& uv) const override;
 
   // Every root of the whole line, ascending, a tangent root listed twice (so the line
   // alternates out/in starting outside). Returns the count (at most 4). For tests.

@@ -270,4 +270,10 @@ SurfaceInfo TriangleMesh::surface(const Ray&, const Hit& hit) const {
                          /*normalFollowsShading=*/!mesh_->closed);
 }
 
+// POV-Ray's mesh: its uv_vectors interpolated, (0, 0) without them.
+bool TriangleMesh::povUV(const SurfaceInfo& s, const Hit& /*hit*/, Vec2& uv) const {
+  uv = s.hasUV ? s.uv : Vec2(0.0);
+  return true;
+}
+
 }  // namespace lucent

@@ -42,6 +42,7 @@ class TriangleMesh final : public Shape {
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3& p) const override;
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  bool povUV(const SurfaceInfo& s, const Hit& hit, Vec2& uv) const override;
   size_t triangleCount() const override { return mesh_->triangles.size(); }
 
   const MeshData& data() const { return *mesh_; }

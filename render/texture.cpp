@@ -1,4 +1,5 @@
 #include "texture.h"
+#include "scenegraph/images_in_maps.h"
 
 #include "patterns/block_pattern.h"
 #include "patterns/color_map.h"
@@ -77,6 +78,20 @@ Color ImageMap::lookupPixel(double x, double y) const {
   return c;
 }
 
+namespace {
+
+// An image texture's pixels (decoded to linear), from the cache when there is one.
+std::shared_ptr<const ImageMap> loadImage(const std::string& path, const SourceLoc& loc,
+                                          ImageMapCache* cache) {
+  try {
+    return cache ? cache->get(path) : std::make_shared<const ImageMap>(path);
+  } catch (const ImageIOError& e) {
+    throw LocatedError(loc, e.what(), LocatedError::Kind::Input);
+  }
+}
+
+}  // namespace
+
 TextureSet::TextureSet(const std::vector<const Material*>& surfaces, ImageMapCache* cache) {
   maps_.resize(surfaces.size());
   std::map<std::string, std::shared_ptr<const ImageMap>> byPath;
@@ -84,15 +99,16 @@ TextureSet::TextureSet(const std::vector<const Material*>& surfaces, ImageMapCac
     const auto* image = std::get_if<ImageTexture>(&surfaces[i]->texture);
     if (!image) continue;
     auto& map = byPath[image->path];
-    if (!map) {
-      try {
-        map = cache ? cache->get(image->path) : std::make_shared<const ImageMap>(image->path);
-      } catch (const ImageIOError& e) {
-        throw LocatedError(image->loc, e.what(), LocatedError::Kind::Input);
-      }
-    }
+    if (!map) map = loadImage(image->path, image->loc, cache);
     maps_[i] = map;
   }
+  // The images among the entries of maps and lists, by file.
+  for (const Material* m : surfaces)
+    forEachImageInMaps(m->texture, [&](const ImageTexture& image) {
+      auto& map = byPath[image.path];
+      if (!map) map = loadImage(image.path, image.loc, cache);
+      nested_[image.path] = map;
+    });
   bumpMaps_.resize(surfaces.size());
   std::map<std::string, std::shared_ptr<const ImageMap>> bumpsByPath;
   for (size_t i = 0; i < surfaces.size(); ++i) {
@@ -118,14 +134,17 @@ void checkImageTextures(const std::vector<Material>& scene) {
     for (const Material& layer : m.layers) materials.push_back(&layer);
   }
   std::set<std::string> checked;
-  for (const Material* m : materials) {
-    const auto* image = std::get_if<ImageTexture>(&m->texture);
-    if (!image || !checked.insert(image->path).second) continue;
+  auto check = [&](const ImageTexture& image) {
+    if (!checked.insert(image.path).second) return;
     try {
-      checkImageFile(image->path);
+      checkImageFile(image.path);
     } catch (const ImageIOError& e) {
-      throw LocatedError(image->loc, e.what(), LocatedError::Kind::Input);
+      throw LocatedError(image.loc, e.what(), LocatedError::Kind::Input);
     }
+  };
+  for (const Material* m : materials) {
+    if (const auto* image = std::get_if<ImageTexture>(&m->texture)) check(*image);
+    forEachImageInMaps(m->texture, check);
   }
   for (const Material* m : materials) {
     if (!m->bumpMap || !checked.insert(m->bumpMap->path).second) continue;
@@ -167,17 +186,27 @@ int checkerCell(const CheckerTexture& checker, const Vec3& pObject, const Vec3& 
   return checkerIndex(checker, warpPoint(place, pObject), placedError(place, err));
 }
 
+// A projected image's colour at the object (or map's) point p. Off a `once` image the
+// surface is clear, as POV-Ray's.
+PigmentColor projectedImageColour(const ImageMap& map, const ImageTexture& image, const Vec3& p) {
+  const std::optional<Vec2> xy = projectToImage(image.projection, warpPoint(image.placement, p),
+                                                map.width(), map.height(), image.once);
+  if (!xy) return {Color(1.0f), {0.0f, 1.0f}};
+  return sampleImage(map.pixels(), *xy, image.interpolation, image.once, image.all);
+}
+
 // The colour, filter and transmit of each kind of texture at an object point. A map or a
 // list of textures evaluates its entries at its own pattern-space point (POV-Ray hands
 // them the warped point), so their placements compose with it.
 struct PigmentAt {
   const Vec3& p;
   const Vec3& err;
+  const NestedImages* images;  // the pixels of the images among the entries
 
   // An entry of a map or a list at the pattern-space point q (error bound qErr).
-  static PigmentColor entry(const TextureMapEntry& e, const Vec3& q, const Vec3& qErr) {
+  PigmentColor entry(const TextureMapEntry& e, const Vec3& q, const Vec3& qErr) const {
     if (std::holds_alternative<std::monostate>(e.texture)) return e.color;
-    return std::visit(PigmentAt{q, qErr}, e.texture);
+    return std::visit(PigmentAt{q, qErr, images}, e.texture);
   }
   PigmentColor inside(const std::vector<TextureMapEntry>& entries, size_t i,
                       const PatternPlacement& place) const {
@@ -185,8 +214,12 @@ struct PigmentAt {
   }
 
   PigmentColor operator()(std::monostate) const { return {}; }
-  PigmentColor operator()(const ImageTexture&) const {
-    throw std::logic_error("an image texture has no colour at a point without (u,v)");
+  // An entry's image: projected from the point its map hands it, through its own placement.
+  PigmentColor operator()(const ImageTexture& image) const {
+    const auto found = images ? images->find(image.path) : NestedImages::const_iterator();
+    if (!images || found == images->end())
+      throw std::logic_error("an image texture without its pixels (not an entry of a material)");
+    return projectedImageColour(*found->second, image, p);
   }
   PigmentColor operator()(const CheckerTexture& checker) const {
     const int cell = checkerCell(checker, p, err);
@@ -252,12 +285,9 @@ PigmentColor imageColour(const ImageMap& map, const ImageTexture& image,
                          const SurfaceInfo& surface) {
   const Vec2 uv = surface.hasUV ? surface.uv : Vec2(0.0);
   if (image.plainUV()) return {map.lookup(uv, image.scale), {}};
-  const int w = map.width(), h = map.height();
-  const std::optional<Vec2> xy =
-      image.projection == ImageProjection::uv
-          ? uvToImage(uv, image.scale, w, h, image.once)
-          : projectToImage(image.projection, warpPoint(image.placement, surface.pObject), w, h,
-                           image.once);
+  if (image.projection != ImageProjection::uv)
+    return projectedImageColour(map, image, surface.pObject);
+  const std::optional<Vec2> xy = uvToImage(uv, image.scale, map.width(), map.height(), image.once);
   if (!xy) return {Color(1.0f), {0.0f, 1.0f}};
   return sampleImage(map.pixels(), *xy, image.interpolation, image.once, image.all);
 }
@@ -266,11 +296,15 @@ struct TextureColour {
   const std::shared_ptr<const ImageMap>& map;
   const SurfaceInfo& surface;
   const Instance& leaf;
+  const NestedImages& images;
 
   Color operator()(std::monostate) const { return Color(1.0f); }
   // A map or a list of textures: its entries' colours (their filter and transmit unused).
-  Color nested(const Texture& texture) const {
-    return pigmentAt(texture, surface.pObject, objectError(surface, leaf)).rgb;
+  // Evaluated on the material's texture itself (a copy of the variant would copy every
+  // entry, per hit).
+  template <class Kind>
+  Color nested(const Kind& texture) const {
+    return PigmentAt{surface.pObject, objectError(surface, leaf), &images}(texture).rgb;
   }
 
   Color operator()(const CheckerTexture& checker) const {
@@ -328,8 +362,9 @@ MapBlend mapChoice(const Material& m, const SurfaceInfo& hit, const Instance& le
   return mapIndexEntry(number, m.mapEntries.size());
 }
 
-PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& pError) {
-  return std::visit(PigmentAt{pObject, pError}, texture);
+PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& pError,
+                       const NestedImages* images) {
+  return std::visit(PigmentAt{pObject, pError, images}, texture);
 }
 
 PigmentColor TextureSet::evalPigment(uint32_t index, const Material& material,
@@ -339,7 +374,7 @@ PigmentColor TextureSet::evalPigment(uint32_t index, const Material& material,
       textureUvMapped(material.texture) ? uvView = uvMappedSurface(hit) : hit;
   if (const auto* image = std::get_if<ImageTexture>(&material.texture))
     return imageColour(*maps_[index], *image, surface);
-  return pigmentAt(material.texture, surface.pObject, objectError(surface, leaf));
+  return pigmentAt(material.texture, surface.pObject, objectError(surface, leaf), &nested_);
 }
 
 Color TextureSet::eval(uint32_t index, const Material& material, const SurfaceInfo& hit,
@@ -347,7 +382,7 @@ Color TextureSet::eval(uint32_t index, const Material& material, const SurfaceIn
   SurfaceInfo uvView;
   const SurfaceInfo& surface =
       textureUvMapped(material.texture) ? uvView = uvMappedSurface(hit) : hit;
-  return std::visit(TextureColour{maps_[index], surface, leaf}, material.texture);
+  return std::visit(TextureColour{maps_[index], surface, leaf, nested_}, material.texture);
 }
 
 }  // namespace lucent

@@ -13,6 +13,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace lucent {
@@ -29,7 +30,16 @@ int checkerIndex(const CheckerTexture& checker, const Vec3& pObject, const Vec3&
 
 // The colour with its filter and transmit of a texture other than an image at an object
 // point (pError: its error bound, as checkerColor's). A point with no texture is white.
-PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& pError);
+// The pixels of the images among the entries of maps and lists of pigments, by file
+// (scenegraph/images_in_maps.h): the tracer shades copies of a material (see-through, layers),
+// whose entries are the same images elsewhere. TextureSet loads them with the materials' own.
+class ImageMap;
+using NestedImages = std::unordered_map<std::string, std::shared_ptr<const ImageMap>>;
+
+// `images`: the pixels of the images among the texture's entries (null where it holds none:
+// a sky's, a pigment function's).
+PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& pError,
+                       const NestedImages* images = nullptr);
 
 // The value a material map's pattern takes at a hit (scenegraph/map_blend.h): a <pattern>'s
 // value, or the cell of a <checker> (0, 1), <hexagon> (0, 1, 2) or <brick> (0 mortar,
@@ -98,6 +108,7 @@ class TextureSet {
  private:
   std::vector<std::shared_ptr<const ImageMap>> maps_;      // per material; null if no image
   std::vector<std::shared_ptr<const ImageMap>> bumpMaps_;  // per material; null if none
+  NestedImages nested_;  // the images among the entries of every material's maps and lists
 };
 
 }  // namespace lucent

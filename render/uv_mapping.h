@@ -7,11 +7,15 @@
 
 namespace lucent {
 
-// The surface as a uv-mapped pattern sees it: the object point is (u, v, 0) ((0, 0, 0) on a
-// shape without (u,v), as an <image> reads (0,0) there), exact (no rounding error to carry).
+// The surface as a uv-mapped pattern sees it: the object point is POV-Ray's (u, v, 0)
+// (SurfaceInfo::mappedUV, which the world fills in for leaves whose material asks; a
+// surface made without it, as by a test, reads its own (u, v) or (0, 0, 0) without),
+// exact (no rounding error to carry).
 inline SurfaceInfo uvMappedSurface(const SurfaceInfo& s) {
   SurfaceInfo t = s;
-  t.pObject = s.hasUV ? Vec3(s.uv.x, s.uv.y, 0.0) : Vec3(0.0);
+  t.pObject = s.hasMappedUV ? Vec3(s.mappedUV.x, s.mappedUV.y, 0.0)
+              : s.hasUV     ? Vec3(s.uv.x, s.uv.y, 0.0)
+                            : Vec3(0.0);
   t.pError = Vec3(0.0);
   return t;
 }

@@ -218,6 +218,8 @@ struct Builder {
       leaf.interior = &scene.materials[*inherited.interior];
     }
     leaf.doubleIlluminate = inherited.doubleIlluminate;
+    leaf.uvMapped =
+        usesUvMapping(*leaf.material) || (leaf.interior && usesUvMapping(*leaf.interior));
     leaves.push_back(leaf);
     // A shadow ray may cross the surface from inside: the interior material's k_t counts.
     const bool transmits = leaf.transmissive || (leaf.interior && leaf.interior->isTransmissive());

@@ -37,6 +37,9 @@ struct WorldLeaf {
   const Material* interior = nullptr;
   uint32_t interiorIndex = 0;
   bool doubleIlluminate = false;  // lit from both sides (double-illuminate)
+  // Its material or interior material reads patterns at (u, v) (usesUvMapping): the
+  // surface then carries POV-Ray's (u, v) (Instance::surface).
+  bool uvMapped = false;
 };
 
 // A top-level object: a leaf's Instance, a CSG node of leaves, or either inside out.

@@ -178,4 +178,19 @@ inline bool Material::isTransmissive() const {
   return true;
 }
 
+// Does any surface of the material (its own, a layer, a map's entry) read a pattern, an
+// image or a bump map at the shape's mapped (u, v) (mapping="uv")? Only then does the
+// tracer ask a leaf for POV-Ray's (u, v).
+inline bool usesUvMapping(const Material& m) {
+  if (textureUvMapped(m.texture) || textureUvMapped(m.mapPattern)) return true;
+  if (m.normal && m.normal->pattern.placement.uv) return true;
+  if (m.bumpMap && m.bumpMap->projection != ImageProjection::uv && m.bumpMap->placement.uv)
+    return true;
+  for (const Material& layer : m.layers)
+    if (usesUvMapping(layer)) return true;
+  for (const MaterialMapEntry& e : m.mapEntries)
+    if (usesUvMapping(e.material)) return true;
+  return false;
+}
+
 }  // namespace lucent

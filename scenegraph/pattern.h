@@ -172,8 +172,9 @@ struct PatternPlacement {
   int octaves = 6;       // POV-Ray clamps to 1..10; so does the evaluation
   double omega = 0.5;    // amplitude factor per octave
   double lambda = 2.0;   // frequency factor per octave
-  // POV-Ray's uv_mapping: the point carried into pattern space is the shape's (u, v, 0)
-  // instead of the object point (on a shape without (u,v), (0, 0, 0)).
+  // POV-Ray's uv_mapping: the point carried into pattern space is POV-Ray's (u, v, 0) of
+  // the shape (Shape::povUV; on a shape without, the world point's x and y) instead of the
+  // object point.
   bool uv = false;
 };
 

@@ -71,6 +71,10 @@ struct ImageMapping {
   // coordinates, w anything that keeps the map invertible.
   Mat4 uvFromObject{1.0};
   Vec3 center{0.0};  // spherical: the sphere's centre
+  // POV-Ray's uv_mapping reads u the other way here (1 - u): it takes the angle about y in
+  // its left-handed space, Lucent's mapped (u, v) in the importer's (z negated), so the
+  // export writes uv-mapped placements through that mirror (sphere, torus, lathe, sor).
+  bool uvMirrored = false;
 };
 // A face that takes its own copy of an image (a box's six faces): a POV-Ray plane, inside
 // towards the shape, with the face's mapping.

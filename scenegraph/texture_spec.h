@@ -162,8 +162,8 @@ inline bool textureSeeThrough(const Texture& t) {
   return false;
 }
 
-// The texture, or one nested in it, is an image (which a map or a list cannot hold: its
-// pixels are loaded per material).
+// The texture, or one nested in it, is an image (whose pixels a material loads: a sky or a
+// pigment function, evaluated away from any material, cannot hold one).
 inline bool textureHoldsImage(const Texture& t);
 inline bool entriesHoldImage(const std::vector<TextureMapEntry>& entries) {
   for (const TextureMapEntry& e : entries)

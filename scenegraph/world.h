@@ -25,7 +25,9 @@ class WorldHit {
   const WorldLeaf& leaf() const { return leaves_[hit.tag]; }
   double t() const { return hit.t; }
   // The geometry at the hit, for the ray it was found with.
-  SurfaceInfo surface(const Ray& ray) const { return leaf().instance->surface(ray, hit); }
+  SurfaceInfo surface(const Ray& ray) const {
+    return leaf().instance->surface(ray, hit, leaf().uvMapped);
+  }
 
  private:
   friend class World;

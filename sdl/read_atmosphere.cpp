@@ -74,9 +74,10 @@ PovSkySphere SceneReader::readSkySphereBlock(const SourceLoc& loc, TokenStream& 
     if (readTransform(t, in, sky.transform)) continue;
     if (isWord(t, "pigment")) {
       // POV-Ray's sky pigments start from its plain black pigment, not the #default.
+      const SourceLoc at = in.peek().loc();
       sky.pigments.push_back(readPigment(in, PovPigment{}));
-      if (const auto* image = std::get_if<ImageTexture>(&sky.pigments.back().pattern))
-        keepError(in, image->loc,
+      if (textureHoldsImage(sky.pigments.back().pattern))
+        keepError(in, at,
                   "'image_map' in a sky_sphere is not supported by Lucent (a sky's pigments are "
                   "patterns; an image is read on a shape)");
       continue;

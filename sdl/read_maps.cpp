@@ -6,6 +6,8 @@
 #include "read_support.h"
 #include "scene_reader.h"
 
+#include "scenegraph/images_in_maps.h"
+
 namespace lucent::sdl {
 
 namespace {
@@ -61,7 +63,10 @@ double entryValue(TokenStream& in, bool average) {
 // pigment_pattern's `{ PIGMENT_BODY }`: the pigment as a map's entry, placed in the
 // pattern's space by its own transforms.
 std::shared_ptr<const TextureMapEntry> SceneReader::readPatternPigment(TokenStream& in) {
-  return std::make_shared<const TextureMapEntry>(entryOf(readPigment(in, defaults_.pigment), 0.0));
+  auto entry =
+      std::make_shared<const TextureMapEntry>(entryOf(readPigment(in, defaults_.pigment), 0.0));
+  refuseNestedImage(*entry, in);
+  return entry;
 }
 
 // `pigment_map { [value PIGMENT_BODY] ... }`, the '{' next, or `pigment_map { M }`; in an
@@ -88,7 +93,6 @@ std::vector<TextureMapEntry> SceneReader::readPigmentMap(TokenStream& in, const 
     if (!t.is("[")) in.error(t, "'[' or '}' expected in a pigment map, not " + t.describe());
     const double value = entryValue(in, average);
     entries.push_back(entryOf(readPigmentBody(in, defaults_.pigment, true), value));
-    refuseNestedImage(entries.back(), in);
   }
   if (entries.empty()) in.error(at, "a pigment map needs at least one entry");
   for (size_t i = 1; i < entries.size() && !average; ++i)
@@ -138,22 +142,28 @@ bool SceneReader::readPigmentMapKeyword(const Token& t, TokenStream& in, PovPigm
   return true;
 }
 
-// A block pattern's `pigment {..} [,] pigment {..}` list (the first 'pigment' next).
-// Lucent loads an image's pixels per material, not per entry of a map or a list.
+// A pigment_pattern's pigment holding an image: its grey level is taken wherever the
+// pattern is evaluated (normals, functions), where no image's pixels are at hand.
 void SceneReader::refuseNestedImage(const TextureMapEntry& e, TokenStream& in) {
-  if (const auto* image = std::get_if<ImageTexture>(&e.texture))
-    keepError(in, image->loc,
-              "'image_map' inside a map or a list of pigments is not supported by Lucent (an "
-              "image's pixels are loaded per material; give the object the image_map itself)");
+  if (!textureHoldsImage(e.texture)) return;
+  const auto* image = std::get_if<ImageTexture>(&e.texture);
+  std::optional<SourceLoc> at;
+  if (image) at = image->loc;
+  forEachImageInMaps(e.texture, [&](const ImageTexture& i) {
+    if (!at) at = i.loc;
+  });
+  keepError(in, *at,
+            "'image_map' in a pigment_pattern is not supported by Lucent (its grey level is "
+            "taken without the image's pixels)");
 }
 
+// A block pattern's `pigment {..} [,] pigment {..}` list (the first 'pigment' next).
 bool SceneReader::readBlockPigments(TokenStream& in, PovPigment& p, size_t count) {
   std::vector<TextureMapEntry> list;
   const SourceLoc at = in.peek().loc();
   while (list.size() < count && isWord(in.peek(), "pigment")) {
     in.next();
     list.push_back(entryOf(readPigment(in, defaults_.pigment), 0.0));
-    refuseNestedImage(list.back(), in);
     in.allow(",");
   }
   if (list.size() < count) {

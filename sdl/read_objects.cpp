@@ -139,13 +139,15 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
   if (t.kind != TokenKind::Keyword) return false;
   const std::string_view w = t.text();
   // What is written now follows only the transforms written after it: carried back by
-  // the inverse of the object's transforms so far (PovObject::texture).
-  const PovTransform backToObject = o.transform.inverse();
+  // the inverse of the object's transforms so far (PovObject::texture). After the object's
+  // uv_mapping its textures lie in (u, v) space, where its transforms do not reach.
+  const PovTransform backToObject = o.uvMapping ? PovTransform{} : o.transform.inverse();
   if (w == "pigment" || w == "normal" || w == "finish" || w == "texture") {
     if (w == "texture" && o.texture) {
       // A texture { } on an object that has one (from any block) is a layer over it.
       PovTexture top = readTexture(in, defaultTexture());
       top.transform(backToObject);
+      if (o.uvMapping) mapAtUv(top, t.loc(), in);
       o.texture = layerOver(std::move(o.texture.edit()), std::move(top), t.loc(), in);
       return true;
     }
@@ -157,7 +159,7 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
     // A block continues the object's own pigment, normal or finish, as POV-Ray's does
     // (the default texture's when the object had none): moved back to the object's
     // current space to be read on, then carried back again.
-    const PovTransform here = o.transform;
+    const PovTransform here = o.uvMapping ? PovTransform{} : o.transform;
     if (w != "texture") o.texture.edit().name.clear();  // a declared texture, changed
     if (w == "pigment") {
       PovPigment start = o.texture->pigment;
@@ -178,6 +180,12 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
       o.texture.edit().transform(backToObject);
       o.textureLoc = t.loc();
     }
+    if (o.uvMapping) mapAtUv(o.texture.edit(), t.loc(), in);
+  } else if (w == "uv_mapping") {
+    // POV-Ray's object flag: the textures given to the object after it are read at the
+    // shape's (u, v, 0), placed by their own transforms (the object's leave them).
+    if (o.texture) in.error(t, "uv_mapping must be specified before texture (POV-Ray's error)");
+    o.uvMapping = true;
   } else if (w == "interior") {
     o.interior = readInterior(in, o.interior ? *o.interior : PovInterior{});
   } else if (w == "material") {

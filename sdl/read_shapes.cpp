@@ -613,10 +613,20 @@ void SceneReader::readBicubicPatch(PovObject& o, TokenStream& in) {
       else if (allowWord(in, "v_steps")) s.vSteps = steps("v_steps");
       else if (allowWord(in, "accuracy")) in.parseFloat();
       else if (isWord(in.peek(), "uv_vectors")) {
-        refuseShape(o, in.peek().loc(), in,
-                    "'uv_vectors' of a bicubic_patch is not supported by Lucent (its (u, v) are "
-                    "the patch's own)");
-        return;
+        // POV-Ray's default corners are the patch's own (u, v): only those are read.
+        const Token k = in.next();
+        static const Vec2 kOwn[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        bool own = true;
+        for (int c = 0; c < 4; ++c) {
+          if (c > 0) in.allow(",");
+          own = parseUv(in) == kOwn[c] && own;
+        }
+        if (!own) {
+          refuseShape(o, k.loc(), in,
+                      "'uv_vectors' of a bicubic_patch other than <0,0> <1,0> <1,1> <0,1> are "
+                      "not supported by Lucent (its (u, v) are the patch's own)");
+          return;
+        }
       } else break;
     }
   }

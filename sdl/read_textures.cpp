@@ -295,16 +295,22 @@ void SceneReader::readUvTexture(const Token& t, TokenStream& in, PovTexture& tex
               "a uv-mapped texture cannot be layered (POV-Ray: \"Cannot layer over a "
               "patterned texture\")");
   tex = readTextureBody(in, defaultTexture(), closing);
+  mapAtUv(tex, t.loc(), in);
+}
+
+// A texture read at (u, v, 0): its map's pattern (with the entries) or its pigment, placed by
+// the transforms it holds; a pigment uv-mapped itself keeps its own (the later ones are its
+// outer's, which its uv_mapping ignores).
+void SceneReader::mapAtUv(PovTexture& tex, const SourceLoc& at, TokenStream& in) {
   if (tex.mapped()) {
     tex.mapPattern.uv = true;
     tex.mapPattern.uvTransform = tex.mapPattern.transform;
     return;
   }
-  // A pigment uv-mapped itself keeps its own transforms (the later ones are its outer's).
   if (!tex.pigment.uv) tex.pigment.uvTransform = tex.pigment.transform;
   tex.pigment.uv = true;
   if (tex.normal)
-    keepError(in, t.loc(),
+    keepError(in, at,
               "a normal in a uv-mapped texture is not supported by Lucent (POV-Ray bends the "
               "world's normal by the slope in (u, v) space, Lucent bends it in the object's)");
 }

@@ -32,8 +32,8 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"projected_through", "lights projected through objects"},
       {"texture_map", "maps of textures; Lucent has one texture layer per material"},
       {"uv_mapping",
-       "uv_mapping of normals and objects; Lucent reads a uv-mapped pigment or texture at a "
-       "mesh's (u,v)"},
+       "uv_mapping of normals; Lucent reads a uv-mapped pigment, texture or object at "
+       "POV-Ray's (u,v)"},
   };
   return features;
 }
@@ -512,7 +512,6 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   // this object's transforms lead to.
   const Mat4 textureFromNode =
       o.texture ? Mat4(1.0) : inherited.textureFromParent * o.transform.povMatrix();
-  if (o.shape && here.texture->uvMapped()) checkUvShape(o, in);
   const bool placed = here.texture->patterned();
   const bool moved = placed && o.shape && textureFromNode != inherited.materialTextureFromNode;
   // A top-level object and one with its own texture or interior get a material, and a
@@ -568,16 +567,6 @@ void SceneReader::addInteriorMaterial(const PovObject& o, Inherited& here,
       addMaterial(*here.interiorTexture, *here.interior, here.hollow, textureFromNode, at, in);
   here.interiorMaterial = n.interiorMaterial;
   here.interiorTextureFromNode = textureFromNode;
-}
-
-// uv_mapping reads a pattern at the shape's (u, v): only a mesh's (its uv_vectors, (0, 0)
-// without them) are POV-Ray's in Lucent; the other shapes' differ or are missing.
-void SceneReader::checkUvShape(const PovObject& o, TokenStream& in) {
-  if (std::holds_alternative<MeshSpec>(*o.shape)) return;
-  keepError(in, o.loc,
-            "'uv_mapping' on a " + o.keyword +
-                " is not supported by Lucent (its (u, v) differ from POV-Ray's; only a mesh's "
-                "uv_vectors are read as POV-Ray reads them)");
 }
 
 // An object linked to the frame whose bounds POV-Ray drops keeps their box as its own when

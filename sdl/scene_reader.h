@@ -127,6 +127,8 @@ struct PovObject {
   bool noReflection = false;  // no_reflection [on|off]
   bool doubleIlluminate = false;
   bool inverse = false;
+  // The object's `uv_mapping`: the textures given to it after it are read at (u, v, 0).
+  bool uvMapping = false;
   // `hollow [on|off]` when written; unwritten, the object takes its CSG parent's (POV-Ray
   // sets the flag of the operands that did not set theirs), else not hollow.
   std::optional<bool> hollow;
@@ -304,7 +306,6 @@ class SceneReader : public ItemReader {
   // The same inside a block: its error kept, and the block skipped to its closing brace.
   void unreadInBlock(const Token& t, TokenStream& in);
   void keepError(TokenStream& in, const SourceLoc& at, const std::string& message);
-  void checkUvShape(const PovObject& o, TokenStream& in);
   // What Lucent cannot render, said at `at`: an error (kept with the include and macro
   // chain that led `here`, or plainly; inside a declaration kept by the item until it is
   // used), or with --skip-unsupported counted by kind and left out.
@@ -385,6 +386,7 @@ class SceneReader : public ItemReader {
                          const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in,
                          bool uv = false);
   void readUvTexture(const Token& t, TokenStream& in, PovTexture& tex, std::string_view closing);
+  void mapAtUv(PovTexture& tex, const SourceLoc& at, TokenStream& in);
   void readTiles(const Token& t, TokenStream& in, PovTexture& tex);
   PovInterior readInterior(TokenStream& in, const PovInterior& start);
   PovMaterial readMaterial(TokenStream& in);

@@ -81,6 +81,12 @@ ShapeEntry<LatheSpec> shapeEntry<LatheSpec>() {
   e.notSolid = [](const LatheSpec& s) {
     return s.open ? std::string("it is open") : std::string();
   };
+  // No image mapping; POV-Ray's uv_mapping reads u the other way (ImageMapping::uvMirrored).
+  e.povImageMapping = [](const LatheSpec&) {
+    ImageMapping m;
+    m.uvMirrored = true;
+    return m;
+  };
   e.samples = [] {
     using V = std::vector<Vec2>;
     return std::vector<std::pair<std::string, LatheSpec>>{

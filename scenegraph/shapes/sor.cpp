@@ -106,6 +106,12 @@ ShapeEntry<SorSpec> shapeEntry<SorSpec>() {
                   .doc("Without the discs at the bottom and the top (then not a solid).")};
   e.finish = readSor;
   e.notSolid = [](const SorSpec& s) { return s.open ? std::string("it is open") : std::string(); };
+  // No image mapping; POV-Ray's uv_mapping reads u the other way (ImageMapping::uvMirrored).
+  e.povImageMapping = [](const SorSpec&) {
+    ImageMapping m;
+    m.uvMirrored = true;
+    return m;
+  };
   e.samples = [] {
     using V = std::vector<Vec2>;
     return std::vector<std::pair<std::string, SorSpec>>{

@@ -24,6 +24,7 @@ ShapeEntry<SphereSpec> shapeEntry<SphereSpec>() {
     ImageMapping m;
     m.kind = ImageMapping::Spherical;
     m.center = s.center;
+    m.uvMirrored = true;
     return m;
   };
   e.samples = [] {

@@ -22,6 +22,12 @@ ShapeEntry<TorusSpec> shapeEntry<TorusSpec>() {
       numberField("major", &TorusSpec::major, NumberRule::positive())
           .doc("Radius of the ring's centre line, around the y axis."),
       numberField("minor", &TorusSpec::minor, NumberRule::positive()).doc("Radius of the tube.")};
+  // No image mapping; POV-Ray's uv_mapping reads u the other way (ImageMapping::uvMirrored).
+  e.povImageMapping = [](const TorusSpec&) {
+    ImageMapping m;
+    m.uvMirrored = true;
+    return m;
+  };
   e.samples = [] {
     return std::vector<std::pair<std::string, TorusSpec>>{{"torus", {1.0, 0.25}},
                                                           {"thin torus", {2.0, 0.01}},

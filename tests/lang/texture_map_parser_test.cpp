@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+
 using namespace lucent;
 using namespace lucent::test;
 
@@ -107,6 +109,6 @@ TEST_CASE("pigment maps: bad entries are errors at the element or attribute",
         "texture's own colours have them)\n"
         "maps.xml:3:27: error: <pigment-list> of <checker> needs 2 entries, got 1\n"
         "maps.xml:4:27: error: <entry> needs a 'weight' (a positive number)\n"
-        "maps.xml:5:66: error: <image> cannot be inside a map or a list of pigments (an image's "
-        "pixels are loaded per material); give the material the image itself\n");
+        "maps.xml:5:78: error: <image> attribute 'src': file 'x.png' not found (looked for '" +
+            (std::filesystem::current_path() / "x.png").string() + "')\n");
 }

@@ -100,3 +100,41 @@ TEST_CASE("an image on a shape without a POV-Ray mapping is an error naming the 
         "mapping equal to Lucent's (u,v) for it (plane, disc, box, sphere and "
         "meshes with uvs can be exported)\n");
 }
+
+TEST_CASE(
+    "an image entry of a pigment map or a pigment list is an image_map body placed by its "
+    "own transforms",
+    "[povray][image][pigment-map]") {
+  auto exported = [](const std::string& body, std::string& messages) {
+    ParseResult parsed =
+        parseSceneString("<scene version=\"1\"><camera position=\"0 1 5\"/>" + body + "</scene>",
+                         std::string(lucentSourceDir()) + "/examples/image-test.xml");
+    for (const Diagnostic& d : parsed.diagnostics.all()) UNSCOPED_INFO(d.str());
+    REQUIRE(parsed.scene);
+    PovExport e = exportPov(*parsed.scene);
+    for (const PovIssue& i : e.issues) messages += i.message + "\n";
+    return e;
+  };
+  std::string messages;
+  PovExport e = exported(R"XML(<sphere><material diffuse="1"><pattern type="gradient"
+    axis="1 0 0"><pigment-map><entry at="0"><image src="textures/uvgrid.png"
+    projection="spherical" once="true" interpolate="bicubic" transmit="0.25"
+    transform="scale(2)"/></entry><entry at="1" color="1 0 0"/></pigment-map></pattern>
+    </material></sphere>)XML",
+                         messages);
+  INFO(messages << e.text);
+  REQUIRE(e.ok());
+  const std::string path = std::string(lucentSourceDir()) + "/examples/textures/uvgrid.png";
+  CHECK(has(e, "[0\n      image_map { png \"" + path +
+                   "\" gamma srgb map_type 1 once interpolate 3 transmit all 0.25 }\n"
+                   "      matrix <2, 0, 0,  0, 2, 0,  0, 0, 2,  0, 0, 0>\n      ]"));
+  // POV-Ray cannot tint an image map: a coloured diffuse around one is an error.
+  std::string tinted;
+  PovExport box = exported(R"XML(<box><material diffuse="0.5 1 1"><checker><pigment-list>
+    <entry><image src="textures/uvgrid.png" projection="planar"/></entry><entry color="0"/>
+    </pigment-list></checker></material></box>)XML",
+                           tinted);
+  CHECK_FALSE(box.ok());
+  CHECK(tinted.find("an image map inside a map or a list of pigments of a material with a "
+                    "coloured diffuse, which POV-Ray cannot tint") != std::string::npos);
+}

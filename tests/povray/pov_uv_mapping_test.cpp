@@ -1,5 +1,6 @@
 // mapping="uv" exported as POV-Ray's uv_mapping, first in the pigment, normal or texture
-// block; only meshes with uvs have POV-Ray's (u,v) (an export error elsewhere).
+// block; POV-Ray's (u,v) taken in its left-handed space: mirrored in u on spheres, tori,
+// lathes and sors, and a box written mirrored in z.
 #include "pov_test_support.h"
 
 using namespace lucent;
@@ -34,15 +35,34 @@ TEST_CASE("a uv-mapped pattern, normal and map write uv_mapping first in their b
   CHECK(m.pov.text.find("uv_mapping") == m.pov.text.rfind("uv_mapping"));
 }
 
-TEST_CASE("uv mapping on a shape whose (u,v) POV-Ray does not share is an export error",
+TEST_CASE("uv mapping on a sphere, torus, lathe or sor is written mirrored in u, a box in z",
           "[povray][materials][uv-mapping]") {
-  Exported e =
-      exportScene(R"XML(<sphere><material><checker mapping="uv"/></material></sphere>)XML");
-  CHECK_FALSE(e.pov.ok());
-  CHECK(e.messages() ==
-        "test.xml:3:1: error: <sphere> with the inline material mapped at (u,v): POV-Ray's "
-        "uv_mapping gives this shape other (u,v) than Lucent's (meshes with uvs can be "
-        "exported)\n");
+  // u -> 1 - u first: POV-Ray's placement takes (u, v) to 4·(1 - u, v), the inverse of
+  // x -> 1 - x/4, y -> y/4.
+  for (const char* shape :
+       {"sphere", "torus", "sor points=\"1 0  1 1  1 2  1 3\"", "lathe points=\"1 0  1 1\""}) {
+    Exported e = exportScene("<" + std::string(shape) +
+                             R"XML(><material><checker mapping="uv" transform="scale(0.25)"/>
+        </material></)XML" + std::string(shape).substr(0, std::string(shape).find(' ')) +
+                             ">");
+    INFO(shape << "\n" << e.messages() << e.pov.text);
+    REQUIRE(e.pov.ok());
+    CHECK(e.has("uv_mapping\n      checker"));
+    CHECK(e.has("matrix <-0.25, 0, 0,  0, 0.25, 0,  0, 0, 0.25,  1, 0, 0>"));
+  }
+  Exported box =
+      exportScene(R"XML(<box min="0 1 2" max="3 4 5"><material><checker mapping="uv"/></material>
+      </box>)XML");
+  INFO(box.messages() << box.pov.text);
+  REQUIRE(box.pov.ok());
+  CHECK(
+      box.has("  <0, 1, -5>, <3, 4, -2>\n  matrix <1, 0, 0, 0, 1, 0, 0, 0, -1, 0, 0, 0>\n"
+              "  texture"));
+  // A cylinder's (u,v) are the world's x and y in both: written as they are.
+  Exported cylinder =
+      exportScene(R"XML(<cylinder><material><checker mapping="uv"/></material></cylinder>)XML");
+  REQUIRE(cylinder.pov.ok());
+  CHECK_FALSE(cylinder.has("matrix"));
 
   Exported mixed = exportScene(std::string(kQuad) + R"XML(<material><material-map>
       <pattern type="gradient" mapping="uv"/>

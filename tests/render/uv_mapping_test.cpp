@@ -1,5 +1,5 @@
-// mapping="uv" (POV-Ray's uv_mapping): patterns, normals and material maps read at the
-// shape's (u, v, 0), checked against the documented (u,v) of each shape computed here.
+// mapping="uv" (POV-Ray's uv_mapping): patterns, normals and material maps read at
+// POV-Ray's (u, v, 0) of the shape, checked against POV-Ray's (u,v) computed here.
 #include "scene_builder.h"
 
 #include "lang/parser.h"
@@ -65,22 +65,32 @@ TEST_CASE("uv mapping: a checker on a sphere follows the sphere's longitude and 
   World world(*scene);
   for (const Vec3& dir : {Vec3(0.3, 0.4, 0.866), Vec3(-0.7, -0.2, 0.5), Vec3(0.1, 0.9, -0.4)}) {
     const Vec3 n = glm::normalize(dir);
-    // docs/scene-language.md: u = (atan2(x, z) + π)/2π, v = 1 − θ/π from the +y pole.
-    const double u = (std::atan2(n.x, n.z) + M_PI) / (2.0 * M_PI);
-    const double v = 1.0 - std::acos(n.y) / M_PI;
+    // POV-Ray's sphere in its space (z negated): u the turn from +x towards its +z, v
+    // 0.5 + the latitude over π.
+    const double u = std::atan2(-n.z, n.x) / (2.0 * M_PI);
+    const double v = 0.5 + std::asin(n.y) / M_PI;
     INFO("direction " << n.x << " " << n.y << " " << n.z);
     CHECK(traceOne(world, Ray(3.0 * n, -n)).r == Approx(u - std::floor(u)).margin(1e-5));
     CHECK(traceOne(world, Ray(Vec3(4, 0, 0) + 3.0 * n, -n)).r == Approx(v).margin(1e-5));
   }
 }
 
-TEST_CASE("uv mapping: on a shape without (u,v) the point is the origin", "[render][uv-mapping]") {
-  auto scene = sceneOf(R"XML(<cylinder base="0 -1 0" cap="0 1 0" radius="1">
+TEST_CASE("uv mapping: on a shape without (u,v) the point is the world's x and y",
+          "[render][uv-mapping]") {
+  // POV-Ray's default UVCoord: the intersection point's x and y, in the world.
+  auto scene = sceneOf(R"XML(<cylinder base="0 -1 0" cap="0 1 0" radius="1"
+      transform="translate(0.25 0 0)"><material ambient="1" diffuse="0">
+      <pattern type="gradient" axis="1 0 0" phase="0.3" mapping="uv"/></material></cylinder>
+      <cylinder base="0 -1 0" cap="0 1 0" radius="1" transform="translate(0 0 -5)">
       <material ambient="1" diffuse="0">
-      <pattern type="gradient" axis="1 0 0" phase="0.3" mapping="uv"/></material></cylinder>)XML");
+      <pattern type="gradient" axis="0 1 0" mapping="uv"/></material></cylinder>)XML");
   World world(*scene);
-  CHECK(traceOne(world, Ray(Vec3(0.2, 5, 0.1), Vec3(0, -1, 0))).r == Approx(0.3).margin(1e-6));
-  CHECK(traceOne(world, Ray(Vec3(5, 0.3, 0.4), Vec3(-1, 0, 0))).r == Approx(0.3).margin(1e-6));
+  // The top cap at world x 0.45: 0.45 + 0.3.
+  CHECK(traceOne(world, Ray(Vec3(0.45, 5, 0.1), Vec3(0, -1, 0))).r == Approx(0.75).margin(1e-6));
+  // The side at world x 0.25 + 1 (z 0): 1.25 + 0.3 wraps to 0.55.
+  CHECK(traceOne(world, Ray(Vec3(5, 0.3, 0), Vec3(-1, 0, 0))).r == Approx(0.55).margin(1e-6));
+  // The second cylinder's side at world y 0.4.
+  CHECK(traceOne(world, Ray(Vec3(5, 0.4, -5), Vec3(-1, 0, 0))).r == Approx(0.4).margin(1e-6));
 }
 
 TEST_CASE("uv mapping: a normal bent at (u, v, 0) equals the object mapping where they agree",

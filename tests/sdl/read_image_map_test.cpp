@@ -87,9 +87,12 @@ TEST_CASE("scene reader image_map: what POV-Ray refuses and what Lucent does not
       errorsOf(
           R"(sphere { 0, 1 pigment { image_map { png "scenes/image_maps.png" filter 2, 0.5 } } })"),
       "a palette entry's own filter"));
-  CHECK(anyContains(errorsOf(R"(sphere { 0, 1 pigment { gradient y pigment_map {
+  CHECK(anyContains(errorsOf(R"(sphere { 0, 1 pigment { pigment_pattern {
+  gradient y pigment_map { [0 image_map { png "scenes/image_maps.png" }] [1 rgb 1] } } } })"),
+                    "'image_map' in a pigment_pattern is not supported"));
+  CHECK(anyContains(errorsOf(R"(sky_sphere { pigment { gradient y pigment_map {
   [0 image_map { png "scenes/image_maps.png" }] [1 rgb 1] } } })"),
-                    "'image_map' inside a map or a list of pigments is not supported"));
+                    "'image_map' in a sky_sphere is not supported by Lucent"));
   CHECK(anyContains(
       errorsOf(
           R"(sky_sphere { pigment { image_map { png "scenes/image_maps.png" map_type 1 } } })"),
@@ -256,4 +259,34 @@ TEST_CASE(
     REQUIRE(errors.size() >= 1);
     CHECK(errors[0].rfind(want, 0) == 0);
   }
+}
+
+TEST_CASE("scene reader image_map: an entry of a pigment map or of a block pattern's list",
+          "[sdl][scene][texture][image-map][pigment-map]") {
+  auto r = readScene(R"(
+sphere { 0, 1 pigment { gradient y pigment_map {
+  [0.2 image_map { png "scenes/image_maps.png" map_type 1 once interpolate 2 transmit all 0.5 }
+       scale 2]
+  [0.8 rgb 1] } } }
+sphere { 0, 1 pigment { checker pigment { image_map { png "scenes/image_maps.png" } }
+  pigment { rgb <1, 0, 0> } } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  REQUIRE(s.root->children.size() == 2);
+  const Material& mapped = s.materials.at(*s.root->children[0]->material);
+  const auto& pattern = std::get<PatternTexture>(mapped.texture);
+  REQUIRE(pattern.pigments.size() == 2);
+  const auto& image = std::get<ImageTexture>(pattern.pigments[0].texture);
+  CHECK(image.projection == ImageProjection::spherical);
+  CHECK(image.once);
+  CHECK(image.interpolation == ImageInterpolation::bilinear);
+  CHECK(image.all.transmit == 0.5f);
+  // Its own scale 2, from the map's space (POV-Ray's z negated on neither side: the entry's
+  // placement is taken from the map's pattern space).
+  CHECK(image.placement.patternFromObject[0][0] == Approx(0.5));
+  const Material& listed = s.materials.at(*s.root->children[1]->material);
+  const auto& checker = std::get<CheckerTexture>(listed.texture);
+  REQUIRE(checker.pigments.size() == 2);
+  CHECK(std::get<ImageTexture>(checker.pigments[0].texture).projection == ImageProjection::planar);
 }

@@ -77,26 +77,26 @@ TEST_CASE("scene reader uv_mapping: a uv-mapped texture_map maps its entries too
   checkMat(bozo.pattern.placement.patternFromObject, glm::scale(Mat4(1.0), Vec3(5.0)));
 }
 
-TEST_CASE("scene reader uv_mapping: shapes other than meshes, normals and entries are refused",
+TEST_CASE("scene reader uv_mapping: normals and entries are refused, every shape is read",
           "[sdl][scene][texture][uv-mapping][errors]") {
   const auto errors = errorsOf(
       "sphere { 0, 1 pigment { uv_mapping checker } }\n"
       "sphere { 0, 1 normal { uv_mapping bumps 0.5 } }\n"
       "sphere { 0, 1 pigment { gradient x pigment_map { [0 uv_mapping checker] [1 rgb 1] } } }\n"
-      "sphere { 0, 1 pigment { checker uv_mapping } }\n");
+      "sphere { 0, 1 pigment { checker uv_mapping } }\n"
+      "box { 0, 1 pigment { uv_mapping checker } }\n"
+      "torus { 1, 0.25 pigment { uv_mapping checker } }\n"
+      "cylinder { 0, y, 1 pigment { uv_mapping checker } }\n");
   // The refused normal is then one without a pattern (POV-Ray's 'No normal type given').
-  REQUIRE(errors.size() == 5);
-  CHECK(errors[0] ==
-        "test.pov:1:1: error: 'uv_mapping' on a sphere is not supported by Lucent (its (u, v) "
-        "differ from POV-Ray's; only a mesh's uv_vectors are read as POV-Ray reads them)");
-  CHECK(errors[1].rfind("test.pov:2:24: error: 'uv_mapping' is not supported by Lucent "
-                        "(uv_mapping of normals and objects",
+  REQUIRE(errors.size() == 4);
+  CHECK(errors[0].rfind("test.pov:2:24: error: 'uv_mapping' is not supported by Lucent "
+                        "(uv_mapping of normals;",
                         0) == 0);
-  CHECK(errors[2] ==
+  CHECK(errors[1] ==
         "test.pov:2:15: error: a normal without a pattern (POV-Ray: 'No normal type given')");
-  CHECK(errors[3].rfind("test.pov:3:53: error: 'uv_mapping' inside a map or a list of pigments "
+  CHECK(errors[2].rfind("test.pov:3:53: error: 'uv_mapping' inside a map or a list of pigments "
                         "is not supported by Lucent",
                         0) == 0);
-  CHECK(errors[4] ==
+  CHECK(errors[3] ==
         "test.pov:4:33: error: 'uv_mapping' must come first in a pigment, as POV-Ray reads it");
 }

@@ -167,6 +167,18 @@ TEST_CASE("scene reader image: uv_mapping of pigments, textures and texture maps
   requireSameImageAsPovray("uv_mapping.pov", 160, 120);
 }
 
+TEST_CASE(
+    "scene reader image: uv_mapping on spheres, boxes, tori, lathes, sors, patches and "
+    "shapes without (u,v)",
+    "[sdl][scene][image][povray][texture][uv-mapping]") {
+  requireSameImageAsPovrayInPlace("uv_mapping_shapes.pov", 240, 180);
+}
+
+TEST_CASE("scene reader image: image maps as entries of pigment maps and block patterns' lists",
+          "[sdl][scene][image][povray][texture][image-map][pigment-map]") {
+  requireSameImageAsPovrayInPlace("image_maps_in_maps.pov", 240, 180);
+}
+
 TEST_CASE("scene reader image: tiles, a checker of layered textures",
           "[sdl][scene][image][povray][texture][tiles]") {
   requireSameImageAsPovray("tiles.pov", 160, 120);

@@ -659,9 +659,15 @@ TEST_CASE("scene shapes: bad polygons and bicubic patches", "[sdl][scene][shapes
       "2*x+3*y }");
   REQUIRE(fifteen.size() == 1);
   CHECK(fifteen[0].find("test.pov:1:") == 0);
-  const auto uv = errorsOf("bicubic_patch { type 0 uv_vectors <0,0>,<1,0>,<1,1>,<0,1> 0 }");
+  // POV-Ray's default corners are the patch's own (u, v): read; others refused.
+  const auto own = readScene(
+      "bicubic_patch { type 0 uv_vectors <0,0>,<1,0>,<1,1>,<0,1> 0 x 2*x 3*x y x+y 2*x+y 3*x+y "
+      "2*y x+2*y 2*x+2*y 3*x+2*y 3*y x+3*y 2*x+3*y 3*x+3*y }");
+  CHECK(own->load.scene != nullptr);
+  const auto uv = errorsOf("bicubic_patch { type 0 uv_vectors <0,0> <2,0> <1,1> <0,1> 0 }");
   REQUIRE(uv.size() == 1);
-  CHECK(uv[0].find("test.pov:1:24: error: 'uv_vectors' of a bicubic_patch is not supported") == 0);
+  CHECK(uv[0].find("test.pov:1:24: error: 'uv_vectors' of a bicubic_patch other than <0,0> "
+                   "<1,0> <1,1> <0,1> are not supported") == 0);
 }
 
 TEST_CASE("scene shapes: julia_fractal, its keywords in any order, mirrored in z",

@@ -1,0 +1,2 @@
+camera { location -5*z look_at 0 }
+sphere { 0, 1 pigment { rgb 1 } uv_mapping }
