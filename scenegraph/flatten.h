@@ -37,6 +37,11 @@ struct WorldLeaf {
   const Material* interior = nullptr;
   uint32_t interiorIndex = 0;
   bool doubleIlluminate = false;  // lit from both sides (double-illuminate)
+  // Light groups (scenegraph/light_group.h): the group whose lights light the leaf (0:
+  // none) and whether the global lights do.
+  uint32_t lightGroup = 0;
+  bool globalLights = true;
+  bool litBy(const Light& l) const { return l.group == 0 ? globalLights : l.group == lightGroup; }
 };
 
 // A top-level object: a leaf's Instance, a CSG node of leaves, or either inside out.

@@ -146,6 +146,10 @@ struct Light {
   // cosine of the angle from the axis; cylindrical: of (1 − distance/falloff). 0: no effect.
   double tightness = 0.0;
 
+  // The instance of the <light-group> whose light this is, 0 for a global light
+  // (scenegraph/light_group.h); set when the lights are placed.
+  uint32_t group = 0;
+
   Color radiance() const { return color * static_cast<float>(intensity); }
 };
 
