@@ -20,6 +20,7 @@ struct GroupEntry {
   NodeKind kind;
 };
 const std::vector<GroupEntry> kGroups{{"group", NodeKind::Group},
+                                      {"light-group", NodeKind::Group},
                                       {"union", NodeKind::Union},
                                       {"merge", NodeKind::Merge},
                                       {"intersection", NodeKind::Intersection},
@@ -139,6 +140,7 @@ const std::vector<std::string_view>& nodeAttributes(std::string_view element) {
                                         "shadows", "image",     "reflection", "double-illuminate",
                                         "inverse"};
   if (element == "use") allowed.push_back("ref");
+  if (element == "light-group") allowed.push_back("global-lights");
   for (auto a : shapeAttributes(element)) allowed.push_back(a);
   // The key must outlive the call: the registry's and this file's names are static.
   std::string_view key = element;
@@ -215,6 +217,10 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
   node->reflection = r.boolean("reflection", true);
   node->doubleIlluminate = r.boolean("double-illuminate", false);
   node->inverse = r.boolean("inverse", false);
+  if (name == "light-group") {
+    node->lightGroup = true;
+    node->globalLights = r.boolean("global-lights", false);
+  }
 
   // Children: geometry (groups and CSG only), at most one inline <material>, one <clip>
   // and one <bound>.

@@ -402,6 +402,9 @@ class SceneWriter {
     } else if (n.kind == NodeKind::Light) {
       element = "light";
       for (auto& kv : lightAttributesOf(*n.light)) a.push_back(kv);
+    } else if (n.lightGroup) {
+      element = "light-group";
+      if (n.globalLights) a.emplace_back("global-lights", "true");
     } else {
       element = nodeKindName(n.kind);
     }

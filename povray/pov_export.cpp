@@ -144,7 +144,9 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   }
 
   const bool anySpecular = materials.anySpecular(geometry.usedMaterials());
-  for (const Light& light : scene.lights) writeLight(light, anySpecular, out, issues);
+  // A light group's lights are written inside its light_group (povray/pov_geometry.cpp).
+  for (const Light& light : scene.lights)
+    if (light.group == 0) writeLight(light, anySpecular, out, issues);
   if (!scene.lights.empty()) out.blank();
   // The object patterns' objects before the materials that name them, and the meshes
   // they may hold before them (a mesh declaration holds no texture).

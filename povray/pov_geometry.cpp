@@ -1,7 +1,9 @@
 #include "pov_geometry.h"
 #include "pov_coincident.h"
 #include "pov_function.h"
+#include "pov_lights.h"
 #include "pov_patterns.h"
+#include "scenegraph/light_placement.h"
 #include "scenegraph/shape_registry.h"
 
 #include "pov_smooth_normals.h"
@@ -151,8 +153,38 @@ int PovGeometry::operandCount(const Node& node) const {
   }
 }
 
+void PovGeometry::writeLightGroup(const Node& node, const Mat4& fromContext, uint32_t inherited,
+                                  bool topLevel, PovWriter& out) {
+  if (inWrittenSolid_)
+    issues_.error(node.loc,
+                  "a <light-group> inside a merge, intersection or difference cannot be written: "
+                  "POV-Ray's light_group is one operand there, Lucent's group its children");
+  const Mat4 m = fromContext * node.parentFromNode;
+  // The highlights of a shadowless light matter if any material has one.
+  const bool anySpecular = materials_.anySpecular(std::vector<bool>(scene_.materials.size(), true));
+  out.open("light_group", "<light-group> " + node.loc.str());
+  // Its own lights, placed in the world as the top-level ones (those deeper are global and
+  // written with them).
+  for (const auto& c : node.children) {
+    if (!c->isLight()) continue;
+    const Node& lightNode = c->kind == NodeKind::Use ? *c->target : *c;
+    const Mat4 world = c->kind == NodeKind::Use ? m * c->parentFromNode * lightNode.parentFromNode
+                                                : m * c->parentFromNode;
+    writeLight(placedLight(*lightNode.light, world), anySpecular, out, issues_);
+  }
+  const Node* outer = lightGroupWritten_;
+  lightGroupWritten_ = &node;
+  writeNode(node, fromContext, inherited, topLevel, out);
+  lightGroupWritten_ = outer;
+  out.line(node.globalLights ? "global_lights on" : "global_lights off");
+  out.close();
+}
+
 void PovGeometry::writeNode(const Node& node, const Mat4& fromContext, uint32_t inherited,
                             bool topLevel, PovWriter& out) {
+  // In a clip, a bound or an object pattern's object nothing is lit: a plain group.
+  if (node.lightGroup && lightGroupWritten_ != &node && !inClipOrBound_)
+    return writeLightGroup(node, fromContext, inherited, topLevel, out);
   const Mat4 m = fromContext * node.parentFromNode;
   const uint32_t material = node.material.value_or(inherited);
   if (!node.bound.empty() && boundWritten_ != &node) {

@@ -50,6 +50,10 @@ class PovGeometry {
  private:
   void writeNode(const Node& node, const Mat4& fromContext, uint32_t inherited, bool topLevel,
                  PovWriter& out);
+  // POV-Ray's light_group of a <light-group>: its own lights, then the node written as a
+  // group, then global_lights.
+  void writeLightGroup(const Node& node, const Mat4& fromContext, uint32_t inherited, bool topLevel,
+                       PovWriter& out);
   void writeLeaf(const Node& node, const Mat4& m, uint32_t material, bool topLevel, PovWriter& out);
   void writeShapeHead(const Node& node, const Mat4& m, uint32_t material, bool topLevel,
                       bool& inverse, PovWriter& out);
@@ -97,6 +101,7 @@ class PovGeometry {
   // so that a group or <use> of one operand passes it down; two inverses cancel.
   bool pendingInverse_ = false;
   const Node* boundWritten_ = nullptr;
+  const Node* lightGroupWritten_ = nullptr;  // the light group whose body is being written
   bool inClipOrBound_ = false;  // writing a clip's or bound's solids: no textures  // the node
                                 // whose bounded_by union is being written
   // Takes the pending inverse for the object being opened.

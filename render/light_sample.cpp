@@ -114,14 +114,16 @@ AreaAxes areaAxes(const Light& light, const Vec3& p) {
   const double distance = glm::length(toCentre);
   if (light.type != LightType::Area || !light.orient || !(distance > 0.0))
     return {light.u, light.v};
-  const Vec3 d = toCentre / distance;
+  // Left-handed: the cross products of POV-Ray's space, z negated there and back.
+  const Vec3 flip = light.handedness == Handedness::Left ? Vec3(1.0, 1.0, -1.0) : Vec3(1.0);
+  const Vec3 d = toCentre / distance * flip;
   // Near ±z, d × z is too short to trust: POV-Ray crosses with y instead.
   const Vec3 reference =
       std::abs(std::abs(d.z) - 1.0) < 0.01 ? Vec3(0.0, 1.0, 0.0) : Vec3(0.0, 0.0, 1.0);
   const double side = glm::length(light.u);
   const Vec3 u = glm::normalize(glm::cross(d, reference));
   const Vec3 v = glm::normalize(glm::cross(d, u));
-  return {u * side, v * side};
+  return {u * side * flip, v * side * flip};
 }
 
 Vec2 areaGridCoordinates(double a, double b, int nu, int nv, bool circular) {

@@ -49,7 +49,10 @@ inline int shadowSampleCount(const Light& light) {
 // r = (0, 1, 0) when | |d.z| − 1 | < 0.01, else (0, 0, 1):
 //   u' = |u|·normalize(d × r),  v' = |u|·normalize(d × u'),
 // a square of side |u| across d (the numbers as written, in Lucent's space; at the centre
-// itself the light's own axes).
+// itself the light's own axes). With handedness="left" the same is done in POV-Ray's space,
+// Lucent's with z negated (F = diag(1, 1, −1)): d is F·d, and the axes found are carried
+// back by F, so u' = −|u|·normalize(d × F·r) and v' = −|u|·normalize(d × u'): for an
+// imported scene, the disc POV-Ray turns.
 struct AreaAxes {
   Vec3 u;
   Vec3 v;

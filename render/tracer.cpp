@@ -459,7 +459,7 @@ Color Tracer::localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3
   local += ambient;
   if (!lights_.empty() && (anyPositive(kd) || m.hasHighlight())) {
     const Color metal = m.metallic ? metallicBase(m, texture) : kd;
-    local += directLight(s, n, v, kd, metal, m, leaf.doubleIlluminate, media, seed, context);
+    local += directLight(s, n, v, kd, metal, m, leaf, media, seed, context);
     ++seed.event;
   }
   return local;
@@ -521,11 +521,13 @@ Color Tracer::withBranches(Color result, const SurfaceInfo& s, const Vec3& mirro
 }
 
 Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
-                          const Color& metal, const Material& m, bool doubleIlluminate,
+                          const Color& metal, const Material& m, const WorldLeaf& leaf,
                           const MediaStack& media, PathSeed& seed, TraceContext& context) const {
   Color sum(0.0f);
+  const bool doubleIlluminate = leaf.doubleIlluminate;
   for (size_t i = 0; i < lights_.size(); ++i) {
     const Light& light = lights_[i];
+    if (!leaf.litBy(light)) continue;
     const LightIncidence in = lightIncidence(light, s.p);
     if (!anyPositive(in.radiance)) continue;
     // A light behind: no diffuse, no highlight, unless the surface is lit from both sides.

@@ -165,9 +165,10 @@ class Tracer {
                      const MediaStack& media, const MediaStack& beyond, PathSeed& seed,
                      TraceContext& context) const;
   // Σ over lights of A_shadow·A_dist·I_L·[k_d (N·L) + k_s (N·H)^n_s].
-  // `doubleIlluminate`: lights behind the surface count too (double-illuminate).
+  // The lights that light `leaf` (its light group's, scenegraph/light_group.h); with its
+  // double-illuminate, lights behind the surface count too.
   Color directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, const Color& kd,
-                    const Color& metal, const Material& m, bool doubleIlluminate,
+                    const Color& metal, const Material& m, const WorldLeaf& leaf,
                     const MediaStack& media, PathSeed& seed, TraceContext& context) const;
   // A_shadow of one light at s: the transmittance averaged over the light's samples
   // (an adaptive area light: the context's AdaptiveAreaSampler's estimate of it), with

@@ -1,5 +1,6 @@
 #include "flatten.h"
 
+#include "light_group.h"
 #include "located_error.h"
 
 #include "csg/bounded.h"
@@ -94,11 +95,12 @@ struct Inherited {
   uint32_t material = 0;
   std::optional<uint32_t> interior;
   bool doubleIlluminate = false;
+  LightGroupScope lights;
 
   Inherited below(const Node& node) const {
     return {node.material.value_or(material),
             node.interiorMaterial ? node.interiorMaterial : interior,
-            doubleIlluminate || node.doubleIlluminate};
+            doubleIlluminate || node.doubleIlluminate, lights};
   }
 };
 
@@ -135,6 +137,8 @@ struct Builder {
   bool share;
   std::unordered_map<const Node*, std::shared_ptr<const Shape>> shapes;
   std::vector<WorldLeaf>& leaves;
+  // The light groups met so far, in placeLights' order (scenegraph/light_group.h).
+  uint32_t lightGroups = 0;
 
   // Adds the node's objects to `out`.
   // `inSolid`: the node is (inside) an operand of a merge, intersection or difference,
@@ -163,6 +167,8 @@ struct Builder {
   std::vector<std::unique_ptr<Shape>> solids(const std::vector<std::unique_ptr<Node>>& nodes,
                                              const Transform& world) {
     std::vector<std::unique_ptr<Shape>> shapes;
+    // Nothing lights a clip's leaves: its groups are not numbered.
+    const uint32_t groupsBefore = lightGroups;
     for (const auto& n : nodes) {
       std::vector<Part> parts;
       add(*n, world, Inherited{}, Seen{}, true, parts);
@@ -170,6 +176,7 @@ struct Builder {
       shapes.push_back(parts.size() == 1 ? std::move(parts.front().shape)
                                          : compose(CsgOp::Union, std::move(parts), Seen{}).shape);
     }
+    lightGroups = groupsBefore;
     return shapes;
   }
 
@@ -220,6 +227,8 @@ struct Builder {
     leaf.doubleIlluminate = inherited.doubleIlluminate;
     leaf.uvMapped =
         usesUvMapping(*leaf.material) || (leaf.interior && usesUvMapping(*leaf.interior));
+    leaf.lightGroup = inherited.lights.group;
+    leaf.globalLights = inherited.lights.globalLights();
     leaves.push_back(leaf);
     // A shadow ray may cross the surface from inside: the interior material's k_t counts.
     const bool transmits = leaf.transmissive || (leaf.interior && leaf.interior->isTransmissive());
@@ -230,7 +239,8 @@ struct Builder {
   void addPlain(const Node& node, const Transform& parentWorld, const Inherited& inherited,
                 const Seen& above, bool inSolid, std::vector<Part>& out) {
     Transform world = nodeWorld(node, parentWorld);
-    const Inherited here = inherited.below(node);
+    Inherited here = inherited.below(node);
+    if (node.lightGroup) here.lights = here.lights.inside(node, ++lightGroups);
     const Seen seen = inSolid ? Seen{} : seenBelow(above, node);
 
     switch (node.kind) {

@@ -40,6 +40,11 @@ struct WorldLeaf {
   // Its material or interior material reads patterns at (u, v) (usesUvMapping): the
   // surface then carries POV-Ray's (u, v) (Instance::surface).
   bool uvMapped = false;
+  // Light groups (scenegraph/light_group.h): the group whose lights light the leaf (0:
+  // none) and whether the global lights do.
+  uint32_t lightGroup = 0;
+  bool globalLights = true;
+  bool litBy(const Light& l) const { return l.group == 0 ? globalLights : l.group == lightGroup; }
 };
 
 // A top-level object: a leaf's Instance, a CSG node of leaves, or either inside out.

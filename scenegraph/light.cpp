@@ -42,6 +42,12 @@ void writePovArea(const Light& l, PovLightOut& out) {
   // The same remap and the same turn as POV-Ray's (render/light_sample.h).
   if (l.circular) out.line("circular");
   if (l.orient) out.line("orient");
+  // POV-Ray takes the cross products in the coordinates written, which are Lucent's.
+  if (l.handedness == Handedness::Left)
+    out.warning(
+        "area light: handedness=\"left\" has no POV-Ray equivalent in the exported "
+        "coordinates (POV-Ray turns the oriented disc as handedness=\"right\"): its grid is "
+        "mirrored, each sample within 0.003 of the axis length of Lucent's");
   if (l.jitter) {
     out.line("jitter");
     out.warning(
@@ -97,6 +103,9 @@ void finishArea(Light& l, AttributeInput& in) {
                  "orient=\"true\" makes the light circular (a disc facing the point, as "
                  "POV-Ray's): remove circular=\"false\"");
   if (l.orient) l.circular = true;
+  if (l.handedness != Handedness::Right && !l.orient)
+    in.attrError("handedness",
+                 "handedness turns an oriented light's disc: it needs orient=\"true\"");
   const double lu = glm::length(l.u), lv = glm::length(l.v);
   if (l.orient && std::abs(lu - lv) > 1e-9 * std::max(lu, lv))
     in.attrError("orient",
@@ -170,6 +179,11 @@ LightReader readNumber(const char* name, double Light::*m, NumberRule rule) {
 }
 LightReader readBoolean(const char* name, bool Light::*m) {
   return [name, m](Light& l, AttributeInput& in) { l.*m = in.boolean(name, l.*m); };
+}
+const std::vector<std::string_view> kHandedness{"right", "left"};
+void readHandedness(Light& l, AttributeInput& in) {
+  l.handedness = static_cast<Handedness>(
+      in.choice("handedness", static_cast<size_t>(l.handedness), kHandedness));
 }
 
 // "a b c" of min(1, 1/(a + b·r + c·r²)): none negative, not all zero.
@@ -357,6 +371,17 @@ const std::vector<LightAttribute>& lightAttributes() {
            "every lit point the disc is turned to face it: its axes become perpendicular to the "
            "direction to the centre, each as long as u. Default false."),
        area, readBoolean("orient", &Light::orient)},
+      {[] {
+         AttributeInfo a = attribute(
+             "handedness", AttrType::Choice, "handedness", "right",
+             "area with orient: the frame of the cross products that turn the disc. right "
+             "(default): Lucent's; left: POV-Ray's left-handed space (Lucent's with z negated, "
+             "as the importer maps it), whose disc is turned the mirrored way, as POV-Ray "
+             "renders an imported scene.");
+         a.choices = kHandedness;
+         return a;
+       }(),
+       area, readHandedness},
       {attribute("adaptive", AttrType::Number, "wholeNumber", "",
                  "area: POV-Ray's adaptive N. Trace the grid's 4 corners and split a rectangle "
                  "of samples into quadrants where its neighbouring corners differ (by more than "

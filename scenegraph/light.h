@@ -26,6 +26,11 @@ namespace lucent {
 // without it does not compile (docs/architecture.md).
 enum class LightType { Point, Directional, Spot, Area, Cylindrical };
 
+// The frame in which an oriented area light's cross products are taken: Lucent's
+// right-handed one, or POV-Ray's left-handed one (Lucent's with z negated, as the
+// importer maps POV-Ray's space), which turns the disc's grid the mirrored way.
+enum class Handedness { Right, Left };
+
 struct Light;
 
 // The exporter's side of writing one light (povray/pov_lights.cpp implements it): a type's
@@ -133,6 +138,8 @@ struct Light {
   // POV-Ray's orient (circular only): the light turned at every lit point to face it, a
   // disc of diameter |u| across the direction to the centre; v's length equals u's.
   bool orient = false;
+  // orient's cross products in this frame (render/light_sample.h has the rule).
+  Handedness handedness = Handedness::Right;
   // POV-Ray's `adaptive N`: trace the grid's corners and subdivide where they differ, with
   // at least N forced levels, combining by recursive quadrant averages. Absent: every grid
   // point is traced and the plain average taken.
@@ -145,6 +152,10 @@ struct Light {
   // POV-Ray's tightness. Spot (and a spot-shaped area light): the exponent of cos θ, the
   // cosine of the angle from the axis; cylindrical: of (1 − distance/falloff). 0: no effect.
   double tightness = 0.0;
+
+  // The instance of the <light-group> whose light this is, 0 for a global light
+  // (scenegraph/light_group.h); set when the lights are placed.
+  uint32_t group = 0;
 
   Color radiance() const { return color * static_cast<float>(intensity); }
 };

@@ -1,5 +1,6 @@
 #include "light_placement.h"
 
+#include "light_group.h"
 #include "located_error.h"
 
 #include <fmt/format.h>
@@ -42,7 +43,10 @@ class LightCounter {
   std::unordered_map<const Node*, size_t> memo_;
 };
 
-void place(const Node& n, const Mat4& parentWorld, std::vector<Light>& out) {
+// `group`: the light group instance a light reached here belongs to (0: none); `groups`
+// counts the instances met, in flattenScene's order (light_group.h).
+void place(const Node& n, const Mat4& parentWorld, uint32_t group, uint32_t& groups,
+           std::vector<Light>& out) {
   const Mat4 world = parentWorld * n.parentFromNode;
   switch (n.kind) {
     case NodeKind::Light: {
@@ -53,15 +57,19 @@ void place(const Node& n, const Mat4& parentWorld, std::vector<Light>& out) {
           !(glm::length(placed.direction) > 0.0) ||
           (placed.type == LightType::Area && !(glm::length(glm::cross(placed.u, placed.v)) > 0.0));
       if (flat) throw LocatedError(n.loc, "the transforms down to this light scale it to nothing");
+      placed.group = group;
       out.push_back(placed);
       return;
     }
     case NodeKind::Use:
       // The referenced node's own transform applies first, then the <use>'s.
-      if (n.target) place(*n.target, world, out);
+      if (n.target) place(*n.target, world, group, groups, out);
       return;
-    default:
-      for (const auto& c : n.children) place(*c, world, out);
+    default: {
+      // A light group's own lights are its light children; lights deeper are global.
+      const uint32_t mine = n.lightGroup ? ++groups : 0;
+      for (const auto& c : n.children) place(*c, world, c->isLight() ? mine : 0, groups, out);
+    }
   }
 }
 
@@ -94,8 +102,9 @@ std::vector<Light> placeLights(const Scene& scene, size_t limit) {
     }
   std::vector<Light> lights;
   lights.reserve(total);
-  place(*scene.lightRoot, Mat4(1.0), lights);
-  place(*scene.root, Mat4(1.0), lights);
+  uint32_t groups = 0;
+  place(*scene.lightRoot, Mat4(1.0), 0, groups, lights);
+  place(*scene.root, Mat4(1.0), 0, groups, lights);
   return lights;
 }
 

@@ -47,6 +47,12 @@ struct Node {
   // inverse="true" on a solid: inside and outside swapped (POV-Ray's inverse), built as
   // csg/inverted.h around the node's geometry.
   bool inverse = false;
+  // <light-group> (POV-Ray's light_group): a group whose own lights (its light children, not
+  // those deeper down) light only the geometry inside it, and only they do unless
+  // globalLights (global-lights="true") lets the scene's other lights in too
+  // (scenegraph/light_group.h has the rules for nested groups).
+  bool lightGroup = false;
+  bool globalLights = false;
 
   // <clip> (POV-Ray's clipped_by): solids in the node's own frame; the node's surface is
   // kept only inside all of them, left open where they cut it (csg/clipped.h).

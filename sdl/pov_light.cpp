@@ -43,10 +43,8 @@ void importCircularOrient(const PovAreaLight& a, Light& l, std::vector<std::stri
     if (glm::length(v) < 1e-6 * side) v = glm::cross(l.u, Vec3(0.0, 1.0, 0.0));
   }
   l.v = glm::normalize(v) * side;
-  notes.push_back(
-      "area_light: `orient` turns the disc in Lucent's right-handed space: its grid is "
-      "POV-Ray's mirrored, each sample within 0.003 of the axis length of POV-Ray's "
-      "(the 0.001 offset of POV-Ray's circular grid changes side)");
+  // POV-Ray's cross products, in its left-handed space.
+  l.handedness = Handedness::Left;
 }
 
 }  // namespace

@@ -60,7 +60,8 @@ void closeForCsg(PovObject& o, std::vector<std::pair<SourceLoc, std::string>>& c
 bool SceneReader::isObjectKeyword(const Token& t) const {
   if (t.kind != TokenKind::Keyword) return false;
   const std::string_view w = t.text();
-  return isShapeKeyword(w) || csgKind(w) != NodeKind::Group || w == "object" || w == "light_source";
+  return isShapeKeyword(w) || csgKind(w) != NodeKind::Group || w == "object" ||
+         w == "light_source" || w == "light_group";
 }
 
 PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
@@ -95,22 +96,12 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
       in.error(first, "an object identifier or an object expected after 'object {', not " +
                           first.describe());
     }
+  } else if (o.keyword == "light_group") {
+    readLightGroup(o, in);
+    return o;
   } else if (csgKind(o.keyword) != NodeKind::Group) {
     o.kind = csgKind(o.keyword);
-    while (isObjectKeyword(in.peek())) {
-      const Token child = in.next();
-      o.children.edit().push_back(readObject(child, in));
-      // Objects built of declared objects grow without reading deeper (a loop that puts the
-      // last union in the next): their depth and size are bounded as they are composed.
-      const PovObject& c = o.children->back();
-      o.depth = std::max(o.depth, c.depth + 1);
-      o.nodes += c.nodes;
-      if (o.depth > kMaxObjectDepth)
-        in.error(child, "objects nested more than " + std::to_string(kMaxObjectDepth) + " deep");
-      if (o.nodes > kMaxObjectNodes)
-        in.error(child, "an object of more than " + std::to_string(kMaxObjectNodes) +
-                            " objects (the limit of one object's size)");
-    }
+    readChildren(o, in);
     if (o.kind != NodeKind::Union) {
       std::vector<std::pair<SourceLoc, std::string>> closed;
       for (PovObject& c : o.children.edit()) closeForCsg(c, closed);
@@ -121,6 +112,45 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
   }
   readObjectModifiers(o, in);
   return o;
+}
+
+// The objects of a CSG operation or a light group, up to the first modifier.
+void SceneReader::readChildren(PovObject& o, TokenStream& in) {
+  while (isObjectKeyword(in.peek())) {
+    const Token child = in.next();
+    o.children.edit().push_back(readObject(child, in));
+    // Objects built of declared objects grow without reading deeper (a loop that puts the
+    // last union in the next): their depth and size are bounded as they are composed.
+    const PovObject& c = o.children->back();
+    o.depth = std::max(o.depth, c.depth + 1);
+    o.nodes += c.nodes;
+    if (o.depth > kMaxObjectDepth)
+      in.error(child, "objects nested more than " + std::to_string(kMaxObjectDepth) + " deep");
+    if (o.nodes > kMaxObjectNodes)
+      in.error(child, "an object of more than " + std::to_string(kMaxObjectNodes) +
+                          " objects (the limit of one object's size)");
+  }
+}
+
+// light_group { objects and light sources, then transforms and global_lights }: POV-Ray
+// takes no other modifier there (scenegraph/light_group.h has what it lights).
+void SceneReader::readLightGroup(PovObject& o, TokenStream& in) {
+  o.kind = NodeKind::Group;
+  o.lightGroup = true;
+  readChildren(o, in);
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) return;
+    if (readTransform(t, in, o.transform)) continue;
+    if (isWord(t, "global_lights")) {
+      o.globalLights = optionalBool(in);
+      continue;
+    }
+    if (isWord(t, "photons")) unsupported(t, in, true, &o);
+    else
+      in.error(t, "a transform or global_lights expected in light_group, not " + t.describe() +
+                      " (POV-Ray takes no other modifier there)");
+  }
 }
 
 void SceneReader::readObjectModifiers(PovObject& o, TokenStream& in) {

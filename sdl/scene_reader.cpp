@@ -501,6 +501,9 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   n->reflection = !o.noReflection;
   n->doubleIlluminate = o.doubleIlluminate;
   n->inverse = o.inverse;
+  n->lightGroup = o.lightGroup;
+  n->globalLights = o.globalLights;
+  if (o.lightGroup) n->element = "light_group";
   Inherited here = inherited;
   here.hollow = o.hollow.value_or(inherited.hollow);
   // A hollow flag that differs from the parent's material's needs a material of its own.
@@ -532,10 +535,20 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   }
   addInteriorMaterial(o, here, textureFromNode, *n, in);
   here.textureFromParent = textureFromNode;
-  here.framed = inherited.framed && o.kind == NodeKind::Union && o.clip.empty() && o.bound.empty();
+  here.framed = inherited.framed && (o.kind == NodeKind::Union || o.lightGroup) && o.clip.empty() &&
+                o.bound.empty();
   here.movedAfter = inherited.movedAfter || !o.transform.isIdentity();
-  for (const PovObject& c : *o.children)
-    if (auto child = toNode(c, here, false, in)) n->children.push_back(std::move(child));
+  for (const PovObject& c : *o.children) {
+    auto child = toNode(c, here, false, in);
+    if (!child) continue;
+    // A light group's light with looks_like stays its own light: out of the union with its
+    // object, which stays in the group beside it.
+    if (o.lightGroup && c.light && child->kind == NodeKind::Union) {
+      n->children.push_back(std::move(child->children.front()));
+      child->children.erase(child->children.begin());
+    }
+    n->children.push_back(std::move(child));
+  }
   for (const PovObject& c : o.clip)
     if (auto child = toNode(c, here, false, in)) n->clip.push_back(std::move(child));
   if (keepsBound(o, inherited.framed)) {

@@ -129,6 +129,9 @@ struct PovObject {
   bool inverse = false;
   // The object's `uv_mapping`: the textures given to it after it are read at (u, v, 0).
   bool uvMapping = false;
+  // light_group: a group (kind Group) whose light sources light only its objects.
+  bool lightGroup = false;
+  bool globalLights = false;  // global_lights [on|off]
   // `hollow [on|off]` when written; unwritten, the object takes its CSG parent's (POV-Ray
   // sets the flag of the operands that did not set theirs), else not hollow.
   std::optional<bool> hollow;
@@ -318,6 +321,8 @@ class SceneReader : public ItemReader {
   void readShape(PovObject& o, TokenStream& in);
   void readIsosurface(PovObject& o, TokenStream& in);  // read_isosurface.cpp
   void readObjectModifiers(PovObject& o, TokenStream& in);
+  void readChildren(PovObject& o, TokenStream& in);
+  void readLightGroup(PovObject& o, TokenStream& in);
   bool readObjectModifier(const Token& t, PovObject& o, TokenStream& in);
   void readClipOrBound(const Token& t, PovObject& o, TokenStream& in);
   bool readTransform(const Token& t, TokenStream& in, PovTransform& m);

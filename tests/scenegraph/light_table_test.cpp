@@ -25,6 +25,7 @@ std::string sampleValue(const AttributeInfo& a) {
   if (a.name == "transform") return "translate(0 1 0)";
   if (a.name == "angle" || a.name == "inner") return "20";
   if (a.name == "adaptive") return "1";
+  if (a.name == "handedness") return "right";  // "left" needs orient="true"
   switch (a.type) {
     case AttrType::Boolean:
       return "true";

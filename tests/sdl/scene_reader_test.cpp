@@ -339,11 +339,11 @@ TEST_CASE("scene reader: what is not read yet, and syntax errors, at their place
           "[sdl][scene][errors]") {
   const auto errors = errorsOf(
       "sphere { 0, 1 pigment { checker rgb 1 rgb 0 } finish { albedo } }\n"
-      "light_group { light_source { <0, 1, 0> rgb 1 } sphere { 0, 1 } }\n");
+      "hf_gray_16\n");
   REQUIRE(errors.size() == 2);
   CHECK(errors[0] == "test.pov:1:56: error: 'albedo' is not read yet by Lucent's POV-Ray reader");
   CHECK(errors[1] ==
-        "test.pov:2:1: error: 'light_group' is not read yet by Lucent's POV-Ray reader");
+        "test.pov:2:1: error: 'hf_gray_16' is not read yet by Lucent's POV-Ray reader");
   const auto syntax = errorsOf("sphere { 0, 1 pigment { rgb 1 } 3 }\n");
   REQUIRE(syntax.size() == 1);
   CHECK(syntax[0] == "test.pov:1:33: error: unexpected float constant in sphere");
