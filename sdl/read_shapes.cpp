@@ -406,8 +406,9 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
         if (isWord(mod, "texture") || isWord(mod, "pigment") || isWord(mod, "finish") ||
             isWord(mod, "normal")) {
           refuse(o, mod.loc(), in,
-                 "a texture on a blob component is not supported by Lucent (its blob has one "
-                 "material; give the texture to the whole blob)");
+                 "'" + std::string(mod.text()) +
+                     "' in a blob component is not supported by Lucent (its blob has one "
+                     "material; give the texture to the whole blob)");
           refused = true;
           skipBlock(in);
           continue;
@@ -1021,8 +1022,9 @@ bool SceneReader::readMeshTriangleExtras(PovObject& o, TokenStream& in,
       uv = v;
     } else if (isWord(t, "texture") || isWord(t, "texture_list")) {
       refuse(o, t.loc(), in,
-             "a texture on a mesh triangle is not supported by Lucent (its mesh has one "
-             "material; give the texture to the whole mesh)");
+             "'" + std::string(t.text()) +
+                 "' in a mesh triangle is not supported by Lucent (its mesh has one "
+                 "material; give the texture to the whole mesh)");
       ok = false;
       skipBlock(in);
     } else {
@@ -1113,7 +1115,7 @@ void SceneReader::readMesh2(PovObject& o, TokenStream& in) {
       list("uv_indices", indices(uvFaces));
     } else if (isWord(t, "texture_list")) {
       refuseShape(o, t.loc(), in,
-                  "a texture_list (textures per mesh triangle) is not supported by Lucent (its "
+                  "'texture_list' (textures per mesh triangle) is not supported by Lucent (its "
                   "mesh has one material; give the texture to the whole mesh)");
       return;
     } else if (isWord(t, "inside_vector")) {

@@ -482,7 +482,7 @@ object { Blobs }
 )");
   REQUIRE(errors.size() == 2);
   CHECK(errors[0].find("test.pov:1:14: error: 'ovus' is not supported by Lucent") == 0);
-  CHECK(errors[1].find("test.pov:2:50: error: a texture on a blob component is not supported") ==
+  CHECK(errors[1].find("test.pov:2:50: error: 'pigment' in a blob component is not supported") ==
         0);
 }
 
@@ -500,13 +500,13 @@ mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 1, texture { } } face_indic
   // The first component, scaled unevenly, is read (its own transform); the second's texture
   // is refused.
   REQUIRE(errors.size() == 4);
-  CHECK(errors[0].find("test.pov:3:20: error: a texture on a blob component is not supported") ==
+  CHECK(errors[0].find("test.pov:3:20: error: 'pigment' in a blob component is not supported") ==
         0);
   CHECK(errors[1] ==
         "test.pov:6:1: error: a blob threshold of -1 is not supported by Lucent (it takes a "
         "threshold above 0: at or below 0 all of space away from the components would be inside)");
-  CHECK(errors[2].find("test.pov:7:27: error: a texture on a mesh triangle is not supported") == 0);
-  CHECK(errors[3].find("test.pov:8:39: error: a texture_list (textures per mesh triangle) is not "
+  CHECK(errors[2].find("test.pov:7:27: error: 'texture' in a mesh triangle is not supported") == 0);
+  CHECK(errors[3].find("test.pov:8:39: error: 'texture_list' (textures per mesh triangle) is not "
                        "supported") == 0);
 }
 
