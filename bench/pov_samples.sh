@@ -230,7 +230,7 @@ fi
   echo
   echo "| feature | scenes |"
   echo "| --- | --- |"
-  awk -F'\t' '$2 == "refused" { d = $3; if (match(d, /\x27[^\x27]*\x27/)) f = substr(d, RSTART, RLENGTH);
+  awk -F'\t' '$2 == "refused" { d = $3; if (match(d, /\x27[^\x27 ]*\x27/)) f = substr(d, RSTART, RLENGTH);
       else { sub(/^[^ ]* error: /, "", d); f = substr(d, 1, 60) } n[f]++ }
     END { for (f in n) printf "| %s | %d |\n", f, n[f] }' "$rows" | sort -t'|' -k3 -rn
   echo

@@ -264,7 +264,7 @@ const InternalFunction* internalFunction(int n) {
 std::string internalRefusal(int n) {
   const InternalFunction* f = internalFunction(n);
   const std::string name =
-      std::string(f ? f->name : "?") + " (internal(" + std::to_string(n) + "))";
+      "'" + std::string(f ? f->name : "?") + "' (internal(" + std::to_string(n) + "))";
   if (usesNoise(n))
     return name +
            " is a noise function Lucent does not evaluate (of POV-Ray's noise functions it "

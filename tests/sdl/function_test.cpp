@@ -218,7 +218,8 @@ TEST_CASE("sdl function: errors are located inside the function's text", "[sdl][
                                     "#declare F = function { 1 + f_noise3d(x, y, z) }\n"
                                     "#declare R = F(1, 2, 3);\n");
   // (The language core alone: with a scene reader, f_noise3d is a pattern function.)
-  CHECK(noise.rfind("test.pov:4:14: error: f_noise3d (internal(76)) is a noise function", 0) == 0);
+  CHECK(noise.rfind("test.pov:4:14: error: 'f_noise3d' (internal(76)) is a noise function", 0) ==
+        0);
   CHECK(noise.find("test.pov:3:29: note: the cause, in the function's declaration") !=
         std::string::npos);
 }

@@ -89,12 +89,12 @@ TEST_CASE("isosurface: what cannot be written as a Lucent expression is refused 
   for (const Diagnostic& d : l.diagnostics.all()) errors.push_back(d.str());
   REQUIRE(errors.size() == 3);
   CHECK(errors[0].rfind("test.pov:3:14: error: this isosurface's function cannot be imported: "
-                        "f_ridged_mf (internal(59)) is a noise function Lucent does not evaluate",
+                        "'f_ridged_mf' (internal(59)) is a noise function Lucent does not evaluate",
                         0) == 0);
   CHECK(errors[0].find("test.pov:2:52: note: the cause, in the function's text") !=
         std::string::npos);
   CHECK(errors[1].rfind("test.pov:4:14: error: this isosurface's function cannot be imported: "
-                        "f_helix1 (internal(25)) is not evaluated",
+                        "'f_helix1' (internal(25)) is not evaluated",
                         0) == 0);
   CHECK(errors[2].rfind("test.pov:5:14: error: this isosurface's function cannot be imported: "
                         "sum() and prod() cannot be written",
