@@ -11,6 +11,7 @@
 #include <dlfcn.h>
 
 #include "address_sanitizer.h"
+#include "plugin_library.h"
 
 #if defined(LUCENT_ASAN)
 // Sanitized builds only. The plugin is loaded with dlopen, so the thread-local variables of
@@ -36,20 +37,15 @@ namespace {
 constexpr const char* kPluginFile = "lucent-oiio.so";
 
 // Where to look: the file named by LUCENT_IMAGE_PLUGIN if it is set (and nothing else);
-// otherwise beside the running program (the build puts the plugin beside `lucent`), then
-// where this build wrote it (for the tests and benchmarks, which live in other folders).
+// otherwise beside the running program, then where this build wrote it.
 std::vector<fs::path> candidatePaths() {
   if (const char* chosen = std::getenv("LUCENT_IMAGE_PLUGIN"); chosen && *chosen)
     return {fs::path(chosen)};
-  std::vector<fs::path> paths;
-  std::error_code ec;
-  fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) paths.push_back(self.parent_path() / kPluginFile);
 #ifdef LUCENT_IMAGE_PLUGIN_BUILD_PATH
-  fs::path built(LUCENT_IMAGE_PLUGIN_BUILD_PATH);
-  if (paths.empty() || built != paths.front()) paths.push_back(built);
+  return pluginPaths(kPluginFile, LUCENT_IMAGE_PLUGIN_BUILD_PATH);
+#else
+  return pluginPaths(kPluginFile, nullptr);
 #endif
-  return paths;
 }
 
 class Loader {
@@ -65,27 +61,15 @@ class Loader {
   // (its code may be on the stack of a thread at exit, and leak reports need its symbols).
   void load() {
     std::string tried;
-    for (const fs::path& path : candidatePaths()) {
-      std::error_code ec;
-      if (!fs::exists(path, ec)) {
-        tried += fmt::format("\n  {}: no such file", path.string());
-        continue;
-      }
-      void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-      if (!handle) {
-        const char* why = ::dlerror();
-        tried += fmt::format("\n  {}: {}", path.string(), why ? why : "cannot be loaded");
-        continue;
-      }
-      auto entry =
-          reinterpret_cast<LucentImagePluginEntry>(::dlsym(handle, LUCENT_IMAGE_PLUGIN_ENTRY));
+    const ImagePlugin* plugin = nullptr;
+    const auto accept = [&plugin](void* symbol) {
       int version = 0;
-      const ImagePlugin* plugin = entry ? entry(&version) : nullptr;
-      if (!plugin || version != kImagePluginVersion) {
-        tried += fmt::format("\n  {}: not a Lucent image plugin of version {}", path.string(),
-                             kImagePluginVersion);
-        continue;
-      }
+      plugin = reinterpret_cast<LucentImagePluginEntry>(symbol)(&version);
+      return plugin && version == kImagePluginVersion;
+    };
+    if (loadPluginEntry(candidatePaths(), LUCENT_IMAGE_PLUGIN_ENTRY, accept,
+                        fmt::format("not a Lucent image plugin of version {}", kImagePluginVersion),
+                        tried)) {
       plugin_ = plugin;
       return;
     }
