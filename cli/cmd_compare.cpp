@@ -94,15 +94,8 @@ std::vector<std::string> checkHandWritten(const std::string& path, const std::st
 
 // The scene request of compare's options, checked.
 SceneRequest compareRequest(const CompareOptions& options) {
-  SceneRequest request;
-  request.scene = options.scene;
-  request.width = options.width;
-  request.height = options.height;
-  request.threads = options.threads;
-  request.maxDepth = options.maxDepth;
-  request.camera = options.camera;
+  SceneRequest request = sceneRequestOf(options);
   // -s is checked here, not applied by loadScene: compare's default is 1, not the scene's.
-  request.samples = options.samples;
   checkOverrides(request);
   request.samples.reset();
   return request;

@@ -26,18 +26,6 @@ std::string cameraNames(const Scene& scene) {
 
 }  // namespace
 
-SceneRequest renderSceneRequest(const RenderOptions& options) {
-  SceneRequest request;
-  request.scene = options.scene;
-  request.width = options.width;
-  request.height = options.height;
-  request.samples = options.samples;
-  request.threads = options.threads;
-  request.maxDepth = options.maxDepth;
-  request.camera = options.camera;
-  return request;
-}
-
 void checkOverrides(const SceneRequest& request) {
   for (auto [value, name] :
        {std::pair{request.width, "--width"}, std::pair{request.height, "--height"},

@@ -62,8 +62,23 @@ struct LoadedScene {
   uint64_t xmlDigest = 0;
 };
 
-// The scene request `lucent render` makes of its options (the scene, its overrides).
-SceneRequest renderSceneRequest(const RenderOptions& options);
+// The scene request a command makes of its options (the scene, its overrides): render's,
+// compare's and preview's options share these fields.
+template <class Options>
+SceneRequest sceneRequestOf(const Options& options) {
+  SceneRequest request;
+  request.scene = options.scene;
+  request.width = options.width;
+  request.height = options.height;
+  request.samples = options.samples;
+  request.threads = options.threads;
+  request.maxDepth = options.maxDepth;
+  request.camera = options.camera;
+  return request;
+}
+inline SceneRequest renderSceneRequest(const RenderOptions& options) {
+  return sceneRequestOf(options);
+}
 
 // Throws UsageError for an override out of range (the first thing loadScene does, and
 // callable before it, to refuse a bad option before an output is looked at).

@@ -48,17 +48,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace lucent::preview;
 
-SceneRequest previewRequest(const PreviewOptions& options) {
-  SceneRequest request;
-  request.scene = options.scene;
-  request.width = options.width;
-  request.height = options.height;
-  request.samples = options.samples;
-  request.threads = options.threads;
-  request.maxDepth = options.maxDepth;
-  request.camera = options.camera;
-  return request;
-}
+SceneRequest previewRequest(const PreviewOptions& options) { return sceneRequestOf(options); }
 
 // Bad options, a missing scene: refused before anything is served.
 void checkPreviewOptions(const PreviewOptions& options, const SceneRequest& request) {
