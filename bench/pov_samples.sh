@@ -9,10 +9,13 @@
 # from bench/pov_samples_notes.txt ("path/of/scene.pov: why"). Not a CI test.
 #
 #   bash bench/pov_samples.sh [--lucent PATH] [--examples DIR] [--out FILE] [--only REGEX]
-#                             [--update]
+#                             [--update] [--import-only]
 # --update measures only the scenes --only selects and keeps every other row of the page
 # already in --out (the summary is computed again over all of them): after a change that
-# concerns a few scenes, without the hour of the whole run.
+# concerns a few scenes, without the hour of the whole run. --import-only (implies --update)
+# measures again only the import against POV-Ray's parse of the imported scenes --only
+# selects, keeping every other column: in ten minutes on a machine at rest, which a
+# comparison of millisecond parses needs.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -22,14 +25,16 @@ examples=/usr/share/doc/povray/examples
 out=docs/pov-samples.md
 only=.
 update=0
+importOnly=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --update) update=1; shift ;;
+    --import-only) update=1; importOnly=1; shift ;;
     --lucent) lucent=$2; shift 2 ;;
     --examples) examples=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --only) only=$2; shift 2 ;;
-    *) echo "usage: $0 [--lucent PATH] [--examples DIR] [--out FILE] [--only REGEX] [--update]" >&2; exit 2 ;;
+    *) echo "usage: $0 [--lucent PATH] [--examples DIR] [--out FILE] [--only REGEX] [--update] [--import-only]" >&2; exit 2 ;;
   esac
 done
 lucent=$(realpath -m "$lucent")
@@ -48,11 +53,11 @@ if [ $update = 1 ]; then
   [ -f "$out" ] || { echo "--update: no $out to update" >&2; exit 2; }
   # A kept scene's reason for being below 35 dB is read again from the notes.
   sed -n '/^## Every scene/,$p' "$out" | grep '^| ' | tail -n +3 |
-    awk -v only="$only" 'FNR == NR { i = index($0, ": "); if (i > 1 && $0 !~ /^#/) note[substr($0, 1, i - 1)] = substr($0, i + 2); next }
+    awk -v only="$only" -v keepAll=$importOnly 'FNR == NR { i = index($0, ": "); if (i > 1 && $0 !~ /^#/) note[substr($0, 1, i - 1)] = substr($0, i + 2); next }
     {
       line = $0; gsub(/\\\|/, "\001", line); n = split(line, f, "|");
       for (i = 2; i < n; i++) { gsub(/^ +| +$/, "", f[i]); gsub("\001", "|", f[i]) }
-      if (f[2] ~ only) next;
+      if (f[2] ~ only && !keepAll) next;
       if (f[3] == "imported" && f[4] != "") f[10] = note[f[2]];
       printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", f[2], f[3], f[10], f[4], f[5], f[6], f[7], f[8], f[9] }' "$notes" - >"$rows"
 fi
@@ -100,6 +105,30 @@ timed() {
   return $status
 }
 
+# Importing against POV-Ray's parse, wall time against wall time: lucent check's "read in"
+# against POV-Ray's own "Parse Time" of the same frame at 8x8, no output, neither with its
+# process's start. POV-Ray's figure is the difference of two millisecond clock readings,
+# each cut to the millisecond: a parse of d ms reads as floor(d) or floor(d)+1 ms, d on
+# average. So each figure is the mean of five runs, the two programs taking turns. Sets
+# importS and parseS (seconds, empty where a run gave no figure).
+measureImport() {
+  local run wall p povArgs importSum=0 parseSum=0 importN=0 parseN=0
+  importS="" parseS=""
+  for run in 1 2 3 4 5; do
+    wall=$("$lucent" check --stats "${args[@]}" "${checkFrame[@]}" "$name" 2>/dev/null |
+      sed -n 's/^read in: .* s of CPU time, \([0-9.]*\) s of wall time.*/\1/p')
+    [ -n "$wall" ] && importSum=$(awk -v a="$importSum" -v b="$wall" 'BEGIN{print a + b}') && importN=$((importN + 1))
+    povArgs=(+I"$name" +W8 +H8 -D -F +GS -V)
+    [ -n "$ini" ] && povArgs=("$ini" "${povArgs[@]}")
+    [ ${#frameArgs[@]} -gt 0 ] && povArgs+=(+SF"$(( $(iniFirst "$ini") + frame - 1 ))" +EF"$(( $(iniFirst "$ini") + frame - 1 ))")
+    p=$(povray "${povArgs[@]}" 2>&1 | sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' | tail -1)
+    [ -n "$p" ] && parseSum=$(awk -v a="$parseSum" -v b="$p" 'BEGIN{print a + b}') && parseN=$((parseN + 1))
+  done
+  [ $importN -gt 0 ] && importS=$(awk -v a="$importSum" -v n=$importN 'BEGIN{printf "%.4f", a / n}')
+  [ $parseN -gt 0 ] && parseS=$(awk -v a="$parseSum" -v n=$parseN 'BEGIN{printf "%.4f", a / n}')
+  return 0
+}
+
 count=0
 while IFS= read -r pov; do
   rel=${pov#"$examples"/}
@@ -122,6 +151,17 @@ while IFS= read -r pov; do
   cp -r "$dir" "$work/scene"
   cd "$work/scene"
   args+=(--allow-write "$work/scene")
+  if [ $importOnly = 1 ]; then
+    # Only the import columns of a scene already measured as imported, the rest kept.
+    if awk -F'\t' -v r="$rel" '$1 == r && $2 == "imported" && $4 != "" { found = 1 } END { exit !found }' "$rows"; then
+      measureImport
+      awk -F'\t' -v OFS='\t' -v r="$rel" -v i="$importS" -v p="$parseS" '$1 == r { $8 = i; $9 = p } { print }' \
+        "$rows" >"$rows.new" && mv "$rows.new" "$rows"
+      echo "$rel: import $importS s, POV-Ray parse $parseS s" >&2
+    fi
+    cd "$root"
+    continue
+  fi
   timeout 120 "$lucent" check "${args[@]}" "$name" >/dev/null 2>"$work/check.err"
   status=$?
   if [ $status -eq 124 ]; then
@@ -155,26 +195,7 @@ while IFS= read -r pov; do
         ratio=$(awk -v p="$povSeconds" -v l="$lucentCpu" 'BEGIN{ if (l > 0) printf "%.2f", p / l; }')
         note=""
         [ -f "$notes" ] && note=$(grep -F "$rel:" "$notes" | head -1 | sed "s#^$rel: *##")
-        # Importing against POV-Ray's parse, wall time against wall time: lucent check's
-        # "read in" against POV-Ray's own "Parse Time" of the same frame at 8x8, no output,
-        # neither with its process's start. POV-Ray's figure is the difference of two
-        # millisecond clock readings, each cut to the millisecond: a parse of d ms reads as
-        # floor(d) or floor(d)+1 ms, d on average. So each figure is the mean of five runs,
-        # the two programs taking turns.
-        importS="" parseS=""
-        importSum=0 parseSum=0 importN=0 parseN=0
-        for run in 1 2 3 4 5; do
-          wall=$("$lucent" check --stats "${args[@]}" "${checkFrame[@]}" "$name" 2>/dev/null |
-            sed -n 's/^read in: .* s of CPU time, \([0-9.]*\) s of wall time.*/\1/p')
-          [ -n "$wall" ] && importSum=$(awk -v a="$importSum" -v b="$wall" 'BEGIN{print a + b}') && importN=$((importN + 1))
-          povArgs=(+I"$name" +W8 +H8 -D -F +GS -V)
-          [ -n "$ini" ] && povArgs=("$ini" "${povArgs[@]}")
-          [ ${#frameArgs[@]} -gt 0 ] && povArgs+=(+SF"$(( $(iniFirst "$ini") + frame - 1 ))" +EF"$(( $(iniFirst "$ini") + frame - 1 ))")
-          p=$(povray "${povArgs[@]}" 2>&1 | sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' | tail -1)
-          [ -n "$p" ] && parseSum=$(awk -v a="$parseSum" -v b="$p" 'BEGIN{print a + b}') && parseN=$((parseN + 1))
-        done
-        [ $importN -gt 0 ] && importS=$(awk -v a="$importSum" -v n=$importN 'BEGIN{printf "%.4f", a / n}')
-        [ $parseN -gt 0 ] && parseS=$(awk -v a="$parseSum" -v n=$parseN 'BEGIN{printf "%.4f", a / n}')
+        measureImport
         printf '%s\timported\t%s\t%s\t%s\t%.3f\t%s\t%s\t%s\n' "$rel" "$note" "$psnr" "$lucentCpu" \
           "$povSeconds" "$ratio" "$importS" "$parseS" >>"$rows"
       fi

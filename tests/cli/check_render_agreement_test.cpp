@@ -4,6 +4,7 @@
 // (cli/load_scene.h), so render's checks after parsing, such as a cube map whose width has
 // no whole-pixel faces or transforms multiplying beyond range, run in check too.
 #include "run_lucent.h"
+#include "tests/test_effort.h"
 
 #include <catch2/catch.hpp>
 
@@ -44,8 +45,12 @@ TEST_CASE("lang: check and render give the same status and first error on every 
   TempFolder tmp("lucent-agreement");
   const std::vector<fs::path> scenes = corpusScenes();
   REQUIRE(scenes.size() >= 230);
-  int refused = 0;
-  for (const fs::path& scene : scenes) {
+  int refused = 0, compared = 0;
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    // Under the sanitizers every eighth scene: script.bad_inputs runs each of them there.
+    if (kSanitizerPass && i % 8 != 0 && scenes[i].filename() != "valid.xml") continue;
+    const fs::path& scene = scenes[i];
+    ++compared;
     const std::string size = " -w 16 -h 12";
     LucentRun check = runLucent("check '" + scene.string() + "'" + size);
     LucentRun render =
@@ -61,7 +66,7 @@ TEST_CASE("lang: check and render give the same status and first error on every 
       ++refused;
     }
   }
-  CHECK(refused == static_cast<int>(scenes.size()) - 1);
+  CHECK(refused == compared - 1);
 }
 
 TEST_CASE("lang: check refuses what only building the world or the camera finds",

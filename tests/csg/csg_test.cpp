@@ -4,6 +4,7 @@
 #include "primitives/instance.h"
 #include "scenegraph/shape_registry.h"
 #include "scenegraph/shape_spec.h"
+#include "tests/test_effort.h"
 
 #include <catch2/catch.hpp>
 #include <glm/ext/matrix_transform.hpp>
@@ -12,6 +13,7 @@
 #include <random>
 
 using namespace lucent;
+using lucent::test::effortCount;
 
 namespace {
 
@@ -188,7 +190,7 @@ TEST_CASE("CSG first hit is the first change of membership along the ray", "[csg
     const auto& solid = entry.second;
     auto shape = solid.make();
     int wrong = 0, hits = 0;
-    const int rays = 100000 / int(all.size()) + 1;  // 10^5 rays over all the trees
+    const int rays = effortCount(100000) / int(all.size()) + 1;  // 10^5 rays over all the trees
     for (int i = 0; i < rays; ++i) {
       // From 4 units away (outside every bounded solid) towards a point near the solids.
       Vec3 dir = glm::normalize(Vec3(u(rng), u(rng), u(rng)));

@@ -2,6 +2,7 @@
 // it must give the same closest hit as testing every Instance through its own
 // object-space test, and secondary rays leaving such spheres must not re-hit them.
 #include "../primitives/random_items.h"
+#include "tests/test_effort.h"
 #include "world_helpers.h"
 
 #include "primitives/offset.h"
@@ -14,6 +15,7 @@
 
 using namespace lucent;
 using namespace lucent::testing;
+using lucent::test::effortCount;
 
 namespace {
 
@@ -163,7 +165,7 @@ TEST_CASE(
     });
     World world(scene);
     REQUIRE(world.inlineSphereCount() == 1500);
-    std::vector<Ray> rays = randomRays(rng, 100000, st.extent);
+    std::vector<Ray> rays = randomRays(rng, effortCount(100000), st.extent);
     for (Ray& r : rays) r.o += st.at;
     double magnitude = glm::length(st.at) + 3.0 * st.extent;
     Comparison c = compare(world, rays, magnitude);
@@ -185,7 +187,7 @@ TEST_CASE("spheres placed by their centre give exactly the hits of their Instanc
   World world(scene);
   REQUIRE(world.inlineSphereCount() == 2000);
   size_t hits = 0;
-  for (Ray ray : randomRays(rng, 100000, 10.0)) {
+  for (Ray ray : randomRays(rng, effortCount(100000), 10.0)) {
     ray.o += Vec3(-40.0, 3.0, 7.0);
     Hit want = bruteForce(world, ray), got;
     REQUIRE(world.intersect(ray, got) == want.found());
@@ -205,7 +207,7 @@ TEST_CASE("spheres placed by their centre give exactly the hits of their Instanc
     REQUIRE(world.occluded(Ray(ray.o, ray.d, ray.tmin, got.t * (1.0 + 1e-9))));
     REQUIRE_FALSE(world.occluded(Ray(ray.o, ray.d, ray.tmin, got.t * (1.0 - 1e-9))));
   }
-  CHECK(hits > 10000);
+  CHECK(hits > size_t(effortCount(10000)));
 }
 
 TEST_CASE("spheres under non-uniform scales stay Instances, beside spheres kept in world space",
@@ -218,7 +220,7 @@ TEST_CASE("spheres under non-uniform scales stay Instances, beside spheres kept 
   World world(scene);
   CHECK(world.inlineSphereCount() == 800);
   CHECK(world.bvh().itemCount() == 1200);
-  std::vector<Ray> rays = randomRays(rng, 100000, 10.0);
+  std::vector<Ray> rays = randomRays(rng, effortCount(100000), 10.0);
   Comparison c = compare(world, rays, 30.0);
   INFO(c.hits << " hits, " << c.exact << " exactly equal, " << c.grazingOrTie
               << " grazing or tied, worst " << c.worstRelative << "; " << c.example);
