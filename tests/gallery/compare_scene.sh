@@ -101,7 +101,14 @@ compare() {
 # takes, and the Release pass has held its pixels to POV-Ray's.
 if [ "${LUCENT_GALLERY_MEMORY_ONLY:-0}" = 1 ]; then
   mkdir -p "$outdir"
-  "$lucent" render "$scene" -w 80 -h 60 "${options[@]}" -q -o "$outdir/memory.png" \
+  small=()  # the scene's options less its size
+  for ((i = 0; i < ${#options[@]}; i++)); do
+    case "${options[i]}" in
+      -w | -h | --width | --height) i=$((i + 1)) ;;
+      *) small+=("${options[i]}") ;;
+    esac
+  done
+  "$lucent" render "$scene" -w 80 -h 60 "${small[@]}" -q -o "$outdir/memory.png" \
     2>"$outdir/memory-stderr.txt" || { cat "$outdir/memory-stderr.txt" >&2; fail "render at 80x60 failed"; }
   "$lucent" export-pov "$scene" -w 80 -h 60 -o "$outdir/memory.pov" \
     2>"$outdir/memory-export-stderr.txt" || { cat "$outdir/memory-export-stderr.txt" >&2; fail "export-pov failed"; }
