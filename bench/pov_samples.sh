@@ -9,13 +9,14 @@
 # from bench/pov_samples_notes.txt ("path/of/scene.pov: why"). Not a CI test.
 #
 #   bash bench/pov_samples.sh [--lucent PATH] [--examples DIR] [--out FILE] [--only REGEX]
-#                             [--update] [--import-only]
+#                             [--update] [--import-only] [--speed-only]
 # --update measures only the scenes --only selects and keeps every other row of the page
 # already in --out (the summary is computed again over all of them): after a change that
 # concerns a few scenes, without the hour of the whole run. --import-only (implies --update)
 # measures again only the import against POV-Ray's parse of the imported scenes --only
 # selects, keeping every other column: in ten minutes on a machine at rest, which a
-# comparison of millisecond parses needs.
+# comparison of millisecond parses needs. --speed-only (implies --update) measures again only
+# the CPU times of Lucent's and POV-Ray's renders and their ratio.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -26,15 +27,17 @@ out=docs/pov-samples.md
 only=.
 update=0
 importOnly=0
+speedOnly=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --update) update=1; shift ;;
     --import-only) update=1; importOnly=1; shift ;;
+    --speed-only) update=1; speedOnly=1; shift ;;
     --lucent) lucent=$2; shift 2 ;;
     --examples) examples=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --only) only=$2; shift 2 ;;
-    *) echo "usage: $0 [--lucent PATH] [--examples DIR] [--out FILE] [--only REGEX] [--update] [--import-only]" >&2; exit 2 ;;
+    *) echo "usage: $0 [--lucent PATH] [--examples DIR] [--out FILE] [--only REGEX] [--update] [--import-only] [--speed-only]" >&2; exit 2 ;;
   esac
 done
 lucent=$(realpath -m "$lucent")
@@ -53,7 +56,7 @@ if [ $update = 1 ]; then
   [ -f "$out" ] || { echo "--update: no $out to update" >&2; exit 2; }
   # A kept scene's reason for being below 35 dB is read again from the notes.
   sed -n '/^## Every scene/,$p' "$out" | grep '^| ' | tail -n +3 |
-    awk -v only="$only" -v keepAll=$importOnly 'FNR == NR { i = index($0, ": "); if (i > 1 && $0 !~ /^#/) note[substr($0, 1, i - 1)] = substr($0, i + 2); next }
+    awk -v only="$only" -v keepAll=$((importOnly + speedOnly)) 'FNR == NR { i = index($0, ": "); if (i > 1 && $0 !~ /^#/) note[substr($0, 1, i - 1)] = substr($0, i + 2); next }
     {
       line = $0; gsub(/\\\|/, "\001", line); n = split(line, f, "|");
       for (i = 2; i < n; i++) { gsub(/^ +| +$/, "", f[i]); gsub("\001", "|", f[i]) }
@@ -62,48 +65,9 @@ if [ $update = 1 ]; then
       printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", f[2], f[3], f[10], f[4], f[5], f[6], f[7], f[8], f[9] }' "$notes" - >"$rows"
 fi
 
-# The .ini file of a scene: one in its folder whose Input_File_Name names it, else one of
-# the same name.
-iniOf() {
-  local pov=$1 dir name ini
-  dir=$(dirname "$pov")
-  name=$(basename "$pov")
-  for ini in "$dir"/*.ini; do
-    [ -f "$ini" ] || continue
-    if grep -qiE "^[[:space:]]*Input_File_Name[[:space:]]*=[[:space:]]*\"?$name\"?[[:space:]]*(;.*)?$" "$ini"; then
-      echo "$ini"
-      return
-    fi
-  done
-  [ -f "${pov%.pov}.ini" ] && echo "${pov%.pov}.ini"
-}
-
-# An .ini file's Initial_Frame (1 when it has none).
-iniFirst() {
-  local first
-  first=$(grep -iE '^[[:space:]]*Initial_Frame[[:space:]]*=' "$1" 2>/dev/null | tail -1 | sed 's/.*=[[:space:]]*//; s/[[:space:];].*//')
-  echo "${first:-1}"
-}
-
-# The middle frame (1-based, as --frame counts) of an .ini file's animation; 1 without one.
-middleFrame() {
-  local ini=$1 first last
-  first=$(grep -iE '^[[:space:]]*Initial_Frame[[:space:]]*=' "$ini" | tail -1 | sed 's/.*=[[:space:]]*//; s/[[:space:];].*//')
-  last=$(grep -iE '^[[:space:]]*Final_Frame[[:space:]]*=' "$ini" | tail -1 | sed 's/.*=[[:space:]]*//; s/[[:space:];].*//')
-  first=${first:-1}
-  last=${last:-$first}
-  echo $(((last - first) / 2 + 1))
-}
-
-# CPU seconds (user + system) of a command, into the variable cpu; its status returned.
-TIMEFORMAT='%3U %3S'
-timed() {
-  local t status
-  { t=$( { time "$@" >/dev/null 2>>"$work/err"; } 2>&1 ); } 
-  status=$?
-  cpu=$(echo "$t" | tail -1 | awk '{printf "%.3f", $1 + $2}')
-  return $status
-}
+# The scene's .ini, its first and middle frames, a command timed in CPU seconds.
+# shellcheck source=bench/pov_samples_lib.sh
+source "$root/bench/pov_samples_lib.sh"
 
 # Importing against POV-Ray's parse, wall time against wall time: lucent check's "read in"
 # against POV-Ray's own "Parse Time" of the same frame at 8x8, no output, neither with its
@@ -135,16 +99,7 @@ while IFS= read -r pov; do
   [[ "$rel" =~ $only ]] || continue
   count=$((count + 1))
   dir=$(dirname "$pov")
-  name=$(basename "$pov")
-  ini=$(iniOf "$pov")
-  args=(-w 320 -h 240)
-  frameArgs=()
-  checkFrame=()
-  if [ -n "$ini" ]; then
-    args+=(--pov-ini "$ini")
-    frame=$(middleFrame "$ini")
-    [ "$frame" -gt 1 ] && frameArgs=(--frame "$frame") && checkFrame=(-D "frame=$frame")
-  fi
+  sceneArgs "$pov"
   # In a copy of the scene's folder, where the scene may write (its #fopen ... write, as
   # POV-Ray's own run writes there too): the installed examples stay as they are.
   rm -rf "$work/scene"
@@ -158,6 +113,17 @@ while IFS= read -r pov; do
       awk -F'\t' -v OFS='\t' -v r="$rel" -v i="$importS" -v p="$parseS" '$1 == r { $8 = i; $9 = p } { print }' \
         "$rows" >"$rows.new" && mv "$rows.new" "$rows"
       echo "$rel: import $importS s, POV-Ray parse $parseS s" >&2
+    fi
+    cd "$root"
+    continue
+  fi
+  if [ $speedOnly = 1 ]; then
+    # Only the CPU columns of a scene already measured as imported, the rest kept.
+    if awk -F'\t' -v r="$rel" '$1 == r && $2 == "imported" && $4 != "" { found = 1 } END { exit !found }' "$rows"; then
+      timeRenders
+      awk -F'\t' -v OFS='\t' -v r="$rel" -v l="$lucentCpu" -v p="$povCpu" -v q="$ratio" \
+        '$1 == r { $5 = l; $6 = p; $7 = q } { print }' "$rows" >"$rows.new" && mv "$rows.new" "$rows"
+      echo "$rel: Lucent $lucentCpu s, POV-Ray $povCpu s (CPU), ratio $ratio" >&2
     fi
     cd "$root"
     continue
@@ -191,12 +157,15 @@ while IFS= read -r pov; do
       else
         psnr=$(sed -n 's/^ *"psnr_db": \(.*\),$/\1/p' "$work/cmp/report.json")
         if [ "$psnr" = null ]; then psnr=inf; else psnr=$(printf '%.2f' "$psnr"); fi
-        povSeconds=$(sed -n 's/^ *"povray_seconds": \(.*\),$/\1/p' "$work/cmp/report.json")
-        ratio=$(awk -v p="$povSeconds" -v l="$lucentCpu" 'BEGIN{ if (l > 0) printf "%.2f", p / l; }')
+        # POV-Ray's CPU time, one thread, as Lucent's (compare times its wall clock, which
+        # holds about a second of POV-Ray waiting on its own front end).
+        povSeconds="" ratio=""
+        timed timeout 1200 povray "${povArgs[@]}" && povSeconds=$cpu
+        [ -n "$povSeconds" ] && ratio=$(awk -v p="$povSeconds" -v l="$lucentCpu" 'BEGIN{ if (l > 0) printf "%.2f", p / l; }')
         note=""
         [ -f "$notes" ] && note=$(grep -F "$rel:" "$notes" | head -1 | sed "s#^$rel: *##")
         measureImport
-        printf '%s\timported\t%s\t%s\t%s\t%.3f\t%s\t%s\t%s\n' "$rel" "$note" "$psnr" "$lucentCpu" \
+        printf '%s\timported\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$rel" "$note" "$psnr" "$lucentCpu" \
           "$povSeconds" "$ratio" "$importS" "$parseS" >>"$rows"
       fi
     fi
@@ -218,8 +187,9 @@ fi
   echo "\`lucent check\`, and each one that imports through \`lucent render\` and \`lucent compare\`"
   echo "(POV-Ray 3.7 on the same file) at 320x240, one sample, one thread, with its \`.ini\`"
   echo "file where it has one (an animation at its middle frame). PSNR is compare's (sRGB"
-  echo "values); the CPU ratio is POV-Ray's seconds (one thread, parse and render, as compare"
-  echo "timed it) over Lucent's CPU seconds for \`lucent render\` (import, render, PNG)."
+  echo "values); the CPU ratio is POV-Ray's CPU seconds (user + system of the whole process, one"
+  echo "thread, no antialiasing, the same size and frame: parse, render, PNG) over Lucent's for"
+  echo "\`lucent render\` (import, render, PNG), one sample, one thread."
   echo
   echo "## Summary"
   echo
@@ -262,7 +232,7 @@ fi
   echo
   echo "## Every scene"
   echo
-  echo "| scene | outcome | PSNR (dB) | Lucent CPU (s) | POV-Ray (s) | ratio | import (s) | POV-Ray parse (s) | detail |"
+  echo "| scene | outcome | PSNR (dB) | Lucent CPU (s) | POV-Ray CPU (s) | ratio | import (s) | POV-Ray parse (s) | detail |"
   echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
   awk -F'\t' '{ d = $3; gsub(/\|/, "\\|", d); printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, $4, $5, $6, $7, $8, $9, d }' "$rows"
 } >"$out"
