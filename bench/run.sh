@@ -2,9 +2,10 @@
 # Measures Lucent's performance on this machine, every target of docs/performance.md in one
 # run: installs the benchmark dependencies (Embree 3, gnuplot), builds the benchmarks
 # (Release) in build-bench/, runs them (the programs of bench/, then bench/gallery_speed.sh
-# on the gallery and on the showcase, bench/speed_vs_error.sh, bench/startup.sh), profiles
+# on the gallery and on the showcase, bench/speed_vs_error.sh, bench/startup.sh,
+# bench/pov_samples_speed.sh on the POV-Ray sample scenes that import), profiles
 # with bench/profile.sh the scenes of the targets not met (and always the sphere field and
-# the showcase), prints the targets table and writes the plots (docs/images/perf-*.png,
+# the showcase; the ten sample scenes of the lowest ratios), prints the targets table and writes the plots (docs/images/perf-*.png,
 # docs/images/speed-vs-error*.png), the raw figures (docs/performance-data/*.tsv,
 # docs/speed-vs-error.csv), every table of the run with the programs' raw outputs
 # (docs/performance-data/latest-run.md) and the section of docs/performance.md between its
@@ -30,6 +31,7 @@ if [ $quick -eq 1 ]; then
   gallerySize=160x120; galleryReps=1; showSize=320x240; showReps=1; startupRuns=5
   galleryScenes=(examples/gallery/checker.xml examples/gallery/glass.xml examples/gallery/torus.xml)
   sveArgs=(--quick --size 160x120)
+  samplesOnly='^advanced/(bwstripe|crater/crater)\.pov$'
 else
   tris=1000000; size=1024; scaleMax=1000000; scaleSize=256; peakSize=640; povRepeat=3
   gallerySize=640x480; galleryReps=2; showSize=1280x960; showReps=2; startupRuns=20
@@ -38,6 +40,7 @@ else
   # Lucent's 256-sample reference): depth 5 (26 samples a pixel) instead of the script's
   # default 9 (82) keeps the run within half an hour.
   sveArgs=(--size 640x480 --pov-ref "+AM1 +A0.0 +R5")
+  samplesOnly=.
 fi
 # Speed against error: each timed run writes an 8-bit PNG, what users write (and what the
 # gallery comparison writes), and runs once: the target is on CPU time, which other work
@@ -112,6 +115,13 @@ if command -v povray >/dev/null; then
     --size "$showSize" --no-doc --out "$data/showcase-speed" examples/five-shapes.xml || true
   echo "bash bench/run.sh: speed against error" >&2
   bash bench/speed_vs_error.sh --lucent "$lucent" --out "$sve" "${sveArgs[@]}" "${sveScenes[@]}" || true
+  # POV-Ray's own sample scenes, those docs/pov-samples.md lists as imported (povray-examples,
+  # installed by scripts/install-bench-deps): the benchmark users would pick.
+  if [ -d /usr/share/doc/povray/examples ]; then
+    echo "bash bench/run.sh: the imported POV-Ray sample scenes against POV-Ray (320x240, one thread)" >&2
+    bash bench/pov_samples_speed.sh --lucent "$lucent" --only "$samplesOnly" \
+      --tsv "$data/pov-samples-speed.tsv" > "$work/samples.md" || true
+  fi
 fi
 
 # ---- plots ----
@@ -197,6 +207,18 @@ if [ -f "$ttsv" ]; then
   sveBeatenN=$(tail -n +2 "$ttsv" | awk -F'\t' '{ b += $2 } END { if (NR) print b }')
   sveUnansweredN=$(tail -n +2 "$ttsv" | awk -F'\t' '{ b += $4 } END { if (NR) print b }')
 fi
+# The sample scenes: the median CPU ratio, the count slower than POV-Ray, the lowest.
+stsvS=$data/pov-samples-speed.tsv
+samplesMedian="" samplesCount=0 samplesSlower="" samplesLow="" samplesLowName=""
+if [ -f "$stsvS" ] && [ "$(wc -l < "$stsvS")" -gt 1 ]; then
+  tail -n +2 "$stsvS" | sort -t$'\t' -k4,4g > "$work/samples-sorted.tsv"
+  samplesCount=$(wc -l < "$work/samples-sorted.tsv")
+  samplesMedian=$(cut -f4 "$work/samples-sorted.tsv" |
+    awk '{ v[NR] = $1 } END { if (NR % 2) printf "%.2f", v[(NR + 1) / 2]; else printf "%.2f", (v[NR / 2] + v[NR / 2 + 1]) / 2 }')
+  samplesSlower=$(awk -F'\t' '$4 < 1' "$work/samples-sorted.tsv" | wc -l)
+  samplesLow=$(head -1 "$work/samples-sorted.tsv" | cut -f4)
+  samplesLowName=$(head -1 "$work/samples-sorted.tsv" | cut -f1)
+fi
 startMs=$(awk -F'\t' '$1 == "render" {print $2}' "$data/startup.tsv" 2>/dev/null || true)
 expWall=$(awk -F'\t' '$1 == "repeats" {print $2}' "$data/expansion.tsv" 2>/dev/null || true)
 expCpu=$(awk -F'\t' '$1 == "repeats" {print $3}' "$data/expansion.tsv" 2>/dev/null || true)
@@ -233,6 +255,9 @@ s_shad=$(met "$shadow1" ">=" 0.8)
 s_sve1=$(met "${sveBeatenN:-n/a}" "<=" 0)
 s_sve2=$(met "${sveUnansweredN:-n/a}" "<=" 0)
 s_start=$(met "${startMs:-n/a}" "<=" 20)
+s_smed=$(met "${samplesMedian:-n/a}" ">=" 3)
+s_smin=$(met "${samplesLow:-n/a}" ">=" 1)
+samplesCmd="\`bash bench/pov_samples_speed.sh --lucent $B/cli/lucent --tsv OUT\`"
 showX=${showSize/x/×} galleryX=${gallerySize/x/×}
 
 {
@@ -243,6 +268,8 @@ showX=${showSize/x/×} galleryX=${gallerySize/x/×}
   echo "| the showcase at $showX, one sample, one thread each: CPU time at least 3× better than POV-Ray's on its export | ${showCpu:-n/a}× (${showTimes:-n/a}) | $showCmd | $s_show |"
   echo "| the gallery at $galleryX, whole process, one thread: median CPU ratio at least 3× | ${galleryMedian:-n/a}× (median of $galleryCount scenes) | $galleryCmd | $s_gmed |"
   echo "| the gallery at $galleryX: no scene slower than POV-Ray (lowest CPU ratio at least 1×) | ${slowRatio:-n/a}× (${slowName:-n/a}) | $galleryCmd | $s_gmin |"
+  echo "| the imported POV-Ray sample scenes at 320×240, one sample, whole process, one thread: median CPU ratio at least 3× | ${samplesMedian:-n/a}× (median of $samplesCount scenes) | $samplesCmd | $s_smed |"
+  echo "| the imported POV-Ray sample scenes: none slower than POV-Ray (lowest CPU ratio at least 1×) | ${samplesLow:-n/a}× (${samplesLowName:-n/a}; ${samplesSlower:-n/a} of $samplesCount below 1×) | $samplesCmd | $s_smin |"
   echo "| Embree, one thread, same rays: primary rays at least 0.9× | ${primary1}× | $embreeCmd | $s_prim |"
   echo "| Embree, one thread, same rays: shadow rays at least 0.8× | ${shadow1}× | $embreeCmd | $s_shad |"
   echo "| speed against error, CPU time, on glass, mirrors, light-area: no Lucent run beaten by a POV-Ray run both faster and more accurate | ${sveBeaten:-n/a} | $sveCmd | $s_sve1 |"
@@ -285,6 +312,18 @@ if { notMet "$s_sve1" || notMet "$s_sve2"; } && [ -f "$ttsv" ]; then
   for sc in $(tail -n +2 "$ttsv" | awk -F'\t' '$2 > 0 || $4 > 0 {print $1}'); do
     profile "Speed against error: $sc at ${sveSize/x/×}, 16 samples, one thread (a condition not met on this scene)" \
       "examples/gallery/$sc.xml" -w "${sveSize%x*}" -h "${sveSize#*x}" -s 16 -t 1
+  done
+fi
+# The ten sample scenes of the lowest CPU ratios, each rendered as it was timed (320x240, its
+# .ini, its middle frame, one sample, one thread), from a copy of its folder.
+if [ -f "$work/samples-sorted.tsv" ]; then
+  ex=/usr/share/doc/povray/examples
+  source bench/pov_samples_lib.sh
+  head -10 "$work/samples-sorted.tsv" | while IFS=$'\t' read -r rel lcpu pcpu r; do
+    sceneArgs "$ex/$rel"
+    rm -rf "$work/scene" && cp -r "$(dirname "$ex/$rel")" "$work/scene"
+    profile "Sample scene $rel at 320×240, one sample, one thread (${r}× POV-Ray's CPU time)" \
+      "$work/scene/$name" "${args[@]}" "${frameArgs[@]/--frame/--frames}" --allow-write "$work/scene" -s 1 -t 1
   done
 fi
 elapsed=$(( $(date +%s) - started ))
@@ -366,6 +405,12 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
   echo "## Speed against error"
   echo
   cat "$sve/speed-vs-error-data/summary.md" 2>/dev/null || echo "(not measured)"
+  echo
+  echo "## The imported POV-Ray sample scenes against POV-Ray (320×240, one sample, one thread)"
+  echo
+  cat "$work/samples.md" 2>/dev/null || echo "(not measured)"
+  echo
+  echo "Every scene: [pov-samples-speed.tsv](pov-samples-speed.tsv)."
   echo
   echo "## Start-up"
   echo
