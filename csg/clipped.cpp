@@ -8,10 +8,11 @@
 
 namespace lucent {
 
-Clipped::Clipped(std::unique_ptr<Shape> shape, std::vector<std::unique_ptr<Shape>> clips)
+Clipped::Clipped(std::unique_ptr<Shape> shape, std::vector<std::unique_ptr<Shape>> clips,
+                 const AABB& within)
     : shape_(std::move(shape)), clips_(std::move(clips)) {
   if (!shape_) throw std::invalid_argument("clipped_by without a shape");
-  bounds_ = shape_->bounds();
+  bounds_ = AABB::meet(shape_->bounds(), within);
   for (const auto& c : clips_) {
     if (!c || !c->isSolid()) throw std::invalid_argument("a clip must be a solid");
     // The kept surface lies inside every clip (POV-Ray takes the smaller box the same way).

@@ -16,7 +16,10 @@ namespace lucent {
 class Clipped final : public Shape {
  public:
   // `shape` and `clips` in world space, as a CSG node's children; every clip is a solid.
-  Clipped(std::unique_ptr<Shape> shape, std::vector<std::unique_ptr<Shape>> clips);
+  // `within`: a world box known to hold the clips' common part (found where their boxes
+  // are tighter than in the world's frame: scenegraph/flatten.cpp).
+  Clipped(std::unique_ptr<Shape> shape, std::vector<std::unique_ptr<Shape>> clips,
+          const AABB& within = AABB::everything());
 
   const char* kind() const override { return shape_->kind(); }
   AABB bounds() const override { return bounds_; }

@@ -1,5 +1,7 @@
 #include "aabb.h"
 
+#include <algorithm>
+
 namespace lucent {
 
 double AABB::surfaceArea() const {
@@ -32,7 +34,25 @@ Interval AABB::slab(const Ray& ray, const Vec3& invDir) const {
 
 AABB transformBounds(const Mat4& m, const AABB& b) {
   if (b.empty()) return b;
-  if (!b.isBounded()) return AABB::everything();
+  if (!b.isBounded()) {
+    // Interval arithmetic row by row, a zero entry leaving its (maybe infinite) input out:
+    // a half-space or an infinite cylinder stays bounded across its axis under a scale or a
+    // turn that keeps the axis, and under any other map it becomes unbounded where it must.
+    AABB out;
+    for (int i = 0; i < 3; ++i) {
+      double lo = m[3][i], hi = m[3][i];
+      for (int j = 0; j < 3; ++j) {
+        const double e = m[j][i];
+        if (e == 0.0) continue;
+        const double a = e * b.lo[j], c = e * b.hi[j];
+        lo += std::min(a, c);
+        hi += std::max(a, c);
+      }
+      out.lo[i] = lo;
+      out.hi[i] = hi;
+    }
+    return out;
+  }
   AABB out;
   for (int i = 0; i < 8; ++i) {
     Vec3 c((i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z);

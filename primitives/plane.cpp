@@ -16,6 +16,13 @@ Plane::Plane(const Vec3& unitNormal, double offset) : n_(unitNormal), offset_(of
     throw std::invalid_argument("plane: the normal must be a non-zero finite vector");
   n_ = unitNormal / len;  // the spec's normal is unit already; this only removes rounding
   planeTangents(n_, t1_, t2_);
+  // Inside is n·p < offset: along an axis (n = ±e_k) that is p_k < offset or p_k > −offset.
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    if (n_[i] != 0.0 || n_[j] != 0.0) continue;
+    if (n_[k] > 0.0) bounds_.hi[k] = offset_ / n_[k];
+    else bounds_.lo[k] = offset_ / n_[k];
+  }
 }
 
 bool Plane::intersect(const Ray& ray, Hit& hit) const {

@@ -25,7 +25,9 @@ class Plane final : public Shape {
   Plane(const Vec3& unitNormal, double offset);
 
   const char* kind() const override { return "plane"; }
-  AABB bounds() const override { return AABB::everything(); }
+  // Unbounded; a plane square to an axis bounds its half-space on that axis only, so a
+  // solid it cuts (a slab of a cylinder, in CSG or a clip) gets a finite box.
+  AABB bounds() const override { return bounds_; }
   bool isSolid() const override { return true; }
   bool intersect(const Ray& ray, Hit& hit) const override;
   void crossings(const Ray& ray, CrossingList& out) const override;
@@ -35,6 +37,7 @@ class Plane final : public Shape {
  private:
   Vec3 n_;
   double offset_;
+  AABB bounds_ = AABB::everything();
   Vec3 t1_, t2_;
 };
 

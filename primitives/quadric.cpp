@@ -4,6 +4,7 @@
 #include "quadratic.h"
 #include "span.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace lucent {
@@ -43,6 +44,38 @@ Quadric::Quadric(const QuadricCoefficients& q) {
         bounds_ = AABB{centre_ - half, centre_ + half};
       }
     }
+  } else {
+    boundCylinder();
+  }
+}
+
+// A quadric with no term in one coordinate (x² + y² − 1: a cylinder along z) whose section
+// across that axis is an ellipse: bounded across the axis as the ellipse, unbounded along
+// it. Clipped and intersected cylinders (POV-Ray's Cylinder_Z of shapes_old.inc) then get
+// a finite box from their other bounds.
+void Quadric::boundCylinder() {
+  for (int k = 0; k < 3; ++k) {
+    if (m_[k][0] != 0.0 || m_[k][1] != 0.0 || m_[k][2] != 0.0 || g_[k] != 0.0) continue;
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const double a = m_[i][i], b = m_[i][j], c = m_[j][j];
+    const double det = a * c - b * b;
+    if (!(a > 0.0 && det > 1e-12 * std::max(a, c) * std::max(a, c))) return;
+    // The section's centre and its extent, as the ellipsoid's in two dimensions.
+    const double ii = c / det, ij = -b / det, jj = a / det;  // the inverse of [[a b] [b c]]
+    const double ci = -0.5 * (ii * g_[i] + ij * g_[j]), cj = -0.5 * (ij * g_[i] + jj * g_[j]);
+    const double level = a * ci * ci + 2.0 * b * ci * cj + c * cj * cj - j_;
+    if (level <= 0.0) {
+      bounds_ = AABB();  // empty: Q ≥ 0 everywhere
+      return;
+    }
+    const double hi = std::sqrt(level * ii) * (1.0 + 1e-9),
+                 hj = std::sqrt(level * jj) * (1.0 + 1e-9);
+    bounds_ = AABB::everything();
+    bounds_.lo[i] = ci - hi;
+    bounds_.hi[i] = ci + hi;
+    bounds_.lo[j] = cj - hj;
+    bounds_.hi[j] = cj + hj;
+    return;
   }
 }
 

@@ -53,6 +53,8 @@ class Quadric final : public Shape {
   double j_ = 0.0;
   Vec3 centre_{0.0};  // where ∇Q = 0 when M is invertible, else the origin
   AABB bounds_ = AABB::everything();
+
+  void boundCylinder();
 };
 
 }  // namespace lucent

@@ -153,13 +153,28 @@ struct Builder {
     // The clip tests points of the (possibly inverted) surface, as POV-Ray's, and the bound
     // the ray before anything else; both are in the node's frame.
     const Transform world = nodeWorld(node, parentWorld);
+    const AABB within = node.clip.empty() ? AABB::everything() : clipBox(node.clip, world);
     for (size_t i = first; i < out.size(); ++i) {
       if (!node.clip.empty())
-        out[i].shape = std::make_unique<Clipped>(std::move(out[i].shape), solids(node.clip, world));
+        out[i].shape =
+            std::make_unique<Clipped>(std::move(out[i].shape), solids(node.clip, world), within);
       if (!node.bound.empty())
         out[i].shape =
             std::make_unique<Bounded>(std::move(out[i].shape), solids(node.bound, world));
     }
+  }
+
+  // A world box that holds the clips' common part, met in the clips' own frame: there a
+  // clip of planes square to the axes and an infinite cylinder along one (a slab of it) has
+  // a finite box, which the world's frame turns into an unbounded one when the object is
+  // rotated (POV-Ray's Helix of shapesq.inc, clipped by Cylinder_Z and two planes).
+  AABB clipBox(const std::vector<std::unique_ptr<Node>>& clip, const Transform& world) {
+    const size_t leavesBefore = leaves.size();  // these solids are only measured
+    AABB local = AABB::everything();
+    for (const auto& s : solids(clip, Transform())) local = AABB::meet(local, s->bounds());
+    leaves.erase(leaves.begin() + static_cast<std::ptrdiff_t>(leavesBefore), leaves.end());
+    if (!local.isBounded()) return AABB::everything();
+    return transformBounds(world.worldFromObject(), local);
   }
 
   // The solids of a <clip> or <bound>, each one shape (a union of its parts when it has

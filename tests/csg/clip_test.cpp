@@ -8,6 +8,7 @@
 #include "scenegraph/world.h"
 
 #include <catch2/catch.hpp>
+#include <glm/ext/matrix_transform.hpp>
 
 #include <cmath>
 
@@ -179,4 +180,64 @@ TEST_CASE("bound: in CSG a bounded solid the ray is turned from still counts ins
   REQUIRE(s.found);
   CHECK(s.t == Approx(5.25).epsilon(1e-12));
   checkNormal(s.ng, Vec3(0, 0, 1));
+}
+
+TEST_CASE("clip: an unbounded shape clipped to a turned slab of a cylinder gets a finite box",
+          "[csg][clip]") {
+  // POV-Ray's Helix (shapesq.inc): a quartic clipped by Cylinder_Z scaled by 2 and the slab
+  // 0 <= z <= 1.4142, then turned: only in the clip's own frame are the planes square to
+  // its axes, so the box is met there and carried to the world.
+  auto scene = parseClean(R"XML(
+    <poly order="4" transform="rotate-z(160) rotate-x(-90) translate(0 -2 5)"
+          coefficients="0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 -0.1666 0 1 0 0 0 0 0 0 0 0 0.5 0 -1 0 0 0 0 0">
+      <clip>
+        <quadric a="1 1 0" b="0 0 0" c="0 0 0" d="-1" transform="scale(2)"/>
+        <plane normal="0 0 1" offset="1.4142"/>
+        <plane normal="0 0 -1" offset="0"/>
+      </clip>
+    </poly>
+    <sphere center="0 -1.5 5" radius="0.1"/>)XML");
+  World world(*scene);
+  // Both in the tree (a lone object would be tested directly), the clipped quartic with the
+  // box of the slab's square [-2, 2]² x [0, 1.4142] turned by 160 degrees about z (half-width
+  // 2·(|cos 160°| + |sin 160°|)), turned about x (z to y) and moved.
+  REQUIRE(world.bvh().itemCount() == 2);
+  const AABB b = world.bvh().bounds();
+  REQUIRE(b.isBounded());
+  const double reach =
+      2.0 * (std::abs(std::cos(glm::radians(160.0))) + std::abs(std::sin(glm::radians(160.0))));
+  CHECK(b.lo.x >= -reach - 1e-6);
+  CHECK(b.hi.x <= reach + 1e-6);
+  CHECK(b.lo.y >= -2.0 - 1e-6);
+  CHECK(b.hi.y <= -2.0 + 1.4142 + 1e-6);
+  CHECK(b.lo.z >= 5.0 - reach - 1e-6);
+  CHECK(b.hi.z <= 5.0 + reach + 1e-6);
+  // The same object without the turn and the move: the same hits in its own frame as the
+  // turned one at the turned rays (the box changes where the search looks, not what it finds).
+  auto plain = parseClean(R"XML(
+    <poly order="4"
+          coefficients="0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 -0.1666 0 1 0 0 0 0 0 0 0 0 0.5 0 -1 0 0 0 0 0">
+      <clip>
+        <quadric a="1 1 0" b="0 0 0" c="0 0 0" d="-1" transform="scale(2)"/>
+        <plane normal="0 0 1" offset="1.4142"/>
+        <plane normal="0 0 -1" offset="0"/>
+      </clip>
+    </poly>)XML");
+  World plainWorld(*plain);
+  const Mat4 place = glm::translate(Mat4(1.0), Vec3(0, -2, 5)) *
+                     glm::rotate(Mat4(1.0), glm::radians(-90.0), Vec3(1, 0, 0)) *
+                     glm::rotate(Mat4(1.0), glm::radians(160.0), Vec3(0, 0, 1));
+  int hits = 0;
+  for (int i = 0; i < 21; ++i)
+    for (int j = 0; j < 21; ++j) {
+      const Vec3 o(-2.0 + 0.2 * i, 3.0, -1.0 + 0.1 * j);  // from above the slab, in its frame
+      const Vec3 d = glm::normalize(Vec3(0.1, -1.0, 0.05));
+      Seen own = look(plainWorld, Ray(o, d));
+      Seen turned = look(world, Ray(Vec3(place * Vec4(o, 1.0)), Vec3(place * Vec4(d, 0.0))));
+      REQUIRE(own.found == turned.found);
+      if (!own.found) continue;
+      ++hits;
+      CHECK(turned.t == Approx(own.t).epsilon(1e-9));
+    }
+  CHECK(hits > 20);
 }

@@ -3,7 +3,9 @@
 #include "primitives/aabb.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <glm/ext/matrix_transform.hpp>
+#include <limits>
 
 using namespace lucent;
 
@@ -126,4 +128,46 @@ TEST_CASE("box of a transformed box holds all eight corners", "[aabb]") {
   CHECK(b.lo == Vec3(0, 1, 2));
   CHECK(b.hi == Vec3(2, 3, 4));
   CHECK(unit.surfaceArea() == 24.0);
+}
+
+TEST_CASE("an unbounded box keeps its finite sides where the transform keeps the axes", "[aabb]") {
+  const double inf = std::numeric_limits<double>::infinity();
+  // The half-space z >= 0 and the infinite square column |x|, |y| <= 1.
+  const AABB half{Vec3(-inf, -inf, 0.0), Vec3(inf)};
+  const AABB column{Vec3(-1.0, -1.0, -inf), Vec3(1.0, 1.0, inf)};
+  // A scale and a translation: every side stays, scaled and moved.
+  Mat4 m = glm::translate(Mat4(1.0), Vec3(0, 0, 3)) * glm::scale(Mat4(1.0), Vec3(2.0));
+  AABB b = transformBounds(m, half);
+  CHECK(b.lo.z == 3.0);
+  CHECK(b.hi.z == inf);
+  CHECK(b.lo.x == -inf);
+  // An exact quarter turn about x (z to -y, y to z): the half-space becomes y <= 0.
+  Mat4 q(1.0);
+  q[1] = Vec4(0, 0, 1, 0);   // y -> z
+  q[2] = Vec4(0, -1, 0, 0);  // z -> -y
+  b = transformBounds(q, half);
+  CHECK(b.hi.y == 0.0);
+  CHECK(b.lo.y == -inf);
+  CHECK(b.lo.z == -inf);
+  CHECK(b.hi.z == inf);
+  // A turn about the column's own axis: bounded across it by the turned square.
+  b = transformBounds(glm::rotate(Mat4(1.0), glm::radians(30.0), Vec3(0, 0, 1)), column);
+  const double reach = std::cos(glm::radians(30.0)) + std::sin(glm::radians(30.0));
+  CHECK(b.hi.x == Approx(reach).epsilon(1e-15));
+  CHECK(b.lo.y == Approx(-reach).epsilon(1e-15));
+  CHECK(b.lo.z == -inf);
+  CHECK(b.hi.z == inf);
+  // A turn that tilts the axis (even by a rounding, as glm's quarter turn about x has
+  // 6e-17 for its cosine): unbounded where the infinite side now reaches, no NaN anywhere.
+  b = transformBounds(glm::rotate(Mat4(1.0), glm::radians(-90.0), Vec3(1, 0, 0)), column);
+  CHECK(b.lo.x == -1.0);
+  CHECK(b.hi.x == 1.0);
+  CHECK(b.lo.y == -inf);
+  CHECK(b.hi.y == inf);
+  CHECK(b.lo.z == -inf);
+  CHECK(b.hi.z == inf);
+  // A box unbounded everywhere stays so.
+  b = transformBounds(m, AABB::everything());
+  CHECK(b.lo == Vec3(-inf));
+  CHECK(b.hi == Vec3(inf));
 }

@@ -3,6 +3,7 @@
 #include "primitives/plane.h"
 
 #include <catch2/catch.hpp>
+#include <limits>
 
 using namespace lucent;
 using namespace lucent::test;
@@ -25,6 +26,25 @@ TEST_CASE("plane: distance, outward normal and unbounded bounds", "[primitives][
   Plane q(glm::normalize(Vec3(1, 1, 0)), std::sqrt(2.0));
   REQUIRE(q.intersect(Ray(Vec3(0.0), Vec3(1, 0, 0)), h));
   CHECK_THAT(h.t, WithinRel(2.0, 1e-15));
+}
+
+TEST_CASE("plane: square to an axis, its box bounds the half-space on that axis",
+          "[primitives][plane]") {
+  const double inf = std::numeric_limits<double>::infinity();
+  // y < 2: the box's top is y = 2, every other side unbounded.
+  AABB b = Plane(Vec3(0, 1, 0), 2.0).bounds();
+  CHECK(b.hi.y == 2.0);
+  CHECK(b.lo.y == -inf);
+  CHECK(b.lo.x == -inf);
+  CHECK(b.hi.z == inf);
+  // -z < 1.5, that is z > -1.5: the box's bottom.
+  b = Plane(Vec3(0, 0, -1), 1.5).bounds();
+  CHECK(b.lo.z == -1.5);
+  CHECK(b.hi.z == inf);
+  // A tilted plane bounds nothing.
+  b = Plane(glm::normalize(Vec3(1, 1, 0)), 1.0).bounds();
+  CHECK(b.lo == Vec3(-inf));
+  CHECK(b.hi == Vec3(inf));
 }
 
 TEST_CASE("plane: the half-space below is inside, crossings say so", "[primitives][plane]") {

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 
 using namespace lucent;
 
@@ -47,6 +48,29 @@ TEST_CASE("quadric: x² + y² + z² − r² is the sphere, hit for hit", "[primi
     CHECK(glm::length(nq - ns) < 1e-12);
   }
   CHECK(hits > 500);
+}
+
+TEST_CASE("quadric: a cylinder along an axis is bounded across it", "[primitives][quadric]") {
+  const double inf = std::numeric_limits<double>::infinity();
+  // x² + y² < 1, no term in z: the column |x|, |y| <= 1.
+  AABB b = Quadric({Vec3(1, 1, 0), Vec3(0.0), Vec3(0.0), -1.0}).bounds();
+  CHECK(b.lo.x == Approx(-1.0).margin(1e-8));
+  CHECK(b.hi.y == Approx(1.0).margin(1e-8));
+  CHECK(b.hi.x >= 1.0);
+  CHECK(b.lo.z == -inf);
+  CHECK(b.hi.z == inf);
+  // (y − 1)² / 4 + (z + 2)² < 1 written out, along x: y in [-1, 3], z in [-3, -1].
+  QuadricCoefficients c{Vec3(0.0, 0.25, 1.0), Vec3(0.0), Vec3(0.0, -0.5, 4.0), 0.25 + 4.0 - 1.0};
+  b = Quadric(c).bounds();
+  CHECK(b.lo.y == Approx(-1.0).margin(1e-8));
+  CHECK(b.hi.y == Approx(3.0).margin(1e-8));
+  CHECK(b.lo.z == Approx(-3.0).margin(1e-8));
+  CHECK(b.hi.z == Approx(-1.0).margin(1e-8));
+  CHECK(b.lo.x == -inf);
+  // A hyperbolic cylinder (x² − y² < 1) is bounded nowhere.
+  b = Quadric({Vec3(1, -1, 0), Vec3(0.0), Vec3(0.0), -1.0}).bounds();
+  CHECK_FALSE(std::isfinite(b.hi.x));
+  CHECK_FALSE(std::isfinite(b.hi.y));
 }
 
 TEST_CASE("quadric: an ellipsoid's box is exact", "[primitives][quadric]") {
