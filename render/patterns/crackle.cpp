@@ -69,16 +69,37 @@ Vec3 cellPoint(int x, int y, int z) {
   return Vec3(x + r[seed], y + r[seed + 1], z + r[seed + 2]);
 }
 
+// The 81 neighbours' points of the cube (fx, fy, fz), kept for the last cube this thread
+// asked about: the points a pixel's rays, a normal's slope samples and a tile's next pixel
+// ask about mostly lie in one cube, and finding its neighbours (a hash and three random
+// numbers each) was a third of a crackle's time (as POV-Ray keeps a cache of them too).
+const Vec3* neighbourPoints(int fx, int fy, int fz) {
+  struct Cache {
+    bool filled = false;
+    int x = 0, y = 0, z = 0;
+    Vec3 points[kCubes];
+  };
+  thread_local Cache cache;
+  if (!cache.filled || cache.x != fx || cache.y != fy || cache.z != fz) {
+    const CubeTable& cubes = cubeTable();
+    for (int i = 0; i < kCubes; ++i)
+      cache.points[i] =
+          cellPoint(fx + cubes.offset[i][0], fy + cubes.offset[i][1], fz + cubes.offset[i][2]);
+    cache.filled = true;
+    cache.x = fx;
+    cache.y = fy;
+    cache.z = fz;
+  }
+  return cache.points;
+}
+
 }  // namespace
 
 double patternRandom(int index) { return cellRandoms().value[index]; }
 
 void crackleCubePoints(const Vec3& p, Vec3 (&points)[kCrackleCubes]) {
-  const int fx = cellBelow(p.x), fy = cellBelow(p.y), fz = cellBelow(p.z);
-  const CubeTable& cubes = cubeTable();
-  for (int i = 0; i < kCubes; ++i)
-    points[i] =
-        cellPoint(fx + cubes.offset[i][0], fy + cubes.offset[i][1], fz + cubes.offset[i][2]);
+  const Vec3* cached = neighbourPoints(cellBelow(p.x), cellBelow(p.y), cellBelow(p.z));
+  std::copy(cached, cached + kCubes, points);
 }
 
 double crackleValue(const Vec3& p, const CrackleParams& crackle, int generator) {
@@ -86,12 +107,10 @@ double crackleValue(const Vec3& p, const CrackleParams& crackle, int generator) 
   const double offset = crackle.offset;
   const bool square = metric == 2;
   const bool unity = metric == 1;
-  const int fx = cellBelow(p.x), fy = cellBelow(p.y), fz = cellBelow(p.z);
-  const CubeTable& cubes = cubeTable();
+  const Vec3* points = neighbourPoints(cellBelow(p.x), cellBelow(p.y), cellBelow(p.z));
 
   auto distance = [&](int i) {
-    const Vec3 c =
-        cellPoint(fx + cubes.offset[i][0], fy + cubes.offset[i][1], fz + cubes.offset[i][2]);
+    const Vec3& c = points[i];
     const Vec3 d(c.x - p.x, c.y - p.y, c.z - p.z);
     if (square) return d.x * d.x + d.y * d.y + d.z * d.z;
     if (unity) return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
@@ -136,9 +155,7 @@ double crackleValue(const Vec3& p, const CrackleParams& crackle, int generator) 
   const Vec3& form = crackle.form;
   double value;
   if (crackle.solid) {
-    const Vec3 c = cellPoint(fx + cubes.offset[nearest][0], fy + cubes.offset[nearest][1],
-                             fz + cubes.offset[nearest][2]);
-    value = noise(c, generator);
+    value = noise(points[nearest], generator);
   } else if (square) {
     value = form.x * std::sqrt(min1) + form.y * std::sqrt(min2) + form.z * std::sqrt(min3);
   } else if (unity) {
