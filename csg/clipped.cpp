@@ -4,6 +4,7 @@
 #include "csg_scratch.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace lucent {
@@ -26,8 +27,18 @@ bool Clipped::inClips(const Vec3& p) const {
 
 bool Clipped::firstKept(const Ray& ray, Hit& hit) const {
   // The shape's hits one after another, from the nearest, until one lies inside the clips
-  // (POV-Ray tests each intersection point of a clipped object the same way).
+  // (POV-Ray tests each intersection point of a clipped object the same way). A kept hit
+  // lies in the clips' box, so the search is held to the ray's stretch through it, widened
+  // by a margin against rounding: an unbounded shape (a quartic) then solves for its roots
+  // in that stretch instead of along the whole line.
   Ray r = ray;
+  if (bounds_.isBounded()) {
+    const Interval in = bounds_.slab(ray, Vec3(1.0) / ray.d);
+    if (in.empty()) return false;
+    const double margin = 1e-9 * (std::abs(in.lo) + std::abs(in.hi)) + 1e-300;
+    r.tmin = std::max(ray.tmin, in.lo - margin);
+    r.tmax = std::min(ray.tmax, in.hi + margin);
+  }
   Hit h;
   while (shape_->intersect(r, h)) {
     if (inClips(ray.at(h.t))) {
