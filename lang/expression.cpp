@@ -1,5 +1,7 @@
 #include "expression.h"
 
+#include "scenegraph/internal_functions.h"
+
 #include "did_you_mean.h"
 #include "expression_functions.h"
 #include "pigment_call.h"
@@ -65,6 +67,8 @@ bool isFunction(std::string_view name) {
 }
 
 std::string arity(std::string_view fn) {
+  if (const InternalFunction* f = internalFunctionNamed(fn))
+    return std::to_string(f->params) + " arguments";
   if (fn == "atan2" || fn == "pow" || fn == "random") return "2 arguments";
   if (fn == "clamp" || fn == "mix") return "3 arguments";
   if (fn == "min" || fn == "max") return "1 or more arguments";

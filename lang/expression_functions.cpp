@@ -1,5 +1,7 @@
 #include "expression_functions.h"
 
+#include "scenegraph/internal_functions.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -136,8 +138,35 @@ constexpr char kSin[] = "sin", kCos[] = "cos", kTan[] = "tan", kAsin[] = "asin",
                kPow[] = "pow", kClamp[] = "clamp", kMix[] = "mix", kRadians[] = "radians",
                kDegrees[] = "degrees", kRandom[] = "random";
 
+// One of POV-Ray's internal functions (functions.inc's f_sphere...) that Lucent evaluates in
+// closed form, called with its arguments (muParser hands the function's table row back).
+template <bool Twin, class... D>
+double internalCall(void* row, D... a) {
+  const auto* f = static_cast<const InternalFunction*>(row);
+  const double p[] = {a...};
+  const double r = f->evaluate(p);
+  noteFunction<Twin>(f->name, {a...}, r);
+  return r;
+}
+template <size_t, class T>
+using Same = T;
+template <bool Twin, size_t... I>
+void defineInternal(mu::Parser& p, const std::string& name, const InternalFunction* f,
+                    std::index_sequence<I...>) {
+  p.DefineFunUserData(name, internalCall<Twin, Same<I, double>...>,
+                      const_cast<InternalFunction*>(f));
+}
+template <bool Twin, size_t N = 1>
+void defineInternalOfArity(mu::Parser& p, const std::string& name, const InternalFunction* f) {
+  if (static_cast<size_t>(f->params) == N)
+    defineInternal<Twin>(p, name, f, std::make_index_sequence<N>{});
+  else if constexpr (N < 10) defineInternalOfArity<Twin, N + 1>(p, name, f);
+}
+
 template <bool Twin>
 void defineFunctions(mu::Parser& p, const std::string& prefix) {
+  for (const InternalFunction* f : evaluatedInternalFunctions())
+    defineInternalOfArity<Twin>(p, prefix + f->name, f);
   p.DefineFun(prefix + kSin, fun1<fSin, kSin, Twin>);
   p.DefineFun(prefix + kCos, fun1<fCos, kCos, Twin>);
   p.DefineFun(prefix + kTan, fun1<fTan, kTan, Twin>);
@@ -219,10 +248,15 @@ const std::vector<OperatorTwin>& faultingOperators() {
 }
 
 const std::vector<std::string_view>& expressionFunctionNames() {
-  static const std::vector<std::string_view> names{
-      "sin", "cos",   "tan",  "asin",  "acos", "atan",    "atan2",   "sqrt",  "exp",
-      "ln",  "log10", "log2", "abs",   "sign", "floor",   "ceil",    "round", "trunc",
-      "pow", "min",   "max",  "clamp", "mix",  "radians", "degrees", "random"};
+  static const std::vector<std::string_view> names = [] {
+    std::vector<std::string_view> v{"sin",   "cos",  "tan",     "asin",    "acos",  "atan", "atan2",
+                                    "sqrt",  "exp",  "ln",      "log10",   "log2",  "abs",  "sign",
+                                    "floor", "ceil", "round",   "trunc",   "pow",   "min",  "max",
+                                    "clamp", "mix",  "radians", "degrees", "random"};
+    // POV-Ray's functions.inc functions that Lucent evaluates (f_sphere, f_rounded_box...).
+    for (const InternalFunction* f : evaluatedInternalFunctions()) v.emplace_back(f->name);
+    return v;
+  }();
   return names;
 }
 

@@ -1,5 +1,7 @@
 #include "pov_function.h"
 
+#include "scenegraph/internal_functions.h"
+
 #include <cctype>
 #include <stdexcept>
 
@@ -139,11 +141,21 @@ class Writer {
         if (n == name) return p(number_(v));
       throw std::runtime_error("unknown name " + name);
     }
-    std::vector<std::string> a;
+    std::vector<std::string> a, raw;  // each argument translated, and as written
     if (!eat(")")) {
-      do a.push_back(ternary());
-      while (eat(","));
+      do {
+        skip();
+        const size_t from = i_;
+        a.push_back(ternary());
+        raw.push_back("(" + t_.substr(from, i_ - from) + ")");
+      } while (eat(","));
       if (!eat(")")) throw std::runtime_error("')' expected");
+    }
+    // One of POV-Ray's internal functions (f_rounded_box...): its closed form written out,
+    // so the exported scene needs no functions.inc.
+    if (const InternalFunction* in = internalFunctionNamed(name)) {
+      const std::string formula = internalFormula(*in, raw);
+      return p(Writer(formula, c_, number_, pigments_).all());
     }
     return call(name, a);
   }

@@ -1,7 +1,7 @@
 // Evaluating a function's tree as POV-Ray 3.7's function machine does (function.h).
 #include "function.h"
 
-#include "internal_functions.h"
+#include "scenegraph/internal_functions.h"
 #include "spline.h"
 
 #include <climits>

@@ -7,7 +7,7 @@
 // folded as POV-Ray folds them, and `a / c` and `pow(a, c)` are computed as POV-Ray's
 // compiler writes them (a * (1/c); products for c = 2..8), so that a call gives POV-Ray's
 // number to the last bit.
-#include "internal_functions.h"
+#include "scenegraph/internal_functions.h"
 #include "token_stream.h"
 
 #include <cmath>

@@ -5,7 +5,7 @@
 // formulas (internal_functions.h).
 #include "function.h"
 
-#include "internal_functions.h"
+#include "scenegraph/internal_functions.h"
 #include "spline.h"
 
 #include "lang/expression.h"
@@ -38,9 +38,13 @@ class TextWriter {
                                     " is a spline function, which Lucent cannot evaluate in an "
                                     "isosurface or a function pattern");
       case FunctionValue::Kind::Internal: {
+        // A call of the expression language's function of the same name (the closed form,
+        // evaluated natively: docs/scene-language.md).
         const InternalFunction* in = internalFunction(f.internal);
-        if (!in || !in->text) throw FunctionError(at, internalRefusal(f.internal));
-        return checked(substitute(in->text, args), at);
+        if (!in || !in->text || !in->evaluate) throw FunctionError(at, internalRefusal(f.internal));
+        std::string call = std::string(in->name) + "(";
+        for (size_t k = 0; k < args.size(); ++k) call += (k ? ", " : "") + args[k];
+        return checked(call + ")", at);
       }
       case FunctionValue::Kind::Expression:
         break;
@@ -166,37 +170,6 @@ class TextWriter {
       default:
         return std::string(fnMathName(m)) + "(" + x + ")";
     }
-  }
-
-  // `text` with $0..$9, and the words X, Y, Z, X2, Y2, Z2, P0..P9, replaced by the
-  // arguments (internal_functions.h).
-  static std::string substitute(const char* text, const std::vector<std::string>& args) {
-    std::string out;
-    for (const char* c = text; *c;) {
-      if (*c == '$' && c[1] >= '0' && c[1] <= '9') {
-        out += args[static_cast<size_t>(c[1] - '0')];
-        c += 2;
-        continue;
-      }
-      if (!std::isalpha(static_cast<unsigned char>(*c))) {
-        out += *c++;
-        continue;
-      }
-      const char* end = c;
-      while (std::isalnum(static_cast<unsigned char>(*end)) || *end == '_') ++end;
-      const std::string word(c, end);
-      c = end;
-      if (word.size() <= 2 && (word[0] == 'X' || word[0] == 'Y' || word[0] == 'Z')) {
-        const std::string& a = args[static_cast<size_t>(word[0] - 'X')];
-        out += word.size() == 1 ? a : "(" + a + "*" + a + ")";
-      } else if (word.size() == 2 && word[0] == 'P' &&
-                 std::isdigit(static_cast<unsigned char>(word[1]))) {
-        out += args[static_cast<size_t>(3 + word[1] - '0')];
-      } else {
-        out += word;
-      }
-    }
-    return out;
   }
 
   // `name(x, y, z)`, the name listed once per pigment function and component.

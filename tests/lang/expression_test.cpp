@@ -469,3 +469,17 @@ TEST_CASE("expressions: the check above would catch a lattice and a biased gener
   Sample skewed = sample([](int k) { return std::pow(sceneRandom(7, k), 1.02); });
   CHECK(skewed.chiSquare > 182.0);
 }
+
+TEST_CASE("expressions: POV-Ray's functions.inc functions, by name, at POV-Ray's values",
+          "[lang][expression]") {
+  // f_sphere: |p| - r; f_torus: the distance to the ring less the minor radius;
+  // f_rounded_box: the distance to the box shrunk by r, less r (and POV-Ray's 1e-6).
+  CHECK(near(eval("f_sphere(3, 4, 0, 2)"), 3.0));
+  CHECK(near(eval("f_torus(3, 0, 0, 2, 0.5)"), 0.5));
+  CHECK(near(eval("f_rounded_box(2, 0, 0, 0.1, 1, 1, 1)"), (2.0 - 0.9) - 0.1 - 1e-6));
+  CHECK(near(eval("f_r(1, 2, 2)"), 3.0));
+  // The wrong number of arguments, a misspelt name and a name used as a value.
+  CHECK(sub("${f_sphere(1, 2, 3)}").rfind("error: ", 0) == 0);
+  CHECK(sub("${f_spher(1, 2, 3, 4)}").find("did you mean 'f_sphere'") != std::string::npos);
+  CHECK(sub("${f_sphere + 1}").find("'f_sphere' is a function") != std::string::npos);
+}

@@ -163,4 +163,11 @@ TEST_CASE("isosurface scene: the function is written in POV-Ray's function synta
   CHECK(pov("1.5e-3 * x <= 2") == "((0.0015 * x) <= 2)");
   CHECK_FALSE(povFunctionText("random(1, x)", {}, number, problem));
   CHECK(problem.find("random() has no POV-Ray") != std::string::npos);
+  // functions.inc's functions are written out as their formulas, each argument in
+  // parentheses where the formula names it: no functions.inc needed.
+  CHECK(pov("f_sphere(x, y, z*2, 0.5)") ==
+        "((((-(0.5)) + sqrt(((((x) * (x)) + ((y) * (y))) + (((z * 2)) * ((z * 2))))))))");
+  CHECK(pov("f_torus(x, y, z, 1, 0.25)") ==
+        "((((-(0.25)) + sqrt((pow(((sqrt((((x) * (x)) + ((z) * (z)))) - (1))), 2) + ((y) * "
+        "(y)))))))");
 }

@@ -6,8 +6,8 @@
 
 #include "sdl_test_support.h"
 
+#include "scenegraph/internal_functions.h"
 #include "sdl/function.h"
-#include "sdl/internal_functions.h"
 
 #include "lang/expression.h"
 #include "lang/expression_field.h"
@@ -148,7 +148,13 @@ TEST_CASE("sdl function: each internal formula's Lucent text gives its C++ value
     f.internal = n;
     std::vector<std::string> args = {"x", "y", "z"};
     for (int i = 3; i < in->params; ++i) args.push_back(params[i - 3]);
-    const std::string text = functionText(f, args);
+    // The importer writes a call of the expression language's function of that name; the
+    // formula is what export-pov writes out.
+    const std::string call = functionText(f, args);
+    std::string wantCall = std::string(in->name) + "(";
+    for (size_t i = 0; i < args.size(); ++i) wantCall += (i ? ", " : "") + args[i];
+    CHECK(call == wantCall + ")");
+    const std::string text = internalFormula(*in, args);
     struct NoNames : ExpressionNames {
       std::optional<double> number(std::string_view, std::string& e, bool& known) override {
         known = false;
@@ -161,11 +167,15 @@ TEST_CASE("sdl function: each internal formula's Lucent text gives its C++ value
     auto compiled = compileFunction(text, {"x", "y", "z"}, names, problem);
     INFO(text << " " << problem.message);
     REQUIRE(compiled);
+    auto compiledCall = compileFunction(call, {"x", "y", "z"}, names, problem);
+    REQUIRE(compiledCall);
     auto field = makeExpressionField(*compiled);
+    auto callField = makeExpressionField(*compiledCall);
     for (const auto& p : points) {
       double all[10] = {p[0], p[1], p[2]};
       for (int i = 3; i < in->params; ++i) all[i] = values[i - 3];
       CHECK(field->value(Vec3(p[0], p[1], p[2])) == Approx(in->evaluate(all)).margin(1e-12));
+      CHECK(callField->value(Vec3(p[0], p[1], p[2])) == in->evaluate(all));
     }
     ++checked;
   }
@@ -180,7 +190,7 @@ TEST_CASE("sdl function: an isosurface's text inlines user functions", "[sdl][fu
                  "F");
   REQUIRE(v.type == ValueType::Function);
   CHECK(functionText(*v.function, {"x", "y", "(-z)"}) ==
-        "((((x * (y < 0 ? 1 : (-z))) - 0.5)) + ((-2 + sqrt(x*x + y*y + (-z)*(-z)))))");
+        "((((x * (y < 0 ? 1 : (-z))) - 0.5)) + (f_sphere(x, y, (-z), 2)))");
 }
 
 TEST_CASE("sdl function: errors are located inside the function's text", "[sdl][function]") {

@@ -1,8 +1,9 @@
 #include "internal_functions.h"
 
+#include <cctype>
 #include <cmath>
 
-namespace lucent::sdl {
+namespace lucent {
 
 namespace {
 
@@ -275,4 +276,49 @@ std::string internalRefusal(int n) {
          "docs/povray-import.md are)";
 }
 
-}  // namespace lucent::sdl
+const InternalFunction* internalFunctionNamed(std::string_view name) {
+  for (int n = 0; const InternalFunction* f = internalFunction(n); ++n)
+    if (name == f->name) return f;
+  return nullptr;
+}
+
+const std::vector<const InternalFunction*>& evaluatedInternalFunctions() {
+  static const std::vector<const InternalFunction*> all = [] {
+    std::vector<const InternalFunction*> v;
+    for (int n = 0; const InternalFunction* f = internalFunction(n); ++n)
+      if (f->evaluate && f->text) v.push_back(f);
+    return v;
+  }();
+  return all;
+}
+
+std::string internalFormula(const InternalFunction& f, const std::vector<std::string>& args) {
+  std::string out;
+  for (const char* c = f.text; *c;) {
+    if (*c == '$' && c[1] >= '0' && c[1] <= '9') {
+      out += args[static_cast<size_t>(c[1] - '0')];
+      c += 2;
+      continue;
+    }
+    if (!std::isalpha(static_cast<unsigned char>(*c))) {
+      out += *c++;
+      continue;
+    }
+    const char* end = c;
+    while (std::isalnum(static_cast<unsigned char>(*end)) || *end == '_') ++end;
+    const std::string word(c, end);
+    c = end;
+    if (word.size() <= 2 && (word[0] == 'X' || word[0] == 'Y' || word[0] == 'Z')) {
+      const std::string& a = args[static_cast<size_t>(word[0] - 'X')];
+      out += word.size() == 1 ? a : "(" + a + "*" + a + ")";
+    } else if (word.size() == 2 && word[0] == 'P' &&
+               std::isdigit(static_cast<unsigned char>(word[1]))) {
+      out += args[static_cast<size_t>(3 + word[1] - '0')];
+    } else {
+      out += word;
+    }
+  }
+  return out;
+}
+
+}  // namespace lucent

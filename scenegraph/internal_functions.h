@@ -7,8 +7,10 @@
 #pragma once
 
 #include <string>
+#include <string_view>
+#include <vector>
 
-namespace lucent::sdl {
+namespace lucent {
 
 // internal(76), f_noise3d: POV-Ray's noise at the point (a pattern function of bozo).
 inline constexpr int kNoise3d = 76;
@@ -30,4 +32,15 @@ const InternalFunction* internalFunction(int n);
 // Why internal function N cannot be evaluated (it has no closed form here).
 std::string internalRefusal(int n);
 
-}  // namespace lucent::sdl
+// The internal function named `name` (f_sphere...), or null.
+const InternalFunction* internalFunctionNamed(std::string_view name);
+
+// The internal functions Lucent evaluates in closed form, in POV-Ray's order: the
+// functions of the expression language by these names (docs/scene-language.md).
+const std::vector<const InternalFunction*>& evaluatedInternalFunctions();
+
+// The function's formula as Lucent expression text, its $0..$9 and the words X, Y, Z, X2,
+// Y2, Z2, P0..P9 replaced by the argument texts (each parenthesised by the caller).
+std::string internalFormula(const InternalFunction& f, const std::vector<std::string>& args);
+
+}  // namespace lucent
