@@ -1,8 +1,7 @@
 // Hand-written POV-Ray 3.7 twin of image-palette-entries.xml (written from POV-Ray's
 // documentation, not exported). Lucent's <palette index="N" filter="F" transmit="T"> is
 // POV-Ray's image_map `filter N, F` and `transmit N, T`; its image's transmit is `transmit all`.
-// The image's own tRNS transparency is overridden entry by entry, as the XML gives each of
-// those entries a transmit (Lucent does not read it). Images decoded from sRGB as Lucent's.
+// Images decoded from sRGB as Lucent's.
 #version 3.7;
 global_settings { assumed_gamma 1.0 ambient_light rgb 1 max_trace_level 5 adc_bailout 0.0039 }
 
@@ -18,7 +17,7 @@ camera {
 light_source { <-3, 6, 6> color rgb 1 }
 light_source { <3, 3, 5> color rgb 0.3 }
 
-#declare Emblem = "textures/emblem.png";
+#declare Emblem = "textures/emblem_opaque.png";
 #declare Lit = finish { ambient 0.3 diffuse 0.7 specular 0 phong 0 reflection 0 }
 #macro Quad(A, B, C, D) mesh { triangle { A, B, C } triangle { A, C, D } #end
 
@@ -28,7 +27,7 @@ Quad(<-5, -1, -1.5>, <5, -1, -1.5>, <5, 4, -1.5>, <-5, 4, -1.5>)
 }
 // Left: the background clear, the star a coloured filter.
 Quad(<-3.2, 0.2, 0>, <-1.2, 0.2, 0>, <-1.2, 2.2, 0>, <-3.2, 2.2, 0>)
-  pigment { image_map { png Emblem gamma srgb transmit 0, 1 filter 8, 0.75 transmit 8, 0 filter 9, 0.75 transmit 9, 0 filter 10, 0.75 transmit 10, 0 filter 11, 0.75 transmit 11, 0 filter 12, 0.75 transmit 12, 0 filter 13, 0.75 transmit 13, 0 filter 14, 0.75 transmit 14, 0 filter 15, 0.75 transmit 15, 0 }
+  pigment { image_map { png Emblem gamma srgb transmit 0, 1 filter 8, 0.75 filter 9, 0.75 filter 10, 0.75 filter 11, 0.75 filter 12, 0.75 filter 13, 0.75 filter 14, 0.75 filter 15, 0.75 }
     scale 2 translate <-3.2, 0.2, 0> }
   finish { Lit }
 }
@@ -40,7 +39,7 @@ sphere { <0, 1.1, 0>, 0.9
 }
 // Right: the ring filtering, read bilinearly; the background half clear.
 Quad(<1.2, 0.2, 0>, <3.2, 0.2, 0>, <3.2, 2.2, 0>, <1.2, 2.2, 0>)
-  pigment { image_map { png Emblem gamma srgb interpolate 2 transmit 0, 0.5 filter 1, 0.8 filter 2, 0.8 filter 3, 0.8 filter 4, 0.8 filter 5, 0.8 filter 6, 0.8 filter 7, 0.8 transmit 8, 0 transmit 9, 0 transmit 10, 0 transmit 11, 0 transmit 12, 0 transmit 13, 0 transmit 14, 0 transmit 15, 0 }
+  pigment { image_map { png Emblem gamma srgb interpolate 2 transmit 0, 0.5 filter 1, 0.8 filter 2, 0.8 filter 3, 0.8 filter 4, 0.8 filter 5, 0.8 filter 6, 0.8 filter 7, 0.8 }
     scale 2 translate <1.2, 0.2, 0> }
   finish { Lit }
 }

@@ -56,20 +56,17 @@ mesh2 {
   }
   rotate y*-35 translate <1.9, 0.01, -0.3>
 }
-// The box: leopard spots bending the world normal, a uv-mapped checker as a map's entry.
-// Lucent takes a box's (u, v) in the importer's space (z negated): the box is mirrored in z
-// before its texture, which POV-Ray's cube map then reads as Lucent does.
-box { <-0.6, 0, -0.6>, <0.6, 1.2, 0.6>
-  matrix <1, 0, 0, 0, 1, 0, 0, 0, -1, 0, 0, 0>
+// The middle panel: a uv-mapped checker as a map's entry.
+mesh2 {
+  Quad(<-0.8, 0, 0>, <0.8, 0, 0>, <0.8, 1.6, 0>, <-0.8, 1.6, 0>, <0, 0>, <1, 0>, <1, 1>, <0, 1>)
   texture {
     pigment { gradient x
       pigment_map {
-        [0.35 uv_mapping checker rgb <0.9, 0.8, 0.2>, rgb <0.15, 0.25, 0.6> scale 0.0625 translate <0, 0, 0.5>]
+        [0.35 uv_mapping checker rgb <0.9, 0.8, 0.2>, rgb <0.15, 0.25, 0.6> scale 0.125 translate <0, 0, 0.5>]
         [0.65 rgb <0.8, 0.3, 0.25>]
       }
-      scale 1.2 translate <-0.6, 0, 0> }
-    normal { uv_mapping leopard 1.5 scale 0.03 }
+      scale 1.6 translate <-0.8, 0, 0> }
     finish { ambient 0.2 diffuse 1 phong 0.4 phong_size 30 specular 0 reflection 0 }
   }
-  rotate y*30 translate <0, 0.01, 0.9>
+  rotate x*-10 translate <0, 0.01, 0.6>
 }
