@@ -318,7 +318,8 @@ void SceneReader::readPaletteEntry(const Token& k, bool transmit, TokenStream& i
   auto entry = std::find_if(image.palette.begin(), image.palette.end(),
                             [&](const PaletteEntryFT& e) { return e.index == index; });
   if (entry == image.palette.end())
-    entry = image.palette.insert(image.palette.end(), PaletteEntryFT{index, std::nullopt, std::nullopt});
+    entry = image.palette.insert(image.palette.end(),
+                                 PaletteEntryFT{index, std::nullopt, std::nullopt});
   (transmit ? entry->transmit : entry->filter) = amount;
 }
 
