@@ -57,7 +57,10 @@ std::shared_ptr<const ImageValueGrid> readPng(const std::string& path, ValueRead
   const int n = png.channels;
   const float top = png.sixteenBit ? 65535.0f : 255.0f;
   const bool holdsTransparency = png.palette || n == 2 || n == 4;
-  if (png.palette) grid->indices.resize(count);
+  if (png.palette) {
+    grid->indices.resize(count);
+    grid->paletteSize = static_cast<int>(png.paletteColours.size());
+  }
   for (size_t i = 0; i < count; ++i) {
     const std::uint16_t* v = &png.values[i * n];
     Pixel p{};
@@ -128,7 +131,7 @@ std::shared_ptr<const ImageValueGrid> readImagePatternValues(const std::string& 
   return isPngFile(path) ? readPng(path, read) : readThroughPlugin(path, read);
 }
 
-std::shared_ptr<const ImageValueGrid> bumpIndices(const std::string& path) {
+std::shared_ptr<const ImageValueGrid> paletteIndices(const std::string& path) {
   if (!isPngFile(path)) return nullptr;  // Lucent reads palettes of PNGs only
   auto grid = readPng(path, ValueRead::red);
   return grid->indices.empty() ? nullptr : grid;

@@ -28,6 +28,7 @@ struct ImageValueGrid {
   int height = 0;
   std::vector<float> values;
   std::vector<std::uint8_t> indices;
+  int paletteSize = 0;  // the palette's entries (0 without one)
   float at(int x, int y) const { return values[static_cast<size_t>(y) * width + x]; }
 };
 
@@ -43,8 +44,9 @@ std::shared_ptr<const ImageValueGrid> readImagePatternValues(const std::string& 
 // image's grey), whose value times 255 gives the material number where there is no palette.
 std::shared_ptr<const ImageValueGrid> readImageIndexValues(const std::string& path);
 
-// A bump map's palette indices for use_index: the grid of a palette image, null for an image
-// without a palette (whose grey levels POV-Ray reads then).
-std::shared_ptr<const ImageValueGrid> bumpIndices(const std::string& path);
+// A palette image's indices (a bump map's heights with use_index, an image map's entries
+// with their own filter and transmit): the grid of a palette PNG, null for an image
+// without a palette (whose grey levels a bump map reads then).
+std::shared_ptr<const ImageValueGrid> paletteIndices(const std::string& path);
 
 }  // namespace lucent

@@ -87,6 +87,10 @@ void parseCamera(ElementReader& r) {
     } else {
       normalLoc = child.loc();
       cam.normal = parseNormal(child);
+      if (cam.normal->bendInWorld)
+        child.attrError("bend-space",
+                        "bend-space is for a material's normal: a camera's normal bends the "
+                        "ray's direction");
     }
   });
   ctx.scene.cameras.push_back(std::move(cam));

@@ -13,6 +13,7 @@
 #include "scenegraph/image_pattern.h"
 #include "scenegraph/object_pattern.h"
 #include "texture_map_parser.h"
+#include "texture_parser.h"
 #include "warp_parser.h"
 
 #include "scenegraph/pavement.h"
@@ -112,8 +113,10 @@ void noChildren(ElementReader& r) {
 
 }  // namespace
 
-void noChildrenButWarps(ElementReader& r, ImageProjection projection) {
+void noChildrenButWarps(ElementReader& r, ImageProjection projection,
+                        std::string_view alsoAllowed) {
   r.forEachChild([&](pugi::xml_node n) {
+    if (!alsoAllowed.empty() && std::string_view(n.name()) == alsoAllowed) return;
     if (isWarpElement(n) && projection != ImageProjection::uv) return;  // the placement's
     ElementReader c(r.ctx(), r.file(), n);
     if (isWarpElement(n))
@@ -493,6 +496,7 @@ void parsePigmentChild(ElementReader& r, ElementReader& c, PatternSpec& s,
   }
   pigmentLoc = c.loc();
   s.pigment = parsePatternPigment(c);
+  refuseUvMapping(c, s.pigment->texture, "a pigment-pattern's pigment, evaluated at a point,");
   // Its value is taken at a pattern point, where an image's pixels are not at hand.
   if (textureHoldsImage(s.pigment->texture))
     c.error(
@@ -637,11 +641,22 @@ const std::vector<std::pair<std::string_view, NormalBlock>> kNormalBlocks{
     {"hexagon", NormalBlock::hexagon},
     {"brick", NormalBlock::brick}};
 
+// bend-space: where a uv-mapped normal is bent, the shape's object space (the default) or the
+// world.
+void parseBendSpace(ElementReader& r, NormalSpec& n) {
+  if (!r.has("bend-space")) return;
+  n.bendInWorld = r.choice("bend-space", false, {{"object", false}, {"world", true}});
+  if (n.bendInWorld && !n.pattern.placement.uv)
+    r.attrError("bend-space",
+                "bend-space=\"world\" is for a uv-mapped normal (mapping=\"uv\"): a normal read "
+                "at the object point is bent in its pattern space, reached from the object");
+}
+
 // <normal type="checker|hexagon|brick">: the placement, brick's size and mortar, and the
 // <normal-list> whose entries the cells pick, or without one a depth for the cells' slope.
 NormalSpec parseBlockNormal(ElementReader& r, NormalBlock block) {
   std::vector<std::string_view> allowed =
-      joined(kPlacementAttributes, {"type", "depth", "keep-facing-away", "accuracy"});
+      joined(kPlacementAttributes, {"type", "depth", "keep-facing-away", "accuracy", "bend-space"});
   if (block == NormalBlock::brick) allowed = joined(allowed, {"mortar", "size"});
   r.checkAttributes(allowed, [&](std::string_view a) -> std::string {
     if (a == "mortar" || a == "size") return "only a brick <normal> takes '" + std::string(a) + "'";
@@ -657,6 +672,7 @@ NormalSpec parseBlockNormal(ElementReader& r, NormalBlock block) {
   n.block = block;
   n.pattern.placement = parsePlacement(r);
   n.keepFacingAway = r.boolean("keep-facing-away", n.keepFacingAway);
+  parseBendSpace(r, n);
   n.brick.mortar = r.number("mortar", n.brick.mortar, NumberRule::nonNegative());
   const Vec3 size = r.vector("size", n.brick.size);
   if (size.x <= 0 || size.y <= 0 || size.z <= 0)
@@ -743,11 +759,11 @@ NormalSpec parseNormal(ElementReader& r) {
   for (const auto& [name, block] : kNormalBlocks)
     if (type == name) return parseBlockNormal(r, block);
   r.checkAttributes(joined(joined(kValueAttributes, kPlacementAttributes),
-                           {"depth", "keep-facing-away", "accuracy"}));
+                           {"depth", "keep-facing-away", "accuracy", "bend-space"}));
   NormalSpec n;
   if (type == "average") {
     // The weighted mean of its entries' normals, placed by the placement attributes.
-    r.checkAttributes(joined(kPlacementAttributes, {"type", "keep-facing-away"}),
+    r.checkAttributes(joined(kPlacementAttributes, {"type", "keep-facing-away", "bend-space"}),
                       [](std::string_view a) -> std::string {
                         for (std::string_view v : kValueAttributes)
                           if (a == v || a == "depth")
@@ -758,6 +774,7 @@ NormalSpec parseNormal(ElementReader& r) {
                       });
     n.pattern.placement = parsePlacement(r);
     n.keepFacingAway = r.boolean("keep-facing-away", n.keepFacingAway);
+    parseBendSpace(r, n);
     n.average = parseNormalAverage(r);
     return n;
   }
@@ -771,6 +788,7 @@ NormalSpec parseNormal(ElementReader& r) {
   n.depth = r.number("depth", n.depth);
   n.accuracy = r.number("accuracy", n.accuracy, NumberRule::positive());
   n.keepFacingAway = r.boolean("keep-facing-away", n.keepFacingAway);
+  parseBendSpace(r, n);
   parseNormalChildren(r, n);
   return n;
 }
@@ -818,7 +836,7 @@ BumpMapSpec parseBumpMap(ElementReader& r) {
   b.useIndex = r.boolean("use-index", false);
   if (b.useIndex && !b.path.empty()) {
     try {
-      b.indices = bumpIndices(b.path);
+      b.indices = paletteIndices(b.path);
     } catch (const std::exception& e) {  // ImageValuesError, ImagePluginError, a library's own
       r.attrError("src", "cannot read the bump map's palette indices: " + std::string(e.what()));
     }

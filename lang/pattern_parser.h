@@ -40,8 +40,10 @@ void parseImageReading(ElementReader& r, ImageProjection& projection, PatternPla
 // entries; an element with one must not have the attributes `colours` too.
 std::vector<TextureMapEntry> parseBlockPigments(ElementReader& r, size_t count,
                                                 const std::vector<std::string_view>& colours);
-// The child loop of <image> and <bump-map>: a projected one's <warp>s only.
-void noChildrenButWarps(ElementReader& r, ImageProjection projection);
+// The child loop of <image> and <bump-map>: a projected one's <warp>s only (and the
+// children named `alsoAllowed`, which the caller reads).
+void noChildrenButWarps(ElementReader& r, ImageProjection projection,
+                        std::string_view alsoAllowed = {});
 // <bump-map src depth>: src is resolved by the file-access rules, as <image>'s.
 BumpMapSpec parseBumpMap(ElementReader& r);
 

@@ -356,6 +356,7 @@ void writeBlockNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
   if (n.map.empty()) a.emplace_back("depth", xmlNumber(n.depth));
   if (n.accuracy != NormalSpec{}.accuracy) a.emplace_back("accuracy", xmlNumber(n.accuracy));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
+  if (n.bendInWorld) a.emplace_back("bend-space", "world");
   openPlaced(out, "normal", a, n.map.empty(), n.pattern.placement);
   if (n.map.empty()) return;
   writeNormalEntries("normal-list", n, false, loc, out, folder);
@@ -371,6 +372,8 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
     Attributes a{{"type", "average"}};
     addPlacement(n.pattern.placement, a);
     if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
+    if (n.bendInWorld) a.emplace_back("bend-space", "world");
+    if (n.bendInWorld) a.emplace_back("bend-space", "world");
     openPlaced(out, "normal", a, false, n.pattern.placement);
     for (const WeightedNormal& e : n.average) {
       out.open("entry", {{"weight", xmlNumber(e.weight)}}, false);
@@ -386,6 +389,7 @@ void writeNormal(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
   if (n.map.empty()) a.emplace_back("depth", xmlNumber(n.depth));
   if (n.accuracy != NormalSpec{}.accuracy) a.emplace_back("accuracy", xmlNumber(n.accuracy));
   if (n.keepFacingAway) a.emplace_back("keep-facing-away", "true");
+  if (n.bendInWorld) a.emplace_back("bend-space", "world");
   const bool children =
       !n.map.empty() || !n.slopeMap.empty() || n.pattern.type == PatternType::pigment;
   openPlaced(out, "normal", a, !children, n.pattern.placement);
@@ -427,8 +431,16 @@ void writeTexture(const Texture& texture, const SourceLoc& loc, XmlOut& out,
           addPlacement(t.placement, a);
           writeBlock(std::string(T::kind.element), a, t.placement, t.pigments, loc, out, folder);
         } else if constexpr (std::is_same_v<T, ImageTexture>) {
-          openPlaced(out, std::string(T::kind.element), imageAttributes(t, folder), true,
-                     t.placement);
+          const std::string element(T::kind.element);
+          openPlaced(out, element, imageAttributes(t, folder), t.palette.empty(), t.placement);
+          if (t.palette.empty()) return;
+          for (const PaletteEntryFT& e : t.palette) {
+            Attributes a{{"index", std::to_string(e.index)}};
+            if (e.filter) a.emplace_back("filter", xmlNumber(*e.filter));
+            if (e.transmit) a.emplace_back("transmit", xmlNumber(*e.transmit));
+            out.open("palette", a, true);
+          }
+          out.close(element);
         } else if constexpr (std::is_same_v<T, PatternTexture>) {
           if (t.pigments.empty()) return writePatternTexture(t, loc, out, folder);
           openPlaced(out, "pattern", patternAttributes(t.pattern, loc, folder), false,

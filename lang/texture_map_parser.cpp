@@ -66,8 +66,6 @@ TextureMapEntry parseEntry(ElementReader& e, EntryValue value) {
           "an <image> inside a map or a list of pigments needs a 'projection' (planar is "
           "POV-Ray's image_map's): an entry is read at its map's pattern point, which has no "
           "(u,v)");
-    refuseUvMapping(c, entry.texture,
-                    "an entry, evaluated at its map's pattern point in its map's space,");
   });
   if (!plain && !textureLoc && !e.failed())
     e.error(e.tag() +

@@ -6,6 +6,12 @@
 #include "pattern_parser.h"
 #include "texture_map_parser.h"
 
+#include "images/image_values_file.h"
+
+#include <fmt/core.h>
+
+#include <utility>
+
 namespace lucent {
 
 namespace {
@@ -34,6 +40,51 @@ void readImageProjection(ElementReader& t, ImageTexture& img) {
                 "'scale' is for an image at the shape's (u,v); a projected image "
                 "is placed by 'transform'");
   img.all = parseFilterTransmit(t, "");
+}
+
+// <image>'s <palette index filter transmit> children: a palette image's entries with their own
+// filter and transmit (POV-Ray's `filter N, F`, `transmit N, F`), and the image's palette
+// indices, read now (POV-Ray's errors for an image without a palette and an index past it).
+void readPaletteEntries(ElementReader& t, ImageTexture& img) {
+  std::vector<std::pair<PaletteEntryFT, pugi::xml_node>> entries;
+  t.forEachChild([&](pugi::xml_node n) {
+    if (std::string_view(n.name()) != "palette") return;
+    ElementReader e(t.ctx(), t.file(), n);
+    e.checkAttributes({"index", "filter", "transmit"});
+    if (!e.has("index")) return e.error("<palette> needs an 'index' (the palette entry's number)");
+    PaletteEntryFT entry;
+    entry.index = static_cast<int>(e.integer("index", 0, 0, 255));
+    if (auto f = e.optionalNumber("filter")) entry.filter = static_cast<float>(*f);
+    if (auto tr = e.optionalNumber("transmit")) entry.transmit = static_cast<float>(*tr);
+    if (!e.has("filter") && !e.has("transmit"))
+      return e.error("<palette> needs a 'filter' or a 'transmit' (the entry's own)");
+    for (const auto& [was, node] : entries)
+      if (was.index == entry.index)
+        return e.attrError("index", fmt::format("palette entry {} is given twice (line {})",
+                                                entry.index, t.file().loc(node).line));
+    entries.emplace_back(entry, n);
+  });
+  if (entries.empty() || img.path.empty()) return;
+  try {
+    img.paletteIndices = paletteIndices(img.path);
+  } catch (const std::exception& e) {  // ImageValuesError, a library's own
+    return t.attrError("src", "cannot read the image's palette: " + std::string(e.what()));
+  }
+  if (!img.paletteIndices)
+    return t.attrError("src",
+                       "<palette> entries need a palette image (a PNG with a palette, as "
+                       "POV-Ray's filter and transmit of an index need a colour-mapped image)");
+  const int size = img.paletteIndices->paletteSize;
+  for (const auto& [entry, node] : entries) {
+    if (entry.index < size) {
+      img.palette.push_back(entry);
+      continue;
+    }
+    ElementReader e(t.ctx(), t.file(), node);
+    e.attrError("index", fmt::format("palette index {} is past the image's palette of {} "
+                                     "entries (0 to {})",
+                                     entry.index, size, size - 1));
+  }
 }
 
 Texture readTexture(ElementReader& t, const ImageTexture*) {
@@ -65,7 +116,8 @@ Texture readTexture(ElementReader& t, const ImageTexture*) {
     }
   }
   readImageProjection(t, img);
-  noChildrenButWarps(t, img.projection);
+  readPaletteEntries(t, img);
+  noChildrenButWarps(t, img.projection, "palette");
   return img;
 }
 
@@ -102,9 +154,13 @@ Texture parseTexture(ElementReader& t) { return readKind(t, static_cast<const Te
 namespace lucent {
 
 void refuseUvMapping(ElementReader& t, const Texture& texture, const std::string& where) {
-  if (textureUvMapped(texture))
-    t.attrError("mapping", "mapping=\"uv\" is for a material's own texture, normal or map: " +
-                               where + " has no (u,v) of its own");
+  if (!textureUsesUv(texture)) return;
+  const std::string message =
+      "mapping=\"uv\" is for a surface's textures (a material's own, "
+      "its normal or map, and their entries): " +
+      where + " has no (u,v) of its own";
+  if (textureUvMapped(texture)) t.attrError("mapping", message);
+  else t.error(message + " (an entry of its maps says mapping=\"uv\")");
 }
 
 }  // namespace lucent

@@ -66,9 +66,9 @@ ImageFacts imageFacts(const std::string& path) {
   return f;
 }
 
-// `image_map { FORMAT "file" gamma map_type once interpolate filter all transmit all }`:
-// the material's filter and transmit added to the image's own (POV-Ray 3.7 adds `all` to
-// every pixel).
+// `image_map { FORMAT "file" gamma map_type once interpolate filter all transmit all
+// filter N, F ... }`: the material's filter and transmit added to the image's own (POV-Ray
+// 3.7 adds `all` to every pixel) and to its palette entries' own.
 std::string imageMapText(const ImageTexture& image, const std::string& format,
                          const ImageFacts& facts, int mapType, double filter, double transmit) {
   static const char* const kInterpolate[] = {"", " interpolate 2", " interpolate 3",
@@ -83,6 +83,15 @@ std::string imageMapText(const ImageTexture& image, const std::string& format,
   transmit += image.all.transmit;
   if (filter != 0.0) map += " filter all " + povFloat(filter);
   if (transmit != 0.0) map += " transmit all " + povFloat(transmit);
+  // An entry's own values after `all`, which would set every entry's.
+  for (const PaletteEntryFT& e : image.palette) {
+    if (e.filter)
+      map +=
+          fmt::format(" filter {}, {}", e.index, povFloat(*e.filter + filter - image.all.filter));
+    if (e.transmit)
+      map += fmt::format(" transmit {}, {}", e.index,
+                         povFloat(*e.transmit + transmit - image.all.transmit));
+  }
   return map + " }";
 }
 

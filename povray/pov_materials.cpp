@@ -10,6 +10,7 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <functional>
 
 namespace lucent {
 
@@ -362,12 +363,31 @@ Material mirroredInU(const Material& m) {
   auto mirror = [&](PatternPlacement* p) {
     if (p && p->uv) p->patternFromObject = p->patternFromObject * flip;
   };
-  auto texture = [&](Texture& t) {
-    if (auto* p = std::get_if<PatternTexture>(&t)) mirror(&p->pattern.placement);
-    if (auto* c = std::get_if<CheckerTexture>(&t)) mirror(&c->placement);
-    if (auto* h = std::get_if<HexagonTexture>(&t)) mirror(&h->placement);
-    if (auto* b = std::get_if<BrickTexture>(&t)) mirror(&b->placement);
-    if (auto* a = std::get_if<AverageTexture>(&t)) mirror(&a->placement);
+  // The texture's placement and its entries' (a uv-mapped entry reads (u, v) itself).
+  std::function<void(Texture&)> texture = [&](Texture& t) {
+    auto entries = [&](std::vector<TextureMapEntry>& list) {
+      for (TextureMapEntry& e : list) texture(e.texture);
+    };
+    if (auto* p = std::get_if<PatternTexture>(&t)) {
+      mirror(&p->pattern.placement);
+      entries(p->pigments);
+    }
+    if (auto* c = std::get_if<CheckerTexture>(&t)) {
+      mirror(&c->placement);
+      entries(c->pigments);
+    }
+    if (auto* h = std::get_if<HexagonTexture>(&t)) {
+      mirror(&h->placement);
+      entries(h->pigments);
+    }
+    if (auto* b = std::get_if<BrickTexture>(&t)) {
+      mirror(&b->placement);
+      entries(b->pigments);
+    }
+    if (auto* a = std::get_if<AverageTexture>(&t)) {
+      mirror(&a->placement);
+      entries(a->entries);
+    }
     if (auto* i = std::get_if<ImageTexture>(&t); i && i->projection != ImageProjection::uv)
       mirror(&i->placement);
   };
@@ -508,6 +528,14 @@ const PatternPlacement* mapPlacement(const Texture& t) {
 // (its cells 0, 1, 2 each showing the entry the map gives that value alone).
 void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, const char* shapeName,
                             const SourceLoc* loc, PovWriter& out, PovIssues* issues) const {
+  const bool uvNormal = m.normal && m.normal->pattern.placement.uv;
+  if (mapping && mapping->uvMirrored && uvNormal)
+    (issues ? *issues : issues_)
+        .error(loc ? *loc : m.loc,
+               fmt::format("{}: a uv-mapped normal on <{}>: the shape is written mirrored, so "
+                           "POV-Ray's u runs the other way and its bent normal would be "
+                           "mirrored too",
+                           materialLabel(m), shapeName ? shapeName : "shape"));
   if (mapping && mapping->uvMirrored && usesUvMapping(m)) {
     const ImageMapping plain = unmirrored(*mapping);
     writeMap(mirroredInU(m), &plain, shapeName, loc, out, issues);
@@ -666,6 +694,14 @@ const std::vector<PovSurface>& PovMaterials::layerSurfaces(uint32_t material) co
 void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const ImageMapping* mapping,
                               const char* shapeName, const SourceLoc* loc, PovWriter& out,
                               PovIssues* issues) const {
+  const bool uvNormal = m.normal && m.normal->pattern.placement.uv;
+  if (mapping && mapping->uvMirrored && uvNormal)
+    (issues ? *issues : issues_)
+        .error(loc ? *loc : m.loc,
+               fmt::format("{}: a uv-mapped normal on <{}>: the shape is written mirrored, so "
+                           "POV-Ray's u runs the other way and its bent normal would be "
+                           "mirrored too",
+                           materialLabel(m), shapeName ? shapeName : "shape"));
   if (mapping && mapping->uvMirrored && usesUvMapping(m)) {
     const ImageMapping plain = unmirrored(*mapping);
     writeLayer(mirroredInU(m), s, &plain, shapeName, loc, out, issues);
@@ -703,6 +739,20 @@ void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const Imag
         writeAveragePigment(average, s.pigmentScale, s.filter, s.transmit, out);
       },
   };
+  // A normal bent in the object space at (u, v): POV-Ray's texture { uv_mapping ... }, which
+  // bends the normal in the space of the transforms after the texture (the object's, written
+  // after it) and reads the pigment at (u, v) too.
+  if (uvNormal && !m.normal->bendInWorld) {
+    if (s.useTexture && !std::holds_alternative<std::monostate>(m.texture) &&
+        !textureUvMapped(m.texture))
+      (issues ? *issues : issues_)
+          .error(loc ? *loc : m.loc,
+                 fmt::format("{}: a normal bent in the object space at (u, v) beside a texture "
+                             "not read at (u, v): POV-Ray's texture {{ uv_mapping }} reads both "
+                             "there",
+                             materialLabel(m)));
+    out.line("uv_mapping");
+  }
   if (s.useTexture && !std::holds_alternative<ImageTexture>(m.texture))
     checkImagesInMaps(m.texture, s.pigmentScale, materialLabel(m), issues ? *issues : issues_);
   if (s.useTexture) std::visit(pigment, m.texture);

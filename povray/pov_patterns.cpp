@@ -229,9 +229,13 @@ void writeBody(const Texture& t, const Vec3& scale, double filter, double transm
 // A map's or a list's entry: its plain colour, or its texture's body.
 void writeEntryBody(const TextureMapEntry& e, const Vec3& scale, double filter, double transmit,
                     PovWriter& out) {
-  if (std::holds_alternative<std::monostate>(e.texture))
+  if (std::holds_alternative<std::monostate>(e.texture)) {
     out.line(colour(e.color.rgb, e.color.ft, scale, filter, transmit));
-  else writeBody(e.texture, scale, filter, transmit, out);
+    return;
+  }
+  // A uv-mapped entry: POV-Ray reads its body at the intersection's (u, v, 0).
+  if (const PatternPlacement* p = texturePlacement(e.texture)) writeUvMapping(*p, out);
+  writeBody(e.texture, scale, filter, transmit, out);
 }
 
 // `pigment_map { [at BODY] ... }`: the material's colour scale, filter and transmit go

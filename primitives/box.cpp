@@ -53,6 +53,9 @@ void Box::crossings(const Ray& ray, CrossingList& out) const {
 }
 
 bool Box::inside(const Vec3& p) const {
+  if (closedFaces_)
+    return lo_.x <= p.x && p.x <= hi_.x && lo_.y <= p.y && p.y <= hi_.y && lo_.z <= p.z &&
+           p.z <= hi_.z;
   return lo_.x < p.x && p.x < hi_.x && lo_.y < p.y && p.y < hi_.y && lo_.z < p.z && p.z < hi_.z;
 }
 

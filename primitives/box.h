@@ -27,11 +27,16 @@ class Box final : public Shape {
   SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
   bool povUV(const SurfaceInfo& s, const Hit& hit, Vec2& uv) const override;
 
+  // Count the faces inside, as POV-Ray's Box::Inside does (outside only strictly beyond a
+  // face): the rule of an object pattern's boxes. Lucent's own, for CSG, leaves them out.
+  void closeFaces() { closedFaces_ = true; }
+
  private:
   // Where the whole line enters and leaves the box, and through which faces.
   bool span(const Ray& ray, Span& out) const;
 
   Vec3 lo_, hi_;
+  bool closedFaces_ = false;
 };
 
 }  // namespace lucent

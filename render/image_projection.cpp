@@ -96,6 +96,7 @@ auto pixel(const Grid& image, double x, double y, bool once) {
 
 // Blends are summed in double precision, as POV-Ray's.
 glm::dvec3 precise(const Color& c) { return glm::dvec3(c); }
+glm::dvec2 precise(const glm::vec2& v) { return glm::dvec2(v); }
 double precise(float v) { return v; }
 double precise(double v) { return v; }
 
@@ -189,6 +190,34 @@ auto sampled(const Grid& image, const Vec2& xy, ImageInterpolation interpolation
 PigmentColor sampleImage(const Image& image, const Vec2& xy, ImageInterpolation interpolation,
                          bool once, const FilterTransmit& all) {
   return {sampled(image, xy, interpolation, once), all};
+}
+
+namespace {
+
+// A palette image's filter and transmit by pixel, as the blends read a grid.
+struct PaletteFilterTransmit {
+  const ImageValueGrid& grid;
+  const ImageTexture& image;
+  int width, height;
+  glm::vec2 at(int x, int y) const {
+    const FilterTransmit ft = image.paletteFT(grid.indices[static_cast<size_t>(y) * width + x]);
+    return {ft.filter, ft.transmit};
+  }
+};
+
+}  // namespace
+
+PigmentColor sampleImageTexture(const Image& pixels, const ImageTexture& image, const Vec2& xy) {
+  PigmentColor c = sampleImage(pixels, xy, image.interpolation, image.once, image.all);
+  const ImageValueGrid* grid = image.paletteIndices.get();
+  if (image.palette.empty() || !grid || grid->width != pixels.width ||
+      grid->height != pixels.height)
+    return c;
+  // POV-Ray blends the palette entries' filter and transmit as it blends their colours.
+  const glm::vec2 ft = sampled(PaletteFilterTransmit{*grid, image, grid->width, grid->height}, xy,
+                               image.interpolation, image.once);
+  c.ft = {ft.x, ft.y};
+  return c;
 }
 
 float sampleImageValue(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,

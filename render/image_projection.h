@@ -35,6 +35,11 @@ std::optional<Vec2> uvToImage(const Vec2& uv, const Vec2& scale, int width, int 
 PigmentColor sampleImage(const Image& image, const Vec2& xy, ImageInterpolation interpolation,
                          bool once, const FilterTransmit& all);
 
+// An <image>'s colour at image point `xy`: sampleImage's, with a palette image's entries' own
+// filter and transmit (ImageTexture::palette) blended as its colours are, as POV-Ray 3.7
+// blends the RGBFT entries of a colour-mapped image.
+PigmentColor sampleImageTexture(const Image& pixels, const ImageTexture& image, const Vec2& xy);
+
 // The same blend of an image_pattern's values (no filter or transmit).
 float sampleImageValue(const ImageValueGrid& grid, const Vec2& xy, ImageInterpolation interpolation,
                        bool once);

@@ -13,6 +13,11 @@ Vec3 perturbedShadingNormal(const NormalSpec& normal, const Transform& worldFrom
                             const SurfaceInfo& hit, const Vec3& n, const Vec3& v) {
   SurfaceInfo uvView;
   const SurfaceInfo& surface = surfaceFor(normal.pattern.placement, hit, uvView);
+  if (normal.bendInWorld) {
+    // The world normal carried into pattern space by the placement alone.
+    const Vec3 bent = perturbNormal(normal, surface.pObject, n);
+    return normal.keepFacingAway || glm::dot(bent, v) > 0.0 ? bent : n;
+  }
   // Normals are covariant: the world normal is M^-T times the object one, so the object
   // normal is M^T times the world one.
   const Vec3 objectNormal =

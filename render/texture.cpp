@@ -192,8 +192,11 @@ PigmentColor projectedImageColour(const ImageMap& map, const ImageTexture& image
   const std::optional<Vec2> xy = projectToImage(image.projection, warpPoint(image.placement, p),
                                                 map.width(), map.height(), image.once);
   if (!xy) return {Color(1.0f), {0.0f, 1.0f}};
-  return sampleImage(map.pixels(), *xy, image.interpolation, image.once, image.all);
+  return sampleImageTexture(map.pixels(), image, *xy);
 }
+
+// (u, v, 0) is exact: no rounding error to carry.
+const Vec3 kNoError(0.0);
 
 // The colour, filter and transmit of each kind of texture at an object point. A map or a
 // list of textures evaluates its entries at its own pattern-space point (POV-Ray hands
@@ -202,11 +205,16 @@ struct PigmentAt {
   const Vec3& p;
   const Vec3& err;
   const NestedImages* images;  // the pixels of the images among the entries
+  const Vec3* uv = nullptr;    // the surface's (u, v, 0), where there is a surface
 
-  // An entry of a map or a list at the pattern-space point q (error bound qErr).
+  // An entry of a map or a list at the pattern-space point q (error bound qErr); a
+  // uv-mapped entry at the surface's (u, v, 0) instead (POV-Ray's uv_mapping pigment reads
+  // the intersection's (u, v), whatever point its map hands it).
   PigmentColor entry(const TextureMapEntry& e, const Vec3& q, const Vec3& qErr) const {
     if (std::holds_alternative<std::monostate>(e.texture)) return e.color;
-    return std::visit(PigmentAt{q, qErr, images}, e.texture);
+    if (uv && textureUvMapped(e.texture))
+      return std::visit(PigmentAt{*uv, kNoError, images, uv}, e.texture);
+    return std::visit(PigmentAt{q, qErr, images, uv}, e.texture);
   }
   PigmentColor inside(const std::vector<TextureMapEntry>& entries, size_t i,
                       const PatternPlacement& place) const {
@@ -289,7 +297,7 @@ PigmentColor imageColour(const ImageMap& map, const ImageTexture& image,
     return projectedImageColour(map, image, surface.pObject);
   const std::optional<Vec2> xy = uvToImage(uv, image.scale, map.width(), map.height(), image.once);
   if (!xy) return {Color(1.0f), {0.0f, 1.0f}};
-  return sampleImage(map.pixels(), *xy, image.interpolation, image.once, image.all);
+  return sampleImageTexture(map.pixels(), image, *xy);
 }
 
 struct TextureColour {
@@ -304,7 +312,8 @@ struct TextureColour {
   // entry, per hit).
   template <class Kind>
   Color nested(const Kind& texture) const {
-    return PigmentAt{surface.pObject, objectError(surface, leaf), &images}(texture).rgb;
+    const Vec3 uv = uvPointOf(surface);
+    return PigmentAt{surface.pObject, objectError(surface, leaf), &images, &uv}(texture).rgb;
   }
 
   Color operator()(const CheckerTexture& checker) const {
@@ -363,8 +372,8 @@ MapBlend mapChoice(const Material& m, const SurfaceInfo& hit, const Instance& le
 }
 
 PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& pError,
-                       const NestedImages* images) {
-  return std::visit(PigmentAt{pObject, pError, images}, texture);
+                       const NestedImages* images, const Vec3* uvPoint) {
+  return std::visit(PigmentAt{pObject, pError, images, uvPoint}, texture);
 }
 
 PigmentColor TextureSet::evalPigment(uint32_t index, const Material& material,
@@ -374,7 +383,8 @@ PigmentColor TextureSet::evalPigment(uint32_t index, const Material& material,
       textureUvMapped(material.texture) ? uvView = uvMappedSurface(hit) : hit;
   if (const auto* image = std::get_if<ImageTexture>(&material.texture))
     return imageColour(*maps_[index], *image, surface);
-  return pigmentAt(material.texture, surface.pObject, objectError(surface, leaf), &nested_);
+  const Vec3 uv = uvPointOf(hit);
+  return pigmentAt(material.texture, surface.pObject, objectError(surface, leaf), &nested_, &uv);
 }
 
 Color TextureSet::eval(uint32_t index, const Material& material, const SurfaceInfo& hit,

@@ -37,9 +37,10 @@ class ImageMap;
 using NestedImages = std::unordered_map<std::string, std::shared_ptr<const ImageMap>>;
 
 // `images`: the pixels of the images among the texture's entries (null where it holds none:
-// a sky's, a pigment function's).
+// a sky's, a pigment function's). `uvPoint`: the surface's (u, v, 0), which uv-mapped entries
+// read (null away from a surface, where none may be uv-mapped).
 PigmentColor pigmentAt(const Texture& texture, const Vec3& pObject, const Vec3& pError,
-                       const NestedImages* images = nullptr);
+                       const NestedImages* images = nullptr, const Vec3* uvPoint = nullptr);
 
 // The value a material map's pattern takes at a hit (scenegraph/map_blend.h): a <pattern>'s
 // value, or the cell of a <checker> (0, 1), <hexagon> (0, 1, 2) or <brick> (0 mortar,

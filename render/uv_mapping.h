@@ -7,15 +7,19 @@
 
 namespace lucent {
 
-// The surface as a uv-mapped pattern sees it: the object point is POV-Ray's (u, v, 0)
+// The point a uv-mapped pattern reads at the surface, and the surface as such a pattern sees
+// it: the object point is POV-Ray's (u, v, 0)
 // (SurfaceInfo::mappedUV, which the world fills in for leaves whose material asks; a
 // surface made without it, as by a test, reads its own (u, v) or (0, 0, 0) without),
 // exact (no rounding error to carry).
+inline Vec3 uvPointOf(const SurfaceInfo& s) {
+  return s.hasMappedUV ? Vec3(s.mappedUV.x, s.mappedUV.y, 0.0)
+         : s.hasUV     ? Vec3(s.uv.x, s.uv.y, 0.0)
+                       : Vec3(0.0);
+}
 inline SurfaceInfo uvMappedSurface(const SurfaceInfo& s) {
   SurfaceInfo t = s;
-  t.pObject = s.hasMappedUV ? Vec3(s.mappedUV.x, s.mappedUV.y, 0.0)
-              : s.hasUV     ? Vec3(s.uv.x, s.uv.y, 0.0)
-                            : Vec3(0.0);
+  t.pObject = uvPointOf(s);
   t.pError = Vec3(0.0);
   return t;
 }

@@ -1,5 +1,7 @@
 #include "flatten.h"
 
+#include "primitives/box.h"
+
 #include "light_group.h"
 #include "located_error.h"
 
@@ -340,8 +342,18 @@ void checkWorld(const Scene& scene) { checkNode(*scene.root, Transform()); }
 
 std::unique_ptr<Shape> buildSolid(const Scene& scene, const Node& node,
                                   const ShapeMaker& makeShape) {
+  // POV-Ray's box counts its faces inside (Box::Inside): an object pattern's boxes do too,
+  // so a surface lying in a box's face takes the inside entry, as in POV-Ray.
+  const ShapeMaker closedBoxes = [&](const ShapeSpec& spec) -> std::shared_ptr<const Shape> {
+    std::shared_ptr<const Shape> shape = makeShape(spec);
+    const auto* box = dynamic_cast<const Box*>(shape.get());
+    if (!box) return shape;
+    auto closed = std::make_shared<Box>(*box);
+    closed->closeFaces();
+    return closed;
+  };
   std::vector<WorldLeaf> leaves;  // never looked up: only inside() is asked
-  Builder b{scene, makeShape, true, {}, leaves};
+  Builder b{scene, closedBoxes, true, {}, leaves};
   std::vector<Part> parts;
   // As an operand of a solid: one union, never split by shadow flags.
   b.add(node, Transform(), Inherited{}, Seen{}, true, parts);

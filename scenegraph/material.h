@@ -182,7 +182,7 @@ inline bool Material::isTransmissive() const {
 // image or a bump map at the shape's mapped (u, v) (mapping="uv")? Only then does the
 // tracer ask a leaf for POV-Ray's (u, v).
 inline bool usesUvMapping(const Material& m) {
-  if (textureUvMapped(m.texture) || textureUvMapped(m.mapPattern)) return true;
+  if (textureUsesUv(m.texture) || textureUvMapped(m.mapPattern)) return true;
   if (m.normal && m.normal->pattern.placement.uv) return true;
   if (m.bumpMap && m.bumpMap->projection != ImageProjection::uv && m.bumpMap->placement.uv)
     return true;

@@ -421,6 +421,11 @@ struct NormalSpec {
   // Where the bent normal faces away from the viewer: false (Lucent's rule) shades with the
   // unperturbed normal there; true keeps the bent one, as POV-Ray does.
   bool keepFacingAway = false;
+  // bend-space="world" (a uv-mapped normal only): the world normal itself is carried into
+  // pattern space by the placement and bent there, as POV-Ray bends the world normal by a
+  // `normal { uv_mapping ... }`; otherwise (object) the shape's object-space normal is, as
+  // POV-Ray bends it in a `texture { uv_mapping ... }`.
+  bool bendInWorld = false;
 };
 
 struct WeightedNormal {

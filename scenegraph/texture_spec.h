@@ -8,6 +8,8 @@
 
 #include "primitives/math.h"
 
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -50,6 +52,19 @@ enum class ImageProjection { uv, planar, spherical, cylindrical, torus };
 // How the pixels around that point are blended (POV-Ray's `interpolate`: none, 2, 3, 4).
 enum class ImageInterpolation { none, bilinear, bicubic, normalized };
 
+struct ImageValueGrid;  // images/image_values_file.h, below the scene graph
+
+// <palette index filter transmit>: a palette image's entry with a filter or transmit of its
+// own (POV-Ray's image_map `filter N, F` and `transmit N, F`), each in place of the image's
+// `filter`/`transmit` (its `all`) where given.
+struct PaletteEntryFT {
+  int index = 0;
+  std::optional<float> filter, transmit;
+  bool operator==(const PaletteEntryFT& o) const {
+    return index == o.index && filter == o.filter && transmit == o.transmit;
+  }
+};
+
 // <image src scale projection transform once interpolate filter transmit>: an image looked
 // up with the shape's (u,v) or projected (render/image_projection.h). The pixels are loaded
 // by the renderer; the scene keeps the resolved path.
@@ -66,11 +81,32 @@ struct ImageTexture {
   bool once = false;           // one copy: outside it the surface is clear (transmit 1)
   ImageInterpolation interpolation = ImageInterpolation::bilinear;
   FilterTransmit all{};  // POV-Ray's filter all / transmit all, added to every pixel
+  // Palette entries' own filter and transmit, and the image's palette indices (read with
+  // the scene when there are entries; a palette PNG's).
+  std::vector<PaletteEntryFT> palette{};
+  std::shared_ptr<const ImageValueGrid> paletteIndices{};
+
+  // The filter and transmit of the pixels of palette index `index`.
+  FilterTransmit paletteFT(int index) const {
+    FilterTransmit ft = all;
+    for (const PaletteEntryFT& e : palette)
+      if (e.index == index) {
+        ft.filter = e.filter.value_or(ft.filter);
+        ft.transmit = e.transmit.value_or(ft.transmit);
+      }
+    return ft;
+  }
+  bool seeThrough() const {
+    if (once || all.any()) return true;
+    for (const PaletteEntryFT& e : palette)
+      if (e.filter.value_or(0.0f) != 0.0f || e.transmit.value_or(0.0f) != 0.0f) return true;
+    return false;
+  }
 
   // Looked up with OpenImageIO's bilinear filter at (u,v), as before projections existed.
   bool plainUV() const {
     return projection == ImageProjection::uv && !once &&
-           interpolation == ImageInterpolation::bilinear && !all.any();
+           interpolation == ImageInterpolation::bilinear && !all.any() && palette.empty();
   }
 };
 
@@ -158,7 +194,7 @@ inline bool textureSeeThrough(const Texture& t) {
     return b->pigments.empty() ? b->spec.ft1.any() || b->spec.ft2.any()
                                : entriesSeeThrough(b->pigments);
   if (const auto* a = std::get_if<AverageTexture>(&t)) return entriesSeeThrough(a->entries);
-  if (const auto* i = std::get_if<ImageTexture>(&t)) return i->once || i->all.any();
+  if (const auto* i = std::get_if<ImageTexture>(&t)) return i->seeThrough();
   return false;
 }
 
@@ -195,6 +231,23 @@ inline const PatternPlacement* texturePlacement(const Texture& t) {
 inline bool textureUvMapped(const Texture& t) {
   const PatternPlacement* p = texturePlacement(t);
   return p && p->uv;
+}
+
+// The texture or an entry of its maps and lists (at any depth) is uv-mapped.
+inline bool textureUsesUv(const Texture& t);
+inline bool entriesUseUv(const std::vector<TextureMapEntry>& entries) {
+  for (const TextureMapEntry& e : entries)
+    if (textureUsesUv(e.texture)) return true;
+  return false;
+}
+inline bool textureUsesUv(const Texture& t) {
+  if (textureUvMapped(t)) return true;
+  if (const auto* p = std::get_if<PatternTexture>(&t)) return entriesUseUv(p->pigments);
+  if (const auto* c = std::get_if<CheckerTexture>(&t)) return entriesUseUv(c->pigments);
+  if (const auto* h = std::get_if<HexagonTexture>(&t)) return entriesUseUv(h->pigments);
+  if (const auto* b = std::get_if<BrickTexture>(&t)) return entriesUseUv(b->pigments);
+  if (const auto* a = std::get_if<AverageTexture>(&t)) return entriesUseUv(a->entries);
+  return false;
 }
 
 // Every kind of texture, in Texture's order (monostate, no texture, left out).

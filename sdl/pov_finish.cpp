@@ -1,5 +1,7 @@
 #include "pov_finish.h"
 
+#include "scenegraph/wave_shape.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -48,6 +50,25 @@ void importFade(const PovInterior& in, Material& m) {
 }
 
 }  // namespace
+
+const PatternSpec& PovPigment::blockValueSpec() const {
+  static const PatternSpec kUnshaped = [] {
+    PatternSpec s;
+    s.frequency = 0.0;
+    return s;
+  }();
+  return blockValue ? *blockValue : kUnshaped;
+}
+
+double blockCellValue(const PatternSpec& value, int cell) {
+  return shapeValue(static_cast<double>(cell), value);
+}
+
+bool blockValuesUnchanged(const PatternSpec& value, int cells) {
+  for (int i = 0; i < cells; ++i)
+    if (blockCellValue(value, i) != static_cast<double>(i)) return false;
+  return true;
+}
 
 MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish,
                               const PovInterior& interior, bool legacyOpacity) {

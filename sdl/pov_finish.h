@@ -6,6 +6,7 @@
 
 #include "scenegraph/material.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,9 +50,27 @@ struct PovPigment {
   // that reach it later are POV-Ray's outer pigment's, which its uv_mapping ignores.
   bool uv = false;
   PovTransform uvTransform;
+  // A block pattern's (checker, hexagon, brick) frequency, phase and wave, which POV-Ray
+  // applies to its cell number 0, 1, 2 before it looks the number up in its list or colour
+  // map (Evaluate_TPat); its keyword sets the frequency to 0, which leaves the number as it
+  // is. Null: none given (shared, as pigments are copied often; replaced, never changed).
+  std::shared_ptr<const PatternSpec> blockValue;
 
   bool patterned() const { return !std::holds_alternative<std::monostate>(pattern); }
+  bool block() const {
+    return std::holds_alternative<CheckerTexture>(pattern) ||
+           std::holds_alternative<HexagonTexture>(pattern) ||
+           std::holds_alternative<BrickTexture>(pattern);
+  }
+  // blockValue, or the value modifiers that leave the cell number as it is.
+  const PatternSpec& blockValueSpec() const;
 };
+
+// The value a block pattern's cell `cell` (0, 1, 2) takes after its frequency, phase and wave
+// (POV-Ray's Evaluate_TPat), from which its list or colour map is read.
+double blockCellValue(const PatternSpec& value, int cell);
+// Whether they leave every one of its `cells` numbers as it is.
+bool blockValuesUnchanged(const PatternSpec& value, int cells);
 
 // `normal { PATTERN amount modifiers }`: Lucent's normal pattern and, as a pigment's, its
 // transforms from pattern space to the space of the object it was written on.
@@ -78,6 +97,15 @@ struct PovNormal {
   // A pattern was given (a #default normal may hold only a bump_size; POV-Ray then wants
   // one in every normal that starts from it).
   bool patterned = false;
+  // Read at the shape's (u, v, 0): its own `uv_mapping`, its texture's or its object's,
+  // placed by the transforms written in that block only (uvTransform). POV-Ray bends the
+  // world normal for the normal's own and the object's (bendInWorld), and the normal in the
+  // space of the transforms after the texture for a texture's.
+  bool uv = false;
+  bool ownUv = false;  // its own uv_mapping (uvTransform then stays that block's)
+  bool bendInWorld = false;
+  PovTransform uvTransform;
+  SourceLoc uvLoc;  // its own uv_mapping's
 };
 
 // `reflection { MIN, MAX fresnel falloff exponent metallic }`, or `reflection C` alone

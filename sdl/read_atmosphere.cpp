@@ -80,6 +80,10 @@ PovSkySphere SceneReader::readSkySphereBlock(const SourceLoc& loc, TokenStream& 
         keepError(in, at,
                   "'image_map' in a sky_sphere is not supported by Lucent (a sky's pigments are "
                   "patterns; an image is read on a shape)");
+      if (sky.pigments.back().uv || textureUsesUv(sky.pigments.back().pattern))
+        keepError(in, at,
+                  "'uv_mapping' in a sky_sphere is not supported by Lucent (a sky, seen at a "
+                  "direction, has no (u, v))");
       continue;
     }
     unreadInBlock(t, in);

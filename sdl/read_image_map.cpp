@@ -9,7 +9,9 @@
 #include "lang/expression.h"
 #include "scenegraph/image_pattern.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -190,7 +192,7 @@ void SceneReader::readBumpMap(const Token& t, TokenStream& in, PovNormal& n) {
   }
   if (bump.useIndex) {
     try {
-      bump.indices = bumpIndices(bump.path);
+      bump.indices = paletteIndices(bump.path);
     } catch (const std::exception& e) {
       in.error(t, "cannot read the bump map's palette indices in '" + bump.path + "': " + e.what());
     }
@@ -282,6 +284,45 @@ void SceneReader::readMaterialMap(const Token& t, TokenStream& in, PovTexture& t
   tex.name.clear();
 }
 
+// `filter INDEX, AMOUNT` (or `transmit`): the palette entry's own value, as POV-Ray 3.7's
+// Parse_Image_Map sets it (the index rounded as it rounds it; its errors for an image
+// without a palette and an index past the palette).
+void SceneReader::readPaletteEntry(const Token& k, bool transmit, TokenStream& in,
+                                   ImageTexture& image) {
+  const SourceLoc at = in.peek().loc();
+  const double raw = in.parseFloat() + 0.01;
+  const int index = std::abs(raw) < 1e9 ? static_cast<int>(raw) : -1;  // NaN too: -1
+  if (!image.paletteIndices) {
+    const bool png = isPngFile(image.path);
+    try {
+      if (png) image.paletteIndices = paletteIndices(image.path);
+    } catch (const std::exception& e) {
+      in.error(k, "cannot read the palette of '" + image.path + "': " + e.what());
+    }
+    if (!image.paletteIndices && (png || !mayHoldPalette(image.path)))
+      in.error(k, "Keyword '" + std::string(transmit ? "transmit" : "filter") +
+                      "' cannot be used with non color-mapped image.");
+    if (!png)
+      keepError(in, k.loc(),
+                "'" + std::string(k.text()) +
+                    " INDEX, AMOUNT' on an image other than a PNG is not supported by Lucent "
+                    "(it reads the palettes of PNGs)");
+  }
+  const int size = image.paletteIndices ? image.paletteIndices->paletteSize : 256;
+  if (index < 0 || index >= size)
+    in.error(at, std::string(transmit ? "TRANSMIT" : "FILTER") +
+                     " color register value out of range (the palette's " + std::to_string(size) +
+                     " entries are 0 to " + std::to_string(size - 1) + ").");
+  in.parseComma();
+  const float amount = static_cast<float>(in.parseFloat());
+  auto entry = std::find_if(image.palette.begin(), image.palette.end(),
+                            [&](const PaletteEntryFT& e) { return e.index == index; });
+  if (entry == image.palette.end())
+    entry = image.palette.insert(image.palette.end(),
+                                 PaletteEntryFT{index, std::nullopt, std::nullopt});
+  (transmit ? entry->transmit : entry->filter) = amount;
+}
+
 void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {
   in.expect("{");
   ImageTexture image;
@@ -301,19 +342,16 @@ void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {
       // POV-Ray 3.7's image_map reads its use_index and use_color flag nowhere: a palette
       // image shows its palette's colours either way.
     } else if (w == "filter" || w == "transmit" || w == "alpha") {
+      const bool transmit = w == "transmit";
       if (!isWord(in.peek(), "all")) {
-        keepError(in, k.loc(),
-                  "'" + std::string(w) +
-                      " INDEX, AMOUNT' is not supported by Lucent (a palette entry's own filter "
-                      "or transmit; 'all' is)");
-        in.parseFloat();
-        in.parseComma();
-        in.parseFloat();
+        readPaletteEntry(k, transmit, in, image);
         continue;
       }
       in.next();
       const float amount = static_cast<float>(in.parseFloat());
-      (w == "transmit" ? image.all.transmit : image.all.filter) = amount;
+      (transmit ? image.all.transmit : image.all.filter) = amount;
+      // POV-Ray sets every palette entry's value: an entry's own one given before is gone.
+      for (PaletteEntryFT& e : image.palette) (transmit ? e.transmit : e.filter).reset();
     } else if (w == "repeat" || w == "offset") {
       keepError(in, k.loc(), "'" + std::string(w) + "' in an image map is not supported by Lucent");
       in.parseVector();

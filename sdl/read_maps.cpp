@@ -42,8 +42,11 @@ TextureMapEntry entryOf(const PovPigment& p, double at) {
     return e;
   }
   e.texture = p.pattern;
-  if (PatternPlacement* place = placementOf(e.texture))
-    place->patternFromObject = glm::inverse(p.transform.povMatrix());
+  if (PatternPlacement* place = placementOf(e.texture)) {
+    // A uv-mapped entry is placed from (u, v, 0) by its own block's transforms.
+    place->patternFromObject = glm::inverse((p.uv ? p.uvTransform : p.transform).povMatrix());
+    place->uv = p.uv;
+  }
   if (p.filter != 0.0f || p.transmit != 0.0f) addToColours(e.texture, {p.filter, p.transmit});
   return e;
 }
@@ -63,9 +66,14 @@ double entryValue(TokenStream& in, bool average) {
 // pigment_pattern's `{ PIGMENT_BODY }`: the pigment as a map's entry, placed in the
 // pattern's space by its own transforms.
 std::shared_ptr<const TextureMapEntry> SceneReader::readPatternPigment(TokenStream& in) {
+  const SourceLoc at = in.peek().loc();
   auto entry =
       std::make_shared<const TextureMapEntry>(entryOf(readPigment(in, defaults_.pigment), 0.0));
   refuseNestedImage(*entry, in);
+  if (textureUsesUv(entry->texture))
+    keepError(in, at,
+              "'uv_mapping' in a pigment_pattern's pigment is not supported by Lucent (its "
+              "grey level is taken at a point, which has no (u, v))");
   return entry;
 }
 
@@ -304,6 +312,10 @@ void SceneReader::readNormalList(TokenStream& in, PovNormal& n, size_t count) {
     NormalMapEntry e;
     e.at = static_cast<double>(n.spec.map.size());
     const PovNormal read = readNormal(in, nullptr);
+    if (read.uv)
+      keepError(in, read.uvLoc,
+                "'uv_mapping' in a list of normals is not supported by Lucent (an entry is bent "
+                "at its pattern's point; map the whole normal instead)");
     if (read.bump)
       keepError(in, read.bump->loc,
                 "'bump_map' in a list of normals is not supported by Lucent (a bump map's "
@@ -326,6 +338,7 @@ bool SceneReader::readBlockNormal(const Token& t, TokenStream& in, PovNormal& n)
   else return false;
   const size_t count = block == NormalBlock::hexagon ? 3 : 2;
   n.spec.block = block;
+  n.spec.pattern.frequency = 0.0;  // POV-Ray's: the cell number as it is, unless given
   n.spec.brick = BrickSpec{};
   n.spec.map.clear();
   n.spec.slopeMap.clear();

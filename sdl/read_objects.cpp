@@ -177,7 +177,7 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
       // A texture { } on an object that has one (from any block) is a layer over it.
       PovTexture top = readTexture(in, defaultTexture());
       top.transform(backToObject);
-      if (o.uvMapping) mapAtUv(top, t.loc(), in);
+      if (o.uvMapping) mapAtUv(top, true);
       o.texture = layerOver(std::move(o.texture.edit()), std::move(top), t.loc(), in);
       return true;
     }
@@ -210,7 +210,7 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
       o.texture.edit().transform(backToObject);
       o.textureLoc = t.loc();
     }
-    if (o.uvMapping) mapAtUv(o.texture.edit(), t.loc(), in);
+    if (o.uvMapping) mapAtUv(o.texture.edit(), true);
   } else if (w == "uv_mapping") {
     // POV-Ray's object flag: the textures given to the object after it are read at the
     // shape's (u, v, 0), placed by their own transforms (the object's leave them).

@@ -233,6 +233,11 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
     const PatternPlacement was =
         placementOf(p.pattern) ? *placementOf(p.pattern) : PatternPlacement{};
     p.map.clear();
+    if (p.blockValue) {  // POV-Ray's: the cell number as it is, unless a frequency is given
+      auto value = std::make_shared<PatternSpec>(*p.blockValue);
+      value->frequency = 0.0;
+      p.blockValue = std::move(value);
+    }
     if (w == "checker") {
       CheckerTexture c;
       c.placement = was;
@@ -287,6 +292,10 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
       in.error(t,
                "a color_map cannot be used with an object pattern (POV-Ray's rule: its "
                "colours are its list of two)");
+    // POV-Ray's Parse_Pattern refuses it on block patterns, image maps and averages.
+    if (p.block() || std::holds_alternative<ImageTexture>(p.pattern) ||
+        std::holds_alternative<AverageTexture>(p.pattern))
+      in.error(t, "Cannot use color_map with this pattern type. (POV-Ray's error)");
     SourceLoc loc = t.loc();
     p.map = readColorMap(in, loc);
     p.mapLoc = loc;
@@ -309,7 +318,17 @@ bool SceneReader::readPatternKeyword(const Token& t, TokenStream& in, PovPigment
     }
     return true;
   }
-  return readPatternModifier(t, in, specOf(p.pattern), placementOf(p.pattern));
+  return readPigmentModifier(t, in, p);
+}
+
+// A pigment's pattern modifiers; a block pattern's frequency, phase and wave go to its
+// blockValue.
+bool SceneReader::readPigmentModifier(const Token& t, TokenStream& in, PovPigment& p) {
+  if (!p.block()) return readPatternModifier(t, in, specOf(p.pattern), placementOf(p.pattern));
+  PatternSpec value = p.blockValueSpec();
+  if (!readPatternModifier(t, in, &value, placementOf(p.pattern))) return false;
+  p.blockValue = std::make_shared<const PatternSpec>(std::move(value));
+  return true;
 }
 
 // The modifiers of a pattern (null `spec`: a block pattern, which takes none of the value's;
@@ -465,6 +484,17 @@ PovColorMapEntry blendAt(const PovColorMapEntry& a, const PovColorMapEntry& b, d
   return e;
 }
 
+// The colour an ascending map gives value v, as POV-Ray's Search_Blend_Map and its linear
+// blend: the last entry at or above the last value, the first entry at or below the first,
+// else the blend of the two entries around v (the later one where v is on an entry).
+PovColorMapEntry colourAt(const std::vector<PovColorMapEntry>& map, double v) {
+  if (v >= map.back().at) return map.back();
+  size_t c = 0;
+  while (v > map[c].at) ++c;
+  if (c == 0 || v == map[c].at) return map[c];
+  return blendAt(map[c - 1], map[c], v);
+}
+
 }  // namespace
 
 // A colour map whose entries are not in ascending order (woods.inc's T_Wood32), as the
@@ -543,7 +573,16 @@ void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& in, bool nes
   if (!p.patterned()) return;
   if (std::holds_alternative<AverageTexture>(p.pattern) && !textureHoldsPigments(p.pattern))
     keepError(in, p.mapLoc, "'average' needs a pigment_map (the pigments it averages)");
+  const int cells = std::holds_alternative<HexagonTexture>(p.pattern) ? 3 : 2;
+  const bool block = std::holds_alternative<CheckerTexture>(p.pattern) ||
+                     std::holds_alternative<HexagonTexture>(p.pattern) ||
+                     std::holds_alternative<BrickTexture>(p.pattern);
   if (textureHoldsPigments(p.pattern) || std::holds_alternative<AverageTexture>(p.pattern)) {
+    if (block && !blockValuesUnchanged(p.blockValueSpec(), cells))
+      keepError(in, p.mapLoc,
+                "frequency, phase or a wave on a block pattern's list of pigments is not "
+                "supported by Lucent (POV-Ray blends the listed pigments by the changed cell "
+                "number)");
     p.filter = p.transmit = 0.0f;  // the entries' own
     return;
   }
@@ -562,8 +601,16 @@ void SceneReader::resolvePigmentColours(PovPigment& p, TokenStream& in, bool nes
     }
     map = ascendingMap(map);
   }
-  auto colour = [&](size_t i) { return map.at(i).color; };
-  auto ft = [&](size_t i) { return FilterTransmit{map.at(i).filter, map.at(i).transmit}; };
+  // A block pattern's cell i takes the colour its list or colour map gives the cell's number
+  // after the frequency, phase and wave (entry i of a list; a colour map read at i).
+  auto cell = [&](size_t i) {
+    return colourAt(map, blockCellValue(p.blockValueSpec(), static_cast<int>(i)));
+  };
+  auto colour = [&](size_t i) { return cell(i).color; };
+  auto ft = [&](size_t i) {
+    const PovColorMapEntry e = cell(i);
+    return FilterTransmit{e.filter, e.transmit};
+  };
   if (auto* t = std::get_if<PatternTexture>(&p.pattern)) {
     t->map.entries.clear();
     // (A block pattern's "map" holds its colours by index, 0, 1, 2: kept as they are.)

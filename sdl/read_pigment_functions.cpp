@@ -34,6 +34,10 @@ std::vector<std::shared_ptr<const PigmentFunction>> SceneReader::pigmentFunction
     f->name = c.name;
     f->component = static_cast<PigmentComponent>(c.member);
     f->pigment = pigmentTexture(item->pigment);
+    if (textureUsesUv(f->pigment))
+      throw FunctionError(c.callee->loc, c.callee->describe() +
+                                             " is uv-mapped, which Lucent cannot evaluate at a "
+                                             "point in a function (a point has no (u, v))");
     if (textureHoldsImage(f->pigment))
       throw FunctionError(c.callee->loc, c.callee->describe() +
                                              " is an image pigment, which Lucent cannot "

@@ -36,12 +36,9 @@ PovPigment SceneReader::readPigmentBody(TokenStream& in, const PovPigment& start
     }
     if (isWord(t, "uv_mapping")) {
       // POV-Ray: the rest of the block is a new pigment (from the #default's) that the
-      // outer one evaluates at (u, v, 0); an identifier before it is dropped.
+      // outer one evaluates at (u, v, 0); an identifier before it is dropped. An entry of a
+      // map reads (u, v, 0) too, whatever point its map hands it.
       if (!atStart) in.error(t, "'uv_mapping' must come first in a pigment, as POV-Ray reads it");
-      if (inEntry)
-        keepError(in, t.loc(),
-                  "'uv_mapping' inside a map or a list of pigments is not supported by Lucent "
-                  "(an entry is read at its map's point; map the whole pigment instead)");
       p = defaults_.pigment;
       if (const auto* item = use<PigmentItem>(in.peek(), in)) {
         in.next();
@@ -80,13 +77,39 @@ PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, b
     in.next();
     n = item->normal;
   }
+  bool uvBlock = false, first = true;
   for (;;) {
     const Token t = in.next();
+    const bool atStart = first;
+    first = false;
     if (t.is(inEntry ? "]" : "}")) {
       settlePavement(t, in, &n.spec.pattern);
       if (n.average && n.spec.average.empty())
         keepError(in, t.loc(), "'average' needs a normal_map (the normals it averages)");
+      if (n.spec.block != NormalBlock::none &&
+          !blockValuesUnchanged(n.spec.pattern, n.spec.block == NormalBlock::hexagon ? 3 : 2))
+        keepError(in, t.loc(),
+                  "frequency, phase or a wave on a block pattern's normal is not supported by "
+                  "Lucent (POV-Ray bends by the changed cell number)");
+      if (uvBlock) n.uvTransform = n.transform;
       return n;
+    }
+    if (isWord(t, "uv_mapping")) {
+      // POV-Ray: the rest of the block is a new normal (from the #default's) bent at (u, v, 0)
+      // of the shape, the world normal bent by it; an identifier before it is dropped.
+      if (!atStart) in.error(t, "'uv_mapping' must come first in a normal, as POV-Ray reads it");
+      if (inEntry)
+        keepError(in, t.loc(),
+                  "'uv_mapping' inside a map or a list of normals is not supported by Lucent "
+                  "(an entry is bent at its map's point; map the whole normal instead)");
+      n = defaults_.normal ? *defaults_.normal : PovNormal{};
+      if (const auto* item = use<NormalItem>(in.peek(), in)) {
+        in.next();
+        n = item->normal;
+      }
+      n.uv = n.ownUv = uvBlock = n.bendInWorld = true;
+      n.uvLoc = t.loc();
+      continue;
     }
     const PatternTypeInfo* type = nullptr;
     if (t.kind == TokenKind::Keyword && !isWord(t, "object"))  // object's list: readObjectNormal
@@ -104,6 +127,8 @@ PovNormal SceneReader::readNormalBody(TokenStream& in, const PovNormal* start, b
       if (s.type == PatternType::pigment) s.pigment = readPatternPigment(in);
       if (s.type == PatternType::image) s.image = readImagePattern(in);
       n.spec.pattern = s;
+      // A pattern in place of a uv-mapped one started from (a #default's) is not uv-mapped.
+      if (!uvBlock) n.uv = n.ownUv = n.bendInWorld = false;
       n.spec.average.clear();
       n.spec.block = NormalBlock::none;  // a map (a block's list too) stays, as POV-Ray's
       n.average = false;
@@ -256,8 +281,7 @@ PovTexture SceneReader::readTextureBody(TokenStream& in, const PovTexture& start
     // A map's pattern takes the modifiers written after it.
     if (tex.mapped() &&
         (readWarp(t, in, placementOf(tex.mapPattern.pattern), tex.mapPattern.transform) ||
-         readPatternModifier(t, in, specOf(tex.mapPattern.pattern),
-                             placementOf(tex.mapPattern.pattern))))
+         readPigmentModifier(t, in, tex.mapPattern)))
       continue;
     // Each block continues the texture's own (POV-Ray's Parse_Texture).
     if (isWord(t, "uv_mapping")) {
@@ -295,13 +319,16 @@ void SceneReader::readUvTexture(const Token& t, TokenStream& in, PovTexture& tex
               "a uv-mapped texture cannot be layered (POV-Ray: \"Cannot layer over a "
               "patterned texture\")");
   tex = readTextureBody(in, defaultTexture(), closing);
-  mapAtUv(tex, t.loc(), in);
+  mapAtUv(tex, false);
 }
 
-// A texture read at (u, v, 0): its map's pattern (with the entries) or its pigment, placed by
-// the transforms it holds; a pigment uv-mapped itself keeps its own (the later ones are its
-// outer's, which its uv_mapping ignores).
-void SceneReader::mapAtUv(PovTexture& tex, const SourceLoc& at, TokenStream& in) {
+// A texture read at (u, v, 0): its map's pattern (with the entries) or its pigment and normal,
+// placed by the transforms they hold; a pigment or normal uv-mapped itself keeps its own (the
+// later ones are its outer's, which its uv_mapping ignores). `bendInWorld`: an object's
+// uv_mapping, whose textures POV-Ray shades at (u, v, 0) without a texture of its own around
+// them (the world normal is bent); a texture's uv_mapping bends the normal in the space of
+// the transforms after the texture.
+void SceneReader::mapAtUv(PovTexture& tex, bool bendInWorld) {
   if (tex.mapped()) {
     tex.mapPattern.uv = true;
     tex.mapPattern.uvTransform = tex.mapPattern.transform;
@@ -309,10 +336,11 @@ void SceneReader::mapAtUv(PovTexture& tex, const SourceLoc& at, TokenStream& in)
   }
   if (!tex.pigment.uv) tex.pigment.uvTransform = tex.pigment.transform;
   tex.pigment.uv = true;
-  if (tex.normal)
-    keepError(in, at,
-              "a normal in a uv-mapped texture is not supported by Lucent (POV-Ray bends the "
-              "world's normal by the slope in (u, v) space, Lucent bends it in the object's)");
+  if (!tex.normal) return;
+  PovNormal& n = *tex.normal;
+  if (!n.ownUv) n.uvTransform = n.transform;
+  n.uv = true;
+  n.bendInWorld = bendInWorld;
 }
 
 namespace {
@@ -436,7 +464,7 @@ bool SceneReader::readTextureMap(const Token& t, TokenStream& in, PovTexture& te
         break;
       }
       if (readWarp(k, in, placementOf(pattern.pattern), pattern.transform) ||
-          readPatternModifier(k, in, specOf(pattern.pattern), placementOf(pattern.pattern)))
+          readPigmentModifier(k, in, pattern))
         continue;
       PovTransform m;
       if (readTransform(k, in, m)) {

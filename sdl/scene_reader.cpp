@@ -12,6 +12,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include <functional>
 #include <map>
 
@@ -32,7 +34,7 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"projected_through", "lights projected through objects"},
       {"texture_map", "maps of textures; Lucent has one texture layer per material"},
       {"uv_mapping",
-       "uv_mapping of normals; Lucent reads a uv-mapped pigment, texture or object at "
+       "uv_mapping here; Lucent reads a uv-mapped pigment, normal, texture or object at "
        "POV-Ray's (u,v)"},
   };
   return features;
@@ -312,6 +314,16 @@ void SceneReader::place(const PovObject& object, TokenStream& in) {
 
 namespace {
 
+// Some layer of the texture (or of its entries) has a normal read at (u, v, 0).
+bool holdsUvNormal(const PovTexture& t) {
+  if (t.normal && t.normal->uv) return true;
+  for (const PovTexture& layer : t.below)
+    if (holdsUvNormal(layer)) return true;
+  for (const PovTextureMapEntry& e : t.mapEntries)
+    if (holdsUvNormal(e.texture)) return true;
+  return false;
+}
+
 // Lucent's object space is POV-Ray's with z negated (pov_space.h): S.
 Mat4 negateZ() {
   Mat4 s(1.0);
@@ -362,6 +374,12 @@ Material SceneReader::importTexture(const PovTexture& texture, const PovInterior
     // The interior terms of the whole, from a plain texture's import.
     Material m = importMaterial(PovPigment{}, PovFinish{}, interior).material;
     m.mapPattern = texture.mapPattern.pattern;
+    const int cells = std::holds_alternative<HexagonTexture>(m.mapPattern) ? 3 : 2;
+    if (!blockValuesUnchanged(texture.mapPattern.blockValueSpec(), cells))
+      keepError(in, at,
+                "frequency, phase or a wave on a block pattern's list of textures is not "
+                "supported by Lucent (POV-Ray blends the listed textures by the changed cell "
+                "number)");
     // A uv-mapped map and its entries read the shape's (u, v, 0), placed from there.
     const bool mapUv = uv || texture.mapPattern.uv;
     const Mat4 patternFromObject =
@@ -382,6 +400,10 @@ Material SceneReader::importTexture(const PovTexture& texture, const PovInterior
            "warped (u, v) point, Lucent at (u, v) (the entries' patterns lie differently)");
     for (size_t k = 0; k < texture.mapEntries.size(); ++k) {
       const PovTextureMapEntry& e = texture.mapEntries[k];
+      if (holdsUvNormal(e.texture))
+        keepError(in, at,
+                  "a uv-mapped normal in an entry of a texture map is not supported by Lucent "
+                  "(POV-Ray bends it in the map's space)");
       if (k > 0 && e.at < texture.mapEntries[k - 1].at && !mapAverages(m))
         keepError(in, at, "a texture_map's entries out of ascending order are not supported");
       m.mapEntries.push_back(
@@ -414,6 +436,12 @@ void SceneReader::importCameraNormal(const PovCamera& camera, Camera& imported, 
     keepError(in, camera.normalLoc, "a normal without a pattern (POV-Ray: 'No normal type given')");
     return;
   }
+  if (n.uv) {
+    keepError(in, n.uvLoc,
+              "'uv_mapping' in a camera's normal is not supported by Lucent (a camera has no "
+              "(u, v))");
+    return;
+  }
   Mat4 povFromLucent(1.0);
   povFromLucent[2][2] = -1.0;
   imported.normal = n.spec;
@@ -439,8 +467,12 @@ Material SceneReader::importLayer(const PovTexture& layer, const PovInterior& in
   }
   if (uv && layer.normal)
     keepError(in, at,
-              "a normal in a uv-mapped texture is not supported by Lucent (POV-Ray bends the "
-              "world's normal by the slope in (u, v) space, Lucent bends it in the object's)");
+              "a normal in an entry of a uv-mapped texture map is not supported by Lucent "
+              "(POV-Ray bends it in the map's space at (u, v))");
+  if (layer.normal && layer.normal->bump && layer.normal->uv)
+    keepError(in, at,
+              "a uv-mapped bump_map is not supported by Lucent (it reads a uv-mapped pattern "
+              "normal; give the bump_map a planar projection of its own)");
   if (layer.normal && layer.normal->bump) {
     // A bump map is the normal's only perturbation (POV-Ray's bump_map pattern).
     m.bumpMap = layer.normal->bump;
@@ -453,10 +485,47 @@ Material SceneReader::importLayer(const PovTexture& layer, const PovInterior& in
   } else if (layer.normal) {
     m.normal = layer.normal->spec;
     m.normal->keepFacingAway = true;  // POV-Ray keeps a bent normal that faces away
-    m.normal->pattern.placement.patternFromObject =
-        glm::inverse(layer.normal->transform.povMatrix()) * objectToTexture;
+    if (layer.normal->uv) placeUvNormal(*layer.normal, objectToTexture, *m.normal, at, in);
+    else
+      m.normal->pattern.placement.patternFromObject =
+          glm::inverse(layer.normal->transform.povMatrix()) * objectToTexture;
   }
   return std::move(m);
+}
+
+// A normal read at (u, v, 0), placed by its block's own transforms T and bent where POV-Ray
+// bends it: the world normal (a normal's own uv_mapping, an object's), or the normal of the
+// space the texture was placed in (a texture's uv_mapping: the object's transforms after
+// the texture). Lucent's world and object spaces are POV-Ray's with z negated; a placement
+// T⁻¹·S (the mirror first, which leaves (u, v, 0) as it is) carries Lucent's normal into
+// POV-Ray's pattern space exactly. Where transforms before the texture turn or stretch the
+// shape, Lucent's object space is not the texture's: refused.
+void SceneReader::placeUvNormal(const PovNormal& normal, const Mat4& objectToTexture,
+                                NormalSpec& spec, const SourceLoc& at, TokenStream& in) {
+  Mat4 mirror = negateZ();
+  if (!normal.bendInWorld) {
+    // The texture's space (the transforms after it) from Lucent's object space, up to a
+    // uniform scale: S or I. The normal's transforms beyond its block's own are those that
+    // carried it back over the object's transforms before the texture.
+    const Mat3 x(normal.uvTransform.povMatrix() * glm::inverse(normal.transform.povMatrix()) *
+                 objectToTexture);
+    const double scale = std::cbrt(std::abs(glm::determinant(x)));
+    auto matches = [&](const Mat3& m) {
+      for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+          if (std::abs(x[c][r] / scale - m[c][r]) > 1e-9) return false;
+      return true;
+    };
+    if (scale > 0.0 && matches(Mat3(1.0))) mirror = Mat4(1.0);
+    else if (!(scale > 0.0 && matches(Mat3(negateZ()))))
+      keepError(in, at,
+                "a normal in a uv-mapped texture on a shape turned or stretched before the "
+                "texture is not supported by Lucent (POV-Ray bends it in the texture's space, "
+                "Lucent in the shape's)");
+  }
+  spec.pattern.placement.uv = true;
+  spec.pattern.placement.patternFromObject = glm::inverse(normal.uvTransform.povMatrix()) * mirror;
+  spec.bendInWorld = normal.bendInWorld;
 }
 
 // An object's nodes. POV-Ray gives an object without a texture its parent's (a CSG's

@@ -58,9 +58,9 @@ struct PovTexture {
   std::vector<PovTextureMapEntry> mapEntries;
 
   bool mapped() const { return !mapEntries.empty(); }
-  // Some pigment of it (a layer's, a map's, an entry's) is read at the shape's (u, v).
+  // Some pigment or normal of it (a layer's, a map's, an entry's) is read at the shape's (u, v).
   bool uvMapped() const {
-    if ((pigment.uv && pigment.patterned()) || mapPattern.uv) return true;
+    if ((pigment.uv && pigment.patterned()) || mapPattern.uv || (normal && normal->uv)) return true;
     for (const PovTexture& layer : below)
       if (layer.uvMapped()) return true;
     for (const auto& e : mapEntries)
@@ -391,7 +391,9 @@ class SceneReader : public ItemReader {
                          const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in,
                          bool uv = false);
   void readUvTexture(const Token& t, TokenStream& in, PovTexture& tex, std::string_view closing);
-  void mapAtUv(PovTexture& tex, const SourceLoc& at, TokenStream& in);
+  void mapAtUv(PovTexture& tex, bool bendInWorld);
+  void placeUvNormal(const PovNormal& normal, const Mat4& objectToTexture, NormalSpec& spec,
+                     const SourceLoc& at, TokenStream& in);
   void readTiles(const Token& t, TokenStream& in, PovTexture& tex);
   PovInterior readInterior(TokenStream& in, const PovInterior& start);
   PovMaterial readMaterial(TokenStream& in);
@@ -411,6 +413,7 @@ class SceneReader : public ItemReader {
 
   // read_patterns.cpp: patterns, their colours and modifiers
   bool readPatternKeyword(const Token& t, TokenStream& in, PovPigment& p);
+  bool readPigmentModifier(const Token& t, TokenStream& in, PovPigment& p);
   bool readPatternModifier(const Token& t, TokenStream& in, PatternSpec* spec,
                            PatternPlacement* placement);
   void readFractalColouring(const Token& t, TokenStream& in, PatternSpec& s);
@@ -418,6 +421,7 @@ class SceneReader : public ItemReader {
   void resolvePigmentColours(PovPigment& p, TokenStream& in, bool nested = false);
   // read_image_map.cpp: `image_map { [TYPE] "file" modifiers }` as a projected <image>
   void readImageMap(const Token& t, TokenStream& in, PovPigment& p);
+  void readPaletteEntry(const Token& k, bool transmit, TokenStream& in, ImageTexture& image);
   void readBumpMap(const Token& t, TokenStream& in, PovNormal& n);
   std::string readImageFileSpec(TokenStream& in);
   std::shared_ptr<const ImagePattern> readImagePattern(TokenStream& in);

@@ -9,9 +9,9 @@
 #include "render/texture.h"
 #include "scenegraph/object_pattern.h"
 #include "scenegraph/turbulence.h"
+#include "scenegraph/wave_shape.h"
 #include "slope.h"
 #include "tiling.h"
-#include "wave.h"
 #include "wave_sources.h"
 
 #include <algorithm>

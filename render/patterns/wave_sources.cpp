@@ -1,7 +1,7 @@
 #include "wave_sources.h"
 
 #include "primitives/noise.h"
-#include "wave.h"
+#include "scenegraph/wave_shape.h"
 
 #include <cmath>
 #include <cstdint>

@@ -144,3 +144,62 @@ TEST_CASE(
   REQUIRE(reread.scene);
   CHECK(withoutComments(writeSceneXml(*reread.scene, inExamples())) == withoutComments(first));
 }
+
+TEST_CASE("image palette entries: read, written back and read again, and their errors",
+          "[lang][texture][image-map][palette]") {
+  // gallery/textures/emblem.png: a 48 x 48 palette image of 16 entries.
+  const char* kPalette = R"XML(
+<material id="p"><image src="gallery/textures/emblem.png" projection="planar"
+  filter="0.1" interpolate="none"><palette index="3" filter="0.8"/>
+  <palette index="15" transmit="0.5" filter="0"/></image></material>
+<sphere material="p"/>)XML";
+  auto s = parseClean(kPalette, sceneName());
+  const auto& p = std::get<ImageTexture>(materialNamed(*s, "p").texture);
+  REQUIRE(p.palette.size() == 2);
+  CHECK(p.palette[0] == PaletteEntryFT{3, 0.8f, std::nullopt});
+  CHECK(p.palette[1] == PaletteEntryFT{15, 0.0f, 0.5f});
+  REQUIRE(p.paletteIndices);
+  CHECK(p.paletteIndices->paletteSize == 16);
+  CHECK(p.paletteFT(15) == FilterTransmit{0.0f, 0.5f});
+  CHECK(p.paletteFT(2) == FilterTransmit{0.1f, 0.0f});
+  CHECK(textureSeeThrough(materialNamed(*s, "p").texture));
+
+  const std::string first = writeSceneXml(*s, inExamples());
+  INFO(first);
+  // Filter and transmit are single precision, written exactly (as an image's own).
+  CHECK(first.find("<palette index=\"3\" filter=\"0.800000011920929\"/>") != std::string::npos);
+  CHECK(first.find("<palette index=\"15\" filter=\"0\" transmit=\"0.5\"/>") != std::string::npos);
+  auto reread = parseSceneString(first, sceneName());
+  REQUIRE(reread.scene);
+  CHECK(withoutComments(writeSceneXml(*reread.scene, inExamples())) == withoutComments(first));
+
+  // An entry alone: its own value is what makes the image see-through.
+  auto opaque = parseClean(R"XML(
+<material id="q"><image src="gallery/textures/emblem.png"><palette index="0"
+  transmit="0"/></image></material><sphere material="q"/>)XML",
+                           sceneName());
+  CHECK_FALSE(textureSeeThrough(materialNamed(*opaque, "q").texture));
+
+  ParseResult r = parseBody(
+      "\n<material id=\"a\"><image src=\"textures/uvgrid.png\"><palette index=\"1\" "
+      "filter=\"0.5\"/></image></material>"
+      "\n<material id=\"b\"><image src=\"gallery/textures/emblem.png\"><palette "
+      "index=\"16\" filter=\"0.5\"/></image></material>"
+      "\n<material id=\"c\"><image src=\"gallery/textures/emblem.png\"><palette "
+      "index=\"2\"/></image></material>"
+      "\n<material id=\"d\"><image src=\"gallery/textures/emblem.png\"><palette "
+      "index=\"2\" filter=\"1\"/><palette index=\"2\" transmit=\"1\"/></image></material>",
+      sceneName());
+  const std::string m = messages(r);
+  INFO(m);
+  CHECK(m.find("images.xml:2:") != std::string::npos);
+  CHECK(m.find("<palette> entries need a palette image") != std::string::npos);
+  CHECK(m.find("images.xml:3:") != std::string::npos);
+  CHECK(m.find("palette index 16 is past the image's palette of 16 entries (0 to 15)") !=
+        std::string::npos);
+  CHECK(m.find("images.xml:4:") != std::string::npos);
+  CHECK(m.find("<palette> needs a 'filter' or a 'transmit'") != std::string::npos);
+  CHECK(m.find("images.xml:5:") != std::string::npos);
+  CHECK(m.find("palette entry 2 is given twice") != std::string::npos);
+  CHECK(r.diagnostics.errorCount() == 4);
+}

@@ -118,6 +118,26 @@ TEST_CASE("object pattern: on a sphere's surface the point is outside, as POV-Ra
   CHECK(patternValue(s, Vec3(0.5, 0, 0)) == 1.0);
 }
 
+TEST_CASE("object pattern: on a box's faces the point is inside, as POV-Ray's test",
+          "[pattern][object]") {
+  auto scene = sceneOf(
+      {"<pattern type=\"object\" object=\"brick\"/>", "<pattern type=\"object\" object=\"cut\"/>"});
+  const PatternSpec& s = nodePigmentPattern(*scene, 0);
+  // POV-Ray's Box::Inside: outside only strictly beyond a face, so faces, edges and corners
+  // are inside.
+  for (const Vec3& p : {Vec3(1, 0, 0), Vec3(-1, 0.2, 0.1), Vec3(0.3, 0.5, 0), Vec3(0, -0.5, 0.25),
+                        Vec3(0.5, 0.1, -0.25), Vec3(1, 0.5, 0.25), Vec3(-1, -0.5, -0.25)})
+    CHECK(patternValue(s, p) == 1.0);
+  for (const Vec3& p : {Vec3(1 + 1e-12, 0, 0), Vec3(0, 0.5 + 1e-12, 0), Vec3(0, 0, -0.25 - 1e-12)})
+    CHECK(patternValue(s, p) == 0.0);
+  // A box inside a difference: its faces are inside the box there too, and the sphere cut
+  // away strictly, as POV-Ray's CSG asks each operand.
+  const PatternSpec& cut = nodePigmentPattern(*scene, 1);
+  CHECK(patternValue(cut, Vec3(-1, 0, 0)) == 1.0);
+  CHECK(patternValue(cut, Vec3(-1, -1, -1)) == 1.0);
+  CHECK(patternValue(cut, Vec3(1, -1, -1)) == 1.0);
+}
+
 TEST_CASE("object pattern: a two-entry map's first colour outside, its second inside",
           "[pattern][object]") {
   auto scene = sceneOf(

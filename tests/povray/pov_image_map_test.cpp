@@ -138,3 +138,23 @@ TEST_CASE(
   CHECK(tinted.find("an image map inside a map or a list of pigments of a material with a "
                     "coloured diffuse, which POV-Ray cannot tint") != std::string::npos);
 }
+
+TEST_CASE("an image's palette entries are written after filter all as filter N, F",
+          "[povray][image][palette]") {
+  // gallery/textures/emblem.png: a palette image of 16 entries.
+  ParseResult parsed = parseSceneString(
+      R"XML(<scene version="1"><camera position="0 1 5"/><box><material diffuse="1">
+      <image src="gallery/textures/emblem.png" projection="planar" filter="0.2">
+      <palette index="0" transmit="1"/><palette index="9" filter="0.5" transmit="0.25"/>
+      </image></material></box></scene>)XML",
+      std::string(lucentSourceDir()) + "/examples/image-test.xml");
+  for (const Diagnostic& d : parsed.diagnostics.all()) UNSCOPED_INFO(d.str());
+  REQUIRE(parsed.scene);
+  PovExport e = exportPov(*parsed.scene);
+  INFO(e.text);
+  REQUIRE(e.ok());
+  const std::string path = std::string(lucentSourceDir()) + "/examples/gallery/textures/emblem.png";
+  CHECK(has(e, "image_map { png \"" + path +
+                   "\" gamma srgb interpolate 2 filter all 0.2 transmit 0, 1 filter 9, 0.5 "
+                   "transmit 9, 0.25 }"));
+}

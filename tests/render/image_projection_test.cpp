@@ -125,3 +125,40 @@ TEST_CASE("image interpolation: none, bilinear, normalized distance and bicubic"
   CHECK(ft.ft.filter == 0.25f);
   CHECK(ft.ft.transmit == 0.5f);
 }
+
+TEST_CASE("image interpolation: a palette entry's own filter and transmit, blended as colours",
+          "[render][texture][image-map][palette]") {
+  // 2 x 2 pixels of palette indices 0 1 / 2 3 (rows top first); entry 1 filters 0.8, entry 2
+  // transmits 0.6, entry 3 has both of its own; the image's `all` filter 0.1 is entry 0's
+  // and entry 2's filter.
+  Image im(2, 2);
+  auto grid = std::make_shared<ImageValueGrid>();
+  grid->width = grid->height = 2;
+  grid->values.assign(4, 0.0f);
+  grid->indices = {0, 1, 2, 3};
+  grid->paletteSize = 4;
+  ImageTexture t;
+  t.all = {0.1f, 0.0f};
+  t.palette = {{1, 0.8f, std::nullopt}, {2, std::nullopt, 0.6f}, {3, 0.3f, 0.2f}};
+  t.paletteIndices = grid;
+  t.interpolation = ImageInterpolation::none;
+  const FilterTransmit expected[4] = {{0.1f, 0.0f}, {0.8f, 0.0f}, {0.1f, 0.6f}, {0.3f, 0.2f}};
+  for (int i = 0; i < 4; ++i) {
+    const PigmentColor c = sampleImageTexture(im, t, Vec2(0.5 + i % 2, 0.5 + i / 2));
+    CHECK(c.ft.filter == expected[i].filter);
+    CHECK(c.ft.transmit == expected[i].transmit);
+  }
+  // Bilinear a quarter of the way from pixel 0's centre towards pixel 1's, on the top row:
+  // 3:1 of their values.
+  t.interpolation = ImageInterpolation::bilinear;
+  const PigmentColor b = sampleImageTexture(im, t, Vec2(0.75, 0.5));
+  CHECK(b.ft.filter == Approx(0.75 * 0.1 + 0.25 * 0.8).epsilon(1e-6));
+  CHECK(b.ft.transmit == Approx(0.0).margin(1e-7));
+  // The corner the four share: their mean.
+  const PigmentColor m = sampleImageTexture(im, t, Vec2(1.0, 1.0));
+  CHECK(m.ft.filter == Approx((0.1 + 0.8 + 0.1 + 0.3) / 4).epsilon(1e-6));
+  CHECK(m.ft.transmit == Approx((0.6 + 0.2) / 4).epsilon(1e-6));
+  // Without entries of its own, `all` is added to every pixel as before.
+  t.palette.clear();
+  CHECK(sampleImageTexture(im, t, Vec2(0.5, 0.5)).ft == FilterTransmit{0.1f, 0.0f});
+}

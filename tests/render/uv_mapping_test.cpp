@@ -3,6 +3,7 @@
 #include "scene_builder.h"
 
 #include "lang/parser.h"
+#include "render/shading_normal.h"
 
 #include <catch2/catch.hpp>
 
@@ -129,4 +130,102 @@ TEST_CASE("uv mapping: a material map picks its entries at (u, v, 0)", "[render]
   // u = 0.375, v = 0.575: the cell (1, 2, 0) is odd; u = 0.125: the cell (0, 2, 0) is even.
   CHECK(traceOne(world, Ray(Vec3(1.5, 2, -2.3), Vec3(0, -1, 0))) == Color(0, 0, 1));
   CHECK(traceOne(world, Ray(Vec3(0.5, 2, -2.3), Vec3(0, -1, 0))) == Color(1, 0, 0));
+}
+
+namespace {
+
+// POV-Ray's slope estimate (normal.cpp, Perturb_Normal, read as facts) of `gradient x` at a
+// pattern point p with the default accuracy 0.02, written out here: the four values at p +
+// 0.02·d for its tetrahedron's directions d, each pushing the normal along d by
+// value·depth·−5.
+Vec3 gradientXBend(const Vec3& p, double depth) {
+  const Vec3 d[4] = {{0.942809041, -0.333333333, 0.0},
+                     {-0.471404521, -0.333333333, 0.816496581},
+                     {-0.471404521, -0.333333333, -0.816496581},
+                     {0.0, 1.0, 0.0}};
+  Vec3 push(0.0);
+  for (const Vec3& di : d) {
+    const double x = p.x + 0.02 * di.x;
+    push += (x - std::floor(x)) * depth * -5.0 * di;
+  }
+  return push;
+}
+
+NormalSpec uvGradient(bool world, const Mat4& placement) {
+  NormalSpec n;
+  n.pattern.type = PatternType::gradient;
+  n.pattern.axis = Vec3(1, 0, 0);
+  n.depth = 0.5;
+  n.keepFacingAway = true;
+  n.pattern.placement.uv = true;
+  n.pattern.placement.patternFromObject = placement;
+  n.bendInWorld = world;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("uv mapping: bend-space world bends the world normal, object the object's",
+          "[render][uv-mapping][normal]") {
+  SurfaceInfo s;
+  s.hasMappedUV = true;
+  s.mappedUV = Vec2(0.3, 0.55);
+  const Vec3 q(0.3, 0.55, 0.0);  // the pattern point (u, v, 0)
+  const Vec3 view(0.0, 0.0, 1.0);
+  // A shape turned 40 degrees about y: its world normal (0, 0, 1) is (sin 40, 0, cos 40) in
+  // its object space.
+  const double a = glm::radians(40.0);
+  const Transform turned = *Transform::fromMatrix(glm::rotate(Mat4(1.0), a, Vec3(0, 1, 0)));
+  const Vec3 n(0.0, 0.0, 1.0);
+
+  // World: the world normal bent in the pattern's axes, whatever the shape's transform.
+  const Vec3 world = perturbedShadingNormal(uvGradient(true, Mat4(1.0)), turned, s, n, view);
+  const Vec3 wantWorld = glm::normalize(n + gradientXBend(q, 0.5));
+  CHECK(glm::length(world - wantWorld) < 1e-9);
+
+  // Object: bent in the object space, then turned back into the world.
+  const Vec3 object = perturbedShadingNormal(uvGradient(false, Mat4(1.0)), turned, s, n, view);
+  const Vec3 nObject(-std::sin(a), 0.0, std::cos(a));  // R^T n
+  const Vec3 wantObject = Mat3(glm::rotate(Mat4(1.0), a, Vec3(0, 1, 0))) *
+                          glm::normalize(nObject + gradientXBend(q, 0.5));
+  CHECK(glm::length(object - wantObject) < 1e-9);
+  CHECK(glm::length(world - object) > 1e-3);
+
+  // The placement carries the world normal into pattern space (its inverse transpose) and
+  // back: with the mirror S, the bend's z follows the mirrored axis, (u, v, 0) unmoved.
+  Mat4 mirror(1.0);
+  mirror[2][2] = -1.0;
+  const Vec3 tilted = glm::normalize(Vec3(0.2, 0.1, 1.0));
+  const Vec3 mirrored =
+      perturbedShadingNormal(uvGradient(true, mirror), Transform(), s, tilted, view);
+  const Vec3 inPattern = glm::normalize(Vec3(tilted.x, tilted.y, -tilted.z));
+  const Vec3 bent = glm::normalize(inPattern + gradientXBend(q, 0.5));
+  CHECK(glm::length(mirrored - glm::normalize(Vec3(bent.x, bent.y, -bent.z))) < 1e-9);
+}
+
+TEST_CASE("uv mapping: an entry of a pigment map reads (u, v, 0), not its map's point",
+          "[render][uv-mapping][pigment-map]") {
+  // The map's gradient along x (scale 8) hands its entries the point (x/8, 0, z/8); its
+  // value x/8 blends a uv-mapped gradient along x of (u, v, 0) = (x/4, −z/4, 0) (first
+  // entry) with red. At x = 1.5, z = −3: u = 0.375, v = 0.75, the map's value 0.1875.
+  auto scene = sceneOf(quad(R"X(<pattern type="gradient" axis="1 0 0" transform="scale(8)">
+    <pigment-map><entry at="0"><pattern type="gradient" axis="0 1 0" mapping="uv"/></entry>
+    <entry at="1" color="1 0 0"/></pigment-map></pattern>)X"));
+  const double value = 1.5 / 8.0;
+  const Color c = down(*scene, 1.5, -3);
+  // The first entry's grey is v = 0.75; the map's point would have given y = 0.
+  CHECK(c.g == Approx((1.0 - value) * 0.75).margin(1e-6));
+  CHECK(c.r == Approx((1.0 - value) * 0.75 + value).margin(1e-6));
+  // A checker's listed pigment, uv-mapped and scaled: the cell of (u, v) / 0.25. (The quad
+  // lies in the big checker's cell [0, 100) x [0, 100) x [-100, 0), its second entry's.)
+  auto listed = sceneOf(quad(R"X(<checker scale="100"><pigment-list><entry color="0 0 1"/>
+    <entry><checker mapping="uv" transform="scale(0.25)" color1="1 1 1" color2="0 0 0"/></entry>
+    </pigment-list></checker>)X"));
+  for (double x : {0.3, 1.3, 2.7})
+    for (double z : {-0.4, -1.6, -3.1}) {
+      const double u = x / 4.0, v = -z / 4.0;
+      const int cell =
+          (static_cast<int>(std::floor(u / 0.25)) + static_cast<int>(std::floor(v / 0.25))) & 1;
+      CHECK(down(*listed, x, z).r == (cell == 0 ? 1.0f : 0.0f));
+    }
 }

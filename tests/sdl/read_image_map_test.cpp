@@ -1,5 +1,6 @@
-// The scene reader's image_map: map_type, once, interpolate, filter all and transmit all read
-// into a projected <image>, placed by the pigment's transforms; and what stays refused.
+// The scene reader's image_map: map_type, once, interpolate, filter all and transmit all, a
+// palette entry's own filter and transmit read into a projected <image>, placed by the pigment's
+// transforms; and what stays refused.
 #include <catch2/catch.hpp>
 
 #include "scene_read_support.h"
@@ -86,7 +87,7 @@ TEST_CASE("scene reader image_map: what POV-Ray refuses and what Lucent does not
   CHECK(anyContains(
       errorsOf(
           R"(sphere { 0, 1 pigment { image_map { png "scenes/image_maps.png" filter 2, 0.5 } } })"),
-      "a palette entry's own filter"));
+      "Keyword 'filter' cannot be used with non color-mapped image."));
   CHECK(anyContains(errorsOf(R"(sphere { 0, 1 pigment { pigment_pattern {
   gradient y pigment_map { [0 image_map { png "scenes/image_maps.png" }] [1 rgb 1] } } } })"),
                     "'image_map' in a pigment_pattern is not supported"));
@@ -289,4 +290,44 @@ sphere { 0, 1 pigment { checker pigment { image_map { png "scenes/image_maps.png
   const auto& checker = std::get<CheckerTexture>(listed.texture);
   REQUIRE(checker.pigments.size() == 2);
   CHECK(std::get<ImageTexture>(checker.pigments[0].texture).projection == ImageProjection::planar);
+}
+
+TEST_CASE("scene reader image_map: a palette entry's own filter and transmit, in POV-Ray's order",
+          "[sdl][scene][texture][image-map][palette]") {
+  // mm_palette.png: 16 entries. `all` sets every entry's value, so an entry's own one given
+  // before it is gone; one given after it stays. The index is rounded as POV-Ray rounds it.
+  auto r = readScene(R"(
+sphere { 0, 1 pigment { image_map { png "scenes/mm_palette.png"
+  filter 3, 0.8 transmit 5, 0.6 filter 6.995, 0.5 transmit 7, 0.3 } } }
+sphere { 0, 1 pigment { image_map { png "scenes/mm_palette.png"
+  filter 3, 0.8 transmit 3, 0.1 filter all 0.2 transmit 4, 1 } } }
+)");
+  REQUIRE(r->load.scene);
+  const ImageTexture& first = imageOf(*r->load.scene, 0);
+  REQUIRE(first.palette.size() == 3);
+  CHECK(first.palette[0] == PaletteEntryFT{3, 0.8f, std::nullopt});
+  CHECK(first.palette[1] == PaletteEntryFT{5, std::nullopt, 0.6f});
+  CHECK(first.palette[2] == PaletteEntryFT{7, 0.5f, 0.3f});
+  REQUIRE(first.paletteIndices);
+  CHECK(first.paletteIndices->paletteSize == 16);
+  CHECK(first.paletteFT(3) == FilterTransmit{0.8f, 0.0f});
+  CHECK(first.paletteFT(7) == FilterTransmit{0.5f, 0.3f});
+  CHECK(first.paletteFT(0) == FilterTransmit{0.0f, 0.0f});
+
+  const ImageTexture& second = imageOf(*r->load.scene, 1);
+  CHECK(second.all.filter == 0.2f);
+  CHECK(second.paletteFT(3) == FilterTransmit{0.2f, 0.1f});
+  CHECK(second.paletteFT(4) == FilterTransmit{0.2f, 1.0f});
+  CHECK(second.paletteFT(9) == FilterTransmit{0.2f, 0.0f});
+
+  // POV-Ray's errors: an index past the palette, an image without one.
+  CHECK(anyContains(errorsOf(R"(sphere { 0, 1 pigment { image_map { png "scenes/mm_palette.png"
+  transmit 16, 0.5 } } })"),
+                    "TRANSMIT color register value out of range"));
+  CHECK(anyContains(errorsOf(R"(sphere { 0, 1 pigment { image_map { png "scenes/mm_palette.png"
+  filter -2, 0.5 } } })"),
+                    "FILTER color register value out of range"));
+  CHECK(anyContains(errorsOf(R"(sphere { 0, 1 pigment { image_map { png "scenes/mm_rgb.png"
+  transmit 1, 0.5 } } })"),
+                    "Keyword 'transmit' cannot be used with non color-mapped image."));
 }

@@ -521,3 +521,51 @@ TEST_CASE("scene reader textures: POV-Ray 1's normals in a texture, and blocks t
   checkColor(c.phong, Color(1.0f));
   checkColor(c.diffuse, Color(0.4f));
 }
+
+TEST_CASE(
+    "scene reader textures: a block pattern's cells read its list or colour map at their "
+    "numbers after frequency, phase and wave",
+    "[sdl][scene][texture][block]") {
+  // POV-Ray's Evaluate_TPat shapes the cell number 0, 1, 2 (frequency: fmod(n·f + phase,
+  // 1.00001); then the wave), and its list or colour map is read at the result.
+  auto r = readScene(
+      "sphere { 0, 1 pigment { checker rgb <1, 0, 0>, rgb <0, 0, 1> frequency 0.5 } }\n"
+      "sphere { 0, 1 pigment { hexagon rgb <1, 0, 0>, rgb <0, 1, 0>, rgb <0, 0, 1> "
+      "triangle_wave } }\n"
+      "sphere { 0, 1 pigment { brick rgb <1, 1, 1>, rgb <0, 0, 0> sine_wave } }\n"
+      "sphere { 0, 1 pigment { hexagon rgb 0, rgb 0.5, rgb 1 frequency 0.25 phase 0.5 } }\n"
+      "sphere { 0, 1 pigment { checker rgb 0, rgb 1 phase 0.3 } }\n");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  const auto& checker = std::get<CheckerTexture>(materialOf(s, top(s, 0)).texture);
+  checkColor(checker.color1, Color(1, 0, 0));
+  checkColor(checker.color2, Color(0.5f, 0, 0.5f));  // cell 1 at 0.5: half of each
+  // triangle_wave: 0 at every whole number, so each cell takes the first colour.
+  const auto& hexagon = std::get<HexagonTexture>(materialOf(s, top(s, 1)).texture);
+  for (int i = 0; i < 3; ++i) checkColor(hexagon.spec.colors[i], Color(1, 0, 0));
+  // sine_wave: (1 + sin 2πn)/2 = 0.5 for every whole n.
+  const auto& brick = std::get<BrickTexture>(materialOf(s, top(s, 2)).texture);
+  checkColor(brick.spec.color1, Color(0.5f));
+  checkColor(brick.spec.color2, Color(0.5f));
+  // n·0.25 + 0.5: 0.5, 0.75, 1 (kept below 1.00001): the list's values at them.
+  const auto& shifted = std::get<HexagonTexture>(materialOf(s, top(s, 3)).texture);
+  checkColor(shifted.spec.colors[0], Color(0.25f));
+  checkColor(shifted.spec.colors[1], Color(0.375f));
+  checkColor(shifted.spec.colors[2], Color(0.5f));
+  // A phase without a frequency changes nothing (POV-Ray's block frequency is 0).
+  const auto& phased = std::get<CheckerTexture>(materialOf(s, top(s, 4)).texture);
+  checkColor(phased.color1, Color(0.0f));
+  checkColor(phased.color2, Color(1.0f));
+
+  const auto errors = errorsOf(
+      "sphere { 0, 1 pigment { checker pigment { rgb 1 } pigment { rgb 0 } frequency 0.5 } }\n"
+      "sphere { 0, 1 normal { hexagon 0.5 sine_wave } }\n"
+      "sphere { 0, 1 pigment { hexagon color_map { [0 rgb 1] [1 rgb 0] } } }\n");
+  REQUIRE(errors.size() == 3);
+  CHECK(errors[2] ==
+        "test.pov:3:33: error: Cannot use color_map with this pattern type. (POV-Ray's error)");
+  CHECK(errors[0].find("frequency, phase or a wave on a block pattern's list of pigments is not "
+                       "supported by Lucent") != std::string::npos);
+  CHECK(errors[1].find("frequency, phase or a wave on a block pattern's normal is not supported "
+                       "by Lucent") != std::string::npos);
+}

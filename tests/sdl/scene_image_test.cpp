@@ -193,3 +193,23 @@ TEST_CASE("scene reader image: hypercomplex julia fractals, z² and POV-Ray's cu
           "[sdl][scene][image][povray][julia]") {
   requireSameImageAsPovray("julia_hypercomplex.pov", 160, 120);
 }
+
+TEST_CASE("scene reader image: palette entries' own filter and transmit in image maps",
+          "[sdl][scene][image][povray][image-map][palette]") {
+  requireSameImageAsPovrayInPlace("image_map_palette.pov", 240, 160);
+}
+
+TEST_CASE("scene reader image: uv-mapped normals bent where POV-Ray bends them",
+          "[sdl][scene][image][povray][texture][uv-mapping][normal]") {
+  requireSameImageAsPovray("uv_mapping_normals.pov", 240, 180);
+}
+
+TEST_CASE("scene reader image: uv-mapped entries of pigment maps and lists read (u, v, 0)",
+          "[sdl][scene][image][povray][texture][uv-mapping][pigment-map]") {
+  requireSameImageAsPovray("uv_mapping_entries.pov", 240, 180);
+}
+
+TEST_CASE("scene reader image: the object pattern on a box's face, counted inside as POV-Ray's",
+          "[sdl][scene][image][povray][object]") {
+  requireSameImageAsPovray("object_pattern_box_face.pov", 160, 120);
+}

@@ -2,8 +2,9 @@
 """Writes emblem.png, the image of examples/gallery/pattern-image-pattern.xml: a 48x48
 palette PNG of 16 colours (a ring, a star and a background) whose tRNS chunk makes the
 background see-through, so that image_pattern's grey level and its use_alpha both have
-something to read. Written with the standard library only. Run from this folder:
-python3 make_emblem.py"""
+something to read; and emblem_opaque.png, the same without the tRNS chunk (every entry
+opaque), for examples/gallery/image-palette-entries.xml. Written with the standard library
+only. Run from this folder: python3 make_emblem.py"""
 import math
 import struct
 import zlib
@@ -32,8 +33,9 @@ def chunk(kind, data):
 
 
 rows = b"".join(b"\0" + bytes(index(x, y) for x in range(SIZE)) for y in range(SIZE))
-png = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", SIZE, SIZE, 8, 3, 0, 0, 0)) +
-       chunk(b"PLTE", bytes(c for rgb in PALETTE for c in rgb)) + chunk(b"tRNS", bytes(ALPHA)) +
-       chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
-with open("emblem.png", "wb") as f:
-    f.write(png)
+for name, transparency in (("emblem.png", chunk(b"tRNS", bytes(ALPHA))), ("emblem_opaque.png", b"")):
+    png = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", SIZE, SIZE, 8, 3, 0, 0, 0)) +
+           chunk(b"PLTE", bytes(c for rgb in PALETTE for c in rgb)) + transparency +
+           chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
+    with open(name, "wb") as f:
+        f.write(png)

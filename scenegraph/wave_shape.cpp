@@ -1,4 +1,4 @@
-#include "wave.h"
+#include "wave_shape.h"
 
 #include <cmath>
 

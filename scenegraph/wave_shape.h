@@ -2,7 +2,7 @@
 // cycloidal, Triangle_Wave).
 #pragma once
 
-#include "scenegraph/pattern.h"
+#include "pattern.h"
 
 namespace lucent {
 
