@@ -179,10 +179,15 @@ struct SphereSweepSpec {
   std::vector<SweepSphere> spheres;  // required: radii >= 0, not all 0
   double tolerance = 1e-6;           // POV-Ray's depth tolerance: written, not used
 };
+// POV-Ray's ovus: two spheres joined by an arc's surface of revolution (primitives/ovus.h).
+struct OvusSpec {
+  double bottomRadius = 1.0;  // >= 0, not both 0
+  double topRadius = 0.5;
+};
 using ShapeSpec =
     std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec, DiscSpec,
                  TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec, PolySpec, PrismSpec,
                  BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec, SorSpec, HeightFieldSpec,
-                 PolygonSpec, BicubicPatchSpec, JuliaFractalSpec, SphereSweepSpec>;
+                 PolygonSpec, BicubicPatchSpec, JuliaFractalSpec, SphereSweepSpec, OvusSpec>;
 
 }  // namespace lucent

@@ -32,19 +32,21 @@ namespace {
 // POV-Ray's EPSILON, its tolerance for degenerate input.
 constexpr double kPovEpsilon = 1e-10;
 
-constexpr std::string_view kShapes[] = {
-    "sphere",        "box",           "plane",       "cylinder",        "cone",
-    "torus",         "disc",          "triangle",    "smooth_triangle", "quadric",
-    "poly",          "cubic",         "quartic",     "polynomial",      "blob",
-    "lathe",         "sor",           "prism",       "superellipsoid",  "text",
-    "height_field",  "mesh",          "mesh2",       "isosurface",      "polygon",
-    "bicubic_patch", "julia_fractal", "sphere_sweep"};
+constexpr std::string_view kShapes[] = {"sphere",         "box",           "plane",
+                                        "cylinder",       "cone",          "torus",
+                                        "disc",           "triangle",      "smooth_triangle",
+                                        "quadric",        "poly",          "cubic",
+                                        "quartic",        "polynomial",    "blob",
+                                        "lathe",          "sor",           "prism",
+                                        "superellipsoid", "text",          "height_field",
+                                        "mesh",           "mesh2",         "isosurface",
+                                        "polygon",        "bicubic_patch", "julia_fractal",
+                                        "sphere_sweep",   "ovus"};
 
 // POV-Ray's shapes Lucent has no equivalent of, with the nearest Lucent feature.
 const std::map<std::string_view, std::string_view>& unsupportedShapes() {
   static const std::map<std::string_view, std::string_view> shapes = {
       {"parametric", "parametric surfaces; the nearest Lucent shape is <isosurface>"},
-      {"ovus", "the ovus; the nearest Lucent shapes are <lathe> and <sor>"},
       {"lemon", "the lemon; the nearest Lucent shapes are <lathe> and <sor>"},
   };
   return shapes;
@@ -213,6 +215,8 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
     in.parseComma();
     s.minor = in.parseFloat();
     o.shape = s;  // in the xz-plane about y: the same in both spaces
+  } else if (w == "ovus") {
+    readOvus(o, in);
   } else if (w == "disc") {
     DiscSpec s;
     s.center = point(in);
@@ -287,6 +291,23 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
   } else if (w == "mesh2") {
     readMesh2(o, in);
   }
+}
+
+// ovus { bottom_radius, top_radius }: about the y axis, the same in both spaces. POV-Ray's
+// error for a negative radius; both 0, where POV-Ray makes a sphere of radius 0 (nothing
+// drawn), is an error; a top radius of twice the bottom one or more, which POV-Ray turns
+// into its top sphere with a warning, is that sphere in Lucent too.
+void SceneReader::readOvus(PovObject& o, TokenStream& in) {
+  OvusSpec s;
+  const SourceLoc at = in.peek().loc();
+  s.bottomRadius = in.parseFloat();
+  in.parseComma();
+  s.topRadius = in.parseFloat();
+  if (!(s.bottomRadius >= 0.0 && s.topRadius >= 0.0))
+    in.error(at, "both of the ovus's radii must be >= 0");
+  if (s.bottomRadius == 0.0 && s.topRadius == 0.0)
+    in.error(at, "the ovus's radii are both 0: it has no surface");
+  o.shape = s;
 }
 
 // quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }: A x² + B y² + C z² + D xy + E xz + F yz

@@ -340,6 +340,7 @@ class SceneReader : public ItemReader {
   void readBicubicPatch(PovObject& o, TokenStream& in);
   void readJuliaFractal(PovObject& o, TokenStream& in);
   void readSphereSweep(PovObject& o, TokenStream& in);
+  void readOvus(PovObject& o, TokenStream& in);
   void readText(PovObject& o, TokenStream& in);
   void readHeightFieldOptions(HeightFieldSpec& s, TokenStream& in);
   void readFunctionHeightField(PovObject& o, TokenStream& in);

@@ -410,3 +410,14 @@ TEST_CASE("scene writer: a sphere sweep keeps its spline, spheres and tolerance"
   CHECK(d.spheres.size() == 2);
   CHECK(d.tolerance == 1e-6);
 }
+
+TEST_CASE("scene writer: an ovus keeps its radii", "[lang][scene-writer]") {
+  auto r = roundTrip("<ovus bottom-radius=\"1.25\" top-radius=\"0.375\"/>");
+  auto [a, b] = specs<OvusSpec>(r);
+  CHECK(b.bottomRadius == 1.25);
+  CHECK(b.topRadius == 0.375);
+  auto d = roundTrip("<ovus/>");
+  auto [c, e] = specs<OvusSpec>(d);
+  CHECK(e.bottomRadius == 1.0);
+  CHECK(e.topRadius == 0.5);
+}

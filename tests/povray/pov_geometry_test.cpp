@@ -31,6 +31,16 @@ TEST_CASE("every primitive is written in POV-Ray's syntax", "[povray][geometry]"
             "  <0, 1, 0>, <0, 0.7071067811865475, 0.7071067811865475>\n"));
 }
 
+TEST_CASE("an ovus is POV-Ray's, or its top sphere where POV-Ray would substitute it",
+          "[povray][geometry]") {
+  Exported e = exportScene(R"XML(<ovus bottom-radius="1" top-radius="0.65"/>
+<ovus bottom-radius="0.5" top-radius="1"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.has("ovus {  // <ovus> test.xml:3:1\n  1, 0.65\n"));
+  // POV-Ray warns and makes the top sphere: written as that sphere, without the warning.
+  CHECK(e.has("sphere {  // <ovus> test.xml:4:1\n  <0, 0.5, 0>, 1\n"));
+}
+
 TEST_CASE("transforms are written after the texture, so textures move with the shape",
           "[povray][geometry]") {
   Exported e = exportScene(R"XML(<sphere transform="scale(2) translate(0 1 0)"/>)XML");

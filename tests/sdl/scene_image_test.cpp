@@ -174,6 +174,11 @@ TEST_CASE(
   requireSameImageAsPovrayInPlace("uv_mapping_shapes.pov", 240, 180);
 }
 
+TEST_CASE("scene reader image: ovuses",
+          "[sdl][scene][image][povray][ovus]") {
+  requireSameImageAsPovray("ovus.pov", 240, 180);
+}
+
 TEST_CASE("scene reader image: image maps as entries of pigment maps and block patterns' lists",
           "[sdl][scene][image][povray][texture][image-map][pigment-map]") {
   requireSameImageAsPovrayInPlace("image_maps_in_maps.pov", 240, 180);

@@ -438,9 +438,9 @@ TEST_CASE("scene shapes: what Lucent has no shape for, refused at the keyword, e
   const auto errors = errorsOf(R"(sphere { 0, 1 }
 union { parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
         sphere { 0, 1 } }
-#declare P = ovus { 1, 0.5 } object { P }
+#declare P = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> } object { P }
 parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
-ovus { 1, 0.5 }
+parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
 superellipsoid { <0, 1> }
 height_field { gif "x.gif" }
 )");
@@ -450,10 +450,11 @@ height_field { gif "x.gif" }
         "nearest Lucent shape is <isosurface>)");
   // A declared object's refusal is said where it is used, with that place as a note.
   CHECK(errors[1] ==
-        "test.pov:4:14: error: 'ovus' is not supported by Lucent (the ovus; the nearest Lucent "
-        "shapes are <lathe> and <sor>)\ntest.pov:4:39: note: the declaration is used here");
+        "test.pov:4:14: error: 'parametric' is not supported by Lucent (parametric surfaces; the "
+        "nearest Lucent shape is <isosurface>)\ntest.pov:4:98: note: the declaration is used "
+        "here");
   CHECK(errors[2].find("test.pov:5:1: error: 'parametric' is not supported by Lucent") == 0);
-  CHECK(errors[3].find("test.pov:6:1: error: 'ovus' is not supported by Lucent") == 0);
+  CHECK(errors[3].find("test.pov:6:1: error: 'parametric' is not supported by Lucent") == 0);
   CHECK(errors[4].find("test.pov:7:1: error: 'superellipsoid' exponents outside 0.01 to 10") == 0);
   CHECK(errors[5] ==
         "test.pov:8:16: error: a height field from 'gif' is not supported by Lucent (it reads "
@@ -468,20 +469,20 @@ TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where 
   auto r = readScene(R"(#include "shapes.inc"
 #include "shapesq.inc"
 object { Monkey_Saddle }
-#declare J = ovus { 1, 0.5 }
+#declare J = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
 #declare Blobs = union { blob { sphere { 0, 1, 1 pigment { rgb 1 } } } sphere { 0, 1 } }
 )");
   REQUIRE(r->load.scene);
   CHECK(shapeOf<PolySpec>(*r->load.scene, 0).order == 4);  // a quartic
   // Placed (twice), each refusal is said once, at its keyword.
-  const auto errors = errorsOf(R"(#declare J = ovus { 1, 0.5 }
+  const auto errors = errorsOf(R"(#declare J = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
 #declare Blobs = union { blob { sphere { 0, 1, 1 pigment { rgb 1 } } } sphere { 0, 1 } }
 object { J }
 object { Blobs translate x }
 object { Blobs }
 )");
   REQUIRE(errors.size() == 2);
-  CHECK(errors[0].find("test.pov:1:14: error: 'ovus' is not supported by Lucent") == 0);
+  CHECK(errors[0].find("test.pov:1:14: error: 'parametric' is not supported by Lucent") == 0);
   CHECK(errors[1].find("test.pov:2:50: error: 'pigment' in a blob component is not supported") ==
         0);
 }
@@ -754,4 +755,31 @@ TEST_CASE("scene shapes: sphere_sweep's errors are POV-Ray's", "[sdl][scene][sha
   CHECK(errorsOf("sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 0, 0>, -1 }") ==
         std::vector<std::string>{"test.pov:1:58: error: a negative sphere_sweep radius is not "
                                  "supported by Lucent (radii >= 0)"});
+}
+
+TEST_CASE("scene shapes: ovus, about the y axis in both spaces", "[sdl][scene][shapes][ovus]") {
+  auto r = readScene(R"(
+ovus { 1, 0.65 }
+#declare E = ovus { 0.5 1.2 }
+object { E translate z }
+)");
+  REQUIRE(r->load.scene);
+  const auto& a = shapeOf<OvusSpec>(*r->load.scene, 0);
+  CHECK(a.bottomRadius == 1.0);
+  CHECK(a.topRadius == 0.65);
+  // A top radius of twice the bottom one or more: POV-Ray's top sphere, as Lucent's ovus.
+  const auto& b = shapeOf<OvusSpec>(*r->load.scene, 1);
+  CHECK(b.bottomRadius == 0.5);
+  CHECK(b.topRadius == 1.2);
+  checkMat(topNode(*r->load.scene, 1).parentFromNode,
+           PovTransform::translation(Vec3(0, 0, 1)).lucentMatrix());
+}
+
+TEST_CASE("scene shapes: an ovus's radii below 0, or both 0, are errors",
+          "[sdl][scene][shapes][ovus][errors]") {
+  CHECK(errorsOf("ovus { -1, 0.5 }") ==
+        std::vector<std::string>{"test.pov:1:8: error: both of the ovus's radii must be >= 0"});
+  CHECK(errorsOf("ovus { 0, 0 }") ==
+        std::vector<std::string>{
+            "test.pov:1:8: error: the ovus's radii are both 0: it has no surface"});
 }
