@@ -101,6 +101,10 @@ struct PrismSpec {
 struct BlobSpec {
   double threshold = 1.0;
   std::vector<BlobComponent> components;
+  // A material of each component's own (Scene::materials' index), POV-Ray's component
+  // texture, weighted at a hit by the component's |field| there; none: the blob's. Empty
+  // when no component has one, else one per component.
+  std::vector<std::optional<uint32_t>> componentMaterials{};
 };
 // A curve turned about the y axis, POV-Ray's lathe (primitives/lathe.h).
 struct LatheSpec {

@@ -387,7 +387,8 @@ void SceneReader::readPoly(PovObject& o, TokenStream& in) {
 void SceneReader::readBlob(PovObject& o, TokenStream& in) {
   BlobSpec s;
   s.threshold = 1.0;
-  bool refused = false;
+  o.componentTextures.clear();
+  o.componentTextureLocs.clear();
   for (;;) {
     const Token t = in.next();
     if (isWord(t, "threshold")) {
@@ -402,6 +403,10 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
       if (!(c.radius > 0.0)) in.error(t, "the blob component's radius is 0");
       c.a = lucentFromPov(c.a);
       s.components.push_back(c);
+      if (!o.componentTextures.empty()) {
+        o.componentTextures.emplace_back();
+        o.componentTextureLocs.emplace_back();
+      }
     } else if (isWord(t, "sphere") || isWord(t, "cylinder")) {
       BlobComponent c;
       c.kind = isWord(t, "sphere") ? BlobComponent::Sphere : BlobComponent::Cylinder;
@@ -419,22 +424,32 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
       if (!(c.radius > 0.0)) in.error(t, "the blob component's radius is 0");
       if (c.kind == BlobComponent::Cylinder && glm::length(c.b - c.a) < kPovEpsilon)
         in.error(t, "the blob's cylinder component has no length (its ends are the same point)");
-      PovTransform m;
+      // The component's transforms and texture, read as an object's (a texture follows
+      // only the transforms written after it).
+      PovObject part;
+      part.keyword = "blob component";
+      PovTransform& m = part.transform;
       for (;;) {
         const Token mod = in.next();
         if (mod.is("}")) break;
         if (readTransform(mod, in, m)) continue;
         if (isWord(mod, "texture") || isWord(mod, "pigment") || isWord(mod, "finish") ||
             isWord(mod, "normal")) {
-          refuse(o, mod.loc(), in,
-                 "'" + std::string(mod.text()) +
-                     "' in a blob component is not supported by Lucent (its blob has one "
-                     "material; give the texture to the whole blob)");
-          refused = true;
-          skipBlock(in);
+          readObjectModifier(mod, part, in);
           continue;
         }
         in.error(mod, "unexpected " + mod.describe() + " in a blob component");
+      }
+      if (part.texture) {
+        PovTexture own = *part.texture;
+        own.transform(m);  // into the blob's space
+        o.componentTextures.resize(s.components.size());
+        o.componentTextureLocs.resize(s.components.size());
+        o.componentTextures.push_back(std::move(own));
+        o.componentTextureLocs.push_back(part.textureLoc);
+      } else if (!o.componentTextures.empty()) {
+        o.componentTextures.emplace_back();
+        o.componentTextureLocs.emplace_back();
       }
       double scale = 1.0;
       if (similarity(m.povMatrix(), scale)) {
@@ -454,7 +469,6 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
       break;
     }
   }
-  if (refused) return;
   if (s.components.empty()) in.error(o.loc, "the blob has no component");
   if (!(s.threshold > 0.0))
     refuseShape(o, o.loc, in,

@@ -266,6 +266,21 @@ TEST_CASE("scene writer: a blob's components are written as its children", "[lan
   CHECK(a.components[1].transform == b.components[1].transform);  // to the last bit
 }
 
+TEST_CASE("scene writer: a blob component's own material is written by id",
+          "[lang][scene-writer]") {
+  auto r = roundTrip(
+      "<material id=\"red\" diffuse=\"0.8 0.1 0.1\"/><blob threshold=\"0.5\">"
+      "<component type=\"sphere\" radius=\"1\" material=\"red\"/>"
+      "<component type=\"sphere\" center=\"1 0 0\" radius=\"1\"/></blob>");
+  auto [a, b] = specs<BlobSpec>(r);
+  REQUIRE(b.componentMaterials.size() == 2);
+  REQUIRE(b.componentMaterials[0]);
+  CHECK_FALSE(b.componentMaterials[1]);
+  CHECK(r.second->materials[*b.componentMaterials[0]].diffuse ==
+        r.first->materials[*a.componentMaterials[0]].diffuse);
+  CHECK(r.text.find("material=\"red\"") != std::string::npos);
+}
+
 TEST_CASE("scene writer: an isosurface's function keeps its parameters as local <param>s",
           "[lang][scene-writer]") {
   auto r = roundTrip(

@@ -174,8 +174,9 @@ TEST_CASE(
   requireSameImageAsPovrayInPlace("uv_mapping_shapes.pov", 240, 180);
 }
 
-TEST_CASE("scene reader image: ovuses",
-          "[sdl][scene][image][povray][ovus]") {
+TEST_CASE("scene reader image: blob components with textures of their own, and ovuses",
+          "[sdl][scene][image][povray][blob][ovus]") {
+  requireSameImageAsPovray("blob_component_textures.pov", 240, 180);
   requireSameImageAsPovray("ovus.pov", 240, 180);
 }
 

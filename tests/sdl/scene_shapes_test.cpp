@@ -470,45 +470,76 @@ TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where 
 #include "shapesq.inc"
 object { Monkey_Saddle }
 #declare J = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
-#declare Blobs = union { blob { sphere { 0, 1, 1 pigment { rgb 1 } } } sphere { 0, 1 } }
+#declare Meshes = union { mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } } sphere { 0, 1 } }
 )");
   REQUIRE(r->load.scene);
   CHECK(shapeOf<PolySpec>(*r->load.scene, 0).order == 4);  // a quartic
   // Placed (twice), each refusal is said once, at its keyword.
   const auto errors = errorsOf(R"(#declare J = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
-#declare Blobs = union { blob { sphere { 0, 1, 1 pigment { rgb 1 } } } sphere { 0, 1 } }
+#declare Meshes = union { mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } } sphere { 0, 1 } }
 object { J }
-object { Blobs translate x }
-object { Blobs }
+object { Meshes translate x }
+object { Meshes }
 )");
   REQUIRE(errors.size() == 2);
   CHECK(errors[0].find("test.pov:1:14: error: 'parametric' is not supported by Lucent") == 0);
-  CHECK(errors[1].find("test.pov:2:50: error: 'pigment' in a blob component is not supported") ==
-        0);
+  CHECK(errors[1].find("test.pov:2:53: error: 'texture' in a mesh triangle is not supported") == 0);
 }
 
-TEST_CASE("scene shapes: blob components and mesh triangles Lucent cannot hold",
+TEST_CASE("scene shapes: blob thresholds and mesh triangles Lucent cannot hold",
           "[sdl][scene][shapes][errors]") {
   const auto errors = errorsOf(R"(blob {
   sphere { 0, 1, 1 scale <1, 2, 1> }
   sphere { 0, 1, 1 pigment { rgb 1 } }
-  threshold 0
+  threshold 0.5
 }
 blob { sphere { 0, 1, 1 } threshold -1 }
 mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } }
 mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 1, texture { } } face_indices { 1, <0, 1, 2>, 0 } }
 )");
-  // The first component, scaled unevenly, is read (its own transform); the second's texture
-  // is refused.
-  REQUIRE(errors.size() == 4);
-  CHECK(errors[0].find("test.pov:3:20: error: 'pigment' in a blob component is not supported") ==
-        0);
-  CHECK(errors[1] ==
+  // The first blob is read: the first component scaled unevenly (its own transform), the
+  // second with its own pigment.
+  REQUIRE(errors.size() == 3);
+  CHECK(errors[0] ==
         "test.pov:6:1: error: a blob threshold of -1 is not supported by Lucent (it takes a "
         "threshold above 0: at or below 0 all of space away from the components would be inside)");
-  CHECK(errors[2].find("test.pov:7:27: error: 'texture' in a mesh triangle is not supported") == 0);
-  CHECK(errors[3].find("test.pov:8:39: error: 'texture_list' (textures per mesh triangle) is not "
+  CHECK(errors[1].find("test.pov:7:27: error: 'texture' in a mesh triangle is not supported") == 0);
+  CHECK(errors[2].find("test.pov:8:39: error: 'texture_list' (textures per mesh triangle) is not "
                        "supported") == 0);
+}
+
+TEST_CASE("scene shapes: a blob component's own texture is a material of the blob's space",
+          "[sdl][scene][shapes][blob]") {
+  auto r = readScene(R"(
+blob {
+  threshold 0.5
+  sphere { 0, 1, 1 pigment { rgb <1, 0, 0> } translate x }
+  cylinder { 0, y, 0.5, 1 }
+  sphere { 0, 1, 1 translate z texture { pigment { checker rgb 0, rgb 1 } } scale 2 }
+  pigment { rgb <0, 0, 1> }
+}
+blob { sphere { 0, 1, 1 } sphere { x, 1, 1 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& scene = *r->load.scene;
+  const Node& n = topNode(scene, 0);
+  const auto& b = shapeOf<BlobSpec>(scene, 0);
+  REQUIRE(b.components.size() == 3);
+  REQUIRE(b.componentMaterials.size() == 3);
+  REQUIRE(b.componentMaterials[0]);
+  CHECK_FALSE(b.componentMaterials[1]);  // the blob's own
+  REQUIRE(b.componentMaterials[2]);
+  REQUIRE(n.material);
+  CHECK(scene.materials[*b.componentMaterials[0]].diffuse.r > 0.0f);
+  CHECK(scene.materials[*b.componentMaterials[0]].diffuse.b == 0.0f);
+  CHECK(scene.materials[*n.material].diffuse.r == 0.0f);
+  CHECK(b.componentMaterials[0] != b.componentMaterials[2]);
+  // The checker was written after `translate z`: it follows only `scale 2` (z negated).
+  const auto* checker =
+      std::get_if<CheckerTexture>(&scene.materials[*b.componentMaterials[2]].texture);
+  REQUIRE(checker);
+  CHECK(checker->placement.patternFromObject[0][0] == Approx(0.5));
+  CHECK(shapeOf<BlobSpec>(scene, 1).componentMaterials.empty());
 }
 
 TEST_CASE("scene shapes: bad input, located", "[sdl][scene][shapes][errors]") {
