@@ -180,6 +180,11 @@ TEST_CASE("scene reader image: blob components with textures of their own, and o
   requireSameImageAsPovray("ovus.pov", 240, 180);
 }
 
+TEST_CASE("scene reader image: functions.inc's f_helix1 in isosurfaces",
+          "[sdl][scene][image][povray][function]") {
+  requireSameImageAsPovray("helix1_isosurface.pov", 240, 180);
+}
+
 TEST_CASE("scene reader image: image maps as entries of pigment maps and block patterns' lists",
           "[sdl][scene][image][povray][texture][image-map][pigment-map]") {
   requireSameImageAsPovrayInPlace("image_maps_in_maps.pov", 240, 180);
