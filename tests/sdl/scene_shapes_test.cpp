@@ -475,7 +475,8 @@ object { Monkey_Saddle }
   REQUIRE(r->load.scene);
   CHECK(shapeOf<PolySpec>(*r->load.scene, 0).order == 4);  // a quartic
   // Placed (twice), each refusal is said once, at its keyword.
-  const auto errors = errorsOf(R"(#declare J = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
+  const auto errors = errorsOf(
+      R"(#declare J = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
 #declare Meshes = union { mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } } sphere { 0, 1 } }
 object { J }
 object { Meshes translate x }
