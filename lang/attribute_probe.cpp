@@ -94,6 +94,10 @@ std::optional<std::string> AttributeProbe::filePath(const char* attr) {
   cannot(attr);
   return std::nullopt;
 }
+std::optional<uint32_t> AttributeProbe::material(const char* attr) {
+  cannot(attr);
+  return std::nullopt;
+}
 void AttributeProbe::forEachChild(const char* element,
                                   const std::function<void(AttributeInput&)>&) {
   unwritable.push_back(std::string("<") + element + ">");

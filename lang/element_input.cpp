@@ -1,5 +1,6 @@
 #include "element_input.h"
 
+#include "element_parsers.h"
 #include "pigment_function_parser.h"
 
 #include "expression_field.h"
@@ -67,6 +68,11 @@ std::optional<FunctionInput> ElementInput::function(const char* attr,
     return std::nullopt;
   }
   return in;
+}
+
+std::optional<uint32_t> ElementInput::material(const char* attr) {
+  if (!r_.has(attr)) return std::nullopt;
+  return lookupMaterial(r_, attr);
 }
 
 std::optional<std::string> ElementInput::filePath(const char* attr) {

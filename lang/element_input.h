@@ -46,6 +46,7 @@ class ElementInput final : public AttributeInput {
   std::shared_ptr<const MeshData> meshFile(const char* attr, bool* firstRead) override;
   std::shared_ptr<const HeightMap> heightMapFile(const char* attr, std::string& resolved) override;
   std::optional<std::string> filePath(const char* attr) override;
+  std::optional<uint32_t> material(const char* attr) override;
   void forEachChild(const char* element, const std::function<void(AttributeInput&)>& read) override;
 
   void attrError(const char* attr, const std::string& message) override {

@@ -277,6 +277,10 @@ class SceneWriter {
     if (n.material) ++uses_[*n.material];
     // An interior material is named by id only: written once, shared.
     if (n.interiorMaterial) uses_[*n.interiorMaterial] += 2;
+    // So is a blob component's.
+    if (const auto* blob = n.shape ? std::get_if<BlobSpec>(&*n.shape) : nullptr)
+      for (const auto& m : blob->componentMaterials)
+        if (m) uses_[*m] += 2;
     if (n.kind == NodeKind::Use && n.target) targets_.insert(n.target);
     for (const auto& c : n.children) count(*c);
     for (const auto& c : n.clip) count(*c);
@@ -395,6 +399,12 @@ class SceneWriter {
       // <poly>).
       element = shapeElementName(*n.shape);
       for (auto& kv : shapeAttributes(n, shapeChildren)) a.push_back(kv);
+      // A blob component's own material, by id: its children are the components in order.
+      if (const auto* blob = std::get_if<BlobSpec>(&*n.shape))
+        for (size_t k = 0; k < blob->componentMaterials.size() && k < shapeChildren.size(); ++k)
+          if (blob->componentMaterials[k])
+            shapeChildren[k].attributes.emplace_back("material",
+                                                     named_.at(*blob->componentMaterials[k]));
     } else if (n.kind == NodeKind::Use) {
       if (!n.target || n.target->id.empty())
         cannotWrite(n.loc, "a <use> whose target has no id cannot be written");

@@ -405,8 +405,13 @@ namespace {
 class ShapeOut final : public PovShapeOut {
  public:
   ShapeOut(PovWriter& out, std::string comment, std::function<std::string(const MeshSpec&)> mesh,
-           std::function<void(const std::string&)> error)
-      : out_(out), comment_(std::move(comment)), mesh_(std::move(mesh)), error_(std::move(error)) {}
+           std::function<void(const std::string&)> error,
+           std::function<std::string(uint32_t)> material)
+      : out_(out),
+        comment_(std::move(comment)),
+        mesh_(std::move(mesh)),
+        error_(std::move(error)),
+        material_(std::move(material)) {}
   void open(std::string_view keyword) override { out_.open(keyword, comment_); }
   void line(std::string_view text) override { out_.line(text); }
   std::string number(double v) const override { return povNumber(v); }
@@ -422,12 +427,14 @@ class ShapeOut final : public PovShapeOut {
     return body;
   }
   void error(const std::string& message) override { error_(message); }
+  std::string materialTexture(uint32_t material) override { return material_(material); }
 
  private:
   PovWriter& out_;
   std::string comment_;
   std::function<std::string(const MeshSpec&)> mesh_;
   std::function<void(const std::string&)> error_;
+  std::function<std::string(uint32_t)> material_;
 };
 
 }  // namespace
@@ -461,9 +468,18 @@ void PovGeometry::writeShapeHead(const Node& node, const Mat4& m, uint32_t mater
     const Vec3 lo = glm::min(box->min, box->max), hi = glm::max(box->min, box->max);
     spec = BoxSpec{Vec3(lo.x, lo.y, -hi.z), Vec3(hi.x, hi.y, -lo.z)};
   }
+  // A part's own material (a blob component's): its declared texture.
+  auto partMaterial = [&](uint32_t index) {
+    used_[index] = true;
+    if (materials_.dependsOnShape(index))
+      issues_.error(node.loc, "<" + node.element +
+                                  ">: a component's material with an image or a uv mapping "
+                                  "cannot be written for POV-Ray");
+    return "texture { " + materials_.textureName(index) + " }";
+  };
   ShapeOut shapeOut(
       out, where, [&](const MeshSpec& mesh) { return meshName(mesh, node); },
-      [&](const std::string& message) { issues_.error(node.loc, message); });
+      [&](const std::string& message) { issues_.error(node.loc, message); }, partMaterial);
   shapeTypeOf(spec).writePov(spec, shapeOut);
   if (mirrored) out.line("matrix <1, 0, 0, 0, 1, 0, 0, 0, -1, 0, 0, 0>");
 }

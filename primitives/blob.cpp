@@ -145,6 +145,9 @@ Blob::Blob(double threshold, std::vector<BlobComponent> components) : threshold_
       box = placeComponent(c.transform, box, pieces_.begin() + static_cast<long>(first),
                            pieces_.end());
     }
+    for (size_t i = first; i < pieces_.size(); ++i)
+      pieces_[i].component = static_cast<uint32_t>(componentCount_);
+    ++componentCount_;
     // Only positive components can lift the field above the threshold.
     if (c.strength > 0.0) {
       bounds_ = any ? AABB::join(bounds_, box) : box;
@@ -166,6 +169,17 @@ double Blob::field(const Vec3& p) const {
     f += pc.s * g * g;
   }
   return f;
+}
+
+void Blob::componentFields(const Vec3& p, std::vector<double>& out) const {
+  out.assign(componentCount_, 0.0);
+  for (const Piece& pc : pieces_) {
+    Vec3 radial;
+    double q = pieceRadius2(pc, p, radial);
+    if (q < 0.0 || q >= pc.r2) continue;
+    double g = 1.0 - q / pc.r2;
+    out[pc.component] += std::abs(pc.s * g * g);
+  }
 }
 
 Vec3 Blob::gradient(const Vec3& p) const {

@@ -44,6 +44,10 @@ class Blob final : public Shape {
   double field(const Vec3& p) const;
   Vec3 gradient(const Vec3& p) const;
   double threshold() const { return threshold_; }
+  // Each component's |field| at p, in the components' order: POV-Ray's weights of the
+  // components' textures there (a cylinder's body and ends add up to its one).
+  void componentFields(const Vec3& p, std::vector<double>& out) const;
+  size_t componentCount() const { return componentCount_; }
 
   // Where the field's support pieces are: a ball (optionally cut by a plane through its
   // centre: a cylinder's ends) or a cylinder's body.
@@ -62,6 +66,7 @@ class Blob final : public Shape {
     bool local = false;
     Mat3 toLocal{1.0};
     Vec3 localOffset{0.0};
+    uint32_t component = 0;  // the index of the component it is part of
   };
 
  private:
@@ -74,6 +79,7 @@ class Blob final : public Shape {
   std::vector<Piece> pieces_;
   AABB bounds_;
   double scale_ = 1.0;  // the largest extent of the bounds, for error bounds
+  size_t componentCount_ = 0;
 };
 
 }  // namespace lucent

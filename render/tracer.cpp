@@ -13,6 +13,8 @@
 #include "sky_color.h"
 #include "spawn.h"
 
+#include "primitives/blob.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -131,8 +133,10 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     PatternSurface surface;
     if (patternSurface_) surface = patternSurfaceAt(s, here.v);
     const PatternSurfaceScope surfaceScope(patternSurface_, surface);
-    const Shaded shaded =
-        shadeSlot(surfaceSlot(hitLeaf, ray, s), here, depth, weight, media, seed, context, true);
+    const Shaded shaded = hitLeaf.componentMaterials
+                              ? shadeComponents(here, depth, weight, media, seed, context)
+                              : shadeSlot(surfaceSlot(hitLeaf, ray, s), here, depth, weight, media,
+                                          seed, context, true);
     sum += throughput * shaded.result;
     const SecondaryRays& rays = shaded.rays;
     if (!rays.straight) return sum;
@@ -351,6 +355,50 @@ Tracer::Shaded Tracer::shadeAverage(const SurfaceSlots::Slot& map, const Hit& h,
   }
   out.result /= total;
   return out;
+}
+
+void Tracer::componentWeights(const WorldLeaf& leaf, const SurfaceInfo& s,
+                              std::vector<std::pair<uint32_t, float>>& out) const {
+  out.clear();
+  const auto* blob = dynamic_cast<const Blob*>(&leaf.instance->shape());
+  if (!blob) return;
+  thread_local std::vector<double> fields;
+  blob->componentFields(s.pObject, fields);
+  double sum = 0.0;
+  for (double f : fields) sum += f;
+  if (!(sum > 0.0)) return;
+  const std::vector<uint32_t>& materials = *leaf.componentMaterials;
+  for (size_t k = 0; k < fields.size() && k < materials.size(); ++k) {
+    const auto w = static_cast<float>(fields[k] / sum);
+    if (!(fields[k] > 0.0) || w < settings_.minWeight) continue;
+    auto same = std::find_if(out.begin(), out.end(),
+                             [&](const auto& e) { return e.first == materials[k]; });
+    if (same != out.end()) same->second += w;
+    else out.emplace_back(materials[k], w);
+  }
+}
+
+Tracer::Shaded Tracer::shadeComponents(const Hit& h, int depth, const Color& weight,
+                                       const MediaStack& media, PathSeed& seed,
+                                       TraceContext& context) const {
+  thread_local std::vector<std::pair<uint32_t, float>> weights;
+  componentWeights(h.leaf, h.s, weights);
+  // Copied: the shading below may trace rays that hit this blob again.
+  const std::vector<std::pair<uint32_t, float>> parts = weights;
+  Shaded out;
+  out.beyond = media;
+  for (const auto& [slot, w] : parts)
+    out.result += w * shadeSlot(slot, h, depth, weight, media, seed, context, false).result;
+  return out;
+}
+
+// A multi-textured blob's share: its materials' shares, weighted as its surface's colour.
+Color Tracer::componentsLetThrough(const WorldLeaf& leaf, const SurfaceInfo& s) const {
+  std::vector<std::pair<uint32_t, float>> weights;
+  componentWeights(leaf, s, weights);
+  Color blend(0.0f);
+  for (const auto& [slot, w] : weights) blend += w * letThrough(slot, leaf, s);
+  return blend;
 }
 
 Color Tracer::letThrough(uint32_t slot, const WorldLeaf& leaf, const SurfaceInfo& s) const {
@@ -670,7 +718,7 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
     WorldLeaf inner;
     const WorldLeaf& leaf = surfaceLeaf(hit.leaf(), ray, hit, inner);
     if (!leaf.transmissive) return Color(0.0f);
-    if (slots_[leaf.materialIndex].kind == SurfaceSlots::Kind::plain &&
+    if (!leaf.componentMaterials && slots_[leaf.materialIndex].kind == SurfaceSlots::Kind::plain &&
         !seeThrough_[leaf.materialIndex])
       t *= leaf.material->transmissive;
     else {
@@ -678,7 +726,8 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
       PatternSurface surface;
       if (patternSurface_) surface = patternSurfaceAt(s, -glm::normalize(ray.d));
       const PatternSurfaceScope surfaceScope(patternSurface_, surface);
-      t *= letThrough(leaf.materialIndex, leaf, s);
+      t *= leaf.componentMaterials ? componentsLetThrough(leaf, s)
+                                   : letThrough(leaf.materialIndex, leaf, s);
     }
     if (anyAbsorbing_) {
       const bool front = !leaf.medium || !(glm::dot(ray.d, hit.surface(ray).ng) > 0.0);

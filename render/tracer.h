@@ -116,6 +116,16 @@ class Tracer {
   // see-through texture's, the product over layers, the blend over a map's entries (the
   // weighted mean over an average's).
   Color letThrough(uint32_t slot, const WorldLeaf& leaf, const SurfaceInfo& s) const;
+  // A blob whose components have materials of their own (WorldLeaf::componentMaterials):
+  // POV-Ray's weights at the hit, each component's |field| over their sum, those below
+  // the bail-out weight left out (as POV-Ray skips them), summed per material (slot, weight).
+  void componentWeights(const WorldLeaf& leaf, const SurfaceInfo& s,
+                        std::vector<std::pair<uint32_t, float>>& out) const;
+  // Such a blob's surface: each material shaded whole with the ray's weight, the colours
+  // summed by the weights (POV-Ray's multi-textured blob).
+  Color componentsLetThrough(const WorldLeaf& leaf, const SurfaceInfo& s) const;
+  Shaded shadeComponents(const Hit& h, int depth, const Color& weight, const MediaStack& media,
+                         PathSeed& seed, TraceContext& context) const;
   // `leaf` as the surface of slot `slot` (itself when the slot is its material's).
   WorldLeaf leafOfSlot(const WorldLeaf& leaf, uint32_t slot) const;
   // The slot of the surface `ray` meets at s: the leaf's interior material where it meets

@@ -101,6 +101,9 @@ class AttributeInput {
   // The file the attribute names, resolved by the scene's file-access rules (absolute);
   // nullopt when absent or not allowed (reported).
   virtual std::optional<std::string> filePath(const char* attr) = 0;
+  // The scene material the attribute names by id (Scene::materials' index); nullopt when
+  // absent or unknown (reported).
+  virtual std::optional<uint32_t> material(const char* attr) = 0;
 
   // Each child element named `element` (a shape's own children, which its entry declares,
   // e.g. a blob's <component>), in order, read through an input of its own whose errors

@@ -141,6 +141,8 @@ struct Builder {
   std::vector<WorldLeaf>& leaves;
   // The light groups met so far, in placeLights' order (scenegraph/light_group.h).
   uint32_t lightGroups = 0;
+  // Where the blobs' component materials go (null: a solid whose materials do not matter).
+  std::deque<std::vector<uint32_t>>* componentMaterials = nullptr;
 
   // Adds the node's objects to `out`.
   // `inSolid`: the node is (inside) an operand of a merge, intersection or difference,
@@ -244,6 +246,17 @@ struct Builder {
     leaf.doubleIlluminate = inherited.doubleIlluminate;
     leaf.uvMapped =
         usesUvMapping(*leaf.material) || (leaf.interior && usesUvMapping(*leaf.interior));
+    const auto* blob = std::get_if<BlobSpec>(&*node.shape);
+    if (blob && !blob->componentMaterials.empty() && componentMaterials) {
+      std::vector<uint32_t>& list = componentMaterials->emplace_back();
+      for (const auto& own : blob->componentMaterials) {
+        const uint32_t m = own.value_or(inherited.material);
+        list.push_back(m);
+        leaf.transmissive |= scene.materials[m].isTransmissive();
+        leaf.uvMapped |= usesUvMapping(scene.materials[m]);
+      }
+      leaf.componentMaterials = &list;
+    }
     leaf.lightGroup = inherited.lights.group;
     leaf.globalLights = inherited.lights.globalLights();
     leaves.push_back(leaf);
@@ -365,6 +378,7 @@ std::unique_ptr<Shape> buildSolid(const Scene& scene, const Node& node,
 FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape) {
   FlatScene flat;
   Builder b{scene, makeShape, hasUses(scene), {}, flat.leaves};
+  b.componentMaterials = &flat.componentMaterials;
   std::vector<Part> parts;
   b.add(*scene.root, Transform(), Inherited{}, Seen{}, false, parts);
   flat.objects.reserve(parts.size());

@@ -11,6 +11,7 @@
 #include "primitives/shape.h"
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -45,6 +46,11 @@ struct WorldLeaf {
   uint32_t lightGroup = 0;
   bool globalLights = true;
   bool litBy(const Light& l) const { return l.group == 0 ? globalLights : l.group == lightGroup; }
+  // A blob whose components have materials of their own (BlobSpec::componentMaterials):
+  // each component's material, the leaf's where it has none (Scene::materials' indices);
+  // null otherwise (FlatScene::componentMaterials holds them). Its surface is their blend
+  // by the components' fields at the hit.
+  const std::vector<uint32_t>* componentMaterials = nullptr;
 };
 
 // A top-level object: a leaf's Instance, a CSG node of leaves, or either inside out.
@@ -62,6 +68,8 @@ struct WorldObject {
 struct FlatScene {
   std::vector<WorldObject> objects;
   std::vector<WorldLeaf> leaves;  // every leaf, those inside CSG nodes too, in scene order
+  // The leaves' WorldLeaf::componentMaterials (a deque: their addresses stay).
+  std::deque<std::vector<uint32_t>> componentMaterials;
 };
 
 // Composes transforms down to the leaves (world matrix, inverse and normal matrix

@@ -56,6 +56,64 @@ double torus2(const double* p) {
         2 * (ph - th) * y2 - 2 * (ph + th) * z2 + (ph - th) * (ph - th));
   return clampField(p[3] * r);
 }
+// f_helix1: p[3] helices of frequency p[4] about y, tubes of radius p[5] about the circle
+// of radius p[6], their cross-section squashed along the helix by p[7]: a circle when
+// p[8] = 1, else a superellipse of exponent 2/p[8] (a square at 0) turned by p[9] degrees.
+// POV-Ray's angle steps: atan2 with x nudged off the axis, fmod by 2pi and one turn added
+// below 0 (the floored modulo of the text form).
+constexpr double kPovPi = 3.1415926535897932384626;
+constexpr double kPovTwoPi = 6.283185307179586476925286766559;
+constexpr double kPovPi180 = 0.01745329251994329576;
+double helix1(const double* p) {
+  const double r = std::sqrt(p[0] * p[0] + p[2] * p[2]);
+  double th = std::atan2(p[2], (p[0] == 0 && p[2] == 0) ? 0.000001 : p[0]);
+  th = std::fmod(th * p[3] + p[1] * p[4] * p[3], kPovTwoPi);
+  if (th < 0) th += kPovTwoPi;
+  double z = (th - kPovPi) / p[7] / (p[4] * p[3]);
+  double x = r - p[6];
+  double r2;
+  if (p[8] == 1) {
+    r2 = std::sqrt(x * x + z * z);
+  } else {
+    if (p[9] != 0) {
+      const double c = std::cos(p[9] * kPovPi180), s = std::sin(p[9] * kPovPi180);
+      const double x2 = x * c - z * s;
+      z = x * s + z * c;
+      x = x2;
+    }
+    if (p[8] != 0) {
+      const double e = 2. / p[8];
+      r2 = std::pow(std::pow(std::fabs(x), e) + std::pow(std::fabs(z), e), p[8] * .5);
+    } else {
+      r2 = povMax(std::fabs(x), std::fabs(z));
+    }
+  }
+  return -p[5] + povMin(p[6] + r, r2);
+}
+// The same as text: the angle 0 on the axis (atan2 of ±0 and 1e-6), the turn by p[9]
+// taken whatever it is (by 0 it changes nothing).
+#define LUCENT_HELIX_Z                                                                      \
+  "((((((($0 == 0) && ($2 == 0)) ? 0 : atan2($2, $0))*$3 + $1*$4*$3) % 6.283185307179586) " \
+  "- 3.141592653589793)/$7/($4*$3))"
+#define LUCENT_HELIX_X "(sqrt($0*$0 + $2*$2) - $6)"
+#define LUCENT_HELIX_COS "cos($9*0.017453292519943295)"
+#define LUCENT_HELIX_SIN "sin($9*0.017453292519943295)"
+#define LUCENT_HELIX_XR \
+  "(" LUCENT_HELIX_X "*" LUCENT_HELIX_COS " - (" LUCENT_HELIX_Z ")*" LUCENT_HELIX_SIN ")"
+#define LUCENT_HELIX_ZR \
+  "(" LUCENT_HELIX_X "*" LUCENT_HELIX_SIN " + (" LUCENT_HELIX_Z ")*" LUCENT_HELIX_COS ")"
+const char* const helix1Formula =
+    "(-$5 + min($6 + sqrt($0*$0 + $2*$2), ($8 == 1 ? sqrt(" LUCENT_HELIX_X "*" LUCENT_HELIX_X
+    " + (" LUCENT_HELIX_Z ")*(" LUCENT_HELIX_Z ")) : ($8 != 0 ? pow(pow(abs(" LUCENT_HELIX_XR
+    "), 2/$8) + pow(abs(" LUCENT_HELIX_ZR "), 2/$8), $8*0.5) : max(abs(" LUCENT_HELIX_XR
+    "), abs(" LUCENT_HELIX_ZR "))))))";
+#undef LUCENT_HELIX_Z
+#undef LUCENT_HELIX_X
+#undef LUCENT_HELIX_COS
+#undef LUCENT_HELIX_SIN
+#undef LUCENT_HELIX_XR
+#undef LUCENT_HELIX_ZR
+
 double ellipsoid(const double* p) {
   return std::sqrt(p[0] * p[0] * p[3] * p[3] + p[1] * p[1] * p[4] * p[4] +
                    p[2] * p[2] * p[5] * p[5]);
@@ -178,7 +236,7 @@ const InternalFunction kInternal[] = {
     {"f_glob", 4, glob, globFormula},
     {"f_heart", 4, heart, heartFormula},
     {"f_helical_torus", 13, nullptr, nullptr},
-    {"f_helix1", 10, nullptr, nullptr},
+    {"f_helix1", 10, helix1, helix1Formula},
     {"f_helix2", 10, nullptr, nullptr},
     {"f_hex_x", 4, nullptr, nullptr},
     {"f_hex_y", 4, nullptr, nullptr},

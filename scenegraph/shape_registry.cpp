@@ -17,7 +17,7 @@ constexpr std::array<std::string_view, std::variant_size_v<ShapeSpec>> kElements
     "sphere",       "box",      "cylinder",      "cone",          "torus",          "plane",
     "disc",         "triangle", "mesh",          "quadric",       "superellipsoid", "poly",
     "prism",        "blob",     "lathe",         "isosurface",    "text",           "sor",
-    "height-field", "polygon",  "bicubic-patch", "julia-fractal", "sphere-sweep"};
+    "height-field", "polygon",  "bicubic-patch", "julia-fractal", "sphere-sweep",   "ovus"};
 
 constexpr bool everyShapeNamed() {
   for (std::string_view name : kElements)

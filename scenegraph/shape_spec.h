@@ -101,6 +101,10 @@ struct PrismSpec {
 struct BlobSpec {
   double threshold = 1.0;
   std::vector<BlobComponent> components;
+  // A material of each component's own (Scene::materials' index), POV-Ray's component
+  // texture, weighted at a hit by the component's |field| there; none: the blob's. Empty
+  // when no component has one, else one per component.
+  std::vector<std::optional<uint32_t>> componentMaterials{};
 };
 // A curve turned about the y axis, POV-Ray's lathe (primitives/lathe.h).
 struct LatheSpec {
@@ -179,10 +183,15 @@ struct SphereSweepSpec {
   std::vector<SweepSphere> spheres;  // required: radii >= 0, not all 0
   double tolerance = 1e-6;           // POV-Ray's depth tolerance: written, not used
 };
+// POV-Ray's ovus: two spheres joined by an arc's surface of revolution (primitives/ovus.h).
+struct OvusSpec {
+  double bottomRadius = 1.0;  // >= 0, not both 0
+  double topRadius = 0.5;
+};
 using ShapeSpec =
     std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec, DiscSpec,
                  TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec, PolySpec, PrismSpec,
                  BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec, SorSpec, HeightFieldSpec,
-                 PolygonSpec, BicubicPatchSpec, JuliaFractalSpec, SphereSweepSpec>;
+                 PolygonSpec, BicubicPatchSpec, JuliaFractalSpec, SphereSweepSpec, OvusSpec>;
 
 }  // namespace lucent

@@ -61,6 +61,10 @@ class PovShapeOut {
   // What the shape's parameters cannot be written as (an isosurface's random()): an
   // export error at the shape.
   virtual void error(const std::string& message) = 0;
+  // A scene material as POV-Ray's texture of a part of the shape (a blob component's):
+  // "texture { NAME }" of the declared texture (an error when the material depends on the
+  // shape, an image map or a uv mapping).
+  virtual std::string materialTexture(uint32_t material) = 0;
 };
 
 // How a surface point becomes an image texture's (u, v), as POV-Ray's image_map can

@@ -20,6 +20,7 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   FlatScene flat = flattenScene(scene, make);
   objects_ = std::move(flat.objects);
   leaves_ = std::move(flat.leaves);
+  componentMaterials_ = std::move(flat.componentMaterials);  // the leaves point into it
   std::vector<Aggregate::Object> items;
   items.reserve(objects_.size());
   for (const WorldObject& o : objects_) {

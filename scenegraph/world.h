@@ -105,6 +105,7 @@ class World {
   const Scene& scene_;
   std::vector<WorldObject> objects_;
   std::vector<WorldLeaf> leaves_;
+  std::deque<std::vector<uint32_t>> componentMaterials_;  // WorldLeaf::componentMaterials
   Aggregate aggregate_;
   // Whether occluder() and opaqueOccluder() have objects to leave out.
   bool occluderSkips_ = false, opaqueSkips_ = false;

@@ -32,19 +32,21 @@ namespace {
 // POV-Ray's EPSILON, its tolerance for degenerate input.
 constexpr double kPovEpsilon = 1e-10;
 
-constexpr std::string_view kShapes[] = {
-    "sphere",        "box",           "plane",       "cylinder",        "cone",
-    "torus",         "disc",          "triangle",    "smooth_triangle", "quadric",
-    "poly",          "cubic",         "quartic",     "polynomial",      "blob",
-    "lathe",         "sor",           "prism",       "superellipsoid",  "text",
-    "height_field",  "mesh",          "mesh2",       "isosurface",      "polygon",
-    "bicubic_patch", "julia_fractal", "sphere_sweep"};
+constexpr std::string_view kShapes[] = {"sphere",         "box",           "plane",
+                                        "cylinder",       "cone",          "torus",
+                                        "disc",           "triangle",      "smooth_triangle",
+                                        "quadric",        "poly",          "cubic",
+                                        "quartic",        "polynomial",    "blob",
+                                        "lathe",          "sor",           "prism",
+                                        "superellipsoid", "text",          "height_field",
+                                        "mesh",           "mesh2",         "isosurface",
+                                        "polygon",        "bicubic_patch", "julia_fractal",
+                                        "sphere_sweep",   "ovus"};
 
 // POV-Ray's shapes Lucent has no equivalent of, with the nearest Lucent feature.
 const std::map<std::string_view, std::string_view>& unsupportedShapes() {
   static const std::map<std::string_view, std::string_view> shapes = {
       {"parametric", "parametric surfaces; the nearest Lucent shape is <isosurface>"},
-      {"ovus", "the ovus; the nearest Lucent shapes are <lathe> and <sor>"},
       {"lemon", "the lemon; the nearest Lucent shapes are <lathe> and <sor>"},
   };
   return shapes;
@@ -213,6 +215,8 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
     in.parseComma();
     s.minor = in.parseFloat();
     o.shape = s;  // in the xz-plane about y: the same in both spaces
+  } else if (w == "ovus") {
+    readOvus(o, in);
   } else if (w == "disc") {
     DiscSpec s;
     s.center = point(in);
@@ -287,6 +291,23 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
   } else if (w == "mesh2") {
     readMesh2(o, in);
   }
+}
+
+// ovus { bottom_radius, top_radius }: about the y axis, the same in both spaces. POV-Ray's
+// error for a negative radius; both 0, where POV-Ray makes a sphere of radius 0 (nothing
+// drawn), is an error; a top radius of twice the bottom one or more, which POV-Ray turns
+// into its top sphere with a warning, is that sphere in Lucent too.
+void SceneReader::readOvus(PovObject& o, TokenStream& in) {
+  OvusSpec s;
+  const SourceLoc at = in.peek().loc();
+  s.bottomRadius = in.parseFloat();
+  in.parseComma();
+  s.topRadius = in.parseFloat();
+  if (!(s.bottomRadius >= 0.0 && s.topRadius >= 0.0))
+    in.error(at, "both of the ovus's radii must be >= 0");
+  if (s.bottomRadius == 0.0 && s.topRadius == 0.0)
+    in.error(at, "the ovus's radii are both 0: it has no surface");
+  o.shape = s;
 }
 
 // quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }: A x² + B y² + C z² + D xy + E xz + F yz
@@ -366,7 +387,8 @@ void SceneReader::readPoly(PovObject& o, TokenStream& in) {
 void SceneReader::readBlob(PovObject& o, TokenStream& in) {
   BlobSpec s;
   s.threshold = 1.0;
-  bool refused = false;
+  o.componentTextures.clear();
+  o.componentTextureLocs.clear();
   for (;;) {
     const Token t = in.next();
     if (isWord(t, "threshold")) {
@@ -381,6 +403,10 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
       if (!(c.radius > 0.0)) in.error(t, "the blob component's radius is 0");
       c.a = lucentFromPov(c.a);
       s.components.push_back(c);
+      if (!o.componentTextures.empty()) {
+        o.componentTextures.emplace_back();
+        o.componentTextureLocs.emplace_back();
+      }
     } else if (isWord(t, "sphere") || isWord(t, "cylinder")) {
       BlobComponent c;
       c.kind = isWord(t, "sphere") ? BlobComponent::Sphere : BlobComponent::Cylinder;
@@ -398,22 +424,32 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
       if (!(c.radius > 0.0)) in.error(t, "the blob component's radius is 0");
       if (c.kind == BlobComponent::Cylinder && glm::length(c.b - c.a) < kPovEpsilon)
         in.error(t, "the blob's cylinder component has no length (its ends are the same point)");
-      PovTransform m;
+      // The component's transforms and texture, read as an object's (a texture follows
+      // only the transforms written after it).
+      PovObject part;
+      part.keyword = "blob component";
+      PovTransform& m = part.transform;
       for (;;) {
         const Token mod = in.next();
         if (mod.is("}")) break;
         if (readTransform(mod, in, m)) continue;
         if (isWord(mod, "texture") || isWord(mod, "pigment") || isWord(mod, "finish") ||
             isWord(mod, "normal")) {
-          refuse(o, mod.loc(), in,
-                 "'" + std::string(mod.text()) +
-                     "' in a blob component is not supported by Lucent (its blob has one "
-                     "material; give the texture to the whole blob)");
-          refused = true;
-          skipBlock(in);
+          readObjectModifier(mod, part, in);
           continue;
         }
         in.error(mod, "unexpected " + mod.describe() + " in a blob component");
+      }
+      if (part.texture) {
+        PovTexture own = *part.texture;
+        own.transform(m);  // into the blob's space
+        o.componentTextures.resize(s.components.size());
+        o.componentTextureLocs.resize(s.components.size());
+        o.componentTextures.push_back(std::move(own));
+        o.componentTextureLocs.push_back(part.textureLoc);
+      } else if (!o.componentTextures.empty()) {
+        o.componentTextures.emplace_back();
+        o.componentTextureLocs.emplace_back();
       }
       double scale = 1.0;
       if (similarity(m.povMatrix(), scale)) {
@@ -433,7 +469,6 @@ void SceneReader::readBlob(PovObject& o, TokenStream& in) {
       break;
     }
   }
-  if (refused) return;
   if (s.components.empty()) in.error(o.loc, "the blob has no component");
   if (!(s.threshold > 0.0))
     refuseShape(o, o.loc, in,

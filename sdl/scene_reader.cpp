@@ -603,6 +603,7 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     here.materialTextureFromNode = textureFromNode;
   }
   addInteriorMaterial(o, here, textureFromNode, *n, in);
+  addComponentMaterials(o, here, *n, in);
   here.textureFromParent = textureFromNode;
   here.framed = inherited.framed && (o.kind == NodeKind::Union || o.lightGroup) && o.clip.empty() &&
                 o.bound.empty();
@@ -627,6 +628,22 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     addBoxCut(o, here, *n, in);
   }
   return n;
+}
+
+// A blob's component textures: a material of each, in the blob's own space (its texture
+// space: the component's transforms are in the texture's), with the blob's interior.
+void SceneReader::addComponentMaterials(const PovObject& o, const Inherited& here, Node& n,
+                                        TokenStream& in) {
+  auto* blob = n.shape ? std::get_if<BlobSpec>(&*n.shape) : nullptr;
+  if (!blob || o.componentTextures.empty()) return;
+  blob->componentMaterials.clear();
+  for (size_t k = 0; k < o.componentTextures.size(); ++k) {
+    const auto& texture = o.componentTextures[k];
+    blob->componentMaterials.push_back(
+        texture ? std::optional<uint32_t>(addMaterial(*texture, *here.interior, here.hollow,
+                                                      Mat4(1.0), o.componentTextureLocs[k], in))
+                : std::nullopt);
+  }
 }
 
 // interior_texture: a material of the texture (with the object's interior) for the node

@@ -143,6 +143,11 @@ struct PovObject {
   bool boundIsClip = false;
   int depth = 1;       // levels of objects, this one included
   uint64_t nodes = 1;  // objects within, this one included
+  // A blob's components' own textures, one per component once any has one (else empty),
+  // each in the blob's own space (the component's transforms after it applied), with
+  // where it was written.
+  std::vector<std::optional<PovTexture>> componentTextures;
+  std::vector<SourceLoc> componentTextureLocs;
 };
 
 // A light's looks_like: the object, moved to the light's centre as it was there (and by the
@@ -283,6 +288,7 @@ class SceneReader : public ItemReader {
   void addBoxCut(const PovObject& o, const Inherited& here, Node& n, TokenStream& in);
   void addInteriorMaterial(const PovObject& o, Inherited& here, const Mat4& textureFromNode,
                            Node& n, TokenStream& in);
+  void addComponentMaterials(const PovObject& o, const Inherited& here, Node& n, TokenStream& in);
   // `hollow`: the object's flag, which POV-Ray promotes to its interior (the material's).
   // uv: objectToTexture leads from the shape's (u, v, 0) (a uv-mapped map's entries).
   Material importLayer(const PovTexture& layer, const PovInterior& interior,
@@ -340,6 +346,7 @@ class SceneReader : public ItemReader {
   void readBicubicPatch(PovObject& o, TokenStream& in);
   void readJuliaFractal(PovObject& o, TokenStream& in);
   void readSphereSweep(PovObject& o, TokenStream& in);
+  void readOvus(PovObject& o, TokenStream& in);
   void readText(PovObject& o, TokenStream& in);
   void readHeightFieldOptions(HeightFieldSpec& s, TokenStream& in);
   void readFunctionHeightField(PovObject& o, TokenStream& in);

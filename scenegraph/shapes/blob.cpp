@@ -44,18 +44,35 @@ void readComponent(BlobSpec& s, AttributeInput& c) {
     if (comp.a == comp.b) c.error("a cylinder <component> needs different 'base' and 'cap'");
   }
   comp.transform = c.transform("transform", Mat4(1.0));
+  const std::optional<uint32_t> material = c.material("material");
   const Mat3 linear(comp.transform);
   double size = 0.0;
   for (int i = 0; i < 3; ++i) size = std::max(size, glm::length(linear[i]));
   if (!(std::abs(glm::determinant(linear)) > 1e-12 * size * size * size))
     c.attrError("transform", "a component's transform must be invertible (no scale of 0)");
-  if (!c.failed()) s.components.push_back(comp);
+  if (c.failed()) return;
+  s.components.push_back(comp);
+  // One entry per component once any has a material (POV-Ray's multi-textured blob).
+  if (material || !s.componentMaterials.empty()) {
+    s.componentMaterials.resize(s.components.size() - 1);
+    s.componentMaterials.push_back(material);
+  }
 }
 
 AttributeInfo childAttribute(const char* name, AttrType type, std::string def, std::string doc,
                              bool required = false, std::vector<std::string_view> choices = {}) {
   AttributeInfo a{name, type, {}, std::move(choices), std::move(def), required, std::move(doc)};
   if (std::string_view(name) == "radius") a.rule = NumberRule::positive();
+  return a;
+}
+
+// A component's own material, by id: POV-Ray's texture in a blob component.
+AttributeInfo materialAttribute() {
+  AttributeInfo a = childAttribute(
+      "material", AttrType::Text, "",
+      "The id of a top-level material of the component's own, in the blob's space: at a hit, "
+      "each component's material (the blob's where it has none) weighted by its |field| there.");
+  a.schemaType = "name";
   return a;
 }
 
@@ -79,7 +96,8 @@ ShapeEntry<BlobSpec> shapeEntry<BlobSpec>() {
       [](const BlobSpec& s, PovShapeOut& out) {
         out.open("blob");
         out.line("threshold " + out.number(s.threshold));
-        for (const BlobComponent& c : s.components) {
+        for (size_t k = 0; k < s.components.size(); ++k) {
+          const BlobComponent& c = s.components[k];
           // POV-Ray's matrix multiplies row vectors: its 12 numbers are the columns of
           // Lucent's (column-vector) matrix, each cut to x, y, z.
           std::string placed;
@@ -90,6 +108,9 @@ ShapeEntry<BlobSpec> shapeEntry<BlobSpec>() {
                 placed += (col || row ? ", " : "") + out.number(c.transform[col][row]);
             placed += ">";
           }
+          // A component's material after its transform: it lies in the blob's space.
+          if (k < s.componentMaterials.size() && s.componentMaterials[k])
+            placed += " " + out.materialTexture(*s.componentMaterials[k]);
           if (c.kind == BlobComponent::Sphere)
             out.line(fmt::format("sphere {{ {}, {}, strength {}{} }}", out.vector(c.a),
                                  out.number(c.radius), out.number(c.strength), placed));
@@ -117,7 +138,7 @@ ShapeEntry<BlobSpec> shapeEntry<BlobSpec>() {
                        true),
         childAttribute("strength", AttrType::Number, "1",
                        "The field at the centre or axis; may be negative."),
-        transformAttribute()},
+        transformAttribute(), materialAttribute()},
        true}};
   e.finish = [](BlobSpec& s, AttributeInput& in) {
     in.forEachChild("component", [&](AttributeInput& c) { readComponent(s, c); });

@@ -1,5 +1,6 @@
 // CSG against the analytic set formulas: point membership, the first hit of random rays
 // against the first change of membership along the ray, and the normals of each case.
+#include "../support/ovus_reference.h"
 #include "csg/csg_node.h"
 #include "primitives/instance.h"
 #include "scenegraph/shape_registry.h"
@@ -86,6 +87,26 @@ Solid torus(Vec3 c, double major, double minor) {
           }};
 }
 
+// POV-Ray's ovus, lying along x through c (rotate-z(-90)): the union of its balls and its
+// lemon between the seams (support/ovus_reference.h, POV-Ray's parameters).
+Solid ovus(Vec3 c, double bottom, double top) {
+  return {[=] {
+            Mat4 m = glm::translate(Mat4(1.0), c) *
+                     glm::rotate(Mat4(1.0), glm::radians(-90.0), Vec3(0, 0, 1));
+            return std::make_unique<Instance>(makeShape(OvusSpec{bottom, top}),
+                                              *Transform::fromMatrix(m), 0);
+          },
+          [=](const Vec3& p) {
+            const test::OvusReference ref(bottom, top);
+            const Vec3 q = p - c;
+            const test::OvusReference::LV l(-q.y, q.x, q.z);  // rotate-z(90): its own frame
+            double v = kInf;
+            for (int k = 0; k < 3; ++k)
+              if (ref.active(k)) v = std::min(v, (double)ref.gauge(k, l));
+            return v;
+          }};
+}
+
 // A capped cylinder along x from x0 to x1 through (., y, z).
 Solid cylinderX(double x0, double x1, double y, double z, double r) {
   return {[=] {
@@ -155,6 +176,10 @@ std::vector<std::pair<std::string, Solid>> trees() {
     out.push_back({name + " depth 2", combine(op, {combine(CsgOp::Intersection, {m, h}),
                                                    combine(CsgOp::Difference, {t, y})})});
   }
+  // An ovus lying along x, with a sphere and a box it overlaps.
+  Solid o = ovus(Vec3(-0.6, 0.1, 0.0), 0.7, 0.45);
+  for (CsgOp op : {CsgOp::Intersection, CsgOp::Difference})
+    out.push_back({std::string(csgOpName(op)) + " of ovus, sphere, box", combine(op, {o, a, b})});
   return out;
 }
 

@@ -266,6 +266,21 @@ TEST_CASE("scene writer: a blob's components are written as its children", "[lan
   CHECK(a.components[1].transform == b.components[1].transform);  // to the last bit
 }
 
+TEST_CASE("scene writer: a blob component's own material is written by id",
+          "[lang][scene-writer]") {
+  auto r = roundTrip(
+      "<material id=\"red\" diffuse=\"0.8 0.1 0.1\"/><blob threshold=\"0.5\">"
+      "<component type=\"sphere\" radius=\"1\" material=\"red\"/>"
+      "<component type=\"sphere\" center=\"1 0 0\" radius=\"1\"/></blob>");
+  auto [a, b] = specs<BlobSpec>(r);
+  REQUIRE(b.componentMaterials.size() == 2);
+  REQUIRE(b.componentMaterials[0]);
+  CHECK_FALSE(b.componentMaterials[1]);
+  CHECK(r.second->materials[*b.componentMaterials[0]].diffuse ==
+        r.first->materials[*a.componentMaterials[0]].diffuse);
+  CHECK(r.text.find("material=\"red\"") != std::string::npos);
+}
+
 TEST_CASE("scene writer: an isosurface's function keeps its parameters as local <param>s",
           "[lang][scene-writer]") {
   auto r = roundTrip(
@@ -409,4 +424,15 @@ TEST_CASE("scene writer: a sphere sweep keeps its spline, spheres and tolerance"
   CHECK(d.spline == SweepSpline::Linear);
   CHECK(d.spheres.size() == 2);
   CHECK(d.tolerance == 1e-6);
+}
+
+TEST_CASE("scene writer: an ovus keeps its radii", "[lang][scene-writer]") {
+  auto r = roundTrip("<ovus bottom-radius=\"1.25\" top-radius=\"0.375\"/>");
+  auto [a, b] = specs<OvusSpec>(r);
+  CHECK(b.bottomRadius == 1.25);
+  CHECK(b.topRadius == 0.375);
+  auto d = roundTrip("<ovus/>");
+  auto [c, e] = specs<OvusSpec>(d);
+  CHECK(e.bottomRadius == 1.0);
+  CHECK(e.topRadius == 0.5);
 }

@@ -542,7 +542,7 @@ std::vector<CaseResult> allCases(double effort) {
   for (auto family : {baselineCases, grazingCases, farAndScaledCases, secondaryRayCases,
                       zeroDirectionCases, nearSingularCases, superellipsoidCases, quadricCases,
                       blobCases, prismCases, latheCases, isosurfaceCases, textCases, sorCases,
-                      sweepCases, heightFieldCases, meshCases, meshAlongEdgeCases}) {
+                      sweepCases, ovusCases, heightFieldCases, meshCases, meshAlongEdgeCases}) {
     std::vector<CaseResult> part = family(effort);
     all.insert(all.end(), part.begin(), part.end());
   }

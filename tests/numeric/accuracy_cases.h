@@ -55,6 +55,9 @@ std::vector<CaseResult> sorCases(double effort);
 // Sphere sweeps (accuracy_sweep_cases.cpp): linear, Catmull-Rom and B-spline sweeps through
 // the same spheres, random rays and rays tangent to the surface.
 std::vector<CaseResult> sweepCases(double effort);
+// Ovuses (accuracy_ovus_cases.cpp): POV-Ray's two forms, random rays, rays tangent to the
+// surface, rays through the seams where the arc meets the spheres.
+std::vector<CaseResult> ovusCases(double effort);
 // Height fields (accuracy_height_field_cases.cpp): a 9 x 7 grid with a water level, random
 // rays, rays edge-on along its grid lines and diagonals, rays along its grid edges.
 std::vector<CaseResult> heightFieldCases(double effort);

@@ -122,6 +122,11 @@ TEST_CASE("accuracy: sphere sweeps: linear, cubic and b-spline, random and tange
   requireWithinBounds(sweepCases(kRandomEffort));
 }
 
+TEST_CASE("accuracy: ovuses: both of POV-Ray's forms, random and tangent rays, the seams",
+          "[numeric][accuracy][ovus]") {
+  requireWithinBounds(ovusCases(1.0));
+}
+
 TEST_CASE(
     "accuracy: height fields: random rays, edge-on along grid lines and diagonals, along grid "
     "edges",

@@ -31,6 +31,32 @@ TEST_CASE("every primitive is written in POV-Ray's syntax", "[povray][geometry]"
             "  <0, 1, 0>, <0, 0.7071067811865475, 0.7071067811865475>\n"));
 }
 
+TEST_CASE("an ovus is POV-Ray's, or its top sphere where POV-Ray would substitute it",
+          "[povray][geometry]") {
+  Exported e = exportScene(R"XML(<ovus bottom-radius="1" top-radius="0.65"/>
+<ovus bottom-radius="0.5" top-radius="1"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(e.has("ovus {  // <ovus> test.xml:3:1\n  1, 0.65\n"));
+  // POV-Ray warns and makes the top sphere: written as that sphere, without the warning.
+  CHECK(e.has("sphere {  // <ovus> test.xml:4:1\n  <0, 0.5, 0>, 1\n"));
+}
+
+TEST_CASE("a blob component's own material is its texture, after its transform",
+          "[povray][geometry]") {
+  Exported e = exportScene(R"XML(<material id="red" diffuse="0.8 0.1 0.1"/>
+<blob threshold="0.5">
+  <component type="sphere" radius="1" material="red" transform="scale(1 2 1)"/>
+  <component type="sphere" center="1 0 0" radius="1"/>
+</blob>)XML");
+  INFO(e.messages() << e.pov.text);
+  REQUIRE(e.pov.ok());
+  CHECK(
+      e.has("sphere { <0, 0, 0>, 1, strength 1 matrix <1, 0, 0, 0, 2, 0, 0, 0, 1, 0, 0, 0> "
+            "texture { M1_red } }\n"));
+  CHECK(e.has("sphere { <1, 0, 0>, 1, strength 1 }\n"));
+  CHECK(e.has("#declare M1_red = texture"));
+}
+
 TEST_CASE("transforms are written after the texture, so textures move with the shape",
           "[povray][geometry]") {
   Exported e = exportScene(R"XML(<sphere transform="scale(2) translate(0 1 0)"/>)XML");

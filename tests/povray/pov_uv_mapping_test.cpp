@@ -35,12 +35,12 @@ TEST_CASE("a uv-mapped pattern, normal and map write uv_mapping first in their b
   CHECK(m.pov.text.find("uv_mapping") == m.pov.text.rfind("uv_mapping"));
 }
 
-TEST_CASE("uv mapping on a sphere, torus, lathe or sor is written mirrored in u, a box in z",
+TEST_CASE("uv mapping on a sphere, torus, lathe, sor or ovus is written mirrored in u, a box in z",
           "[povray][materials][uv-mapping]") {
   // u -> 1 - u first: POV-Ray's placement takes (u, v) to 4·(1 - u, v), the inverse of
   // x -> 1 - x/4, y -> y/4.
-  for (const char* shape :
-       {"sphere", "torus", "sor points=\"1 0  1 1  1 2  1 3\"", "lathe points=\"1 0  1 1\""}) {
+  for (const char* shape : {"sphere", "torus", "sor points=\"1 0  1 1  1 2  1 3\"",
+                            "lathe points=\"1 0  1 1\"", "ovus"}) {
     Exported e = exportScene("<" + std::string(shape) +
                              R"XML(><material><checker mapping="uv" transform="scale(0.25)"/>
         </material></)XML" + std::string(shape).substr(0, std::string(shape).find(' ')) +

@@ -57,6 +57,9 @@ class RecordingInput final : public AttributeInput {
   std::optional<std::string> filePath(const char* attr) override {
     return ask(attr, std::optional<std::string>());
   }
+  std::optional<uint32_t> material(const char* attr) override {
+    return ask(attr, std::optional<uint32_t>());
+  }
   void forEachChild(const char* element, const std::function<void(AttributeInput&)>&) override {
     asked.insert(std::string("<") + element + ">");
   }

@@ -31,6 +31,9 @@ class RecordingOut final : public PovShapeOut {
     return "f(" + text + ")";
   }
   void error(const std::string& message) override { errors.push_back(message); }
+  std::string materialTexture(uint32_t material) override {
+    return "texture { M" + std::to_string(material) + " }";
+  }
 
   std::vector<std::string> keywords, lines, errors;
 };

@@ -13,6 +13,7 @@
 #include "lang/expression_field.h"
 
 #include <cmath>
+#include <cstdio>
 
 using namespace lucent;
 using namespace lucent::sdl;
@@ -179,7 +180,52 @@ TEST_CASE("sdl function: each internal formula's Lucent text gives its C++ value
     }
     ++checked;
   }
-  CHECK(checked == 39);
+  CHECK(checked == 40);
+}
+
+TEST_CASE("sdl function: f_helix1's text gives its C++ value for each cross-section",
+          "[sdl][function]") {
+  const int n = 25;
+  const InternalFunction* in = internalFunction(n);
+  REQUIRE(std::string(in->name) == "f_helix1");
+  REQUIRE(in->evaluate);
+  // Circles, a rounded rectangle turned 30 degrees, a square, a diamond, a turn of -45.
+  const double params[][7] = {{3, 35, 0.0105, 0.0165, 2, 1, 0},
+                              {2, 1.5, 0.1, 0.9, 1.3, 0.5, 30},
+                              {1, 2, 0.2, 0.7, 1, 0, 0},
+                              {4, 0.8, 0.15, 0.6, 0.7, 2, 0},
+                              {2, 1.1, 0.1, 0.5, 1, 0.3, -45}};
+  const double points[][3] = {
+      {0.8, 0.3, 0.5}, {-0.6, -1.7, 0.45}, {0, 0.35, 0}, {-0.3, -2.2, -0.4}};
+  for (const auto& q : params) {
+    FunctionValue f;
+    f.kind = FunctionValue::Kind::Internal;
+    f.internal = n;
+    std::vector<std::string> args = {"x", "y", "z"};
+    for (double v : q) {
+      char number[40];
+      std::snprintf(number, sizeof number, "(%.17g)", v);
+      args.push_back(number);
+    }
+    const std::string text = functionText(f, args);
+    struct NoNames : ExpressionNames {
+      std::optional<double> number(std::string_view, std::string& e, bool& known) override {
+        known = false;
+        e = "none";
+        return std::nullopt;
+      }
+      std::vector<std::string> visibleNames() override { return {}; }
+    } names;
+    ExpressionError problem;
+    auto compiled = compileFunction(text, {"x", "y", "z"}, names, problem);
+    INFO(text << " " << problem.message);
+    REQUIRE(compiled);
+    auto field = makeExpressionField(*compiled);
+    for (const auto& p : points) {
+      double all[10] = {p[0], p[1], p[2], q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
+      CHECK(field->value(Vec3(p[0], p[1], p[2])) == Approx(in->evaluate(all)).margin(1e-12));
+    }
+  }
 }
 
 TEST_CASE("sdl function: an isosurface's text inlines user functions", "[sdl][function]") {

@@ -81,7 +81,7 @@ TEST_CASE("isosurface: what cannot be written as a Lucent expression is refused 
       "#declare F = function { f_sphere(x, y, z, 1) + 0.1*f_ridged_mf(x, y, z, 1, 2, 6, 1, 1, 0) "
       "}\n"
       "isosurface { function { F(x, y, z) } }\n"
-      "isosurface { function { f_helix1(x, y, z, 1, 2, 3, 4, 5, 6, 7) } }\n"
+      "isosurface { function { f_helix2(x, y, z, 1, 2, 3, 4, 5, 6, 7) } }\n"
       "isosurface { function { sum(i, 1, 3, x) } }\n",
       out);
   CHECK(!l.scene);
@@ -94,7 +94,7 @@ TEST_CASE("isosurface: what cannot be written as a Lucent expression is refused 
   CHECK(errors[0].find("test.pov:2:52: note: the cause, in the function's text") !=
         std::string::npos);
   CHECK(errors[1].rfind("test.pov:4:14: error: this isosurface's function cannot be imported: "
-                        "'f_helix1' (internal(25)) is not evaluated",
+                        "'f_helix2' (internal(26)) is not evaluated",
                         0) == 0);
   CHECK(errors[2].rfind("test.pov:5:14: error: this isosurface's function cannot be imported: "
                         "sum() and prod() cannot be written",

@@ -174,6 +174,17 @@ TEST_CASE(
   requireSameImageAsPovrayInPlace("uv_mapping_shapes.pov", 240, 180);
 }
 
+TEST_CASE("scene reader image: blob components with textures of their own, and ovuses",
+          "[sdl][scene][image][povray][blob][ovus]") {
+  requireSameImageAsPovray("blob_component_textures.pov", 240, 180);
+  requireSameImageAsPovray("ovus.pov", 240, 180);
+}
+
+TEST_CASE("scene reader image: functions.inc's f_helix1 in isosurfaces",
+          "[sdl][scene][image][povray][function]") {
+  requireSameImageAsPovray("helix1_isosurface.pov", 240, 180);
+}
+
 TEST_CASE("scene reader image: image maps as entries of pigment maps and block patterns' lists",
           "[sdl][scene][image][povray][texture][image-map][pigment-map]") {
   requireSameImageAsPovrayInPlace("image_maps_in_maps.pov", 240, 180);

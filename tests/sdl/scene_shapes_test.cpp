@@ -438,9 +438,9 @@ TEST_CASE("scene shapes: what Lucent has no shape for, refused at the keyword, e
   const auto errors = errorsOf(R"(sphere { 0, 1 }
 union { parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
         sphere { 0, 1 } }
-#declare P = ovus { 1, 0.5 } object { P }
+#declare P = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> } object { P }
 parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
-ovus { 1, 0.5 }
+parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
 superellipsoid { <0, 1> }
 height_field { gif "x.gif" }
 )");
@@ -450,10 +450,11 @@ height_field { gif "x.gif" }
         "nearest Lucent shape is <isosurface>)");
   // A declared object's refusal is said where it is used, with that place as a note.
   CHECK(errors[1] ==
-        "test.pov:4:14: error: 'ovus' is not supported by Lucent (the ovus; the nearest Lucent "
-        "shapes are <lathe> and <sor>)\ntest.pov:4:39: note: the declaration is used here");
+        "test.pov:4:14: error: 'parametric' is not supported by Lucent (parametric surfaces; the "
+        "nearest Lucent shape is <isosurface>)\ntest.pov:4:98: note: the declaration is used "
+        "here");
   CHECK(errors[2].find("test.pov:5:1: error: 'parametric' is not supported by Lucent") == 0);
-  CHECK(errors[3].find("test.pov:6:1: error: 'ovus' is not supported by Lucent") == 0);
+  CHECK(errors[3].find("test.pov:6:1: error: 'parametric' is not supported by Lucent") == 0);
   CHECK(errors[4].find("test.pov:7:1: error: 'superellipsoid' exponents outside 0.01 to 10") == 0);
   CHECK(errors[5] ==
         "test.pov:8:16: error: a height field from 'gif' is not supported by Lucent (it reads "
@@ -468,46 +469,78 @@ TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where 
   auto r = readScene(R"(#include "shapes.inc"
 #include "shapesq.inc"
 object { Monkey_Saddle }
-#declare J = ovus { 1, 0.5 }
-#declare Blobs = union { blob { sphere { 0, 1, 1 pigment { rgb 1 } } } sphere { 0, 1 } }
+#declare J = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
+#declare Meshes = union { mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } } sphere { 0, 1 } }
 )");
   REQUIRE(r->load.scene);
   CHECK(shapeOf<PolySpec>(*r->load.scene, 0).order == 4);  // a quartic
   // Placed (twice), each refusal is said once, at its keyword.
-  const auto errors = errorsOf(R"(#declare J = ovus { 1, 0.5 }
-#declare Blobs = union { blob { sphere { 0, 1, 1 pigment { rgb 1 } } } sphere { 0, 1 } }
+  const auto errors = errorsOf(
+      R"(#declare J = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
+#declare Meshes = union { mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } } sphere { 0, 1 } }
 object { J }
-object { Blobs translate x }
-object { Blobs }
+object { Meshes translate x }
+object { Meshes }
 )");
   REQUIRE(errors.size() == 2);
-  CHECK(errors[0].find("test.pov:1:14: error: 'ovus' is not supported by Lucent") == 0);
-  CHECK(errors[1].find("test.pov:2:50: error: 'pigment' in a blob component is not supported") ==
-        0);
+  CHECK(errors[0].find("test.pov:1:14: error: 'parametric' is not supported by Lucent") == 0);
+  CHECK(errors[1].find("test.pov:2:53: error: 'texture' in a mesh triangle is not supported") == 0);
 }
 
-TEST_CASE("scene shapes: blob components and mesh triangles Lucent cannot hold",
+TEST_CASE("scene shapes: blob thresholds and mesh triangles Lucent cannot hold",
           "[sdl][scene][shapes][errors]") {
   const auto errors = errorsOf(R"(blob {
   sphere { 0, 1, 1 scale <1, 2, 1> }
   sphere { 0, 1, 1 pigment { rgb 1 } }
-  threshold 0
+  threshold 0.5
 }
 blob { sphere { 0, 1, 1 } threshold -1 }
 mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } }
 mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 1, texture { } } face_indices { 1, <0, 1, 2>, 0 } }
 )");
-  // The first component, scaled unevenly, is read (its own transform); the second's texture
-  // is refused.
-  REQUIRE(errors.size() == 4);
-  CHECK(errors[0].find("test.pov:3:20: error: 'pigment' in a blob component is not supported") ==
-        0);
-  CHECK(errors[1] ==
+  // The first blob is read: the first component scaled unevenly (its own transform), the
+  // second with its own pigment.
+  REQUIRE(errors.size() == 3);
+  CHECK(errors[0] ==
         "test.pov:6:1: error: a blob threshold of -1 is not supported by Lucent (it takes a "
         "threshold above 0: at or below 0 all of space away from the components would be inside)");
-  CHECK(errors[2].find("test.pov:7:27: error: 'texture' in a mesh triangle is not supported") == 0);
-  CHECK(errors[3].find("test.pov:8:39: error: 'texture_list' (textures per mesh triangle) is not "
+  CHECK(errors[1].find("test.pov:7:27: error: 'texture' in a mesh triangle is not supported") == 0);
+  CHECK(errors[2].find("test.pov:8:39: error: 'texture_list' (textures per mesh triangle) is not "
                        "supported") == 0);
+}
+
+TEST_CASE("scene shapes: a blob component's own texture is a material of the blob's space",
+          "[sdl][scene][shapes][blob]") {
+  auto r = readScene(R"(
+blob {
+  threshold 0.5
+  sphere { 0, 1, 1 pigment { rgb <1, 0, 0> } translate x }
+  cylinder { 0, y, 0.5, 1 }
+  sphere { 0, 1, 1 translate z texture { pigment { checker rgb 0, rgb 1 } } scale 2 }
+  pigment { rgb <0, 0, 1> }
+}
+blob { sphere { 0, 1, 1 } sphere { x, 1, 1 } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& scene = *r->load.scene;
+  const Node& n = topNode(scene, 0);
+  const auto& b = shapeOf<BlobSpec>(scene, 0);
+  REQUIRE(b.components.size() == 3);
+  REQUIRE(b.componentMaterials.size() == 3);
+  REQUIRE(b.componentMaterials[0]);
+  CHECK_FALSE(b.componentMaterials[1]);  // the blob's own
+  REQUIRE(b.componentMaterials[2]);
+  REQUIRE(n.material);
+  CHECK(scene.materials[*b.componentMaterials[0]].diffuse.r > 0.0f);
+  CHECK(scene.materials[*b.componentMaterials[0]].diffuse.b == 0.0f);
+  CHECK(scene.materials[*n.material].diffuse.r == 0.0f);
+  CHECK(b.componentMaterials[0] != b.componentMaterials[2]);
+  // The checker was written after `translate z`: it follows only `scale 2` (z negated).
+  const auto* checker =
+      std::get_if<CheckerTexture>(&scene.materials[*b.componentMaterials[2]].texture);
+  REQUIRE(checker);
+  CHECK(checker->placement.patternFromObject[0][0] == Approx(0.5));
+  CHECK(shapeOf<BlobSpec>(scene, 1).componentMaterials.empty());
 }
 
 TEST_CASE("scene shapes: bad input, located", "[sdl][scene][shapes][errors]") {
@@ -754,4 +787,31 @@ TEST_CASE("scene shapes: sphere_sweep's errors are POV-Ray's", "[sdl][scene][sha
   CHECK(errorsOf("sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 0, 0>, -1 }") ==
         std::vector<std::string>{"test.pov:1:58: error: a negative sphere_sweep radius is not "
                                  "supported by Lucent (radii >= 0)"});
+}
+
+TEST_CASE("scene shapes: ovus, about the y axis in both spaces", "[sdl][scene][shapes][ovus]") {
+  auto r = readScene(R"(
+ovus { 1, 0.65 }
+#declare E = ovus { 0.5 1.2 }
+object { E translate z }
+)");
+  REQUIRE(r->load.scene);
+  const auto& a = shapeOf<OvusSpec>(*r->load.scene, 0);
+  CHECK(a.bottomRadius == 1.0);
+  CHECK(a.topRadius == 0.65);
+  // A top radius of twice the bottom one or more: POV-Ray's top sphere, as Lucent's ovus.
+  const auto& b = shapeOf<OvusSpec>(*r->load.scene, 1);
+  CHECK(b.bottomRadius == 0.5);
+  CHECK(b.topRadius == 1.2);
+  checkMat(topNode(*r->load.scene, 1).parentFromNode,
+           PovTransform::translation(Vec3(0, 0, 1)).lucentMatrix());
+}
+
+TEST_CASE("scene shapes: an ovus's radii below 0, or both 0, are errors",
+          "[sdl][scene][shapes][ovus][errors]") {
+  CHECK(errorsOf("ovus { -1, 0.5 }") ==
+        std::vector<std::string>{"test.pov:1:8: error: both of the ovus's radii must be >= 0"});
+  CHECK(errorsOf("ovus { 0, 0 }") ==
+        std::vector<std::string>{
+            "test.pov:1:8: error: the ovus's radii are both 0: it has no surface"});
 }

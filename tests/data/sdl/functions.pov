@@ -63,6 +63,14 @@ Show("f_quartic_saddle", f_quartic_saddle(0.31, -0.42, 0.27, 0.05))
 Show("f_quartic_cylinder", f_quartic_cylinder(0.31, -0.42, 0.27, 0.05, 0.9, 0.6))
 Show("f_steiners_roman", f_steiners_roman(0.31, -0.42, 0.27, 0.05))
 Show("f_folium_surface", f_folium_surface(0.31, -0.42, 0.27, 0.05, 0.9, 0.6))
+// f_helix1: abyss.pov's cable (circles), a rounded rectangle turned 30 degrees, a square,
+// a diamond, a point on the axis and one whose angle steps below 0 before the modulo.
+Show("f_helix1", f_helix1(0.012, 0.4, -0.009, 3, 35, 0.0105, 0.0165, 2, 1, 0))
+Show("f_helix1", f_helix1(0.8, 0.3, 0.5, 2, 1.5, 0.1, 0.9, 1.3, 0.5, 30))
+Show("f_helix1", f_helix1(-0.6, -1.7, 0.45, 1, 2, 0.2, 0.7, 1, 0, 0))
+Show("f_helix1", f_helix1(0.2, 0.9, -0.75, 4, 0.8, 0.15, 0.6, 0.7, 2, 0))
+Show("f_helix1", f_helix1(0, 0.35, 0, 3, 1, 0.1, 0.5, 1, 1, 0))
+Show("f_helix1", f_helix1(-0.3, -2.2, -0.4, 2, 1.1, 0.1, 0.5, 1, 0.3, -45))
 #declare S = function { f_sphere(x, y, z, 1) - 0.2*f_rounded_box(x, y, z, 0.1, 1, 1, 1) }
 Show("S", S(0.5, 0.6, 0.7))
 Show("even", even(6) + 10*odd(7))

@@ -1,0 +1,2 @@
+#version 3.7;
+ovus { 0, 0 }
