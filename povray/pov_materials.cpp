@@ -372,18 +372,14 @@ Material mirroredInU(const Material& m) {
       mirror(&p->pattern.placement);
       entries(p->pigments);
     }
-    if (auto* c = std::get_if<CheckerTexture>(&t)) {
-      mirror(&c->placement);
-      entries(c->pigments);
-    }
-    if (auto* h = std::get_if<HexagonTexture>(&t)) {
-      mirror(&h->placement);
-      entries(h->pigments);
-    }
-    if (auto* b = std::get_if<BrickTexture>(&t)) {
+    auto blockPattern = [&](auto* b) {  // checker, hexagon, brick: a placement and a list
+      if (!b) return;
       mirror(&b->placement);
       entries(b->pigments);
-    }
+    };
+    blockPattern(std::get_if<CheckerTexture>(&t));
+    blockPattern(std::get_if<HexagonTexture>(&t));
+    blockPattern(std::get_if<BrickTexture>(&t));
     if (auto* a = std::get_if<AverageTexture>(&t)) {
       mirror(&a->placement);
       entries(a->entries);

@@ -187,16 +187,19 @@ TEST_CASE("clip: an unbounded shape clipped to a turned slab of a cylinder gets 
   // POV-Ray's Helix (shapesq.inc): a quartic clipped by Cylinder_Z scaled by 2 and the slab
   // 0 <= z <= 1.4142, then turned: only in the clip's own frame are the planes square to
   // its axes, so the box is met there and carried to the world.
-  auto scene = parseClean(R"XML(
-    <poly order="4" transform="rotate-z(160) rotate-x(-90) translate(0 -2 5)"
+  // The helix's quartic, clipped; TRANSFORM its placement.
+  auto helix = [](const std::string& transform) {
+    return R"XML(<poly order="4" transform=")XML" + transform + R"XML("
           coefficients="0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 -0.1666 0 1 0 0 0 0 0 0 0 0 0.5 0 -1 0 0 0 0 0">
       <clip>
         <quadric a="1 1 0" b="0 0 0" c="0 0 0" d="-1" transform="scale(2)"/>
         <plane normal="0 0 1" offset="1.4142"/>
         <plane normal="0 0 -1" offset="0"/>
       </clip>
-    </poly>
-    <sphere center="0 -1.5 5" radius="0.1"/>)XML");
+    </poly>)XML";
+  };
+  auto scene = parseClean(helix("rotate-z(160) rotate-x(-90) translate(0 -2 5)") +
+                          R"XML(<sphere center="0 -1.5 5" radius="0.1"/>)XML");
   World world(*scene);
   // Both in the tree (a lone object would be tested directly), the clipped quartic with the
   // box of the slab's square [-2, 2]² x [0, 1.4142] turned by 160 degrees about z (half-width
@@ -214,15 +217,7 @@ TEST_CASE("clip: an unbounded shape clipped to a turned slab of a cylinder gets 
   CHECK(b.hi.z <= 5.0 + reach + 1e-6);
   // The same object without the turn and the move: the same hits in its own frame as the
   // turned one at the turned rays (the box changes where the search looks, not what it finds).
-  auto plain = parseClean(R"XML(
-    <poly order="4"
-          coefficients="0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 -0.1666 0 1 0 0 0 0 0 0 0 0 0.5 0 -1 0 0 0 0 0">
-      <clip>
-        <quadric a="1 1 0" b="0 0 0" c="0 0 0" d="-1" transform="scale(2)"/>
-        <plane normal="0 0 1" offset="1.4142"/>
-        <plane normal="0 0 -1" offset="0"/>
-      </clip>
-    </poly>)XML");
+  auto plain = parseClean(helix("scale(1)"));
   World plainWorld(*plain);
   const Mat4 place = glm::translate(Mat4(1.0), Vec3(0, -2, 5)) *
                      glm::rotate(Mat4(1.0), glm::radians(-90.0), Vec3(1, 0, 0)) *

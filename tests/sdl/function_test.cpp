@@ -130,6 +130,18 @@ TEST_CASE("sdl function: functions.inc's closed forms give exact values", "[sdl]
   CHECK(v("f_witch_of_agnesi(0, 1, 0, 1, 0.5)") == 0.0);
 }
 
+namespace {
+// Expression names for a function's text: none besides x, y and z.
+struct NoNames : ExpressionNames {
+  std::optional<double> number(std::string_view, std::string& e, bool& known) override {
+    known = false;
+    e = "none";
+    return std::nullopt;
+  }
+  std::vector<std::string> visibleNames() override { return {}; }
+};
+}  // namespace
+
 TEST_CASE("sdl function: each internal formula's Lucent text gives its C++ value",
           "[sdl][function]") {
   const double points[][3] = {{0.3, -0.2, 0.7}, {1.1, 0.4, -0.6}, {-0.05, 0.9, 0.25}};
@@ -156,14 +168,7 @@ TEST_CASE("sdl function: each internal formula's Lucent text gives its C++ value
     for (size_t i = 0; i < args.size(); ++i) wantCall += (i ? ", " : "") + args[i];
     CHECK(call == wantCall + ")");
     const std::string text = internalFormula(*in, args);
-    struct NoNames : ExpressionNames {
-      std::optional<double> number(std::string_view, std::string& e, bool& known) override {
-        known = false;
-        e = "none";
-        return std::nullopt;
-      }
-      std::vector<std::string> visibleNames() override { return {}; }
-    } names;
+    NoNames names;
     ExpressionError problem;
     auto compiled = compileFunction(text, {"x", "y", "z"}, names, problem);
     INFO(text << " " << problem.message);
@@ -208,14 +213,7 @@ TEST_CASE("sdl function: f_helix1's text gives its C++ value for each cross-sect
       args.push_back(number);
     }
     const std::string text = functionText(f, args);
-    struct NoNames : ExpressionNames {
-      std::optional<double> number(std::string_view, std::string& e, bool& known) override {
-        known = false;
-        e = "none";
-        return std::nullopt;
-      }
-      std::vector<std::string> visibleNames() override { return {}; }
-    } names;
+    NoNames names;
     ExpressionError problem;
     auto compiled = compileFunction(text, {"x", "y", "z"}, names, problem);
     INFO(text << " " << problem.message);
