@@ -520,18 +520,23 @@ const PatternPlacement* mapPlacement(const Texture& t) {
 
 }  // namespace
 
-// A material map: POV-Ray's texture_map of a pattern, or a block pattern's list of textures
-// (its cells 0, 1, 2 each showing the entry the map gives that value alone).
-void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, const char* shapeName,
-                            const SourceLoc* loc, PovWriter& out, PovIssues* issues) const {
-  const bool uvNormal = m.normal && m.normal->pattern.placement.uv;
-  if (mapping && mapping->uvMirrored && uvNormal)
-    (issues ? *issues : issues_)
-        .error(loc ? *loc : m.loc,
+// A uv-mapped normal on a shape export-pov writes mirrored (POV-Ray's u runs the other way,
+// so the bent normal would be mirrored too) is an export error.
+void refuseMirroredUvNormal(const Material& m, const ImageMapping* mapping, const char* shapeName,
+                            const SourceLoc* loc, PovIssues& issues) {
+  if (!mapping || !mapping->uvMirrored || !m.normal || !m.normal->pattern.placement.uv) return;
+  issues.error(loc ? *loc : m.loc,
                fmt::format("{}: a uv-mapped normal on <{}>: the shape is written mirrored, so "
                            "POV-Ray's u runs the other way and its bent normal would be "
                            "mirrored too",
                            materialLabel(m), shapeName ? shapeName : "shape"));
+}
+
+// A material map: POV-Ray's texture_map of a pattern, or a block pattern's list of textures
+// (its cells 0, 1, 2 each showing the entry the map gives that value alone).
+void PovMaterials::writeMap(const Material& m, const ImageMapping* mapping, const char* shapeName,
+                            const SourceLoc* loc, PovWriter& out, PovIssues* issues) const {
+  refuseMirroredUvNormal(m, mapping, shapeName, loc, issues ? *issues : issues_);
   if (mapping && mapping->uvMirrored && usesUvMapping(m)) {
     const ImageMapping plain = unmirrored(*mapping);
     writeMap(mirroredInU(m), &plain, shapeName, loc, out, issues);
@@ -690,14 +695,7 @@ const std::vector<PovSurface>& PovMaterials::layerSurfaces(uint32_t material) co
 void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const ImageMapping* mapping,
                               const char* shapeName, const SourceLoc* loc, PovWriter& out,
                               PovIssues* issues) const {
-  const bool uvNormal = m.normal && m.normal->pattern.placement.uv;
-  if (mapping && mapping->uvMirrored && uvNormal)
-    (issues ? *issues : issues_)
-        .error(loc ? *loc : m.loc,
-               fmt::format("{}: a uv-mapped normal on <{}>: the shape is written mirrored, so "
-                           "POV-Ray's u runs the other way and its bent normal would be "
-                           "mirrored too",
-                           materialLabel(m), shapeName ? shapeName : "shape"));
+  refuseMirroredUvNormal(m, mapping, shapeName, loc, issues ? *issues : issues_);
   if (mapping && mapping->uvMirrored && usesUvMapping(m)) {
     const ImageMapping plain = unmirrored(*mapping);
     writeLayer(mirroredInU(m), s, &plain, shapeName, loc, out, issues);
@@ -738,7 +736,7 @@ void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const Imag
   // A normal bent in the object space at (u, v): POV-Ray's texture { uv_mapping ... }, which
   // bends the normal in the space of the transforms after the texture (the object's, written
   // after it) and reads the pigment at (u, v) too.
-  if (uvNormal && !m.normal->bendInWorld) {
+  if (m.normal && m.normal->pattern.placement.uv && !m.normal->bendInWorld) {
     if (s.useTexture && !std::holds_alternative<std::monostate>(m.texture) &&
         !textureUvMapped(m.texture))
       (issues ? *issues : issues_)
