@@ -6,6 +6,7 @@
 #include "span.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace lucent {
@@ -173,20 +174,34 @@ int Poly::lineCrossings(const Ray& ray, double t[kMaxOrder], bool entering[kMaxO
   for (int i = 0; i < degree; ++i) {
     const double ratio = std::abs(c[i] / c[degree]);
     cauchy = std::max(cauchy, ratio);
-    fujiwara = std::max(fujiwara, std::pow(i == 0 ? 0.5 * ratio : ratio, 1.0 / (degree - i)));
+    if (degree > 4)
+      fujiwara = std::max(fujiwara, std::pow(i == 0 ? 0.5 * ratio : ratio, 1.0 / (degree - i)));
   }
   const double r = std::min({2.0 * (1.0 + cauchy), degree > 4 ? 2.0 * fujiwara + 1.0 : 1e300, 1e60,
                              std::pow(10.0, 250.0 / static_cast<double>(degree))});
+  // Only the ray's stretch is searched: a narrower bracket takes the root finder far fewer
+  // steps (a clipped quartic's stretch through its box against Cauchy's bound). Each end is
+  // widened by twice the most the polish below moves a root, so that every root that could
+  // end up in [tmin, tmax] is still found and the sign at the start is the state there.
+  const auto widen = [](double u) { return 2e-6 * (1.0 + std::abs(u)); };
+  double lo = -r, hi = r;
+  if (std::isfinite(ray.tmin)) lo = std::max(lo, ray.tmin - s0 - widen(ray.tmin - s0));
+  if (std::isfinite(ray.tmax)) hi = std::min(hi, ray.tmax - s0 + widen(ray.tmax - s0));
+  if (!(lo < hi)) {
+    // No root can lie in the stretch: P keeps the sign it has at its nearer end.
+    startsInside = evalPolynomial(c, degree, std::clamp(ray.tmin - s0, -r, r)) < 0.0;
+    return 0;
+  }
   PolynomialRoot roots[kMaxOrder];
-  const int found = polynomialRoots(c, cAbs, degree, -r, r, roots);
+  const int found = polynomialRoots(c, cAbs, degree, lo, hi, roots);
 
   // The sign of P before the first root and in each gap after one decides which roots
   // cross (a tangent ray's double root has the same sign on both sides).
-  bool insideBefore = evalPolynomial(c, degree, -r) < 0.0;
+  bool insideBefore = evalPolynomial(c, degree, lo) < 0.0;
   startsInside = insideBefore;
   int n = 0;
   for (int k = 0; k < found; ++k) {
-    const double next = k + 1 < found ? roots[k + 1].x : r;
+    const double next = k + 1 < found ? roots[k + 1].x : hi;
     const bool insideAfter = evalPolynomial(c, degree, 0.5 * (roots[k].x + next)) < 0.0;
     if (insideAfter == insideBefore) continue;
     // One Newton step on P itself, unless the slope is too flat to trust.

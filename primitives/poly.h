@@ -45,8 +45,9 @@ class Poly final : public Shape {
   double value(const Vec3& p) const;
   Vec3 gradient(const Vec3& p) const;
 
-  // The sign changes of P along the whole line, ascending (room for the order), each marked
-  // entering (P turns negative) or not; startsInside tells the state before the first.
+  // The sign changes of P along the ray's stretch [tmin, tmax] (a little wider), ascending
+  // (room for the order), each marked entering (P turns negative) or not; startsInside
+  // tells the state before the first.
   int lineCrossings(const Ray& ray, double t[kMaxOrder], bool entering[kMaxOrder],
                     bool& startsInside) const;
 

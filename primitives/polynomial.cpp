@@ -106,6 +106,23 @@ int signChangeRoots<1>(const double* c, const double*, double lo, double hi, dou
   return linearRoot(c, lo, hi, out[0]);
 }
 
+// A quadratic's sign changes in closed form (the cancellation-free pair q/c2, c0/q with
+// q = -(c1 + sign(c1)·√disc)/2): they only split a cubic into monotonic pieces, whose ends
+// are evaluated anyway, so the few ulps they may be off change nothing.
+template <>
+int signChangeRoots<2>(const double* c, const double*, double lo, double hi, double* out) {
+  if (c[2] == 0.0) return c[1] != 0.0 ? linearRoot(c, lo, hi, out[0]) : 0;
+  const double disc = c[1] * c[1] - 4.0 * c[2] * c[0];
+  if (!(disc > 0.0)) return 0;  // no sign change: no root, or a double one
+  const double q = -0.5 * (c[1] + std::copysign(std::sqrt(disc), c[1]));
+  double r1 = q / c[2], r2 = q != 0.0 ? c[0] / q : -r1;
+  if (r1 > r2) std::swap(r1, r2);
+  int count = 0;
+  if (lo < r1 && r1 < hi) out[count++] = r1;
+  if (lo < r2 && r2 < hi && r2 != r1) out[count++] = r2;
+  return count;
+}
+
 template <int N>
 int signChangeRoots(const double* c, const double* cAbs, double lo, double hi, double* out) {
   double d[N] = {}, dAbs[N] = {};

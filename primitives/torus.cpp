@@ -125,6 +125,15 @@ int Torus::lineRoots(const Ray& ray, double t[4]) const {
   const double a1 = o.x * dn.x + o.z * dn.z;
   const double a0 = o.x * o.x + o.z * o.z;
   if (missesHull(o, dn, a2, a1, a0, L)) return 0;
+  // The quartic is solved on the line's stretch through the slab |y| <= 1.25·r only: a
+  // shorter bracket takes the root finder fewer steps, and at its ends, a quarter of r
+  // beyond the tube, the quartic is still clearly positive.
+  double s0 = -L, s1 = L;
+  if (dn.y != 0.0) {
+    const double a = (-1.25 * r_ - o.y) / dn.y, b = (1.25 * r_ - o.y) / dn.y;
+    s0 = std::max(s0, std::min(a, b));
+    s1 = std::min(s1, std::max(a, b));
+  }
   const double c[5] = {alpha * alpha - 4.0 * R2 * a0, 4.0 * alpha * beta - 8.0 * R2 * a1,
                        4.0 * beta * beta + 2.0 * e * alpha - 4.0 * R2 * a2, 4.0 * e * beta, e * e};
   // Magnitudes of the terms behind each coefficient, for the rounding bound.
@@ -133,7 +142,7 @@ int Torus::lineRoots(const Ray& ray, double t[4]) const {
       alphaAbs * alphaAbs + 4.0 * R2 * a0, 4.0 * alphaAbs * betaAbs + 8.0 * R2 * std::abs(a1),
       4.0 * beta * beta + 2.0 * e * alphaAbs + 4.0 * R2 * a2, 4.0 * e * betaAbs, e * e};
   PolynomialRoot roots[4];
-  int n = polynomialRoots(c, cAbs, 4, -L, L, roots);
+  int n = polynomialRoots(c, cAbs, 4, s0, s1, roots);
   int count = 0;
   for (int i = 0; i < n; ++i) {
     double ti = polish(R_, r_, ray.o, ray.d, tShift + roots[i].x / speed, roots[i].touching);
