@@ -352,15 +352,14 @@ uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& 
   Material m = importTexture(texture, interior, objectToTexture, at, in);
   m.loc = at;
   m.hollow = hollow;
+  if (key.empty()) return sharedMaterials_.add(scene_.materials, std::move(m));
+  // Named after the texture; a second interior with the same texture takes a suffix.
   const auto index = static_cast<uint32_t>(scene_.materials.size());
-  if (!key.empty()) {
-    // Named after the texture; a second interior with the same texture takes a suffix.
-    size_t same = 0;
-    for (const auto& [k, i] : namedMaterials_)
-      if (k.rfind(texture.name + "|", 0) == 0) ++same;
-    m.id = same == 0 ? texture.name : texture.name + "-" + std::to_string(same + 1);
-    namedMaterials_[key] = index;
-  }
+  size_t same = 0;
+  for (const auto& [k, i] : namedMaterials_)
+    if (k.rfind(texture.name + "|", 0) == 0) ++same;
+  m.id = same == 0 ? texture.name : texture.name + "-" + std::to_string(same + 1);
+  namedMaterials_[key] = index;
   scene_.materials.push_back(std::move(m));
   return index;
 }

@@ -20,6 +20,7 @@
 #include "token_stream.h"
 
 #include "lang/diagnostics.h"
+#include "scenegraph/material_sharing.h"
 #include "scenegraph/object_pattern.h"
 #include "scenegraph/pigment_function.h"
 #include "scenegraph/scene.h"
@@ -505,6 +506,8 @@ class SceneReader : public ItemReader {
   std::optional<uint32_t> defaultMaterial_;
   // The materials of declared textures (unpatterned), by name and interior.
   std::map<std::string, uint32_t> namedMaterials_;
+  // Unnamed materials equal in every term share one index (a loop's objects of one colour).
+  MaterialSharing sharedMaterials_;
   // Object patterns' objects put into the scene's <defs> so far (their ids' numbers).
   int objectPatterns_ = 0;
   // The objects built for trace() and the like, each with its item (few in a scene: a

@@ -523,8 +523,47 @@ sphere { 0, 1 texture { A[1] } }
   CHECK(s.materials.at(m[5]).id == "M");
   CHECK(m[6] != m[5]);  // M with another interior
   CHECK(s.materials.at(m[6]).ior == Approx(1.2));
-  CHECK(m[7] != m[0]);  // after a #default: the new default's material
-  CHECK(s.materials.at(m[7]).ambient.r == Approx(0.0f).margin(1e-7));  // black pigment
+  // After a #default: the new default's material, here equal in every term to the first
+  // (its ambient 0.3 multiplies the same black pigment), so the two share one index.
+  CHECK(s.materials.at(m[7]).ambient.r == Approx(0.0f).margin(1e-7));
+  CHECK(m[7] == m[0]);
+}
+
+TEST_CASE("scene reader: objects of equal plain materials share one index", "[sdl][scene]") {
+  auto r = readScene(R"(
+#declare X = 0;
+#while (X < 6)
+  sphere { <X, 0, 0>, 0.1 pigment { color rgb <1, mod(X, 2), 0> } }
+  #declare X = X + 1;
+#end
+sphere { 0, 1 pigment { rgb <1, 0, 0> } finish { phong 1 } }
+sphere { 0, 1 pigment { rgb <1, 0, 0> } finish { phong 1 } }
+sphere { 0, 1 pigment { checker rgb 1 rgb 0 } }
+sphere { 0, 1 pigment { checker rgb 1 rgb 0 } }
+sphere { 0, 1 pigment { rgb <1, 0, 0> } hollow }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  std::vector<uint32_t> m;
+  for (const auto& n : s.root->children) m.push_back(n->material.value_or(99));
+  REQUIRE(m.size() == 11);
+  // The loop's two colours: two materials, alternating.
+  CHECK(m[0] == m[2]);
+  CHECK(m[0] == m[4]);
+  CHECK(m[1] == m[3]);
+  CHECK(m[1] == m[5]);
+  CHECK(m[0] != m[1]);
+  CHECK(s.materials.at(m[0]).diffuse.g == Approx(0.0f).margin(1e-7));
+  CHECK(s.materials.at(m[1]).diffuse.g == Approx(0.6f));
+  // A finish term makes another material; written twice, still one.
+  CHECK(m[6] != m[0]);
+  CHECK(m[6] == m[7]);
+  CHECK(s.materials.at(m[6]).phong.r == Approx(1.0f));
+  // Patterned materials are not compared: each object keeps its own.
+  CHECK(m[8] != m[9]);
+  // hollow is a term of the material.
+  CHECK(m[10] != m[0]);
+  CHECK(s.materials.at(m[10]).hollow);
 }
 
 TEST_CASE("scene reader: a light's media_attenuation is its media-attenuation", "[sdl][scene]") {
