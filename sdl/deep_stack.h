@@ -2,6 +2,11 @@
 // directives by recursion (each bounded, objects at 256 deep), and the frames of that
 // recursion are large (tokens, values and a PovObject per level), larger still under the
 // sanitizers; a thread's default 8 MB is too little for the deepest nesting allowed there.
+//
+// The stack is switched to on the calling thread (a ucontext), not given to a new thread:
+// a new thread's allocations come from a malloc arena of its own, which glibc grows a page
+// at a time with a system call each (2,300 of them reading language/vturbulence.pov), and
+// the reader allocates much; the calling thread's arena grows in large steps.
 #pragma once
 
 #include <cstddef>
@@ -9,8 +14,9 @@
 
 namespace lucent::sdl {
 
-// Runs `work` on a new thread with a stack of `bytes` and waits for it; an exception it
-// throws is thrown again here. Where no such thread can be made, runs it here.
+// Runs `work` on a stack of `bytes` (with a guard page below it) on this thread and returns
+// when it has; an exception it throws is thrown again here. Where no such stack can be
+// mapped, runs it on this thread's own stack.
 void runWithStack(std::size_t bytes, const std::function<void()>& work);
 
 }  // namespace lucent::sdl

@@ -45,6 +45,7 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
 void SceneReader::keepError(TokenStream& in, const SourceLoc& at, const std::string& message) {
   // The core adds the macro and include chain that led here as notes.
   const SdlError e = in.errorAt(at, message);
+  ++notesIssued_;
   // Inside a declaration the error waits for the item's use (reportRefused).
   if (!declaring_.empty()) declaring_.back().push_back({Severity::Error, e.loc(), e.message()});
   else diags_.error(e.loc(), e.message());
@@ -79,6 +80,7 @@ void SceneReader::refuseInBlock(const Token& t, TokenStream& in, const std::stri
 }
 
 void SceneReader::warn(TokenStream& in, const SourceLoc& at, const std::string& message) {
+  ++notesIssued_;
   // Inside a declaration the warning waits for the item's use, as errors do.
   if (!declaring_.empty()) declaring_.back().push_back({Severity::Warning, at, message});
   else if (warned_.insert(at.str() + message).second) in.warning(at, message);
@@ -86,6 +88,7 @@ void SceneReader::warn(TokenStream& in, const SourceLoc& at, const std::string& 
 
 void SceneReader::refusal(TokenStream& in, const SourceLoc& at, const std::string& message,
                           bool here) {
+  ++notesIssued_;
   if (options_.skipUnsupported && declaring_.empty()) {
     // Counted by the feature's name, the first quoted word of the message.
     const size_t open = message.find('\'');
@@ -189,6 +192,7 @@ std::shared_ptr<SceneItem> SceneReader::readItem(const Token& t, TokenStream& in
   if (isWord(first, "texture")) {
     auto item = std::make_shared<TextureItem>();
     item->texture = readTexture(in, defaultTexture());
+    item->texture.declaration = ++declarations_;
     // `#declare T = texture {...} texture {...}`: the layers come after the declaration
     // (looking ahead here would run the directives that follow), read by readScene.
     lastTexture_ = item;
@@ -213,6 +217,7 @@ std::shared_ptr<SceneItem> SceneReader::readItem(const Token& t, TokenStream& in
   if (isWord(first, "material")) {
     auto item = std::make_shared<MaterialItem>();
     item->material = readMaterial(in);
+    if (item->material.texture) item->material.texture->declaration = ++declarations_;
     return item;
   }
   if (isWord(first, "transform")) {
@@ -242,8 +247,10 @@ void SceneReader::readScene(TokenStream& in) {
       // refusals are the declaration's, reported where it is used.
       declaring_.emplace_back();
       PovTexture top = readTexture(in, defaultTexture());
+      const uint64_t declaration = lastTexture_->texture.declaration;
       lastTexture_->texture =
           layerOver(std::move(lastTexture_->texture), std::move(top), t.loc(), in);
+      lastTexture_->texture.declaration = declaration;  // still that declaration
       for (Diagnostic& d : declaring_.back()) lastTexture_->refused.push_back(std::move(d));
       declaring_.pop_back();
       continue;
@@ -339,27 +346,36 @@ Mat4 negateZ() {
 uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& interior,
                                   bool hollow, const Mat4& textureFromNode, const SourceLoc& at,
                                   TokenStream& in) {
-  // A declared texture used as it is, unpatterned: one material, named after it, for
-  // every object that uses it with the same interior (convert writes it once, by name).
-  std::string key;
-  if (!texture.name.empty() && !texture.patterned()) {
-    key = texture.name + fmt::format("|{}|{}|{}|{} {} {}|{}", interior.ior, interior.fadeDistance,
-                                     interior.fadePower, interior.fadeColor.r, interior.fadeColor.g,
-                                     interior.fadeColor.b, hollow);
-    if (const auto it = namedMaterials_.find(key); it != namedMaterials_.end()) return it->second;
-  }
   const Mat4 objectToTexture = textureFromNode * negateZ();
+  // A declared texture used as it is: one material for every object that uses it with the
+  // same interior and, if it is patterned, the same placement of its pattern. Unpatterned,
+  // it is named after the texture (convert writes it once, by name).
+  const bool declared = !texture.name.empty() && texture.declaration != 0;
+  const bool patterned = declared && texture.patterned();
+  DeclaredUse use{};
+  if (declared) {
+    use = {texture.declaration, interior.ior,         interior.fadeDistance, interior.fadePower,
+           interior.fadeColor.r, interior.fadeColor.g, interior.fadeColor.b,  hollow,
+           {}};
+    if (patterned)
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) use.placement[c * 4 + r] = objectToTexture[c][r];
+    if (const auto it = declaredMaterials_.find(use); it != declaredMaterials_.end())
+      return it->second;
+  }
+  const uint64_t notesBefore = notesIssued_;
   Material m = importTexture(texture, interior, objectToTexture, at, in);
   m.loc = at;
   m.hollow = hollow;
-  if (key.empty()) return sharedMaterials_.add(scene_.materials, std::move(m));
-  // Named after the texture; a second interior with the same texture takes a suffix.
+  if (!declared || notesIssued_ != notesBefore)
+    return sharedMaterials_.add(scene_.materials, std::move(m));
   const auto index = static_cast<uint32_t>(scene_.materials.size());
-  size_t same = 0;
-  for (const auto& [k, i] : namedMaterials_)
-    if (k.rfind(texture.name + "|", 0) == 0) ++same;
-  m.id = same == 0 ? texture.name : texture.name + "-" + std::to_string(same + 1);
-  namedMaterials_[key] = index;
+  if (!patterned) {
+    // Named after the texture; another declaration or interior of it takes a suffix.
+    const int same = namedMaterialCount_[texture.name]++;
+    m.id = same == 0 ? texture.name : texture.name + "-" + std::to_string(same + 1);
+  }
+  declaredMaterials_[use] = index;
   scene_.materials.push_back(std::move(m));
   return index;
 }

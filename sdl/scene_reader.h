@@ -25,12 +25,14 @@
 #include "scenegraph/pigment_function.h"
 #include "scenegraph/scene.h"
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace lucent::sdl {
@@ -47,6 +49,9 @@ struct PovTexture {
   // The declared texture (or material) it is, as written and unchanged: `texture { T }`;
   // empty once anything changes it. The objects that share it share one named material.
   std::string name;
+  // Which declaration of that name (a scene may declare T again, in a loop): the number
+  // of the #declare that made it, counted from 1.
+  uint64_t declaration = 0;
   // A layered texture (`texture { A } texture { B }`): this is the top layer, the one a
   // later pigment, normal or finish changes, as in POV-Ray; `below` holds the layers under
   // it, bottom first.
@@ -466,7 +471,7 @@ class SceneReader : public ItemReader {
                 PovTransform& transform);
 
   PovTexture defaultTexture() const {
-    return {defaults_.pigment, defaults_.normal, defaults_.finish, {}, {}, {}, {}};
+    return {defaults_.pigment, defaults_.normal, defaults_.finish, {}, 0, {}, {}, {}};
   }
 
   Scene& scene_;
@@ -504,8 +509,27 @@ class SceneReader : public ItemReader {
   std::map<std::string, std::shared_ptr<TextOutline>> textOutlines_;
   // The material of the objects that take the default texture (unpatterned) as it is now.
   std::optional<uint32_t> defaultMaterial_;
-  // The materials of declared textures (unpatterned), by name and interior.
-  std::map<std::string, uint32_t> namedMaterials_;
+  // The materials of declared textures used as they are, by declaration, interior and
+  // (for a patterned one) the placement of its pattern: the objects that give it the same
+  // share one material, named after an unpatterned texture.
+  struct DeclaredUse {
+    uint64_t declaration;
+    double ior, fadeDistance, fadePower;
+    float fadeR, fadeG, fadeB;
+    bool hollow;
+    std::array<double, 16> placement;  // zero for an unpatterned texture
+    bool operator<(const DeclaredUse& o) const {
+      return std::tie(declaration, ior, fadeDistance, fadePower, fadeR, fadeG, fadeB, hollow,
+                      placement) < std::tie(o.declaration, o.ior, o.fadeDistance, o.fadePower,
+                                            o.fadeR, o.fadeG, o.fadeB, o.hollow, o.placement);
+    }
+  };
+  std::map<DeclaredUse, uint32_t> declaredMaterials_;
+  std::map<std::string, int> namedMaterialCount_;  // named materials by texture name
+  uint64_t declarations_ = 0;                       // #declare'd textures and materials so far
+  // Errors and warnings issued so far: a declared texture whose import said something is
+  // imported again at each use, so that each place is told.
+  uint64_t notesIssued_ = 0;
   // Unnamed materials equal in every term share one index (a loop's objects of one colour).
   MaterialSharing sharedMaterials_;
   // Object patterns' objects put into the scene's <defs> so far (their ids' numbers).
