@@ -329,6 +329,7 @@ void SceneReader::readUvTexture(const Token& t, TokenStream& in, PovTexture& tex
 // them (the world normal is bent); a texture's uv_mapping bends the normal in the space of
 // the transforms after the texture.
 void SceneReader::mapAtUv(PovTexture& tex, bool bendInWorld) {
+  tex.moved = true;
   if (tex.mapped()) {
     tex.mapPattern.uv = true;
     tex.mapPattern.uvTransform = tex.mapPattern.transform;

@@ -193,6 +193,7 @@ std::shared_ptr<SceneItem> SceneReader::readItem(const Token& t, TokenStream& in
     auto item = std::make_shared<TextureItem>();
     item->texture = readTexture(in, defaultTexture());
     item->texture.declaration = ++declarations_;
+    item->texture.moved = false;  // as declared, its transforms included
     // `#declare T = texture {...} texture {...}`: the layers come after the declaration
     // (looking ahead here would run the directives that follow), read by readScene.
     lastTexture_ = item;
@@ -217,7 +218,10 @@ std::shared_ptr<SceneItem> SceneReader::readItem(const Token& t, TokenStream& in
   if (isWord(first, "material")) {
     auto item = std::make_shared<MaterialItem>();
     item->material = readMaterial(in);
-    if (item->material.texture) item->material.texture->declaration = ++declarations_;
+    if (item->material.texture) {
+      item->material.texture->declaration = ++declarations_;
+      item->material.texture->moved = false;
+    }
     return item;
   }
   if (isWord(first, "transform")) {
@@ -251,6 +255,7 @@ void SceneReader::readScene(TokenStream& in) {
       lastTexture_->texture =
           layerOver(std::move(lastTexture_->texture), std::move(top), t.loc(), in);
       lastTexture_->texture.declaration = declaration;  // still that declaration
+      lastTexture_->texture.moved = false;
       for (Diagnostic& d : declaring_.back()) lastTexture_->refused.push_back(std::move(d));
       declaring_.pop_back();
       continue;
@@ -350,12 +355,21 @@ uint32_t SceneReader::addMaterial(const PovTexture& texture, const PovInterior& 
   // A declared texture used as it is: one material for every object that uses it with the
   // same interior and, if it is patterned, the same placement of its pattern. Unpatterned,
   // it is named after the texture (convert writes it once, by name).
-  const bool declared = !texture.name.empty() && texture.declaration != 0;
+  bool declared = !texture.name.empty() && texture.declaration != 0;
   const bool patterned = declared && texture.patterned();
+  // A patterned one is shared only as declared (its patterns' own transforms unchanged:
+  // they are not part of the key).
+  if (patterned && texture.moved) declared = false;
   DeclaredUse use{};
   if (declared) {
-    use = {texture.declaration, interior.ior,         interior.fadeDistance, interior.fadePower,
-           interior.fadeColor.r, interior.fadeColor.g, interior.fadeColor.b,  hollow,
+    use = {texture.declaration,
+           interior.ior,
+           interior.fadeDistance,
+           interior.fadePower,
+           interior.fadeColor.r,
+           interior.fadeColor.g,
+           interior.fadeColor.b,
+           hollow,
            {}};
     if (patterned)
       for (int c = 0; c < 4; ++c)

@@ -52,6 +52,9 @@ struct PovTexture {
   // Which declaration of that name (a scene may declare T again, in a loop): the number
   // of the #declare that made it, counted from 1.
   uint64_t declaration = 0;
+  // Moved (transformed, or mapped at (u, v)) since it was declared: its patterns no longer
+  // lie as the declaration's (an unpatterned texture keeps its name regardless).
+  bool moved = false;
   // A layered texture (`texture { A } texture { B }`): this is the top layer, the one a
   // later pigment, normal or finish changes, as in POV-Ray; `below` holds the layers under
   // it, bottom first.
@@ -83,6 +86,7 @@ struct PovTexture {
   }
   // `texture { ... translate ... }`: moves what the texture holds, every layer of it.
   void transform(const PovTransform& m) {
+    if (!m.isIdentity()) moved = true;
     pigment.transform = pigment.transform.then(m);
     if (normal) normal->transform = normal->transform.then(m);
     for (PovTexture& layer : below) layer.transform(m);
@@ -471,7 +475,7 @@ class SceneReader : public ItemReader {
                 PovTransform& transform);
 
   PovTexture defaultTexture() const {
-    return {defaults_.pigment, defaults_.normal, defaults_.finish, {}, 0, {}, {}, {}};
+    return {defaults_.pigment, defaults_.normal, defaults_.finish, {}, 0, false, {}, {}, {}};
   }
 
   Scene& scene_;
@@ -526,7 +530,7 @@ class SceneReader : public ItemReader {
   };
   std::map<DeclaredUse, uint32_t> declaredMaterials_;
   std::map<std::string, int> namedMaterialCount_;  // named materials by texture name
-  uint64_t declarations_ = 0;                       // #declare'd textures and materials so far
+  uint64_t declarations_ = 0;                      // #declare'd textures and materials so far
   // Errors and warnings issued so far: a declared texture whose import said something is
   // imported again at each use, so that each place is told.
   uint64_t notesIssued_ = 0;

@@ -529,6 +529,41 @@ sphere { 0, 1 texture { A[1] } }
   CHECK(m[7] == m[0]);
 }
 
+TEST_CASE("scene reader: a texture declared again under its name is another material",
+          "[sdl][scene]") {
+  auto r = readScene(R"(
+#declare T = texture { pigment { rgb <1, 0, 0> } }
+sphere { -x, 1 texture { T } }
+#declare T = texture { pigment { rgb <0, 1, 0> } }
+sphere { x, 1 texture { T } }
+sphere { 2*x, 1 texture { T } }
+#declare P = texture { pigment { gradient y } }
+sphere { 0, 1 texture { P } }
+sphere { 0, 1 texture { P } }
+sphere { 0, 1 texture { P } translate y }
+sphere { 0, 1 translate y texture { P } }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  std::vector<uint32_t> m;
+  for (const auto& n : s.root->children) m.push_back(n->material.value_or(99));
+  REQUIRE(m.size() == 7);
+  CHECK(m[0] != m[1]);  // the second declaration's colour, not the first's
+  CHECK(s.materials.at(m[0]).diffuse.r > 0.5f);
+  CHECK(s.materials.at(m[1]).diffuse.g > 0.5f);
+  CHECK(s.materials.at(m[1]).diffuse.r == Approx(0.0f).margin(1e-7));
+  CHECK(m[1] == m[2]);
+  CHECK(s.materials.at(m[0]).id == "T");
+  CHECK(s.materials.at(m[1]).id == "T-2");
+  // A patterned declared texture: one material wherever its pattern lies the same on the
+  // object (written before the translate, it moves with the object: the same in object
+  // space); another where it does not (written after: it stays, the object moves).
+  CHECK(m[3] == m[4]);
+  CHECK(m[5] == m[3]);
+  CHECK(m[6] != m[3]);
+  CHECK(s.materials.at(m[3]).id.empty());
+}
+
 TEST_CASE("scene reader: objects of equal plain materials share one index", "[sdl][scene]") {
   auto r = readScene(R"(
 #declare X = 0;
