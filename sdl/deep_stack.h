@@ -6,7 +6,8 @@
 // The stack is switched to on the calling thread (a ucontext), not given to a new thread:
 // a new thread's allocations come from a malloc arena of its own, which glibc grows a page
 // at a time with a system call each (2,300 of them reading language/vturbulence.pov), and
-// the reader allocates much; the calling thread's arena grows in large steps.
+// the reader allocates much; the calling thread's arena grows in large steps. Under
+// AddressSanitizer, which does not fully support switching stacks, it is a thread still.
 #pragma once
 
 #include <cstddef>
