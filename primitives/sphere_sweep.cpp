@@ -431,13 +431,52 @@ void SphereSweep::crossings(const Ray& ray, CrossingList& out) const {
   out.startsInside = in;
 }
 
+// The u of the ball of segment `seg` that touches the swept surface at p, from a nearby u:
+// Newton steps on the slope of f(u) = |p − c(u)| − r(u), whose least value is p's gauge
+// distance from the surface. The u found with a hit comes from a root of a tenth-degree
+// polynomial that may be ill-conditioned (off by 1e-6), and the ball at a u that far from
+// the contact lies inside the surface by 1e-13 there: a ray leaving the hit found the
+// surface again.
+double SphereSweep::contactParameter(size_t seg, const Vec3& p, double u) const {
+  const Segment& s = segs_[seg];
+  for (int it = 0; it < 4; ++it) {
+    const Vec3 c = ((s.c[3] * u + s.c[2]) * u + s.c[1]) * u + s.c[0];
+    const Vec3 c1 = (3.0 * s.c[3] * u + 2.0 * s.c[2]) * u + s.c[1];
+    const Vec3 c2 = 6.0 * s.c[3] * u + 2.0 * s.c[2];
+    const double r2 = 6.0 * s.r[3] * u + 2.0 * s.r[2];
+    const double r1 = (3.0 * s.r[3] * u + 2.0 * s.r[2]) * u + s.r[1];
+    const Vec3 q = p - c;
+    const double len = glm::length(q);
+    if (!(len > 0.0)) break;
+    const double qc1 = glm::dot(q, c1);
+    const double slope = -qc1 / len - r1;
+    const double curvature =
+        (glm::dot(c1, c1) - glm::dot(q, c2)) / len - qc1 * qc1 / (len * len * len) - r2;
+    if (!(curvature > 0.0)) break;  // not near a least value: keep the u found
+    const double next = std::clamp(u - slope / curvature, 0.0, 1.0);
+    if (next == u) break;
+    u = next;
+  }
+  return u;
+}
+
 SurfaceInfo SphereSweep::surface(const Ray& ray, const Hit& hit) const {
   SurfaceInfo si;
   si.p = ray.at(hit.t);
   Vec3 n(0.0);
   const size_t ns = spheres_.size();
   if (spline_ != SweepSpline::Linear) {
-    n = si.p - centerAt(hit.part, hit.b1);
+    // The point moved onto the ball that touches the surface there (as the torus does onto
+    // its tube), so that it lies on the surface to the rounding of that ball.
+    const double u = contactParameter(hit.part, si.p, hit.b1);
+    const Vec3 c = centerAt(hit.part, u);
+    const double r = radiusAt(hit.part, u);
+    n = si.p - c;
+    const double len = glm::length(n);
+    if (len > 0.0) {
+      si.p = c + (r / len) * n;
+      si.pError = gamma(32) * (glm::abs(c) + Vec3(r) + glm::abs(si.p) + Vec3(scale_));
+    }
   } else if (hit.part < ns) {
     n = si.p - spheres_[hit.part].center;
   } else {
@@ -452,8 +491,9 @@ SurfaceInfo SphereSweep::surface(const Ray& ray, const Hit& hit) const {
   n = l > 0.0 ? n / l : Vec3(0.0, 1.0, 0.0);
   si.ng = n;
   si.ns = n;
-  si.pError =
-      gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) + glm::abs(si.p) + Vec3(scale_));
+  if (si.pError == Vec3(0.0))
+    si.pError =
+        gamma(32) * (glm::abs(ray.o) + glm::abs(hit.t * ray.d) + glm::abs(si.p) + Vec3(scale_));
   return si;
 }
 

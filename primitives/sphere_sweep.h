@@ -65,6 +65,8 @@ class SphereSweep final : public Shape {
   size_t segments() const { return segs_.size(); }
   Vec3 centerAt(size_t seg, double u) const;
   double radiusAt(size_t seg, double u) const;
+  // The u of the ball of a spline segment touching the surface at p, refined from u.
+  double contactParameter(size_t seg, const Vec3& p, double u) const;
 
  private:
   // Power-basis cubics: c(u) = Σ c[k]·u^k, r(u) = Σ r[k]·u^k (linear: c[2..3] = 0).

@@ -6,6 +6,8 @@
 #include "shape_checks.h"
 #include "test_meshes.h"
 
+#include "../test_effort.h"
+
 #include "primitives/box.h"
 #include "primitives/cone.h"
 #include "primitives/cylinder.h"
@@ -14,6 +16,7 @@
 #include "primitives/offset.h"
 #include "primitives/plane.h"
 #include "primitives/sphere.h"
+#include "primitives/sphere_sweep.h"
 #include "primitives/torus.h"
 #include "primitives/triangle.h"
 #include "primitives/triangle_mesh.h"
@@ -227,4 +230,15 @@ TEST_CASE("secondary rays never re-hit through instances (scale, shear, mirror, 
   check("instanced torus", torus, false, 10000, 302);
   Instance mesh(std::make_shared<TriangleMesh>(octahedronMesh(), false), *world, 0);
   check("instanced octahedron mesh", mesh, true, 10000, 303);
+}
+
+TEST_CASE("secondary rays never re-hit: sphere sweeps of each spline through uneven balls",
+          "[primitives][offset][sweep]") {
+  const std::vector<SweepSphere> wiggle = {{Vec3(-1, -0.6, 0), 0.1},  {Vec3(-0.6, 0, 0), 0.3},
+                                           {Vec3(0, 0.4, 0.2), 0.2},  {Vec3(0.6, -0.1, 0), 0.35},
+                                           {Vec3(1, 0.5, -0.3), 0.1}, {Vec3(1.3, 0.2, 0.4), 0.25}};
+  const int hits = effortCount(20000);
+  check("linear sweep", SphereSweep(SweepSpline::Linear, wiggle), false, hits, 301);
+  check("cubic sweep", SphereSweep(SweepSpline::Cubic, wiggle), false, hits, 302);
+  check("b-spline sweep", SphereSweep(SweepSpline::BSpline, wiggle), false, hits, 303);
 }

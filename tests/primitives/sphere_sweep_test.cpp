@@ -1,6 +1,7 @@
 #include "shape_checks.h"
 
 #include "../support/sweep_spline_weights.h"
+#include "primitives/offset.h"
 #include "primitives/sphere_sweep.h"
 
 #include <catch2/catch.hpp>
@@ -278,4 +279,43 @@ TEST_CASE("sphere-sweep: POV-Ray's counts and radii are checked", "[primitives][
   CHECK_THROWS(SphereSweep(SweepSpline::Linear, {{Vec3(0), 1}, {Vec3(1), -1}}));
   CHECK_THROWS(SphereSweep(SweepSpline::Linear, {{Vec3(0), 0}, {Vec3(1), 0}}));
   CHECK_NOTHROW(SphereSweep(SweepSpline::Linear, {{Vec3(0), 0}, {Vec3(1), 0.5}}));
+}
+
+TEST_CASE("sphere-sweep: a hit whose ball is off the contact by 1e-6 is moved onto the surface",
+          "[primitives][sweep][offset]") {
+  // A cubic sweep's hit (the registry's sample, found by 800,000 secondary rays) came with
+  // u = 0.97269766, the ball touching the surface there being at u = 0.97269693: the point
+  // lay inside the surface by more than its error bound, and the mirror ray leaving it met
+  // the surface again at t = 1.8e-13.
+  const SphereSweep sweep(SweepSpline::Cubic, {{Vec3(-1, -0.6, 0), 0.1},
+                                               {Vec3(-0.6, 0, 0), 0.3},
+                                               {Vec3(0, 0.4, 0.2), 0.2},
+                                               {Vec3(0.6, -0.1, 0), 0.35},
+                                               {Vec3(1, 0.5, -0.3), 0.1}});
+  const Vec3 p(0.7510921994581683, 0.02365835324264709, 0.29088658165785963);
+  const Vec3 w(0.51523936691213401, 0.17000955248703997, 0.8400149682280309);
+  const double uFound = 0.97269766018840431;
+  // The gauge: least over u of |q − c(u)| − r(u) near the hit, sampled finely.
+  auto gauge = [&](const Vec3& q) {
+    double best = INFINITY;
+    for (int k = -20000; k <= 20000; ++k) {
+      const double u = std::clamp(uFound + k * 1e-10, 0.0, 1.0);
+      best = std::min(best, glm::length(q - sweep.centerAt(1, u)) - sweep.radiusAt(1, u));
+    }
+    return best;
+  };
+  REQUIRE(gauge(p) < -1e-13);  // the point as the hit had it: inside the surface
+  const Ray in(p - w, w);      // a ray whose hit at t = 1 is that point, with that u
+  Hit h;
+  h.t = 1.0;
+  h.shape = &sweep;
+  h.part = 1;
+  h.b1 = uFound;
+  const SurfaceInfo si = sweep.surface(in, h);
+  CHECK(std::abs(sweep.contactParameter(1, p, uFound) - 0.972696929) < 1e-8);
+  CHECK(std::abs(gauge(si.p)) < 1e-15);
+  CHECK(glm::dot(w, si.ng) > 0.9);
+  const Ray out(offsetRayOrigin(si.p, si.pError, si.ng, w), w);
+  Hit again;
+  CHECK_FALSE(sweep.intersect(out, again));
 }
