@@ -20,6 +20,13 @@ namespace {
 using sdltest::errorsOf;
 using sdltest::readScene;
 
+// The material index of each top-level object, in order (99 for none).
+std::vector<uint32_t> topMaterials(const Scene& scene) {
+  std::vector<uint32_t> m;
+  for (const auto& n : scene.root->children) m.push_back(n->material.value_or(99));
+  return m;
+}
+
 const Node& topNode(const Scene& scene, size_t i) {
   REQUIRE(scene.root->children.size() > i);
   return *scene.root->children[i];
@@ -508,8 +515,7 @@ sphere { 0, 1 texture { A[1] } }
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
-  std::vector<uint32_t> m;
-  for (const auto& n : s.root->children) m.push_back(n->material.value_or(99));
+  const std::vector<uint32_t> m = topMaterials(s);
   REQUIRE(m.size() == 10);
   // Array elements are not named (the token's text is the array's): each its own material
   // (incdemo/finish.pov's nine textures of an array once came out as the first).
@@ -545,8 +551,7 @@ sphere { 0, 1 translate y texture { P } }
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
-  std::vector<uint32_t> m;
-  for (const auto& n : s.root->children) m.push_back(n->material.value_or(99));
+  const std::vector<uint32_t> m = topMaterials(s);
   REQUIRE(m.size() == 7);
   CHECK(m[0] != m[1]);  // the second declaration's colour, not the first's
   CHECK(s.materials.at(m[0]).diffuse.r > 0.5f);
@@ -579,8 +584,7 @@ sphere { 0, 1 pigment { rgb <1, 0, 0> } hollow }
 )");
   REQUIRE(r->load.scene);
   const Scene& s = *r->load.scene;
-  std::vector<uint32_t> m;
-  for (const auto& n : s.root->children) m.push_back(n->material.value_or(99));
+  const std::vector<uint32_t> m = topMaterials(s);
   REQUIRE(m.size() == 11);
   // The loop's two colours: two materials, alternating.
   CHECK(m[0] == m[2]);
