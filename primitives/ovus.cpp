@@ -202,14 +202,7 @@ SurfaceInfo Ovus::surface(const Ray& ray, const Hit& hit) const {
 // negated).
 bool Ovus::povUV(const SurfaceInfo& s, const Hit& /*hit*/, Vec2& uv) const {
   const double cy = g_.sphereOnly ? g_.bottomRadius : 0.5 * g_.topRadius;
-  Vec3 d(s.p.x, s.p.y - cy, -s.p.z);
-  const double len = glm::length(d);
-  if (len == 0.0) {
-    uv = Vec2(0.0);
-    return true;
-  }
-  d /= len;
-  uv = Vec2(povTurnsAboutY(d.x, d.z), 0.5 + std::asin(d.y) / kPi);
+  uv = povSphereUV(s.p - Vec3(0.0, cy, 0.0));
   return true;
 }
 

@@ -25,4 +25,15 @@ inline double povTurnsAboutY(double x, double z) {
   return theta / (2.0 * kPi);
 }
 
+// POV-Ray's sphere mapping of a point seen from a centre, the offset d = p - centre given
+// in Lucent's space: the longitude about +y from +x, and 0.5 + the latitude over pi, in
+// POV-Ray's space (z negated); (0, 0) at the centre itself.
+inline Vec2 povSphereUV(Vec3 d) {
+  d.z = -d.z;
+  const double len = glm::length(d);
+  if (len == 0.0) return Vec2(0.0);
+  d /= len;
+  return Vec2(povTurnsAboutY(d.x, d.z), 0.5 + std::asin(d.y) / kPi);
+}
+
 }  // namespace lucent

@@ -62,15 +62,7 @@ SurfaceInfo Sphere::surface(const Ray& ray, const Hit& hit) const {
 // POV-Ray's sphere: the longitude of the direction from the centre about +y from +x, and
 // 0.5 + its latitude over pi, in POV-Ray's space (z negated).
 bool Sphere::povUV(const SurfaceInfo& s, const Hit& /*hit*/, Vec2& uv) const {
-  Vec3 d = s.p - center_;
-  d.z = -d.z;
-  const double len = glm::length(d);
-  if (len == 0.0) {
-    uv = Vec2(0.0);
-    return true;
-  }
-  d /= len;
-  uv = Vec2(povTurnsAboutY(d.x, d.z), 0.5 + std::asin(d.y) / kPi);
+  uv = povSphereUV(s.p - center_);
   return true;
 }
 
