@@ -114,11 +114,14 @@ std::optional<OwnShapeText> own(const PolygonSpec& s, const SourceLoc&, const st
 
 std::optional<OwnShapeText> own(const BicubicPatchSpec& s, const SourceLoc&, const std::string&) {
   OwnShapeText t;
-  t.attributes = {{"points", tripleList(s.points)},
+  t.attributes = {{"points", tripleList(*s.points)},
                   {"type", std::to_string(s.type)},
                   {"flatness-space", s.flatnessInWorld ? "world" : "object"},
                   {"u-steps", std::to_string(s.uSteps)},
                   {"v-steps", std::to_string(s.vSteps)}};
+  if (s.uvVectors != kPatchOwnUv)
+    t.attributes.emplace_back("uv-vectors",
+                              pairList(std::vector<Vec2>(s.uvVectors.begin(), s.uvVectors.end())));
   return t;
 }
 

@@ -181,9 +181,26 @@ std::shared_ptr<const MeshData> bicubicPatchMesh(const PatchPoints& p, double fl
   return mesh;
 }
 
+Vec2 patchTextureUV(const PatchUvCorners& c, const Vec2& p) {
+  // POV-Ray's order: along the first coordinate on the edges 0-1 and 3-2, then between them.
+  const Vec2 low = c[0] + p.x * (c[1] - c[0]);
+  const Vec2 high = c[3] + p.x * (c[2] - c[3]);
+  return low + p.y * (high - low);
+}
+
 BicubicPatch::BicubicPatch(const PatchPoints& p, double flatness, int uSteps, int vSteps,
-                           const Mat4& flatnessFrame)
-    : mesh_(checkedMesh(p, flatness, uSteps, vSteps, flatnessFrame), true) {}
+                           const Mat4& flatnessFrame, const PatchUvCorners& uvCorners)
+    : mesh_(checkedMesh(p, flatness, uSteps, vSteps, flatnessFrame), true), uvCorners_(uvCorners) {
+  for (const Vec2& c : uvCorners)
+    if (!std::isfinite(c.x) || !std::isfinite(c.y))
+      throw std::invalid_argument("bicubic patch: a uv corner is not finite");
+}
+
+SurfaceInfo BicubicPatch::surface(const Ray& ray, const Hit& hit) const {
+  SurfaceInfo s = mesh_.surface(ray, hit);
+  if (s.hasUV && uvCorners_ != kPatchOwnUv) s.uv = patchTextureUV(uvCorners_, s.uv);
+  return s;
+}
 
 bool BicubicPatch::intersect(const Ray& ray, Hit& hit) const {
   if (!mesh_.intersect(ray, hit)) return false;

@@ -11,8 +11,10 @@
 // (P00, P03, P33) and (P00, P33, P30); their vertex normals are the exact surface's
 // normals at the corners' (u, v) (Su x Sv, normalised; (1, 0, 0) where it vanishes, as in
 // POV-Ray), interpolated and normalised again; their (u, v) for textures are POV-Ray's:
-// the patch's (v, u), interpolated. POV-Ray's types 0 (subdivide per ray) and 1 (subdivide
-// once) make the same triangles; both are this. Not a solid.
+// the patch's (v, u), interpolated, then carried by `uvCorners` (POV-Ray's uv_vectors) to
+// the bilinear blend of the four corners' (u, v) at that point, as POV-Ray carries its hit's.
+// POV-Ray's types 0 (subdivide per ray) and 1 (subdivide once) make the same triangles; both
+// are this. Not a solid.
 //
 // Flatness is measured in the patch's own coordinates, or, given `flatnessFrame`, on the
 // parts' control points mapped by it: POV-Ray measures it after every transform (it moves
@@ -30,6 +32,13 @@
 namespace lucent {
 
 using PatchPoints = std::array<Vec3, 16>;  // P[i][j] at 4i + j
+// The texture (u, v) of the corners (POV-Ray's uv_vectors): of the patch's (v, u) = (0, 0),
+// (1, 0), (1, 1) and (0, 1), in that order. The default gives the patch's own (v, u).
+using PatchUvCorners = std::array<Vec2, 4>;
+inline const PatchUvCorners kPatchOwnUv = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)};
+
+// The texture (u, v) at the patch's (v, u) = p: the corners' blended bilinearly.
+Vec2 patchTextureUV(const PatchUvCorners& corners, const Vec2& p);
 
 // The exact surface and its unit normal (POV-Ray's: (1, 0, 0) where Su x Sv vanishes).
 Vec3 bezierPatchPoint(const PatchPoints& p, double u, double v);
@@ -48,7 +57,8 @@ class BicubicPatch final : public Shape {
   // Steps from 0 to kMaxSteps; throws std::invalid_argument otherwise or for points that
   // are not finite.
   BicubicPatch(const PatchPoints& p, double flatness, int uSteps, int vSteps,
-               const Mat4& flatnessFrame = Mat4(1.0));
+               const Mat4& flatnessFrame = Mat4(1.0),
+               const PatchUvCorners& uvCorners = kPatchOwnUv);
 
   static constexpr int kMaxSteps = 10;
 
@@ -59,10 +69,9 @@ class BicubicPatch final : public Shape {
   bool occluded(const Ray& ray) const override { return mesh_.occluded(ray); }
   void crossings(const Ray& ray, CrossingList& out) const override;
   bool inside(const Vec3&) const override { return false; }
-  SurfaceInfo surface(const Ray& ray, const Hit& hit) const override {
-    return mesh_.surface(ray, hit);
-  }
-  // POV-Ray's precomputed (u, v) of the patch: its triangles' (bicubicPatchMesh).
+  SurfaceInfo surface(const Ray& ray, const Hit& hit) const override;
+  // POV-Ray's precomputed (u, v) of the patch: its triangles' (bicubicPatchMesh), carried
+  // by the corners (surface).
   bool povUV(const SurfaceInfo& s, const Hit& hit, Vec2& uv) const override {
     return mesh_.povUV(s, hit, uv);
   }
@@ -72,6 +81,7 @@ class BicubicPatch final : public Shape {
 
  private:
   TriangleMesh mesh_;
+  PatchUvCorners uvCorners_;
 };
 
 }  // namespace lucent

@@ -218,7 +218,7 @@ struct Builder {
     if (patch && patch->flatnessInWorld) {
       // Cut where it is flat in the world, as POV-Ray cuts it: built for this placement.
       BicubicPatchSpec placed = *patch;
-      placed.flatnessFrame = world.worldFromObject();
+      placed.flatnessFrame = std::make_shared<const Mat4>(world.worldFromObject());
       try {
         shape = makeShape(ShapeSpec(placed));
       } catch (const std::invalid_argument& e) {

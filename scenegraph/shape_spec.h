@@ -164,15 +164,18 @@ struct PolygonSpec {
 };
 // POV-Ray's bicubic_patch: 16 control points, traced as POV-Ray's triangles
 // (primitives/bicubic_patch.h). type: POV-Ray's 0 or 1, the same triangles in both.
+// The points and the frame are held by pointer, shared by copies and replaced, never changed
+// in place: inline they made every ShapeSpec, and so every Node, 550 bytes.
 struct BicubicPatchSpec {
-  PatchPoints points{};
+  std::shared_ptr<const PatchPoints> points = std::make_shared<const PatchPoints>();
   int type = 0;
   double flatness = 0.0;
   int uSteps = 0, vSteps = 0;
-  bool flatnessInWorld = false;  // flatness-space="world": measured after every transform
+  PatchUvCorners uvVectors = kPatchOwnUv;  // uv-vectors (POV-Ray's uv_vectors)
+  bool flatnessInWorld = false;            // flatness-space="world": measured after every transform
   // Where flatness is measured: the node's world transform when flatnessInWorld, set by the
-  // world builder (flatten.cpp) on its copy; the identity as read.
-  Mat4 flatnessFrame{1.0};
+  // world builder (flatten.cpp) on its copy; null (the identity) as read.
+  std::shared_ptr<const Mat4> flatnessFrame;
 };
 // POV-Ray's julia_fractal: the 3-D slice of a 4-D Julia set (primitives/julia_map.h), its
 // parameters as written (the slice made unit when built).
@@ -193,5 +196,8 @@ using ShapeSpec =
                  TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec, PolySpec, PrismSpec,
                  BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec, SorSpec, HeightFieldSpec,
                  PolygonSpec, BicubicPatchSpec, JuliaFractalSpec, SphereSweepSpec, OvusSpec>;
+// Every node holds a ShapeSpec inline, so the largest shape sets the size of a sphere's node
+// in a scene of a million: a new shape's bulk goes behind a pointer, as the bicubic patch's.
+static_assert(sizeof(ShapeSpec) <= 240, "a shape spec this large makes every Node larger");
 
 }  // namespace lucent

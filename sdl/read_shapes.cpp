@@ -648,21 +648,13 @@ void SceneReader::readBicubicPatch(PovObject& o, TokenStream& in) {
       else if (allowWord(in, "u_steps")) s.uSteps = steps("u_steps");
       else if (allowWord(in, "v_steps")) s.vSteps = steps("v_steps");
       else if (allowWord(in, "accuracy")) in.parseFloat();
-      else if (isWord(in.peek(), "uv_vectors")) {
-        // POV-Ray's default corners are the patch's own (u, v): only those are read.
-        const Token k = in.next();
-        static const Vec2 kOwn[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        bool own = true;
-        for (int c = 0; c < 4; ++c) {
-          if (c > 0) in.allow(",");
-          own = parseUv(in) == kOwn[c] && own;
+      else if (allowWord(in, "uv_vectors")) {
+        // The corners' texture (u, v); POV-Ray reads no keyword after them.
+        for (size_t c = 0; c < 4; ++c) {
+          if (c > 0) in.parseComma();
+          s.uvVectors[c] = parseUv(in);
         }
-        if (!own) {
-          refuseShape(o, k.loc(), in,
-                      "'uv_vectors' of a bicubic_patch other than <0,0> <1,0> <1,1> <0,1> are "
-                      "not supported by Lucent (its (u, v) are the patch's own)");
-          return;
-        }
+        break;
       } else break;
     }
   }
@@ -673,10 +665,12 @@ void SceneReader::readBicubicPatch(PovObject& o, TokenStream& in) {
   s.type = std::min(t, 1);
   if (s.flatness < 0.0) s.flatness = 0.0;  // never flat either way
   in.parseComma();
+  PatchPoints points{};
   for (size_t i = 0; i < 16; ++i) {
-    s.points[i] = point(in);
+    points[i] = point(in);
     in.parseComma();
   }
+  s.points = std::make_shared<const PatchPoints>(points);
   o.shape = std::move(s);
 }
 

@@ -35,36 +35,60 @@ void readPatch(BicubicPatchSpec& s, AttributeInput& in) {
                              list->size()));
     return;
   }
+  PatchPoints points{};
   for (size_t i = 0; i < 16; ++i)
-    s.points[i] = Vec3((*list)[3 * i], (*list)[3 * i + 1], (*list)[3 * i + 2]);
+    points[i] = Vec3((*list)[3 * i], (*list)[3 * i + 1], (*list)[3 * i + 2]);
+  s.points = std::make_shared<const PatchPoints>(points);
+  if (!in.has("uv-vectors")) return;
+  auto uv = in.numbers("uv-vectors");
+  if (!uv) return;
+  if (uv->size() != 8) {
+    in.attrError(
+        "uv-vectors",
+        fmt::format("expected the (u, v) of 4 corners (8 numbers), got {} numbers", uv->size()));
+    return;
+  }
+  for (size_t i = 0; i < 4; ++i) s.uvVectors[i] = Vec2((*uv)[2 * i], (*uv)[2 * i + 1]);
 }
 
 void writePatch(const BicubicPatchSpec& s, PovShapeOut& out) {
   out.open("bicubic_patch");
   out.line(fmt::format("type {} flatness {} u_steps {} v_steps {}", s.type, out.number(s.flatness),
                        s.uSteps, s.vSteps));
+  if (s.uvVectors != kPatchOwnUv) {  // last: POV-Ray reads no keyword after it
+    std::string corners;
+    for (const Vec2& c : s.uvVectors)
+      corners +=
+          fmt::format("{}<{}, {}>", corners.empty() ? "" : ", ", out.number(c.x), out.number(c.y));
+    out.line("uv_vectors " + corners);
+  }
+  const PatchPoints& p = *s.points;
   for (size_t i = 0; i < 16; i += 4)
-    out.line(fmt::format("{}, {}, {}, {}{}", out.vector(s.points[i]), out.vector(s.points[i + 1]),
-                         out.vector(s.points[i + 2]), out.vector(s.points[i + 3]),
-                         i < 12 ? "," : ""));
+    out.line(fmt::format("{}, {}, {}, {}{}", out.vector(p[i]), out.vector(p[i + 1]),
+                         out.vector(p[i + 2]), out.vector(p[i + 3]), i < 12 ? "," : ""));
 }
 
 // Counted as cut in the patch's own space: with flatness-space="world" the world builder
 // may cut it finer or coarser where it is placed.
 long long patchTriangles(const BicubicPatchSpec& s) {
   return static_cast<long long>(
-      bicubicPatchMesh(s.points, s.flatness, s.uSteps, s.vSteps)->triangles.size());
+      bicubicPatchMesh(*s.points, s.flatness, s.uSteps, s.vSteps)->triangles.size());
 }
 
 // A saddle over the unit square and POV-Ray's bezier.pov sample, a sheet bent at its
 // corners.
 std::vector<std::pair<std::string, BicubicPatchSpec>> patchSamples() {
-  BicubicPatchSpec saddle;
+  PatchPoints saddlePoints{}, sheetPoints{};
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
       const double x = i / 3.0, z = j / 3.0;
-      saddle.points[static_cast<size_t>(4 * i + j)] = Vec3(x, (x - 0.5) * (z - 0.5), z);
+      saddlePoints[static_cast<size_t>(4 * i + j)] = Vec3(x, (x - 0.5) * (z - 0.5), z);
+      const bool cornerI = i == 0 || i == 3, cornerJ = j == 0 || j == 3;
+      sheetPoints[static_cast<size_t>(4 * i + j)] =
+          Vec3(j, i, cornerI && cornerJ ? (j == 0 ? 2.0 : -2.0) : 0.0);
     }
+  BicubicPatchSpec saddle;
+  saddle.points = std::make_shared<const PatchPoints>(saddlePoints);
   saddle.uSteps = 3;
   saddle.vSteps = 2;
   BicubicPatchSpec sheet;
@@ -72,12 +96,7 @@ std::vector<std::pair<std::string, BicubicPatchSpec>> patchSamples() {
   sheet.flatness = 0.1;
   sheet.uSteps = sheet.vSteps = 4;
   sheet.flatnessInWorld = true;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) {
-      const bool cornerI = i == 0 || i == 3, cornerJ = j == 0 || j == 3;
-      const double z = cornerI && cornerJ ? (j == 0 ? 2.0 : -2.0) : 0.0;
-      sheet.points[static_cast<size_t>(4 * i + j)] = Vec3(j, i, z);
-    }
+  sheet.points = std::make_shared<const PatchPoints>(sheetPoints);
   return {{"saddle patch", saddle}, {"bent sheet patch", sheet}};
 }
 
@@ -88,8 +107,9 @@ ShapeEntry<BicubicPatchSpec> shapeEntry<BicubicPatchSpec>() {
   ShapeEntry<BicubicPatchSpec> e(
       "bicubic-patch", "bicubic patches",
       [](const BicubicPatchSpec& s) {
-        return std::make_shared<BicubicPatch>(s.points, s.flatness, s.uSteps, s.vSteps,
-                                              s.flatnessFrame);
+        return std::make_shared<BicubicPatch>(*s.points, s.flatness, s.uSteps, s.vSteps,
+                                              s.flatnessFrame ? *s.flatnessFrame : Mat4(1.0),
+                                              s.uvVectors);
       },
       writePatch);
   e.doc =
@@ -108,7 +128,11 @@ ShapeEntry<BicubicPatchSpec> shapeEntry<BicubicPatchSpec>() {
           .doc("object (flatness measured in the patch's own coordinates) | world (after every "
                "transform, as POV-Ray measures it)."),
       whole("u-steps", "Halvings along u, 0 to 10: at most 2^u-steps parts. Default 0."),
-      whole("v-steps", "Halvings along v, 0 to 10: at most 2^v-steps parts. Default 0.")};
+      whole("v-steps", "Halvings along v, 0 to 10: at most 2^v-steps parts. Default 0."),
+      readByEntry<BicubicPatchSpec>("uv-vectors", AttrType::NumberList, "0 0 1 0 1 1 0 1", {}, 2)
+          .doc("The texture (u, v) of the corners P00, P03, P33 and P30 (POV-Ray's uv_vectors), "
+               "u v each; a point's (u, v) blends them bilinearly. Default the patch's own: "
+               "0 0 1 0 1 1 0 1.")};
   e.fields[0].info.required = true;
   e.finish = readPatch;
   e.notSolid = [](const BicubicPatchSpec&) {

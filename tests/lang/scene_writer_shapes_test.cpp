@@ -436,3 +436,30 @@ TEST_CASE("scene writer: an ovus keeps its radii", "[lang][scene-writer]") {
   CHECK(e.bottomRadius == 1.0);
   CHECK(e.topRadius == 0.5);
 }
+
+TEST_CASE("scene writer: a bicubic patch keeps its points, steps and uv corners",
+          "[lang][scene-writer]") {
+  auto r = roundTrip(
+      "<bicubic-patch type=\"1\" flatness=\"0.05\" u-steps=\"3\" v-steps=\"2\" "
+      "flatness-space=\"world\" uv-vectors=\"0.5 0 2 0.25 1 1.5 -1 1\" points=\"0 0 0, 1 0 0, "
+      "2 0 0, 3 0 0.5, 0 1 0, 1 1 1, 2 1 1, 3 1 0, 0 2 0, 1 2 1, 2 2 1, 3 2 0, 0 3 0, 1 3 0, 2 3 "
+      "0, 3 3 0\"/>");
+  auto [a, b] = specs<BicubicPatchSpec>(r);
+  CHECK(*b.points == *a.points);
+  CHECK((*b.points)[3] == Vec3(3, 0, 0.5));
+  CHECK(b.type == 1);
+  CHECK(b.flatness == 0.05);
+  CHECK(b.uSteps == 3);
+  CHECK(b.vSteps == 2);
+  CHECK(b.flatnessInWorld);
+  const PatchUvCorners corners = {Vec2(0.5, 0), Vec2(2, 0.25), Vec2(1, 1.5), Vec2(-1, 1)};
+  CHECK(a.uvVectors == corners);
+  CHECK(b.uvVectors == corners);
+  // The default corners are written as nothing, and read back as the default.
+  auto d = roundTrip(
+      "<bicubic-patch points=\"0 0 0, 1 0 0, 2 0 0, 3 0 0, 0 1 0, 1 1 0, 2 1 0, 3 1 0, 0 2 0, 1 "
+      "2 0, 2 2 0, 3 2 0, 0 3 0, 1 3 0, 2 3 0, 3 3 0\"/>");
+  CHECK(d.text.find("uv-vectors") == std::string::npos);
+  auto [c, e] = specs<BicubicPatchSpec>(d);
+  CHECK(e.uvVectors == kPatchOwnUv);
+}

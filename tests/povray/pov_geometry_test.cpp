@@ -41,6 +41,19 @@ TEST_CASE("an ovus is POV-Ray's, or its top sphere where POV-Ray would substitut
   CHECK(e.has("sphere {  // <ovus> test.xml:4:1\n  <0, 0.5, 0>, 1\n"));
 }
 
+TEST_CASE("a bicubic patch's uv corners are its uv_vectors, after its other keywords",
+          "[povray][geometry]") {
+  Exported e =
+      exportScene(R"XML(<bicubic-patch u-steps="2" v-steps="1" uv-vectors="0.5 0 2 0.25 1 1.5 -1 1"
+  points="0 0 0, 1 0 0, 2 0 0, 3 0 0, 0 1 0, 1 1 1, 2 1 1, 3 1 0, 0 2 0, 1 2 1, 2 2 1, 3 2 0, 0 3 0, 1 3 0, 2 3 0, 3 3 0"/>
+<bicubic-patch points="0 0 0, 1 0 0, 2 0 0, 3 0 0, 0 1 0, 1 1 1, 2 1 1, 3 1 0, 0 2 0, 1 2 1, 2 2 1, 3 2 0, 0 3 0, 1 3 0, 2 3 0, 3 3 0"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(
+      e.has("  type 0 flatness 0 u_steps 2 v_steps 1\n"
+            "  uv_vectors <0.5, 0>, <2, 0.25>, <1, 1.5>, <-1, 1>\n  <0, 0, 0>,"));
+  CHECK(e.pov.text.find("uv_vectors") == e.pov.text.rfind("uv_vectors"));  // the first only
+}
+
 TEST_CASE("a blob component's own material is its texture, after its transform",
           "[povray][geometry]") {
   Exported e = exportScene(R"XML(<material id="red" diffuse="0.8 0.1 0.1"/>

@@ -163,6 +163,15 @@ TEST_CASE("pov uv: a mesh's uv_vectors, (0, 0) without them, and a patch's own (
     for (int j = 0; j < 4; ++j) p[static_cast<size_t>(4 * i + j)] = Vec3(i, 0, j);
   const BicubicPatch patch(p, 0.0, 2, 2);
   checkUV(povUVAlong(patch, towards(Vec3(1.2, 5, 0.6), Vec3(1.2, 0, 0.6))), 0.2, 0.4);
+  // With uv_vectors the corners' (u, v) are blended bilinearly at the hit's own (0.2, 0.4):
+  // along the first coordinate (0.26, 0.18) and (0.14, 0.64), then 0.4 of the way between.
+  // The corners are twisted (no affine map takes the square to them), so blending the
+  // triangle's vertices instead would give another value.
+  const PatchUvCorners corners = {Vec2(0.1, 0.2), Vec2(0.9, 0.1), Vec2(0.7, 0.8), Vec2(0.0, 0.6)};
+  const BicubicPatch mapped(p, 0.0, 2, 2, Mat4(1.0), corners);
+  checkUV(povUVAlong(mapped, towards(Vec3(1.2, 5, 0.6), Vec3(1.2, 0, 0.6))), 0.212, 0.364);
+  // At the middle, the mean of the four corners.
+  checkUV(povUVAlong(mapped, towards(Vec3(1.5, 5, 1.5), Vec3(1.5, 0, 1.5))), 0.425, 0.425);
 }
 
 TEST_CASE("pov uv: shapes POV-Ray gives no (u, v) have none", "[primitives][uv-mapping]") {

@@ -147,11 +147,13 @@ TEST_CASE("World: a typed hit names the leaf the geometry hit", "[world][flatten
 TEST_CASE("flatten: a bicubic patch with flatness-space=\"world\" is cut where it is placed",
           "[world][flatten]") {
   // S(u, v) = (u, u², v); flatness 0.01 cuts it less in its own space than scaled by 4.
-  BicubicPatchSpec patch;
   const double yOf[4] = {0.0, 0.0, 1.0 / 3.0, 1.0};
+  PatchPoints points{};
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j)
-      patch.points[static_cast<size_t>(4 * i + j)] = Vec3(i / 3.0, yOf[i], j / 3.0);
+      points[static_cast<size_t>(4 * i + j)] = Vec3(i / 3.0, yOf[i], j / 3.0);
+  BicubicPatchSpec patch;
+  patch.points = std::make_shared<const PatchPoints>(points);
   patch.flatness = 0.01;
   patch.uSteps = patch.vSteps = 6;
   Scene scene;
@@ -162,10 +164,10 @@ TEST_CASE("flatten: a bicubic patch with flatness-space=\"world\" is cut where i
   addShape(scene, patch, m, scale4);  // in the world: cut as the points scaled by 4
   const FlatScene flat = flattenScene(scene, makeShape);
   REQUIRE(flat.leaves.size() == 2);
-  BicubicPatchSpec scaled = patch;
-  for (Vec3& q : scaled.points) q *= 4.0;
-  const size_t own = bicubicPatchMesh(patch.points, 0.01, 6, 6)->triangles.size();
-  const size_t world = bicubicPatchMesh(scaled.points, 0.01, 6, 6)->triangles.size();
+  PatchPoints scaled = points;
+  for (Vec3& q : scaled) q *= 4.0;
+  const size_t own = bicubicPatchMesh(points, 0.01, 6, 6)->triangles.size();
+  const size_t world = bicubicPatchMesh(scaled, 0.01, 6, 6)->triangles.size();
   CHECK(own < world);
   CHECK(flat.leaves[0].instance->shape().triangleCount() == own);
   CHECK(flat.leaves[1].instance->shape().triangleCount() == world);

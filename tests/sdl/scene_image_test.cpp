@@ -174,6 +174,11 @@ TEST_CASE(
   requireSameImageAsPovrayInPlace("uv_mapping_shapes.pov", 240, 180);
 }
 
+TEST_CASE("scene reader image: a bicubic patch's uv_vectors",
+          "[sdl][scene][image][povray][uv-mapping]") {
+  requireSameImageAsPovrayInPlace("bicubic_uv_vectors.pov", 240, 180);
+}
+
 TEST_CASE("scene reader image: blob components with textures of their own, and ovuses",
           "[sdl][scene][image][povray][blob][ovus]") {
   requireSameImageAsPovray("blob_component_textures.pov", 240, 180);

@@ -661,14 +661,14 @@ bicubic_patch { 3, 0.5, 1, 1
   CHECK(a.uSteps == 4);
   CHECK(a.vSteps == 3);
   CHECK(a.flatnessInWorld);
-  checkVec(a.points[0], Vec3(0, 0, -2));
-  checkVec(a.points[15], Vec3(3, 3, 2));
+  checkVec((*a.points)[0], Vec3(0, 0, -2));
+  checkVec((*a.points)[15], Vec3(3, 3, 2));
   const auto& b = shapeOf<BicubicPatchSpec>(*r->load.scene, 1);
   CHECK(b.type == 0);
   CHECK(b.flatness == 0.1);  // the old syntax's flatness for types 0 and 1
   CHECK(b.uSteps == 2);
   CHECK(b.vSteps == 5);
-  checkVec(b.points[6], Vec3(2, 1, 0));
+  checkVec((*b.points)[6], Vec3(2, 1, 0));
   const auto& c = shapeOf<BicubicPatchSpec>(*r->load.scene, 2);
   CHECK(c.type == 1);  // type 3 is type 1, with POV-Ray's warning
   CHECK(c.flatness == 0.5);
@@ -692,15 +692,27 @@ TEST_CASE("scene shapes: bad polygons and bicubic patches", "[sdl][scene][shapes
       "2*x+3*y }");
   REQUIRE(fifteen.size() == 1);
   CHECK(fifteen[0].find("test.pov:1:") == 0);
-  // POV-Ray's default corners are the patch's own (u, v): read; others refused.
-  const auto own = readScene(
-      "bicubic_patch { type 0 uv_vectors <0,0>,<1,0>,<1,1>,<0,1> 0 x 2*x 3*x y x+y 2*x+y 3*x+y "
-      "2*y x+2*y 2*x+2*y 3*x+2*y 3*y x+3*y 2*x+3*y 3*x+3*y }");
-  CHECK(own->load.scene != nullptr);
-  const auto uv = errorsOf("bicubic_patch { type 0 uv_vectors <0,0> <2,0> <1,1> <0,1> 0 }");
-  REQUIRE(uv.size() == 1);
-  CHECK(uv[0].find("test.pov:1:24: error: 'uv_vectors' of a bicubic_patch other than <0,0> "
-                   "<1,0> <1,1> <0,1> are not supported") == 0);
+  // uv_vectors end the keywords, as in POV-Ray: a keyword after them is no control point.
+  const auto late = errorsOf(
+      "bicubic_patch { type 0 uv_vectors <0,0>,<1,0>,<1,1>,<0,1> u_steps 2 0 x 2*x 3*x y x+y "
+      "2*x+y 3*x+y 2*y x+2*y 2*x+2*y 3*x+2*y 3*y x+3*y 2*x+3*y 3*x+3*y }");
+  REQUIRE(late.size() == 1);
+  CHECK(late[0].find("test.pov:1:59: error: expected a numeric expression, found 'u_steps'") == 0);
+}
+
+TEST_CASE("scene shapes: a bicubic patch's uv_vectors are its corners' (u, v)",
+          "[sdl][scene][shapes][uv-mapping]") {
+  auto r = readScene(
+      "bicubic_patch { type 0 u_steps 1 uv_vectors <0.5, 0> <2, 0.25>, <1, 1.5> <-1, 1> 0 x 2*x "
+      "3*x y x+y 2*x+y 3*x+y 2*y x+2*y 2*x+2*y 3*x+2*y 3*y x+3*y 2*x+3*y 3*x+3*y }\n"
+      "bicubic_patch { type 0 0 x 2*x 3*x y x+y 2*x+y 3*x+y 2*y x+2*y 2*x+2*y 3*x+2*y 3*y x+3*y "
+      "2*x+3*y 3*x+3*y }");
+  REQUIRE(r->load.scene);
+  const auto& a = shapeOf<BicubicPatchSpec>(*r->load.scene, 0);
+  CHECK(a.uSteps == 1);
+  const PatchUvCorners want = {Vec2(0.5, 0), Vec2(2, 0.25), Vec2(1, 1.5), Vec2(-1, 1)};
+  CHECK(a.uvVectors == want);
+  CHECK(shapeOf<BicubicPatchSpec>(*r->load.scene, 1).uvVectors == kPatchOwnUv);
 }
 
 TEST_CASE("scene shapes: julia_fractal, its keywords in any order, mirrored in z",
