@@ -71,8 +71,21 @@ std::optional<FunctionInput> ElementInput::function(const char* attr,
 }
 
 std::optional<uint32_t> ElementInput::material(const char* attr) {
-  if (!r_.has(attr)) return std::nullopt;
-  return lookupMaterial(r_, attr);
+  const pugi::xml_node inlined =
+      inlineMaterial_ ? r_.element().child("material") : pugi::xml_node();
+  if (inlined && r_.has(attr)) {
+    r_.attrError(attr, "give either a '" + std::string(attr) +
+                           "' attribute or an inline <material> "
+                           "child (at " +
+                           r_.file().loc(inlined).str() + "), not both");
+    return std::nullopt;
+  }
+  if (r_.has(attr)) return lookupMaterial(r_, attr);
+  if (!inlined) return std::nullopt;
+  ElementReader m(r_.ctx(), r_.file(), inlined);
+  std::optional<uint32_t> index = parseInlineMaterial(m);
+  if (m.failed()) r_.markFailed();
+  return index;
 }
 
 std::optional<std::string> ElementInput::filePath(const char* attr) {
@@ -101,12 +114,21 @@ void ElementInput::forEachChild(const char* element,
   for (pugi::xml_node c = r_.element().child(element); c; c = c.next_sibling(element)) {
     ElementReader cr(r_.ctx(), r_.file(), c);
     cr.checkAttributes(allowed);
+    const bool inlineMaterial = info && info->inlineMaterial;
+    bool material = false;  // one <material>, where the child may hold one
     cr.forEachChild([&](pugi::xml_node g) {
+      const bool isMaterial = std::string_view(g.name()) == "material";
+      if (inlineMaterial && isMaterial && !material) {
+        material = true;
+        return;
+      }
       ElementReader(r_.ctx(), r_.file(), g)
-          .error("<" + std::string(g.name()) + "> is not allowed inside " + cr.tag());
+          .error(inlineMaterial && isMaterial
+                     ? "only one <material> is allowed inside " + cr.tag()
+                     : "<" + std::string(g.name()) + "> is not allowed inside " + cr.tag());
       cr.markFailed();
     });
-    ElementInput in(cr);
+    ElementInput in(cr, nullptr, inlineMaterial);
     read(in);
     if (cr.failed()) r_.markFailed();
   }

@@ -17,8 +17,10 @@ class ElementInput final : public AttributeInput {
  public:
   // `children`: the child elements the element's reader may visit (forEachChild) and their
   // attributes; none when null.
-  explicit ElementInput(ElementReader& r, const std::vector<ChildElementInfo>* children = nullptr)
-      : r_(r), children_(children) {}
+  // `inlineMaterial`: the element may hold one <material> child, which material() reads.
+  explicit ElementInput(ElementReader& r, const std::vector<ChildElementInfo>* children = nullptr,
+                        bool inlineMaterial = false)
+      : r_(r), children_(children), inlineMaterial_(inlineMaterial) {}
 
   bool has(const char* attr) const override { return r_.has(attr); }
   double number(const char* attr, double def, const NumberRule& rule) override {
@@ -59,6 +61,7 @@ class ElementInput final : public AttributeInput {
  private:
   ElementReader& r_;
   const std::vector<ChildElementInfo>* children_;
+  bool inlineMaterial_;
 };
 
 }  // namespace lucent

@@ -119,6 +119,11 @@ std::string shapeWithChildrenXsd(const ShapeType& t) {
   for (const ChildElementInfo& c : t.children) {
     out += fmt::format("  <xs:complexType name=\"{}{}Type\">\n", t.element, c.name);
     out += c.contentXsd;
+    if (c.inlineMaterial)
+      out +=
+          "    <xs:sequence>\n"
+          "      <xs:element name=\"material\" type=\"inlineMaterialType\" minOccurs=\"0\"/>\n"
+          "    </xs:sequence>\n";
     for (const AttributeInfo& a : c.attributes) out += attributeXsd(a);
     out += "  </xs:complexType>\n\n";
   }

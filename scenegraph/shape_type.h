@@ -33,6 +33,9 @@ struct ChildElementInfo {
   // The schema's particles for the child's own children, when it has any (an isosurface's
   // <pigment-function> holds a texture); the parser reads those itself.
   std::string contentXsd = {};
+  // It may hold one <material> of its own instead of a material="id" attribute
+  // (AttributeInput::material reads either): a blob component's.
+  bool inlineMaterial = false;
 };
 
 // The <pigment-function> child of a shape whose function calls pigments (isosurface.cpp).

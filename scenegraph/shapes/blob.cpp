@@ -66,12 +66,14 @@ AttributeInfo childAttribute(const char* name, AttrType type, std::string def, s
   return a;
 }
 
-// A component's own material, by id: POV-Ray's texture in a blob component.
+// A component's own material, by id or as one inline <material> child: POV-Ray's texture
+// in a blob component.
 AttributeInfo materialAttribute() {
   AttributeInfo a = childAttribute(
       "material", AttrType::Text, "",
-      "The id of a top-level material of the component's own, in the blob's space: at a hit, "
-      "each component's material (the blob's where it has none) weighted by its |field| there.");
+      "The id of a top-level material of the component's own (or one inline <material> child), "
+      "in the blob's space: at a hit, each component's material (the blob's where it has none) "
+      "weighted by its |field| there.");
   a.schemaType = "name";
   return a;
 }
@@ -140,6 +142,7 @@ ShapeEntry<BlobSpec> shapeEntry<BlobSpec>() {
                        "The field at the centre or axis; may be negative."),
         transformAttribute(), materialAttribute()},
        true}};
+  e.children[0].inlineMaterial = true;
   e.finish = [](BlobSpec& s, AttributeInput& in) {
     in.forEachChild("component", [&](AttributeInput& c) { readComponent(s, c); });
     if (s.components.empty() && !in.failed())

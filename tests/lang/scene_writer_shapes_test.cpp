@@ -463,3 +463,17 @@ TEST_CASE("scene writer: a bicubic patch keeps its points, steps and uv corners"
   auto [c, e] = specs<BicubicPatchSpec>(d);
   CHECK(e.uvVectors == kPatchOwnUv);
 }
+
+TEST_CASE("scene writer: a blob component's inline material is written by an id of its own",
+          "[lang][scene-writer]") {
+  auto r = roundTrip(
+      "<blob threshold=\"0.5\"><component type=\"sphere\" radius=\"1\">"
+      "<material diffuse=\"0.8 0.1 0.1\"/></component>"
+      "<component type=\"sphere\" center=\"1 0 0\" radius=\"1\"/></blob>");
+  auto [a, b] = specs<BlobSpec>(r);
+  REQUIRE(b.componentMaterials.size() == 2);
+  REQUIRE(b.componentMaterials[0]);
+  CHECK_FALSE(b.componentMaterials[1]);
+  CHECK(r.second->materials[*b.componentMaterials[0]].diffuse == Color(0.8f, 0.1f, 0.1f));
+  CHECK(r.text.find("radius=\"1\" strength=\"1\" material=\"material-") != std::string::npos);
+}

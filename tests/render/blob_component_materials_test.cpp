@@ -105,3 +105,42 @@ TEST_CASE("blob component materials: a shadow ray takes the weighted share of ea
   World world(*scene);
   checkColor(traceOne(world, Ray(Vec3(0, 0.5, 0), Vec3(0, -1, 0))), Color(0.25f));
 }
+
+TEST_CASE("blob component materials: an inline <material> is the component's as an id is",
+          "[render][blob]") {
+  const std::string byId = R"XML(<render ambient="1" background="0 0 0"/>
+    <material id="red" ambient="1 0 0" diffuse="0"/>
+    <material id="blue" ambient="0 0 1" diffuse="0"/>
+    <blob threshold="0.4">
+      <material ambient="0 1 0" diffuse="0"/>
+      <component type="sphere" center="-0.4 0 0" radius="1" strength="1" material="red"/>
+      <component type="sphere" center="0.4 0 0" radius="1" strength="1" material="blue"/>
+      <component type="sphere" center="0 0 -0.5" radius="1" strength="0.8"/>
+    </blob>)XML";
+  const std::string inlined = R"XML(<render ambient="1" background="0 0 0"/>
+    <blob threshold="0.4">
+      <material ambient="0 1 0" diffuse="0"/>
+      <component type="sphere" center="-0.4 0 0" radius="1" strength="1">
+        <material ambient="1 0 0" diffuse="0"/>
+      </component>
+      <component type="sphere" center="0.4 0 0" radius="1" strength="1">
+        <material ambient="0 0 1" diffuse="0"/>
+      </component>
+      <component type="sphere" center="0 0 -0.5" radius="1" strength="0.8"/>
+    </blob>)XML";
+  auto a = parse(byId);
+  auto b = parse(inlined);
+  const auto& blob = std::get<BlobSpec>(*b->root->children.back()->shape);
+  REQUIRE(blob.componentMaterials.size() == 3);
+  REQUIRE(blob.componentMaterials[0]);
+  CHECK(b->materials[*blob.componentMaterials[0]].ambient == Color(1, 0, 0));
+  CHECK(b->materials[*blob.componentMaterials[1]].ambient == Color(0, 0, 1));
+  CHECK_FALSE(blob.componentMaterials[2]);
+  World wa(*a), wb(*b);
+  for (const Vec2 at : {Vec2(0.0, 0.0), Vec2(-0.5, 0.2), Vec2(0.3, -0.4), Vec2(0.6, 0.1)}) {
+    const Ray ray(Vec3(at.x, 2, at.y), Vec3(0, -1, 0));
+    const Color want = traceOne(wa, ray);
+    CHECK(maxComponent(want) > 0.2f);  // the blob is hit (the background is black)
+    CHECK(traceOne(wb, ray) == want);
+  }
+}
