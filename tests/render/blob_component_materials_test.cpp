@@ -44,13 +44,9 @@ Vec3 surfaceBelow(double x, double z, double threshold,
   return Vec3(x, 0.5 * (lo + hi), z);
 }
 
-}  // namespace
-
-TEST_CASE("blob component materials: each shaded whole, weighted by its field at the hit",
-          "[render][blob]") {
-  // Ambient light only: a red component at x = -0.4, a blue one at 0.4 and one without a
-  // material (the blob's green) at z = -0.5; a negative component's |field| weighs too.
-  auto scene = parse(R"XML(<render ambient="1" background="0 0 0"/>
+// Ambient light only: a red component at x = -0.4, a blue one at 0.4, one without a
+// material (the blob's green) at z = -0.5, and a negative red one.
+const char* const kColouredBlob = R"XML(<render ambient="1" background="0 0 0"/>
     <material id="red" ambient="1 0 0" diffuse="0"/>
     <material id="blue" ambient="0 0 1" diffuse="0"/>
     <blob threshold="0.4">
@@ -59,7 +55,14 @@ TEST_CASE("blob component materials: each shaded whole, weighted by its field at
       <component type="sphere" center="0.4 0 0" radius="1" strength="1" material="blue"/>
       <component type="sphere" center="0 0 -0.5" radius="1" strength="0.8"/>
       <component type="sphere" center="0 0.9 0.6" radius="0.5" strength="-0.3" material="red"/>
-    </blob>)XML");
+    </blob>)XML";
+
+}  // namespace
+
+TEST_CASE("blob component materials: each shaded whole, weighted by its field at the hit",
+          "[render][blob]") {
+  // A negative component's |field| weighs too.
+  auto scene = parse(kColouredBlob);
   World world(*scene);
   struct C {
     Vec3 c;
@@ -108,15 +111,7 @@ TEST_CASE("blob component materials: a shadow ray takes the weighted share of ea
 
 TEST_CASE("blob component materials: an inline <material> is the component's as an id is",
           "[render][blob]") {
-  const std::string byId = R"XML(<render ambient="1" background="0 0 0"/>
-    <material id="red" ambient="1 0 0" diffuse="0"/>
-    <material id="blue" ambient="0 0 1" diffuse="0"/>
-    <blob threshold="0.4">
-      <material ambient="0 1 0" diffuse="0"/>
-      <component type="sphere" center="-0.4 0 0" radius="1" strength="1" material="red"/>
-      <component type="sphere" center="0.4 0 0" radius="1" strength="1" material="blue"/>
-      <component type="sphere" center="0 0 -0.5" radius="1" strength="0.8"/>
-    </blob>)XML";
+  // kColouredBlob with its components' materials inline.
   const std::string inlined = R"XML(<render ambient="1" background="0 0 0"/>
     <blob threshold="0.4">
       <material ambient="0 1 0" diffuse="0"/>
@@ -127,15 +122,19 @@ TEST_CASE("blob component materials: an inline <material> is the component's as 
         <material ambient="0 0 1" diffuse="0"/>
       </component>
       <component type="sphere" center="0 0 -0.5" radius="1" strength="0.8"/>
+      <component type="sphere" center="0 0.9 0.6" radius="0.5" strength="-0.3">
+        <material ambient="1 0 0" diffuse="0"/>
+      </component>
     </blob>)XML";
-  auto a = parse(byId);
+  auto a = parse(kColouredBlob);
   auto b = parse(inlined);
   const auto& blob = std::get<BlobSpec>(*b->root->children.back()->shape);
-  REQUIRE(blob.componentMaterials.size() == 3);
+  REQUIRE(blob.componentMaterials.size() == 4);
   REQUIRE(blob.componentMaterials[0]);
   CHECK(b->materials[*blob.componentMaterials[0]].ambient == Color(1, 0, 0));
   CHECK(b->materials[*blob.componentMaterials[1]].ambient == Color(0, 0, 1));
   CHECK_FALSE(blob.componentMaterials[2]);
+  CHECK(b->materials[*blob.componentMaterials[3]].ambient == Color(1, 0, 0));
   World wa(*a), wb(*b);
   for (const Vec2 at : {Vec2(0.0, 0.0), Vec2(-0.5, 0.2), Vec2(0.3, -0.4), Vec2(0.6, 0.1)}) {
     const Ray ray(Vec3(at.x, 2, at.y), Vec3(0, -1, 0));
