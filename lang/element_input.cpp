@@ -74,10 +74,9 @@ std::optional<uint32_t> ElementInput::material(const char* attr) {
   const pugi::xml_node inlined =
       inlineMaterial_ ? r_.element().child("material") : pugi::xml_node();
   if (inlined && r_.has(attr)) {
+    const std::string at = r_.file().loc(inlined).str();
     r_.attrError(attr, "give either a '" + std::string(attr) +
-                           "' attribute or an inline <material> "
-                           "child (at " +
-                           r_.file().loc(inlined).str() + "), not both");
+                           "' attribute or an inline <material> child (at " + at + "), not both");
     return std::nullopt;
   }
   if (r_.has(attr)) return lookupMaterial(r_, attr);
