@@ -40,6 +40,10 @@ const std::vector<std::string_view>& geometryElementNames();
 // broken, so the rest of the file is checked.
 std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& file,
                                         pugi::xml_node element, int depth);
+// The geometry elements inside a <clip>, <bound> or <projected-through> (no attributes; at
+// least one object), parsed into `out`.
+void readObjectList(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, int depth,
+                    std::vector<std::unique_ptr<Node>>& out);
 // <defs>: its children go to scene.defs.
 void parseDefs(ElementReader& r);
 // The node's id attribute, registered for <use ref> (a duplicate is an error naming the first).

@@ -149,10 +149,12 @@ const std::vector<std::string_view>& nodeAttributes(std::string_view element) {
   return cache.emplace(key, std::move(allowed)).first->second;
 }
 
-// A <clip> or <bound>: no attributes, one or more solids (geometry elements, <repeat> and
-// <if> around them) in the frame of the node that holds it.
-void readSolids(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, int depth,
-                std::vector<std::unique_ptr<Node>>& out) {
+}  // namespace
+
+// A <clip>, <bound> or <projected-through>: no attributes, one or more geometry elements
+// (<repeat> and <if> around them) in the frame of the node that holds it.
+void readObjectList(ParseContext& ctx, const SourceFile& file, pugi::xml_node element, int depth,
+                    std::vector<std::unique_ptr<Node>>& out) {
   ElementReader r(ctx, file, element);
   r.checkAttributes({});
   bool anyChild = false;  // a wrong child is its own error, not also an empty <clip>
@@ -167,15 +169,21 @@ void readSolids(ParseContext& ctx, const SourceFile& file, pugi::xml_node elemen
     }
     if (auto child = parseGeometryNode(ctx, file, c, depth + 1)) out.push_back(std::move(child));
   });
-  if (out.empty() && !anyChild && !r.failed())
-    r.error(r.tag() + " needs at least one solid" +
-            (element.name() == std::string_view("clip")
-                 ? ": the surface is kept only inside all of them (POV-Ray's clipped_by)"
-                 : ": the object is searched only along rays that meet all of them (POV-Ray's "
-                   "bounded_by)"));
+  if (!out.empty() || anyChild || r.failed()) return;
+  const std::string_view name = element.name();
+  if (name == "clip")
+    r.error(r.tag() +
+            " needs at least one solid: the surface is kept only inside all of them (POV-Ray's "
+            "clipped_by)");
+  else if (name == "bound")
+    r.error(r.tag() +
+            " needs at least one solid: the object is searched only along rays that meet all of "
+            "them (POV-Ray's bounded_by)");
+  else
+    r.error(r.tag() +
+            " needs at least one object: the light reaches a point only through them (POV-Ray's "
+            "projected_through)");
 }
-
-}  // namespace
 
 // The shapes of the registry, then the groups, CSG operations and <use>.
 const std::vector<std::string_view>& geometryElementNames() {
@@ -236,7 +244,7 @@ std::unique_ptr<Node> parseGeometryNode(ParseContext& ctx, const SourceFile& fil
         return;
       }
       seen = c;
-      readSolids(ctx, file, c, depth + 1, cn == "clip" ? node->clip : node->bound);
+      readObjectList(ctx, file, c, depth + 1, cn == "clip" ? node->clip : node->bound);
     } else if (cn == "material") {
       if (inlineMaterial) {
         ElementReader(ctx, file, c)

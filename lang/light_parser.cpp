@@ -4,7 +4,7 @@
 // has (type, id, transform); an attribute of another light type is an error that says
 // which types it belongs to. A light is a node of the hierarchy (NodeKind::Light) wherever
 // it stands, in its parent's frame; placeLights puts the scene's lights in the world once
-// it is read.
+// it is read. Its <projected-through> objects stand in its own frame.
 #include "element_input.h"
 #include "element_parsers.h"
 #include "expansion.h"
@@ -71,11 +71,29 @@ std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file,
     if (a.read && a.takenBy(light.type)) a.read(light, in);
   if (const LightReader& finish = lightTypeInfo(light.type).finish) finish(light, in);
 
+  pugi::xml_node through;  // the first <projected-through>
   r.forEachChild([&](pugi::xml_node n) {
-    if (std::string_view(n.name()) == "param")
-      return;  // a local parameter (the caller's LocalScope)
+    const std::string_view name = n.name();
+    if (name == "param") return;  // a local parameter (the caller's LocalScope)
+    if (name == "projected-through") {
+      if (through) {
+        ElementReader(r.ctx(), r.file(), n)
+            .error("<light> holds one <projected-through> at most; the first is at " +
+                   file.loc(through).str());
+        return;
+      }
+      through = n;
+      auto group = std::make_shared<Node>();
+      group->kind = NodeKind::Group;
+      group->element = "projected-through";
+      group->loc = file.loc(n);
+      readObjectList(ctx, file, n, depth + 1, group->children);
+      light.projectedThrough = std::move(group);
+      return;
+    }
     ElementReader(r.ctx(), r.file(), n)
-        .error("<light> takes no child elements but <param>, got <" + std::string(n.name()) + ">");
+        .error("<light> takes no child elements but <param> and <projected-through>, got <" +
+               std::string(name) + ">");
   });
   node->light = std::make_unique<Light>(light);
   if (r.failed()) ctx.broken.insert(node.get());

@@ -23,8 +23,13 @@ std::string useLabel(const Node& n) {
   return n.target ? "<use ref=\"" + n.target->id + "\">" : "<use>";
 }
 
-// Everything a node leads to: its children, or the target of a <use>, and the solids of
-// its <clip> and <bound>.
+// A light's <projected-through>, or null.
+const Node* projectedThrough(const Node& n) {
+  return n.kind == NodeKind::Light && n.light ? n.light->projectedThrough.get() : nullptr;
+}
+
+// Everything a node leads to: its children, or the target of a <use>, the solids of its
+// <clip> and <bound>, and a light's <projected-through>.
 std::vector<const Node*> successors(const Node& n) {
   std::vector<const Node*> out;
   if (n.kind == NodeKind::Use) {
@@ -34,6 +39,7 @@ std::vector<const Node*> successors(const Node& n) {
   }
   for (const auto& c : n.clip) out.push_back(c.get());
   for (const auto& c : n.bound) out.push_back(c.get());
+  if (const Node* through = projectedThrough(n)) out.push_back(through);
   return out;
 }
 
@@ -395,6 +401,7 @@ void resolveReferences(ParseContext& ctx) {
       for (const auto& c : n->children) stack.emplace_back(c.get(), depth + 1);
       for (const auto& c : n->clip) stack.emplace_back(c.get(), depth + 1);
       for (const auto& c : n->bound) stack.emplace_back(c.get(), depth + 1);
+      if (const Node* through = projectedThrough(*n)) stack.emplace_back(through, depth + 1);
     }
   } else {
     // 2. No node contains itself, and nothing nests too deep through <use>.

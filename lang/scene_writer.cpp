@@ -285,6 +285,7 @@ class SceneWriter {
     for (const auto& c : n.children) count(*c);
     for (const auto& c : n.clip) count(*c);
     for (const auto& c : n.bound) count(*c);
+    if (const Node* through = projectedThrough(n)) count(*through);
   }
   void countMaterials() {
     count(*scene_.root);
@@ -429,8 +430,9 @@ class SceneWriter {
     if (n.material && !inlineMaterial) a.emplace_back("material", named_.at(*n.material));
     if (n.interiorMaterial) a.emplace_back("interior-material", named_.at(*n.interiorMaterial));
     out_.source(n.loc);
+    const Node* through = projectedThrough(n);
     const bool empty = !inlineMaterial && n.children.empty() && shapeChildren.empty() &&
-                       n.clip.empty() && n.bound.empty();
+                       n.clip.empty() && n.bound.empty() && !through;
     out_.open(element, a, empty);
     if (empty) return;
     // A shape's parameters first: a local <param> is visible in the whole element.
@@ -447,10 +449,17 @@ class SceneWriter {
     for (const auto& c : n.children) writeNode(*c);
     writeSolids("clip", n.clip);
     writeSolids("bound", n.bound);
+    if (through) writeSolids("projected-through", through->children);
     out_.close(element);
   }
 
-  // A node's <clip> or <bound>, its solids in the node's frame.
+  // A light's <projected-through> group, or null.
+  static const Node* projectedThrough(const Node& n) {
+    return n.kind == NodeKind::Light && n.light ? n.light->projectedThrough.get() : nullptr;
+  }
+
+  // A node's <clip> or <bound>, its solids in the node's frame, or a light's
+  // <projected-through>, its objects in the light's frame.
   void writeSolids(const char* element, const std::vector<std::unique_ptr<Node>>& solids) {
     if (solids.empty()) return;
     out_.open(element, {}, false);

@@ -145,8 +145,19 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
 
   const bool anySpecular = materials.anySpecular(geometry.usedMaterials());
   // A light group's lights are written inside its light_group (povray/pov_geometry.cpp).
-  for (const Light& light : scene.lights)
-    if (light.group == 0) writeLight(light, anySpecular, out, issues);
+  // A light projected through objects comes after the mesh declarations its objects may
+  // make (PovGeometry::writeProjection).
+  PovWriter projected;
+  for (const Light& light : scene.lights) {
+    if (light.group != 0) continue;
+    if (!light.projectedThrough) {
+      writeLight(light, anySpecular, out, issues);
+      continue;
+    }
+    writeLight(light, anySpecular, projected, issues,
+               [&](PovWriter& w) { geometry.writeProjection(light, w); });
+  }
+  geometry.takeMeshDeclarations(declarations);
   if (!scene.lights.empty()) out.blank();
   // The object patterns' objects before the materials that name them, and the meshes
   // they may hold before them (a mesh declaration holds no texture).
@@ -159,6 +170,10 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   materials.writeDeclarations(geometry.usedMaterials(), out);
   out.blank();
   out.append(declarations);
+  if (!projected.text().empty()) {
+    out.append(projected);
+    out.blank();
+  }
   out.append(objects);
 
   result.issues = issues.all();

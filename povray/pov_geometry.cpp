@@ -39,7 +39,23 @@ PovGeometry::PovGeometry(const Scene& scene, const PovMaterials& materials, cons
 
 void PovGeometry::write(PovWriter& declarations, PovWriter& objects) {
   writeNode(*scene_.root, Mat4(1.0), 0, true, objects);
-  declarations.append(meshDeclarations_);
+  takeMeshDeclarations(declarations);
+}
+
+void PovGeometry::takeMeshDeclarations(PovWriter& out) {
+  out.append(meshDeclarations_);
+  meshDeclarations_ = PovWriter();
+}
+
+void PovGeometry::writeProjection(const Light& light, PovWriter& out) {
+  const Node& group = *light.projectedThrough;
+  asOwnSolids([&] {
+    out.open("projected_through");
+    out.open(operandCount(group) == 1 ? "object" : "union");
+    writeNode(group, light.worldFromLight, 0, false, out);
+    out.close();
+    out.close();
+  });
 }
 
 namespace {
@@ -170,7 +186,9 @@ void PovGeometry::writeLightGroup(const Node& node, const Mat4& fromContext, uin
     const Node& lightNode = c->kind == NodeKind::Use ? *c->target : *c;
     const Mat4 world = c->kind == NodeKind::Use ? m * c->parentFromNode * lightNode.parentFromNode
                                                 : m * c->parentFromNode;
-    writeLight(placedLight(*lightNode.light, world), anySpecular, out, issues_);
+    const Light placed = placedLight(*lightNode.light, world);
+    writeLight(placed, anySpecular, out, issues_,
+               [&](PovWriter& w) { writeProjection(placed, w); });
   }
   const Node* outer = lightGroupWritten_;
   lightGroupWritten_ = &node;

@@ -46,6 +46,12 @@ class PovGeometry {
   // without textures), for the materials that name it (povObjectPatternName).
   void writeObjectPatterns(PovWriter& out);
   const std::vector<bool>& usedMaterials() const { return used_; }
+  // A placed light's projected_through block: its <projected-through> objects (geometry
+  // only, as a clip's) in the light's place. A mesh among them is declared with the meshes
+  // write() gives, so the light is written after them (takeMeshDeclarations).
+  void writeProjection(const Light& light, PovWriter& out);
+  // The mesh declarations made since write() handed its own over.
+  void takeMeshDeclarations(PovWriter& out);
 
  private:
   void writeNode(const Node& node, const Mat4& fromContext, uint32_t inherited, bool topLevel,

@@ -103,7 +103,8 @@ void writePositioned(const Light& light, const std::string& type, PovWriter& out
 
 }  // namespace
 
-void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues& issues) {
+void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues& issues,
+                const std::function<void(PovWriter&)>& projection) {
   const LightTypeInfo& info = lightTypeInfo(light.type);
   const std::string type(info.name);
   LightOut row(light, out, issues);
@@ -118,6 +119,7 @@ void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues&
   }
   if (!light.shadows) out.line("shadowless");
   if (light.mediaAttenuation) out.line("media_attenuation on");
+  if (light.projectedThrough && projection) projection(out);
   out.close();
   // POV-Ray's shadowless light is the one without highlights: shadows and highlights go
   // together there.

@@ -7,6 +7,7 @@
 
 #include "scenegraph/light.h"
 
+#include <functional>
 #include <string>
 
 namespace lucent {
@@ -34,6 +35,9 @@ constexpr double kParallelLightDistance = 1e6;
 
 // Writes one light_source. `anySpecular`: some material has a highlight, which a
 // shadowless light would lose (POV-Ray drops highlights of shadowless lights).
-void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues& issues);
+// `projection` writes the light's projected_through block (PovGeometry::writeProjection),
+// called for a light that has one.
+void writeLight(const Light& light, bool anySpecular, PovWriter& out, PovIssues& issues,
+                const std::function<void(PovWriter&)>& projection = {});
 
 }  // namespace lucent

@@ -22,6 +22,10 @@ namespace lucent {
 
 namespace {
 
+// How far short of a projected-through light's objects the shadows end, in world units:
+// POV-Ray's SMALL_TOLERANCE.
+constexpr double kProjectionTolerance = 0.001;
+
 bool anyPositive(const Color& c) { return maxComponent(c) > 0.0f; }
 
 // fade-on-exit: what the stretch inside keeps dims the rays that carry light out of the
@@ -584,7 +588,7 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
         surfaceResponse(m, kd, metal, ShadingPoint{s.p, n, v}, in.toLight, light.highlights);
     if (!anyPositive(brdf)) continue;
     Color shadow(1.0f);
-    if (light.shadows) {
+    if (light.shadows || light.projectedThrough) {
       shadow = shadowFactor(light, static_cast<uint32_t>(i), in, s, media, seed, context);
       if (!anyPositive(shadow)) continue;
     }
@@ -600,7 +604,19 @@ Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightI
   // The object that blocked this light's last shadow ray is asked first.
   World::ObjectId& lastBlocker = context.shadowCache.slot(cacheOwner_, lightIndex, lights_.size());
   const bool fogged = light.mediaAttenuation && !fogs_.empty();
-  auto shadowRay = [&](const Ray& ray) {
+  const Shape* through = world_.projection(lightIndex);
+  auto shadowRay = [&](Ray ray) {
+    if (through) {
+      // POV-Ray's projected_through: dark unless the ray meets the objects before the
+      // light; then only what lies nearer than that meeting, by POV-Ray's SMALL_TOLERANCE
+      // in world units, shadows the point (its TracePointLightShadowRay).
+      lucent::Hit meeting;
+      ++stats.queries;
+      if (!through->intersect(ray, meeting)) return Color(0.0f);
+      if (!light.shadows) return Color(1.0f);
+      ray.tmax = meeting.t - kProjectionTolerance / glm::length(ray.d);
+      if (!(ray.tmax > ray.tmin)) return Color(1.0f);
+    }
     Color passed;
     if (anyTransmissive_) {
       passed = transmittance(ray, media, lastBlocker, stats);

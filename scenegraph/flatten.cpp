@@ -375,6 +375,24 @@ std::unique_ptr<Shape> buildSolid(const Scene& scene, const Node& node,
   return compose(CsgOp::Union, std::move(parts), Seen{}).shape;
 }
 
+std::unique_ptr<Shape> buildProjection(const Scene& scene, const Light& light,
+                                       const ShapeMaker& makeShape) {
+  if (!light.projectedThrough) return nullptr;
+  const std::optional<Transform> world = Transform::fromMatrix(light.worldFromLight);
+  if (!world)
+    throw LocatedError(light.loc,
+                       "the transforms down to this light flatten its projected-through "
+                       "objects");
+  std::vector<WorldLeaf> leaves;  // never looked up: only intersect() is asked
+  Builder b{scene, makeShape, true, {}, leaves};
+  std::vector<Part> parts;
+  // As an operand of a solid: one union, never split by shadow flags.
+  b.add(*light.projectedThrough, *world, Inherited{}, Seen{}, true, parts);
+  if (parts.empty()) return nullptr;
+  if (parts.size() == 1) return std::move(parts.front().shape);
+  return compose(CsgOp::Union, std::move(parts), Seen{}).shape;
+}
+
 FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape) {
   FlatScene flat;
   Builder b{scene, makeShape, hasUses(scene), {}, flat.leaves};

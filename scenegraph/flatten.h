@@ -87,6 +87,12 @@ FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape);
 std::unique_ptr<Shape> buildSolid(const Scene& scene, const Node& node,
                                   const ShapeMaker& makeShape);
 
+// A light's projectedThrough objects (Light::projectedThrough, a group) as one shape placed
+// by the light's worldFromLight, whose intersect() alone is asked: a union of its parts when
+// it has several. Null for a group with no geometry. Throws LocatedError as flattenScene.
+std::unique_ptr<Shape> buildProjection(const Scene& scene, const Light& light,
+                                       const ShapeMaker& makeShape);
+
 // Throws, without building any shape, the LocatedError that flattening would: a
 // transform down to some node that is singular or beyond double range (nested scales).
 // `lucent check` calls it so that it refuses what `lucent render` refuses.

@@ -12,6 +12,7 @@
 #include "primitives/math.h"
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,6 +33,7 @@ enum class LightType { Point, Directional, Spot, Area, Cylindrical };
 enum class Handedness { Right, Left };
 
 struct Light;
+struct Node;  // node.h, which includes this file
 
 // The exporter's side of writing one light (povray/pov_lights.cpp implements it): a type's
 // row writes its POV-Ray keyword and modifiers through it.
@@ -156,6 +158,16 @@ struct Light {
   // The instance of the <light-group> whose light this is, 0 for a global light
   // (scenegraph/light_group.h); set when the lights are placed.
   uint32_t group = 0;
+
+  // <projected-through> (POV-Ray's projected_through): the light reaches a point only along
+  // a ray that meets these objects before it reaches the light, and only what lies nearer
+  // than that meeting shadows it. A group node whose children are the objects, in the
+  // light's own frame (its node's); never drawn, shared by the light's placed copies.
+  // Null: none.
+  std::shared_ptr<Node> projectedThrough;
+  // The world from the light's own frame, where placeLights put it: where the
+  // projectedThrough objects stand.
+  Mat4 worldFromLight{1.0};
 
   Color radiance() const { return color * static_cast<float>(intensity); }
 };

@@ -84,6 +84,7 @@ Light placedLight(const Light& local, const Mat4& worldFromLight) {
   l.direction = len > 0.0 ? d / len : Vec3(0.0);
   l.u = linear * local.u;
   l.v = linear * local.v;
+  l.worldFromLight = worldFromLight;
   return l;
 }
 

@@ -2,6 +2,8 @@
 
 #include "shape_registry.h"
 
+#include <algorithm>
+
 namespace lucent {
 
 namespace {
@@ -39,6 +41,9 @@ World::World(const Scene& scene, const ShapeMaker& make) : scene_(scene) {
   aggregate_ = Aggregate(items, options);
   occluderSkips_ = aggregate_.anyMasked(kShadowless);
   opaqueSkips_ = aggregate_.anyMasked(kTransmits | kShadowless);
+  const std::vector<Light>& lights = scene.lights;
+  if (std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.projectedThrough; }))
+    for (const Light& l : lights) projections_.push_back(buildProjection(scene, l, make));
 }
 
 // The queries of the ray path are calls here rather than inline in the tracer: with one

@@ -90,6 +90,12 @@ class World {
   // How many top-level objects may transmit light.
   size_t transmissiveObjectCount() const { return aggregate_.selectedCount(); }
 
+  // Light k's projected-through objects (Scene::lights[k].projectedThrough) as one shape
+  // in the world; null when it has none.
+  const Shape* projection(size_t light) const {
+    return light < projections_.size() ? projections_[light].get() : nullptr;
+  }
+
   // The top-level search structure, for statistics.
   const Aggregate& aggregate() const { return aggregate_; }
   const Bvh& bvh() const { return aggregate_.bvh(); }
@@ -107,6 +113,7 @@ class World {
   std::vector<WorldLeaf> leaves_;
   std::deque<std::vector<uint32_t>> componentMaterials_;  // WorldLeaf::componentMaterials
   Aggregate aggregate_;
+  std::vector<std::unique_ptr<Shape>> projections_;  // projection(), empty when no light has one
   // Whether occluder() and opaqueOccluder() have objects to leave out.
   bool occluderSkips_ = false, opaqueSkips_ = false;
 };

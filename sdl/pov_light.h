@@ -50,6 +50,9 @@ struct PovLight {
   // `looks_like { OBJECT }` (SceneReader::toNode). Behind a pointer: every object read
   // holds a light's worth of room, and nested objects recurse on the stack.
   std::shared_ptr<const struct PovLooksLike> looksLike;
+  // `projected_through { OBJECT }`: the object and the light's transform where it was
+  // written, as looks_like's (SceneReader::toNode).
+  std::shared_ptr<const struct PovLooksLike> projectedThrough;
 };
 
 // POV-Ray's attenuation of a light at distance d: 2 / (1 + (d/fade_distance)^fade_power),

@@ -193,6 +193,32 @@ PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
       object.noShadow = true;
       l.looksLike =
           std::make_shared<const PovLooksLike>(PovLooksLike{std::move(object), l.transform});
+    } else if (w == "projected_through") {
+      // The light reaches a point only through the object, which follows the light's
+      // transforms written after it and is never drawn; POV-Ray drops its texture and
+      // interior with a warning each.
+      if (l.projectedThrough)
+        in.error(t, "only one projected_through per light_source, as POV-Ray allows");
+      in.expect("{");
+      const Token o = in.next();
+      PovObject object;
+      if (isObjectKeyword(o)) object = readObject(o, in);
+      else if (const auto* item = use<ObjectItem>(o, in); item && !item->object.light)
+        object = item->object;
+      else in.error(o, "an object expected in projected_through, not " + o.describe());
+      readObjectModifiers(object, in);
+      if (object.texture) {
+        warn(in, t.loc(),
+             "projected_through objects cannot have a texture; texture removed (as POV-Ray)");
+        object.texture.reset();
+      }
+      if (object.interior) {
+        warn(in, t.loc(),
+             "projected_through objects cannot have an interior; interior removed (as POV-Ray)");
+        object.interior.reset();
+      }
+      l.projectedThrough =
+          std::make_shared<const PovLooksLike>(PovLooksLike{std::move(object), l.transform});
     } else {
       unreadInBlock(t, in);
       return l;

@@ -31,7 +31,6 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"subsurface", "subsurface light transport"},
       {"caustics", "faked caustics"},
       {"dispersion", "dispersion"},
-      {"projected_through", "lights projected through objects"},
       {"texture_map", "maps of textures; Lucent has one texture layer per material"},
       {"uv_mapping",
        "uv_mapping here; Lucent reads a uv-mapped pigment, normal, texture or object at "
@@ -575,6 +574,20 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     imported.light.loc = light.loc;
     n->kind = NodeKind::Light;
     n->light = std::make_unique<Light>(imported.light);
+    if (light.projectedThrough) {
+      // projected_through: its object moved on by the light's transforms written after it,
+      // in the light node's frame (the parent's: the light's transforms are in its place).
+      PovObject object = light.projectedThrough->object;
+      object.transform =
+          object.transform.then(light.projectedThrough->lightAt.inverse()).then(light.transform);
+      auto group = std::make_shared<Node>();
+      group->kind = NodeKind::Group;
+      group->element = "projected_through";
+      group->loc = object.loc;
+      if (auto child = toNode(object, inherited, false, in))
+        group->children.push_back(std::move(child));
+      if (!group->children.empty()) n->light->projectedThrough = std::move(group);
+    }
     if (!light.looksLike) return n;
     // looks_like: the light and its object in a union, the object moved on by the light's
     // transforms written after looks_like.

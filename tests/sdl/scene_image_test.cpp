@@ -179,6 +179,11 @@ TEST_CASE("scene reader image: a bicubic patch's uv_vectors",
   requireSameImageAsPovrayInPlace("bicubic_uv_vectors.pov", 240, 180);
 }
 
+TEST_CASE("scene reader image: lights projected through objects",
+          "[sdl][scene][image][povray][projected-through]") {
+  requireSameImageAsPovray("projected_through.pov", 240, 180);
+}
+
 TEST_CASE("scene reader image: blob components with textures of their own, and ovuses",
           "[sdl][scene][image][povray][blob][ovus]") {
   requireSameImageAsPovray("blob_component_textures.pov", 240, 180);

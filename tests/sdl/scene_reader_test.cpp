@@ -668,6 +668,34 @@ light_source { <0, 5, 0> rgb 1 translate <0, 0, 2>
         "test.pov:1:52: error: only one looks_like per light_source, as POV-Ray allows");
 }
 
+TEST_CASE("scene reader: projected_through's object follows the light's later transforms",
+          "[sdl][scene][light][projected-through]") {
+  // As looks_like's: the light's transforms written after projected_through move the object
+  // too, those before it not; the object's texture is dropped.
+  auto r = readScene(R"(
+light_source { <0, 8, 0> rgb 1 translate <0, 0, 2>
+  projected_through { sphere { <0, 4, 0>, 0.5 pigment { rgb 1 } } scale <1, 0.5, 1> }
+  translate <1, 0, 0> }
+)");
+  REQUIRE(r->load.scene);
+  const Scene& s = *r->load.scene;
+  REQUIRE(s.lights.size() == 1);
+  const Light& light = s.lights[0];
+  checkVec(light.position, Vec3(1, 8, -2));
+  REQUIRE(light.projectedThrough);
+  REQUIRE(light.projectedThrough->children.size() == 1);
+  const Node& sphere = *light.projectedThrough->children[0];
+  // Its centre <0, 4, 0>, scaled to y 2, then moved by the later translate only (Lucent's z
+  // is POV-Ray's negated).
+  const Vec3 centre = Vec3(light.worldFromLight * sphere.parentFromNode *
+                           Vec4(std::get<SphereSpec>(*sphere.shape).center, 1));
+  checkVec(centre, Vec3(1, 2, 0));
+  CHECK(errorsOf("light_source { 0, 1 projected_through { sphere { 0, 1 } } projected_through { "
+                 "sphere { 0, 1 } } }\n")
+            .at(0) ==
+        "test.pov:1:59: error: only one projected_through per light_source, as POV-Ray allows");
+}
+
 TEST_CASE("scene reader: #version 3.6 keeps POV-Ray 3.6's opacity of a filtering pigment",
           "[sdl][scene]") {
   // 3.6: 1 - 0.5·max(0.2, 0.4, 0.2) = 0.8; 3.7: 1 - 0.5 = 0.5. The version in force where

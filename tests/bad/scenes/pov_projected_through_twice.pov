@@ -1,0 +1,2 @@
+sphere { 0, 1 pigment { rgb 1 } }
+light_source { <0, 5, 0> rgb 1 projected_through { sphere { 0, 0.5 } } projected_through { box { -1, 1 } } }
