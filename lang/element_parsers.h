@@ -20,6 +20,7 @@ std::unique_ptr<Node> parseLightNode(ParseContext& ctx, const SourceFile& file,
                                      pugi::xml_node element, int depth);
 // fog_parser.cpp: a <fog> (any number; all apply).
 void parseFog(ElementReader& r);
+void parseRainbow(ElementReader& r);
 
 // material_parser.cpp. A top-level <material id> is registered under its id; an inline one
 // (a child of a geometry node) is added without a name. Both return its index.

@@ -32,8 +32,8 @@ const GroupEntry* findGroup(std::string_view name) {
   return nullptr;
 }
 
-const std::vector<std::string_view> kTopLevelOnly{"render",  "camera",    "defs",
-                                                  "include", "animation", "fog"};
+const std::vector<std::string_view> kTopLevelOnly{"render",    "camera", "defs",   "include",
+                                                  "animation", "fog",    "rainbow"};
 
 // A child element that is not allowed where it stands: say where it belongs, or suggest
 // the closest allowed name.

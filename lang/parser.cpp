@@ -28,8 +28,9 @@ namespace {
 
 const std::vector<std::string_view>& topLevelElementNames() {
   static const std::vector<std::string_view> names = [] {
-    std::vector<std::string_view> n{"render",  "camera", "light", "material",  "param", "defs",
-                                    "include", "repeat", "if",    "animation", "sky",   "fog"};
+    std::vector<std::string_view> n{"render", "camera",  "light",  "material", "param",
+                                    "defs",   "include", "repeat", "if",       "animation",
+                                    "sky",    "fog",     "rainbow"};
     n.insert(n.end(), geometryElementNames().begin(), geometryElementNames().end());
     return n;
   }();
@@ -66,6 +67,7 @@ void readTopLevel(ParseContext& ctx, const TopLevelItem& item) {
   }
   if (name == "render") parseRender(r);
   else if (name == "fog") parseFog(r);
+  else if (name == "rainbow") parseRainbow(r);
   else if (name == "camera") parseCamera(r);
   else if (name == "sky") parseSky(r);
   else if (name == "defs") parseDefs(r);

@@ -447,41 +447,6 @@ void parseValueAttributes(ElementReader& r, PatternSpec& s) {
   s.noiseGenerator = static_cast<int>(r.integer("noise-generator", s.noiseGenerator, 1, 3));
 }
 
-// <color-map><entry at color/>...</color-map>: at in [0, 1], never decreasing (two
-// entries at one value make a sharp edge).
-ColorMap parseColorMap(ElementReader& r) {
-  r.checkAttributes({});
-  ColorMap map;
-  r.forEachChild([&](pugi::xml_node n) {
-    ElementReader e(r.ctx(), r.file(), n);
-    if (std::string_view(n.name()) != "entry") {
-      e.error("<color-map> holds <entry at color/> elements, not <" + std::string(n.name()) + ">");
-      return;
-    }
-    e.checkAttributes({"at", "color", "filter", "transmit"});
-    if (!e.has("at") || !e.has("color")) {
-      e.error("<entry> needs 'at' (a value from 0 to 1) and 'color'");
-      return;
-    }
-    ColorMapEntry entry;
-    entry.at = e.number("at", 0.0, NumberRule::between(0.0, 1.0, "a number from 0 to 1"));
-    entry.color = e.color("color", entry.color);
-    entry.ft = parseFilterTransmit(e, "");
-    noChildren(e);
-    if (!map.entries.empty() && entry.at < map.entries.back().at) {
-      e.attrError("at",
-                  "the entries of a <color-map> go in increasing order of 'at'; this one is below "
-                  "the one before (" +
-                      formatNumber(map.entries.back().at) + ")");
-      return;
-    }
-    map.entries.push_back(entry);
-  });
-  if (map.entries.empty() && !r.failed())
-    r.error("<color-map> needs at least one <entry at color/>");
-  return map;
-}
-
 // A <pigment> child: pigment-pattern's pigment, once; an error on any other type.
 void parsePigmentChild(ElementReader& r, ElementReader& c, PatternSpec& s,
                        std::optional<SourceLoc>& pigmentLoc) {
@@ -845,6 +810,41 @@ BumpMapSpec parseBumpMap(ElementReader& r) {
   b.keepFacingAway = r.boolean("keep-facing-away", b.keepFacingAway);
   noChildrenButWarps(r, b.projection);
   return b;
+}
+
+// <color-map><entry at color/>...</color-map>: at in [0, 1], never decreasing (two
+// entries at one value make a sharp edge).
+ColorMap parseColorMap(ElementReader& r) {
+  r.checkAttributes({});
+  ColorMap map;
+  r.forEachChild([&](pugi::xml_node n) {
+    ElementReader e(r.ctx(), r.file(), n);
+    if (std::string_view(n.name()) != "entry") {
+      e.error("<color-map> holds <entry at color/> elements, not <" + std::string(n.name()) + ">");
+      return;
+    }
+    e.checkAttributes({"at", "color", "filter", "transmit"});
+    if (!e.has("at") || !e.has("color")) {
+      e.error("<entry> needs 'at' (a value from 0 to 1) and 'color'");
+      return;
+    }
+    ColorMapEntry entry;
+    entry.at = e.number("at", 0.0, NumberRule::between(0.0, 1.0, "a number from 0 to 1"));
+    entry.color = e.color("color", entry.color);
+    entry.ft = parseFilterTransmit(e, "");
+    noChildren(e);
+    if (!map.entries.empty() && entry.at < map.entries.back().at) {
+      e.attrError("at",
+                  "the entries of a <color-map> go in increasing order of 'at'; this one is below "
+                  "the one before (" +
+                      formatNumber(map.entries.back().at) + ")");
+      return;
+    }
+    map.entries.push_back(entry);
+  });
+  if (map.entries.empty() && !r.failed())
+    r.error("<color-map> needs at least one <entry at color/>");
+  return map;
 }
 
 }  // namespace lucent

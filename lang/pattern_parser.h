@@ -27,6 +27,8 @@ PatternPlacement parsePlacement(ElementReader& r);
 // A colour's filter and transmit from the attributes "filter" + n and "transmit" + n (any
 // number each, default 0).
 FilterTransmit parseFilterTransmit(ElementReader& r, const std::string& n);
+// <color-map><entry at color filter transmit/>...</color-map>.
+ColorMap parseColorMap(ElementReader& r);
 
 const std::vector<std::string_view>& placementAttributes();
 

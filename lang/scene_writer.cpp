@@ -115,6 +115,7 @@ class SceneWriter {
     writeSettings();
     for (const Camera& c : scene_.cameras) writeCamera(c);
     writeFog();
+    writeRainbows();
     writeSky();
     countMaterials();
     writeSharedMaterials();
@@ -257,6 +258,20 @@ class SceneWriter {
       }
       out_.source(f.loc);
       out_.open("fog", a, true);
+    }
+  }
+
+  void writeRainbows() {
+    for (const Rainbow& r : scene_.rainbows) {
+      const Attributes a{
+          {"direction", xmlVector(r.direction)}, {"up", xmlVector(r.up)},
+          {"angle", xmlNumber(r.angle)},         {"width", xmlNumber(r.width)},
+          {"distance", xmlNumber(r.distance)},   {"jitter", xmlNumber(r.jitter)},
+          {"arc-angle", xmlNumber(r.arcAngle)},  {"falloff-angle", xmlNumber(r.falloffAngle)}};
+      out_.source(r.loc);
+      out_.open("rainbow", a, false);
+      writeColorMap(r.map, out_);
+      out_.close("rainbow");
     }
   }
 

@@ -503,14 +503,18 @@ void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& 
   writePatternPigment(t.pattern, loc, out, folder);
   writePigmentFunctions(t.pattern, loc, out);
   if (t.map.entries.empty()) return out.close("pattern");
+  writeColorMap(t.map, out);
+  out.close("pattern");
+}
+
+void writeColorMap(const ColorMap& map, XmlOut& out) {
   out.open("color-map", {}, false);
-  for (const ColorMapEntry& e : t.map.entries) {
+  for (const ColorMapEntry& e : map.entries) {
     Attributes entry{{"at", xmlNumber(e.at)}, {"color", xmlColor(e.color)}};
     addFilterTransmit(e.ft, "", entry);
     out.open("entry", entry, true);
   }
   out.close("color-map");
-  out.close("pattern");
 }
 
 Attributes materialAttributes(const Material& m, bool layer) {

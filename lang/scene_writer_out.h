@@ -47,6 +47,8 @@ void writePatternTexture(const PatternTexture& t, const SourceLoc& loc, XmlOut& 
                          const std::string& folder);
 // <pigment-function name component>TEXTURE</pigment-function>: a pigment a function calls.
 void writePigmentFunction(const PigmentFunction& f, const SourceLoc& loc, XmlOut& out);
+// <color-map> and its entries.
+void writeColorMap(const ColorMap& map, XmlOut& out);
 // <normal ...> with its children (a material's, a camera's).
 void writeNormalElement(const NormalSpec& n, const SourceLoc& loc, XmlOut& out,
                         const std::string& folder);

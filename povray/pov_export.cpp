@@ -6,6 +6,7 @@
 #include "pov_lights.h"
 #include "pov_materials.h"
 #include "pov_patterns.h"
+#include "pov_rainbow.h"
 #include "pov_runner.h"
 #include "pov_wave_sources.h"
 
@@ -98,6 +99,7 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   out.blank();
   writeSettings(r, out, issues);
   for (const Fog& fog : scene.fogs) writeFog(fog, out, issues);
+  for (const Rainbow& rainbow : scene.rainbows) writeRainbow(rainbow, out, issues);
   out.blank();
   writeCamera(*camera, r, out, issues);
   out.blank();

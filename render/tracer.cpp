@@ -6,6 +6,7 @@
 #include "map_entries.h"
 #include "optics.h"
 #include "patterns/pattern_surface.h"
+#include "rainbow.h"
 #include "sampling.h"
 #include "scenegraph/map_blend.h"
 #include "see_through.h"
@@ -68,6 +69,7 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
       lights_(world.scene().lights),
       sky_(world.scene().sky),
       fogs_(world.scene().fogs),
+      rainbows_(world.scene().rainbows),
       slots_(world.scene().materials),
       textures_(slots_.materials(), textures) {
   for (uint32_t k = 0; k < slots_.size(); ++k)
@@ -447,20 +449,36 @@ Color Tracer::escaped(const Ray& ray, const MediaStack& media) const {
   Color background = sky_ ? skyColor(*sky_, ray.d, settings_.background) : settings_.background;
   if (const Material* medium = media.top(); medium && medium->attenuates())
     background *= interiorAttenuation(*medium, kInf, false);
-  if (!fogs_.empty() && media.allHollow())
-    background = fogsAlong(fogs_, ray.o, glm::normalize(ray.d), kInf).apply(background);
+  if ((!fogs_.empty() || !rainbows_.empty()) && media.allHollow()) {
+    const Vec3 dir = glm::normalize(ray.d);
+    // The rainbows first, then the fogs, as POV-Ray applies them.
+    if (!rainbows_.empty()) background = rainbowsAlong(rainbows_, dir, kInf).apply(background);
+    if (!fogs_.empty()) background = fogsAlong(fogs_, ray.o, dir, kInf).apply(background);
+  }
   return background;
 }
 
 void Tracer::travelled(const Ray& ray, double t, const Material* leaving, const MediaStack& media,
                        Color& sum, Color& throughput) const {
-  // Fog over the stretch, if it ran outside every solid or inside hollow ones only
-  // (render/fog.h).
-  if (!fogs_.empty() && media.allHollow() && (!leaving || leaving->hollow)) {
+  // Rainbows, then fog, over the stretch, if it ran outside every solid or inside hollow
+  // ones only (render/rainbow.h, render/fog.h): the colour C beyond becomes keep·C + add.
+  if ((!fogs_.empty() || !rainbows_.empty()) && media.allHollow() &&
+      (!leaving || leaving->hollow)) {
     const double speed = glm::length(ray.d);
-    const FogEffect fog = fogsAlong(fogs_, ray.o, ray.d / speed, t * speed);
-    sum += throughput * fog.add;
-    throughput *= fog.keep;
+    const Vec3 dir = ray.d / speed;
+    Color keep(1.0f), add(0.0f);
+    if (!rainbows_.empty()) {
+      const RainbowEffect rainbow = rainbowsAlong(rainbows_, dir, t * speed);
+      keep = rainbow.keep;
+      add = rainbow.add;
+    }
+    if (!fogs_.empty()) {
+      const FogEffect fog = fogsAlong(fogs_, ray.o, dir, t * speed);
+      add = fog.keep * add + fog.add;
+      keep *= fog.keep;
+    }
+    sum += throughput * add;
+    throughput *= keep;
   }
   // The stretch lies inside the solid being left, or else in the innermost medium the
   // ray is known to be in.

@@ -194,10 +194,11 @@ class Tracer {
   bool blockedByOpaque(const Ray& ray, World::ObjectId& lastBlocker, RayStats& stats) const;
 
   const World& world_;
-  const RenderSettings settings_;    // a copy: the scene may change after the renderer is built
-  const std::vector<Light> lights_;  // a copy, as the settings
-  const std::optional<Sky> sky_;     // a copy, as the settings
-  const std::vector<Fog> fogs_;      // a copy; none: no per-ray cost but this test
+  const RenderSettings settings_;        // a copy: the scene may change after the renderer is built
+  const std::vector<Light> lights_;      // a copy, as the settings
+  const std::optional<Sky> sky_;         // a copy, as the settings
+  const std::vector<Fog> fogs_;          // a copy; none: no per-ray cost but this test
+  const std::vector<Rainbow> rainbows_;  // a copy; none: no per-ray cost but this test
   // Each light's shadow-ray targets when they are fixed (lightSamplePoint without
   // jitter), computed once: the loop over an area light's 64 samples then only reads
   // them. Empty for a jittered or oriented area light, whose targets differ per point.

@@ -7,6 +7,7 @@
 #include "light.h"
 #include "material.h"
 #include "node.h"
+#include "rainbow.h"
 #include "render_settings.h"
 #include "sky.h"
 
@@ -36,9 +37,10 @@ struct Scene {
   int frame = 1;       // which frame of the animation this scene is (1 without one)
   double clock = 0.0;  // its clock
   RenderSettings render;
-  std::vector<Camera> cameras;  // at least one
-  std::vector<Light> lights;    // in world space: what the renderer and the exporter read
-  std::vector<Fog> fogs;        // <fog>s, in scene order; all apply
+  std::vector<Camera> cameras;    // at least one
+  std::vector<Light> lights;      // in world space: what the renderer and the exporter read
+  std::vector<Fog> fogs;          // <fog>s, in scene order; all apply
+  std::vector<Rainbow> rainbows;  // <rainbow>s, in scene order; their effects averaged
   // Index 0 is the default material (diffuse 0.8) for shapes with none at all.
   std::vector<Material> materials{Material::defaultMaterial()};
   // The top-level geometry: a group with identity transform. <defs> are not under it.

@@ -1,4 +1,5 @@
-// What surrounds the objects: fog and sky_sphere (its pigments, layered).
+// What surrounds the objects: fog, rainbow and sky_sphere (its pigments, layered).
+#include "pov_space.h"
 #include "read_support.h"
 #include "scene_reader.h"
 
@@ -58,6 +59,78 @@ void SceneReader::readFog(const SourceLoc& loc, TokenStream& in) {
   }
   for (const std::string& d : imported.differences) warn(in, loc, d);
   scene_.fogs.push_back(*imported.fog);
+}
+
+// `rainbow { ... }`, checked as POV-Ray's Parse_Rainbow checks it. The angles stay in
+// degrees as written (Lucent's <rainbow> takes them so); direction and up are carried into
+// Lucent's space.
+void SceneReader::readRainbow(const SourceLoc& loc, TokenStream& in) {
+  Rainbow rainbow;
+  rainbow.loc = loc;
+  Vec3 direction(0.0), up(0.0, 1.0, 0.0);
+  std::optional<double> arc, falloff;
+  std::vector<PovColorMapEntry> map;
+  double width = 0.0;
+  in.expect("{");
+  for (;;) {
+    const Token t = in.next();
+    if (t.is("}")) break;
+    const std::string_view w = t.kind == TokenKind::Keyword ? t.text() : "";
+    if (w == "angle") {
+      rainbow.angle = in.parseFloat();
+    } else if (w == "width") {
+      width = in.parseFloat();
+    } else if (w == "distance") {
+      rainbow.distance = in.parseFloat();
+    } else if (w == "jitter") {
+      rainbow.jitter = in.parseFloat();
+    } else if (w == "direction") {
+      direction = toVec3(in.parseVector());
+    } else if (w == "up") {
+      up = toVec3(in.parseVector());
+    } else if (w == "arc_angle" || w == "falloff_angle") {
+      const double a = in.parseFloat();
+      if (!(a >= 0.0 && a <= 360.0))
+        in.error(t, "illegal " + std::string(w) + " in rainbow: use a value from 0 to 360 degrees");
+      (w == "arc_angle" ? arc : falloff) = a;
+    } else if (w == "color_map" || w == "colour_map") {
+      SourceLoc mapLoc = t.loc();
+      map = readColorMap(in, mapLoc);
+    } else {
+      unreadInBlock(t, in);
+      return;
+    }
+  }
+  // POV-Ray's arc angle without arc_angle is 180 radians (its default is not converted
+  // from degrees): the whole ring, and with falloff_angle alone a fade below 0.001, which
+  // 360 degrees and no fade stand for.
+  rainbow.arcAngle = arc.value_or(360.0);
+  rainbow.falloffAngle = arc ? falloff.value_or(*arc) : rainbow.arcAngle;
+  if (rainbow.arcAngle < rainbow.falloffAngle)
+    in.error(loc, "arc angle is smaller than falloff angle in rainbow");
+  if (!(glm::length(direction) > 1e-5)) in.error(loc, "rainbow's direction vector is zero");
+  if (!(glm::length(up) > 1e-5)) in.error(loc, "rainbow's up vector is zero");
+  if (std::abs(1.0 - std::abs(glm::dot(glm::normalize(direction), glm::normalize(up)))) < 1e-10)
+    in.error(loc, "rainbow's up and direction vector are co-linear");
+  // POV-Ray draws nothing of a rainbow without a colour map, a width or a distance.
+  if (map.empty() || width == 0.0 || rainbow.distance == 0.0) {
+    warn(in, loc,
+         "this rainbow draws nothing (it needs a colour map, a width and a distance), as in "
+         "POV-Ray");
+    return;
+  }
+  if (width < 0.0 || rainbow.distance < 0.0) {
+    keepError(in, loc, "a rainbow's width and distance must be positive for Lucent's <rainbow>");
+    return;
+  }
+  rainbow.width = width;
+  rainbow.jitter = std::max(rainbow.jitter, 0.0);  // POV-Ray jitters only by a positive amount
+  rainbow.direction = lucentFromPov(direction);
+  rainbow.up = lucentFromPov(up);
+  rainbow.setFrame();
+  for (const PovColorMapEntry& e : unitMap(ascendingMap(map)))
+    rainbow.map.entries.push_back({e.at, e.color, {e.filter, e.transmit}});
+  scene_.rainbows.push_back(rainbow);
 }
 
 PovSkySphere SceneReader::readSkySphereBlock(const SourceLoc& loc, TokenStream& in) {

@@ -27,7 +27,6 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
       {"media", "participating media; the nearest Lucent feature is <fog>"},
       {"radiosity", "global illumination; ambient_light stands in for it"},
       {"photons", "photon mapping of caustics"},
-      {"rainbow", "rainbows"},
       {"subsurface", "subsurface light transport"},
       {"caustics", "faked caustics"},
       {"dispersion", "dispersion"},
@@ -271,6 +270,8 @@ void SceneReader::readScene(TokenStream& in) {
       readBackground(in);
     } else if (isWord(t, "fog")) {
       readFog(t.loc(), in);
+    } else if (isWord(t, "rainbow")) {
+      readRainbow(t.loc(), in);
     } else if (isWord(t, "sky_sphere")) {
       readSkySphere(t.loc(), in);
     } else if (isObjectKeyword(t)) {

@@ -424,6 +424,7 @@ class SceneReader : public ItemReader {
 
   // read_atmosphere.cpp
   void readFog(const SourceLoc& loc, TokenStream& in);
+  void readRainbow(const SourceLoc& loc, TokenStream& in);
   void readSkySphere(const SourceLoc& loc, TokenStream& in);
   // `{ [Identifier] pigment {...}... transforms }` after `sky_sphere`.
   PovSkySphere readSkySphereBlock(const SourceLoc& loc, TokenStream& in);

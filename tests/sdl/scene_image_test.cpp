@@ -184,6 +184,10 @@ TEST_CASE("scene reader image: lights projected through objects",
   requireSameImageAsPovray("projected_through.pov", 240, 180);
 }
 
+TEST_CASE("scene reader image: rainbows", "[sdl][scene][image][povray][rainbow]") {
+  requireSameImageAsPovray("rainbow.pov", 240, 180);
+}
+
 TEST_CASE("scene reader image: blob components with textures of their own, and ovuses",
           "[sdl][scene][image][povray][blob][ovus]") {
   requireSameImageAsPovray("blob_component_textures.pov", 240, 180);

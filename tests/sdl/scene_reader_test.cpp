@@ -328,7 +328,7 @@ TEST_CASE("scene reader: every unsupported feature is listed at its place",
   const auto errors = errorsOf(R"(global_settings { radiosity { count 100 } }
 sphere { 0, 1 hollow interior { media { emission 1 } } }
 sphere { 0, 1 photons { target } no_image }
-rainbow { angle 42 }
+sphere { 0, 1 interior { caustics 1 } }
 )");
   REQUIRE(errors.size() == 4);  // no_image is read (tests/sdl/visibility_reader_test.cpp)
   CHECK(errors[0] ==
@@ -339,7 +339,8 @@ rainbow { angle 42 }
         "nearest Lucent feature is <fog>)");
   CHECK(errors[2] ==
         "test.pov:3:15: error: 'photons' is not supported by Lucent (photon mapping of caustics)");
-  CHECK(errors[3] == "test.pov:4:1: error: 'rainbow' is not supported by Lucent (rainbows)");
+  CHECK(errors[3] ==
+        "test.pov:4:26: error: 'caustics' is not supported by Lucent (faked caustics)");
 }
 
 TEST_CASE("scene reader: what is not read yet, and syntax errors, at their place",
