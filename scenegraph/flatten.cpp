@@ -349,9 +349,23 @@ struct Builder {
   }
 };
 
+// Where a light's projected-through objects stand; throws when its frame is flat.
+Transform projectionWorld(const Light& light) {
+  const std::optional<Transform> world = Transform::fromMatrix(light.worldFromLight);
+  if (!world)
+    throw LocatedError(light.loc,
+                       "the transforms down to this light flatten its projected-through objects");
+  return *world;
+}
+
 }  // namespace
 
-void checkWorld(const Scene& scene) { checkNode(*scene.root, Transform()); }
+// The nodes, then the lights' projected-through objects where buildProjection puts them.
+void checkWorld(const Scene& scene) {
+  checkNode(*scene.root, Transform());
+  for (const Light& light : scene.lights)
+    if (light.projectedThrough) checkNode(*light.projectedThrough, projectionWorld(light));
+}
 
 std::unique_ptr<Shape> buildSolid(const Scene& scene, const Node& node,
                                   const ShapeMaker& makeShape) {
@@ -378,16 +392,12 @@ std::unique_ptr<Shape> buildSolid(const Scene& scene, const Node& node,
 std::unique_ptr<Shape> buildProjection(const Scene& scene, const Light& light,
                                        const ShapeMaker& makeShape) {
   if (!light.projectedThrough) return nullptr;
-  const std::optional<Transform> world = Transform::fromMatrix(light.worldFromLight);
-  if (!world)
-    throw LocatedError(light.loc,
-                       "the transforms down to this light flatten its projected-through "
-                       "objects");
+  const Transform world = projectionWorld(light);
   std::vector<WorldLeaf> leaves;  // never looked up: only intersect() is asked
   Builder b{scene, makeShape, true, {}, leaves};
   std::vector<Part> parts;
   // As an operand of a solid: one union, never split by shadow flags.
-  b.add(*light.projectedThrough, *world, Inherited{}, Seen{}, true, parts);
+  b.add(*light.projectedThrough, world, Inherited{}, Seen{}, true, parts);
   if (parts.empty()) return nullptr;
   if (parts.size() == 1) return std::move(parts.front().shape);
   return compose(CsgOp::Union, std::move(parts), Seen{}).shape;

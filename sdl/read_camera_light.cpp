@@ -113,6 +113,15 @@ PovCamera SceneReader::readCamera(TokenStream& in) {
 }
 
 PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
+  // The `{ OBJECT` that opens looks_like or projected_through (`keyword`): an object or a
+  // declared one, not a light.
+  auto lightsObject = [&](std::string_view keyword) {
+    in.expect("{");
+    const Token o = in.next();
+    if (isObjectKeyword(o)) return readObject(o, in);
+    if (const auto* item = use<ObjectItem>(o, in); item && !item->object.light) return item->object;
+    in.error(o, "an object expected in " + std::string(keyword) + ", not " + o.describe());
+  };
   PovLight l;
   l.loc = loc;
   in.expect("{");
@@ -180,13 +189,7 @@ PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
       // POV-Ray moves the object to the light's centre, then applies the modifiers
       // written after it, and draws it with no_shadow (its light shines through it).
       if (l.looksLike) in.error(t, "only one looks_like per light_source, as POV-Ray allows");
-      in.expect("{");
-      const Token o = in.next();
-      PovObject object;
-      if (isObjectKeyword(o)) object = readObject(o, in);
-      else if (const auto* item = use<ObjectItem>(o, in); item && !item->object.light)
-        object = item->object;
-      else in.error(o, "an object expected in looks_like, not " + o.describe());
+      PovObject object = lightsObject(w);
       object.transform =
           object.transform.then(PovTransform::translation(l.transform.point(l.location)));
       readObjectModifiers(object, in);
@@ -199,13 +202,7 @@ PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {
       // interior with a warning each.
       if (l.projectedThrough)
         in.error(t, "only one projected_through per light_source, as POV-Ray allows");
-      in.expect("{");
-      const Token o = in.next();
-      PovObject object;
-      if (isObjectKeyword(o)) object = readObject(o, in);
-      else if (const auto* item = use<ObjectItem>(o, in); item && !item->object.light)
-        object = item->object;
-      else in.error(o, "an object expected in projected_through, not " + o.describe());
+      PovObject object = lightsObject(w);
       readObjectModifiers(object, in);
       if (object.texture) {
         warn(in, t.loc(),

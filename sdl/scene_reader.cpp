@@ -38,6 +38,14 @@ const std::map<std::string_view, std::string_view>& unsupportedFeatures() {
   return features;
 }
 
+// A light's looks_like or projected_through object moved on by the light's transforms after
+// it (`light`: all of them).
+PovObject placedWithLight(const PovLooksLike& held, const PovTransform& light) {
+  PovObject o = held.object;
+  o.transform = o.transform.then(held.lightAt.inverse()).then(light);
+  return o;
+}
+
 }  // namespace
 
 void SceneReader::keepError(TokenStream& in, const SourceLoc& at, const std::string& message) {
@@ -578,9 +586,7 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     if (light.projectedThrough) {
       // projected_through: its object moved on by the light's transforms written after it,
       // in the light node's frame (the parent's: the light's transforms are in its place).
-      PovObject object = light.projectedThrough->object;
-      object.transform =
-          object.transform.then(light.projectedThrough->lightAt.inverse()).then(light.transform);
+      const PovObject object = placedWithLight(*light.projectedThrough, light.transform);
       auto group = std::make_shared<Node>();
       group->kind = NodeKind::Group;
       group->element = "projected_through";
@@ -592,9 +598,7 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     if (!light.looksLike) return n;
     // looks_like: the light and its object in a union, the object moved on by the light's
     // transforms written after looks_like.
-    PovObject shape = light.looksLike->object;
-    shape.transform =
-        shape.transform.then(light.looksLike->lightAt.inverse()).then(light.transform);
+    const PovObject shape = placedWithLight(*light.looksLike, light.transform);
     auto both = std::make_unique<Node>();
     both->kind = NodeKind::Union;
     both->element = "light_source";

@@ -35,15 +35,19 @@ float litAt(const Scene& scene, double x) {
 const std::string kSlide =
     "<projected-through><sphere center=\"0 0 50\" radius=\"0.1\"/></projected-through>";
 
+// A light at (0, 0, 100) through kSlide's ball: the centre's shadow ray runs along the axis,
+// through the ball, fully lit; from (0.5, 0, 0.75) the ray to the light passes z = 50 at
+// x = 0.25, beside it: dark.
+void checkThroughTheBall(const Scene& s) {
+  CHECK(litAt(s, 0.0) == Approx(1.0f).margin(1e-6));
+  CHECK(litAt(s, 0.5) == 0.0f);
+}
+
 }  // namespace
 
 TEST_CASE("a projected-through light reaches only the points whose rays meet its objects",
           "[render][projected-through]") {
-  auto s = sceneOf("<light position=\"0 0 100\">" + kSlide + "</light>");
-  // The centre's shadow ray runs along the axis, through the small ball: fully lit.
-  CHECK(litAt(*s, 0.0) == Approx(1.0f).margin(1e-6));
-  // From (0.5, 0, 0.75) the ray to the light passes z = 50 at x = 0.25, beside it: dark.
-  CHECK(litAt(*s, 0.5) == 0.0f);
+  checkThroughTheBall(*sceneOf("<light position=\"0 0 100\">" + kSlide + "</light>"));
   // Without the objects the same point is lit: N·L there.
   auto plain = sceneOf("<light position=\"0 0 100\"/>");
   CHECK(litAt(*plain, 0.5) == Approx(0.82867f).epsilon(1e-4));
@@ -75,15 +79,13 @@ TEST_CASE("projected-through objects stand in the light's frame and move with it
   auto moved = sceneOf(
       "<light position=\"0 0 50\" transform=\"translate(0 0 50)\"><projected-through><sphere "
       "radius=\"0.1\"/></projected-through></light>");
-  CHECK(litAt(*moved, 0.0) == Approx(1.0f).margin(1e-6));
-  CHECK(litAt(*moved, 0.5) == 0.0f);
+  checkThroughTheBall(*moved);
   // A <use> of a group holding the light places both.
   auto used = sceneOf(
       "<defs><group id=\"lamp\"><light position=\"0 0 50\"><projected-through><sphere "
       "radius=\"0.1\"/></projected-through></light></group></defs>"
       "<use ref=\"lamp\" transform=\"translate(0 0 50)\"/>");
-  CHECK(litAt(*used, 0.0) == Approx(1.0f).margin(1e-6));
-  CHECK(litAt(*used, 0.5) == 0.0f);
+  checkThroughTheBall(*used);
 }
 
 TEST_CASE("each sample ray of an area light asks the projected-through objects for itself",
