@@ -33,7 +33,7 @@ RainbowEffect rainbowsAlong(const std::vector<Rainbow>& rainbows, const Vec3& di
     double y = glm::dot(dir, r.upAxis);
     const double l = x * x + y * y;
     if (l > 0.0) y /= std::sqrt(l);
-    const double around = std::abs(std::acos(std::clamp(y, -1.0, 1.0)));
+    const double around = std::acos(std::clamp(y, -1.0, 1.0));
     const double arc = r.arcAngle * kPi / 360.0, falloff = r.falloffAngle * kPi / 360.0;
     if (around > arc) continue;
     const double toCentre = glm::dot(dir, r.axis);

@@ -188,15 +188,20 @@ struct Builder {
     std::vector<std::unique_ptr<Shape>> shapes;
     // Nothing lights a clip's leaves: its groups are not numbered.
     const uint32_t groupsBefore = lightGroups;
-    for (const auto& n : nodes) {
-      std::vector<Part> parts;
-      add(*n, world, Inherited{}, Seen{}, true, parts);
-      if (parts.empty()) continue;
-      shapes.push_back(parts.size() == 1 ? std::move(parts.front().shape)
-                                         : compose(CsgOp::Union, std::move(parts), Seen{}).shape);
-    }
+    for (const auto& n : nodes)
+      if (auto shape = oneShape(*n, world)) shapes.push_back(std::move(shape));
     lightGroups = groupsBefore;
     return shapes;
+  }
+
+  // The node's geometry below `world` as one shape, as an operand of a solid (one union of
+  // its parts when it has several, never split by shadow flags); null when it has none.
+  std::unique_ptr<Shape> oneShape(const Node& node, const Transform& world) {
+    std::vector<Part> parts;
+    add(node, world, Inherited{}, Seen{}, true, parts);
+    if (parts.empty()) return nullptr;
+    if (parts.size() == 1) return std::move(parts.front().shape);
+    return compose(CsgOp::Union, std::move(parts), Seen{}).shape;
   }
 
   // The node's shape. A shape's own constructor refuses degenerate parameters (a cylinder
@@ -381,12 +386,7 @@ std::unique_ptr<Shape> buildSolid(const Scene& scene, const Node& node,
   };
   std::vector<WorldLeaf> leaves;  // never looked up: only inside() is asked
   Builder b{scene, closedBoxes, true, {}, leaves};
-  std::vector<Part> parts;
-  // As an operand of a solid: one union, never split by shadow flags.
-  b.add(node, Transform(), Inherited{}, Seen{}, true, parts);
-  if (parts.empty()) return nullptr;
-  if (parts.size() == 1) return std::move(parts.front().shape);
-  return compose(CsgOp::Union, std::move(parts), Seen{}).shape;
+  return b.oneShape(node, Transform());
 }
 
 std::unique_ptr<Shape> buildProjection(const Scene& scene, const Light& light,
@@ -395,12 +395,7 @@ std::unique_ptr<Shape> buildProjection(const Scene& scene, const Light& light,
   const Transform world = projectionWorld(light);
   std::vector<WorldLeaf> leaves;  // never looked up: only intersect() is asked
   Builder b{scene, makeShape, true, {}, leaves};
-  std::vector<Part> parts;
-  // As an operand of a solid: one union, never split by shadow flags.
-  b.add(*light.projectedThrough, world, Inherited{}, Seen{}, true, parts);
-  if (parts.empty()) return nullptr;
-  if (parts.size() == 1) return std::move(parts.front().shape);
-  return compose(CsgOp::Union, std::move(parts), Seen{}).shape;
+  return b.oneShape(*light.projectedThrough, world);
 }
 
 FlatScene flattenScene(const Scene& scene, const ShapeMaker& makeShape) {
