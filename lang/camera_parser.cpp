@@ -55,6 +55,32 @@ void readName(ElementReader& r, Camera& cam) {
   else cam.name = *name;
 }
 
+// <focal-blur>: POV-Ray's focal blur (render/focal_blur.h).
+Camera::FocalBlur parseFocalBlur(ElementReader& r) {
+  Camera::FocalBlur blur;
+  blur.loc = r.loc();
+  r.checkAttributes(
+      {"aperture", "focal-point", "samples", "min-samples", "confidence", "variance"});
+  if (!r.has("aperture"))
+    r.error("<focal-blur> needs 'aperture', the lens disc's diameter (world units)");
+  blur.aperture = r.number("aperture", 1.0, NumberRule::positive());
+  if (r.has("focal-point")) blur.focalPoint = r.vector("focal-point", Vec3(0.0));
+  blur.samples =
+      static_cast<int>(r.integer("samples", blur.samples, 1, Camera::kMaxFocalBlurSamples));
+  blur.minSamples =
+      static_cast<int>(r.integer("min-samples", blur.minSamples, 0, Camera::kMaxFocalBlurSamples));
+  if (blur.minSamples > blur.samples)
+    r.attrError("min-samples", "'min-samples' (" + std::to_string(blur.minSamples) +
+                                   ") must not exceed 'samples' (" + std::to_string(blur.samples) +
+                                   ")");
+  blur.confidence = r.number(
+      "confidence", blur.confidence,
+      NumberRule::between(0.0, 1.0, "a number between 0 and 1 (both excluded)", true, true));
+  blur.variance =
+      r.number("variance", blur.variance, NumberRule::between(0.0, 1.0, "a number from 0 to 1"));
+  return blur;
+}
+
 }  // namespace
 
 void parseCamera(ElementReader& r) {
@@ -75,22 +101,33 @@ void parseCamera(ElementReader& r) {
   }
   checkCamera(cam, in);
 
-  // <normal>: POV-Ray's camera normal, which bends the primary rays (render/camera_normal.h).
-  std::optional<SourceLoc> normalLoc;
+  // <normal>: POV-Ray's camera normal, which bends the primary rays (render/camera_normal.h);
+  // <focal-blur>: POV-Ray's focal blur (render/focal_blur.h). One of each at most.
+  std::optional<SourceLoc> normalLoc, blurLoc;
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader child(ctx, r.file(), n);
-    if (std::string_view(n.name()) != "normal") {
-      child.error("<camera> takes one <normal> child at most (POV-Ray's camera normal), got <" +
-                  std::string(n.name()) + ">");
-    } else if (normalLoc) {
+    const std::string_view name = n.name();
+    if (name != "normal" && name != "focal-blur") {
+      child.error("<camera> takes a <normal> (POV-Ray's camera normal) and a <focal-blur>, got <" +
+                  std::string(name) + ">");
+    } else if (name == "normal" && normalLoc) {
       child.error("<camera> holds one <normal> at most; the first is at " + normalLoc->str());
-    } else {
+    } else if (name == "focal-blur" && blurLoc) {
+      child.error("<camera> holds one <focal-blur> at most; the first is at " + blurLoc->str());
+    } else if (name == "normal") {
       normalLoc = child.loc();
       cam.normal = parseNormal(child);
       if (cam.normal->bendInWorld)
         child.attrError("bend-space",
                         "bend-space is for a material's normal: a camera's normal bends the "
                         "ray's direction");
+    } else {
+      blurLoc = child.loc();
+      if (cam.type == CameraType::ThinLens)
+        child.error(
+            "a thin-lens camera has its own lens (focal-length, f-stop, focus-distance): "
+            "<focal-blur> is for the other camera types");
+      cam.focalBlur = parseFocalBlur(child);
     }
   });
   ctx.scene.cameras.push_back(std::move(cam));

@@ -199,11 +199,23 @@ class SceneWriter {
       for (auto& kv : probed(c, plain, attr.read, c.loc, "camera", false)) a.push_back(kv);
     }
     out_.source(c.loc);
-    out_.open("camera", a, !c.normal);
-    if (c.normal) {
-      writeNormalElement(*c.normal, c.loc, out_, opt_.folder);
-      out_.close("camera");
-    }
+    out_.open("camera", a, !c.normal && !c.focalBlur);
+    if (c.normal) writeNormalElement(*c.normal, c.loc, out_, opt_.folder);
+    if (c.focalBlur) writeFocalBlur(*c.focalBlur);
+    if (c.normal || c.focalBlur) out_.close("camera");
+  }
+
+  void writeFocalBlur(const Camera::FocalBlur& b) {
+    const Camera::FocalBlur plain;
+    Attributes a{{"aperture", xmlNumber(b.aperture)}};
+    if (b.focalPoint) a.emplace_back("focal-point", xmlVector(*b.focalPoint));
+    if (b.samples != plain.samples) a.emplace_back("samples", std::to_string(b.samples));
+    if (b.minSamples != plain.minSamples)
+      a.emplace_back("min-samples", std::to_string(b.minSamples));
+    if (b.confidence != plain.confidence) a.emplace_back("confidence", xmlNumber(b.confidence));
+    if (b.variance != plain.variance) a.emplace_back("variance", xmlNumber(b.variance));
+    out_.source(b.loc);
+    out_.open("focal-blur", a, true);
   }
 
   Attributes lightAttributesOf(const Light& l) {

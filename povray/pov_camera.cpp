@@ -68,12 +68,50 @@ std::string exportableTypes() {
   return list;
 }
 
+// POV-Ray's focal blur: aperture twice the lens disc's diameter (POV-Ray's lens points lie
+// within a quarter of its aperture from the centre), the focus given as a point on the view
+// axis at POV-Ray's focal distance, |focal_point − location|, along `direction`. `normal`
+// is the image plane's (forward when it is a rectangle).
+void writeFocalBlur(const Camera& camera, const PovCameraFrame& frame, const Vec3& forward,
+                    const Vec3& normal, PovWriter& out, PovIssues& issues) {
+  const Camera::FocalBlur& blur = *camera.focalBlur;
+  const Vec3 focal = Vec3(camera.transform * Vec4(blur.focalPoint.value_or(camera.lookAt), 1.0));
+  const Vec3 toFocal = focal - frame.location;
+  double distance = glm::length(toFocal);
+  if (camera.type == CameraType::Pinhole || camera.type == CameraType::Orthographic)
+    distance = glm::dot(toFocal, normal) / glm::dot(forward, normal);
+  else if (camera.type == CameraType::Panoramic || camera.type == CameraType::UltraWideAngle ||
+           camera.type == CameraType::Cylinder)
+    issues.warning(blur.loc,
+                   fmt::format("focal blur on a {} camera: POV-Ray focuses its rays on another "
+                               "surface than Lucent's sphere (its ray directions are not unit)",
+                               cameraTypeName(camera.type)));
+  if (camera.type == CameraType::Orthographic ||
+      (camera.type == CameraType::Cylinder && camera.cylinderType >= 3))
+    issues.warning(blur.loc,
+                   fmt::format("focal blur on a {} camera: POV-Ray 3.7.0 starts every ray at the "
+                               "location (plus the lens offset), so its image is a blur of what "
+                               "the centre sees",
+                               cameraTypeName(camera.type)));
+  if (!(distance > 0.0)) {
+    issues.error(blur.loc, "focal blur: the focal point is not in front of the camera");
+    return;
+  }
+  out.line("aperture " + povNumber(2.0 * blur.aperture));
+  out.line("blur_samples " + (blur.minSamples > 0 ? std::to_string(blur.minSamples) + ", " : "") +
+           std::to_string(blur.samples));
+  out.line("confidence " + povNumber(blur.confidence));
+  out.line("variance " + povNumber(blur.variance));
+  out.line("focal_point " + povVector(frame.location + distance * forward));
+}
+
 // A camera whose image-plane is not a rectangle: POV-Ray's direction, right and up as
 // world vectors, without look_at (which would make them perpendicular). POV-Ray's rays,
 // direction + x·right + y·up (orthographic: from location + x·right + y·up), are the
 // renderer's: its frame is forward, right = forward × sky (mirrored if asked), up =
 // right × forward.
-void writeImagePlane(const Camera& camera, const PovCameraFrame& frame, PovWriter& out) {
+void writeImagePlane(const Camera& camera, const PovCameraFrame& frame, PovWriter& out,
+                     PovIssues& issues) {
   const Vec3 forward = glm::normalize(frame.lookAt - frame.location);
   Vec3 right = glm::normalize(glm::cross(forward, frame.sky));
   const Vec3 up = glm::cross(right, forward);
@@ -85,6 +123,10 @@ void writeImagePlane(const Camera& camera, const PovCameraFrame& frame, PovWrite
   out.line("direction " + povVector(forward));
   out.line("right " + povVector(world(camera.imagePlane->right)));
   out.line("up " + povVector(world(camera.imagePlane->up)));
+  if (camera.focalBlur)
+    writeFocalBlur(camera, frame, forward,
+                   glm::cross(world(camera.imagePlane->right), world(camera.imagePlane->up)), out,
+                   issues);
   if (camera.normal) writeNormal(*camera.normal, out);
   out.close();
 }
@@ -113,7 +155,7 @@ void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& 
     return;
   }
   if (camera.imagePlane) {
-    writeImagePlane(camera, frame, out);
+    writeImagePlane(camera, frame, out, issues);
     return;
   }
   CameraLines lines(camera, render, issues);
@@ -126,6 +168,10 @@ void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& 
   out.line("location " + povVector(frame.location));
   out.line("sky " + povVector(type.pov.reversedSky ? -frame.sky : frame.sky));
   out.line("look_at " + povVector(frame.lookAt));
+  if (camera.focalBlur) {
+    const Vec3 forward = glm::normalize(frame.lookAt - frame.location);
+    writeFocalBlur(camera, frame, forward, forward, out, issues);
+  }
   // Lucent's coordinates are written unchanged and POV-Ray's image point is Lucent's, so the
   // normal bends the same rays the same way.
   if (camera.normal) writeNormal(*camera.normal, out);

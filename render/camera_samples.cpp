@@ -7,19 +7,38 @@
 namespace lucent {
 
 CameraSamples::CameraSamples(const Projection& projection, const Tracer& tracer, Color background,
-                             int samples)
+                             int samples, const Camera::FocalBlur* focalBlur)
     : projection_(projection),
       tracer_(tracer),
       cameraMedia_(tracer.mediaAt(projection.frame().origin)),
       background_(background),
-      samples_(std::max(1, samples)) {}
+      samples_(std::max(1, samples)) {
+  if (focalBlur) focalBlur_.emplace(*focalBlur);
+}
+
+Color CameraSamples::trace(const Vec2& film, const Vec2& lens, uint32_t x, uint32_t y,
+                           uint32_t sample, TraceContext& context) const {
+  Ray ray;
+  if (!projection_.generateRay(film, lens, ray)) return background_;
+  PathSeed seed{x, y, sample, 0};
+  return tracer_.traceCamera(ray, cameraMedia_, seed, context);
+}
+
+Color CameraSamples::sampleAt(const Vec2& film, const Vec2& lens, uint32_t x, uint32_t y,
+                              uint32_t sample, TraceContext& context) const {
+  if (!focalBlur_) return trace(film, lens, x, y, sample, context);
+  // The lens rays of one sample share its seed; each ray's own paths are told apart by
+  // its index.
+  const uint64_t seed = mixBits((uint64_t(x) << 32 | y) ^ mixBits(sample));
+  return focalBlur_->average(film, seed, [&](const Vec2& f, const Vec2& l, int index) {
+    return trace(f, l, x, y, sample ^ (static_cast<uint32_t>(index + 1) * 0x9e3779b9u), context);
+  });
+}
 
 Color CameraSamples::sample(int x, int y, int k, int count, TraceContext& context) const {
   Vec2 film = Vec2(x, y) + pixelSampleOffset(k, count);
-  Ray ray;
-  if (!projection_.generateRay(film, lensSample(x, y, k, count), ray)) return background_;
-  PathSeed seed{static_cast<uint32_t>(x), static_cast<uint32_t>(y), static_cast<uint32_t>(k), 0};
-  return tracer_.traceCamera(ray, cameraMedia_, seed, context);
+  return sampleAt(film, lensSample(x, y, k, count), static_cast<uint32_t>(x),
+                  static_cast<uint32_t>(y), static_cast<uint32_t>(k), context);
 }
 
 Color CameraSamples::pixel(int x, int y, TraceContext& context) const {
@@ -30,13 +49,10 @@ Color CameraSamples::pixel(int x, int y, TraceContext& context) const {
 
 Color CameraSamples::latticeSample(int fx, int fy, int step, TraceContext& context) const {
   const Vec2 film = Vec2(fx, fy) / static_cast<double>(step);
-  Ray ray;
-  // The lens centre, as one sample per pixel takes: a lattice point is one sample.
-  if (!projection_.generateRay(film, Vec2(0.5, 0.5), ray)) return background_;
-  // Seeded by the lattice point alone, so a sample traced by two tiles is the same sample.
-  PathSeed seed{static_cast<uint32_t>(fx), static_cast<uint32_t>(fy),
-                0x80000000u | static_cast<uint32_t>(step), 0};
-  return tracer_.traceCamera(ray, cameraMedia_, seed, context);
+  // The lens centre, as one sample per pixel takes: a lattice point is one sample. Seeded
+  // by the lattice point alone, so a sample traced by two tiles is the same sample.
+  return sampleAt(film, Vec2(0.5, 0.5), static_cast<uint32_t>(fx), static_cast<uint32_t>(fy),
+                  0x80000000u | static_cast<uint32_t>(step), context);
 }
 
 }  // namespace lucent

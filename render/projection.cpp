@@ -5,6 +5,7 @@
 #include "cylinder_camera.h"
 #include "fibonacci.h"
 #include "fisheye.h"
+#include "focal_blur.h"
 #include "lenslet.h"
 #include "octahedral.h"
 #include "omnimax.h"
@@ -100,6 +101,8 @@ std::unique_ptr<Projection> makeProjection(const Camera& camera, int width, int 
   if (width <= 0 || height <= 0)
     throw std::invalid_argument(fmt::format("image size {}x{} is empty", width, height));
   std::unique_ptr<Projection> projection = projectionOfType(camera, width, height);
+  // POV-Ray's order: the ray is moved on the lens, then bent by the camera's normal.
+  if (camera.focalBlur) projection = throughFocalBlurLens(std::move(projection), camera);
   if (camera.normal) return bentByCameraNormal(std::move(projection), camera, width, height);
   return projection;
 }

@@ -13,7 +13,8 @@ Renderer::Renderer(const World& world, const Camera& camera, ImageMapCache* text
     : settings_(world.scene().render),
       projection_(makeProjection(camera, settings_.width, settings_.height)),
       tracer_(world, textures),
-      camera_(*projection_, tracer_, settings_.background, settings_.samples),
+      camera_(*projection_, tracer_, settings_.background, settings_.samples,
+              camera.focalBlur ? &*camera.focalBlur : nullptr),
       sampler_(makePixelSampler(settings_, camera_)) {}
 
 RenderResult Renderer::render(const RenderControl& control) const {

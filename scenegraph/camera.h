@@ -101,6 +101,24 @@ struct Camera {
   // panoramic: POV-Ray's |right| and |up| over |direction|.
   double rightLength = 1.0;
   double upLength = 1.0;
+  // <focal-blur>: POV-Ray's focal blur, for every type but thin-lens (render/focal_blur.h).
+  // Each camera sample is the average of up to `samples` rays that start on a lens disc of
+  // diameter `aperture` (world units) about the ray's start, in the camera's right-up plane,
+  // and meet where the unmoved ray meets the focus surface: the plane through focalPoint
+  // parallel to the image (pinhole, orthographic), or the sphere about the ray's start
+  // through it (the other types). After minSamples, every 4th ray asks whether the mean is
+  // good enough (POV-Ray's confidence test).
+  struct FocalBlur {
+    SourceLoc loc;
+    double aperture = 0.0;
+    std::optional<Vec3> focalPoint;  // as position is given (before transform); unset: look-at
+    int samples = 37;
+    int minSamples = 0;
+    double confidence = 0.9;
+    double variance = 1.0 / 10000.0;
+  };
+  std::optional<FocalBlur> focalBlur;
+  static constexpr int kMaxFocalBlurSamples = 65536;
   // <normal>: POV-Ray's camera normal. Each primary ray's direction is bent as a surface
   // normal would be, by the pattern at the image point (x0, y0, 0) (render/camera_normal.h).
   std::optional<NormalSpec> normal;

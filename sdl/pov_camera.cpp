@@ -409,4 +409,68 @@ CameraImport importCamera(const PovCamera& pov, int width, int height) {
   return out;
 }
 
+void importFocalBlur(const PovCamera& pov, Camera& imported,
+                     std::vector<std::string>& differences) {
+  const PovCamera::FocalBlur& b = pov.blur;
+  if (b.aperture == 0.0 || b.samples <= 0) return;
+  Camera::FocalBlur blur;
+  blur.loc = b.loc;
+  // POV-Ray's lens points lie within aperture/4 of the centre (its grid spans a disc of
+  // radius 1/2, scaled by aperture/2); a negative aperture mirrors them.
+  blur.aperture = 0.5 * std::abs(b.aperture);
+  blur.samples = std::min(b.samples, Camera::kMaxFocalBlurSamples);
+  blur.minSamples = std::min(b.minSamples, blur.samples);
+  if (b.samples > Camera::kMaxFocalBlurSamples)
+    differences.push_back(fmt::format("focal blur: blur_samples {} is above Lucent's {}", b.samples,
+                                      Camera::kMaxFocalBlurSamples));
+  blur.confidence = b.confidence;
+  blur.variance = b.variance;
+  // POV-Ray's focal distance, worked out before the camera's transform (checked with
+  // povray 3.7: without focal_point it is |direction|).
+  PovCamera untransformed = pov;
+  untransformed.transform = PovTransform{};
+  const Vec3 direction = povCameraVectors(untransformed).direction;
+  const double distance =
+      b.focalPoint ? glm::length(*b.focalPoint - pov.location) : glm::length(direction);
+  // The rays meet at distance × each ray's POV-Ray direction / |direction| (after the
+  // transform): a plane (perspective, orthographic) or, where that direction is unit, the
+  // sphere of radius distance / |direction| (fisheye, omnimax) or distance (spherical,
+  // whose directions are |direction| long).
+  double radius = distance;
+  const double transformedLength = glm::length(povCameraVectors(pov).direction);
+  switch (pov.type) {
+    case PovCameraType::Perspective:
+    case PovCameraType::Orthographic:
+    case PovCameraType::Spherical:
+      break;
+    case PovCameraType::Fisheye:
+    case PovCameraType::Omnimax:
+      radius = distance / transformedLength;
+      break;
+    case PovCameraType::UltraWideAngle:
+    case PovCameraType::Cylinder:
+    case PovCameraType::Panoramic:
+      radius = distance / transformedLength;
+      differences.push_back(
+          "focal blur on this camera: POV-Ray's rays meet on a surface of its own (its ray "
+          "directions are not unit); Lucent focuses on the sphere at POV-Ray's focal distance");
+      break;
+  }
+  // POV-Ray 3.7.0 moves every ray's start to the location plus the lens offset, which
+  // undoes the cameras whose rays start elsewhere (fixed in later versions).
+  if (pov.type == PovCameraType::Orthographic ||
+      (pov.type == PovCameraType::Cylinder && pov.cylinderType >= 3))
+    differences.push_back(
+        "focal blur on this camera: POV-Ray 3.7.0 starts every ray at the camera's location "
+        "(plus the lens offset), so its image is a blur of what the centre sees; Lucent moves "
+        "each ray from its own start, as later POV-Ray versions do");
+  if (!(radius > 0.0)) {
+    differences.push_back("focal blur: the focal point is the camera's location; left out");
+    return;
+  }
+  const Vec3 forward = glm::normalize(imported.lookAt - imported.position);
+  blur.focalPoint = imported.position + radius * forward;
+  imported.focalBlur = blur;
+}
+
 }  // namespace lucent::sdl

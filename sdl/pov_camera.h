@@ -54,6 +54,17 @@ struct PovCamera {
   // move it); imported by SceneReader::importCameraNormal.
   std::optional<PovNormal> normal;
   SourceLoc normalLoc;
+  // Focal blur (aperture, blur_samples [MIN,] MAX, confidence, variance, focal_point, the
+  // point in the camera's own space, before its transform): on when the aperture is not 0
+  // and blur_samples is given; imported by importFocalBlur.
+  struct FocalBlur {
+    SourceLoc loc;
+    double aperture = 0.0;
+    int samples = 0, minSamples = 0;
+    double confidence = 0.9, variance = 1.0 / 10000.0;
+    std::optional<Vec3> focalPoint;
+  };
+  FocalBlur blur;
 };
 
 // The camera's vectors once POV-Ray has applied its modifiers, in POV-Ray's space:
@@ -80,5 +91,12 @@ struct CameraImport {
   std::string error;
 };
 CameraImport importCamera(const PovCamera& camera, int width, int height);
+
+// POV-Ray's focal blur onto `imported` (importCamera's camera), if it is on: the lens disc
+// is half POV-Ray's aperture across; the focus is POV-Ray's focal distance,
+// |focal_point − location| or without one |direction|, along the view. What Lucent cannot
+// reproduce goes to `differences`.
+void importFocalBlur(const PovCamera& camera, Camera& imported,
+                     std::vector<std::string>& differences);
 
 }  // namespace lucent::sdl

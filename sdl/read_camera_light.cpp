@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lucent::sdl {
@@ -92,19 +93,40 @@ PovCamera SceneReader::readCamera(TokenStream& in) {
       // Starts from the camera's normal so far, or as any normal from the default one.
       c.normal = readNormal(in, c.normal ? &*c.normal : nullptr);
       c.normalLoc = t.loc();
-    } else if (w == "aperture" || w == "blur_samples" || w == "focal_point" || w == "confidence" ||
-               w == "variance") {
-      // Focal blur: read and left out, said (docs/povray-import.md, "Camera").
-      if (w == "focal_point") {
-        in.parseVector();
-      } else {
-        in.parseFloat();
-        if (w == "blur_samples" && (startsNumber(in.peek()) || in.peek().is(","))) {
-          in.parseComma();
-          in.parseFloat();
+    } else if (w == "aperture") {
+      c.blur.aperture = in.parseFloat();
+      c.blur.loc = t.loc();
+    } else if (w == "blur_samples") {
+      // blur_samples MAX, or MIN, MAX (POV-Ray takes whole numbers by truncation).
+      const Token number = in.peek();
+      const int first = static_cast<int>(std::clamp(in.parseFloat(), -1.0, 1e9));
+      if (first <= 0) in.error(number, "illegal number of focal blur samples (at least 1)");
+      c.blur.samples = first;
+      c.blur.minSamples = 0;
+      if (startsNumber(in.peek()) || in.peek().is(",")) {
+        in.parseComma();
+        const Token second = in.peek();
+        const int most = static_cast<int>(std::clamp(in.parseFloat(), -1.0, 1e9));
+        if (most != 0) {
+          if (first > most)
+            in.error(second, "focal blur samples minimum must not be larger than maximum");
+          c.blur.minSamples = first;
+          c.blur.samples = most;
         }
       }
-      warn(in, t.loc(), "focal blur ('" + std::string(w) + "') is not imported");
+    } else if (w == "confidence" || w == "variance") {
+      // Out of range: POV-Ray warns and keeps the value it had.
+      const double v = in.parseFloat();
+      const bool confidence = w == "confidence";
+      if (confidence ? (v > 0.0 && v < 1.0) : (v >= 0.0 && v <= 1.0))
+        (confidence ? c.blur.confidence : c.blur.variance) = v;
+      else
+        warn(in, t.loc(),
+             fmt::format("illegal {} value {}: the value before it is kept (as POV-Ray)", w, v));
+    } else if (w == "focal_point") {
+      c.blur.focalPoint = toVec3(in.parseVector());
+    } else if (w == "bokeh") {
+      in.error(t, "'bokeh' (a focal blur's lens shape) is not supported by Lucent");
     } else {
       unreadInBlock(t, in);
       return c;

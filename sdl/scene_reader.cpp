@@ -844,6 +844,7 @@ void SceneReader::finishScene(TokenStream& in) {
     keepError(in, cameraLoc, imported.error);
     return;
   }
+  importFocalBlur(camera, imported.camera, imported.differences);
   for (const std::string& d : imported.differences) warn(in, cameraLoc, d);
   imported.camera.loc = cameraLoc;
   importCameraNormal(camera, imported.camera, in);

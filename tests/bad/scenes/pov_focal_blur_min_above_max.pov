@@ -1,0 +1,2 @@
+camera { location <0, 1, -5> look_at 0 aperture 1 blur_samples 30, 20 }
+sphere { 0, 1 pigment { rgb 1 } }
