@@ -143,6 +143,8 @@ PovSurface povSurface(const Material& m, PovIssues& issues) {
     }
   }
   s.diffuse = a > 0.0 ? d / a : 0.0;
+  // Lucent's crand is a share of k_d = d·pigment; POV-Ray's multiplies the pigment alone.
+  s.crand = m.crand * d;
   // A see-through texture: POV-Ray lets P·f + t through, P = pigmentScale·C, and scales the
   // local terms by 1 - f - t of each colour plus the material's own; Lucent lets C·f + t
   // through and scales k_t too (docs/scene-language.md, "Filter and transmit").
@@ -761,6 +763,7 @@ void PovMaterials::writeLayer(const Material& m, const PovSurface& s, const Imag
   out.line("ambient " + povRgb(s.ambient));
   out.line("emission " + povRgb(s.emission));
   out.line("diffuse " + povFloat(s.diffuse));
+  if (s.crand > 0.0) out.line("crand " + povFloat(s.crand));
   out.line("phong " + povFloat(s.phong));
   out.line("specular " + povFloat(s.specular));
   const std::string metallic =

@@ -37,6 +37,7 @@ struct PovSurface {
   Vec3 ambient{0.0};   // colour, multiplied by ambient_light and the pigment
   Vec3 emission{0.0};  // colour, multiplied by the pigment
   double diffuse = 0.0;
+  double crand = 0.0;  // POV-Ray's: subtracted times its pigment, not times diffuse
   double specular = 0.0;
   double phong = 0.0;
   Vec3 reflection{0.0};  // the maximum (fresnel, or with a minimum) or constant reflection

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace lucent {
 
@@ -28,6 +29,16 @@ namespace {
 constexpr double kProjectionTolerance = 0.001;
 
 bool anyPositive(const Color& c) { return maxComponent(c) > 0.0f; }
+
+// crand's u in [0, 1): a hash of the point's coordinates and the light's index.
+double grain(const Vec3& p, size_t light) {
+  const auto bitsOf = [](double v) {
+    uint64_t b = 0;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+  };
+  return hashToUnit(bitsOf(p.x), bitsOf(p.y), bitsOf(p.z), light);
+}
 
 // fade-on-exit: what the stretch inside keeps dims the rays that carry light out of the
 // solid at this hit (Tracer::Hit::passOut, 1 otherwise), as POV-Ray's interior fade.
@@ -602,7 +613,7 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
     if (!anyPositive(in.radiance)) continue;
     // A light behind: no diffuse, no highlight, unless the surface is lit from both sides.
     if (!doubleIlluminate && glm::dot(n, in.toLight) <= 0.0) continue;
-    const Color brdf =
+    Color brdf =
         surfaceResponse(m, kd, metal, ShadingPoint{s.p, n, v}, in.toLight, light.highlights);
     if (!anyPositive(brdf)) continue;
     Color shadow(1.0f);
@@ -610,6 +621,9 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
       shadow = shadowFactor(light, static_cast<uint32_t>(i), in, s, media, seed, context);
       if (!anyPositive(shadow)) continue;
     }
+    // POV-Ray's crand: a light that reaches the point loses a random share of its diffuse
+    // term (random per point and light, here a hash of both, so images repeat).
+    if (m.crand > 0.0) brdf -= kd * static_cast<float>(m.crand * grain(s.p, i));
     sum += shadow * in.radiance * brdf;
   }
   return sum;

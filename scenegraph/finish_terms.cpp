@@ -201,6 +201,14 @@ const std::vector<FinishTerm>& finishTerms() {
            [](const Material& m, PovFinishOut& out) {
              out.line("brilliance " + out.number(m.brilliance));
            }),
+      term(number("crand", &Material::crand, NumberRule::nonNegative(),
+                  "POV-Ray's crand, graininess: each light's diffuse term loses u·crand·k_d "
+                  "(times the texture), u in [0, 1) drawn anew for every hit point and light "
+                  "(a hash of the point, so an image is the same on every run). POV-Ray's "
+                  "crand c with its diffuse d and opacity a is c/(d·a) here. >= 0; 0: none."),
+           // POV-Ray's crand multiplies its pigment, not k_d: povray/pov_materials.cpp
+           // writes it beside diffuse.
+           "finish { crand }"),
       term(boolean("metallic", &Material::metallic,
                    "true: the specular and phong highlights take the surface's diffuse colour "
                    "(times the texture), fading to the light's colour at grazing light as "

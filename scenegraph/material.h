@@ -59,7 +59,10 @@ struct Material {
   Color phong{0.0f};            // k_p: POV-Ray's Phong highlight k_p·(R·L)^phongSize
   double phongSize = 40.0;
   double brilliance = 1.0;  // the diffuse term is k_d·(N·L)^brilliance
-  bool metallic = false;    // highlights take the surface colour (POV-Ray's metallic)
+  // POV-Ray's crand, as a share of k_d: each light's diffuse term loses u·crand·k_d, u in
+  // [0, 1) a hash of the hit point and the light (render/tracer.cpp: directLight). 0: none.
+  double crand = 0.0;
+  bool metallic = false;  // highlights take the surface colour (POV-Ray's metallic)
   // The metallic tint is 1 + amount·(1 − F)·(C − 1): C the metallic colour times the
   // texture, or without one the diffuse colour times the texture (render/finish.cpp).
   double metallicAmount = 1.0;

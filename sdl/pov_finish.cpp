@@ -100,6 +100,16 @@ MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish
         "emission with a pattern pigment: POV-Ray multiplies the emission by the pattern's "
         "colour, Lucent's emission is one colour (imported as the emission alone)");
   m.brilliance = finish.brilliance;
+  // POV-Ray subtracts rand·crand·pigment from each light's diffuse term (not scaled by
+  // diffuse or the opacity, and nothing where diffuse is 0): a share of k_d here.
+  const double diffuseShare = finish.diffuse * opacity;
+  if (finish.crand > 0.0 && finish.diffuse > 0.0) {
+    if (diffuseShare > 0.0) m.crand = finish.crand / diffuseShare;
+    else
+      notes.push_back(
+          "crand on a pigment that lets everything through (its opacity is 0): POV-Ray's "
+          "grain has no share of Lucent's diffuse colour there; left out");
+  }
   // Highlights take the light's colour only: neither pigment nor opacity.
   m.phong = Color(static_cast<float>(finish.phong));
   m.phongSize = finish.phongSize;

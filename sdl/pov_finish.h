@@ -126,6 +126,7 @@ struct PovFinish {
   Color emission{0.0f};
   double diffuse = 0.6;
   double brilliance = 1.0;
+  double crand = 0.0;  // subtracted per light, times a random number and the pigment
   double phong = 0.0;
   double phongSize = 40.0;
   double specular = 0.0;

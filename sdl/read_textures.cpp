@@ -226,8 +226,7 @@ PovFinish SceneReader::readFinish(TokenStream& in, const PovFinish& start) {
         else in.error(k, "unexpected " + k.describe() + " in irid");
       }
     } else if (w == "crand") {
-      in.parseFloat();
-      warn(in, t.loc(), "crand is not imported (Lucent's surfaces have no graininess)");
+      f.crand = in.parseFloat();
     } else {
       unreadInBlock(t, in);
       return f;
