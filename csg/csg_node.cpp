@@ -52,8 +52,7 @@ CsgNode::CsgNode(CsgOp op, std::vector<std::unique_ptr<Shape>> children, CsgSear
       for (const auto& c : children_) bounds_.expand(c->bounds());
       break;
     case CsgOp::Intersection:
-      bounds_ = children_[0]->bounds();
-      for (const auto& c : children_) bounds_ = AABB::meet(bounds_, c->bounds());
+      bounds_ = boundsWithin(AABB::everything());
       break;
     case CsgOp::Difference:
       bounds_ = children_[0]->bounds();
@@ -68,6 +67,29 @@ CsgNode::CsgNode(CsgOp op, std::vector<std::unique_ptr<Shape>> children, CsgSear
   bvh_ = Bvh(bounded.size(), [&](uint32_t k) { return children_[bounded[k]]->bounds(); });
   // The traversal reports positions in `bounded`; map them to child indices once.
   for (uint32_t k : bvh_.takeOrder()) slotChild_.push_back(bounded[k]);
+}
+
+AABB CsgNode::boundsWithin(const AABB& clip) const {
+  switch (op_) {
+    case CsgOp::Union:
+    case CsgOp::Merge: {
+      AABB box;
+      for (const auto& c : children_) box.expand(c->boundsWithin(clip));
+      return box;
+    }
+    case CsgOp::Intersection: {
+      AABB box = clip;
+      for (const auto& c : children_) box = AABB::meet(box, c->bounds());
+      // A child unbounded alone (a cone, a hyperboloid) may be bounded within the box the
+      // others leave (a slab of planes); once more, as a bound found may tighten another.
+      for (int pass = 0; pass < 2 && !box.empty(); ++pass)
+        for (const auto& c : children_) box = c->boundsWithin(box);
+      return box;
+    }
+    case CsgOp::Difference:
+      return children_[0]->boundsWithin(clip);
+  }
+  return AABB::meet(bounds(), clip);
 }
 
 template <class Visit>

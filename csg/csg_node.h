@@ -29,6 +29,9 @@ class CsgNode final : public Shape {
 
   const char* kind() const override { return csgOpName(op_); }
   AABB bounds() const override { return bounds_; }
+  // Each child's boundsWithin: a union's joined, an intersection's met (so that a child
+  // unbounded alone is bounded by the others), a difference's first child's.
+  AABB boundsWithin(const AABB& clip) const override;
   bool isSolid() const override { return solid_; }
   bool intersect(const Ray& ray, Hit& hit) const override;
   bool occluded(const Ray& ray) const override;

@@ -40,6 +40,14 @@ Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& worldFro
 
 const Transform Instance::kIdentity;
 
+AABB Instance::boundsWithin(const AABB& clip) const {
+  if (!placed_) return shape_->boundsWithin(clip);
+  const Transform& t = placed_->transform;
+  const AABB objectClip = transformBounds(t.objectFromWorld(), clip);
+  const AABB part = transformBounds(t.worldFromObject(), shape_->boundsWithin(objectClip));
+  return AABB::meet(AABB::meet(part, bounds_), clip);
+}
+
 // An identity transform (every shape placed by its own parameters, as spheres by their
 // center) hands the ray over as it is: multiplying by the identity matrix would give the
 // same numbers (except that it turns -0 into +0) for two matrix products per test.

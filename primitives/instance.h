@@ -24,6 +24,8 @@ class Instance final : public Shape {
 
   const char* kind() const override { return shape_->kind(); }
   AABB bounds() const override { return bounds_; }
+  // The shape's boundsWithin, asked with the clip carried into object space.
+  AABB boundsWithin(const AABB& clip) const override;
   bool isSolid() const override { return shape_->isSolid(); }
   bool intersect(const Ray& ray, Hit& hit) const override;
   bool occluded(const Ray& ray) const override;

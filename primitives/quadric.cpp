@@ -5,6 +5,7 @@
 #include "span.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace lucent {
@@ -55,28 +56,53 @@ Quadric::Quadric(const QuadricCoefficients& q) {
 // a finite box from their other bounds.
 void Quadric::boundCylinder() {
   for (int k = 0; k < 3; ++k) {
-    if (m_[k][0] != 0.0 || m_[k][1] != 0.0 || m_[k][2] != 0.0 || g_[k] != 0.0) continue;
-    const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const double a = m_[i][i], b = m_[i][j], c = m_[j][j];
-    const double det = a * c - b * b;
-    if (!(a > 0.0 && det > 1e-12 * std::max(a, c) * std::max(a, c))) return;
-    // The section's centre and its extent, as the ellipsoid's in two dimensions.
-    const double ii = c / det, ij = -b / det, jj = a / det;  // the inverse of [[a b] [b c]]
-    const double ci = -0.5 * (ii * g_[i] + ij * g_[j]), cj = -0.5 * (ij * g_[i] + jj * g_[j]);
-    const double level = a * ci * ci + 2.0 * b * ci * cj + c * cj * cj - j_;
-    if (level <= 0.0) {
-      bounds_ = AABB();  // empty: Q ≥ 0 everywhere
-      return;
-    }
-    const double hi = std::sqrt(level * ii) * (1.0 + 1e-9),
-                 hj = std::sqrt(level * jj) * (1.0 + 1e-9);
-    bounds_ = AABB::everything();
-    bounds_.lo[i] = ci - hi;
-    bounds_.hi[i] = ci + hi;
-    bounds_.lo[j] = cj - hj;
-    bounds_.hi[j] = cj + hj;
-    return;
+    if (m_[k][k] != 0.0 || g_[k] != 0.0) continue;
+    if (sectionBounds(k, j_, bounds_)) return;
   }
+}
+
+bool Quadric::sectionBounds(int k, double constant, AABB& out) const {
+  const int i = (k + 1) % 3, j = (k + 2) % 3;
+  if (m_[k][i] != 0.0 || m_[k][j] != 0.0) return false;
+  const double a = m_[i][i], b = m_[i][j], c = m_[j][j];
+  const double det = a * c - b * b;
+  if (!(a > 0.0 && det > 1e-12 * std::max(a, c) * std::max(a, c))) return false;
+  // The section's centre and its extent, as the ellipsoid's in two dimensions.
+  const double ii = c / det, ij = -b / det, jj = a / det;  // the inverse of [[a b] [b c]]
+  const double ci = -0.5 * (ii * g_[i] + ij * g_[j]), cj = -0.5 * (ij * g_[i] + jj * g_[j]);
+  const double level = a * ci * ci + 2.0 * b * ci * cj + c * cj * cj - constant;
+  if (level <= 0.0) {
+    out = AABB();  // empty: Q ≥ 0 everywhere
+    return true;
+  }
+  const double hi = std::sqrt(level * ii) * (1.0 + 1e-9), hj = std::sqrt(level * jj) * (1.0 + 1e-9);
+  out = AABB::everything();
+  out.lo[i] = ci - hi;
+  out.hi[i] = ci + hi;
+  out.lo[j] = cj - hj;
+  out.hi[j] = cj + hj;
+  return true;
+}
+
+AABB Quadric::boundsWithin(const AABB& clip) const {
+  AABB box = AABB::meet(bounds_, clip);
+  for (int k = 0; k < 3 && !box.empty(); ++k) {
+    const double lo = box.lo[k], hi = box.hi[k];
+    if (!(std::isfinite(lo) && std::isfinite(hi))) continue;
+    // The smallest a·t² + b·t over [lo, hi]: at an end, or at the vertex of an upward
+    // parabola; lowered by the rounding of its terms, so the section is never too small.
+    const double a = m_[k][k], b = g_[k];
+    double least = std::min(a * lo * lo + b * lo, a * hi * hi + b * hi);
+    if (a > 0.0) {
+      const double vertex = -b / (2.0 * a);
+      if (vertex > lo && vertex < hi) least = std::min(least, -b * b / (4.0 * a));
+    }
+    const double t = std::max(std::abs(lo), std::abs(hi));
+    least -= 1e-12 * (std::abs(a) * t * t + std::abs(b) * t + std::abs(j_));
+    AABB section;
+    if (sectionBounds(k, j_ + least, section)) box = AABB::meet(box, section);
+  }
+  return box;
 }
 
 double Quadric::value(const Vec3& p) const { return glm::dot(p, m_ * p) + glm::dot(g_, p) + j_; }

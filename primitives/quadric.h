@@ -33,6 +33,10 @@ class Quadric final : public Shape {
 
   const char* kind() const override { return "quadric"; }
   AABB bounds() const override { return bounds_; }
+  // Along an axis that Q holds only as a·t² + b·t (no mixed term with it), where the section
+  // across it is an ellipse: within the clip's range of t, the widest section bounds the
+  // rest (a cone, a hyperboloid or a paraboloid about an axis, cut to a slab).
+  AABB boundsWithin(const AABB& clip) const override;
   bool isSolid() const override { return true; }
   bool intersect(const Ray& ray, Hit& hit) const override;
   void crossings(const Ray& ray, CrossingList& out) const override;
@@ -55,6 +59,10 @@ class Quadric final : public Shape {
   AABB bounds_ = AABB::everything();
 
   void boundCylinder();
+  // The box of the ellipse Qᵢⱼ(pᵢ, pⱼ) + constant ≤ 0 across axis k (pᵢ, pⱼ the other two
+  // coordinates), unbounded along k; empty when there is no such point. False when the
+  // section is not an ellipse or Q mixes p_k with the others.
+  bool sectionBounds(int k, double constant, AABB& out) const;
 };
 
 }  // namespace lucent

@@ -24,6 +24,10 @@ class Shape {
   // The element name of the scene language ("sphere", "mesh", "union", ...).
   virtual const char* kind() const = 0;
   virtual AABB bounds() const = 0;
+  // A box holding the part of the solid inside `clip`, within clip: meet(bounds(), clip),
+  // or tighter where the shape can tell (a hyperboloid cut to a slab). An intersection's
+  // bounds come from its children's (csg/csg_node.cpp).
+  virtual AABB boundsWithin(const AABB& clip) const { return AABB::meet(bounds(), clip); }
   // A solid encloses a volume: it has an inside() and its crossings alternate.
   virtual bool isSolid() const = 0;
 
