@@ -53,6 +53,23 @@ TEST_CASE("a projected-through light reaches only the points whose rays meet its
   CHECK(litAt(*plain, 0.5) == Approx(0.82867f).epsilon(1e-4));
 }
 
+TEST_CASE("projected-through surfaces (a disc, an annulus, a triangle) let the light through",
+          "[render][projected-through]") {
+  // Surfaces enclose nothing: only where a shadow ray crosses them counts.
+  checkThroughTheBall(
+      *sceneOf("<light position=\"0 0 100\"><projected-through><disc center=\"0 0 50\" "
+               "normal=\"0 0 1\" radius=\"0.1\"/></projected-through></light>"));
+  checkThroughTheBall(
+      *sceneOf("<light position=\"0 0 100\"><projected-through><triangle a=\"-0.1 -0.1 50\" "
+               "b=\"0.1 -0.1 50\" c=\"0 0.1 50\"/></projected-through></light>"));
+  // An annulus whose hole the centre's ray goes through: dark there, lit through the ring.
+  auto ring = sceneOf(
+      "<light position=\"0 0 100\"><projected-through><disc center=\"0 0 50\" "
+      "normal=\"0 0 1\" radius=\"0.4\" inner-radius=\"0.1\"/></projected-through></light>");
+  CHECK(litAt(*ring, 0.0) == 0.0f);
+  CHECK(litAt(*ring, 0.5) > 0.5f);  // its ray crosses z = 50 at x = 0.25, on the ring
+}
+
 TEST_CASE("only what lies nearer than the projected-through objects shadows the light",
           "[render][projected-through]") {
   // A ball between the objects and the light (z = 75) casts no shadow; one between the point

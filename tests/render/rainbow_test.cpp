@@ -97,3 +97,33 @@ TEST_CASE("rainbows that a ray meets are averaged, and the fog acts after them",
   auto fogged = sceneOf(rainbow("") + "<fog color=\"1 1 1\" distance=\"1\" transmit=\"0.5\"/>");
   checkColor(seen(*fogged, 40.0), 0.5f * Color(1.0f) + 0.5f * kMiddle);
 }
+
+TEST_CASE("a rainbow's jitter repeats for a direction and differs between directions",
+          "[render][rainbow]") {
+  auto plain = sceneOf(rainbow(""));
+  auto jittered = sceneOf(rainbow("jitter=\"0.5\""));
+  int differing = 0;
+  for (int i = 0; i < 36; ++i) {
+    const double around = 10.0 * i;
+    checkColor(seen(*plain, 40.0, around), kMiddle);
+    const Color c = seen(*jittered, 40.0, around);
+    checkColor(seen(*jittered, 40.0, around), c);  // the same ray, the same colour
+    if (std::abs(c.r - kMiddle.r) > 1e-3f) ++differing;
+  }
+  CHECK(differing > 30);
+}
+
+TEST_CASE("shadow rays see no rainbow", "[render][rainbow]") {
+  // A grey floor seen from straight above (90 degrees from the ring's axis, outside it),
+  // lit by a light 40 degrees from −z: the shadow ray runs along the ring's middle.
+  const double a = 40.0 * kDegree;
+  const std::string lit =
+      "<plane normal=\"0 1 0\"><material diffuse=\"0.5\"/></plane><light position=\"0 " +
+      std::to_string(20.0 * std::sin(a)) + " " + std::to_string(-20.0 * std::cos(a)) + "\"/>";
+  auto without = sceneOf(lit);
+  auto with = sceneOf(lit + rainbow(""));
+  const Ray down(Vec3(0.0, 1.0, 0.0), Vec3(0.0, -1.0, 0.0));
+  const Color plainFloor = traceOne(World(*without), down);
+  CHECK(plainFloor.r > 0.1f);
+  checkColor(traceOne(World(*with), down), plainFloor);
+}
