@@ -19,11 +19,12 @@ struct Pixel {
 };
 
 // What is kept of each pixel.
-enum class ValueRead { grey, alpha, red };
+enum class ValueRead { grey, alpha, red, transmit };
 
 // The value image_pattern (or with `red` material_map) takes from a pixel.
 float patternValue(const Pixel& p, ValueRead read, bool holdsTransparency) {
   if (read == ValueRead::red) return p.r;
+  if (read == ValueRead::transmit) return holdsTransparency ? 1.0f - p.alpha : 0.0f;
   if (read == ValueRead::alpha) return holdsTransparency ? 1.0f - p.alpha : p.r;
   return static_cast<float>(0.297 * p.r + 0.589 * p.g + 0.114 * p.b);
 }
@@ -129,6 +130,14 @@ std::shared_ptr<const ImageValueGrid> readImagePatternValues(const std::string& 
                                                              bool useAlpha) {
   const ValueRead read = useAlpha ? ValueRead::alpha : ValueRead::grey;
   return isPngFile(path) ? readPng(path, read) : readThroughPlugin(path, read);
+}
+
+std::shared_ptr<const ImageValueGrid> readImageTransmit(const std::string& path) {
+  auto grid = isPngFile(path) ? readPng(path, ValueRead::transmit)
+                              : readThroughPlugin(path, ValueRead::transmit);
+  for (float t : grid->values)
+    if (t != 0.0f) return grid;
+  return nullptr;
 }
 
 std::shared_ptr<const ImageValueGrid> paletteIndices(const std::string& path) {

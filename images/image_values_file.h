@@ -44,6 +44,11 @@ std::shared_ptr<const ImageValueGrid> readImagePatternValues(const std::string& 
 // image's grey), whose value times 255 gives the material number where there is no palette.
 std::shared_ptr<const ImageValueGrid> readImageIndexValues(const std::string& path);
 
+// An image's own transparency as POV-Ray 3.7's image_map reads it: each pixel's transmit
+// 1 − alpha (an alpha channel's, a palette PNG's tRNS entries'); null when the image holds
+// no transparency or every pixel is opaque.
+std::shared_ptr<const ImageValueGrid> readImageTransmit(const std::string& path);
+
 // A palette image's indices (a bump map's heights with use_index, an image map's entries
 // with their own filter and transmit): the grid of a palette PNG, null for an image
 // without a palette (whose grey levels a bump map reads then).

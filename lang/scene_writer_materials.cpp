@@ -126,6 +126,7 @@ Attributes imageAttributes(const ImageTexture& t, const std::string& folder) {
   addImageReading(t, a);
   if (t.all.filter != 0.0f) a.emplace_back("filter", xmlNumber(t.all.filter));
   if (t.all.transmit != 0.0f) a.emplace_back("transmit", xmlNumber(t.all.transmit));
+  if (t.useAlpha) a.emplace_back("use-alpha", "true");
   return a;
 }
 

@@ -88,7 +88,7 @@ void readPaletteEntries(ElementReader& t, ImageTexture& img) {
 }
 
 Texture readTexture(ElementReader& t, const ImageTexture*) {
-  std::vector<std::string_view> attributes{"src", "scale", "filter", "transmit"};
+  std::vector<std::string_view> attributes{"src", "scale", "filter", "transmit", "use-alpha"};
   attributes.insert(attributes.end(), imageReadingAttributes().begin(),
                     imageReadingAttributes().end());
   t.checkAttributes(attributes);
@@ -117,6 +117,14 @@ Texture readTexture(ElementReader& t, const ImageTexture*) {
   }
   readImageProjection(t, img);
   readPaletteEntries(t, img);
+  img.useAlpha = t.boolean("use-alpha", false);
+  if (img.useAlpha && !img.path.empty()) {
+    try {
+      img.alphaTransmit = readImageTransmit(img.path);
+    } catch (const std::exception& e) {  // ImageValuesError, a library's own
+      t.attrError("src", "cannot read the image's transparency: " + std::string(e.what()));
+    }
+  }
   noChildrenButWarps(t, img.projection, "palette");
   return img;
 }

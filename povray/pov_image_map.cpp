@@ -111,9 +111,10 @@ std::optional<std::pair<std::string, ImageFacts>> readableImage(const ImageTextu
                  fmt::format("{}: cannot read the image '{}'", materialName, image.path));
     return std::nullopt;
   }
-  if (facts.alpha)
+  if (facts.alpha && !image.useAlpha)
     issues.warning(image.loc, fmt::format("{}: the image '{}' has an alpha channel, which "
-                                          "POV-Ray uses as transparency and Lucent ignores",
+                                          "POV-Ray uses as transparency and this <image> "
+                                          "ignores (use-alpha=\"true\" reads it)",
                                           materialName, image.path));
   return std::make_pair(format, facts);
 }

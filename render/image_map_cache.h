@@ -23,11 +23,12 @@ class ImageMapCache {
                                       PixelDecoding decoding = PixelDecoding::Linear);
 
   // Files loaded so far (each reload counts): what the tests observe.
-  uint64_t loads() const { return files_.loads() + storedFiles_.loads(); }
+  uint64_t loads() const { return files_.loads() + storedFiles_.loads() + straightFiles_.loads(); }
 
  private:
-  FileCache<ImageMap> files_;        // decoded to linear
-  FileCache<ImageMap> storedFiles_;  // as stored
+  FileCache<ImageMap> files_;          // decoded to linear
+  FileCache<ImageMap> storedFiles_;    // as stored
+  FileCache<ImageMap> straightFiles_;  // linear, the colour divided by its alpha
 };
 
 }  // namespace lucent

@@ -194,28 +194,45 @@ PigmentColor sampleImage(const Image& image, const Vec2& xy, ImageInterpolation 
 
 namespace {
 
-// A palette image's filter and transmit by pixel, as the blends read a grid.
-struct PaletteFilterTransmit {
-  const ImageValueGrid& grid;
+// An image's filter and transmit by pixel, as the blends read a grid: a palette entry's own,
+// else the image's, with the pixel's 1 − alpha added to the transmit (use-alpha).
+struct PixelFilterTransmit {
+  const ImageValueGrid* palette;
+  const ImageValueGrid* alpha;
   const ImageTexture& image;
   int width, height;
   glm::vec2 at(int x, int y) const {
-    const FilterTransmit ft = image.paletteFT(grid.indices[static_cast<size_t>(y) * width + x]);
+    const size_t i = static_cast<size_t>(y) * width + x;
+    FilterTransmit ft = image.all;
+    std::optional<float> ownTransmit;
+    if (palette)
+      for (const PaletteEntryFT& e : image.palette)
+        if (e.index == palette->indices[i]) {
+          ft.filter = e.filter.value_or(ft.filter);
+          ownTransmit = e.transmit ? e.transmit : ownTransmit;
+        }
+    ft.transmit = ownTransmit.value_or(ft.transmit + (alpha ? alpha->values[i] : 0.0f));
     return {ft.filter, ft.transmit};
   }
 };
+
+bool fits(const ImageValueGrid* grid, const Image& pixels) {
+  return grid && grid->width == pixels.width && grid->height == pixels.height;
+}
 
 }  // namespace
 
 PigmentColor sampleImageTexture(const Image& pixels, const ImageTexture& image, const Vec2& xy) {
   PigmentColor c = sampleImage(pixels, xy, image.interpolation, image.once, image.all);
-  const ImageValueGrid* grid = image.paletteIndices.get();
-  if (image.palette.empty() || !grid || grid->width != pixels.width ||
-      grid->height != pixels.height)
-    return c;
-  // POV-Ray blends the palette entries' filter and transmit as it blends their colours.
-  const glm::vec2 ft = sampled(PaletteFilterTransmit{*grid, image, grid->width, grid->height}, xy,
-                               image.interpolation, image.once);
+  const ImageValueGrid* palette = image.palette.empty() ? nullptr : image.paletteIndices.get();
+  const ImageValueGrid* alpha = image.alphaTransmit.get();
+  if (!fits(palette, pixels)) palette = nullptr;
+  if (!fits(alpha, pixels)) alpha = nullptr;
+  if (!palette && !alpha) return c;
+  // POV-Ray blends the pixels' filter and transmit as it blends their colours.
+  const glm::vec2 ft =
+      sampled(PixelFilterTransmit{palette, alpha, image, pixels.width, pixels.height}, xy,
+              image.interpolation, image.once);
   c.ft = {ft.x, ft.y};
   return c;
 }

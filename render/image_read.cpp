@@ -1,5 +1,6 @@
 #include "image_read.h"
 
+#include "images/builtin/builtin_images.h"
 #include "images/image_reading.h"
 #include "images/srgb_decoding.h"
 #include "memory/system_memory.h"
@@ -7,7 +8,9 @@
 
 #include <fmt/core.h>
 
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
 #include <vector>
 
@@ -42,6 +45,28 @@ std::unique_ptr<ImageReader> openCheckedImage(const std::string& path) {
   return in;
 }
 
+// A PNG's values over their maximum, widened as the reader widens them (a palette to its
+// colours, tRNS to alpha) but not premultiplied.
+std::string readStraightPng(const std::string& path, std::vector<float>& out) {
+  PngPixels png;
+  png.expandAsOiio = true;
+  std::string error = readPngHeader(path, png);
+  if (error.empty()) error = readPngValues(path, png);
+  if (!error.empty()) return error;
+  if (png.values.size() != out.size()) return "the image's size changed while it was read";
+  const float scale = png.sixteenBit ? 1.0f / 65535.0f : 1.0f / 255.0f;
+  for (size_t i = 0; i < out.size(); ++i) out[i] = static_cast<float>(png.values[i]) * scale;
+  return "";
+}
+
+// The power of alpha the readers premultiplied the colour by (OpenImageIO's rule): the
+// gamma a file's colour space names ("Gamma2.2" for a PNG's gAMA), else 1.
+float premultipliedGamma(const ImageHeader& spec) {
+  if (spec.colorSpace.rfind("Gamma", 0) != 0) return 1.0f;
+  const float g = std::strtof(spec.colorSpace.c_str() + 5, nullptr);
+  return g > 0.0f ? g : 1.0f;
+}
+
 }  // namespace
 
 void checkImageFile(const std::string& path) { openCheckedImage(path); }
@@ -52,18 +77,29 @@ Image readImageFile(const std::string& path, PixelDecoding decoding) {
   const int channels = spec.channels;
   std::string error;
   std::vector<float> data(static_cast<size_t>(spec.width) * spec.height * channels);
-  error = readImagePixels(*in, data.data());
+  // A PNG's straight colours from its stored values (the reader would premultiply them);
+  // other files' through the reader, divided by alpha below.
+  const bool straightPng = decoding == PixelDecoding::StraightLinear && isPngFile(path);
+  error = straightPng ? readStraightPng(path, data) : readImagePixels(*in, data.data());
   if (!error.empty()) throw ImageIOError(fmt::format("cannot read '{}': {}", path, error));
 
   Image image(spec.width, spec.height);
+  const int alpha =
+      decoding == PixelDecoding::StraightLinear && !straightPng ? spec.alphaChannel : -1;
+  const float gamma = premultipliedGamma(spec);
   for (size_t p = 0; p < image.pixels.size(); ++p) {
     const float* px = &data[p * static_cast<size_t>(channels)];
     image.pixels[p] = channels < 3 ? Color(px[0]) : Color(px[0], px[1], px[2]);
+    if (alpha >= 0 && px[alpha] > 0.0f) {
+      const float weight = gamma == 1.0f ? px[alpha] : std::pow(px[alpha], gamma);
+      image.pixels[p] = glm::min(image.pixels[p] / weight, Color(1.0f));
+    }
   }
   // Integer files are sRGB-encoded unless they say otherwise: their code values decoded
   // exactly, as colours written as sRGB in a scene are.
   const bool integer = spec.eightBit || spec.sixteenBit;
-  if (decoding == PixelDecoding::Linear && integer && (spec.colorSpace.empty() || spec.saysSrgb()))
+  if (decoding != PixelDecoding::AsStored && integer &&
+      (spec.colorSpace.empty() || spec.saysSrgb()))
     decodeSrgbCodeValues(&image.pixels[0][0], 3 * image.pixels.size(), spec.eightBit ? 255 : 65535);
   return image;
 }

@@ -18,8 +18,12 @@ struct ImageIOError : std::runtime_error {
 
 // How readImageFile() returns integer-encoded pixels.
 enum class PixelDecoding {
-  Linear,   // decoded from sRGB to linear RGB (float formats are returned as stored)
-  AsStored  // the stored code values scaled to [0,1] (v/255, v/65535), no colour decoding
+  Linear,    // decoded from sRGB to linear RGB (float formats are returned as stored)
+  AsStored,  // the stored code values scaled to [0,1] (v/255, v/65535), no colour decoding
+  // As Linear, with the colour divided by its alpha first: the readers premultiply it as
+  // OpenImageIO does, POV-Ray's image_map shows the colour as stored (an <image> that reads
+  // its transparency with use-alpha).
+  StraightLinear
 };
 
 // Opens the file and reads its header only, throwing ImageIOError for everything

@@ -80,13 +80,16 @@ Color ImageMap::lookupPixel(double x, double y) const {
 
 namespace {
 
-// An image texture's pixels (decoded to linear), from the cache when there is one.
-std::shared_ptr<const ImageMap> loadImage(const std::string& path, const SourceLoc& loc,
-                                          ImageMapCache* cache) {
+// An image texture's pixels (decoded to linear; their colours divided by their alpha where
+// the texture reads its transparency), from the cache when there is one.
+std::shared_ptr<const ImageMap> loadImage(const ImageTexture& image, ImageMapCache* cache) {
+  const PixelDecoding decoding =
+      image.alphaTransmit ? PixelDecoding::StraightLinear : PixelDecoding::Linear;
   try {
-    return cache ? cache->get(path) : std::make_shared<const ImageMap>(path);
+    return cache ? cache->get(image.path, decoding)
+                 : std::make_shared<const ImageMap>(image.path, decoding);
   } catch (const ImageIOError& e) {
-    throw LocatedError(loc, e.what(), LocatedError::Kind::Input);
+    throw LocatedError(image.loc, e.what(), LocatedError::Kind::Input);
   }
 }
 
@@ -98,16 +101,16 @@ TextureSet::TextureSet(const std::vector<const Material*>& surfaces, ImageMapCac
   for (size_t i = 0; i < surfaces.size(); ++i) {
     const auto* image = std::get_if<ImageTexture>(&surfaces[i]->texture);
     if (!image) continue;
-    auto& map = byPath[image->path];
-    if (!map) map = loadImage(image->path, image->loc, cache);
+    auto& map = byPath[imageKey(*image)];
+    if (!map) map = loadImage(*image, cache);
     maps_[i] = map;
   }
   // The images among the entries of maps and lists, by file.
   for (const Material* m : surfaces)
     forEachImageInMaps(m->texture, [&](const ImageTexture& image) {
-      auto& map = byPath[image.path];
-      if (!map) map = loadImage(image.path, image.loc, cache);
-      nested_[image.path] = map;
+      auto& map = byPath[imageKey(image)];
+      if (!map) map = loadImage(image, cache);
+      nested_[imageKey(image)] = map;
     });
   bumpMaps_.resize(surfaces.size());
   std::map<std::string, std::shared_ptr<const ImageMap>> bumpsByPath;
@@ -224,7 +227,7 @@ struct PigmentAt {
   PigmentColor operator()(std::monostate) const { return {}; }
   // An entry's image: projected from the point its map hands it, through its own placement.
   PigmentColor operator()(const ImageTexture& image) const {
-    const auto found = images ? images->find(image.path) : NestedImages::const_iterator();
+    const auto found = images ? images->find(imageKey(image)) : NestedImages::const_iterator();
     if (!images || found == images->end())
       throw std::logic_error("an image texture without its pixels (not an entry of a material)");
     return projectedImageColour(*found->second, image, p);

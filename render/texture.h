@@ -35,6 +35,11 @@ int checkerIndex(const CheckerTexture& checker, const Vec3& pObject, const Vec3&
 // whose entries are the same images elsewhere. TextureSet loads them with the materials' own.
 class ImageMap;
 using NestedImages = std::unordered_map<std::string, std::shared_ptr<const ImageMap>>;
+// An image's key among them: its path, marked where its colours are read straight (an
+// image that reads its transparency), since the file's pixels are then loaded otherwise.
+inline std::string imageKey(const ImageTexture& image) {
+  return image.alphaTransmit ? image.path + "\n(straight)" : image.path;
+}
 
 // `images`: the pixels of the images among the texture's entries (null where it holds none:
 // a sky's, a pigment function's). `uvPoint`: the surface's (u, v, 0), which uv-mapped entries

@@ -85,6 +85,10 @@ struct ImageTexture {
   // the scene when there are entries; a palette PNG's).
   std::vector<PaletteEntryFT> palette{};
   std::shared_ptr<const ImageValueGrid> paletteIndices{};
+  // use-alpha: the image's own transparency adds to each pixel's transmit (POV-Ray's
+  // image_map reads it so); its 1 − alpha per pixel, read with the scene (null: opaque).
+  bool useAlpha = false;
+  std::shared_ptr<const ImageValueGrid> alphaTransmit{};
 
   // The filter and transmit of the pixels of palette index `index`.
   FilterTransmit paletteFT(int index) const {
@@ -97,7 +101,7 @@ struct ImageTexture {
     return ft;
   }
   bool seeThrough() const {
-    if (once || all.any()) return true;
+    if (once || all.any() || alphaTransmit) return true;
     for (const PaletteEntryFT& e : palette)
       if (e.filter.value_or(0.0f) != 0.0f || e.transmit.value_or(0.0f) != 0.0f) return true;
     return false;
@@ -106,7 +110,8 @@ struct ImageTexture {
   // Looked up with OpenImageIO's bilinear filter at (u,v), as before projections existed.
   bool plainUV() const {
     return projection == ImageProjection::uv && !once &&
-           interpolation == ImageInterpolation::bilinear && !all.any() && palette.empty();
+           interpolation == ImageInterpolation::bilinear && !all.any() && palette.empty() &&
+           !alphaTransmit;
   }
 };
 

@@ -331,6 +331,7 @@ void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {
   image.interpolation = ImageInterpolation::none;  // POV-Ray's default
   if (const PatternPlacement* was = placementOf(p.pattern)) image.placement = *was;
   image.path = readImageFileSpec(in);
+  bool transmitAll = false;
 
   for (;;) {
     const Token k = in.next();
@@ -350,6 +351,7 @@ void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {
       in.next();
       const float amount = static_cast<float>(in.parseFloat());
       (transmit ? image.all.transmit : image.all.filter) = amount;
+      transmitAll = transmitAll || transmit;
       // POV-Ray sets every palette entry's value: an entry's own one given before is gone.
       for (PaletteEntryFT& e : image.palette) (transmit ? e.transmit : e.filter).reset();
     } else if (w == "repeat" || w == "offset") {
@@ -359,8 +361,34 @@ void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {
       in.error(k, "'" + std::string(k.text()) + "' is not an image_map modifier");
     }
   }
+  readImageAlpha(t, transmitAll, in, image);
   p.pattern = std::move(image);
   p.map.clear();
+}
+
+// POV-Ray 3.7's image_map takes the image's own transparency as each pixel's transmit,
+// 1 − alpha, with `transmit all` added; on a palette image `transmit all` instead sets every
+// entry's transmit, in place of its alpha (its Parse_Image_Map): each entry without one of
+// its own then gets it as its own.
+void SceneReader::readImageAlpha(const Token& t, bool transmitAll, TokenStream& in,
+                                 ImageTexture& image) {
+  try {
+    image.useAlpha = true;
+    image.alphaTransmit = readImageTransmit(image.path);
+    if (!transmitAll || !image.alphaTransmit || !isPngFile(image.path)) return;
+    if (!image.paletteIndices) image.paletteIndices = paletteIndices(image.path);
+    if (!image.paletteIndices) return;
+    for (int index = 0; index < image.paletteIndices->paletteSize; ++index) {
+      auto own = std::find_if(image.palette.begin(), image.palette.end(),
+                              [&](const PaletteEntryFT& e) { return e.index == index; });
+      if (own == image.palette.end())
+        image.palette.push_back({index, std::nullopt, image.all.transmit});
+      else if (!own->transmit) own->transmit = image.all.transmit;
+    }
+    image.all.transmit = 0.0f;
+  } catch (const std::exception& e) {
+    keepError(in, t.loc(), "cannot read the transparency of '" + image.path + "': " + e.what());
+  }
 }
 
 }  // namespace lucent::sdl

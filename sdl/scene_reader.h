@@ -439,6 +439,7 @@ class SceneReader : public ItemReader {
   void resolvePigmentColours(PovPigment& p, TokenStream& in, bool nested = false);
   // read_image_map.cpp: `image_map { [TYPE] "file" modifiers }` as a projected <image>
   void readImageMap(const Token& t, TokenStream& in, PovPigment& p);
+  void readImageAlpha(const Token& t, bool transmitAll, TokenStream& in, ImageTexture& image);
   void readPaletteEntry(const Token& k, bool transmit, TokenStream& in, ImageTexture& image);
   void readBumpMap(const Token& t, TokenStream& in, PovNormal& n);
   std::string readImageFileSpec(TokenStream& in);

@@ -203,3 +203,51 @@ TEST_CASE("image palette entries: read, written back and read again, and their e
   CHECK(m.find("palette entry 2 is given twice") != std::string::npos);
   CHECK(r.diagnostics.errorCount() == 4);
 }
+
+TEST_CASE("image use-alpha: the image's own transparency read, written back and read again",
+          "[lang][texture][image-map][alpha]") {
+  // Files of tests/data/sdl/scenes: a 5 x 4 RGBA PNG (its first pixel's alpha 241), a palette
+  // PNG whose tRNS gives alphas 255, 128, 0 and 200, and an RGB PNG (no transparency).
+  const std::string scene = std::string(lucentSourceDir()) + "/tests/data/sdl/scenes/t.xml";
+  auto s = parseClean(R"XML(
+<material id="rgba"><image src="image_pattern_rgba8.png" use-alpha="true"/></material>
+<material id="palette"><image src="alpha_palette.png" use-alpha="true"/></material>
+<material id="rgb"><image src="image_maps.png" use-alpha="true"/></material>
+<material id="off"><image src="image_pattern_rgba8.png"/></material>
+<sphere material="rgba"/><sphere material="palette"/><sphere material="rgb"/>
+<sphere material="off"/>)XML",
+                      scene);
+  const auto& rgba = std::get<ImageTexture>(materialNamed(*s, "rgba").texture);
+  REQUIRE(rgba.alphaTransmit);
+  CHECK(rgba.alphaTransmit->width == 5);
+  CHECK(rgba.alphaTransmit->at(0, 0) == 1.0f - 241.0f / 255.0f);
+  CHECK(textureSeeThrough(materialNamed(*s, "rgba").texture));
+  const auto& palette = std::get<ImageTexture>(materialNamed(*s, "palette").texture);
+  REQUIRE(palette.alphaTransmit);
+  CHECK(palette.alphaTransmit->at(0, 0) == 0.0f);                    // red, alpha 255
+  CHECK(palette.alphaTransmit->at(1, 0) == 1.0f - 128.0f / 255.0f);  // green
+  CHECK(palette.alphaTransmit->at(2, 0) == 1.0f);                    // blue, alpha 0
+  // An opaque image needs no grid, and without use-alpha none is read.
+  const auto& rgb = std::get<ImageTexture>(materialNamed(*s, "rgb").texture);
+  CHECK(rgb.useAlpha);
+  CHECK(!rgb.alphaTransmit);
+  CHECK_FALSE(textureSeeThrough(materialNamed(*s, "rgb").texture));
+  CHECK(!std::get<ImageTexture>(materialNamed(*s, "off").texture).alphaTransmit);
+
+  WriteOptions o;
+  o.folder = std::string(lucentSourceDir()) + "/tests/data/sdl/scenes";
+  const std::string text = writeSceneXml(*s, o);
+  INFO(text);
+  size_t written = 0;
+  for (size_t at = text.find("use-alpha=\"true\""); at != std::string::npos;
+       at = text.find("use-alpha=\"true\"", at + 1))
+    ++written;
+  CHECK(written == 3);
+  auto reread = parseSceneString(text, scene);
+  REQUIRE(reread.scene);
+  int withAlpha = 0;
+  for (const Material& m : reread.scene->materials)
+    if (const auto* image = std::get_if<ImageTexture>(&m.texture))
+      withAlpha += image->alphaTransmit ? 1 : 0;
+  CHECK(withAlpha == 2);  // the RGBA and the palette image
+}

@@ -162,3 +162,55 @@ TEST_CASE("image interpolation: a palette entry's own filter and transmit, blend
   t.palette.clear();
   CHECK(sampleImageTexture(im, t, Vec2(0.5, 0.5)).ft == FilterTransmit{0.1f, 0.0f});
 }
+
+TEST_CASE("image interpolation: an image's own alpha as transmit, blended as colours",
+          "[render][texture][image-map][alpha]") {
+  // 2 x 2 pixels whose alphas give transmits 0, 0.5 / 1, 0.25 (rows top first).
+  Image im(2, 2);
+  auto alpha = std::make_shared<ImageValueGrid>();
+  alpha->width = alpha->height = 2;
+  alpha->values = {0.0f, 0.5f, 1.0f, 0.25f};
+  ImageTexture t;
+  t.useAlpha = true;
+  t.alphaTransmit = alpha;
+  t.interpolation = ImageInterpolation::none;
+  CHECK(t.seeThrough());
+  CHECK(!t.plainUV());
+  for (int i = 0; i < 4; ++i) {
+    const PigmentColor c = sampleImageTexture(im, t, Vec2(0.5 + i % 2, 0.5 + i / 2));
+    CHECK(c.ft.filter == 0.0f);
+    CHECK(c.ft.transmit == alpha->values[i]);
+  }
+  // `all` adds to it (POV-Ray's transmit all supplements the alpha).
+  t.all = {0.2f, 0.125f};
+  const PigmentColor added = sampleImageTexture(im, t, Vec2(1.5, 0.5));
+  CHECK(added.ft.filter == 0.2f);
+  CHECK(added.ft.transmit == 0.625f);
+  // Bilinear at the corner the four share: the mean of their transmits.
+  t.interpolation = ImageInterpolation::bilinear;
+  const PigmentColor m = sampleImageTexture(im, t, Vec2(1.0, 1.0));
+  CHECK(m.ft.transmit == Approx(0.125 + (0.0 + 0.5 + 1.0 + 0.25) / 4).epsilon(1e-6));
+}
+
+TEST_CASE("image interpolation: a palette entry's own transmit replaces its alpha",
+          "[render][texture][image-map][alpha][palette]") {
+  Image im(2, 1);
+  auto indices = std::make_shared<ImageValueGrid>();
+  indices->width = 2;
+  indices->height = 1;
+  indices->values.assign(2, 0.0f);
+  indices->indices = {0, 1};
+  indices->paletteSize = 2;
+  auto alpha = std::make_shared<ImageValueGrid>();
+  alpha->width = 2;
+  alpha->height = 1;
+  alpha->values = {0.75f, 0.5f};
+  ImageTexture t;
+  t.interpolation = ImageInterpolation::none;
+  t.paletteIndices = indices;
+  t.palette = {{1, std::nullopt, 0.1f}};
+  t.useAlpha = true;
+  t.alphaTransmit = alpha;
+  CHECK(sampleImageTexture(im, t, Vec2(0.5, 0.5)).ft.transmit == 0.75f);  // its alpha
+  CHECK(sampleImageTexture(im, t, Vec2(1.5, 0.5)).ft.transmit == 0.1f);   // its own
+}

@@ -331,3 +331,34 @@ sphere { 0, 1 pigment { image_map { png "scenes/mm_palette.png"
   transmit 1, 0.5 } } })"),
                     "Keyword 'transmit' cannot be used with non color-mapped image."));
 }
+
+TEST_CASE("POV-Ray image_map: the image's alpha is each pixel's transmit",
+          "[sdl][texture][image-map][alpha]") {
+  const auto imageOf = [](const std::string& modifiers, const std::string& file) {
+    auto r = readScene("plane { z, 0 pigment { image_map { png \"scenes/" + file + "\" " +
+                       modifiers + " } } }");
+    REQUIRE(r->load.scene);
+    return std::get<ImageTexture>(sdltest::materialOf(*r->load.scene, 0).texture);
+  };
+  const ImageTexture rgba = imageOf("", "image_pattern_rgba8.png");
+  CHECK(rgba.useAlpha);
+  REQUIRE(rgba.alphaTransmit);
+  CHECK(rgba.alphaTransmit->at(0, 0) == 1.0f - 241.0f / 255.0f);
+  // transmit all adds to an RGBA image's alpha, but replaces a palette image's.
+  CHECK(imageOf("transmit all 0.25", "image_pattern_rgba8.png").alphaTransmit);
+  const ImageTexture palette = imageOf("", "alpha_palette.png");
+  REQUIRE(palette.alphaTransmit);
+  CHECK(palette.alphaTransmit->at(2, 0) == 1.0f);
+  // On the palette image, transmit all is every entry's own transmit (in place of its
+  // alpha), but an entry's own value written after it.
+  const ImageTexture replaced = imageOf("transmit all 0.3 transmit 2, 0.75", "alpha_palette.png");
+  CHECK(replaced.useAlpha);
+  CHECK(replaced.alphaTransmit);
+  CHECK(replaced.all.transmit == 0.0f);
+  REQUIRE(replaced.palette.size() == 4);
+  CHECK(replaced.paletteFT(0).transmit == 0.3f);
+  CHECK(replaced.paletteFT(2).transmit == 0.75f);
+  CHECK(replaced.paletteFT(3).transmit == 0.3f);
+  // An opaque image reads no grid.
+  CHECK(!imageOf("", "image_maps.png").alphaTransmit);
+}

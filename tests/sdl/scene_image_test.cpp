@@ -271,3 +271,8 @@ TEST_CASE("scene reader image: focal blur focused at the direction's length",
           "[sdl][scene][image][povray][focal-blur]") {
   requireNearImageAsPovray("focal_blur_default_focus.pov", 120, 90, 36.0, 0.94);
 }
+
+TEST_CASE("scene reader image: image maps with an alpha channel and a palette's tRNS",
+          "[sdl][scene][image][povray][image-map][alpha]") {
+  requireSameImageAsPovrayInPlace("image_map_alpha.pov", 400, 80);
+}
