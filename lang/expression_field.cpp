@@ -26,8 +26,8 @@ std::atomic<uint64_t> gNextFieldId{1};
 class ExpressionField final : public ScalarField {
  public:
   explicit ExpressionField(FunctionText f) : f_(std::move(f)), id_(gNextFieldId.fetch_add(1)) {
-    if (f_.variables.size() != 3)
-      throw std::invalid_argument("an expression field has the variables x, y, z");
+    if (f_.variables.size() != 2 && f_.variables.size() != 3)
+      throw std::invalid_argument("an expression field has the variables x, y, z (or u, v)");
     ThreadParser check;
     compile(check);  // throws mu::ParserError now rather than in a render thread
   }
@@ -49,7 +49,7 @@ class ExpressionField final : public ScalarField {
     defineLanguage(t.parser, ParserRole::Plain);
     t.parser.DefineVar(f_.variables[0], &t.x);
     t.parser.DefineVar(f_.variables[1], &t.y);
-    t.parser.DefineVar(f_.variables[2], &t.z);
+    if (f_.variables.size() == 3) t.parser.DefineVar(f_.variables[2], &t.z);
     for (const auto& [name, v] : f_.constants) t.parser.DefineConst(name, v);
     definePigmentFunctions(t.parser, f_.pigments);
     t.parser.SetExpr(f_.text);

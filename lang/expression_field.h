@@ -12,8 +12,9 @@
 
 namespace lucent {
 
-// `f` has exactly the variables x, y and z (in that order). A non-finite result is
-// returned as it is (the isosurface takes NaN for outside).
+// `f` has the variables x, y and z (in that order), or two, u and v (a parametric's
+// coordinate functions), which take the point's x and y. A non-finite result is returned
+// as it is (the isosurface takes NaN for outside).
 std::shared_ptr<const ScalarField> makeExpressionField(FunctionText f);
 
 }  // namespace lucent

@@ -10,6 +10,7 @@
 #include "scenegraph/pigment_function.h"
 #include "scenegraph/shape_type.h"
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 
@@ -199,10 +200,8 @@ void addFunction(OwnShapeText& t, const std::string& function,
          [p, loc](XmlOut& out) { writeTexture(p->pigment, loc, out, ""); }});
 }
 
-std::optional<OwnShapeText> own(const IsosurfaceSpec& s, const SourceLoc& loc, const std::string&) {
-  OwnShapeText t;
-  addFunction(t, s.function, s.constants, s.pigments, loc);
-  const IsosurfaceContainer& c = s.container;
+// A searched shape's container (container_fields.h).
+void addContainer(OwnShapeText& t, const IsosurfaceContainer& c) {
   if (c.kind == IsosurfaceContainer::Sphere) {
     t.attributes.emplace_back("container", "sphere");
     t.attributes.emplace_back("center", xmlVector(c.center));
@@ -214,6 +213,40 @@ std::optional<OwnShapeText> own(const IsosurfaceSpec& s, const SourceLoc& loc, c
     t.attributes.emplace_back("max", xmlVector(c.max));
     t.handled = {"center", "radius"};  // a sphere container's
   }
+}
+
+std::optional<OwnShapeText> own(const IsosurfaceSpec& s, const SourceLoc& loc, const std::string&) {
+  OwnShapeText t;
+  addFunction(t, s.function, s.constants, s.pigments, loc);
+  addContainer(t, s.container);
+  return t;
+}
+
+std::optional<OwnShapeText> own(const ParametricSpec& s, const SourceLoc&, const std::string&) {
+  OwnShapeText t;
+  // The three functions' parameters, each once (the same name has the same value in all).
+  std::vector<std::string> named;
+  const char* const coordinates[] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    for (const auto& [name, value] : s.functions->constants[i])
+      if (std::find(named.begin(), named.end(), name) == named.end()) {
+        named.push_back(name);
+        t.children.push_back({"param", {{"name", name}, {"value", xmlNumber(value)}}});
+      }
+    t.attributes.emplace_back(coordinates[i], literal(s.functions->text[i]));
+  }
+  t.attributes.emplace_back("uv-min", xmlNumber(s.uvMin.x) + " " + xmlNumber(s.uvMin.y));
+  t.attributes.emplace_back("uv-max", xmlNumber(s.uvMax.x) + " " + xmlNumber(s.uvMax.y));
+  addContainer(t, s.container);
+  if (s.precomputeDepth == 0) {  // the default: nothing precomputed, whatever the coordinates
+    t.handled.insert(t.handled.end(), {"precompute", "precompute-coordinates"});
+    return t;
+  }
+  t.attributes.emplace_back("precompute", std::to_string(s.precomputeDepth));
+  std::string which;
+  for (int i = 0; i < 3; ++i)
+    if (s.precompute[i]) which += (which.empty() ? "" : " ") + std::string(coordinates[i]);
+  t.attributes.emplace_back("precompute-coordinates", which);
   return t;
 }
 

@@ -136,9 +136,10 @@ class Writer {
     std::string name = t_.substr(i_, j - i_);
     i_ = j;
     if (!eat("(")) {
-      if (name == "x" || name == "y" || name == "z") return name;
       for (const auto& [n, v] : c_)
         if (n == name) return p(number_(v));
+      // The variables: x, y, z, or a parametric's u and v (POV-Ray's names for x and y).
+      if (name == "x" || name == "y" || name == "z" || name == "u" || name == "v") return name;
       throw std::runtime_error("unknown name " + name);
     }
     std::vector<std::string> a, raw;  // each argument translated, and as written

@@ -3,7 +3,7 @@
 // and name some functions differently, so the expression is parsed (by the contract's
 // precedence) and written back, fully parenthesised, with POV-Ray's operators and
 // functions: a ^ b as pow(a, b), c ? a : b as select(-abs(c), a, b), and so on. Its names
-// other than x, y and z are written as the numbers they stood for.
+// other than x, y and z (u and v in a parametric's) are written as the numbers they stood for.
 #pragma once
 
 #include "scenegraph/pigment_function.h"

@@ -14,10 +14,11 @@ namespace {
 // The element of each ShapeSpec alternative, in order: findShapeType looks a name up here
 // without building any entry (the registry test checks each against its entry).
 constexpr std::array<std::string_view, std::variant_size_v<ShapeSpec>> kElements = {
-    "sphere",       "box",      "cylinder",      "cone",          "torus",          "plane",
-    "disc",         "triangle", "mesh",          "quadric",       "superellipsoid", "poly",
-    "prism",        "blob",     "lathe",         "isosurface",    "text",           "sor",
-    "height-field", "polygon",  "bicubic-patch", "julia-fractal", "sphere-sweep",   "ovus"};
+    "sphere",         "box",           "cylinder",     "cone",         "torus",
+    "plane",          "disc",          "triangle",     "mesh",         "quadric",
+    "superellipsoid", "poly",          "prism",        "blob",         "lathe",
+    "isosurface",     "text",          "sor",          "height-field", "polygon",
+    "bicubic-patch",  "julia-fractal", "sphere-sweep", "ovus",         "parametric"};
 
 constexpr bool everyShapeNamed() {
   for (std::string_view name : kElements)

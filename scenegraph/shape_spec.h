@@ -10,6 +10,7 @@
 #include "primitives/lathe_spline.h"
 #include "primitives/math.h"
 #include "primitives/mesh_data.h"
+#include "primitives/parametric.h"
 #include "primitives/prism_outline.h"
 #include "primitives/sphere_sweep.h"
 #include "primitives/text_outline.h"
@@ -191,11 +192,37 @@ struct OvusSpec {
   double bottomRadius = 1.0;  // >= 0, not both 0
   double topRadius = 0.5;
 };
-using ShapeSpec =
-    std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec, DiscSpec,
-                 TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec, PolySpec, PrismSpec,
-                 BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec, SorSpec, HeightFieldSpec,
-                 PolygonSpec, BicubicPatchSpec, JuliaFractalSpec, SphereSweepSpec, OvusSpec>;
+// POV-Ray's parametric: three functions of u and v (primitives/parametric.h). Their texts
+// and parameters (for the exporter) and compiled fields sit behind a pointer, as does the
+// precomputed table (made when the element is read, shared by every copy).
+struct ParametricFunctions {
+  std::array<std::string, 3> text;
+  std::array<std::vector<std::pair<std::string, double>>, 3> constants;
+  std::array<std::shared_ptr<const ScalarField>, 3> fields;
+};
+struct ParametricSpec {
+  std::shared_ptr<const ParametricFunctions> functions;  // required
+  Vec2 uvMin{0.0}, uvMax{1.0};
+  IsosurfaceContainer container;
+  double maxGradient = 1.0;
+  double accuracy = 0.001;
+  int precomputeDepth = 0;
+  std::array<bool, 3> precompute{false, false, false};
+  std::shared_ptr<const ParametricIntervals> intervals;
+};
+// The primitive's parameters of a parametric spec.
+Parametric::Params parametricParams(const ParametricSpec& s);
+// The precomputed table `s` asks for (null for none), shared with every parametric read
+// with the same functions, rectangle, max-gradient and precompute while one is alive;
+// false, with `problem` set, when the tables alive at once would pass
+// kMaxParametricTableBytes.
+constexpr size_t kMaxParametricTableBytes = size_t(1) << 30;
+bool shareParametricIntervals(ParametricSpec& s, std::string& problem);
+using ShapeSpec = std::variant<SphereSpec, BoxSpec, CylinderSpec, ConeSpec, TorusSpec, PlaneSpec,
+                               DiscSpec, TriangleSpec, MeshSpec, QuadricSpec, SuperellipsoidSpec,
+                               PolySpec, PrismSpec, BlobSpec, LatheSpec, IsosurfaceSpec, TextSpec,
+                               SorSpec, HeightFieldSpec, PolygonSpec, BicubicPatchSpec,
+                               JuliaFractalSpec, SphereSweepSpec, OvusSpec, ParametricSpec>;
 // Every node holds a ShapeSpec inline, so the largest shape sets the size of a sphere's node
 // in a scene of a million: a new shape's bulk goes behind a pointer, as the bicubic patch's.
 static_assert(sizeof(ShapeSpec) <= 240, "a shape spec this large makes every Node larger");

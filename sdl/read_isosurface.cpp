@@ -27,9 +27,34 @@ class NoNames final : public ExpressionNames {
 
 }  // namespace
 
-std::optional<FunctionInput> SceneReader::compiledFunction(const FunctionValue& f,
-                                                           const std::vector<std::string>& names,
-                                                           const char* what, TokenStream& in) {
+IsosurfaceContainer readContainedBy(TokenStream& in) {
+  IsosurfaceContainer c;
+  in.expect("{");
+  const Token shape = in.next();
+  in.expect("{");
+  if (isWord(shape, "box")) {
+    const Vec3 a = lucentFromPov(toVec3(in.parseVector()));
+    in.parseComma();
+    const Vec3 b = lucentFromPov(toVec3(in.parseVector()));
+    c.kind = IsosurfaceContainer::Box;
+    c.min = glm::min(a, b);
+    c.max = glm::max(a, b);
+  } else if (isWord(shape, "sphere")) {
+    c.kind = IsosurfaceContainer::Sphere;
+    c.center = lucentFromPov(toVec3(in.parseVector()));
+    in.parseComma();
+    c.radius = in.parseFloat();
+  } else {
+    in.error(shape, "expected box or sphere in contained_by, found " + shape.describe());
+  }
+  in.expect("}");
+  in.expect("}");
+  return c;
+}
+
+std::optional<FunctionInput> SceneReader::compiledFunction(
+    const FunctionValue& f, const std::vector<std::string>& names, const char* what,
+    TokenStream& in, const std::vector<std::string>& variables) {
   std::string text;
   std::vector<PigmentCall> calls;
   std::vector<std::shared_ptr<const PigmentFunction>> pigments;
@@ -47,7 +72,7 @@ std::optional<FunctionInput> SceneReader::compiledFunction(const FunctionValue& 
     NoNames noNames;
     ExpressionError problem;
     std::optional<FunctionText> compiled =
-        compileFunction(text, {"x", "y", "z"}, noNames, problem, pigments);
+        compileFunction(text, variables, noNames, problem, pigments);
     if (!compiled)
       in.error(f.loc, std::string(what) + ", written as '" + text +
                           "', is not a Lucent expression: " + problem.message);
@@ -57,18 +82,19 @@ std::optional<FunctionInput> SceneReader::compiledFunction(const FunctionValue& 
   out.text = text;
   out.pigments = pigments;
   // A macro that makes the same function again gets the field compiled the first time: the
-  // text, whose names are x, y and z only, says all of it (not so with pigments: the names
-  // of the pigments it calls do not tell which pigments they are).
+  // text and its variables say all of it (not so with pigments: the names of the pigments
+  // it calls do not tell which pigments they are).
   if (!pigments.empty()) {
     out.field = compile();
     return out;
   }
-  std::shared_ptr<const ScalarField>& field = compiledFields_[text];
+  const std::string key = text + " | " + variables.front();
+  std::shared_ptr<const ScalarField>& field = compiledFields_[key];
   if (!field) {
     try {
       field = compile();
     } catch (...) {
-      compiledFields_.erase(text);
+      compiledFields_.erase(key);
       throw;
     }
   }
@@ -95,26 +121,7 @@ void SceneReader::readIsosurface(PovObject& o, TokenStream& in) {
     const Token t = in.next();
     const std::string_view w = t.kind == TokenKind::Keyword ? t.text() : "";
     if (w == "contained_by") {
-      in.expect("{");
-      const Token shape = in.next();
-      in.expect("{");
-      if (isWord(shape, "box")) {
-        const Vec3 a = lucentFromPov(toVec3(in.parseVector()));
-        in.parseComma();
-        const Vec3 b = lucentFromPov(toVec3(in.parseVector()));
-        s.container.kind = IsosurfaceContainer::Box;
-        s.container.min = glm::min(a, b);
-        s.container.max = glm::max(a, b);
-      } else if (isWord(shape, "sphere")) {
-        s.container.kind = IsosurfaceContainer::Sphere;
-        s.container.center = lucentFromPov(toVec3(in.parseVector()));
-        in.parseComma();
-        s.container.radius = in.parseFloat();
-      } else {
-        in.error(shape, "expected box or sphere in contained_by, found " + shape.describe());
-      }
-      in.expect("}");
-      in.expect("}");
+      s.container = readContainedBy(in);
     } else if (w == "threshold") {
       s.threshold = in.parseFloat();
     } else if (w == "accuracy") {

@@ -1,6 +1,6 @@
 // The shapes: each POV-Ray 3.7 shape's parameters read as POV-Ray reads them (its parser,
 // source/parser/parser.cpp, taken as facts), carried into Lucent's space (z negated:
-// pov_space.h), and the shapes Lucent has no equivalent of refused at their keyword.
+// pov_space.h); what Lucent cannot take within a shape is refused where it is written.
 // docs/povray-import.md ("The scene reader") lists each shape's mapping.
 #include "read_support.h"
 #include "scene_reader.h"
@@ -41,16 +41,7 @@ constexpr std::string_view kShapes[] = {"sphere",         "box",           "plan
                                         "superellipsoid", "text",          "height_field",
                                         "mesh",           "mesh2",         "isosurface",
                                         "polygon",        "bicubic_patch", "julia_fractal",
-                                        "sphere_sweep",   "ovus"};
-
-// POV-Ray's shapes Lucent has no equivalent of, with the nearest Lucent feature.
-const std::map<std::string_view, std::string_view>& unsupportedShapes() {
-  static const std::map<std::string_view, std::string_view> shapes = {
-      {"parametric", "parametric surfaces; the nearest Lucent shape is <isosurface>"},
-      {"lemon", "the lemon; the nearest Lucent shapes are <lathe> and <sor>"},
-  };
-  return shapes;
-}
+                                        "sphere_sweep",   "ovus",          "parametric"};
 
 Vec3 point(TokenStream& in) { return lucentFromPov(toVec3(in.parseVector())); }
 
@@ -62,15 +53,6 @@ Vec3 unitDirection(TokenStream& in, const Token& at, const Vec3& v, const char* 
 }
 
 // POV-Ray's 2-D vector (Parse_UV_Vect): `<u, v>`, or a float f as <f, f>.
-Vec2 parseUv(TokenStream& in) {
-  const SourceLoc at = in.peek().loc();
-  const Value v = in.parseExpression();
-  if (v.terms() == 1) return Vec2(v.v[0]);
-  if (v.terms() != 2)
-    in.error(at, "a 2-D vector <u, v> expected, not one of " + std::to_string(v.terms()) +
-                     " components");
-  return Vec2(v.v[0], v.v[1]);
-}
 
 // A count POV-Ray reads as a float and truncates (`(int)Parse_Float()`), bounded so that a
 // wild number is an error, not an allocation.
@@ -134,9 +116,18 @@ Vec4 parseVector4(TokenStream& in) {
 
 }  // namespace
 
+Vec2 parseUv(TokenStream& in) {
+  const SourceLoc at = in.peek().loc();
+  const Value v = in.parseExpression();
+  if (v.terms() == 1) return Vec2(v.v[0]);
+  if (v.terms() != 2)
+    in.error(at, "a 2-D vector <u, v> expected, not one of " + std::to_string(v.terms()) +
+                     " components");
+  return Vec2(v.v[0], v.v[1]);
+}
+
 bool isShapeKeyword(std::string_view word) {
-  return std::find(std::begin(kShapes), std::end(kShapes), word) != std::end(kShapes) ||
-         unsupportedShapes().count(word) > 0;
+  return std::find(std::begin(kShapes), std::end(kShapes), word) != std::end(kShapes);
 }
 
 // What Lucent cannot render in a shape: an error at `at` kept now, or, while a #declare is
@@ -168,11 +159,7 @@ void SceneReader::refuseShape(PovObject& o, const SourceLoc& at, TokenStream& in
 void SceneReader::readShape(PovObject& o, TokenStream& in) {
   const Token at = in.current();
   const std::string& w = o.keyword;
-  const auto refused = unsupportedShapes().find(w);
-  if (refused != unsupportedShapes().end()) {
-    refuseShape(o, o.loc, in,
-                "'" + w + "' is not supported by Lucent (" + std::string(refused->second) + ")");
-  } else if (w == "sphere") {
+  if (w == "sphere") {
     SphereSpec s;
     s.center = point(in);
     in.parseComma();
@@ -217,6 +204,8 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
     o.shape = s;  // in the xz-plane about y: the same in both spaces
   } else if (w == "ovus") {
     readOvus(o, in);
+  } else if (w == "parametric") {
+    readParametric(o, in);
   } else if (w == "disc") {
     DiscSpec s;
     s.center = point(in);

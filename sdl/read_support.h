@@ -4,6 +4,7 @@
 
 #include "token_stream.h"
 
+#include "primitives/isosurface.h"
 #include "primitives/math.h"
 #include "scenegraph/pattern.h"
 #include "scenegraph/texture_spec.h"
@@ -33,6 +34,12 @@ void settlePavement(const Token& end, TokenStream& in, PatternSpec* s);
 
 // A shape's keyword, those Lucent refuses included (read_shapes.cpp).
 bool isShapeKeyword(std::string_view word);
+
+// A 2-D vector <u, v> (a float is promoted), read_shapes.cpp.
+Vec2 parseUv(TokenStream& in);
+// `contained_by { box { A, B } | sphere { C, R } }` after its keyword, in Lucent's space
+// (read_isosurface.cpp); a sphere's radius is not checked.
+IsosurfaceContainer readContainedBy(TokenStream& in);
 
 inline Vec3 toVec3(const std::array<double, 3>& v) { return Vec3(v[0], v[1], v[2]); }
 

@@ -357,6 +357,7 @@ class SceneReader : public ItemReader {
   void readJuliaFractal(PovObject& o, TokenStream& in);
   void readSphereSweep(PovObject& o, TokenStream& in);
   void readOvus(PovObject& o, TokenStream& in);
+  void readParametric(PovObject& o, TokenStream& in);  // read_parametric.cpp
   void readText(PovObject& o, TokenStream& in);
   void readHeightFieldOptions(HeightFieldSpec& s, TokenStream& in);
   void readFunctionHeightField(PovObject& o, TokenStream& in);
@@ -395,10 +396,10 @@ class SceneReader : public ItemReader {
   // F's Lucent expression text with its parameters named `names`, its compiled field
   // (compiled once per text) and the pigments it calls (pigment functions, placed in
   // POV-Ray's space); nullopt, with an error kept naming `what`, for a function Lucent
-  // cannot evaluate.
-  std::optional<FunctionInput> compiledFunction(const FunctionValue& f,
-                                                const std::vector<std::string>& names,
-                                                const char* what, TokenStream& in);
+  // cannot evaluate. The text's free names are `variables`: x, y, z, or a parametric's u, v.
+  std::optional<FunctionInput> compiledFunction(
+      const FunctionValue& f, const std::vector<std::string>& names, const char* what,
+      TokenStream& in, const std::vector<std::string>& variables = {"x", "y", "z"});
   // The pigment functions of a function's text (read_isosurface.cpp): each pigment as a
   // texture placed in POV-Ray's space, with the component the call takes.
   std::vector<std::shared_ptr<const PigmentFunction>> pigmentFunctions(

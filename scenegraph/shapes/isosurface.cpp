@@ -3,6 +3,8 @@
 // expression of the scene language in x, y, z, compiled where it is read (its other names
 // are parameters, taken as numbers then); POV-Ray gets it as a function { } body
 // (PovShapeOut::function, written by povray/pov_function.h).
+#include "container_fields.h"
+
 #include "scenegraph/pigment_function.h"
 #include "scenegraph/shape_type.h"
 
@@ -14,8 +16,6 @@
 namespace lucent {
 
 namespace {
-
-const std::vector<std::string_view> kContainers{"box", "sphere"};
 
 // The samples' functions, written in C++ (the registry knows no expression compiler).
 class SampleField final : public ScalarField {
@@ -84,13 +84,7 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
         }
         out.open("isosurface");
         out.line("function { " + *body + " }");
-        const IsosurfaceContainer& c = s.container;
-        if (c.kind == IsosurfaceContainer::Box)
-          out.line(fmt::format("contained_by {{ box {{ {}, {} }} }}", out.vector(c.min),
-                               out.vector(c.max)));
-        else
-          out.line(fmt::format("contained_by {{ sphere {{ {}, {} }} }}", out.vector(c.center),
-                               out.number(c.radius)));
+        out.line(povContainer(s.container, out));
         out.line("threshold " + out.number(s.threshold));
         out.line("max_gradient " + out.number(s.maxGradient));
         out.line("accuracy " + out.number(s.accuracy));
@@ -114,17 +108,6 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
           "names are parameters, taken as numbers where the element is read."),
       numberField("threshold", &IsosurfaceSpec::threshold)
           .doc("The function's value on the surface; below it is inside."),
-      readByEntry<IsosurfaceSpec>("container", AttrType::Choice, "box", kContainers)
-          .doc("The region the surface is sought in: a box (min, max) or a sphere (center, "
-               "radius)."),
-      readByEntry<IsosurfaceSpec>("min", AttrType::Vector, "-1 -1 -1")
-          .doc("A box container's lowest corner."),
-      readByEntry<IsosurfaceSpec>("max", AttrType::Vector, "1 1 1")
-          .doc("A box container's highest corner."),
-      readByEntry<IsosurfaceSpec>("center", AttrType::Vector, "0 0 0")
-          .doc("A sphere container's centre."),
-      readByEntry<IsosurfaceSpec>("radius", AttrType::Number, "1")
-          .doc("A sphere container's radius (> 0)."),
       numberField("max-gradient", &IsosurfaceSpec::maxGradient, NumberRule::positive())
           .doc("A bound on the function's gradient length, which the root search steps by; a "
                "render that sees a "
@@ -133,6 +116,9 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
           .doc("How finely the ray is divided (object-space length) when crossings are sought."),
       booleanField("open", &IsosurfaceSpec::open)
           .doc("true: no surface where the container cuts the solid (then not solid).")};
+  // The container's after the threshold, as the schema has always listed them.
+  auto container = containerFields<IsosurfaceSpec>();
+  e.fields.insert(e.fields.begin() + 2, container.begin(), container.end());
   e.finish = [](IsosurfaceSpec& s, AttributeInput& in) {
     if (auto f = in.function("function", {"x", "y", "z"})) {
       s.function = f->text;
@@ -142,30 +128,7 @@ ShapeEntry<IsosurfaceSpec> shapeEntry<IsosurfaceSpec>() {
     } else if (!in.has("function")) {
       in.error("<isosurface> needs a 'function' (an expression in x, y and z)");
     }
-    const bool sphere = in.choice("container", 0, kContainers) == 1;
-    s.container.kind = sphere ? IsosurfaceContainer::Sphere : IsosurfaceContainer::Box;
-    for (const char* a : sphere ? std::vector<const char*>{"min", "max"}
-                                : std::vector<const char*>{"center", "radius"})
-      if (in.has(a))
-        in.attrError(
-            a, sphere
-                   ? "a sphere container has 'center' and 'radius'; 'min' and 'max' belong to a box"
-                   : "a box container has 'min' and 'max'; 'center' and 'radius' belong to "
-                     "container=\"sphere\"");
-    if (sphere) {
-      s.container.center = in.vector("center", Vec3(0.0));
-      s.container.radius = in.number("radius", 1.0, NumberRule::positive());
-    } else {
-      s.container.min = in.vector("min", Vec3(-1.0));
-      s.container.max = in.vector("max", Vec3(1.0));
-      const Vec3 &lo = s.container.min, &hi = s.container.max;
-      if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
-        in.attrError(
-            in.has("max") ? "max" : "min",
-            fmt::format(
-                "the container box needs min < max in x, y and z (min {} {} {}, max {} {} {})",
-                lo.x, lo.y, lo.z, hi.x, hi.y, hi.z));
-    }
+    s.container = readContainer(in);
   };
   e.notSolid = [](const IsosurfaceSpec& s) {
     return s.open ? std::string("it is open") : std::string();

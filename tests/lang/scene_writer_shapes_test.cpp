@@ -437,6 +437,43 @@ TEST_CASE("scene writer: an ovus keeps its radii", "[lang][scene-writer]") {
   CHECK(e.topRadius == 0.5);
 }
 
+TEST_CASE("scene writer: a parametric keeps its functions, rectangle, container and precompute",
+          "[lang][scene-writer][parametric]") {
+  auto r = roundTrip(
+      "<param name=\"R\" value=\"0.75\"/>"
+      "<parametric x=\"R*cos(u)*sin(v)\" y=\"R*cos(v)\" z=\"R*sin(u)*sin(v)\" uv-min=\"0 0\" "
+      "uv-max=\"6.25 3.125\" container=\"sphere\" center=\"0 0.5 0\" radius=\"1.5\" "
+      "max-gradient=\"0.8\" accuracy=\"0.002\" precompute=\"5\" "
+      "precompute-coordinates=\"y z\"/>");
+  auto [a, b] = specs<ParametricSpec>(r);
+  for (int i = 0; i < 3; ++i) {
+    CHECK(b.functions->text[i] == a.functions->text[i]);
+    CHECK(b.functions->constants[i] == a.functions->constants[i]);
+  }
+  CHECK(b.functions->constants[0] == std::vector<std::pair<std::string, double>>{{"R", 0.75}});
+  const Vec3 q(0.5, 1.25, 0.0);
+  CHECK(b.functions->fields[2]->value(q) == a.functions->fields[2]->value(q));
+  CHECK(b.uvMax == Vec2(6.25, 3.125));
+  CHECK(b.container.kind == IsosurfaceContainer::Sphere);
+  CHECK(b.container.center == Vec3(0.0, 0.5, 0.0));
+  CHECK(b.container.radius == 1.5);
+  CHECK(b.maxGradient == 0.8);
+  CHECK(b.accuracy == 0.002);
+  CHECK(b.precomputeDepth == 5);
+  CHECK(b.precompute == std::array<bool, 3>{false, true, true});
+  REQUIRE(b.intervals);
+  // The defaults.
+  auto d = roundTrip("<parametric x=\"u\" y=\"v\" z=\"0\"/>");
+  auto [c, e] = specs<ParametricSpec>(d);
+  CHECK(e.uvMin == Vec2(0.0));
+  CHECK(e.uvMax == Vec2(1.0));
+  CHECK(e.container.kind == IsosurfaceContainer::Box);
+  CHECK(e.container.min == Vec3(-1.0));
+  CHECK(e.maxGradient == 1.0);
+  CHECK(e.precomputeDepth == 0);
+  CHECK_FALSE(e.intervals);
+}
+
 TEST_CASE("scene writer: a bicubic patch keeps its points, steps and uv corners",
           "[lang][scene-writer]") {
   auto r = roundTrip(

@@ -41,6 +41,20 @@ TEST_CASE("an ovus is POV-Ray's, or its top sphere where POV-Ray would substitut
   CHECK(e.has("sphere {  // <ovus> test.xml:4:1\n  <0, 0.5, 0>, 1\n"));
 }
 
+TEST_CASE("a parametric is POV-Ray's, with u and v as its functions name them",
+          "[povray][geometry][parametric]") {
+  Exported e = exportScene(R"XML(<param name="R" value="2"/>
+<parametric x="R*cos(u)" y="v^2" z="sin(u)" uv-min="0 -1" uv-max="3 1" min="-3 -1 -2"
+            max="3 2 2" max-gradient="2.5" accuracy="0.01" precompute="8"
+            precompute-coordinates="x z"/>)XML");
+  REQUIRE(e.pov.ok());
+  CHECK(
+      e.has("parametric {  // <parametric> test.xml:4:1\n"
+            "  function { ((2) * cos(u)) }\n  function { pow(v, 2) }\n  function { sin(u) }\n"
+            "  <0, -1>, <3, 1>\n  contained_by { box { <-3, -1, -2>, <3, 2, 2> } }\n"
+            "  max_gradient 2.5\n  accuracy 0.01\n  precompute 8, x, z\n"));
+}
+
 TEST_CASE("a bicubic patch's uv corners are its uv_vectors, after its other keywords",
           "[povray][geometry]") {
   Exported e =

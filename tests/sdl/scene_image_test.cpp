@@ -214,6 +214,10 @@ TEST_CASE("scene reader image: blob components with textures of their own, and o
   requireSameImageAsPovray("ovus.pov", 240, 180);
 }
 
+TEST_CASE("scene reader image: parametric surfaces", "[sdl][scene][image][povray][parametric]") {
+  requireSameImageAsPovray("parametric.pov", 240, 180);
+}
+
 TEST_CASE("scene reader image: functions.inc's f_helix1 in isosurfaces",
           "[sdl][scene][image][povray][function]") {
   requireSameImageAsPovray("helix1_isosurface.pov", 240, 180);

@@ -433,32 +433,33 @@ union { object { B } object { L } object { S } object { P } object { E } object 
   REQUIRE(topNode(*r->load.scene, 0).children.size() == 6);
 }
 
-TEST_CASE("scene shapes: what Lucent has no shape for, refused at the keyword, every one",
+TEST_CASE("scene shapes: what Lucent cannot take in a shape, refused where it is, every one",
           "[sdl][scene][shapes][errors]") {
+  // Every POV-Ray 3.7 shape is read; what is refused is within one (a height field's image
+  // format, a mesh's per-triangle textures, superellipsoid exponents).
   const auto errors = errorsOf(R"(sphere { 0, 1 }
-union { parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
+union { height_field { gif "x.gif" }
         sphere { 0, 1 } }
-#declare P = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> } object { P }
-parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
-parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
+#declare P = height_field { gif "x.gif" } object { P }
+height_field { pot "x.pot" }
+mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 1, texture { } } face_indices { 1, <0, 1, 2>, 0 } }
 superellipsoid { <0, 1> }
 height_field { gif "x.gif" }
 )");
   REQUIRE(errors.size() == 6);
   CHECK(errors[0] ==
-        "test.pov:2:9: error: 'parametric' is not supported by Lucent (parametric surfaces; the "
-        "nearest Lucent shape is <isosurface>)");
+        "test.pov:2:24: error: a height field from 'gif' is not supported by Lucent (it reads "
+        "png, pgm, ppm, tga, jpeg and tiff images as height fields)");
   // A declared object's refusal is said where it is used, with that place as a note.
   CHECK(errors[1] ==
-        "test.pov:4:14: error: 'parametric' is not supported by Lucent (parametric surfaces; the "
-        "nearest Lucent shape is <isosurface>)\ntest.pov:4:98: note: the declaration is used "
-        "here");
-  CHECK(errors[2].find("test.pov:5:1: error: 'parametric' is not supported by Lucent") == 0);
-  CHECK(errors[3].find("test.pov:6:1: error: 'parametric' is not supported by Lucent") == 0);
+        "test.pov:4:29: error: a height field from 'gif' is not supported by Lucent (it reads "
+        "png, pgm, ppm, tga, jpeg and tiff images as height fields)\ntest.pov:4:52: note: the "
+        "declaration is used here");
+  CHECK(errors[2].find("test.pov:5:16: error: a height field from 'pot' is not supported") == 0);
+  CHECK(errors[3].find("test.pov:6:39: error: 'texture_list' (textures per mesh triangle) is "
+                       "not supported by Lucent") == 0);
   CHECK(errors[4].find("test.pov:7:1: error: 'superellipsoid' exponents outside 0.01 to 10") == 0);
-  CHECK(errors[5] ==
-        "test.pov:8:16: error: a height field from 'gif' is not supported by Lucent (it reads "
-        "png, pgm, ppm, tga, jpeg and tiff images as height fields)");
+  CHECK(errors[5].find("test.pov:8:16: error: a height field from 'gif' is not supported") == 0);
 }
 
 TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where it is placed",
@@ -469,21 +470,21 @@ TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where 
   auto r = readScene(R"(#include "shapes.inc"
 #include "shapesq.inc"
 object { Monkey_Saddle }
-#declare J = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
+#declare J = height_field { gif "x.gif" }
 #declare Meshes = union { mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } } sphere { 0, 1 } }
 )");
   REQUIRE(r->load.scene);
   CHECK(shapeOf<PolySpec>(*r->load.scene, 0).order == 4);  // a quartic
   // Placed (twice), each refusal is said once, at its keyword.
   const auto errors = errorsOf(
-      R"(#declare J = parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
+      R"(#declare J = height_field { gif "x.gif" }
 #declare Meshes = union { mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } } sphere { 0, 1 } }
 object { J }
 object { Meshes translate x }
 object { Meshes }
 )");
   REQUIRE(errors.size() == 2);
-  CHECK(errors[0].find("test.pov:1:14: error: 'parametric' is not supported by Lucent") == 0);
+  CHECK(errors[0].find("test.pov:1:29: error: a height field from 'gif' is not supported") == 0);
   CHECK(errors[1].find("test.pov:2:53: error: 'texture' in a mesh triangle is not supported") == 0);
 }
 
@@ -826,4 +827,66 @@ TEST_CASE("scene shapes: an ovus's radii below 0, or both 0, are errors",
   CHECK(errorsOf("ovus { 0, 0 }") ==
         std::vector<std::string>{
             "test.pov:1:8: error: the ovus's radii are both 0: it has no surface"});
+}
+
+TEST_CASE("scene shapes: parametric, its functions in u and v and z negated",
+          "[sdl][scene][shapes][parametric]") {
+  auto r = readScene(R"(
+#declare F = function(a, b) { a * b }
+parametric {
+  function { cos(u) + v } function { F(u, v) + z } function { sin(x) * y }
+  <6, 1>, <0, -1>
+  contained_by { sphere { <0, 0, 1>, 2 } }
+  max_gradient 2.5 accuracy 0.01 precompute 6 x, z
+}
+parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
+)");
+  REQUIRE(r->load.scene);
+  const auto& a = shapeOf<ParametricSpec>(*r->load.scene, 0);
+  // The corners sorted, as POV-Ray sorts them.
+  CHECK(a.uvMin == Vec2(0.0, -1.0));
+  CHECK(a.uvMax == Vec2(6.0, 1.0));
+  CHECK(a.container.kind == IsosurfaceContainer::Sphere);
+  CHECK(a.container.center == Vec3(0.0, 0.0, -1.0));
+  CHECK(a.container.radius == 2.0);
+  CHECK(a.maxGradient == 2.5);
+  CHECK(a.accuracy == 0.01);
+  CHECK(a.precomputeDepth == 6);
+  CHECK(a.precompute == std::array<bool, 3>{true, false, true});
+  REQUIRE(a.intervals);
+  CHECK(a.intervals->parts == 64);
+  CHECK(a.intervals->low[1].empty());
+  // u and v are the functions' x and y; z is 0; Lucent's z is POV-Ray's negated.
+  const Vec3 q(0.7, -0.4, 9.0);
+  CHECK(a.functions->fields[0]->value(q) == Approx(std::cos(0.7) - 0.4));
+  CHECK(a.functions->fields[1]->value(q) == Approx(0.7 * -0.4));
+  CHECK(a.functions->fields[2]->value(q) == Approx(-std::sin(0.7) * -0.4));
+  CHECK(a.functions->text[2].rfind("-(", 0) == 0);
+  // POV-Ray's defaults.
+  const auto& b = shapeOf<ParametricSpec>(*r->load.scene, 1);
+  CHECK(b.container.kind == IsosurfaceContainer::Box);
+  CHECK(b.container.min == Vec3(-1.0));
+  CHECK(b.container.max == Vec3(1.0));
+  CHECK(b.maxGradient == 1.0);
+  CHECK(b.accuracy == 0.001);
+  CHECK(b.precomputeDepth == 0);
+  CHECK_FALSE(b.intervals);
+}
+
+TEST_CASE(
+    "scene shapes: a parametric's empty rectangle, bad precompute and missing function "
+    "are errors",
+    "[sdl][scene][shapes][parametric][errors]") {
+  CHECK(errorsOf("parametric { function { u } function { v } function { 0 } <0, 1>, <0, 2> }") ==
+        std::vector<std::string>{"test.pov:1:59: error: the parametric's (u, v) rectangle is empty "
+                                 "(u 0 to 0, v 1 to 2): it has no surface"});
+  CHECK(errorsOf("parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> "
+                 "precompute 21 }") ==
+        std::vector<std::string>{
+            "test.pov:1:85: error: the parametric's precompute depth must be from 1 to 20 "
+            "(POV-Ray's 'Precompute: invalid depth')"});
+  const auto two = errorsOf("parametric { function { u } function { v } <0, 0>, <1, 1> }");
+  REQUIRE(two.size() == 1);
+  CHECK(two[0].rfind("test.pov:1:44: error: expected 'function' (the parametric's z coordinate)",
+                     0) == 0);
 }
