@@ -261,12 +261,24 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
   } else if (w == "sphere_sweep") {
     readSphereSweep(o, in);
   } else if (w == "superellipsoid") {
-    const Vec2 en = parseUv(in);
+    Vec2 en = parseUv(in);
+    // Below 0.01 the shape is a box to within 0.35 % of its half-width at the corners
+    // (1 − 2^−(e/2)): drawn with 0.01, said in a warning. POV-Ray takes any exponent > 0.
+    const double least = Superellipsoid::kMinExponent;
+    if ((en.x > 0.0 && en.x < least) || (en.y > 0.0 && en.y < least)) {
+      warn(in, o.loc,
+           "'superellipsoid' exponents below 0.01 are drawn as 0.01, the least Lucent takes "
+           "(here <" +
+               attributeText(en.x) + ", " + attributeText(en.y) +
+               ">): the shape's corners and edges move by at most 0.35 % of its half-width");
+      en = glm::max(en, Vec2(least));
+    }
     // Poles on z in both: z → −z maps the shape onto itself.
     if (!(en.x >= Superellipsoid::kMinExponent && en.x <= Superellipsoid::kMaxExponent &&
           en.y >= Superellipsoid::kMinExponent && en.y <= Superellipsoid::kMaxExponent))
       refuseShape(o, o.loc, in,
-                  "'superellipsoid' exponents outside 0.01 to 10 are not supported by Lucent (here "
+                  "'superellipsoid' exponents of 0 or less, or above 10, are not supported by "
+                  "Lucent (here "
                   "<" +
                       attributeText(en.x) + ", " + attributeText(en.y) +
                       ">; Lucent's root isolation is tested from nearly a box to a sharp star)");

@@ -458,7 +458,8 @@ height_field { gif "x.gif" }
   CHECK(errors[2].find("test.pov:5:16: error: a height field from 'pot' is not supported") == 0);
   CHECK(errors[3].find("test.pov:6:39: error: 'texture_list' (textures per mesh triangle) is "
                        "not supported by Lucent") == 0);
-  CHECK(errors[4].find("test.pov:7:1: error: 'superellipsoid' exponents outside 0.01 to 10") == 0);
+  CHECK(errors[4].find("test.pov:7:1: error: 'superellipsoid' exponents of 0 or less, or above "
+                       "10, are not supported by Lucent (here <0, 1>") == 0);
   CHECK(errors[5].find("test.pov:8:16: error: a height field from 'gif' is not supported") == 0);
 }
 
@@ -889,4 +890,23 @@ TEST_CASE(
   REQUIRE(two.size() == 1);
   CHECK(two[0].rfind("test.pov:1:44: error: expected 'function' (the parametric's z coordinate)",
                      0) == 0);
+}
+
+TEST_CASE("scene shapes: superellipsoid exponents below 0.01 are drawn as 0.01, with a warning",
+          "[sdl][scene][shapes][superellipsoid]") {
+  // portfolio/allobjects.pov draws superellipsoids of random exponents in [0, 1).
+  auto r = readScene("superellipsoid { <0.001, 0.5> }\nsuperellipsoid { <0.25, 0.005> }\n");
+  REQUIRE(r->load.scene);
+  const auto& a = shapeOf<SuperellipsoidSpec>(*r->load.scene, 0);
+  CHECK(a.e == 0.01);
+  CHECK(a.n == 0.5);
+  const auto& b = shapeOf<SuperellipsoidSpec>(*r->load.scene, 1);
+  CHECK(b.e == 0.25);
+  CHECK(b.n == 0.01);
+  const auto warnings = warningsOf(*r);
+  REQUIRE(warnings.size() == 2);
+  CHECK(warnings[0] ==
+        "test.pov:1:1: warning: 'superellipsoid' exponents below 0.01 are drawn as 0.01, the "
+        "least Lucent takes (here <0.001, 0.5>): the shape's corners and edges move by at most "
+        "0.35 % of its half-width");
 }
