@@ -40,6 +40,15 @@ class MediaStack {
     return true;
   }
 
+  // Whether fog applies over a stretch that ends where the ray leaves `leaving` (null: it
+  // leaves nothing there): outside every solid the ray is known to be in, or inside hollow
+  // ones only. Known by this stack, as POV-Ray knows it by its interior list: a ray that
+  // came in through a clipped solid's gap never entered it, and leaving its inner side ends
+  // a stretch outside it.
+  bool fogStretch(const Material* leaving) const {
+    return allHollow() && (!leaving || leaving->hollow || !contains(leaving));
+  }
+
   void push(const Material* m) {
     if (size_ < kCapacity) items_[size_++] = m;
   }

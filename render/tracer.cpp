@@ -472,9 +472,9 @@ Color Tracer::escaped(const Ray& ray, const MediaStack& media) const {
 void Tracer::travelled(const Ray& ray, double t, const Material* leaving, const MediaStack& media,
                        Color& sum, Color& throughput) const {
   // Rainbows, then fog, over the stretch, if it ran outside every solid or inside hollow
-  // ones only (render/rainbow.h, render/fog.h): the colour C beyond becomes keep·C + add.
-  if ((!fogs_.empty() || !rainbows_.empty()) && media.allHollow() &&
-      (!leaving || leaving->hollow)) {
+  // ones only (MediaStack::fogStretch; render/rainbow.h, render/fog.h): the colour C beyond
+  // becomes keep·C + add.
+  if ((!fogs_.empty() || !rainbows_.empty()) && media.fogStretch(leaving)) {
     const double speed = glm::length(ray.d);
     const Vec3 dir = ray.d / speed;
     Color keep(1.0f), add(0.0f);
@@ -723,7 +723,7 @@ Color Tracer::fogKeptAlongShadowRay(Ray ray, MediaStack media, RayStats& stats) 
   const Vec3 dir = ray.d / speed;
   Color kept(1.0f);
   auto stretch = [&](double from, double to, const Material* leaving) {
-    if (!media.allHollow() || (leaving && !leaving->hollow)) return;
+    if (!media.fogStretch(leaving)) return;
     const double length = std::isinf(to) ? kInf : (to - from) * speed;
     kept *= fogsAlong(fogs_, ray.o + ray.d * from, dir, length).keep;
   };

@@ -214,6 +214,11 @@ TEST_CASE("scene reader image: blob components with textures of their own, and o
   requireSameImageAsPovray("ovus.pov", 240, 180);
 }
 
+TEST_CASE("scene reader image: fog through the gap of a clipped solid",
+          "[sdl][scene][image][povray][fog][clip]") {
+  requireSameImageAsPovray("clipped_fog.pov", 240, 180);
+}
+
 TEST_CASE("scene reader image: parametric surfaces", "[sdl][scene][image][povray][parametric]") {
   requireSameImageAsPovray("parametric.pov", 240, 180);
 }
