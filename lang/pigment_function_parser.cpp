@@ -13,7 +13,7 @@ namespace {
 
 std::vector<std::pair<std::string_view, PigmentComponent>> componentTable() {
   std::vector<std::pair<std::string_view, PigmentComponent>> t;
-  for (int i = 0; i < 6; ++i)
+  for (size_t i = 0; i < std::size(kPigmentComponentNames); ++i)
     t.emplace_back(kPigmentComponentNames[i], static_cast<PigmentComponent>(i));
   return t;
 }
@@ -54,7 +54,8 @@ std::vector<std::shared_ptr<const PigmentFunction>> parsePigmentFunctions(Elemen
     else c.error("<pigment-function> needs a 'name' (how the function calls it)");
     if (!c.has("component"))
       c.error(
-          "<pigment-function> needs a 'component' (red, green, blue, filter, transmit or gray)");
+          "<pigment-function> needs a 'component' (red, green, blue, filter, transmit, gray or "
+          "value)");
     f->component = c.choice("component", PigmentComponent::red, componentTable());
     int textures = 0;
     const std::vector<std::string_view> kinds = textureElements();
@@ -81,6 +82,12 @@ std::vector<std::shared_ptr<const PigmentFunction>> parsePigmentFunctions(Elemen
     });
     if (textures == 0 && !c.failed())
       c.error("<pigment-function> needs a texture child (<pattern>, <checker>...)");
+    const auto* pattern = std::get_if<PatternTexture>(&f->pigment);
+    if (f->component == PigmentComponent::value && !c.failed() &&
+        !(pattern && pattern->pigments.empty()))
+      c.attrError("component",
+                  "'value' is a <pattern>'s own value: the texture must be a <pattern> (without a "
+                  "<pigment-map>)");
     if (name && validName(c, *name, out) && !c.failed()) out.push_back(std::move(f));
     failed = failed || c.failed();
   }

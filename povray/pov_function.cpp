@@ -170,8 +170,11 @@ class Writer {
     // A pigment function: its declaration's name (povPigmentFunctionName) and member.
     for (const auto& pf : pigments_)
       if (pf->name == f)
+        // A pattern's value: the red of its grey map (in POV-Ray's single precision).
         return povPigmentFunctionName(*pf) + "(" + args() + ")." +
-               std::string(pigmentComponentName(pf->component));
+               std::string(pf->component == PigmentComponent::value
+                               ? "red"
+                               : pigmentComponentName(pf->component));
     // The same name and meaning in POV-Ray.
     for (const char* same : {"sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sqrt", "exp",
                              "ln", "abs", "floor", "ceil", "pow"})

@@ -6,6 +6,7 @@
 
 #include "texture_spec.h"
 
+#include <iterator>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -13,18 +14,20 @@
 namespace lucent {
 
 // The components a call takes: POV-Ray's members .red (.x .u), .green (.y .v), .blue (.z),
-// .filter (.t), .transmit and .gray (.grey: 0.297 red + 0.589 green + 0.114 blue).
-enum class PigmentComponent { red, green, blue, filter, transmit, gray };
+// .filter (.t), .transmit and .gray (.grey: 0.297 red + 0.589 green + 0.114 blue); and
+// value, a <pattern>'s own value (POV-Ray's pattern functions, `function { pattern { } }`
+// and f_noise3d), in double precision where the colours are single.
+enum class PigmentComponent { red, green, blue, filter, transmit, gray, value };
 
-inline constexpr std::string_view kPigmentComponentNames[] = {"red",    "green",    "blue",
-                                                              "filter", "transmit", "gray"};
+inline constexpr std::string_view kPigmentComponentNames[] = {"red",      "green", "blue", "filter",
+                                                              "transmit", "gray",  "value"};
 
 inline std::string_view pigmentComponentName(PigmentComponent c) {
   return kPigmentComponentNames[static_cast<int>(c)];
 }
 
 inline std::optional<PigmentComponent> pigmentComponentNamed(std::string_view name) {
-  for (int i = 0; i < 6; ++i)
+  for (size_t i = 0; i < std::size(kPigmentComponentNames); ++i)
     if (kPigmentComponentNames[i] == name) return static_cast<PigmentComponent>(i);
   return std::nullopt;
 }
@@ -52,6 +55,8 @@ inline double pigmentComponent(const PigmentColor& c, PigmentComponent component
       return c.ft.transmit;
     case PigmentComponent::gray:
       return 0.297 * c.rgb.r + 0.589 * c.rgb.g + 0.114 * c.rgb.b;
+    case PigmentComponent::value:  // (its pattern's value is taken before the colour)
+      return c.rgb.r;
   }
   return 0.0;
 }

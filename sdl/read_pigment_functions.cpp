@@ -21,6 +21,15 @@ Texture pigmentTexture(const PovPigment& pigment) {
   return plain;
 }
 
+// The component a call of f takes: a pattern function's value is the pattern's own (in
+// double precision, as POV-Ray's); a block pattern's cell index is its grey's exact red.
+PigmentComponent component(const FunctionValue& f, const Texture& pigment, int member) {
+  const auto* pattern = std::get_if<PatternTexture>(&pigment);
+  if (f.what == "a pattern function" && pattern && pattern->pigments.empty())
+    return PigmentComponent::value;
+  return static_cast<PigmentComponent>(member);
+}
+
 }  // namespace
 
 std::vector<std::shared_ptr<const PigmentFunction>> SceneReader::pigmentFunctions(
@@ -32,8 +41,8 @@ std::vector<std::shared_ptr<const PigmentFunction>> SceneReader::pigmentFunction
     reportRefused(*item, c.callee->loc, in);
     auto f = std::make_shared<PigmentFunction>();
     f->name = c.name;
-    f->component = static_cast<PigmentComponent>(c.member);
     f->pigment = pigmentTexture(item->pigment);
+    f->component = component(*c.callee, f->pigment, c.member);
     if (textureUsesUv(f->pigment))
       throw FunctionError(c.callee->loc, c.callee->describe() +
                                              " is uv-mapped, which Lucent cannot evaluate at a "
@@ -64,7 +73,7 @@ std::optional<double> SceneReader::pigmentValue(const FunctionValue& f, int memb
       if (s.noiseGenerator == 0) s.noiseGenerator = global_.noiseGenerator;
     });
   }
-  p->component = static_cast<PigmentComponent>(member);
+  p->component = component(f, p->pigment, member);
   return pigmentFunctionValue(*p, xyz[0], xyz[1], xyz[2]);
 }
 

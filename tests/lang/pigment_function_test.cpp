@@ -206,3 +206,47 @@ TEST_CASE("pigment function: <pigment-function> mistakes are located", "[lang][p
   CHECK(text.find("<pigment-function> needs a texture child") != std::string::npos);
   CHECK(text.find("pf.xml:7:") != std::string::npos);
 }
+
+TEST_CASE("pigment function: component value is a pattern's own value in double precision",
+          "[lang][pattern][function][pigment]") {
+  auto field = [](const char* component, const char* texture) {
+    ParseResult r = parseBody(std::string(R"XML(
+      <isosurface function="N(x, y, z) - 0.5" min="-1 -1 -1" max="1 1 1">
+        <pigment-function name="N" component=")XML") +
+                                  component + "\">" + texture + "</pigment-function></isosurface>",
+                              "v.xml");
+    return r;
+  };
+  const char* bozo =
+      "<pattern type=\"bozo\"><color-map><entry at=\"0\" color=\"0 0 0\"/>"
+      "<entry at=\"1\" color=\"1 1 1\"/></color-map></pattern>";
+  ParseResult v = field("value", bozo);
+  ParseResult red = field("red", bozo);
+  REQUIRE(v.scene);
+  REQUIRE(red.scene);
+  const auto& iv = std::get<IsosurfaceSpec>(*v.scene->root->children.at(0)->shape);
+  const auto& ir = std::get<IsosurfaceSpec>(*red.scene->root->children.at(0)->shape);
+  REQUIRE(iv.pigments.size() == 1);
+  CHECK(iv.pigments[0]->component == PigmentComponent::value);
+  // The same value; red is the colour's, rounded to single precision, value is not.
+  int unrounded = 0;
+  for (int i = 0; i < 50; ++i) {
+    const Vec3 p(0.013 * i, 0.37 - 0.007 * i, 0.021 * i);
+    const double a = iv.field->value(p), b = ir.field->value(p);
+    CHECK(a == Approx(b).margin(1e-7));
+    CHECK(b + 0.5 == static_cast<double>(static_cast<float>(b + 0.5)));
+    if (a + 0.5 != static_cast<double>(static_cast<float>(a + 0.5))) ++unrounded;
+  }
+  CHECK(unrounded > 40);
+  // Written back as it is.
+  const std::string xml = writeSceneXml(*v.scene, WriteOptions{});
+  CHECK(xml.find("component=\"value\"") != std::string::npos);
+  // Not a pattern: refused at the attribute.
+  ParseResult bad = field("value", "<checker/>");
+  CHECK_FALSE(bad.scene);
+  const std::string text = messages(bad);
+  INFO(text);
+  CHECK(text.rfind("v.xml:", 0) == 0);
+  CHECK(text.find("error: <pigment-function> attribute 'component': 'value' is a <pattern>'s own "
+                  "value") != std::string::npos);
+}

@@ -1,6 +1,7 @@
 // POV-Ray scenes read by the scene reader and rendered by Lucent, held to POV-Ray's own
 // image of the same file with the gallery's bounds (tests/data/sdl/scenes).
 #include "pov_meaning_support.h"
+#include "scene_read_support.h"
 #include "sdl_test_support.h"
 
 #include "sdl/scene_reader.h"
@@ -284,4 +285,36 @@ TEST_CASE("scene reader image: focal blur focused at the direction's length",
 TEST_CASE("scene reader image: image maps with an alpha channel and a palette's tRNS",
           "[sdl][scene][image][povray][image-map][alpha]") {
   requireSameImageAsPovrayInPlace("image_map_alpha.pov", 400, 80);
+}
+
+TEST_CASE("scene reader image: an isosurface of f_noise3d lit from the camera has no black speck",
+          "[sdl][scene][image][function][isosurface]") {
+  // language/trace2.pov's terrain, lit only from the camera, with no ambient light: every
+  // point the camera sees is lit unless a shadow ray finds the surface it leaves. Made of
+  // the pattern's single-precision colour the function was bumpy at 1e-8, and 1 % of the
+  // terrain's pixels were black.
+  auto r = sdltest::readScene(R"(#version 3.7;
+#include "functions.inc"
+camera { location <3, 4, -5> right x*image_width/image_height look_at <0, 0, 0> angle 24 }
+light_source { <3, 4, -5> color rgb 1 }
+background { rgb 1 }
+isosurface {
+  function { y + f_noise3d(x, y, z) }
+  max_gradient 1.75
+  contained_by { box { <-1.1, -1, -1.1>, <1.1, 1, 1.1> } }
+  translate y*0.75
+  pigment { rgb 1 } finish { ambient 0 diffuse 1 }
+}
+)");
+  REQUIRE(r->load.scene);
+  const RgbImage image = renderWithLucent(*r->load.scene);
+  int dark = 0, lit = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const float* p = image.at(x, y);
+      if (p[0] < 0.999f) ++lit;  // the terrain (the background is white)
+      if (p[0] <= 0.0f) ++dark;
+    }
+  CHECK(lit > 5000);
+  CHECK(dark == 0);
 }
