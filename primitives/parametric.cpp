@@ -1,6 +1,6 @@
 #include "parametric.h"
 
-#include "quadratic.h"
+#include "search_container.h"
 
 #include <algorithm>
 #include <cmath>
@@ -122,17 +122,7 @@ Parametric::Parametric(Params p) : p_(std::move(p)) {
   if (!finitePositive(p_.accuracy)) throw std::invalid_argument("parametric: accuracy must be > 0");
   if (p_.precomputeDepth < 0 || p_.precomputeDepth > kMaxPrecompute)
     throw std::invalid_argument("parametric: precompute depth must be from 0 to 20");
-  const IsosurfaceContainer& c = p_.container;
-  if (c.kind == IsosurfaceContainer::Box) {
-    if (!(isFinite(c.min) && isFinite(c.max) && c.min.x < c.max.x && c.min.y < c.max.y &&
-          c.min.z < c.max.z))
-      throw std::invalid_argument("parametric: the container box must have min < max");
-    bounds_ = AABB(c.min, c.max);
-  } else {
-    if (!finitePositive(c.radius) || !isFinite(c.center))
-      throw std::invalid_argument("parametric: the container sphere needs a radius > 0");
-    bounds_ = AABB(c.center - Vec3(c.radius), c.center + Vec3(c.radius));
-  }
+  bounds_ = containerBounds(p_.container, "parametric");
   const Vec3 e = bounds_.extent();
   scale_ = std::max({e.x, e.y, e.z});
   // Central differences: truncation O(h²), rounding O(eps/h); 1e-6 of the side balances
@@ -154,23 +144,7 @@ Vec3 Parametric::normal(double u, double v) const {
 }
 
 bool Parametric::containerSpan(const Ray& ray, double& t0, double& t1) const {
-  const IsosurfaceContainer& c = p_.container;
-  if (c.kind == IsosurfaceContainer::Sphere)
-    return solveDistanceQuadratic(ray.o - c.center, ray.d, c.radius * c.radius, t0, t1) && t0 < t1;
-  t0 = -kInf;
-  t1 = kInf;
-  for (int i = 0; i < 3; ++i) {
-    if (ray.d[i] == 0.0) {
-      if (ray.o[i] < c.min[i] || ray.o[i] > c.max[i]) return false;
-      continue;
-    }
-    const double inv = 1.0 / ray.d[i];
-    double a = (c.min[i] - ray.o[i]) * inv, b = (c.max[i] - ray.o[i]) * inv;
-    if (a > b) std::swap(a, b);
-    t0 = std::max(t0, a);
-    t1 = std::min(t1, b);
-  }
-  return t0 < t1;
+  return lucent::containerSpan(p_.container, ray, t0, t1);
 }
 
 bool Parametric::search(const Ray& ray, double lower, double upper, Leaf& best) const {
