@@ -325,19 +325,14 @@ bool Parametric::intersect(const Ray& ray, Hit& hit) const {
 }
 
 void Parametric::crossings(const Ray& ray, CrossingList& out) const {
+  // The first crossing only, as POV-Ray's parametric gives (its All_Intersections stops at
+  // the nearest): clipped or cut away, it leaves the ray to the surfaces behind, not to the
+  // parametric's own farther crossings.
   out.startsInside = false;
-  double c0, c1;
-  if (!containerSpan(ray, c0, c1)) return;
-  const double guard = 4.0 * p_.accuracy / glm::length(ray.d);
-  double lower = std::max(c0, ray.tmin) + guard;
-  const double upper = std::min(c1, ray.tmax);
-  for (int k = 0; k < kMaxCrossings && lower < upper; ++k) {
-    Crossing c;
-    if (!firstHit(ray, lower, upper, c.hit)) break;
-    c.entering = true;
-    out.items.push_back(c);
-    lower = c.hit.t + guard;  // the next surface, past the one found
-  }
+  Crossing c;
+  if (!intersect(ray, c.hit)) return;
+  c.entering = true;
+  out.items.push_back(c);
 }
 
 SurfaceInfo Parametric::surface(const Ray& ray, const Hit& hit) const {

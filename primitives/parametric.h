@@ -63,8 +63,6 @@ class Parametric final : public Shape {
   // leaves every part undecided down to `accuracy`); past it the search keeps the best
   // hit it found.
   static constexpr long kMaxPartsPerSearch = 1L << 20;
-  // Crossings reported to CSG per ray at most.
-  static constexpr int kMaxCrossings = 64;
 
   // Throws std::invalid_argument for a missing function, an empty rectangle, accuracy or
   // max-gradient not > 0 and finite, an empty container or a precompute depth out of range.

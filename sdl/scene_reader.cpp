@@ -1,5 +1,7 @@
 #include "scene_reader.h"
 
+#include "open_operands.h"
+
 #include "deep_stack.h"
 
 #include "pov_bounds.h"
@@ -674,6 +676,8 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   } else if (inherited.framed && !inherited.movedAfter && !o.bound.empty() && !o.boundIsClip) {
     addBoxCut(o, here, *n, in);
   }
+  // A CSG of objects without an inside, as POV-Ray keeps it (nothing, sometimes).
+  if (!rewriteOpenOperands(*n)) return nullptr;
   return n;
 }
 

@@ -4,6 +4,8 @@
 #include "scene_read_support.h"
 #include "sdl_test_support.h"
 
+#include "lang/parser.h"
+#include "lang/scene_writer.h"
 #include "sdl/scene_reader.h"
 
 using namespace lucent;
@@ -218,6 +220,25 @@ TEST_CASE("scene reader image: blob components with textures of their own, and o
 TEST_CASE("scene reader image: fog through the gap of a clipped solid",
           "[sdl][scene][image][povray][fog][clip]") {
   requireSameImageAsPovray("clipped_fog.pov", 240, 180);
+}
+
+TEST_CASE("scene reader image: CSG with operands that have no inside, as POV-Ray keeps them",
+          "[sdl][scene][image][povray][csg]") {
+  requireSameImageAsPovray("csg_open_operands.pov", 240, 180);
+  // Written by convert as valid XML (unions of the solids' operation and clipped open
+  // operands) that renders to the same pixels.
+  const std::filesystem::path path = sdltest::dataFolder() / "scenes" / "csg_open_operands.pov";
+  sdl::Options options;
+  options.imageWidth = 120;
+  options.imageHeight = 90;
+  const sdl::SceneLoad load = sdl::loadScene(path, options);
+  REQUIRE(load.scene);
+  const std::string xml = writeSceneXml(*load.scene, WriteOptions{});
+  const ParseResult again = parseSceneString(xml, "converted.xml");
+  for (const Diagnostic& d : again.diagnostics.all()) UNSCOPED_INFO(d.str());
+  REQUIRE(again.scene);
+  const RgbImage a = renderWithLucent(*load.scene), b = renderWithLucent(*again.scene);
+  CHECK(a.rgb == b.rgb);
 }
 
 TEST_CASE("scene reader image: parametric surfaces", "[sdl][scene][image][povray][parametric]") {
