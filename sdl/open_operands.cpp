@@ -3,7 +3,7 @@
 #include "scenegraph/light.h"
 #include "scenegraph/shape_registry.h"
 
-#include <memory>
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -12,32 +12,18 @@ namespace lucent::sdl {
 namespace {
 
 // Whether POV-Ray's Inside is false everywhere in n: a triangle, polygon, bicubic patch,
-// parametric or mesh without an inside (Lucent's open mesh), or groups of such. (Not a
-// disc: POV-Ray's disc is inside below its plane, a half-space its surface does not cover.)
-bool holdsNoSolid(const Node& n) {
-  switch (n.kind) {
-    case NodeKind::Shape:
-      return n.shape && !isSolid(*n.shape) &&
-             (std::holds_alternative<TriangleSpec>(*n.shape) ||
-              std::holds_alternative<PolygonSpec>(*n.shape) ||
-              std::holds_alternative<BicubicPatchSpec>(*n.shape) ||
-              std::holds_alternative<ParametricSpec>(*n.shape) ||
-              std::holds_alternative<MeshSpec>(*n.shape));
-    case NodeKind::Use:
-      return n.target && holdsNoSolid(*n.target);
-    case NodeKind::Union:
-    case NodeKind::Group:
-      for (const auto& c : n.children)
-        if (!c->isLight() && !holdsNoSolid(*c)) return false;
-      return !n.children.empty();
-    case NodeKind::Merge:
-    case NodeKind::Intersection:
-    case NodeKind::Difference:
-      return false;
-    case NodeKind::Light:
-      return false;
-  }
-  return false;
+// parametric or mesh without an inside (Lucent's open mesh).
+bool hasNoInside(const Node& n) {
+  return n.kind == NodeKind::Shape && n.shape && !isSolid(*n.shape) &&
+         (std::holds_alternative<TriangleSpec>(*n.shape) ||
+          std::holds_alternative<PolygonSpec>(*n.shape) ||
+          std::holds_alternative<BicubicPatchSpec>(*n.shape) ||
+          std::holds_alternative<ParametricSpec>(*n.shape) ||
+          std::holds_alternative<MeshSpec>(*n.shape));
+}
+
+const DiscSpec* discOf(const Node& n) {
+  return n.kind == NodeKind::Shape && n.shape ? std::get_if<DiscSpec>(&*n.shape) : nullptr;
 }
 
 // A deep copy: every field of Node, its subtrees copied too.
@@ -66,87 +52,249 @@ std::unique_ptr<Node> copyOf(const Node& n) {
   return c;
 }
 
-// `solid` as a clip of `open` (in open's own frame), inside it or, `outside`, inverted.
-void clipBy(Node& open, const Node& solid, bool outside) {
+std::unique_ptr<Node> copyOrNull(const std::unique_ptr<Node>& n) {
+  return n ? copyOf(*n) : nullptr;
+}
+
+// A solid as a clip: its lights and bounds play no part.
+std::unique_ptr<Node> asClipper(const Node& solid, bool inverted) {
   std::unique_ptr<Node> c = copyOf(solid);
-  c->parentFromNode = glm::inverse(open.parentFromNode) * solid.parentFromNode;
-  if (outside) c->inverse = !c->inverse;
-  open.clip.push_back(std::move(c));
+  c->bound.clear();
+  c->children.erase(std::remove_if(c->children.begin(), c->children.end(),
+                                   [](const auto& k) { return k->isLight(); }),
+                    c->children.end());
+  if (inverted) c->inverse = !c->inverse;
+  return c;
+}
+
+// A CSG node of `kind` around `parts` in a frame and under clips of `like` (null for the
+// identity and no clips). Null when there are no parts.
+std::unique_ptr<Node> operation(NodeKind kind, std::vector<std::unique_ptr<Node>> parts,
+                                const Node& like, bool framed) {
+  if (parts.empty()) return nullptr;
+  auto n = std::make_unique<Node>();
+  n->kind = kind;
+  n->element = nodeKindName(kind);
+  n->loc = like.loc;
+  if (framed) {
+    n->parentFromNode = like.parentFromNode;
+    for (const auto& k : like.clip) n->clip.push_back(asClipper(*k, false));
+  }
+  n->children = std::move(parts);
+  return n;
+}
+
+// Clips `piece` (in the operation's frame) to `solid` (in the same frame), inverted or not.
+void clipTo(Node& piece, const Node& solid, bool inverted) {
+  std::unique_ptr<Node> c = asClipper(solid, inverted);
+  c->parentFromNode = glm::inverse(piece.parentFromNode) * c->parentFromNode;
+  piece.clip.push_back(std::move(c));
+}
+
+bool isOperationName(const std::string& element) {
+  return element == "merge" || element == "intersection" || element == "difference";
 }
 
 }  // namespace
 
-bool rewriteOpenOperands(Node& csg) {
-  if (csg.kind != NodeKind::Merge && csg.kind != NodeKind::Intersection &&
-      csg.kind != NodeKind::Difference)
+const OpenOperands::Rewritten* OpenOperands::rewritten(const Node& n) const {
+  if (n.kind != NodeKind::Union || !isOperationName(n.element)) return nullptr;
+  const auto it = rewritten_.find(&n);
+  return it == rewritten_.end() ? nullptr : &it->second;
+}
+
+const AABB* OpenOperands::povBox(const Node& n) const {
+  const Rewritten* r = rewritten(n);
+  return r ? &r->box : nullptr;
+}
+
+bool OpenOperands::insidesOf(const Node& n, PovInsides& out) const {
+  if (const Rewritten* r = rewritten(n)) {
+    out.in = copyOrNull(r->insides.in);
+    out.inverted = copyOrNull(r->insides.inverted);
     return true;
-  // The operands in order (lights aside); each a solid or open, else nothing is changed.
-  std::vector<std::unique_ptr<Node>> lights, operands;
-  std::vector<bool> open;
-  bool anyOpen = false;
+  }
+  if (n.kind == NodeKind::Union && isOperationName(n.element)) return false;  // not known
+  if (n.isSolid()) {
+    out.in = asClipper(n, false);
+    out.inverted = asClipper(n, true);
+    return true;
+  }
+  if (hasNoInside(n)) {
+    out = {};
+    return true;
+  }
+  if (const DiscSpec* d = discOf(n)) {
+    // POV-Ray's disc is inside where its z < 0: below its plane; its clips as the disc's.
+    auto plane = std::make_unique<Node>();
+    plane->kind = NodeKind::Shape;
+    plane->element = "plane";
+    plane->loc = n.loc;
+    plane->parentFromNode = n.parentFromNode;
+    plane->shape = PlaneSpec{d->normal, glm::dot(d->normal, d->center)};
+    plane->inverse = n.inverse;
+    for (const auto& k : n.clip) plane->clip.push_back(asClipper(*k, false));
+    out.inverted = copyOf(*plane);
+    out.inverted->inverse = !out.inverted->inverse;
+    out.in = std::move(plane);
+    return true;
+  }
+  if ((n.kind == NodeKind::Union || n.kind == NodeKind::Group) && !n.inverse) {
+    // A union is inside where any part is; inverted, POV-Ray inverts each part and makes
+    // the union an intersection.
+    std::vector<std::unique_ptr<Node>> ins, inverteds;
+    bool invertedNowhere = false;
+    for (const auto& c : n.children) {
+      if (c->isLight()) continue;
+      PovInsides part;
+      if (!insidesOf(*c, part)) return false;
+      if (part.in) ins.push_back(std::move(part.in));
+      if (part.inverted) inverteds.push_back(std::move(part.inverted));
+      else invertedNowhere = true;
+    }
+    out.in = operation(NodeKind::Union, std::move(ins), n, true);
+    out.inverted = invertedNowhere
+                       ? nullptr
+                       : operation(NodeKind::Intersection, std::move(inverteds), n, true);
+    return true;
+  }
+  return false;
+}
+
+bool OpenOperands::rewrite(Node& csg) {
+  const NodeKind kind = csg.kind;
+  if (kind != NodeKind::Merge && kind != NodeKind::Intersection && kind != NodeKind::Difference)
+    return true;
+  // The operands in order (lights aside), each with its insides; a solid joins the solids'
+  // own operation. Nothing is changed when all are solids or one's inside is not known.
+  std::vector<PovInsides> insides;
+  std::vector<bool> solid;
+  bool allSolid = true;
   for (const auto& c : csg.children) {
     if (c->isLight()) continue;
-    const bool isOpen = holdsNoSolid(*c);
-    if (!isOpen && !c->isSolid()) return true;  // a union of both: left as it was
-    anyOpen = anyOpen || isOpen;
+    PovInsides in;
+    if (!insidesOf(*c, in)) return true;
+    solid.push_back(c->isSolid() && !rewritten(*c));
+    allSolid = allSolid && solid.back();
+    insides.push_back(std::move(in));
   }
-  if (!anyOpen) return true;
+  if (allSolid) return true;
+  const AABB box = nodeBox(csg, Mat4(1.0), knownBoxes());
+  std::vector<std::unique_ptr<Node>> lights, operands;
   for (auto& c : csg.children) {
     if (c->isLight()) {
       lights.push_back(std::move(c));
       continue;
     }
-    open.push_back(holdsNoSolid(*c));
     // Only the whole operation's no_shadow, no_image, no_reflection count (now the union's).
     c->shadows = c->image = c->reflection = true;
     operands.push_back(std::move(c));
   }
   csg.children.clear();
-  const NodeKind kind = csg.kind;
-  std::vector<std::unique_ptr<Node>> kept;
+
+  // POV-Ray's operation as it evaluates it: an intersection (all operands inside) or a
+  // merge (any), of operands inverted or not. A difference is an intersection with its
+  // later operands inverted; inverting an operation inverts each operand and turns an
+  // intersection into a merge and back.
+  const bool all = (kind != NodeKind::Merge) != csg.inverse;
+  std::vector<bool> inverted(operands.size());
+  for (size_t j = 0; j < operands.size(); ++j) {
+    inverted[j] = (kind == NodeKind::Difference && j > 0) != csg.inverse;
+    if (inverted[j]) std::swap(insides[j].in, insides[j].inverted);
+  }
+  // Keeps `piece` where operand j is as the operation asks: inside it (all), or not inside it
+  // (any). False when that is nowhere.
+  const auto clipByOperand = [&](Node& piece, size_t j) {
+    const std::unique_ptr<Node>& in = insides[j].in;
+    if (!in) return !all;  // inside nowhere: never inside, always not inside
+    clipTo(piece, *in, !all);
+    return true;
+  };
+
+  // The solids' own operation. Its surfaces are those of the set it makes or of that set's
+  // complement (the same boundary), whichever Lucent writes without inverting operands.
   std::vector<size_t> solids;
-  size_t openCount = 0;
-  for (size_t i = 0; i < operands.size(); ++i) {
-    if (open[i]) ++openCount;
-    else solids.push_back(i);
-  }
-  if (kind == NodeKind::Merge) {
-    // A surface is kept where no other operand is inside: the solids merged as they are,
-    // each open operand outside every solid.
-    for (size_t i = 0; i < operands.size(); ++i) {
-      if (!open[i]) continue;
-      auto piece = copyOf(*operands[i]);
-      for (size_t j : solids) clipBy(*piece, *operands[j], true);
-      kept.push_back(std::move(piece));
-    }
+  for (size_t i = 0; i < operands.size(); ++i)
+    if (solid[i]) solids.push_back(i);
+  std::vector<std::unique_ptr<Node>> kept;
+  if (!solids.empty()) {
+    std::unique_ptr<Node> part;
     if (solids.size() == 1) {
-      kept.insert(kept.begin(), std::move(operands[solids[0]]));
-    } else if (solids.size() > 1) {
-      auto part = std::make_unique<Node>();
-      part->kind = kind;
-      part->element = csg.element;
-      part->loc = csg.loc;
-      for (size_t j : solids) part->children.push_back(std::move(operands[j]));
-      kept.insert(kept.begin(), std::move(part));
+      part = std::move(operands[solids[0]]);
+    } else {
+      // As an intersection of operands, each maybe inverted (a merge is the complement of
+      // the intersection of its operands inverted).
+      bool firstInverted = inverted[solids[0]] != !all, othersInverted = true, noneInverted = true;
+      for (size_t k = 1; k < solids.size(); ++k) {
+        const bool inv = inverted[solids[k]] != !all;
+        othersInverted = othersInverted && inv;
+        noneInverted = noneInverted && !inv;
+      }
+      NodeKind partKind = NodeKind::Intersection;
+      bool toggle = false;
+      if (!firstInverted && noneInverted) partKind = NodeKind::Intersection;
+      else if (firstInverted && othersInverted) partKind = NodeKind::Merge;
+      else if (!firstInverted && othersInverted) partKind = NodeKind::Difference;
+      else toggle = true;
+      std::vector<std::unique_ptr<Node>> parts;
+      for (size_t j : solids) {
+        if (toggle && inverted[j] != !all) operands[j]->inverse = !operands[j]->inverse;
+        parts.push_back(std::move(operands[j]));
+      }
+      part = operation(partKind, std::move(parts), csg, false);
     }
-  } else if (openCount == 1) {
-    // An intersection or difference keeps a surface where every other operand (inverted,
-    // for a difference's later ones) is inside. An open operand is never inside, inverted
-    // or not (POV-Ray's Inside of it is false whatever its inverse flag): only the open
-    // operand's surface can show, inside each solid of an intersection, inside a
-    // difference's first operand and outside its later ones.
-    size_t k = 0;
-    while (!open[k]) ++k;
-    auto piece = std::move(operands[k]);
-    for (size_t j : solids) clipBy(*piece, *operands[j], kind == NodeKind::Difference && j > 0);
-    kept.push_back(std::move(piece));
+    bool keep = true;
+    for (size_t j = 0; j < operands.size() && keep; ++j)
+      if (!solid[j]) keep = clipByOperand(*part, j);
+    if (keep) kept.push_back(std::move(part));
   }
-  // Two open operands or more in an intersection or difference: nothing is kept.
+  // Every other operand's surface where all the others' insides say.
+  for (size_t i = 0; i < operands.size(); ++i) {
+    if (solid[i]) continue;
+    bool keep = true;
+    for (size_t j = 0; j < operands.size() && keep; ++j)
+      if (j != i) keep = clipByOperand(*operands[i], j);
+    if (keep) kept.push_back(std::move(operands[i]));
+  }
+
+  // The operation's own insides, for an operation around it: of all, inside where all
+  // are and, inverted, where any is inverted; of any, the reverse.
+  PovInsides whole;
+  {
+    std::vector<std::unique_ptr<Node>> ins, inverteds;
+    bool inEverywhereNeeded = true;  // all: every in given; any: every inverted given
+    for (PovInsides& e : insides) {
+      std::unique_ptr<Node>& needed = all ? e.in : e.inverted;
+      std::unique_ptr<Node>& either = all ? e.inverted : e.in;
+      if (needed) (all ? ins : inverteds).push_back(std::move(needed));
+      else inEverywhereNeeded = false;
+      if (either) (all ? inverteds : ins).push_back(std::move(either));
+    }
+    std::unique_ptr<Node>& allOf = all ? whole.in : whole.inverted;
+    std::unique_ptr<Node>& anyOf = all ? whole.inverted : whole.in;
+    allOf = inEverywhereNeeded
+                ? operation(NodeKind::Intersection, std::move(all ? ins : inverteds), csg, true)
+                : nullptr;
+    anyOf = operation(NodeKind::Union, std::move(all ? inverteds : ins), csg, true);
+  }
+
   csg.kind = NodeKind::Union;
-  csg.element = "union";
+  csg.element = nodeKindName(kind);  // marks it rewritten (see rewritten())
+  csg.inverse = false;               // its pieces are what the inverse kept
   for (auto& k : kept) csg.children.push_back(std::move(k));
   for (auto& l : lights) csg.children.push_back(std::move(l));
-  return !csg.children.empty();
+  if (csg.children.empty()) return false;
+  rewritten_[&csg] = Rewritten{std::move(whole), box};
+  return true;
+}
+
+bool OpenOperands::clipByInside(std::unique_ptr<Node>& clip) const {
+  if (clip->isSolid() && !rewritten(*clip)) return true;
+  PovInsides in;
+  if (!insidesOf(*clip, in)) return true;
+  if (!in.in) return false;
+  clip = std::move(in.in);
+  return true;
 }
 
 }  // namespace lucent::sdl

@@ -8,12 +8,17 @@
 
 #include "primitives/aabb.h"
 
+#include <functional>
+
 namespace lucent::sdl {
 
 // The node's box in the frame `parentFromWorld` leads from: its shapes' boxes through
 // their transforms, joined for unions and groups, met for intersections and clips, the
 // first operand's for a difference; unbounded for an inverse node.
-AABB nodeBox(const Node& node, const Mat4& parent);
+// `known` may give the box of a node in its parent's frame instead (a CSG the importer
+// rewrote keeps the box of the operation read).
+using KnownBox = std::function<const AABB*(const Node&)>;
+AABB nodeBox(const Node& node, const Mat4& parent, const KnownBox& known = nullptr);
 
 // POV-Ray's measure of which box is smaller (each side capped at its BOUND_HUGE, so that
 // unbounded boxes compare).

@@ -3,6 +3,8 @@
 #include "read_support.h"
 #include "scene_reader.h"
 
+#include "scenegraph/shape_registry.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -53,6 +55,21 @@ void closeForCsg(PovObject& o, std::vector<std::pair<SourceLoc, std::string>>& c
     }
   }
   for (PovObject& c : o.children.edit()) closeForCsg(c, closed);
+}
+
+// POV-Ray's patch objects (no inside, no inverse: triangles, bicubic patches, parametrics
+// and meshes without inside_vector), also as parts of a CSG, which takes its parts' flag:
+// the first such object in o, or null. POV-Ray refuses them in clipped_by and bounded_by.
+const PovObject* patchIn(const PovObject& o) {
+  if (o.shape && !isSolid(*o.shape) &&
+      (std::holds_alternative<TriangleSpec>(*o.shape) ||
+       std::holds_alternative<BicubicPatchSpec>(*o.shape) ||
+       std::holds_alternative<ParametricSpec>(*o.shape) ||
+       std::holds_alternative<MeshSpec>(*o.shape)))
+    return &o;
+  for (const PovObject& c : *o.children)
+    if (const PovObject* p = patchIn(c)) return p;
+  return nullptr;
 }
 
 }  // namespace
@@ -304,6 +321,14 @@ void SceneReader::readClipOrBound(const Token& t, PovObject& o, TokenStream& in)
       in.error(first,
                std::string("a light source cannot ") + (clip ? "clip" : "bound") + " an object");
     objects.push_back(readObject(first, in));
+    if (const PovObject* patch = patchIn(objects.back()))
+      in.error(first, (patch == &objects.back() ? "a " + patch->keyword
+                                                : "this " + objects.back().keyword + " holds a " +
+                                                      patch->keyword + ", which") +
+                          " has no inside: it cannot " + (clip ? "clip" : "bound") +
+                          " an object (POV-Ray refuses patch objects in " + std::string(t.text()) +
+                          ": triangles, bicubic patches, parametrics and meshes without "
+                          "inside_vector)");
   }
   if (objects.empty())
     in.error(in.peek(),

@@ -1,7 +1,5 @@
 #include "scene_reader.h"
 
-#include "open_operands.h"
-
 #include "deep_stack.h"
 
 #include "pov_bounds.h"
@@ -668,16 +666,28 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
     }
     n->children.push_back(std::move(child));
   }
-  for (const PovObject& c : o.clip)
-    if (auto child = toNode(c, here, false, in)) n->clip.push_back(std::move(child));
+  for (const PovObject& c : o.clip) {
+    auto child = toNode(c, here, false, in);
+    if (!child) continue;
+    // A clip object inside nowhere (a triangle, say) leaves nothing of the object.
+    if (!openOperands_.clipByInside(child)) return nullptr;
+    n->clip.push_back(std::move(child));
+  }
   if (keepsBound(o, inherited.framed)) {
     for (const PovObject& c : o.bound)
       if (auto child = toNode(c, here, false, in)) n->bound.push_back(std::move(child));
   } else if (inherited.framed && !inherited.movedAfter && !o.bound.empty() && !o.boundIsClip) {
     addBoxCut(o, here, *n, in);
   }
-  // A CSG of objects without an inside, as POV-Ray keeps it (nothing, sometimes).
-  if (!rewriteOpenOperands(*n)) return nullptr;
+  // A CSG of objects that are not solids, as POV-Ray keeps it (nothing, sometimes). Where
+  // POV-Ray links it to the frame, rays that miss its box miss it (an intersection's box
+  // is its operands' met, a difference's its first operand's), and a disc's half-space
+  // lets the surfaces kept reach beyond that box: the box is kept as a bound.
+  const NodeKind operation = n->kind;
+  if (!openOperands_.rewrite(*n)) return nullptr;
+  if (inherited.framed &&
+      (operation == NodeKind::Intersection || operation == NodeKind::Difference))
+    if (const AABB* box = openOperands_.povBox(*n)) addBoundBox(*box, o.loc, *n);
   return n;
 }
 
@@ -728,17 +738,24 @@ void SceneReader::addBoxCut(const PovObject& o, const Inherited& here, Node& n, 
   AABB cut = AABB::everything();
   for (const PovObject& c : o.bound) {
     if (c.inverse) continue;  // POV-Ray leaves an inverse bound out of the box
-    if (auto b = toNode(c, here, false, in)) cut = AABB::meet(cut, nodeBox(*b, n.parentFromNode));
+    if (auto b = toNode(c, here, false, in))
+      cut = AABB::meet(cut, nodeBox(*b, n.parentFromNode, openOperands_.knownBoxes()));
   }
+  if (!(boxVolume(cut) < boxVolume(nodeBox(n, Mat4(1.0), openOperands_.knownBoxes())))) return;
+  addBoundBox(cut, o.bound.front().loc, n);
+}
+
+// `cut` (in n's parent's frame) as a <bound> box of n when it cuts into n's own box.
+void SceneReader::addBoundBox(const AABB& cut, const SourceLoc& at, Node& n) {
   const AABB own = nodeBox(n, Mat4(1.0));
-  if (!cut.isBounded() || !(boxVolume(cut) < boxVolume(own))) return;
+  if (!cut.isBounded() || cut.empty()) return;
   if (!own.empty() && glm::all(glm::lessThanEqual(cut.lo, own.lo)) &&
       glm::all(glm::greaterThanEqual(cut.hi, own.hi)))
     return;
   auto box = std::make_unique<Node>();
   box->kind = NodeKind::Shape;
   box->element = "box";
-  box->loc = o.bound.front().loc;
+  box->loc = at;
   box->shape = BoxSpec{cut.lo, cut.hi};
   box->parentFromNode = glm::inverse(n.parentFromNode);
   n.bound.push_back(std::move(box));

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "item_reader.h"
+#include "open_operands.h"
 #include "options.h"
 #include "pov_camera.h"
 #include "pov_finish.h"
@@ -296,6 +297,7 @@ class SceneReader : public ItemReader {
                                TokenStream& in);
   static bool keepsBound(const PovObject& o, bool framed);
   void addBoxCut(const PovObject& o, const Inherited& here, Node& n, TokenStream& in);
+  static void addBoundBox(const AABB& cut, const SourceLoc& at, Node& n);
   void addInteriorMaterial(const PovObject& o, Inherited& here, const Mat4& textureFromNode,
                            Node& n, TokenStream& in);
   void addComponentMaterials(const PovObject& o, const Inherited& here, Node& n, TokenStream& in);
@@ -539,6 +541,8 @@ class SceneReader : public ItemReader {
   uint64_t notesIssued_ = 0;
   // Unnamed materials equal in every term share one index (a loop's objects of one colour).
   MaterialSharing sharedMaterials_;
+  // CSG of objects that are not solids, rewritten as POV-Ray keeps their surfaces.
+  OpenOperands openOperands_;
   // Object patterns' objects put into the scene's <defs> so far (their ids' numbers).
   int objectPatterns_ = 0;
   // The objects built for trace() and the like, each with its item (few in a scene: a

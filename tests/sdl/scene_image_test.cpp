@@ -241,6 +241,25 @@ TEST_CASE("scene reader image: CSG with operands that have no inside, as POV-Ray
   CHECK(a.rgb == b.rgb);
 }
 
+TEST_CASE("scene reader image: CSG with discs, inside below their plane as in POV-Ray",
+          "[sdl][scene][image][povray][csg][disc]") {
+  requireSameImageAsPovray("csg_discs.pov", 240, 180);
+  // convert writes them as valid XML (unions of clipped pieces, planes for the discs'
+  // half-spaces, the box POV-Ray bounds them by) that renders to the same pixels.
+  const std::filesystem::path path = sdltest::dataFolder() / "scenes" / "csg_discs.pov";
+  sdl::Options options;
+  options.imageWidth = 120;
+  options.imageHeight = 90;
+  const sdl::SceneLoad load = sdl::loadScene(path, options);
+  REQUIRE(load.scene);
+  const std::string xml = writeSceneXml(*load.scene, WriteOptions{});
+  const ParseResult again = parseSceneString(xml, "converted.xml");
+  for (const Diagnostic& d : again.diagnostics.all()) UNSCOPED_INFO(d.str());
+  REQUIRE(again.scene);
+  const RgbImage a = renderWithLucent(*load.scene), b = renderWithLucent(*again.scene);
+  CHECK(a.rgb == b.rgb);
+}
+
 TEST_CASE("scene reader image: parametric surfaces", "[sdl][scene][image][povray][parametric]") {
   requireSameImageAsPovray("parametric.pov", 240, 180);
 }
