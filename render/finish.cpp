@@ -29,11 +29,12 @@ Color metallicTint(const Color& surface, double amount, double cosAngle) {
 // defaults says 0.25 0.18 0.14, which is not what it uses). Lucent has no global setting.
 const Color kIridWavelength(0.70f, 0.52f, 0.48f);
 
-// The film's thickness at p: its noise is POV-Ray's turbulence at the world-space point with
-// fixed octaves, omega and lambda and the scene's noise generator (3.7's default, 2; Lucent
-// exports no other).
-double iridThickness(const Material& m, const Vec3& p) {
+// The film's thickness at p: its noise is POV-Ray's turbulence at the world-space point
+// (mirrored in z for a left-handed film) with fixed octaves, omega and lambda and the
+// scene's noise generator (3.7's default, 2; Lucent exports no other).
+double iridThickness(const Material& m, const Vec3& world) {
   if (m.iridTurbulence == 0.0) return m.iridThickness;
+  const Vec3 p = m.iridLeftHanded ? Vec3(world.x, world.y, -world.z) : world;
   PatternPlacement noise;
   noise.octaves = 5;
   noise.omega = 0.5;

@@ -295,6 +295,13 @@ const std::vector<FinishTerm>& finishTerms() {
                   "1)), τ POV-Ray's turbulence (5 octaves, omega 0.5, lambda 2, noise "
                   "generator 2) at the world-space point, >= 0."),
            "finish { irid { turbulence } }, written by irid's row"),
+      term(boolean("irid-left-handed", &Material::iridLeftHanded,
+                   "irid: the thickness noise taken at (x, y, −z) instead of the world-space "
+                   "point: POV-Ray's point in a scene written in POV-Ray's space with z "
+                   "negated, as the POV-Ray importer writes scenes (and export-pov reads them "
+                   "back), so the film varies as in POV-Ray. Default false."),
+           // export-pov writes Lucent's z negated: POV-Ray's noise is at this film's point.
+           "POV-Ray's irid noise in its own (left-handed) space"),
   });
   return table;
 }

@@ -119,6 +119,10 @@ struct Material {
   double irid = 0.0;  // the amount, 0 to 1; 0: none
   double iridThickness = 0.0;
   double iridTurbulence = 0.0;
+  // The thickness noise at (x, y, −z) instead of the world point: POV-Ray's point where the
+  // scene is POV-Ray's with z negated, as the POV-Ray importer writes it (its left-handed
+  // space), so an imported film varies as POV-Ray's does.
+  bool iridLeftHanded = false;
 
   Texture texture;
   // <layer>s written over this material, bottom first (POV-Ray's layered texture: the

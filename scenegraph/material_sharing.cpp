@@ -9,20 +9,20 @@ namespace lucent {
 // Every term of Material below is compared. A term added to Material must be added here
 // too, or two materials that differ in it would be shared: the size is checked so that
 // adding one stops the build here.
-static_assert(sizeof(Material) == 2968,
+static_assert(sizeof(Material) == 2976,
               "Material changed: add its new terms to terms() in material_sharing.cpp, then "
               "update this size");
 
 namespace {
 
 auto terms(const Material& m) {
-  return std::tie(m.id, m.emissive, m.ambient, m.ambientIsScalar, m.diffuse, m.specular,
-                  m.shininess, m.phong, m.phongSize, m.brilliance, m.crand, m.metallic,
-                  m.metallicAmount, m.metallicColor, m.reflectMetallic, m.innerAmbient,
-                  m.nestedExitFresnel, m.reflective, m.transmissive, m.ior, m.fresnel,
-                  m.reflectiveMin, m.reflectFalloff, m.reflectExponent, m.fresnelTransmission,
-                  m.conserveEnergy, m.absorption, m.fadeDistance, m.fadePower, m.fadeColor,
-                  m.fadeOnExit, m.fullTir, m.hollow, m.irid, m.iridThickness, m.iridTurbulence);
+  return std::tie(
+      m.id, m.emissive, m.ambient, m.ambientIsScalar, m.diffuse, m.specular, m.shininess, m.phong,
+      m.phongSize, m.brilliance, m.crand, m.metallic, m.metallicAmount, m.metallicColor,
+      m.reflectMetallic, m.innerAmbient, m.nestedExitFresnel, m.reflective, m.transmissive, m.ior,
+      m.fresnel, m.reflectiveMin, m.reflectFalloff, m.reflectExponent, m.fresnelTransmission,
+      m.conserveEnergy, m.absorption, m.fadeDistance, m.fadePower, m.fadeColor, m.fadeOnExit,
+      m.fullTir, m.hollow, m.irid, m.iridThickness, m.iridTurbulence, m.iridLeftHanded);
 }
 
 void mix(size_t& h, float v) { h = h * 1000003u ^ std::hash<float>()(v); }

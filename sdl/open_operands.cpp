@@ -91,6 +91,40 @@ void clipTo(Node& piece, const Node& solid, bool inverted) {
   piece.clip.push_back(std::move(c));
 }
 
+// Whether the solid o (in the operation's frame) projects onto the disc's plane within its
+// radius: a sphere's ellipsoid by its centre and its largest axis in the plane (by power
+// iteration), any other solid by the corners of its box.
+bool projectsWithin(const Node& o, const Mat4& discFromCsg, const DiscSpec& d) {
+  const Mat4 m = discFromCsg * o.parentFromNode;
+  const Mat3 inPlane = Mat3(1.0) - glm::outerProduct(d.normal, d.normal);
+  const auto offset = [&](const Vec3& p) { return glm::length(inPlane * (p - d.center)); };
+  if (const SphereSpec* s = o.kind == NodeKind::Shape && o.shape && o.clip.empty()
+                                ? std::get_if<SphereSpec>(&*o.shape)
+                                : nullptr) {
+    const Mat3 a = inPlane * Mat3(m) * s->radius;
+    const Mat3 ata = glm::transpose(a) * a;
+    Vec3 v(0.5773502691896258);
+    double largest = 0.0;
+    for (int k = 0; k < 64; ++k) {
+      const Vec3 w = ata * v;
+      const double len = glm::length(w);
+      if (!(len > 0.0)) break;
+      largest = len;
+      v = w / len;
+    }
+    // Power iteration approaches the largest eigenvalue from below: a margin of 1e-9.
+    return offset(Vec3(m * Vec4(s->center, 1.0))) + std::sqrt(largest) * (1.0 + 1e-9) <= d.radius;
+  }
+  const AABB box = nodeBox(o, Mat4(1.0));
+  if (!box.isBounded() || box.empty()) return false;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 corner((k & 1) ? box.hi.x : box.lo.x, (k & 2) ? box.hi.y : box.lo.y,
+                      (k & 4) ? box.hi.z : box.lo.z);
+    if (offset(Vec3(discFromCsg * Vec4(corner, 1.0))) > d.radius) return false;
+  }
+  return true;
+}
+
 bool isOperationName(const std::string& element) {
   return element == "merge" || element == "intersection" || element == "difference";
 }
@@ -161,10 +195,42 @@ bool OpenOperands::insidesOf(const Node& n, PovInsides& out) const {
   return false;
 }
 
-bool OpenOperands::rewrite(Node& csg) {
+bool OpenOperands::closeCoveredDiscs(Node& csg) const {
+  if (csg.kind != NodeKind::Intersection && csg.kind != NodeKind::Difference) return false;
+  // A disc's surface is kept inside the others (an intersection's) or inside the first
+  // operand (a difference's later disc): it covers the cut when one of those operands
+  // projects onto its plane within its radius.
+  bool changed = false;
+  for (size_t i = 0; i < csg.children.size(); ++i) {
+    Node& c = *csg.children[i];
+    const DiscSpec* d = discOf(c);
+    if (!d || d->innerRadius > 0.0 || !c.clip.empty() || c.inverse) continue;
+    if (csg.kind == NodeKind::Difference && i == 0) continue;
+    const Mat4 discFromCsg = glm::inverse(c.parentFromNode);
+    bool covered = false;
+    for (size_t j = 0; j < csg.children.size() && !covered; ++j) {
+      const Node& o = *csg.children[j];
+      if (j == i || o.isLight() || (csg.kind == NodeKind::Difference && j > 0)) continue;
+      if (o.isSolid() && !rewritten(o)) covered = projectsWithin(o, discFromCsg, *d);
+    }
+    if (!covered) continue;
+    c.shape = PlaneSpec{d->normal, glm::dot(d->normal, d->center)};
+    c.element = "plane";
+    changed = true;
+  }
+  return changed;
+}
+
+bool OpenOperands::rewrite(Node& csg, bool closeCovered, std::optional<AABB>& povBox) {
   const NodeKind kind = csg.kind;
   if (kind != NodeKind::Merge && kind != NodeKind::Intersection && kind != NodeKind::Difference)
     return true;
+  const bool allSolidRead =
+      std::all_of(csg.children.begin(), csg.children.end(),
+                  [&](const auto& c) { return c->isLight() || (c->isSolid() && !rewritten(*c)); });
+  if (allSolidRead) return true;
+  const AABB before = nodeBox(csg, Mat4(1.0), knownBoxes());
+  if (closeCovered && closeCoveredDiscs(csg)) povBox = before;
   // The operands in order (lights aside), each with its insides; a solid joins the solids'
   // own operation. Nothing is changed when all are solids or one's inside is not known.
   std::vector<PovInsides> insides;
@@ -179,7 +245,8 @@ bool OpenOperands::rewrite(Node& csg) {
     insides.push_back(std::move(in));
   }
   if (allSolid) return true;
-  const AABB box = nodeBox(csg, Mat4(1.0), knownBoxes());
+  const AABB box = before;
+  povBox = box;
   std::vector<std::unique_ptr<Node>> lights, operands;
   for (auto& c : csg.children) {
     if (c->isLight()) {

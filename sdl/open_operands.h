@@ -20,6 +20,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace lucent::sdl {
 
@@ -36,9 +37,15 @@ class OpenOperands {
  public:
   // Rewrites `csg` (a merge, intersection or difference read from POV-Ray) in place when
   // some of its operands are not solids and each has a POV-Ray inside Lucent can express;
-  // leaves it as it is otherwise. False when nothing of it is left (the object is then
-  // dropped: an empty union is no scene's).
-  bool rewrite(Node& csg);
+  // leaves it as it is otherwise. With `closeCovered`, a disc that covers the whole cut it
+  // makes in an intersection or difference (an operand it keeps within projects onto its
+  // plane within its radius; no hole) closes it: it becomes its half-space, a <plane>, and
+  // the operation stays a solid, whose glass refracts as one (a top-level operation, whose
+  // box POV-Ray keeps is then its bound; an operand's is kept for the operation around it
+  // only when it is rewritten). `povBox` receives POV-Ray's box of the operation when it
+  // was changed. False when nothing of it is left (the object is then dropped: an empty
+  // union is no scene's).
+  bool rewrite(Node& csg, bool closeCovered, std::optional<AABB>& povBox);
 
   // A clip (clipped_by) asks its objects' inside only: one that is not a solid is replaced
   // by its inside (a disc by its half-space). False when a clip object is inside nowhere
@@ -64,6 +71,8 @@ class OpenOperands {
     AABB box;
   };
   const Rewritten* rewritten(const Node& n) const;
+  // Makes each disc of an intersection or difference that covers its cut its half-space.
+  bool closeCoveredDiscs(Node& csg) const;
   std::map<const Node*, Rewritten> rewritten_;
 };
 

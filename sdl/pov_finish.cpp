@@ -120,6 +120,8 @@ MaterialImport importMaterial(const PovPigment& pigment, const PovFinish& finish
   m.irid = finish.irid;
   m.iridThickness = finish.iridThickness;
   m.iridTurbulence = finish.iridTurbulence;
+  // POV-Ray's noise point is Lucent's with z negated (the importer's space).
+  m.iridLeftHanded = finish.iridTurbulence != 0.0;
   const bool transmits = m.isTransmissive();
 
   m.reflective = importReflection(finish, m);

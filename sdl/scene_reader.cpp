@@ -684,10 +684,11 @@ std::unique_ptr<Node> SceneReader::toNode(const PovObject& o, const Inherited& i
   // is its operands' met, a difference's its first operand's), and a disc's half-space
   // lets the surfaces kept reach beyond that box: the box is kept as a bound.
   const NodeKind operation = n->kind;
-  if (!openOperands_.rewrite(*n)) return nullptr;
-  if (inherited.framed &&
+  std::optional<AABB> povBox;
+  if (!openOperands_.rewrite(*n, inherited.framed, povBox)) return nullptr;
+  if (povBox && inherited.framed &&
       (operation == NodeKind::Intersection || operation == NodeKind::Difference))
-    if (const AABB* box = openOperands_.povBox(*n)) addBoundBox(*box, o.loc, *n);
+    addBoundBox(*povBox, o.loc, *n);
   return n;
 }
 

@@ -35,14 +35,14 @@ void checkColor(const Color& c, double r, double g, double b, double margin) {
   CHECK(c.b == Approx(b).margin(margin));
 }
 
-// The scene of the POV-Ray test: the plane z = 0 with `m`, the parallel light, no ambient;
-// the colour seen along +z through (x, y).
-Color planeSeenAt(const Material& m, double x, double y) {
+// The scene of the POV-Ray test: the plane z = z0 (0 in POV-Ray's) with `m`, the parallel
+// light, no ambient; the colour seen along +z through (x, y).
+Color planeSeenAt(const Material& m, double x, double y, double z0 = 0.0) {
   Scene scene;
   scene.render.ambient = Color(0.0f);
   scene.render.background = Color(1.0f);
   scene.cameras.push_back(lookingFrom(Vec3(0, 0, -5), Vec3(0)));
-  addShape(scene, PlaneSpec{Vec3(0, 0, -1), 0.0}, addMaterial(scene, m));
+  addShape(scene, PlaneSpec{Vec3(0, 0, -1), -z0}, addMaterial(scene, m));
   Light sun;
   sun.type = LightType::Directional;
   sun.direction = -kToLight;
@@ -152,4 +152,22 @@ TEST_CASE("irid through the tracer: POV-Ray's pixels, turbulence at the world po
   // Elsewhere the thickness, and so the colour, differs.
   const Color other = planeSeenAt(film, 1.37, -0.6);
   CHECK(std::abs(other.g - c.g) > 0.01);
+}
+
+TEST_CASE("irid-left-handed takes the film's noise at the world point mirrored in z",
+          "[render][finish][irid]") {
+  Material film;
+  film.diffuse = Color(0.5f);
+  film.irid = 0.3;
+  film.iridThickness = 0.4;
+  film.iridTurbulence = 0.7;
+  Material left = film;
+  left.iridLeftHanded = true;
+  // At z = 0.8 the left-handed film is the right-handed one's at z = -0.8 (POV-Ray's point
+  // of an imported scene), and differs from the right-handed one's own there.
+  const Color a = planeSeenAt(left, 0.37, 0.21, 0.8);
+  const Color b = planeSeenAt(film, 0.37, 0.21, -0.8);
+  const Color c = planeSeenAt(film, 0.37, 0.21, 0.8);
+  checkColor(a, b.r, b.g, b.b, 1e-6);
+  CHECK(std::abs(a.g - c.g) + std::abs(a.r - c.r) > 0.01);
 }

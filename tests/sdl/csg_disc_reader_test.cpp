@@ -36,7 +36,7 @@ TEST_CASE(
     "csg disc reader: an intersection with a disc is the solid cut by its half-space "
     "and the disc cut by the solid",
     "[sdl][scene][csg][disc]") {
-  auto r = readScene("intersection { sphere { 0, 1 } disc { <0, 0.25, 0>, y, 2 } }\n");
+  auto r = readScene("intersection { sphere { 0, 1 } disc { <0, 0.25, 0>, y, 0.9 } }\n");
   REQUIRE(r->load.scene);
   const Node& n = topNode(*r->load.scene, 0);
   CHECK(n.kind == NodeKind::Union);
@@ -62,8 +62,8 @@ TEST_CASE(
   REQUIRE(box);
   CHECK(box->min.y == Approx(0.249));
   CHECK(box->max.y == Approx(0.251));
-  CHECK(box->min.x == Approx(-1.0));
-  CHECK(box->max.x == Approx(1.0));
+  CHECK(box->min.x == Approx(-0.9));
+  CHECK(box->max.x == Approx(0.9));
 }
 
 TEST_CASE(
@@ -71,7 +71,7 @@ TEST_CASE(
     "above and the disc outside it",
     "[sdl][scene][csg][disc]") {
   auto r = readScene(
-      "difference { sphere { 0, 1 } disc { 0, y, 2 } }\n"
+      "difference { sphere { 0, 1 } disc { 0, y, 0.9 } }\n"
       "merge { box { -1, 1 } disc { 0, y, 2 } }\n");
   REQUIRE(r->load.scene);
   const Node& d = topNode(*r->load.scene, 0);
@@ -141,11 +141,46 @@ TEST_CASE("csg disc reader: an inverse operation with a disc keeps the same surf
           "[sdl][scene][csg][disc]") {
   // POV-Ray inverts each operand and makes the intersection a merge: the sphere above the
   // plane and the disc inside the sphere, as without inverse; its inside is swapped.
-  auto r = readScene("difference { sphere { 0, 1 } disc { 0, y, 2 } inverse }\n");
+  auto r = readScene("difference { sphere { 0, 1 } disc { 0, y, 0.9 } inverse }\n");
   REQUIRE(r->load.scene);
   const Node& n = topNode(*r->load.scene, 0);
   CHECK_FALSE(n.inverse);
   REQUIRE(n.children.size() == 2);
   CHECK(n.children[0]->clip[0]->inverse);
   CHECK_FALSE(n.children[1]->clip[0]->inverse);
+}
+
+TEST_CASE(
+    "csg disc reader: a disc that covers the cut closes it, where POV-Ray frames the "
+    "operation",
+    "[sdl][scene][csg][disc]") {
+  // desk.pov's paperweight: the sphere projects onto the plane within radius 10 < 10.1, so
+  // the disc's half-space makes a closed solid (its glass refracts through the flat face).
+  auto r = readScene(
+      "intersection { sphere { <0, -5, 0>, 10 } disc { 0, -y, 10.1 } }\n"
+      "intersection { sphere { <0, -5, 0>, 10 } disc { 0, -y, 9.9 } }\n"
+      "difference { box { -1, 1 } intersection { sphere { 0, 1 } disc { 0, y, 2 } } }\n");
+  REQUIRE(r->load.scene);
+  const Node& covered = topNode(*r->load.scene, 0);
+  CHECK(covered.kind == NodeKind::Intersection);
+  REQUIRE(covered.children.size() == 2);
+  const PlaneSpec* half = shapeOf<PlaneSpec>(*covered.children[1]);
+  REQUIRE(half);
+  CHECK(half->normal.y == Approx(-1.0));
+  CHECK(half->offset == Approx(0.0));
+  // POV-Ray's box of it (the sphere's met with the disc's, 0.002 thick) is its bound.
+  REQUIRE(covered.bound.size() == 1);
+  const BoxSpec* box = shapeOf<BoxSpec>(*covered.bound[0]);
+  REQUIRE(box);
+  CHECK(box->min.y == Approx(-0.001));
+  CHECK(box->max.y == Approx(0.001));
+  // A disc narrower than the sphere's section leaves the cut open: the rewritten union.
+  const Node& open = topNode(*r->load.scene, 1);
+  CHECK(open.kind == NodeKind::Union);
+  CHECK(open.element == "intersection");
+  // Within another operation the disc is not closed: the operation around it keeps the
+  // box POV-Ray gives the rewritten one.
+  const Node& nested = topNode(*r->load.scene, 2);
+  CHECK(nested.element == "difference");
+  CHECK(nested.kind == NodeKind::Union);
 }

@@ -6,7 +6,8 @@
 // below the disc), a capped sphere minus a box (a rewritten operation as an operand), a
 // union of a sphere and a disc in an intersection, an inverse difference in an
 // intersection, solids clipped by a disc and by a union of a disc and a box, and one
-// clipped by a polygon (inside nowhere: nothing is left). Where POV-Ray links an
+// clipped by a polygon (inside nowhere: nothing is left). A glass lens, a sphere cut by a
+// disc that covers the cut (its flat face a closed wall: the lens refracts as a solid). Where POV-Ray links an
 // intersection or difference to the frame, its box (its operands' boxes met, a
 // difference's first operand's; a disc's box is 0.002 thick) bounds what rays see of it.
 #version 3.7;
@@ -76,4 +77,13 @@ intersection {
   pigment { rgb 0.8 }
   rotate x*-30
   translate <-2.6, -0.7, -1.9>
+}
+intersection {
+  sphere { <0, -0.5, 0>, 1 }
+  disc { 0, -y, 1.01 }
+  material {
+    texture { pigment { color rgbf <0.8, 1, 0.95, 0.9> } finish { ambient 0.1 diffuse 0.1 reflection 0.1 specular 0.8 roughness 0.003 } }
+    interior { ior 1.5 }
+  }
+  translate <0.2, -1.3, -2.9>
 }
