@@ -7,6 +7,8 @@
 #include "element_parsers.h"
 #include "pattern_parser.h"
 
+#include "scenegraph/shapes/mesh_lists.h"
+
 namespace lucent {
 
 namespace {
@@ -81,6 +83,17 @@ Camera::FocalBlur parseFocalBlur(ElementReader& r) {
   return blur;
 }
 
+// A mesh camera's <mesh>: its faces as written, and its transform (render/mesh_camera.h).
+Camera::FaceMesh parseCameraMesh(ElementReader& r) {
+  Camera::FaceMesh m;
+  m.loc = r.loc();
+  r.checkAttributes({"positions", "indices", "normals", "uvs", "transform"});
+  ElementInput in(r);
+  m.data = readMeshLists(in);
+  m.transform = r.transform("transform");
+  return m;
+}
+
 }  // namespace
 
 void parseCamera(ElementReader& r) {
@@ -104,10 +117,16 @@ void parseCamera(ElementReader& r) {
   // <normal>: POV-Ray's camera normal, which bends the primary rays (render/camera_normal.h);
   // <focal-blur>: POV-Ray's focal blur (render/focal_blur.h). One of each at most.
   std::optional<SourceLoc> normalLoc, blurLoc;
+  const bool mesh = cam.type == CameraType::Mesh;
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader child(ctx, r.file(), n);
     const std::string_view name = n.name();
-    if (name != "normal" && name != "focal-blur") {
+    if (mesh && name == "mesh") {
+      cam.meshes.push_back(parseCameraMesh(child));
+    } else if (mesh) {
+      child.error("a mesh camera takes <mesh> children (the faces its rays start on), got <" +
+                  std::string(name) + ">");
+    } else if (name != "normal" && name != "focal-blur") {
       child.error("<camera> takes a <normal> (POV-Ray's camera normal) and a <focal-blur>, got <" +
                   std::string(name) + ">");
     } else if (name == "normal" && normalLoc) {
@@ -130,6 +149,15 @@ void parseCamera(ElementReader& r) {
       cam.focalBlur = parseFocalBlur(child);
     }
   });
+  if (mesh && cam.meshes.empty())
+    r.error("a mesh camera needs at least one <mesh> child (the faces its rays start on)");
+  else if (mesh && cam.distribution == 0 &&
+           static_cast<size_t>(cam.raysPerPixel) > cam.meshes.size())
+    r.attrError("rays-per-pixel",
+                "a mesh camera of distribution 0 takes ray r of each sample from mesh r: "
+                "rays-per-pixel (" +
+                    std::to_string(cam.raysPerPixel) + ") must not exceed its " +
+                    std::to_string(cam.meshes.size()) + " meshes");
   ctx.scene.cameras.push_back(std::move(cam));
 }
 

@@ -199,10 +199,31 @@ class SceneWriter {
       for (auto& kv : probed(c, plain, attr.read, c.loc, "camera", false)) a.push_back(kv);
     }
     out_.source(c.loc);
-    out_.open("camera", a, !c.normal && !c.focalBlur);
+    const bool children = c.normal || c.focalBlur || !c.meshes.empty();
+    out_.open("camera", a, !children);
     if (c.normal) writeNormalElement(*c.normal, c.loc, out_, opt_.folder);
     if (c.focalBlur) writeFocalBlur(*c.focalBlur);
-    if (c.normal || c.focalBlur) out_.close("camera");
+    for (const Camera::FaceMesh& m : c.meshes) writeCameraMesh(m);
+    if (children) out_.close("camera");
+  }
+
+  // A mesh camera's faces: its lists as they are (the camera takes them in order).
+  void writeCameraMesh(const Camera::FaceMesh& m) {
+    if (!m.data) return;
+    const MeshData& d = *m.data;
+    std::string positions, indices, normals, uvs;
+    for (const Vec3& p : d.positions) positions += (positions.empty() ? "" : " ") + xmlVector(p);
+    for (const auto& tri : d.triangles)
+      for (uint32_t i : tri) indices += (indices.empty() ? "" : " ") + std::to_string(i);
+    for (const Vec3& n : d.normals) normals += (normals.empty() ? "" : " ") + xmlVector(n);
+    for (const Vec2& uv : d.uvs)
+      uvs += (uvs.empty() ? "" : " ") + xmlNumber(uv.x) + " " + xmlNumber(uv.y);
+    Attributes a{{"positions", positions}, {"indices", indices}};
+    if (!d.normals.empty()) a.emplace_back("normals", normals);
+    if (!d.uvs.empty()) a.emplace_back("uvs", uvs);
+    if (m.transform != Mat4(1.0)) a.emplace_back("transform", transformText(m.transform, m.loc));
+    out_.source(m.loc);
+    out_.open("mesh", a, true);
   }
 
   void writeFocalBlur(const Camera::FocalBlur& b) {

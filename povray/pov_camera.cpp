@@ -1,5 +1,6 @@
 #include "pov_camera.h"
 
+#include "pov_mesh_camera.h"
 #include "pov_patterns.h"
 
 #include <fmt/core.h>
@@ -136,6 +137,10 @@ void writeImagePlane(const Camera& camera, const PovCameraFrame& frame, PovWrite
 void writeCamera(const Camera& camera, const RenderSettings& render, PovWriter& out,
                  PovIssues& issues) {
   const CameraTypeInfo& type = cameraTypeInfo(camera.type);
+  if (camera.type == CameraType::Mesh) {
+    writeMeshCamera(camera, out, issues);
+    return;
+  }
   PovCameraFrame frame = povCameraFrame(camera);
   if (!frame.ok) {
     issues.error(camera.loc,

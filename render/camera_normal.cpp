@@ -74,6 +74,7 @@ Vec3 cameraNormalPoint(const Camera& camera, const CameraFrame& frame, const Vec
     case CameraType::Octahedral:
     case CameraType::Cubemap:
     case CameraType::Fibonacci:
+    case CameraType::Mesh:  // takes no normal (lang/camera_parser.cpp)
       break;
   }
   return Vec3(s, t, 0.0);

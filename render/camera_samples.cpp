@@ -18,10 +18,25 @@ CameraSamples::CameraSamples(const Projection& projection, const Tracer& tracer,
 
 Color CameraSamples::trace(const Vec2& film, const Vec2& lens, uint32_t x, uint32_t y,
                            uint32_t sample, TraceContext& context) const {
-  Ray ray;
-  if (!projection_.generateRay(film, lens, ray)) return background_;
-  PathSeed seed{x, y, sample, 0};
-  return tracer_.traceCamera(ray, cameraMedia_, seed, context);
+  const int rays = projection_.raysPerSample();
+  if (rays == 1 && projection_.fixedOrigin()) {
+    Ray ray;
+    if (!projection_.generateRay(film, lens, ray)) return background_;
+    PathSeed seed{x, y, sample, 0};
+    return tracer_.traceCamera(ray, cameraMedia_, seed, context);
+  }
+  // A mesh camera's sample: the mean of its rays that exist (POV-Ray's), each in the solids
+  // about its own start; the background when none does.
+  Color sum(0.0f);
+  int traced = 0;
+  for (int k = 0; k < rays; ++k) {
+    Ray ray;
+    if (!projection_.generateRayNumber(film, lens, k, ray)) continue;
+    PathSeed seed{x, y, sample ^ (static_cast<uint32_t>(k) * 0x9e3779b9u), 0};
+    sum += tracer_.traceCamera(ray, tracer_.mediaAt(ray.o), seed, context);
+    ++traced;
+  }
+  return traced > 0 ? sum / static_cast<float>(traced) : background_;
 }
 
 Color CameraSamples::sampleAt(const Vec2& film, const Vec2& lens, uint32_t x, uint32_t y,

@@ -7,6 +7,7 @@
 #include "fisheye.h"
 #include "focal_blur.h"
 #include "lenslet.h"
+#include "mesh_camera.h"
 #include "octahedral.h"
 #include "omnimax.h"
 #include "orthographic.h"
@@ -90,6 +91,8 @@ std::unique_ptr<Projection> projectionOfType(const Camera& camera, int width, in
       return std::make_unique<PanoramicProjection>(frame, camera, width, height);
     case CameraType::Omnimax:
       return std::make_unique<OmnimaxProjection>(frame, camera, width, height);
+    case CameraType::Mesh:
+      return std::make_unique<MeshCameraProjection>(frame, camera, width, height);
   }
   throw std::logic_error(fmt::format("{}: camera type {} has no projection", camera.loc.str(),
                                      static_cast<int>(camera.type)));

@@ -23,6 +23,17 @@ class Projection {
   // ray.d is unit length, so the camera's near/far are distances along the ray.
   virtual bool generateRay(const Vec2& film, const Vec2& lens, Ray& ray) const = 0;
 
+  // The rays a sample averages (those that exist): 1 but for a mesh camera's
+  // rays-per-pixel; ray `index` of them.
+  virtual int raysPerSample() const { return 1; }
+  virtual bool generateRayNumber(const Vec2& film, const Vec2& lens, int /*index*/,
+                                 Ray& ray) const {
+    return generateRay(film, lens, ray);
+  }
+  // Whether every ray starts at the frame's origin or close to it, so that the solids the
+  // camera stands in are those about the origin (a mesh camera's rays start anywhere).
+  virtual bool fixedOrigin() const { return true; }
+
   const CameraFrame& frame() const { return frame_; }
 
  protected:

@@ -27,6 +27,20 @@ std::string ratio(int a, int b) { return fmt::format("{}/{}", a, b); }
 // compression, a horizontal fov below 180 (the hard squeeze needs the image within 90
 // degrees of the axis). What depends on the aspect ratio (a vertical fov whose image is too
 // wide, a diagonal fov) is refused when the image is framed, at the same file:line:col.
+// POV-Ray's rules for its mesh camera: one ray per pixel for distributions 2 and 3 (their
+// rays would all be the same), smooth for distribution 3 only (the others start at the
+// face's centroid). The meshes, children of the element, are checked where they are read.
+void checkMeshCamera(const Camera& cam, AttributeInput& in) {
+  if (cam.distribution >= 2 && cam.raysPerPixel != 1)
+    in.attrError("rays-per-pixel", fmt::format("a mesh camera of distribution {} takes one ray "
+                                               "per pixel (as POV-Ray: its rays would be the same)",
+                                               cam.distribution));
+  if (cam.smooth && cam.distribution != 3)
+    in.attrError("smooth",
+                 "smooth is for a mesh camera of distribution 3 (the others start each ray at "
+                 "its face's centroid, along the face's normal), as POV-Ray");
+}
+
 void checkPaniniFov(const Camera& cam, AttributeInput& in) {
   const double d = cam.distance, half = 0.5 * radians(cam.fov);
   const double limit = paniniLongitudeLimit(d);
@@ -279,6 +293,16 @@ std::optional<CameraTypeInfo> row(CameraType t) {
           "outside it: background.";
       r.noFov = "its lens is fixed at about 180 degrees across its image circle";
       r.pov = {"omnimax", "omnimax", writeOmnimax, false};
+      return r;
+    case CameraType::Mesh:
+      r.name = "mesh";
+      r.doc =
+          "POV-Ray's mesh camera: each ray starts on a face of a <mesh> child and leaves along "
+          "its normal; distribution picks the face of each film point.";
+      r.noFov = "its faces give every ray";
+      r.check = checkMeshCamera;
+      // Written by povray/pov_mesh_camera.cpp: its block holds meshes, not a frame.
+      r.pov = {"mesh_camera", "mesh", nullptr, false};
       return r;
   }
   return std::nullopt;
@@ -599,6 +623,40 @@ const std::vector<CameraAttribute>& cameraAttributes() {
              "right-length right + tan(lat) up-length up + sin(lon) forward. Default 1."),
       number("up-length", &Camera::upLength, NumberRule::positive(), {T::Panoramic},
              "panoramic: POV-Ray's |up| / |direction| (see right-length). Default 1."),
+      schemaType(entry(
+                     "rays-per-pixel", AttrType::Number, "", {T::Mesh},
+                     [](Camera& c, AttributeInput& in) {
+                       c.raysPerPixel = static_cast<int>(
+                           in.integer("rays-per-pixel", c.raysPerPixel, 1, Camera::kMaxMeshRays));
+                     },
+                     "mesh: rays averaged into each camera sample, 1 to 4096 (distribution 0: "
+                     "ray r from mesh r, at most the number of meshes; 2 and 3: 1). Default 1."),
+                 "imageSize"),
+      schemaType(entry(
+                     "distribution", AttrType::Number, "", {T::Mesh},
+                     [](Camera& c, AttributeInput& in) {
+                       c.distribution =
+                           static_cast<int>(in.integer("distribution", c.distribution, 0, 3));
+                     },
+                     "mesh: which face a film point takes (POV-Ray's distribution type). 0: face "
+                     "row * width + column of mesh r for ray r; 1: the same index over the "
+                     "meshes' faces in turn; 2: the meshes side by side across the image; 3: "
+                     "the face whose uvs hold the film point's (u, v), of the first mesh. "
+                     "Default 0."),
+                 "meshCameraDistribution"),
+      number("offset", &Camera::offset, NumberRule::any(), {T::Mesh},
+             "mesh: the ray's start moved this far along the face's normal (POV-Ray's "
+             "location z). Default 0."),
+      entry(
+          "reverse", AttrType::Boolean, "", {T::Mesh},
+          [](Camera& c, AttributeInput& in) { c.reverse = in.boolean("reverse", c.reverse); },
+          "mesh: true: the rays leave against the faces' normals (POV-Ray's direction z below "
+          "0). Default false."),
+      entry(
+          "smooth", AttrType::Boolean, "", {T::Mesh},
+          [](Camera& c, AttributeInput& in) { c.smooth = in.boolean("smooth", c.smooth); },
+          "mesh, distribution 3: true: the ray leaves along the mesh's vertex normals "
+          "interpolated at its start (POV-Ray's smooth). Default false."),
   };
   return table;
 }

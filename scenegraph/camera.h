@@ -8,8 +8,10 @@
 #include "source_loc.h"
 
 #include "primitives/math.h"
+#include "primitives/mesh_data.h"
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,7 +36,8 @@ enum class CameraType {
   UltraWideAngle,
   Cylinder,
   Panoramic,
-  Omnimax
+  Omnimax,
+  Mesh
 };
 enum class FovAxis { Horizontal, Vertical, Diagonal };
 enum class FisheyeMapping { Equidistant, Equisolid };
@@ -119,6 +122,20 @@ struct Camera {
   };
   std::optional<FocalBlur> focalBlur;
   static constexpr int kMaxFocalBlurSamples = 65536;
+  // mesh (POV-Ray's mesh_camera): each ray starts on a face of one of `meshes` and leaves
+  // along its normal (render/mesh_camera.h says which face a film point takes).
+  struct FaceMesh {
+    SourceLoc loc;
+    std::shared_ptr<const MeshData> data;  // positions and triangles in order, as written
+    Mat4 transform{1.0};                   // before the camera's own
+  };
+  std::vector<FaceMesh> meshes;
+  int raysPerPixel = 1;  // averaged into each sample
+  int distribution = 0;  // POV-Ray's distribution type, 0 to 3
+  double offset = 0.0;   // the ray's start moved this far along the face's normal
+  bool reverse = false;  // the ray leaves against the face's normal
+  bool smooth = false;   // distribution 3: the vertex normals interpolated
+  static constexpr int kMaxMeshRays = 4096;
   // <normal>: POV-Ray's camera normal. Each primary ray's direction is bent as a surface
   // normal would be, by the pattern at the image point (x0, y0, 0) (render/camera_normal.h).
   std::optional<NormalSpec> normal;

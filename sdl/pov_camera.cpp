@@ -165,6 +165,8 @@ bool povPrimaryRay(const PovCamera& c, const PovCameraVectors& v, int i, int j, 
       direction = glm::normalize(direction);
       return true;
     }
+    case PovCameraType::Mesh:
+      return false;  // its rays come from its faces (render/mesh_camera.h)
   }
   return false;
 }
@@ -189,6 +191,8 @@ const char* povTypeName(PovCameraType t) {
       return "cylinder";
     case PovCameraType::Spherical:
       return "spherical";
+    case PovCameraType::Mesh:
+      return "mesh_camera";
   }
   return "?";
 }
@@ -404,6 +408,20 @@ CameraImport importCamera(const PovCamera& pov, int width, int height) {
       camera.frameAspect = glm::length(v.right) / glm::length(v.up);
       placeFrame(v, camera, out.differences);
       return out;
+    case PovCameraType::Mesh: {
+      // The faces give every ray; of the camera's vectors (after its transforms) only the
+      // location's z (the offset along each face's normal) and the direction's z (below
+      // -EPSILON: the rays reversed) count, as in POV-Ray.
+      camera.type = CameraType::Mesh;
+      camera.meshes = pov.mesh.meshes;
+      camera.raysPerPixel = pov.mesh.raysPerPixel;
+      camera.distribution = pov.mesh.distribution;
+      camera.smooth = pov.mesh.smooth;
+      camera.offset = v.location.z;
+      camera.reverse = v.direction.z < -1e-10;
+      if (pov.mesh.maxDistance > 0.0) camera.far = pov.mesh.maxDistance;
+      return out;
+    }
   }
   out.error = fmt::format("'{}' is not supported by Lucent", povTypeName(pov.type));
   return out;
@@ -447,6 +465,10 @@ void importFocalBlur(const PovCamera& pov, Camera& imported,
     case PovCameraType::Omnimax:
       radius = distance / transformedLength;
       break;
+    case PovCameraType::Mesh:
+      differences.push_back(
+          "focal blur on a mesh camera: left out (Lucent's mesh camera takes no lens)");
+      return;
     case PovCameraType::UltraWideAngle:
     case PovCameraType::Cylinder:
     case PovCameraType::Panoramic:

@@ -22,6 +22,7 @@ enum class PovCameraType {
   Panoramic,
   Cylinder,  // cylinder 1 to 4
   Spherical,
+  Mesh,  // mesh_camera
 };
 
 // What a `camera { ... }` block says, in POV-Ray's space. Each modifier holds the last
@@ -65,6 +66,16 @@ struct PovCamera {
     std::optional<Vec3> focalPoint;
   };
   FocalBlur blur;
+  // mesh_camera { rays distribution [, max_distance] mesh {...}... [smooth] }: the meshes'
+  // faces and transforms in Lucent's space; max_distance 0: none.
+  struct MeshCamera {
+    int raysPerPixel = 1;
+    int distribution = 0;
+    double maxDistance = 0.0;
+    bool smooth = false;
+    std::vector<Camera::FaceMesh> meshes;
+  };
+  MeshCamera mesh;
 };
 
 // The camera's vectors once POV-Ray has applied its modifiers, in POV-Ray's space:

@@ -60,6 +60,7 @@ PovCamera SceneReader::readCamera(TokenStream& in) {
     else if (w == "omnimax") c.type = PovCameraType::Omnimax;
     else if (w == "panoramic") c.type = PovCameraType::Panoramic;
     else if (w == "spherical") c.type = PovCameraType::Spherical;
+    else if (w == "mesh_camera") readMeshCamera(t, in, c);
     else if (w == "cylinder") {
       c.type = PovCameraType::Cylinder;
       const Token number = in.peek();
@@ -132,6 +133,51 @@ PovCamera SceneReader::readCamera(TokenStream& in) {
       return c;
     }
   }
+}
+
+// mesh_camera { RAYS DISTRIBUTION [MAX_DISTANCE] mesh {...} ... [smooth] } (no commas, as
+// POV-Ray reads it), with POV-Ray's checks. Each mesh's faces are its triangles as read, in order;
+// its transforms place them (a texture on it plays no part).
+void SceneReader::readMeshCamera(const Token& t, TokenStream& in, PovCamera& c) {
+  c.type = PovCameraType::Mesh;
+  PovCamera::MeshCamera m;
+  in.expect("{");
+  const Token raysAt = in.peek();
+  const double rays = in.parseFloat();
+  if (!(rays >= 1.0)) in.error(raysAt, "rays per pixel may not be 0");
+  if (rays > Camera::kMaxMeshRays)
+    in.error(raysAt, fmt::format("{} rays per pixel: Lucent's mesh camera takes at most {}", rays,
+                                 Camera::kMaxMeshRays));
+  m.raysPerPixel = static_cast<int>(rays);
+  const Token distributionAt = in.peek();
+  const double distribution = in.parseFloat();
+  if (!(distribution >= 0.0 && distribution < 4.0))
+    in.error(distributionAt, "unrecognized mesh camera distribution (0 to 3)");
+  m.distribution = static_cast<int>(distribution);
+  if (m.distribution >= 2 && m.raysPerPixel != 1)
+    in.error(raysAt, "rays per pixel must be 1 for distribution 2 or 3 (as POV-Ray)");
+  if (startsNumber(in.peek())) m.maxDistance = in.parseFloat();
+  while (isWord(in.peek(), "mesh") || isWord(in.peek(), "mesh2")) {
+    const Token meshAt = in.next();
+    const PovObject mesh = readObject(meshAt, in);
+    if (!mesh.faces) in.error(meshAt, "the mesh camera's " + mesh.keyword + " has no faces");
+    m.meshes.push_back({meshAt.loc(), mesh.faces, mesh.transform.lucentMatrix()});
+  }
+  if (isWord(in.peek(), "smooth")) {
+    const Token smooth = in.next();
+    if (m.distribution != 3)
+      in.error(smooth, "smooth can only be used with distribution 3 (as POV-Ray)");
+    m.smooth = true;
+  }
+  if (m.meshes.empty())
+    in.error(t, "a mesh or mesh2 expected in mesh_camera, not " + in.peek().describe());
+  in.expect("}");
+  if (m.distribution == 0 && static_cast<size_t>(m.raysPerPixel) > m.meshes.size())
+    in.error(raysAt, "rays per pixel must not exceed the number of meshes for distribution 0");
+  if (m.distribution == 3 && m.meshes.size() > 1)
+    warn(in, m.meshes[1].loc,
+         "additional meshes after the first are ignored for distribution 3 (as POV-Ray)");
+  c.mesh = std::move(m);
 }
 
 PovLight SceneReader::readLight(const SourceLoc& loc, TokenStream& in) {

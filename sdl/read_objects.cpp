@@ -99,6 +99,16 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
     return o;
   }
   in.expect("{");
+  if (o.keyword != "object" && o.keyword != "light_group") {
+    // POV-Ray's `SHAPE { IDENTIFIER modifiers }` (its Parse_Object_Id): a copy of the
+    // declared object, whatever its kind, as `object { IDENTIFIER ... }`.
+    if (const auto* item = use<ObjectItem>(in.peek(), in)) {
+      in.next();
+      o = item->object;
+      readObjectModifiers(o, in);
+      return o;
+    }
+  }
   if (o.keyword == "object") {
     const Token first = in.next();
     const auto* item = use<ObjectItem>(first, in);

@@ -1020,6 +1020,29 @@ std::shared_ptr<const MeshData> meshData(const MeshBuild& b) {
   return d;
 }
 
+// The triangles as read, in order, each with its own corners: a mesh camera's faces.
+std::shared_ptr<const MeshData> faces(const MeshBuild& b) {
+  auto d = std::make_shared<MeshData>();
+  bool anyNormals = false, anyUvs = false;
+  for (const auto& n : b.normals) anyNormals |= n.has_value();
+  for (const auto& uv : b.uvs) anyUvs |= uv.has_value();
+  for (size_t t = 0; t < b.corners.size(); ++t) {
+    const auto& p = b.corners[t];
+    const uint32_t first = static_cast<uint32_t>(d->positions.size());
+    const Vec3 face = glm::cross(p[1] - p[0], p[2] - p[0]);
+    for (size_t k = 0; k < 3; ++k) {
+      d->positions.push_back(lucentFromPov(p[k]));
+      if (anyNormals) {
+        const Vec3 n = b.normals[t] ? (*b.normals[t])[k] : face;
+        d->normals.push_back(glm::length(n) > 0.0 ? glm::normalize(lucentFromPov(n)) : Vec3(0.0));
+      }
+      if (anyUvs) d->uvs.push_back(b.uvs[t] ? (*b.uvs[t])[k] : Vec2(0.0));
+    }
+    d->triangles.push_back({first, first + 1, first + 2});
+  }
+  return d;
+}
+
 // POV-Ray drops a triangle whose corners are (nearly) on one line.
 bool degenerate(const std::array<Vec3, 3>& p) {
   return glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) < kPovEpsilon;
@@ -1198,6 +1221,7 @@ void SceneReader::readMesh2(PovObject& o, TokenStream& in) {
 void SceneReader::finishMeshShape(PovObject& o, TokenStream& in, const MeshBuild& b,
                                   bool insideVector) {
   if (b.corners.empty()) in.error(o.loc, "the " + o.keyword + " has no triangle (of some area)");
+  o.faces = faces(b);
   MeshSpec s;
   try {
     s.data = meshData(b);

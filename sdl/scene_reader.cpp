@@ -869,7 +869,10 @@ void SceneReader::finishScene(TokenStream& in) {
   importFocalBlur(camera, imported.camera, imported.differences);
   for (const std::string& d : imported.differences) warn(in, cameraLoc, d);
   imported.camera.loc = cameraLoc;
-  importCameraNormal(camera, imported.camera, in);
+  if (camera.type == PovCameraType::Mesh && camera.normal)
+    warn(in, camera.normalLoc,
+         "the camera's normal on a mesh camera: left out (Lucent's mesh camera takes none)");
+  else importCameraNormal(camera, imported.camera, in);
   if (imported.camera.normal) forEachNormalPattern(*imported.camera.normal, noise);
   scene_.cameras = {imported.camera};
   try {

@@ -119,7 +119,10 @@ struct PovObject {
   std::string keyword;  // "sphere", "union", "light_source"...
   SourceLoc loc;
   NodeKind kind = NodeKind::Shape;
-  SharedOptional<ShapeSpec> shape;               // in Lucent's space (z negated)
+  SharedOptional<ShapeSpec> shape;  // in Lucent's space (z negated)
+  // A mesh's or mesh2's triangles as read, in order, before Lucent's repairs (in Lucent's
+  // space): the faces a mesh camera takes.
+  std::shared_ptr<const MeshData> faces;
   SharedOptional<PovLight> light;                // kind == Light
   SharedValue<std::vector<PovObject>> children;  // shared by copies until one changes
   PovTransform transform;                        // the object's transforms, in POV-Ray's space
@@ -421,6 +424,8 @@ class SceneReader : public ItemReader {
 
   // read_camera_light.cpp
   PovCamera readCamera(TokenStream& in);
+  // mesh_camera { ... } (the keyword read) into c.
+  void readMeshCamera(const Token& t, TokenStream& in, PovCamera& c);
   PovLight readLight(const SourceLoc& loc, TokenStream& in);
   void readGlobalSettings(TokenStream& in);
   void readBackground(TokenStream& in);

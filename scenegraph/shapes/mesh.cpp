@@ -4,6 +4,8 @@
 // the vertex count; normals: one per position (normalised); uvs: one pair per position.
 // smooth = auto (the file's normals if any) | true (compute vertex normals) | false.
 // A solid when closed and consistently oriented (primitives/triangle_mesh.h).
+#include "mesh_lists.h"
+
 #include "scenegraph/shape_type.h"
 
 #include "meshes/mesh_repair.h"
@@ -99,7 +101,8 @@ bool readUvs(AttributeInput& in, MeshData& data) {
   return true;
 }
 
-std::shared_ptr<const MeshData> buildInline(AttributeInput& in) {
+// The inline lists as written: no repair, no finishing.
+std::shared_ptr<MeshData> readLists(AttributeInput& in) {
   auto p = in.numbers("positions");
   if (!p) return nullptr;
   if (p->size() % 3 != 0 || p->empty()) {
@@ -115,6 +118,12 @@ std::shared_ptr<const MeshData> buildInline(AttributeInput& in) {
   ok = readNormals(in, *data) && ok;
   ok = readUvs(in, *data) && ok;
   if (!ok) return nullptr;
+  return data;
+}
+
+std::shared_ptr<const MeshData> buildInline(AttributeInput& in) {
+  std::shared_ptr<MeshData> data = readLists(in);
+  if (!data) return nullptr;
   try {
     finishMesh(*data);
   } catch (const std::exception& e) {
@@ -124,6 +133,20 @@ std::shared_ptr<const MeshData> buildInline(AttributeInput& in) {
   warnRepairs(in, *data, "<mesh>");
   return data;
 }
+
+}  // namespace
+
+std::shared_ptr<const MeshData> readMeshLists(AttributeInput& in) {
+  if (!in.has("positions")) {
+    in.error(
+        "a mesh camera's <mesh> needs inline 'positions' and 'indices' (its faces in "
+        "order)");
+    return nullptr;
+  }
+  return readLists(in);
+}
+
+namespace {
 
 void readMesh(MeshSpec& m, AttributeInput& in) {
   m.smooth = static_cast<SmoothMode>(in.choice("smooth", 0, {"auto", "true", "false"}));

@@ -112,7 +112,7 @@ TEST_CASE("cameras POV-Ray cannot express are errors naming the element and loca
   CHECK(lens.pov.issues[0].str() ==
         "test.xml:2:1: error: <camera type=\"thin-lens\">: POV-Ray has no equivalent camera "
         "(pinhole, orthographic, equidistant fisheye, spherical, ultra-wide-angle, cylinder, "
-        "panoramic and omnimax can be exported)");
+        "panoramic, omnimax and mesh can be exported)");
 
   Exported equisolid = exportScene(R"XML(<camera type="fisheye" mapping="equisolid"/>)XML");
   REQUIRE(equisolid.pov.issues.size() == 1);
@@ -176,7 +176,7 @@ TEST_CASE("every camera type without a POV-Ray twin is refused by name, with no 
     CHECK(e.messages() == "test.xml:2:1: error: <camera type=\"" + type +
                               "\">: POV-Ray has no equivalent camera (pinhole, orthographic, "
                               "equidistant fisheye, spherical, ultra-wide-angle, cylinder, "
-                              "panoramic and omnimax can be "
+                              "panoramic, omnimax and mesh can be "
                               "exported)\n");
   }
 }

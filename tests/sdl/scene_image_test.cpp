@@ -260,6 +260,31 @@ TEST_CASE("scene reader image: CSG with discs, inside below their plane as in PO
   CHECK(a.rgb == b.rgb);
 }
 
+TEST_CASE("scene reader image: mesh cameras of each distribution, as POV-Ray's",
+          "[sdl][scene][image][povray][camera][mesh-camera]") {
+  // 0: two screens averaged, the rays started off the faces; 1: a mesh2 and a mesh counted
+  // on, reversed, with a maximum distance; 2: a stereo pair; 3: uvs and smooth normals.
+  for (const char* name :
+       {"mesh_camera_d0.pov", "mesh_camera_d1.pov", "mesh_camera_d2.pov", "mesh_camera_d3.pov"}) {
+    INFO(name);
+    requireSameImageAsPovray(name, 48, 36);
+  }
+  // convert writes the faces as they are (inline <mesh> children of the camera): the same
+  // pixels read back.
+  const std::filesystem::path path = sdltest::dataFolder() / "scenes" / "mesh_camera_d1.pov";
+  sdl::Options options;
+  options.imageWidth = 48;
+  options.imageHeight = 36;
+  const sdl::SceneLoad load = sdl::loadScene(path, options);
+  REQUIRE(load.scene);
+  const std::string xml = writeSceneXml(*load.scene, WriteOptions{});
+  const ParseResult again = parseSceneString(xml, "converted.xml");
+  for (const Diagnostic& d : again.diagnostics.all()) UNSCOPED_INFO(d.str());
+  REQUIRE(again.scene);
+  const RgbImage a = renderWithLucent(*load.scene), b = renderWithLucent(*again.scene);
+  CHECK(a.rgb == b.rgb);
+}
+
 TEST_CASE("scene reader image: parametric surfaces", "[sdl][scene][image][povray][parametric]") {
   requireSameImageAsPovray("parametric.pov", 240, 180);
 }
