@@ -210,17 +210,8 @@ class SceneWriter {
   // A mesh camera's faces: its lists as they are (the camera takes them in order).
   void writeCameraMesh(const Camera::FaceMesh& m) {
     if (!m.data) return;
-    const MeshData& d = *m.data;
-    std::string positions, indices, normals, uvs;
-    for (const Vec3& p : d.positions) positions += (positions.empty() ? "" : " ") + xmlVector(p);
-    for (const auto& tri : d.triangles)
-      for (uint32_t i : tri) indices += (indices.empty() ? "" : " ") + std::to_string(i);
-    for (const Vec3& n : d.normals) normals += (normals.empty() ? "" : " ") + xmlVector(n);
-    for (const Vec2& uv : d.uvs)
-      uvs += (uvs.empty() ? "" : " ") + xmlNumber(uv.x) + " " + xmlNumber(uv.y);
-    Attributes a{{"positions", positions}, {"indices", indices}};
-    if (!d.normals.empty()) a.emplace_back("normals", normals);
-    if (!d.uvs.empty()) a.emplace_back("uvs", uvs);
+    Attributes a;
+    appendMeshLists(*m.data, a);
     if (m.transform != Mat4(1.0)) a.emplace_back("transform", transformText(m.transform, m.loc));
     out_.source(m.loc);
     out_.open("mesh", a, true);

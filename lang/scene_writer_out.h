@@ -34,6 +34,10 @@ class XmlOut {
 // small for the language to read (primitives/value_limits.h).
 std::string transformText(const Mat4& m, const SourceLoc& loc);
 
+// An inline mesh's lists as attributes: positions, indices, and normals and uvs where it has
+// them (lang/scene_writer_shapes.cpp).
+void appendMeshLists(const MeshData& d, Attributes& attributes);
+
 // A file reference as the written scene reads it: relative to the output's folder.
 std::string fileReference(const std::string& resolvedPath, const std::string& folder);
 

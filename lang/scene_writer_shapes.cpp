@@ -70,16 +70,7 @@ std::optional<OwnShapeText> own(const MeshSpec& s, const SourceLoc& loc,
     // Inline: the lists as loading left them (triangulated, oriented), which read again
     // make the same data.
     if (!s.data) cannotWrite(loc, "a <mesh> without data cannot be written");
-    const MeshData& d = *s.data;
-    std::string positions, indices, normals, uvs;
-    for (const Vec3& p : d.positions) positions += (positions.empty() ? "" : " ") + xmlVector(p);
-    for (const auto& tri : d.triangles)
-      for (uint32_t i : tri) indices += (indices.empty() ? "" : " ") + std::to_string(i);
-    for (const Vec3& n : d.normals) normals += (normals.empty() ? "" : " ") + xmlVector(n);
-    t.attributes.emplace_back("positions", positions);
-    t.attributes.emplace_back("indices", indices);
-    if (!d.normals.empty()) t.attributes.emplace_back("normals", normals);
-    if (!d.uvs.empty()) t.attributes.emplace_back("uvs", pairList(d.uvs));
+    appendMeshLists(*s.data, t.attributes);
   }
   t.attributes.emplace_back("smooth", smooth[static_cast<int>(s.smooth)]);
   return t;
@@ -282,6 +273,18 @@ std::optional<OwnShapeText> own(const HeightFieldSpec& s, const SourceLoc& loc,
 std::optional<OwnShapeText> ownShapeText(const ShapeSpec& spec, const SourceLoc& loc,
                                          const std::string& folder) {
   return std::visit([&](const auto& s) { return own(s, loc, folder); }, spec);
+}
+
+void appendMeshLists(const MeshData& d, Attributes& attributes) {
+  std::string positions, indices, normals;
+  for (const Vec3& p : d.positions) positions += (positions.empty() ? "" : " ") + xmlVector(p);
+  for (const auto& tri : d.triangles)
+    for (uint32_t i : tri) indices += (indices.empty() ? "" : " ") + std::to_string(i);
+  for (const Vec3& n : d.normals) normals += (normals.empty() ? "" : " ") + xmlVector(n);
+  attributes.emplace_back("positions", positions);
+  attributes.emplace_back("indices", indices);
+  if (!d.normals.empty()) attributes.emplace_back("normals", normals);
+  if (!d.uvs.empty()) attributes.emplace_back("uvs", pairList(d.uvs));
 }
 
 }  // namespace lucent

@@ -994,33 +994,8 @@ struct MeshBuild {
 
 namespace {
 
-// Each triangle keeps its own three positions (a corner's normal belongs to the triangle);
-// the mesh repair pairs their edges by position.
-std::shared_ptr<const MeshData> meshData(const MeshBuild& b) {
-  auto d = std::make_shared<MeshData>();
-  bool anyNormals = false, anyUvs = false;
-  for (const auto& n : b.normals) anyNormals |= n.has_value();
-  for (const auto& uv : b.uvs) anyUvs |= uv.has_value();
-  for (size_t t = 0; t < b.corners.size(); ++t) {
-    const auto& p = b.corners[t];
-    const uint32_t first = static_cast<uint32_t>(d->positions.size());
-    // POV-Ray's flat triangle in a smooth mesh keeps its face normal.
-    const Vec3 face = glm::cross(p[1] - p[0], p[2] - p[0]);
-    for (int k = 0; k < 3; ++k) {
-      d->positions.push_back(lucentFromPov(p[static_cast<size_t>(k)]));
-      if (anyNormals) {
-        const Vec3 n = b.normals[t] ? (*b.normals[t])[static_cast<size_t>(k)] : face;
-        d->normals.push_back(glm::normalize(lucentFromPov(n)));
-      }
-      if (anyUvs) d->uvs.push_back(b.uvs[t] ? (*b.uvs[t])[static_cast<size_t>(k)] : Vec2(0.0));
-    }
-    d->triangles.push_back({first, first + 1, first + 2});
-  }
-  finishMesh(*d);
-  return d;
-}
-
-// The triangles as read, in order, each with its own corners: a mesh camera's faces.
+// The triangles as read, in order, each with its own three positions (a corner's normal
+// belongs to the triangle): a mesh camera's faces, and what the mesh is built from.
 std::shared_ptr<const MeshData> faces(const MeshBuild& b) {
   auto d = std::make_shared<MeshData>();
   bool anyNormals = false, anyUvs = false;
@@ -1040,6 +1015,13 @@ std::shared_ptr<const MeshData> faces(const MeshBuild& b) {
     }
     d->triangles.push_back({first, first + 1, first + 2});
   }
+  return d;
+}
+
+// The mesh Lucent draws: the faces repaired (the repair pairs their edges by position).
+std::shared_ptr<const MeshData> meshData(const MeshData& faces) {
+  auto d = std::make_shared<MeshData>(faces);
+  finishMesh(*d);
   return d;
 }
 
@@ -1224,7 +1206,7 @@ void SceneReader::finishMeshShape(PovObject& o, TokenStream& in, const MeshBuild
   o.faces = faces(b);
   MeshSpec s;
   try {
-    s.data = meshData(b);
+    s.data = meshData(*o.faces);
   } catch (const std::exception& e) {
     in.error(o.loc, "the " + o.keyword + "'s triangles: " + e.what());
   }

@@ -25,7 +25,7 @@ const char* kCamera = R"XML(<camera type="mesh" distribution="0" rays-per-pixel=
 
 }  // namespace
 
-TEST_CASE("mesh camera: read as written, written back and read again the same",
+TEST_CASE("mesh camera: read as written then written back and read again the same",
           "[lang][camera][mesh-camera]") {
   auto scene = parseClean("<sphere/>", "test.xml", kCamera);
   const Camera& c = scene->cameras.front();

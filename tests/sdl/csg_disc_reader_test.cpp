@@ -67,7 +67,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "csg disc reader: a difference keeps the solid above the disc, a merge the box "
+    "csg disc reader: a difference keeps the solid above the disc and a merge the box "
     "above and the disc outside it",
     "[sdl][scene][csg][disc]") {
   auto r = readScene(
@@ -119,7 +119,7 @@ TEST_CASE("csg disc reader: a rewritten operation keeps its inside as an operand
   CHECK(pieces.clip[0]->inverse);
 }
 
-TEST_CASE("csg disc reader: a clip by a disc is its half-space, by a polygon nothing is left",
+TEST_CASE("csg disc reader: a clip by a disc is its half-space and by a polygon nothing is left",
           "[sdl][scene][clip][disc]") {
   auto r = readScene(
       "sphere { 0, 1 clipped_by { disc { <0, 0.5, 0>, -y, 1 } } translate x }\n"
@@ -151,7 +151,7 @@ TEST_CASE("csg disc reader: an inverse operation with a disc keeps the same surf
 }
 
 TEST_CASE(
-    "csg disc reader: a disc that covers the cut closes it, where POV-Ray frames the "
+    "csg disc reader: a disc that covers the cut closes it where POV-Ray frames the "
     "operation",
     "[sdl][scene][csg][disc]") {
   // desk.pov's paperweight: the sphere projects onto the plane within radius 10 < 10.1, so

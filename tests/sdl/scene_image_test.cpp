@@ -33,6 +33,23 @@ void requireSameImageAsPovray(const std::string& name, int width, int height) {
   requireSameImage(*load.scene, fileText(path));
 }
 
+// The scene converted to XML (lucent convert's writer) reads back and renders to the same
+// pixels.
+void requireConvertKeepsPixels(const std::string& name, int width, int height) {
+  const std::filesystem::path path = sdltest::dataFolder() / "scenes" / name;
+  sdl::Options options;
+  options.imageWidth = width;
+  options.imageHeight = height;
+  const sdl::SceneLoad load = sdl::loadScene(path, options);
+  REQUIRE(load.scene);
+  const std::string xml = writeSceneXml(*load.scene, WriteOptions{});
+  const ParseResult again = parseSceneString(xml, "converted.xml");
+  for (const Diagnostic& d : again.diagnostics.all()) UNSCOPED_INFO(d.str());
+  REQUIRE(again.scene);
+  const RgbImage a = renderWithLucent(*load.scene), b = renderWithLucent(*again.scene);
+  CHECK(a.rgb == b.rgb);
+}
+
 // The same, with POV-Ray rendering the scene file where it lies, as a user would: for a
 // scene that reads a file beside it (a height field's image).
 void requireSameImageAsPovrayInPlace(const std::string& name, int width, int height) {
@@ -227,40 +244,18 @@ TEST_CASE("scene reader image: CSG with operands that have no inside, as POV-Ray
   requireSameImageAsPovray("csg_open_operands.pov", 240, 180);
   // Written by convert as valid XML (unions of the solids' operation and clipped open
   // operands) that renders to the same pixels.
-  const std::filesystem::path path = sdltest::dataFolder() / "scenes" / "csg_open_operands.pov";
-  sdl::Options options;
-  options.imageWidth = 120;
-  options.imageHeight = 90;
-  const sdl::SceneLoad load = sdl::loadScene(path, options);
-  REQUIRE(load.scene);
-  const std::string xml = writeSceneXml(*load.scene, WriteOptions{});
-  const ParseResult again = parseSceneString(xml, "converted.xml");
-  for (const Diagnostic& d : again.diagnostics.all()) UNSCOPED_INFO(d.str());
-  REQUIRE(again.scene);
-  const RgbImage a = renderWithLucent(*load.scene), b = renderWithLucent(*again.scene);
-  CHECK(a.rgb == b.rgb);
+  requireConvertKeepsPixels("csg_open_operands.pov", 120, 90);
 }
 
-TEST_CASE("scene reader image: CSG with discs, inside below their plane as in POV-Ray",
+TEST_CASE("scene reader image: CSG with discs inside below their plane as in POV-Ray",
           "[sdl][scene][image][povray][csg][disc]") {
   requireSameImageAsPovray("csg_discs.pov", 240, 180);
   // convert writes them as valid XML (unions of clipped pieces, planes for the discs'
   // half-spaces, the box POV-Ray bounds them by) that renders to the same pixels.
-  const std::filesystem::path path = sdltest::dataFolder() / "scenes" / "csg_discs.pov";
-  sdl::Options options;
-  options.imageWidth = 120;
-  options.imageHeight = 90;
-  const sdl::SceneLoad load = sdl::loadScene(path, options);
-  REQUIRE(load.scene);
-  const std::string xml = writeSceneXml(*load.scene, WriteOptions{});
-  const ParseResult again = parseSceneString(xml, "converted.xml");
-  for (const Diagnostic& d : again.diagnostics.all()) UNSCOPED_INFO(d.str());
-  REQUIRE(again.scene);
-  const RgbImage a = renderWithLucent(*load.scene), b = renderWithLucent(*again.scene);
-  CHECK(a.rgb == b.rgb);
+  requireConvertKeepsPixels("csg_discs.pov", 120, 90);
 }
 
-TEST_CASE("scene reader image: mesh cameras of each distribution, as POV-Ray's",
+TEST_CASE("scene reader image: mesh cameras of each distribution as POV-Ray's",
           "[sdl][scene][image][povray][camera][mesh-camera]") {
   // 0: two screens averaged, the rays started off the faces; 1: a mesh2 and a mesh counted
   // on, reversed, with a maximum distance; 2: a stereo pair; 3: uvs and smooth normals.
@@ -271,18 +266,7 @@ TEST_CASE("scene reader image: mesh cameras of each distribution, as POV-Ray's",
   }
   // convert writes the faces as they are (inline <mesh> children of the camera): the same
   // pixels read back.
-  const std::filesystem::path path = sdltest::dataFolder() / "scenes" / "mesh_camera_d1.pov";
-  sdl::Options options;
-  options.imageWidth = 48;
-  options.imageHeight = 36;
-  const sdl::SceneLoad load = sdl::loadScene(path, options);
-  REQUIRE(load.scene);
-  const std::string xml = writeSceneXml(*load.scene, WriteOptions{});
-  const ParseResult again = parseSceneString(xml, "converted.xml");
-  for (const Diagnostic& d : again.diagnostics.all()) UNSCOPED_INFO(d.str());
-  REQUIRE(again.scene);
-  const RgbImage a = renderWithLucent(*load.scene), b = renderWithLucent(*again.scene);
-  CHECK(a.rgb == b.rgb);
+  requireConvertKeepsPixels("mesh_camera_d1.pov", 48, 36);
 }
 
 TEST_CASE("scene reader image: parametric surfaces", "[sdl][scene][image][povray][parametric]") {

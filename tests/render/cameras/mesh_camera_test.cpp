@@ -61,7 +61,7 @@ bool hasNumbered(const Projection& p, const Vec2& film, int index) {
 
 }  // namespace
 
-TEST_CASE("mesh camera, distribution 0: face row times width plus column, a row lower",
+TEST_CASE("mesh camera distribution 0: face row times width plus column one row lower",
           "[cameras][mesh-camera]") {
   const Camera cam = meshCamera(0, {{SourceLoc{}, screen(4, 3), Mat4(1.0)}});
   auto p = makeProjection(cam, 4, 3);
@@ -81,7 +81,7 @@ TEST_CASE("mesh camera, distribution 0: face row times width plus column, a row 
   CHECK_FALSE(hasRay(*q, Vec2(0.5, 2.5)));
 }
 
-TEST_CASE("mesh camera: offset along the normal, reverse, and the transforms",
+TEST_CASE("mesh camera: offset along the normal and reverse and the transforms",
           "[cameras][mesh-camera]") {
   // The mesh scaled by 2 along x and turned 90 degrees about y (x -> -z, z -> x): the face
   // normal +z, a normal, becomes +x; the camera moved up by 5.
@@ -109,7 +109,7 @@ TEST_CASE("mesh camera: offset along the normal, reverse, and the transforms",
   checkVec(rayAt(*s, Vec2(0.5, 0.5)).d, Vec3(0, 0, 1));
 }
 
-TEST_CASE("mesh camera, distribution 0 with several meshes: ray r from mesh r, averaged",
+TEST_CASE("mesh camera distribution 0 with several meshes: ray r from mesh r averaged",
           "[cameras][mesh-camera]") {
   Camera cam = meshCamera(0,
                           {{SourceLoc{}, screen(2, 2), Mat4(1.0)},
@@ -122,7 +122,7 @@ TEST_CASE("mesh camera, distribution 0 with several meshes: ray r from mesh r, a
   CHECK_FALSE(hasNumbered(*p, Vec2(0.5, 0.5), 2));
 }
 
-TEST_CASE("mesh camera, distribution 1: faces counted on across the meshes; ray 1 never",
+TEST_CASE("mesh camera distribution 1: faces counted on across the meshes and ray 1 never",
           "[cameras][mesh-camera]") {
   // Two meshes of 2 faces each on a 2 x 2 image: face 2 (POV-Ray's row 1, column 0) is
   // the second mesh's first.
@@ -138,7 +138,7 @@ TEST_CASE("mesh camera, distribution 1: faces counted on across the meshes; ray 
   CHECK_FALSE(hasNumbered(*p, Vec2(0.5, 0.5), 1));
 }
 
-TEST_CASE("mesh camera, distribution 2: meshes side by side, faces by the image's column",
+TEST_CASE("mesh camera distribution 2: meshes side by side with faces by the image's column",
           "[cameras][mesh-camera]") {
   Camera cam =
       meshCamera(2, {{SourceLoc{}, screen(2, 2), Mat4(1.0)},
@@ -151,7 +151,7 @@ TEST_CASE("mesh camera, distribution 2: meshes side by side, faces by the image'
   CHECK_FALSE(hasRay(*p, Vec2(3.5, 2.0)));  // row 1: face 1·2 + 3 = 5 of 4
 }
 
-TEST_CASE("mesh camera, distribution 3: the face whose uvs hold the pixel's, smooth normals",
+TEST_CASE("mesh camera distribution 3: the face whose uvs hold the pixel's and smooth normals",
           "[cameras][mesh-camera]") {
   // One triangle over the whole uv square's lower left half: corners (0,0,0), (2,0,0),
   // (0,2,0) with uvs (0,0), (1,0), (0,1) and normals +z, +x, +y.
