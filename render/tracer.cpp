@@ -102,8 +102,10 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
 
 MediaStack Tracer::mediaAt(const Vec3& p) const {
   std::vector<std::pair<double, const Material*>> containing;
+  // The box first: a mesh camera asks for every ray, and most solids are far from most
+  // starts.
   for (const WorldObject& object : world_.objects())
-    if (object.medium && object.shape->inside(p))
+    if (object.medium && object.shape->bounds().contains(p) && object.shape->inside(p))
       containing.push_back({boxVolume(object.shape->bounds()), object.medium});
   std::stable_sort(containing.begin(), containing.end(),
                    [](const auto& a, const auto& b) { return a.first > b.first; });
