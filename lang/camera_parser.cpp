@@ -83,13 +83,27 @@ Camera::FocalBlur parseFocalBlur(ElementReader& r) {
   return blur;
 }
 
-// A mesh camera's <mesh>: its faces as written, and its transform (render/mesh_camera.h).
-Camera::FaceMesh parseCameraMesh(ElementReader& r) {
+// A mesh camera's <mesh>: its faces as written, or faces-of="K" those of the camera's mesh
+// K (counted from 0) already read, and its transform (render/mesh_camera.h).
+Camera::FaceMesh parseCameraMesh(ElementReader& r, const std::vector<Camera::FaceMesh>& before) {
   Camera::FaceMesh m;
   m.loc = r.loc();
-  r.checkAttributes({"positions", "indices", "normals", "uvs", "transform"});
-  ElementInput in(r);
-  m.data = readMeshLists(in);
+  r.checkAttributes({"positions", "indices", "normals", "uvs", "transform", "faces-of"});
+  if (r.has("faces-of")) {
+    for (const char* list : {"positions", "indices", "normals", "uvs"})
+      if (r.has(list))
+        r.attrError(list, "a <mesh> with faces-of takes the faces of another: no lists of its own");
+    if (before.empty()) {
+      r.attrError("faces-of", "faces-of names an earlier <mesh> of the camera; this is the first");
+    } else {
+      const auto k = static_cast<size_t>(
+          r.integer("faces-of", 0, 0, static_cast<long long>(before.size()) - 1));
+      m.data = before[std::min(k, before.size() - 1)].data;
+    }
+  } else {
+    ElementInput in(r);
+    m.data = readMeshLists(in);
+  }
   m.transform = r.transform("transform");
   return m;
 }
@@ -122,7 +136,7 @@ void parseCamera(ElementReader& r) {
     ElementReader child(ctx, r.file(), n);
     const std::string_view name = n.name();
     if (mesh && name == "mesh") {
-      cam.meshes.push_back(parseCameraMesh(child));
+      cam.meshes.push_back(parseCameraMesh(child, cam.meshes));
     } else if (mesh) {
       child.error("a mesh camera takes <mesh> children (the faces its rays start on), got <" +
                   std::string(name) + ">");

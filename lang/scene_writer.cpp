@@ -203,15 +203,20 @@ class SceneWriter {
     out_.open("camera", a, !children);
     if (c.normal) writeNormalElement(*c.normal, c.loc, out_, opt_.folder);
     if (c.focalBlur) writeFocalBlur(*c.focalBlur);
-    for (const Camera::FaceMesh& m : c.meshes) writeCameraMesh(m);
+    for (size_t k = 0; k < c.meshes.size(); ++k) writeCameraMesh(c.meshes, k);
     if (children) out_.close("camera");
   }
 
-  // A mesh camera's faces: its lists as they are (the camera takes them in order).
-  void writeCameraMesh(const Camera::FaceMesh& m) {
+  // A mesh camera's faces: its lists as they are (the camera takes them in order), or
+  // faces-of an earlier mesh that shares them (a screen moved 25 times is written once).
+  void writeCameraMesh(const std::vector<Camera::FaceMesh>& meshes, size_t k) {
+    const Camera::FaceMesh& m = meshes[k];
     if (!m.data) return;
     Attributes a;
-    appendMeshLists(*m.data, a);
+    size_t first = 0;
+    while (meshes[first].data != m.data) ++first;
+    if (first < k) a.emplace_back("faces-of", std::to_string(first));
+    else appendMeshLists(*m.data, a);
     if (m.transform != Mat4(1.0)) a.emplace_back("transform", transformText(m.transform, m.loc));
     out_.source(m.loc);
     out_.open("mesh", a, true);

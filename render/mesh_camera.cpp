@@ -44,6 +44,8 @@ bool MeshCameraProjection::faceRay(const Mesh& m, size_t face, const Vec3& w, bo
   const Vec3 d = m.normalToWorld * n;
   const double dl = glm::length(d);
   if (!(dl > 0.0) || !std::isfinite(dl)) return false;
+  if (!std::isfinite(origin.x) || !std::isfinite(origin.y) || !std::isfinite(origin.z))
+    return false;  // a start beyond the numbers: no ray
   ray = primaryRay(origin, d / dl);
   return true;
 }

@@ -195,6 +195,38 @@ bool OpenOperands::insidesOf(const Node& n, PovInsides& out) const {
   return false;
 }
 
+bool OpenOperands::invertSurfaces(Node& n) const {
+  if ((n.kind != NodeKind::Union && n.kind != NodeKind::Group) || rewritten(n)) return true;
+  const size_t count = n.children.size();
+  std::vector<PovInsides> parts(count);
+  std::vector<bool> light(count);
+  for (size_t k = 0; k < count; ++k) {
+    light[k] = n.children[k]->isLight();
+    if (!light[k] && !insidesOf(*n.children[k], parts[k])) return true;
+  }
+  // Each part clipped by the others' insides inverted (all worked out before any changes).
+  std::vector<bool> keep(count, true);
+  for (size_t k = 0; k < count; ++k) {
+    if (light[k]) continue;
+    Node& c = *n.children[k];
+    keep[k] = invertSurfaces(c);
+    for (size_t m = 0; m < count && keep[k]; ++m) {
+      if (m == k || light[m]) continue;
+      if (!parts[m].inverted) keep[k] = false;
+      else clipTo(c, *parts[m].inverted, false);
+    }
+  }
+  std::vector<std::unique_ptr<Node>> kept;
+  bool any = false;
+  for (size_t k = 0; k < count; ++k)
+    if (keep[k]) {
+      any = any || !light[k];
+      kept.push_back(std::move(n.children[k]));
+    }
+  n.children = std::move(kept);
+  return any;
+}
+
 bool OpenOperands::closeCoveredDiscs(Node& csg) const {
   if (csg.kind != NodeKind::Intersection && csg.kind != NodeKind::Difference) return false;
   // A disc's surface is kept inside the others (an intersection's) or inside the first
@@ -315,9 +347,12 @@ bool OpenOperands::rewrite(Node& csg, bool closeCovered, std::optional<AABB>& po
       if (!solid[j]) keep = clipByOperand(*part, j);
     if (keep) kept.push_back(std::move(part));
   }
-  // Every other operand's surface where all the others' insides say.
+  // Every other operand's surface where all the others' insides say. An inverted union is
+  // POV-Ray's intersection of its parts inverted: each part's surface only where the others
+  // are inside inverted.
   for (size_t i = 0; i < operands.size(); ++i) {
     if (solid[i]) continue;
+    if (inverted[i] && !invertSurfaces(*operands[i])) continue;
     bool keep = true;
     for (size_t j = 0; j < operands.size() && keep; ++j)
       if (j != i) keep = clipByOperand(*operands[i], j);

@@ -71,6 +71,10 @@ class OpenOperands {
     AABB box;
   };
   const Rewritten* rewritten(const Node& n) const;
+  // The surfaces of n inverted, in place: a union's (or group's) parts each kept where the
+  // others are inside inverted (POV-Ray inverts a union into an intersection of its parts
+  // inverted). False when nothing of it is left.
+  bool invertSurfaces(Node& n) const;
   // Makes each disc of an intersection or difference that covers its cut its half-space.
   bool closeCoveredDiscs(Node& csg) const;
   std::map<const Node*, Rewritten> rewritten_;

@@ -822,7 +822,22 @@ void forEachTexturePattern(Texture& t, const std::function<void(PatternSpec&)>& 
   forEachPattern(t, f);
 }
 
+namespace {
+
+// POV-Ray's inverse of a surface (a disc, a triangle) changes only its inside, which the CSG
+// and clips around it have taken (sdl/open_operands.h): the surface itself is drawn the same.
+// Lucent's inverse is for solids, so it is taken off surfaces once the scene is read.
+void dropSurfaceInverse(Node& n) {
+  if (n.kind == NodeKind::Shape && n.inverse && !n.isSolid()) n.inverse = false;
+  for (auto& c : n.children) dropSurfaceInverse(*c);
+  for (auto& c : n.clip) dropSurfaceInverse(*c);
+  for (auto& c : n.bound) dropSurfaceInverse(*c);
+}
+
+}  // namespace
+
 void SceneReader::finishScene(TokenStream& in) {
+  if (scene_.root) dropSurfaceInverse(*scene_.root);
   for (const auto& [key, s] : skipped_)
     in.warning(s.first, "left out (--skip-unsupported): " + s.message + "; " +
                             std::to_string(s.count) + (s.count == 1 ? " place" : " places") +

@@ -105,3 +105,36 @@ TEST_CASE("mesh camera: what POV-Ray refuses is an error at its place",
   CHECK(firstError(R"(<camera type="mesh" distribution="4">)" + face + "</camera>")
             .find("distribution") != std::string::npos);
 }
+
+TEST_CASE("mesh camera: faces-of shares an earlier mesh's faces and is written back so",
+          "[lang][camera][mesh-camera]") {
+  auto scene = parseClean("<sphere/>", "test.xml",
+                          R"XML(<camera type="mesh" rays-per-pixel="2">
+    <mesh positions="0 0 0  1 0 0  0 1 0" indices="0 1 2"/>
+    <mesh faces-of="0" transform="translate(0.5 0 0)"/>
+  </camera>)XML");
+  const Camera& c = scene->cameras.front();
+  REQUIRE(c.meshes.size() == 2);
+  CHECK(c.meshes[1].data == c.meshes[0].data);
+  CHECK(c.meshes[1].transform[3][0] == 0.5);
+  const std::string text = writeSceneXml(*scene, WriteOptions{});
+  INFO(text);
+  CHECK(text.find("faces-of=\"0\"") != std::string::npos);
+  CHECK(text.find("positions=") == text.rfind("positions="));  // written once
+  ParseResult again = parseSceneString(text, "again.xml");
+  REQUIRE(again.scene);
+  CHECK(again.scene->cameras.front().meshes[1].data == again.scene->cameras.front().meshes[0].data);
+  // Errors: no earlier mesh, one out of range, lists beside it.
+  const auto error = [](const std::string& meshes) {
+    ParseResult r =
+        parseBody("<sphere/>", "test.xml", "<camera type=\"mesh\">" + meshes + "</camera>");
+    CHECK_FALSE(r.scene);
+    return messages(r);
+  };
+  CHECK(error(R"(<mesh faces-of="0"/>)").find("this is the first") != std::string::npos);
+  CHECK(error(R"(<mesh positions="0 0 0 1 0 0 0 1 0" indices="0 1 2"/><mesh faces-of="1"/>)")
+            .find("faces-of") != std::string::npos);
+  CHECK(error(R"(<mesh positions="0 0 0 1 0 0 0 1 0" indices="0 1 2"/>)"
+              R"(<mesh faces-of="0" indices="0 1 2"/>)")
+            .find("no lists of its own") != std::string::npos);
+}

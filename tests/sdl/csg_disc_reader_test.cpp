@@ -184,3 +184,32 @@ TEST_CASE(
   CHECK(nested.element == "difference");
   CHECK(nested.kind == NodeKind::Union);
 }
+
+TEST_CASE("csg disc reader: an inverted union is the intersection of its parts inverted",
+          "[sdl][scene][csg][disc]") {
+  // POV-Ray inverts a difference's later union into an intersection of its parts inverted:
+  // the inner box's surface is kept above the disc's plane only, the disc's outside the
+  // inner box (each also inside the outer box).
+  auto r = readScene(
+      "difference { box { -1, 1 } union { disc { 0, y, 0.5 } box { <0.2, -1, -1>, <1, -0.2, 1> "
+      "} } }\n");
+  REQUIRE(r->load.scene);
+  const Node& n = topNode(*r->load.scene, 0);
+  REQUIRE(n.children.size() == 2);
+  const Node& parts = *n.children[1];
+  REQUIRE(parts.children.size() == 2);
+  const Node& disc = *parts.children[0];
+  const Node& inner = *parts.children[1];
+  REQUIRE(shapeOf<DiscSpec>(disc));
+  REQUIRE(disc.clip.size() == 1);
+  CHECK(shapeOf<BoxSpec>(*disc.clip[0]));
+  CHECK(disc.clip[0]->inverse);  // outside the inner box
+  REQUIRE(shapeOf<BoxSpec>(inner));
+  REQUIRE(inner.clip.size() == 1);
+  CHECK(shapeOf<PlaneSpec>(*inner.clip[0]));
+  CHECK(inner.clip[0]->inverse);  // above the disc's plane
+  // The union itself is kept inside the outer box.
+  REQUIRE(parts.clip.size() == 1);
+  CHECK(shapeOf<BoxSpec>(*parts.clip[0]));
+  CHECK_FALSE(parts.clip[0]->inverse);
+}

@@ -250,6 +250,7 @@ TEST_CASE("scene reader image: CSG with operands that have no inside, as POV-Ray
 TEST_CASE("scene reader image: CSG with discs inside below their plane as in POV-Ray",
           "[sdl][scene][image][povray][csg][disc]") {
   requireSameImageAsPovray("csg_discs.pov", 240, 180);
+  requireSameImageAsPovray("csg_discs_inverse.pov", 240, 180);
   // convert writes them as valid XML (unions of clipped pieces, planes for the discs'
   // half-spaces, the box POV-Ray bounds them by) that renders to the same pixels.
   requireConvertKeepsPixels("csg_discs.pov", 120, 90);
