@@ -158,6 +158,10 @@ std::optional<PovScene> exportedScene(const Scene& scene, const CompareOptions& 
   }
   PovScene pov{fs::absolute(dir / "scene.pov")};
   writeText(pov.path, exported.text);
+  // POV-Ray writes its working values, as Lucent's image holds them before the output.
+  const WorkingGamma& gamma = scene.render.workingGamma;
+  if (gamma.srgb) pov.fileGamma = "sRGB";
+  else if (!gamma.linear()) pov.fileGamma = fmt::format("{}", gamma.power);
   return pov;
 }
 

@@ -10,6 +10,7 @@
 #include "app/image_output.h"
 #include "memory/system_memory.h"
 #include "render/renderer.h"
+#include "render/working_gamma.h"
 #include "scenegraph/gradient_report.h"
 
 #include <fmt/core.h>
@@ -84,8 +85,10 @@ TileRenderResult renderJob(RenderJob& job, const LoadedScene& loaded, RenderRun&
   return job.render(renderer, control, runner);
 }
 
-// The finished image to `output`, with the scene freed first.
+// The finished image to `output`, with the scene freed first: linear light, the values of a
+// scene with a working gamma (POV-Ray's assumed_gamma) decoded.
 void writeOutput(const RenderJob& job, LoadedScene& loaded, const std::string& output) {
+  const WorkingGamma gamma = loaded.scene->render.workingGamma;
   // The world is gone and the scene goes too before the image is written: writing an EXR,
   // TIFF, HDR or JPEG loads OpenImageIO (images/image_plugin.h, 130 MB of libraries), and
   // the two need not be in memory at once. (PNG and PPM are written without it.)
@@ -93,7 +96,10 @@ void writeOutput(const RenderJob& job, LoadedScene& loaded, const std::string& o
   // glibc keeps freed blocks for reuse (in each thread's arena, and below the top of
   // the heap); hand them back to the system, or they would count twice.
   ::malloc_trim(0);
-  writeImageFile(job.image(), output);
+  if (gamma.linear()) return writeImageFile(job.image(), output);
+  Image light = job.image();
+  workingToLinear(gamma, light);
+  writeImageFile(light, output);
 }
 
 }  // namespace

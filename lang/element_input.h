@@ -35,6 +35,9 @@ class ElementInput final : public AttributeInput {
   Color color(const char* attr, const Color& def, bool* scalar) override {
     return r_.color(attr, def, scalar);
   }
+  Color signedColor(const char* attr, const Color& def) override {
+    return r_.color(attr, def, nullptr, true);
+  }
   bool boolean(const char* attr, bool def) override { return r_.boolean(attr, def); }
   size_t choice(const char* attr, size_t def, const std::vector<std::string_view>& names) override;
   Mat4 transform(const char* attr, const Mat4& def) override {

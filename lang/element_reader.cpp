@@ -181,7 +181,7 @@ Vec3 ElementReader::direction(const char* attr, const Vec3& def) {
   return v / len;
 }
 
-Color ElementReader::color(const char* attr, const Color& def, bool* scalar) {
+Color ElementReader::color(const char* attr, const Color& def, bool* scalar, bool allowNegative) {
   auto t = text(attr);
   if (!t) return def;
   Parsed<ParsedColor> c = parseColor(*t);
@@ -190,7 +190,7 @@ Color ElementReader::color(const char* attr, const Color& def, bool* scalar) {
     return def;
   }
   const Color& v = c->color;
-  if (v.r < 0.0f || v.g < 0.0f || v.b < 0.0f) {
+  if (!allowNegative && (v.r < 0.0f || v.g < 0.0f || v.b < 0.0f)) {
     attrError(attr, "colour components must not be negative, got " + quote(*t));
     return def;
   }

@@ -60,7 +60,9 @@ class ElementReader {
   // A direction: not zero, returned normalised.
   Vec3 direction(const char* attr, const Vec3& def);
   // Non-negative components. `scalar` tells whether it was written as one number.
-  Color color(const char* attr, const Color& def, bool* scalar = nullptr);
+  // `allowNegative`: a component may be below 0 (AttributeInput::signedColor).
+  Color color(const char* attr, const Color& def, bool* scalar = nullptr,
+              bool allowNegative = false);
   bool boolean(const char* attr, bool def);
   // A transform attribute (lang/transform_syntax.h); identity if absent.
   Mat4 transform(const char* attr);

@@ -1,6 +1,7 @@
 // <render> (contract, "<render>"): image size, samples and adaptive sampling (with its
 // corners mode, docs/scene-language.md), recursion limits, background,
-// global ambient and an optional self-intersection epsilon ("auto" or absent: automatic).
+// global ambient, an optional self-intersection epsilon ("auto" or absent: automatic) and
+// the working gamma (POV-Ray's assumed_gamma).
 #include "element_parsers.h"
 
 #include "scenegraph/render_limits.h"
@@ -17,7 +18,8 @@ void parseRender(ElementReader& r) {
   ctx.renderLoc = r.loc();
 
   r.checkAttributes({"width", "height", "samples", "adaptive", "adaptive-mode", "adaptive-depth",
-                     "max-depth", "min-weight", "background", "ambient", "epsilon"});
+                     "max-depth", "min-weight", "background", "ambient", "epsilon",
+                     "working-gamma"});
   RenderSettings& s = ctx.scene.render;
   s.loc = r.loc();
   // The limits are explained in render_settings.h.
@@ -47,6 +49,11 @@ void parseRender(ElementReader& r) {
   s.ambient = r.color("ambient", s.ambient);
   if (auto e = r.text("epsilon"); e && trim(*e) != "auto")
     s.epsilon = r.optionalNumber("epsilon", NumberRule::positive());
+  // POV-Ray's assumed_gamma: a power above 0, or srgb.
+  if (auto g = r.text("working-gamma"); g && trim(*g) == "srgb") s.workingGamma.srgb = true;
+  else
+    s.workingGamma.power = r.number(
+        "working-gamma", 1.0, NumberRule::between(0.0, kInf, "a number above 0, or srgb", true));
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader(ctx, r.file(), n)
         .error("<render> takes no child elements, got <" + std::string(n.name()) + ">");

@@ -170,6 +170,9 @@ class SceneWriter {
         a.emplace_back("adaptive-depth", std::to_string(r.adaptiveDepth));
     }
     if (r.epsilon) a.emplace_back("epsilon", xmlNumber(*r.epsilon));
+    if (r.workingGamma.srgb) a.emplace_back("working-gamma", "srgb");
+    else if (!r.workingGamma.linear())
+      a.emplace_back("working-gamma", xmlNumber(r.workingGamma.power));
     out_.source(r.loc);
     out_.open("render", a, true);
   }

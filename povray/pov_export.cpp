@@ -38,8 +38,11 @@ void writeSettings(const RenderSettings& r, PovWriter& out, PovIssues& issues) {
                                       *r.epsilon));
   out.open("global_settings");
   // Colours are linear: with assumed_gamma 1.0 POV-Ray neither decodes nor re-encodes them
-  // before its file output gamma.
-  out.line("assumed_gamma 1.0");
+  // before its file output gamma. A working gamma is POV-Ray's assumed_gamma itself.
+  const WorkingGamma& gamma = r.workingGamma;
+  out.line(gamma.srgb
+               ? std::string("assumed_gamma srgb")
+               : "assumed_gamma " + (gamma.linear() ? std::string("1.0") : povNumber(gamma.power)));
   // Primary ray = level 1 in both; a ray beyond the limit is black in both.
   out.line(fmt::format("max_trace_level {}", depth));
   out.line("adc_bailout " + povNumber(r.minWeight));

@@ -29,6 +29,8 @@ inline double radians(double degrees) { return degrees * (kPi / 180.0); }
 
 inline double maxComponent(const Vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 inline float maxComponent(const Color& c) { return std::max(c.r, std::max(c.g, c.b)); }
+// Not black: a negative component counts (POV-Ray's transmit -1 subtracts what is behind).
+inline bool anyNonZero(const Color& c) { return c.r != 0.0f || c.g != 0.0f || c.b != 0.0f; }
 
 inline bool isFinite(const Vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

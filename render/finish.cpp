@@ -131,7 +131,7 @@ SecondaryRays secondaryRays(const Material& m, const ShadingPoint& at, bool soli
   // With fullTir the split above does not decide whether a ray is totally reflected:
   // POV-Ray reflects it whole wherever the surface transmits at all.
   const Color& transmits = m.fullTir ? m.transmissive : kt;
-  if (maxComponent(transmits) > 0.0f) {
+  if (anyNonZero(transmits)) {
     if (!solid || n1 == n2) {
       rays.straight = true;
       rays.transmitted = kt;

@@ -11,6 +11,7 @@
 #include "image_projection.h"
 #include "image_read.h"
 #include "uv_mapping.h"
+#include "working_gamma.h"
 
 #include "images/periodic_bilinear.h"
 
@@ -50,8 +51,10 @@ struct ImageMap::Impl {
 };
 
 ImageMap::ImageMap(const std::string& path, PixelDecoding decoding)
-    : impl_(std::make_unique<Impl>()) {
-  impl_->linear = readImageFile(path, decoding);
+    : ImageMap(readImageFile(path, decoding)) {}
+
+ImageMap::ImageMap(Image pixels) : impl_(std::make_unique<Impl>()) {
+  impl_->linear = std::move(pixels);
   static_assert(sizeof(Color) == 3 * sizeof(float), "Image pixels are packed RGB floats");
   impl_->sampler = std::make_unique<PeriodicBilinear>(&impl_->linear.pixels[0][0],
                                                       impl_->linear.width, impl_->linear.height);
@@ -80,36 +83,44 @@ Color ImageMap::lookupPixel(double x, double y) const {
 
 namespace {
 
-// An image texture's pixels (decoded to linear; their colours divided by their alpha where
-// the texture reads its transparency), from the cache when there is one.
-std::shared_ptr<const ImageMap> loadImage(const ImageTexture& image, ImageMapCache* cache) {
+// An image texture's pixels (decoded to linear, then encoded with the working gamma; their
+// colours divided by their alpha where the texture reads its transparency), from the cache
+// when there is one.
+std::shared_ptr<const ImageMap> loadImage(const ImageTexture& image, ImageMapCache* cache,
+                                          const WorkingGamma& gamma) {
   const PixelDecoding decoding =
       image.alphaTransmit ? PixelDecoding::StraightLinear : PixelDecoding::Linear;
+  std::shared_ptr<const ImageMap> map;
   try {
-    return cache ? cache->get(image.path, decoding)
-                 : std::make_shared<const ImageMap>(image.path, decoding);
+    map = cache ? cache->get(image.path, decoding)
+                : std::make_shared<const ImageMap>(image.path, decoding);
   } catch (const ImageIOError& e) {
     throw LocatedError(image.loc, e.what(), LocatedError::Kind::Input);
   }
+  if (gamma.linear()) return map;
+  Image working = map->pixels();  // the cache keeps the linear pixels for other scenes
+  linearToWorking(gamma, working);
+  return std::make_shared<const ImageMap>(std::move(working));
 }
 
 }  // namespace
 
-TextureSet::TextureSet(const std::vector<const Material*>& surfaces, ImageMapCache* cache) {
+TextureSet::TextureSet(const std::vector<const Material*>& surfaces, ImageMapCache* cache,
+                       const WorkingGamma& gamma) {
   maps_.resize(surfaces.size());
   std::map<std::string, std::shared_ptr<const ImageMap>> byPath;
   for (size_t i = 0; i < surfaces.size(); ++i) {
     const auto* image = std::get_if<ImageTexture>(&surfaces[i]->texture);
     if (!image) continue;
     auto& map = byPath[imageKey(*image)];
-    if (!map) map = loadImage(*image, cache);
+    if (!map) map = loadImage(*image, cache, gamma);
     maps_[i] = map;
   }
   // The images among the entries of maps and lists, by file.
   for (const Material* m : surfaces)
     forEachImageInMaps(m->texture, [&](const ImageTexture& image) {
       auto& map = byPath[imageKey(image)];
-      if (!map) map = loadImage(image, cache);
+      if (!map) map = loadImage(image, cache, gamma);
       nested_[imageKey(image)] = map;
     });
   bumpMaps_.resize(surfaces.size());

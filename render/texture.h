@@ -4,6 +4,7 @@
 #include "scenegraph/located_error.h"
 #include "scenegraph/map_blend.h"
 #include "scenegraph/material.h"
+#include "scenegraph/render_settings.h"
 
 #include "image_read.h"
 
@@ -64,6 +65,8 @@ class ImageMap {
   // Throws ImageIOError naming the file. A bump map keeps the stored values
   // (PixelDecoding::AsStored), as POV-Ray reads bump_map images without gamma.
   explicit ImageMap(const std::string& path, PixelDecoding decoding = PixelDecoding::Linear);
+  // Pixels already read (and converted).
+  explicit ImageMap(Image pixels);
   ~ImageMap();
   ImageMap(const ImageMap&) = delete;
   ImageMap& operator=(const ImageMap&) = delete;
@@ -97,7 +100,10 @@ class TextureSet {
   // Loads every <image> texture and <bump-map>, or takes it from `cache` (which keeps it
   // for later sets); throws LocatedError (Kind::Input, at the element) for one that cannot
   // be read.
-  explicit TextureSet(const std::vector<const Material*>& surfaces, ImageMapCache* cache = nullptr);
+  // Under a working gamma other than linear (POV-Ray's assumed_gamma) an image texture's
+  // texels are encoded with it, as POV-Ray reads image maps; bump maps stay as stored.
+  explicit TextureSet(const std::vector<const Material*>& surfaces, ImageMapCache* cache = nullptr,
+                      const WorkingGamma& gamma = {});
 
   // The texture colour T of slot `index` at the hit (1 for a material without one).
   Color eval(uint32_t index, const Material& material, const SurfaceInfo& surface,

@@ -82,7 +82,7 @@ Tracer::Tracer(const World& world, ImageMapCache* textures)
       fogs_(world.scene().fogs),
       rainbows_(world.scene().rainbows),
       slots_(world.scene().materials),
-      textures_(slots_.materials(), textures) {
+      textures_(slots_.materials(), textures, world.scene().render.workingGamma) {
   for (uint32_t k = 0; k < slots_.size(); ++k)
     seeThrough_.push_back(slots_[k].kind == SurfaceSlots::Kind::plain &&
                           textureSeeThrough(slots_[k].material->texture));
@@ -159,7 +159,7 @@ Color Tracer::trace(Ray ray, int depth, Color weight, MediaStack media, PathSeed
     sum += throughput * shaded.result;
     const SecondaryRays& rays = shaded.rays;
     if (!rays.straight) return sum;
-    Color w = weight * rays.transmitted;
+    Color w = weight * glm::abs(rays.transmitted);
     if (maxComponent(w) < settings_.minWeight) return sum;
     ++stats.refracted;
     weight = w;
@@ -540,7 +540,7 @@ Color Tracer::localLight(const WorldLeaf& leaf, const SurfaceInfo& s, const Vec3
       (m.hasTexture() && m.ambientIsScalar ? m.ambient * texture : m.ambient) * settings_.ambient;
   if (leaving && !m.innerAmbient) ambient *= m.transmissive;
   local += ambient;
-  if (!lights_.empty() && (anyPositive(kd) || m.hasHighlight())) {
+  if (!lights_.empty() && (anyNonZero(kd) || m.hasHighlight())) {
     const Color metal = m.metallic ? metallicBase(m, texture) : kd;
     local += directLight(s, n, v, kd, metal, m, leaf, media, seed, context);
     ++seed.event;
@@ -552,7 +552,7 @@ Tracer::Interface Tracer::interfaceAt(const Material& m, const Color& transmits,
                                       const MediaStack& media) const {
   Interface side{1.0, 1.0, media, std::nullopt};
   // Only a material that transmits or splits by Fresnel needs the indices.
-  if (!anyPositive(transmits) && !(m.fresnel && (anyPositive(m.reflective) || m.reflectiveMin)))
+  if (!anyNonZero(transmits) && !(m.fresnel && (anyPositive(m.reflective) || m.reflectiveMin)))
     return side;
   if (!h.medium) {  // a thin sheet: no medium to enter
     side.n1 = media.ior();
@@ -577,8 +577,9 @@ Color Tracer::withBranches(Color result, const SurfaceInfo& s, const Vec3& mirro
                            const SecondaryRays& rays, int depth, const Color& weight,
                            const MediaStack& media, const MediaStack& beyond, PathSeed& seed,
                            TraceContext& context) const {
-  if (anyPositive(rays.transmitted) && !rays.straight) {
-    Color w = weight * rays.transmitted;
+  // A negative k_t (POV-Ray's transmit -1) subtracts what the ray sees; its weight is the size.
+  if (anyNonZero(rays.transmitted) && !rays.straight) {
+    Color w = weight * glm::abs(rays.transmitted);
     if (depth < settings_.maxDepth && maxComponent(w) >= settings_.minWeight) {
       ++context.stats.refracted;
       result += rays.transmitted * trace(spawnRay(s, rays.refracted, settings_.epsilon), depth + 1,
@@ -612,16 +613,16 @@ Color Tracer::directLight(const SurfaceInfo& s, const Vec3& n, const Vec3& v, co
     const Light& light = lights_[i];
     if (!leaf.litBy(light)) continue;
     const LightIncidence in = lightIncidence(light, s.p);
-    if (!anyPositive(in.radiance)) continue;
+    if (!anyNonZero(in.radiance)) continue;  // a negative light darkens (POV-Ray's)
     // A light behind: no diffuse, no highlight, unless the surface is lit from both sides.
     if (!doubleIlluminate && glm::dot(n, in.toLight) <= 0.0) continue;
     Color brdf =
         surfaceResponse(m, kd, metal, ShadingPoint{s.p, n, v}, in.toLight, light.highlights);
-    if (!anyPositive(brdf)) continue;
+    if (!anyNonZero(brdf)) continue;
     Color shadow(1.0f);
     if (light.shadows || light.projectedThrough) {
       shadow = shadowFactor(light, static_cast<uint32_t>(i), in, s, media, seed, context);
-      if (!anyPositive(shadow)) continue;
+      if (!anyNonZero(shadow)) continue;
     }
     // POV-Ray's crand: a light that reaches the point loses a random share of its diffuse
     // term (random per point and light, here a hash of both, so images repeat).
@@ -659,7 +660,7 @@ Color Tracer::shadowFactor(const Light& light, uint32_t lightIndex, const LightI
       ++stats.shadow;
       passed = blockedByOpaque(ray, lastBlocker, stats) ? Color(0.0f) : Color(1.0f);
     }
-    if (fogged && anyPositive(passed)) passed *= fogKeptAlongShadowRay(ray, media, stats);
+    if (fogged && anyNonZero(passed)) passed *= fogKeptAlongShadowRay(ray, media, stats);
     return passed;
   };
   if (in.parallel) {
@@ -790,7 +791,7 @@ Color Tracer::transmittance(Ray ray, MediaStack media, World::ObjectId& lastBloc
         else media.push(c.medium);
       }
     }
-    if (!anyPositive(t)) return Color(0.0f);
+    if (!anyNonZero(t)) return Color(0.0f);
     // The same ray searched again beyond this hit: t is strictly increasing, and the
     // hit just found is excluded because the search interval is open.
     tPrevious = hit.t();

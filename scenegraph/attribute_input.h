@@ -74,6 +74,9 @@ class AttributeInput {
   // is read.
   virtual Color color(const char* attr, const Color& def, bool* scalar) = 0;
   Color color(const char* attr, const Color& def) { return color(attr, def, nullptr); }
+  // As color, but a component may be negative: where POV-Ray's meaning takes one (a light
+  // that darkens, a transmission that subtracts).
+  virtual Color signedColor(const char* attr, const Color& def) = 0;
   // The index of the value in `names`; `def` when absent or not one of them (reported).
   virtual size_t choice(const char* attr, size_t def,
                         const std::vector<std::string_view>& names) = 0;

@@ -32,6 +32,13 @@ Attribute color(const char* name, Color Material::*m, std::string doc) {
   return {a, [name, m](Material& s, AttributeInput& in) { s.*m = in.color(name, s.*m, nullptr); }};
 }
 
+// A colour whose components may be negative (AttributeInput::signedColor).
+Attribute signedColor(const char* name, Color Material::*m, std::string doc) {
+  AttributeInfo a = info(name, AttrType::Vector, "", std::move(doc));
+  a.schemaType = "signedColor";
+  return {a, [name, m](Material& s, AttributeInput& in) { s.*m = in.signedColor(name, s.*m); }};
+}
+
 Attribute number(const char* name, double Material::*m, NumberRule rule, std::string doc) {
   AttributeInfo a = info(name, AttrType::Number, fmt::format("{}", Material{}.*m), std::move(doc));
   a.rule = rule;
@@ -98,9 +105,10 @@ const std::vector<FinishTerm>& finishTerms() {
            }),
       term(color("reflective", &Material::reflective, "k_r, mirror reflection colour. Default 0."),
            "finish { reflection }", {{"reflection"}}),
-      term(color("transmissive", &Material::transmissive,
-                 "k_t, transmission colour (refraction with ior; also filters shadow rays). "
-                 "Default 0."),
+      term(signedColor("transmissive", &Material::transmissive,
+                       "k_t, transmission colour (refraction with ior; also filters shadow "
+                       "rays); a negative component subtracts what the ray sees (POV-Ray's "
+                       "transmit -1). Default 0."),
            "the pigment's filter or transmit", {{"filter"}, {"transmit"}}),
       term(number("ior", &Material::ior, NumberRule::positive(),
                   "η, index of refraction (> 0). Default 1. Glass 1.5, water 1.33, diamond "

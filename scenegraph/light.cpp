@@ -287,10 +287,11 @@ const std::vector<LightAttribute>& lightAttributes() {
                  "rectangle; cylindrical: a point on the beam's axis, where the beam starts). "
                  "Default 0 0 0."),
        positioned, readVector("position", &Light::position)},
-      {attribute("color", AttrType::Vector, "color", "1",
-                 "Light colour. The light's I_L is color × intensity."),
+      {attribute("color", AttrType::Vector, "signedColor", "1",
+                 "Light colour. The light's I_L is color × intensity. A negative component "
+                 "takes light away (POV-Ray's negative lights)."),
        {},
-       [](Light& l, AttributeInput& in) { l.color = in.color("color", l.color); }},
+       [](Light& l, AttributeInput& in) { l.color = in.signedColor("color", l.color); }},
       {attribute("intensity", AttrType::Number, "nonNegativeNumber", "1", "Multiplier of color."),
        {},
        readNumber("intensity", &Light::intensity, NumberRule::nonNegative())},

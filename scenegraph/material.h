@@ -179,7 +179,7 @@ inline bool Material::isTransmissive() const {
       if (e.material.isTransmissive()) return true;
     return false;
   }
-  if (!(maxComponent(transmissive) > 0.0f || textureSeeThrough(texture))) return false;
+  if (!(anyNonZero(transmissive) || textureSeeThrough(texture))) return false;
   for (const Material& layer : layers)
     if (!layer.isTransmissive()) return false;
   return true;

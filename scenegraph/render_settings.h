@@ -18,6 +18,17 @@ enum class AdaptiveMode { Centres, Corners };
 // adaptiveDepth - 1 times, into a grid of 2^(depth-1) + 1 samples a side.
 constexpr int kMaxAdaptiveDepth = 9;
 
+// POV-Ray's assumed_gamma (<render working-gamma>): the scene's colour numbers, and so the
+// values the renderer computes, are light encoded with this curve. The output image holds
+// them decoded to linear light (what POV-Ray writes), and an image texture's linear texels
+// are encoded with it to meet the colours they mix with (render/working_gamma.h).
+struct WorkingGamma {
+  bool srgb = false;   // sRGB's curve (assumed_gamma srgb, and POV-Ray's gamma-off scenes)
+  double power = 1.0;  // otherwise a value x is the light x^power
+  bool linear() const { return !srgb && power == 1.0; }
+  bool operator==(const WorkingGamma& o) const { return srgb == o.srgb && power == o.power; }
+};
+
 struct RenderSettings {
   SourceLoc loc;
   int width = 640;
@@ -31,6 +42,7 @@ struct RenderSettings {
   Color background{0.0f};
   Color ambient{1.0f};
   std::optional<double> epsilon;  // none: the renderer's robust automatic offset
+  WorkingGamma workingGamma;      // linear: the colours are linear light (Lucent's own)
 };
 
 }  // namespace lucent

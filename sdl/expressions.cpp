@@ -477,6 +477,7 @@ bool TokenStream::colourKey(Kw kw, std::array<double, 5>& c, bool started) {
   auto srgb = [&] {
     if (assumedGamma_ <= 0)
       error(cur_, "cannot parse sRGB colors before assumed_gamma has been set");
+    if (srgbWorking_) return;  // decoded from sRGB and encoded with it again
     for (int i = 0; i < 3; ++i) {
       double x = c[i];
       x = x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);

@@ -8,7 +8,7 @@ namespace lucent::sdl {
 
 std::vector<std::string> applyGlobalSettings(const PovGlobalSettings& g,
                                              const PovBackground& background,
-                                             RenderSettings& render) {
+                                             RenderSettings& render, double languageVersion) {
   std::vector<std::string> notes;
   // POV-Ray's primary ray is level 1 and a ray past max_trace_level is black: Lucent's
   // max-depth counts the same way (the exporter writes it one to one).
@@ -16,11 +16,14 @@ std::vector<std::string> applyGlobalSettings(const PovGlobalSettings& g,
   render.minWeight = g.adcBailout;
   render.ambient = g.ambientLight;
   render.background = background.color;
-  if (g.assumedGamma && std::abs(*g.assumedGamma - 1.0) > 1e-9)
-    notes.push_back(fmt::format(
-        "assumed_gamma {}: POV-Ray then lights and blends colours in that gamma's space; "
-        "Lucent computes in linear light (assumed_gamma 1.0), so the image's tones differ",
-        *g.assumedGamma));
+  // POV-Ray computes with the colours as written and takes its results as light encoded
+  // with the working gamma: Lucent's working-gamma. Gamma off (an older scene without
+  // assumed_gamma) writes the values as they are: sRGB's curve there, which the output
+  // undoes exactly, and image maps read as stored, which decoding and encoding with it give.
+  render.workingGamma = WorkingGamma{};
+  if (g.assumedGammaSrgb || (!g.assumedGamma && languageVersion < 3.7))
+    render.workingGamma.srgb = true;
+  else if (g.assumedGamma) render.workingGamma.power = *g.assumedGamma;
   return notes;
 }
 

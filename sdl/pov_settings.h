@@ -19,6 +19,7 @@ namespace lucent::sdl {
 // `global_settings { ... }` with POV-Ray 3.7's defaults.
 struct PovGlobalSettings {
   std::optional<double> assumedGamma;  // none written: 1.0 under #version 3.7
+  bool assumedGammaSrgb = false;       // assumed_gamma srgb (assumedGamma then holds 1)
   int maxTraceLevel = 5;
   double adcBailout = 1.0 / 255.0;
   Color ambientLight{1.0f};
@@ -65,10 +66,12 @@ struct PovFog {
 };
 
 // global_settings and background into the render settings (size and sampling are the
-// command line's). Returns what differs from POV-Ray's meaning.
+// command line's), with the working gamma POV-Ray takes for the scene's language version
+// (the last #version: below 3.7 without an assumed_gamma, POV-Ray turns gamma off and
+// writes its values as they are). Returns what differs from POV-Ray's meaning.
 std::vector<std::string> applyGlobalSettings(const PovGlobalSettings& g,
                                              const PovBackground& background,
-                                             RenderSettings& render);
+                                             RenderSettings& render, double languageVersion = 3.7);
 
 struct SkyImport {
   std::optional<Sky> sky;

@@ -298,8 +298,19 @@ void SceneReader::readGlobalSettings(TokenStream& in) {
     if (t.is("}")) return;
     const std::string_view w = t.kind == TokenKind::Keyword ? t.text() : "";
     if (w == "assumed_gamma") {
-      global_.assumedGamma = in.parseFloat();
-      in.setAssumedGamma(*global_.assumedGamma);
+      // POV-Ray's: a number or srgb; the first one counts.
+      const bool srgb = isWord(in.peek(), "srgb");
+      const double gamma = srgb ? (in.next(), 1.0) : in.parseFloat();
+      if (!(gamma > 0.0))
+        in.error(t,
+                 fmt::format("assumed_gamma {}: a gamma must be above 0 (as POV-Ray says)", gamma));
+      if (global_.assumedGamma) {
+        warn(in, t.loc(), "a second assumed_gamma is ignored, as POV-Ray ignores it");
+        continue;
+      }
+      global_.assumedGamma = gamma;
+      global_.assumedGammaSrgb = srgb;
+      in.setAssumedGamma(srgb ? 0.0 : gamma);
     } else if (w == "max_trace_level") {
       global_.maxTraceLevel = static_cast<int>(in.parseFloat());
     } else if (w == "adc_bailout") {

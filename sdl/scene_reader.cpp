@@ -872,7 +872,8 @@ void SceneReader::finishScene(TokenStream& in) {
   const int width = options_.imageWidth, height = options_.imageHeight;
   scene_.render.width = width;
   scene_.render.height = height;
-  for (const std::string& d : applyGlobalSettings(global_, background_, scene_.render))
+  for (const std::string& d :
+       applyGlobalSettings(global_, background_, scene_.render, in.languageVersion()))
     warn(in, globalLoc_.line > 0 ? globalLoc_ : SourceLoc{scene_.file, 0, 0}, d);
   const PovCamera camera = camera_ ? *camera_ : PovCamera{};
   const SourceLoc cameraLoc = camera_ ? camera.loc : SourceLoc{scene_.file, 0, 0};

@@ -124,9 +124,12 @@ class TokenStream {
   [[noreturn]] void error(const SourceLoc& at, const std::string& message) const;
   void warning(const SourceLoc& at, const std::string& message);
 
-  // Set by the scene reader when it reads global_settings { assumed_gamma g }: srgb colours
-  // are refused before (POV-Ray 3.7).
-  void setAssumedGamma(double gamma) { assumedGamma_ = gamma; }
+  // Set by the scene reader when it reads global_settings { assumed_gamma g } (g 0: srgb):
+  // srgb colours are refused before (POV-Ray 3.7), and encoded with it after.
+  void setAssumedGamma(double gamma) {
+    assumedGamma_ = gamma > 0.0 ? gamma : 1.0;
+    srgbWorking_ = !(gamma > 0.0);
+  }
 
   // --- For tests and the command: an identifier's value as the scene left it.
   const Value* lookup(const std::string& name) const;
@@ -345,7 +348,8 @@ class TokenStream {
   bool insideIfdef_ = false;
   bool insideMacroDefinition_ = false;
   int version_ = 370;
-  double assumedGamma_ = 0;  // 0: not set
+  double assumedGamma_ = 0;   // 0: not set
+  bool srgbWorking_ = false;  // assumed_gamma srgb: an srgb colour is kept as written
   std::uint64_t tokens_ = 0;
   SourceLoc directiveLoc_;  // the '#' of the directive being done
   int nesting_ = 0;         // expressions, strings and arrays within each other

@@ -1,6 +1,7 @@
 #include "last_image.h"
 
 #include "app/image_output.h"
+#include "render/working_gamma.h"
 
 #include <fmt/core.h>
 
@@ -8,10 +9,11 @@
 
 namespace lucent::preview {
 
-void LastImage::set(Image image) {
+void LastImage::set(Image image, const WorkingGamma& gamma) {
   auto shared = std::make_shared<const Image>(std::move(image));
   std::lock_guard lock(mutex_);
   image_ = std::move(shared);
+  gamma_ = gamma;
 }
 
 std::shared_ptr<const Image> LastImage::get() const {
@@ -21,16 +23,24 @@ std::shared_ptr<const Image> LastImage::get() const {
 
 bool LastImage::save(std::string& message) const {
   std::shared_ptr<const Image> image;
+  WorkingGamma gamma;
   {
     std::lock_guard lock(mutex_);
     image = image_;
+    gamma = gamma_;
   }
   if (!image) {
     message = "no finished image to save yet";
     return false;
   }
   try {
-    writeImageFile(*image, output_);
+    if (gamma.linear()) {
+      writeImageFile(*image, output_);
+    } else {
+      Image light = *image;
+      workingToLinear(gamma, light);
+      writeImageFile(light, output_);
+    }
   } catch (const std::exception& e) {
     message = e.what();
     return false;

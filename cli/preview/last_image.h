@@ -3,6 +3,7 @@
 #pragma once
 
 #include "render/image.h"
+#include "scenegraph/render_settings.h"
 
 #include <memory>
 #include <mutex>
@@ -15,7 +16,9 @@ class LastImage {
   // `output`: where save() writes (the file `lucent render` writes without -o).
   explicit LastImage(std::string output) : output_(std::move(output)) {}
 
-  void set(Image image);
+  // `image` holds the scene's values; save() writes them decoded with `gamma` (its working
+  // gamma), as `render` writes them.
+  void set(Image image, const WorkingGamma& gamma = {});
   // The image, or null before the first one.
   std::shared_ptr<const Image> get() const;
   // Writes the image (atomically, as `render` writes its output); the message to show:
@@ -26,6 +29,7 @@ class LastImage {
   const std::string output_;
   mutable std::mutex mutex_;
   std::shared_ptr<const Image> image_;
+  WorkingGamma gamma_;
 };
 
 }  // namespace lucent::preview

@@ -145,7 +145,8 @@ WatchList renderOnce(Session& s, int generation) {
                  s.options.threads.value_or(0),
                  std::chrono::steady_clock::now(),
                  std::nullopt,
-                 nullptr};
+                 nullptr,
+                 {}};
   s.status.generation = generation;
   s.status.phase = "loading";
   s.status.done = s.status.total = 0;
@@ -176,7 +177,7 @@ WatchList renderOnce(Session& s, int generation) {
     s.status.phase = out.cancelled ? "cancelled" : "done";
     if (!out.cancelled) {
       s.status.stats = renderStatsText(out.stats, out.seconds, threadsShown(run.threads));
-      s.last.set(std::move(out.image));
+      s.last.set(std::move(out.image), loaded.scene->render.workingGamma);
       if (s.options.compare && s.status.region.empty()) compareForPage(s, common);
     }
   } catch (...) {

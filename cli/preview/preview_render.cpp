@@ -7,6 +7,7 @@
 #include "render/renderer.h"
 #include "render/tile_render.h"
 #include "render/trace_context.h"
+#include "render/working_gamma.h"
 #include "scenegraph/world.h"
 
 #include <fmt/core.h>
@@ -24,18 +25,27 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The PNG of the image's light: its values decoded when the scene has a working gamma.
+std::string lightPng(const Image& image, const WorkingGamma& gamma) {
+  if (gamma.linear()) return pngBytes(image);
+  Image light = image;
+  workingToLinear(gamma, light);
+  return pngBytes(light);
+}
+
 // A picture of the whole width x height image: `image` holds one value per step x step
 // block.
-std::string pictureEvent(const Image& image, int step, int width, int height) {
+std::string pictureEvent(const Image& image, int step, int width, int height,
+                         const WorkingGamma& gamma) {
   return fmt::format(
       "{{\"step\":{},\"width\":{},\"height\":{},\"imageWidth\":{},\"imageHeight\":{},"
       "\"png\":\"{}\"}}",
-      step, image.width, image.height, width, height, base64(pngBytes(image)));
+      step, image.width, image.height, width, height, base64(lightPng(image, gamma)));
 }
 
-std::string tileEvent(const PixelRect& r, const Image& image) {
+std::string tileEvent(const PixelRect& r, const Image& image, const WorkingGamma& gamma) {
   return fmt::format("{{\"x\":{},\"y\":{},\"width\":{},\"height\":{},\"png\":\"{}\"}}", r.x0, r.y0,
-                     r.width(), r.height(), base64(pngBytes(image)));
+                     r.width(), r.height(), base64(lightPng(image, gamma)));
 }
 
 void publishStatus(PreviewRun& run) {
@@ -60,7 +70,7 @@ bool coarsePass(const Renderer& renderer, Image& traced, int step, int firstStep
   Image grid(gridSize(traced.width, step), rows);
   for (int j = 0; j < grid.height; ++j)
     for (int i = 0; i < grid.width; ++i) grid.at(i, j) = traced.at(i * step, j * step);
-  run.board.publishImage(pictureEvent(grid, step, traced.width, traced.height));
+  run.board.publishImage(pictureEvent(grid, step, traced.width, traced.height, run.gamma));
   run.status.phase = "coarse";
   run.status.step = step;
   publishStatus(run);
@@ -97,7 +107,8 @@ bool tilePass(const Renderer& renderer, const RenderSettings& settings, const Pi
         for (int y = 0; y < r.height(); ++y)
           for (int x = 0; x < r.width(); ++x)
             out.image.at(r.x0 + x, r.y0 + y) = tile.image.at(x, y);
-        run.board.publishTile(fmt::format("{},{}", r.x0, r.y0), tileEvent(r, tile.image));
+        run.board.publishTile(fmt::format("{},{}", r.x0, r.y0),
+                              tileEvent(r, tile.image, run.gamma));
         ++run.status.done;
         publishStatus(run);
       });
@@ -113,6 +124,7 @@ PreviewOutcome renderForPage(const cli::LoadedScene& loaded, PreviewRun& run) {
   World world(*loaded.scene);
   Renderer renderer(world, *loaded.camera);
   PreviewOutcome out;
+  run.gamma = settings.workingGamma;
   run.status.width = settings.width;
   run.status.height = settings.height;
   const PixelRect whole = wholeImage(settings.width, settings.height);
@@ -128,7 +140,7 @@ PreviewOutcome renderForPage(const cli::LoadedScene& loaded, PreviewRun& run) {
                     !tilePass(renderer, settings, whole, run, out);
   }
   if (out.cancelled) return out;
-  run.board.publishImage(pictureEvent(out.image, 1, out.image.width, out.image.height));
+  run.board.publishImage(pictureEvent(out.image, 1, out.image.width, out.image.height, run.gamma));
   run.status.phase = "done";
   return out;
 }

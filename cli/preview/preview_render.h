@@ -31,6 +31,8 @@ struct PreviewRun {
   // `previous` (the last finished image, when it has this size; else black).
   std::optional<PixelRect> region;
   std::shared_ptr<const Image> previous;
+  // The scene's (set by renderForPage): the pictures sent are its values decoded to light.
+  WorkingGamma gamma;
 };
 
 struct PreviewOutcome {

@@ -156,6 +156,15 @@ TEST_CASE("render settings become global_settings and background after #version 
         "tolerances)\n");
 }
 
+TEST_CASE("a working gamma is exported as POV-Ray's assumed_gamma", "[povray][settings][gamma]") {
+  Exported power = exportScene(R"XML(<render working-gamma="2.2"/>)XML");
+  REQUIRE(power.pov.ok());
+  CHECK(power.has("global_settings {\n  assumed_gamma 2.2\n"));
+  Exported srgb = exportScene(R"XML(<render working-gamma="srgb"/>)XML");
+  REQUIRE(srgb.pov.ok());
+  CHECK(srgb.has("global_settings {\n  assumed_gamma srgb\n"));
+}
+
 TEST_CASE("every camera type without a POV-Ray twin is refused by name, with no scene written",
           "[povray][camera]") {
   // POV-Ray 3.7's cameras are perspective, orthographic, fisheye (equidistant), ultra_wide_angle,

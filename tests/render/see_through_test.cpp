@@ -132,3 +132,26 @@ TEST_CASE("filter and transmit are exported into each colour, and the sky's laye
   CHECK_THAT(e.text, Catch::Contains("rgbft <0.5, 0.5, 0.5, 0.25, 0>,"));
   CHECK_THAT(e.text, Catch::Contains("rgbft <0.6, 0.15, 0.15, 0, 0.75>"));
 }
+
+TEST_CASE("a negative transmissive subtracts what the ray behind sees", "[render][see-through]") {
+  // A sheet of k_a 1 (twice POV-Ray's 0.5 at transmit -1) over a floor lit by ambient: the
+  // pixel is 1 minus the floor's 0.3 seen through the sheet, and the floor alone beside it.
+  auto scene = parse(R"XML(<render ambient="1" background="0 0 0"/>
+    <disc center="0 1 0" normal="0 1 0" radius="1"><material ambient="1" transmissive="-1"/></disc>
+    <plane normal="0 1 0" offset="0"><material ambient="0.3"/></plane>)XML");
+  World world(*scene);
+  const Color through = traceOne(world, Ray(Vec3(0.2, 2, 0.1), Vec3(0, -1, 0)));
+  const Color floor = traceOne(world, Ray(Vec3(3, 2, 0.1), Vec3(0, -1, 0)));
+  CHECK(floor.g == Approx(0.3f));
+  CHECK(through.g == Approx(1.0f - 0.3f));
+}
+
+TEST_CASE("a negative light takes light away", "[render][light]") {
+  // Two directional lights straight down on a white floor of diffuse 1: 1 - 0.4.
+  auto scene = parse(R"XML(<light type="directional" direction="0 -1 0" color="1"/>
+    <light type="directional" direction="0 -1 0" color="-0.4"/>
+    <plane normal="0 1 0" offset="0"><material diffuse="1"/></plane>)XML");
+  World world(*scene);
+  const Color lit = traceOne(world, Ray(Vec3(0.2, 2, 0.1), Vec3(0, -1, 0)));
+  CHECK(lit.r == Approx(0.6f));
+}

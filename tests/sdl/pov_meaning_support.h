@@ -10,6 +10,7 @@
 #include "povray/image_compare.h"
 #include "povray/pov_runner.h"
 #include "render/renderer.h"
+#include "render/working_gamma.h"
 #include "scenegraph/world.h"
 
 #include <catch2/catch.hpp>
@@ -70,13 +71,16 @@ inline Material& materialNamed(Scene& scene, const std::string& id) {
   return scene.materials.front();
 }
 
+// The light `lucent render` writes: a scene with a working gamma has its values decoded, as
+// POV-Ray (File_Gamma=1.0, renderWithPovray) writes them.
 inline RgbImage renderWithLucent(const Scene& scene) {
   REQUIRE(!scene.cameras.empty());
   World world(scene);
   Renderer renderer(world, scene.cameras.front());
   RenderControl control;
   control.threads = 1;
-  const RenderResult result = renderer.render(control);
+  RenderResult result = renderer.render(control);
+  workingToLinear(scene.render.workingGamma, result.image);
   RgbImage out(result.image.width, result.image.height);
   for (size_t p = 0; p < result.image.pixels.size(); ++p)
     for (int c = 0; c < 3; ++c) out.rgb[p * 3 + c] = result.image.pixels[p][c];

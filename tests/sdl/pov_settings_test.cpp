@@ -26,8 +26,19 @@ TEST_CASE("global_settings and background with POV-Ray's defaults", "[sdl][setti
   CHECK(render.minWeight == 0.01);
   CHECK(render.ambient == Color(0.5f, 0.4f, 0.3f));
   CHECK(render.background == Color(0.1f, 0.2f, 0.3f));
-  REQUIRE(notes.size() == 1);
-  CHECK(notes[0].find("assumed_gamma 2.2") == 0);
+  // POV-Ray's working gamma is the scene's, said by nothing: the image is POV-Ray's.
+  CHECK(notes.empty());
+  CHECK(render.workingGamma == WorkingGamma{false, 2.2});
+  // Without assumed_gamma: linear under 3.7, gamma off (sRGB's curve) below.
+  g.assumedGamma.reset();
+  applyGlobalSettings(g, background, render, 3.7);
+  CHECK(render.workingGamma.linear());
+  applyGlobalSettings(g, background, render, 3.6);
+  CHECK(render.workingGamma.srgb);
+  g.assumedGamma = 1.0;
+  g.assumedGammaSrgb = true;
+  applyGlobalSettings(g, background, render, 3.7);
+  CHECK(render.workingGamma.srgb);
 }
 
 TEST_CASE("a sky_sphere's pigments keep POV-Ray's point for every direction, in order",

@@ -256,6 +256,12 @@ TEST_CASE("scene reader image: CSG with discs inside below their plane as in POV
   requireConvertKeepsPixels("csg_discs.pov", 120, 90);
 }
 
+TEST_CASE("scene reader image: assumed_gamma 2.2, a negative light and transmit -1 as POV-Ray's",
+          "[sdl][scene][image][povray][gamma]") {
+  // POV-Ray's own output (linear light) against what lucent render writes.
+  requireSameImageAsPovrayInPlace("working_gamma.pov", 240, 180);
+}
+
 TEST_CASE("scene reader image: mesh cameras of each distribution as POV-Ray's",
           "[sdl][scene][image][povray][camera][mesh-camera]") {
   // 0: two screens averaged, the rays started off the faces; 1: a mesh2 and a mesh counted

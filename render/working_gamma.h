@@ -1,0 +1,22 @@
+// POV-Ray's assumed_gamma where values cross between a scene's working space and linear
+// light (scenegraph/render_settings.h, WorkingGamma): the output image, which holds linear
+// light, and image textures, whose texels are read as linear light.
+#pragma once
+
+#include "image.h"
+
+#include "scenegraph/render_settings.h"
+
+namespace lucent {
+
+// A working value as linear light: x^power, or sRGB's decoding. A negative value keeps
+// its sign (an EXR keeps it; 8-bit formats clamp it to 0 anyway).
+double workingToLinear(const WorkingGamma& gamma, double x);
+// Linear light as a working value: the inverse of workingToLinear.
+double linearToWorking(const WorkingGamma& gamma, double linear);
+
+// The whole image, in place (nothing to do for a linear working space).
+void workingToLinear(const WorkingGamma& gamma, Image& image);
+void linearToWorking(const WorkingGamma& gamma, Image& image);
+
+}  // namespace lucent
