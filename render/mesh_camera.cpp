@@ -21,6 +21,67 @@ MeshCameraProjection::MeshCameraProjection(const CameraFrame& frame, const Camer
     faces += m.data->triangles.size();
   }
   firstFace_.push_back(faces);
+  if (distribution_ == 3) binFacesByUv();
+}
+
+void MeshCameraProjection::binFacesByUv() {
+  const MeshData& data = *meshes_.front().data;
+  if (data.uvs.empty() || data.triangles.empty()) return;
+  Vec2 lo(kInf), hi(-kInf);
+  for (const auto& t : data.triangles)
+    for (int k = 0; k < 3; ++k) {
+      lo = glm::min(lo, data.uvs[t[k]]);
+      hi = glm::max(hi, data.uvs[t[k]]);
+    }
+  // Boxes widened by a hair, so a point the barycentric test takes just outside a face's
+  // box by rounding is still in one of its cells.
+  const Vec2 pad = 1e-9 * glm::max(hi - lo, Vec2(1.0));
+  lo -= pad;
+  hi += pad;
+  uvCells_ =
+      std::clamp(static_cast<int>(std::sqrt(static_cast<double>(data.triangles.size()))), 1, 1024);
+  uvLow_ = lo;
+  uvCell_ = (hi - lo) / static_cast<double>(uvCells_);
+  uvBins_.assign(static_cast<size_t>(uvCells_) * uvCells_, {});
+  auto cell = [&](double value, int axis) {
+    const double c = std::floor((value - uvLow_[axis]) / uvCell_[axis]);
+    return static_cast<int>(std::clamp(c, 0.0, uvCells_ - 1.0));
+  };
+  for (size_t f = 0; f < data.triangles.size(); ++f) {
+    const auto& t = data.triangles[f];
+    Vec2 a = data.uvs[t[0]], b = a;
+    for (int k = 1; k < 3; ++k) {
+      a = glm::min(a, data.uvs[t[k]]);
+      b = glm::max(b, data.uvs[t[k]]);
+    }
+    a -= pad;
+    b += pad;
+    for (int j = cell(a.y, 1); j <= cell(b.y, 1); ++j)
+      for (int i = cell(a.x, 0); i <= cell(b.x, 0); ++i)
+        uvBins_[static_cast<size_t>(j) * uvCells_ + i].push_back(static_cast<uint32_t>(f));
+  }
+}
+
+bool MeshCameraProjection::uvRay(double u, double v, Ray& ray) const {
+  if (uvBins_.empty()) return false;
+  const double cu = std::floor((u - uvLow_.x) / uvCell_.x);
+  const double cv = std::floor((v - uvLow_.y) / uvCell_.y);
+  if (!(cu >= 0.0 && cu < uvCells_ && cv >= 0.0 && cv < uvCells_)) return false;  // no face there
+  const Mesh& m = meshes_.front();
+  for (uint32_t f : uvBins_[static_cast<size_t>(cv) * uvCells_ + static_cast<size_t>(cu)]) {
+    const auto& t = m.data->triangles[f];
+    const Vec2& p1 = m.data->uvs[t[0]];
+    const Vec2& p2 = m.data->uvs[t[1]];
+    const Vec2& p3 = m.data->uvs[t[2]];
+    const double scale = (p2.x - p1.x) * (p3.y - p1.y) - (p3.x - p1.x) * (p2.y - p1.y);
+    if (scale == 0.0) continue;
+    const double b1 = ((p2.x - u) * (p3.y - v) - (p3.x - u) * (p2.y - v)) / scale;
+    const double b2 = ((p3.x - u) * (p1.y - v) - (p1.x - u) * (p3.y - v)) / scale;
+    const double b3 = ((p1.x - u) * (p2.y - v) - (p2.x - u) * (p1.y - v)) / scale;
+    if (b1 < 0.0 || b2 < 0.0 || b3 < 0.0) continue;
+    return faceRay(m, f, Vec3(b1, b2, b3), smooth_, ray);
+  }
+  return false;
 }
 
 bool MeshCameraProjection::faceRay(const Mesh& m, size_t face, const Vec3& w, bool interpolate,
@@ -85,25 +146,8 @@ bool MeshCameraProjection::generateRayNumber(const Vec2& film, const Vec2&, int 
       return face < meshes_[m].data->triangles.size() &&
              faceRay(meshes_[m], face, centroid, false, ray);
     }
-    default: {
-      const double u = (x - 0.5) / width_, v = 1.0 - (y + 0.5) / height_;
-      const Mesh& m = meshes_.front();
-      if (m.data->uvs.empty()) return false;
-      for (size_t f = 0; f < m.data->triangles.size(); ++f) {
-        const auto& t = m.data->triangles[f];
-        const Vec2& p1 = m.data->uvs[t[0]];
-        const Vec2& p2 = m.data->uvs[t[1]];
-        const Vec2& p3 = m.data->uvs[t[2]];
-        const double scale = (p2.x - p1.x) * (p3.y - p1.y) - (p3.x - p1.x) * (p2.y - p1.y);
-        if (scale == 0.0) continue;
-        const double b1 = ((p2.x - u) * (p3.y - v) - (p3.x - u) * (p2.y - v)) / scale;
-        const double b2 = ((p3.x - u) * (p1.y - v) - (p1.x - u) * (p3.y - v)) / scale;
-        const double b3 = ((p1.x - u) * (p2.y - v) - (p2.x - u) * (p1.y - v)) / scale;
-        if (b1 < 0.0 || b2 < 0.0 || b3 < 0.0) continue;
-        return faceRay(m, f, Vec3(b1, b2, b3), smooth_, ray);
-      }
-      return false;
-    }
+    default:
+      return uvRay((x - 0.5) / width_, 1.0 - (y + 0.5) / height_, ray);
   }
 }
 

@@ -44,9 +44,16 @@ class MeshCameraProjection final : public Projection {
   };
   // The ray from face `face` of mesh `m` at barycentric weights w (a face's centroid: 1/3 each).
   bool faceRay(const Mesh& m, size_t face, const Vec3& w, bool interpolate, Ray& ray) const;
+  // Distribution 3: the first mesh's faces binned by their (u, v) boxes, each cell's list in
+  // face order, so the first face of a cell's list that holds a point is the first of all.
+  void binFacesByUv();
+  bool uvRay(double u, double v, Ray& ray) const;
 
   std::vector<Mesh> meshes_;
   std::vector<size_t> firstFace_;  // of each mesh among all meshes' faces, and their total
+  Vec2 uvLow_{0.0}, uvCell_{1.0};  // the grid's corner and cell size (distribution 3)
+  int uvCells_ = 0;                // cells a side
+  std::vector<std::vector<uint32_t>> uvBins_;  // row-major, the faces of each cell
   int rays_;
   int distribution_;
   double offset_;

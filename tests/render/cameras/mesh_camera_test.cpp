@@ -6,7 +6,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 using namespace lucent;
 using namespace lucent::camtest;
@@ -173,4 +175,60 @@ TEST_CASE("mesh camera distribution 3: the face whose uvs hold the pixel's and s
   checkVec(r.d, glm::normalize(Vec3(0.2, 0.2, 0.6)));
   // The upper right half of the uv square holds no face: no ray.
   CHECK_FALSE(hasRay(*p, Vec2(8.5, 1.5)));
+}
+
+TEST_CASE("mesh camera distribution 3: of overlapping faces the first in order, at every pixel",
+          "[cameras][mesh-camera]") {
+  // A 6 x 5 grid of uv cells, each split into two triangles, under a second copy of the grid
+  // shifted by a third of a cell (so faces overlap, and faces share edges where pixels may
+  // fall), then degenerate faces. Each pixel's ray must come from the first face in order
+  // whose uv triangle holds its (u, v), found here by scanning every face.
+  auto d = std::make_shared<MeshData>();
+  auto addGrid = [&](double shift) {
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 6; ++i) {
+        const auto first = static_cast<uint32_t>(d->positions.size());
+        for (auto [a, b] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 1}}) {
+          const Vec2 uv((i + a + shift) / 6.0, (j + b + shift) / 5.0);
+          d->uvs.push_back(uv);
+          d->positions.push_back(Vec3(uv * 3.0, 0.1 * d->positions.size()));
+        }
+        d->triangles.push_back({first, first + 1, first + 2});
+        d->triangles.push_back({first + 1, first + 3, first + 2});
+      }
+  };
+  addGrid(0.0);
+  addGrid(1.0 / 3.0);
+  d->triangles.push_back({0, 0, 1});
+  const Camera cam = meshCamera(3, {{SourceLoc{}, d, Mat4(1.0)}});
+  const int w = 24, h = 20;
+  auto p = makeProjection(cam, w, h);
+  int rays = 0;
+  for (int py = 0; py < h; ++py)
+    for (int px = 0; px < w; ++px) {
+      const double x = std::clamp(px + 0.5, 0.0, w - 1.0);
+      const double y = std::clamp(py + 0.5 - 1.0, 0.0, h - 1.0);
+      const double u = (x - 0.5) / w, v = 1.0 - (y + 0.5) / h;
+      std::optional<Vec3> expected;
+      for (const auto& t : d->triangles) {
+        const Vec2 &p1 = d->uvs[t[0]], &p2 = d->uvs[t[1]], &p3 = d->uvs[t[2]];
+        const double s = (p2.x - p1.x) * (p3.y - p1.y) - (p3.x - p1.x) * (p2.y - p1.y);
+        if (s == 0.0) continue;
+        const double b1 = ((p2.x - u) * (p3.y - v) - (p3.x - u) * (p2.y - v)) / s;
+        const double b2 = ((p3.x - u) * (p1.y - v) - (p1.x - u) * (p3.y - v)) / s;
+        const double b3 = ((p1.x - u) * (p2.y - v) - (p2.x - u) * (p1.y - v)) / s;
+        if (b1 < 0.0 || b2 < 0.0 || b3 < 0.0) continue;
+        expected = b1 * d->positions[t[0]] + b2 * d->positions[t[1]] + b3 * d->positions[t[2]];
+        break;
+      }
+      INFO("pixel " << px << " " << py);
+      Ray r;
+      const bool got = p->generateRay(Vec2(px + 0.5, py + 0.5), Vec2(0.5), r);
+      REQUIRE(got == expected.has_value());
+      if (got) {
+        ++rays;
+        checkVec(r.o, *expected);
+      }
+    }
+  CHECK(rays > w * h / 2);
 }
