@@ -96,10 +96,8 @@ void writeOutput(const RenderJob& job, LoadedScene& loaded, const std::string& o
   // glibc keeps freed blocks for reuse (in each thread's arena, and below the top of
   // the heap); hand them back to the system, or they would count twice.
   ::malloc_trim(0);
-  if (gamma.linear()) return writeImageFile(job.image(), output);
-  Image light = job.image();
-  workingToLinear(gamma, light);
-  writeImageFile(light, output);
+  Image storage;
+  writeImageFile(lightOf(job.image(), gamma, storage), output);
 }
 
 }  // namespace

@@ -41,6 +41,13 @@ void workingToLinear(const WorkingGamma& gamma, Image& image) {
   if (!gamma.linear()) eachValue(image, [&](double x) { return workingToLinear(gamma, x); });
 }
 
+const Image& lightOf(const Image& image, const WorkingGamma& gamma, Image& storage) {
+  if (gamma.linear()) return image;
+  storage = image;
+  workingToLinear(gamma, storage);
+  return storage;
+}
+
 void linearToWorking(const WorkingGamma& gamma, Image& image) {
   if (!gamma.linear()) eachValue(image, [&](double x) { return linearToWorking(gamma, x); });
 }

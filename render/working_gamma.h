@@ -19,4 +19,8 @@ double linearToWorking(const WorkingGamma& gamma, double linear);
 void workingToLinear(const WorkingGamma& gamma, Image& image);
 void linearToWorking(const WorkingGamma& gamma, Image& image);
 
+// The image's light, as an output holds it: `image` itself for a linear working space (no
+// copy), else `storage` filled with its values decoded.
+const Image& lightOf(const Image& image, const WorkingGamma& gamma, Image& storage);
+
 }  // namespace lucent

@@ -34,13 +34,8 @@ bool LastImage::save(std::string& message) const {
     return false;
   }
   try {
-    if (gamma.linear()) {
-      writeImageFile(*image, output_);
-    } else {
-      Image light = *image;
-      workingToLinear(gamma, light);
-      writeImageFile(light, output_);
-    }
+    Image storage;
+    writeImageFile(lightOf(*image, gamma, storage), output_);
   } catch (const std::exception& e) {
     message = e.what();
     return false;

@@ -27,10 +27,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 // The PNG of the image's light: its values decoded when the scene has a working gamma.
 std::string lightPng(const Image& image, const WorkingGamma& gamma) {
-  if (gamma.linear()) return pngBytes(image);
-  Image light = image;
-  workingToLinear(gamma, light);
-  return pngBytes(light);
+  Image storage;
+  return pngBytes(lightOf(image, gamma, storage));
 }
 
 // A picture of the whole width x height image: `image` holds one value per step x step
