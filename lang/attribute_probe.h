@@ -31,8 +31,8 @@ class AttributeProbe : public AttributeInput {
   Vec3 direction(const char* attr, const Vec3& def) override;
   bool boolean(const char* attr, bool def) override;
   Color color(const char* attr, const Color& def, bool* scalar) override;
-  Color signedColor(const char* attr, const Color& def) override {
-    return color(attr, def, nullptr);
+  Color signedColor(const char* attr, const Color& def, bool* scalar) override {
+    return color(attr, def, scalar);
   }
   size_t choice(const char* attr, size_t def, const std::vector<std::string_view>& names) override;
   Mat4 transform(const char* attr, const Mat4& def) override;

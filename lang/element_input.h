@@ -32,11 +32,12 @@ class ElementInput final : public AttributeInput {
   Vec3 vector(const char* attr, const Vec3& def) override { return r_.vector(attr, def); }
   Vec3 direction(const char* attr, const Vec3& def) override { return r_.direction(attr, def); }
   using AttributeInput::color;
+  using AttributeInput::signedColor;
   Color color(const char* attr, const Color& def, bool* scalar) override {
     return r_.color(attr, def, scalar);
   }
-  Color signedColor(const char* attr, const Color& def) override {
-    return r_.color(attr, def, nullptr, true);
+  Color signedColor(const char* attr, const Color& def, bool* scalar) override {
+    return r_.color(attr, def, scalar, true);
   }
   bool boolean(const char* attr, bool def) override { return r_.boolean(attr, def); }
   size_t choice(const char* attr, size_t def, const std::vector<std::string_view>& names) override;

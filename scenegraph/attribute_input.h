@@ -75,8 +75,10 @@ class AttributeInput {
   virtual Color color(const char* attr, const Color& def, bool* scalar) = 0;
   Color color(const char* attr, const Color& def) { return color(attr, def, nullptr); }
   // As color, but a component may be negative: where POV-Ray's meaning takes one (a light
-  // that darkens, a transmission that subtracts).
-  virtual Color signedColor(const char* attr, const Color& def) = 0;
+  // that darkens, a transmission that subtracts, a surface whose filter and transmit add up
+  // to more than 1).
+  virtual Color signedColor(const char* attr, const Color& def, bool* scalar) = 0;
+  Color signedColor(const char* attr, const Color& def) { return signedColor(attr, def, nullptr); }
   // The index of the value in `names`; `def` when absent or not one of them (reported).
   virtual size_t choice(const char* attr, size_t def,
                         const std::vector<std::string_view>& names) = 0;

@@ -72,25 +72,29 @@ std::vector<FinishTerm> markInterior(std::vector<FinishTerm> table) {
 
 const std::vector<FinishTerm>& finishTerms() {
   static const std::vector<FinishTerm> table = markInterior({
-      term(color("emissive", &Material::emissive,
-                 "k_e, emitted colour (added as is; does not light other objects). Default 0."),
+      term(signedColor("emissive", &Material::emissive,
+                       "k_e, emitted colour (added as is; does not light other objects). Default "
+                       "0. May be negative, as ambient."),
            "finish { emission }, divided by the pigment", {{"emission"}}),
       term(
           [] {
-            Attribute a = color("ambient", &Material::ambient,
-                                "k_a, ambient reflectance, times the global ambient (render "
-                                "ambient). Default 0. A single number is also multiplied by the "
-                                "texture colour.");
+            Attribute a = signedColor(
+                "ambient", &Material::ambient,
+                "k_a, ambient reflectance, times the global ambient (render ambient). Default 0. "
+                "A single number is also multiplied by the texture colour. May be negative, as "
+                "diffuse.");
             // Whether it was one number decides whether the texture multiplies it.
             a.read = [](Material& m, AttributeInput& in) {
-              m.ambient = in.color("ambient", m.ambient, &m.ambientIsScalar);
+              m.ambient = in.signedColor("ambient", m.ambient, &m.ambientIsScalar);
             };
             return a;
           }(),
           "finish { ambient }, divided by the pigment"),
-      term(color("diffuse", &Material::diffuse,
-                 "k_d, Lambertian reflectance. Default 0, or 1 when the material has a texture "
-                 "(the texture colour multiplies it)."),
+      term(signedColor("diffuse", &Material::diffuse,
+                       "k_d, Lambertian reflectance. Default 0, or 1 when the material has a "
+                       "texture (the texture colour multiplies it). A negative component "
+                       "darkens what the lights give (POV-Ray's surface whose filter and "
+                       "transmit add up to more than 1: its own colour is subtracted)."),
            "the pigment's colour and finish { diffuse }", {{"color"}, {"colour"}, {"rgb"}}),
       term(color("specular", &Material::specular,
                  "k_s, Blinn-Phong highlight colour: k_s (N·H)^shininess. Default 0."),

@@ -31,7 +31,7 @@ class RecordingInput final : public AttributeInput {
   Vec3 direction(const char* attr, const Vec3& def) override { return ask(attr, def); }
   bool boolean(const char* attr, bool def) override { return ask(attr, def); }
   Color color(const char* attr, const Color& def, bool*) override { return ask(attr, def); }
-  Color signedColor(const char* attr, const Color& def) override { return ask(attr, def); }
+  Color signedColor(const char* attr, const Color& def, bool*) override { return ask(attr, def); }
   size_t choice(const char* attr, size_t def, const std::vector<std::string_view>&) override {
     return ask(attr, def);
   }

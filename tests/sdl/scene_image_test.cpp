@@ -262,6 +262,14 @@ TEST_CASE("scene reader image: assumed_gamma 2.2, a negative light and transmit 
   requireSameImageAsPovrayInPlace("working_gamma.pov", 240, 180);
 }
 
+TEST_CASE("scene reader image: filter and transmit above 1, the surface subtracting its colour",
+          "[sdl][scene][image][povray][transmit]") {
+  requireSameImageAsPovray("transmit_above_one.pov", 240, 180);
+  // convert writes the negative ambient, diffuse and emission as they are: the same pixels
+  // read back.
+  requireConvertKeepsPixels("transmit_above_one.pov", 120, 90);
+}
+
 TEST_CASE("scene reader image: mesh cameras of each distribution as POV-Ray's",
           "[sdl][scene][image][povray][camera][mesh-camera]") {
   // 0: two screens averaged, the rays started off the faces; 1: a mesh2 and a mesh counted
