@@ -127,6 +127,8 @@ Attributes imageAttributes(const ImageTexture& t, const std::string& folder) {
   if (t.all.filter != 0.0f) a.emplace_back("filter", xmlNumber(t.all.filter));
   if (t.all.transmit != 0.0f) a.emplace_back("transmit", xmlNumber(t.all.transmit));
   if (t.useAlpha) a.emplace_back("use-alpha", "true");
+  if (t.fileGamma)
+    a.emplace_back("gamma", t.fileGamma->srgb ? "srgb" : xmlNumber(t.fileGamma->power));
   return a;
 }
 

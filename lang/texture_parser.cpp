@@ -88,7 +88,8 @@ void readPaletteEntries(ElementReader& t, ImageTexture& img) {
 }
 
 Texture readTexture(ElementReader& t, const ImageTexture*) {
-  std::vector<std::string_view> attributes{"src", "scale", "filter", "transmit", "use-alpha"};
+  std::vector<std::string_view> attributes{"src",      "scale",     "filter",
+                                           "transmit", "use-alpha", "gamma"};
   attributes.insert(attributes.end(), imageReadingAttributes().begin(),
                     imageReadingAttributes().end());
   t.checkAttributes(attributes);
@@ -118,6 +119,13 @@ Texture readTexture(ElementReader& t, const ImageTexture*) {
   readImageProjection(t, img);
   readPaletteEntries(t, img);
   img.useAlpha = t.boolean("use-alpha", false);
+  if (auto g = t.text("gamma"); g && trim(*g) == "srgb") {
+    img.fileGamma = GammaCurve{true, 1.0};
+  } else if (t.has("gamma")) {
+    const double power =
+        t.number("gamma", 1.0, NumberRule::between(0.0, kInf, "a number above 0, or srgb", true));
+    img.fileGamma = GammaCurve{false, power};
+  }
   if (img.useAlpha && !img.path.empty()) {
     try {
       img.alphaTransmit = readImageTransmit(img.path);

@@ -8,6 +8,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -67,11 +68,38 @@ float premultipliedGamma(const ImageHeader& spec) {
   return g > 0.0f ? g : 1.0f;
 }
 
+// Decodes `count` values in place with `curve`, each an integer code value over `top` (255
+// or 65535), or for top 0 a float value (a negative one keeps its sign). Integer values take
+// theirs from a table: the exact decoding of each code value, rounded once to float.
+void decodeWithCurve(const GammaCurve& curve, float* values, size_t count, int top) {
+  if (curve.linear()) return;
+  if (curve.srgb && top > 0) {
+    decodeSrgbCodeValues(values, count, top);
+    return;
+  }
+  auto decode = [&](double v) {
+    const double a = std::abs(v);
+    const double light = curve.srgb ? srgbToLinear(a) : std::pow(a, curve.power);
+    return static_cast<float>(v < 0.0 ? -light : light);
+  };
+  if (top == 0) {
+    for (size_t i = 0; i < count; ++i) values[i] = decode(values[i]);
+    return;
+  }
+  std::vector<float> table(static_cast<size_t>(top) + 1);
+  for (int c = 0; c <= top; ++c) table[c] = decode(static_cast<double>(c) / top);
+  for (size_t i = 0; i < count; ++i) {
+    const long c = std::lround(static_cast<double>(values[i]) * top);
+    values[i] = table[static_cast<size_t>(std::clamp<long>(c, 0, top))];
+  }
+}
+
 }  // namespace
 
 void checkImageFile(const std::string& path) { openCheckedImage(path); }
 
-Image readImageFile(const std::string& path, PixelDecoding decoding) {
+Image readImageFile(const std::string& path, PixelDecoding decoding,
+                    const std::optional<GammaCurve>& fileGamma) {
   std::unique_ptr<ImageReader> in = openCheckedImage(path);
   const ImageHeader& spec = in->header();
   const int channels = spec.channels;
@@ -98,6 +126,13 @@ Image readImageFile(const std::string& path, PixelDecoding decoding) {
   // Integer files are sRGB-encoded unless they say otherwise: their code values decoded
   // exactly, as colours written as sRGB in a scene are.
   const bool integer = spec.eightBit || spec.sixteenBit;
+  if (decoding != PixelDecoding::AsStored && fileGamma) {
+    decodeWithCurve(*fileGamma, &image.pixels[0][0], 3 * image.pixels.size(),
+                    !integer        ? 0
+                    : spec.eightBit ? 255
+                                    : 65535);
+    return image;
+  }
   if (decoding != PixelDecoding::AsStored && integer &&
       (spec.colorSpace.empty() || spec.saysSrgb()))
     decodeSrgbCodeValues(&image.pixels[0][0], 3 * image.pixels.size(), spec.eightBit ? 255 : 65535);

@@ -6,6 +6,9 @@
 
 #include "image.h"
 
+#include "scenegraph/gamma_curve.h"
+
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -30,7 +33,10 @@ enum class PixelDecoding {
 // readImageFile() would refuse from the header (not an image, no pixels, too large).
 void checkImageFile(const std::string& path);
 
-// Reads the first three channels (a grey image is repeated into all three).
-Image readImageFile(const std::string& path, PixelDecoding decoding = PixelDecoding::Linear);
+// Reads the first three channels (a grey image is repeated into all three). `fileGamma`,
+// with a Linear or StraightLinear decoding: the curve the file's values encode light with,
+// in place of what the file says (integer and float files alike).
+Image readImageFile(const std::string& path, PixelDecoding decoding = PixelDecoding::Linear,
+                    const std::optional<GammaCurve>& fileGamma = std::nullopt);
 
 }  // namespace lucent

@@ -50,8 +50,16 @@ struct ImageMap::Impl {
   std::unique_ptr<PeriodicBilinear> sampler;  // the bilinear lookup of `linear`
 };
 
-ImageMap::ImageMap(const std::string& path, PixelDecoding decoding)
-    : ImageMap(readImageFile(path, decoding)) {}
+std::string imageKey(const ImageTexture& image) {
+  std::string key = image.alphaTransmit ? image.path + "\n(straight)" : image.path;
+  if (image.fileGamma)
+    key += image.fileGamma->srgb ? "\n(srgb)" : fmt::format("\n(gamma {})", image.fileGamma->power);
+  return key;
+}
+
+ImageMap::ImageMap(const std::string& path, PixelDecoding decoding,
+                   const std::optional<GammaCurve>& fileGamma)
+    : ImageMap(readImageFile(path, decoding, fileGamma)) {}
 
 ImageMap::ImageMap(Image pixels) : impl_(std::make_unique<Impl>()) {
   impl_->linear = std::move(pixels);
@@ -83,17 +91,17 @@ Color ImageMap::lookupPixel(double x, double y) const {
 
 namespace {
 
-// An image texture's pixels (decoded to linear, then encoded with the working gamma; their
-// colours divided by their alpha where the texture reads its transparency), from the cache
-// when there is one.
+// An image texture's pixels (decoded to linear, by the image's own gamma where it names one,
+// then encoded with the working gamma; their colours divided by their alpha where the
+// texture reads its transparency), from the cache when there is one.
 std::shared_ptr<const ImageMap> loadImage(const ImageTexture& image, ImageMapCache* cache,
                                           const WorkingGamma& gamma) {
   const PixelDecoding decoding =
       image.alphaTransmit ? PixelDecoding::StraightLinear : PixelDecoding::Linear;
   std::shared_ptr<const ImageMap> map;
   try {
-    map = cache ? cache->get(image.path, decoding)
-                : std::make_shared<const ImageMap>(image.path, decoding);
+    map = cache ? cache->get(image.path, decoding, image.fileGamma)
+                : std::make_shared<const ImageMap>(image.path, decoding, image.fileGamma);
   } catch (const ImageIOError& e) {
     throw LocatedError(image.loc, e.what(), LocatedError::Kind::Input);
   }

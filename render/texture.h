@@ -37,10 +37,9 @@ int checkerIndex(const CheckerTexture& checker, const Vec3& pObject, const Vec3&
 class ImageMap;
 using NestedImages = std::unordered_map<std::string, std::shared_ptr<const ImageMap>>;
 // An image's key among them: its path, marked where its colours are read straight (an
-// image that reads its transparency), since the file's pixels are then loaded otherwise.
-inline std::string imageKey(const ImageTexture& image) {
-  return image.alphaTransmit ? image.path + "\n(straight)" : image.path;
-}
+// image that reads its transparency) or decoded with a gamma of its own, since the file's
+// pixels are then loaded otherwise.
+std::string imageKey(const ImageTexture& image);
 
 // `images`: the pixels of the images among the texture's entries (null where it holds none:
 // a sky's, a pigment function's). `uvPoint`: the surface's (u, v, 0), which uv-mapped entries
@@ -64,7 +63,9 @@ class ImageMap {
  public:
   // Throws ImageIOError naming the file. A bump map keeps the stored values
   // (PixelDecoding::AsStored), as POV-Ray reads bump_map images without gamma.
-  explicit ImageMap(const std::string& path, PixelDecoding decoding = PixelDecoding::Linear);
+  // `fileGamma`: the curve the file's values are decoded with (readImageFile).
+  explicit ImageMap(const std::string& path, PixelDecoding decoding = PixelDecoding::Linear,
+                    const std::optional<GammaCurve>& fileGamma = std::nullopt);
   // Pixels already read (and converted).
   explicit ImageMap(Image pixels);
   ~ImageMap();

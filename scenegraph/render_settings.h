@@ -1,6 +1,7 @@
 // Image and tracing settings of the contract's <render>.
 #pragma once
 
+#include "gamma_curve.h"
 #include "source_loc.h"
 
 #include "primitives/math.h"
@@ -22,12 +23,8 @@ constexpr int kMaxAdaptiveDepth = 9;
 // values the renderer computes, are light encoded with this curve. The output image holds
 // them decoded to linear light (what POV-Ray writes), and an image texture's linear texels
 // are encoded with it to meet the colours they mix with (render/working_gamma.h).
-struct WorkingGamma {
-  bool srgb = false;   // sRGB's curve (assumed_gamma srgb, and POV-Ray's gamma-off scenes)
-  double power = 1.0;  // otherwise a value x is the light x^power
-  bool linear() const { return !srgb && power == 1.0; }
-  bool operator==(const WorkingGamma& o) const { return srgb == o.srgb && power == o.power; }
-};
+// sRGB's curve for assumed_gamma srgb and POV-Ray's gamma-off scenes.
+using WorkingGamma = GammaCurve;
 
 struct RenderSettings {
   SourceLoc loc;

@@ -3,6 +3,7 @@
 // Texture, which the parser's element names, the schema and the exporter read.
 #pragma once
 
+#include "gamma_curve.h"
 #include "pattern.h"
 #include "source_loc.h"
 
@@ -89,6 +90,10 @@ struct ImageTexture {
   // image_map reads it so); its 1 − alpha per pixel, read with the scene (null: opaque).
   bool useAlpha = false;
   std::shared_ptr<const ImageValueGrid> alphaTransmit{};
+  // How the file's values encode light (<image gamma>, POV-Ray's image_map `gamma`): they
+  // are decoded with it. None: Lucent's rule, integer files decoded from sRGB unless they
+  // name another colour space, float files taken as linear.
+  std::optional<GammaCurve> fileGamma{};
 
   // The filter and transmit of the pixels of palette index `index`.
   FilterTransmit paletteFT(int index) const {

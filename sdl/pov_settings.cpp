@@ -16,15 +16,19 @@ std::vector<std::string> applyGlobalSettings(const PovGlobalSettings& g,
   render.minWeight = g.adcBailout;
   render.ambient = g.ambientLight;
   render.background = background.color;
+  render.workingGamma = povWorkingGamma(g, languageVersion);
+  return notes;
+}
+
+WorkingGamma povWorkingGamma(const PovGlobalSettings& g, double languageVersion) {
   // POV-Ray computes with the colours as written and takes its results as light encoded
   // with the working gamma: Lucent's working-gamma. Gamma off (an older scene without
   // assumed_gamma) writes the values as they are: sRGB's curve there, which the output
   // undoes exactly, and image maps read as stored, which decoding and encoding with it give.
-  render.workingGamma = WorkingGamma{};
-  if (g.assumedGammaSrgb || (!g.assumedGamma && languageVersion < 3.7))
-    render.workingGamma.srgb = true;
-  else if (g.assumedGamma) render.workingGamma.power = *g.assumedGamma;
-  return notes;
+  WorkingGamma gamma;
+  if (g.assumedGammaSrgb || (!g.assumedGamma && languageVersion < 3.7)) gamma.srgb = true;
+  else if (g.assumedGamma) gamma.power = *g.assumedGamma;
+  return gamma;
 }
 
 SkyImport importSkySphere(const PovSkySphere& pov) {

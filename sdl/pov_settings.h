@@ -73,6 +73,9 @@ std::vector<std::string> applyGlobalSettings(const PovGlobalSettings& g,
                                              const PovBackground& background,
                                              RenderSettings& render, double languageVersion = 3.7);
 
+// The working gamma POV-Ray computes with under `languageVersion` (applyGlobalSettings').
+WorkingGamma povWorkingGamma(const PovGlobalSettings& g, double languageVersion);
+
 struct SkyImport {
   std::optional<Sky> sky;
   std::vector<std::string> differences;

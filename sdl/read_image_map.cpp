@@ -1,6 +1,7 @@
 // `image_map { [TYPE] "file" [gamma G] modifiers }` in a pigment: Lucent's <image> projected
 // from pattern space as POV-Ray 3.7 projects it (render/image_projection.h), placed by the
 // pigment's transforms like any pattern (docs/povray-import.md, "Image maps").
+#include "pov_image_gamma.h"
 #include "read_support.h"
 #include "scene_reader.h"
 
@@ -75,7 +76,7 @@ bool mayHoldPalette(const std::string& path) {
 }  // namespace
 
 // `[TYPE] "file" [gamma G] [premultiplied B]`: the file's path, found as an include is.
-std::string SceneReader::readImageFileSpec(TokenStream& in) {
+SceneReader::ImageFileSpec SceneReader::readImageFileSpec(TokenStream& in) {
   const Token type = in.next();
   if (isWord(type, "function"))
     in.error(type,
@@ -95,26 +96,43 @@ std::string SceneReader::readImageFileSpec(TokenStream& in) {
   // POV-Ray takes a name without an extension as its output type's file (png here).
   if (known == types.end() && std::filesystem::path(name).extension().empty())
     extensions = types.at("png");
-  const std::string path = in.findDataFile(name, fileLoc, extensions).string();
+  ImageFileSpec spec;
+  spec.path = in.findDataFile(name, fileLoc, extensions).string();
+  spec.format = known != types.end() ? std::string(known->first)
+                : std::filesystem::path(name).extension().empty()
+                    ? "png"
+                    : std::filesystem::path(name).extension().string();
   for (;;) {
     if (isWord(in.peek(), "gamma")) {
       const Token k = in.next();
+      spec.gammaLoc = k.loc();
       if (isWord(in.peek(), "srgb")) {
         in.next();
+        spec.gamma = GammaCurve{true, 1.0};
         continue;
       }
       const double g = in.parseFloat();
-      warn(in, k.loc(),
-           "the image's gamma " + formatNumber(g) +
-               " is not read (Lucent decodes an image map's 8-bit images from sRGB and a bump "
-               "map's as stored, float images as stored)");
+      if (!(g > 0.0))
+        in.error(k, "gamma " + formatNumber(g) + ": an image's gamma must be above 0");
+      spec.gamma = GammaCurve{false, g};
     } else if (isWord(in.peek(), "premultiplied")) {
       in.next();
       in.parseFloat();
     } else {
-      return path;
+      return spec;
     }
   }
+}
+
+std::string SceneReader::readStoredImageFile(TokenStream& in) {
+  ImageFileSpec spec = readImageFileSpec(in);
+  if (spec.gamma && !spec.gamma->linear())
+    warn(in, spec.gammaLoc,
+         std::string("the image's gamma ") +
+             (spec.gamma->srgb ? "srgb" : formatNumber(spec.gamma->power)) +
+             " is not read (Lucent reads a bump map's, an image pattern's and a material "
+             "map's values as stored, as POV-Ray does without a gamma)");
+  return spec.path;
 }
 
 // `map_type`, `once`, `interpolate`: what image_map and bump_map share; false if `k` is none.
@@ -163,7 +181,7 @@ void SceneReader::readBumpMap(const Token& t, TokenStream& in, PovNormal& n) {
   bump.projection = ImageProjection::planar;
   bump.interpolation = ImageInterpolation::none;  // POV-Ray's default
   bump.depth = n.spec.depth;
-  bump.path = readImageFileSpec(in);
+  bump.path = readStoredImageFile(in);
   for (;;) {
     const Token k = in.next();
     if (k.is("}")) break;
@@ -208,7 +226,7 @@ std::shared_ptr<const ImagePattern> SceneReader::readImagePattern(TokenStream& i
   in.expect("{");
   ImagePattern im;
   const SourceLoc fileLoc = in.peek().loc();
-  im.path = readImageFileSpec(in);
+  im.path = readStoredImageFile(in);
   for (;;) {
     const Token k = in.next();
     if (k.is("}")) break;
@@ -246,7 +264,7 @@ void SceneReader::readMaterialMap(const Token& t, TokenStream& in, PovTexture& t
   ImagePattern im;
   im.byIndex = true;
   const SourceLoc fileLoc = in.peek().loc();
-  im.path = readImageFileSpec(in);
+  im.path = readStoredImageFile(in);
   std::vector<PovTextureMapEntry> entries;
   for (;;) {
     const Token k = in.next();
@@ -330,7 +348,11 @@ void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {
   image.projection = ImageProjection::planar;
   image.interpolation = ImageInterpolation::none;  // POV-Ray's default
   if (const PatternPlacement* was = placementOf(p.pattern)) image.placement = *was;
-  image.path = readImageFileSpec(in);
+  const ImageFileSpec file = readImageFileSpec(in);
+  image.path = file.path;
+  // The curve POV-Ray decodes the file with, whatever Lucent's own rule would take.
+  image.fileGamma =
+      povImageMapGamma(file.path, file.format, file.gamma, global_, in.languageVersion());
   bool transmitAll = false;
 
   for (;;) {

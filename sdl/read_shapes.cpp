@@ -972,6 +972,26 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
   } catch (const std::exception& e) {
     in.error(fileLoc, "cannot read the height field's image '" + s.src + "': " + e.what());
   }
+  // The image's gamma and premultiplied, as after any image's name: POV-Ray reads a height
+  // field's values as stored unless a gamma is written.
+  for (;;) {
+    if (isWord(in.peek(), "gamma")) {
+      const Token k = in.next();
+      const bool srgb = isWord(in.peek(), "srgb");
+      const double g = srgb ? (in.next(), 1.0) : in.parseFloat();
+      if (!(g > 0.0))
+        in.error(k, "gamma " + attributeText(g) + ": an image's gamma must be above 0");
+      if (srgb || g != 1.0)
+        warn(in, k.loc(),
+             std::string("the image's gamma ") + (srgb ? "srgb" : attributeText(g)) +
+                 " is not read (Lucent reads a height field's values as stored, as POV-Ray "
+                 "does without a gamma)");
+    } else if (allowWord(in, "premultiplied")) {
+      in.parseFloat();
+    } else {
+      break;
+    }
+  }
   readHeightFieldOptions(s, in);
   const uint16_t top = *std::max_element(s.map->values.begin(), s.map->values.end());
   if (!(top / 65536.0 > s.waterLevel))

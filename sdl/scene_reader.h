@@ -450,7 +450,17 @@ class SceneReader : public ItemReader {
   void readImageAlpha(const Token& t, bool transmitAll, TokenStream& in, ImageTexture& image);
   void readPaletteEntry(const Token& k, bool transmit, TokenStream& in, ImageTexture& image);
   void readBumpMap(const Token& t, TokenStream& in, PovNormal& n);
-  std::string readImageFileSpec(TokenStream& in);
+  // An image file as image_map, bump_map, image_pattern and material_map name it.
+  struct ImageFileSpec {
+    std::string path;
+    std::string format;               // POV-Ray's type keyword, else the file's extension
+    std::optional<GammaCurve> gamma;  // the `gamma` written after the name, if any
+    SourceLoc gammaLoc;
+  };
+  ImageFileSpec readImageFileSpec(TokenStream& in);
+  // The file of an image whose values are read as stored (POV-Ray reads a bump map's, an
+  // image pattern's and a material map's without gamma unless one is written).
+  std::string readStoredImageFile(TokenStream& in);
   std::shared_ptr<const ImagePattern> readImagePattern(TokenStream& in);
   void readMaterialMap(const Token& t, TokenStream& in, PovTexture& tex);
   // read_object_pattern.cpp: `object { OBJECT transforms` of an object pattern (the keyword

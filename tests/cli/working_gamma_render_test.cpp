@@ -84,6 +84,34 @@ TEST_CASE("an image texture's texels come back to the same bytes under a working
   }
 }
 
+TEST_CASE("an image's own gamma decodes its file's values", "[cli][gamma][image-map]") {
+  TempFolder dir("lucent-image-gamma");
+  // A texture whose stored byte is 20 (dark, where sRGB's curve and a power of 2.2 part), shown by
+  // ambient light alone in a linear scene: the light written is the byte decoded by the image's
+  // gamma.
+  Image texture(4, 4);
+  for (Color& c : texture.pixels) c = Color(static_cast<float>(srgbToLinear(20.0 / 255.0)));
+  writeImageFile(texture, (dir.path() / "t.png").string());
+  REQUIRE(centreByte(dir.path() / "t.png") == 20);
+  auto render = [&](const std::string& gammaAttribute) {
+    writeFile(dir.path() / "s.xml",
+              R"(<scene version="1"><render width="8" height="6"/>)"
+              R"(<camera type="orthographic" width="1" position="0 0 5" look-at="0 0 0"/>)"
+              R"(<box min="-2 -2 -1" max="2 2 0"><material ambient="1" diffuse="0">)"
+              R"(<image src="t.png" projection="planar")" +
+                  gammaAttribute + R"(/></material></box></scene>)");
+    const LucentRun r = runLucent("render -q '" + (dir.path() / "s.xml").string() + "' -o '" +
+                                  (dir.path() / "s.png").string() + "'");
+    REQUIRE(r.status == 0);
+    return centreByte(dir.path() / "s.png");
+  };
+  CHECK(render("") == 20);  // Lucent's rule: an 8-bit file is sRGB
+  CHECK(render(R"( gamma="srgb")") == 20);
+  CHECK(render(R"( gamma="1")") == srgbByte(20.0f / 255.0f));  // the values are light
+  CHECK(render(R"( gamma="2.2")") == srgbByte(static_cast<float>(std::pow(20.0 / 255.0, 2.2))));
+  CHECK(srgbByte(static_cast<float>(std::pow(20.0 / 255.0, 2.2))) != 20);
+}
+
 TEST_CASE("the importer renders with POV-Ray's working gamma", "[cli][gamma][sdl]") {
   TempFolder dir("lucent-working-gamma-pov");
   auto render = [&](const std::string& text) {

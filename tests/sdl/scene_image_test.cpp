@@ -262,6 +262,17 @@ TEST_CASE("scene reader image: assumed_gamma 2.2, a negative light and transmit 
   requireSameImageAsPovrayInPlace("working_gamma.pov", 240, 180);
 }
 
+TEST_CASE("scene reader image: image maps decoded by format, chunks and gamma as POV-Ray's",
+          "[sdl][scene][image][povray][image-map][gamma]") {
+  // A PNG from sRGB or by its gAMA or sRGB chunk, a PPM as stored, an image's own gamma
+  // over the file's, encoded into assumed_gamma 1.5; then a 3.6 scene's, which reads
+  // files without a chunk as stored.
+  requireSameImageAsPovrayInPlace("image_gamma.pov", 340, 120);
+  requireSameImageAsPovrayInPlace("image_gamma_36.pov", 340, 120);
+  // convert writes each image's gamma: the same pixels read back.
+  requireConvertKeepsPixels("image_gamma.pov", 170, 60);
+}
+
 TEST_CASE("scene reader image: filter and transmit above 1, the surface subtracting its colour",
           "[sdl][scene][image][povray][transmit]") {
   requireSameImageAsPovray("transmit_above_one.pov", 240, 180);
