@@ -77,8 +77,7 @@ std::string imageMapText(const ImageTexture& image, const std::string& format,
   std::string map = fmt::format("{} {{ {} {}", ImageTexture::kind.pov, format, povString(absolute));
   if (image.fileGamma)
     map += image.fileGamma->srgb ? " gamma srgb" : " gamma " + povFloat(image.fileGamma->power);
-  else if (!facts.floating)
-    map += facts.srgb ? " gamma srgb" : " gamma 1.0";
+  else if (!facts.floating) map += facts.srgb ? " gamma srgb" : " gamma 1.0";
   if (mapType != 0) map += " map_type " + std::to_string(mapType);
   if (image.once) map += " once";
   map += kInterpolate[static_cast<int>(image.interpolation)];

@@ -34,7 +34,7 @@ void requireSameImageAsPovray(const std::string& name, int width, int height) {
 }
 
 // The scene converted to XML (lucent convert's writer) reads back and renders to the same
-// pixels.
+// pixels: written as if beside the .pov file, so that the files it names are read.
 void requireConvertKeepsPixels(const std::string& name, int width, int height) {
   const std::filesystem::path path = sdltest::dataFolder() / "scenes" / name;
   sdl::Options options;
@@ -42,8 +42,10 @@ void requireConvertKeepsPixels(const std::string& name, int width, int height) {
   options.imageHeight = height;
   const sdl::SceneLoad load = sdl::loadScene(path, options);
   REQUIRE(load.scene);
-  const std::string xml = writeSceneXml(*load.scene, WriteOptions{});
-  const ParseResult again = parseSceneString(xml, "converted.xml");
+  WriteOptions write;
+  write.folder = path.parent_path().string();
+  const std::string xml = writeSceneXml(*load.scene, write);
+  const ParseResult again = parseSceneString(xml, (path.parent_path() / "converted.xml").string());
   for (const Diagnostic& d : again.diagnostics.all()) UNSCOPED_INFO(d.str());
   REQUIRE(again.scene);
   const RgbImage a = renderWithLucent(*load.scene), b = renderWithLucent(*again.scene);
