@@ -74,8 +74,12 @@ source "$root/bench/pov_samples_lib.sh"
 # image_width, as the mesh cameras do), no output, neither with its process's start.
 # POV-Ray's figure is the difference of two millisecond clock readings, each cut to the
 # millisecond: a parse of d ms reads as floor(d) or floor(d)+1 ms, d on average. So each
-# figure is a mean over seven runs, the two programs taking turns, of the five lowest: a run
-# the machine interrupted (a figure several times the others) would otherwise decide it.
+# figure is a mean over seven runs of the five lowest: a run the machine interrupted (a
+# figure several times the others) would otherwise decide it. Each program's runs follow
+# one another, after an untimed run of the same command: a run right after the other
+# program's, or after the machine idled, reads 1.5 to 2 times slower for both (caches the
+# other process or the host emptied; docs/povray-import.md, Speed of importing), and taking
+# turns made that the figure of every run.
 # Sets importS and parseS (seconds, empty where no run gave a figure).
 measureImport() {
   local run wall p povArgs walls=() parses=() importArgs=() skip=0 a
@@ -85,15 +89,17 @@ measureImport() {
     case "$a" in -w | -h) skip=1 ;; *) importArgs+=("$a") ;; esac
   done
   importArgs+=(-w 8 -h 8)
-  for run in 1 2 3 4 5 6 7; do
+  povArgs=(+I"$name" +W8 +H8 -D -F +GS -V)
+  [ -n "$ini" ] && povArgs=("$ini" "${povArgs[@]}")
+  [ ${#frameArgs[@]} -gt 0 ] && povArgs+=(+SF"$(( $(iniFirst "$ini") + frame - 1 ))" +EF"$(( $(iniFirst "$ini") + frame - 1 ))")
+  for run in 0 1 2 3 4 5 6 7; do
     wall=$("$lucent" check --stats "${importArgs[@]}" "${checkFrame[@]}" "$name" 2>/dev/null |
       sed -n 's/^read in: .* s of CPU time, \([0-9.]*\) s of wall time.*/\1/p')
-    [ -n "$wall" ] && walls+=("$wall")
-    povArgs=(+I"$name" +W8 +H8 -D -F +GS -V)
-    [ -n "$ini" ] && povArgs=("$ini" "${povArgs[@]}")
-    [ ${#frameArgs[@]} -gt 0 ] && povArgs+=(+SF"$(( $(iniFirst "$ini") + frame - 1 ))" +EF"$(( $(iniFirst "$ini") + frame - 1 ))")
+    [ -n "$wall" ] && [ $run -gt 0 ] && walls+=("$wall")
+  done
+  for run in 0 1 2 3 4 5 6 7; do
     p=$(povray "${povArgs[@]}" 2>&1 | sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' | tail -1)
-    [ -n "$p" ] && parses+=("$p")
+    [ -n "$p" ] && [ $run -gt 0 ] && parses+=("$p")
   done
   importS=$(lowMean "${walls[@]}")
   parseS=$(lowMean "${parses[@]}")
@@ -229,7 +235,7 @@ fi
   fi
   echo
   awk -F'\t' '$2 == "imported" && $8 != "" && $9 != "" { n++; if ($8 + 0 <= $9 + 0) f++ }
-    END { if (n) printf "Importing (lucent check'"'"'s \"read in\": reading, evaluating, building and checking the scene) against POV-Ray'"'"'s own parse of the same scene (its Parse Time), wall time at 8x8, of seven runs taking turns the mean of the five lowest (POV-Ray'"'"'s clock counts whole milliseconds, so only a mean tells a parse under one), neither with its process'"'"'s start: Lucent faster or equal for %d of %d scenes.\n\n", f, n }' "$rows"
+    END { if (n) printf "Importing (lucent check'"'"'s \"read in\": reading, evaluating, building and checking the scene) against POV-Ray'"'"'s own parse of the same scene (its Parse Time), wall time at 8x8, of seven runs after an untimed one, each program'"'"'s in a row, the mean of the five lowest (POV-Ray'"'"'s clock counts whole milliseconds, so only a mean tells a parse under one), neither with its process'"'"'s start: Lucent faster or equal for %d of %d scenes.\n\n", f, n }' "$rows"
   echo "Refusals by feature (the first unsupported feature of each refused scene):"
   echo
   echo "| feature | scenes |"
