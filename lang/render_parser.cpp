@@ -3,6 +3,7 @@
 // global ambient, an optional self-intersection epsilon ("auto" or absent: automatic) and
 // the working gamma (POV-Ray's assumed_gamma).
 #include "element_parsers.h"
+#include "gamma_attribute.h"
 
 #include "scenegraph/render_limits.h"
 
@@ -50,10 +51,7 @@ void parseRender(ElementReader& r) {
   if (auto e = r.text("epsilon"); e && trim(*e) != "auto")
     s.epsilon = r.optionalNumber("epsilon", NumberRule::positive());
   // POV-Ray's assumed_gamma: a power above 0, or srgb.
-  if (auto g = r.text("working-gamma"); g && trim(*g) == "srgb") s.workingGamma.srgb = true;
-  else
-    s.workingGamma.power = r.number(
-        "working-gamma", 1.0, NumberRule::between(0.0, kInf, "a number above 0, or srgb", true));
+  if (auto g = readGammaAttribute(r, "working-gamma")) s.workingGamma = *g;
   r.forEachChild([&](pugi::xml_node n) {
     ElementReader(ctx, r.file(), n)
         .error("<render> takes no child elements, got <" + std::string(n.name()) + ">");

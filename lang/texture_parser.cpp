@@ -3,6 +3,7 @@
 // pattern_parser.cpp.
 #include "texture_parser.h"
 
+#include "gamma_attribute.h"
 #include "pattern_parser.h"
 #include "texture_map_parser.h"
 
@@ -119,13 +120,7 @@ Texture readTexture(ElementReader& t, const ImageTexture*) {
   readImageProjection(t, img);
   readPaletteEntries(t, img);
   img.useAlpha = t.boolean("use-alpha", false);
-  if (auto g = t.text("gamma"); g && trim(*g) == "srgb") {
-    img.fileGamma = GammaCurve{true, 1.0};
-  } else if (t.has("gamma")) {
-    const double power =
-        t.number("gamma", 1.0, NumberRule::between(0.0, kInf, "a number above 0, or srgb", true));
-    img.fileGamma = GammaCurve{false, power};
-  }
+  img.fileGamma = readGammaAttribute(t, "gamma");
   if (img.useAlpha && !img.path.empty()) {
     try {
       img.alphaTransmit = readImageTransmit(img.path);
