@@ -1,6 +1,6 @@
 #include "image_map_cache.h"
 
-#include <fmt/core.h>
+#include "working_gamma.h"
 
 #include <filesystem>
 #include <string>
@@ -14,8 +14,8 @@ std::shared_ptr<const ImageMap> ImageMapCache::get(const std::string& path, Pixe
   // ImageMap reports a missing or unreadable file (naming `path` as the scene resolved it).
   if (fileGamma && decoding != PixelDecoding::AsStored) {
     // One cache per decoding and curve: the key is the path the cache stamps.
-    const std::string curve = fileGamma->srgb ? "srgb" : fmt::format("gamma {}", fileGamma->power);
-    auto& files = curveFiles_[std::to_string(static_cast<int>(decoding)) + " " + curve];
+    auto& files =
+        curveFiles_[std::to_string(static_cast<int>(decoding)) + " " + curveText(*fileGamma)];
     return files.get(key,
                      [&] { return std::make_shared<const ImageMap>(path, decoding, fileGamma); });
   }

@@ -1,4 +1,5 @@
 #include "image_read.h"
+#include "working_gamma.h"
 
 #include "images/builtin/builtin_images.h"
 #include "images/image_reading.h"
@@ -77,11 +78,7 @@ void decodeWithCurve(const GammaCurve& curve, float* values, size_t count, int t
     decodeSrgbCodeValues(values, count, top);
     return;
   }
-  auto decode = [&](double v) {
-    const double a = std::abs(v);
-    const double light = curve.srgb ? srgbToLinear(a) : std::pow(a, curve.power);
-    return static_cast<float>(v < 0.0 ? -light : light);
-  };
+  auto decode = [&](double v) { return static_cast<float>(workingToLinear(curve, v)); };
   if (top == 0) {
     for (size_t i = 0; i < count; ++i) values[i] = decode(values[i]);
     return;

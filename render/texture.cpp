@@ -52,8 +52,7 @@ struct ImageMap::Impl {
 
 std::string imageKey(const ImageTexture& image) {
   std::string key = image.alphaTransmit ? image.path + "\n(straight)" : image.path;
-  if (image.fileGamma)
-    key += image.fileGamma->srgb ? "\n(srgb)" : fmt::format("\n(gamma {})", image.fileGamma->power);
+  if (image.fileGamma) key += "\n(" + curveText(*image.fileGamma) + ")";
   return key;
 }
 
@@ -96,8 +95,12 @@ namespace {
 // texture reads its transparency), from the cache when there is one.
 std::shared_ptr<const ImageMap> loadImage(const ImageTexture& image, ImageMapCache* cache,
                                           const WorkingGamma& gamma) {
-  const PixelDecoding decoding =
-      image.alphaTransmit ? PixelDecoding::StraightLinear : PixelDecoding::Linear;
+  // A file stored in the working gamma's own curve (POV-Ray's 3.6 gamma mode, its PPMs):
+  // its values are working values as they are, read without decoding and encoding again.
+  const bool stored = image.fileGamma && *image.fileGamma == gamma && !image.alphaTransmit;
+  const PixelDecoding decoding = stored                ? PixelDecoding::AsStored
+                                 : image.alphaTransmit ? PixelDecoding::StraightLinear
+                                                       : PixelDecoding::Linear;
   std::shared_ptr<const ImageMap> map;
   try {
     map = cache ? cache->get(image.path, decoding, image.fileGamma)
@@ -105,7 +108,7 @@ std::shared_ptr<const ImageMap> loadImage(const ImageTexture& image, ImageMapCac
   } catch (const ImageIOError& e) {
     throw LocatedError(image.loc, e.what(), LocatedError::Kind::Input);
   }
-  if (gamma.linear()) return map;
+  if (stored || gamma.linear()) return map;
   Image working = map->pixels();  // the cache keeps the linear pixels for other scenes
   linearToWorking(gamma, working);
   return std::make_shared<const ImageMap>(std::move(working));

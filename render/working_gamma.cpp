@@ -2,6 +2,8 @@
 
 #include "images/srgb_decoding.h"
 
+#include <fmt/core.h>
+
 #include <cmath>
 
 namespace lucent {
@@ -26,6 +28,10 @@ double workingToLinear(const WorkingGamma& gamma, double x) {
   if (gamma.linear()) return x;
   if (gamma.srgb) return withSign(x, [](double v) { return srgbToLinear(v); });
   return withSign(x, [&](double v) { return std::pow(v, gamma.power); });
+}
+
+std::string curveText(const GammaCurve& curve) {
+  return curve.srgb ? "srgb" : fmt::format("gamma {}", curve.power);
 }
 
 double linearToWorking(const WorkingGamma& gamma, double linear) {

@@ -7,6 +7,8 @@
 
 #include "scenegraph/render_settings.h"
 
+#include <string>
+
 namespace lucent {
 
 // A working value as linear light: x^power, or sRGB's decoding. A negative value keeps
@@ -18,6 +20,10 @@ double linearToWorking(const WorkingGamma& gamma, double linear);
 // The whole image, in place (nothing to do for a linear working space).
 void workingToLinear(const WorkingGamma& gamma, Image& image);
 void linearToWorking(const WorkingGamma& gamma, Image& image);
+
+// The curve in words ("srgb", "gamma 2.2"): what tells images decoded by different curves
+// apart where they are kept.
+std::string curveText(const GammaCurve& curve);
 
 // The image's light, as an output holds it: `image` itself for a linear working space (no
 // copy), else `storage` filled with its values decoded.
