@@ -22,8 +22,10 @@ double lightDistanceFactor(const Light& light, double r) {
 
 namespace {
 
-// The cone alone: 1 inside, 0 beyond, the smoothstep between.
+// The cone alone: 1 inside, 0 beyond, the smoothstep between; never light behind the
+// spot's plane, whatever its angle (POV-Ray's spotlight, whose falloff may pass 90 degrees).
 double coneFactor(const Light& light, double cosTheta) {
+  if (!(cosTheta > 0.0)) return 0.0;
   double cosOuter = std::cos(radians(light.angle));
   double cosInner = std::cos(radians(std::min(light.inner, light.angle)));
   if (cosTheta >= cosInner) return cosTheta > cosOuter ? 1.0 : 0.0;

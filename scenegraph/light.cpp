@@ -27,10 +27,6 @@ void writePovCone(const Light& l, PovLightOut& out) {
   out.line("radius " + out.number(std::min(l.inner, l.angle)));
   out.line("falloff " + out.number(l.angle));
   out.line("tightness " + out.number(l.tightness));
-  if (l.angle > 90.0)
-    out.warning(fmt::format(
-        "spot light: angle {} exceeds 90 degrees; POV-Ray's spotlight gives no light behind it",
-        l.angle));
 }
 
 void writePovArea(const Light& l, PovLightOut& out) {
@@ -227,7 +223,7 @@ void readInner(Light& l, AttributeInput& in) {
   // The light's own value is the default handed to the input, as every reader of the table
   // does, so that the scene writer reads it back through the same call (lang/attribute_probe.h).
   l.inner = in.has("inner") ? in.number("inner", l.inner,
-                                        NumberRule::between(0.0, 90.0, "an angle from 0 to 90"))
+                                        NumberRule::between(0.0, 180.0, "an angle from 0 to 180"))
                             : l.angle;
   if (l.inner > l.angle)
     in.attrError("inner",
@@ -270,7 +266,7 @@ const std::vector<LightAttribute>& lightAttributes() {
       aimed{T::Spot, T::Area, T::Cylindrical}, cone{T::Spot, T::Area}, area{T::Area},
       cylindrical{T::Cylindrical};
   const NumberRule spotAngle =
-      NumberRule::between(0.0, 90.0, "an angle above 0 and at most 90", true);
+      NumberRule::between(0.0, 180.0, "an angle above 0 and at most 180", true);
   static const std::vector<LightAttribute> table{
       {[] {
          AttributeInfo a = attribute("type", AttrType::Choice, "lightType", "point", "");
@@ -324,9 +320,11 @@ const std::vector<LightAttribute>& lightAttributes() {
                  "spot and spot-shaped area, cylindrical: a point on the axis (instead of "
                  "direction)."),
        aimed, readLookAt},
-      {attribute("angle", AttrType::Number, "spotAngle", "",
-                 "spot and spot-shaped area (seen from its centre): outer half-angle in degrees, "
-                 "above 0 and at most 90; no light beyond it. Default 30."),
+      {attribute(
+           "angle", AttrType::Number, "spotAngle", "",
+           "spot and spot-shaped area (seen from its centre): outer half-angle in degrees, "
+           "above 0 and at most 180; no light beyond it, nor behind the plane across the axis "
+           "at the light (POV-Ray's falloff). Default 30."),
        cone, readNumber("angle", &Light::angle, spotAngle)},
       {attribute("inner", AttrType::Number, "spotAngle", "",
                  "spot and spot-shaped area: half-angle of full intensity in degrees, at most "

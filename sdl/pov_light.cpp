@@ -93,11 +93,6 @@ LightImport importLight(const PovLight& pov) {
             "spotlight: tightness {} below 0 (POV-Ray brightens the light away from the axis) "
             "is imported as 0",
             pov.tightness));
-      if (l.angle > 90.0)
-        notes.push_back(fmt::format(
-            "spotlight: falloff {} exceeds 90 degrees; POV-Ray gives no light behind the "
-            "spotlight, Lucent does up to the falloff",
-            l.angle));
       if (pov.parallel)
         notes.push_back(
             "spotlight: `parallel` has no Lucent equivalent for a spotlight; its rays leave "

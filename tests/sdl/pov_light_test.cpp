@@ -47,34 +47,39 @@ Vec3 povAreaSample(const PovLight& l, const Vec3& p, int u, int v) {
 }  // namespace
 
 TEST_CASE("a spotlight lights as POV-Ray's at every angle from its axis", "[sdl][light]") {
-  for (double tightness : {0.0, 7.5}) {
-    PovLight pov;
-    pov.kind = PovLightKind::Spotlight;
-    pov.location = Vec3(1.0, 4.0, -2.0);
-    pov.pointAt = Vec3(0.0, 0.0, 1.0);
-    pov.radius = 12.0;
-    pov.falloff = 25.0;
-    pov.tightness = tightness;
-    pov.color = Color(0.9f, 0.8f, 0.7f);
-    const LightImport imported = importLight(pov);
-    CHECK(imported.differences.empty());
-    const Light& light = imported.light;
-    CHECK(light.type == LightType::Spot);
-    CHECK(light.inner == 12.0);
-    CHECK(light.angle == 25.0);
-    CHECK(light.tightness == tightness);
-    // Points at 0 to 30 degrees from the axis, 5 units from the light (POV-Ray's space).
-    const Vec3 axis = glm::normalize(pov.pointAt - pov.location);
-    const Vec3 side = glm::normalize(glm::cross(axis, Vec3(0.0, 1.0, 0.0)));
-    for (double deg = 0.0; deg <= 30.0; deg += 1.5) {
-      const double a = radians(deg);
-      const Vec3 p = pov.location + 5.0 * (std::cos(a) * axis + std::sin(a) * side);
-      const LightIncidence in = lightIncidence(light, lucentFromPov(p));
-      const double expected = povSpotFactor(pov, std::cos(a));
-      INFO("tightness " << tightness << ", " << deg << " degrees: POV-Ray " << expected);
-      CHECK(in.radiance.g == Approx(0.8 * expected).margin(1e-6));
+  // A falloff beyond 90 degrees too: POV-Ray's cone reaches only the front half (its factor
+  // is 0 where cos θ <= 0), its smoothstep still running from cos falloff.
+  const std::pair<double, double> cones[] = {{12.0, 25.0}, {60.0, 135.0}, {100.0, 170.0}};
+  for (const auto& [radius, falloff] : cones)
+    for (double tightness : {0.0, 7.5}) {
+      PovLight pov;
+      pov.kind = PovLightKind::Spotlight;
+      pov.location = Vec3(1.0, 4.0, -2.0);
+      pov.pointAt = Vec3(0.0, 0.0, 1.0);
+      pov.radius = radius;
+      pov.falloff = falloff;
+      pov.tightness = tightness;
+      pov.color = Color(0.9f, 0.8f, 0.7f);
+      const LightImport imported = importLight(pov);
+      CHECK(imported.differences.empty());
+      const Light& light = imported.light;
+      CHECK(light.type == LightType::Spot);
+      CHECK(light.inner == radius);
+      CHECK(light.angle == falloff);
+      CHECK(light.tightness == tightness);
+      // Points at 0 to 180 degrees from the axis, 5 units from the light (POV-Ray's space).
+      const Vec3 axis = glm::normalize(pov.pointAt - pov.location);
+      const Vec3 side = glm::normalize(glm::cross(axis, Vec3(0.0, 1.0, 0.0)));
+      for (double deg = 0.0; deg <= 180.0; deg += 1.5) {
+        const double a = radians(deg);
+        const Vec3 p = pov.location + 5.0 * (std::cos(a) * axis + std::sin(a) * side);
+        const LightIncidence in = lightIncidence(light, lucentFromPov(p));
+        const double expected = povSpotFactor(pov, std::cos(a));
+        INFO("radius " << radius << ", falloff " << falloff << ", tightness " << tightness << ", "
+                       << deg << " degrees: POV-Ray " << expected);
+        CHECK(in.radiance.g == Approx(0.8 * expected).margin(1e-6));
+      }
     }
-  }
   // The defaults: radius 30, falloff 45; the tightness is the light's.
   PovLight plain;
   plain.kind = PovLightKind::Spotlight;
