@@ -22,7 +22,8 @@ double toInt(double x) {
 
 // `.x` ... `.transmit` (0 to 4) or `.gray` (5) of a spline function's value.
 double splineMember(const std::array<double, 5>& v, int member) {
-  if (member == 5) return 0.297 * v[0] + 0.589 * v[1] + 0.114 * v[2];  // POV-Ray's grey
+  if (member == kMemberGray) return 0.297 * v[0] + 0.589 * v[1] + 0.114 * v[2];  // POV-Ray's
+  if (member == kMemberHf) return (v[0] + v[1] / 255.0) * kHfScale;
   return v[static_cast<size_t>(member)];
 }
 
@@ -39,8 +40,12 @@ class Evaluator {
     if (f.kind == FunctionValue::Kind::Pigment && pigments_) {
       // A pattern function gives its pigment's red (function_parse.cpp).
       if (member < 0 && f.what == "a pattern function") member = 0;
-      if (member >= 0)
+      if (member == kMemberHf) {
+        const std::optional<double> r = pigments_(f, 0, args), g = pigments_(f, 1, args);
+        if (r && g) return (*r + *g / 255.0) * kHfScale;
+      } else if (member >= 0) {
         if (std::optional<double> v = pigments_(f, member, args)) return *v;
+      }
     }
     switch (f.kind) {
       case FunctionValue::Kind::Unsupported:

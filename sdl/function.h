@@ -136,14 +136,21 @@ struct FunctionError : std::runtime_error {
 };
 
 // The bounds on functions (docs/povray-import.md, "Limits").
-constexpr int kMaxFunctionDepth = 1000;               // nodes and calls within calls
+constexpr int kMaxFunctionDepth = 1000;  // nodes and calls within calls
+// The components a function call takes after '.': 0 to 4 (`.x`/`.red` ... `.transmit`),
+// `.gray` and MegaPOV's `.hf`, which POV-Ray 3.7 still takes: (red + green/255) scaled by
+// 0.996093, a height field's 16-bit height from two 8-bit channels.
+constexpr int kMemberGray = 5;
+constexpr int kMemberHf = 6;
+constexpr double kHfScale = 0.996093;
+
 constexpr long long kMaxFunctionSteps = 10'000'000;   // nodes evaluated by one call
 constexpr size_t kMaxFunctionTextLength = 1'000'000;  // characters of an isosurface's text
 
 // f(args): POV-Ray's value of the call, as its function machine computes it (IEEE results
 // for a division by zero or a logarithm of a negative number, as in POV-Ray 3.7). Throws
 // FunctionError for what Lucent cannot evaluate (a pigment function, a noise function) and
-// past kMaxFunctionSteps. `args` has f.arity() numbers; `member` (0 to 5, as FnNode's) is
+// past kMaxFunctionSteps. `args` has f.arity() numbers; `member` (0 to 6, as FnNode's) is
 // the component taken of a pigment or spline function's value.
 // The value of a pigment or pattern function's call (its component `member` at the point
 // xyz), given by the scene reader, which holds the pigment; empty when it cannot.

@@ -143,8 +143,10 @@ int memberIndex(const Token& t) {
     case Kw::k_transmit:
       return 4;
     case Kw::k_gray:
-      return 5;
+      return kMemberGray;
     default:
+      if (t.text() == "grey") return kMemberGray;
+      if (t.text() == "hf") return kMemberHf;
       return -1;
   }
 }
@@ -567,11 +569,11 @@ FnNodePtr TokenStream::fnUserCall(FnScope& s) {
   getToken();
   if (cur_.is(".")) {
     getToken();
-    const int member = cur_.kind == TokenKind::Keyword ? memberIndex(cur_) : -1;
+    const int member = memberIndex(cur_);
     if (member < 0)
       error(cur_,
-            "expected x, y, z, t, u, v, red, green, blue, gray, filter or transmit after "
-            "'.', found " +
+            "expected x, y, z, t, u, v, red, green, blue, gray, grey, filter, transmit or hf "
+            "after '.', found " +
                 cur_.describe());
     if ((callee->kind != FunctionValue::Kind::Unsupported &&
          callee->kind != FunctionValue::Kind::Spline &&

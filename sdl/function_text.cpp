@@ -175,6 +175,13 @@ class TextWriter {
   // `name(x, y, z)`, the name listed once per pigment function and component.
   std::string pigmentCall(const FnNode& n, const std::string& x, const std::string& y,
                           const std::string& z) {
+    if (n.member == kMemberHf) {  // of the red and green components
+      FnNode red = n, green = n;
+      red.member = 0;
+      green.member = 1;
+      return "((" + pigmentCall(red, x, y, z) + " + " + pigmentCall(green, x, y, z) + " / 255) * " +
+             formatNumber(kHfScale) + ")";
+    }
     const PigmentCall* found = nullptr;
     for (const PigmentCall& c : *pigments_)
       if (c.callee == n.callee && c.member == n.member) found = &c;

@@ -137,6 +137,9 @@ struct PovFinish {
   double irid = 0.0;
   double iridThickness = 0.0;
   double iridTurbulence = 0.0;
+  // POV-Ray 3.0's `ior` in a finish: at the end of an object whose texture is plain, it
+  // becomes the object's interior's ior (POV-Ray's post-processing of each object).
+  std::optional<double> ior;
 };
 
 // `interior { ior fade_distance fade_power fade_color }` (every object has one: ior 1).

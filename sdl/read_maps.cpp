@@ -168,18 +168,19 @@ void SceneReader::refuseNestedImage(const TextureMapEntry& e, TokenStream& in) {
 // A block pattern's `pigment {..} [,] pigment {..}` list (the first 'pigment' next).
 bool SceneReader::readBlockPigments(TokenStream& in, PovPigment& p, size_t count) {
   std::vector<TextureMapEntry> list;
-  const SourceLoc at = in.peek().loc();
   while (list.size() < count && isWord(in.peek(), "pigment")) {
     in.next();
     list.push_back(entryOf(readPigment(in, defaults_.pigment), 0.0));
     in.allow(",");
   }
-  if (list.size() < count) {
-    keepError(in, at,
-              "a list of pigments in a block pattern needs " + std::to_string(count) +
-                  " pigments here (Lucent does not mix pigments and colours in one list)");
-    return true;
-  }
+  // POV-Ray's Parse_Blend_List: the cells the list leaves take the #default pigment; a
+  // colour where a pigment was awaited is POV-Ray's error.
+  if (list.size() < count && isColourStart(in.peek()))
+    keepError(in, in.peek().loc(),
+              "a colour after a block pattern's pigments (POV-Ray: \"No matching } in "
+              "'pigment'\"; a list is pigments alone, the cells it leaves take the #default "
+              "pigment)");
+  while (list.size() < count) list.push_back(entryOf(defaults_.pigment, 0.0));
   // An object pattern's pigments are a map's entries at its values 0 and 1.
   for (size_t i = 0; i < list.size(); ++i) list[i].at = static_cast<double>(i);
   if (auto* o = std::get_if<PatternTexture>(&p.pattern)) o->pigments = std::move(list);

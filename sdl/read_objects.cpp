@@ -105,7 +105,7 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
     if (const auto* item = use<ObjectItem>(in.peek(), in)) {
       in.next();
       o = item->object;
-      readObjectModifiers(o, in);
+      readObjectModifiers(o, in, t.text());
       return o;
     }
   }
@@ -141,11 +141,22 @@ PovObject SceneReader::readObject(const Token& t, TokenStream& in) {
   return o;
 }
 
+// POV-Ray's Parse_Object also takes a declared object written bare (`union { sphere {..}
+// A }`, `bounded_by { B }`, `A` at the top level): a copy of it, as `object { A }`.
+bool SceneReader::startsObject(const Token& t) {
+  return isObjectKeyword(t) || dynamic_cast<const ObjectItem*>(itemOf(t)) != nullptr;
+}
+
+PovObject SceneReader::readObjectOrCopy(const Token& t, TokenStream& in) {
+  if (const auto* item = use<ObjectItem>(t, in)) return item->object;
+  return readObject(t, in);
+}
+
 // The objects of a CSG operation or a light group, up to the first modifier.
 void SceneReader::readChildren(PovObject& o, TokenStream& in) {
-  while (isObjectKeyword(in.peek())) {
+  while (startsObject(in.peek())) {
     const Token child = in.next();
-    o.children.edit().push_back(readObject(child, in));
+    o.children.edit().push_back(readObjectOrCopy(child, in));
     // Objects built of declared objects grow without reading deeper (a loop that puts the
     // last union in the next): their depth and size are bounded as they are composed.
     const PovObject& c = o.children->back();
@@ -180,15 +191,35 @@ void SceneReader::readLightGroup(PovObject& o, TokenStream& in) {
   }
 }
 
-void SceneReader::readObjectModifiers(PovObject& o, TokenStream& in) {
+// `written`: the keyword of the block when it is not the object's own (`union { A`).
+void SceneReader::readObjectModifiers(PovObject& o, TokenStream& in, std::string_view written) {
+  const std::string block(written.empty() ? std::string_view(o.keyword) : written);
   for (;;) {
     const Token t = in.next();
-    if (t.is("}")) return;
+    if (t.is("}")) {
+      promoteFinishIor(o);
+      return;
+    }
     if (readObjectModifier(t, o, in)) continue;
+    if (startsObject(t))
+      in.error(t, "an object where the modifiers of " + block +
+                      " are read (POV-Ray: \"No "
+                      "matching } in '" +
+                      block + "'\"; in '" + block + " { IDENTIFIER' " +
+                      "the identifier is the copied object, modifiers follow: write object { " +
+                      "IDENTIFIER } to make it an operand)");
     if (t.kind != TokenKind::Keyword)
       in.error(t, "unexpected " + t.describe() + " in " + o.keyword);
     unsupported(t, in, true, &o);
   }
+}
+
+// POV-Ray's post-processing at the end of each object: a plain texture's `finish { ior }`
+// becomes the object's interior's ior (an interior made for it if it has none).
+void SceneReader::promoteFinishIor(PovObject& o) {
+  if (!o.texture || o.texture->mapped() || !o.texture->finish.ior) return;
+  if (!o.interior) o.interior = PovInterior{};
+  o.interior->ior = *o.texture->finish.ior;
 }
 
 bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& in) {
@@ -325,12 +356,12 @@ void SceneReader::readClipOrBound(const Token& t, PovObject& o, TokenStream& in)
   }
   const PovTransform backToObject = o.transform.inverse();
   std::vector<PovObject> objects;
-  while (isObjectKeyword(in.peek())) {
+  while (startsObject(in.peek())) {
     const Token first = in.next();
-    if (isWord(first, "light_source"))
+    objects.push_back(readObjectOrCopy(first, in));
+    if (objects.back().kind == NodeKind::Light)
       in.error(first,
                std::string("a light source cannot ") + (clip ? "clip" : "bound") + " an object");
-    objects.push_back(readObject(first, in));
     if (const PovObject* patch = patchIn(objects.back()))
       in.error(first, (patch == &objects.back() ? "a " + patch->keyword
                                                 : "this " + objects.back().keyword + " holds a " +

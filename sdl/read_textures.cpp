@@ -227,11 +227,31 @@ PovFinish SceneReader::readFinish(TokenStream& in, const PovFinish& start) {
       }
     } else if (w == "crand") {
       f.crand = in.parseFloat();
+    } else if (w == "ior") {
+      f.ior = in.parseFloat();
+    } else if (w == "refraction") {
+      readRefraction(t, in);
     } else {
       unreadInBlock(t, in);
       return f;
     }
   }
+}
+
+// POV-Ray 3.0's `refraction R` (finish or interior): once needed to turn refraction on,
+// in 3.7 a factor on the light seen through the object that shadows do not take.
+void SceneReader::readRefraction(const Token& t, TokenStream& in) {
+  const double r = in.parseFloat();
+  if (r == 1.0)
+    warn(in, t.loc(),
+         "'refraction 1' is not needed to turn refraction on (read and ignored, as POV-Ray "
+         "reads it)");
+  else
+    keepError(in, t.loc(),
+              "'refraction " + formatNumber(r) +
+                  "' (a factor on the light seen through the object, not on its shadow) is "
+                  "not supported by Lucent; POV-Ray attenuates with interior { fade_distance "
+                  "fade_power }");
 }
 
 // `reflection { [MIN,] MAX fresnel falloff F exponent F metallic [F] }` (the '{' read).
@@ -269,6 +289,7 @@ PovTexture SceneReader::readTextureBody(TokenStream& in, const PovTexture& start
     const Token& id = in.next();
     tex.name = id.element ? std::string() : std::string(id.text());
   }
+  if (!tex.mapped()) readTextureIdentifiers(in, tex);
   bool first = true;
   for (;;) {
     const Token t = in.next();
@@ -305,6 +326,34 @@ PovTexture SceneReader::readTextureBody(TokenStream& in, const PovTexture& start
       unreadInBlock(t, in);
       return tex;
     }
+  }
+}
+
+// `texture { PIGMENT_ID NORMAL_ID FINISH_ID ... }`: POV-Ray 3.7's Parse_Texture still takes
+// the identifiers of a plain texture's parts written bare before its blocks (POV-Ray 1's
+// form), each replacing that part, with a warning that they belong in their blocks.
+void SceneReader::readTextureIdentifiers(TokenStream& in, PovTexture& tex) {
+  for (;;) {
+    const Token& t = in.peek();
+    std::string_view block;
+    if (const auto* p = use<PigmentItem>(t, in)) {
+      tex.pigment = p->pigment;
+      block = "pigment";
+    } else if (const auto* n = use<NormalItem>(t, in)) {
+      tex.normal = n->normal;
+      block = "normal";
+    } else if (const auto* f = use<FinishItem>(t, in)) {
+      tex.finish = f->finish;
+      block = "finish";
+    } else {
+      return;
+    }
+    const Token id = in.next();
+    tex.name.clear();
+    warn(in, id.loc(),
+         "found " + std::string(block) + " identifier '" + std::string(id.text()) +
+             "' that should be in a '" + std::string(block) + "' statement (read as " +
+             std::string(block) + " { " + std::string(id.text()) + " }, as POV-Ray reads it)");
   }
 }
 
@@ -550,6 +599,7 @@ PovInterior SceneReader::readInterior(TokenStream& in, const PovInterior& start)
     else if (isWord(t, "fade_distance")) i.fadeDistance = in.parseFloat();
     else if (isWord(t, "fade_power")) i.fadePower = in.parseFloat();
     else if (isWord(t, "fade_color") || isWord(t, "fade_colour")) i.fadeColor = readColour(in).rgb;
+    else if (isWord(t, "refraction")) readRefraction(t, in);
     else if (t.kind == TokenKind::Keyword) {
       unsupported(t, in, true);
       if (startsNumber(in.peek())) in.parseFloat();  // caustics F, dispersion F

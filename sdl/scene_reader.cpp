@@ -282,8 +282,8 @@ void SceneReader::readScene(TokenStream& in) {
       readRainbow(t.loc(), in);
     } else if (isWord(t, "sky_sphere")) {
       readSkySphere(t.loc(), in);
-    } else if (isObjectKeyword(t)) {
-      place(readObject(t, in), in);
+    } else if (startsObject(t)) {
+      place(readObjectOrCopy(t, in), in);
     } else if (t.kind == TokenKind::Keyword) {
       unsupported(t, in, true);
     } else {

@@ -338,10 +338,13 @@ class SceneReader : public ItemReader {
 
   // read_objects.cpp
   bool isObjectKeyword(const Token& t) const;
+  bool startsObject(const Token& t);
+  PovObject readObjectOrCopy(const Token& t, TokenStream& in);
   PovObject readObject(const Token& t, TokenStream& in);
   void readShape(PovObject& o, TokenStream& in);
   void readIsosurface(PovObject& o, TokenStream& in);  // read_isosurface.cpp
-  void readObjectModifiers(PovObject& o, TokenStream& in);
+  void readObjectModifiers(PovObject& o, TokenStream& in, std::string_view written = {});
+  void promoteFinishIor(PovObject& o);
   void readChildren(PovObject& o, TokenStream& in);
   void readLightGroup(PovObject& o, TokenStream& in);
   bool readObjectModifier(const Token& t, PovObject& o, TokenStream& in);
@@ -414,6 +417,8 @@ class SceneReader : public ItemReader {
                          const Mat4& objectToTexture, const SourceLoc& at, TokenStream& in,
                          bool uv = false);
   void readUvTexture(const Token& t, TokenStream& in, PovTexture& tex, std::string_view closing);
+  void readTextureIdentifiers(TokenStream& in, PovTexture& tex);
+  void readRefraction(const Token& t, TokenStream& in);
   void mapAtUv(PovTexture& tex, bool bendInWorld);
   void placeUvNormal(const PovNormal& normal, const Mat4& objectToTexture, NormalSpec& spec,
                      const SourceLoc& at, TokenStream& in);

@@ -2,6 +2,7 @@
 // pieces of Spline::at written out, each segment's polynomial behind a bisection of
 // conditions on the parameter, so that a call in an isosurface or a function pattern is
 // the value POV-Ray's spline gives (its ends held as Spline::at holds them).
+#include "function.h"
 #include "spline.h"
 
 #include "lang/expression.h"
@@ -132,7 +133,10 @@ class SplineWriter {
 
 std::string splineText(const Spline& s, const std::string& t, int member) {
   if (s.entries.empty()) return "0";
-  if (member == 5)  // .gray: POV-Ray's weights of the first three
+  if (member == kMemberHf)  // .hf: the first two, POV-Ray's MegaPOV height
+    return paren("(" + SplineWriter(s, t, 0).text() + " + " + SplineWriter(s, t, 1).text() +
+                 " / 255) * " + formatNumber(kHfScale));
+  if (member == kMemberGray)  // .gray: POV-Ray's weights of the first three
     return paren("0.297*" + SplineWriter(s, t, 0).text() + " + 0.589*" +
                  SplineWriter(s, t, 1).text() + " + 0.114*" + SplineWriter(s, t, 2).text());
   return SplineWriter(s, t, member).text();

@@ -111,7 +111,8 @@ TEST_CASE("pigment function: a bare call, an unknown member and an image are ref
             "components"));
   CHECK(has(sdltest::errorsOf(std::string(kPovPigments) +
                               "sphere { 0, 1 pigment { function { G(x, y, z).hue } } }\n"),
-            "expected x, y, z, t, u, v, red, green, blue, gray, filter or transmit after '.'"));
+            "expected x, y, z, t, u, v, red, green, blue, gray, grey, filter, transmit or hf "
+            "after '.'"));
   CHECK(has(sdltest::errorsOf(
                 "#declare I = function { pigment { image_map { png \"scenes/image_maps.png\" } } "
                 "}\n"

@@ -119,8 +119,9 @@ TEST_CASE("scene reader maps: what stays refused, at its keyword",
   CHECK(errors[0] ==
         "test.pov:1:25: error: 'average' needs a pigment_map (the pigments it averages)");
   CHECK(errors[1] ==
-        "test.pov:2:33: error: a list of pigments in a block pattern needs 2 pigments here "
-        "(Lucent does not mix pigments and colours in one list)");
+        "test.pov:2:51: error: a colour after a block pattern's pigments (POV-Ray: \"No "
+        "matching } in 'pigment'\"; a list is pigments alone, the cells it leaves take the "
+        "#default pigment)");
   CHECK(errors[2].rfind("test.pov:3:63: error: 'cubic' is not supported by Lucent (a pattern "
                         "Lucent does not have; its patterns are gradient",
                         0) == 0);
