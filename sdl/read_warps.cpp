@@ -129,10 +129,10 @@ bool SceneReader::readWarp(const Token& t, TokenStream& in, PatternPlacement* pl
                "cylindrical, toroidal or cubic), not " +
                    kind.describe());
   }
-  if (!placement) {
-    keepError(in, t.loc(),
-              "'warp { " + std::string(kind.text()) +
-                  " }' on a solid colour is not supported by Lucent (a warp moves a pattern)");
+  if (!placement) {  // POV-Ray takes it, and a colour the same everywhere shows no move
+    warn(in, t.loc(),
+         "'warp { " + std::string(kind.text()) +
+             " }' on a solid colour changes nothing (a warp moves a pattern): ignored");
     return true;
   }
   if (!warp) return true;
