@@ -37,7 +37,8 @@ class Evaluator {
   explicit Evaluator(const PigmentValue& pigments) : pigments_(pigments) {}
 
   double call(const FunctionValue& f, const double* args, const SourceLoc& at, int member = -1) {
-    if (f.kind == FunctionValue::Kind::Pigment && pigments_) {
+    if ((f.kind == FunctionValue::Kind::Pigment || f.kind == FunctionValue::Kind::Transform) &&
+        pigments_) {
       // A pattern function gives its pigment's red (function_parse.cpp).
       if (member < 0 && f.what == "a pattern function") member = 0;
       if (member == kMemberHf) {
@@ -50,6 +51,7 @@ class Evaluator {
     switch (f.kind) {
       case FunctionValue::Kind::Unsupported:
       case FunctionValue::Kind::Pigment:
+      case FunctionValue::Kind::Transform:
         throw FunctionError(at, "cannot evaluate " + f.describe() + ": it is " + f.what +
                                     ", which Lucent's POV-Ray reader does not evaluate");
       case FunctionValue::Kind::Internal: {

@@ -106,9 +106,10 @@ struct FunctionValue {
   enum class Kind {
     Expression,   // a body in the function language
     Internal,     // `internal(N)`: one of POV-Ray's built-in functions (internal_functions.h)
-    Unsupported,  // a pigment, pattern or transform function: refused where called
+    Unsupported,  // a pigment or pattern function no reader made: refused where called
     Spline,       // `function { spline { } }`: one parameter, a vector value (`spline`)
     Pigment,      // `function { pigment { } }`: x, y, z; a colour (`pigment`, the reader's item)
+    Transform,    // `function { transform { } }`: x, y, z; the point moved (`pigment`: the item)
   };
   Kind kind = Kind::Expression;
   std::string name;  // the identifier it was declared as ("" when anonymous)
@@ -118,9 +119,9 @@ struct FunctionValue {
   int internal = -1;
   std::string what;                      // Unsupported: "a pigment function"...
   std::shared_ptr<const Spline> spline;  // Spline
-  ItemPtr pigment;                       // Pigment: the scene reader's pigment item
-  int locals = 0;                        // slots of sum() and prod() variables
-  int depth = 1;  // the longest chain of nodes and calls within calls (bounded)
+  ItemPtr pigment;  // Pigment, Transform: the scene reader's pigment or transform item
+  int locals = 0;   // slots of sum() and prod() variables
+  int depth = 1;    // the longest chain of nodes and calls within calls (bounded)
 
   int arity() const { return static_cast<int>(params.size()); }
   // "'f'" or "the function" (anonymous), for messages.

@@ -237,6 +237,15 @@ std::shared_ptr<const FunctionValue> TokenStream::parseFunction(bool declaration
       expect("}");
       return f;
     }
+    if (word == "transform" && items_) {
+      // POV-Ray's transform function: the point (x, y, z) moved, a vector (transforms.inc's
+      // vtransform and vinv_transform call one).
+      const Token t = cur_;
+      f->pigment = items_->read(t, *this);
+      if (f->pigment && f->pigment->kind() == "transform") f->kind = FunctionValue::Kind::Transform;
+      expect("}");
+      return f;
+    }
     if (word == "pigment" && items_) {
       // The scene reader reads the pigment; isosurfaces and function patterns evaluate it.
       const Token t = cur_;
@@ -577,7 +586,8 @@ FnNodePtr TokenStream::fnUserCall(FnScope& s) {
                 cur_.describe());
     if ((callee->kind != FunctionValue::Kind::Unsupported &&
          callee->kind != FunctionValue::Kind::Spline &&
-         callee->kind != FunctionValue::Kind::Pigment) ||
+         callee->kind != FunctionValue::Kind::Pigment &&
+         callee->kind != FunctionValue::Kind::Transform) ||
         callee->what == "a pattern function")
       error(cur_, "'." + std::string(cur_.text()) + "' of '" + name +
                       "', which gives a float, not a vector");
@@ -592,7 +602,8 @@ FnNodePtr TokenStream::fnUserCall(FnScope& s) {
                     "' is a spline function: it gives a vector, so a function takes one of its "
                     "components ('.x', '.red'...)");
     if ((callee->kind == FunctionValue::Kind::Unsupported ||
-         callee->kind == FunctionValue::Kind::Pigment) &&
+         callee->kind == FunctionValue::Kind::Pigment ||
+         callee->kind == FunctionValue::Kind::Transform) &&
         callee->what != "a pattern function")
       error(at, "'" + name + "' is " + callee->what +
                     ": it gives a vector, so a function takes one of its components "
@@ -628,6 +639,11 @@ void TokenStream::functionCall(Express& e, int& terms) {
     if (f->kind == FunctionValue::Kind::Pigment && f->what != "a pattern function") {
       for (int i = 0; i < 5; ++i) e.v[i] = evaluateFunction(*f, args, pigments, i);
       terms = 5;
+      return;
+    }
+    if (f->kind == FunctionValue::Kind::Transform) {  // a vector
+      for (int i = 0; i < 3; ++i) e.v[i] = evaluateFunction(*f, args, pigments, i);
+      terms = 3;
       return;
     }
     const double v = evaluateFunction(*f, args, pigments);

@@ -30,6 +30,7 @@ class TextWriter {
     switch (f.kind) {
       case FunctionValue::Kind::Unsupported:
       case FunctionValue::Kind::Pigment:
+      case FunctionValue::Kind::Transform:
         throw FunctionError(
             at, f.describe() + " is " + f.what +
                     ", which Lucent cannot evaluate in an isosurface or a function pattern");

@@ -57,11 +57,17 @@ std::vector<std::shared_ptr<const PigmentFunction>> SceneReader::pigmentFunction
   return out;
 }
 
-// `F(x, y, z).red` (or a pattern function's `F(x, y, z)`) evaluated while the scene is read
+// `F(x, y, z).red` (or a pattern function's `F(x, y, z)`, or a transform function's
+// `F(x, y, z).x`) evaluated while the scene is read
 // (a #declare, a macro's arithmetic): the pigment's colour at the point now, with the noise
 // generator global_settings chose so far.
 std::optional<double> SceneReader::pigmentValue(const FunctionValue& f, int member,
                                                 const double* xyz) {
+  // A transform function's value: the point moved, in POV-Ray's space; .x, .y, .z.
+  if (const auto* t = dynamic_cast<const TransformItem*>(f.pigment.get())) {
+    if (member < 0 || member > 2) return std::nullopt;
+    return t->transform.point(Vec3(xyz[0], xyz[1], xyz[2]))[member];
+  }
   const auto* item = dynamic_cast<const PigmentItem*>(f.pigment.get());
   if (!item || member < 0 || member > 5) return std::nullopt;
   std::shared_ptr<PigmentFunction>& p = evaluatedPigments_[&f];
