@@ -1,5 +1,7 @@
 #include "instance.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace lucent {
@@ -28,13 +30,41 @@ Vec3 worldToObjectRoundTripError(const Transform& t, const Vec3& pWorld) {
   return (1.0 + gamma(3)) * err;
 }
 
+// How far a point of the object's box, carried to the world and back, may land from itself
+// because objectFromWorld is not exactly worldFromObject's inverse (a composed transform's
+// inverse is the product of its parts' inverses, whose translations can cancel: a child
+// moved by 0.5 in a parent scaled by 80 and moved by 40.5 comes back off by 1e-17, eight
+// times the rounding bound above), in world units. Axes without a finite extent count 0.
+double inverseMismatch(const Transform& t, const AABB& box) {
+  const Mat4& m = t.worldFromObject();
+  const Mat4 d = t.objectFromWorld() * m;
+  Vec3 errObject(0.0);
+  for (int r = 0; r < 3; ++r) {
+    double e = std::abs(d[3][r]);
+    for (int c = 0; c < 3; ++c) {
+      const double extent = std::max(std::abs(box.lo[c]), std::abs(box.hi[c]));
+      if (std::isfinite(extent)) e += std::abs(d[c][r] - (r == c ? 1.0 : 0.0)) * extent;
+    }
+    errObject[r] = e;
+  }
+  double world = 0.0;
+  for (int r = 0; r < 3; ++r) {
+    double e = 0.0;
+    for (int c = 0; c < 3; ++c) e += std::abs(m[c][r]) * errObject[c];
+    world = std::max(world, e);
+  }
+  return 2.0 * world;
+}
+
 }  // namespace
 
 Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& worldFromObject,
                    uint32_t tag, size_t testSlot)
     : shape_(std::move(shape)), tag_(tag), testSlot_(static_cast<uint8_t>(testSlot)) {
-  if (!worldFromObject.isIdentity())
+  if (!worldFromObject.isIdentity()) {
     placed_ = std::make_unique<Placement>(Placement{worldFromObject});
+    placed_->surfaceError = inverseMismatch(worldFromObject, shape_->bounds());
+  }
   bounds_ = transformBounds(worldFromObject.worldFromObject(), shape_->bounds());
 }
 

@@ -232,6 +232,42 @@ TEST_CASE("secondary rays never re-hit through instances (scale, shear, mirror, 
   check("instanced octahedron mesh", mesh, true, 10000, 303);
 }
 
+TEST_CASE("secondary rays never re-hit through composed transforms whose inverses cancel",
+          "[primitives][offset][instance]") {
+  // A child moved by 0.5 inside a parent turned, scaled by 80 and moved by 40.5 (an
+  // imported POV-Ray table: its top lies at z = 0.5): the composed inverse is the product of
+  // the parts' inverses, 40.5/80 - 0.5 in its translation, and brings the top back 1e-17
+  // off, beyond the rounding bound. Every shadow ray of the top re-hit it before
+  // Instance took that mismatch into its surface error.
+  const auto child = Transform::fromMatrix(glm::translate(Mat4(1.0), Vec3(0.0, 0.5, 0.0)));
+  Mat4 p(1.0);
+  p[0] = Vec4(80, 0, 0, 0);
+  p[1] = Vec4(0, 0, -80, 0);
+  p[2] = Vec4(0, 80, 0, 0);
+  p[3] = Vec4(8.1, 8.1, 40.5, 1);
+  const auto parent = Transform::fromMatrix(p);
+  REQUIRE(child);
+  REQUIRE(parent);
+  const Transform world = child->followedBy(*parent);
+  Instance top(std::make_shared<Box>(Vec3(-0.225, -0.025, -0.225), Vec3(0.225, 0.0, 0.225)), world,
+               0);
+  Rng rng(311);
+  int hits = 0, rehits = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 target(uniform(rng, -9.0, 25.0), uniform(rng, -9.0, 25.0), 0.5);
+    const Ray primary(Vec3(8.0, 8.0, -19.0), target - Vec3(8.0, 8.0, -19.0));
+    Hit h;
+    if (!top.intersect(primary, h)) continue;
+    ++hits;
+    const SurfaceInfo si = top.surface(primary, h);
+    const Vec3 light(8.0, 8.0, -25.0);
+    const Vec3 o = offsetRayOrigin(si.p, si.pError, si.ng, light - si.p);
+    if (top.occluded(Ray(o, light - o, 0.0, 1.0 - 1e-6))) ++rehits;
+  }
+  CHECK(hits > 1000);
+  CHECK(rehits == 0);
+}
+
 TEST_CASE("secondary rays never re-hit: sphere sweeps of each spline through uneven balls",
           "[primitives][offset][sweep]") {
   const std::vector<SweepSphere> wiggle = {{Vec3(-1, -0.6, 0), 0.1},  {Vec3(-0.6, 0, 0), 0.3},
