@@ -159,7 +159,7 @@ TEST_CASE("scene reader warps: POV-Ray's errors and a warp on a solid colour",
   // POV-Ray takes a warp on a solid colour, which moves nothing: a warning.
   auto r = readScene("sphere { 0, 1 pigment { rgb 1 warp { cubic } } }\n");
   CHECK(r->load.scene);
-  CHECK(r->out.warnings == std::vector<std::string>{
-                               "test.pov:1:31: warning: 'warp { cubic }' on a solid colour "
-                               "changes nothing (a warp moves a pattern): ignored"});
+  CHECK(r->out.warnings ==
+        std::vector<std::string>{"test.pov:1:31: warning: 'warp { cubic }' on a solid colour "
+                                 "changes nothing (a warp moves a pattern): ignored"});
 }
