@@ -237,20 +237,15 @@ std::shared_ptr<const FunctionValue> TokenStream::parseFunction(bool declaration
       expect("}");
       return f;
     }
-    if (word == "transform" && items_) {
-      // POV-Ray's transform function: the point (x, y, z) moved, a vector (transforms.inc's
-      // vtransform and vinv_transform call one).
+    if ((word == "pigment" || word == "transform") && items_) {
+      // The scene reader reads the block. A pigment function's colour is evaluated by
+      // isosurfaces and function patterns; a transform function (transforms.inc's
+      // vtransform calls one) moves the point (x, y, z), a vector.
+      const bool pigment = word == "pigment";  // taken before `word`'s token moves on
       const Token t = cur_;
       f->pigment = items_->read(t, *this);
-      if (f->pigment && f->pigment->kind() == "transform") f->kind = FunctionValue::Kind::Transform;
-      expect("}");
-      return f;
-    }
-    if (word == "pigment" && items_) {
-      // The scene reader reads the pigment; isosurfaces and function patterns evaluate it.
-      const Token t = cur_;
-      f->pigment = items_->read(t, *this);
-      if (f->pigment && f->pigment->kind() == "pigment") f->kind = FunctionValue::Kind::Pigment;
+      if (f->pigment && f->pigment->kind() == (pigment ? "pigment" : "transform"))
+        f->kind = pigment ? FunctionValue::Kind::Pigment : FunctionValue::Kind::Transform;
       expect("}");
       return f;
     }
