@@ -274,6 +274,11 @@ bool SceneReader::readObjectModifier(const Token& t, PovObject& o, TokenStream& 
     // shape's (u, v, 0), placed by their own transforms (the object's leave them).
     if (o.texture) in.error(t, "uv_mapping must be specified before texture (POV-Ray's error)");
     o.uvMapping = true;
+    // The flag is the whole object's: a mesh's triangle textures (the meshes of its
+    // textures, splitByTexture) are read at (u, v) too.
+    if (o.kind == NodeKind::Union && (o.keyword == "mesh" || o.keyword == "mesh2"))
+      for (PovObject& part : o.children.edit())
+        if (part.texture) mapAtUv(part.texture.edit(), true);
   } else if (w == "interior") {
     o.interior = readInterior(in, o.interior ? *o.interior : PovInterior{});
   } else if (w == "material") {

@@ -1010,6 +1010,25 @@ struct MeshBuild {
   std::vector<std::array<Vec3, 3>> corners;
   std::vector<std::optional<std::array<Vec3, 3>>> normals;
   std::vector<std::optional<std::array<Vec2, 3>>> uvs;
+  // Each triangle's texture of its own (an index into `textures`), or -1 for the mesh's:
+  // a mesh triangle's `texture { T }`, a mesh2 face's index into its texture_list.
+  std::vector<int> texture;
+  std::vector<PovTexture> textures;
+  std::vector<SourceLoc> textureLocs;
+  // A mesh's triangles name declared textures: one entry per declaration (POV-Ray hashes
+  // them by identity), whatever the number of triangles.
+  std::map<std::pair<std::string, uint64_t>, int> named;
+
+  int addTexture(PovTexture t, const SourceLoc& at) {
+    if (!t.name.empty()) {
+      const auto [it, added] =
+          named.try_emplace({t.name, t.declaration}, static_cast<int>(textures.size()));
+      if (!added) return it->second;
+    }
+    textures.push_back(std::move(t));
+    textureLocs.push_back(at);
+    return static_cast<int>(textures.size()) - 1;
+  }
 };
 
 namespace {
@@ -1061,9 +1080,12 @@ Vec3 meshNormal(TokenStream& in, const Vec3& n, const SourceLoc& at, bool& warne
 
 }  // namespace
 
-// Reads a triangle's `uv_vectors` and refuses its texture; false when a texture was refused.
+// Reads a triangle's `uv_vectors` and its texture: `texture { T }`, or `texture_list { A,
+// B, C }` (a texture per corner, which POV-Ray blends across the triangle: refused unless
+// the three are one). False when a texture was refused.
 bool SceneReader::readMeshTriangleExtras(PovObject& o, TokenStream& in,
-                                         std::optional<std::array<Vec2, 3>>& uv) {
+                                         std::optional<std::array<Vec2, 3>>& uv, MeshBuild& b,
+                                         int& texture) {
   bool ok = true;
   for (;;) {
     const Token t = in.next();
@@ -1076,12 +1098,34 @@ bool SceneReader::readMeshTriangleExtras(PovObject& o, TokenStream& in,
       }
       uv = v;
     } else if (isWord(t, "texture") || isWord(t, "texture_list")) {
-      refuse(o, t.loc(), in,
-             "'" + std::string(t.text()) +
-                 "' in a mesh triangle is not supported by Lucent (its mesh has one "
-                 "material; give the texture to the whole mesh)");
-      ok = false;
-      skipBlock(in);
+      // Declared textures only, as POV-Ray reads them: `texture { T }`, `texture_list { A, B, C }`.
+      const bool one = isWord(t, "texture");
+      in.expect("{");
+      std::array<const TextureItem*, 3> items{};
+      std::array<std::string, 3> names;
+      for (size_t k = 0; k < (one ? 1 : 3); ++k) {
+        if (k > 0) in.parseComma();
+        const Token id = in.peek();
+        items[k] = use<TextureItem>(id, in);
+        if (!items[k])
+          in.error(id, "a mesh triangle's " + std::string(t.text()) + " takes " +
+                           (one ? "a declared texture" : "three declared textures") +
+                           " (as in POV-Ray), not " + id.describe());
+        if (!id.element) names[k] = std::string(id.text());
+        in.next();
+      }
+      in.expect("}");
+      if (one || (items[0] == items[1] && items[0] == items[2])) {
+        PovTexture declared = items[0]->texture;
+        declared.name = names[0];
+        texture = b.addTexture(std::move(declared), t.loc());
+      } else {
+        refuse(o, t.loc(), in,
+               "a texture per corner of a mesh triangle ('texture_list' of different textures, "
+               "which POV-Ray blends across the triangle) is not supported by Lucent (give the "
+               "triangle one texture)");
+        ok = false;
+      }
     } else {
       in.error(t, "unexpected " + t.describe() + " in a mesh triangle");
     }
@@ -1107,9 +1151,11 @@ void SceneReader::readMesh(PovObject& o, TokenStream& in) {
         }
       }
       std::optional<std::array<Vec2, 3>> uv;
-      ok = readMeshTriangleExtras(o, in, uv) && ok;
+      int texture = -1;
+      ok = readMeshTriangleExtras(o, in, uv, b, texture) && ok;
       if (degenerate(p)) continue;
       b.corners.push_back(p);
+      b.texture.push_back(texture);
       // A smooth triangle with three equal normals is flat in POV-Ray.
       const bool flat = !smooth || (glm::length(n[0] - n[1]) < kPovEpsilon &&
                                     glm::length(n[0] - n[2]) < kPovEpsilon);
@@ -1129,12 +1175,17 @@ void SceneReader::readMesh(PovObject& o, TokenStream& in) {
 
 // mesh2 { vertex_vectors { N, V... } [normal_vectors { N, V... }] [uv_vectors { N, UV... }]
 // face_indices { N, <a, b, c>... } [normal_indices { N, <a, b, c>... }] [uv_indices {...}]
-// [inside_vector V] }. Without normal_indices, face_indices index the normals too.
+// [inside_vector V] }. Without normal_indices, face_indices index the normals too. With a
+// texture_list { N, texture {...}... }, a face may name its texture: `<a, b, c>, T`, or one
+// per corner `<a, b, c>, T1, T2, T3` (refused unless the three are one).
 void SceneReader::readMesh2(PovObject& o, TokenStream& in) {
   std::vector<Vec3> vertices, normals;
   std::vector<Vec2> uvVectors;
   std::vector<std::array<long, 3>> faces, normalFaces, uvFaces;
+  std::vector<int> faceTextures;  // per face: an index into b.textures, or -1
+  MeshBuild b;
   bool insideVector = false;
+  std::optional<SourceLoc> perCorner;  // the first face with a texture per corner
   // `NAME { N, item... }`: N items read by `item`.
   auto list = [&](const char* name, auto&& item) {
     in.expect("{");
@@ -1163,16 +1214,20 @@ void SceneReader::readMesh2(PovObject& o, TokenStream& in) {
     } else if (isWord(t, "uv_vectors")) {
       list("uv_vectors", [&] { uvVectors.push_back(parseUv(in)); });
     } else if (isWord(t, "face_indices")) {
-      list("face_indices", indices(faces));
+      readFaceIndices(in, b.textures.size(), faces, faceTextures, perCorner);
     } else if (isWord(t, "normal_indices")) {
       list("normal_indices", indices(normalFaces));
     } else if (isWord(t, "uv_indices")) {
       list("uv_indices", indices(uvFaces));
     } else if (isWord(t, "texture_list")) {
-      refuseShape(o, t.loc(), in,
-                  "'texture_list' (textures per mesh triangle) is not supported by Lucent (its "
-                  "mesh has one material; give the texture to the whole mesh)");
-      return;
+      if (!b.textures.empty()) in.error(t, "the mesh2 has a second texture_list");
+      list("texture_list", [&] {
+        const Token word = in.next();
+        if (!isWord(word, "texture"))
+          in.error(word, "expected a texture in the mesh2's texture_list, not " + word.describe());
+        b.textures.push_back(readTexture(in, defaultTexture()));
+        b.textureLocs.push_back(word.loc());
+      });
     } else if (isWord(t, "inside_vector")) {
       in.parseVector();
       insideVector = true;
@@ -1183,6 +1238,13 @@ void SceneReader::readMesh2(PovObject& o, TokenStream& in) {
   }
   if (vertices.empty() || faces.empty())
     in.error(o.loc, "the mesh2 needs vertex_vectors and face_indices");
+  if (perCorner) {
+    refuse(o, *perCorner, in,
+           "a texture per corner of a mesh2 face (three different texture indices, which "
+           "POV-Ray blends across the face) is not supported by Lucent (give the face one "
+           "texture)");
+    return;
+  }
   const std::vector<std::array<long, 3>>& nf = normalFaces.empty() ? faces : normalFaces;
   if (!normals.empty() && nf.size() != faces.size())
     in.error(o.loc, "the mesh2 has " + std::to_string(nf.size()) + " normal_indices for " +
@@ -1193,12 +1255,12 @@ void SceneReader::readMesh2(PovObject& o, TokenStream& in) {
                           " is outside its " + std::to_string(count) + " vectors");
     return static_cast<size_t>(i);
   };
-  MeshBuild b;
   for (size_t f = 0; f < faces.size(); ++f) {
     std::array<Vec3, 3> p{};
     for (size_t k = 0; k < 3; ++k) p[k] = vertices[index(faces[f][k], vertices.size(), "vertex")];
     if (degenerate(p)) continue;
     b.corners.push_back(p);
+    b.texture.push_back(faceTextures[f]);
     std::optional<std::array<Vec3, 3>> n;
     if (!normals.empty()) {
       std::array<Vec3, 3> v{};
@@ -1218,12 +1280,64 @@ void SceneReader::readMesh2(PovObject& o, TokenStream& in) {
   finishMeshShape(o, in, b, insideVector);
 }
 
+// face_indices { N, <a, b, c> [, T [, T2, T3]]... }: each face with the texture indices
+// that follow it (POV-Ray reads each float after a face as one, up to three), checked
+// against the texture_list read before (`textures` of them). The first face with three
+// that differ sets perCorner to where its indices are.
+void SceneReader::readFaceIndices(TokenStream& in, size_t textures,
+                                  std::vector<std::array<long, 3>>& faces,
+                                  std::vector<int>& faceTextures,
+                                  std::optional<SourceLoc>& perCorner) {
+  in.expect("{");
+  const int n = parseCount(in, "number of face_indices");
+  // A face written as a vector identifier is known only once read: kept for the next face.
+  std::optional<Value> next;
+  for (int i = 0; i < n; ++i) {
+    in.parseComma();
+    const Value face = next ? *next : in.parseExpression();
+    next.reset();
+    if (!face.isNumeric()) in.error(in.current(), "expected a face's three vertex indices");
+    const int terms = face.terms();
+    const Vec3 v = terms == 1 ? Vec3(face.v[0]) : Vec3(face.v[0], face.v[1], face.v[2]);
+    faces.push_back({static_cast<long>(v.x), static_cast<long>(v.y), static_cast<long>(v.z)});
+    std::array<long, 3> own{-1, -1, -1};
+    const SourceLoc indicesAt = in.peek().loc();
+    int count = 0;
+    for (; count < 3; ++count) {
+      in.parseComma();
+      if (in.peek().is("}") || in.peek().is("<")) break;
+      const SourceLoc at = in.peek().loc();
+      const Value index = in.parseExpression();
+      if (index.terms() != 1) {
+        next = index;
+        break;
+      }
+      own[static_cast<size_t>(count)] = static_cast<long>(index.v[0]);
+      if (own[static_cast<size_t>(count)] < 0 ||
+          static_cast<size_t>(own[static_cast<size_t>(count)]) >= textures)
+        in.error(at, "the face's texture index " + std::to_string(own[static_cast<size_t>(count)]) +
+                         " is outside the mesh2's texture_list of " + std::to_string(textures) +
+                         " textures");
+    }
+    for (int k = 1; k < count; ++k)
+      if (own[static_cast<size_t>(k)] != own[0] && !perCorner) perCorner = indicesAt;
+    faceTextures.push_back(static_cast<int>(own[0]));
+  }
+  if (next) in.error(in.current(), "more face_indices than the " + std::to_string(n) + " given");
+  in.parseComma();
+  in.expect("}");
+}
+
 // The mesh's data made and repaired; POV-Ray's solidity (inside_vector) compared with
 // Lucent's (a closed, consistently oriented mesh is a solid).
 void SceneReader::finishMeshShape(PovObject& o, TokenStream& in, const MeshBuild& b,
                                   bool insideVector) {
   if (b.corners.empty()) in.error(o.loc, "the " + o.keyword + " has no triangle (of some area)");
   o.faces = faces(b);
+  if (std::any_of(b.texture.begin(), b.texture.end(), [](int t) { return t >= 0; })) {
+    splitByTexture(o, in, b, insideVector);
+    return;
+  }
   MeshSpec s;
   try {
     s.data = meshData(*o.faces);
@@ -1240,6 +1354,57 @@ void SceneReader::finishMeshShape(PovObject& o, TokenStream& in, const MeshBuild
          "the " + o.keyword +
              " has an inside_vector but is not closed: Lucent takes it as a surface, not a solid");
   o.shape = std::move(s);
+}
+
+// A mesh whose triangles have textures of their own: a union of meshes, one per texture
+// and one of the triangles that take the mesh's (POV-Ray's triangle texture wins over the
+// object's), each texture in the mesh's own space as POV-Ray transforms them with it.
+void SceneReader::splitByTexture(PovObject& o, TokenStream& in, const MeshBuild& b,
+                                 bool insideVector) {
+  std::vector<MeshBuild> parts(b.textures.size() + 1);
+  for (size_t f = 0; f < b.corners.size(); ++f) {
+    MeshBuild& p = parts[static_cast<size_t>(b.texture[f] + 1)];
+    p.corners.push_back(b.corners[f]);
+    p.normals.push_back(b.normals[f]);
+    p.uvs.push_back(b.uvs[f]);
+  }
+  std::vector<PovObject> children;
+  bool closedPart = false, openPart = false;
+  for (size_t g = 0; g < parts.size(); ++g) {
+    if (parts[g].corners.empty()) continue;
+    PovObject part;
+    part.keyword = o.keyword;
+    part.loc = o.loc;
+    MeshSpec s;
+    try {
+      s.data = meshData(*faces(parts[g]));
+    } catch (const std::exception& e) {
+      in.error(o.loc, "the " + o.keyword + "'s triangles: " + e.what());
+    }
+    (s.data->closed ? closedPart : openPart) = true;
+    part.shape = std::move(s);
+    if (g > 0) {
+      part.texture = b.textures[g - 1];
+      part.textureLoc = b.textureLocs[g - 1];
+    }
+    children.push_back(std::move(part));
+  }
+  if (closedPart && !insideVector)
+    warn(in, o.loc,
+         "a part of the " + o.keyword +
+             " of one texture is closed, so Lucent takes it as a solid; POV-Ray's mesh has no "
+             "inside without inside_vector (it differs inside CSG and refractive objects)");
+  else if (insideVector && openPart)
+    warn(in, o.loc,
+         "the " + o.keyword +
+             " has an inside_vector, but Lucent draws it as one mesh per texture of its "
+             "triangles and those that are not closed as surfaces, not solids (it differs "
+             "inside CSG and refractive objects)");
+  o.kind = NodeKind::Union;
+  o.shape = std::nullopt;
+  o.nodes += children.size();
+  o.depth = 2;
+  o.children.edit() = std::move(children);
 }
 
 }  // namespace lucent::sdl

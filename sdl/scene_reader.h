@@ -372,9 +372,12 @@ class SceneReader : public ItemReader {
   void readHeightField(PovObject& o, TokenStream& in);
   void readMesh(PovObject& o, TokenStream& in);
   void readMesh2(PovObject& o, TokenStream& in);
-  bool readMeshTriangleExtras(PovObject& o, TokenStream& in,
-                              std::optional<std::array<Vec2, 3>>& uv);
+  bool readMeshTriangleExtras(PovObject& o, TokenStream& in, std::optional<std::array<Vec2, 3>>& uv,
+                              MeshBuild& b, int& texture);
+  void readFaceIndices(TokenStream& in, size_t textures, std::vector<std::array<long, 3>>& faces,
+                       std::vector<int>& faceTextures, std::optional<SourceLoc>& perCorner);
   void finishMeshShape(PovObject& o, TokenStream& in, const MeshBuild& b, bool insideVector);
+  void splitByTexture(PovObject& o, TokenStream& in, const MeshBuild& b, bool insideVector);
 
   // read_textures.cpp
   PovNormal readNormal(TokenStream& in, const PovNormal* start);

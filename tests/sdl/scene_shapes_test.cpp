@@ -405,6 +405,77 @@ mesh2 {
   CHECK(said);
 }
 
+TEST_CASE("scene shapes: a mesh's triangle textures make a union of a mesh per texture",
+          "[sdl][scene][shapes][mesh]") {
+  auto r = readScene(R"(
+#declare A = texture { pigment { rgb <1, 0, 0> } }
+#declare B = texture { pigment { rgb <0, 0, 1> } }
+mesh {
+  triangle { 0, x, y texture { A } }
+  triangle { x, x + y, y texture_list { B, B, B } }
+  triangle { 0, y, z }
+  triangle { 0, x, z texture { A } }
+  pigment { rgb <0, 1, 0> }
+}
+mesh2 {
+  vertex_vectors { 4, 0, x, y, z }
+  texture_list { 2, texture { A } texture { B } }
+  face_indices { 3, <0, 1, 2>, 1, <0, 2, 3>, 1, 1, 1, <0, 1, 3> }
+}
+)");
+  REQUIRE(r->load.scene);
+  const Scene& scene = *r->load.scene;
+  // The mesh's own triangles first (the one without a texture), then a mesh per texture, in
+  // the order the textures were first written; the triangles of one texture together.
+  const Node& mesh = topNode(scene, 0);
+  CHECK(mesh.kind == NodeKind::Union);
+  REQUIRE(mesh.children.size() == 3);
+  const size_t triangles[] = {1, 2, 1};
+  for (size_t k = 0; k < 3; ++k) {
+    const auto* m = std::get_if<MeshSpec>(&*mesh.children[k]->shape);
+    REQUIRE(m);
+    CHECK(m->data->triangles.size() == triangles[k]);
+  }
+  // The untextured triangles take the mesh's material; the others their texture's.
+  REQUIRE(mesh.material);
+  CHECK(scene.materials[*mesh.material].diffuse == Color(0.0f, 0.6f, 0.0f));
+  CHECK(!mesh.children[0]->material);
+  REQUIRE(mesh.children[1]->material);
+  CHECK(scene.materials[*mesh.children[1]->material].diffuse == Color(0.6f, 0.0f, 0.0f));
+  REQUIRE(mesh.children[2]->material);
+  CHECK(scene.materials[*mesh.children[2]->material].diffuse == Color(0.0f, 0.0f, 0.6f));
+  // A mesh2 face without an index takes the mesh's texture; three equal indices are one.
+  const Node& mesh2 = topNode(scene, 1);
+  REQUIRE(mesh2.children.size() == 2);
+  CHECK(std::get<MeshSpec>(*mesh2.children[0]->shape).data->triangles.size() == 1);
+  CHECK(std::get<MeshSpec>(*mesh2.children[1]->shape).data->triangles.size() == 2);
+  REQUIRE(mesh2.children[1]->material);
+  CHECK(scene.materials[*mesh2.children[1]->material].diffuse == Color(0.0f, 0.0f, 0.6f));
+}
+
+TEST_CASE("scene shapes: a mesh's triangle textures wrongly written, said where they are",
+          "[sdl][scene][shapes][mesh][errors]") {
+  const auto index = errorsOf(R"(mesh2 { vertex_vectors { 3, 0, x, y }
+  texture_list { 1, texture { } } face_indices { 1, <0, 1, 2>, 1 } })");
+  REQUIRE(index.size() == 1);
+  CHECK(index[0] ==
+        "test.pov:2:64: error: the face's texture index 1 is outside the mesh2's "
+        "texture_list of 1 textures");
+  const auto second = errorsOf(R"(mesh2 { vertex_vectors { 3, 0, x, y }
+  texture_list { 1, texture { } } texture_list { 1, texture { } } face_indices { 1, <0, 1, 2> } })");
+  REQUIRE(second.size() == 1);
+  CHECK(second[0] == "test.pov:2:35: error: the mesh2 has a second texture_list");
+  // POV-Ray's mesh triangle takes declared textures only.
+  const auto inline_ = errorsOf("mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } }");
+  REQUIRE(inline_.size() == 1);
+  CHECK(inline_[0].find("test.pov:1:37: error: a mesh triangle's texture takes a declared "
+                        "texture (as in POV-Ray), not ") == 0);
+  const auto extra = errorsOf(R"(mesh2 { vertex_vectors { 3, 0, x, y }
+  face_indices { 1, <0, 1, 2> <0, 1, 2> } })");
+  REQUIRE(extra.size() == 1);
+  CHECK(extra[0].find("test.pov:2:31: error: ") == 0);
+}
+
 TEST_CASE("scene shapes: smooth_triangle, its normals unit and z negated", "[sdl][scene][shapes]") {
   auto r = readScene(
       "smooth_triangle { <0, 0, 1>, <0, 0, -2>, <1, 0, 1>, <0, 3, 0>, <0, 1, 2>, "
@@ -436,13 +507,13 @@ union { object { B } object { L } object { S } object { P } object { E } object 
 TEST_CASE("scene shapes: what Lucent cannot take in a shape, refused where it is, every one",
           "[sdl][scene][shapes][errors]") {
   // Every POV-Ray 3.7 shape is read; what is refused is within one (a height field's image
-  // format, a mesh's per-triangle textures, superellipsoid exponents).
+  // format, a mesh face's texture per corner, superellipsoid exponents).
   const auto errors = errorsOf(R"(sphere { 0, 1 }
 union { height_field { gif "x.gif" }
         sphere { 0, 1 } }
 #declare P = height_field { gif "x.gif" } object { P }
 height_field { pot "x.pot" }
-mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 1, texture { } } face_indices { 1, <0, 1, 2>, 0 } }
+mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 2, texture { } texture { } } face_indices { 1, <0, 1, 2>, 0, 1, 1 } }
 superellipsoid { <0, 1> }
 height_field { gif "x.gif" }
 )");
@@ -456,8 +527,9 @@ height_field { gif "x.gif" }
         "png, pgm, ppm, tga, jpeg and tiff images as height fields)\ntest.pov:4:52: note: the "
         "declaration is used here");
   CHECK(errors[2].find("test.pov:5:16: error: a height field from 'pot' is not supported") == 0);
-  CHECK(errors[3].find("test.pov:6:39: error: 'texture_list' (textures per mesh triangle) is "
-                       "not supported by Lucent") == 0);
+  CHECK(errors[3].find("test.pov:6:110: error: a texture per corner of a mesh2 face (three "
+                       "different texture indices, which POV-Ray blends across the face) is not "
+                       "supported by Lucent") == 0);
   CHECK(errors[4].find("test.pov:7:1: error: 'superellipsoid' exponents of 0 or less, or above "
                        "10, are not supported by Lucent (here <0, 1>") == 0);
   CHECK(errors[5].find("test.pov:8:16: error: a height field from 'gif' is not supported") == 0);
@@ -472,21 +544,25 @@ TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where 
 #include "shapesq.inc"
 object { Monkey_Saddle }
 #declare J = height_field { gif "x.gif" }
-#declare Meshes = union { mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } } sphere { 0, 1 } }
+#declare A = texture { pigment { rgb 1 } }
+#declare B = texture { pigment { rgb 0 } }
+#declare Meshes = union { mesh { triangle { 0, x, y texture_list { A, B, A } } } sphere { 0, 1 } }
 )");
   REQUIRE(r->load.scene);
   CHECK(shapeOf<PolySpec>(*r->load.scene, 0).order == 4);  // a quartic
   // Placed (twice), each refusal is said once, at its keyword.
   const auto errors = errorsOf(
       R"(#declare J = height_field { gif "x.gif" }
-#declare Meshes = union { mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } } sphere { 0, 1 } }
+#declare A = texture { pigment { rgb 1 } }
+#declare B = texture { pigment { rgb 0 } }
+#declare Meshes = union { mesh { triangle { 0, x, y texture_list { A, B, A } } } sphere { 0, 1 } }
 object { J }
 object { Meshes translate x }
 object { Meshes }
 )");
   REQUIRE(errors.size() == 2);
   CHECK(errors[0].find("test.pov:1:29: error: a height field from 'gif' is not supported") == 0);
-  CHECK(errors[1].find("test.pov:2:53: error: 'texture' in a mesh triangle is not supported") == 0);
+  CHECK(errors[1].find("test.pov:4:53: error: a texture per corner of a mesh triangle") == 0);
 }
 
 TEST_CASE("scene shapes: blob thresholds and mesh triangles Lucent cannot hold",
@@ -497,8 +573,9 @@ TEST_CASE("scene shapes: blob thresholds and mesh triangles Lucent cannot hold",
   threshold 0.5
 }
 blob { sphere { 0, 1, 1 } threshold -1 }
-mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } }
-mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 1, texture { } } face_indices { 1, <0, 1, 2>, 0 } }
+#declare A = texture { pigment { rgb 1 } } #declare B = texture { A }
+mesh { triangle { 0, x, y texture_list { A, B, A } } }
+mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 2, texture { } texture { } } face_indices { 1, <0, 1, 2>, 1, 0, 1 } }
 )");
   // The first blob is read: the first component scaled unevenly (its own transform), the
   // second with its own pigment.
@@ -506,9 +583,8 @@ mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 1, texture { } } face_indic
   CHECK(errors[0] ==
         "test.pov:6:1: error: a blob threshold of -1 is not supported by Lucent (it takes a "
         "threshold above 0: at or below 0 all of space away from the components would be inside)");
-  CHECK(errors[1].find("test.pov:7:27: error: 'texture' in a mesh triangle is not supported") == 0);
-  CHECK(errors[2].find("test.pov:8:39: error: 'texture_list' (textures per mesh triangle) is not "
-                       "supported") == 0);
+  CHECK(errors[1].find("test.pov:8:27: error: a texture per corner of a mesh triangle") == 0);
+  CHECK(errors[2].find("test.pov:9:110: error: a texture per corner of a mesh2 face") == 0);
 }
 
 TEST_CASE("scene shapes: a blob component's own texture is a material of the blob's space",
