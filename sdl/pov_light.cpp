@@ -85,8 +85,10 @@ LightImport importLight(const PovLight& pov) {
       break;
     case PovLightKind::Spotlight:
       l.type = LightType::Spot;
-      l.angle = spotFalloff(pov);
-      l.inner = std::min(spotRadius(pov), l.angle);
+      // A radius beyond the falloff: POV-Ray's full light reaches the radius and stops there
+      // (its smoothstep is below its falloff, so never met), a cone of radius, hard edged.
+      l.angle = std::max(spotFalloff(pov), spotRadius(pov));
+      l.inner = spotRadius(pov);
       l.tightness = std::max(pov.tightness, 0.0);
       if (pov.tightness < 0.0)
         notes.push_back(fmt::format(

@@ -49,7 +49,9 @@ Vec3 povAreaSample(const PovLight& l, const Vec3& p, int u, int v) {
 TEST_CASE("a spotlight lights as POV-Ray's at every angle from its axis", "[sdl][light]") {
   // A falloff beyond 90 degrees too: POV-Ray's cone reaches only the front half (its factor
   // is 0 where cos θ <= 0), its smoothstep still running from cos falloff.
-  const std::pair<double, double> cones[] = {{12.0, 25.0}, {60.0, 135.0}, {100.0, 170.0}};
+  // A radius beyond the falloff too (POV-Ray's full light then ends at the radius).
+  const std::pair<double, double> cones[] = {
+      {12.0, 25.0}, {60.0, 135.0}, {100.0, 170.0}, {40.0, 20.0}, {120.0, 60.0}};
   for (const auto& [radius, falloff] : cones)
     for (double tightness : {0.0, 7.5}) {
       PovLight pov;
@@ -65,7 +67,7 @@ TEST_CASE("a spotlight lights as POV-Ray's at every angle from its axis", "[sdl]
       const Light& light = imported.light;
       CHECK(light.type == LightType::Spot);
       CHECK(light.inner == radius);
-      CHECK(light.angle == falloff);
+      CHECK(light.angle == std::max(falloff, radius));
       CHECK(light.tightness == tightness);
       // Points at 0 to 180 degrees from the axis, 5 units from the light (POV-Ray's space).
       const Vec3 axis = glm::normalize(pov.pointAt - pov.location);
