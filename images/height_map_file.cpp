@@ -18,22 +18,18 @@ namespace lucent {
 namespace {
 
 // What OpenImageIO hides: a PNG's colour type and bit depth (its IHDR chunk; a palette PNG's
-// indices are read through libpng) and GIF's palette, which POV-Ray reads as indices.
+// indices are read through libpng; a GIF's through giflib, readGif).
 // A PNG's IHDR facts, when the file is a PNG.
 struct PngFacts {
   bool png = false;
   int depth = 0, type = 0;
 };
 
-PngFacts refusePaletteFiles(const std::string& path) {
+PngFacts pngFacts(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   unsigned char b[26] = {};
   f.read(reinterpret_cast<char*>(b), sizeof b);
   const std::streamsize n = f.gcount();
-  if (n >= 6 && b[0] == 'G' && b[1] == 'I' && b[2] == 'F')
-    throw HeightMapError(
-        "a GIF holds palette indices, which POV-Ray takes as heights (index x 256); "
-        "save the image as a grey PNG");
   static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   if (n < 26 || !std::equal(png, png + 8, b)) return {};
   const int depth = b[24], type = b[25];
@@ -145,10 +141,39 @@ float povPngGrey(long v, int max) {
   return float(static_cast<unsigned char>(grey * 255.0f)) / 255.0f;
 }
 
+namespace {
+
+// A GIF: POV-Ray's height is the palette index times 256 (the colours unused).
+std::shared_ptr<const HeightMap> readGifHeights(const std::string& path) {
+  GifPixels gif;
+  const std::string error = readGif(path, gif);
+  if (!error.empty()) throw HeightMapError(error);
+  ImageHeader h;
+  h.width = gif.width;
+  h.height = gif.height;
+  h.channels = 1;
+  h.eightBit = true;
+  checkHeader(h);
+  auto map = std::make_shared<HeightMap>();
+  map->width = h.width;
+  map->depth = h.height;
+  map->values.resize(gif.indices.size());
+  for (int row = 0; row < h.height; ++row) {
+    const int z = h.height - 1 - row;  // POV-Ray's z = 0 is the image's bottom row
+    for (int x = 0; x < h.width; ++x)
+      map->values[static_cast<size_t>(z) * h.width + x] =
+          static_cast<uint16_t>(gif.indices[static_cast<size_t>(row) * h.width + x] * 256);
+  }
+  return map;
+}
+
+}  // namespace
+
 std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
-  const PngFacts pngFacts = refusePaletteFiles(path);
+  if (isGifFile(path)) return readGifHeights(path);
+  const PngFacts png = pngFacts(path);
   refuseBadPnmMaximum(path);
-  const StoredImage image = pngFacts.png ? readPng(path) : readThroughPlugin(path);
+  const StoredImage image = png.png ? readPng(path) : readThroughPlugin(path);
   const ImageHeader& h = image.header;
   const std::vector<float>& px = image.values;
 
@@ -165,11 +190,11 @@ std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path) {
       // The stored code values, then POV-Ray's floats of them (value / max).
       auto code = [&](int c) { return static_cast<float>(std::lround(p[c] * top)) / top; };
       uint16_t v;
-      if (pngFacts.png && pngFacts.type == 3) {
+      if (png.png && png.type == 3) {
         // A palette image: POV-Ray's height is the palette index times 256.
         v = static_cast<uint16_t>(std::lround(p[0] * top) * 256);
-      } else if (pngFacts.png && pngFacts.type == 0 && pngFacts.depth <= 8) {
-        const int max = (1 << pngFacts.depth) - 1;
+      } else if (png.png && png.type == 0 && png.depth <= 8) {
+        const int max = (1 << png.depth) - 1;
         v = static_cast<uint16_t>(povPngGrey(std::lround(p[0] * max), max) * 65535.0f);
       } else if (grey) {
         v = static_cast<uint16_t>(code(0) * 65535.0f);

@@ -5,9 +5,8 @@
 //                        can lower v by one: height_map_file.cpp)
 //   colour, 16 bits:     (0.297 r + 0.589 g + 0.114 b) * 65535
 //   colour, 8 bits:      red is the high byte, green the low byte: (r * 256 + g) * 255
-//   palette (PNG):       the palette index times 256 (its colour unused)
-// Floating-point images and GIFs (whose palette indices OpenImageIO hides) are refused with
-// a message that says so.
+//   palette (PNG, GIF):  the palette index times 256 (its colour unused)
+// Floating-point images are refused with a message that says so.
 #pragma once
 
 #include "primitives/height_map.h"

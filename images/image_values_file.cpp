@@ -91,6 +91,27 @@ std::shared_ptr<const ImageValueGrid> readPng(const std::string& path, ValueRead
   return grid;
 }
 
+// A GIF through giflib: a palette image, which POV-Ray's colour map always gives an alpha
+// (1 but for the transparent entry), as a palette PNG's.
+std::shared_ptr<const ImageValueGrid> readGifValues(const std::string& path, ValueRead read) {
+  GifPixels gif;
+  const std::string error = readGif(path, gif);
+  if (!error.empty()) throw ImageValuesError(error);
+  checkSize(gif.width, gif.height);
+  auto grid = std::make_shared<ImageValueGrid>();
+  grid->width = gif.width;
+  grid->height = gif.height;
+  grid->indices = gif.indices;
+  grid->paletteSize = static_cast<int>(gif.paletteColours.size());
+  grid->values.resize(gif.indices.size());
+  for (size_t i = 0; i < gif.indices.size(); ++i) {
+    const auto& c = gif.paletteColours[gif.indices[i]];
+    const Pixel p{c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, c[3] / 255.0f};
+    grid->values[i] = patternValue(p, read, true);
+  }
+  return grid;
+}
+
 // Other formats through OpenImageIO: integer code values over their maximum, floats as
 // they are.
 std::shared_ptr<const ImageValueGrid> readThroughPlugin(const std::string& path, ValueRead read) {
@@ -124,30 +145,37 @@ std::shared_ptr<const ImageValueGrid> readThroughPlugin(const std::string& path,
   return grid;
 }
 
+// The file's values, by the reader that knows its palette, if it has one.
+std::shared_ptr<const ImageValueGrid> readValues(const std::string& path, ValueRead read) {
+  if (isPngFile(path)) return readPng(path, read);
+  if (isGifFile(path)) return readGifValues(path, read);
+  return readThroughPlugin(path, read);
+}
+
 }  // namespace
+
+bool readsPalette(const std::string& path) { return isPngFile(path) || isGifFile(path); }
 
 std::shared_ptr<const ImageValueGrid> readImagePatternValues(const std::string& path,
                                                              bool useAlpha) {
-  const ValueRead read = useAlpha ? ValueRead::alpha : ValueRead::grey;
-  return isPngFile(path) ? readPng(path, read) : readThroughPlugin(path, read);
+  return readValues(path, useAlpha ? ValueRead::alpha : ValueRead::grey);
 }
 
 std::shared_ptr<const ImageValueGrid> readImageTransmit(const std::string& path) {
-  auto grid = isPngFile(path) ? readPng(path, ValueRead::transmit)
-                              : readThroughPlugin(path, ValueRead::transmit);
+  auto grid = readValues(path, ValueRead::transmit);
   for (float t : grid->values)
     if (t != 0.0f) return grid;
   return nullptr;
 }
 
 std::shared_ptr<const ImageValueGrid> paletteIndices(const std::string& path) {
-  if (!isPngFile(path)) return nullptr;  // Lucent reads palettes of PNGs only
-  auto grid = readPng(path, ValueRead::red);
+  if (!readsPalette(path)) return nullptr;  // Lucent reads the palettes of PNGs and GIFs
+  auto grid = readValues(path, ValueRead::red);
   return grid->indices.empty() ? nullptr : grid;
 }
 
 std::shared_ptr<const ImageValueGrid> readImageIndexValues(const std::string& path) {
-  return isPngFile(path) ? readPng(path, ValueRead::red) : readThroughPlugin(path, ValueRead::red);
+  return readValues(path, ValueRead::red);
 }
 
 }  // namespace lucent

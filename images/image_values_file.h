@@ -4,8 +4,9 @@
 //   with use_alpha its transmit 1 - alpha where the image can hold transparency, and its
 //   red channel where it cannot.
 // Colours are the stored values over their maximum (v / 255, v / 65535), as POV-Ray's
-// integer images give them: a palette PNG's from its palette (whose alphas, 1 where its
-// tRNS chunk gives none, make it an image that holds transparency), a grey PNG of up to 8
+// integer images give them: a palette PNG's or a GIF's from its palette (whose alphas, 1
+// where its tRNS chunk or its transparent index gives none, make it an image that holds
+// transparency), a grey PNG of up to 8
 // bits through POV-Ray's grey colour map (images/height_map_file.h).
 #pragma once
 
@@ -50,8 +51,12 @@ std::shared_ptr<const ImageValueGrid> readImageIndexValues(const std::string& pa
 std::shared_ptr<const ImageValueGrid> readImageTransmit(const std::string& path);
 
 // A palette image's indices (a bump map's heights with use_index, an image map's entries
-// with their own filter and transmit): the grid of a palette PNG, null for an image
-// without a palette (whose grey levels a bump map reads then).
+// with their own filter and transmit): the grid of a palette PNG or of a GIF, null for an
+// image without a palette (whose grey levels a bump map reads then).
 std::shared_ptr<const ImageValueGrid> paletteIndices(const std::string& path);
+
+// Whether Lucent reads the file's palette, when it has one: a PNG's or a GIF's (other
+// formats' palettes OpenImageIO hides).
+bool readsPalette(const std::string& path);
 
 }  // namespace lucent

@@ -73,7 +73,7 @@ void readPaletteEntries(ElementReader& t, ImageTexture& img) {
   }
   if (!img.paletteIndices)
     return t.attrError("src",
-                       "<palette> entries need a palette image (a PNG with a palette, as "
+                       "<palette> entries need a palette image (a PNG with a palette or a GIF, as "
                        "POV-Ray's filter and transmit of an index need a colour-mapped image)");
   const int size = img.paletteIndices->paletteSize;
   for (const auto& [entry, node] : entries) {

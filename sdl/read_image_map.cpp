@@ -36,7 +36,7 @@ const std::map<std::string_view, std::vector<std::string>>& imageTypes() {
       {"exr", {".exr", ".EXR"}},
       {"hdr", {".hdr", ".HDR"}},
       {"bmp", {".bmp", ".BMP"}},
-      {"gif", {}},
+      {"gif", {".gif", ".GIF"}},
       {"iff", {}},
       {"sys", {}},
       {"pot", {}}};
@@ -60,9 +60,10 @@ std::optional<ImageProjection> projectionOf(double mapType) {
 }
 
 // Whether the file may be a palette image, whose indices POV-Ray reads where a bump map says
-// use_index: a palette PNG, or a format that can hold a palette whose indices OpenImageIO
-// hides (TGA, BMP, TIFF); JPEG, PPM, PGM, EXR and HDR cannot.
+// use_index: a palette PNG, a GIF, or a format that can hold a palette whose indices
+// OpenImageIO hides (TGA, BMP, TIFF); JPEG, PPM, PGM, EXR and HDR cannot.
 bool mayHoldPalette(const std::string& path) {
+  if (isGifFile(path)) return true;
   if (isPngFile(path)) {
     PngPixels png;
     return !readPngHeader(path, png).empty() || png.palette;
@@ -87,7 +88,7 @@ SceneReader::ImageFileSpec SceneReader::readImageFileSpec(TokenStream& in) {
   if (known != types.end() && known->second.empty())
     in.error(type, "image maps from '" + std::string(type.text()) +
                        "' files are not supported by Lucent (it reads png, jpeg, tiff, tga, "
-                       "ppm, pgm, exr, hdr and bmp images)");
+                       "ppm, pgm, exr, hdr, bmp and gif images)");
   if (known == types.end()) in.unget();  // a file name alone: its extension, else png
   const SourceLoc fileLoc = in.peek().loc();
   const std::string name = in.parseString();
@@ -196,10 +197,10 @@ void SceneReader::readBumpMap(const Token& t, TokenStream& in, PovNormal& n) {
       // POV-Ray takes a palette image's indices as heights; any other image has none, and
       // its grey levels are read as with use_color. The last of the two counts.
       bump.useIndex = true;
-      if (mayHoldPalette(bump.path) && !isPngFile(bump.path))
+      if (mayHoldPalette(bump.path) && !readsPalette(bump.path))
         keepError(in, k.loc(),
-                  "'use_index' on a palette image other than a PNG is not supported by Lucent "
-                  "(it reads the palette indices of PNGs)");
+                  "'use_index' on a palette image other than a PNG or GIF is not supported by "
+                  "Lucent (it reads the palette indices of PNGs and GIFs)");
     } else if (isWord(k, "repeat") || isWord(k, "offset")) {
       keepError(in, k.loc(),
                 "'" + std::string(k.text()) + "' in a bump map is not supported by Lucent");
@@ -311,20 +312,20 @@ void SceneReader::readPaletteEntry(const Token& k, bool transmit, TokenStream& i
   const double raw = in.parseFloat() + 0.01;
   const int index = std::abs(raw) < 1e9 ? static_cast<int>(raw) : -1;  // NaN too: -1
   if (!image.paletteIndices) {
-    const bool png = isPngFile(image.path);
+    const bool read = readsPalette(image.path);
     try {
-      if (png) image.paletteIndices = paletteIndices(image.path);
+      if (read) image.paletteIndices = paletteIndices(image.path);
     } catch (const std::exception& e) {
       in.error(k, "cannot read the palette of '" + image.path + "': " + e.what());
     }
-    if (!image.paletteIndices && (png || !mayHoldPalette(image.path)))
+    if (!image.paletteIndices && (read || !mayHoldPalette(image.path)))
       in.error(k, "Keyword '" + std::string(transmit ? "transmit" : "filter") +
                       "' cannot be used with non color-mapped image.");
-    if (!png)
+    if (!read)
       keepError(in, k.loc(),
                 "'" + std::string(k.text()) +
-                    " INDEX, AMOUNT' on an image other than a PNG is not supported by Lucent "
-                    "(it reads the palettes of PNGs)");
+                    " INDEX, AMOUNT' on an image other than a PNG or GIF is not supported by "
+                    "Lucent (it reads the palettes of PNGs and GIFs)");
   }
   const int size = image.paletteIndices ? image.paletteIndices->paletteSize : 256;
   if (index < 0 || index >= size)
@@ -397,7 +398,7 @@ void SceneReader::readImageAlpha(const Token& t, bool transmitAll, TokenStream& 
   try {
     image.useAlpha = true;
     image.alphaTransmit = readImageTransmit(image.path);
-    if (!transmitAll || !image.alphaTransmit || !isPngFile(image.path)) return;
+    if (!transmitAll || !image.alphaTransmit || !readsPalette(image.path)) return;
     if (!image.paletteIndices) image.paletteIndices = paletteIndices(image.path);
     if (!image.paletteIndices) return;
     for (int index = 0; index < image.paletteIndices->paletteSize; ++index) {

@@ -940,7 +940,7 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
       {"tga", {".tga", ".TGA"}},
       {"jpeg", {".jpg", ".JPG", ".jpeg", ".JPEG"}},
       {"tiff", {".tif", ".TIF", ".tiff", ".TIFF"}},
-      {"gif", {}},
+      {"gif", {".gif", ".GIF"}},
       {"iff", {}},
       {"pot", {}},
       {"sys", {}},
@@ -956,8 +956,8 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
   if (known != kTypes.end() && known->second.empty()) {
     refuseShape(o, type.loc(), in,
                 "a height field from '" + std::string(type.text()) +
-                    "' is not supported by Lucent (it reads png, pgm, ppm, tga, jpeg and tiff "
-                    "images as height fields)");
+                    "' is not supported by Lucent (it reads png, pgm, ppm, tga, jpeg, tiff and "
+                    "gif images as height fields)");
     return;
   }
   if (known == kTypes.end()) in.unget();  // a file name alone: its extension says the type

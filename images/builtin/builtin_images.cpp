@@ -24,6 +24,7 @@ std::unique_ptr<ImageReader> builtinOpenFile(const std::string& path, std::strin
   error.clear();
   if (isPngFile(path)) return builtin::openPng(path, error);
   if (builtin::isJpegFile(path)) return builtin::openJpeg(path, error);
+  if (isGifFile(path)) return builtin::openGif(path, error);
   return nullptr;
 }
 

@@ -25,7 +25,7 @@ bool builtinWrites(const ImageToWrite& image);
 // image that builtinWrites() accepts.
 WriteFailure builtinWriteFile(const std::string& path, const ImageToWrite& image);
 
-// Opens a PNG or JPEG file (told by its first bytes) for reading without OpenImageIO:
+// Opens a PNG, JPEG or GIF file (told by its first bytes) for reading without OpenImageIO:
 // null with `error` empty for any other file, null with `error` set for a damaged one.
 std::unique_ptr<ImageReader> builtinOpenFile(const std::string& path, std::string& error);
 
@@ -60,5 +60,20 @@ std::string readPngHeader(const std::string& path, PngPixels& out);
 // The values of a file whose header `pixels` holds (a palette image's indices): "" or the
 // reason.
 std::string readPngValues(const std::string& path, PngPixels& pixels);
+
+// A GIF's first image through giflib (builtin_gif_read.cpp), as POV-Ray 3.7 reads one: a
+// palette image, its colours the image's own colour table or else the file's, the entry a
+// graphic control extension marks transparent of alpha 0 (the others 255).
+struct GifPixels {
+  int width = 0, height = 0;
+  std::vector<std::array<std::uint8_t, 4>> paletteColours;
+  bool transparentIndex = false;      // an entry is transparent
+  std::vector<std::uint8_t> indices;  // rows top first, width each
+};
+
+// Whether the file starts with GIF's signature (GIF87a or GIF89a).
+bool isGifFile(const std::string& path);
+// "" or the reason the file cannot be read (every index checked against the palette).
+std::string readGif(const std::string& path, GifPixels& out);
 
 }  // namespace lucent

@@ -1,7 +1,9 @@
 // The image files read without OpenImageIO: PNG (libpng) and JPEG (libjpeg-turbo), each
 // giving what the plugin's OpenImageIO reader gives for the same file (header, channels,
 // colour-space label and float pixels), so that textures and height maps in those formats
-// never load the plugin (image_plugin.h says what that costs).
+// never load the plugin (image_plugin.h says what that costs); and GIF (giflib), read only
+// here, its palette's straight colours where OpenImageIO's reader blackens a transparent
+// entry's.
 #pragma once
 
 #include "images/image_plugin.h"
@@ -17,5 +19,8 @@ std::unique_ptr<ImageReader> openPng(const std::string& path, std::string& error
 // builtin_jpeg_read.cpp
 bool isJpegFile(const std::string& path);
 std::unique_ptr<ImageReader> openJpeg(const std::string& path, std::string& error);
+
+// builtin_gif_read.cpp
+std::unique_ptr<ImageReader> openGif(const std::string& path, std::string& error);
 
 }  // namespace lucent::builtin

@@ -35,6 +35,13 @@ class FileReader final : public ImageReader {
     header_.sixteenBit = spec.format.basetype == OIIO::TypeDesc::UINT16;
     header_.floating = spec.format.is_floating_point();
     header_.alphaChannel = spec.alpha_channel;
+    // OpenImageIO 2.4's GIF reader names the channel past the last (4 of R, G, B, A) as
+    // alpha: then the channel called A is.
+    if (header_.alphaChannel >= spec.nchannels) {
+      header_.alphaChannel = -1;
+      for (int c = 0; c < spec.nchannels; ++c)
+        if (spec.channel_name(c) == "A") header_.alphaChannel = c;
+    }
     header_.colorSpace = spec.get_string_attribute("oiio:ColorSpace");
   }
   ~FileReader() override { in_->close(); }

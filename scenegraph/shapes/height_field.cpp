@@ -32,6 +32,7 @@ std::string povFormat(const std::string& path) {
   if (ext == ".tga") return "tga";
   if (ext == ".jpg" || ext == ".jpeg") return "jpeg";
   if (ext == ".tif" || ext == ".tiff") return "tiff";
+  if (ext == ".gif") return "gif";
   return "";
 }
 
@@ -111,8 +112,8 @@ void readHeightField(HeightFieldSpec& s, AttributeInput& in) {
   s.src = *src;
   if (povFormat(*src).empty()) {
     in.attrError("src", "'" + *src +
-                            "' is not a PNG, PGM, PPM, TGA, JPEG or TIFF file, the formats POV-Ray "
-                            "reads as height fields");
+                            "' is not a PNG, PGM, PPM, TGA, JPEG, TIFF or GIF file, the formats "
+                            "POV-Ray reads as height fields");
     return;
   }
   s.map = in.heightMapFile("src", s.path);
@@ -172,10 +173,12 @@ ShapeEntry<HeightFieldSpec> shapeEntry<HeightFieldSpec>() {
           .doc("With function: the grid's points along x and z (2 to 4096 each).");
   resolution.info.schemaType = "integerPair";
   e.fields = {readByEntry<HeightFieldSpec>("src", AttrType::File)
-                  .doc("A grey or colour PNG, PGM, PPM, TGA, JPEG or TIFF image, relative to the "
-                       "scene file, read as POV-Ray reads it: grey values are heights; in an 8-bit "
-                       "colour image red is the high byte and green the low byte, in a 16-bit one "
-                       "the brightness is the height. The image's top row is at z = 1."),
+                  .doc("A grey or colour PNG, PGM, PPM, TGA, JPEG or TIFF image, or a GIF, "
+                       "relative to the scene file, read as POV-Ray reads it: grey values are "
+                       "heights; in an 8-bit colour image red is the high byte and green the low "
+                       "byte, in a 16-bit one the brightness is the height; in a palette image "
+                       "(a palette PNG, a GIF) the palette index times 256. The image's top row "
+                       "is at z = 1."),
               readByEntry<HeightFieldSpec>("function", AttrType::Text)
                   .doc("Instead of src: an expression in x, y and z (as an isosurface's) whose "
                        "value is the height at the grid point (x, z) taken at (x, 1 - z, 0), "

@@ -87,6 +87,48 @@ TEST_CASE("built-in PNG and JPEG readers: OpenImageIO's header and pixels, bit f
   CHECK(jpegs >= 4);
 }
 
+TEST_CASE("built-in GIF reader: the palette's colours, OpenImageIO's where opaque",
+          "[images][gif]") {
+  // make_gif_maps.py's GIFs: four colours (red, blue, white, green) in 2 x 2 blocks, index
+  // (x / 2 + y / 2) % 4; in gif_transparent.gif blue (index 1) is transparent.
+  const std::string folder = std::string(lucentSourceDir()) + "/tests/data/sdl/scenes/";
+  const float palette[4][3] = {{1, 0, 0}, {0, 0, 1}, {1, 1, 1}, {0, 160.0f / 255.0f, 0}};
+  for (const bool transparent : {false, true}) {
+    const std::string file = folder + (transparent ? "gif_transparent.gif" : "gif_plain.gif");
+    INFO(file);
+    std::string error;
+    auto builtin = builtinOpenFile(file, error);
+    REQUIRE(builtin);
+    auto reference = imagePlugin().openFile(file, error);
+    REQUIRE(reference);
+    const ImageHeader &a = builtin->header(), &b = reference->header();
+    CHECK(a.width == 8);
+    CHECK(a.height == 8);
+    CHECK(a.channels == (transparent ? 4 : 3));
+    CHECK(a.alphaChannel == (transparent ? 3 : -1));
+    CHECK(b.alphaChannel == 3);  // OpenImageIO's GIF reader named channel 4 of 4 before
+    CHECK(a.eightBit);
+    CHECK(a.colorSpace == b.colorSpace);
+    const std::vector<float> pa = pixelsOf(*builtin), pb = pixelsOf(*reference);
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x) {
+        const int index = (x / 2 + y / 2) % 4, p = y * 8 + x;
+        const float* own = &pa[static_cast<size_t>(p * a.channels)];
+        const float* oiio = &pb[static_cast<size_t>(p * b.channels)];
+        const bool clear = transparent && index == 1;
+        INFO("pixel " << x << ", " << y);
+        for (int c = 0; c < 3; ++c) {
+          CHECK(own[c] == palette[index][c]);
+          // OpenImageIO blackens a transparent pixel; the palette keeps its colour, which
+          // POV-Ray's interpolation blends.
+          CHECK(oiio[c] == (clear ? 0.0f : own[c]));
+        }
+        if (transparent) CHECK(own[3] == (clear ? 0.0f : 1.0f));
+        CHECK(oiio[3] == (clear ? 0.0f : 1.0f));
+      }
+  }
+}
+
 TEST_CASE("built-in readers: other formats are left to the plugin, damaged files refused",
           "[images][png][jpeg]") {
   const std::string bad = std::string(lucentSourceDir()) + "/tests/bad/scenes/";

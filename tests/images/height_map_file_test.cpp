@@ -85,6 +85,22 @@ TEST_CASE("height field images: a palette PNG's heights are its indices times 25
   CHECK(small->width == 2);
 }
 
+TEST_CASE("height field images: a GIF's heights are its palette indices times 256",
+          "[images][height-field][gif]") {
+  // gif_plain.gif (tests/data/sdl/scenes/make_gif_maps.py): 8 x 8 pixels, index
+  // (x / 2 + y / 2) % 4 at column x of row y (top first), colours unlike their indices.
+  auto gif =
+      readHeightMapFile(std::string(lucentSourceDir()) + "/tests/data/sdl/scenes/gif_plain.gif");
+  REQUIRE(gif->width == 8);
+  REQUIRE(gif->depth == 8);
+  for (int z = 0; z < 8; ++z)
+    for (int x = 0; x < 8; ++x) {
+      const int row = 7 - z;  // POV-Ray's z = 0 is the image's bottom row
+      INFO("x " << x << ", z " << z);
+      CHECK(gif->at(x, z) == ((x / 2 + row / 2) % 4) * 256);
+    }
+}
+
 TEST_CASE("height field images: what is refused", "[images][height-field]") {
   CHECK_THROWS_AS(readHeightMapFile(dataFile("missing.png")), HeightMapError);
   CHECK_THROWS_WITH(readHeightMapFile(dataFile("one-pixel.pgm")),

@@ -98,8 +98,8 @@ TEST_CASE("scene reader image_map: what POV-Ray refuses and what Lucent does not
       errorsOf(
           R"(sky_sphere { pigment { image_map { png "scenes/image_maps.png" map_type 1 } } })"),
       "'image_map' in a sky_sphere is not supported by Lucent"));
-  CHECK(anyContains(errorsOf(R"(sphere { 0, 1 pigment { image_map { gif "x.gif" } } })"),
-                    "image maps from 'gif' files are not supported by Lucent"));
+  CHECK(anyContains(errorsOf(R"(sphere { 0, 1 pigment { image_map { iff "x.iff" } } })"),
+                    "image maps from 'iff' files are not supported by Lucent"));
   CHECK(anyContains(errorsOf(R"(sphere { 0, 1 pigment { image_map { png "missing.png" } } })"),
                     "missing.png"));
 }

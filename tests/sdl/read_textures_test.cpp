@@ -357,7 +357,7 @@ TEST_CASE(
   CHECK(errors[0].rfind("refusals.inc:3:30: error: 'cubic' is not supported by Lucent", 0) == 0);
   CHECK(errors[0].find("\ntest.pov:3:25: note: the declaration is used here") != std::string::npos);
   // A block the reader does not read yet, declared: the same.
-  CHECK(errors[1].rfind("refusals.inc:6:36: error: a height field from 'gif' is not supported",
+  CHECK(errors[1].rfind("refusals.inc:6:36: error: a height field from 'iff' is not supported",
                         0) == 0);
   CHECK(errors[1].find("\ntest.pov:6:10: note: the declaration is used here") != std::string::npos);
 }

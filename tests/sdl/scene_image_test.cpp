@@ -230,6 +230,16 @@ TEST_CASE("scene reader image: rainbows", "[sdl][scene][image][povray][rainbow]"
   requireSameImageAsPovray("rainbow.pov", 240, 180);
 }
 
+TEST_CASE(
+    "scene reader image: GIFs in image maps, material maps, bump maps, image patterns and "
+    "height fields",
+    "[sdl][scene][image][povray][gif]") {
+  // Palette images read through giflib: a transparent index, an entry's own transmit, the
+  // indices of material maps and height fields (make_gif_maps.py writes the files).
+  requireSameImageAsPovrayInPlace("gif_maps.pov", 240, 180);
+  requireConvertKeepsPixels("gif_maps.pov", 120, 90);
+}
+
 TEST_CASE("scene reader image: mesh triangles with textures of their own",
           "[sdl][scene][image][povray][mesh]") {
   // Each texture's triangles are a mesh of their own in Lucent (a union): POV-Ray's image,

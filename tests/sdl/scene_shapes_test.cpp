@@ -509,22 +509,22 @@ TEST_CASE("scene shapes: what Lucent cannot take in a shape, refused where it is
   // Every POV-Ray 3.7 shape is read; what is refused is within one (a height field's image
   // format, a mesh face's texture per corner, superellipsoid exponents).
   const auto errors = errorsOf(R"(sphere { 0, 1 }
-union { height_field { gif "x.gif" }
+union { height_field { iff "x.iff" }
         sphere { 0, 1 } }
-#declare P = height_field { gif "x.gif" } object { P }
+#declare P = height_field { iff "x.iff" } object { P }
 height_field { pot "x.pot" }
 mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 2, texture { } texture { } } face_indices { 1, <0, 1, 2>, 0, 1, 1 } }
 superellipsoid { <0, 1> }
-height_field { gif "x.gif" }
+height_field { iff "x.iff" }
 )");
   REQUIRE(errors.size() == 6);
   CHECK(errors[0] ==
-        "test.pov:2:24: error: a height field from 'gif' is not supported by Lucent (it reads "
-        "png, pgm, ppm, tga, jpeg and tiff images as height fields)");
+        "test.pov:2:24: error: a height field from 'iff' is not supported by Lucent (it reads "
+        "png, pgm, ppm, tga, jpeg, tiff and gif images as height fields)");
   // A declared object's refusal is said where it is used, with that place as a note.
   CHECK(errors[1] ==
-        "test.pov:4:29: error: a height field from 'gif' is not supported by Lucent (it reads "
-        "png, pgm, ppm, tga, jpeg and tiff images as height fields)\ntest.pov:4:52: note: the "
+        "test.pov:4:29: error: a height field from 'iff' is not supported by Lucent (it reads "
+        "png, pgm, ppm, tga, jpeg, tiff and gif images as height fields)\ntest.pov:4:52: note: the "
         "declaration is used here");
   CHECK(errors[2].find("test.pov:5:16: error: a height field from 'pot' is not supported") == 0);
   CHECK(errors[3].find("test.pov:6:110: error: a texture per corner of a mesh2 face (three "
@@ -532,7 +532,7 @@ height_field { gif "x.gif" }
                        "supported by Lucent") == 0);
   CHECK(errors[4].find("test.pov:7:1: error: 'superellipsoid' exponents of 0 or less, or above "
                        "10, are not supported by Lucent (here <0, 1>") == 0);
-  CHECK(errors[5].find("test.pov:8:16: error: a height field from 'gif' is not supported") == 0);
+  CHECK(errors[5].find("test.pov:8:16: error: a height field from 'iff' is not supported") == 0);
 }
 
 TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where it is placed",
@@ -543,7 +543,7 @@ TEST_CASE("scene shapes: a declared shape Lucent cannot render is refused where 
   auto r = readScene(R"(#include "shapes.inc"
 #include "shapesq.inc"
 object { Monkey_Saddle }
-#declare J = height_field { gif "x.gif" }
+#declare J = height_field { iff "x.iff" }
 #declare A = texture { pigment { rgb 1 } }
 #declare B = texture { pigment { rgb 0 } }
 #declare Meshes = union { mesh { triangle { 0, x, y texture_list { A, B, A } } } sphere { 0, 1 } }
@@ -552,7 +552,7 @@ object { Monkey_Saddle }
   CHECK(shapeOf<PolySpec>(*r->load.scene, 0).order == 4);  // a quartic
   // Placed (twice), each refusal is said once, at its keyword.
   const auto errors = errorsOf(
-      R"(#declare J = height_field { gif "x.gif" }
+      R"(#declare J = height_field { iff "x.iff" }
 #declare A = texture { pigment { rgb 1 } }
 #declare B = texture { pigment { rgb 0 } }
 #declare Meshes = union { mesh { triangle { 0, x, y texture_list { A, B, A } } } sphere { 0, 1 } }
@@ -561,7 +561,7 @@ object { Meshes translate x }
 object { Meshes }
 )");
   REQUIRE(errors.size() == 2);
-  CHECK(errors[0].find("test.pov:1:29: error: a height field from 'gif' is not supported") == 0);
+  CHECK(errors[0].find("test.pov:1:29: error: a height field from 'iff' is not supported") == 0);
   CHECK(errors[1].find("test.pov:4:53: error: a texture per corner of a mesh triangle") == 0);
 }
 
