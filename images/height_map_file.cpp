@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <vector>
 
@@ -143,13 +144,25 @@ float povPngGrey(long v, int max) {
 
 namespace {
 
-// A GIF: POV-Ray's height is the palette index times 256 (the colours unused).
+bool hasPotExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".pot";
+}
+
+// A GIF: POV-Ray's height is the palette index times 256 (the colours unused). A POT file
+// (Fractint's, named .pot) is a GIF twice as wide as its field: a point's index in the left
+// half is the height's high byte, the index as far right in the right half its low byte.
 std::shared_ptr<const HeightMap> readGifHeights(const std::string& path) {
   GifPixels gif;
   const std::string error = readGif(path, gif);
   if (!error.empty()) throw HeightMapError(error);
+  const bool pot = hasPotExtension(path);
+  if (pot && gif.width % 2 != 0)
+    throw HeightMapError(fmt::format(
+        "a POT file's image is twice as wide as its field: {} pixels is odd", gif.width));
   ImageHeader h;
-  h.width = gif.width;
+  h.width = pot ? gif.width / 2 : gif.width;
   h.height = gif.height;
   h.channels = 1;
   h.eightBit = true;
@@ -157,12 +170,13 @@ std::shared_ptr<const HeightMap> readGifHeights(const std::string& path) {
   auto map = std::make_shared<HeightMap>();
   map->width = h.width;
   map->depth = h.height;
-  map->values.resize(gif.indices.size());
+  map->values.resize(static_cast<size_t>(h.width) * h.height);
   for (int row = 0; row < h.height; ++row) {
     const int z = h.height - 1 - row;  // POV-Ray's z = 0 is the image's bottom row
+    const std::uint8_t* line = &gif.indices[static_cast<size_t>(row) * gif.width];
     for (int x = 0; x < h.width; ++x)
       map->values[static_cast<size_t>(z) * h.width + x] =
-          static_cast<uint16_t>(gif.indices[static_cast<size_t>(row) * h.width + x] * 256);
+          static_cast<uint16_t>(pot ? line[x] << 8 | line[x + h.width] : line[x] * 256);
   }
   return map;
 }

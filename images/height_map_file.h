@@ -6,6 +6,7 @@
 //   colour, 16 bits:     (0.297 r + 0.589 g + 0.114 b) * 65535
 //   colour, 8 bits:      red is the high byte, green the low byte: (r * 256 + g) * 255
 //   palette (PNG, GIF):  the palette index times 256 (its colour unused)
+//   POT (a GIF named .pot, twice as wide): left index * 256 + the right half's index
 // Floating-point images are refused with a message that says so.
 #pragma once
 

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <tuple>
 
@@ -927,6 +928,16 @@ void SceneReader::readFunctionHeightField(PovObject& o, TokenStream& in) {
   o.shape = std::move(s);
 }
 
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+}  // namespace
+
 // height_field { TYPE "file" [smooth] [water_level W] }: the types whose files Lucent reads
 // as POV-Ray does (images/height_map_file.h). The field spans x and z from 0 to 1, the
 // image's top row at z = 1 in POV-Ray's space; Lucent's has it at z = 1 in its own, so the
@@ -942,7 +953,7 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
       {"tiff", {".tif", ".TIF", ".tiff", ".TIFF"}},
       {"gif", {".gif", ".GIF"}},
       {"iff", {}},
-      {"pot", {}},
+      {"pot", {".gif", ".GIF"}},  // POV-Ray searches a POT file as a GIF
       {"sys", {}},
       {"bmp", {}},
       {"exr", {}},
@@ -956,8 +967,8 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
   if (known != kTypes.end() && known->second.empty()) {
     refuseShape(o, type.loc(), in,
                 "a height field from '" + std::string(type.text()) +
-                    "' is not supported by Lucent (it reads png, pgm, ppm, tga, jpeg, tiff and "
-                    "gif images as height fields)");
+                    "' is not supported by Lucent (it reads png, pgm, ppm, tga, jpeg, tiff, gif "
+                    "and pot images as height fields)");
     return;
   }
   if (known == kTypes.end()) in.unget();  // a file name alone: its extension says the type
@@ -967,6 +978,13 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
   s.path = in.findDataFile(s.src, fileLoc,
                            known != kTypes.end() ? known->second : std::vector<std::string>{})
                .string();
+  // A POT file is told from a GIF by its name, as the XML's height field tells it.
+  const bool potFile = lowerExtension(s.path) == ".pot";
+  if (known != kTypes.end() && (known->first == "pot") != potFile)
+    in.error(fileLoc, potFile ? "a file named .pot is read as a POT file: write 'pot', not '" +
+                                    std::string(known->first) + "'"
+                              : "a POT file must be named .pot (Lucent tells it from a GIF by "
+                                "its name)");
   try {
     s.map = readHeightMapFile(s.path);
   } catch (const std::exception& e) {

@@ -33,6 +33,7 @@ std::string povFormat(const std::string& path) {
   if (ext == ".jpg" || ext == ".jpeg") return "jpeg";
   if (ext == ".tif" || ext == ".tiff") return "tiff";
   if (ext == ".gif") return "gif";
+  if (ext == ".pot") return "pot";
   return "";
 }
 
@@ -112,8 +113,8 @@ void readHeightField(HeightFieldSpec& s, AttributeInput& in) {
   s.src = *src;
   if (povFormat(*src).empty()) {
     in.attrError("src", "'" + *src +
-                            "' is not a PNG, PGM, PPM, TGA, JPEG, TIFF or GIF file, the formats "
-                            "POV-Ray reads as height fields");
+                            "' is not a PNG, PGM, PPM, TGA, JPEG, TIFF, GIF or POT file, the "
+                            "formats POV-Ray reads as height fields");
     return;
   }
   s.map = in.heightMapFile("src", s.path);
@@ -177,8 +178,9 @@ ShapeEntry<HeightFieldSpec> shapeEntry<HeightFieldSpec>() {
                        "relative to the scene file, read as POV-Ray reads it: grey values are "
                        "heights; in an 8-bit colour image red is the high byte and green the low "
                        "byte, in a 16-bit one the brightness is the height; in a palette image "
-                       "(a palette PNG, a GIF) the palette index times 256. The image's top row "
-                       "is at z = 1."),
+                       "(a palette PNG, a GIF) the palette index times 256; a POT file (a GIF "
+                       "named .pot, twice as wide) holds the high byte in its left half and the "
+                       "low byte in its right. The image's top row is at z = 1."),
               readByEntry<HeightFieldSpec>("function", AttrType::Text)
                   .doc("Instead of src: an expression in x, y and z (as an isosurface's) whose "
                        "value is the height at the grid point (x, z) taken at (x, 1 - z, 0), "

@@ -101,6 +101,22 @@ TEST_CASE("height field images: a GIF's heights are its palette indices times 25
     }
 }
 
+TEST_CASE("height field images: a POT file's heights are its two halves' indices",
+          "[images][height-field][gif]") {
+  // gif_heights.pot (make_gif_maps.py): an 8 x 3 GIF of 256 greys for a 4 x 3 field, the
+  // high byte 16 (x + 4 row) in the left half, the low byte 255 - 20 x - row in the right.
+  auto pot =
+      readHeightMapFile(std::string(lucentSourceDir()) + "/tests/data/sdl/scenes/gif_heights.pot");
+  REQUIRE(pot->width == 4);
+  REQUIRE(pot->depth == 3);
+  for (int z = 0; z < 3; ++z)
+    for (int x = 0; x < 4; ++x) {
+      const int row = 2 - z;
+      INFO("x " << x << ", z " << z);
+      CHECK(pot->at(x, z) == (16 * (x + 4 * row)) * 256 + (255 - 20 * x - row));
+    }
+}
+
 TEST_CASE("height field images: what is refused", "[images][height-field]") {
   CHECK_THROWS_AS(readHeightMapFile(dataFile("missing.png")), HeightMapError);
   CHECK_THROWS_WITH(readHeightMapFile(dataFile("one-pixel.pgm")),

@@ -512,7 +512,7 @@ TEST_CASE("scene shapes: what Lucent cannot take in a shape, refused where it is
 union { height_field { iff "x.iff" }
         sphere { 0, 1 } }
 #declare P = height_field { iff "x.iff" } object { P }
-height_field { pot "x.pot" }
+height_field { sys "x.sys" }
 mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 2, texture { } texture { } } face_indices { 1, <0, 1, 2>, 0, 1, 1 } }
 superellipsoid { <0, 1> }
 height_field { iff "x.iff" }
@@ -520,13 +520,14 @@ height_field { iff "x.iff" }
   REQUIRE(errors.size() == 6);
   CHECK(errors[0] ==
         "test.pov:2:24: error: a height field from 'iff' is not supported by Lucent (it reads "
-        "png, pgm, ppm, tga, jpeg, tiff and gif images as height fields)");
+        "png, pgm, ppm, tga, jpeg, tiff, gif and pot images as height fields)");
   // A declared object's refusal is said where it is used, with that place as a note.
   CHECK(errors[1] ==
         "test.pov:4:29: error: a height field from 'iff' is not supported by Lucent (it reads "
-        "png, pgm, ppm, tga, jpeg, tiff and gif images as height fields)\ntest.pov:4:52: note: the "
+        "png, pgm, ppm, tga, jpeg, tiff, gif and pot images as height fields)\ntest.pov:4:52: "
+        "note: the "
         "declaration is used here");
-  CHECK(errors[2].find("test.pov:5:16: error: a height field from 'pot' is not supported") == 0);
+  CHECK(errors[2].find("test.pov:5:16: error: a height field from 'sys' is not supported") == 0);
   CHECK(errors[3].find("test.pov:6:110: error: a texture per corner of a mesh2 face (three "
                        "different texture indices, which POV-Ray blends across the face) is not "
                        "supported by Lucent") == 0);

@@ -3,7 +3,7 @@
 // extension; one whose graphic control extension makes blue transparent, over a yellow wall
 // (plain, with bilinear interpolation, with `filter all`, with an entry's own transmit); a
 // material map and a height field, which take the palette indices; a bump map by index and an
-// image pattern of the transparency.
+// image pattern of the transparency; a POT file's height field (16-bit heights in a GIF).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <1.6, 1.6, -4.6> look_at <1.6, 1.6, 0> angle 52 }
@@ -33,3 +33,7 @@ object { Square
 height_field { gif "gif_plain"
   pigment { gradient y color_map { [0 rgb <0, 0.3, 0>] [1 rgb 1] } scale 0.016 translate y * -0.002 }
   scale <1, 15, 1> rotate x * -60 translate <2.2, 2.2, -0.3> }
+// Heights up to 0xB0FF / 65535 from the left half's high bytes and the right half's low ones.
+height_field { pot "gif_heights.pot"
+  pigment { gradient y color_map { [0 rgb <0.4, 0, 0>] [1 rgb <1, 0.8, 0.8>] } scale 0.7 }
+  scale <0.4, 0.6, 1> rotate x * -60 translate <3.38, 1.1, -0.3> }
