@@ -19,6 +19,11 @@ double spotFalloff(const PovLight& l) { return l.falloff.value_or(45.0); }
 // same).
 bool averagesUniformly(int n) { return n >= 2 && (n & (n - 1)) == 0; }
 
+// An area light's axis whose samples all lie at one place: one sample, or a length of 0.
+bool lineOfLights(int samples, const Vec3& axis) {
+  return samples <= 1 || !(glm::length(axis) > 0.0);
+}
+
 // POV-Ray's circular and orient. An oriented light is made circular by POV-Ray (a warning)
 // and uses u's length for both axes (a warning when they differ): Lucent's asks for both,
 // so v takes u's length. A line of lights (a size of 1) is not circular in POV-Ray (its
@@ -122,18 +127,19 @@ LightImport importLight(const PovLight& pov) {
       notes.push_back(
           "area_light on a parallel or cylinder light: Lucent lights it from "
           "one point (no soft shadows)");
-    } else if (a.size1 <= 1 && a.size2 <= 1) {
-      // POV-Ray's grid of one point is its centre: a point light.
+    } else if (lineOfLights(a.size1, a.axis1) && lineOfLights(a.size2, a.axis2)) {
+      // POV-Ray's grid of one point (or of axes of length 0) is its centre: a point light.
     } else {
       l.cone = l.type == LightType::Spot;
       l.type = LightType::Area;
       Vec3 u = lucentFromPov(pov.transform.vector(a.axis1));
       Vec3 v = lucentFromPov(pov.transform.vector(a.axis2));
       int nu = a.size1, nv = a.size2;
-      // A line of lights (one sample across an axis): Lucent's grid has at least two rows,
-      // so the second axis shrinks to a width no shadow can tell from zero.
+      // A line of lights (one sample across an axis, or an axis of length 0, along which
+      // POV-Ray's samples coincide): Lucent's grid has at least two rows, so that axis
+      // becomes a width no shadow can tell from zero.
       auto collapse = [](Vec3& axis, int& n, const Vec3& other) {
-        if (n > 1) return;
+        if (n > 1 && glm::length(axis) > 0.0) return;
         Vec3 across = glm::cross(other, Vec3(1.0, 0.0, 0.0));
         if (glm::length(across) < 1e-6 * glm::length(other))
           across = glm::cross(other, Vec3(0.0, 1.0, 0.0));

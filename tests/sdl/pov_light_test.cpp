@@ -172,6 +172,17 @@ TEST_CASE("area lights keep their axes (mirrored, transformed) and grid", "[sdl]
   CHECK(line.light.samplesV == 2);
   CHECK(glm::length(line.light.v) < 1e-8);
   CHECK(glm::length(glm::cross(line.light.u, line.light.v)) > 0.0);
+  // An axis of length 0, which POV-Ray takes (its samples along it coincide): a line too.
+  pov.area->size2 = 3;
+  pov.area->axis2 = Vec3(0.0);
+  const LightImport flat = importLight(pov);
+  CHECK(flat.light.type == LightType::Area);
+  CHECK(flat.light.samplesV == 2);
+  CHECK(glm::length(flat.light.v) < 1e-8);
+  CHECK(glm::length(glm::cross(flat.light.u, flat.light.v)) > 0.0);
+  // Both of length 0: every sample at the centre, a point light.
+  pov.area->axis1 = Vec3(0.0);
+  CHECK(importLight(pov).light.type == LightType::Point);
 }
 
 TEST_CASE("circular area lights sample POV-Ray's disc, oriented ones turn to the point",
