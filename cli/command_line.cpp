@@ -104,6 +104,12 @@ void addPovOptions(CLI::App* app, CommonOptions& common) {
       ->type_name("DIR")
       ->check(CLI::ExistingDirectory)
       ->allow_extra_args(false);
+  app->add_option("--pov-max-tokens", common.povMaxTokens,
+                  "POV-Ray scenes: the most tokens the evaluation may read before the scene "
+                  "is refused (default 200000000; loops and macros count each time)")
+      ->type_name("N")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100'000'000'000}))
+      ->allow_extra_args(false);
   app->add_flag("--skip-unsupported", common.skipUnsupported,
                 "POV-Ray scenes: leave out what Lucent cannot render (said once per kind, "
                 "with the count of places) instead of refusing the scene");

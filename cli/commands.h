@@ -6,6 +6,7 @@
 
 #include <functional>
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -44,6 +45,8 @@ struct CommonOptions {
   std::string povIni;
   bool skipUnsupported = false;
   std::vector<std::string> allowWrite;  // --allow-write DIR: where #fopen may write
+  // --pov-max-tokens N: the most tokens an evaluation reads (none: sdl::Limits's default).
+  std::optional<std::uint64_t> povMaxTokens;
 };
 
 struct RenderOptions {

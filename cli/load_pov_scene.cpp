@@ -132,6 +132,7 @@ ParseResult parsePovScene(const SceneRequest& request, const CommonOptions& comm
   options.access = &access;
   options.skipUnsupported = common.skipUnsupported;
   options.writeFolders.assign(common.allowWrite.begin(), common.allowWrite.end());
+  if (common.povMaxTokens) options.limits.tokens = *common.povMaxTokens;
   // The image POV-Ray would render: -w/-h, else the INI file's, else its own 800x600.
   options.imageWidth = request.width.value_or(ini.width.value_or(800));
   options.imageHeight = request.height.value_or(ini.height.value_or(600));

@@ -175,6 +175,7 @@ int runCommand(const CLI::App& app, Commands& c) {
     common.povIni = c.pov.povIni;
     common.skipUnsupported = c.pov.skipUnsupported;
     common.allowWrite = c.pov.allowWrite;
+    common.povMaxTokens = c.pov.povMaxTokens;
 
     if (*c.renderCmd) return runRender(c.render, common);
     if (*c.checkCmd) return runCheck(c.check, common);

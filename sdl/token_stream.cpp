@@ -172,7 +172,8 @@ void TokenStream::countToken() {
   const Level& l = levels_.back();
   error(l.file->loc(l.file->at(l.pos - 1)),
         "the scene reads more than " + std::to_string(options_.limits.tokens) +
-            " tokens (the limit of an evaluation; see docs/povray-import.md)");
+            " tokens (the limit of an evaluation, which --pov-max-tokens raises; see "
+            "docs/povray-import.md)");
 }
 
 void TokenStream::countLoop(CondEntry& c) {

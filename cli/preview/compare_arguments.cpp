@@ -20,6 +20,8 @@ std::vector<std::string> compareArguments(const cli::PreviewOptions& options,
   if (!common.povIni.empty()) a.insert(a.end(), {"--pov-ini", common.povIni});
   if (common.skipUnsupported) a.push_back("--skip-unsupported");
   for (const std::string& path : common.allowWrite) a.insert(a.end(), {"--allow-write", path});
+  if (common.povMaxTokens)
+    a.insert(a.end(), {"--pov-max-tokens", std::to_string(*common.povMaxTokens)});
   return a;
 }
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `lucent check` and `lucent render` read POV-Ray scenes: the extension decides, --format
 # overrides; every unsupported feature is an error at its place (exit 2); the image is
-# POV-Ray's default size unless -w/-h; --skip-unsupported, --pov-library, --pov-ini; a
+# POV-Ray's default size unless -w/-h; --skip-unsupported, --pov-library, --pov-ini,
+# --pov-max-tokens; a
 # mirrored, non-square camera; `convert` of the shapes the XML writes with lists, children
 # and functions (a quartic as <poly>), rendered to the same bytes; `compare SCENE.pov` against POV-Ray on the scene itself.
 # Usage: bash pov_scene_commands.sh <path-to-lucent> <source-dir>
@@ -132,6 +133,20 @@ grep -q '<poly order="4"' shapes.xml || fail "convert shapes.pov: no <poly> in $
 "$lucent" render shapes.xml -w 40 -h 30 -q -o shapes.xml.ppm 2>shapes.err ||
   fail "render shapes.xml: $(cat shapes.err)"
 cmp -s shapes.pov.ppm shapes.xml.ppm || fail "convert shapes.pov: the XML renders differently"
+
+# --pov-max-tokens: the evaluation's token limit, named in the refusal; raised, the scene reads.
+cat >loop.pov <<'POV'
+#declare I = 0;
+#while (I < 200) sphere { <I, 0, 0>, 0.4 } #declare I = I + 1; #end
+POV
+"$lucent" check loop.pov --pov-max-tokens 500 >/dev/null 2>tokens.err
+[ $? -eq 2 ] || fail "check --pov-max-tokens 500 loop.pov did not refuse it: $(cat tokens.err)"
+grep -qF "error: the scene reads more than 500 tokens (the limit of an evaluation, which --pov-max-tokens raises" tokens.err ||
+  fail "--pov-max-tokens 500: $(cat tokens.err)"
+"$lucent" check loop.pov --pov-max-tokens 100000 >/dev/null 2>tokens.err ||
+  fail "check --pov-max-tokens 100000 loop.pov: $(cat tokens.err)"
+"$lucent" check loop.pov --pov-max-tokens 0 >/dev/null 2>tokens.err
+[ $? -eq 1 ] || fail "--pov-max-tokens 0 is not a usage error: $(cat tokens.err)"
 
 # compare SCENE.pov runs POV-Ray on the scene itself.
 if command -v povray >/dev/null; then
