@@ -46,10 +46,28 @@ std::string hex2(int c) {
   return buf;
 }
 
+// POV-Ray's text stream (its ITextStream) reads CR LF, LF CR and a lone CR each as one
+// line end: a file saved with old Mac line ends has its `//` comments end at each CR.
+std::string withPovLineEnds(std::string text) {
+  if (text.find('\r') == std::string::npos) return text;
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c != '\n' && c != '\r') {
+      out += c;
+      continue;
+    }
+    out += '\n';
+    if (i + 1 < text.size() && text[i + 1] == (c == '\n' ? '\r' : '\n')) ++i;
+  }
+  return out;
+}
+
 }  // namespace
 
 SourceFile::SourceFile(std::string name, std::filesystem::path folder, std::string text)
-    : name_(std::move(name)), folder_(std::move(folder)), text_(std::move(text)) {}
+    : name_(std::move(name)), folder_(std::move(folder)), text_(withPovLineEnds(std::move(text))) {}
 
 const RawToken& SourceFile::readUpTo(size_t index) {
   while (index >= count_ && !ended_) readNext();

@@ -107,6 +107,25 @@ TEST_CASE("sdl lexer: comments, block comments nest as in POV-Ray", "[sdl][lexer
   CHECK(lexError("a $ \x01") == "1:5: illegal character in input file, value is 01");
 }
 
+TEST_CASE("sdl lexer: CR, CR LF and LF CR end lines as LF does, as POV-Ray's text stream reads",
+          "[sdl][lexer]") {
+  // A file of old Mac line ends: each `//` comment ends at its CR.
+  auto mac = lex("// title\ra // note\r\rb\r  c");
+  REQUIRE(mac.size() == 3);
+  CHECK(mac[0].text == "a");
+  CHECK(mac[0].line == 2);
+  CHECK(mac[1].text == "b");
+  CHECK(mac[1].line == 4);
+  CHECK(mac[2].line == 5);
+  CHECK(mac[2].col == 3);
+  // CR LF and LF CR are one line end each; LF CR LF is two.
+  auto mixed = lex("a\r\nb\n\rc\n\r\nd");
+  REQUIRE(mixed.size() == 4);
+  CHECK(mixed[1].line == 2);
+  CHECK(mixed[2].line == 3);
+  CHECK(mixed[3].line == 5);
+}
+
 TEST_CASE("sdl lexer: numbers beyond a double's range read as strtod reads them", "[sdl][lexer]") {
   auto t = lex("1e999 1e-400 .25e1");
   REQUIRE(t.size() == 3);
