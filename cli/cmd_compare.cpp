@@ -196,6 +196,13 @@ PovScene sceneItself(const CompareOptions& options, const CommonOptions& common,
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const PovAssumedGamma gamma = findAssumedGamma(text);
   if (gamma.kind != PovAssumedGamma::Kind::Unreadable) pov.fileGamma = gamma.fileGamma();
+  // An assumed_gamma the file's own text does not hold (in an include, or an expression)
+  // is the import's: a gamma power is told apart from the sRGB working gamma an older scene
+  // without one takes (whose values POV-Ray writes as they are, read back as 1.0).
+  const WorkingGamma& evaluated = scene.render.workingGamma;
+  if (gamma.kind != PovAssumedGamma::Kind::Number && gamma.kind != PovAssumedGamma::Kind::Srgb &&
+      !evaluated.srgb && !evaluated.linear())
+    pov.fileGamma = fmt::format("{}", evaluated.power);
   for (const auto& [name, value] : common.defines)
     if (name != "clock" && name != "frame") job.extra.push_back("Declare=" + name + "=" + value);
   const sdl::PovIni ini = readIniOption(common);

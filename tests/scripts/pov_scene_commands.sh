@@ -158,6 +158,17 @@ if command -v povray >/dev/null; then
   grep -q '"pov_scene_hand_written": true' cmp/report.json || fail "compare ball.pov: not the scene itself"
   "$lucent" compare mirror.pov -w 40 -h 20 -o cmpm >cmpm.out 2>&1 || fail "compare mirror.pov: $(cat cmpm.out)"
   psnrAtLeast40 cmpm.out || fail "compare mirror.pov: $(cat cmpm.out)"
+  # An assumed_gamma in an include: POV-Ray's image is read back with it (the scene's own
+  # text does not hold it).
+  cat >gamma.inc <<'POV'
+global_settings { assumed_gamma 2.2 }
+camera { location <0, 0, -3> look_at 0 }
+light_source { <-2, 3, -4> rgb 1 }
+sphere { 0, 1 pigment { rgb <0.2, 0.5, 0.8> } }
+POV
+  echo '#include "gamma.inc"' >gamma.pov
+  "$lucent" compare gamma.pov -w 40 -h 30 -o cmpg >cmpg.out 2>&1 || fail "compare gamma.pov: $(cat cmpg.out)"
+  psnrAtLeast40 cmpg.out || fail "compare gamma.pov (assumed_gamma in an include): $(cat cmpg.out)"
 fi
 
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)" >&2; exit 1; }
