@@ -172,13 +172,14 @@ void SceneReader::readShape(PovObject& o, TokenStream& in) {
     const Vec3 b = point(in);
     o.shape = BoxSpec{glm::min(a, b), glm::max(a, b)};
   } else if (w == "plane") {
-    // POV-Ray makes the normal unit and divides the distance by its length.
+    // POV-Ray makes the normal unit and keeps the distance: `plane { <0, 2, 0>, 1 }` is at
+    // y = 1 (its Parse_Plane; its images say so).
     const Vec3 n = toVec3(in.parseVector());
     in.parseComma();
     const double d = in.parseFloat();
     const double len = glm::length(n);
     if (!(len > 0.0)) in.error(at, "the plane's normal has no length");
-    o.shape = PlaneSpec{lucentFromPov(n / len), d / len};
+    o.shape = PlaneSpec{lucentFromPov(n / len), d};
   } else if (w == "cylinder") {
     CylinderSpec s;
     s.base = point(in);

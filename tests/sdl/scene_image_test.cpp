@@ -240,6 +240,11 @@ TEST_CASE(
   requireConvertKeepsPixels("gif_maps.pov", 120, 90);
 }
 
+TEST_CASE("scene reader image: planes whose normal is not unit keep their distance",
+          "[sdl][scene][image][povray]") {
+  requireSameImageAsPovray("plane_normal_length.pov", 160, 120);  // 20 dB when divided
+}
+
 TEST_CASE("scene reader image: mesh triangles with textures of their own",
           "[sdl][scene][image][povray][mesh]") {
   // Each texture's triangles are a mesh of their own in Lucent (a union): POV-Ray's image,

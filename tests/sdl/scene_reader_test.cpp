@@ -68,7 +68,9 @@ triangle { <0, 0, 1>, <1, 0, 1>, <0, 1, 2> }
   checkVec(box.max, Vec3(1, 2, 2));
   const auto& plane = std::get<PlaneSpec>(*topNode(s, 2).shape);
   checkVec(plane.normal, Vec3(0, 1, 0));
-  CHECK(plane.offset == 1.5);  // POV-Ray divides the distance by the normal's length
+  // POV-Ray makes the normal unit and keeps the distance (plane_normal_length.pov holds
+  // its image to it).
+  CHECK(plane.offset == 3.0);
   const auto& cylinder = std::get<CylinderSpec>(*topNode(s, 3).shape);
   checkVec(cylinder.base, Vec3(0, 0, -1));
   checkVec(cylinder.cap, Vec3(0, 2, -1));
