@@ -476,6 +476,7 @@ void TokenStream::versionDirective() {
   if (!(cur_.kind == TokenKind::Undeclared && cur_.text() == "unofficial")) unget_ = true;
   const SourceLoc at = cur_.loc();
   version_ = static_cast<int>(parseFloat() * 100 + 0.5);
+  versionSet_ = true;
   semicolon(false);
   if (version_ > 370) {
     char v[32];

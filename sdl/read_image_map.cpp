@@ -353,7 +353,7 @@ void SceneReader::readImageMap(const Token& t, TokenStream& in, PovPigment& p) {
   image.path = file.path;
   // The curve POV-Ray decodes the file with, whatever Lucent's own rule would take.
   image.fileGamma =
-      povImageMapGamma(file.path, file.format, file.gamma, global_, in.languageVersion());
+      povImageMapGamma(file.path, file.format, file.gamma, global_, in.effectiveLanguageVersion());
   bool transmitAll = false;
 
   for (;;) {

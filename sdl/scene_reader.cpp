@@ -492,7 +492,7 @@ Material SceneReader::importLayer(const PovTexture& layer, const PovInterior& in
                                   bool uv) {
   // POV-Ray 3.7 keeps 3.6's opacity of the local terms for scenes of an older #version.
   MaterialImport imported =
-      importMaterial(layer.pigment, layer.finish, interior, in.languageVersion() < 3.7);
+      importMaterial(layer.pigment, layer.finish, interior, in.effectiveLanguageVersion() < 3.7);
   for (const std::string& d : imported.differences) warn(in, at, d);
   Material& m = imported.material;
   if (PatternPlacement* p = placementOf(m.texture)) {
@@ -864,7 +864,7 @@ void SceneReader::finishScene(TokenStream& in) {
     for (Texture& layer : scene_.sky->layers) forEachPattern(layer, noise);
     // POV-Ray layers a sky_sphere's pigments by the language version it renders with (the
     // last #version): below 3.7, by its older rule.
-    if (in.languageVersion() < 3.7) scene_.sky->layering = SkyLayering::pov36;
+    if (in.effectiveLanguageVersion() < 3.7) scene_.sky->layering = SkyLayering::pov36;
   }
   // POV-Ray's fog turbulence always takes global_settings' noise generator.
   for (Fog& f : scene_.fogs)
@@ -873,7 +873,7 @@ void SceneReader::finishScene(TokenStream& in) {
   scene_.render.width = width;
   scene_.render.height = height;
   for (const std::string& d :
-       applyGlobalSettings(global_, background_, scene_.render, in.languageVersion()))
+       applyGlobalSettings(global_, background_, scene_.render, in.effectiveLanguageVersion()))
     warn(in, globalLoc_.line > 0 ? globalLoc_ : SourceLoc{scene_.file, 0, 0}, d);
   const PovCamera camera = camera_ ? *camera_ : PovCamera{};
   const SourceLoc cameraLoc = camera_ ? camera.loc : SourceLoc{scene_.file, 0, 0};

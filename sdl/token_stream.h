@@ -136,6 +136,10 @@ class TokenStream {
   // The names of the global symbol table (#declare's), sorted.
   std::vector<std::string> globalNames() const;
   double languageVersion() const { return version_ / 100.0; }
+  // The version POV-Ray's rendering follows (its EffectiveLanguageVersion): 3.62 until a
+  // #version is read anywhere (a scene of none, including no standard include, is a
+  // legacy scene: gamma off, 3.6's opacity and sky), then languageVersion().
+  double effectiveLanguageVersion() const { return versionSet_ ? languageVersion() : 3.62; }
 
  private:
   enum class Cond {
@@ -348,6 +352,7 @@ class TokenStream {
   bool insideIfdef_ = false;
   bool insideMacroDefinition_ = false;
   int version_ = 370;
+  bool versionSet_ = false;   // a #version has been read
   double assumedGamma_ = 0;   // 0: not set
   bool srgbWorking_ = false;  // assumed_gamma srgb: an srgb colour is kept as written
   std::uint64_t tokens_ = 0;

@@ -465,6 +465,7 @@ TEST_CASE(
 TEST_CASE("scene reader textures: a sky_sphere's pigments become its layers, in order",
           "[sdl][scene][texture]") {
   auto r = readScene(
+      "#version 3.7;\n"
       "#declare S = sky_sphere { pigment { gradient y color_map { [0 rgb 1] [1 rgb <0, 0, 1>] } "
       "}\n"
       "  pigment { bozo color_map { [0 rgbt <1, 1, 1, 0>] [1 rgbt <1, 1, 1, 1>] } scale 0.5 }\n"
@@ -494,6 +495,15 @@ TEST_CASE("scene reader textures: a sky_sphere's pigments become its layers, in 
   REQUIRE(old->load.scene);
   REQUIRE(old->load.scene->sky);
   CHECK(old->load.scene->sky->layering == SkyLayering::pov36);
+  // So does a scene with no #version anywhere: POV-Ray's EffectiveLanguageVersion is 3.62
+  // until one is read (a standard include's sets it).
+  auto none = readScene("sky_sphere { pigment { rgbt <1, 1, 1, 0.5> } }\n");
+  REQUIRE(none->load.scene);
+  CHECK(none->load.scene->sky->layering == SkyLayering::pov36);
+  auto included = readScene(
+      "#include \"colors.inc\"\nsky_sphere { pigment { rgbt <1, 1, 1, 0.5> } }\n");
+  REQUIRE(included->load.scene);
+  CHECK(included->load.scene->sky->layering == SkyLayering::pov37);
   // rotate x*90 of POV-Ray's space: its +y goes to +z, Lucent's -z; the sky's inverse brings
   // Lucent's -z back to +y.
   const Vec3 up = Vec3(sky.skyFromWorld * Vec4(0.0, 0.0, -1.0, 0.0));
