@@ -207,8 +207,9 @@ PovScene sceneItself(const CompareOptions& options, const CommonOptions& common,
     if (name != "clock" && name != "frame") job.extra.push_back("Declare=" + name + "=" + value);
   const sdl::PovIni ini = readIniOption(common);
   for (const std::string& dir : common.povLibrary)
-    job.extra.push_back("+L" + fs::absolute(dir).string());
-  for (const fs::path& dir : ini.library) job.extra.push_back("+L" + fs::absolute(dir).string());
+    job.extra.push_back(povrayPathOption("+L", fs::absolute(dir).string()));
+  for (const fs::path& dir : ini.library)
+    job.extra.push_back(povrayPathOption("+L", fs::absolute(dir).string()));
   for (const auto& [name, value] : ini.declared)
     if (!common.defines.count(name)) job.extra.push_back(fmt::format("Declare={}={}", name, value));
   const Animation& a = scene.animation;

@@ -49,9 +49,15 @@ std::string cornerThresholdFlag(double threshold) {
   return "+A" + t;
 }
 
+std::string povrayPathOption(const std::string& flag, const std::string& path) {
+  // POV-Ray splits an option at its spaces unless the path is quoted.
+  if (path.find_first_of(" \t") == std::string::npos) return flag + path;
+  return flag + "\"" + path + "\"";
+}
+
 std::vector<std::string> povrayArguments(const PovrayRender& r) {
-  std::vector<std::string> args = {"+I" + r.input,
-                                   "+O" + r.output,
+  std::vector<std::string> args = {povrayPathOption("+I", r.input),
+                                   povrayPathOption("+O", r.output),
                                    fmt::format("+W{}", r.width),
                                    fmt::format("+H{}", r.height),
                                    "-D",

@@ -41,6 +41,10 @@ struct PovrayRender {
 // and progress dropped, 16-bit PNG holding linear values (G = 1.0, the default).
 std::vector<std::string> povrayArguments(const PovrayRender& render);
 
+// "+Ipath", or "+I\"a path\"" when it holds a space (POV-Ray splits an option at its spaces
+// otherwise); for +I, +O and +L.
+std::string povrayPathOption(const std::string& flag, const std::string& path);
+
 // "+A0.3": POV-Ray's antialiasing flag with that threshold.
 std::string cornerThresholdFlag(double threshold);
 

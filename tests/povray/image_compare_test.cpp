@@ -106,8 +106,8 @@ TEST_CASE("povray runs without display, 16-bit linear, and without antialiasing 
   r.width = 64;
   r.height = 48;
   CHECK(commandLine("povray", povrayArguments(r)) ==
-        "povray '+I/tmp/a b/scene.pov' +O/tmp/out.png +W64 +H48 -D -V -GS -GR +FN16 "
-        "File_Gamma=1.0 -A");
+        "povray '+I\"/tmp/a b/scene.pov\"' +O/tmp/out.png +W64 +H48 -D -V -GS -GR +FN16 "
+        "File_Gamma=1.0 -A");  // a path with a space quoted, as POV-Ray's options need
   r.samples = 9;
   r.threads = 2;
   std::vector<std::string> args = povrayArguments(r);
