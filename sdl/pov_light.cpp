@@ -146,6 +146,20 @@ LightImport importLight(const PovLight& pov) {
         axis = glm::normalize(across) * (1e-9 * glm::length(other));
         n = 2;
       };
+      // Parallel axes (POV-Ray takes them): its samples lie on one line, as far as both
+      // axes reach together, where several grid points meet: Lucent's line of lights spans
+      // it with a sample at each distinct place, evenly weighted.
+      const double lu = glm::length(u), lv = glm::length(v);
+      if (nu > 1 && nv > 1 && lu > 0.0 && lv > 0.0 &&
+          glm::length(glm::cross(u, v)) <= 1e-9 * lu * lv) {
+        u += glm::dot(u, v) >= 0.0 ? v : -v;
+        nu = std::min(nu + nv - 1, 1024);
+        nv = 1;
+        notes.push_back(
+            "area_light: its two axes are parallel, so POV-Ray's samples lie on one line, "
+            "those where grid points meet counting more; Lucent's line of lights weighs its "
+            "samples evenly (soft shadows differ slightly)");
+      }
       collapse(u, nu, v);
       collapse(v, nv, u);
       l.u = u;

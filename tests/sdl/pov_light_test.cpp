@@ -180,8 +180,21 @@ TEST_CASE("area lights keep their axes (mirrored, transformed) and grid", "[sdl]
   CHECK(flat.light.samplesV == 2);
   CHECK(glm::length(flat.light.v) < 1e-8);
   CHECK(glm::length(glm::cross(flat.light.u, flat.light.v)) > 0.0);
+  // Parallel axes (POV-Ray's samples on one line, as far as both reach): a line of lights.
+  pov.area->axis1 = Vec3(2.0, 0.0, 0.0);
+  pov.area->axis2 = Vec3(-1.0, 0.0, 0.0);
+  pov.area->size1 = 3;
+  pov.area->size2 = 3;
+  const LightImport parallel = importLight(pov);
+  CHECK(parallel.light.type == LightType::Area);
+  CHECK(glm::length(parallel.light.u) == Approx(3.0));
+  CHECK(parallel.light.samplesU == 5);
+  CHECK(parallel.light.samplesV == 2);
+  CHECK(glm::length(parallel.light.v) < 1e-8);
+  CHECK(mentions(parallel.differences, "parallel"));
   // Both of length 0: every sample at the centre, a point light.
   pov.area->axis1 = Vec3(0.0);
+  pov.area->axis2 = Vec3(0.0);
   CHECK(importLight(pov).light.type == LightType::Point);
 }
 
