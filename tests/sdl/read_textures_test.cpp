@@ -500,8 +500,8 @@ TEST_CASE("scene reader textures: a sky_sphere's pigments become its layers, in 
   auto none = readScene("sky_sphere { pigment { rgbt <1, 1, 1, 0.5> } }\n");
   REQUIRE(none->load.scene);
   CHECK(none->load.scene->sky->layering == SkyLayering::pov36);
-  auto included = readScene(
-      "#include \"colors.inc\"\nsky_sphere { pigment { rgbt <1, 1, 1, 0.5> } }\n");
+  auto included =
+      readScene("#include \"colors.inc\"\nsky_sphere { pigment { rgbt <1, 1, 1, 0.5> } }\n");
   REQUIRE(included->load.scene);
   CHECK(included->load.scene->sky->layering == SkyLayering::pov37);
   // rotate x*90 of POV-Ray's space: its +y goes to +z, Lucent's -z; the sky's inverse brings
