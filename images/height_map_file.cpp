@@ -133,6 +133,12 @@ StoredImage readThroughPlugin(const std::string& path) {
 
 }  // namespace
 
+bool isPotFileName(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".pot";
+}
+
 // POV-Ray reads a grey PNG of up to 8 bits through a grey colour map: each value v becomes
 // c = v / max, then the grey of (c, c, c) by its float weights, stored truncated to 8 bits
 // (base/image/png.cpp, image.cpp: RGB2Gray, SetGrayValue). This can lower v by one.
@@ -144,12 +150,6 @@ float povPngGrey(long v, int max) {
 
 namespace {
 
-bool hasPotExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".pot";
-}
-
 // A GIF: POV-Ray's height is the palette index times 256 (the colours unused). A POT file
 // (Fractint's, named .pot) is a GIF twice as wide as its field: a point's index in the left
 // half is the height's high byte, the index as far right in the right half its low byte.
@@ -157,7 +157,7 @@ std::shared_ptr<const HeightMap> readGifHeights(const std::string& path) {
   GifPixels gif;
   const std::string error = readGif(path, gif);
   if (!error.empty()) throw HeightMapError(error);
-  const bool pot = hasPotExtension(path);
+  const bool pot = isPotFileName(path);
   if (pot && gif.width % 2 != 0)
     throw HeightMapError(fmt::format(
         "a POT file's image is twice as wide as its field: {} pixels is odd", gif.width));

@@ -29,6 +29,9 @@ constexpr int kMaxHeightFieldSide = 4096;
 // 2^depth - 1): through its grey colour map, truncated to 8 bits (can be v - 1 over max).
 float povPngGrey(long v, int max);
 
+// Whether the file is read as a POT file: a name ending in .pot (any letter case).
+bool isPotFileName(const std::string& path);
+
 // Throws HeightMapError with the reason (the caller names the file).
 std::shared_ptr<const HeightMap> readHeightMapFile(const std::string& path);
 

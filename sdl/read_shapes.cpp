@@ -22,7 +22,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <map>
 #include <tuple>
 
@@ -929,16 +928,6 @@ void SceneReader::readFunctionHeightField(PovObject& o, TokenStream& in) {
   o.shape = std::move(s);
 }
 
-namespace {
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-}  // namespace
-
 // height_field { TYPE "file" [smooth] [water_level W] }: the types whose files Lucent reads
 // as POV-Ray does (images/height_map_file.h). The field spans x and z from 0 to 1, the
 // image's top row at z = 1 in POV-Ray's space; Lucent's has it at z = 1 in its own, so the
@@ -980,7 +969,7 @@ void SceneReader::readHeightField(PovObject& o, TokenStream& in) {
                            known != kTypes.end() ? known->second : std::vector<std::string>{})
                .string();
   // A POT file is told from a GIF by its name, as the XML's height field tells it.
-  const bool potFile = lowerExtension(s.path) == ".pot";
+  const bool potFile = isPotFileName(s.path);
   if (known != kTypes.end() && (known->first == "pot") != potFile)
     in.error(fileLoc, potFile ? "a file named .pot is read as a POT file: write 'pot', not '" +
                                     std::string(known->first) + "'"
@@ -1121,7 +1110,7 @@ bool SceneReader::readMeshTriangleExtras(PovObject& o, TokenStream& in,
       const bool one = isWord(t, "texture");
       in.expect("{");
       std::array<const TextureItem*, 3> items{};
-      std::array<std::string, 3> names;
+      std::string name;  // the first's, naming the material of a declared texture
       for (size_t k = 0; k < (one ? 1 : 3); ++k) {
         if (k > 0) in.parseComma();
         const Token id = in.peek();
@@ -1130,13 +1119,13 @@ bool SceneReader::readMeshTriangleExtras(PovObject& o, TokenStream& in,
           in.error(id, "a mesh triangle's " + std::string(t.text()) + " takes " +
                            (one ? "a declared texture" : "three declared textures") +
                            " (as in POV-Ray), not " + id.describe());
-        if (!id.element) names[k] = std::string(id.text());
+        if (k == 0 && !id.element) name = std::string(id.text());
         in.next();
       }
       in.expect("}");
       if (one || (items[0] == items[1] && items[0] == items[2])) {
         PovTexture declared = items[0]->texture;
-        declared.name = names[0];
+        declared.name = name;
         texture = b.addTexture(std::move(declared), t.loc());
       } else {
         refuse(o, t.loc(), in,
